@@ -1,0 +1,65 @@
+# rosvar: set-up and everyday jobs.
+#
+#   make demo    set everything up, then analyse the bundled example workspace (examples/)
+#   make test    set everything up, then run ruff, mypy and the whole pytest suite
+#   make bench   set everything up, then run the benchmarks
+#   make setup   only the set-up (idempotent; quick when already done)
+#
+# The set-up installs missing Debian packages (apt-get, as root or through sudo), creates the
+# virtual environment .venv and installs rosvar into it in editable mode with its test extras.
+
+PYTHON ?= python3
+VENV   := .venv
+VPY    := $(VENV)/bin/python
+STAMP  := $(VENV)/.installed
+
+# --- System (Debian) packages -----------------------------------------------------------------
+# One entry per package in SYSTEM_PACKAGES, and one shell check per package in CHECK_<package>:
+# a package is installed only when its check fails. To add a package, append it to
+# SYSTEM_PACKAGES and define its CHECK_ variable.
+#   python3-roslaunch: the real roslaunch, used by the differential tests' oracle
+#                      (tests/oracle/roslaunch_oracle.py runs under Debian's /usr/bin/python3).
+#   python3-venv:      lets Debian's python3 create .venv (ensurepip).
+SYSTEM_PACKAGES := python3-roslaunch python3-venv
+CHECK_python3-roslaunch := /usr/bin/python3 -c 'import roslaunch'
+CHECK_python3-venv := $(PYTHON) -c 'import ensurepip, venv'
+
+APT_ENV := env DEBIAN_FRONTEND=noninteractive
+# Empty when we are root; "sudo" when we are not and sudo exists.
+SUDO := $(shell if [ "$$(id -u)" != 0 ] && command -v sudo >/dev/null 2>&1; then echo sudo; fi)
+
+.DEFAULT_GOAL := setup
+.PHONY: setup system-packages demo test bench
+
+setup: system-packages $(STAMP)
+
+system-packages:
+	@missing=""; \
+	$(foreach p,$(SYSTEM_PACKAGES),( $(CHECK_$(p)) ) >/dev/null 2>&1 || missing="$$missing $(p)";) \
+	if [ -n "$$missing" ]; then \
+	  echo "Installing system packages:$$missing"; \
+	  $(SUDO) $(APT_ENV) apt-get update && \
+	  $(SUDO) $(APT_ENV) apt-get install -y --no-install-recommends $$missing || exit 1; \
+	  failed=""; \
+	  $(foreach p,$(SYSTEM_PACKAGES),( $(CHECK_$(p)) ) >/dev/null 2>&1 || failed="$$failed $(p)";) \
+	  if [ -n "$$failed" ]; then echo "Still unusable after installation:$$failed" >&2; exit 1; fi; \
+	fi
+
+$(VPY): | system-packages
+	$(PYTHON) -m venv $(VENV)
+
+# Reinstalled only when pyproject.toml is newer than the stamp.
+$(STAMP): pyproject.toml | $(VPY)
+	$(VENV)/bin/pip install -q -e '.[test]'
+	touch $@
+
+demo: setup
+	$(VENV)/bin/rosvar analyze examples
+
+test: setup
+	$(VPY) -m ruff check src tests bench
+	$(VPY) -m mypy
+	$(VPY) -m pytest -q
+
+bench: setup
+	$(VPY) bench/run.py

@@ -1,0 +1,243 @@
+"""Restrict the variational model to one configuration: what roslaunch would load.
+
+Nothing is interpreted again: every presence condition is evaluated under the
+configuration's atom assignment, every conditional value picks its branch, and
+terms are evaluated with the concrete inputs. The result has roslaunch's shape
+(nodes, params, errors) plus conflicts (duplicate node names) with both
+locations.
+"""
+
+from __future__ import annotations
+
+import base64
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+
+from rosvar.diagnostics import Location
+from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.model import Binary, DeferredValue, LaunchModel, ParamDecl, Raw
+from rosvar.interpreter.substitution import PackageTable
+from rosvar.interpreter.tags.param import param_value
+from rosvar.interpreter.tags.rosparam import yaml_params
+from rosvar.interpreter.validation import node_values
+from rosvar.logic.choice import Choice
+from rosvar.logic.inputs import ArgInput, EnvInput, Input
+from rosvar.logic.terms import TermError, evaluate, is_term
+from rosvar.ros import names
+
+
+class ResolutionError(Exception):
+    """roslaunch would fail in this configuration."""
+
+    def __init__(self, code: str, message: str, location: Location) -> None:
+        super().__init__(message)
+        self.code = code
+        self.message = message
+        self.location = location
+
+
+@dataclass
+class Conflict:
+    """Two elements of one configuration that roslaunch cannot both have."""
+
+    kind: str
+    name: str
+    locations: list[Location]
+
+    def to_json(self) -> dict[str, object]:
+        return {
+            "kind": self.kind,
+            "name": self.name,
+            "locations": [loc.to_json() for loc in self.locations],
+        }
+
+
+@dataclass
+class Resolution:
+    nodes: list[dict[str, object]] = field(default_factory=list)
+    tests: list[dict[str, object]] = field(default_factory=list)
+    params: dict[str, object] = field(default_factory=dict)
+    conflicts: list[Conflict] = field(default_factory=list)
+    errors: list[ResolutionError] = field(default_factory=list)
+
+    @property
+    def ok(self) -> bool:
+        return not self.errors and not self.conflicts
+
+    def to_json(self) -> dict[str, object]:
+        return {
+            "ok": self.ok,
+            "nodes": sorted(self.nodes, key=lambda n: str(n["name"])),
+            "tests": sorted(self.tests, key=lambda n: str(n["name"])),
+            "params": dict(sorted(self.params.items())),
+            "conflicts": [c.to_json() for c in self.conflicts],
+            "errors": [
+                {"code": e.code, "message": e.message, **e.location.to_json()} for e in self.errors
+            ],
+        }
+
+
+class _Restriction:
+    """One model under one configuration."""
+
+    def __init__(
+        self, analysis: Analysis, model: LaunchModel, args: Mapping[str, str], env: Mapping[str, str]
+    ) -> None:
+        self.space = analysis.space
+        self.model = model
+        values: dict[Input, str | None] = {}
+        for name, input_ in model.inputs.items():
+            values[input_] = args.get(name, model.unset_defaults.get(name))
+        for input_ in self.space.inputs():
+            if isinstance(input_, EnvInput):
+                values[input_] = env.get(input_.name)
+        self.concrete: dict[Input, str] = {k: v for k, v in values.items() if v is not None}
+        self.host = PackageTable(
+            {name: package.path for name, package in analysis.workspace.packages.items()}
+        )
+        self.assignment = self.space.assignment(values, self.host)
+
+    def holds(self, condition: object) -> bool:
+        return self.space.evaluate(condition, self.assignment)
+
+    def pick(self, choice: Choice[object], location: Location, what: str) -> object:
+        for condition, leaf in choice:
+            if self.holds(condition):
+                if is_term(leaf):
+                    try:
+                        return evaluate(leaf, self.concrete, self.host)  # type: ignore[arg-type]
+                    except (TermError, LookupError, ValueError) as error:
+                        raise ResolutionError("value-unknown", f"{what}: {error}", location) from None
+                return leaf
+        raise ResolutionError("value-undefined", f"{what} has no value here", location)
+
+    def raw(self, choice: Choice[Raw | None], location: Location, what: str) -> str | None:
+        value = self.pick(choice, location, what)  # type: ignore[arg-type]
+        assert value is None or isinstance(value, str)
+        return value
+
+
+def _json_value(value: object) -> object:
+    if isinstance(value, Binary):
+        return {"__binary__": base64.b64encode(value.data).decode()}
+    if isinstance(value, float) and (math.isnan(value) or math.isinf(value)):
+        return "nan" if math.isnan(value) else ("inf" if value > 0 else "-inf")
+    if isinstance(value, dict):
+        return {str(k): _json_value(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_json_value(v) for v in value]
+    return value
+
+
+def resolve(
+    analysis: Analysis,
+    files: Sequence[str],
+    args: Mapping[str, str] | None = None,
+    env: Mapping[str, str] | None = None,
+) -> Resolution:
+    """What ``roslaunch FILES name:=value...`` loads in environment ``env``."""
+    result = Resolution()
+    seen_nodes: dict[str, Location] = {}
+    for file in files:
+        model = analysis.model(file)
+        restriction = _Restriction(analysis, model, args or {}, env or {})
+        try:
+            _restrict(restriction, model, result, seen_nodes)
+        except ResolutionError as error:
+            result.errors.append(error)
+            break
+    return result
+
+
+def _restrict(
+    r: _Restriction, model: LaunchModel, result: Resolution, seen: dict[str, Location]
+) -> None:
+    for error in model.errors:
+        if r.holds(error.condition):
+            raise ResolutionError(error.code, error.message, error.location)
+    for include in model.includes:
+        if not include.resolved and r.holds(include.condition):
+            file = r.pick(include.file, include.location, "<include> file")  # type: ignore[arg-type]
+            raise ResolutionError(
+                "include-unknown", f"cannot load included file {file}", include.location
+            )
+    for node in model.nodes:
+        if not r.holds(node.condition):
+            continue
+        entry = _node(r, node)
+        if node.is_test:
+            result.tests.append(entry)
+            continue
+        full = str(entry["name"])
+        if full in seen:
+            result.conflicts.append(Conflict("node-name", full, [seen[full], node.location]))
+        else:
+            seen[full] = node.location
+        result.nodes.append(entry)
+    for param in model.params:
+        if not r.holds(param.condition):
+            continue
+        if isinstance(param, ParamDecl):
+            name = r.pick(param.name, param.location, "param name")  # type: ignore[arg-type]
+            value = r.pick(param.value, param.location, f"param {name}")
+            if isinstance(value, DeferredValue):
+                text = evaluate(value.raw, r.concrete, r.host)
+                try:
+                    value = param_value("value", text, value.ptype)
+                except ValueError as error:
+                    raise ResolutionError("param-invalid", str(error), param.location) from None
+            result.params[str(name)] = _json_value(value)
+        else:
+            full = r.pick(param.namespace, param.location, "rosparam namespace")  # type: ignore[arg-type]
+            text = evaluate(param.text, r.concrete, r.host) if is_term(param.text) else param.text
+            try:
+                pairs = yaml_params(str(text), str(full), param.param, "")
+            except ValueError as error:
+                raise ResolutionError("rosparam-invalid", str(error), param.location) from None
+            for key, value in pairs:
+                result.params[key] = _json_value(value)
+
+
+def _node(r: _Restriction, node: object) -> dict[str, object]:
+    from rosvar.interpreter.model import NodeDecl
+
+    assert isinstance(node, NodeDecl)
+    location = node.location
+    raw = {k: r.raw(v, location, f"<node> {k}") for k, v in node.fields.items()}
+    try:
+        typed = node_values(raw)
+    except ValueError as error:
+        raise ResolutionError("node-invalid", str(error), location) from None
+    namespace = str(raw["namespace"])
+    name = raw["name"] or ""
+    remaps: dict[str, str] = {}
+    for remap in node.remaps:
+        if r.holds(remap.condition):
+            source = r.raw(Choice.const(r.space, remap.source), location, "remap from")
+            target = r.raw(Choice.const(r.space, remap.target), location, "remap to")
+            remaps.pop(str(source), None)
+            remaps[str(source)] = str(target)
+    env = [
+        [r.raw(Choice.const(r.space, e.name), location, "env"), r.raw(Choice.const(r.space, e.value), location, "env")]
+        for e in node.env
+        if r.holds(e.condition)
+    ]
+    entry: dict[str, object] = {
+        "name": names.ns_join(namespace, name),
+        "namespace": namespace,
+        "package": raw["pkg"],
+        "type": raw["type"],
+        **typed,
+        "remaps": sorted([list(p) for p in remaps.items()]),
+        "env": sorted(env),  # type: ignore[type-var]
+        "filename": node.filename,
+        "line": location.line,
+        "col": location.col,
+    }
+    if node.is_test:
+        entry["test_name"] = raw.get("test-name")
+    return entry
+
+
+__all__ = ["ArgInput", "Conflict", "Resolution", "ResolutionError", "resolve"]

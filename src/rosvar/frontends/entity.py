@@ -1,0 +1,29 @@
+"""Format-neutral parsed launch description: the frontends' only product.
+
+A frontend turns a file into a tree of :class:`Entity` objects and nothing else;
+the interpreter gives them meaning. Attribute values stay raw strings here
+(substitutions such as ``$(arg x)`` are not touched).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from rosvar.diagnostics import Location
+
+
+@dataclass(eq=False)
+class Entity:
+    """One element: tag, raw attributes in document order, children, direct text."""
+
+    tag: str
+    attributes: dict[str, str]
+    location: Location
+    children: list[Entity] = field(default_factory=list)
+    text: str = ""
+
+    def get(self, name: str) -> str | None:
+        return self.attributes.get(name)
+
+    def has(self, name: str) -> bool:
+        return name in self.attributes

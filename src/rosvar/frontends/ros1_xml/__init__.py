@@ -1,0 +1,1 @@
+"""frontends/ros1_xml."""

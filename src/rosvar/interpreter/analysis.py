@@ -1,0 +1,79 @@
+"""Entry point of the interpreter: one condition space, every launch file interpreted once."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+
+from rosvar.interpreter import tags  # noqa: F401 - registers the tag handlers
+from rosvar.interpreter.domains import DomainTable, entry_declarations
+from rosvar.interpreter.interpretation import Interpretation
+from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.scope import Scope
+from rosvar.logic.choice import Choice
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.workspace import Workspace
+
+Progress = Callable[[int, int, str], None]
+
+
+class Analysis:
+    """The variational models of a workspace's launch files, sharing one BDD manager."""
+
+    def __init__(
+        self,
+        workspace: Workspace,
+        extra_values: Mapping[str, Sequence[str]] | None = None,
+        env_values: Mapping[str, Sequence[str]] | None = None,
+    ) -> None:
+        self.workspace = workspace
+        self.space = ConditionSpace()
+        self.domains = DomainTable(workspace, extra_values, env_values)
+        self._models: dict[str, LaunchModel] = {}
+
+    def model(self, file: str) -> LaunchModel:
+        """The model of ``file`` as an entry point (interpreted once, then cached)."""
+        if file not in self._models:
+            self._models[file] = self._interpret(file)
+        return self._models[file]
+
+    def all_models(self, progress: Progress | None = None) -> list[LaunchModel]:
+        files = self.workspace.launch_files
+        models = []
+        for index, file in enumerate(files):
+            if progress is not None:
+                progress(index, len(files), file)
+            models.append(self.model(file))
+        return models
+
+    def _interpret(self, file: str) -> LaunchModel:
+        it = Interpretation(
+            self.workspace, self.space, self.domains.arg_domain, self.domains.env_domain, file
+        )
+        it.stack.append(file)
+        root = it.load(file)
+        model = it.model
+        if root is not None:
+            deprecated = root.get("deprecated")
+            if deprecated:
+                it.sink.note("launch-deprecated", f"DEPRECATED: {deprecated}", root.location)
+            names = list(
+                dict.fromkeys(
+                    d.get("name") or ""
+                    for d in entry_declarations(root)
+                    if d.get("name") and "$" not in (d.get("name") or "")
+                )
+            )
+            args = it.entry_args(file, names)
+            scope = Scope(ns=Choice.const(self.space, "/"), filename=file, args=args)
+            with it.at(root):
+                it.walk(root.children, scope)
+        for name in model.inputs:
+            default = self.domains.unset_default(file, name)
+            if default is not None:
+                model.unset_defaults[name] = default
+        failing = self.space.false
+        for error in model.errors:
+            failing |= error.condition
+        model.loads = ~failing
+        model.diagnostics = it.sink.items
+        return model

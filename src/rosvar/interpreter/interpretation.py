@@ -1,0 +1,302 @@
+"""Symbolic interpretation of one entry launch file, for all configurations at once.
+
+The walk follows roslaunch's ``XmlLoader`` tag by tag, but where roslaunch holds
+one value the walk holds a :class:`Choice`, and where roslaunch tests a
+condition the walk narrows its *path condition* (``pc``). Tags are handled by
+the functions registered in :data:`TAGS` (see :mod:`rosvar.interpreter.tags`).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
+
+from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.frontends.entity import Entity
+from rosvar.frontends.ros1_xml.parser import load_launch_file
+from rosvar.interpreter.model import LaunchModel, Raw, ErrorEvent
+from rosvar.interpreter.scope import MISSING, ArgValue, Scope
+from rosvar.interpreter.substitution import Substituter, Value
+from rosvar.logic.choice import Choice, Fail
+from rosvar.logic.conditions import BDD, ConditionSpace, register_predicate
+from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
+from rosvar.logic.terms import Apply, Hole, Term, is_term
+from rosvar.workspace import Workspace
+
+Handler = Callable[["Interpretation", Entity, Scope], None]
+TAGS: dict[str, Handler] = {}
+MAX_INCLUDE_DEPTH = 64
+
+TRUE_WORDS = ("true", "1")
+FALSE_WORDS = ("false", "0")
+
+
+def tag(name: str) -> Callable[[Handler], Handler]:
+    """Register the handler of ``<name>`` (extension by registry, not if-chains)."""
+
+    def register(handler: Handler) -> Handler:
+        TAGS[name] = handler
+        return handler
+
+    return register
+
+
+def _truthy(text: str) -> bool:
+    return text.lower().strip() in TRUE_WORDS
+
+
+def _falsy(text: str) -> bool:
+    return text.lower().strip() in FALSE_WORDS
+
+
+register_predicate("true", _truthy, "{} is true")
+register_predicate("false", _falsy, "{} is false")
+
+
+class Interpretation:
+    """State of one symbolic roslaunch run over one or more entry files."""
+
+    def __init__(
+        self,
+        workspace: Workspace,
+        space: ConditionSpace,
+        domains: Callable[[str, str], tuple[Slot, ...]],
+        env_domains: Callable[[str], tuple[Slot, ...]],
+        file: str,
+    ) -> None:
+        self.workspace = workspace
+        self.space = space
+        self._domains = domains
+        self._env_domains = env_domains
+        self.sink = DiagnosticSink()
+        self.pc: BDD = space.true
+        self.substituter = Substituter(self)
+        inputs: dict[str, ArgInput] = {}
+        self.model = LaunchModel(file=file, space=space, inputs=inputs, domains={})
+        self.default_machine: Choice[Raw | None] = Choice.const(space, None)
+        self.anon_count: Choice[int] = Choice.const(space, 0)
+        self.stack: list[str] = []
+
+    # -- Host protocol for substitution ------------------------------------------------
+    def find_package(self, name: str) -> str | None:
+        return self.workspace.find(name)
+
+    def note_unknown_package(self, name: str) -> None:
+        self.sink.warning(
+            "package-unknown",
+            f"package '{name}' is not in the workspace; $(find {name}) stays symbolic",
+            self.location,
+        )
+
+    def env_value(self, name: str) -> Choice[Raw | None]:
+        input_ = EnvInput(name)
+        self.space.declare_input(input_, self._env_domains(name))
+        branches: list[tuple[BDD, Raw | None]] = []
+        for slot in self.space.domain(input_):
+            atom = self.space.slot(input_, slot)
+            if slot is UNSET:
+                branches.append((atom, None))
+            elif slot is OTHER:
+                branches.append((atom, Hole(input_)))
+            else:
+                assert isinstance(slot, str)
+                branches.append((atom, slot))
+        return Choice(branches)
+
+    def new_anon(self, scope: Scope, anon_id: str) -> Choice[Raw]:
+        pc = self.pc
+        current = self.anon_count
+        names = current.map(lambda n: f"{anon_id}_anon{n + 1}")
+        self.anon_count = Choice(
+            [(c & pc, n + 1) for c, n in current] + [(c & ~pc, n) for c, n in current]
+        )
+        return names  # type: ignore[return-value]
+
+    # -- inputs --------------------------------------------------------------------------
+    def entry_args(self, file: str, names: Sequence[str]) -> dict[str, ArgValue]:
+        """Command-line args of the entry file as choices over their input slots."""
+        args: dict[str, ArgValue] = {}
+        for name in names:
+            input_ = ArgInput(file, name)
+            domain = self._domains(file, name)
+            self.space.declare_input(input_, domain)
+            self.model.inputs[name] = input_
+            self.model.domains[name] = domain
+            branches: list[tuple[BDD, Raw | object]] = []
+            for slot in domain:
+                atom = self.space.slot(input_, slot)
+                if slot is UNSET:
+                    branches.append((atom, MISSING))
+                elif slot is OTHER:
+                    branches.append((atom, Hole(input_)))
+                else:
+                    branches.append((atom, slot))
+            args[name] = Choice(branches)  # type: ignore[arg-type]
+        return args
+
+    # -- conditions and errors -------------------------------------------------------------
+    @property
+    def location(self) -> Location:
+        return self._location
+
+    @contextmanager
+    def at(self, entity: Entity) -> Iterator[None]:
+        saved = getattr(self, "_location", entity.location)
+        self._location = entity.location
+        try:
+            yield
+        finally:
+            self._location = saved
+
+    @contextmanager
+    def under(self, condition: BDD) -> Iterator[bool]:
+        """Narrow the path condition; yields whether anything is left."""
+        saved = self.pc
+        self.pc = saved & condition
+        try:
+            yield self.pc != self.space.false
+        finally:
+            self.pc = saved
+
+    def fail(self, condition: BDD, code: str, message: str, location: Location | None = None) -> None:
+        """roslaunch raises here under ``condition`` (within the current path)."""
+        where = self.pc & condition
+        if where == self.space.false:
+            return
+        self.model.errors.append(
+            ErrorEvent(where, location or self.location, code, message)
+        )
+
+    def warn(self, code: str, message: str) -> None:
+        self.sink.warning(code, message, self.location)
+
+    def strip(self, choice: Choice[Value], context: str = "") -> Choice[Raw]:
+        """Record the failing branches of ``choice`` as errors; keep the rest."""
+        good: list[tuple[BDD, Raw]] = []
+        for condition, leaf in choice:
+            if isinstance(leaf, Fail):
+                message = f"{context}: {leaf.message}" if context else leaf.message
+                self.fail(condition, leaf.code, message)
+            else:
+                good.append((condition, leaf))
+        return Choice(good)
+
+    def resolve(self, text: str | None, scope: Scope, context: str = "") -> Choice[Raw] | None:
+        value = self.substituter.resolve(text, scope)
+        return None if value is None else self.strip(value, context)
+
+    def attr(self, entity: Entity, name: str, scope: Scope) -> Choice[Raw] | None:
+        return self.resolve(entity.get(name), scope, f"<{entity.tag}> attribute '{name}'")
+
+    def required(self, entity: Entity, name: str, scope: Scope) -> Choice[Raw] | None:
+        if not entity.has(name):
+            self.fail(
+                self.space.true,
+                "attribute-missing",
+                f"<{entity.tag}> tag is missing required attribute: '{name}'",
+            )
+            return None
+        return self.attr(entity, name, scope)
+
+    def check_attributes(self, entity: Entity, allowed: Sequence[str]) -> None:
+        for name in entity.attributes:
+            if name not in allowed and name not in ("if", "unless"):
+                self.warn("attribute-unknown", f"unknown <{entity.tag}> attribute '{name}'")
+
+    def truth(self, value: Choice[Raw], label: str) -> BDD:
+        """Where ``value`` is roslaunch-true (``convert_value(.., 'bool')``); errors elsewhere."""
+        true = self.space.false
+        invalid = self.space.false
+        for condition, leaf in value:
+            if isinstance(leaf, str):
+                if _truthy(leaf):
+                    true |= condition
+                elif not _falsy(leaf):
+                    self.fail(condition, "bool-invalid", f"{label}: {leaf} is not a 'bool' type")
+            else:
+                is_true = self.space.predicate("true", leaf)
+                is_false = self.space.predicate("false", leaf)
+                self.space.constrain(~(is_true & is_false))
+                true |= condition & is_true
+                invalid |= condition & ~is_true & ~is_false
+        if invalid != self.space.false:
+            self.fail(invalid, "bool-invalid", f"{label}: value is not a 'bool' type")
+        return true
+
+    def condition_of(self, entity: Entity, scope: Scope) -> BDD:
+        """``ifunless_test``: where the tag is processed."""
+        if_text, unless_text = entity.get("if"), entity.get("unless")
+        if if_text is None and unless_text is None:
+            return self.space.true
+        if if_text is not None and unless_text is not None:
+            self.fail(
+                self.space.true,
+                "ifunless-both",
+                "cannot set both 'if' and 'unless' on the same tag",
+            )
+            return self.space.false
+        text = if_text if if_text is not None else unless_text
+        label = "if" if if_text is not None else "unless"
+        value = self.resolve(text, scope, f"<{entity.tag}> attribute '{label}'")
+        assert value is not None
+        true = self.truth(value, f"<{entity.tag}> attribute '{label}'")
+        if if_text is not None:
+            return true
+        # unless: processed where the value is false (valid and not true)
+        return value.covered() & ~true & ~self._invalid(value)
+
+    def _invalid(self, value: Choice[Raw]) -> BDD:
+        invalid = self.space.false
+        for condition, leaf in value:
+            if isinstance(leaf, str):
+                if not (_truthy(leaf) or _falsy(leaf)):
+                    invalid |= condition
+            else:
+                invalid |= (
+                    condition
+                    & ~self.space.predicate("true", leaf)
+                    & ~self.space.predicate("false", leaf)
+                )
+        return invalid
+
+    # -- walking ------------------------------------------------------------------------
+    def walk(self, children: Sequence[Entity], scope: Scope) -> None:
+        for child in children:
+            handler = TAGS.get(child.tag)
+            with self.at(child):
+                if handler is None:
+                    self.warn("tag-unknown", f"unrecognized tag <{child.tag}>")
+                    continue
+                handler(self, child, scope)
+
+    def load(self, path: str) -> Entity | None:
+        """Parse a launch file (cached); parse problems become errors at the current tag."""
+        result = load_launch_file(path)
+        for diagnostic in result.diagnostics:
+            self.sink.add(diagnostic)
+        if result.root is None:
+            messages = "; ".join(d.message for d in result.diagnostics) or "unreadable"
+            self.fail(
+                self.space.true,
+                "launch-invalid",
+                f"Invalid roslaunch XML syntax in {path}: {messages}",
+            )
+            return None
+        if path not in self.model.files:
+            self.model.files.append(path)
+        return result.root
+
+
+def split(
+    interpretation: Interpretation, choice: Choice[Raw]
+) -> Iterator[tuple[BDD, Raw]]:
+    """Iterate the branches of ``choice`` that are possible on the current path."""
+    for condition, leaf in choice:
+        if interpretation.pc & condition != interpretation.space.false:
+            yield condition, leaf
+
+
+def choice_terms(value: Choice[Raw]) -> list[Term]:
+    return [leaf for _c, leaf in value if is_term(leaf)]  # type: ignore[misc]
+

@@ -1,0 +1,157 @@
+"""The variational launch model: what one entry launch file does, for every configuration.
+
+Every element carries a presence ``condition`` (a BDD over the entry file's inputs)
+and attributes as :class:`~rosvar.logic.choice.Choice` values, so restricting the
+model to one configuration (see :mod:`rosvar.analyses.resolve`) gives what
+roslaunch would load, without reading the XML again.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from rosvar.diagnostics import Diagnostic, Location
+from rosvar.logic.choice import Choice
+from rosvar.logic.conditions import BDD, ConditionSpace
+from rosvar.logic.inputs import ArgInput, Slot
+from rosvar.logic.terms import Term
+
+Raw = str | Term
+"""An attribute's string after substitution: concrete, or a term awaiting inputs."""
+
+
+@dataclass(frozen=True)
+class DeferredValue:
+    """A ``<param>`` value whose string is a term: converted with ``ptype`` once known."""
+
+    raw: Term
+    ptype: str
+
+
+@dataclass(frozen=True)
+class Binary:
+    """A ``binfile`` param's content (roslaunch's ``xmlrpc.client.Binary``)."""
+
+    data: bytes
+
+
+@dataclass
+class Remap:
+    condition: BDD
+    source: Raw
+    target: Raw
+
+
+@dataclass
+class EnvSetting:
+    condition: BDD
+    name: Raw
+    value: Raw
+
+
+@dataclass
+class NodeDecl:
+    """A ``<node>`` or ``<test>``; ``fields`` hold raw strings (or None when absent)."""
+
+    condition: BDD
+    location: Location
+    filename: str
+    is_test: bool
+    fields: dict[str, Choice[Raw | None]]
+    remaps: list[Remap]
+    env: list[EnvSetting]
+
+    def field(self, key: str) -> Choice[Raw | None]:
+        return self.fields[key]
+
+
+@dataclass
+class ParamDecl:
+    """One parameter set on the parameter server (dicts from YAML already unrolled)."""
+
+    condition: BDD
+    location: Location
+    name: Choice[Raw]
+    value: Choice[object]
+    origin: str  # "param", "rosparam", "node-param"
+
+
+@dataclass
+class YamlDecl:
+    """A ``<rosparam load>`` whose text is only known per configuration."""
+
+    condition: BDD
+    location: Location
+    namespace: Choice[Raw]
+    param: str
+    text: Raw
+
+
+@dataclass
+class ClearParamDecl:
+    condition: BDD
+    location: Location
+    name: Choice[Raw]
+
+
+@dataclass
+class MachineDecl:
+    condition: BDD
+    location: Location
+    name: Choice[Raw]
+    attributes: dict[str, Choice[Raw | None]]
+
+
+@dataclass
+class IncludeDecl:
+    """An ``<include>`` and what became of it (``resolved`` is False for unreadable targets)."""
+
+    condition: BDD
+    location: Location
+    file: Choice[Raw]
+    namespace: Choice[Raw]
+    resolved: bool
+
+
+@dataclass
+class ErrorEvent:
+    """Under ``condition`` roslaunch stops here with ``message``."""
+
+    condition: BDD
+    location: Location
+    code: str
+    message: str
+
+
+@dataclass
+class ArgDecl:
+    """An ``<arg>`` declaration of the entry file (its inputs) or of an included file."""
+
+    name: str
+    location: Location
+    condition: BDD
+    default: str | None
+    value: str | None
+    doc: str | None
+    input: ArgInput | None  # set for args a user can give on the command line
+
+
+@dataclass
+class LaunchModel:
+    """Everything one entry file loads, for all configurations at once."""
+
+    file: str
+    space: ConditionSpace
+    inputs: dict[str, ArgInput]
+    domains: dict[str, tuple[Slot, ...]]
+    args: list[ArgDecl] = field(default_factory=list)
+    nodes: list[NodeDecl] = field(default_factory=list)
+    params: list[ParamDecl | YamlDecl] = field(default_factory=list)
+    clear_params: list[ClearParamDecl] = field(default_factory=list)
+    machines: list[MachineDecl] = field(default_factory=list)
+    includes: list[IncludeDecl] = field(default_factory=list)
+    errors: list[ErrorEvent] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    files: list[str] = field(default_factory=list)
+    unset_defaults: dict[str, str] = field(default_factory=dict)
+    loads: BDD = None  # configurations in which roslaunch loads the file without error

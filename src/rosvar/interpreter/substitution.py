@@ -1,0 +1,440 @@
+"""Substitution args (``$(arg)``, ``$(find)``, ``$(env)``, ``$(eval)``, ...) over all configurations.
+
+The scanning and replacement rules are roslaunch's ``substitution_args``: a
+first pass for ``env optenv dirname anon arg`` in order of appearance (each
+replacing every occurrence of its text), then a ``find`` pass over the result,
+and ``$(eval ...)`` only when it spans the whole attribute. Values are
+:class:`Choice` objects; what is unknown stays a :class:`Term`.
+"""
+
+from __future__ import annotations
+
+import ast
+import os
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Protocol
+
+from rosvar.interpreter.evaluator import (
+    EvalEnvironment,
+    EvalFailed,
+    EvalRefused,
+    evaluate,
+    referenced_args,
+)
+from rosvar.interpreter.model import Raw
+from rosvar.interpreter.scope import MISSING, Scope
+from rosvar.logic.choice import Choice, Fail, combine
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.terms import Apply, Term, concat, is_term, register
+
+COMMANDS = ("find", "env", "optenv", "dirname", "anon", "arg")
+FIRST_PASS = ("env", "optenv", "dirname", "anon", "arg")
+
+Value = Raw | Fail
+
+
+class SubstitutionError(Exception):
+    """The attribute text itself is malformed (roslaunch's ``SubstitutionException``)."""
+
+
+class Host(Protocol):
+    """What substitution needs from the running interpretation."""
+
+    space: ConditionSpace
+
+    def find_package(self, name: str) -> str | None: ...
+
+    def env_value(self, name: str) -> Choice[Raw | None]: ...
+
+    def new_anon(self, scope: Scope, anon_id: str) -> Choice[Raw]: ...
+
+    def note_unknown_package(self, name: str) -> None: ...
+
+
+def collect(text: str) -> list[str]:
+    """The ``$(...)`` bodies of ``text``, by roslaunch's scanning state machine."""
+    out, dollar, lparen, inside = 0, 1, 2, 3
+    state = out
+    bodies: list[str] = []
+    buffer: list[str] = []
+    for ch in text:
+        if ch == "$":
+            if state == out:
+                state = dollar
+            elif state != dollar:
+                raise SubstitutionError(
+                    f"Dollar signs '$' cannot be inside of substitution args [{text}]"
+                )
+        elif ch == "(":
+            if state == dollar:
+                state = lparen
+            elif state != out:
+                raise SubstitutionError(
+                    f"Invalid left parenthesis '(' in substitution args [{text}]"
+                )
+        elif ch == ")":
+            if state == inside:
+                bodies.append("".join(buffer))
+                buffer.clear()
+            state = out
+        elif state == dollar:
+            state = out
+        elif state == lparen:
+            state = inside
+        if state == inside:
+            buffer.append(ch)
+    return bodies
+
+
+def _split(body: str) -> list[str]:
+    words = [w for w in body.split(" ") if w]
+    if not words:
+        raise SubstitutionError(f"Unknown substitution command [{body}]. Valid commands are {list(COMMANDS)}")
+    if words[0] not in COMMANDS:
+        raise SubstitutionError(
+            f"Unknown substitution command [{body}]. Valid commands are {list(COMMANDS)}"
+        )
+    return words
+
+
+# -- the find pass, on a concrete string (also used to evaluate terms later) ----------------
+@dataclass(frozen=True)
+class PackageTable:
+    """Package name → path, for evaluating ``$(find)`` terms outside an interpretation."""
+
+    paths: dict[str, str]
+
+
+def find_pass(text: str, lookup: Callable[[str], str | None]) -> str:
+    """roslaunch's second pass: every ``$(find pkg)`` plus the path that follows it."""
+    resolved = text
+    for body in collect(text):
+        words = _split(body)
+        if words[0] != "find":
+            continue
+        if len(words) != 2:
+            raise SubstitutionError(f"$(find pkg) command only accepts one argument [{body}]")
+        command = f"$({body})"
+        index = resolved.find(command)
+        if index < 0:
+            continue
+        before, after = resolved[:index], resolved[index + len(command) :]
+        space = after.find(" ")
+        path, after = (after, "") if space < 0 else (after[:space], after[space:])
+        if path.startswith("/"):
+            path = path[1:]
+        package_path = lookup(words[1])
+        if package_path is None:
+            raise LookupError(f"package '{words[1]}' not found")
+        if path:
+            package_path = os.path.join(package_path, path)
+        resolved = before + package_path + after
+    return resolved
+
+
+def _find_term(host: object, text: str) -> str:
+    if not isinstance(host, PackageTable):
+        raise LookupError("no package table to resolve $(find)")
+    return find_pass(text, host.paths.get)
+
+
+register("find_pass", _find_term)
+
+
+class Substituter:
+    """Resolves attribute text in a scope, for all configurations at once."""
+
+    def __init__(self, host: Host) -> None:
+        self.host = host
+        self.space = host.space
+
+    def resolve(self, text: str | None, scope: Scope) -> Choice[Value] | None:
+        if text is None:
+            return None
+        if "$" not in text:
+            return Choice.const(self.space, text)
+        try:
+            if text.startswith("$(eval ") and text.endswith(")"):
+                return self._eval(text[7:-1], scope)
+            bodies = collect(text)
+            for body in bodies:
+                _split(body)
+            first = self._first_pass(text, bodies, scope)
+        except SubstitutionError as error:
+            return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+        if not any(_split(b)[0] == "find" for b in bodies):
+            return first
+        return first.map(self._apply_find)
+
+    def _apply_find(self, value: Value) -> Value:
+        if isinstance(value, Fail):
+            return value
+        if is_term(value):
+            return Apply("find_pass", (value,), display=str(value))
+        assert isinstance(value, str)
+        unknown: list[str] = []
+
+        def lookup(name: str) -> str | None:
+            path = self.host.find_package(name)
+            if path is None:
+                unknown.append(name)
+            return path
+
+        try:
+            return find_pass(value, lookup)
+        except SubstitutionError as error:
+            return Fail(str(error), "substitution-invalid")
+        except LookupError:
+            for name in unknown:
+                self.host.note_unknown_package(name)
+            return Apply("find_pass", (value,), display=value)
+
+    def _first_pass(self, text: str, bodies: Sequence[str], scope: Scope) -> Choice[Value]:
+        # Segment the text at each distinct body; replace() semantics = all occurrences.
+        segments: list[str | int] = [text]
+        distinct = list(dict.fromkeys(b for b in bodies if _split(b)[0] in FIRST_PASS))
+        for index, body in enumerate(distinct):
+            marker = f"$({body})"
+            next_segments: list[str | int] = []
+            for segment in segments:
+                if isinstance(segment, int):
+                    next_segments.append(segment)
+                    continue
+                pieces = segment.split(marker)
+                for k, piece in enumerate(pieces):
+                    if k:
+                        next_segments.append(index)
+                    next_segments.append(piece)
+            segments = next_segments
+        values = [self._command(body, scope) for body in distinct]
+        if not values:
+            return Choice.const(self.space, text)
+
+        def join(leaves: list[Value]) -> Value:
+            for leaf in leaves:
+                if isinstance(leaf, Fail):
+                    return leaf
+            parts: list[Raw] = [
+                s if isinstance(s, str) else leaves[s]  # type: ignore[misc]
+                for s in segments
+            ]
+            return concat(parts)
+
+        return combine(values, join)
+
+    def _command(self, body: str, scope: Scope) -> Choice[Value]:
+        words = _split(body)
+        command, params = words[0], words[1:]
+        space = self.space
+        if command == "arg":
+            if len(params) != 1:
+                message = (
+                    f"$(arg var) must specify a variable name [{body}]"
+                    if not params
+                    else f"$(arg var) may only specify one arg [{body}]"
+                )
+                return Choice.const(space, Fail(message, "substitution-invalid"))
+            return self.arg(params[0], scope)
+        if command == "env":
+            if len(params) != 1:
+                return Choice.const(
+                    space, Fail(f"$(env var) command only accepts one argument [{body}]")
+                )
+            name = params[0]
+            return self.host.env_value(name).map(
+                lambda v: Fail(f"environment variable '{name}' is not set", "env-unset")
+                if v is None
+                else v
+            )
+        if command == "optenv":
+            if not params:
+                return Choice.const(
+                    space, Fail(f"$(optenv var) must specify an environment variable [{body}]")
+                )
+            default = " ".join(params[1:])
+            return self.host.env_value(params[0]).map(lambda v: default if v is None else v)
+        if command == "dirname":
+            return Choice.const(space, os.path.abspath(os.path.dirname(scope.filename)))
+        # anon
+        if len(params) != 1:
+            message = (
+                f"$(anon var) must specify a name [{body}]"
+                if not params
+                else f"$(anon var) may only specify one name [{body}]"
+            )
+            return Choice.const(space, Fail(message, "substitution-invalid"))
+        return self.anon(params[0], scope)
+
+    def arg(self, name: str, scope: Scope) -> Choice[Value]:
+        value = scope.args.get(name)
+        missing = Fail(f"requires the '{name}' arg to be set", "arg-undefined")
+        if value is None:
+            return Choice.const(self.space, missing)
+        return value.map(lambda v: missing if v is MISSING else v)  # type: ignore[arg-type,return-value]
+
+    def anon(self, anon_id: str, scope: Scope) -> Choice[Value]:
+        known = scope.anon.get(anon_id)
+        if known is not None and all(v is not MISSING for v in known.values()):
+            return known  # type: ignore[return-value]
+        generated = self.host.new_anon(scope, anon_id)
+        if known is None:
+            scope.anon[anon_id] = generated  # type: ignore[assignment]
+            return generated  # type: ignore[return-value]
+        merged: Choice[Value] = known.bind(  # type: ignore[arg-type,assignment]
+            lambda v: generated if v is MISSING else Choice.const(self.space, v)  # type: ignore[return-value,arg-type]
+        )
+        scope.anon[anon_id] = merged  # type: ignore[assignment]
+        return merged
+
+    # -- $(eval) ------------------------------------------------------------------------
+    def _eval(self, expression: str, scope: Scope) -> Choice[Value]:
+        space = self.space
+        if "__" in expression:
+            return Choice.const(
+                space,
+                Fail("$(eval ...) may not contain double underscore expressions", "eval-refused"),
+            )
+        try:
+            arg_names = sorted(referenced_args(expression))
+            env_names = sorted(_env_names(expression))
+        except EvalRefused as error:
+            return Choice.const(space, Fail(f"$(eval {expression}): {error.message}", "eval-refused"))
+        except _Undecidable as error:
+            return Choice.const(space, Fail(f"$(eval {expression}): {error}", "eval-undecidable"))
+        arg_choices = [
+            scope.args.get(n, Choice.const(space, MISSING)) for n in arg_names
+        ]
+        env_choices = [self.host.env_value(n) for n in env_names]
+        filename = scope.filename
+        anon_values: dict[str, str] = {}
+
+        def run(leaves: list[object]) -> Value:
+            args = dict(zip(arg_names, leaves[: len(arg_names)], strict=True))
+            envs = dict(zip(env_names, leaves[len(arg_names) :], strict=True))
+            if any(is_term(v) for v in [*args.values(), *envs.values()]):
+                return Apply(
+                    "eval",
+                    (
+                        expression,
+                        tuple(arg_names),
+                        *(_operand(args[n]) for n in arg_names),
+                        tuple(env_names),
+                        *(_operand(envs[n]) for n in env_names),
+                        filename,
+                    ),
+                    display=f"$(eval {expression})",
+                )
+            return _run_eval(
+                expression,
+                {k: v for k, v in args.items() if isinstance(v, str)},
+                {k: v for k, v in envs.items() if isinstance(v, str)},
+                filename,
+                self.host.find_package,
+                lambda anon_id: anon_values.setdefault(anon_id, f"{anon_id}_anon"),
+            )
+
+        return combine([*arg_choices, *env_choices], run)  # type: ignore[list-item]
+
+
+class _Undecidable(Exception):
+    pass
+
+
+def _env_names(expression: str) -> set[str]:
+    """Environment variables read by ``env('X')``/``optenv('X', ...)`` calls."""
+    tree = ast.parse(expression, mode="eval")
+    names: set[str] = set()
+    for node in ast.walk(tree):
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Name)
+            and node.func.id in ("env", "optenv")
+        ):
+            if node.args and isinstance(node.args[0], ast.Constant) and isinstance(
+                node.args[0].value, str
+            ):
+                names.add(node.args[0].value)
+            else:
+                raise _Undecidable("the environment variable name is not a literal")
+    return names
+
+
+def _operand(value: object) -> str | Term:
+    if value is MISSING or value is None:
+        return "\x00missing"
+    return value  # type: ignore[return-value]
+
+
+def _run_eval(
+    expression: str,
+    args: dict[str, str],
+    envs: dict[str, str],
+    filename: str,
+    find: Callable[[str], str | None],
+    anon: Callable[[str], str],
+) -> Value:
+    def env(name: str) -> str:
+        if name not in envs:
+            raise EvalFailed(f"environment variable '{name}' is not set")
+        return envs[name]
+
+    def optenv(name: str, default: str = "") -> str:
+        return envs.get(name, default)
+
+    def find_function(name: str) -> str:
+        path = find(name)
+        if path is None:
+            raise EvalFailed(f"package '{name}' not found")
+        return path
+
+    def lookup(name: str) -> str:
+        return args[name]
+
+    environment = EvalEnvironment(
+        lookup_arg=lookup,
+        functions={
+            "env": env,
+            "optenv": optenv,
+            "find": find_function,
+            "anon": anon,
+            "dirname": lambda: os.path.abspath(os.path.dirname(filename)),
+        },
+    )
+    try:
+        return evaluate(expression, environment)
+    except EvalRefused as error:
+        return Fail(f"$(eval {expression}): {error.message}", "eval-refused")
+    except EvalFailed as error:
+        return Fail(f"$(eval {expression}): {error.message}", "eval-failed")
+
+
+def _eval_term(host: object, expression: str, *operands: object) -> str:
+    """Evaluate a deferred ``$(eval)`` once its inputs are concrete."""
+    arg_names = operands[0]
+    assert isinstance(arg_names, tuple)
+    n = len(arg_names)
+    arg_values = operands[1 : 1 + n]
+    env_names = operands[1 + n]
+    assert isinstance(env_names, tuple)
+    env_values = operands[2 + n : 2 + n + len(env_names)]
+    filename = operands[-1]
+    assert isinstance(filename, str)
+    args = {k: v for k, v in zip(arg_names, arg_values, strict=True) if v != "\x00missing"}
+    envs = {k: v for k, v in zip(env_names, env_values, strict=True) if v != "\x00missing"}
+    paths = host.paths if isinstance(host, PackageTable) else {}
+    result = _run_eval(
+        expression,
+        args,  # type: ignore[arg-type]
+        envs,  # type: ignore[arg-type]
+        filename,
+        paths.get,
+        lambda anon_id: f"{anon_id}_anon",
+    )
+    if isinstance(result, Fail):
+        raise ValueError(result.message)
+    assert isinstance(result, str)
+    return result
+
+
+register("eval", _eval_term)

@@ -1,0 +1,100 @@
+"""``<param>``: one parameter, typed as roslaunch types it; ``command=`` is never run."""
+
+from __future__ import annotations
+
+from rosvar.frontends.entity import Entity
+from rosvar.interpreter.interpretation import Interpretation, split, tag
+from rosvar.interpreter.lifted import lift
+from rosvar.interpreter.model import Binary, DeferredValue, ParamDecl, Raw
+from rosvar.interpreter.scope import PrivateParam, Scope
+from rosvar.interpreter.values import convert_value
+from rosvar.logic.choice import Choice, Fail
+from rosvar.ros import names
+
+ATTRIBUTES = ("name", "value", "type", "textfile", "binfile", "command")
+SOURCES = ("value", "textfile", "binfile", "command")
+
+
+def param_value(kind: str, raw: str, ptype: str) -> object:
+    """``Loader.param_value`` for a concrete string; raises ValueError/OSError as roslaunch."""
+    if kind == "value":
+        return convert_value(raw.strip(), ptype)
+    if kind == "textfile":
+        with open(raw) as handle:
+            return convert_value(handle.read(), ptype)
+    if kind == "binfile":
+        with open(raw, "rb") as handle:
+            return Binary(handle.read())
+    return convert_value(f"__command__({raw})", ptype)
+
+
+def _value_choice(it: Interpretation, kind: str, raw: Choice[Raw], ptype: str) -> Choice[object]:
+    def convert(leaf: Raw) -> object:
+        if not isinstance(leaf, str):
+            return DeferredValue(leaf, ptype) if kind in ("value", "command") else Fail(
+                f"{kind} path {leaf} is only known per configuration", "param-unknown-file"
+            )
+        try:
+            return param_value(kind, leaf, ptype)
+        except (ValueError, OSError) as error:
+            return Fail(f"Invalid <param> tag: {error}", "param-invalid")
+
+    return it.strip(raw.map(convert))  # type: ignore[arg-type,return-value]
+
+
+def add_private(it: Interpretation, params: list[PrivateParam], key: str, value: Choice[object]) -> None:
+    """``LoaderContext.add_param``: a later ``~key`` hides an earlier one."""
+    kept = []
+    for param in params:
+        if param.key == key:
+            param = PrivateParam(param.condition & ~it.pc, key, param.value, param.location)
+            if param.condition == it.space.false:
+                continue
+        kept.append(param)
+    kept.append(PrivateParam(it.pc, key, value, it.location))
+    params[:] = kept
+
+
+def handle_param(it: Interpretation, entity: Entity, scope: Scope, force_local: bool) -> None:
+    with it.under(it.condition_of(entity, scope)) as live:
+        if not live:
+            return
+        it.check_attributes(entity, ATTRIBUTES)
+        ptype = (entity.get("type") or "auto").lower().strip()
+        given = [(k, it.attr(entity, k, scope)) for k in SOURCES]
+        present = [(k, v) for k, v in given if v is not None]
+        if len(present) != 1:
+            it.fail(
+                it.space.true,
+                "param-invalid",
+                "<param> tag must have one and only one of value/textfile/binfile.",
+            )
+            return
+        kind, raw = present[0]
+        assert raw is not None
+        if not entity.has("name"):
+            it.fail(it.space.true, "attribute-missing", "<param> tag is missing required attribute: 'name'")
+            return
+        names_choice = it.resolve((entity.get("name") or "").strip(), scope, "<param> name")
+        assert names_choice is not None
+        value = _value_choice(it, kind, raw, ptype)
+        if not value.branches:
+            return
+        for condition, name in split(it, names_choice):
+            with it.under(condition):
+                private = isinstance(name, str) and names.is_private(name)
+                if private or force_local:
+                    key = names.canonicalize_name(name) if isinstance(name, str) else name
+                    if isinstance(key, str):
+                        add_private(it, scope.params, key, value)
+                    else:
+                        it.warn("param-name-unknown", f"param name {key} is only known per configuration")
+                    continue
+                full = it.strip(lift("canonicalize", it.strip(lift("ns_join", scope.ns, Choice.const(it.space, name)))))
+                it.model.params.append(ParamDecl(it.pc, entity.location, full, value, "param"))
+
+
+@tag("param")
+def handle_param_tag(it: Interpretation, entity: Entity, scope: Scope) -> None:
+    handle_param(it, entity, scope, force_local=False)
+

@@ -1,0 +1,137 @@
+"""Conditional values: a value paired with the condition under which it holds.
+
+``Choice`` is the variational counterpart of a plain value: a list of
+``(condition, leaf)`` branches with pairwise-disjoint conditions. Equal leaves
+share one branch, so a value that does not really vary stays a single branch.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass
+from typing import Generic, TypeVar
+
+from rosvar.logic.conditions import BDD, ConditionSpace
+
+T = TypeVar("T")
+U = TypeVar("U")
+
+
+@dataclass(frozen=True)
+class Fail:
+    """A branch where roslaunch would raise: ``message`` is what it would say."""
+
+    message: str
+    code: str = "launch-error"
+
+
+def _key(leaf: object) -> object:
+    try:
+        hash(leaf)
+    except TypeError:
+        return ("unhashable", type(leaf).__name__, repr(leaf))
+    return leaf
+
+
+class Choice(Generic[T]):
+    """Disjoint ``(condition, value)`` branches; conditions are BDDs of one space."""
+
+    __slots__ = ("branches",)
+
+    def __init__(self, branches: Iterable[tuple[BDD, T]]) -> None:
+        merged: dict[object, tuple[BDD, T]] = {}
+        for condition, leaf in branches:
+            key = _key(leaf)
+            if key in merged:
+                merged[key] = (merged[key][0] | condition, leaf)
+            else:
+                merged[key] = (condition, leaf)
+        self.branches: tuple[tuple[BDD, T], ...] = tuple(
+            (c, v) for c, v in merged.values() if c != c.bdd.false
+        )
+
+    @staticmethod
+    def const(space: ConditionSpace, leaf: U) -> Choice[U]:
+        return Choice([(space.true, leaf)])
+
+    def __iter__(self) -> Iterator[tuple[BDD, T]]:
+        return iter(self.branches)
+
+    def __len__(self) -> int:
+        return len(self.branches)
+
+    def __repr__(self) -> str:
+        return f"Choice({[v for _, v in self.branches]!r})"
+
+    def single(self) -> T | None:
+        """The value when there is exactly one branch (whatever its condition)."""
+        return self.branches[0][1] if len(self.branches) == 1 else None
+
+    def values(self) -> list[T]:
+        return [v for _, v in self.branches]
+
+    def map(self, function: Callable[[T], U]) -> Choice[U]:
+        return Choice((c, function(v)) for c, v in self.branches)
+
+    def bind(self, function: Callable[[T], Choice[U]]) -> Choice[U]:
+        """Apply a conditional function to each branch and flatten."""
+        out: list[tuple[BDD, U]] = []
+        for condition, leaf in self.branches:
+            for inner, value in function(leaf):
+                joint = condition & inner
+                if joint != joint.bdd.false:
+                    out.append((joint, value))
+        return Choice(out)
+
+    def restrict(self, condition: BDD) -> Choice[T]:
+        """Only the part of this value that can hold under ``condition``."""
+        return Choice((c & condition, v) for c, v in self.branches)
+
+    def where(self, predicate: Callable[[T], bool]) -> BDD:
+        """The condition under which the value satisfies ``predicate``."""
+        result = None
+        for condition, leaf in self.branches:
+            if predicate(leaf):
+                result = condition if result is None else result | condition
+        return result if result is not None else _false_of(self)
+
+    def covered(self) -> BDD:
+        """Where this value is defined at all."""
+        return self.where(lambda _leaf: True)
+
+
+def _false_of(choice: Choice[object]) -> BDD:
+    if choice.branches:
+        return choice.branches[0][0].bdd.false
+    raise ValueError("empty choice has no condition space")
+
+
+def ite(space: ConditionSpace, condition: BDD, then: Choice[T], otherwise: Choice[T]) -> Choice[T]:
+    """``then`` where ``condition`` holds, else ``otherwise`` (guarded state update)."""
+    if condition == space.true:
+        return then
+    if condition == space.false:
+        return otherwise
+    return Choice(
+        [(c & condition, v) for c, v in then.branches]
+        + [(c & ~condition, v) for c, v in otherwise.branches]
+    )
+
+
+def combine(choices: list[Choice[T]], function: Callable[[list[T]], U]) -> Choice[U]:
+    """Cross product of several choices (only jointly possible combinations)."""
+    partial: list[tuple[BDD, list[T]]] = []
+    first = True
+    for choice in choices:
+        if first:
+            partial = [(c, [v]) for c, v in choice.branches]
+            first = False
+            continue
+        nxt: list[tuple[BDD, list[T]]] = []
+        for c1, vs in partial:
+            for c2, v in choice.branches:
+                joint = c1 & c2
+                if joint != joint.bdd.false:
+                    nxt.append((joint, [*vs, v]))
+        partial = nxt
+    return Choice((c, function(vs)) for c, vs in partial)

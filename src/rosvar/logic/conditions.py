@@ -1,0 +1,300 @@
+"""Presence conditions: propositional formulas over inputs, kept as BDDs.
+
+One :class:`ConditionSpace` (one ``dd`` BDD manager) per analysis. Its variables
+are *atoms*: "input X holds slot s" (exactly one slot per input, enforced by
+:attr:`ConditionSpace.valid`) or "predicate p holds for the still-unknown term
+t" (decided only when a configuration makes t concrete). Everything that asks
+"can this happen?" asks the BDD, never ad-hoc logic.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import dd.cudd as _cudd
+
+from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Input, Slot
+from rosvar.logic.terms import Term
+from rosvar.logic.terms import evaluate as evaluate_term
+
+BDD = Any  # dd.cudd.Function: dd ships no type information
+
+BOOLEAN_WORDS = ("true", "false")
+
+
+@dataclass(frozen=True)
+class SlotAtom:
+    """Input ``input`` holds ``slot``."""
+
+    input: Input
+    slot: Slot
+
+
+@dataclass(frozen=True)
+class PredicateAtom:
+    """``test(term)`` holds; ``test`` names an entry of :data:`PREDICATES`."""
+
+    test: str
+    term: Term
+
+
+Atom = SlotAtom | PredicateAtom
+Predicate = Callable[[str], bool]
+PREDICATES: dict[str, tuple[Predicate, str]] = {}
+
+
+def register_predicate(name: str, test: Predicate, display: str) -> None:
+    """Register a predicate over strings; ``display`` is a format with ``{}`` for the term."""
+    PREDICATES[name] = (test, display)
+
+
+class ConditionSpace:
+    """The BDD manager of one analysis and the meaning of its variables."""
+
+    def __init__(self) -> None:
+        self.bdd = _cudd.BDD()
+        self.true: BDD = self.bdd.true
+        self.false: BDD = self.bdd.false
+        self.valid: BDD = self.bdd.true
+        self._atoms: list[Atom] = []
+        self._var_of: dict[Atom, str] = {}
+        self._atom_of: dict[str, Atom] = {}
+        self._domains: dict[Input, tuple[Slot, ...]] = {}
+
+    # -- declaring atoms -------------------------------------------------------------
+    def _new_var(self, atom: Atom) -> BDD:
+        name = f"a{len(self._atoms)}"
+        self.bdd.declare(name)
+        self._atoms.append(atom)
+        self._var_of[atom] = name
+        self._atom_of[name] = atom
+        return self.bdd.var(name)
+
+    def declare_input(self, input_: Input, domain: Sequence[Slot]) -> None:
+        """Create the slot atoms of ``input_``; exactly one of them holds."""
+        if input_ in self._domains:
+            return
+        slots = tuple(dict.fromkeys(domain))
+        self._domains[input_] = slots
+        variables = [self._new_var(SlotAtom(input_, slot)) for slot in slots]
+        exactly_one = self.false
+        for i, chosen in enumerate(variables):
+            term = chosen
+            for j, other in enumerate(variables):
+                if i != j:
+                    term &= ~other
+            exactly_one |= term
+        self.valid &= exactly_one
+
+    def domain(self, input_: Input) -> tuple[Slot, ...]:
+        return self._domains[input_]
+
+    def inputs(self) -> list[Input]:
+        return list(self._domains)
+
+    def slot(self, input_: Input, slot: Slot) -> BDD:
+        """The atom "``input_`` holds ``slot``" (false if the slot is not in the domain)."""
+        name = self._var_of.get(SlotAtom(input_, slot))
+        return self.bdd.var(name) if name is not None else self.false
+
+    def predicate(self, test: str, term: Term) -> BDD:
+        """The atom "``test`` holds for ``term``", created on first use."""
+        atom = PredicateAtom(test, term)
+        name = self._var_of.get(atom)
+        if name is not None:
+            return self.bdd.var(name)
+        return self._new_var(atom)
+
+    def constrain(self, constraint: BDD) -> None:
+        """Add a fact every configuration satisfies (e.g. two predicates exclude each other)."""
+        self.valid &= constraint
+
+    # -- questions ---------------------------------------------------------------------
+    def satisfiable(self, condition: BDD) -> bool:
+        return bool((condition & self.valid) != self.false)
+
+    def valid_implies(self, condition: BDD) -> bool:
+        """True when every valid configuration satisfies ``condition``."""
+        return bool((self.valid & ~condition) == self.false)
+
+    def assignment(
+        self, values: Mapping[Input, str | None], host: object = None
+    ) -> dict[str, bool]:
+        """Truth of every atom under concrete inputs (``None`` = not given/unset).
+
+        A value outside an input's domain selects its ``OTHER`` slot; predicates are
+        decided by evaluating their terms with the concrete strings.
+        """
+        concrete: dict[Input, str] = {}
+        chosen: dict[Input, Slot] = {}
+        for input_, slots in self._domains.items():
+            value = values.get(input_)
+            if value is None:
+                chosen[input_] = UNSET
+            else:
+                concrete[input_] = value
+                chosen[input_] = value if value in slots else OTHER
+        result: dict[str, bool] = {}
+        for atom, name in self._var_of.items():
+            if isinstance(atom, SlotAtom):
+                result[name] = chosen.get(atom.input) is atom.slot or chosen.get(
+                    atom.input
+                ) == atom.slot
+            else:
+                result[name] = _decide(atom, concrete, host)
+        return result
+
+    def evaluate(self, condition: BDD, assignment: Mapping[str, bool]) -> bool:
+        support = self.bdd.support(condition)
+        if not support:
+            return bool(condition == self.true)
+        reduced = self.bdd.let({name: assignment[name] for name in support}, condition)
+        return bool(reduced == self.true)
+
+    # -- readable form ---------------------------------------------------------------------
+    def describe(self, condition: BDD, qualify: bool = False) -> str:
+        """A short readable formula, e.g. ``use_teleop=true ∧ ¬sim``, modulo validity."""
+        if condition == self.false or not self.satisfiable(condition):
+            return "false"
+        simplified = _cudd.restrict(condition, self.valid)
+        if simplified == self.true or self.valid_implies(condition):
+            return "true"
+        cubes = _merge_cubes(self._grouped_cubes(simplified), self._domains)
+        rendered = [self._render_cube(cube, qualify) for cube in cubes]
+        if len(rendered) == 1:
+            return rendered[0]
+        return " ∨ ".join(f"({r})" if "∧" in r else r for r in sorted(rendered))
+
+    def _paths(self, u: BDD) -> Iterator[dict[str, bool]]:
+        if u == self.false:
+            return
+        if u == self.true:
+            yield {}
+            return
+        var = u.var
+        for value in (False, True):
+            for path in self._paths(self.bdd.let({var: value}, u)):
+                yield {var: value, **path}
+
+    def _grouped_cubes(self, u: BDD) -> list[dict[object, frozenset[Slot] | bool]]:
+        cubes: list[dict[object, frozenset[Slot] | bool]] = []
+        for path in self._paths(u):
+            cube: dict[object, frozenset[Slot] | bool] = {}
+            negated: dict[Input, set[Slot]] = {}
+            for name, value in path.items():
+                atom = self._atom_of[name]
+                if isinstance(atom, PredicateAtom):
+                    cube[atom] = value
+                elif value:
+                    cube[atom.input] = frozenset([atom.slot])
+                else:
+                    negated.setdefault(atom.input, set()).add(atom.slot)
+            for input_, slots in negated.items():
+                if input_ not in cube:
+                    cube[input_] = frozenset(s for s in self._domains[input_] if s not in slots)
+            cubes.append(cube)
+        return cubes
+
+    def _render_cube(self, cube: Mapping[object, frozenset[Slot] | bool], qualify: bool) -> str:
+        parts = []
+        for key, value in sorted(cube.items(), key=lambda kv: _sort_key(kv[0])):
+            if isinstance(key, PredicateAtom):
+                _test, display = PREDICATES[key.test]
+                text = display.format(key.term)
+                parts.append(text if value else f"¬({text})")
+            else:
+                assert isinstance(value, frozenset)
+                parts.append(_render_slots(key, value, self._domains[key], qualify))  # type: ignore[arg-type]
+        return " ∧ ".join(parts)
+
+    def atoms(self) -> Iterable[Atom]:
+        return iter(self._atoms)
+
+
+def _decide(atom: PredicateAtom, concrete: Mapping[Input, str], host: object) -> bool:
+    test, _display = PREDICATES[atom.test]
+    try:
+        return test(evaluate_term(atom.term, concrete, host))
+    except Exception:  # an undecidable term satisfies no predicate
+        return False
+
+
+def _sort_key(key: object) -> tuple[int, str]:
+    if isinstance(key, PredicateAtom):
+        return (1, str(key.term))
+    return (0, str(key))
+
+
+def _merge_cubes(
+    cubes: list[dict[object, frozenset[Slot] | bool]], domains: Mapping[Input, tuple[Slot, ...]]
+) -> list[dict[object, frozenset[Slot] | bool]]:
+    """Join cubes that differ only in the slots of one input (x=a ∨ x=b → x∈{a,b})."""
+    changed = True
+    while changed and len(cubes) > 1:
+        changed = False
+        for i in range(len(cubes)):
+            for j in range(i + 1, len(cubes)):
+                merged = _merge_pair(cubes[i], cubes[j], domains)
+                if merged is not None:
+                    cubes = [c for k, c in enumerate(cubes) if k not in (i, j)] + [merged]
+                    changed = True
+                    break
+            if changed:
+                break
+    return cubes
+
+
+def _merge_pair(
+    a: dict[object, frozenset[Slot] | bool],
+    b: dict[object, frozenset[Slot] | bool],
+    domains: Mapping[Input, tuple[Slot, ...]],
+) -> dict[object, frozenset[Slot] | bool] | None:
+    keys = set(a) | set(b)
+    differing = [k for k in keys if a.get(k) != b.get(k)]
+    if len(differing) != 1:
+        return None
+    key = differing[0]
+    va, vb = a.get(key), b.get(key)
+    if isinstance(key, PredicateAtom) or va is None or vb is None:
+        if va is None or vb is None or isinstance(key, PredicateAtom):
+            # p ∧ rest ∨ ¬p ∧ rest = rest
+            if isinstance(va, bool) and isinstance(vb, bool):
+                return {k: v for k, v in a.items() if k != key}
+            return None
+    assert isinstance(va, frozenset) and isinstance(vb, frozenset)
+    union = va | vb
+    merged = dict(a)
+    if len(union) == len(domains[key]):  # type: ignore[index]
+        del merged[key]
+    else:
+        merged[key] = union
+    return merged
+
+
+def _slot_text(slot: Slot) -> str:
+    return slot if isinstance(slot, str) else repr(slot)
+
+
+def _render_slots(
+    input_: Input, slots: frozenset[Slot], domain: tuple[Slot, ...], qualify: bool
+) -> str:
+    name = str(input_)
+    if qualify and isinstance(input_, ArgInput):
+        name = f"{input_.file}:{input_.name}"
+    if len(slots) == 1:
+        (slot,) = slots
+        if isinstance(slot, str) and slot.lower() in BOOLEAN_WORDS and _is_boolean(domain):
+            return name if slot.lower() == "true" else f"¬{name}"
+        return f"{name}={_slot_text(slot)}"
+    excluded = [s for s in domain if s not in slots]
+    if len(excluded) == 1:
+        return f"{name}≠{_slot_text(excluded[0])}"
+    ordered = [s for s in domain if s in slots]
+    return f"{name}∈{{{', '.join(_slot_text(s) for s in ordered)}}}"
+
+
+def _is_boolean(domain: tuple[Slot, ...]) -> bool:
+    words = {s.lower() for s in domain if isinstance(s, str)}
+    return bool(words) and words <= {"true", "false"}

@@ -1,0 +1,106 @@
+"""Terms: string values that analysis cannot compute yet.
+
+A term is a pure expression over inputs whose slot is ``OTHER`` (or environment
+variables analysis knows nothing about). It is kept symbolic and evaluated only
+when a concrete configuration supplies the missing strings (HAROS-style
+*unknown* values, but lazy instead of lost).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+
+from rosvar.logic.inputs import Input
+
+
+class TermError(Exception):
+    """Evaluating a term failed the way roslaunch would fail at that point."""
+
+
+@dataclass(frozen=True)
+class Hole:
+    """The concrete string of an input (known only once a configuration is given)."""
+
+    input: Input
+
+    def __str__(self) -> str:
+        return f"⟨{self.input}⟩"
+
+
+@dataclass(frozen=True)
+class Apply:
+    """``function(*operands)`` where some operand is a term.
+
+    ``function`` names an entry of :data:`FUNCTIONS`; ``display`` is how people see it.
+    """
+
+    function: str
+    operands: tuple[Operand, ...]
+    display: str = ""
+
+    def __str__(self) -> str:
+        if self.display:
+            return self.display
+        if self.function == "concat":
+            return "".join(str(o) for o in self.operands)
+        return f"{self.function}({', '.join(str(o) for o in self.operands)})"
+
+
+Term = Hole | Apply
+Operand = str | Term | tuple[str, ...]
+
+TermFunction = Callable[..., str]
+FUNCTIONS: dict[str, TermFunction] = {"concat": lambda _host, *parts: "".join(parts)}
+
+
+def register(name: str, function: TermFunction) -> None:
+    """Make ``function(host, *operands)`` available to :class:`Apply` terms.
+
+    ``host`` is whatever the evaluating analysis passes (e.g. the workspace for
+    ``$(find)``); a registry keeps this module free of roslaunch knowledge.
+    """
+    FUNCTIONS[name] = function
+
+
+def is_term(value: object) -> bool:
+    return isinstance(value, Hole | Apply)
+
+
+def concat(parts: list[str | Term]) -> str | Term:
+    """Join strings; stays a string unless a part is a term."""
+    merged: list[str | Term] = []
+    for part in parts:
+        if isinstance(part, str):
+            if not part:
+                continue
+            if merged and isinstance(merged[-1], str):
+                merged[-1] = merged[-1] + part
+                continue
+        merged.append(part)
+    if not merged:
+        return ""
+    if len(merged) == 1:
+        return merged[0]
+    return Apply("concat", tuple(merged))
+
+
+def evaluate(value: Operand, inputs: Mapping[Input, str], host: object = None) -> str:
+    """The concrete string of ``value`` once every input has a concrete string."""
+    if isinstance(value, str):
+        return value
+    if isinstance(value, tuple):
+        raise TermError("a tuple is not a string value")
+    if isinstance(value, Hole):
+        try:
+            return inputs[value.input]
+        except KeyError:
+            raise TermError(f"no value for {value.input}") from None
+    operands = [
+        o if isinstance(o, tuple) else evaluate(o, inputs, host) for o in value.operands
+    ]
+    try:
+        function = FUNCTIONS[value.function]
+    except KeyError:
+        raise TermError(f"unknown term function {value.function}") from None
+    return function(host, *operands)

@@ -1,0 +1,137 @@
+"""The ``rosvar`` command line.
+
+Exit codes: 0 success; 1 the analysed launch configuration fails (errors or
+conflicts, ``resolve``); 2 usage error; 3 nothing to analyse (no launch file
+found, a ``--launch`` file missing).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+from collections.abc import Sequence
+
+from rosvar import __version__
+from rosvar.analyses.resolve import resolve
+from rosvar.diagnostics import Severity
+from rosvar.interpreter.analysis import Analysis
+from rosvar.outputs.describe import describe_model
+from rosvar.ros.names import command_line_mappings
+from rosvar.workspace import Workspace, discover
+
+EXIT_OK, EXIT_FAILS, EXIT_USAGE, EXIT_INPUT = 0, 1, 2, 3
+
+
+def _progress(index: int, total: int, file: str) -> None:
+    if total >= 50 and sys.stderr.isatty():
+        sys.stderr.write(f"\r[{index + 1}/{total}] {os.path.basename(file)[:50]:<50}")
+        if index + 1 == total:
+            sys.stderr.write("\n")
+        sys.stderr.flush()
+
+
+def _workspace(paths: Sequence[str]) -> Workspace:
+    workspace = discover(paths)
+    for diagnostic in workspace.diagnostics:
+        print(diagnostic, file=sys.stderr)
+    return workspace
+
+
+def cmd_analyze(options: argparse.Namespace) -> int:
+    workspace = _workspace(options.paths)
+    if not workspace.launch_files:
+        print("rosvar: no launch files found", file=sys.stderr)
+        return EXIT_INPUT
+    analysis = Analysis(workspace)
+    models = analysis.all_models(_progress)
+    if options.json:
+        json.dump({"files": [describe_model(m) for m in models]}, sys.stdout, indent=2)
+        sys.stdout.write("\n")
+        return EXIT_OK
+    cwd = os.getcwd()
+    diagnostics = [d for m in models for d in m.diagnostics]
+    print(f"{len(models)} launch files, {len(workspace.packages)} packages")
+    print(f"{'file':<60} {'args':>5} {'nodes':>6} {'params':>7} {'errors':>7}")
+    for model in models:
+        name = os.path.relpath(model.file, cwd)
+        print(
+            f"{name[-60:]:<60} {len(model.inputs):>5} {len(model.nodes):>6} "
+            f"{len(model.params):>7} {len(model.errors):>7}"
+        )
+    errors = [d for d in diagnostics if d.severity is Severity.ERROR]
+    print(f"\n{len(diagnostics)} diagnostics ({len(errors)} errors)")
+    for diagnostic in diagnostics[:20]:
+        print(f"  {diagnostic}")
+    if len(diagnostics) > 20:
+        print(f"  ... {len(diagnostics) - 20} more (use --json)")
+    return EXIT_OK
+
+
+def cmd_resolve(options: argparse.Namespace) -> int:
+    workspace = _workspace(options.paths)
+    files = [os.path.abspath(f) for f in options.launch]
+    missing = [f for f in files if not os.path.isfile(f)]
+    if missing:
+        print(f"rosvar: launch file not found: {', '.join(missing)}", file=sys.stderr)
+        return EXIT_INPUT
+    env: dict[str, str] = {}
+    for item in options.env:
+        name, sep, value = item.partition("=")
+        if not sep or not name:
+            print(f"rosvar: --env expects NAME=VALUE, got {item!r}", file=sys.stderr)
+            return EXIT_USAGE
+        env[name] = value
+    analysis = Analysis(workspace)
+    result = resolve(analysis, files, command_line_mappings(options.args), env)
+    document = result.to_json()
+    if options.json:
+        json.dump(document, sys.stdout, indent=2)
+        sys.stdout.write("\n")
+    else:
+        for node in document["nodes"]:  # type: ignore[attr-defined]
+            print(f"node  {node['name']}  ({node['package']}/{node['type']})")
+        for name, value in document["params"].items():  # type: ignore[attr-defined]
+            print(f"param {name} = {value!r}")
+        for conflict in result.conflicts:
+            where = ", ".join(str(loc) for loc in conflict.locations)
+            print(f"conflict: {conflict.kind} {conflict.name} at {where}")
+        for error in result.errors:
+            print(f"error: {error.location}: {error.message}")
+    return EXIT_OK if result.ok else EXIT_FAILS
+
+
+def parser() -> argparse.ArgumentParser:
+    top = argparse.ArgumentParser(
+        prog="rosvar",
+        description="Variability analysis of ROS launch files: all configurations at once.",
+    )
+    top.add_argument("--version", action="version", version=f"rosvar {__version__}")
+    commands = top.add_subparsers(dest="command", required=True)
+    analyze = commands.add_parser("analyze", help="interpret every launch file below PATH")
+    analyze.add_argument("paths", nargs="+", metavar="PATH")
+    analyze.add_argument("--json", action="store_true", help="machine-readable output")
+    analyze.set_defaults(run=cmd_analyze)
+    res = commands.add_parser(
+        "resolve", help="one concrete configuration, as roslaunch would load it"
+    )
+    res.add_argument("paths", nargs="+", metavar="PATH", help="package roots (and name:=value args)")
+    res.add_argument("--launch", action="append", required=True, metavar="FILE")
+    res.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
+    res.add_argument("--json", action="store_true")
+    res.set_defaults(run=cmd_resolve)
+    return top
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    options = parser().parse_args(argv)
+    if options.command == "resolve":
+        options.args = [p for p in options.paths if ":=" in p]
+        options.paths = [p for p in options.paths if ":=" not in p]
+    try:
+        return int(options.run(options))
+    except KeyboardInterrupt:
+        return 130
+    except BrokenPipeError:
+        return EXIT_OK

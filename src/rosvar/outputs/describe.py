@@ -1,0 +1,97 @@
+"""The analysed model as plain data (the ``analyze`` JSON), with readable conditions."""
+
+from __future__ import annotations
+
+from rosvar.interpreter.model import LaunchModel, ParamDecl
+from rosvar.logic.choice import Choice
+from rosvar.logic.inputs import OTHER, UNSET, Slot
+
+
+def _slot(slot: Slot) -> str:
+    if slot is UNSET:
+        return "<unset>"
+    if slot is OTHER:
+        return "<other>"
+    return str(slot)
+
+
+def _values(choice: Choice[object], model: LaunchModel) -> object:
+    """One value when it does not vary, else ``[{value, condition}]``."""
+    branches = list(choice)
+    if len(branches) == 1:
+        return _leaf(branches[0][1])
+    return [
+        {"value": _leaf(leaf), "condition": model.space.describe(condition)}
+        for condition, leaf in branches
+    ]
+
+
+def _leaf(leaf: object) -> object:
+    if leaf is None or isinstance(leaf, str | int | float | bool):
+        return leaf
+    return str(leaf)
+
+
+def describe_model(model: LaunchModel) -> dict[str, object]:
+    space = model.space
+    describe = space.describe
+    return {
+        "file": model.file,
+        "loads": describe(model.loads),
+        "args": [
+            {
+                "name": a.name,
+                "default": a.default,
+                "value": a.value,
+                "doc": a.doc,
+                "command_line": a.input is not None,
+                "domain": [_slot(s) for s in model.domains.get(a.name, ())],
+                "condition": describe(a.condition),
+                **a.location.to_json(),
+            }
+            for a in model.args
+        ],
+        "includes": [
+            {
+                "file": _values(i.file, model),  # type: ignore[arg-type]
+                "resolved": i.resolved,
+                "condition": describe(i.condition),
+                **i.location.to_json(),
+            }
+            for i in model.includes
+        ],
+        "nodes": [
+            {
+                "name": _values(n.fields["name"], model),  # type: ignore[arg-type]
+                "namespace": _values(n.fields["namespace"], model),  # type: ignore[arg-type]
+                "package": _values(n.fields["pkg"], model),  # type: ignore[arg-type]
+                "type": _values(n.fields["type"], model),  # type: ignore[arg-type]
+                "test": n.is_test,
+                "condition": describe(n.condition),
+                **n.location.to_json(),
+            }
+            for n in model.nodes
+        ],
+        "params": [
+            {
+                "name": _values(p.name if isinstance(p, ParamDecl) else p.namespace, model),  # type: ignore[arg-type]
+                "value": _values(p.value, model) if isinstance(p, ParamDecl) else "<yaml>",
+                "condition": describe(p.condition),
+                **p.location.to_json(),
+            }
+            for p in model.params
+        ],
+        "errors": [
+            {
+                "code": e.code,
+                "message": e.message,
+                "condition": describe(e.condition),
+                **e.location.to_json(),
+            }
+            for e in model.errors
+        ],
+        "diagnostics": [d.to_json() for d in model.diagnostics],
+    }
+
+
+

@@ -1,0 +1,1 @@
+"""ROS 1 conventions (graph resource names) that every layer shares."""

@@ -1,0 +1,243 @@
+"""Workspace discovery: which ROS packages exist and which launch files to analyse.
+
+``$(find pkg)`` and ``<include>`` only mean something relative to a set of packages, so
+the crawl follows rospkg's rules (a ``package.xml`` makes a directory a package and
+ends the search for packages below it; ``CATKIN_IGNORE`` and hidden directories are
+skipped) while still listing the launch files that live inside packages.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+from rosvar.diagnostics import Diagnostic, DiagnosticSink, Location
+from rosvar.frontends.ros1_xml.parser import is_launch_root, parse_xml_file
+
+PACKAGE_FILE = "package.xml"
+EXECUTABLES_FILE = ".executables"
+IGNORE_MARKERS = ("CATKIN_IGNORE", "rospack_nosubdirs")
+LAUNCH_SUFFIXES = (".launch", ".launch.xml")
+
+
+@dataclass(frozen=True)
+class Package:
+    """A ROS package: its name (from ``package.xml``), directory and known executables."""
+
+    name: str
+    path: str
+    executables: frozenset[str] | None
+
+
+@dataclass
+class Workspace:
+    """The packages a launch file can refer to, and the launch files to analyse."""
+
+    roots: list[str]
+    packages: dict[str, Package]
+    launch_files: list[str]
+    diagnostics: list[Diagnostic]
+    # Packages hidden by an earlier one of the same name: $(find) never returns them,
+    # but files inside them still belong to them.
+    shadowed: list[Package] = field(default_factory=list)
+    _index: dict[str, Package] = field(default_factory=dict, init=False, repr=False, compare=False)
+    _indexed: int = field(default=-1, init=False, repr=False, compare=False)
+
+    def find(self, name: str) -> str | None:
+        """Directory of package ``name``; ``None`` leaves unknown packages to the caller."""
+        package = self.packages.get(name)
+        return package.path if package is not None else None
+
+    def package_of(self, path: str | os.PathLike[str]) -> Package | None:
+        """The innermost package whose directory contains ``path`` (symlinks resolved last)."""
+        index = self._path_index()
+        absolute = os.path.abspath(os.fspath(path))
+        found = _innermost(index, absolute)
+        if found is None:
+            real = os.path.realpath(absolute)
+            if real != absolute:
+                found = _innermost(index, real)
+        return found
+
+    def _path_index(self) -> dict[str, Package]:
+        # Rebuilt when packages are added, so a hand-built Workspace works too.
+        size = len(self.packages) + len(self.shadowed)
+        if size != self._indexed:
+            self._index = {package.path: package for package in self.shadowed}
+            self._index.update((package.path, package) for package in self.packages.values())
+            self._indexed = size
+        return self._index
+
+
+def _innermost(index: dict[str, Package], path: str) -> Package | None:
+    current = path
+    while True:
+        package = index.get(current)
+        if package is not None:
+            return package
+        parent = os.path.dirname(current)
+        if parent == current:
+            return None
+        current = parent
+
+
+def _read_executables(directory: str) -> frozenset[str] | None:
+    try:
+        with open(
+            os.path.join(directory, EXECUTABLES_FILE), encoding="utf-8", errors="replace"
+        ) as handle:
+            return frozenset(line.strip() for line in handle if line.strip())
+    except OSError:
+        return None
+
+
+class _Discovery:
+    """Mutable state of one :func:`discover` call."""
+
+    def __init__(self) -> None:
+        self.sink = DiagnosticSink()
+        self.packages: dict[str, Package] = {}
+        self.shadowed: list[Package] = []
+        self.package_dirs: set[str] = set()
+        self.launch_files: set[str] = set()
+
+    def add_package(self, directory: str) -> None:
+        real = os.path.realpath(directory)
+        if real in self.package_dirs:
+            return  # reached twice (overlapping roots, or a root also on ROS_PACKAGE_PATH)
+        self.package_dirs.add(real)
+        manifest = os.path.join(directory, PACKAGE_FILE)
+        name = self._package_name(manifest, directory)
+        package = Package(name, directory, _read_executables(directory))
+        first = self.packages.get(name)
+        if first is None:
+            self.packages[name] = package
+            return
+        self.shadowed.append(package)
+        self.sink.warning(
+            "package-duplicate",
+            f"package '{name}' is also at {first.path}; that first one is used",
+            Location(manifest),
+        )
+
+    def _package_name(self, manifest: str, directory: str) -> str:
+        fallback = os.path.basename(directory)
+        result = parse_xml_file(manifest)
+        root = result.root
+        problem: str
+        location = Location(manifest)
+        if root is None:
+            diagnostic = result.diagnostics[0]
+            problem, location = diagnostic.message, diagnostic.location
+        elif root.tag != "package":
+            problem, location = f"root element is <{root.tag}>, not <package>", root.location
+        else:
+            for child in root.children:
+                if child.tag == "name":
+                    name = child.text.strip(" \n\r\t")
+                    if name:
+                        return name
+                    problem, location = "<name> is empty", child.location
+                    break
+            else:
+                problem = "no <name> element"
+        self.sink.warning(
+            "package-xml-invalid",
+            f"cannot read the package name ({problem}); using the directory name '{fallback}'",
+            location,
+        )
+        return fallback
+
+    def enclosing_package(self, directory: str) -> bool:
+        """Register the package holding ``directory`` (itself included), if any."""
+        current = directory
+        while True:
+            if os.path.isfile(os.path.join(current, PACKAGE_FILE)):
+                self.add_package(current)
+                return True
+            parent = os.path.dirname(current)
+            if parent == current:
+                return False
+            current = parent
+
+    def crawl(self, top: str, *, list_launch: bool, inside_package: bool) -> None:
+        """Walk ``top`` for packages and, when ``list_launch``, for launch files."""
+        in_package: set[str] = {top} if inside_package else set()
+
+        def unreadable(error: OSError) -> None:
+            self.sink.warning(
+                "path-unreadable",
+                f"cannot list directory: {error.strerror or error}",
+                Location(error.filename or top),
+            )
+
+        for dirpath, dirnames, filenames in os.walk(top, onerror=unreadable):
+            if any(marker in filenames for marker in IGNORE_MARKERS):
+                dirnames.clear()
+                continue
+            inside = dirpath in in_package
+            if not inside and PACKAGE_FILE in filenames:
+                self.add_package(dirpath)
+                inside = True
+            if inside and not list_launch:
+                dirnames.clear()  # rospkg: a package is a leaf
+                continue
+            dirnames[:] = sorted(name for name in dirnames if not name.startswith("."))
+            if inside:
+                in_package.update(os.path.join(dirpath, name) for name in dirnames)
+            if list_launch:
+                for name in filenames:
+                    if _looks_like_launch(dirpath, name):
+                        self.launch_files.add(os.path.join(dirpath, name))
+
+
+def _looks_like_launch(directory: str, name: str) -> bool:
+    if name.startswith("."):
+        return False  # editor backups and lock files
+    if name.endswith(LAUNCH_SUFFIXES):
+        return True
+    return (
+        name.endswith(".xml")
+        and name != PACKAGE_FILE
+        and is_launch_root(os.path.join(directory, name))
+    )
+
+
+def discover(
+    paths: Sequence[str | os.PathLike[str]], *, ros_package_path: str | None = None
+) -> Workspace:
+    """Find packages and launch files below ``paths``, then packages on ROS_PACKAGE_PATH.
+
+    A path may be a directory or a single launch file (listed as given, with its
+    enclosing package registered). ``ros_package_path`` defaults to the environment;
+    its packages come after the roots' and contribute no launch files.
+    """
+    state = _Discovery()
+    roots = [os.path.abspath(os.fspath(path)) for path in paths]
+    for root in roots:
+        if os.path.isdir(root):
+            inside = state.enclosing_package(root)
+            state.crawl(root, list_launch=True, inside_package=inside)
+        elif os.path.exists(root):
+            state.launch_files.add(root)
+            state.enclosing_package(os.path.dirname(root))
+        else:
+            state.sink.error("path-missing", f"no such file or directory: {root}", Location(root))
+
+    if ros_package_path is None:
+        ros_package_path = os.environ.get("ROS_PACKAGE_PATH", "")
+    for entry in ros_package_path.split(os.pathsep):
+        if not entry.strip():
+            continue
+        directory = os.path.abspath(os.path.expanduser(entry))
+        if os.path.isdir(directory):
+            state.crawl(directory, list_launch=False, inside_package=False)
+
+    return Workspace(
+        roots=roots,
+        packages=state.packages,
+        launch_files=sorted(state.launch_files),
+        diagnostics=state.sink.items,
+        shadowed=state.shadowed,
+    )

@@ -1,0 +1,296 @@
+"""Tests of workspace discovery: packages as rospkg finds them, and launch files."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+from rosvar.diagnostics import Severity
+from rosvar.workspace import Package, Workspace, discover
+
+CORPUS = Path(__file__).resolve().parents[2] / ".." / "shared" / "corpus"
+LAUNCH = "<launch>\n  <arg name='a'/>\n</launch>\n"
+
+
+def make_package(directory: Path, name: str | None = None, manifest: str | None = None) -> Path:
+    directory.mkdir(parents=True, exist_ok=True)
+    if manifest is None:
+        manifest = f'<?xml version="1.0"?>\n<package format="2">\n  <name>{name}</name>\n</package>'
+    (directory / "package.xml").write_text(manifest)
+    return directory
+
+
+def write(path: Path, text: str = LAUNCH) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text)
+    return path
+
+
+def codes(workspace: Workspace) -> list[str]:
+    return [diagnostic.code for diagnostic in workspace.diagnostics]
+
+
+def test_packages_and_launch_files(tmp_path: Path) -> None:
+    src = tmp_path / "src"
+    alpha = make_package(src / "alpha_dir", "alpha")
+    beta = make_package(src / "group" / "beta", "beta")
+    write(alpha / "launch" / "a.launch")
+    write(alpha / "launch" / "includes" / "b.launch.xml")
+    write(beta / "c.launch")
+    write(tmp_path / "loose.launch")  # outside any package: still listed
+
+    workspace = discover([tmp_path], ros_package_path="")
+
+    assert workspace.roots == [str(tmp_path)]
+    assert set(workspace.packages) == {"alpha", "beta"}
+    assert workspace.find("alpha") == str(alpha)
+    assert workspace.find("unknown") is None
+    assert workspace.launch_files == sorted(
+        [
+            str(alpha / "launch" / "a.launch"),
+            str(alpha / "launch" / "includes" / "b.launch.xml"),
+            str(beta / "c.launch"),
+            str(tmp_path / "loose.launch"),
+        ]
+    )
+    assert workspace.diagnostics == []
+
+
+def test_no_packages_searched_inside_a_package_but_launch_files_are(tmp_path: Path) -> None:
+    outer = make_package(tmp_path / "outer", "outer")
+    inner = make_package(outer / "sub" / "inner", "inner")
+    write(inner / "launch" / "deep.launch")
+
+    workspace = discover([tmp_path], ros_package_path="")
+
+    assert set(workspace.packages) == {"outer"}
+    assert workspace.launch_files == [str(inner / "launch" / "deep.launch")]
+    assert workspace.package_of(inner / "launch" / "deep.launch") == workspace.packages["outer"]
+
+
+def test_package_of_picks_the_innermost_package(tmp_path: Path) -> None:
+    outer = make_package(tmp_path / "outer", "outer")
+    inner = make_package(tmp_path / "outer_sibling" / "inner", "inner")
+    workspace = discover([tmp_path], ros_package_path="")
+    launch = inner / "launch" / "x.launch"
+    assert workspace.package_of(launch) == workspace.packages["inner"]
+    assert workspace.package_of(str(outer)) == workspace.packages["outer"]
+    assert workspace.package_of(tmp_path / "elsewhere.launch") is None
+
+
+def test_package_of_works_on_a_hand_built_workspace(tmp_path: Path) -> None:
+    package = Package("p", str(tmp_path / "p"), None)
+    workspace = Workspace([str(tmp_path)], {}, [], [])
+    assert workspace.package_of(tmp_path / "p" / "x.launch") is None
+    workspace.packages["p"] = package
+    assert workspace.package_of(tmp_path / "p" / "x.launch") == package
+
+
+def test_package_of_resolves_symlinks(tmp_path: Path) -> None:
+    real = make_package(tmp_path / "real", "real")
+    link = tmp_path / "link"
+    link.symlink_to(real, target_is_directory=True)
+    workspace = discover([tmp_path / "real"], ros_package_path="")
+    assert workspace.package_of(link / "x.launch") == workspace.packages["real"]
+
+
+def test_catkin_ignore_and_hidden_directories_are_skipped(tmp_path: Path) -> None:
+    ignored = make_package(tmp_path / "ignored", "ignored")
+    (ignored / "CATKIN_IGNORE").write_text("")
+    write(ignored / "i.launch")
+    write(tmp_path / "tree" / "CATKIN_IGNORE", "")
+    make_package(tmp_path / "tree" / "below", "below")
+    hidden = make_package(tmp_path / ".hidden" / "h", "hidden")
+    write(hidden / "h.launch")
+    write(tmp_path / "kept" / ".git" / "x.launch")
+    write(tmp_path / "kept" / ".#lock.launch")
+    kept = write(tmp_path / "kept" / "k.launch")
+
+    workspace = discover([tmp_path], ros_package_path="")
+
+    assert workspace.packages == {}
+    assert workspace.launch_files == [str(kept)]
+
+
+def test_ros_package_path_adds_packages_after_roots(tmp_path: Path) -> None:
+    root = tmp_path / "ws"
+    mine = make_package(root / "common", "common")
+    write(mine / "mine.launch")
+    opt = tmp_path / "opt"
+    make_package(opt / "common", "common")
+    other = make_package(opt / "stack" / "other", "other")
+    write(other / "other.launch")
+    direct = make_package(tmp_path / "direct", "direct")  # an entry may be a package itself
+
+    search_path = os.pathsep.join([str(opt), "", str(tmp_path / "missing"), str(direct)])
+    workspace = discover([root], ros_package_path=search_path)
+
+    assert workspace.find("common") == str(mine)
+    assert workspace.find("other") == str(other)
+    assert workspace.find("direct") == str(direct)
+    assert workspace.launch_files == [str(mine / "mine.launch")]
+    assert codes(workspace) == ["package-duplicate"]
+    assert [package.path for package in workspace.shadowed] == [str(opt / "common")]
+
+
+def test_ros_package_path_defaults_to_the_environment(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    env = make_package(tmp_path / "env" / "from_env", "from_env")
+    monkeypatch.setenv("ROS_PACKAGE_PATH", str(tmp_path / "env"))
+    assert discover([tmp_path / "nothing_here_but_ok"]).find("from_env") == str(env)
+    monkeypatch.delenv("ROS_PACKAGE_PATH")
+    assert discover([tmp_path / "env"]).find("from_env") == str(env)
+
+
+def test_duplicate_packages_first_root_wins(tmp_path: Path) -> None:
+    first = make_package(tmp_path / "b_first" / "dup", "dup")
+    second = make_package(tmp_path / "a_second" / "dup", "dup")
+    workspace = discover([tmp_path / "b_first", tmp_path / "a_second"], ros_package_path="")
+    assert workspace.find("dup") == str(first)
+    (warning,) = workspace.diagnostics
+    assert (warning.code, warning.severity) == ("package-duplicate", Severity.WARNING)
+    assert warning.location.file == str(second / "package.xml")
+    assert str(first) in warning.message
+    assert workspace.package_of(second / "x.launch") == Package("dup", str(second), None)
+
+
+def test_same_directory_twice_is_not_a_duplicate(tmp_path: Path) -> None:
+    make_package(tmp_path / "p", "p")
+    workspace = discover([tmp_path, tmp_path / "p"], ros_package_path=str(tmp_path))
+    assert list(workspace.packages) == ["p"] and workspace.diagnostics == []
+
+
+def test_executables_file(tmp_path: Path) -> None:
+    with_list = make_package(tmp_path / "with", "with")
+    (with_list / ".executables").write_text("node_a\n\n  script.py  \nnode_a\n")
+    empty = make_package(tmp_path / "empty", "empty")
+    (empty / ".executables").write_text("")
+    make_package(tmp_path / "without", "without")
+
+    packages = discover([tmp_path], ros_package_path="").packages
+
+    assert packages["with"].executables == frozenset({"node_a", "script.py"})
+    assert packages["empty"].executables == frozenset()
+    assert packages["without"].executables is None
+
+
+@pytest.mark.parametrize(
+    "manifest",
+    [
+        "<package><name>broken</package>",
+        "<package><description>no name</description></package>",
+        "<package><name>  </name></package>",
+        "<launch/>",
+        '<!DOCTYPE package [<!ENTITY n "evil">]><package><name>&n;</name></package>',
+        "",
+    ],
+)
+def test_invalid_package_xml_falls_back_to_directory_name(tmp_path: Path, manifest: str) -> None:
+    make_package(tmp_path / "dir_name", manifest=manifest)
+    workspace = discover([tmp_path], ros_package_path="")
+    assert workspace.find("dir_name") == str(tmp_path / "dir_name")
+    (warning,) = workspace.diagnostics
+    assert (warning.code, warning.severity) == ("package-xml-invalid", Severity.WARNING)
+    assert "dir_name" in warning.message
+
+
+def test_package_name_is_stripped(tmp_path: Path) -> None:
+    make_package(tmp_path / "d", manifest="<package><name>\n  spaced\n</name></package>")
+    assert discover([tmp_path], ros_package_path="").find("spaced") == str(tmp_path / "d")
+
+
+def test_xml_files_are_launch_files_only_with_a_launch_root(tmp_path: Path) -> None:
+    package = make_package(tmp_path / "p", "p")
+    launch_xml = write(package / "launch" / "bringup.xml")
+    write(package / "nodelet_plugins.xml", '<library path="lib"><class name="a/B"/></library>')
+    write(package / "urdf" / "robot.xml", "<robot name='launch'/>")
+    write(package / "bad.xml", "<launch")
+
+    workspace = discover([tmp_path], ros_package_path="")
+
+    assert workspace.launch_files == [str(launch_xml)]
+
+
+def test_single_launch_file_argument(tmp_path: Path) -> None:
+    package = make_package(tmp_path / "ws" / "pkg", "pkg")
+    make_package(tmp_path / "ws" / "neighbour", "neighbour")
+    launch = write(package / "launch" / "one.launch")
+    other = write(package / "launch" / "two.launch")
+
+    workspace = discover([launch], ros_package_path="")
+
+    assert workspace.launch_files == [str(launch)]
+    assert str(other) not in workspace.launch_files
+    assert list(workspace.packages) == ["pkg"]
+    assert workspace.package_of(launch) == workspace.packages["pkg"]
+
+
+def test_directory_inside_a_package_registers_that_package(tmp_path: Path) -> None:
+    package = make_package(tmp_path / "pkg", "pkg")
+    launch = write(package / "launch" / "one.launch")
+    workspace = discover([package / "launch"], ros_package_path="")
+    assert workspace.launch_files == [str(launch)]
+    assert workspace.find("pkg") == str(package)
+
+
+def test_relative_paths_become_absolute(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    launch = write(tmp_path / "a.launch")
+    monkeypatch.chdir(tmp_path)
+    workspace = discover(["."], ros_package_path="")
+    assert workspace.roots == [str(tmp_path)]
+    assert workspace.launch_files == [str(launch)]
+
+
+def test_missing_path_is_reported_and_discovery_continues(tmp_path: Path) -> None:
+    launch = write(tmp_path / "ok" / "a.launch")
+    missing = tmp_path / "missing"
+    workspace = discover([missing, tmp_path / "ok"], ros_package_path="")
+    (error,) = workspace.diagnostics
+    assert (error.code, error.severity) == ("path-missing", Severity.ERROR)
+    assert error.location.file == str(missing)
+    assert workspace.launch_files == [str(launch)]
+
+
+def test_symlinked_directories_are_not_followed(tmp_path: Path) -> None:
+    loop = tmp_path / "a"
+    write(loop / "x.launch")
+    (loop / "again").symlink_to(loop, target_is_directory=True)
+    (tmp_path / "link").symlink_to(loop, target_is_directory=True)
+    workspace = discover([tmp_path], ros_package_path="")
+    assert workspace.launch_files == [str(loop / "x.launch")]
+
+
+def corpus_or_skip() -> Path:
+    if not CORPUS.is_dir():
+        pytest.skip("shared corpus not available")
+    return CORPUS.resolve()
+
+
+def test_corpus_husky_launch_files() -> None:
+    corpus = corpus_or_skip()
+    husky = corpus / "husky"
+    expected = sorted(
+        os.path.join(directory, name)
+        for directory, _, names in os.walk(husky)
+        for name in names
+        if ".launch" in name
+    )
+    workspace = discover([husky], ros_package_path="")
+    assert len(workspace.launch_files) == 137
+    assert workspace.launch_files == expected
+    assert workspace.diagnostics == []
+    for launch in workspace.launch_files:
+        assert workspace.package_of(launch) is not None, launch
+
+
+def test_corpus_husky_with_external_resolves_gazebo_ros() -> None:
+    corpus = corpus_or_skip()
+    workspace = discover([corpus / "husky", corpus / "_external"], ros_package_path="")
+    gazebo_ros = workspace.find("gazebo_ros")
+    assert gazebo_ros is not None
+    assert Path(gazebo_ros, "package.xml").is_file()
+    assert workspace.find("husky_gazebo") is not None
+    assert discover([corpus / "husky"], ros_package_path="").find("gazebo_ros") is None
