@@ -154,18 +154,74 @@ class ConditionSpace:
         return bool(reduced == self.true)
 
     # -- readable form ---------------------------------------------------------------------
-    def describe(self, condition: BDD, qualify: bool = False) -> str:
-        """A short readable formula, e.g. ``use_teleop=true ∧ ¬sim``, modulo validity."""
+    def describe(self, condition: BDD, qualify: bool = False, known_only: bool = True) -> str:
+        """A short readable formula, e.g. ``use_teleop=true ∧ ¬sim``, modulo validity.
+
+        With ``known_only`` (the default) arg inputs are assumed to hold one of the
+        values analysis knows, which hides the rarely useful ``<other>`` refinements;
+        a suffix says when other values matter.
+        """
         if condition == self.false or not self.satisfiable(condition):
             return "false"
-        simplified = _cudd.restrict(condition, self.valid)
-        if simplified == self.true or self.valid_implies(condition):
+        if known_only:
+            others = {
+                name: False
+                for atom, name in self._var_of.items()
+                if isinstance(atom, SlotAtom) and atom.slot is OTHER and isinstance(atom.input, ArgInput)
+            }
+            known = self.bdd.let(others, condition) if others else condition
+            care = self.bdd.let(others, self.valid) if others else self.valid
+            if (known & care) == self.false:
+                return "only for other values"
+        else:
+            known, care = condition, self.valid
+        simplified = _cudd.restrict(known, care)
+        if simplified == self.true or (care & ~known) == self.false:
             return "true"
-        cubes = _merge_cubes(self._grouped_cubes(simplified), self._domains)
+        cubes = self._prime_cubes(simplified, known, care)
         rendered = [self._render_cube(cube, qualify) for cube in cubes]
         if len(rendered) == 1:
             return rendered[0]
         return " ∨ ".join(f"({r})" if "∧" in r else r for r in sorted(rendered))
+
+    def _prime_cubes(
+        self, simplified: BDD, target: BDD, care: BDD
+    ) -> list[dict[object, frozenset[Slot] | bool]]:
+        """Cubes of ``simplified``, each widened while it stays inside ``target`` (mod care)."""
+        cubes = _merge_cubes(self._grouped_cubes(simplified), self._domains)
+        widened: list[dict[object, frozenset[Slot] | bool]] = []
+        outside = care & ~target
+        for cube in cubes:
+            for key in sorted(cube, key=_sort_key):
+                trial = {k: v for k, v in cube.items() if k != key}
+                if (self._cube_bdd(trial) & outside) == self.false:
+                    cube = trial
+            if cube not in widened:
+                widened.append(cube)
+        covered = [self._cube_bdd(c) for c in widened]
+        result = []
+        for index, cube in enumerate(widened):
+            others = self.false
+            for j, bdd in enumerate(covered):
+                if j != index and (j < index or widened[j] not in result):
+                    others |= bdd
+            if ((covered[index] & care) & ~others) != self.false:
+                result.append(cube)
+        return result or widened
+
+    def _cube_bdd(self, cube: Mapping[object, frozenset[Slot] | bool]) -> BDD:
+        result = self.true
+        for key, value in cube.items():
+            if isinstance(key, PredicateAtom):
+                atom = self.predicate(key.test, key.term)
+                result &= atom if value else ~atom
+            else:
+                assert isinstance(value, frozenset)
+                any_slot = self.false
+                for slot in value:
+                    any_slot |= self.slot(key, slot)  # type: ignore[arg-type]
+                result &= any_slot
+        return result
 
     def _paths(self, u: BDD) -> Iterator[dict[str, bool]]:
         if u == self.false:

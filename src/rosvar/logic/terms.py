@@ -42,9 +42,11 @@ class Apply:
     def __str__(self) -> str:
         if self.display:
             return self.display
-        if self.function == "concat":
-            return "".join(str(o) for o in self.operands)
-        return f"{self.function}({', '.join(str(o) for o in self.operands)})"
+        shown = [o if isinstance(o, str | tuple) else str(o) for o in self.operands]
+        try:  # string functions applied to the operands' display show the shape of the result
+            return FUNCTIONS[self.function](None, *shown)
+        except Exception:
+            return f"{self.function}({', '.join(str(o) for o in self.operands)})"
 
 
 Term = Hole | Apply
