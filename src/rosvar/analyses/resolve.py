@@ -82,7 +82,11 @@ class _Restriction:
     """One model under one configuration."""
 
     def __init__(
-        self, analysis: Analysis, model: LaunchModel, args: Mapping[str, str], env: Mapping[str, str]
+        self,
+        analysis: Analysis,
+        model: LaunchModel,
+        args: Mapping[str, str],
+        env: Mapping[str, str],
     ) -> None:
         self.space = analysis.space
         self.model = model
@@ -108,7 +112,9 @@ class _Restriction:
                     try:
                         return evaluate(leaf, self.concrete, self.host)  # type: ignore[arg-type]
                     except (TermError, LookupError, ValueError) as error:
-                        raise ResolutionError("value-unknown", f"{what}: {error}", location) from None
+                        raise ResolutionError(
+                            "value-unknown", f"{what}: {error}", location
+                        ) from None
                 return leaf
         raise ResolutionError("value-undefined", f"{what} has no value here", location)
 
@@ -219,7 +225,10 @@ def _node(r: _Restriction, node: object) -> dict[str, object]:
             remaps.pop(str(source), None)
             remaps[str(source)] = str(target)
     env = [
-        [r.raw(Choice.const(r.space, e.name), location, "env"), r.raw(Choice.const(r.space, e.value), location, "env")]
+        [
+            r.raw(Choice.const(r.space, e.name), location, "env"),
+            r.raw(Choice.const(r.space, e.value), location, "env"),
+        ]
         for e in node.env
         if r.holds(e.condition)
     ]
@@ -236,8 +245,20 @@ def _node(r: _Restriction, node: object) -> dict[str, object]:
         "col": location.col,
     }
     if node.is_test:
-        entry["test_name"] = raw.get("test-name")
+        entry.update(_test_fields(raw, location))
     return entry
+
+
+def _test_fields(raw: Mapping[str, str | None], location: Location) -> dict[str, object]:
+    """``_test_attrs`` and the ``Test`` constructor: defaults 60 s and 0 retries, output log."""
+    try:
+        time_limit = float(raw.get("time-limit") or 60.0)
+        retry = int(raw.get("retry") or 0)
+    except ValueError as error:
+        raise ResolutionError("test-invalid", str(error), location) from None
+    if time_limit <= 0:
+        raise ResolutionError("test-invalid", "'time-limit' must be a positive number", location)
+    return {"test_name": raw.get("test-name"), "time_limit": time_limit, "retry": retry, "output": "log"}
 
 
 __all__ = ["ArgInput", "Conflict", "Resolution", "ResolutionError", "resolve"]

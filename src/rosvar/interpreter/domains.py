@@ -168,4 +168,3 @@ class DomainTable:
         if "$" in text or "\x00" in text:
             return None
         return os.path.realpath(text)
-

@@ -8,20 +8,20 @@ the functions registered in :data:`TAGS` (see :mod:`rosvar.interpreter.tags`).
 
 from __future__ import annotations
 
-import os
+import weakref
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import load_launch_file
-from rosvar.interpreter.model import LaunchModel, Raw, ErrorEvent
+from rosvar.interpreter.model import ErrorEvent, LaunchModel, Raw
 from rosvar.interpreter.scope import MISSING, ArgValue, Scope
 from rosvar.interpreter.substitution import Substituter, Value
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.conditions import BDD, ConditionSpace, register_predicate
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
-from rosvar.logic.terms import Apply, Hole, Term, is_term
+from rosvar.logic.terms import Hole, Term, is_term
 from rosvar.workspace import Workspace
 
 Handler = Callable[["Interpretation", Entity, Scope], None]
@@ -71,7 +71,9 @@ class Interpretation:
         self._env_domains = env_domains
         self.sink = DiagnosticSink()
         self.pc: BDD = space.true
-        self.substituter = Substituter(self)
+        # A weak reference: a cycle would let the garbage collector free BDD nodes
+        # after their manager, which CUDD reports as an error.
+        self.substituter = Substituter(weakref.proxy(self))
         inputs: dict[str, ArgInput] = {}
         self.model = LaunchModel(file=file, space=space, inputs=inputs, domains={})
         self.default_machine: Choice[Raw | None] = Choice.const(space, None)
@@ -107,7 +109,10 @@ class Interpretation:
     def new_anon(self, scope: Scope, anon_id: str) -> Choice[Raw]:
         pc = self.pc
         current = self.anon_count
-        names = current.map(lambda n: f"{anon_id}_anon{n + 1}")
+        # roslaunch's anonymous_name() screens '.', '-' and ':' out of names; the
+        # counter stands for its random part (the oracle uses the same convention).
+        base = anon_id.replace(".", "_").replace("-", "_").replace(":", "_")
+        names = current.map(lambda n: f"{base}_anon{n + 1}")
         self.anon_count = Choice(
             [(c & pc, n + 1) for c, n in current] + [(c & ~pc, n) for c, n in current]
         )
@@ -159,14 +164,14 @@ class Interpretation:
         finally:
             self.pc = saved
 
-    def fail(self, condition: BDD, code: str, message: str, location: Location | None = None) -> None:
+    def fail(
+        self, condition: BDD, code: str, message: str, location: Location | None = None
+    ) -> None:
         """roslaunch raises here under ``condition`` (within the current path)."""
         where = self.pc & condition
         if where == self.space.false:
             return
-        self.model.errors.append(
-            ErrorEvent(where, location or self.location, code, message)
-        )
+        self.model.errors.append(ErrorEvent(where, location or self.location, code, message))
 
     def warn(self, code: str, message: str) -> None:
         self.sink.warning(code, message, self.location)
@@ -288,9 +293,7 @@ class Interpretation:
         return result.root
 
 
-def split(
-    interpretation: Interpretation, choice: Choice[Raw]
-) -> Iterator[tuple[BDD, Raw]]:
+def split(interpretation: Interpretation, choice: Choice[Raw]) -> Iterator[tuple[BDD, Raw]]:
     """Iterate the branches of ``choice`` that are possible on the current path."""
     for condition, leaf in choice:
         if interpretation.pc & condition != interpretation.space.false:
@@ -299,4 +302,3 @@ def split(
 
 def choice_terms(value: Choice[Raw]) -> list[Term]:
     return [leaf for _c, leaf in value if is_term(leaf)]  # type: ignore[misc]
-

@@ -24,7 +24,9 @@ LIFTED: dict[str, StringFunction] = {
     "node_namespace": lambda ns: _collapse(names.make_global_ns(ns or "/")),
     "strip": str.strip,
     "append": lambda a, b: a + b,
-    "private_key": lambda ns, key: names.canonicalize_name(ns + (key[1:] if key[:1] == "~" else key)),
+    "private_key": lambda ns, key: names.canonicalize_name(
+        ns + (key[1:] if key[:1] == "~" else key)
+    ),
 }
 
 

@@ -13,10 +13,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Final
 
+from rosvar.diagnostics import Location
 from rosvar.interpreter.model import EnvSetting, Raw, Remap
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import BDD
-from rosvar.diagnostics import Location
 
 
 class _Missing:

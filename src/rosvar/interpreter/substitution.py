@@ -90,7 +90,9 @@ def collect(text: str) -> list[str]:
 def _split(body: str) -> list[str]:
     words = [w for w in body.split(" ") if w]
     if not words:
-        raise SubstitutionError(f"Unknown substitution command [{body}]. Valid commands are {list(COMMANDS)}")
+        raise SubstitutionError(
+            f"Unknown substitution command [{body}]. Valid commands are {list(COMMANDS)}"
+        )
     if words[0] not in COMMANDS:
         raise SubstitutionError(
             f"Unknown substitution command [{body}]. Valid commands are {list(COMMANDS)}"
@@ -243,9 +245,11 @@ class Substituter:
                 )
             name = params[0]
             return self.host.env_value(name).map(
-                lambda v: Fail(f"environment variable '{name}' is not set", "env-unset")
-                if v is None
-                else v
+                lambda v: (
+                    Fail(f"environment variable '{name}' is not set", "env-unset")
+                    if v is None
+                    else v
+                )
             )
         if command == "optenv":
             if not params:
@@ -299,12 +303,12 @@ class Substituter:
             arg_names = sorted(referenced_args(expression))
             env_names = sorted(_env_names(expression))
         except EvalRefused as error:
-            return Choice.const(space, Fail(f"$(eval {expression}): {error.message}", "eval-refused"))
+            return Choice.const(
+                space, Fail(f"$(eval {expression}): {error.message}", "eval-refused")
+            )
         except _Undecidable as error:
             return Choice.const(space, Fail(f"$(eval {expression}): {error}", "eval-undecidable"))
-        arg_choices = [
-            scope.args.get(n, Choice.const(space, MISSING)) for n in arg_names
-        ]
+        arg_choices = [scope.args.get(n, Choice.const(space, MISSING)) for n in arg_names]
         env_choices = [self.host.env_value(n) for n in env_names]
         filename = scope.filename
         anon_values: dict[str, str] = {}
@@ -334,6 +338,8 @@ class Substituter:
                 lambda anon_id: anon_values.setdefault(anon_id, f"{anon_id}_anon"),
             )
 
+        if not arg_choices and not env_choices:
+            return Choice.const(space, run([]))
         return combine([*arg_choices, *env_choices], run)  # type: ignore[list-item]
 
 
@@ -351,8 +357,10 @@ def _env_names(expression: str) -> set[str]:
             and isinstance(node.func, ast.Name)
             and node.func.id in ("env", "optenv")
         ):
-            if node.args and isinstance(node.args[0], ast.Constant) and isinstance(
-                node.args[0].value, str
+            if (
+                node.args
+                and isinstance(node.args[0], ast.Constant)
+                and isinstance(node.args[0].value, str)
             ):
                 names.add(node.args[0].value)
             else:

@@ -22,7 +22,8 @@ def node_problem(
 ) -> str | None:
     """What roslaunch's ``Node`` constructor and attribute parsing reject, or None."""
     if any(
-        is_term(v) for v in (name, package, node_type, output, cwd, respawn, required, respawn_delay)
+        is_term(v)
+        for v in (name, package, node_type, output, cwd, respawn, required, respawn_delay)
     ):
         return None
     try:

@@ -108,4 +108,4 @@ RosparamLoader.add_implicit_resolver("!radians", re.compile(r"^rad\([^\)]*\)$"),
 
 
 def load_yaml(text: str) -> object:
-    return yaml.load(text, Loader=RosparamLoader)  # noqa: S506 - a SafeLoader subclass
+    return yaml.load(text, Loader=RosparamLoader)

@@ -55,6 +55,9 @@ class ConditionSpace:
 
     def __init__(self) -> None:
         self.bdd = _cudd.BDD()
+        # Declaration order is already local (one file's inputs together); dynamic
+        # reordering would cost more than it saves, quadratically in the variables.
+        self.bdd.configure(reordering=False)
         self.true: BDD = self.bdd.true
         self.false: BDD = self.bdd.false
         self.valid: BDD = self.bdd.true
@@ -139,9 +142,9 @@ class ConditionSpace:
         result: dict[str, bool] = {}
         for atom, name in self._var_of.items():
             if isinstance(atom, SlotAtom):
-                result[name] = chosen.get(atom.input) is atom.slot or chosen.get(
-                    atom.input
-                ) == atom.slot
+                result[name] = (
+                    chosen.get(atom.input) is atom.slot or chosen.get(atom.input) == atom.slot
+                )
             else:
                 result[name] = _decide(atom, concrete, host)
         return result
@@ -167,7 +170,9 @@ class ConditionSpace:
             others = {
                 name: False
                 for atom, name in self._var_of.items()
-                if isinstance(atom, SlotAtom) and atom.slot is OTHER and isinstance(atom.input, ArgInput)
+                if isinstance(atom, SlotAtom)
+                and atom.slot is OTHER
+                and isinstance(atom.input, ArgInput)
             }
             known = self.bdd.let(others, condition) if others else condition
             care = self.bdd.let(others, self.valid) if others else self.valid

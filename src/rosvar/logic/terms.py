@@ -98,9 +98,7 @@ def evaluate(value: Operand, inputs: Mapping[Input, str], host: object = None) -
             return inputs[value.input]
         except KeyError:
             raise TermError(f"no value for {value.input}") from None
-    operands = [
-        o if isinstance(o, tuple) else evaluate(o, inputs, host) for o in value.operands
-    ]
+    operands = [o if isinstance(o, tuple) else evaluate(o, inputs, host) for o in value.operands]
     try:
         function = FUNCTIONS[value.function]
     except KeyError:

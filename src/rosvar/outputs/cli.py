@@ -83,8 +83,15 @@ def cmd_resolve(options: argparse.Namespace) -> int:
             print(f"rosvar: --env expects NAME=VALUE, got {item!r}", file=sys.stderr)
             return EXIT_USAGE
         env[name] = value
-    analysis = Analysis(workspace)
-    result = resolve(analysis, files, command_line_mappings(options.args), env)
+    args = command_line_mappings(options.args)
+    # The given values become known slots: conditions split on them instead of
+    # leaving them to <other> terms (the semantics does not change).
+    analysis = Analysis(
+        workspace,
+        extra_values={k: [v] for k, v in args.items()},
+        env_values={k: [v] for k, v in env.items()},
+    )
+    result = resolve(analysis, files, args, env)
     document = result.to_json()
     if options.json:
         json.dump(document, sys.stdout, indent=2)
@@ -116,7 +123,9 @@ def parser() -> argparse.ArgumentParser:
     res = commands.add_parser(
         "resolve", help="one concrete configuration, as roslaunch would load it"
     )
-    res.add_argument("paths", nargs="+", metavar="PATH", help="package roots (and name:=value args)")
+    res.add_argument(
+        "paths", nargs="+", metavar="PATH", help="package roots (and name:=value args)"
+    )
     res.add_argument("--launch", action="append", required=True, metavar="FILE")
     res.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
     res.add_argument("--json", action="store_true")

@@ -92,6 +92,3 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
         ],
         "diagnostics": [d.to_json() for d in model.diagnostics],
     }
-
-
-

@@ -72,11 +72,15 @@ def _include(it: Interpretation, entity: Entity, scope: Scope, file: Raw, pass_a
         it.fail(it.space.true, "include-cycle", f"include cycle: {file} includes itself")
         return
     if len(it.stack) >= MAX_INCLUDE_DEPTH:
-        it.fail(it.space.true, "include-too-deep", f"includes nested deeper than {MAX_INCLUDE_DEPTH}")
+        it.fail(
+            it.space.true, "include-too-deep", f"includes nested deeper than {MAX_INCLUDE_DEPTH}"
+        )
         return
     root = it.load(file)
     it.model.includes.append(
-        IncludeDecl(it.pc, entity.location, Choice.const(it.space, file), scope.ns, root is not None)
+        IncludeDecl(
+            it.pc, entity.location, Choice.const(it.space, file), scope.ns, root is not None
+        )
     )
     if root is None:
         return

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, split, tag
+from rosvar.interpreter.interpretation import Interpretation, tag
 from rosvar.interpreter.lifted import lift
 from rosvar.interpreter.model import EnvSetting, NodeDecl, ParamDecl, Raw, Remap
 from rosvar.interpreter.scope import Scope
@@ -17,11 +17,31 @@ from rosvar.logic.choice import Choice, combine
 from rosvar.ros.names import is_legal_name
 
 NODE_ATTRIBUTES = (
-    "pkg", "type", "machine", "name", "args", "output", "respawn", "respawn_delay",
-    "cwd", "ns", "clear_params", "launch-prefix", "required",
+    "pkg",
+    "type",
+    "machine",
+    "name",
+    "args",
+    "output",
+    "respawn",
+    "respawn_delay",
+    "cwd",
+    "ns",
+    "clear_params",
+    "launch-prefix",
+    "required",
 )
 TEST_ATTRIBUTES = (*NODE_ATTRIBUTES, "test-name", "time-limit", "retry")
-OPTIONAL = ("machine", "args", "output", "respawn", "respawn_delay", "cwd", "launch-prefix", "required")
+OPTIONAL = (
+    "machine",
+    "args",
+    "output",
+    "respawn",
+    "respawn_delay",
+    "cwd",
+    "launch-prefix",
+    "required",
+)
 
 
 @tag("node")
@@ -43,14 +63,20 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
             it.check_attributes(entity, TEST_ATTRIBUTES)
             for forbidden in ("respawn", "respawn_delay", "output"):
                 if entity.has(forbidden):
-                    it.fail(it.space.true, "test-invalid", f"<test> tags cannot have '{forbidden}' attribute")
+                    it.fail(
+                        it.space.true,
+                        "test-invalid",
+                        f"<test> tags cannot have '{forbidden}' attribute",
+                    )
                     return
             name = it.attr(entity, "name", scope)
             test_name = it.required(entity, "test-name", scope)
             if test_name is None:
                 return
             fields["test-name"] = test_name  # type: ignore[assignment]
-            fields["time-limit"] = it.attr(entity, "time-limit", scope) or Choice.const(it.space, None)
+            fields["time-limit"] = it.attr(entity, "time-limit", scope) or Choice.const(
+                it.space, None
+            )
             fields["retry"] = it.attr(entity, "retry", scope) or Choice.const(it.space, None)
             if name is None:
                 name = test_name
@@ -76,7 +102,8 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
             fields[key] = it.attr(entity, key, scope) or Choice.const(it.space, None)  # type: ignore[assignment]
         machine = fields["machine"]
         fields["machine"] = combine(
-            [machine, it.default_machine], lambda v: v[0] or v[1]  # type: ignore[list-item]
+            [machine, it.default_machine],
+            lambda v: v[0] or v[1],  # type: ignore[list-item]
         )
         fields["name"] = name  # type: ignore[assignment]
         fields["namespace"] = it.strip(lift("node_namespace", child.ns))  # type: ignore[assignment]
@@ -112,7 +139,16 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
         problem = combine(
             [
                 fields[k]
-                for k in ("name", "pkg", "type", "output", "cwd", "respawn", "required", "respawn_delay")
+                for k in (
+                    "name",
+                    "pkg",
+                    "type",
+                    "output",
+                    "cwd",
+                    "respawn",
+                    "required",
+                    "respawn_delay",
+                )
             ],
             lambda v: node_problem(*v),  # type: ignore[arg-type]
         )

@@ -9,6 +9,7 @@ from rosvar.interpreter.model import Binary, DeferredValue, ParamDecl, Raw
 from rosvar.interpreter.scope import PrivateParam, Scope
 from rosvar.interpreter.values import convert_value
 from rosvar.logic.choice import Choice, Fail
+from rosvar.logic.terms import Apply
 from rosvar.ros import names
 
 ATTRIBUTES = ("name", "value", "type", "textfile", "binfile", "command")
@@ -31,8 +32,12 @@ def param_value(kind: str, raw: str, ptype: str) -> object:
 def _value_choice(it: Interpretation, kind: str, raw: Choice[Raw], ptype: str) -> Choice[object]:
     def convert(leaf: Raw) -> object:
         if not isinstance(leaf, str):
-            return DeferredValue(leaf, ptype) if kind in ("value", "command") else Fail(
-                f"{kind} path {leaf} is only known per configuration", "param-unknown-file"
+            return (
+                DeferredValue(leaf, ptype)
+                if kind in ("value", "command")
+                else Fail(
+                    f"{kind} path {leaf} is only known per configuration", "param-unknown-file"
+                )
             )
         try:
             return param_value(kind, leaf, ptype)
@@ -42,7 +47,9 @@ def _value_choice(it: Interpretation, kind: str, raw: Choice[Raw], ptype: str) -
     return it.strip(raw.map(convert))  # type: ignore[arg-type,return-value]
 
 
-def add_private(it: Interpretation, params: list[PrivateParam], key: str, value: Choice[object]) -> None:
+def add_private(
+    it: Interpretation, params: list[PrivateParam], key: str, value: Choice[object]
+) -> None:
     """``LoaderContext.add_param``: a later ``~key`` hides an earlier one."""
     kept = []
     for param in params:
@@ -73,7 +80,11 @@ def handle_param(it: Interpretation, entity: Entity, scope: Scope, force_local: 
         kind, raw = present[0]
         assert raw is not None
         if not entity.has("name"):
-            it.fail(it.space.true, "attribute-missing", "<param> tag is missing required attribute: 'name'")
+            it.fail(
+                it.space.true,
+                "attribute-missing",
+                "<param> tag is missing required attribute: 'name'",
+            )
             return
         names_choice = it.resolve((entity.get("name") or "").strip(), scope, "<param> name")
         assert names_choice is not None
@@ -88,13 +99,20 @@ def handle_param(it: Interpretation, entity: Entity, scope: Scope, force_local: 
                     if isinstance(key, str):
                         add_private(it, scope.params, key, value)
                     else:
-                        it.warn("param-name-unknown", f"param name {key} is only known per configuration")
+                        it.warn(
+                            "param-name-unknown",
+                            f"param name {key} is only known per configuration",
+                        )
                     continue
-                full = it.strip(lift("canonicalize", it.strip(lift("ns_join", scope.ns, Choice.const(it.space, name)))))
+                full = it.strip(
+                    lift(
+                        "canonicalize",
+                        it.strip(lift("ns_join", scope.ns, Choice.const(it.space, name))),
+                    )
+                )
                 it.model.params.append(ParamDecl(it.pc, entity.location, full, value, "param"))
 
 
 @tag("param")
 def handle_param_tag(it: Interpretation, entity: Entity, scope: Scope) -> None:
     handle_param(it, entity, scope, force_local=False)
-

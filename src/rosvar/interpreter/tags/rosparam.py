@@ -80,7 +80,9 @@ def _load(
                 for c_param, param in _one(it, values["param"]):
                     with it.under(c_cmd & c_ns & c_file & c_param) as live:  # type: ignore[operator]
                         if live:
-                            _load_one(it, entity, scope, command or "load", ns, file, param, substitute)
+                            _load_one(
+                                it, entity, scope, command or "load", ns, file, param, substitute
+                            )
 
 
 def _load_one(
@@ -99,15 +101,25 @@ def _load_one(
         return
     assert isinstance(command, str)
     if command not in ("load", "dump", "delete"):
-        it.fail(true, "rosparam-invalid", "error loading <rosparam> tag: command must be 'load', 'dump', or 'delete'")
+        it.fail(
+            true,
+            "rosparam-invalid",
+            "error loading <rosparam> tag: command must be 'load', 'dump', or 'delete'",
+        )
         return
     if file is not None:
         assert isinstance(file, str)
         if command == "load" and not os.path.isfile(file):
-            it.fail(true, "file-missing", f"error loading <rosparam> tag: file does not exist [{file}]")
+            it.fail(
+                true, "file-missing", f"error loading <rosparam> tag: file does not exist [{file}]"
+            )
             return
         if command == "delete":
-            it.fail(true, "rosparam-invalid", "error loading <rosparam> tag: 'file' attribute is invalid with 'delete' command.")
+            it.fail(
+                true,
+                "rosparam-invalid",
+                "error loading <rosparam> tag: 'file' attribute is invalid with 'delete' command.",
+            )
             return
     if command != "load":
         return
@@ -136,7 +148,9 @@ def _load_one(
             with it.under(t_condition & p_condition):
                 if not isinstance(body, str) or not isinstance(full, str):
                     it.model.params.append(
-                        YamlDecl(it.pc, entity.location, Choice.const(it.space, full), param_name, body)  # type: ignore[arg-type]
+                        YamlDecl(
+                            it.pc, entity.location, Choice.const(it.space, full), param_name, body
+                        )  # type: ignore[arg-type]
                     )
                     continue
                 try:

@@ -1,0 +1,316 @@
+"""Synthetic ROS 1 workspaces of any size, shaped like the corpus, for the scaling benchmarks.
+
+The corpus stops at 137 launch files (Husky); the targets go to 10,000. These workspaces
+keep the corpus's proportions so per-file cost stays comparable as the size grows:
+
+* packages of ``FILES_PER_PACKAGE`` launch files, each with ``package.xml``, ``.executables``
+  (the corpus convention rosvar reads) and a ``config/params.yaml`` for ``rosparam load``;
+* 2-5 ``<arg>`` per file: booleans steer ``if``/``unless`` on nodes, groups and includes,
+  strings end up in node names, namespaces and remaps; a few have no default (command-line
+  inputs) or default to ``$(optenv ...)`` like Husky's;
+* shared global parameter names with file-specific values, so files that include each
+  other set the same parameter differently (conflicts for the analysis to find);
+* inline ``<rosparam>`` YAML and ``rosparam load``;
+* ``<include>`` of 1-2 files of the same or the previous package, some conditional, all
+  passing args. Each file has a *level* and includes only lower levels, so there are no
+  cycles and an include chain holds at most ``MAX_LEVEL + 1`` files, as in real systems.
+
+Output is a pure function of ``(n_files, seed)``: each file draws from its own seeded RNG.
+Run as a script to write a workspace: ``python bench/generate.py DIR N [--seed S]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import random
+from dataclasses import dataclass
+from pathlib import Path
+
+FILES_PER_PACKAGE = 20
+MAX_LEVEL = 3
+LEVEL_WEIGHTS = (35, 30, 20, 15)  # share of files at level 0 (leaves) .. MAX_LEVEL (bringups)
+EXECUTABLES = ("driver", "controller", "monitor", "relay", "bridge", "estimator", "planner")
+FILE_STEMS = (
+    "bringup",
+    "base",
+    "sensors",
+    "lidar",
+    "camera",
+    "imu",
+    "localization",
+    "navigation",
+    "teleop",
+    "description",
+    "control",
+    "mapping",
+    "diagnostics",
+    "gazebo",
+    "rviz",
+)
+BOOL_WORDS = (
+    "sim",
+    "rviz",
+    "ekf",
+    "lidar",
+    "camera",
+    "imu",
+    "gps",
+    "teleop",
+    "nav",
+    "mapping",
+    "debug",
+    "diagnostics",
+)
+STRING_ARGS = (
+    ("robot_name", "robot"),
+    ("robot_namespace", "husky"),
+    ("camera_name", "camera"),
+    ("tf_prefix", "base"),
+    ("scan_topic", "scan"),
+    ("map_frame", "map"),
+)
+# Global parameters many files set, each with its own value: the source of conflicts.
+SHARED_PARAMS = (
+    "/use_sim_time",
+    "/robot/max_velocity",
+    "/robot/controller_frequency",
+    "/diagnostics/period",
+    "/tf/publish_rate",
+    "/navigation/planner",
+)
+OPTENV_RATE = 0.15  # share of string args defaulting to $(optenv ...), as in Husky
+REQUIRED_RATE = 0.1  # share of args without a default (true command-line inputs)
+CONDITIONAL_INCLUDE_RATE = 0.35
+
+
+@dataclass(frozen=True)
+class _Arg:
+    name: str
+    boolean: bool
+    default: str | None  # None: must be given on the command line or by the includer
+
+
+@dataclass(frozen=True)
+class _Plan:
+    index: int
+    package: str
+    name: str
+    level: int
+    args: tuple[_Arg, ...]
+
+    @property
+    def find_path(self) -> str:
+        return f"$(find {self.package})/launch/{self.name}"
+
+
+def _package_name(number: int) -> str:
+    return f"gen_pkg_{number:04d}"
+
+
+def _plan_args(rng: random.Random) -> tuple[_Arg, ...]:
+    count = rng.randint(2, 5)
+    n_bool = rng.randint(1, count - 1)
+    args: list[_Arg] = []
+    for word in rng.sample(BOOL_WORDS, n_bool):
+        default = None if rng.random() < REQUIRED_RATE else rng.choice(("true", "false"))
+        args.append(_Arg(f"use_{word}", True, default))
+    for name, value in rng.sample(STRING_ARGS, count - n_bool):
+        roll = rng.random()
+        if roll < REQUIRED_RATE:
+            default = None
+        elif roll < REQUIRED_RATE + OPTENV_RATE:
+            default = f"$(optenv {name.upper()} {value})"
+        else:
+            default = value
+        args.append(_Arg(name, False, default))
+    return tuple(args)
+
+
+def _plan(n_files: int, seed: int) -> list[_Plan]:
+    plans: list[_Plan] = []
+    for index in range(n_files):
+        rng = random.Random(f"plan:{seed}:{index}")
+        number, position = divmod(index, FILES_PER_PACKAGE)
+        level = rng.choices(range(MAX_LEVEL + 1), weights=LEVEL_WEIGHTS)[0]
+        stem = FILE_STEMS[position % len(FILE_STEMS)]
+        suffix = ".launch.xml" if rng.random() < 0.1 else ".launch"
+        name = f"{stem}_{position:02d}{suffix}"
+        plans.append(_Plan(index, _package_name(number), name, level, _plan_args(rng)))
+    return plans
+
+
+def _include_candidates(plans: list[_Plan], plan: _Plan) -> list[_Plan]:
+    """Lower-level files of this package (earlier ones) or of the previous package."""
+    first = max(0, (plan.index // FILES_PER_PACKAGE - 1) * FILES_PER_PACKAGE)
+    return [p for p in plans[first : plan.index] if p.level < plan.level]
+
+
+class _Writer:
+    """Accumulates indented XML lines for one launch file."""
+
+    def __init__(self) -> None:
+        self.lines: list[str] = []
+
+    def add(self, depth: int, text: str) -> None:
+        self.lines.append("  " * depth + text)
+
+
+def _condition(rng: random.Random, bools: list[_Arg], rate: float) -> str:
+    if not bools or rng.random() >= rate:
+        return ""
+    keyword = rng.choice(("if", "if", "unless"))
+    return f' {keyword}="$(arg {rng.choice(bools).name})"'
+
+
+def _string_ref(rng: random.Random, strings: list[_Arg], fallback: str) -> str:
+    return f"$(arg {rng.choice(strings).name})" if strings else fallback
+
+
+def _render_include(
+    out: _Writer, rng: random.Random, plan: _Plan, target: _Plan, bools: list[_Arg]
+) -> None:
+    condition = _condition(rng, bools, CONDITIONAL_INCLUDE_RATE)
+    out.add(1, f'<include file="{target.find_path}"{condition}>')
+    own = {arg.name: arg for arg in plan.args}
+    for arg in target.args:
+        if arg.default is not None and rng.random() < 0.4:
+            continue  # leave the included file's default in place
+        mine = own.get(arg.name)
+        if mine is not None and rng.random() < 0.7:
+            value = f"$(arg {mine.name})"
+        elif arg.boolean:
+            value = rng.choice(("true", "false"))
+        else:
+            value = f"{arg.name.split('_')[0]}_{plan.index % 7}"
+        out.add(2, f'<arg name="{arg.name}" value="{value}"/>')
+    out.add(1, "</include>")
+
+
+def _render_node(
+    out: _Writer,
+    rng: random.Random,
+    depth: int,
+    plan: _Plan,
+    number: int,
+    bools: list[_Arg],
+    strings: list[_Arg],
+) -> None:
+    executable = rng.choice(EXECUTABLES)
+    if strings and rng.random() < 0.5:
+        name = f"{_string_ref(rng, strings, '')}_{executable}_{number}"
+    else:
+        name = f"{plan.name.split('_')[0]}_{executable}_{number}"
+    condition = _condition(rng, bools, 0.4)
+    attributes = f'pkg="{plan.package}" type="{executable}" name="{name}" output="screen"'
+    out.add(depth, f"<node {attributes}{condition}>")
+    for key in rng.sample(("rate", "frame_id", "timeout", "queue_size", "verbose"), 2):
+        value = (
+            f"{_string_ref(rng, strings, 'base')}_link"
+            if key == "frame_id"
+            else str(rng.randint(1, 100))
+        )
+        out.add(depth + 1, f'<param name="{key}" value="{value}"/>')
+    if rng.random() < 0.6:
+        topic = _string_ref(rng, strings, "cmd_vel")
+        out.add(depth + 1, f'<remap from="input" to="{topic}/data"/>')
+    if rng.random() < 0.35:
+        out.add(depth + 1, "<rosparam>")
+        out.add(depth + 2, f"gains: {{p: {rng.randint(1, 9)}.0, i: 0.{rng.randint(0, 9)}, d: 0.0}}")
+        out.add(depth + 2, "limits:")
+        out.add(depth + 3, f"max_velocity: {rng.randint(1, 3)}.{rng.randint(0, 9)}")
+        out.add(depth + 3, f"max_acceleration: {rng.randint(1, 5)}.0")
+        out.add(depth + 2, f"joints: [joint_{number}_a, joint_{number}_b]")
+        out.add(depth + 1, "</rosparam>")
+    out.add(depth, "</node>")
+
+
+def _render(plans: list[_Plan], plan: _Plan, seed: int) -> str:
+    rng = random.Random(f"file:{seed}:{plan.index}")
+    bools = [arg for arg in plan.args if arg.boolean]
+    strings = [arg for arg in plan.args if not arg.boolean]
+    out = _Writer()
+    out.add(0, '<?xml version="1.0"?>')
+    out.add(0, f"<!-- Synthetic launch file (bench/generate.py), level {plan.level}. -->")
+    out.add(0, "<launch>")
+    for arg in plan.args:
+        default = "" if arg.default is None else f' default="{arg.default}"'
+        out.add(1, f'<arg name="{arg.name}"{default}/>')
+    out.add(0, "")
+    for name in rng.sample(SHARED_PARAMS, rng.randint(1, 2)):
+        value = f"$(arg {bools[0].name})" if name == "/use_sim_time" else str(plan.index % 5)
+        out.add(1, f'<param name="{name}" value="{value}"/>')
+    if rng.random() < 0.5:
+        out.add(1, f'<rosparam command="load" file="$(find {plan.package})/config/params.yaml"/>')
+    candidates = _include_candidates(plans, plan)
+    if candidates:
+        for target in rng.sample(candidates, min(len(candidates), rng.randint(1, 2))):
+            out.add(0, "")
+            _render_include(out, rng, plan, target, bools)
+    number = 0
+    for _ in range(rng.randint(1, 2)):
+        out.add(0, "")
+        ns = _string_ref(rng, strings, "robot") if rng.random() < 0.6 else f"ns_{plan.index % 9}"
+        out.add(1, f'<group ns="{ns}"{_condition(rng, bools, 0.3)}>')
+        out.add(2, f'<param name="robot/max_velocity" value="{rng.randint(1, 4)}.0"/>')
+        for _ in range(rng.randint(1, 2)):
+            _render_node(out, rng, 2, plan, number, bools, strings)
+            number += 1
+        out.add(1, "</group>")
+    if rng.random() < 0.5:
+        out.add(0, "")
+        _render_node(out, rng, 1, plan, number, bools, strings)
+    out.add(0, "</launch>")
+    return "\n".join(out.lines) + "\n"
+
+
+def _package_xml(name: str) -> str:
+    return (
+        '<?xml version="1.0"?>\n<package format="2">\n'
+        f"  <name>{name}</name>\n  <version>0.0.1</version>\n"
+        f"  <description>Synthetic package {name} for rosvar benchmarks.</description>\n"
+        '  <maintainer email="bench@example.com">bench</maintainer>\n'
+        "  <license>Apache-2.0</license>\n  <buildtool_depend>catkin</buildtool_depend>\n"
+        "</package>\n"
+    )
+
+
+_PARAMS_YAML = """\
+robot:
+  max_velocity: 1.0
+  controller_frequency: 20.0
+sensors:
+  - {name: front_lidar, rate: 10}
+  - {name: imu, rate: 100}
+"""
+
+
+def generate_workspace(root: Path, n_files: int, seed: int = 0) -> list[Path]:
+    """Write ``n_files`` launch files in packages below ``root``; returns their paths."""
+    plans = _plan(n_files, seed)
+    written: list[Path] = []
+    for number in range((n_files + FILES_PER_PACKAGE - 1) // FILES_PER_PACKAGE):
+        package = root / _package_name(number)
+        (package / "launch").mkdir(parents=True, exist_ok=True)
+        (package / "config").mkdir(exist_ok=True)
+        (package / "package.xml").write_text(_package_xml(package.name), encoding="utf-8")
+        (package / ".executables").write_text("\n".join(EXECUTABLES) + "\n", encoding="utf-8")
+        (package / "config" / "params.yaml").write_text(_PARAMS_YAML, encoding="utf-8")
+    for plan in plans:
+        path = root / plan.package / "launch" / plan.name
+        path.write_text(_render(plans, plan, seed), encoding="utf-8")
+        written.append(path)
+    return written
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("root", type=Path)
+    parser.add_argument("n_files", type=int)
+    parser.add_argument("--seed", type=int, default=0)
+    options = parser.parse_args()
+    paths = generate_workspace(options.root, options.n_files, options.seed)
+    print(f"{len(paths)} launch files written below {options.root}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,668 @@
+"""Scaling benchmarks of ``rosvar analyze`` (``make bench``).
+
+Each workload (a corpus system, or a generated workspace of N launch files) is measured in
+fresh subprocesses, so peak RSS belongs to that workload alone and a hang cannot stall the
+run (every subprocess is bounded by ``TIMEOUT_S``; a timeout is reported, never raised):
+
+* ``isolated``: ``run.py --one PATH...`` times discover + Analysis + all_models in-process
+  (median of several runs, fresh Analysis and cleared parser cache each time), reports
+  ``ru_maxrss``, and times the baseline in the same process: parsing the same launch files
+  with ``xml.dom.minidom``, which is what roslaunch itself does;
+* ``whole-process``: wall time of ``rosvar analyze PATH... --json > /dev/null``.
+
+Workloads, measurements, table columns and targets are registries: a new benchmark is one
+more entry, not one more branch. The script always exits 0; targets print PASS/FAIL.
+"""
+
+from __future__ import annotations
+
+import argparse
+import cProfile
+import datetime
+import io
+import itertools
+import json
+import math
+import os
+import platform
+import pstats
+import resource
+import statistics
+import subprocess
+import sys
+import sysconfig
+import tempfile
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from xml.dom import minidom
+
+BENCH = Path(__file__).resolve().parent
+REPO = BENCH.parent
+CORPUS = REPO.parent / "shared" / "corpus"
+EXTERNAL = CORPUS / "_external"
+DOC = REPO / "docs" / "performance.md"
+
+TIMEOUT_S = 600.0
+"""Bound on every subprocess; a workload that needs longer is reported as a timeout."""
+REPEATS = 3
+SINGLE_RUN_FROM = 2_000  # workloads this large are timed once: one run is minutes
+GENERATED_SIZES = (100, 400, 2_000, 10_000)
+QUICK_SIZES = (100, 400)
+LINEAR_EXPONENT = math.log2(2.3)  # "x2 files => at most x2.3 time", as a power of n
+PROFILE_TOP = 15
+
+Metrics = dict[str, float]
+
+
+# -- workloads -------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Workload:
+    """Something to analyse: ``prepare(scratch)`` returns its roots (writing them if needed).
+
+    ``package_path`` plays ROS_PACKAGE_PATH: its packages resolve ``$(find)`` and includes
+    but contribute no launch files, so a system is measured on its own files only.
+    """
+
+    name: str
+    family: str  # growth is computed between consecutive sizes of one family
+    prepare: Callable[[Path], list[str]]
+    package_path: str = ""
+    size: int = 0  # nominal launch-file count (generated workloads); orders a family
+    repeats: int = REPEATS
+
+
+WORKLOADS: dict[str, Workload] = {}
+
+
+def register_workload(workload: Workload) -> None:
+    WORKLOADS[workload.name] = workload
+
+
+def _corpus(system: str) -> Workload:
+    def prepare(_scratch: Path) -> list[str]:
+        return [str(CORPUS / system)]
+
+    return Workload(system, "corpus", prepare, package_path=str(EXTERNAL))
+
+
+def _generated(n_files: int) -> Workload:
+    def prepare(scratch: Path) -> list[str]:
+        from generate import generate_workspace  # bench/ is sys.path[0] for this script
+
+        root = scratch / f"gen{n_files}"
+        if not root.exists():
+            started = time.perf_counter()
+            generate_workspace(root, n_files, seed=0)
+            took = time.perf_counter() - started
+            print(f"  generated {n_files} launch files in {took:.1f} s", file=sys.stderr)
+        return [str(root)]
+
+    repeats = 1 if n_files >= SINGLE_RUN_FROM else REPEATS
+    return Workload(f"gen-{n_files}", "generated", prepare, size=n_files, repeats=repeats)
+
+
+for _system in ("kobuki", "turtlebot2", "lizi", "husky"):
+    register_workload(_corpus(_system))
+for _size in GENERATED_SIZES:
+    register_workload(_generated(_size))
+
+
+# -- measurements inside the isolated process (run.py --one) -------------------------------
+@dataclass
+class Job:
+    """What an isolated process measures: the roots, and how hard to try."""
+
+    roots: list[str]
+    package_path: str
+    repeats: int
+    budget_s: float  # stop repeating once another run would likely overrun this
+    files: list[str] = field(default_factory=list)
+
+
+def _timed_runs(job: Job, run: Callable[[], object]) -> list[float]:
+    """Up to ``job.repeats`` timings in ms; fewer when they would overrun the budget."""
+    times: list[float] = []
+    spent = 0.0
+    for _ in range(job.repeats):
+        started = time.perf_counter()
+        run()
+        took = time.perf_counter() - started
+        times.append(took * 1000)
+        spent += took
+        if spent + took > job.budget_s:
+            break
+    return times
+
+
+def measure_analyze(job: Job) -> Metrics:
+    """What ``rosvar analyze`` does before printing, with nothing cached from a prior run."""
+    from rosvar.frontends.ros1_xml.parser import clear_cache
+    from rosvar.interpreter.analysis import Analysis
+    from rosvar.workspace import discover
+
+    def run() -> None:
+        clear_cache()
+        workspace = discover(job.roots, ros_package_path=job.package_path)
+        Analysis(workspace).all_models()
+        job.files = workspace.launch_files
+
+    times = _timed_runs(job, run)
+    peak_kib = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss  # KiB on Linux
+    return {
+        "files": len(job.files),
+        "analyze_ms": statistics.median(times),
+        "runs": len(times),
+        "peak_mb": peak_kib / 1024,
+    }
+
+
+def measure_minidom(job: Job) -> Metrics:
+    """The baseline: parse the same launch files with minidom, as roslaunch does."""
+
+    def run() -> None:
+        for file in job.files:
+            minidom.parse(file).unlink()
+
+    return {"minidom_ms": statistics.median(_timed_runs(job, run))}
+
+
+# Run in this order (the baseline needs the file list); peak RSS is read before the baseline.
+ISOLATED_MEASUREMENTS: dict[str, Callable[[Job], Metrics]] = {
+    "analyze": measure_analyze,
+    "minidom": measure_minidom,
+}
+
+
+def run_one(options: argparse.Namespace) -> None:
+    """The ``--one`` mode: import cost recorded apart, then every isolated measurement."""
+    import rosvar.interpreter.analysis  # noqa: F401 - imported before measuring
+
+    metrics: Metrics = {"import_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024}
+    job = Job(options.paths, options.package_path, options.repeats, options.budget)
+    for measure in ISOLATED_MEASUREMENTS.values():
+        metrics.update(measure(job))
+    sys.stdout.write(json.dumps(metrics) + "\n")
+    sys.stdout.flush()
+    os._exit(0)  # the BDD manager's teardown is not part of any measurement
+
+
+# -- measurements in the driver, each a subprocess -----------------------------------------
+@dataclass
+class Outcome:
+    """One workload's figures; ``notes`` say why some are missing."""
+
+    workload: Workload
+    metrics: Metrics = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)
+
+    def get(self, key: str) -> float | None:
+        return self.metrics.get(key)
+
+
+@dataclass
+class Finished:
+    returncode: int | None  # None: killed at the timeout
+    wall_ms: float
+    peak_mb: float
+    stdout: str
+    stderr: str
+
+
+def run_bounded(command: Sequence[str], env: dict[str, str], stdout: bool = True) -> Finished:
+    """Run ``command`` with the timeout, keeping its own rusage (os.wait4) for peak RSS."""
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
+        started = time.perf_counter()
+        process = subprocess.Popen(
+            command, stdout=out if stdout else subprocess.DEVNULL, stderr=err, env=env
+        )
+        deadline = started + TIMEOUT_S
+        status: int | None = None
+        maxrss = 0
+        while time.perf_counter() < deadline:
+            pid, wait_status, usage = os.wait4(process.pid, os.WNOHANG)
+            if pid:
+                status, maxrss = os.waitstatus_to_exitcode(wait_status), usage.ru_maxrss
+                break
+            time.sleep(0.02)
+        wall = (time.perf_counter() - started) * 1000
+        if status is None:
+            process.kill()
+            process.wait()
+        else:
+            process.returncode = status  # reaped by wait4 already; Popen must not wait again
+        out.seek(0)
+        err.seek(0)
+        text = out.read().decode(errors="replace")
+        return Finished(status, wall, maxrss / 1024, text, err.read().decode(errors="replace"))
+
+
+def _env(workload: Workload) -> dict[str, str]:
+    return {**os.environ, "ROS_PACKAGE_PATH": workload.package_path}
+
+
+def _failure(finished: Finished, what: str) -> str:
+    if finished.returncode is None:
+        return f"{what}: timeout after {TIMEOUT_S:.0f} s"
+    tail = finished.stderr.strip().splitlines()[-1:] or ["no output"]
+    return f"{what}: exit {finished.returncode} ({tail[0][:120]})"
+
+
+def measure_isolated(workload: Workload, roots: list[str], outcome: Outcome) -> None:
+    command = [
+        sys.executable, str(Path(__file__).resolve()), "--one",
+        "--repeats", str(workload.repeats), "--budget", str(TIMEOUT_S * 0.5),
+        "--package-path", workload.package_path, *roots,
+    ]  # fmt: skip
+    finished = run_bounded(command, _env(workload))
+    lines = finished.stdout.strip().splitlines()
+    if finished.returncode == 0 and lines:
+        outcome.metrics.update(json.loads(lines[-1]))
+    else:
+        outcome.notes.append(_failure(finished, "in-process"))
+
+
+def _rosvar_command() -> list[str]:
+    script = Path(sys.executable).parent / "rosvar"
+    return [str(script)] if script.exists() else [sys.executable, "-m", "rosvar"]
+
+
+def measure_whole_process(workload: Workload, roots: list[str], outcome: Outcome) -> None:
+    if "analyze_ms" not in outcome.metrics:
+        outcome.notes.append("whole-process: skipped (in-process run failed)")
+        return
+    command = [*_rosvar_command(), "analyze", *roots, "--json"]
+    finished = run_bounded(command, _env(workload), stdout=False)
+    if finished.returncode == 0:
+        outcome.metrics["whole_ms"] = finished.wall_ms
+        outcome.metrics["whole_peak_mb"] = finished.peak_mb
+    else:
+        outcome.notes.append(_failure(finished, "whole-process"))
+
+
+DRIVER_MEASUREMENTS: dict[str, Callable[[Workload, list[str], Outcome], None]] = {
+    "isolated": measure_isolated,
+    "whole-process": measure_whole_process,
+}
+
+
+# -- derived figures, table and targets -----------------------------------------------------
+def per_file_ms(outcome: Outcome) -> float | None:
+    time_ms, files = outcome.get("analyze_ms"), outcome.get("files")
+    return time_ms / files if time_ms is not None and files else None
+
+
+def growth_steps(outcomes: Sequence[Outcome]) -> dict[str, tuple[Outcome, Outcome]]:
+    """For each sized workload, the next smaller size of its family."""
+    by_family: dict[str, list[Outcome]] = {}
+    for outcome in outcomes:
+        if outcome.workload.size:
+            by_family.setdefault(outcome.workload.family, []).append(outcome)
+    steps: dict[str, tuple[Outcome, Outcome]] = {}
+    for members in by_family.values():
+        members.sort(key=lambda o: o.workload.size)
+        for small, large in itertools.pairwise(members):
+            steps[large.workload.name] = (small, large)
+    return steps
+
+
+@dataclass(frozen=True)
+class Growth:
+    files_ratio: float
+    time_ratio: float
+
+    @property
+    def per_file_ratio(self) -> float:
+        return self.time_ratio / self.files_ratio
+
+    @property
+    def exponent(self) -> float:
+        return math.log(self.time_ratio) / math.log(self.files_ratio)
+
+
+def growth(step: tuple[Outcome, Outcome]) -> Growth | None:
+    small, large = step
+    times = (small.get("analyze_ms"), large.get("analyze_ms"))
+    files = (small.get("files"), large.get("files"))
+    if None in times or None in files:
+        return None
+    return Growth(files[1] / files[0], times[1] / times[0])  # type: ignore[operator]
+
+
+def _number(value: float | None, digits: int = 0) -> str:
+    return "—" if value is None else f"{value:,.{digits}f}"
+
+
+@dataclass(frozen=True)
+class Column:
+    header: str
+    cell: Callable[[Outcome, dict[str, tuple[Outcome, Outcome]]], str]
+    align: str = ">"
+
+
+def _ratio(outcome: Outcome) -> str:
+    time_ms, base = outcome.get("analyze_ms"), outcome.get("minidom_ms")
+    return "—" if time_ms is None or not base else f"{time_ms / base:,.1f} ×"
+
+
+def _growth_cell(outcome: Outcome, steps: dict[str, tuple[Outcome, Outcome]]) -> str:
+    step = steps.get(outcome.workload.name)
+    found = growth(step) if step else None
+    if found is None:
+        return ""
+    return (
+        f"×{found.files_ratio:.1f} files → ×{found.time_ratio:.1f} time "
+        f"(per file ×{found.per_file_ratio:.2f}, ~n^{found.exponent:.2f})"
+    )
+
+
+def _in_process_cell(outcome: Outcome, _steps: object) -> str:
+    runs = outcome.get("runs")
+    suffix = f" ({runs:.0f})" if runs is not None else ""
+    return _number(outcome.get("analyze_ms")) + suffix
+
+
+COLUMNS: list[Column] = [
+    Column("workload", lambda o, _s: o.workload.name, "<"),
+    Column("files", lambda o, _s: _number(o.get("files"))),
+    Column("in-process ms (runs)", _in_process_cell),
+    Column("ms/file", lambda o, _s: _number(per_file_ms(o), 1)),
+    Column("whole-process ms", lambda o, _s: _number(o.get("whole_ms"))),
+    Column("peak MB", lambda o, _s: _number(o.get("peak_mb"))),
+    Column("minidom ms", lambda o, _s: _number(o.get("minidom_ms"), 1)),
+    Column("× minidom parse", lambda o, _s: _ratio(o)),
+    Column("growth vs previous size", _growth_cell, "<"),
+]
+
+
+def table_rows(outcomes: Sequence[Outcome]) -> list[list[str]]:
+    steps = growth_steps(outcomes)
+    return [[column.cell(outcome, steps) for column in COLUMNS] for outcome in outcomes]
+
+
+def text_table(outcomes: Sequence[Outcome]) -> str:
+    rows = [[c.header for c in COLUMNS], *table_rows(outcomes)]
+    widths = [max(len(row[i]) for row in rows) for i in range(len(COLUMNS))]
+    lines = [
+        "  ".join(f"{cell:{c.align}{w}}" for cell, c, w in zip(row, COLUMNS, widths, strict=True))
+        for row in rows
+    ]
+    return "\n".join(line.rstrip() for line in lines)
+
+
+def markdown_table(outcomes: Sequence[Outcome]) -> str:
+    header = "| " + " | ".join(c.header for c in COLUMNS) + " |"
+    rule = "|" + "|".join("---:" if c.align == ">" else "---" for c in COLUMNS) + "|"
+    body = ["| " + " | ".join(row) + " |" for row in table_rows(outcomes)]
+    return "\n".join([header, rule, *body])
+
+
+@dataclass(frozen=True)
+class Verdict:
+    status: str  # PASS, FAIL, or SKIP (workload not in this run)
+    detail: str
+
+
+@dataclass(frozen=True)
+class Target:
+    label: str
+    check: Callable[[dict[str, Outcome]], Verdict]
+
+
+def _why_missing(outcome: Outcome | None) -> Verdict:
+    if outcome is None:
+        return Verdict("SKIP", "workload not in this run")
+    return Verdict("FAIL", "; ".join(outcome.notes) or "no figure")
+
+
+def at_most(workload: str, key: str, limit: float, unit: str, scale: float = 1.0) -> Target:
+    """Target: ``key`` of ``workload`` (divided by ``scale`` for display) ≤ ``limit``."""
+
+    def check(outcomes: dict[str, Outcome]) -> Verdict:
+        outcome = outcomes.get(workload)
+        value = outcome.get(key) if outcome else None
+        if value is None:
+            return _why_missing(outcome)
+        shown = value / scale
+        status = "PASS" if shown <= limit else "FAIL"
+        return Verdict(status, f"{shown:,.2f} {unit} (limit {limit:,} {unit})")
+
+    return Target(f"{workload}: {key} ≤ {limit:,} {unit}", check)
+
+
+def near_linear(outcomes: dict[str, Outcome]) -> Verdict:
+    steps = growth_steps(list(outcomes.values()))
+    if not steps:
+        return Verdict("SKIP", "fewer than two generated sizes in this run")
+    failed, parts = False, []
+    for name, step in steps.items():
+        found = growth(step)
+        if found is None:
+            failed = True
+            parts.append(f"{step[0].workload.name}→{name}: no figure")
+            continue
+        failed |= found.exponent > LINEAR_EXPONENT
+        parts.append(f"{step[0].workload.name}→{name}: ~n^{found.exponent:.2f}")
+    return Verdict("FAIL" if failed else "PASS", ", ".join(parts))
+
+
+TARGETS: list[Target] = [
+    at_most("husky", "analyze_ms", 100, "ms"),
+    at_most("gen-400", "analyze_ms", 1, "s", scale=1000),
+    at_most("gen-400", "peak_mb", 150, "MB"),
+    at_most("gen-10000", "analyze_ms", 25, "s", scale=1000),
+    at_most("gen-10000", "peak_mb", 1.5, "GB", scale=1000),
+    Target(
+        f"near-linear growth: time ~ n^k with k ≤ {LINEAR_EXPONENT:.2f} (×2 files ⇒ ≤ ×2.3 time)",
+        near_linear,
+    ),
+]
+
+
+def target_lines(outcomes: Sequence[Outcome]) -> list[str]:
+    by_name = {o.workload.name: o for o in outcomes}
+    lines = []
+    for target in TARGETS:
+        verdict = target.check(by_name)
+        lines.append(f"{verdict.status}  {target.label}: {verdict.detail}")
+    return lines
+
+
+# -- profile, document, driver ----------------------------------------------------------------
+def profile_one(options: argparse.Namespace) -> None:
+    """The ``--one --profile-one`` mode: cProfile of one analyze run, top functions printed."""
+    from rosvar.frontends.ros1_xml.parser import clear_cache
+    from rosvar.interpreter.analysis import Analysis
+    from rosvar.workspace import discover
+
+    clear_cache()
+    profiler = cProfile.Profile()
+    profiler.enable()
+    Analysis(discover(options.paths, ros_package_path=options.package_path)).all_models()
+    profiler.disable()
+    stream = io.StringIO()
+    stats = pstats.Stats(profiler, stream=stream)
+    stats.sort_stats("cumulative").print_stats(PROFILE_TOP)
+    text = stream.getvalue()
+    start = text.find("   ncalls")
+    sys.stdout.write((text[start:] if start >= 0 else text).rstrip() + "\n")
+    sys.stdout.flush()
+    os._exit(0)
+
+
+def profile(workload: Workload, scratch: Path) -> str:
+    """Where rosvar's time goes on ``workload``, profiled in a fresh process."""
+    command = [
+        sys.executable, str(Path(__file__).resolve()), "--one", "--profile-one",
+        "--package-path", workload.package_path, *workload.prepare(scratch),
+    ]  # fmt: skip
+    finished = run_bounded(command, _env(workload))
+    if finished.returncode != 0:
+        return _failure(finished, "profile")
+    text = finished.stdout.rstrip()
+    for prefix in {sysconfig.get_paths()["purelib"], sysconfig.get_paths()["platlib"], str(REPO)}:
+        text = text.replace(prefix + os.sep, "")  # shorter, machine-independent paths
+    return text
+
+
+def _machine() -> str:
+    cpu = platform.processor() or platform.machine()
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    return (
+        f"{os.cpu_count()} CPUs (nproc {len(os.sched_getaffinity(0))}), {cpu}; "
+        f"Python {platform.python_version()} ({platform.python_implementation()}); "
+        f"{platform.system()} {platform.release()}"
+    )
+
+
+def _revision() -> str:
+    try:
+        result = subprocess.run(
+            ["git", "-C", str(REPO), "describe", "--always", "--dirty"],
+            capture_output=True, text=True, timeout=30, check=False,
+        )  # fmt: skip
+    except (OSError, subprocess.SubprocessError):
+        return "unknown"
+    return result.stdout.strip() or "unknown"
+
+
+def write_doc(outcomes: Sequence[Outcome], targets: list[str], profiled: str | None) -> None:
+    sizes = ", ".join(f"{w.size:,}" for w in WORKLOADS.values() if w.family == "generated")
+    imports = [o.get("import_mb") for o in outcomes if o.get("import_mb") is not None]
+    import_note = f" (about {min(imports):.0f} MB of it is Python and imports)" if imports else ""
+    parts = [
+        "# Performance of `rosvar analyze`",
+        "",
+        f"Measured {datetime.date.today().isoformat()} with `bench/run.py --write-doc` "
+        f"(revision `{_revision()}`). Machine: {_machine()}.",
+        "",
+        "## Method",
+        "",
+        "- Workloads: the four corpus systems (`../shared/corpus/<system>`, with `_external` "
+        "as the ROS_PACKAGE_PATH so its packages resolve but its launch files are not "
+        "analysed) and synthetic workspaces from `bench/generate.py` (seed 0) of "
+        f"{sizes} launch files: packages of 20 files, 2–5 args, conditional nodes, groups "
+        "and includes, shared parameter names, inline `<rosparam>` YAML, include depth ≤ 4.",
+        "- *in-process*: discover + `Analysis` + `all_models()` — what `rosvar analyze` does "
+        "before printing — in a fresh subprocess (`bench/run.py --one`), parser cache "
+        f"cleared and a new `Analysis` each run; median of {REPEATS} runs "
+        f"(1 run from {SINGLE_RUN_FROM:,} files, fewer when runs would overrun the "
+        "time-out). The number of runs is in brackets.",
+        f"- *peak MB*: `ru_maxrss` of that subprocess after the analysis{import_note}.",
+        "- *whole-process*: wall time of `rosvar analyze PATH --json > /dev/null` "
+        "(start-up, analysis, JSON output, exit).",
+        "- *× minidom parse*: in-process time divided by the time to parse the same launch "
+        "files with `xml.dom.minidom` in the same subprocess — what roslaunch itself does.",
+        "- *growth*: time ratio between consecutive generated sizes; near-linear means "
+        f"time ~ n^k with k ≤ log2(2.3) ≈ {LINEAR_EXPONENT:.2f}.",
+        f"- Every subprocess is bounded by {TIMEOUT_S:.0f} s; a timeout counts as FAIL, and "
+        "the larger generated sizes are then not attempted.",
+        "",
+        "## Results",
+        "",
+        markdown_table(outcomes),
+        "",
+    ]
+    notes = [f"- {o.workload.name}: {note}" for o in outcomes for note in o.notes]
+    if notes:
+        parts += ["Notes:", "", *notes, ""]
+    parts += ["## Targets", "", "```", *targets, "```", ""]
+    if profiled:
+        parts += [
+            f"## Profile (top {PROFILE_TOP} by cumulative time)",
+            "",
+            "```",
+            profiled,
+            "```",
+            "",
+        ]
+    DOC.parent.mkdir(parents=True, exist_ok=True)
+    DOC.write_text("\n".join(parts), encoding="utf-8")
+    print(f"wrote {DOC}")
+
+
+def selected(options: argparse.Namespace) -> list[Workload]:
+    sizes = QUICK_SIZES if options.quick else options.sizes or GENERATED_SIZES
+    chosen = [w for w in WORKLOADS.values() if not w.size or w.size in sizes]
+    chosen.sort(key=lambda w: (w.size > 0, w.family, w.size))  # a family smallest first
+    if options.only:
+        chosen = [w for w in chosen if w.name in options.only]
+    return chosen
+
+
+def run_all(options: argparse.Namespace) -> None:
+    outcomes: list[Outcome] = []
+    failed_families: set[str] = set()
+    with tempfile.TemporaryDirectory(prefix="rosvar-bench-") as scratch_dir:
+        scratch = Path(scratch_dir)
+        for workload in selected(options):
+            outcome = Outcome(workload)
+            outcomes.append(outcome)
+            if workload.family in failed_families and workload.size and not options.no_skip:
+                outcome.notes.append("skipped: a smaller size of this family already failed")
+                continue
+            print(f"{workload.name} ...", file=sys.stderr, flush=True)
+            roots = workload.prepare(scratch)
+            for measure in DRIVER_MEASUREMENTS.values():
+                measure(workload, roots, outcome)
+            if "analyze_ms" not in outcome.metrics and workload.size:
+                failed_families.add(workload.family)
+        profiled = profile(WORKLOADS[options.profile], scratch) if options.profile else None
+    print()
+    print(text_table(outcomes))
+    for outcome in outcomes:
+        for note in outcome.notes:
+            print(f"  note: {outcome.workload.name}: {note}")
+    print()
+    targets = target_lines(outcomes)
+    print("\n".join(targets))
+    if profiled:
+        print(f"\nprofile of {options.profile} (top {PROFILE_TOP} by cumulative time):")
+        print(profiled)
+    if options.write_doc:
+        write_doc(outcomes, targets, profiled)
+
+
+def parse_options(argv: Sequence[str] | None = None) -> argparse.Namespace:
+    parser = argparse.ArgumentParser(description="Scaling benchmarks of rosvar analyze.")
+    parser.add_argument("--quick", action="store_true", help="corpus + 100 + 400 files only")
+    parser.add_argument(
+        "--sizes", type=int, nargs="+", metavar="N", help="generated workspace sizes to run"
+    )
+    parser.add_argument("--only", nargs="+", metavar="NAME", choices=sorted(WORKLOADS))
+    parser.add_argument("--no-skip", action="store_true", help="attempt sizes after a failure")
+    parser.add_argument("--profile", metavar="NAME", choices=sorted(WORKLOADS))
+    parser.add_argument("--write-doc", action="store_true", help=f"write {DOC.relative_to(REPO)}")
+    # Internal: the isolated measurement process.
+    parser.add_argument("--one", action="store_true", help=argparse.SUPPRESS)
+    parser.add_argument("--profile-one", action="store_true", help=argparse.SUPPRESS)
+    parser.add_argument("--repeats", type=int, default=REPEATS, help=argparse.SUPPRESS)
+    parser.add_argument("--budget", type=float, default=TIMEOUT_S, help=argparse.SUPPRESS)
+    parser.add_argument("--package-path", default="", help=argparse.SUPPRESS)
+    parser.add_argument("paths", nargs="*", help=argparse.SUPPRESS)
+    options = parser.parse_args(argv)
+    if options.sizes:
+        unknown = sorted(set(options.sizes) - set(GENERATED_SIZES))
+        for size in unknown:  # any size may be asked for; register it on the fly
+            register_workload(_generated(size))
+    return options
+
+
+def main() -> int:
+    options = parse_options()
+    if options.one:
+        (profile_one if options.profile_one else run_one)(options)
+    else:
+        run_all(options)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,1 @@
+"""Differential tests: rosvar's restriction to one configuration against the real roslaunch."""
