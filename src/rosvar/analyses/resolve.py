@@ -23,7 +23,7 @@ from rosvar.interpreter.tags.rosparam import yaml_params
 from rosvar.interpreter.validation import node_values
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import ArgInput, EnvInput, Input
-from rosvar.logic.terms import TermError, evaluate, is_term
+from rosvar.logic.terms import Apply, Hole, TermError, evaluate
 from rosvar.ros import names
 
 
@@ -93,9 +93,9 @@ class _Restriction:
         values: dict[Input, str | None] = {}
         for name, input_ in model.inputs.items():
             values[input_] = args.get(name, model.unset_defaults.get(name))
-        for input_ in self.space.inputs():
-            if isinstance(input_, EnvInput):
-                values[input_] = env.get(input_.name)
+        for other in self.space.inputs():
+            if isinstance(other, EnvInput):
+                values[other] = env.get(other.name)
         self.concrete: dict[Input, str] = {k: v for k, v in values.items() if v is not None}
         self.host = PackageTable(
             {name: package.path for name, package in analysis.workspace.packages.items()}
@@ -119,7 +119,7 @@ class _Restriction:
         raise ResolutionError("value-undefined", f"{what} has no value here", location)
 
     def raw(self, choice: Choice[Raw | None], location: Location, what: str) -> str | None:
-        value = self.pick(choice, location, what)  # type: ignore[arg-type]
+        value = self.pick(choice, location, what)
         assert value is None or isinstance(value, str)
         return value
 
@@ -164,7 +164,7 @@ def _restrict(
             raise ResolutionError(error.code, error.message, error.location)
     for include in model.includes:
         if not include.resolved and r.holds(include.condition):
-            file = r.pick(include.file, include.location, "<include> file")  # type: ignore[arg-type]
+            file = r.pick(include.file, include.location, "<include> file")
             raise ResolutionError(
                 "include-unknown", f"cannot load included file {file}", include.location
             )
@@ -185,20 +185,20 @@ def _restrict(
         if not r.holds(param.condition):
             continue
         if isinstance(param, ParamDecl):
-            name = r.pick(param.name, param.location, "param name")  # type: ignore[arg-type]
+            name = r.pick(param.name, param.location, "param name")
             value = r.pick(param.value, param.location, f"param {name}")
             if isinstance(value, DeferredValue):
-                text = evaluate(value.raw, r.concrete, r.host)
+                concrete = r.evaluate(value.raw, param.location, f"param {name}")
                 try:
-                    value = param_value("value", text, value.ptype)
+                    value = param_value("value", concrete, value.ptype)
                 except ValueError as error:
                     raise ResolutionError("param-invalid", str(error), param.location) from None
             result.params[str(name)] = _json_value(value)
         else:
-            full = r.pick(param.namespace, param.location, "rosparam namespace")  # type: ignore[arg-type]
-            text = evaluate(param.text, r.concrete, r.host) if is_term(param.text) else param.text
+            namespace = r.pick(param.namespace, param.location, "rosparam namespace")
+            body = r.evaluate(param.text, param.location, "<rosparam> body")
             try:
-                pairs = yaml_params(str(text), str(full), param.param, "")
+                pairs = yaml_params(body, str(namespace), param.param, "")
             except ValueError as error:
                 raise ResolutionError("rosparam-invalid", str(error), param.location) from None
             for key, value in pairs:
@@ -239,7 +239,7 @@ def _node(r: _Restriction, node: object) -> dict[str, object]:
         "type": raw["type"],
         **typed,
         "remaps": sorted([list(p) for p in remaps.items()]),
-        "env": sorted(env),  # type: ignore[type-var]
+        "env": sorted(env),
         "filename": node.filename,
         "line": location.line,
         "col": location.col,
@@ -258,7 +258,12 @@ def _test_fields(raw: Mapping[str, str | None], location: Location) -> dict[str,
         raise ResolutionError("test-invalid", str(error), location) from None
     if time_limit <= 0:
         raise ResolutionError("test-invalid", "'time-limit' must be a positive number", location)
-    return {"test_name": raw.get("test-name"), "time_limit": time_limit, "retry": retry, "output": "log"}
+    return {
+        "test_name": raw.get("test-name"),
+        "time_limit": time_limit,
+        "retry": retry,
+        "output": "log",
+    }
 
 
 __all__ = ["ArgInput", "Conflict", "Resolution", "ResolutionError", "resolve"]

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable, Mapping, Sequence
 
 from rosvar.interpreter import tags  # noqa: F401 - registers the tag handlers
@@ -49,7 +50,7 @@ class Analysis:
         it = Interpretation(
             self.workspace, self.space, self.domains.arg_domain, self.domains.env_domain, file
         )
-        it.stack.append(file)
+        it.stack.append(os.path.realpath(file))
         root = it.load(file)
         model = it.model
         if root is not None:

@@ -11,13 +11,15 @@ from __future__ import annotations
 import weakref
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
+from typing import TypeVar
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import load_launch_file
+from rosvar.interpreter.lifted import lift
 from rosvar.interpreter.model import ErrorEvent, LaunchModel, Raw
 from rosvar.interpreter.scope import MISSING, ArgValue, Scope
-from rosvar.interpreter.substitution import Substituter, Value
+from rosvar.interpreter.substitution import Substituter
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.conditions import BDD, ConditionSpace, register_predicate
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
@@ -25,6 +27,7 @@ from rosvar.logic.terms import Hole, Term, is_term
 from rosvar.workspace import Workspace
 
 Handler = Callable[["Interpretation", Entity, Scope], None]
+V = TypeVar("V")
 TAGS: dict[str, Handler] = {}
 MAX_INCLUDE_DEPTH = 64
 
@@ -79,6 +82,7 @@ class Interpretation:
         self.default_machine: Choice[Raw | None] = Choice.const(space, None)
         self.anon_count: Choice[int] = Choice.const(space, 0)
         self.stack: list[str] = []
+        self._location = Location(file)
 
     # -- Host protocol for substitution ------------------------------------------------
     def find_package(self, name: str) -> str | None:
@@ -116,7 +120,7 @@ class Interpretation:
         self.anon_count = Choice(
             [(c & pc, n + 1) for c, n in current] + [(c & ~pc, n) for c, n in current]
         )
-        return names  # type: ignore[return-value]
+        return names
 
     # -- inputs --------------------------------------------------------------------------
     def entry_args(self, file: str, names: Sequence[str]) -> dict[str, ArgValue]:
@@ -147,7 +151,7 @@ class Interpretation:
 
     @contextmanager
     def at(self, entity: Entity) -> Iterator[None]:
-        saved = getattr(self, "_location", entity.location)
+        saved = self._location
         self._location = entity.location
         try:
             yield
@@ -176,9 +180,9 @@ class Interpretation:
     def warn(self, code: str, message: str) -> None:
         self.sink.warning(code, message, self.location)
 
-    def strip(self, choice: Choice[Value], context: str = "") -> Choice[Raw]:
+    def strip(self, choice: Choice[V | Fail], context: str = "") -> Choice[V]:
         """Record the failing branches of ``choice`` as errors; keep the rest."""
-        good: list[tuple[BDD, Raw]] = []
+        good: list[tuple[BDD, V]] = []
         for condition, leaf in choice:
             if isinstance(leaf, Fail):
                 message = f"{context}: {leaf.message}" if context else leaf.message
@@ -186,6 +190,11 @@ class Interpretation:
             else:
                 good.append((condition, leaf))
         return Choice(good)
+
+    def lift(self, name: str, *operands: Choice[Raw], context: str = "") -> Choice[Raw]:
+        """A lifted name function (see :mod:`rosvar.interpreter.lifted`), failures recorded."""
+        result: Choice[Raw] = self.strip(lift(name, *operands), context)
+        return result
 
     def resolve(self, text: str | None, scope: Scope, context: str = "") -> Choice[Raw] | None:
         value = self.substituter.resolve(text, scope)
@@ -267,13 +276,15 @@ class Interpretation:
 
     # -- walking ------------------------------------------------------------------------
     def walk(self, children: Sequence[Entity], scope: Scope) -> None:
+        saved = self._location
         for child in children:
             handler = TAGS.get(child.tag)
-            with self.at(child):
-                if handler is None:
-                    self.warn("tag-unknown", f"unrecognized tag <{child.tag}>")
-                    continue
+            self._location = child.location
+            if handler is None:
+                self.warn("tag-unknown", f"unrecognized tag <{child.tag}>")
+            else:
                 handler(self, child, scope)
+        self._location = saved
 
     def load(self, path: str) -> Entity | None:
         """Parse a launch file (cached); parse problems become errors at the current tag."""
@@ -293,7 +304,7 @@ class Interpretation:
         return result.root
 
 
-def split(interpretation: Interpretation, choice: Choice[Raw]) -> Iterator[tuple[BDD, Raw]]:
+def split(interpretation: Interpretation, choice: Choice[V]) -> Iterator[tuple[BDD, V]]:
     """Iterate the branches of ``choice`` that are possible on the current path."""
     for condition, leaf in choice:
         if interpretation.pc & condition != interpretation.space.false:

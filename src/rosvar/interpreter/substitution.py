@@ -1,4 +1,4 @@
-"""Substitution args (``$(arg)``, ``$(find)``, ``$(env)``, ``$(eval)``, ...) over all configurations.
+"""Substitution args (``$(arg)``, ``$(find)``, ``$(eval)``, ...) over all configurations.
 
 The scanning and replacement rules are roslaunch's ``substitution_args``: a
 first pass for ``env optenv dirname anon arg`` in order of appearance (each
@@ -10,6 +10,7 @@ and ``$(eval ...)`` only when it spans the whole attribute. Values are
 from __future__ import annotations
 
 import ast
+import functools
 import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -23,7 +24,7 @@ from rosvar.interpreter.evaluator import (
     referenced_args,
 )
 from rosvar.interpreter.model import Raw
-from rosvar.interpreter.scope import MISSING, Scope
+from rosvar.interpreter.scope import MISSING, Scope, _Missing
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, Term, concat, is_term, register
@@ -52,7 +53,8 @@ class Host(Protocol):
     def note_unknown_package(self, name: str) -> None: ...
 
 
-def collect(text: str) -> list[str]:
+@functools.lru_cache(maxsize=8192)
+def collect(text: str) -> tuple[str, ...]:
     """The ``$(...)`` bodies of ``text``, by roslaunch's scanning state machine."""
     out, dollar, lparen, inside = 0, 1, 2, 3
     state = out
@@ -84,7 +86,7 @@ def collect(text: str) -> list[str]:
             state = inside
         if state == inside:
             buffer.append(ch)
-    return bodies
+    return tuple(bodies)
 
 
 def _split(body: str) -> list[str]:
@@ -283,12 +285,12 @@ class Substituter:
             return known  # type: ignore[return-value]
         generated = self.host.new_anon(scope, anon_id)
         if known is None:
-            scope.anon[anon_id] = generated  # type: ignore[assignment]
-            return generated  # type: ignore[return-value]
-        merged: Choice[Value] = known.bind(  # type: ignore[arg-type,assignment]
-            lambda v: generated if v is MISSING else Choice.const(self.space, v)  # type: ignore[return-value,arg-type]
+            scope.anon[anon_id] = generated
+            return generated
+        merged: Choice[Raw] = known.bind(
+            lambda v: generated if isinstance(v, _Missing) else Choice.const(self.space, v)
         )
-        scope.anon[anon_id] = merged  # type: ignore[assignment]
+        scope.anon[anon_id] = merged
         return merged
 
     # -- $(eval) ------------------------------------------------------------------------
@@ -340,7 +342,8 @@ class Substituter:
 
         if not arg_choices and not env_choices:
             return Choice.const(space, run([]))
-        return combine([*arg_choices, *env_choices], run)  # type: ignore[list-item]
+        choices: list[Choice[object]] = [*arg_choices, *env_choices]
+        return combine(choices, run)
 
 
 class _Undecidable(Exception):

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import re
+from typing import cast
 
 import yaml
 
@@ -67,7 +68,10 @@ def float_attribute(value: str | None, default: float, label: str) -> float:
         raise ValueError(f"invalid float value for {label}: {value}") from None
 
 
-class RosparamLoader(yaml.SafeLoader):
+_SafeLoader: type[yaml.SafeLoader] = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
+
+class RosparamLoader(_SafeLoader):  # type: ignore[valid-type,misc]
     """``yaml.SafeLoader`` with rosparam's additions (``!degrees``, ``!radians``, binary).
 
     rosparam registers these on PyYAML's global SafeLoader; a subclass keeps the
@@ -93,7 +97,7 @@ def _degrees(loader: yaml.SafeLoader, node: yaml.Node) -> float:
 def _binary(loader: yaml.SafeLoader, node: yaml.Node) -> object:
     from rosvar.interpreter.model import Binary
 
-    return Binary(loader.construct_yaml_binary(node))  # type: ignore[no-untyped-call]
+    return Binary(loader.construct_yaml_binary(cast(yaml.ScalarNode, node)))
 
 
 def _no_arg(name: str) -> str:

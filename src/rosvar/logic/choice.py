@@ -7,14 +7,15 @@ share one branch, so a value that does not really vary stays a single branch.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
-from typing import Generic, TypeVar
+from typing import Any, Generic, TypeVar
 
 from rosvar.logic.conditions import BDD, ConditionSpace
 
-T = TypeVar("T")
+T = TypeVar("T", covariant=True)
 U = TypeVar("U")
+V = TypeVar("V")
 
 
 @dataclass(frozen=True)
@@ -39,6 +40,11 @@ class Choice(Generic[T]):
     __slots__ = ("branches",)
 
     def __init__(self, branches: Iterable[tuple[BDD, T]]) -> None:
+        self.branches: tuple[tuple[BDD, T], ...]
+        if isinstance(branches, list) and len(branches) == 1:  # the common constant case
+            condition = branches[0][0]
+            self.branches = () if condition == condition.bdd.false else (branches[0],)
+            return
         merged: dict[object, tuple[BDD, T]] = {}
         for condition, leaf in branches:
             key = _key(leaf)
@@ -46,13 +52,13 @@ class Choice(Generic[T]):
                 merged[key] = (merged[key][0] | condition, leaf)
             else:
                 merged[key] = (condition, leaf)
-        self.branches: tuple[tuple[BDD, T], ...] = tuple(
-            (c, v) for c, v in merged.values() if c != c.bdd.false
-        )
+        self.branches = tuple((c, v) for c, v in merged.values() if c != c.bdd.false)
 
     @staticmethod
     def const(space: ConditionSpace, leaf: U) -> Choice[U]:
-        return Choice([(space.true, leaf)])
+        choice: Choice[U] = Choice.__new__(Choice)
+        choice.branches = ((space.true, leaf),)
+        return choice
 
     def __iter__(self) -> Iterator[tuple[BDD, T]]:
         return iter(self.branches)
@@ -97,16 +103,19 @@ class Choice(Generic[T]):
 
     def covered(self) -> BDD:
         """Where this value is defined at all."""
-        return self.where(lambda _leaf: True)
+        result = _false_of(self)
+        for condition, _leaf in self.branches:
+            result |= condition
+        return result
 
 
-def _false_of(choice: Choice[object]) -> BDD:
+def _false_of(choice: Choice[Any]) -> BDD:
     if choice.branches:
         return choice.branches[0][0].bdd.false
     raise ValueError("empty choice has no condition space")
 
 
-def ite(space: ConditionSpace, condition: BDD, then: Choice[T], otherwise: Choice[T]) -> Choice[T]:
+def ite(space: ConditionSpace, condition: BDD, then: Choice[V], otherwise: Choice[V]) -> Choice[V]:
     """``then`` where ``condition`` holds, else ``otherwise`` (guarded state update)."""
     if condition == space.true:
         return then
@@ -118,16 +127,16 @@ def ite(space: ConditionSpace, condition: BDD, then: Choice[T], otherwise: Choic
     )
 
 
-def combine(choices: list[Choice[T]], function: Callable[[list[T]], U]) -> Choice[U]:
+def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> Choice[U]:
     """Cross product of several choices (only jointly possible combinations)."""
-    partial: list[tuple[BDD, list[T]]] = []
+    partial: list[tuple[BDD, list[V]]] = []
     first = True
     for choice in choices:
         if first:
             partial = [(c, [v]) for c, v in choice.branches]
             first = False
             continue
-        nxt: list[tuple[BDD, list[T]]] = []
+        nxt: list[tuple[BDD, list[V]]] = []
         for c1, vs in partial:
             for c2, v in choice.branches:
                 joint = c1 & c2

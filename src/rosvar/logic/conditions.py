@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 import dd.cudd as _cudd
 
@@ -60,7 +60,9 @@ class ConditionSpace:
         self.bdd.configure(reordering=False)
         self.true: BDD = self.bdd.true
         self.false: BDD = self.bdd.false
-        self.valid: BDD = self.bdd.true
+        self._constraints: list[BDD] = []
+        self._valid: BDD = self.bdd.true
+        self._valid_count = 0
         self._atoms: list[Atom] = []
         self._var_of: dict[Atom, str] = {}
         self._atom_of: dict[str, Atom] = {}
@@ -89,7 +91,7 @@ class ConditionSpace:
                 if i != j:
                     term &= ~other
             exactly_one |= term
-        self.valid &= exactly_one
+        self._constraints.append(exactly_one)
 
     def domain(self, input_: Input) -> tuple[Slot, ...]:
         return self._domains[input_]
@@ -112,7 +114,16 @@ class ConditionSpace:
 
     def constrain(self, constraint: BDD) -> None:
         """Add a fact every configuration satisfies (e.g. two predicates exclude each other)."""
-        self.valid &= constraint
+        self._constraints.append(constraint)
+
+    @property
+    def valid(self) -> BDD:
+        """All facts together; built lazily because interpretation never needs it."""
+        if self._valid_count != len(self._constraints):
+            for constraint in self._constraints[self._valid_count :]:
+                self._valid &= constraint
+            self._valid_count = len(self._constraints)
+        return self._valid
 
     # -- questions ---------------------------------------------------------------------
     def satisfiable(self, condition: BDD) -> bool:
@@ -267,7 +278,8 @@ class ConditionSpace:
                 parts.append(text if value else f"¬({text})")
             else:
                 assert isinstance(value, frozenset)
-                parts.append(_render_slots(key, value, self._domains[key], qualify))  # type: ignore[arg-type]
+                input_ = cast(Input, key)
+                parts.append(_render_slots(input_, value, self._domains[input_], qualify))
         return " ∧ ".join(parts)
 
     def atoms(self) -> Iterable[Atom]:
@@ -319,11 +331,10 @@ def _merge_pair(
     key = differing[0]
     va, vb = a.get(key), b.get(key)
     if isinstance(key, PredicateAtom) or va is None or vb is None:
-        if va is None or vb is None or isinstance(key, PredicateAtom):
-            # p ∧ rest ∨ ¬p ∧ rest = rest
-            if isinstance(va, bool) and isinstance(vb, bool):
-                return {k: v for k, v in a.items() if k != key}
-            return None
+        # p ∧ rest ∨ ¬p ∧ rest = rest
+        if isinstance(va, bool) and isinstance(vb, bool):
+            return {k: v for k, v in a.items() if k != key}
+        return None
     assert isinstance(va, frozenset) and isinstance(vb, frozenset)
     union = va | vb
     merged = dict(a)

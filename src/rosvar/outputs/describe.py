@@ -53,7 +53,7 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
         ],
         "includes": [
             {
-                "file": _values(i.file, model),  # type: ignore[arg-type]
+                "file": _values(i.file, model),
                 "resolved": i.resolved,
                 "condition": describe(i.condition),
                 **i.location.to_json(),
@@ -62,10 +62,10 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
         ],
         "nodes": [
             {
-                "name": _values(n.fields["name"], model),  # type: ignore[arg-type]
-                "namespace": _values(n.fields["namespace"], model),  # type: ignore[arg-type]
-                "package": _values(n.fields["pkg"], model),  # type: ignore[arg-type]
-                "type": _values(n.fields["type"], model),  # type: ignore[arg-type]
+                "name": _values(n.fields["name"], model),
+                "namespace": _values(n.fields["namespace"], model),
+                "package": _values(n.fields["pkg"], model),
+                "type": _values(n.fields["type"], model),
                 "test": n.is_test,
                 "condition": describe(n.condition),
                 **n.location.to_json(),
@@ -74,7 +74,7 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
         ],
         "params": [
             {
-                "name": _values(p.name if isinstance(p, ParamDecl) else p.namespace, model),  # type: ignore[arg-type]
+                "name": _values(p.name if isinstance(p, ParamDecl) else p.namespace, model),
                 "value": _values(p.value, model) if isinstance(p, ParamDecl) else "<yaml>",
                 "condition": describe(p.condition),
                 **p.location.to_json(),

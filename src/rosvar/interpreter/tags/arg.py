@@ -36,7 +36,7 @@ def handle_arg(it: Interpretation, entity: Entity, scope: Scope) -> None:
                 continue
             with it.under(condition):
                 declare(it, scope, name, value, default)
-                if it.stack == [it.model.file] and scope.include_args is None:
+                if len(it.stack) == 1 and scope.include_args is None:
                     it.model.args.append(
                         ArgDecl(
                             name=name,
@@ -73,14 +73,12 @@ def declare(
                 "arg-override",
                 f"cannot override arg '{name}', which has already been set",
             )
-        target[name] = ite(it.space, it.pc, value, old)  # type: ignore[arg-type]
+        target[name] = ite(it.space, it.pc, value, old)
     elif default is not None:
         if existing is None:
-            new: ArgValue = default  # type: ignore[assignment]
+            new: ArgValue = default
         else:
-            new = existing.bind(
-                lambda v: default if v is MISSING else Choice.const(it.space, v)  # type: ignore[arg-type,return-value]
-            )
+            new = existing.bind(lambda v: default if v is MISSING else Choice.const(it.space, v))
         target[name] = ite(it.space, it.pc, new, old)
     elif existing is None:
         target[name] = missing

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation
-from rosvar.interpreter.lifted import lift
 from rosvar.interpreter.model import ClearParamDecl, Raw
 from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.values import bool_attribute
@@ -26,7 +25,7 @@ def bool_value(
         except ValueError as error:
             return Fail(str(error), "bool-invalid")
 
-    return it.strip(value.map(convert), label)  # type: ignore[arg-type,return-value]
+    return it.strip(value.map(convert), label)
 
 
 def namespace_scope(
@@ -45,9 +44,11 @@ def namespace_scope(
         empty = ns.where(lambda v: v == "")
         it.fail(empty, "ns-empty", f"<{tag_name}> tag has an empty 'ns' attribute")
         ns = ns.restrict(~empty)
-    child_ns = it.strip(
-        lift("child_namespace", scope.ns, ns if ns is not None else Choice.const(it.space, "")),
-        f"<{tag_name}> namespace",
+    child_ns = it.lift(
+        "child_namespace",
+        scope.ns,
+        ns if ns is not None else Choice.const(it.space, ""),
+        context=f"<{tag_name}> namespace",
     )
     if include_filename is not None:
         child = scope.include_child(child_ns, include_filename)
@@ -80,7 +81,7 @@ def _clear(
                 f"<{tag_name}> tag must have a 'name' attribute to use 'clear_params'",
             )
             return
-        name = it.strip(lift("make_global_ns", it.strip(lift("ns_join", child.ns, node_name))))
+        name = it.lift("make_global_ns", it.lift("ns_join", child.ns, node_name))
     else:
         if ns is None:
             it.fail(

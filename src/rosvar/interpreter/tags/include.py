@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import functools
 import os
+from typing import cast
 
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import MAX_INCLUDE_DEPTH, Interpretation, split, tag
@@ -12,8 +14,10 @@ from rosvar.interpreter.tags.arg import declare, handle_arg
 from rosvar.interpreter.tags.common import bool_value, namespace_scope
 from rosvar.interpreter.tags.env import handle_env
 from rosvar.logic.choice import Choice
+from rosvar.logic.conditions import BDD
 
 ATTRIBUTES = ("file", "ns", "clear_params", "pass_all_args")
+_realpath = functools.lru_cache(maxsize=16384)(os.path.realpath)
 
 
 @tag("include")
@@ -27,7 +31,7 @@ def handle_include(it: Interpretation, entity: Entity, scope: Scope) -> None:
             return
         pass_all = bool_value(it, it.attr(entity, "pass_all_args", scope), False, "pass_all_args")
         for f_condition, file in split(it, files):
-            for p_condition, flag in split(it, pass_all):  # type: ignore[arg-type]
+            for p_condition, flag in split(it, pass_all):
                 with it.under(f_condition & p_condition):
                     _include(it, entity, scope, file, flag is True)
 
@@ -59,15 +63,15 @@ def _include(it: Interpretation, entity: Entity, scope: Scope, file: Raw, pass_a
     child.filename = file
     passed = child.include_args or {}
     for name, declared in child.declared.items():
-        value = passed.get(name)
-        undefined = declared if value is None else declared & value.where(lambda v: v is MISSING)
+        given = passed.get(name)
+        undefined = declared if given is None else declared & given.where(lambda v: v is MISSING)
         it.fail(undefined, "include-arg-undefined", "include args must have declared values")
     passed_where = {n: v.where(lambda leaf: leaf is not MISSING) for n, v in passed.items()}
     child.declared = {}
     child.args = passed
     child.include_args = None
     child.anon = {}
-    path = os.path.realpath(file)
+    path = _realpath(file)
     if path in it.stack:
         it.fail(it.space.true, "include-cycle", f"include cycle: {file} includes itself")
         return
@@ -91,5 +95,6 @@ def _include(it: Interpretation, entity: Entity, scope: Scope, file: Raw, pass_a
         it.stack.pop()
     if not pass_all:
         for name, where in passed_where.items():
-            unused = where & ~child.declared.get(name, it.space.false)
+            declared_here = cast(BDD, child.declared.get(name, it.space.false))
+            unused = where & ~declared_here
             it.fail(unused, "include-arg-unused", f"unused args [{name}] for include of [{file}]")

@@ -46,4 +46,4 @@ def handle_machine(it: Interpretation, entity: Entity, scope: Scope) -> None:
             MachineDecl(it.pc, entity.location, name, dict(attributes))  # type: ignore[arg-type]
         )
         if is_default != it.space.false:
-            it.default_machine = ite(it.space, it.pc & is_default, name, it.default_machine)  # type: ignore[arg-type]
+            it.default_machine = ite(it.space, it.pc & is_default, name, it.default_machine)

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, tag
-from rosvar.interpreter.lifted import lift
 from rosvar.interpreter.model import EnvSetting, NodeDecl, ParamDecl, Raw, Remap
 from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.tags.common import namespace_scope
@@ -73,15 +72,12 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
             test_name = it.required(entity, "test-name", scope)
             if test_name is None:
                 return
-            fields["test-name"] = test_name  # type: ignore[assignment]
+            fields["test-name"] = test_name
             fields["time-limit"] = it.attr(entity, "time-limit", scope) or Choice.const(
                 it.space, None
             )
             fields["retry"] = it.attr(entity, "retry", scope) or Choice.const(it.space, None)
-            if name is None:
-                name = test_name
-            else:
-                name = combine([name, test_name], lambda v: v[0] or v[1])
+            name = test_name if name is None else combine([name, test_name], lambda v: v[0] or v[1])
         else:
             it.check_attributes(entity, NODE_ATTRIBUTES)
             name = it.required(entity, "name", scope)
@@ -91,7 +87,7 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
             if isinstance(leaf, str) and leaf and not is_legal_name(leaf):
                 it.warn("node-name-illegal", f"illegal <node> name '{leaf}'")
         child = namespace_scope(it, "node", entity, scope, node_name=name)
-        param_ns = it.strip(lift("child_namespace", child.ns, name))  # type: ignore[arg-type]
+        param_ns = it.lift("child_namespace", child.ns, name)
         param_scope = child.child(param_ns)
         param_scope.params = []
         package = it.required(entity, "pkg", scope)
@@ -99,16 +95,16 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
         if package is None or node_type is None:
             return
         for key in OPTIONAL:
-            fields[key] = it.attr(entity, key, scope) or Choice.const(it.space, None)  # type: ignore[assignment]
+            fields[key] = it.attr(entity, key, scope) or Choice.const(it.space, None)
         machine = fields["machine"]
         fields["machine"] = combine(
             [machine, it.default_machine],
-            lambda v: v[0] or v[1],  # type: ignore[list-item]
+            lambda v: v[0] or v[1],
         )
-        fields["name"] = name  # type: ignore[assignment]
-        fields["namespace"] = it.strip(lift("node_namespace", child.ns))  # type: ignore[assignment]
-        fields["pkg"] = package  # type: ignore[assignment]
-        fields["type"] = node_type  # type: ignore[assignment]
+        fields["name"] = name
+        fields["namespace"] = it.lift("node_namespace", child.ns)
+        fields["pkg"] = package
+        fields["type"] = node_type
         own_remaps: list[Remap] = []
         env = list(scope.env)
         for sub in entity.children:
@@ -128,7 +124,7 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
                 else:
                     it.warn("tag-unknown", f"unrecognized '{sub.tag}' child tag in <{entity.tag}>")
         for private in [*scope.params, *param_scope.params]:
-            full = it.strip(lift("private_key", param_ns, Choice.const(it.space, private.key)))
+            full = it.lift("private_key", param_ns, Choice.const(it.space, private.key))
             with it.under(private.condition):
                 it.model.params.append(
                     ParamDecl(it.pc, private.location, full, private.value, "node-param")
@@ -150,7 +146,7 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
                     "respawn_delay",
                 )
             ],
-            lambda v: node_problem(*v),  # type: ignore[arg-type]
+            lambda v: node_problem(*v),
         )
         for condition, message in problem:
             if message is not None:

@@ -4,12 +4,10 @@ from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, split, tag
-from rosvar.interpreter.lifted import lift
 from rosvar.interpreter.model import Binary, DeferredValue, ParamDecl, Raw
 from rosvar.interpreter.scope import PrivateParam, Scope
 from rosvar.interpreter.values import convert_value
 from rosvar.logic.choice import Choice, Fail
-from rosvar.logic.terms import Apply
 from rosvar.ros import names
 
 ATTRIBUTES = ("name", "value", "type", "textfile", "binfile", "command")
@@ -44,7 +42,7 @@ def _value_choice(it: Interpretation, kind: str, raw: Choice[Raw], ptype: str) -
         except (ValueError, OSError) as error:
             return Fail(f"Invalid <param> tag: {error}", "param-invalid")
 
-    return it.strip(raw.map(convert))  # type: ignore[arg-type,return-value]
+    return it.strip(raw.map(convert))
 
 
 def add_private(
@@ -104,12 +102,8 @@ def handle_param(it: Interpretation, entity: Entity, scope: Scope, force_local: 
                             f"param name {key} is only known per configuration",
                         )
                     continue
-                full = it.strip(
-                    lift(
-                        "canonicalize",
-                        it.strip(lift("ns_join", scope.ns, Choice.const(it.space, name))),
-                    )
-                )
+                joined = it.lift("ns_join", scope.ns, Choice.const(it.space, name))
+                full = it.lift("canonicalize", joined)
                 it.model.params.append(ParamDecl(it.pc, entity.location, full, value, "param"))
 
 

@@ -1,14 +1,14 @@
-"""``<rosparam>``: load YAML (inline or from a file) as parameters; ``dump``/``delete`` only run at launch."""
+"""``<rosparam>``: YAML (inline or from a file) as parameters; ``dump``/``delete`` act at launch."""
 
 from __future__ import annotations
 
+import functools
 import os
 
 import yaml
 
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, split, tag
-from rosvar.interpreter.lifted import lift
 from rosvar.interpreter.model import ParamDecl, Raw, YamlDecl
 from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.tags.common import bool_value
@@ -34,8 +34,9 @@ def unroll(name: str, value: object) -> list[tuple[str, object]]:
     return [(names.canonicalize_name(name), value)]
 
 
+@functools.lru_cache(maxsize=4096)
 def yaml_params(text: str, full_param: str, param: str, source: str) -> list[tuple[str, object]]:
-    """What ``load_rosparam`` sets for a concrete YAML text."""
+    """What ``load_rosparam`` sets for a concrete YAML text (cached: callers must not mutate)."""
     try:
         data = load_yaml(text)
     except yaml.YAMLError as error:
@@ -56,7 +57,7 @@ def handle_rosparam(it: Interpretation, entity: Entity, scope: Scope) -> None:
         it.check_attributes(entity, ATTRIBUTES)
         values = {a: it.attr(entity, a, scope) for a in ATTRIBUTES}
         subst = bool_value(it, values["subst_value"], False, "subst_value")
-        for s_condition, substitute in split(it, subst):  # type: ignore[arg-type]
+        for s_condition, substitute in split(it, subst):
             with it.under(s_condition):
                 _load(it, entity, scope, values, substitute is True)
 
@@ -126,7 +127,7 @@ def _load_one(
     param_name = names.ns_join(ns or "", param or "")  # type: ignore[arg-type]
     if file is not None:
         try:
-            with open(file) as handle:  # type: ignore[arg-type]
+            with open(file) as handle:
                 text: Raw = handle.read()
         except OSError as error:
             it.fail(true, "file-unreadable", f"error loading <rosparam> tag: {error}")
@@ -134,9 +135,7 @@ def _load_one(
     else:
         text = entity.text
     full_params = (
-        it.strip(lift("ns_join", scope.ns, Choice.const(it.space, param_name)))
-        if param_name
-        else scope.ns
+        it.lift("ns_join", scope.ns, Choice.const(it.space, param_name)) if param_name else scope.ns
     )
     texts: Choice[Raw] = Choice.const(it.space, text)
     if substitute:
@@ -150,11 +149,11 @@ def _load_one(
                     it.model.params.append(
                         YamlDecl(
                             it.pc, entity.location, Choice.const(it.space, full), param_name, body
-                        )  # type: ignore[arg-type]
+                        )
                     )
                     continue
                 try:
-                    pairs = yaml_params(body, full, param_name, file or "")  # type: ignore[arg-type]
+                    pairs = yaml_params(body, full, param_name, file or "")
                 except ValueError as error:
                     it.fail(true, "rosparam-invalid", f"error loading <rosparam> tag: {error}")
                     continue
