@@ -105,16 +105,18 @@ class _Restriction:
     def holds(self, condition: object) -> bool:
         return self.space.evaluate(condition, self.assignment)
 
+    def evaluate(self, value: Raw, location: Location, what: str) -> str:
+        """A term's string under this configuration (roslaunch's failure if it has none)."""
+        try:
+            return evaluate(value, self.concrete, self.host)
+        except (TermError, LookupError, ValueError) as error:
+            raise ResolutionError("value-unknown", f"{what}: {error}", location) from None
+
     def pick(self, choice: Choice[object], location: Location, what: str) -> object:
         for condition, leaf in choice:
             if self.holds(condition):
-                if is_term(leaf):
-                    try:
-                        return evaluate(leaf, self.concrete, self.host)  # type: ignore[arg-type]
-                    except (TermError, LookupError, ValueError) as error:
-                        raise ResolutionError(
-                            "value-unknown", f"{what}: {error}", location
-                        ) from None
+                if isinstance(leaf, Hole | Apply):
+                    return self.evaluate(leaf, location, what)
                 return leaf
         raise ResolutionError("value-undefined", f"{what} has no value here", location)
 
