@@ -12,8 +12,9 @@ keep the corpus's proportions so per-file cost stays comparable as the size grow
   other set the same parameter differently (conflicts for the analysis to find);
 * inline ``<rosparam>`` YAML and ``rosparam load``;
 * ``<include>`` of 1-2 files of the same or the previous package, some conditional, all
-  passing args. Each file has a *level* and includes only lower levels, so there are no
-  cycles and an include chain holds at most ``MAX_LEVEL + 1`` files, as in real systems.
+  passing args (the first package's "previous" is the last, so every size has one shape).
+  Each file has a *level* and includes only lower levels, so there are no cycles and an
+  include chain holds at most ``MAX_LEVEL + 1`` files, as in real systems.
 
 Output is a pure function of ``(n_files, seed)``: each file draws from its own seeded RNG.
 Run as a script to write a workspace: ``python bench/generate.py DIR N [--seed S]``.
@@ -140,9 +141,20 @@ def _plan(n_files: int, seed: int) -> list[_Plan]:
 
 
 def _include_candidates(plans: list[_Plan], plan: _Plan) -> list[_Plan]:
-    """Lower-level files of this package (earlier ones) or of the previous package."""
-    first = max(0, (plan.index // FILES_PER_PACKAGE - 1) * FILES_PER_PACKAGE)
-    return [p for p in plans[first : plan.index] if p.level < plan.level]
+    """Lower-level files of this package or of the previous one (the last, for the first).
+
+    Levels alone rule out cycles; wrapping around gives the first package the same choice
+    as every other, so the include shape does not depend on the workspace size.
+    """
+    number = plan.index // FILES_PER_PACKAGE
+    previous = (number - 1) % ((len(plans) + FILES_PER_PACKAGE - 1) // FILES_PER_PACKAGE)
+    packages = dict.fromkeys((previous, number))
+    return [
+        candidate
+        for package in packages
+        for candidate in plans[package * FILES_PER_PACKAGE : (package + 1) * FILES_PER_PACKAGE]
+        if candidate.level < plan.level
+    ]
 
 
 class _Writer:

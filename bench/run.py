@@ -19,6 +19,7 @@ from __future__ import annotations
 import argparse
 import cProfile
 import datetime
+import gc
 import io
 import itertools
 import json
@@ -46,6 +47,8 @@ DOC = REPO / "docs" / "performance.md"
 
 TIMEOUT_S = 600.0
 """Bound on every subprocess; a workload that needs longer is reported as a timeout."""
+MEMORY_LIMIT_MB = 8192
+"""Address-space cap of every subprocess, so a blow-up fails alone instead of starving the host."""
 REPEATS = 3
 SINGLE_RUN_FROM = 2_000  # workloads this large are timed once: one run is minutes
 GENERATED_SIZES = (100, 400, 2_000, 10_000)
@@ -150,6 +153,8 @@ def measure_analyze(job: Job) -> Metrics:
 
     times = _timed_runs(job, run)
     peak_kib = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss  # KiB on Linux
+    clear_cache()  # leave the baseline a heap as small as it found
+    gc.collect()
     return {
         "files": len(job.files),
         "analyze_ms": statistics.median(times),
@@ -210,12 +215,21 @@ class Finished:
     stderr: str
 
 
+def _limit_memory() -> None:
+    limit = MEMORY_LIMIT_MB * 1024 * 1024
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+
 def run_bounded(command: Sequence[str], env: dict[str, str], stdout: bool = True) -> Finished:
     """Run ``command`` with the timeout, keeping its own rusage (os.wait4) for peak RSS."""
     with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
         started = time.perf_counter()
         process = subprocess.Popen(
-            command, stdout=out if stdout else subprocess.DEVNULL, stderr=err, env=env
+            command,
+            stdout=out if stdout else subprocess.DEVNULL,
+            stderr=err,
+            env=env,
+            preexec_fn=_limit_memory,
         )
         deadline = started + TIMEOUT_S
         status: int | None = None
@@ -276,7 +290,6 @@ def measure_whole_process(workload: Workload, roots: list[str], outcome: Outcome
     finished = run_bounded(command, _env(workload), stdout=False)
     if finished.returncode == 0:
         outcome.metrics["whole_ms"] = finished.wall_ms
-        outcome.metrics["whole_peak_mb"] = finished.peak_mb
     else:
         outcome.notes.append(_failure(finished, "whole-process"))
 
@@ -533,7 +546,22 @@ def _revision() -> str:
     return result.stdout.strip() or "unknown"
 
 
-def write_doc(outcomes: Sequence[Outcome], targets: list[str], profiled: str | None) -> None:
+KEEP_MARKER = "<!-- Hand-written notes below this line are kept by bench/run.py --write-doc. -->"
+
+
+def _kept_notes() -> str:
+    """The hand-written tail of the current document: findings outlive regeneration."""
+    try:
+        text = DOC.read_text(encoding="utf-8")
+    except OSError:
+        return ""
+    _, found, tail = text.partition(KEEP_MARKER)
+    return tail.strip("\n") if found else ""
+
+
+def write_doc(
+    outcomes: Sequence[Outcome], targets: list[str], profiled: str | None, load: str
+) -> None:
     sizes = ", ".join(f"{w.size:,}" for w in WORKLOADS.values() if w.family == "generated")
     imports = [o.get("import_mb") for o in outcomes if o.get("import_mb") is not None]
     import_note = f" (about {min(imports):.0f} MB of it is Python and imports)" if imports else ""
@@ -541,7 +569,7 @@ def write_doc(outcomes: Sequence[Outcome], targets: list[str], profiled: str | N
         "# Performance of `rosvar analyze`",
         "",
         f"Measured {datetime.date.today().isoformat()} with `bench/run.py --write-doc` "
-        f"(revision `{_revision()}`). Machine: {_machine()}.",
+        f"(revision `{_revision()}`). Machine: {_machine()}. {load}",
         "",
         "## Method",
         "",
@@ -562,8 +590,9 @@ def write_doc(outcomes: Sequence[Outcome], targets: list[str], profiled: str | N
         "files with `xml.dom.minidom` in the same subprocess — what roslaunch itself does.",
         "- *growth*: time ratio between consecutive generated sizes; near-linear means "
         f"time ~ n^k with k ≤ log2(2.3) ≈ {LINEAR_EXPONENT:.2f}.",
-        f"- Every subprocess is bounded by {TIMEOUT_S:.0f} s; a timeout counts as FAIL, and "
-        "the larger generated sizes are then not attempted.",
+        f"- Every subprocess is bounded by {TIMEOUT_S:.0f} s and {MEMORY_LIMIT_MB:,} MB of "
+        "address space; hitting a bound counts as FAIL, and after an in-process failure the "
+        "larger generated sizes are not attempted.",
         "",
         "## Results",
         "",
@@ -583,8 +612,9 @@ def write_doc(outcomes: Sequence[Outcome], targets: list[str], profiled: str | N
             "```",
             "",
         ]
+    parts += [KEEP_MARKER, "", _kept_notes(), ""]
     DOC.parent.mkdir(parents=True, exist_ok=True)
-    DOC.write_text("\n".join(parts), encoding="utf-8")
+    DOC.write_text("\n".join(parts).rstrip("\n") + "\n", encoding="utf-8")
     print(f"wrote {DOC}")
 
 
@@ -600,6 +630,7 @@ def selected(options: argparse.Namespace) -> list[Workload]:
 def run_all(options: argparse.Namespace) -> None:
     outcomes: list[Outcome] = []
     failed_families: set[str] = set()
+    load_before = os.getloadavg()[1]
     with tempfile.TemporaryDirectory(prefix="rosvar-bench-") as scratch_dir:
         scratch = Path(scratch_dir)
         for workload in selected(options):
@@ -627,7 +658,11 @@ def run_all(options: argparse.Namespace) -> None:
         print(f"\nprofile of {options.profile} (top {PROFILE_TOP} by cumulative time):")
         print(profiled)
     if options.write_doc:
-        write_doc(outcomes, targets, profiled)
+        load = (
+            f"Load average (5 min) {load_before:.1f} at the start, {os.getloadavg()[1]:.1f} at "
+            "the end: other work on the machine slows every figure alike."
+        )
+        write_doc(outcomes, targets, profiled, load)
 
 
 def parse_options(argv: Sequence[str] | None = None) -> argparse.Namespace:

@@ -684,9 +684,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     parser.add_argument("--corpus", type=Path, default=CORPUS)
     parser.add_argument(
-        "--env-domains",
-        action="store_true",
-        help="give rosvar's analysis the run's environment values as domain literals",
+        "--no-env-domains",
+        dest="env_domains",
+        action="store_false",
+        help="analyse without the run's environment values as domain literals (as plain analyze)",
     )
     parser.add_argument("-v", "--verbose", action="store_true", help="print each file's name")
     options = parser.parse_args(argv)

@@ -146,10 +146,11 @@ def resolve(
 ) -> Resolution:
     """What ``roslaunch FILES name:=value...`` loads in environment ``env``."""
     result = Resolution()
+    args = {k: v for k, v in (args or {}).items() if names.settable(k)}
     seen_nodes: dict[str, Location] = {}
     for file in files:
         model = analysis.model(file)
-        restriction = _Restriction(analysis, model, args or {}, env or {})
+        restriction = _Restriction(analysis, model, args, env or {})
         try:
             _restrict(restriction, model, result, seen_nodes)
         except ResolutionError as error:

@@ -12,6 +12,7 @@ from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.scope import Scope
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.ros.names import settable
 from rosvar.workspace import Workspace
 
 Progress = Callable[[int, int, str], None]
@@ -46,7 +47,18 @@ class Analysis:
             models.append(self.model(file))
         return models
 
+    def label(self, file: str) -> str:
+        """The file as people name it: relative to the root it was found under."""
+        for root in self.workspace.roots:
+            relative = os.path.relpath(file, root)
+            if not relative.startswith(".."):
+                return relative
+        return file
+
     def _interpret(self, file: str) -> LaunchModel:
+        # The file's feature variable goes first so that it sits next to its args in
+        # the BDD variable order (the feature model pairs them).
+        self.space.file_atom(file, self.label(file))
         it = Interpretation(
             self.workspace, self.space, self.domains.arg_domain, self.domains.env_domain, file
         )
@@ -61,7 +73,7 @@ class Analysis:
                 dict.fromkeys(
                     d.get("name") or ""
                     for d in entry_declarations(root)
-                    if d.get("name") and "$" not in (d.get("name") or "")
+                    if settable(d.get("name") or "")
                 )
             )
             args = it.entry_args(file, names)

@@ -13,7 +13,7 @@ from __future__ import annotations
 import os
 import re
 from collections import defaultdict
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from rosvar.frontends.entity import Entity
@@ -21,9 +21,12 @@ from rosvar.frontends.ros1_xml.parser import load_launch_file
 from rosvar.interpreter.evaluator import EvalRefused, compared_literals
 from rosvar.logic.inputs import OTHER, UNSET, Slot
 from rosvar.workspace import Workspace
+from rosvar.workspace.executables import executables
 
 _WHOLE_ARG = re.compile(r"\s*\$\(arg\s+([^\s)]+)\s*\)\s*")
 _FIND = re.compile(r"\$\(find\s+([^\s)]+)\s*\)")
+_ONE_ARG = re.compile(r"([^$]*)\$\(arg\s+([^\s)]+)\s*\)([^$]*)")
+PARAM_TYPES = ("str", "string", "int", "double", "bool", "boolean", "yaml", "auto")
 
 
 @dataclass
@@ -31,9 +34,13 @@ class ArgFacts:
     """What the text of one launch file says about one of its command-line args."""
 
     defaults: list[str | None] = field(default_factory=list)
+    plain: bool = True  # declared once, directly under <launch>, without if/unless
     has_value: bool = False
     tested: bool = False
     literals: set[str] = field(default_factory=set)
+    executables: list[tuple[str, str, str]] = field(default_factory=list)  # (pkg, prefix, suffix)
+    paths: list[tuple[str, str]] = field(default_factory=list)  # (prefix, suffix) of a file path
+    param_type: bool = False
 
 
 def entry_declarations(root: Entity) -> Iterator[Entity]:
@@ -58,6 +65,8 @@ def file_facts(root: Entity) -> dict[str, ArgFacts]:
         if not name or "$" in name:
             continue
         entry = facts[name]
+        if entry.defaults or decl.has("if") or decl.has("unless") or decl not in root.children:
+            entry.plain = False
         if decl.has("value"):
             entry.has_value = True
         default = decl.get("default")
@@ -65,6 +74,7 @@ def file_facts(root: Entity) -> dict[str, ArgFacts]:
         if default is not None and "$" not in default:
             entry.literals.add(default)
     for element in _walk(root):
+        _patterns(element, facts)
         for attribute in ("if", "unless"):
             text = element.get(attribute)
             if text is None:
@@ -84,6 +94,36 @@ def file_facts(root: Entity) -> dict[str, ArgFacts]:
     return dict(facts)
 
 
+def _patterns(element: Entity, facts: dict[str, ArgFacts]) -> None:
+    """Uses of one arg inside a literal pattern: node types, include paths, param types."""
+    if element.tag in ("node", "test"):
+        match = _ONE_ARG.fullmatch(element.get("type") or "")
+        package = element.get("pkg") or ""
+        if match and match.group(2) in facts and "$" not in package:
+            facts[match.group(2)].executables.append((package, match.group(1), match.group(3)))
+    elif element.tag == "include":
+        text = element.get("file") or ""
+        prefix_match = _FIND.match(text)
+        rest = text[prefix_match.end() :] if prefix_match else ""
+        match = _ONE_ARG.fullmatch(rest)
+        if prefix_match and match and match.group(2) in facts:
+            facts[match.group(2)].paths.append(
+                (prefix_match.group(0) + match.group(1), match.group(3))
+            )
+    elif element.tag == "param":
+        match = _WHOLE_ARG.fullmatch(element.get("type") or "")
+        if match and match.group(1) in facts:
+            facts[match.group(1)].param_type = True
+
+
+def _matching(candidates: Iterable[str], prefix: str, suffix: str) -> set[str]:
+    return {
+        c[len(prefix) : len(c) - len(suffix)]
+        for c in candidates
+        if c.startswith(prefix) and c.endswith(suffix) and len(c) > len(prefix) + len(suffix)
+    }
+
+
 class DomainTable:
     """Domains of every entry file's args and of environment variables."""
 
@@ -92,8 +132,10 @@ class DomainTable:
         workspace: Workspace,
         extra_values: Mapping[str, Sequence[str]] | None = None,
         env_values: Mapping[str, Sequence[str]] | None = None,
+        extra_executables: Mapping[str, Sequence[str]] | None = None,
     ) -> None:
         self.workspace = workspace
+        self._executables = extra_executables or {}
         self._facts: dict[str, dict[str, ArgFacts]] = {}
         self._passed: dict[str, dict[str, set[str]]] | None = None
         self._extra = extra_values or {}
@@ -108,12 +150,10 @@ class DomainTable:
     def unset_default(self, file: str, name: str) -> str | None:
         """The literal that not giving ``name`` amounts to, if it is always the same."""
         entry = self.facts(file).get(name)
-        if entry is None or entry.has_value or not entry.defaults:
+        if entry is None or entry.has_value or not entry.plain or len(entry.defaults) != 1:
             return None
-        first = entry.defaults[0]
-        if first is None or "$" in first or any(d != first for d in entry.defaults):
-            return None
-        return first
+        default = entry.defaults[0]
+        return None if default is None or "$" in default else default
 
     def arg_domain(self, file: str, name: str) -> tuple[Slot, ...]:
         entry = self.facts(file).get(name, ArgFacts())
@@ -125,12 +165,33 @@ class DomainTable:
         if entry.tested:
             literals.extend(["true", "false"])
         literals.extend(sorted(self.passed_literals(file).get(name, ())))
+        literals.extend(sorted(self._inferred(entry)))
         literals.extend(self._extra.get(name, ()))
+        literals.extend(self._extra.get(f"{os.path.basename(file)}:{name}", ()))
         slots: list[Slot] = list(dict.fromkeys(literals))
         if default is None:
             slots.append(UNSET)
         slots.append(OTHER)
         return tuple(slots)
+
+    def _inferred(self, entry: ArgFacts) -> set[str]:
+        """Values that make a pattern name something that exists (GETVALUES)."""
+        values: set[str] = set()
+        for package_name, prefix, suffix in entry.executables:
+            package = self.workspace.packages.get(package_name)
+            known = set(self._executables.get(package_name, ()))
+            if package is not None:
+                known |= executables(package)
+            values |= _matching(known, prefix, suffix)
+        for prefix, suffix in entry.paths:
+            directory_text, _, name_prefix = prefix.rpartition("/")
+            directory = self._static_path(directory_text, "")
+            if directory is None or not os.path.isdir(directory):
+                continue
+            values |= _matching(os.listdir(directory), name_prefix, suffix)
+        if entry.param_type:
+            values |= set(PARAM_TYPES)
+        return values
 
     def env_domain(self, name: str) -> tuple[Slot, ...]:
         return (*dict.fromkeys(self._env.get(name, ())), UNSET, OTHER)

@@ -17,7 +17,7 @@ from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import load_launch_file
 from rosvar.interpreter.lifted import lift
-from rosvar.interpreter.model import ErrorEvent, LaunchModel, Raw
+from rosvar.interpreter.model import Decision, ErrorEvent, LaunchModel, Raw
 from rosvar.interpreter.scope import MISSING, ArgValue, Scope
 from rosvar.interpreter.substitution import Substituter
 from rosvar.logic.choice import Choice, Fail
@@ -189,7 +189,7 @@ class Interpretation:
                 self.fail(condition, leaf.code, message)
             else:
                 good.append((condition, leaf))
-        return Choice(good)
+        return Choice(good, self.space.false)
 
     def lift(self, name: str, *operands: Choice[Raw], context: str = "") -> Choice[Raw]:
         """A lifted name function (see :mod:`rosvar.interpreter.lifted`), failures recorded."""
@@ -255,10 +255,10 @@ class Interpretation:
         value = self.resolve(text, scope, f"<{entity.tag}> attribute '{label}'")
         assert value is not None
         true = self.truth(value, f"<{entity.tag}> attribute '{label}'")
-        if if_text is not None:
-            return true
-        # unless: processed where the value is false (valid and not true)
-        return value.covered() & ~true & ~self._invalid(value)
+        if if_text is None:  # unless: processed where the value is false (valid and not true)
+            true = value.covered() & ~true & ~self._invalid(value)
+        self.model.decisions.append(Decision(self.pc, entity.location, label, true))
+        return true
 
     def _invalid(self, value: Choice[Raw]) -> BDD:
         invalid = self.space.false

@@ -114,6 +114,16 @@ class IncludeDecl:
 
 
 @dataclass
+class Decision:
+    """An ``if``/``unless`` roslaunch evaluated (on path ``condition``): true where ``outcome``."""
+
+    condition: BDD
+    location: Location
+    kind: str
+    outcome: BDD
+
+
+@dataclass
 class ErrorEvent:
     """Under ``condition`` roslaunch stops here with ``message``."""
 
@@ -151,6 +161,7 @@ class LaunchModel:
     machines: list[MachineDecl] = field(default_factory=list)
     includes: list[IncludeDecl] = field(default_factory=list)
     errors: list[ErrorEvent] = field(default_factory=list)
+    decisions: list[Decision] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
     files: list[str] = field(default_factory=list)
     unset_defaults: dict[str, str] = field(default_factory=dict)

@@ -27,26 +27,34 @@ class Fail:
 
 
 def _key(leaf: object) -> object:
+    """Merge key: equal *and* of the same type (0, False and 0.0 are different params)."""
     try:
         hash(leaf)
     except TypeError:
         return ("unhashable", type(leaf).__name__, repr(leaf))
-    return leaf
+    if isinstance(leaf, tuple):
+        return (tuple, tuple(_key(item) for item in leaf))
+    return (type(leaf), leaf)
 
 
 class Choice(Generic[T]):
     """Disjoint ``(condition, value)`` branches; conditions are BDDs of one space."""
 
-    __slots__ = ("branches",)
+    __slots__ = ("branches", "false")
 
-    def __init__(self, branches: Iterable[tuple[BDD, T]]) -> None:
+    def __init__(self, branches: Iterable[tuple[BDD, T]], false: BDD = None) -> None:
+        """``false`` (the manager's false) is needed only when ``branches`` may be empty."""
         self.branches: tuple[tuple[BDD, T], ...]
+        self.false: BDD = false
         if isinstance(branches, list) and len(branches) == 1:  # the common constant case
             condition = branches[0][0]
-            self.branches = () if condition == condition.bdd.false else (branches[0],)
+            self.false = condition.bdd.false
+            self.branches = () if condition == self.false else (branches[0],)
             return
         merged: dict[object, tuple[BDD, T]] = {}
         for condition, leaf in branches:
+            if self.false is None:
+                self.false = condition.bdd.false
             key = _key(leaf)
             if key in merged:
                 merged[key] = (merged[key][0] | condition, leaf)
@@ -58,7 +66,13 @@ class Choice(Generic[T]):
     def const(space: ConditionSpace, leaf: U) -> Choice[U]:
         choice: Choice[U] = Choice.__new__(Choice)
         choice.branches = ((space.true, leaf),)
+        choice.false = space.false
         return choice
+
+    @staticmethod
+    def empty(space: ConditionSpace) -> Choice[U]:
+        """No value in any configuration (every branch failed)."""
+        return Choice([], space.false)
 
     def __iter__(self) -> Iterator[tuple[BDD, T]]:
         return iter(self.branches)
@@ -77,7 +91,7 @@ class Choice(Generic[T]):
         return [v for _, v in self.branches]
 
     def map(self, function: Callable[[T], U]) -> Choice[U]:
-        return Choice((c, function(v)) for c, v in self.branches)
+        return Choice(((c, function(v)) for c, v in self.branches), self.false)
 
     def bind(self, function: Callable[[T], Choice[U]]) -> Choice[U]:
         """Apply a conditional function to each branch and flatten."""
@@ -87,11 +101,11 @@ class Choice(Generic[T]):
                 joint = condition & inner
                 if joint != joint.bdd.false:
                     out.append((joint, value))
-        return Choice(out)
+        return Choice(out, self.false)
 
     def restrict(self, condition: BDD) -> Choice[T]:
         """Only the part of this value that can hold under ``condition``."""
-        return Choice((c & condition, v) for c, v in self.branches)
+        return Choice(((c & condition, v) for c, v in self.branches), self.false)
 
     def where(self, predicate: Callable[[T], bool]) -> BDD:
         """The condition under which the value satisfies ``predicate``."""
@@ -110,8 +124,8 @@ class Choice(Generic[T]):
 
 
 def _false_of(choice: Choice[Any]) -> BDD:
-    if choice.branches:
-        return choice.branches[0][0].bdd.false
+    if choice.false is not None:
+        return choice.false
     raise ValueError("empty choice has no condition space")
 
 
@@ -123,7 +137,8 @@ def ite(space: ConditionSpace, condition: BDD, then: Choice[V], otherwise: Choic
         return otherwise
     return Choice(
         [(c & condition, v) for c, v in then.branches]
-        + [(c & ~condition, v) for c, v in otherwise.branches]
+        + [(c & ~condition, v) for c, v in otherwise.branches],
+        space.false,
     )
 
 
@@ -143,4 +158,4 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
                 if joint != joint.bdd.false:
                     nxt.append((joint, [*vs, v]))
         partial = nxt
-    return Choice((c, function(vs)) for c, vs in partial)
+    return Choice(((c, function(vs)) for c, vs in partial), choices[0].false if choices else None)

@@ -40,7 +40,15 @@ class PredicateAtom:
     term: Term
 
 
-Atom = SlotAtom | PredicateAtom
+@dataclass(frozen=True)
+class FileAtom:
+    """Launch file ``file`` is part of the product (a feature of the feature model)."""
+
+    file: str
+    label: str
+
+
+Atom = SlotAtom | PredicateAtom | FileAtom
 Predicate = Callable[[str], bool]
 PREDICATES: dict[str, tuple[Predicate, str]] = {}
 
@@ -67,6 +75,7 @@ class ConditionSpace:
         self._var_of: dict[Atom, str] = {}
         self._atom_of: dict[str, Atom] = {}
         self._domains: dict[Input, tuple[Slot, ...]] = {}
+        self._input_constraints: dict[Input, BDD] = {}
 
     # -- declaring atoms -------------------------------------------------------------
     def _new_var(self, atom: Atom) -> BDD:
@@ -84,14 +93,35 @@ class ConditionSpace:
         slots = tuple(dict.fromkeys(domain))
         self._domains[input_] = slots
         variables = [self._new_var(SlotAtom(input_, slot)) for slot in slots]
-        exactly_one = self.false
+        exactly_one = self.exactly_one(variables)
+        self._input_constraints[input_] = exactly_one
+        self._constraints.append(exactly_one)
+
+    def exactly_one(self, variables: Sequence[BDD]) -> BDD:
+        result = self.false
         for i, chosen in enumerate(variables):
             term = chosen
             for j, other in enumerate(variables):
                 if i != j:
                     term &= ~other
-            exactly_one |= term
-        self._constraints.append(exactly_one)
+            result |= term
+        return result
+
+    def input_constraint(self, input_: Input) -> BDD:
+        """The exactly-one constraint of one input."""
+        return self._input_constraints[input_]
+
+    def file_atom(self, file: str, label: str) -> BDD:
+        """The feature "``file`` is part of the product", created on first use."""
+        atom = FileAtom(file, label)
+        name = self._var_of.get(atom)
+        return self.bdd.var(name) if name is not None else self._new_var(atom)
+
+    def variable_name(self, atom: Atom) -> str:
+        return self._var_of[atom]
+
+    def atom_of(self, name: str) -> Atom:
+        return self._atom_of[name]
 
     def domain(self, input_: Input) -> tuple[Slot, ...]:
         return self._domains[input_]
@@ -134,7 +164,10 @@ class ConditionSpace:
         return bool((self.valid & ~condition) == self.false)
 
     def assignment(
-        self, values: Mapping[Input, str | None], host: object = None
+        self,
+        values: Mapping[Input, str | None],
+        host: object = None,
+        files: frozenset[str] = frozenset(),
     ) -> dict[str, bool]:
         """Truth of every atom under concrete inputs (``None`` = not given/unset).
 
@@ -156,6 +189,8 @@ class ConditionSpace:
                 result[name] = (
                     chosen.get(atom.input) is atom.slot or chosen.get(atom.input) == atom.slot
                 )
+            elif isinstance(atom, FileAtom):
+                result[name] = atom.file in files
             else:
                 result[name] = _decide(atom, concrete, host)
         return result
@@ -219,7 +254,7 @@ class ConditionSpace:
         for index, cube in enumerate(widened):
             others = self.false
             for j, bdd in enumerate(covered):
-                if j != index and (j < index or widened[j] not in result):
+                if j != index and (j > index or widened[j] in result):
                     others |= bdd
             if ((covered[index] & care) & ~others) != self.false:
                 result.append(cube)
@@ -228,8 +263,8 @@ class ConditionSpace:
     def _cube_bdd(self, cube: Mapping[object, frozenset[Slot] | bool]) -> BDD:
         result = self.true
         for key, value in cube.items():
-            if isinstance(key, PredicateAtom):
-                atom = self.predicate(key.test, key.term)
+            if isinstance(key, PredicateAtom | FileAtom):
+                atom = self.bdd.var(self._var_of[key])
                 result &= atom if value else ~atom
             else:
                 assert isinstance(value, frozenset)
@@ -257,7 +292,7 @@ class ConditionSpace:
             negated: dict[Input, set[Slot]] = {}
             for name, value in path.items():
                 atom = self._atom_of[name]
-                if isinstance(atom, PredicateAtom):
+                if isinstance(atom, PredicateAtom | FileAtom):
                     cube[atom] = value
                 elif value:
                     cube[atom.input] = frozenset([atom.slot])
@@ -272,7 +307,9 @@ class ConditionSpace:
     def _render_cube(self, cube: Mapping[object, frozenset[Slot] | bool], qualify: bool) -> str:
         parts = []
         for key, value in sorted(cube.items(), key=lambda kv: _sort_key(kv[0])):
-            if isinstance(key, PredicateAtom):
+            if isinstance(key, FileAtom):
+                parts.append(key.label if value else f"¬{key.label}")
+            elif isinstance(key, PredicateAtom):
                 _test, display = PREDICATES[key.test]
                 text = display.format(key.term)
                 parts.append(text if value else f"¬({text})")
@@ -295,6 +332,8 @@ def _decide(atom: PredicateAtom, concrete: Mapping[Input, str], host: object) ->
 
 
 def _sort_key(key: object) -> tuple[int, str]:
+    if isinstance(key, FileAtom):
+        return (-1, key.label)
     if isinstance(key, PredicateAtom):
         return (1, str(key.term))
     return (0, str(key))
@@ -330,7 +369,7 @@ def _merge_pair(
         return None
     key = differing[0]
     va, vb = a.get(key), b.get(key)
-    if isinstance(key, PredicateAtom) or va is None or vb is None:
+    if isinstance(key, PredicateAtom | FileAtom) or va is None or vb is None:
         # p ∧ rest ∨ ¬p ∧ rest = rest
         if isinstance(va, bool) and isinstance(vb, bool):
             return {k: v for k, v in a.items() if k != key}

@@ -134,9 +134,14 @@ def parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    options = parser().parse_args(argv)
+    top = parser()
+    options, extra = top.parse_known_args(argv)
+    mappings = [word for word in extra if ":=" in word]
+    if len(mappings) != len(extra) or (mappings and options.command != "resolve"):
+        top.error(f"unrecognized arguments: {' '.join(w for w in extra if w not in mappings)}")
     if options.command == "resolve":
-        options.args = [p for p in options.paths if ":=" in p]
+        # ROS habit: name:=value words may stand anywhere on the command line
+        options.args = [p for p in options.paths if ":=" in p] + mappings
         options.paths = [p for p in options.paths if ":=" not in p]
     try:
         return int(options.run(options))

@@ -83,11 +83,20 @@ def child_namespace(ns: str, child: str | None) -> str:
     return make_global_ns(ns_join(ns, child))
 
 
+def settable(name: str) -> bool:
+    """Whether ``name:=value`` on roslaunch's command line reaches the arg ``name``.
+
+    roslaunch reads its command line as ROS remappings: ``3d_sensor:=x`` (a digit
+    first) or ``_private:=x`` never reach an arg.
+    """
+    return name in command_line_mappings([f"{name}:=x"])
+
+
 def command_line_mappings(argv: list[str]) -> dict[str, str]:
     """``name:=value`` words as roslaunch reads them (``_private`` words are params, dropped)."""
     mappings: dict[str, str] = {}
     for word in argv:
-        if ":=" not in word or not re.match(r"([~/A-Za-z]|_|__)[\w/]*:=", word):
+        if ":=" not in word or not re.fullmatch(r"([~/A-Za-z]|_|__)[\w/]*:=.*", word):
             continue
         parts = [p.strip() for p in word.split(":=")]
         if len(parts) != 2:

@@ -113,7 +113,7 @@ def _parse(data: bytes, filename: str, watch: str | None) -> tuple[ParseResult, 
     """Parse, also collecting the elements tagged ``watch`` (spares a second tree walk)."""
     watched: list[Entity] = []
     if not data.removeprefix(_UTF8_BOM).strip():
-        return _error("xml-empty", "file is empty", Location(filename)), watched
+        return _error("xml-empty", "file is empty", Location(filename, 1, 1)), watched
     prepared = _prepare(data, filename)
     if isinstance(prepared, ParseResult):
         return prepared, watched
@@ -195,9 +195,9 @@ def _parse(data: bytes, filename: str, watch: str | None) -> tuple[ParseResult, 
             return _error("xml-encoding", f"bad encoding: {reason}", location), []
         return _error("xml-malformed", f"malformed XML: {reason}", location), []
     except (ValueError, LookupError) as exc:  # pyexpat: "multi-byte encodings are not supported"
-        return _error("xml-encoding", f"unsupported encoding: {exc}", Location(filename)), []
+        return _error("xml-encoding", f"unsupported encoding: {exc}", Location(filename, 1, 1)), []
     except RecursionError:
-        return _error("xml-too-deep", "document too deeply nested", Location(filename)), []
+        return _error("xml-too-deep", "document too deeply nested", Location(filename, 1, 1)), []
     return ParseResult(document.children[0] if document.children else None), watched
 
 
@@ -235,16 +235,18 @@ def _read_bytes(path: str | os.PathLike[str]) -> bytes | ParseResult:
     try:
         info = os.stat(name)
         if not stat.S_ISREG(info.st_mode):
-            return _error("file-unreadable", "cannot read file: not a regular file", Location(name))
+            return _error(
+                "file-unreadable", "cannot read file: not a regular file", Location(name, 1, 1)
+            )
         if info.st_size > MAX_FILE_BYTES:
             return _too_large(name, info.st_size)
         with open(name, "rb") as handle:
             data = handle.read(MAX_FILE_BYTES + 1)
     except ValueError as exc:  # e.g. an embedded NUL in the name
-        return _error("file-unreadable", f"cannot read file: {exc}", Location(name))
+        return _error("file-unreadable", f"cannot read file: {exc}", Location(name, 1, 1))
     except OSError as exc:
         reason = exc.strerror or str(exc)
-        return _error("file-unreadable", f"cannot read file: {reason}", Location(name))
+        return _error("file-unreadable", f"cannot read file: {reason}", Location(name, 1, 1))
     if len(data) > MAX_FILE_BYTES:  # grew after stat
         return _too_large(name, len(data))
     return data
@@ -254,7 +256,7 @@ def _too_large(name: str, size: int) -> ParseResult:
     return _error(
         "file-too-large",
         f"file is {size} bytes, over the limit of {MAX_FILE_BYTES} bytes",
-        Location(name),
+        Location(name, 1, 1),
     )
 
 

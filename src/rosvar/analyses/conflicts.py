@@ -1,0 +1,102 @@
+"""Name clashes between launch files, found through an index by resolved name.
+
+Two declarations clash when they give a node (or a parameter) the same fully
+resolved name and can be present together. Instead of comparing every pair of
+files (quadratic), every declaration is put in a bucket keyed by its name; only
+declarations sharing a bucket are compared.
+"""
+
+from __future__ import annotations
+
+import os
+from collections import defaultdict
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+from rosvar.diagnostics import Location
+from rosvar.interpreter.model import LaunchModel, ParamDecl
+from rosvar.logic.choice import combine
+from rosvar.logic.conditions import BDD
+from rosvar.ros import names
+
+
+@dataclass(frozen=True)
+class Occurrence:
+    """A declaration in ``file`` naming ``name`` when ``condition`` (over ``file``'s args) holds."""
+
+    kind: str  # "node" or "param"
+    name: str
+    file: str
+    location: Location
+    condition: BDD
+
+
+@dataclass(frozen=True)
+class Clash:
+    """Two different declarations with one name; ``condition`` is when both are present."""
+
+    kind: str
+    name: str
+    first: Occurrence
+    second: Occurrence
+    condition: BDD
+
+    @property
+    def files(self) -> tuple[str, str]:
+        return (self.first.file, self.second.file)
+
+
+def _same_file(a: str, b: str) -> bool:
+    return a == b or os.path.realpath(a) == os.path.realpath(b)
+
+
+def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
+    """Nodes and params written in ``model.file`` itself (Algorithm 1's GETELEMENTS)."""
+    for node in model.nodes:
+        if node.is_test or not _same_file(node.location.file, model.file):
+            continue
+        full = combine([node.fields["namespace"], node.fields["name"]], _node_name)
+        for condition, name in full:
+            if name is not None:
+                yield Occurrence(
+                    "node", name, model.file, node.location, node.condition & condition
+                )
+    for param in model.params:
+        if not isinstance(param, ParamDecl) or not _same_file(param.location.file, model.file):
+            continue
+        for condition, param_name in param.name:
+            if isinstance(param_name, str):
+                yield Occurrence(
+                    "param", param_name, model.file, param.location, param.condition & condition
+                )
+
+
+def _node_name(parts: Sequence[object]) -> str | None:
+    namespace, name = parts
+    if isinstance(namespace, str) and isinstance(name, str):
+        return names.ns_join(namespace, name)
+    return None
+
+
+def index(models: Iterable[LaunchModel]) -> dict[tuple[str, str], list[Occurrence]]:
+    buckets: dict[tuple[str, str], list[Occurrence]] = defaultdict(list)
+    for model in models:
+        for occurrence in declared_occurrences(model):
+            buckets[(occurrence.kind, occurrence.name)].append(occurrence)
+    return buckets
+
+
+def clashes(buckets: dict[tuple[str, str], list[Occurrence]]) -> list[Clash]:
+    """Every pair of distinct declarations sharing a bucket and possibly present together."""
+    found: list[Clash] = []
+    for (kind, name), occurrences in buckets.items():
+        if len(occurrences) < 2:
+            continue
+        for i, first in enumerate(occurrences):
+            for second in occurrences[i + 1 :]:
+                if first.location == second.location:
+                    continue
+                both = first.condition & second.condition
+                if both != both.bdd.false:
+                    found.append(Clash(kind, name, first, second, both))
+    return found

@@ -1,0 +1,445 @@
+"""Feature model extraction (the paper's Algorithm 1) and the analyses its solver answers.
+
+Root → launch files → their args that affect the computation graph (AFFECTSCG)
+→ an xor-group of each arg's values (GETVALUES: the interpreter's input domains).
+Cross-tree constraints: an ``<include>`` *requires* the included file (under the
+include's condition); files whose declarations clash by name *exclude* each
+other (under the arg values where the clash happens). Everything is one BDD in
+the analysis' condition space, so counting, core/dead features and explanations
+are solver questions, not enumeration.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+
+import dd.cudd as _cudd
+
+from rosvar.analyses.conflicts import Clash, clashes, index
+from rosvar.diagnostics import Location
+from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.model import LaunchModel, ParamDecl
+from rosvar.logic.choice import Choice
+from rosvar.logic.conditions import BDD, ConditionSpace, FileAtom, PredicateAtom, SlotAtom
+from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
+from rosvar.logic.terms import Apply, Hole, Operand
+
+
+@dataclass
+class ValueFeature:
+    id: str
+    value: str
+    slot: Slot
+    default: bool
+    variable: BDD
+
+
+@dataclass
+class ArgFeature:
+    id: str
+    file: str
+    name: str
+    input: ArgInput
+    default: str | None
+    boolean: bool
+    location: Location | None
+    values: list[ValueFeature] = field(default_factory=list)
+
+
+@dataclass
+class FileFeature:
+    id: str
+    file: str
+    variable: BDD
+    args: list[ArgFeature] = field(default_factory=list)
+
+
+@dataclass
+class Constraint:
+    """A cross-tree constraint: ``formula`` must hold; ``text`` says why, for people."""
+
+    kind: str  # "requires", "excludes", "loads"
+    files: tuple[str, ...]
+    formula: BDD
+    condition: BDD  # when it bites (include condition, clash condition)
+    text: str
+    locations: tuple[Location, ...] = ()
+    unconditional: bool = False
+
+
+@dataclass
+class FeatureModel:
+    space: ConditionSpace
+    files: list[FileFeature]
+    constraints: list[Constraint]
+    clashes: list[Clash]
+    internal: list[Clash]
+    solver: Solver
+
+    def feature_ids(self) -> list[str]:
+        ids: list[str] = []
+        for file in self.files:
+            ids.append(file.id)
+            for arg in file.args:
+                ids.append(arg.id)
+                ids.extend(v.id for v in arg.values)
+        return ids
+
+
+def _term_inputs(value: Operand) -> set[ArgInput]:
+    if isinstance(value, Hole):
+        return {value.input} if isinstance(value.input, ArgInput) else set()
+    if isinstance(value, Apply):
+        found: set[ArgInput] = set()
+        for operand in value.operands:
+            if not isinstance(operand, str | tuple):
+                found |= _term_inputs(operand)
+        return found
+    return set()
+
+
+def graph_inputs(model: LaunchModel) -> set[ArgInput]:
+    """Args whose value changes a node, param or remap (AFFECTSCG), read off the BDD supports.
+
+    The interpreter already followed ``value=`` args, include arg passing and
+    ``pass_all_args``, so an arg affects the graph exactly when one of its atoms
+    is in the support of a presence condition or of a branch of an attribute.
+    """
+    space = model.space
+    conditions: list[BDD] = []
+    terms: set[ArgInput] = set()
+
+    def add_choice(choice: Choice[object]) -> None:
+        if len(choice) > 1:
+            conditions.extend(c for c, _ in choice)
+        for _c, leaf in choice:
+            if isinstance(leaf, Hole | Apply):
+                terms.update(_term_inputs(leaf))
+
+    for node in model.nodes:
+        conditions.append(node.condition)
+        for key in ("name", "namespace", "pkg", "type", "args", "machine"):
+            add_choice(node.fields[key])
+        for remap in node.remaps:
+            conditions.append(remap.condition)
+            for raw in (remap.source, remap.target):
+                if isinstance(raw, Hole | Apply):
+                    terms.update(_term_inputs(raw))
+    for param in model.params:
+        conditions.append(param.condition)
+        if isinstance(param, ParamDecl):
+            add_choice(param.name)
+            add_choice(param.value)
+    support: set[str] = set()
+    for condition in conditions:
+        support |= space.bdd.support(condition)
+    inputs = {
+        atom.input
+        for atom in (space.atom_of(name) for name in support)
+        if isinstance(atom, SlotAtom) and isinstance(atom.input, ArgInput)
+    }
+    predicate_inputs = {
+        i
+        for atom in (space.atom_of(name) for name in support)
+        if isinstance(atom, PredicateAtom)
+        for i in _term_inputs(atom.term)
+    }
+    return {i for i in inputs | terms | predicate_inputs if i.file == model.file}
+
+
+def _value_text(slot: Slot, default_text: str | None) -> str:
+    if slot is OTHER:
+        return "<other>"
+    if slot is UNSET:
+        return f"<default: {default_text}>" if default_text else "<unset>"
+    return str(slot)
+
+
+def extract(
+    analysis: Analysis,
+    files: Sequence[str] | None = None,
+    progress: Callable[[int, int, str], None] | None = None,
+) -> FeatureModel:
+    """Algorithm 1 over ``files`` (default: every launch file of the workspace)."""
+    space = analysis.space
+    chosen = list(files if files is not None else analysis.workspace.launch_files)
+    models: list[LaunchModel] = []
+    for number, file in enumerate(chosen):
+        if progress is not None:
+            progress(number, len(chosen), file)
+        models.append(analysis.model(file))
+    features: list[FileFeature] = []
+    by_file: dict[str, FileFeature] = {}
+    constraints: list[Constraint] = []
+    feature_inputs: set[ArgInput] = set()
+    for model in models:
+        label = analysis.label(model.file)
+        feature = FileFeature(label, model.file, space.file_atom(model.file, label))
+        affecting = graph_inputs(model)
+        declared = {a.name: a for a in model.args if a.input is not None}
+        for name, input_ in model.inputs.items():
+            if input_ not in affecting:
+                continue
+            decl = declared.get(name)
+            default = model.unset_defaults.get(name) or (decl.default if decl else None)
+            domain = model.domains[name]
+            arg = ArgFeature(
+                id=f"{label}:{name}",
+                file=model.file,
+                name=name,
+                input=input_,
+                default=default,
+                boolean={s for s in domain if isinstance(s, str)} <= {"true", "false"}
+                and any(isinstance(s, str) for s in domain),
+                location=decl.location if decl else None,
+            )
+            for slot in domain:
+                if slot is UNSET and (decl is None or decl.default is None):
+                    continue  # a required arg must be given
+                text = _value_text(slot, decl.default if decl else None)
+                arg.values.append(
+                    ValueFeature(
+                        id=f"{label}:{name}={text}",
+                        value=text,
+                        slot=slot,
+                        default=(slot == default) or slot is UNSET,
+                        variable=space.slot(input_, slot),
+                    )
+                )
+            feature.args.append(arg)
+            feature_inputs.add(input_)
+        features.append(feature)
+        by_file[os.path.realpath(model.file)] = feature
+    for model in models:
+        source = by_file[os.path.realpath(model.file)]
+        for include in model.includes:
+            if not include.resolved or include.location.file != model.file:
+                continue
+            for condition, target in include.file:
+                target_feature = by_file.get(os.path.realpath(str(target)))
+                if target_feature is None:
+                    continue
+                when = include.condition & condition
+                constraints.append(
+                    Constraint(
+                        "requires",
+                        (source.id, target_feature.id),
+                        ~(source.variable & when) | target_feature.variable,
+                        when,
+                        f"{source.id} includes {target_feature.id}",
+                        (include.location,),
+                        space.valid_implies(when),
+                    )
+                )
+    found = clashes(index(models))
+    internal = [c for c in found if c.first.file == c.second.file and c.kind == "node"]
+    between: dict[tuple[str, str], list[Clash]] = {}
+    for clash in found:
+        if clash.first.file != clash.second.file:
+            key = tuple(sorted(clash.files))
+            between.setdefault(key, []).append(clash)  # type: ignore[arg-type]
+    for (file_a, file_b), pair_clashes in sorted(between.items()):
+        a = by_file[os.path.realpath(file_a)]
+        b = by_file[os.path.realpath(file_b)]
+        condition = space.false
+        for clash in pair_clashes:
+            condition |= clash.condition
+        names = sorted({f"{c.kind} {c.name}" for c in pair_clashes})
+        constraints.append(
+            Constraint(
+                "excludes",
+                (a.id, b.id),
+                ~(a.variable & b.variable & condition),
+                condition,
+                f"{a.id} and {b.id} both declare {', '.join(names[:3])}"
+                + (f" (+{len(names) - 3} more)" if len(names) > 3 else ""),
+                tuple(loc for c in pair_clashes for loc in (c.first.location, c.second.location)),
+                space.valid_implies(condition),
+            )
+        )
+    solver = _formula(space, features, constraints)
+    return FeatureModel(space, features, constraints, found, internal, solver)
+
+
+def _name(variable: BDD) -> str:
+    return str(variable.var)
+
+
+def _order(
+    space: ConditionSpace, features: Sequence[FileFeature], constraints: Sequence[Constraint]
+) -> list[str]:
+    """Feature variables, file blocks ordered by Cuthill–McKee over the constraint graph.
+
+    A constraint between two files is cheap for a BDD only if their variables are
+    close in the order; clone-and-own systems have cliques of mutually exclusive
+    files, and an order that scatters them doubles the diagram's width for every
+    pending constraint. A bandwidth-reducing order keeps linked files together.
+    """
+    neighbours: dict[str, set[str]] = {f.id: set() for f in features}
+    for constraint in constraints:
+        a, b = constraint.files
+        if a != b:
+            neighbours[a].add(b)
+            neighbours[b].add(a)
+    by_id = {f.id: f for f in features}
+    visited: set[str] = set()
+    sequence: list[str] = []
+    for start in sorted(by_id, key=lambda f: (len(neighbours[f]), f)):
+        if start in visited:
+            continue
+        visited.add(start)
+        queue = [start]
+        while queue:
+            current = queue.pop(0)
+            sequence.append(current)
+            for nxt in sorted(neighbours[current] - visited, key=lambda f: (len(neighbours[f]), f)):
+                visited.add(nxt)
+                queue.append(nxt)
+    order: list[str] = []
+    for feature_id in sequence:
+        feature = by_id[feature_id]
+        order.append(_name(feature.variable))
+        for arg in feature.args:
+            order.extend(_name(v.variable) for v in arg.values)
+    _ = space
+    return order
+
+
+@dataclass
+class Solver:
+    """The feature model as BDDs in a manager of its own, ordered for it."""
+
+    manager: _cudd.BDD
+    variables: list[str]
+    tree: BDD  # the feature tree alone
+    constraints: list[BDD]  # the cross-tree constraints, as in FeatureModel.constraints
+    formula: BDD  # everything
+
+    def var(self, variable: BDD) -> BDD:
+        """The counterpart of an analysis-space feature variable."""
+        return self.manager.var(_name(variable))
+
+
+def _formula(
+    space: ConditionSpace,
+    features: Sequence[FileFeature],
+    constraints: Sequence[Constraint],
+) -> Solver:
+    """The whole feature model as one BDD over file and value variables only.
+
+    Atoms that are not features (predicates on typed-in values, environment
+    variables, other files' plumbing) are quantified out of each constraint:
+    an ``<other>`` value is taken as able to do anything a typed value could.
+    """
+    keep = _order(space, features, constraints)
+    kept = set(keep)
+    manager = _cudd.BDD()
+    manager.configure(reordering=False)
+    manager.declare(*keep)  # a fresh manager in the chosen order (reordering in place is slow)
+    result = manager.true
+    for feature in features:
+        present = manager.var(_name(feature.variable))
+        for arg in feature.args:
+            variables = [manager.var(_name(v.variable)) for v in arg.values]
+            none = manager.true
+            for variable in variables:
+                none &= ~variable
+            result &= (present & _exactly_one(manager, variables)) | (~present & none)
+    tree = result
+    copies: list[BDD] = []
+    for constraint in constraints:
+        formula = constraint.formula
+        others = {name for name in space.bdd.support(formula) if name not in kept}
+        if others:
+            formula = space.bdd.exist(others, formula)
+        copy = _cudd.copy_bdd(formula, manager)
+        copies.append(copy)
+        result &= copy
+    return Solver(manager, keep, tree, copies, result)
+
+
+def _exactly_one(manager: _cudd.BDD, variables: Sequence[BDD]) -> BDD:
+    result = manager.false
+    for i, chosen in enumerate(variables):
+        term = chosen
+        for j, other in enumerate(variables):
+            if i != j:
+                term &= ~other
+        result |= term
+    return result
+
+
+def count_configurations(model: FeatureModel) -> int:
+    """Valid configurations (model counting on the BDD; no enumeration)."""
+    solver = model.solver
+    return int(solver.manager.count(solver.formula, nvars=len(solver.variables)))
+
+
+@dataclass
+class Verdict:
+    feature: str
+    kind: str  # "core" or "dead"
+    because: list[str]
+
+
+def core_and_dead(model: FeatureModel) -> list[Verdict]:
+    """Features in every (core) or no (dead) valid configuration, with the constraints why."""
+    solver = model.solver
+    false = solver.manager.false
+    verdicts: list[Verdict] = []
+    candidates: list[tuple[str, BDD]] = []
+    for file in model.files:
+        candidates.append((file.id, solver.var(file.variable)))
+        for arg in file.args:
+            candidates.extend((v.id, solver.var(v.variable)) for v in arg.values)
+    for feature_id, variable in candidates:
+        if (solver.formula & variable) == false:
+            verdicts.append(Verdict(feature_id, "dead", _explain(model, variable)))
+        elif (solver.formula & ~variable) == false:
+            verdicts.append(Verdict(feature_id, "core", _explain(model, ~variable)))
+    return verdicts
+
+
+def _explain(model: FeatureModel, goal: BDD) -> list[str]:
+    """A minimal set of cross-tree constraints that rules ``goal`` out (deletion-based)."""
+    solver = model.solver
+    kept = list(range(len(model.constraints)))
+    position = 0
+    while position < len(kept):
+        trial = kept[:position] + kept[position + 1 :]
+        formula = solver.tree & goal
+        for number in trial:
+            formula &= solver.constraints[number]
+        if formula == solver.manager.false:
+            kept = trial
+        else:
+            position += 1
+    return [model.constraints[n].text for n in kept] or ["the feature tree itself"]
+
+
+def simplest_trigger(space: ConditionSpace, condition: BDD) -> dict[str, str]:
+    """An arg assignment making ``condition`` true with the fewest non-default choices."""
+    best: dict[str, str] | None = None
+    best_cost = 0
+    for cube_number, cube in enumerate(space.bdd.pick_iter(condition & space.valid)):
+        if cube_number > 256:
+            break
+        chosen: dict[str, str] = {}
+        cost = 0
+        for name, value in cube.items():
+            atom = space.atom_of(name)
+            if value and isinstance(atom, SlotAtom):
+                text = _value_text(atom.slot, None)
+                chosen[str(atom.input)] = text
+                cost += 0 if atom.slot is UNSET or atom.slot == _first(space, atom) else 1
+            elif value and isinstance(atom, FileAtom):
+                chosen[atom.label] = "selected"
+        if best is None or cost < best_cost:
+            best, best_cost = chosen, cost
+    return best or {}
+
+
+def _first(space: ConditionSpace, atom: SlotAtom) -> Slot:
+    return space.domain(atom.input)[0]

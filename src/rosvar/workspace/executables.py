@@ -1,0 +1,82 @@
+"""Executables a package provides: the values a node's ``type`` can take.
+
+roslaunch finds a node's executable among the files its package installs; with
+no build here, the candidates are read from what the sources declare: a
+``.executables`` list (as in the corpus), executable files and scripts in
+``scripts/``, ``nodes/``, ``bin/``, ``add_executable``/``catkin_install_python``
+in CMakeLists.txt, and ``console_scripts`` in setup.py/setup.cfg.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from functools import lru_cache
+
+from rosvar.workspace.packages import Package
+
+SCRIPT_FOLDERS = ("scripts", "nodes", "bin")
+_SKIP_SUFFIXES = (".png", ".jpg", ".dae", ".stl", ".STL", ".pgm", ".em", ".in")
+_ADD_EXECUTABLE = re.compile(r"add_executable\s*\(\s*([^\s)]+)", re.IGNORECASE)
+_INSTALL_PROGRAMS = re.compile(
+    r"(?:catkin_install_python|install)\s*\(\s*PROGRAMS\s+([^)]*)\)", re.IGNORECASE
+)
+_CONSOLE_SCRIPT = re.compile(r"^\s*['\"]?([\w.-]+)\s*=\s*[\w.]+:\w+", re.MULTILINE)
+
+
+def executables(package: Package) -> frozenset[str]:
+    """Every executable name ``package`` is known to provide."""
+    found = set(package.executables or ())
+    found |= _scan(package.path, package.name)
+    return frozenset(found)
+
+
+@lru_cache(maxsize=4096)
+def _scan(path: str, name: str) -> frozenset[str]:
+    found: set[str] = set()
+    for folder in SCRIPT_FOLDERS:
+        directory = os.path.join(path, folder)
+        if os.path.isdir(directory):
+            for entry in os.scandir(directory):
+                if entry.is_file() and (
+                    entry.name.endswith(".py") or os.access(entry.path, os.X_OK)
+                ):
+                    found.add(entry.name)
+    for root, dirs, files in os.walk(path):
+        dirs[:] = [d for d in dirs if not d.startswith(".")]
+        for file in files:
+            full = os.path.join(root, file)
+            if file.startswith(".") or file.endswith(_SKIP_SUFFIXES):
+                continue
+            if os.access(full, os.X_OK) and os.path.isfile(full):
+                found.add(file)
+    found |= _cmake(os.path.join(path, "CMakeLists.txt"), name)
+    for setup in ("setup.py", "setup.cfg"):
+        found |= _console_scripts(os.path.join(path, setup))
+    return frozenset(found)
+
+
+def _read(path: str) -> str:
+    try:
+        with open(path, encoding="utf-8", errors="replace") as handle:
+            return handle.read()
+    except OSError:
+        return ""
+
+
+def _cmake(path: str, project: str) -> set[str]:
+    text = _read(path).replace("${PROJECT_NAME}", project)
+    names = {m.group(1) for m in _ADD_EXECUTABLE.finditer(text)}
+    for match in _INSTALL_PROGRAMS.finditer(text):
+        for word in match.group(1).split():
+            if word.isupper():  # DESTINATION and other keywords
+                break
+            names.add(os.path.basename(word))
+    return {n for n in names if "$" not in n}
+
+
+def _console_scripts(path: str) -> set[str]:
+    text = _read(path)
+    if "console_scripts" not in text:
+        return set()
+    return {m.group(1) for m in _CONSOLE_SCRIPT.finditer(text.split("console_scripts", 1)[1])}

@@ -1,0 +1,162 @@
+"""``<include>``: conditions and namespaces flow into the included file; args are passed."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import pytest
+
+from rosvar.interpreter.model import LaunchModel, NodeDecl
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+SENSOR = """
+  <arg name="rate" default="10"/>
+  <arg name="debug" default="false"/>
+  <node pkg="pkg" type="sensor" name="sensor">
+    <param name="rate" value="$(arg rate)"/>
+  </node>
+  <node pkg="pkg" type="dbg" name="debugger" if="$(arg debug)"/>
+"""
+
+MAIN = """
+  <arg name="use_sensor" default="true"/>
+  <arg name="fast" default="false"/>
+  <include file="$(find pkg)/launch/sensor.launch" if="$(arg use_sensor)" ns="front">
+    <arg name="rate" value="50" if="$(arg fast)"/>
+    <arg name="debug" value="$(arg fast)"/>
+  </include>
+"""
+
+
+def nodes_by_name(model: LaunchModel) -> dict[str, NodeDecl]:
+    return {str(n.fields["name"].single()): n for n in model.nodes}
+
+
+def test_include_condition_is_conjoined_into_included_nodes(ws: LaunchWorkspace) -> None:
+    ws.launch("sensor.launch", SENSOR)
+    main = ws.launch("main.launch", MAIN)
+    model = ws.model(main)
+    space = model.space
+    nodes = nodes_by_name(model)
+    sensor, debugger = nodes["sensor"], nodes["debugger"]
+    assert space.describe(sensor.condition) == "use_sensor"
+    assert space.describe(debugger.condition) == "fast ∧ use_sensor"
+    included = str(ws.root / "pkg" / "launch" / "sensor.launch")
+    assert sensor.filename == included  # as roslaunch's Node
+    assert sensor.location.file == included
+    assert model.files == [main, included]
+    [include] = model.includes
+    assert include.resolved and space.describe(include.condition) == "use_sensor"
+
+
+def test_include_args_and_namespace(ws: LaunchWorkspace) -> None:
+    ws.launch("sensor.launch", SENSOR)
+    main = ws.launch("main.launch", MAIN)
+    slow = ws.resolve(main, {})
+    assert slow.ok, slow.to_json()
+    assert [n["name"] for n in slow.nodes] == ["/front/sensor"]
+    assert slow.params == {"/front/sensor/rate": 10}
+    fast = ws.resolve(main, {"fast": "true"})
+    assert sorted(n["name"] for n in fast.nodes) == ["/front/debugger", "/front/sensor"]
+    assert fast.params == {"/front/sensor/rate": 50}
+    off = ws.resolve(main, {"use_sensor": "false", "fast": "true"})
+    assert off.ok and off.nodes == [] and off.params == {}
+
+
+@pytest.mark.oracle
+def test_include_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
+    ws.launch("sensor.launch", SENSOR)
+    main = ws.launch("main.launch", MAIN)
+    ws.assert_agrees(
+        main,
+        [{}, {"fast": "true"}, {"use_sensor": "false"}, {"fast": "1"}, {"rate": "99"}],
+    )
+
+
+SELECT = """
+  <arg name="robot" default="husky"/>
+  <include file="$(find pkg)/launch/robots/$(arg robot).launch"/>
+"""
+
+
+def test_included_file_chosen_by_an_arg(ws: LaunchWorkspace) -> None:
+    ws.launch("robots/husky.launch", '<node pkg="pkg" type="t" name="husky_base"/>')
+    ws.launch("robots/jackal.launch", '<node pkg="pkg" type="t" name="jackal_base"/>')
+    main = ws.launch("select.launch", SELECT)
+    fresh = ws.analysis(extra_values={"robot": ["jackal"]})
+    model = fresh.model(main)
+    space = model.space
+    nodes = nodes_by_name(model)
+    assert space.describe(nodes["husky_base"].condition) == "robot=husky"
+    assert space.describe(nodes["jackal_base"].condition) == "robot=jackal"
+    assert [n["name"] for n in ws.resolve(main, {"robot": "jackal"}).nodes] == ["/jackal_base"]
+    missing = ws.resolve(main, {"robot": "nope"})
+    assert not missing.ok
+
+
+@pytest.mark.oracle
+def test_included_file_chosen_by_an_arg_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
+    ws.launch("robots/husky.launch", '<node pkg="pkg" type="t" name="husky_base"/>')
+    ws.launch("robots/jackal.launch", '<node pkg="pkg" type="t" name="jackal_base"/>')
+    main = ws.launch("select.launch", SELECT)
+    ws.assert_agrees(main, [{}, {"robot": "jackal"}, {"robot": "nope"}])
+
+
+PASS_ALL = """
+  <arg name="rate" default="7"/>
+  <arg name="debug" default="true"/>
+  <include file="$(find pkg)/launch/sensor.launch" pass_all_args="true"/>
+"""
+
+UNUSED = """
+  <include file="$(find pkg)/launch/sensor.launch">
+    <arg name="speed" value="1"/>
+  </include>
+"""
+
+
+def test_pass_all_args_and_unused_args(ws: LaunchWorkspace) -> None:
+    ws.launch("sensor.launch", SENSOR)
+    passing = ws.launch("pass.launch", PASS_ALL)
+    resolution = ws.resolve(passing, {"rate": "3"})
+    assert resolution.ok and resolution.params == {"/sensor/rate": 3}
+    assert sorted(n["name"] for n in resolution.nodes) == ["/debugger", "/sensor"]
+    unused = ws.launch("unused.launch", UNUSED)
+    model = ws.model(unused)
+    assert [e.code for e in model.errors] == ["include-arg-unused"]
+    assert not ws.resolve(unused).ok
+
+
+@pytest.mark.oracle
+def test_pass_all_args_and_unused_args_agree_with_roslaunch(ws: LaunchWorkspace) -> None:
+    ws.launch("sensor.launch", SENSOR)
+    ws.assert_agrees(ws.launch("pass.launch", PASS_ALL), [{}, {"rate": "3", "debug": "false"}])
+    ws.assert_agrees(ws.launch("unused.launch", UNUSED), [{}])
+
+
+TWICE = """
+  <arg name="second_ns" default=""/>
+  <include file="$(find pkg)/launch/sensor.launch"/>
+  <include file="$(find pkg)/launch/sensor.launch" ns="$(arg second_ns)"
+           if="$(eval second_ns != '')"/>
+"""
+
+
+def test_including_twice_conflicts_only_in_the_same_namespace(ws: LaunchWorkspace) -> None:
+    ws.launch("sensor.launch", SENSOR)
+    main = ws.launch("twice.launch", TWICE)
+    assert ws.resolve(main, {}).ok
+    renamed = ws.resolve(main, {"second_ns": "rear"})
+    assert renamed.ok
+    assert sorted(n["name"] for n in renamed.nodes) == ["/rear/sensor", "/sensor"]
+    clash = ws.resolve(main, {"second_ns": "/"})
+    assert [c.name for c in clash.conflicts] == ["/sensor"]
+
+
+@pytest.mark.oracle
+def test_including_twice_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
+    ws.launch("sensor.launch", SENSOR)
+    main = ws.launch("twice.launch", TWICE)
+    ws.assert_agrees(main, [{}, {"second_ns": "rear"}, {"second_ns": "/"}])

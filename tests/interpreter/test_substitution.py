@@ -1,0 +1,127 @@
+"""Substitution args over all configurations: ``$(arg)``, ``$(find)``, ``$(eval)`` and friends."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import pytest
+
+from rosvar.interpreter.model import DeferredValue, ParamDecl
+from rosvar.logic.terms import is_term
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+SUBST = """
+  <arg name="robot" default="husky"/>
+  <arg name="count" default="2"/>
+  <param name="twice" value="$(arg robot)-$(arg robot)"/>
+  <param name="path" value="$(find pkg)/config/$(arg robot).yaml"/>
+  <param name="dir" value="$(dirname)"/>
+  <param name="sum" value="$(eval int(count) + 1)"/>
+  <param name="is_jackal" value="$(eval robot == 'jackal')"/>
+  <param name="joined" value="$(eval arg('robot') + '_' + str(count))"/>
+  <param name="opt" value="$(optenv ROBOT_COLOUR grey with spaces)"/>
+  <param name="anon_a" value="$(anon x)"/>
+  <param name="anon_b" value="$(anon x)"/>
+"""
+
+
+def test_substitutions_per_configuration(ws: LaunchWorkspace) -> None:
+    file = ws.launch("subst.launch", SUBST)
+    package = ws.root / "pkg"
+    params = ws.resolve(file, {"robot": "jackal", "count": "4"}).params
+    assert params == {
+        "/twice": "jackal-jackal",
+        "/path": f"{package}/config/jackal.yaml",
+        "/dir": str(package / "launch"),
+        "/sum": 5,
+        "/is_jackal": True,
+        "/joined": "jackal_4",
+        "/opt": "grey with spaces",
+        "/anon_a": params["/anon_a"],
+        "/anon_b": params["/anon_a"],  # one anon name per id in a context
+    }
+    assert params["/anon_a"].startswith("x_")
+    assert ws.resolve(file, {}, {"ROBOT_COLOUR": "red"}).params["/opt"] == "red"
+
+
+def test_eval_literals_become_known_values(ws: LaunchWorkspace) -> None:
+    file = ws.launch("subst.launch", SUBST)
+    model = ws.model(file)
+    assert "jackal" in model.domains["robot"]  # compared with in an $(eval)
+    params = {str(p.name.single()): p for p in model.params if isinstance(p, ParamDecl)}
+    is_jackal = params["/is_jackal"].value
+    assert model.space.describe(is_jackal.where(lambda v: v is True)) == "robot=jackal"
+    # a value analysis did not foresee stays a term until a configuration gives it
+    twice = params["/twice"].value.values()
+    assert {"husky-husky", "jackal-jackal"} <= set(v for v in twice if isinstance(v, str))
+    deferred = [v for v in twice if isinstance(v, DeferredValue)]
+    assert len(deferred) == 1 and is_term(deferred[0].raw)
+
+
+@pytest.mark.oracle
+def test_substitutions_agree_with_roslaunch(ws: LaunchWorkspace) -> None:
+    file = ws.launch("subst.launch", SUBST)
+    ws.assert_agrees(
+        file,
+        [
+            {},
+            {"robot": "jackal", "count": "4"},
+            {"count": "x"},
+            ({"robot": "a b"}, {"ROBOT_COLOUR": "red"}),
+            ({}, {"ROBOT_COLOUR": ""}),
+        ],
+    )
+
+
+ERRORS = {
+    "unknown_command.launch": '<param name="p" value="$(bogus x)"/>',
+    "dollar_inside.launch": '<param name="p" value="$(arg $(arg a))"/>',
+    "eval_not_whole.launch": '<param name="p" value="x $(eval 1 + 1)"/>',
+    "arg_arity.launch": '<param name="p" value="$(arg a b)"/>',
+    "undefined.launch": '<param name="p" value="$(arg nowhere)"/>',
+    "env_unset.launch": '<param name="p" value="$(env ROSVAR_SURELY_UNSET_VARIABLE)"/>',
+    "eval_error.launch": '<param name="p" value="$(eval 1 / 0)"/>',
+    "find_arity.launch": '<param name="p" value="$(find)"/>',
+}
+
+
+def test_substitution_errors_are_error_events(ws: LaunchWorkspace) -> None:
+    for name, body in ERRORS.items():
+        model = ws.model(ws.launch(name, "  " + body))
+        assert model.errors, name
+        for error in model.errors:
+            assert error.code and error.message
+            assert (error.location.line, error.location.col) == (2, 3), name
+        assert not ws.resolve(model.file).ok, name
+
+
+@pytest.mark.oracle
+def test_substitution_errors_agree_with_roslaunch(ws: LaunchWorkspace) -> None:
+    for name, body in ERRORS.items():
+        file = ws.launch(name, body)
+        [result] = ws.assert_agrees(file, [{}])
+        assert not result["ok"], name
+
+
+def test_unknown_package_stays_symbolic(ws: LaunchWorkspace) -> None:
+    file = ws.launch("unknown_pkg.launch", '  <param name="p" value="$(find not_a_pkg)/x"/>')
+    model = ws.model(file)
+    codes = [d.code for d in model.diagnostics]
+    assert codes == ["package-unknown"]
+    assert str(model.diagnostics[0].location) == f"{file}:2:3"
+    assert model.errors == []  # not an error of the launch file itself
+    resolution = ws.resolve(file)
+    assert not resolution.ok and resolution.errors[0].code == "value-unknown"
+
+
+def test_find_resolves_through_the_workspace(ws: LaunchWorkspace, tmp_path: Path) -> None:
+    ws.package("other_pkg")
+    file = ws.launch(
+        "find.launch",
+        '  <param name="p" value="$(find other_pkg)/cfg $(find other_pkg)"/>',
+    )
+    other = ws.root / "other_pkg"
+    assert ws.resolve(file).params == {"/p": f"{other}/cfg {other}"}

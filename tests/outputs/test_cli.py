@@ -1,0 +1,208 @@
+"""The command line: ``rosvar analyze`` and ``rosvar resolve``, their output and exit codes.
+
+Exit codes (``rosvar.outputs.cli``): 0 success, 1 the configuration fails (errors or conflicts),
+2 usage error, 3 nothing to analyse / a ``--launch`` file missing.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import pytest
+
+from rosvar.outputs.cli import EXIT_FAILS, EXIT_INPUT, EXIT_OK, EXIT_USAGE, main
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+SCHEMAS = Path(__file__).resolve().parents[2] / "docs" / "schema"
+
+GOOD = """<launch>
+  <arg name="use_teleop" default="true"/>
+  <arg name="two" default="false"/>
+  <node pkg="pkg" type="teleop_node" name="teleop" if="$(arg use_teleop)"/>
+  <node pkg="pkg" type="teleop_node" name="teleop" if="$(arg two)"/>
+  <node pkg="pkg" type="planner_node" name="planner" unless="$(arg use_teleop)"/>
+  <param name="home" value="$(optenv ROBOT_HOME /nowhere)"/>
+</launch>
+"""
+BAD = {
+    "malformed.launch": '<launch>\n  <node pkg="p" type="t" name="a"\n</launch>\n',
+    "tag.launch": "<launch>\n  <bogus/>\n</launch>\n",
+    "dtd.launch": '<?xml version="1.0"?>\n<!DOCTYPE launch [<!ENTITY a "b">]>\n<launch/>\n',
+    "latin1.launch": b'<launch>\n  <param name="p" value="caf\xe9"/>\n</launch>\n',
+}
+
+
+def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def schema_check(document: object, name: str) -> None:
+    jsonschema = pytest.importorskip("jsonschema")
+    path = SCHEMAS / name
+    if not path.is_file():
+        pytest.skip(f"no schema {path}")
+    jsonschema.validate(document, json.loads(path.read_text()))
+
+
+@pytest.fixture
+def workspace(ws: LaunchWorkspace) -> LaunchWorkspace:
+    ws.write("launch/good.launch", GOOD)
+    for name, content in BAD.items():
+        ws.write(f"launch/{name}", content)
+    return ws
+
+
+# -- analyze ------------------------------------------------------------------------------------
+def test_analyze_survives_bad_files_and_prints_positions(
+    workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, out, _err = run(capsys, "analyze", str(workspace.root))
+    assert code == EXIT_OK
+    launch = workspace.root / "pkg" / "launch"
+    assert f"{launch / 'malformed.launch'}:3:1: error: " in out
+    assert "[xml-malformed]" in out
+    assert f"{launch / 'tag.launch'}:2:3: warning: unrecognized tag <bogus> [tag-unknown]" in out
+    assert f"{launch / 'dtd.launch'}:2:1: error: " in out and "[xml-dtd-forbidden]" in out
+    assert f"{launch / 'latin1.launch'}:2:29: error: " in out and "[xml-encoding]" in out
+    assert "5 launch files, 1 packages" in out
+    rows = {line.split()[0]: line.split()[1:] for line in out.splitlines() if "good.launch" in line}
+    [(_name, counts)] = rows.items()
+    # args, nodes, params, errors: a non-boolean value fails each of the 3 if/unless tests
+    assert counts == ["2", "3", "1", "3"]
+
+
+def test_analyze_json(workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _err = run(capsys, "analyze", "--json", str(workspace.root))
+    assert code == EXIT_OK
+    document = json.loads(out)
+    files = {Path(f["file"]).name: f for f in document["files"]}
+    assert set(files) == {"good.launch", *BAD}
+    good = files["good.launch"]
+    conditions = {(n["name"], n["condition"]) for n in good["nodes"]}
+    assert ("planner", "use_teleop≠true") in conditions or ("planner", "¬use_teleop") in conditions
+    assert ("teleop", "use_teleop") in conditions and ("teleop", "two") in conditions
+    [diagnostic] = files["malformed.launch"]["diagnostics"]
+    assert diagnostic["code"] == "xml-malformed" and diagnostic["severity"] == "error"
+    assert (diagnostic["line"], diagnostic["col"]) == (3, 1)
+    assert files["malformed.launch"]["loads"] == "false"
+    schema_check(document, "analyze.schema.json")
+
+
+def test_analyze_without_launch_files(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "empty").mkdir()
+    code, _out, err = run(capsys, "analyze", str(tmp_path / "empty"))
+    assert code == EXIT_INPUT and "no launch files" in err
+    code, _out, err = run(capsys, "analyze", str(tmp_path / "missing"))
+    assert code == EXIT_INPUT and "no such file or directory" in err
+
+
+# -- resolve ------------------------------------------------------------------------------------
+def good_file(workspace: LaunchWorkspace) -> str:
+    return str(workspace.root / "pkg" / "launch" / "good.launch")
+
+
+def test_resolve_ok(workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]) -> None:
+    file = good_file(workspace)
+    code, out, _err = run(capsys, "resolve", str(workspace.root), "--launch", file)
+    assert code == EXIT_OK
+    assert out.splitlines() == ["node  /teleop  (pkg/teleop_node)", "param /home = '/nowhere'"]
+    code, out, _err = run(
+        capsys,
+        "resolve",
+        str(workspace.root),
+        "use_teleop:=false",
+        "_private:=ignored",
+        "--launch",
+        file,
+        "--env",
+        "ROBOT_HOME=/home/robot",
+    )
+    assert code == EXIT_OK
+    assert out.splitlines() == ["node  /planner  (pkg/planner_node)", "param /home = '/home/robot'"]
+
+
+def test_resolve_conflict_and_error_exit_1(
+    workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    file = good_file(workspace)
+    code, out, _err = run(capsys, "resolve", str(workspace.root), "two:=true", "--launch", file)
+    assert code == EXIT_FAILS
+    assert f"conflict: node-name /teleop at {file}:4:3, {file}:5:3" in out
+    code, out, _err = run(
+        capsys, "resolve", str(workspace.root), "use_teleop:=maybe", "--launch", file
+    )
+    assert code == EXIT_FAILS
+    assert out.startswith(f"error: {file}:4:3: ") and "not a 'bool' type" in out
+    bad = str(workspace.root / "pkg" / "launch" / "malformed.launch")
+    code, out, _err = run(capsys, "resolve", str(workspace.root), "--launch", bad)
+    assert code == EXIT_FAILS and "malformed XML" in out
+
+
+def test_resolve_json(workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]) -> None:
+    file = good_file(workspace)
+    for extra, ok in (([], True), (["two:=true"], False), (["use_teleop:=maybe"], False)):
+        code, out, _err = run(
+            capsys, "resolve", str(workspace.root), *extra, "--launch", file, "--json"
+        )
+        document = json.loads(out)
+        assert set(document) == {"ok", "nodes", "tests", "params", "conflicts", "errors"}
+        assert document["ok"] is ok and code == (EXIT_OK if ok else EXIT_FAILS)
+        schema_check(document, "resolve.schema.json")
+    assert document["errors"][0]["code"] == "bool-invalid"
+    assert (document["errors"][0]["line"], document["errors"][0]["col"]) == (4, 3)
+
+
+def test_resolve_input_and_usage_errors(
+    workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    root = str(workspace.root)
+    code, _out, err = run(capsys, "resolve", root, "--launch", str(workspace.root / "no.launch"))
+    assert code == EXIT_INPUT and "launch file not found" in err
+    for bad_env in ("NOEQUALS", "=value"):
+        code, _out, err = run(
+            capsys, "resolve", root, "--launch", good_file(workspace), "--env", bad_env
+        )
+        assert code == EXIT_USAGE and "--env expects NAME=VALUE" in err
+    with pytest.raises(SystemExit) as exit_info:
+        main(["resolve", root])  # --launch is required
+    assert exit_info.value.code == EXIT_USAGE
+    with pytest.raises(SystemExit) as exit_info:
+        main([])
+    assert exit_info.value.code == EXIT_USAGE
+
+
+def test_resolve_args_after_options(
+    workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, out, _err = run(
+        capsys,
+        "resolve",
+        str(workspace.root),
+        "--launch",
+        good_file(workspace),
+        "use_teleop:=false",
+    )
+    assert code == EXIT_OK and "/planner" in out
+
+
+def test_real_process_exit_codes(workspace: LaunchWorkspace) -> None:
+    file = good_file(workspace)
+    base = [sys.executable, "-m", "rosvar", "resolve", str(workspace.root)]
+    ok = subprocess.run([*base, "--launch", file], capture_output=True, text=True, check=False)
+    assert ok.returncode == EXIT_OK, ok.stderr
+    clash = subprocess.run(
+        [*base, "two:=true", "--launch", file, "--json"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert clash.returncode == EXIT_FAILS
+    assert json.loads(clash.stdout)["conflicts"][0]["name"] == "/teleop"
