@@ -71,12 +71,6 @@ UNKNOWN = """
 """
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="a node naming an undeclared machine loads: neither the interpreter nor "
-    "resolve.py checks node machines against the declared <machine>s (roslaunch: "
-    "'unknown machine [NAME]')",
-)
 def test_unknown_machine_is_an_error(ws: LaunchWorkspace) -> None:
     file = ws.launch("unknown.launch", UNKNOWN)
     assert ws.resolve(file, {}).ok

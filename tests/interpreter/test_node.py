@@ -66,12 +66,6 @@ def test_fig1_restrictions(ws: LaunchWorkspace) -> None:
     assert not failed.ok and failed.errors[0].code == "bool-invalid"
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="describe shows the unless-branch of Fig. 1 as 'use_teleop≠true' rather than "
-    "'¬use_teleop': known_only renders cubes of the restricted BDD whose slot sets still "
-    "contain <other>",
-)
 def test_fig1_unless_branch_reads_as_negation(ws: LaunchWorkspace) -> None:
     model = ws.model(ws.launch("fig1.launch", FIG1))
     assert model.space.describe(condition_of(model, "planner")) == "¬use_teleop"

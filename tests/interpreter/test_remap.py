@@ -71,12 +71,6 @@ def test_remaps_agree_with_roslaunch(ws: LaunchWorkspace) -> None:
     ws.assert_agrees(file, [{}, {"sim": "true"}, {"sim": "1"}, {"scan": "/base_scan"}])
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="remap targets only known per configuration are never validated: "
-    "tags/remap.py _canonical_pair checks empty/illegal names for str values only, and "
-    "resolve.py _node evaluates remap terms without those checks",
-)
 def test_illegal_remap_from_other_value_fails(ws: LaunchWorkspace) -> None:
     file = ws.launch("remaps.launch", REMAPS)
     assert not ws.resolve_fresh(file, {"scan": "1bad"}).ok  # a known slot: checked
@@ -86,7 +80,6 @@ def test_illegal_remap_from_other_value_fails(ws: LaunchWorkspace) -> None:
 
 
 @pytest.mark.oracle
-@pytest.mark.xfail(strict=True, reason="remap terms are not validated (see above)")
 def test_illegal_remap_from_other_value_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
     ws.assert_agrees(ws.launch("remaps.launch", REMAPS), [{"scan": "1bad"}], modes=["shared"])
 

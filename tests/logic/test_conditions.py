@@ -348,12 +348,6 @@ def test_describe_keeps_every_needed_cube() -> None:
     assert (parse(space, text) & witness & space.valid) != space.false, text
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="ConditionSpace.describe's docstring promises that with known_only 'a suffix says "
-    "when other values matter', but none is produced: world=empty (domain {empty, <other>}) "
-    "reads exactly like 'true'",
-)
 def test_describe_says_when_other_values_matter() -> None:
     space = make_space()
     only_known = space.slot(WORLD, "empty")

@@ -148,13 +148,29 @@ def resolve(
     result = Resolution()
     args = {k: v for k, v in (args or {}).items() if names.settable(k)}
     seen_nodes: dict[str, Location] = {}
+    machines: set[str] = set()
     for file in files:
         model = analysis.model(file)
         restriction = _Restriction(analysis, model, args, env or {})
         try:
             _restrict(restriction, model, result, seen_nodes)
+            machines |= {
+                str(restriction.pick(m.name, m.location, "machine name"))
+                for m in model.machines
+                if restriction.holds(m.condition)
+            }
         except ResolutionError as error:
             result.errors.append(error)
+            return result
+    for node in result.nodes:  # roslaunch's assign_machines(), after every file is loaded
+        machine = node.get("machine")
+        if machine and machine not in machines:
+            location = Location(
+                str(node["filename"]), int(str(node["line"])), int(str(node["col"]))
+            )
+            result.errors.append(
+                ResolutionError("machine-unknown", f"ERROR: unknown machine [{machine}]", location)
+            )
             break
     return result
 
@@ -225,6 +241,15 @@ def _node(r: _Restriction, node: object) -> dict[str, object]:
         if r.holds(remap.condition):
             source = r.raw(Choice.const(r.space, remap.source), location, "remap from")
             target = r.raw(Choice.const(r.space, remap.target), location, "remap to")
+            for label, text in (("from", source), ("to", target)):
+                if not text:
+                    raise ResolutionError(
+                        "remap-invalid", "remap from/to attributes cannot be empty", location
+                    )
+                if not names.is_legal_name(str(text)):
+                    raise ResolutionError(
+                        "remap-invalid", f"remap {label} [{text}] is not a valid ROS name", location
+                    )
             remaps.pop(str(source), None)
             remaps[str(source)] = str(target)
     env = [

@@ -15,7 +15,7 @@ from typing import Any, cast
 
 import dd.cudd as _cudd
 
-from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Input, Slot
+from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Input, Slot
 from rosvar.logic.terms import Term
 from rosvar.logic.terms import evaluate as evaluate_term
 
@@ -208,10 +208,12 @@ class ConditionSpace:
 
         With ``known_only`` (the default) arg inputs are assumed to hold one of the
         values analysis knows, which hides the rarely useful ``<other>`` refinements;
-        a suffix says when other values matter.
+        a condition that this view would show as ``true`` but that fails for some
+        other value is shown in full.
         """
         if condition == self.false or not self.satisfiable(condition):
             return "false"
+        domains = self._domains
         if known_only:
             others = {
                 name: False
@@ -224,22 +226,32 @@ class ConditionSpace:
             care = self.bdd.let(others, self.valid) if others else self.valid
             if (known & care) == self.false:
                 return "only for other values"
+            if (care & ~known) == self.false and not self.valid_implies(condition):
+                return self.describe(condition, qualify, known_only=False)
+            domains = {
+                input_: tuple(s for s in slots if s is not OTHER or isinstance(input_, EnvInput))
+                for input_, slots in self._domains.items()
+            }
         else:
             known, care = condition, self.valid
         simplified = _cudd.restrict(known, care)
         if simplified == self.true or (care & ~known) == self.false:
             return "true"
-        cubes = self._prime_cubes(simplified, known, care)
-        rendered = [self._render_cube(cube, qualify) for cube in cubes]
+        cubes = self._prime_cubes(simplified, known, care, domains)
+        rendered = [self._render_cube(cube, qualify, domains) for cube in cubes]
         if len(rendered) == 1:
             return rendered[0]
         return " ∨ ".join(f"({r})" if "∧" in r else r for r in sorted(rendered))
 
     def _prime_cubes(
-        self, simplified: BDD, target: BDD, care: BDD
+        self,
+        simplified: BDD,
+        target: BDD,
+        care: BDD,
+        domains: Mapping[Input, tuple[Slot, ...]],
     ) -> list[dict[object, frozenset[Slot] | bool]]:
         """Cubes of ``simplified``, each widened while it stays inside ``target`` (mod care)."""
-        cubes = _merge_cubes(self._grouped_cubes(simplified), self._domains)
+        cubes = _merge_cubes(self._grouped_cubes(simplified, domains), domains)
         widened: list[dict[object, frozenset[Slot] | bool]] = []
         outside = care & ~target
         for cube in cubes:
@@ -285,7 +297,9 @@ class ConditionSpace:
             for path in self._paths(self.bdd.let({var: value}, u)):
                 yield {var: value, **path}
 
-    def _grouped_cubes(self, u: BDD) -> list[dict[object, frozenset[Slot] | bool]]:
+    def _grouped_cubes(
+        self, u: BDD, domains: Mapping[Input, tuple[Slot, ...]]
+    ) -> list[dict[object, frozenset[Slot] | bool]]:
         cubes: list[dict[object, frozenset[Slot] | bool]] = []
         for path in self._paths(u):
             cube: dict[object, frozenset[Slot] | bool] = {}
@@ -300,11 +314,16 @@ class ConditionSpace:
                     negated.setdefault(atom.input, set()).add(atom.slot)
             for input_, slots in negated.items():
                 if input_ not in cube:
-                    cube[input_] = frozenset(s for s in self._domains[input_] if s not in slots)
+                    cube[input_] = frozenset(s for s in domains[input_] if s not in slots)
             cubes.append(cube)
         return cubes
 
-    def _render_cube(self, cube: Mapping[object, frozenset[Slot] | bool], qualify: bool) -> str:
+    def _render_cube(
+        self,
+        cube: Mapping[object, frozenset[Slot] | bool],
+        qualify: bool,
+        domains: Mapping[Input, tuple[Slot, ...]],
+    ) -> str:
         parts = []
         for key, value in sorted(cube.items(), key=lambda kv: _sort_key(kv[0])):
             if isinstance(key, FileAtom):
@@ -316,7 +335,7 @@ class ConditionSpace:
             else:
                 assert isinstance(value, frozenset)
                 input_ = cast(Input, key)
-                parts.append(_render_slots(input_, value, self._domains[input_], qualify))
+                parts.append(_render_slots(input_, value, domains[input_], qualify))
         return " ∧ ".join(parts)
 
     def atoms(self) -> Iterable[Atom]:
