@@ -13,8 +13,6 @@ import math
 import random
 import re
 
-import pytest
-
 from rosvar.logic.conditions import BDD, ConditionSpace, register_predicate
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Input, Slot
 from rosvar.logic.terms import Apply, Hole
