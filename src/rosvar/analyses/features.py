@@ -338,26 +338,39 @@ def _formula(
     manager = _cudd.BDD()
     manager.configure(reordering=False)
     manager.declare(*keep)  # a fresh manager in the chosen order (reordering in place is slow)
-    result = manager.true
+    parts: list[BDD] = []
     for feature in features:
         present = manager.var(_name(feature.variable))
+        part = manager.true
         for arg in feature.args:
             variables = [manager.var(_name(v.variable)) for v in arg.values]
             none = manager.true
             for variable in variables:
                 none &= ~variable
-            result &= (present & _exactly_one(manager, variables)) | (~present & none)
-    tree = result
+            part &= (present & _exactly_one(manager, variables)) | (~present & none)
+        parts.append(part)
     copies: list[BDD] = []
     for constraint in constraints:
         formula = constraint.formula
         others = {name for name in space.bdd.support(formula) if name not in kept}
         if others:
             formula = space.bdd.exist(others, formula)
-        copy = _cudd.copy_bdd(formula, manager)
-        copies.append(copy)
-        result &= copy
-    return Solver(manager, keep, tree, copies, result)
+        copies.append(_cudd.copy_bdd(formula, manager))
+    tree = _conjoin(manager, parts, keep)
+    return Solver(manager, keep, tree, copies, _conjoin(manager, parts + copies, keep))
+
+
+def _conjoin(manager: _cudd.BDD, parts: Sequence[BDD], order: Sequence[str]) -> BDD:
+    """Conjunction scheduled bottom-up (deepest variables first) to keep it narrow."""
+    level = {name: index for index, name in enumerate(order)}
+
+    def deepest(part: BDD) -> int:
+        return max((level[name] for name in manager.support(part)), default=-1)
+
+    result = manager.true
+    for part in sorted(parts, key=deepest, reverse=True):
+        result &= part
+    return result
 
 
 def _exactly_one(manager: _cudd.BDD, variables: Sequence[BDD]) -> BDD:

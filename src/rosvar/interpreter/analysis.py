@@ -26,10 +26,11 @@ class Analysis:
         workspace: Workspace,
         extra_values: Mapping[str, Sequence[str]] | None = None,
         env_values: Mapping[str, Sequence[str]] | None = None,
+        extra_executables: Mapping[str, Sequence[str]] | None = None,
     ) -> None:
         self.workspace = workspace
         self.space = ConditionSpace()
-        self.domains = DomainTable(workspace, extra_values, env_values)
+        self.domains = DomainTable(workspace, extra_values, env_values, extra_executables)
         self._models: dict[str, LaunchModel] = {}
 
     def model(self, file: str) -> LaunchModel:
