@@ -48,12 +48,6 @@ def test_inline_yaml_is_unrolled(ws: LaunchWorkspace) -> None:
     assert ws.resolve(file, {}).params["/list"] == [1, 2, 3]
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="tags/rosparam.py _load_one drops a <rosparam> whose ns/file/param is only known "
-    "per configuration (a term) with just a 'rosparam-unknown' warning, so restricting the "
-    "model to such a configuration silently loses its parameters",
-)
 def test_inline_yaml_with_other_namespace(ws: LaunchWorkspace) -> None:
     file = ws.launch("inline.launch", INLINE)
     resolution = ws.resolve(file, {"gain": "0.5", "controller": "pd"})
@@ -69,7 +63,6 @@ def test_inline_yaml_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
 
 
 @pytest.mark.oracle
-@pytest.mark.xfail(strict=True, reason="rosparam with a term ns is dropped (see above)")
 def test_inline_yaml_shared_model_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
     ws.assert_agrees(ws.launch("inline.launch", INLINE), INLINE_CONFIGS, modes=["shared"])
 
@@ -103,11 +96,6 @@ def test_yaml_file_chosen_by_arg(ws: LaunchWorkspace) -> None:
     assert not ws.resolve_fresh(file, {"config": "absent"}).ok
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="tags/rosparam.py _load_one drops <rosparam file=...> when the path is a term: "
-    "the shared model gives {} for config:=fast and loads config:=absent without error",
-)
 def test_yaml_file_with_other_value(ws: LaunchWorkspace) -> None:
     ws.write("config/fast.yaml", "a: 10\n")
     file = ws.launch("file.launch", FROM_FILE)
@@ -131,7 +119,6 @@ def test_yaml_file_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
 
 
 @pytest.mark.oracle
-@pytest.mark.xfail(strict=True, reason="rosparam with a term file path is dropped (see above)")
 def test_yaml_file_shared_model_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
     _config_files(ws)
     ws.assert_agrees(ws.launch("file.launch", FROM_FILE), FILE_CONFIGS, modes=["shared"])

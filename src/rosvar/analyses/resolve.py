@@ -19,7 +19,7 @@ from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import Binary, DeferredValue, LaunchModel, ParamDecl, Raw
 from rosvar.interpreter.substitution import PackageTable
 from rosvar.interpreter.tags.param import param_value
-from rosvar.interpreter.tags.rosparam import yaml_params
+from rosvar.interpreter.tags.rosparam import load_rosparam
 from rosvar.interpreter.validation import node_values
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import ArgInput, EnvInput, Input
@@ -214,12 +214,18 @@ def _restrict(
                     raise ResolutionError("param-invalid", str(error), param.location) from None
             result.params[str(name)] = _json_value(value)
         else:
-            namespace = r.pick(param.namespace, param.location, "rosparam namespace")
+            parts = [
+                None if part is None else r.evaluate(part, param.location, "<rosparam>")
+                for part in (param.scope_ns, param.command, param.ns, param.file, param.param)
+            ]
             body = r.evaluate(param.text, param.location, "<rosparam> body")
+            scope_ns, command, ns, file, name = parts
             try:
-                pairs = yaml_params(body, str(namespace), param.param, "")
+                pairs = load_rosparam(str(command), ns, file, name, body, str(scope_ns))
             except ValueError as error:
-                raise ResolutionError("rosparam-invalid", str(error), param.location) from None
+                raise ResolutionError(
+                    "rosparam-invalid", f"error loading <rosparam> tag: {error}", param.location
+                ) from None
             for key, value in pairs:
                 result.params[key] = _json_value(value)
 

@@ -78,12 +78,19 @@ class ParamDecl:
 
 @dataclass
 class YamlDecl:
-    """A ``<rosparam load>`` whose text is only known per configuration."""
+    """A ``<rosparam>`` some of whose attributes are only known per configuration.
+
+    Resolution evaluates the terms and loads it like the interpreter loads a
+    concrete one (``load_rosparam``), with the same checks.
+    """
 
     condition: BDD
     location: Location
-    namespace: Choice[Raw]
-    param: str
+    scope_ns: Raw
+    command: Raw
+    ns: Raw | None
+    file: Raw | None
+    param: Raw | None
     text: Raw
 
 

@@ -74,7 +74,9 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
         ],
         "params": [
             {
-                "name": _values(p.name if isinstance(p, ParamDecl) else p.namespace, model),
+                "name": _values(p.name, model)
+                if isinstance(p, ParamDecl)
+                else f"{p.scope_ns}{p.param or ''} (YAML)",
                 "value": _values(p.value, model) if isinstance(p, ParamDecl) else "<yaml>",
                 "condition": describe(p.condition),
                 **p.location.to_json(),

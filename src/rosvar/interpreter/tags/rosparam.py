@@ -14,7 +14,6 @@ from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.tags.common import bool_value
 from rosvar.interpreter.values import load_yaml
 from rosvar.logic.choice import Choice
-from rosvar.logic.terms import Term
 from rosvar.ros import names
 
 ATTRIBUTES = ("command", "ns", "file", "param", "subst_value")
@@ -86,6 +85,38 @@ def _load(
                             )
 
 
+class MissingFile(ValueError):
+    """``<rosparam file>`` names a file that does not exist."""
+
+
+def load_rosparam(
+    command: str, ns: str | None, file: str | None, param: str | None, text: str, scope_ns: str
+) -> list[tuple[str, object]]:
+    """``Loader.load_rosparam`` for concrete strings: the params set, or ValueError as roslaunch.
+
+    ``text`` is the inline body (or, with ``subst_value``, the already substituted
+    file content, in which case ``file`` is None).
+    """
+    if command not in ("load", "dump", "delete"):
+        raise ValueError("command must be 'load', 'dump', or 'delete'")
+    if file is not None:
+        if command == "load" and not os.path.isfile(file):
+            raise MissingFile(f"file does not exist [{file}]")
+        if command == "delete":
+            raise ValueError("'file' attribute is invalid with 'delete' command.")
+    if command != "load":
+        return []
+    param_name = names.ns_join(ns or "", param or "")
+    if file is not None:
+        try:
+            with open(file) as handle:
+                text = handle.read()
+        except OSError as error:
+            raise ValueError(str(error)) from None
+    full = names.ns_join(scope_ns, param_name) if param_name else scope_ns
+    return yaml_params(text, full, param_name, file or "")
+
+
 def _load_one(
     it: Interpretation,
     entity: Entity,
@@ -96,77 +127,69 @@ def _load_one(
     param: Raw | None,
     substitute: bool,
 ) -> None:
-    true = it.space.true
-    if not all(isinstance(v, str) or v is None for v in (command, ns, file, param)):
-        it.warn("rosparam-unknown", "<rosparam> attributes are only known per configuration")
-        return
-    assert isinstance(command, str)
-    if command not in ("load", "dump", "delete"):
-        it.fail(
-            true,
-            "rosparam-invalid",
-            "error loading <rosparam> tag: command must be 'load', 'dump', or 'delete'",
-        )
-        return
-    if file is not None:
-        assert isinstance(file, str)
-        if command == "load" and not os.path.isfile(file):
-            it.fail(
-                true, "file-missing", f"error loading <rosparam> tag: file does not exist [{file}]"
-            )
-            return
-        if command == "delete":
-            it.fail(
-                true,
-                "rosparam-invalid",
-                "error loading <rosparam> tag: 'file' attribute is invalid with 'delete' command.",
-            )
-            return
-    if command != "load":
-        return
-    param_name = names.ns_join(ns or "", param or "")  # type: ignore[arg-type]
-    if file is not None:
+    text: Raw = entity.text
+    if substitute and isinstance(file, str) and command == "load":
         try:
             with open(file) as handle:
-                text: Raw = handle.read()
+                text = handle.read()
         except OSError as error:
-            it.fail(true, "file-unreadable", f"error loading <rosparam> tag: {error}")
+            it.fail(it.space.true, "file-unreadable", f"error loading <rosparam> tag: {error}")
             return
-    else:
-        text = entity.text
-    full_params = (
-        it.lift("ns_join", scope.ns, Choice.const(it.space, param_name)) if param_name else scope.ns
-    )
-    texts: Choice[Raw] = Choice.const(it.space, text)
+        file = None
     if substitute:
-        resolved = it.resolve(text, scope, "<rosparam> body")  # type: ignore[arg-type]
+        if not isinstance(file, str | None):
+            it.warn(
+                "rosparam-unknown",
+                "<rosparam subst_value> of a file only known per configuration is not analysed",
+            )
+            return
+        resolved = it.resolve(str(text), scope, "<rosparam> body")
         assert resolved is not None
-        texts = resolved
+        texts: Choice[Raw] = resolved
+    else:
+        texts = Choice.const(it.space, text)
     for t_condition, body in split(it, texts):
-        for p_condition, full in split(it, full_params):
-            with it.under(t_condition & p_condition):
-                if not isinstance(body, str) or not isinstance(full, str):
-                    it.model.params.append(
-                        YamlDecl(
-                            it.pc, entity.location, Choice.const(it.space, full), param_name, body
-                        )
-                    )
-                    continue
-                try:
-                    pairs = yaml_params(body, full, param_name, file or "")
-                except ValueError as error:
-                    it.fail(true, "rosparam-invalid", f"error loading <rosparam> tag: {error}")
-                    continue
-                for key, value in pairs:
-                    it.model.params.append(
-                        ParamDecl(
-                            it.pc,
-                            entity.location,
-                            Choice.const(it.space, key),
-                            Choice.const(it.space, value),
-                            "rosparam",
-                        )
-                    )
+        for n_condition, scope_ns in split(it, scope.ns):
+            with it.under(t_condition & n_condition):
+                _emit(it, entity, scope_ns, command, ns, file, param, body)
 
 
-_ = Term
+def _emit(
+    it: Interpretation,
+    entity: Entity,
+    scope_ns: Raw,
+    command: Raw,
+    ns: Raw | None,
+    file: Raw | None,
+    param: Raw | None,
+    body: Raw,
+) -> None:
+    parts = (scope_ns, command, ns, file, param, body)
+    if not all(isinstance(part, str) or part is None for part in parts):
+        it.model.params.append(
+            YamlDecl(it.pc, entity.location, scope_ns, command, ns, file, param, body)
+        )
+        return
+    try:
+        pairs = load_rosparam(
+            str(command),
+            ns if isinstance(ns, str) else None,
+            file if isinstance(file, str) else None,
+            param if isinstance(param, str) else None,
+            str(body),
+            str(scope_ns),
+        )
+    except ValueError as error:
+        code = "file-missing" if isinstance(error, MissingFile) else "rosparam-invalid"
+        it.fail(it.space.true, code, f"error loading <rosparam> tag: {error}")
+        return
+    for key, value in pairs:
+        it.model.params.append(
+            ParamDecl(
+                it.pc,
+                entity.location,
+                Choice.const(it.space, key),
+                Choice.const(it.space, value),
+                "rosparam",
+            )
+        )
