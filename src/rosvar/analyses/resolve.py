@@ -160,6 +160,10 @@ def resolve(
                 if restriction.holds(m.condition)
             }
         except ResolutionError as error:
+            # keep the finding, not the frames: a traceback would tie the whole
+            # analysis (and its BDD manager) into a reference cycle
+            error.__traceback__ = None
+            error.__context__ = None
             result.errors.append(error)
             return result
     for node in result.nodes:  # roslaunch's assign_machines(), after every file is loaded
