@@ -433,25 +433,63 @@ def _explain(model: FeatureModel, goal: BDD) -> list[str]:
 
 
 def simplest_trigger(space: ConditionSpace, condition: BDD) -> dict[str, str]:
-    """An arg assignment making ``condition`` true with the fewest non-default choices."""
-    best: dict[str, str] | None = None
-    best_cost = 0
-    for cube_number, cube in enumerate(space.bdd.pick_iter(condition & space.valid)):
-        if cube_number > 256:
-            break
-        chosen: dict[str, str] = {}
-        cost = 0
-        for name, value in cube.items():
-            atom = space.atom_of(name)
-            if value and isinstance(atom, SlotAtom):
-                text = _value_text(atom.slot, None)
-                chosen[str(atom.input)] = text
-                cost += 0 if atom.slot is UNSET or atom.slot == _first(space, atom) else 1
-            elif value and isinstance(atom, FileAtom):
-                chosen[atom.label] = "selected"
-        if best is None or cost < best_cost:
-            best, best_cost = chosen, cost
-    return best or {}
+    """An arg assignment making ``condition`` true with the fewest non-default choices.
+
+    A cheapest path through the BDD, where choosing a non-default value costs 1
+    and an ``<other>`` value costs 3; the inputs the path leaves open keep their
+    defaults.
+    """
+    involved = {
+        atom.input
+        for atom in (space.atom_of(n) for n in space.bdd.support(condition))
+        if isinstance(atom, SlotAtom)
+    }
+    target = condition
+    for input_ in involved:
+        target &= space.input_constraint(input_)
+    if target == space.false:
+        return {}
+    memo: dict[BDD, tuple[float, dict[str, bool]]] = {}
+
+    def cheapest(u: BDD) -> tuple[float, dict[str, bool]]:
+        if u == space.true:
+            return 0.0, {}
+        if u == space.false:
+            return float("inf"), {}
+        if u in memo:
+            return memo[u]
+        var = u.var
+        low_cost, low_path = cheapest(space.bdd.let({var: False}, u))
+        high_cost, high_path = cheapest(space.bdd.let({var: True}, u))
+        high_cost += _cost(space, var)
+        best = (
+            (low_cost, {var: False, **low_path})
+            if low_cost <= high_cost
+            else (high_cost, {var: True, **high_path})
+        )
+        memo[u] = best
+        return best
+
+    _cost_total, path = cheapest(target)
+    chosen: dict[str, str] = {}
+    for name, value in path.items():
+        atom = space.atom_of(name)
+        if value and isinstance(atom, SlotAtom):
+            chosen[str(atom.input)] = _value_text(atom.slot, None)
+        elif value and isinstance(atom, FileAtom):
+            chosen[atom.label] = "selected"
+    return chosen
+
+
+def _cost(space: ConditionSpace, name: str) -> float:
+    atom = space.atom_of(name)
+    if not isinstance(atom, SlotAtom):
+        return 0.0
+    if atom.slot is OTHER:
+        return 3.0
+    if atom.slot is UNSET or atom.slot == _first(space, atom):
+        return 0.0
+    return 1.0
 
 
 def _first(space: ConditionSpace, atom: SlotAtom) -> Slot:

@@ -92,9 +92,7 @@ def compute(analysis: Analysis, model: FeatureModel) -> Metrics:
             as_ += 1
             if arg.default is not None:
                 as_d += 1
-            literals = {
-                v.value for v in arg.values if v.slot is not OTHER and v.slot is not UNSET
-            }
+            literals = {v.value for v in arg.values if v.slot is not OTHER and v.slot is not UNSET}
             if literals - {arg.default}:
                 as_v += 1
         launch_model = analysis.model(feature.file)

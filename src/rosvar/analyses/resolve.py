@@ -9,14 +9,14 @@ locations.
 
 from __future__ import annotations
 
-import base64
-import math
-from collections.abc import Mapping, Sequence
+import re
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
+from rosvar.analyses.values import json_value
 from rosvar.diagnostics import Location
 from rosvar.interpreter.analysis import Analysis
-from rosvar.interpreter.model import Binary, DeferredValue, LaunchModel, ParamDecl, Raw
+from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl, Raw
 from rosvar.interpreter.substitution import PackageTable
 from rosvar.interpreter.tags.param import param_value
 from rosvar.interpreter.tags.rosparam import load_rosparam
@@ -101,6 +101,22 @@ class _Restriction:
             {name: package.path for name, package in analysis.workspace.packages.items()}
         )
         self.assignment = self.space.assignment(values, self.host)
+        self._shift: Callable[[str], str] | None = None
+
+    def shift_anon(self, offset: int) -> None:
+        """Number this file's ``$(anon)`` names after those of the files loaded before it.
+
+        roslaunch draws one random name per id; the deterministic ``{id}_anon{n}``
+        stand-in must keep counting across the files of one command line.
+        """
+        if offset and self.model.anon_ids:
+            bases = "|".join(
+                re.escape(b) for b in sorted(self.model.anon_ids, key=len, reverse=True)
+            )
+            pattern = re.compile(rf"(?<![\w])({bases})_anon(\d+)(?![\w])")
+            self._shift = lambda text: pattern.sub(
+                lambda m: f"{m.group(1)}_anon{int(m.group(2)) + offset}", text
+            )
 
     def holds(self, condition: object) -> bool:
         return self.space.evaluate(condition, self.assignment)
@@ -116,7 +132,9 @@ class _Restriction:
         for condition, leaf in choice:
             if self.holds(condition):
                 if isinstance(leaf, Hole | Apply):
-                    return self.evaluate(leaf, location, what)
+                    leaf = self.evaluate(leaf, location, what)
+                if isinstance(leaf, str) and self._shift is not None:
+                    return self._shift(leaf)
                 return leaf
         raise ResolutionError("value-undefined", f"{what} has no value here", location)
 
@@ -124,18 +142,6 @@ class _Restriction:
         value = self.pick(choice, location, what)
         assert value is None or isinstance(value, str)
         return value
-
-
-def _json_value(value: object) -> object:
-    if isinstance(value, Binary):
-        return {"__binary__": base64.b64encode(value.data).decode()}
-    if isinstance(value, float) and (math.isnan(value) or math.isinf(value)):
-        return "nan" if math.isnan(value) else ("inf" if value > 0 else "-inf")
-    if isinstance(value, dict):
-        return {str(k): _json_value(v) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [_json_value(v) for v in value]
-    return value
 
 
 def resolve(
@@ -149,11 +155,16 @@ def resolve(
     args = {k: v for k, v in (args or {}).items() if names.settable(k)}
     seen_nodes: dict[str, Location] = {}
     machines: set[str] = set()
+    anon_offset = 0
     for file in files:
         model = analysis.model(file)
         restriction = _Restriction(analysis, model, args, env or {})
+        restriction.shift_anon(anon_offset)
         try:
             _restrict(restriction, model, result, seen_nodes)
+            if model.anon_count is not None:
+                count = restriction.pick(model.anon_count, Location(file), "$(anon) count")
+                anon_offset += int(str(count))
             machines |= {
                 str(restriction.pick(m.name, m.location, "machine name"))
                 for m in model.machines
@@ -216,7 +227,7 @@ def _restrict(
                     value = param_value("value", concrete, value.ptype)
                 except ValueError as error:
                     raise ResolutionError("param-invalid", str(error), param.location) from None
-            result.params[str(name)] = _json_value(value)
+            result.params[str(name)] = json_value(value)
         else:
             parts = [
                 None if part is None else r.evaluate(part, param.location, "<rosparam>")
@@ -231,7 +242,7 @@ def _restrict(
                     "rosparam-invalid", f"error loading <rosparam> tag: {error}", param.location
                 ) from None
             for key, value in pairs:
-                result.params[key] = _json_value(value)
+                result.params[key] = json_value(value)
 
 
 def _node(r: _Restriction, node: object) -> dict[str, object]:

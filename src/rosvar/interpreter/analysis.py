@@ -89,5 +89,6 @@ class Analysis:
         for error in model.errors:
             failing |= error.condition
         model.loads = ~failing
+        model.anon_count = it.anon_count
         model.diagnostics = it.sink.items
         return model

@@ -116,6 +116,7 @@ class Interpretation:
         # roslaunch's anonymous_name() screens '.', '-' and ':' out of names; the
         # counter stands for its random part (the oracle uses the same convention).
         base = anon_id.replace(".", "_").replace("-", "_").replace(":", "_")
+        self.model.anon_ids.add(base)
         names = current.map(lambda n: f"{base}_anon{n + 1}")
         self.anon_count = Choice(
             [(c & pc, n + 1) for c, n in current] + [(c & ~pc, n) for c, n in current]

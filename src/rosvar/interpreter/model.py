@@ -172,4 +172,6 @@ class LaunchModel:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     files: list[str] = field(default_factory=list)
     unset_defaults: dict[str, str] = field(default_factory=dict)
+    anon_ids: set[str] = field(default_factory=set)  # bases of the $(anon) names generated
+    anon_count: Choice[int] | None = None  # how many, per configuration
     loads: BDD = None  # configurations in which roslaunch loads the file without error

@@ -243,7 +243,11 @@ class Substituter:
         if command == "env":
             if len(params) != 1:
                 return Choice.const(
-                    space, Fail(f"$(env var) command only accepts one argument [{body}]")
+                    space,
+                    Fail(
+                        f"$(env var) command only accepts one argument [{body}]",
+                        "substitution-invalid",
+                    ),
                 )
             name = params[0]
             return self.host.env_value(name).map(
@@ -256,7 +260,11 @@ class Substituter:
         if command == "optenv":
             if not params:
                 return Choice.const(
-                    space, Fail(f"$(optenv var) must specify an environment variable [{body}]")
+                    space,
+                    Fail(
+                        f"$(optenv var) must specify an environment variable [{body}]",
+                        "substitution-invalid",
+                    ),
                 )
             default = " ".join(params[1:])
             return self.host.env_value(params[0]).map(lambda v: default if v is None else v)

@@ -22,6 +22,7 @@ from rosvar.logic.terms import evaluate as evaluate_term
 BDD = Any  # dd.cudd.Function: dd ships no type information
 
 BOOLEAN_WORDS = ("true", "false")
+MAX_FULL = 200  # longer formulas over <other> values help nobody
 
 
 @dataclass(frozen=True)
@@ -76,6 +77,7 @@ class ConditionSpace:
         self._atom_of: dict[str, Atom] = {}
         self._domains: dict[Input, tuple[Slot, ...]] = {}
         self._input_constraints: dict[Input, BDD] = {}
+        self._known_cache: tuple[int, BDD, dict[Input, tuple[Slot, ...]]] = (-1, None, {})
 
     # -- declaring atoms -------------------------------------------------------------
     def _new_var(self, atom: Atom) -> BDD:
@@ -217,21 +219,19 @@ class ConditionSpace:
         if known_only:
             others = {
                 name: False
-                for atom, name in self._var_of.items()
-                if isinstance(atom, SlotAtom)
+                for name in self.bdd.support(condition)
+                if isinstance(atom := self._atom_of[name], SlotAtom)
                 and atom.slot is OTHER
                 and isinstance(atom.input, ArgInput)
             }
             known = self.bdd.let(others, condition) if others else condition
-            care = self.bdd.let(others, self.valid) if others else self.valid
+            care = self._known_valid()
             if (known & care) == self.false:
                 return "only for other values"
             if (care & ~known) == self.false and not self.valid_implies(condition):
-                return self.describe(condition, qualify, known_only=False)
-            domains = {
-                input_: tuple(s for s in slots if s is not OTHER or isinstance(input_, EnvInput))
-                for input_, slots in self._domains.items()
-            }
+                full = self.describe(condition, qualify, known_only=False)
+                return full if len(full) <= MAX_FULL else "true for every known value"
+            domains = self._known_domains()
         else:
             known, care = condition, self.valid
         simplified = _cudd.restrict(known, care)
@@ -242,6 +242,27 @@ class ConditionSpace:
         if len(rendered) == 1:
             return rendered[0]
         return " ∨ ".join(f"({r})" if "∧" in r else r for r in sorted(rendered))
+
+    def _known_valid(self) -> BDD:
+        """Validity with every arg holding a known value (cached per number of atoms)."""
+        if self._known_cache[0] != len(self._atoms):
+            others = {
+                name: False
+                for atom, name in self._var_of.items()
+                if isinstance(atom, SlotAtom)
+                and atom.slot is OTHER
+                and isinstance(atom.input, ArgInput)
+            }
+            domains = {
+                input_: tuple(s for s in slots if s is not OTHER or isinstance(input_, EnvInput))
+                for input_, slots in self._domains.items()
+            }
+            self._known_cache = (len(self._atoms), self.bdd.let(others, self.valid), domains)
+        return self._known_cache[1]
+
+    def _known_domains(self) -> dict[Input, tuple[Slot, ...]]:
+        self._known_valid()
+        return self._known_cache[2]
 
     def _prime_cubes(
         self,

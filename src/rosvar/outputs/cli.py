@@ -8,18 +8,23 @@ found, a ``--launch`` file missing).
 from __future__ import annotations
 
 import argparse
+import gc
 import json
 import os
 import sys
 from collections.abc import Sequence
 
 from rosvar import __version__
+from rosvar.analyses.features import extract
+from rosvar.analyses.metrics import compute
 from rosvar.analyses.resolve import resolve
 from rosvar.diagnostics import Severity
 from rosvar.interpreter.analysis import Analysis
 from rosvar.outputs.describe import describe_model
+from rosvar.outputs.exports import WRITERS, write
 from rosvar.ros.names import command_line_mappings
 from rosvar.workspace import Workspace, discover
+from rosvar.workspace.hints import load_hints
 
 EXIT_OK, EXIT_FAILS, EXIT_USAGE, EXIT_INPUT = 0, 1, 2, 3
 
@@ -70,12 +75,13 @@ def cmd_analyze(options: argparse.Namespace) -> int:
 
 
 def cmd_resolve(options: argparse.Namespace) -> int:
-    workspace = _workspace(options.paths)
     files = [os.path.abspath(f) for f in options.launch]
     missing = [f for f in files if not os.path.isfile(f)]
     if missing:
         print(f"rosvar: launch file not found: {', '.join(missing)}", file=sys.stderr)
         return EXIT_INPUT
+    # the launch files' own packages are known even when no PATH contains them
+    workspace = _workspace([*options.paths, *files])
     env: dict[str, str] = {}
     for item in options.env:
         name, sep, value = item.partition("=")
@@ -109,6 +115,45 @@ def cmd_resolve(options: argparse.Namespace) -> int:
     return EXIT_OK if result.ok else EXIT_FAILS
 
 
+def _analysis(options: argparse.Namespace) -> Analysis | None:
+    workspace = _workspace(options.paths)
+    if not workspace.launch_files:
+        print("rosvar: no launch files found", file=sys.stderr)
+        return None
+    hints = load_hints(getattr(options, "hints", None))
+    for diagnostic in hints.diagnostics:
+        print(diagnostic, file=sys.stderr)
+    return Analysis(workspace, hints.args, hints.env, hints.executables)
+
+
+def cmd_features(options: argparse.Namespace) -> int:
+    analysis = _analysis(options)
+    if analysis is None:
+        return EXIT_INPUT
+    model = extract(analysis, progress=_progress)
+    text = write(model, options.format)
+    if options.output:
+        with open(options.output, "w", encoding="utf-8") as handle:
+            handle.write(text)
+    else:
+        sys.stdout.write(text)
+    return EXIT_OK
+
+
+def cmd_metrics(options: argparse.Namespace) -> int:
+    analysis = _analysis(options)
+    if analysis is None:
+        return EXIT_INPUT
+    model = extract(analysis, progress=_progress)
+    metrics = compute(analysis, model).to_json()
+    if options.json:
+        json.dump(metrics, sys.stdout, indent=2)
+        sys.stdout.write("\n")
+    else:
+        print("  ".join(f"{key}={value}" for key, value in metrics.items()))
+    return EXIT_OK
+
+
 def parser() -> argparse.ArgumentParser:
     top = argparse.ArgumentParser(
         prog="rosvar",
@@ -124,12 +169,23 @@ def parser() -> argparse.ArgumentParser:
         "resolve", help="one concrete configuration, as roslaunch would load it"
     )
     res.add_argument(
-        "paths", nargs="+", metavar="PATH", help="package roots (and name:=value args)"
+        "paths", nargs="*", metavar="PATH", help="package roots (and name:=value args)"
     )
     res.add_argument("--launch", action="append", required=True, metavar="FILE")
     res.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
     res.add_argument("--json", action="store_true")
     res.set_defaults(run=cmd_resolve)
+    features = commands.add_parser("features", help="the feature model (paper Algorithm 1)")
+    features.add_argument("paths", nargs="+", metavar="PATH")
+    features.add_argument("--hints", metavar="FILE", help="YAML with extra values (docs/hints.md)")
+    features.add_argument("--format", choices=sorted(WRITERS), default="text")
+    features.add_argument("-o", "--output", metavar="FILE")
+    features.set_defaults(run=cmd_features)
+    metrics = commands.add_parser("metrics", help="the paper's Table I and II metrics")
+    metrics.add_argument("paths", nargs="+", metavar="PATH")
+    metrics.add_argument("--hints", metavar="FILE")
+    metrics.add_argument("--json", action="store_true")
+    metrics.set_defaults(run=cmd_metrics)
     return top
 
 
@@ -149,3 +205,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 130
     except BrokenPipeError:
         return EXIT_OK
+    finally:
+        # free BDD nodes before their manager: CUDD complains when the interpreter
+        # tears modules down in an arbitrary order
+        gc.collect()

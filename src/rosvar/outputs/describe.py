@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
-from rosvar.interpreter.model import LaunchModel, ParamDecl
+from rosvar.analyses.values import json_value
+from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import OTHER, UNSET, Slot
+from rosvar.logic.terms import Apply, Hole
 
 
 def _slot(slot: Slot) -> str:
@@ -27,9 +29,11 @@ def _values(choice: Choice[object], model: LaunchModel) -> object:
 
 
 def _leaf(leaf: object) -> object:
-    if leaf is None or isinstance(leaf, str | int | float | bool):
-        return leaf
-    return str(leaf)
+    if isinstance(leaf, DeferredValue):
+        return str(leaf.raw)
+    if isinstance(leaf, Hole | Apply):
+        return str(leaf)
+    return json_value(leaf)
 
 
 def describe_model(model: LaunchModel) -> dict[str, object]:
@@ -44,7 +48,7 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
                 "default": a.default,
                 "value": a.value,
                 "doc": a.doc,
-                "command_line": a.input is not None,
+                "command_line": a.input is not None and a.value is None,
                 "domain": [_slot(s) for s in model.domains.get(a.name, ())],
                 "condition": describe(a.condition),
                 **a.location.to_json(),
@@ -53,7 +57,7 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
         ],
         "includes": [
             {
-                "file": _values(i.file, model),
+                "target": _values(i.file, model),
                 "resolved": i.resolved,
                 "condition": describe(i.condition),
                 **i.location.to_json(),

@@ -276,21 +276,22 @@ def parse_launch_file(path: str | os.PathLike[str]) -> ParseResult:
     return parse_launch_bytes(data, os.fspath(path))
 
 
-_CacheKey = tuple[str, str, int, int]
+_CacheKey = tuple[str, int, int, int, int]
 _cache: OrderedDict[_CacheKey, ParseResult] = OrderedDict()
 
 
 def load_launch_file(path: str | os.PathLike[str]) -> ParseResult:
     """Like :func:`parse_launch_file`, but cached while the file is unchanged.
 
-    The key is (name as given, realpath, mtime_ns, size): the name is part of it
-    because it appears in every Location. The returned tree is shared between callers
+    The key is (name as given, device, inode, mtime_ns, size): the name is part of
+    it because it appears in every Location; the inode stands for the real file
+    (cheaper than resolving symlinks on every include). The returned tree is shared between callers
     and must be treated as read-only; the diagnostics list is a fresh copy.
     """
     name = os.fspath(path)
     try:
         info = os.stat(name)
-        key: _CacheKey = (name, os.path.realpath(name), info.st_mtime_ns, info.st_size)
+        key: _CacheKey = (name, info.st_dev, info.st_ino, info.st_mtime_ns, info.st_size)
     except (OSError, ValueError):
         return parse_launch_file(name)
     cached = _cache.get(key)

@@ -85,6 +85,18 @@ def _load(
                             )
 
 
+def read_text(path: str) -> str:
+    """A parameter file's text, cached while unchanged (many includes load the same files)."""
+    info = os.stat(path)
+    return _read_text(path, info.st_mtime_ns, info.st_size)
+
+
+@functools.lru_cache(maxsize=1024)
+def _read_text(path: str, _mtime: int, _size: int) -> str:
+    with open(path) as handle:
+        return handle.read()
+
+
 class MissingFile(ValueError):
     """``<rosparam file>`` names a file that does not exist."""
 
@@ -109,8 +121,7 @@ def load_rosparam(
     param_name = names.ns_join(ns or "", param or "")
     if file is not None:
         try:
-            with open(file) as handle:
-                text = handle.read()
+            text = read_text(file)
         except OSError as error:
             raise ValueError(str(error)) from None
     full = names.ns_join(scope_ns, param_name) if param_name else scope_ns
@@ -130,8 +141,7 @@ def _load_one(
     text: Raw = entity.text
     if substitute and isinstance(file, str) and command == "load":
         try:
-            with open(file) as handle:
-                text = handle.read()
+            text = read_text(file)
         except OSError as error:
             it.fail(it.space.true, "file-unreadable", f"error loading <rosparam> tag: {error}")
             return

@@ -1,0 +1,130 @@
+"""The feature model as a report for people: sizes, the tree, constraints, solver findings.
+
+Conditions are the analysis' readable ones (``describe``); core and dead features come
+with the constraints that force them, conflicts with the assignment that triggers them
+with the fewest non-default choices, so each finding says what to look at.
+"""
+
+from __future__ import annotations
+
+import os
+from collections import Counter
+
+from rosvar.analyses.features import (
+    ArgFeature,
+    FeatureModel,
+    FileFeature,
+    ValueFeature,
+    core_and_dead,
+    count_configurations,
+)
+from rosvar.diagnostics import Location
+from rosvar.outputs.exports._common import Tree, Triggers, conflicts
+
+INDENT = "  "
+
+
+def _plural(count: int, word: str) -> str:
+    return f"{count} {word}{'' if count == 1 else 's'}"
+
+
+def _where(location: Location, tree: Tree) -> str:
+    """``file-id:line:col`` (a launch file's id is shorter than its path)."""
+    file = tree.by_path.get(os.path.realpath(location.file), location.file)
+    return f"{file}:{location.line}:{location.col}" if location.line > 0 else file
+
+
+def _summary(model: FeatureModel, tree: Tree, configurations: int) -> list[str]:
+    files = [e for e in tree.entries if e.kind == "file"]
+    args = [e for e in tree.entries if e.kind == "arg"]
+    values = [e for e in tree.entries if e.kind == "value"]
+    kinds = Counter(c.kind for c in model.constraints)
+    conditional = Counter(c.kind for c in model.constraints if not c.unconditional)
+    by_kind = ", ".join(
+        f"{count} {kind} ({conditional[kind]} conditional)" for kind, count in sorted(kinds.items())
+    )
+    return [
+        f"Feature model of {tree.root}",
+        f"{INDENT}{_plural(len(files), 'launch file')}, {_plural(len(args), 'arg feature')}, "
+        f"{_plural(len(values), 'value')}",
+        f"{INDENT}{_plural(len(model.constraints), 'constraint')}"
+        + (f": {by_kind}" if by_kind else ""),
+        f"{INDENT}{configurations} valid configurations",
+    ]
+
+
+def _tree(tree: Tree) -> list[str]:
+    lines = ["", "Tree (files optional, one value per arg, ✓ default)", f"{INDENT}{tree.root}"]
+    for entry in tree.entries:
+        feature = entry.feature
+        indent = INDENT * (entry.depth + 1)
+        if isinstance(feature, FileFeature):
+            lines.append(f"{indent}{feature.id}")
+        elif isinstance(feature, ArgFeature):
+            extra = " (boolean)" if feature.boolean else ""
+            if not feature.values:
+                extra += " (no possible value: its file cannot be selected)"
+            lines.append(f"{indent}{feature.name}{extra}")
+        elif isinstance(feature, ValueFeature):
+            mark = "✓" if feature.default else " "
+            lines.append(f"{indent}{mark} {feature.value}")
+    return lines
+
+
+def _constraints(model: FeatureModel, tree: Tree) -> list[str]:
+    lines = ["", "Constraints"]
+    if not model.constraints:
+        lines.append(f"{INDENT}none")
+    describe = model.space.describe
+    for constraint in model.constraints:
+        a, b = (tree.files[f] for f in constraint.files)
+        arrow = "→" if constraint.kind == "requires" else "⊗"
+        when = "always" if constraint.unconditional else f"when {describe(constraint.condition)}"
+        lines.append(f"{INDENT}{constraint.kind} {a} {arrow} {b}, {when}")
+        lines.append(f"{INDENT * 2}{constraint.text}")
+        where = [_where(loc, tree) for loc in constraint.locations]
+        if where:
+            more = f" (+{len(where) - 4} more)" if len(where) > 4 else ""
+            lines.append(f"{INDENT * 2}at {', '.join(where[:4])}{more}")
+    return lines
+
+
+def _verdicts(model: FeatureModel) -> list[str]:
+    lines = ["", "Core and dead features"]
+    verdicts = core_and_dead(model)
+    if not verdicts:
+        lines.append(f"{INDENT}none: every feature can be selected and deselected")
+    for verdict in verdicts:
+        lines.append(f"{INDENT}{verdict.kind} {verdict.feature}")
+        for reason in verdict.because:
+            lines.append(f"{INDENT * 2}because {reason}")
+    return lines
+
+
+def _conflicts(model: FeatureModel, tree: Tree) -> list[str]:
+    lines = ["", "Conflicts (name clashes)"]
+    found = conflicts(model)
+    if not found:
+        lines.append(f"{INDENT}none")
+    trigger = Triggers(model, tree)
+    describe = model.space.describe
+    for clash in found:
+        first, second = clash.first, clash.second
+        lines.append(
+            f"{INDENT}{clash.kind} {clash.name}: {_where(first.location, tree)} and "
+            f"{_where(second.location, tree)}, when {describe(clash.condition)}"
+        )
+        assignment = trigger(clash.condition)
+        shown = ", ".join(f"{k}={v}" for k, v in assignment.items()) or "any values"
+        lines.append(f"{INDENT * 2}simplest trigger: {shown}")
+    return lines
+
+
+def write(model: FeatureModel) -> str:
+    tree = Tree(model)
+    lines = _summary(model, tree, count_configurations(model))
+    lines += _tree(tree)
+    lines += _constraints(model, tree)
+    lines += _verdicts(model)
+    lines += _conflicts(model, tree)
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,131 @@
+"""Name clashes are found through an index by resolved name, never by comparing every pair."""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from rosvar.analyses.conflicts import Occurrence, clashes, declared_occurrences, index
+from rosvar.analyses.features import extract
+from rosvar.diagnostics import Location
+from rosvar.logic.conditions import ConditionSpace
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+
+@dataclass(frozen=True)
+class Counted:
+    """A condition that counts how often ``clashes`` conjoins it with another."""
+
+    condition: Any
+    calls: list[int]
+
+    def __and__(self, other: Counted) -> Any:
+        self.calls.append(1)
+        return self.condition & other.condition
+
+
+def occurrences(space: ConditionSpace, names: list[str], calls: list[int]) -> list[Occurrence]:
+    return [
+        Occurrence(
+            "node",
+            name,
+            f"/f{i}.launch",
+            Location(f"/f{i}.launch", 1, 1),
+            Counted(space.true, calls),
+        )  # type: ignore[arg-type]
+        for i, name in enumerate(names)
+    ]
+
+
+def test_only_declarations_in_one_bucket_are_compared() -> None:
+    space = ConditionSpace()
+    calls: list[int] = []
+    found = occurrences(space, ["/a", "/b", "/a", "/c", "/c", "/c", "/d"], calls)
+    buckets: dict[tuple[str, str], list[Occurrence]] = {}
+    for occurrence in found:
+        buckets.setdefault((occurrence.kind, occurrence.name), []).append(occurrence)
+    result = clashes(buckets)
+    # /a: 1 pair, /c: 3 pairs, /b and /d: none. Never /a against /c, etc.
+    assert len(calls) == 4
+    assert sorted((c.name, c.first.file, c.second.file) for c in result) == [
+        ("/a", "/f0.launch", "/f2.launch"),
+        ("/c", "/f3.launch", "/f4.launch"),
+        ("/c", "/f3.launch", "/f5.launch"),
+        ("/c", "/f4.launch", "/f5.launch"),
+    ]
+
+
+def test_many_distinct_names_need_no_comparison() -> None:
+    space = ConditionSpace()
+    calls: list[int] = []
+    found = occurrences(space, [f"/node_{i}" for i in range(20000)], calls)
+    buckets: dict[tuple[str, str], list[Occurrence]] = {}
+    for occurrence in found:
+        buckets.setdefault((occurrence.kind, occurrence.name), []).append(occurrence)
+    start = time.perf_counter()
+    assert clashes(buckets) == []
+    assert calls == []
+    assert time.perf_counter() - start < 1.0  # 20000² / 2 comparisons would take minutes
+
+
+def test_a_node_and_a_param_of_one_name_do_not_clash(ws: LaunchWorkspace) -> None:
+    ws.launch("a.launch", '  <node pkg="pkg" type="t" name="same"/>')
+    ws.launch("b.launch", '  <param name="same" value="1"/>')
+    analysis = ws.analysis()
+    buckets = index(analysis.all_models())
+    assert sorted(buckets) == [("node", "/same"), ("param", "/same")]
+    assert clashes(buckets) == []
+
+
+def test_index_keys_are_resolved_names(ws: LaunchWorkspace) -> None:
+    file = ws.launch(
+        "a.launch",
+        '  <group ns="robot">\n'
+        '    <node pkg="pkg" type="t" name="driver" ns="base"/>\n'
+        '    <param name="rate" value="1"/>\n'
+        '    <node pkg="pkg" type="t" name="cam"><param name="fps" value="30"/></node>\n'
+        "  </group>\n",
+    )
+    model = ws.analysis().model(file)
+    names = sorted((o.kind, o.name) for o in declared_occurrences(model))
+    assert names == [
+        ("node", "/robot/base/driver"),
+        ("node", "/robot/cam"),
+        ("param", "/robot/cam/fps"),
+        ("param", "/robot/rate"),
+    ]
+
+
+def test_two_hundred_files_with_distinct_names(ws: LaunchWorkspace) -> None:
+    for i in range(200):
+        ws.launch(
+            f"f{i:03}.launch",
+            f'  <node pkg="pkg" type="t" name="node_{i}"/>\n  <param name="param_{i}" value="{i}"/>',
+        )
+    analysis = ws.analysis()
+    models = analysis.all_models()
+    buckets = index(models)
+    assert len(buckets) == 400
+    assert all(len(b) == 1 for b in buckets.values())
+    start = time.perf_counter()
+    assert clashes(buckets) == []
+    assert time.perf_counter() - start < 0.5
+    model = extract(analysis)
+    assert model.clashes == [] and model.internal == []
+    assert [c for c in model.constraints if c.kind == "excludes"] == []
+
+
+def test_twenty_files_one_shared_name(ws: LaunchWorkspace) -> None:
+    """The counterpart: one name in every file gives every pair of files (and only those)."""
+    for i in range(20):
+        ws.launch(
+            f"f{i:03}.launch",
+            f'  <node pkg="pkg" type="t" name="node_{i}"/>\n  <param name="shared" value="{i}"/>',
+        )
+    model = extract(ws.analysis())
+    assert len(model.clashes) == 20 * 19 // 2
+    assert {c.name for c in model.clashes} == {"/shared"}
+    assert len([c for c in model.constraints if c.kind == "excludes"]) == 190
