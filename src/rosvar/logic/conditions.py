@@ -77,7 +77,7 @@ class ConditionSpace:
         self._atom_of: dict[str, Atom] = {}
         self._domains: dict[Input, tuple[Slot, ...]] = {}
         self._input_constraints: dict[Input, BDD] = {}
-        self._known_cache: tuple[int, BDD, dict[Input, tuple[Slot, ...]]] = (-1, None, {})
+        self._facts_of: dict[str, list[BDD]] = {}
 
     # -- declaring atoms -------------------------------------------------------------
     def _new_var(self, atom: Atom) -> BDD:
@@ -147,6 +147,26 @@ class ConditionSpace:
     def constrain(self, constraint: BDD) -> None:
         """Add a fact every configuration satisfies (e.g. two predicates exclude each other)."""
         self._constraints.append(constraint)
+        for name in self.bdd.support(constraint):
+            self._facts_of.setdefault(name, []).append(constraint)
+
+    def care(self, condition: BDD) -> BDD:
+        """The facts that can matter for ``condition``: those over its variables.
+
+        Every other fact constrains inputs ``condition`` does not mention and is
+        satisfiable on its own, so it changes no answer about ``condition`` — and
+        the global conjunction grows with the whole workspace.
+        """
+        result = self.true
+        seen: set[int] = set()
+        for name in self.bdd.support(condition):
+            atom = self._atom_of[name]
+            if isinstance(atom, SlotAtom) and id(atom.input) not in seen:
+                seen.add(id(atom.input))
+                result &= self._input_constraints[atom.input]
+            for fact in self._facts_of.get(name, ()):
+                result &= fact
+        return result
 
     @property
     def valid(self) -> BDD:
@@ -159,11 +179,11 @@ class ConditionSpace:
 
     # -- questions ---------------------------------------------------------------------
     def satisfiable(self, condition: BDD) -> bool:
-        return bool((condition & self.valid) != self.false)
+        return bool((condition & self.care(condition)) != self.false)
 
     def valid_implies(self, condition: BDD) -> bool:
         """True when every valid configuration satisfies ``condition``."""
-        return bool((self.valid & ~condition) == self.false)
+        return bool((self.care(condition) & ~condition) == self.false)
 
     def assignment(
         self,
@@ -215,25 +235,34 @@ class ConditionSpace:
         """
         if condition == self.false or not self.satisfiable(condition):
             return "false"
-        domains = self._domains
+        local = self.care(condition)
+        involved = self._inputs_of(local)
         if known_only:
             others = {
                 name: False
-                for name in self.bdd.support(condition)
+                for name in self.bdd.support(local)
                 if isinstance(atom := self._atom_of[name], SlotAtom)
                 and atom.slot is OTHER
                 and isinstance(atom.input, ArgInput)
             }
             known = self.bdd.let(others, condition) if others else condition
-            care = self._known_valid()
+            care = self.bdd.let(others, local) if others else local
             if (known & care) == self.false:
                 return "only for other values"
             if (care & ~known) == self.false and not self.valid_implies(condition):
                 full = self.describe(condition, qualify, known_only=False)
                 return full if len(full) <= MAX_FULL else "true for every known value"
-            domains = self._known_domains()
+            domains = {
+                input_: tuple(
+                    s
+                    for s in self._domains[input_]
+                    if s is not OTHER or isinstance(input_, EnvInput)
+                )
+                for input_ in involved
+            }
         else:
-            known, care = condition, self.valid
+            known, care = condition, local
+            domains = {input_: self._domains[input_] for input_ in involved}
         simplified = _cudd.restrict(known, care)
         if simplified == self.true or (care & ~known) == self.false:
             return "true"
@@ -243,26 +272,12 @@ class ConditionSpace:
             return rendered[0]
         return " ∨ ".join(f"({r})" if "∧" in r else r for r in sorted(rendered))
 
-    def _known_valid(self) -> BDD:
-        """Validity with every arg holding a known value (cached per number of atoms)."""
-        if self._known_cache[0] != len(self._atoms):
-            others = {
-                name: False
-                for atom, name in self._var_of.items()
-                if isinstance(atom, SlotAtom)
-                and atom.slot is OTHER
-                and isinstance(atom.input, ArgInput)
-            }
-            domains = {
-                input_: tuple(s for s in slots if s is not OTHER or isinstance(input_, EnvInput))
-                for input_, slots in self._domains.items()
-            }
-            self._known_cache = (len(self._atoms), self.bdd.let(others, self.valid), domains)
-        return self._known_cache[1]
-
-    def _known_domains(self) -> dict[Input, tuple[Slot, ...]]:
-        self._known_valid()
-        return self._known_cache[2]
+    def _inputs_of(self, u: BDD) -> set[Input]:
+        return {
+            atom.input
+            for atom in (self._atom_of[name] for name in self.bdd.support(u))
+            if isinstance(atom, SlotAtom)
+        }
 
     def _prime_cubes(
         self,
