@@ -103,7 +103,8 @@ def test_two_hundred_files_with_distinct_names(ws: LaunchWorkspace) -> None:
     for i in range(200):
         ws.launch(
             f"f{i:03}.launch",
-            f'  <node pkg="pkg" type="t" name="node_{i}"/>\n  <param name="param_{i}" value="{i}"/>',
+            f'  <node pkg="pkg" type="t" name="node_{i}"/>\n'
+            f'  <param name="param_{i}" value="{i}"/>',
         )
     analysis = ws.analysis()
     models = analysis.all_models()

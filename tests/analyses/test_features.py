@@ -8,12 +8,13 @@ clashes inside one file are listed in :attr:`FeatureModel.internal`.
 
 from __future__ import annotations
 
+import itertools
 from typing import TYPE_CHECKING
 
 import pytest
 
 from rosvar.analyses.features import ArgFeature, Constraint, FeatureModel, FileFeature, extract
-from rosvar.logic.inputs import OTHER, UNSET, ArgInput
+from rosvar.logic.inputs import OTHER, ArgInput
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -76,7 +77,7 @@ def test_tree_of_files_args_and_value_groups(ws: LaunchWorkspace) -> None:
     assert [v.value for v in robot.values] == ["kobuki", "<other>"]
     assert [v.default for v in robot.values] == [True, False]
     assert robot.default == "kobuki" and not robot.boolean
-    # the default first, then the other Boolean word (x is tested by if=), then <other>
+    # the default first, then the other Boolean word (tested by if=), then <other>
     assert [v.value for v in use_cam.values] == ["false", "true", "<other>"]
     assert use_cam.boolean and use_cam.default == "false"
     # A required arg has no "not given" value: a product must give it.
@@ -103,13 +104,12 @@ def test_tree_semantics_child_implies_parent_and_one_value_per_arg(ws: LaunchWor
     present = solver.var(feature.variable)
     values = [solver.var(v.variable) for v in arg.values]
     false = solver.manager.false
+    assert len(values) == 3  # true, false, <other>
     for value in values:
-        # child ⇒ parent
-        assert (solver.tree & value & ~present) == false
-        # no two values of one arg
-        for other in values:
-            if other is not value and other != value:
-                assert (solver.tree & value & other) == false
+        assert (solver.tree & value & ~present) == false  # child ⇒ parent
+        assert (solver.tree & value) != false
+    for first, second in itertools.combinations(values, 2):
+        assert (solver.tree & first & second) == false  # no two values of one arg
     none = solver.manager.true
     for value in values:
         none &= ~value
@@ -250,12 +250,6 @@ def test_passing_an_arg_that_the_included_file_ignores(ws: LaunchWorkspace, attr
     assert arg_names(model, "b.launch") == []
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="graph_inputs (features.py:115-116) reads branch conditions only of choices with >1 "
-    "branch; a textfile whose <other> path becomes an error event leaves one branch (x=a), so "
-    "x is missed although it changes /p's value",
-)
 def test_an_arg_in_a_param_textfile_path_is_a_feature(ws: LaunchWorkspace) -> None:
     ws.write("config/a.yaml", "k: 1\n")
     ws.write("config/b.yaml", "k: 2\n")
@@ -270,12 +264,6 @@ def test_an_arg_in_a_param_textfile_path_is_a_feature(ws: LaunchWorkspace) -> No
     assert arg_names(model_of(ws), "a.launch") == ["x"]
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="graph_inputs (features.py:117-119) looks for terms only in Hole/Apply leaves; a "
-    "param value of an arg without default is DeferredValue(raw=Hole(frame)) in a single "
-    "branch, so frame is missed (turtlebot2: ACG 40 -> 48 with the fix)",
-)
 def test_a_required_arg_used_as_a_param_value_is_a_feature(ws: LaunchWorkspace) -> None:
     ws.launch("a.launch", '  <arg name="frame"/>\n  <param name="frame" value="$(arg frame)"/>')
     assert arg_names(model_of(ws), "a.launch") == ["frame"]
@@ -382,7 +370,8 @@ def test_conditional_clash_is_a_formula_over_both_files_args(ws: LaunchWorkspace
     )
     ws.launch(
         "b.launch",
-        '  <arg name="y" default="false"/>\n  <node pkg="pkg" type="t" name="n" unless="$(arg y)"/>',
+        '  <arg name="y" default="false"/>\n'
+        '  <node pkg="pkg" type="t" name="n" unless="$(arg y)"/>',
     )
     model = model_of(ws)
     [excludes] = constraints(model, "excludes")

@@ -9,8 +9,8 @@ import pytest
 
 from rosvar.analyses.features import (
     FeatureModel,
-    count_configurations,
     core_and_dead,
+    count_configurations,
     extract,
     simplest_trigger,
 )
@@ -173,7 +173,7 @@ def satisfied_by(
         if isinstance(input_, ArgInput) and input_.file == path:
             domain = space.domain(input_)
             given[input_] = trigger.get(
-                input_.name, domain[0] if isinstance(domain[0], str) else None
+                f"{file}:{input_.name}", domain[0] if isinstance(domain[0], str) else None
             )
     return space.evaluate(condition, space.assignment(given))
 
@@ -219,7 +219,7 @@ def test_simplest_trigger_gives_typeable_values(
     [excludes] = [c for c in model.constraints if c.kind == "excludes"]
     assert model.space.describe(excludes.condition) in ("x", "x=r2")
     trigger = simplest_trigger(model.space, excludes.condition)
-    assert trigger == {"x": wanted}
+    assert trigger == {"a.launch:x": wanted}
     assert satisfied_by(ws, model, excludes.condition, "a.launch", trigger)
 
 
@@ -242,19 +242,14 @@ def test_simplest_trigger_leaves_unrelated_args_alone(ws: LaunchWorkspace) -> No
     [excludes] = [c for c in model.constraints if c.kind == "excludes"]
     trigger = simplest_trigger(model.space, excludes.condition)
     defaults = {
-        "robot": "r1",
-        **{f"q{i}": "d" for i in range(3)},
-        **{f"w{i}": "true" for i in range(3)},
+        "a.launch:robot": "r1",
+        **{f"z{i}.launch:q{i}": "d" for i in range(3)},
+        **{f"z{i}.launch:w{i}": "true" for i in range(3)},
     }
-    assert {k: v for k, v in trigger.items() if defaults.get(k) != v} == {"robot": "r2"}
+    changed = {k: v for k, v in trigger.items() if defaults.get(k) != v}
+    assert changed == {"a.launch:robot": "r2"}
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="simplest_trigger keys the assignment by str(input), the bare arg name "
-    "(features.py, 'chosen[str(atom.input)]'); two files with an arg of one name overwrite each other, so the "
-    "clash a:x=true ∧ b:x=false cannot be expressed",
-)
 def test_simplest_trigger_tells_args_of_different_files_apart(ws: LaunchWorkspace) -> None:
     ws.launch(
         "a.launch",

@@ -20,7 +20,7 @@ import dd.cudd as _cudd
 from rosvar.analyses.conflicts import Clash, clashes, index
 from rosvar.diagnostics import Location
 from rosvar.interpreter.analysis import Analysis
-from rosvar.interpreter.model import LaunchModel, ParamDecl
+from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import BDD, ConditionSpace, FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
@@ -112,9 +112,11 @@ def graph_inputs(model: LaunchModel) -> set[ArgInput]:
     terms: set[ArgInput] = set()
 
     def add_choice(choice: Choice[object]) -> None:
-        if len(choice) > 1:
-            conditions.extend(c for c, _ in choice)
-        for _c, leaf in choice:
+        for condition, leaf in choice:
+            if condition != space.true:
+                conditions.append(condition)
+            if isinstance(leaf, DeferredValue):
+                leaf = leaf.raw
             if isinstance(leaf, Hole | Apply):
                 terms.update(_term_inputs(leaf))
 
@@ -475,10 +477,20 @@ def simplest_trigger(space: ConditionSpace, condition: BDD) -> dict[str, str]:
     for name, value in path.items():
         atom = space.atom_of(name)
         if value and isinstance(atom, SlotAtom):
-            chosen[str(atom.input)] = _value_text(atom.slot, None)
+            input_ = atom.input
+            key = (
+                f"{_short(input_.file)}:{input_.name}"
+                if isinstance(input_, ArgInput)
+                else str(input_)
+            )
+            chosen[key] = _value_text(atom.slot, None)
         elif value and isinstance(atom, FileAtom):
             chosen[atom.label] = "selected"
     return chosen
+
+
+def _short(file: str) -> str:
+    return os.path.basename(file)
 
 
 def _cost(space: ConditionSpace, name: str) -> float:

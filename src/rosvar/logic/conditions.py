@@ -23,6 +23,11 @@ BDD = Any  # dd.cudd.Function: dd ships no type information
 
 BOOLEAN_WORDS = ("true", "false")
 MAX_FULL = 200  # longer formulas over <other> values help nobody
+MAX_CUBES = 256  # beyond this many disjuncts a formula is no longer readable
+
+
+class _TooComplex(Exception):
+    """The condition has too many disjuncts to print usefully."""
 
 
 @dataclass(frozen=True)
@@ -266,7 +271,12 @@ class ConditionSpace:
         simplified = _cudd.restrict(known, care)
         if simplified == self.true or (care & ~known) == self.false:
             return "true"
-        cubes = self._prime_cubes(simplified, known, care, domains)
+        try:
+            cubes = self._prime_cubes(simplified, known, care, domains)
+        except _TooComplex:
+            names = sorted({str(i) for i in self._inputs_of(simplified)})
+            shown = ", ".join(names[:6]) + (", …" if len(names) > 6 else "")
+            return f"a condition over {len(names)} inputs ({shown})"
         rendered = [self._render_cube(cube, qualify, domains) for cube in cubes]
         if len(rendered) == 1:
             return rendered[0]
@@ -322,15 +332,20 @@ class ConditionSpace:
                 result &= any_slot
         return result
 
-    def _paths(self, u: BDD) -> Iterator[dict[str, bool]]:
+    def _paths(self, u: BDD, budget: list[int] | None = None) -> Iterator[dict[str, bool]]:
+        if budget is None:
+            budget = [MAX_CUBES]
         if u == self.false:
             return
         if u == self.true:
+            budget[0] -= 1
+            if budget[0] < 0:
+                raise _TooComplex
             yield {}
             return
         var = u.var
         for value in (False, True):
-            for path in self._paths(self.bdd.let({var: value}, u)):
+            for path in self._paths(self.bdd.let({var: value}, u), budget):
                 yield {var: value, **path}
 
     def _grouped_cubes(
@@ -397,19 +412,35 @@ def _sort_key(key: object) -> tuple[int, str]:
 def _merge_cubes(
     cubes: list[dict[object, frozenset[Slot] | bool]], domains: Mapping[Input, tuple[Slot, ...]]
 ) -> list[dict[object, frozenset[Slot] | bool]]:
-    """Join cubes that differ only in the slots of one input (x=a ∨ x=b → x∈{a,b})."""
+    """Join cubes that differ only in the slots of one input (x=a ∨ x=b → x∈{a,b}).
+
+    Cubes are bucketed by everything but one key, so each round is linear in the
+    number of cubes rather than quadratic.
+    """
     changed = True
     while changed and len(cubes) > 1:
         changed = False
-        for i in range(len(cubes)):
-            for j in range(i + 1, len(cubes)):
-                merged = _merge_pair(cubes[i], cubes[j], domains)
-                if merged is not None:
-                    cubes = [c for k, c in enumerate(cubes) if k not in (i, j)] + [merged]
-                    changed = True
-                    break
-            if changed:
-                break
+        keys = {key for cube in cubes for key in cube}
+        for key in sorted(keys, key=_sort_key):
+            buckets: dict[frozenset[tuple[object, object]], list[int]] = {}
+            for index, cube in enumerate(cubes):
+                rest = frozenset((k, v) for k, v in cube.items() if k != key)
+                buckets.setdefault(rest, []).append(index)
+            merged_any = False
+            result: list[dict[object, frozenset[Slot] | bool]] = []
+            for members in buckets.values():
+                current = cubes[members[0]]
+                for other_index in members[1:]:
+                    joined = _merge_pair(current, cubes[other_index], domains)
+                    if joined is None:
+                        result.append(cubes[other_index])
+                    else:
+                        current = joined
+                        merged_any = True
+                result.append(current)
+            if merged_any:
+                cubes = result
+                changed = True
     return cubes
 
 

@@ -21,7 +21,7 @@ _ADD_EXECUTABLE = re.compile(r"add_executable\s*\(\s*([^\s)]+)", re.IGNORECASE)
 _INSTALL_PROGRAMS = re.compile(
     r"(?:catkin_install_python|install)\s*\(\s*PROGRAMS\s+([^)]*)\)", re.IGNORECASE
 )
-_CONSOLE_SCRIPT = re.compile(r"^\s*['\"]?([\w.-]+)\s*=\s*[\w.]+:\w+", re.MULTILINE)
+_CONSOLE_SCRIPT = re.compile(r"([\w.-]+)\s*=\s*[\w.]+:\w+")
 
 
 def executables(package: Package) -> frozenset[str]:

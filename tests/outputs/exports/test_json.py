@@ -1,0 +1,175 @@
+"""JSON export: keys and types of every part, the counts and findings of the solver, and the
+registry that dispatches to every writer."""
+
+from __future__ import annotations
+
+import json
+from typing import TYPE_CHECKING, Any
+
+import pytest
+
+from rosvar.analyses.features import FeatureModel, core_and_dead, count_configurations, extract
+from rosvar.outputs.exports import WRITERS, write
+from rosvar.outputs.exports import json as json_export
+from rosvar.outputs.exports._common import Tree
+
+from .test_uvl import tricky
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace  # tests/conftest.py
+
+LOCATION = {"file": str, "line": int, "col": int}
+
+
+def typed(data: dict[str, Any], schema: dict[str, Any]) -> None:
+    """``data`` has exactly ``schema``'s keys, each value of its type (a tuple: any of them)."""
+    assert set(data) == set(schema), set(data) ^ set(schema)
+    for key, kind in schema.items():
+        assert isinstance(data[key], kind), (key, data[key])
+
+
+def check(model: FeatureModel) -> dict[str, Any]:
+    text = write(model, "json")
+    document: dict[str, Any] = json.loads(text)
+    typed(
+        document,
+        {
+            "system": str,
+            "features": list,
+            "constraints": list,
+            "configurations": int,
+            "core": list,
+            "dead": list,
+            "conflicts": list,
+        },
+    )
+    tree = Tree(model)
+    assert document["system"] == tree.root
+    assert document["configurations"] == count_configurations(model)
+    ids = [f["id"] for f in document["features"]]
+    assert ids == [e.id for e in tree.entries]
+    kinds = {f["id"]: f["kind"] for f in document["features"]}
+    for feature in document["features"]:
+        common = {"id": str, "kind": str, "parent": (str, type(None))}
+        if feature["kind"] == "file":
+            typed(feature, {**common, "path": str, "args": list})
+            assert feature["parent"] is None
+            assert all(kinds[a] == "arg" for a in feature["args"])
+        elif feature["kind"] == "arg":
+            typed(
+                feature,
+                {
+                    **common,
+                    "name": str,
+                    "default": (str, type(None)),
+                    "boolean": bool,
+                    "values": list,
+                    "location": (dict, type(None)),
+                },
+            )
+            assert kinds[feature["parent"]] == "file"
+            assert all(kinds[v] == "value" for v in feature["values"])
+            if feature["location"] is not None:
+                typed(feature["location"], LOCATION)
+        else:
+            assert feature["kind"] == "value"
+            typed(feature, {**common, "value": str, "default": bool})
+            assert kinds[feature["parent"]] == "arg"
+    assert len(document["constraints"]) == len(model.constraints)
+    for constraint in document["constraints"]:
+        typed(
+            constraint,
+            {
+                "kind": str,
+                "files": list,
+                "condition": str,
+                "unconditional": bool,
+                "text": str,
+                "formula": (str, type(None)),
+                "locations": list,
+            },
+        )
+        assert constraint["kind"] in ("requires", "excludes")
+        assert all(kinds[f] == "file" for f in constraint["files"])
+        for location in constraint["locations"]:
+            typed(location, LOCATION)
+    verdicts = core_and_dead(model)
+    for kind in ("core", "dead"):
+        assert [v["feature"] for v in document[kind]] == [
+            v.feature for v in verdicts if v.kind == kind
+        ]
+        for verdict in document[kind]:
+            typed(verdict, {"feature": str, "because": list})
+    for conflict in document["conflicts"]:
+        typed(
+            conflict,
+            {
+                "kind": str,
+                "name": str,
+                "files": list,
+                "condition": str,
+                "trigger": dict,
+                "locations": list,
+            },
+        )
+        assert all(kinds[f] == "file" for f in conflict["files"])
+        assert all(
+            isinstance(k, str) and isinstance(v, str) for k, v in conflict["trigger"].items()
+        )
+    return document
+
+
+def test_corpus(model: FeatureModel) -> None:
+    check(model)
+
+
+def test_examples(examples_model: FeatureModel) -> None:
+    document = check(examples_model)
+    assert document["configurations"] == 330
+    requires = document["constraints"][0]
+    assert requires == {
+        "kind": "requires",
+        "files": ["example/launch/mapping.launch", "example/launch/control.xml"],
+        "condition": "¬sim",
+        "unconditional": False,
+        "text": "example/launch/mapping.launch includes example/launch/control.xml",
+        "formula": "example/launch/mapping.launch:sim=false ⇒ example/launch/control.xml",
+        "locations": [requires["locations"][0]],
+    }
+    triggers = {(c["name"], c["condition"]): c["trigger"] for c in document["conflicts"]}
+    assert triggers == {
+        ("/controller", "use_teleop"): {"use_teleop": "true"},
+        ("/controller", "¬use_teleop"): {"use_teleop": "false"},
+        ("/max_speed", "true"): {},
+    }
+    arg = next(f for f in document["features"] if f["id"] == "example/launch/control.xml:vel_topic")
+    assert (arg["default"], arg["boolean"], len(arg["values"])) == ("cmd_vel", False, 2)
+
+
+def test_dead_features_are_explained(ws: LaunchWorkspace) -> None:
+    """A file that includes two files clashing unconditionally can never be selected."""
+    ws.launch(
+        "both.launch",
+        '  <include file="$(find pkg)/launch/a.launch"/>\n'
+        '  <include file="$(find pkg)/launch/b.launch"/>',
+    )
+    for name in ("a.launch", "b.launch"):
+        ws.launch(name, '  <node pkg="pkg" type="t" name="same"/>')
+    document = check(extract(ws.analysis()))
+    assert [v["feature"] for v in document["dead"]] == ["pkg/launch/both.launch"]
+    assert len(document["dead"][0]["because"]) == 3
+
+
+def test_tricky(ws: LaunchWorkspace) -> None:
+    document = check(tricky(ws))
+    (conflict,) = document["conflicts"]
+    assert conflict["trigger"] == {"on": "true"}
+
+
+def test_registry(examples_model: FeatureModel) -> None:
+    assert set(WRITERS) == {"text", "json", "uvl", "featureide", "dot"}
+    for name, writer in WRITERS.items():
+        assert write(examples_model, name) == writer(examples_model)
+    assert write(examples_model, "json") == json_export.write(examples_model)
+    with pytest.raises(ValueError, match="unknown feature-model format 'sxfm'"):
+        write(examples_model, "sxfm")

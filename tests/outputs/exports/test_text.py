@@ -1,0 +1,75 @@
+"""Text report: the counts, the tree with ✓ defaults, constraints with readable conditions,
+core/dead features with their reasons and conflicts with their simplest trigger."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from rosvar.analyses.features import FeatureModel, count_configurations, extract
+from rosvar.outputs.exports import text
+from rosvar.outputs.exports._common import conflicts
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace  # tests/conftest.py
+
+
+def sections(report: str) -> dict[str, list[str]]:
+    """Blocks separated by blank lines, keyed by their first line."""
+    blocks = [block.splitlines() for block in report.strip().split("\n\n")]
+    return {block[0]: block[1:] for block in blocks}
+
+
+def test_examples(examples_model: FeatureModel) -> None:
+    report = sections(text.write(examples_model))
+    assert report["Feature model of examples"] == [
+        "  4 launch files, 7 arg features, 16 values",
+        "  3 constraints: 1 excludes (0 conditional), 2 requires (1 conditional)",
+        "  330 valid configurations",
+    ]
+    tree = report["Tree (files optional, one value per arg, ✓ default)"]
+    start = tree.index("    example/launch/control.xml")
+    assert tree[start : start + 4] == [
+        "    example/launch/control.xml",
+        "      use_teleop (boolean)",
+        "        ✓ true",
+        "          false",
+    ]
+    constraints = report["Constraints"]
+    assert constraints[0] == (
+        "  requires example/launch/mapping.launch → example/launch/control.xml, when ¬sim"
+    )
+    assert "  excludes example/launch/control.xml ⊗ example/launch/teleop_only.launch, always" in (
+        constraints
+    )
+    assert report["Core and dead features"] == [
+        "  none: every feature can be selected and deselected"
+    ]
+    conflicts = report["Conflicts (name clashes)"]
+    assert conflicts[0].startswith("  node /controller: example/launch/control.xml:6:3 and ")
+    assert conflicts[1] == "    simplest trigger: use_teleop=true"
+    assert conflicts[-1] == "    simplest trigger: any values"
+
+
+def test_corpus(model: FeatureModel) -> None:
+    report = text.write(model)
+    assert f"  {count_configurations(model)} valid configurations\n" in report
+    for file in model.files:
+        assert f"\n    {file.id}\n" in report
+    assert report.count("\n    simplest trigger: ") == len(conflicts(model))
+
+
+def test_dead_feature_with_reasons(ws: LaunchWorkspace) -> None:
+    ws.launch(
+        "both.launch",
+        '  <include file="$(find pkg)/launch/a.launch"/>\n'
+        '  <include file="$(find pkg)/launch/b.launch"/>',
+    )
+    for name in ("a.launch", "b.launch"):
+        ws.launch(name, '  <node pkg="pkg" type="t" name="same"/>')
+    report = sections(text.write(extract(ws.analysis())))
+    assert report["Core and dead features"] == [
+        "  dead pkg/launch/both.launch",
+        "    because pkg/launch/both.launch includes pkg/launch/a.launch",
+        "    because pkg/launch/both.launch includes pkg/launch/b.launch",
+        "    because pkg/launch/a.launch and pkg/launch/b.launch both declare node /same",
+    ]

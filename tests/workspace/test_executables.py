@@ -1,0 +1,125 @@
+"""``executables(package)``: the names a node's ``type`` can take in a package."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from rosvar.workspace import Package, discover
+from rosvar.workspace.executables import executables
+
+MANIFEST = '<?xml version="1.0"?>\n<package format="2"><name>{}</name></package>\n'
+
+
+def package_dir(tmp_path: Path, name: str = "drv") -> Path:
+    directory = tmp_path / name
+    directory.mkdir(parents=True)
+    (directory / "package.xml").write_text(MANIFEST.format(name))
+    return directory
+
+
+def write(path: Path, text: str = "", mode: int | None = None) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text)
+    if mode is not None:
+        path.chmod(mode)
+
+
+def test_executables_file_is_read_by_discovery(tmp_path: Path) -> None:
+    directory = package_dir(tmp_path)
+    write(directory / ".executables", "driver_node\n\n  spaced_tool  \n")
+    [package] = discover([tmp_path], ros_package_path="").packages.values()
+    assert package.executables == frozenset({"driver_node", "spaced_tool"})
+    assert executables(package) == {"driver_node", "spaced_tool"}
+
+
+def test_no_executables_file_means_unknown_not_empty(tmp_path: Path) -> None:
+    package_dir(tmp_path)
+    [package] = discover([tmp_path], ros_package_path="").packages.values()
+    assert package.executables is None
+    assert executables(package) == frozenset()
+
+
+def test_scripts_nodes_and_bin(tmp_path: Path) -> None:
+    directory = package_dir(tmp_path)
+    write(directory / "scripts" / "teleop.py")  # .py counts even without the x bit
+    write(directory / "scripts" / "run_me", "#!/bin/sh\n", 0o755)
+    write(directory / "scripts" / "README", "docs\n")  # neither .py nor executable
+    write(directory / "nodes" / "mover", "#!/usr/bin/env python\n", 0o755)
+    write(directory / "bin" / "helper.py")
+    write(directory / "src" / "lib.py")  # not a script folder, not executable
+    write(directory / "launch" / "wrapper.py", "", 0o755)  # executable anywhere: found
+    write(directory / "meshes" / "body.dae", "", 0o755)  # meshes are not executables
+    package = Package("drv", str(directory), None)
+    assert executables(package) == {"teleop.py", "run_me", "mover", "helper.py", "wrapper.py"}
+
+
+def test_cmake_targets(tmp_path: Path) -> None:
+    directory = package_dir(tmp_path)
+    write(
+        directory / "CMakeLists.txt",
+        "cmake_minimum_required(VERSION 3.0.2)\nproject(drv)\n"
+        "add_executable(${PROJECT_NAME}_node src/node.cpp)\n"
+        "ADD_EXECUTABLE( upper_case src/u.cpp )\n"
+        "add_executable(${UNKNOWN_VAR}_x src/x.cpp)\n"
+        "catkin_install_python(PROGRAMS scripts/a.py nodes/b\n"
+        "  DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n"
+        "install(PROGRAMS tools/c.sh DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n",
+    )
+    package = Package("drv", str(directory), None)
+    assert executables(package) == {"drv_node", "upper_case", "a.py", "b", "c.sh"}
+
+
+def test_setup_py_console_scripts_multiline(tmp_path: Path) -> None:
+    directory = package_dir(tmp_path)
+    write(
+        directory / "setup.py",
+        "from setuptools import setup\n"
+        "setup(\n"
+        "    name='drv',\n"
+        "    entry_points={\n"
+        "        'console_scripts': [\n"
+        "            'talker = drv.talker:main',\n"
+        '            "listener=drv.listener:main",\n'
+        "        ],\n"
+        "    },\n"
+        ")\n",
+    )
+    package = Package("drv", str(directory), None)
+    assert executables(package) == {"talker", "listener"}
+
+
+def test_setup_cfg_console_scripts(tmp_path: Path) -> None:
+    directory = package_dir(tmp_path)
+    write(
+        directory / "setup.cfg",
+        "[metadata]\nname = drv\n\n[options.entry_points]\nconsole_scripts =\n"
+        "    cfg_tool = drv.tool:main\n",
+    )
+    package = Package("drv", str(directory), None)
+    assert executables(package) == {"cfg_tool"}
+
+
+def test_setup_py_console_scripts_on_one_line(tmp_path: Path) -> None:
+    directory = package_dir(tmp_path)
+    write(
+        directory / "setup.py",
+        "from setuptools import setup\n"
+        "setup(name='drv', entry_points={'console_scripts': "
+        "['talker = drv.talker:main', 'listener = drv.listener:main']})\n",
+    )
+    package = Package("drv", str(directory), None)
+    assert executables(package) == {"talker", "listener"}
+
+
+def test_all_sources_together(tmp_path: Path) -> None:
+    directory = package_dir(tmp_path)
+    write(directory / ".executables", "listed\n")
+    write(directory / "scripts" / "script.py")
+    write(directory / "CMakeLists.txt", "project(drv)\nadd_executable(built src/a.cpp)\n")
+    write(
+        directory / "setup.py",
+        "setup(\n    entry_points={\n        'console_scripts': [\n"
+        "            'entry = drv.e:main',\n        ]\n    }\n)\n",
+    )
+    [package] = discover([tmp_path], ros_package_path="").packages.values()
+    assert executables(package) == {"listed", "script.py", "built", "entry"}
