@@ -198,8 +198,9 @@ def test_simplest_trigger_of_a_name_clash(ws: LaunchWorkspace) -> None:
     assert model.space.describe(excludes.condition) == "robot=r2"
     trigger = simplest_trigger(model.space, excludes.condition)
     assert satisfied_by(ws, model, excludes.condition, "a.launch", trigger)
-    defaults = {"rate": "10", "robot": "r1"}
-    assert {k: v for k, v in trigger.items() if defaults.get(k) != v} == {"robot": "r2"}
+    defaults = {"a.launch:rate": "10", "a.launch:robot": "r1"}
+    changed = {k: v for k, v in trigger.items() if defaults.get(k) != v}
+    assert changed == {"a.launch:robot": "r2"}
 
 
 @pytest.mark.parametrize(
