@@ -418,16 +418,43 @@ def core_and_dead(model: FeatureModel) -> list[Verdict]:
 
 
 def _explain(model: FeatureModel, goal: BDD) -> list[str]:
-    """A minimal set of cross-tree constraints that rules ``goal`` out (deletion-based)."""
+    """A minimal set of cross-tree constraints that rules ``goal`` out (deletion-based).
+
+    The search starts from the constraints around the feature's file and widens one
+    hop of the constraint graph at a time: explanations are local in practice, and
+    conjoining every constraint of a large system for each trial would be quadratic
+    in expensive BDD operations.
+    """
     solver = model.solver
-    kept = list(range(len(model.constraints)))
+    false = solver.manager.false
+    mentioned = {name for name in solver.manager.support(goal)}
+    files = {f.id for f in model.files if _name(f.variable) in mentioned} | {
+        f.id
+        for f in model.files
+        for a in f.args
+        for v in a.values
+        if _name(v.variable) in mentioned
+    }
+    chosen: list[int] = []
+    while True:
+        chosen = [n for n, c in enumerate(model.constraints) if set(c.files) & files]
+        formula = solver.tree & goal
+        for number in chosen:
+            formula &= solver.constraints[number]
+        if formula == false:
+            break
+        wider = files | {f for n in chosen for f in model.constraints[n].files}
+        if wider == files:
+            return ["the whole model (no local reason found)"]
+        files = wider
+    kept = chosen
     position = 0
     while position < len(kept):
         trial = kept[:position] + kept[position + 1 :]
         formula = solver.tree & goal
         for number in trial:
             formula &= solver.constraints[number]
-        if formula == solver.manager.false:
+        if formula == false:
             kept = trial
         else:
             position += 1
