@@ -265,3 +265,29 @@ def test_simplest_trigger_tells_args_of_different_files_apart(ws: LaunchWorkspac
     trigger = simplest_trigger(model.space, excludes.condition)
     # some key must say a's x is true and another that b's x is false
     assert sorted(trigger.values()) == ["false", "true"]
+
+
+@pytest.mark.parametrize("system", ["examples", "lizi", "kobuki"])
+def test_one_pass_possible_values_match_asking_the_solver(system: str) -> None:
+    """_possible_values (one BDD traversal) agrees with two solver queries per variable."""
+    from pathlib import Path
+
+    from rosvar.analyses.features import _possible_values
+    from rosvar.interpreter.analysis import Analysis
+    from rosvar.workspace import discover
+
+    root = Path(__file__).resolve().parents[2]
+    path = root / "examples" if system == "examples" else root.parent / "shared" / "corpus" / system
+    if not path.is_dir():
+        pytest.skip(f"{path} is not here")
+    model = extract(Analysis(discover([str(path)], ros_package_path="")))
+    solver = model.solver
+    fast = _possible_values(solver)
+    for name in solver.variables:
+        variable = solver.manager.var(name)
+        slow = {
+            value
+            for value, part in ((True, variable), (False, ~variable))
+            if (solver.formula & part) != solver.manager.false
+        }
+        assert fast[name] == slow, name

@@ -402,19 +402,70 @@ class Verdict:
 def core_and_dead(model: FeatureModel) -> list[Verdict]:
     """Features in every (core) or no (dead) valid configuration, with the constraints why."""
     solver = model.solver
-    false = solver.manager.false
     verdicts: list[Verdict] = []
     candidates: list[tuple[str, BDD]] = []
     for file in model.files:
         candidates.append((file.id, solver.var(file.variable)))
         for arg in file.args:
             candidates.extend((v.id, solver.var(v.variable)) for v in arg.values)
+    possible = _possible_values(solver)
     for feature_id, variable in candidates:
-        if (solver.formula & variable) == false:
+        values = possible.get(_name(variable), {False, True})
+        if True not in values:
             verdicts.append(Verdict(feature_id, "dead", _explain(model, variable)))
-        elif (solver.formula & ~variable) == false:
+        elif False not in values:
             verdicts.append(Verdict(feature_id, "core", _explain(model, ~variable)))
     return verdicts
+
+
+def _possible_values(solver: Solver) -> dict[str, set[bool]]:
+    """For every variable, the values it takes in some valid configuration — one BDD pass.
+
+    A value is possible when some path to TRUE sets it, or skips the variable's level
+    (then it is free). Asking the solver twice per feature instead costs two
+    operations on the whole diagram each, minutes on a large system.
+    """
+    manager = solver.manager
+    depth = len(solver.variables)
+    names = [manager.var_at_level(level) for level in range(depth)]
+    possible: dict[str, set[bool]] = {name: set() for name in names}
+    free = [0] * (depth + 1)  # difference array over levels skipped by some edge
+    root = solver.formula
+    if root == manager.false:
+        return possible
+
+    def level(u: BDD) -> int:
+        return depth if u in (manager.true, manager.false) else int(u.level)
+
+    def skip(start: int, stop: int) -> None:
+        if start < stop:
+            free[start] += 1
+            free[stop] -= 1
+
+    skip(0, level(root))
+    seen: set[BDD] = set()
+    stack = [root]
+    while stack:
+        u = stack.pop()
+        if u in seen or u == manager.true:
+            continue
+        seen.add(u)
+        low, high = u.low, u.high
+        if u.negated:
+            low, high = ~low, ~high
+        here = int(u.level)
+        for value, child in ((False, low), (True, high)):
+            if child == manager.false:
+                continue
+            possible[names[here]].add(value)
+            skip(here + 1, level(child))
+            stack.append(child)
+    running = 0
+    for index, name in enumerate(names):
+        running += free[index]
+        if running > 0:
+            possible[name] = {False, True}
+    return possible
 
 
 def _explain(model: FeatureModel, goal: BDD) -> list[str]:

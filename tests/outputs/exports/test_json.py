@@ -138,8 +138,8 @@ def test_examples(examples_model: FeatureModel) -> None:
     }
     triggers = {(c["name"], c["condition"]): c["trigger"] for c in document["conflicts"]}
     assert triggers == {
-        ("/controller", "use_teleop"): {"use_teleop": "true"},
-        ("/controller", "¬use_teleop"): {"use_teleop": "false"},
+        ("/controller", "use_teleop"): {"control.xml:use_teleop": "true"},
+        ("/controller", "¬use_teleop"): {"control.xml:use_teleop": "false"},
         ("/max_speed", "true"): {},
     }
     arg = next(f for f in document["features"] if f["id"] == "example/launch/control.xml:vel_topic")
@@ -163,7 +163,7 @@ def test_dead_features_are_explained(ws: LaunchWorkspace) -> None:
 def test_tricky(ws: LaunchWorkspace) -> None:
     document = check(tricky(ws))
     (conflict,) = document["conflicts"]
-    assert conflict["trigger"] == {"on": "true"}
+    assert conflict["trigger"] == {"clash.launch:on": "true"}
 
 
 def test_registry(examples_model: FeatureModel) -> None:

@@ -46,7 +46,7 @@ def test_examples(examples_model: FeatureModel) -> None:
     ]
     conflicts = report["Conflicts (name clashes)"]
     assert conflicts[0].startswith("  node /controller: example/launch/control.xml:6:3 and ")
-    assert conflicts[1] == "    simplest trigger: use_teleop=true"
+    assert conflicts[1] == "    simplest trigger: control.xml:use_teleop=true"
     assert conflicts[-1] == "    simplest trigger: any values"
 
 

@@ -15,10 +15,9 @@ from rosvar.analyses.features import (
     FeatureModel,
     FileFeature,
     ValueFeature,
+    simplest_trigger,
 )
-from rosvar.logic.conditions import BDD, FileAtom, PredicateAtom, SlotAtom
-from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Input, Slot
-from rosvar.logic.terms import Apply, Hole, Operand
+from rosvar.logic.conditions import BDD
 
 
 def system_name(model: FeatureModel) -> str:
@@ -116,105 +115,22 @@ def conflicts(model: FeatureModel) -> list[Clash]:
 
 
 class Triggers:
-    """For each conflict condition, the input values that make it hold with fewest changes.
+    """``simplest_trigger`` of each conflict condition, once per distinct condition.
 
-    The reading of ``features.simplest_trigger`` (cost: one per input not at its first slot
-    or unset), but searched over the inputs the condition mentions only: ``simplest_trigger``
-    enumerates assignments of every atom of the analysis, so its first 257 candidates differ
-    only in the last-declared inputs and it answers with ``<other>`` for all of them.
-    Keys are arg names (``$NAME`` for environment variables), qualified by their file's id
-    when two files' args share a name. Computed once per distinct condition.
+    Clashes between two files mostly share a condition (often ``true``), and the search is
+    a walk over the condition's BDD, so a cache keyed by the BDD saves most of the work.
     """
 
-    LIMIT = 4096  # candidate assignments looked at; conditions mention few inputs
-
-    def __init__(self, model: FeatureModel, tree: Tree | None = None) -> None:
-        self.model = model
-        self.tree = tree if tree is not None else Tree(model)
+    def __init__(self, model: FeatureModel) -> None:
+        self.space = model.space
         self._cache: dict[BDD, dict[str, str]] = {}
 
     def __call__(self, condition: BDD) -> dict[str, str]:
         found = self._cache.get(condition)
         if found is None:
-            found = self._search(condition)
+            found = dict(sorted(simplest_trigger(self.space, condition).items()))
             self._cache[condition] = found
         return found
-
-    def _search(self, condition: BDD) -> dict[str, str]:
-        space = self.model.space
-        inputs: set[Input] = set()
-        care: set[str] = set()
-        for name in space.bdd.support(condition):
-            atom = space.atom_of(name)
-            if isinstance(atom, SlotAtom):
-                inputs.add(atom.input)
-            elif isinstance(atom, PredicateAtom):
-                inputs |= _predicate_inputs(atom)
-                care.add(name)
-            else:
-                care.add(name)
-        declared = set(space.inputs())
-        inputs = {i for i in inputs if i in declared}
-        domains = {i: space.domain(i) for i in inputs}
-        within = condition
-        for input_ in inputs:
-            within &= space.input_constraint(input_)
-            care |= {space.variable_name(SlotAtom(input_, slot)) for slot in domains[input_]}
-        ranked: list[tuple[int, int, list[str], dict[str, bool]]] = []
-        for number, assignment in enumerate(space.bdd.pick_iter(within, care_vars=care)):
-            if number >= self.LIMIT:
-                break
-            cost, others, shown = 0, 0, []
-            for name, value in sorted(assignment.items()):
-                atom = space.atom_of(name)
-                if value and isinstance(atom, SlotAtom):
-                    first = domains[atom.input][0]
-                    cost += 0 if atom.slot is UNSET or atom.slot == first else 1
-                    others += atom.slot is OTHER  # a value analysis knows reads better
-                    shown.append(f"{atom.input}={_slot(atom.slot)}")
-            ranked.append((cost, others, sorted(shown), assignment))
-        ranked.sort(key=lambda r: (r[0], r[1], r[2]))
-        for *_, assignment in ranked:  # the cheapest that the whole analysis allows
-            if space.satisfiable(space.bdd.cube(assignment)):
-                return self._named(assignment)
-        return {}
-
-    def _named(self, assignment: dict[str, bool]) -> dict[str, str]:
-        space = self.model.space
-        chosen: list[tuple[Input | str, str]] = []
-        for name, value in assignment.items():
-            atom = space.atom_of(name)
-            if value and isinstance(atom, SlotAtom):
-                chosen.append((atom.input, _slot(atom.slot)))
-            elif value and isinstance(atom, FileAtom):
-                chosen.append((self.tree.file_id(atom.file), "selected"))
-        counts: dict[str, int] = {}
-        for key, _ in chosen:
-            counts[str(key)] = counts.get(str(key), 0) + 1
-        named: dict[str, str] = {}
-        for key, text in chosen:
-            label = str(key)
-            if isinstance(key, ArgInput) and counts[label] > 1:
-                label = f"{self.tree.file_id(key.file)}:{key.name}"
-            named[label] = text
-        return dict(sorted(named.items()))
-
-
-def _slot(slot: Slot) -> str:
-    return slot if isinstance(slot, str) else repr(slot)
-
-
-def _predicate_inputs(atom: PredicateAtom) -> set[Input]:
-    """The inputs whose typed-in strings a predicate tests."""
-    found: set[Input] = set()
-    pending: list[Operand] = [atom.term]
-    while pending:
-        operand = pending.pop()
-        if isinstance(operand, Hole):
-            found.add(operand.input)
-        elif isinstance(operand, Apply):
-            pending.extend(operand.operands)
-    return found
 
 
 def escape(text: str, reserved: str) -> str:

@@ -50,7 +50,7 @@ def document(model: FeatureModel) -> dict[str, Any]:
     verdicts: dict[str, list[dict[str, Any]]] = {"core": [], "dead": []}
     for verdict in core_and_dead(model):
         verdicts[verdict.kind].append({"feature": verdict.feature, "because": verdict.because})
-    trigger = Triggers(model, tree)
+    trigger = Triggers(model)
     return {
         "system": tree.root,
         "features": [_feature(tree, i) for i in range(len(tree.entries))],

@@ -106,7 +106,7 @@ def _conflicts(model: FeatureModel, tree: Tree) -> list[str]:
     found = conflicts(model)
     if not found:
         lines.append(f"{INDENT}none")
-    trigger = Triggers(model, tree)
+    trigger = Triggers(model)
     describe = model.space.describe
     for clash in found:
         first, second = clash.first, clash.second
