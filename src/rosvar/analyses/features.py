@@ -461,8 +461,8 @@ def _possible_values(solver: Solver) -> dict[str, set[bool]]:
             skip(here + 1, level(child))
             stack.append(child)
     running = 0
-    for index, name in enumerate(names):
-        running += free[index]
+    for position, name in enumerate(names):
+        running += free[position]
         if running > 0:
             possible[name] = {False, True}
     return possible
