@@ -152,7 +152,8 @@ def resolve(
 ) -> Resolution:
     """What ``roslaunch FILES name:=value...`` loads in environment ``env``."""
     result = Resolution()
-    args = {k: v for k, v in (args or {}).items() if names.settable(k)}
+    # as roslaunch reads its command line: e.g. `x:=` (empty) or `3d:=v` never reach an arg
+    args = names.command_line_mappings([f"{k}:={v}" for k, v in (args or {}).items()])
     seen_nodes: dict[str, Location] = {}
     machines: set[str] = set()
     anon_offset = 0

@@ -136,6 +136,7 @@ class DomainTable:
     ) -> None:
         self.workspace = workspace
         self._executables = extra_executables or {}
+        self._forwards: dict[str, list[tuple[str, str]]] = {}
         self._facts: dict[str, dict[str, ArgFacts]] = {}
         self._passed: dict[str, dict[str, set[str]]] | None = None
         self._extra = extra_values or {}
@@ -155,7 +156,9 @@ class DomainTable:
         default = entry.defaults[0]
         return None if default is None or "$" in default else default
 
-    def arg_domain(self, file: str, name: str) -> tuple[Slot, ...]:
+    def arg_domain(
+        self, file: str, name: str, seen: frozenset[str] = frozenset()
+    ) -> tuple[Slot, ...]:
         entry = self.facts(file).get(name, ArgFacts())
         literals: list[str] = []
         default = self.unset_default(file, name)
@@ -165,6 +168,7 @@ class DomainTable:
         if entry.tested:
             literals.extend(["true", "false"])
         literals.extend(sorted(self.passed_literals(file).get(name, ())))
+        literals.extend(sorted(self.forwarded_literals(file, name, seen)))
         literals.extend(sorted(self._inferred(entry)))
         literals.extend(self._extra.get(name, ()))
         literals.extend(self._extra.get(f"{os.path.basename(file)}:{name}", ()))
@@ -202,6 +206,26 @@ class DomainTable:
             self._passed = self._index_includes()
         return self._passed.get(os.path.realpath(file), {})
 
+    def forwarded_literals(
+        self, file: str, name: str, seen: frozenset[str] = frozenset()
+    ) -> set[str]:
+        """Values the files ``file`` passes ``$(arg name)`` on to know for their arg.
+
+        ``<include><arg name="y" value="$(arg x)"/></include>`` makes ``x`` range over
+        the included file's values of ``y`` (e.g. its ``true``/``false`` when ``y``
+        decides an ``if``), followed through chains of includes.
+        """
+        if self._passed is None:
+            self._passed = self._index_includes()
+        key = f"{os.path.realpath(file)}\x00{name}"
+        if key in seen:
+            return set()
+        values: set[str] = set()
+        for target, target_name in self._forwards.get(key, ()):
+            domain = self.arg_domain(target, target_name, seen | {key})
+            values |= {slot for slot in domain if isinstance(slot, str)}
+        return values
+
     def _index_includes(self) -> dict[str, dict[str, set[str]]]:
         index: dict[str, dict[str, set[str]]] = defaultdict(lambda: defaultdict(set))
         for launch_file in self.workspace.launch_files:
@@ -216,8 +240,13 @@ class DomainTable:
                     continue
                 for child in element.children:
                     name, value = child.get("name"), child.get("value")
-                    if child.tag == "arg" and name and value is not None and "$" not in value:
+                    if child.tag != "arg" or not name or value is None:
+                        continue
+                    if "$" not in value:
                         index[target][name].add(value)
+                    elif forwarded := _WHOLE_ARG.fullmatch(value):
+                        source = f"{os.path.realpath(launch_file)}\x00{forwarded.group(1)}"
+                        self._forwards.setdefault(source, []).append((target, name))
         return index
 
     def _static_path(self, text: str, launch_file: str) -> str | None:

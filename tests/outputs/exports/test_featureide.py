@@ -89,7 +89,7 @@ def test_examples_structure(examples_model: FeatureModel, flamapy: Flamapy) -> N
         "</not>",
     ]
     read = flamapy.featureide(featureide.write(examples_model))
-    assert flamapy.brute_force_count(read) == 330
+    assert flamapy.brute_force_count(read) == 798
 
 
 def test_long_conjunctions_are_binary(ws: LaunchWorkspace, flamapy: Flamapy, schema: Any) -> None:

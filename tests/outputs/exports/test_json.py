@@ -125,7 +125,7 @@ def test_corpus(model: FeatureModel) -> None:
 
 def test_examples(examples_model: FeatureModel) -> None:
     document = check(examples_model)
-    assert document["configurations"] == 330
+    assert document["configurations"] == 798
     requires = document["constraints"][0]
     assert requires == {
         "kind": "requires",

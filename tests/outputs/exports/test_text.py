@@ -22,9 +22,9 @@ def sections(report: str) -> dict[str, list[str]]:
 def test_examples(examples_model: FeatureModel) -> None:
     report = sections(text.write(examples_model))
     assert report["Feature model of examples"] == [
-        "  4 launch files, 7 arg features, 16 values",
+        "  4 launch files, 7 arg features, 18 values",
         "  3 constraints: 1 excludes (0 conditional), 2 requires (1 conditional)",
-        "  330 valid configurations",
+        "  798 valid configurations",
     ]
     tree = report["Tree (files optional, one value per arg, ✓ default)"]
     start = tree.index("    example/launch/control.xml")
