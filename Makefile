@@ -55,6 +55,8 @@ $(STAMP): pyproject.toml | $(VPY)
 
 demo: setup
 	$(VENV)/bin/rosvar analyze examples
+	$(VENV)/bin/rosvar features examples
+	$(VENV)/bin/rosvar resolve examples --launch examples/example/launch/robot.launch use_teleop:=true
 
 test: setup
 	$(VPY) -m ruff check src tests bench
