@@ -10,6 +10,7 @@ never changes the semantics, only how finely conditions are split.
 
 from __future__ import annotations
 
+import functools
 import os
 import re
 from collections import defaultdict
@@ -24,6 +25,7 @@ from rosvar.workspace import Workspace
 from rosvar.workspace.executables import executables
 
 _WHOLE_ARG = re.compile(r"\s*\$\(arg\s+([^\s)]+)\s*\)\s*")
+_realpath = functools.lru_cache(maxsize=65536)(os.path.realpath)
 _FIND = re.compile(r"\$\(find\s+([^\s)]+)\s*\)")
 _ONE_ARG = re.compile(r"([^$]*)\$\(arg\s+([^\s)]+)\s*\)([^$]*)")
 PARAM_TYPES = ("str", "string", "int", "double", "bool", "boolean", "yaml", "auto")
@@ -204,7 +206,7 @@ class DomainTable:
         """Literal values that including files pass to ``file``'s args."""
         if self._passed is None:
             self._passed = self._index_includes()
-        return self._passed.get(os.path.realpath(file), {})
+        return self._passed.get(_realpath(file), {})
 
     def forwarded_literals(
         self, file: str, name: str, seen: frozenset[str] = frozenset()
@@ -217,7 +219,7 @@ class DomainTable:
         """
         if self._passed is None:
             self._passed = self._index_includes()
-        key = f"{os.path.realpath(file)}\x00{name}"
+        key = f"{_realpath(file)}\x00{name}"
         if key in seen:
             return set()
         values: set[str] = set()
@@ -245,7 +247,7 @@ class DomainTable:
                     if "$" not in value:
                         index[target][name].add(value)
                     elif forwarded := _WHOLE_ARG.fullmatch(value):
-                        source = f"{os.path.realpath(launch_file)}\x00{forwarded.group(1)}"
+                        source = f"{_realpath(launch_file)}\x00{forwarded.group(1)}"
                         self._forwards.setdefault(source, []).append((target, name))
         return index
 
@@ -257,4 +259,4 @@ class DomainTable:
         text = _FIND.sub(find, text).replace("$(dirname)", os.path.dirname(launch_file))
         if "$" in text or "\x00" in text:
             return None
-        return os.path.realpath(text)
+        return str(_realpath(text))

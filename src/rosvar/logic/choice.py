@@ -64,7 +64,7 @@ class Choice(Generic[T]):
 
     @staticmethod
     def const(space: ConditionSpace, leaf: U) -> Choice[U]:
-        choice: Choice[U] = Choice.__new__(Choice)
+        choice: Choice[U] = object.__new__(Choice)  # skips Generic's __new__: a hot path
         choice.branches = ((space.true, leaf),)
         choice.false = space.false
         return choice
@@ -144,6 +144,12 @@ def ite(space: ConditionSpace, condition: BDD, then: Choice[V], otherwise: Choic
 
 def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> Choice[U]:
     """Cross product of several choices (only jointly possible combinations)."""
+    if choices and all(len(choice.branches) == 1 for choice in choices):
+        # the common case: nothing varies, one combination
+        joint = choices[0].branches[0][0]
+        for choice in choices[1:]:
+            joint = joint & choice.branches[0][0]
+        return Choice([(joint, function([choice.branches[0][1] for choice in choices]))])
     partial: list[tuple[BDD, list[V]]] = []
     first = True
     for choice in choices:

@@ -9,7 +9,7 @@ when a concrete configuration supplies the missing strings (HAROS-style
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from rosvar.logic.inputs import Input
 
@@ -33,11 +33,19 @@ class Apply:
     """``function(*operands)`` where some operand is a term.
 
     ``function`` names an entry of :data:`FUNCTIONS`; ``display`` is how people see it.
+    The hash is computed once: terms are dictionary keys on hot paths and nest deeply.
     """
 
     function: str
     operands: tuple[Operand, ...]
     display: str = ""
+    _hash: int = field(default=0, init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "_hash", hash((self.function, self.operands, self.display)))
+
+    def __hash__(self) -> int:
+        return self._hash
 
     def __str__(self) -> str:
         if self.display:
