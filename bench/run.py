@@ -28,6 +28,7 @@ import os
 import platform
 import pstats
 import resource
+import signal
 import statistics
 import subprocess
 import sys
@@ -179,10 +180,54 @@ def measure_minidom(job: Job) -> Metrics:
     return {"minidom_ms": wall, "minidom_cpu_ms": cpu}
 
 
-# Run in this order (the baseline needs the file list); peak RSS is read before the baseline.
+FEATURES_BUDGET_S = 120.0  # the feature model of a large workload may not finish: bound it
+
+
+def measure_features(job: Job) -> Metrics:
+    """``rosvar features``' work: feature model, conflicts (name index), valid-config count.
+
+    Timed from a fresh analysis (interpretation included) and, apart, the extraction
+    alone on already interpreted models. Bounded by an alarm: a timeout is a figure too.
+    """
+    from rosvar.analyses.features import count_configurations, extract
+    from rosvar.interpreter.analysis import Analysis
+    from rosvar.workspace import discover
+
+    def expire(_signum: int, _frame: object) -> None:
+        raise TimeoutError
+
+    previous = signal.signal(signal.SIGALRM, expire)
+    signal.alarm(int(FEATURES_BUDGET_S))
+    try:
+        workspace = discover(job.roots, ros_package_path=job.package_path)
+        wall, cpu = time.perf_counter(), time.process_time()
+        analysis = Analysis(workspace)
+        analysis.all_models()
+        models_ms = (time.perf_counter() - wall) * 1000
+        model = extract(analysis)
+        count_configurations(model)
+        total_ms = (time.perf_counter() - wall) * 1000
+        total_cpu = (time.process_time() - cpu) * 1000
+    except TimeoutError:
+        return {"features_timeout_s": FEATURES_BUDGET_S}
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, previous)
+    return {
+        "features_ms": total_ms,
+        "features_cpu_ms": total_cpu,
+        "features_extract_ms": total_ms - models_ms,
+        "conflict_pairs": len(model.clashes),
+        "constraints": len(model.constraints),
+    }
+
+
+# Run in this order (the baseline needs the file list); peak RSS is read before the baseline,
+# the feature model last (its BDD would dominate the peak).
 ISOLATED_MEASUREMENTS: dict[str, Callable[[Job], Metrics]] = {
     "analyze": measure_analyze,
     "minidom": measure_minidom,
+    "features": measure_features,
 }
 
 
@@ -470,7 +515,22 @@ def near_linear(outcomes: dict[str, Outcome]) -> Verdict:
     return Verdict("FAIL" if failed else "PASS", ", ".join(parts))
 
 
+def features_within(workload: str, limit_s: float) -> Target:
+    """Target on the feature model; a timeout of the bounded measurement is a FAIL."""
+    inner = at_most(workload, "features_ms", limit_s * 1000, "ms")
+
+    def check(outcomes: dict[str, Outcome]) -> Verdict:
+        outcome = outcomes.get(workload)
+        if outcome is not None and outcome.get("features_timeout_s") is not None:
+            return Verdict("FAIL", f"not done within {FEATURES_BUDGET_S:.0f} s")
+        return inner.check(outcomes)
+
+    return Target(f"{workload}: feature model ≤ {limit_s * 1000:,.0f} ms", check)
+
+
 TARGETS: list[Target] = [
+    *(features_within(system, 0.2) for system in ("kobuki", "turtlebot2", "lizi", "husky")),
+    features_within("gen-10000", 30),
     at_most("husky", "analyze_ms", 100, "ms"),
     at_most("gen-400", "analyze_ms", 1, "s", scale=1000),
     at_most("gen-400", "peak_mb", 150, "MB"),
