@@ -453,3 +453,15 @@ def test_including_one_file_twice_reports_the_clash(ws: LaunchWorkspace) -> None
     assert ws.resolve(file, {"twice": "false"}).ok
     model = model_of(ws)
     assert [model.space.describe(c.condition) for c in model.internal] == ["twice"]
+
+
+def test_an_arg_without_inferable_values_gets_a_diagnostic(ws: LaunchWorkspace) -> None:
+    """Unresolvable values stay in the <other> slot, and the model says so where."""
+    ws.launch("a.launch", '  <arg name="robot"/>\n  <node pkg="pkg" type="t" name="$(arg robot)"/>')
+    model = extract(ws.analysis())
+    [diagnostic] = model.diagnostics
+    assert diagnostic.code == "values-unknown"
+    assert "'robot'" in diagnostic.message
+    assert diagnostic.location.file.endswith("a.launch") and diagnostic.location.line == 2
+    [arg] = model.files[0].args
+    assert [v.value for v in arg.values] == ["<other>"]

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 import dd.cudd as _cudd
 
 from rosvar.analyses.conflicts import Clash, clashes, index
-from rosvar.diagnostics import Location
+from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
 from rosvar.logic.choice import Choice
@@ -77,6 +77,7 @@ class FeatureModel:
     clashes: list[Clash]
     internal: list[Clash]
     solver: Solver
+    diagnostics: list[Diagnostic] = field(default_factory=list)
 
     def feature_ids(self) -> list[str]:
         ids: list[str] = []
@@ -262,7 +263,27 @@ def extract(
             )
         )
     solver = _formula(space, features, constraints)
-    return FeatureModel(space, features, constraints, found, internal, solver)
+    return FeatureModel(
+        space, features, constraints, found, internal, solver, _unknown_values(features)
+    )
+
+
+def _unknown_values(features: Sequence[FileFeature]) -> list[Diagnostic]:
+    """Args whose values static analysis could not find: only a typed-in value remains."""
+    found = []
+    for feature in features:
+        for arg in feature.args:
+            if all(not isinstance(v.slot, str) for v in arg.values):
+                found.append(
+                    Diagnostic(
+                        "values-unknown",
+                        Severity.NOTE,
+                        f"no value of arg '{arg.name}' could be inferred; it keeps the "
+                        "<other> slot for a value given at configuration time (or a hints file)",
+                        arg.location or Location(feature.file, 1, 1),
+                    )
+                )
+    return found
 
 
 def _name(variable: BDD) -> str:

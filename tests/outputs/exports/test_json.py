@@ -41,8 +41,10 @@ def check(model: FeatureModel) -> dict[str, Any]:
             "core": list,
             "dead": list,
             "conflicts": list,
+            "diagnostics": list,
         },
     )
+    assert len(document["diagnostics"]) == len(model.diagnostics)
     tree = Tree(model)
     assert document["system"] == tree.root
     assert document["configurations"] == count_configurations(model)

@@ -67,6 +67,7 @@ def document(model: FeatureModel) -> dict[str, Any]:
             for number, c in enumerate(model.constraints)
         ],
         "configurations": count_configurations(model),
+        "diagnostics": [d.to_json() for d in model.diagnostics],
         "core": verdicts["core"],
         "dead": verdicts["dead"],
         "conflicts": [

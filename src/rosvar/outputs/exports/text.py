@@ -127,4 +127,7 @@ def write(model: FeatureModel) -> str:
     lines += _constraints(model, tree)
     lines += _verdicts(model)
     lines += _conflicts(model, tree)
+    if model.diagnostics:
+        lines += ["", "Diagnostics"]
+        lines += [f"{INDENT}{diagnostic}" for diagnostic in model.diagnostics]
     return "\n".join(lines) + "\n"
