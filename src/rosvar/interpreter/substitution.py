@@ -53,7 +53,7 @@ class Host(Protocol):
     def note_unknown_package(self, name: str) -> None: ...
 
 
-@functools.lru_cache(maxsize=8192)
+@functools.lru_cache(maxsize=65536)
 def collect(text: str) -> tuple[str, ...]:
     """The ``$(...)`` bodies of ``text``, by roslaunch's scanning state machine."""
     out, dollar, lparen, inside = 0, 1, 2, 3

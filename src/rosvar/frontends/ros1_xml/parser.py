@@ -28,7 +28,7 @@ MAX_DEPTH: int = 1000
 990 levels (minidom's ``getElementsByTagName`` recurses once per level), so nothing it
 accepts is refused here; code that recurses over the tree must allow for this depth."""
 
-CACHE_SIZE: int = 4096
+CACHE_SIZE: int = 32768  # more than the largest workspace benchmarked: an eviction re-parses
 """Parsed files kept by :func:`load_launch_file` (the interpreter re-reads includes)."""
 
 NO_ROOT_MESSAGE = "Invalid roslaunch XML syntax: no root <launch> tag"

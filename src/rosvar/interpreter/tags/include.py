@@ -17,7 +17,7 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import BDD
 
 ATTRIBUTES = ("file", "ns", "clear_params", "pass_all_args")
-_realpath = functools.lru_cache(maxsize=16384)(os.path.realpath)
+_realpath = functools.lru_cache(maxsize=65536)(os.path.realpath)
 
 
 @tag("include")
