@@ -183,6 +183,8 @@ class Interpretation:
 
     def strip(self, choice: Choice[V | Fail], context: str = "") -> Choice[V]:
         """Record the failing branches of ``choice`` as errors; keep the rest."""
+        if not any(isinstance(leaf, Fail) for _condition, leaf in choice.branches):
+            return choice  # type: ignore[return-value]  # nothing failed: no copy
         good: list[tuple[BDD, V]] = []
         for condition, leaf in choice:
             if isinstance(leaf, Fail):
