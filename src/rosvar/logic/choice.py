@@ -91,7 +91,7 @@ class Choice(Generic[T]):
         return [v for _, v in self.branches]
 
     def map(self, function: Callable[[T], U]) -> Choice[U]:
-        return Choice(((c, function(v)) for c, v in self.branches), self.false)
+        return Choice([(c, function(v)) for c, v in self.branches], self.false)
 
     def bind(self, function: Callable[[T], Choice[U]]) -> Choice[U]:
         """Apply a conditional function to each branch and flatten."""
@@ -105,7 +105,7 @@ class Choice(Generic[T]):
 
     def restrict(self, condition: BDD) -> Choice[T]:
         """Only the part of this value that can hold under ``condition``."""
-        return Choice(((c & condition, v) for c, v in self.branches), self.false)
+        return Choice([(c & condition, v) for c, v in self.branches], self.false)
 
     def where(self, predicate: Callable[[T], bool]) -> BDD:
         """The condition under which the value satisfies ``predicate``."""
