@@ -22,7 +22,14 @@ from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
 from rosvar.logic.choice import Choice
-from rosvar.logic.conditions import BDD, ConditionSpace, FileAtom, PredicateAtom, SlotAtom
+from rosvar.logic.conditions import (
+    BDD,
+    ConditionSpace,
+    FileAtom,
+    PredicateAtom,
+    SlotAtom,
+    exactly_one,
+)
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
 from rosvar.logic.terms import Apply, Hole, Operand
 
@@ -370,7 +377,7 @@ def _formula(
             none = manager.true
             for variable in variables:
                 none &= ~variable
-            part &= (present & _exactly_one(manager, variables)) | (~present & none)
+            part &= (present & exactly_one(manager, variables)) | (~present & none)
         parts.append(part)
     copies: list[BDD] = []
     for constraint in constraints:
@@ -393,17 +400,6 @@ def _conjoin(manager: _cudd.BDD, parts: Sequence[BDD], order: Sequence[str]) -> 
     result = manager.true
     for part in sorted(parts, key=deepest, reverse=True):
         result &= part
-    return result
-
-
-def _exactly_one(manager: _cudd.BDD, variables: Sequence[BDD]) -> BDD:
-    result = manager.false
-    for i, chosen in enumerate(variables):
-        term = chosen
-        for j, other in enumerate(variables):
-            if i != j:
-                term &= ~other
-        result |= term
     return result
 
 

@@ -44,6 +44,8 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Final, NoReturn, TypeVar, cast
 
+from rosvar.interpreter.values import convert_value
+
 __all__ = [
     "MAX_COMBINATORIC_ARGUMENT",
     "MAX_INT_BITS",
@@ -242,19 +244,7 @@ def convert_auto(value: str) -> bool | int | float | str:
     Replicated statement by statement because the quirks matter: ``'1_0'`` stays a string,
     ``'1_0.5'`` becomes ``10.5``, ``' 7 '`` becomes ``7``, ``'TRUE'`` becomes ``True``.
     """
-    try:
-        if "." in value:
-            return float(value)
-        if "_" not in value:
-            return int(value)
-    except ValueError:
-        pass
-    lowered = value.lower()
-    if lowered == "true":
-        return True
-    if lowered == "false":
-        return False
-    return value
+    return cast(bool | int | float | str, convert_value(value, "auto"))
 
 
 def referenced_args(expr: str) -> frozenset[str]:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import weakref
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
-from typing import TypeVar
+from typing import Any, TypeVar
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
@@ -98,15 +98,18 @@ class Interpretation:
     def env_value(self, name: str) -> Choice[Raw | None]:
         input_ = EnvInput(name)
         self.space.declare_input(input_, self._env_domains(name))
-        branches: list[tuple[BDD, Raw | None]] = []
+        return self._input_value(input_, None)
+
+    def _input_value(self, input_: ArgInput | EnvInput, unset: object) -> Choice[Any]:
+        """An input's value per slot: the literal, ``unset`` when not given, a hole for others."""
+        branches: list[tuple[BDD, object]] = []
         for slot in self.space.domain(input_):
             atom = self.space.slot(input_, slot)
             if slot is UNSET:
-                branches.append((atom, None))
+                branches.append((atom, unset))
             elif slot is OTHER:
                 branches.append((atom, Hole(input_)))
             else:
-                assert isinstance(slot, str)
                 branches.append((atom, slot))
         return Choice(branches)
 
@@ -133,16 +136,7 @@ class Interpretation:
             self.space.declare_input(input_, domain)
             self.model.inputs[name] = input_
             self.model.domains[name] = domain
-            branches: list[tuple[BDD, Raw | object]] = []
-            for slot in domain:
-                atom = self.space.slot(input_, slot)
-                if slot is UNSET:
-                    branches.append((atom, MISSING))
-                elif slot is OTHER:
-                    branches.append((atom, Hole(input_)))
-                else:
-                    branches.append((atom, slot))
-            args[name] = Choice(branches)  # type: ignore[arg-type]
+            args[name] = self._input_value(input_, MISSING)
         return args
 
     # -- conditions and errors -------------------------------------------------------------

@@ -64,6 +64,18 @@ def register_predicate(name: str, test: Predicate, display: str) -> None:
     PREDICATES[name] = (test, display)
 
 
+def exactly_one(manager: Any, variables: Sequence[BDD]) -> BDD:
+    """Exactly one of ``variables`` holds (an xor-group), in ``manager``."""
+    result = manager.false
+    for i, chosen in enumerate(variables):
+        term = chosen
+        for j, other in enumerate(variables):
+            if i != j:
+                term &= ~other
+        result |= term
+    return result
+
+
 class ConditionSpace:
     """The BDD manager of one analysis and the meaning of its variables."""
 
@@ -105,14 +117,7 @@ class ConditionSpace:
         self._constraints.append(exactly_one)
 
     def exactly_one(self, variables: Sequence[BDD]) -> BDD:
-        result = self.false
-        for i, chosen in enumerate(variables):
-            term = chosen
-            for j, other in enumerate(variables):
-                if i != j:
-                    term &= ~other
-            result |= term
-        return result
+        return exactly_one(self.bdd, variables)
 
     def input_constraint(self, input_: Input) -> BDD:
         """The exactly-one constraint of one input."""
