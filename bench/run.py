@@ -630,7 +630,7 @@ def _kept_notes() -> str:
 
 
 def write_doc(
-    outcomes: Sequence[Outcome], targets: list[str], profiled: str | None, load: str
+    outcomes: Sequence[Outcome], targets: list[str], profiled: str | None, context: str
 ) -> None:
     sizes = ", ".join(f"{w.size:,}" for w in WORKLOADS.values() if w.family == "generated")
     imports = [o.get("import_mb") for o in outcomes if o.get("import_mb") is not None]
@@ -638,8 +638,8 @@ def write_doc(
     parts = [
         "# Performance of `rosvar analyze`",
         "",
-        f"Measured {datetime.date.today().isoformat()} with `bench/run.py --write-doc` "
-        f"(revision `{_revision()}`). Machine: {_machine()}. {load}",
+        f"Measured {datetime.date.today().isoformat()} with `bench/run.py --write-doc`. "
+        f"Machine: {_machine()}. {context}",
         "",
         "## Method",
         "",
@@ -702,7 +702,7 @@ def selected(options: argparse.Namespace) -> list[Workload]:
 def run_all(options: argparse.Namespace) -> None:
     outcomes: list[Outcome] = []
     failed: set[tuple[str, str]] = set()  # (family, measurement) that failed at a smaller size
-    load_before = os.getloadavg()[1]
+    load_before, revision_before = os.getloadavg()[1], _revision()
     with tempfile.TemporaryDirectory(prefix="rosvar-bench-") as scratch_dir:
         scratch = Path(scratch_dir)
         for workload in selected(options):
@@ -731,11 +731,17 @@ def run_all(options: argparse.Namespace) -> None:
         print(f"\nprofile of {options.profile} (top {PROFILE_TOP} by cumulative time):")
         print(profiled)
     if options.write_doc:
-        load = (
-            f"Load average (5 min) {load_before:.1f} at the start, {os.getloadavg()[1]:.1f} at "
-            "the end: other work on the machine slows every figure alike."
+        revision = _revision()
+        if revision == revision_before:
+            revision_note = f"Revision `{revision}`."
+        else:  # others may commit while a long run goes on
+            revision_note = f"Revision `{revision_before}` at the start, `{revision}` at the end."
+        context = (
+            f"{revision_note} Load average (5 min) {load_before:.1f} at the start, "
+            f"{os.getloadavg()[1]:.1f} at the end: other work on the machine stretches wall "
+            "times."
         )
-        write_doc(outcomes, targets, profiled, load)
+        write_doc(outcomes, targets, profiled, context)
 
 
 def parse_options(argv: Sequence[str] | None = None) -> argparse.Namespace:
