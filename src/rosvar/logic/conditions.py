@@ -95,6 +95,7 @@ class ConditionSpace:
         self._domains: dict[Input, tuple[Slot, ...]] = {}
         self._input_constraints: dict[Input, BDD] = {}
         self._facts_of: dict[str, list[BDD]] = {}
+        self._described: dict[tuple[BDD, bool, bool, int], str] = {}
 
     # -- declaring atoms -------------------------------------------------------------
     def _new_var(self, atom: Atom) -> BDD:
@@ -236,6 +237,14 @@ class ConditionSpace:
 
     # -- readable form ---------------------------------------------------------------------
     def describe(self, condition: BDD, qualify: bool = False, known_only: bool = True) -> str:
+        key = (condition, qualify, known_only, len(self._constraints))
+        text = self._described.get(key)
+        if text is None:  # elements share conditions: describing is the slow part of --json
+            text = self._describe(condition, qualify, known_only)
+            self._described[key] = text
+        return text
+
+    def _describe(self, condition: BDD, qualify: bool, known_only: bool) -> str:
         """A short readable formula, e.g. ``use_teleop=true ∧ ¬sim``, modulo validity.
 
         With ``known_only`` (the default) arg inputs are assumed to hold one of the
@@ -260,7 +269,7 @@ class ConditionSpace:
             if (known & care) == self.false:
                 return "only for other values"
             if (care & ~known) == self.false and not self.valid_implies(condition):
-                full = self.describe(condition, qualify, known_only=False)
+                full = self._describe(condition, qualify, known_only=False)
                 return full if len(full) <= MAX_FULL else "true for every known value"
             domains = {
                 input_: tuple(
