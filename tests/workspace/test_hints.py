@@ -4,8 +4,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import pytest
-
 from rosvar.diagnostics import Location, Severity
 from rosvar.workspace.hints import Hints, load_hints
 
@@ -85,12 +83,6 @@ def test_bad_sections_are_reported_and_the_rest_is_kept(tmp_path: Path) -> None:
     assert all(d.location.file == path for d in hints.diagnostics)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="hints.py:59 and :62 call problem() without a line, so every section error is "
-    "reported at line 1; yaml.safe_load drops positions (yaml.compose would keep the key's "
-    "start_mark)",
-)
 def test_section_errors_point_at_their_lines(tmp_path: Path) -> None:
     hints, path = hints_from(
         tmp_path,
@@ -102,12 +94,13 @@ def test_section_errors_point_at_their_lines(tmp_path: Path) -> None:
     ]
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="hints.py:66-67 turn any YAML value into text: an empty entry becomes the value "
-    "'None' and a mapping becomes \"{'a': 'b'}\" instead of a diagnostic",
-)
 def test_values_that_are_not_scalars_are_reported(tmp_path: Path) -> None:
     hints, _ = hints_from(tmp_path, "args:\n  robot:\n  laser: {a: b}\n  ok: [x]\n")
     assert hints.args == {"ok": ["x"]}
     assert len(hints.diagnostics) == 2
+
+
+def test_unsafe_tags_are_reported_not_constructed(tmp_path: Path) -> None:
+    hints, _ = hints_from(tmp_path, "args:\n  robot: !!python/name:os.system x\n  ok: [x]\n")
+    assert hints.args == {"ok": ["x"]}
+    assert [d.location.line for d in hints.diagnostics] == [2]

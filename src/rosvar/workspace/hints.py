@@ -44,25 +44,52 @@ def load_hints(path: str | None) -> Hints:
 
     try:
         with open(path, encoding="utf-8") as handle:
-            data = yaml.safe_load(handle)
+            loader = yaml.SafeLoader(handle.read())
+        try:
+            root = loader.get_single_node()
+        finally:
+            loader.dispose()
     except OSError as error:
         return problem(f"cannot read hints file: {error.strerror}")
     except yaml.YAMLError as error:
         mark = getattr(error, "problem_mark", None)
         return problem(f"invalid YAML: {error}", mark.line + 1 if mark else 1)
-    if data is None:
+    if root is None:
         return hints
-    if not isinstance(data, dict):
-        return problem("the hints file must be a mapping")
-    for key, value in data.items():
+    if not isinstance(root, yaml.MappingNode):
+        return problem("the hints file must be a mapping", _line(root))
+    # composed nodes rather than safe_load: each problem can then name its own line
+    for key_node, section in root.value:
+        key = _scalar_text(loader, key_node)
         if key not in SECTIONS:
-            problem(f"unknown section '{key}' (expected one of {', '.join(SECTIONS)})")
+            sections = ", ".join(SECTIONS)
+            problem(f"unknown section '{key}' (expected one of {sections})", _line(key_node))
             continue
-        if not isinstance(value, dict):
-            problem(f"section '{key}' must map names to lists of values")
+        if not isinstance(section, yaml.MappingNode):
+            problem(f"section '{key}' must map names to lists of values", _line(section))
             continue
         target: dict[str, list[str]] = getattr(hints, key)
-        for name, values in value.items():
-            items = values if isinstance(values, list) else [values]
-            target[str(name)] = [str(v).lower() if isinstance(v, bool) else str(v) for v in items]
+        for name_node, values in section.value:
+            name = str(_scalar_text(loader, name_node))
+            items = values.value if isinstance(values, yaml.SequenceNode) else [values]
+            texts = [_scalar_text(loader, item) for item in items]
+            if any(text is None for text in texts):
+                problem(f"'{name}' in section '{key}' must list plain values", _line(values))
+                continue
+            target[name] = [text for text in texts if text is not None]
     return hints
+
+
+def _line(node: yaml.Node) -> int:
+    return int(node.start_mark.line) + 1
+
+
+def _scalar_text(loader: yaml.SafeLoader, node: yaml.Node) -> str | None:
+    """A value as launch files spell it (``true``, not ``True``); None when not a plain value."""
+    if not isinstance(node, yaml.ScalarNode) or node.tag == "tag:yaml.org,2002:null":
+        return None
+    try:
+        value = loader.construct_object(node)
+    except yaml.YAMLError:  # e.g. a tag that the safe loader refuses
+        return None
+    return str(value).lower() if isinstance(value, bool) else str(value)
