@@ -10,8 +10,6 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-import pytest
-
 from rosvar.analyses.features import extract
 from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.domains import PARAM_TYPES
@@ -200,12 +198,6 @@ def test_every_arg_keeps_an_other_slot(ws: LaunchWorkspace) -> None:
         assert domain(ws, "a.launch", name)[-1] is OTHER
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="domains.py:217-220 (_index_includes) reads only <arg> children of <include>; "
-    'with pass_all_args="true" the includer\'s own literal defaults reach the included file '
-    "too but are not indexed",
-)
 def test_pass_all_args_passes_the_includers_literal_defaults(ws: LaunchWorkspace) -> None:
     ws.launch(
         "a.launch",

@@ -54,6 +54,20 @@ def entry_declarations(root: Entity) -> Iterator[Entity]:
             yield from entry_declarations(child)
 
 
+def _passed_args(include: Entity, root: Entity) -> Iterator[tuple[str | None, str | None]]:
+    """``(name, value)`` pairs an ``<include>`` passes: its ``<arg>`` children, and with
+    ``pass_all_args`` every arg of the including file, both as its literal and as itself."""
+    for child in include.children:
+        if child.tag == "arg":
+            yield child.get("name"), child.get("value")
+    if (include.get("pass_all_args") or "").lower() in ("true", "1"):
+        for arg in _walk(root):
+            name, value = arg.get("name"), arg.get("value")
+            if arg.tag == "arg" and name:
+                yield name, value if value is not None else arg.get("default")
+                yield name, f"$(arg {name})"
+
+
 def _walk(entity: Entity) -> Iterator[Entity]:
     yield entity
     for child in entity.children:
@@ -240,9 +254,8 @@ class DomainTable:
                 target = self._static_path(element.get("file") or "", launch_file)
                 if target is None:
                     continue
-                for child in element.children:
-                    name, value = child.get("name"), child.get("value")
-                    if child.tag != "arg" or not name or value is None:
+                for name, value in _passed_args(element, root):
+                    if not name or value is None:
                         continue
                     if "$" not in value:
                         index[target][name].add(value)
