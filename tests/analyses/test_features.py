@@ -434,12 +434,6 @@ def test_clash_inside_one_file_is_reported_as_internal(ws: LaunchWorkspace) -> N
     assert constraints(model, "excludes") == []
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="conflicts.py:56 keeps only nodes written in the entry file itself and conflicts.py:97 "
-    "skips pairs with one location, so a file included twice never clashes with itself: "
-    "neither FeatureModel.internal nor a constraint says that a.launch with twice:=true fails",
-)
 def test_including_one_file_twice_reports_the_clash(ws: LaunchWorkspace) -> None:
     file = ws.launch(
         "a.launch",

@@ -10,11 +10,11 @@ from __future__ import annotations
 
 import os
 from collections import defaultdict
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
 from rosvar.diagnostics import Location
-from rosvar.interpreter.model import LaunchModel, ParamDecl
+from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl
 from rosvar.logic.choice import combine
 from rosvar.logic.conditions import BDD
 from rosvar.ros import names
@@ -53,14 +53,8 @@ def _same_file(a: str, b: str) -> bool:
 def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
     """Nodes and params written in ``model.file`` itself (Algorithm 1's GETELEMENTS)."""
     for node in model.nodes:
-        if node.is_test or not _same_file(node.location.file, model.file):
-            continue
-        full = combine([node.fields["namespace"], node.fields["name"]], _node_name)
-        for condition, name in full:
-            if name is not None:
-                yield Occurrence(
-                    "node", name, model.file, node.location, node.condition & condition
-                )
+        if not node.is_test and _same_file(node.location.file, model.file):
+            yield from _node_occurrences(model, node)
     for param in model.params:
         if not isinstance(param, ParamDecl) or not _same_file(param.location.file, model.file):
             continue
@@ -69,6 +63,35 @@ def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
                 yield Occurrence(
                     "param", param_name, model.file, param.location, param.condition & condition
                 )
+
+
+def _node_occurrences(model: LaunchModel, node: NodeDecl) -> Iterator[Occurrence]:
+    full = combine([node.fields["namespace"], node.fields["name"]], _node_name)
+    for condition, name in full:
+        if name is not None:
+            yield Occurrence("node", name, model.file, node.location, node.condition & condition)
+
+
+def repeated_inclusions(model: LaunchModel) -> list[Clash]:
+    """One node declaration loaded twice by ``model.file`` (a file included twice).
+
+    Clashes between different declarations are found between the files that write
+    them; only a declaration meeting itself, through two includes, is the entry
+    file's own clash.
+    """
+    seen: dict[tuple[str, Location], list[Occurrence]] = defaultdict(list)
+    found: list[Clash] = []
+    for node in model.nodes:
+        if node.is_test or _same_file(node.location.file, model.file):
+            continue
+        for occurrence in _node_occurrences(model, node):
+            earlier = seen[(occurrence.name, occurrence.location)]
+            for first in earlier:
+                both = first.condition & occurrence.condition
+                if both != both.bdd.false:
+                    found.append(Clash("node", occurrence.name, first, occurrence, both))
+            earlier.append(occurrence)
+    return found
 
 
 def _node_name(parts: Sequence[object]) -> str | None:

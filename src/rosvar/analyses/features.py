@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 import dd.cudd as _cudd
 
-from rosvar.analyses.conflicts import Clash, clashes, index
+from rosvar.analyses.conflicts import Clash, clashes, index, repeated_inclusions
 from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
@@ -245,6 +245,7 @@ def extract(
                 )
     found = clashes(index(models))
     internal = [c for c in found if c.first.file == c.second.file and c.kind == "node"]
+    internal += [clash for model in models for clash in repeated_inclusions(model)]
     between: dict[tuple[str, str], list[Clash]] = {}
     for clash in found:
         if clash.first.file != clash.second.file:
