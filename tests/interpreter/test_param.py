@@ -111,12 +111,6 @@ def test_command_with_a_known_arg_value(ws: LaunchWorkspace) -> None:
     }
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="a command= whose text is only known per configuration becomes "
-    "DeferredValue(raw, ptype) without its kind; resolve.py evaluates it with "
-    "param_value('value', ...) so the __command__(...) wrapper is lost",
-)
 def test_command_with_an_other_arg_value(ws: LaunchWorkspace, tmp_path: Path) -> None:
     file = ws.launch("xacro.launch", COMMAND_FROM_ARG)
     urdf = ws.root / "pkg" / "urdf"
@@ -126,7 +120,6 @@ def test_command_with_an_other_arg_value(ws: LaunchWorkspace, tmp_path: Path) ->
 
 
 @pytest.mark.oracle
-@pytest.mark.xfail(strict=True, reason="DeferredValue loses the command kind (see above)")
 def test_command_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
     ws.assert_agrees(ws.launch("xacro.launch", COMMAND_FROM_ARG), [{}, {"model": "arm"}])
 

@@ -225,7 +225,7 @@ def _restrict(
             if isinstance(value, DeferredValue):
                 concrete = r.evaluate(value.raw, param.location, f"param {name}")
                 try:
-                    value = param_value("value", concrete, value.ptype)
+                    value = param_value(value.kind, concrete, value.ptype)
                 except ValueError as error:
                     raise ResolutionError("param-invalid", str(error), param.location) from None
             result.params[str(name)] = json_value(value)

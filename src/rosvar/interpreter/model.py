@@ -26,6 +26,7 @@ class DeferredValue:
 
     raw: Term
     ptype: str
+    kind: str = "value"  # or "command": its text is wrapped, never run
 
 
 @dataclass(frozen=True)

@@ -30,7 +30,7 @@ def _values(choice: Choice[object], model: LaunchModel) -> object:
 
 def _leaf(leaf: object) -> object:
     if isinstance(leaf, DeferredValue):
-        return str(leaf.raw)
+        return f"__command__({leaf.raw})" if leaf.kind == "command" else str(leaf.raw)
     if isinstance(leaf, Hole | Apply):
         return str(leaf)
     return json_value(leaf)

@@ -31,7 +31,7 @@ def _value_choice(it: Interpretation, kind: str, raw: Choice[Raw], ptype: str) -
     def convert(leaf: Raw) -> object:
         if not isinstance(leaf, str):
             return (
-                DeferredValue(leaf, ptype)
+                DeferredValue(leaf, ptype, kind)
                 if kind in ("value", "command")
                 else Fail(
                     f"{kind} path {leaf} is only known per configuration", "param-unknown-file"
