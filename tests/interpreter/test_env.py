@@ -71,12 +71,6 @@ def test_env_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
     )
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="an ns that is empty only per configuration is not an error: tags/common.py "
-    "namespace_scope tests ns == '' on str leaves only, a term (here $(optenv ROBOT_NS /) "
-    "with ROBOT_NS='') is never checked, and resolve does not re-check it",
-)
 def test_empty_namespace_from_environment_fails(ws: LaunchWorkspace) -> None:
     file = ws.launch("env.launch", ENV)
     assert not ws.resolve_fresh(file, {}, {"ROBOT_NS": ""}).ok  # a known slot: checked
@@ -85,7 +79,6 @@ def test_empty_namespace_from_environment_fails(ws: LaunchWorkspace) -> None:
 
 
 @pytest.mark.oracle
-@pytest.mark.xfail(strict=True, reason="empty ns from a term is not checked (see above)")
 def test_empty_namespace_from_environment_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
     ws.assert_agrees(ws.launch("env.launch", ENV), [({}, {"ROBOT_NS": ""})], modes=["shared"])
 

@@ -2,12 +2,38 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import ClearParamDecl, Raw
 from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.values import bool_attribute
 from rosvar.logic.choice import Choice, Fail
+from rosvar.logic.conditions import BDD, register_predicate
+from rosvar.logic.terms import Apply, Hole
+
+# Tests on attribute text; on a term they become predicate atoms decided per configuration.
+TEXT_TESTS: dict[str, tuple[Callable[[str], bool], str]] = {
+    "empty": (lambda text: text == "", "{} is empty"),
+    "bool-true": (lambda text: text.lower() == "true", "{} is 'true'"),
+    "bool-false": (lambda text: text.lower() == "false", "{} is 'false'"),
+}
+for _name, (_test, _display) in TEXT_TESTS.items():
+    register_predicate(_name, _test, _display)
+
+
+def where_text(it: Interpretation, value: Choice[object], test: str) -> BDD:
+    """Where ``value`` is text passing ``test``: decided now for strings, later for terms."""
+    check = TEXT_TESTS[test][0]
+    result = it.space.false
+    for condition, leaf in value:
+        if isinstance(leaf, str):
+            if check(leaf):
+                result |= condition
+        elif isinstance(leaf, Hole | Apply):
+            result |= condition & it.space.predicate(test, leaf)
+    return result
 
 
 def bool_value(
@@ -41,7 +67,7 @@ def namespace_scope(
     if entity.has("ns"):
         ns = it.attr(entity, "ns", scope)
         assert ns is not None
-        empty = ns.where(lambda v: v == "")
+        empty = where_text(it, ns, "empty")
         it.fail(empty, "ns-empty", f"<{tag_name}> tag has an empty 'ns' attribute")
         ns = ns.restrict(~empty)
     child_ns = it.lift(
@@ -56,9 +82,13 @@ def namespace_scope(
         child = scope.child(child_ns)
     clear = it.attr(entity, "clear_params", scope)
     if clear is not None:
-        nonempty = clear.restrict(clear.where(lambda v: v != ""))
-        wanted = bool_value(it, nonempty, False, "clear_params")
-        condition = wanted.where(lambda v: v is True)
+        empty = where_text(it, clear, "empty")
+        wanted = bool_value(it, clear.restrict(~empty), False, "clear_params")  # `if clear_p:`
+        true, false = where_text(it, wanted, "bool-true"), where_text(it, wanted, "bool-false")
+        it.space.constrain(~(true & false) & ~(where_text(it, clear, "bool-true") & empty))
+        condition = wanted.where(lambda v: v is True) | true
+        unknown = wanted.where(lambda v: not isinstance(v, bool)) & ~true & ~false
+        it.fail(unknown, "bool-invalid", "invalid bool value for clear_params")
         if condition != it.space.false:
             with it.under(condition) as live:
                 if live:
