@@ -31,7 +31,7 @@ from rosvar.logic.conditions import (
     exactly_one,
 )
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
-from rosvar.logic.terms import Apply, Hole, Operand
+from rosvar.logic.terms import Apply, Hole, Operand, term_inputs
 
 
 @dataclass
@@ -97,15 +97,7 @@ class FeatureModel:
 
 
 def _term_inputs(value: Operand) -> set[ArgInput]:
-    if isinstance(value, Hole):
-        return {value.input} if isinstance(value.input, ArgInput) else set()
-    if isinstance(value, Apply):
-        found: set[ArgInput] = set()
-        for operand in value.operands:
-            if not isinstance(operand, str | tuple):
-                found |= _term_inputs(operand)
-        return found
-    return set()
+    return {i for i in term_inputs(value) if isinstance(i, ArgInput)}
 
 
 def graph_inputs(model: LaunchModel) -> set[ArgInput]:
@@ -430,9 +422,9 @@ def core_and_dead(model: FeatureModel) -> list[Verdict]:
     for feature_id, variable in candidates:
         values = possible.get(_name(variable), {False, True})
         if True not in values:
-            verdicts.append(Verdict(feature_id, "dead", _explain(model, variable)))
+            verdicts.append(Verdict(feature_id, "dead", explain(model, variable)))
         elif False not in values:
-            verdicts.append(Verdict(feature_id, "core", _explain(model, ~variable)))
+            verdicts.append(Verdict(feature_id, "core", explain(model, ~variable)))
     return verdicts
 
 
@@ -486,7 +478,7 @@ def _possible_values(solver: Solver) -> dict[str, set[bool]]:
     return possible
 
 
-def _explain(model: FeatureModel, goal: BDD) -> list[str]:
+def explain(model: FeatureModel, goal: BDD) -> list[str]:
     """A minimal set of cross-tree constraints that rules ``goal`` out (deletion-based).
 
     The search starts from the constraints around the feature's file and widens one

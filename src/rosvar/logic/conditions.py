@@ -225,7 +225,7 @@ class ConditionSpace:
             elif isinstance(atom, FileAtom):
                 result[name] = atom.file in files
             else:
-                result[name] = _decide(atom, concrete, host)
+                result[name] = decide_predicate(atom, concrete, host)
         return result
 
     def evaluate(self, condition: BDD, assignment: Mapping[str, bool]) -> bool:
@@ -407,7 +407,8 @@ class ConditionSpace:
         return iter(self._atoms)
 
 
-def _decide(atom: PredicateAtom, concrete: Mapping[Input, str], host: object) -> bool:
+def decide_predicate(atom: PredicateAtom, concrete: Mapping[Input, str], host: object) -> bool:
+    """Truth of a predicate atom under concrete input strings."""
     test, _display = PREDICATES[atom.test]
     try:
         return test(evaluate_term(atom.term, concrete, host))

@@ -77,6 +77,19 @@ def is_term(value: object) -> bool:
     return isinstance(value, Hole | Apply)
 
 
+def term_inputs(value: Operand) -> set[Input]:
+    """The inputs whose strings ``value`` needs before it can be evaluated."""
+    if isinstance(value, Hole):
+        return {value.input}
+    if isinstance(value, Apply):
+        found: set[Input] = set()
+        for operand in value.operands:
+            if not isinstance(operand, str | tuple):
+                found |= term_inputs(operand)
+        return found
+    return set()
+
+
 def concat(parts: list[str | Term]) -> str | Term:
     """Join strings; stays a string unless a part is a term."""
     merged: list[str | Term] = []

@@ -1,0 +1,157 @@
+"""The feature tree as the user names it: ids spelled with the user's file paths.
+
+The feature model names files relative to their package roots; a user names them as typed
+on the command line. The catalogue re-spells every id (``FILE``, ``FILE:ARG``,
+``FILE:ARG=VALUE``), ties each feature to its solver variable, and groups the variables by
+connected component of the constraint graph: a choice can only change what is decided in
+its own component.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass
+from typing import Literal
+
+from rosvar.analyses.features import ArgFeature, FeatureModel, FileFeature, ValueFeature
+from rosvar.configuration.choices import ChoiceError
+
+Kind = Literal["file", "arg", "value"]
+
+
+@dataclass(frozen=True)
+class Feature:
+    """One feature; ``variable`` is its solver variable (an arg shares its file's)."""
+
+    id: str
+    kind: Kind
+    file: str
+    arg: str | None
+    value: str | None
+    parent: str | None
+    variable: str
+    component: int
+
+
+@dataclass(frozen=True)
+class FileEntry:
+    """A launch file of the model with its spelled id and its feature-model parts."""
+
+    id: str
+    path: str
+    feature: FileFeature
+    variable: str
+
+
+class Catalog:
+    """Every feature by id and by solver variable, in tree order."""
+
+    def __init__(
+        self,
+        model: FeatureModel,
+        spelling: Mapping[str, str] | None = None,
+    ) -> None:
+        solver = model.solver
+        self.model = model
+        spell = _speller(spelling)
+        self.files: list[FileEntry] = []
+        self.features: dict[str, Feature] = {}
+        self.by_variable: dict[str, Feature] = {}
+        self.args: dict[str, tuple[ArgFeature, list[tuple[Feature, ValueFeature]]]] = {}
+        self._by_path: dict[str, str] = {}
+        component_of = _components(model)
+        for file in model.files:
+            file_id = spell(file.file)
+            variable = str(solver.var(file.variable).var)
+            component = component_of[file.id]
+            self.files.append(FileEntry(file_id, file.file, file, variable))
+            self._by_path[os.path.realpath(file.file)] = file_id
+            self._add(Feature(file_id, "file", file_id, None, None, None, variable, component))
+            for arg in file.args:
+                arg_id = f"{file_id}:{arg.name}"
+                self._add(
+                    Feature(arg_id, "arg", file_id, arg.name, None, file_id, variable, component)
+                )
+                values = []
+                for value in arg.values:
+                    entry = Feature(
+                        f"{arg_id}={value.value}",
+                        "value",
+                        file_id,
+                        arg.name,
+                        value.value,
+                        arg_id,
+                        str(solver.var(value.variable).var),
+                        component,
+                    )
+                    self._add(entry)
+                    values.append((entry, value))
+                self.args[arg_id] = (arg, values)
+        self.components = max(component_of.values(), default=-1) + 1
+
+    def _add(self, feature: Feature) -> None:
+        self.features[feature.id] = feature
+        if feature.kind != "arg":
+            self.by_variable[feature.variable] = feature
+
+    def __iter__(self) -> Iterator[Feature]:
+        return iter(self.features.values())
+
+    def file_id(self, path: str) -> str:
+        return self._by_path[os.path.realpath(path)]
+
+    def lookup(self, text: str) -> Feature:
+        """The feature named ``text``; the file part may be any path to the file."""
+        found = self.features.get(text)
+        if found is not None:
+            return found
+        file, sep, rest = text.partition(":")
+        while True:
+            spelled = self._by_path.get(os.path.realpath(file))
+            if spelled is not None:
+                found = self.features.get(spelled + sep + rest)
+                if found is not None:
+                    return found
+            head, sep2, tail = rest.partition(":")
+            if not sep2:
+                break
+            file, rest = f"{file}:{head}", tail
+        raise ChoiceError(f"no feature {text!r}")
+
+    def values_of(self, arg_id: str) -> list[tuple[Feature, ValueFeature]]:
+        return self.args[arg_id][1]
+
+
+def _speller(spelling: Mapping[str, str] | None) -> Callable[[str], str]:
+    def spell(path: str) -> str:
+        real = os.path.realpath(path)
+        if spelling is not None and real in spelling:
+            return spelling[real]
+        return os.path.relpath(path)
+
+    return spell
+
+
+def _components(model: FeatureModel) -> dict[str, int]:
+    """File id → connected component of the constraint graph (files linked by constraints)."""
+    neighbours: dict[str, set[str]] = {f.id: set() for f in model.files}
+    for constraint in model.constraints:
+        first, *rest = constraint.files
+        for other in rest:
+            neighbours[first].add(other)
+            neighbours[other].add(first)
+    component: dict[str, int] = {}
+    number = -1
+    for start in neighbours:
+        if start in component:
+            continue
+        number += 1
+        stack = [start]
+        component[start] = number
+        while stack:
+            for other in neighbours[stack.pop()]:
+                if other not in component:
+                    component[other] = number
+                    stack.append(other)
+    return component

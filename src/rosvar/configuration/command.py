@@ -1,0 +1,79 @@
+"""The ``roslaunch`` command lines of a complete product.
+
+Only *launched* files are named: a selected file that another selected file includes is
+loaded by that include, not by the command line. Each file gives the args whose value
+differs from its default or that have no default. roslaunch gives one set of args to every
+file of a command line, so files share a command only while every file would read the
+same value for every arg the others give; the rest get commands of their own. A single
+file inside a package is named ``roslaunch PKG FILE``, several files by their paths.
+"""
+
+from __future__ import annotations
+
+import os
+import shlex
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+from rosvar.workspace import Workspace
+
+
+@dataclass(frozen=True)
+class Launch:
+    """A launched file: the args it is given, and what it reads for each of its inputs."""
+
+    path: str
+    spelled: str
+    given: Mapping[str, str]
+    reads: Mapping[str, str | None]  # input name → given value, else its literal default
+
+    def agrees(self, given: Mapping[str, str]) -> bool:
+        """This file would read ``given``'s values for the args it has, and gives no other."""
+        return all(
+            name not in self.reads or self.reads[name] == value for name, value in given.items()
+        )
+
+
+def group(launches: Sequence[Launch]) -> list[list[Launch]]:
+    """Files in order, each joining the first command line whose args it agrees with."""
+    groups: list[tuple[list[Launch], dict[str, str]]] = []
+    for launch in launches:
+        for members, given in groups:
+            if launch.agrees(given) and all(m.agrees(launch.given) for m in members):
+                members.append(launch)
+                given.update(launch.given)
+                break
+        else:
+            groups.append(([launch], dict(launch.given)))
+    return [members for members, _given in groups]
+
+
+def command_lines(launches: Sequence[Launch], workspace: Workspace) -> list[str]:
+    lines = []
+    for members in group(launches):
+        given: dict[str, str] = {}
+        for member in members:
+            given.update(member.given)
+        if len(members) == 1:
+            files = _package_form(members[0], workspace) or [members[0].spelled]
+        else:
+            files = [m.spelled for m in members]
+        words = ["roslaunch", *files, *(f"{name}:={value}" for name, value in given.items())]
+        lines.append(" ".join(shlex.quote(w) for w in words))
+    return lines
+
+
+def _package_form(launch: Launch, workspace: Workspace) -> list[str] | None:
+    """``[PKG, FILE]`` when roslaunch finds exactly this file by package and name."""
+    package = workspace.package_of(launch.path)
+    if package is None or workspace.packages.get(package.name) is not package:
+        return None
+    name = os.path.basename(launch.path)
+    inside = [
+        f
+        for f in workspace.launch_files
+        if os.path.basename(f) == name and workspace.package_of(f) is package
+    ]
+    if len(inside) != 1:
+        return None
+    return [package.name, name]

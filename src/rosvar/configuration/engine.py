@@ -1,0 +1,458 @@
+"""The configuration engine: from a list of user choices to everything a user sees.
+
+A :class:`Configurator` is built once per workspace (feature model, lowered presence
+conditions, the variational graph) and answers any list of choices, statelessly. Choices
+are replayed in order; the solver's answer after each prefix is cached, so a session that
+adds one choice at a time pays for one step.
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+
+from rosvar.analyses.features import FeatureModel, explain
+from rosvar.configuration.catalog import Catalog, Feature, FileEntry
+from rosvar.configuration.choices import ChoiceError, Refusal, UserChoice
+from rosvar.configuration.command import Launch, command_lines
+from rosvar.configuration.conflicts import Conflicts, ConflictState
+from rosvar.configuration.derivation import ABSENT, PRESENT, Decisions, Derivation
+from rosvar.configuration.graph import Element, Fields, Values, VariationalGraph
+from rosvar.configuration.lowering import Lowering
+from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.model import LaunchModel
+from rosvar.logic.conditions import BDD
+from rosvar.logic.inputs import OTHER, UNSET, Input
+
+CACHED_STEPS = 4096
+"""Solver answers kept per list of effective choices (a session's history and then some)."""
+EXACT_INTEGER = 2**53  # larger counts go to JSON as strings
+
+
+@dataclass(frozen=True)
+class FeatureState:
+    kind: str
+    file: str
+    arg: str | None
+    value: str | None
+    parent: str | None
+    state: str  # selected | deselected | unselected
+    derived: bool
+
+    def to_json(self) -> dict[str, object]:
+        return {
+            "kind": self.kind,
+            "file": self.file,
+            "arg": self.arg,
+            "value": self.value,
+            "parent": self.parent,
+            "state": self.state,
+            "derived": self.derived,
+        }
+
+
+@dataclass
+class Graph:
+    """Element variants with their presence; ``errors`` are where roslaunch would stop."""
+
+    nodes: list[Fields] = field(default_factory=list)
+    params: list[Fields] = field(default_factory=list)
+    topics: list[Fields] = field(default_factory=list)
+    errors: list[Fields] = field(default_factory=list)
+
+    def to_json(self) -> dict[str, object]:
+        return {
+            "nodes": self.nodes,
+            "params": self.params,
+            "topics": self.topics,
+            "errors": self.errors,
+        }
+
+
+@dataclass
+class ConfigurationState:
+    choices: list[UserChoice]
+    refused: list[Refusal]
+    features: dict[str, FeatureState]
+    conflicts: list[ConflictState]
+    graph: Graph
+    complete: bool
+    command: str | None
+    configurations: int
+    unselected: int
+    launched: list[str] = field(default_factory=list)  # spelled ids of the launched files
+    args: dict[str, dict[str, str]] = field(default_factory=dict)  # launched file → given args
+
+    def to_json(self) -> dict[str, object]:
+        count = self.configurations
+        return {
+            "features": {k: v.to_json() for k, v in self.features.items()},
+            "conflicts": [c.to_json() for c in self.conflicts],
+            "graph": self.graph.to_json(),
+            "complete": self.complete,
+            "command": self.command,
+            "refused": [r.to_json() for r in self.refused],
+            "choices": [c.to_json() for c in self.choices],
+            "configurations": count if count <= EXACT_INTEGER else str(count),
+            "unselected": self.unselected,
+            "launched": self.launched,
+        }
+
+
+@dataclass(frozen=True)
+class _Effective:
+    """An accepted choice as a literal: ``variable = value``, with the <other> text if any."""
+
+    choice: UserChoice
+    targets: frozenset[str]  # feature ids it decides (unselect removes it by any of them)
+    variable: str
+    value: bool
+    arg: str | None = None
+    text: str | None = None
+
+
+class Configurator:
+    """Built once per workspace; answers any list of user choices (stateless)."""
+
+    def __init__(
+        self,
+        analysis: Analysis,
+        model: FeatureModel,
+        env: Mapping[str, str] | None = None,
+        spelling: Mapping[str, str] | None = None,
+    ) -> None:
+        solver = model.solver
+        self.analysis = analysis
+        self.model = model
+        self.catalog = Catalog(model, spelling)
+        self.derivation = Derivation(
+            solver.manager,
+            solver.formula,
+            solver.variables,
+            {f.variable: f.component for f in self.catalog},
+        )
+        self.lowering = Lowering(analysis, model, env or {})
+        file_ids = {entry.path: entry.id for entry in self.catalog.files}
+        self.graph = VariationalGraph(analysis, model, self.lowering, file_ids)
+        self.conflicts = Conflicts(model, self.lowering, file_ids)
+        self._launched = {
+            entry.path: self.lowering.bounds(self.graph.launched[entry.path])
+            for entry in self.catalog.files
+        }
+        self._steps: OrderedDict[tuple[tuple[str, bool], ...], Decisions] = OrderedDict()
+        self._rendered: dict[str, list[Fields]] = {}
+
+    # -- choices -------------------------------------------------------------------------
+    def state(self, choices: Sequence[UserChoice]) -> ConfigurationState:
+        effective: list[_Effective] = []
+        accepted: list[UserChoice] = []
+        refused: list[Refusal] = []
+        decisions = self.derivation.initial
+        for choice in choices:
+            feature = self.catalog.lookup(choice.feature)
+            if choice.action == "unselect":
+                effective = [e for e in effective if feature.id not in e.targets]
+                decisions = self._decisions(effective)
+                accepted.append(choice)
+                continue
+            try:
+                entry = self._literal(choice, feature)
+            except _Refused as refusal:
+                refused.append(Refusal(choice, str(refusal)))
+                continue
+            kept = effective
+            if choice.action == "set":  # a new value replaces the arg's earlier one
+                kept = [e for e in effective if feature.id not in e.targets]
+            before = self._decisions(kept)
+            after = self.derivation.add(before, entry.variable, entry.value)
+            if after is None:
+                refused.append(Refusal(choice, self._reason(kept, entry)))
+                continue
+            effective = [*kept, entry]
+            self._remember(effective, after)
+            decisions = after
+            accepted.append(choice)
+        return self._answer(accepted, refused, effective, decisions)
+
+    def completion(self, choices: Sequence[UserChoice]) -> list[UserChoice]:
+        """Choices that finish ``choices`` with defaults: open files off, open args at default."""
+        added: list[UserChoice] = []
+        while True:
+            state = self.state([*choices, *added])
+            open_ = [f for f in self.catalog if state.features[f.id].state == "unselected"]
+            if not open_:
+                return added
+            # values of the files in the product first, then files (deselecting one may
+            # force values elsewhere), then values of files chosen since
+            open_.sort(key=lambda f: 1 if f.kind == "file" else 0 if self._in(f, state) else 2)
+            added.append(self._default_choice(open_[0], state))
+
+    @staticmethod
+    def _in(feature: Feature, state: ConfigurationState) -> bool:
+        return state.features[feature.file].state == "selected"
+
+    def _default_choice(self, feature: Feature, state: ConfigurationState) -> UserChoice:
+        if feature.kind == "file":
+            return UserChoice("deselect", feature.id)
+        arg = feature.id if feature.kind == "arg" else str(feature.parent)
+        values = self.catalog.values_of(arg)
+        possible = [f for f, _v in values if state.features[f.id].state != "deselected"]
+        defaults = [f for f, v in values if v.default and f in possible]
+        known = [f for f in possible if f.value != "<other>"]
+        return UserChoice("select", (defaults or known or possible)[0].id)
+
+    def _literal(self, choice: UserChoice, feature: Feature) -> _Effective:
+        if choice.action in ("select", "deselect"):
+            return _Effective(
+                choice, frozenset({feature.id}), feature.variable, choice.action == "select"
+            )
+        if feature.kind != "arg" or choice.value is None:
+            raise ChoiceError(f"set expects FILE:ARG=VALUE, got {choice.feature!r}")
+        values = self.catalog.values_of(feature.id)
+        for entry, value in values:
+            if value.slot == choice.value:
+                return _Effective(choice, frozenset({feature.id, entry.id}), entry.variable, True)
+        for entry, value in values:
+            if value.slot is OTHER:
+                return _Effective(
+                    choice,
+                    frozenset({feature.id, entry.id}),
+                    entry.variable,
+                    True,
+                    feature.id,
+                    choice.value,
+                )
+        raise _Refused(f"{feature.id} takes no value other than its known ones")
+
+    def _decisions(self, effective: Sequence[_Effective]) -> Decisions:
+        key = tuple((e.variable, e.value) for e in effective)
+        length = len(key)
+        while length and key[:length] not in self._steps:
+            length -= 1
+        decisions = self._steps[key[:length]] if length else self.derivation.initial
+        for position in range(length, len(key)):
+            variable, value = key[position]
+            found = self.derivation.add(decisions, variable, value)
+            assert found is not None, "an accepted list of choices became unsatisfiable"
+            decisions = found
+            self._steps[key[: position + 1]] = decisions
+        if key:
+            self._steps.move_to_end(key)
+        while len(self._steps) > CACHED_STEPS:
+            self._steps.popitem(last=False)
+        return decisions
+
+    def _remember(self, effective: Sequence[_Effective], decisions: Decisions) -> None:
+        self._steps[tuple((e.variable, e.value) for e in effective)] = decisions
+
+    def _reason(self, earlier: Sequence[_Effective], entry: _Effective) -> str:
+        """The earlier choices and the constraints that together rule ``entry`` out."""
+        manager = self.derivation.manager
+
+        def literal(e: _Effective) -> BDD:
+            atom = manager.var(e.variable)
+            return atom if e.value else ~atom
+
+        goal = literal(entry)
+        kept = list(earlier)
+        position = 0
+        while position < len(kept):
+            trial = kept[:position] + kept[position + 1 :]
+            cube = goal
+            for e in trial:
+                cube &= literal(e)
+            if self.derivation.satisfiable(cube):
+                position += 1
+            else:
+                kept = trial
+        cube = goal
+        for e in kept:
+            cube &= literal(e)
+        because = explain(self.model, cube)
+        text = f"{_show(entry.choice)} is impossible"
+        if kept:
+            text += " after " + ", ".join(_show(e.choice) for e in kept)
+        return f"{text}: {'; '.join(because)}"
+
+    # -- the answer ---------------------------------------------------------------------
+    def _answer(
+        self,
+        accepted: list[UserChoice],
+        refused: list[Refusal],
+        effective: Sequence[_Effective],
+        decisions: Decisions,
+    ) -> ConfigurationState:
+        chosen = {t for e in effective for t in e.targets}
+        features: dict[str, FeatureState] = {}
+        for feature in self.catalog:
+            decided = decisions.decided.get(feature.variable)
+            state = "unselected" if decided is None else "selected" if decided else "deselected"
+            features[feature.id] = FeatureState(
+                feature.kind,
+                feature.file,
+                feature.arg,
+                feature.value,
+                feature.parent,
+                state,
+                state != "unselected" and feature.id not in chosen,
+            )
+        texts = {e.arg: e.text for e in effective if e.arg is not None and e.text is not None}
+        values = {entry.path: self._values(entry, decisions, texts) for entry in self.catalog.files}
+        unselected = sum(1 for f in features.values() if f.state == "unselected")
+        complete = len(decisions.decided) == len(self.derivation.variables)
+        launches = self._launches(decisions, texts) if complete else None
+        command = (
+            "\n".join(command_lines(launches, self.analysis.workspace)) if launches else None
+        )
+        return ConfigurationState(
+            choices=accepted,
+            refused=refused,
+            features=features,
+            conflicts=self.conflicts.judge(decisions, self._describe),
+            graph=self._graph(decisions, values, texts),
+            complete=complete,
+            command=command,
+            configurations=self._count(decisions),
+            unselected=unselected,
+            launched=[launch.spelled for launch in launches or []],
+            args={launch.spelled: dict(launch.given) for launch in launches or []},
+        )
+
+    def _count(self, decisions: Decisions) -> int:
+        manager = self.derivation.manager
+        formula = self.derivation.formula
+        literals = dict(decisions.literals)
+        restricted = manager.let(literals, formula) if literals else formula
+        free = len(self.derivation.variables) - len(decisions.literals)
+        return int(manager.count(restricted, nvars=free)) if restricted != manager.false else 0
+
+    def _describe(self, condition: BDD, values: Mapping[str, bool]) -> str:
+        space = self.analysis.space
+        return space.describe(space.bdd.let(dict(values), condition) if values else condition)
+
+    def _values(
+        self, entry: FileEntry, decisions: Decisions, texts: Mapping[str, str]
+    ) -> Values:
+        """Concrete strings of a file's inputs as far as the choices fix them."""
+        concrete: dict[Input, str] = dict(self.lowering.concrete)
+        for arg in entry.feature.args:
+            text = self._arg_text(entry, arg.name, decisions, texts)
+            if text is not None:
+                concrete[arg.input] = text
+        return Values(concrete, self.lowering.host)
+
+    def _arg_text(
+        self, entry: FileEntry, name: str, decisions: Decisions, texts: Mapping[str, str]
+    ) -> str | None:
+        """The string an arg is given (or defaults to), once its value is decided."""
+        arg_id = f"{entry.id}:{name}"
+        for feature, value in self.catalog.values_of(arg_id):
+            if decisions.decided.get(feature.variable):
+                if value.slot is OTHER:
+                    return texts.get(arg_id)
+                if value.slot is UNSET:
+                    return self.analysis.model(entry.path).unset_defaults.get(name)
+                return str(value.slot)
+        return None
+
+    def _graph(
+        self, decisions: Decisions, values: Mapping[str, Values], texts: Mapping[str, str]
+    ) -> Graph:
+        graph = Graph()
+        lists = {"node": graph.nodes, "param": graph.params, "topic": graph.topics,
+                 "error": graph.errors}  # fmt: skip
+        judged: dict[tuple[BDD, BDD], tuple[str, dict[str, bool]]] = {}
+        for element in self.graph.elements:
+            bounds = element.bounds
+            if not bounds.exact and texts and element.entry:
+                bounds = self.lowering.decide(element.condition, values[element.entry].concrete)
+            key = (bounds.must, bounds.may)
+            verdict = judged.get(key)
+            if verdict is None:
+                verdict = self.derivation.presence(bounds, decisions)
+                judged[key] = verdict
+            presence, restricted = verdict
+            if presence == ABSENT and element.kind == "error":
+                continue
+            condition = (
+                None
+                if presence in (PRESENT, ABSENT)
+                else self._describe(element.condition, restricted)
+            )
+            shown = self._fields(element, values if presence != ABSENT else None)
+            for number, fields in enumerate(shown):
+                identifier = element.id if number == 0 else f"{element.id}/{number}"
+                extra: Fields = {"nodes": element.nodes} if element.kind == "topic" else {}
+                lists[element.kind].append(
+                    {**fields, **extra, "presence": presence, "condition": condition,
+                     "id": identifier}  # fmt: skip
+                )
+        return graph
+
+    def _fields(self, element: Element, values: Mapping[str, Values] | None) -> list[Fields]:
+        """The element's fields: with the state's values, or symbolic (``values`` None)."""
+        if not element.inputs or values is None:
+            found = self._rendered.get(element.id)
+            if found is None:
+                found = element.fields(Values(self.lowering.concrete, self.lowering.host))
+                self._rendered[element.id] = found
+            return found
+        return element.fields(values[element.entry])
+
+    def _launches(self, decisions: Decisions, texts: Mapping[str, str]) -> list[Launch] | None:
+        """The launched files and their args; None while an <other> value has no text."""
+        launches = []
+        for entry in self.catalog.files:
+            presence, _ = self.derivation.presence(self._launched[entry.path], decisions)
+            if presence != PRESENT:
+                continue
+            model = self.analysis.model(entry.path)
+            reads: dict[str, str | None] = {}
+            given: dict[str, str] = {}
+            features = {arg.name: arg for arg in entry.feature.args}
+            for name in model.inputs:
+                default = model.unset_defaults.get(name)
+                arg = features.get(name)
+                if arg is None:
+                    reads[name] = default
+                    if default is None and _required(model, name):
+                        literals = [s for s in model.domains.get(name, ()) if isinstance(s, str)]
+                        if not literals:
+                            return None
+                        given[name] = reads[name] = literals[0]
+                    continue
+                text = self._arg_text(entry, name, decisions, texts)
+                chosen = self._chosen_slot(entry, name, decisions)
+                if chosen is OTHER and text is None:
+                    return None
+                reads[name] = text
+                if chosen is not UNSET and (text != default or arg.default is None):
+                    assert text is not None
+                    given[name] = text
+            launches.append(Launch(entry.path, entry.id, given, reads))
+        return launches
+
+    def _chosen_slot(self, entry: FileEntry, name: str, decisions: Decisions) -> object:
+        for feature, value in self.catalog.values_of(f"{entry.id}:{name}"):
+            if decisions.decided.get(feature.variable):
+                return value.slot
+        return None
+
+
+class _Refused(Exception):
+    """A choice the model cannot take, whatever was chosen before."""
+
+
+def _required(model: LaunchModel, name: str) -> bool:
+    """``name`` is an arg of the command line without a default: roslaunch insists on it."""
+    return any(
+        a.name == name and a.input is not None and a.default is None and a.value is None
+        for a in model.args
+    )
+
+
+def _show(choice: UserChoice) -> str:
+    if choice.action == "set":
+        return f"set {choice.feature}={choice.value}"
+    return f"{choice.action} {choice.feature}"

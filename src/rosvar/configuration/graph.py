@@ -1,0 +1,308 @@
+"""The variational computation graph: every node, param and topic any product can have.
+
+Built once from the models of the entry files. An element of ``model(f)`` is in a product
+when ``f`` is *launched* (selected, and not included by another selected file that includes
+it there) and its own condition holds. An element whose fields differ between
+configurations is split into *variants* (HAROS-style: each value paired with its
+condition); each variant keeps its presence condition in the analysis' manager (for
+people) and lowered into the solver's (for the solver). Values that are terms stay
+symbolic until the user's choices make their inputs concrete.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
+
+from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.values import json_value
+from rosvar.diagnostics import Location
+from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.model import (
+    DeferredValue,
+    LaunchModel,
+    NodeDecl,
+    ParamDecl,
+    Raw,
+    YamlDecl,
+)
+from rosvar.interpreter.tags.param import param_value
+from rosvar.interpreter.tags.rosparam import load_rosparam
+from rosvar.interpreter.validation import node_values
+from rosvar.configuration.lowering import Bounds, Lowering
+from rosvar.logic.choice import Choice, combine
+from rosvar.logic.conditions import BDD
+from rosvar.logic.inputs import Input
+from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
+from rosvar.ros import names
+
+Fields = dict[str, object]
+Render = Callable[["Values"], list[Fields]]
+
+
+class Values:
+    """Concrete strings of inputs where the choices fix them; evaluates terms with them."""
+
+    def __init__(self, concrete: Mapping[Input, str], host: object) -> None:
+        self.concrete = concrete
+        self.host = host
+
+    def knows(self, raws: Iterable[Raw | None]) -> bool:
+        """Every input the terms among ``raws`` need has a concrete string."""
+        return all(
+            term_inputs(raw) <= self.concrete.keys() for raw in raws if is_term(raw)
+        )
+
+    def text(self, raw: Raw | None) -> str | None:
+        """The string of ``raw``, or its symbolic form while an input is unknown."""
+        if raw is None or isinstance(raw, str):
+            return raw
+        try:
+            return evaluate(raw, self.concrete, self.host)
+        except (TermError, LookupError, ValueError):
+            return str(raw)
+
+
+@dataclass
+class Element:
+    """One variant of a node, param, topic or error, with its presence condition."""
+
+    kind: str  # "node", "param", "topic", "error"
+    id: str
+    entry: str  # the entry launch file (path) whose model holds it
+    condition: BDD  # analysis manager, fixed atoms substituted
+    bounds: Bounds  # solver manager
+    render: Render  # fields for one set of concrete values (several for a YAML load)
+    inputs: frozenset[Input] = frozenset()  # inputs its fields still need
+    nodes: list[str] = field(default_factory=list)  # topics: the node variants using it
+
+    def fields(self, values: Values) -> list[Fields]:
+        return self.render(values)
+
+
+class VariationalGraph:
+    """Every element variant of the feature model's files, built once."""
+
+    def __init__(
+        self,
+        analysis: Analysis,
+        model: FeatureModel,
+        lowering: Lowering,
+        file_ids: Mapping[str, str],
+    ) -> None:
+        self.lowering = lowering
+        self.elements: list[Element] = []
+        self.launched: dict[str, BDD] = _launched(model)
+        self._topics: dict[str, tuple[list[str], BDD]] = {}
+        for file in model.files:
+            self._add_model(analysis.model(file.file), file_ids[file.file], self.launched[file.file])
+        for name, (nodes, condition) in sorted(self._topics.items()):
+            self._add("topic", f"topic:{name}", "", condition, _static({"name": name}), nodes=nodes)
+
+    def by_kind(self, kind: str) -> Iterable[Element]:
+        return (e for e in self.elements if e.kind == kind)
+
+    def _add(
+        self,
+        kind: str,
+        id_: str,
+        entry: str,
+        condition: BDD,
+        render: Render,
+        inputs: Iterable[Input] = (),
+        nodes: list[str] | None = None,
+    ) -> Element | None:
+        fixed, bounds = self.lowering.lower(condition)
+        if not self.lowering.space.satisfiable(fixed):
+            return None  # e.g. two values of one arg: combinations no configuration has
+        element = Element(kind, id_, entry, fixed, bounds, render, frozenset(inputs), nodes or [])
+        self.elements.append(element)
+        return element
+
+    def _add_model(self, model: LaunchModel, file_id: str, launched: BDD) -> None:
+        counters: dict[str, int] = {}
+
+        def new_id(location: Location) -> str:
+            key = f"{file_id}|{os.path.basename(location.file)}:{location.line}:{location.col}"
+            counters[key] = counters.get(key, 0) + 1
+            return f"{key}#{counters[key]}"
+
+        for node in model.nodes:
+            if not node.is_test:
+                self._add_node(model, node, launched, new_id)
+        for param in model.params:
+            condition = launched & param.condition
+            if isinstance(param, ParamDecl):
+                for branch, (name, value) in combine([param.name, param.value], tuple):
+                    self._add(
+                        "param",
+                        new_id(param.location),
+                        model.file,
+                        condition & branch,
+                        _param_renderer(name, value, param.location),
+                        _needs(name, value.raw if isinstance(value, DeferredValue) else value),
+                    )
+            else:
+                self._add(
+                    "param",
+                    new_id(param.location),
+                    model.file,
+                    condition,
+                    _yaml_renderer(param),
+                    _needs(param.scope_ns, param.command, param.ns, param.file, param.param, param.text),
+                )
+        for error in model.errors:
+            self._add(
+                "error",
+                new_id(error.location),
+                model.file,
+                launched & error.condition,
+                _static({"code": error.code, "message": error.message, **error.location.to_json()}),
+            )
+
+    def _add_node(
+        self, model: LaunchModel, node: NodeDecl, launched: BDD, new_id: Callable[[Location], str]
+    ) -> None:
+        keys = sorted(node.fields)
+        space = model.space
+        switches = [
+            Choice([(c, True), (~c, False)], space.false)
+            for c in [r.condition for r in node.remaps] + [e.condition for e in node.env]
+        ]
+        combined = combine([node.fields[k] for k in keys] + switches, tuple)
+        for branch, values in combined:
+            raw = dict(zip(keys, values[: len(keys)], strict=True))
+            active = values[len(keys) :]
+            remaps = [(r.source, r.target) for r, on in zip(node.remaps, active, strict=False) if on]
+            env = [
+                (e.name, e.value)
+                for e, on in zip(node.env, active[len(node.remaps) :], strict=True)
+                if on
+            ]
+            id_ = new_id(node.location)
+            element = self._add(
+                "node",
+                id_,
+                model.file,
+                launched & node.condition & branch,
+                _node_renderer(raw, remaps, env, node),
+                _needs(*raw.values(), *(p for pair in remaps + env for p in pair)),
+            )
+            if element is not None:
+                self._topic_uses(element, raw, remaps)
+
+    def _topic_uses(
+        self, element: Element, raw: Mapping[str, Raw | None], remaps: list[tuple[Raw, Raw]]
+    ) -> None:
+        symbolic = Values({}, None)
+        namespace = symbolic.text(raw.get("namespace")) or "/"
+        node_name = names.ns_join(namespace, symbolic.text(raw.get("name")) or "")
+        for _source, target in remaps:
+            name = symbolic.text(target) or ""
+            if names.is_private(name):
+                topic = names.ns_join(node_name + "/", name[1:])
+            else:
+                topic = names.ns_join(namespace, name)
+            nodes, condition = self._topics.get(topic, ([], element.condition.bdd.false))
+            nodes.append(element.id)
+            self._topics[topic] = (nodes, condition | element.condition)
+
+
+def _launched(model: FeatureModel) -> dict[str, BDD]:
+    """File → "selected and not included by a selected file that includes it there"."""
+    by_id = {f.id: f for f in model.files}
+    launched = {f.file: f.variable for f in model.files}
+    for constraint in model.constraints:
+        if constraint.kind != "requires":
+            continue
+        source, target = (by_id[i] for i in constraint.files)
+        launched[target.file] &= ~(source.variable & constraint.condition)
+    return launched
+
+
+def _needs(*raws: object) -> set[Input]:
+    found: set[Input] = set()
+    for raw in raws:
+        if is_term(raw):
+            found |= term_inputs(raw)  # type: ignore[arg-type]
+    return found
+
+
+def _static(fields: Fields) -> Render:
+    return lambda _values: [fields]
+
+
+def _node_renderer(
+    raw: Mapping[str, Raw | None],
+    remaps: list[tuple[Raw, Raw]],
+    env: list[tuple[Raw, Raw]],
+    node: NodeDecl,
+) -> Render:
+    def render(values: Values) -> list[Fields]:
+        text = {k: values.text(v) for k, v in raw.items()}
+        try:
+            typed: Fields = node_values(text)
+        except ValueError:
+            typed = {}
+        mapping: dict[str, str] = {}
+        for source, target in remaps:
+            key = values.text(source) or ""
+            mapping.pop(key, None)
+            mapping[key] = values.text(target) or ""
+        namespace = text.get("namespace") or "/"
+        return [
+            {
+                "name": names.ns_join(namespace, text.get("name") or ""),
+                "namespace": namespace,
+                "package": text.get("pkg"),
+                "type": text.get("type"),
+                **typed,
+                "remaps": sorted([list(p) for p in mapping.items()]),
+                "env": sorted([values.text(n), values.text(v)] for n, v in env),
+                "filename": node.filename,
+                "line": node.location.line,
+                "col": node.location.col,
+            }
+        ]
+
+    return render
+
+
+def _param_renderer(name: Raw, value: object, location: Location) -> Render:
+    def render(values: Values) -> list[Fields]:
+        shown: object = value
+        if isinstance(value, DeferredValue):
+            concrete = values.text(value.raw) or ""
+            try:
+                shown = json_value(param_value("value", concrete, value.ptype))
+            except (ValueError, OSError):
+                shown = concrete
+        elif is_term(value):
+            shown = values.text(value)  # type: ignore[arg-type]
+        else:
+            shown = json_value(value)
+        return [{"name": values.text(name), "value": shown, **_where(location)}]
+
+    return render
+
+
+def _yaml_renderer(param: YamlDecl) -> Render:
+    raws = (param.scope_ns, param.command, param.ns, param.file, param.param, param.text)
+
+    def render(values: Values) -> list[Fields]:
+        scope_ns, command, ns, file, name, body = (values.text(p) for p in raws)
+        symbolic = [{"name": f"{scope_ns} (YAML)", "value": "<yaml>", **_where(param.location)}]
+        if not values.knows(raws):
+            return symbolic
+        try:
+            pairs = load_rosparam(str(command), ns, file, name, body or "", str(scope_ns))
+        except (ValueError, OSError):
+            return symbolic
+        return [{"name": key, "value": json_value(v), **_where(param.location)} for key, v in pairs]
+
+    return render
+
+
+def _where(location: Location) -> Fields:
+    return {"filename": location.file, "line": location.line}

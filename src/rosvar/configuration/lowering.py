@@ -1,0 +1,118 @@
+"""Analysis-space conditions as solver BDDs, under what the configuration fixes up front.
+
+A presence condition of the variational model speaks about every atom of the analysis:
+environment variables, args that are no features (they stay unset: they change nothing in
+the graph), and predicates on typed-in values. The solver knows only feature variables.
+Lowering fixes the environment (as ``rosvar resolve``: a variable not given is unset) and
+the unset args, and bounds what is still open — predicates on an arg's ``<other>`` text
+that the user may type later — from below (``must``: for every text) and from above
+(``may``: for some text). Both bounds are copied into the solver's manager.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import dd.cudd as _cudd
+
+from rosvar.analyses.features import FeatureModel
+from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.substitution import PackageTable
+from rosvar.logic.conditions import BDD, PredicateAtom, SlotAtom, decide_predicate
+from rosvar.logic.inputs import EnvInput, Input
+from rosvar.logic.terms import term_inputs
+
+
+@dataclass(frozen=True)
+class Bounds:
+    """A condition in the solver: ``must`` ⊆ condition ⊆ ``may`` (equal when nothing is open)."""
+
+    must: BDD
+    may: BDD
+
+    @property
+    def exact(self) -> bool:
+        return bool(self.must == self.may)
+
+
+class Lowering:
+    """Copies conditions from the analysis' manager to the solver's, fixed atoms substituted."""
+
+    def __init__(self, analysis: Analysis, model: FeatureModel, env: Mapping[str, str]) -> None:
+        space = analysis.space
+        self.space = space
+        self.manager = model.solver.manager
+        self.host = PackageTable(
+            {name: package.path for name, package in analysis.workspace.packages.items()}
+        )
+        solver_variables = set(model.solver.variables)
+        self.feature_inputs: set[Input] = {
+            arg.input for file in model.files for arg in file.args
+        }
+        self.concrete: dict[Input, str] = {}
+        for input_ in space.inputs():
+            if isinstance(input_, EnvInput):
+                if input_.name in env:
+                    self.concrete[input_] = env[input_.name]
+            elif input_ not in self.feature_inputs:
+                default = analysis.model(input_.file).unset_defaults.get(input_.name)
+                if default is not None:
+                    self.concrete[input_] = default
+        truth = space.assignment(
+            {i: self.concrete.get(i) for i in space.inputs()}, self.host
+        )
+        self.fixed: dict[str, bool] = {}
+        self.open: set[str] = set()
+        for atom in space.atoms():
+            name = space.variable_name(atom)
+            if name in solver_variables:
+                continue
+            if isinstance(atom, SlotAtom) and atom.input in self.feature_inputs:
+                self.fixed[name] = False  # a selected arg holds one of its feature values
+            elif isinstance(atom, PredicateAtom) and term_inputs(atom.term) & self.feature_inputs:
+                self.open.add(name)
+            else:
+                self.fixed[name] = truth[name]
+        self._cache: dict[BDD, tuple[BDD, Bounds]] = {}
+
+    def fix(self, condition: BDD) -> BDD:
+        """``condition`` with the fixed atoms substituted (still in the analysis' manager)."""
+        return self.lower(condition)[0]
+
+    def bounds(self, condition: BDD) -> Bounds:
+        return self.lower(condition)[1]
+
+    def lower(self, condition: BDD) -> tuple[BDD, Bounds]:
+        found = self._cache.get(condition)
+        if found is None:
+            bdd = self.space.bdd
+            support = bdd.support(condition)
+            values = {n: self.fixed[n] for n in support if n in self.fixed}
+            fixed = bdd.let(values, condition) if values else condition
+            found = (fixed, self._copy(fixed))
+            self._cache[condition] = found
+        return found
+
+    def decide(self, condition: BDD, concrete: Mapping[Input, str]) -> Bounds:
+        """Bounds once the open predicates whose terms ``concrete`` completes are decided."""
+        fixed = self.fix(condition)
+        bdd = self.space.bdd
+        values: dict[str, bool] = {}
+        for name in bdd.support(fixed) & self.open:
+            atom = self.space.atom_of(name)
+            assert isinstance(atom, PredicateAtom)
+            if term_inputs(atom.term) <= set(concrete) | set(self.concrete):
+                values[name] = decide_predicate(atom, {**self.concrete, **concrete}, self.host)
+        return self._copy(bdd.let(values, fixed) if values else fixed)
+
+    def _copy(self, fixed: BDD) -> Bounds:
+        bdd = self.space.bdd
+        open_ = bdd.support(fixed) & self.open
+        must = bdd.forall(open_, fixed) if open_ else fixed
+        may = bdd.exist(open_, fixed) if open_ else fixed
+        return Bounds(_cudd.copy_bdd(must, self.manager), _cudd.copy_bdd(may, self.manager))
+
+    def back(self, condition: BDD) -> BDD:
+        """A solver BDD in the analysis' manager (for describing it)."""
+        return _cudd.copy_bdd(condition, self.space.bdd)
