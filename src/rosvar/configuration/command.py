@@ -48,19 +48,22 @@ def group(launches: Sequence[Launch]) -> list[list[Launch]]:
     return [members for members, _given in groups]
 
 
-def command_lines(launches: Sequence[Launch], workspace: Workspace) -> list[str]:
-    lines = []
-    for members in group(launches):
-        given: dict[str, str] = {}
-        for member in members:
-            given.update(member.given)
-        if len(members) == 1:
-            files = _package_form(members[0], workspace) or [members[0].spelled]
-        else:
-            files = [m.spelled for m in members]
-        words = ["roslaunch", *files, *(f"{name}:={value}" for name, value in given.items())]
-        lines.append(" ".join(shlex.quote(w) for w in words))
-    return lines
+def given(members: Sequence[Launch]) -> dict[str, str]:
+    """The args of one command line: what its files give, together."""
+    found: dict[str, str] = {}
+    for member in members:
+        found.update(member.given)
+    return found
+
+
+def command_line(members: Sequence[Launch], workspace: Workspace) -> str:
+    """``roslaunch`` for files that share a command line (see :func:`group`)."""
+    if len(members) == 1:
+        files = _package_form(members[0], workspace) or [members[0].spelled]
+    else:
+        files = [m.spelled for m in members]
+    words = ["roslaunch", *files, *(f"{k}:={v}" for k, v in given(members).items())]
+    return " ".join(shlex.quote(w) for w in words)
 
 
 def _package_form(launch: Launch, workspace: Workspace) -> list[str] | None:

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from rosvar.analyses.features import FeatureModel, explain
 from rosvar.configuration.catalog import Catalog, Feature, FileEntry
 from rosvar.configuration.choices import ChoiceError, Refusal, UserChoice
-from rosvar.configuration.command import Launch, command_lines
+from rosvar.configuration.command import Launch, command_line, group
 from rosvar.configuration.conflicts import Conflicts, ConflictState
 from rosvar.configuration.derivation import ABSENT, PRESENT, Decisions, Derivation
 from rosvar.configuration.graph import Element, Fields, Values, VariationalGraph
@@ -81,8 +81,7 @@ class ConfigurationState:
     command: str | None
     configurations: int
     unselected: int
-    launched: list[str] = field(default_factory=list)  # spelled ids of the launched files
-    args: dict[str, dict[str, str]] = field(default_factory=dict)  # launched file → given args
+    commands: list[list[Launch]] = field(default_factory=list)  # files sharing a command line
 
     def to_json(self) -> dict[str, object]:
         count = self.configurations
@@ -96,7 +95,7 @@ class ConfigurationState:
             "choices": [c.to_json() for c in self.choices],
             "configurations": count if count <= EXACT_INTEGER else str(count),
             "unselected": self.unselected,
-            "launched": self.launched,
+            "launched": [launch.spelled for group in self.commands for launch in group],
         }
 
 
@@ -302,9 +301,9 @@ class Configurator:
         unselected = sum(1 for f in features.values() if f.state == "unselected")
         complete = len(decisions.decided) == len(self.derivation.variables)
         launches = self._launches(decisions, texts) if complete else None
-        command = (
-            "\n".join(command_lines(launches, self.analysis.workspace)) if launches else None
-        )
+        commands = group(launches or [])
+        workspace = self.analysis.workspace
+        command = "\n".join(command_line(g, workspace) for g in commands) if launches else None
         return ConfigurationState(
             choices=accepted,
             refused=refused,
@@ -315,8 +314,7 @@ class Configurator:
             command=command,
             configurations=self._count(decisions),
             unselected=unselected,
-            launched=[launch.spelled for launch in launches or []],
-            args={launch.spelled: dict(launch.given) for launch in launches or []},
+            commands=commands,
         )
 
     def _count(self, decisions: Decisions) -> int:
@@ -331,9 +329,7 @@ class Configurator:
         space = self.analysis.space
         return space.describe(space.bdd.let(dict(values), condition) if values else condition)
 
-    def _values(
-        self, entry: FileEntry, decisions: Decisions, texts: Mapping[str, str]
-    ) -> Values:
+    def _values(self, entry: FileEntry, decisions: Decisions, texts: Mapping[str, str]) -> Values:
         """Concrete strings of a file's inputs as far as the choices fix them."""
         concrete: dict[Input, str] = dict(self.lowering.concrete)
         for arg in entry.feature.args:
@@ -385,8 +381,13 @@ class Configurator:
                 identifier = element.id if number == 0 else f"{element.id}/{number}"
                 extra: Fields = {"nodes": element.nodes} if element.kind == "topic" else {}
                 lists[element.kind].append(
-                    {**fields, **extra, "presence": presence, "condition": condition,
-                     "id": identifier}  # fmt: skip
+                    {
+                        **fields,
+                        **extra,
+                        "presence": presence,
+                        "condition": condition,
+                        "id": identifier,
+                    }
                 )
         return graph
 

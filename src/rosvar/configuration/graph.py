@@ -14,9 +14,11 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
+from typing import cast
 
 from rosvar.analyses.features import FeatureModel
 from rosvar.analyses.values import json_value
+from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
 from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import (
@@ -30,7 +32,6 @@ from rosvar.interpreter.model import (
 from rosvar.interpreter.tags.param import param_value
 from rosvar.interpreter.tags.rosparam import load_rosparam
 from rosvar.interpreter.validation import node_values
-from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import BDD
 from rosvar.logic.inputs import Input
@@ -50,9 +51,7 @@ class Values:
 
     def knows(self, raws: Iterable[Raw | None]) -> bool:
         """Every input the terms among ``raws`` need has a concrete string."""
-        return all(
-            term_inputs(raw) <= self.concrete.keys() for raw in raws if is_term(raw)
-        )
+        return all(term_inputs(raw) <= self.concrete.keys() for raw in raws if is_term(raw))  # type: ignore[arg-type]
 
     def text(self, raw: Raw | None) -> str | None:
         """The string of ``raw``, or its symbolic form while an input is unknown."""
@@ -96,7 +95,9 @@ class VariationalGraph:
         self.launched: dict[str, BDD] = _launched(model)
         self._topics: dict[str, tuple[list[str], BDD]] = {}
         for file in model.files:
-            self._add_model(analysis.model(file.file), file_ids[file.file], self.launched[file.file])
+            self._add_model(
+                analysis.model(file.file), file_ids[file.file], self.launched[file.file]
+            )
         for name, (nodes, condition) in sorted(self._topics.items()):
             self._add("topic", f"topic:{name}", "", condition, _static({"name": name}), nodes=nodes)
 
@@ -150,7 +151,9 @@ class VariationalGraph:
                     model.file,
                     condition,
                     _yaml_renderer(param),
-                    _needs(param.scope_ns, param.command, param.ns, param.file, param.param, param.text),
+                    _needs(
+                        param.scope_ns, param.command, param.ns, param.file, param.param, param.text
+                    ),
                 )
         for error in model.errors:
             self._add(
@@ -166,15 +169,17 @@ class VariationalGraph:
     ) -> None:
         keys = sorted(node.fields)
         space = model.space
-        switches = [
+        switches: list[Choice[object]] = [
             Choice([(c, True), (~c, False)], space.false)
             for c in [r.condition for r in node.remaps] + [e.condition for e in node.env]
         ]
-        combined = combine([node.fields[k] for k in keys] + switches, tuple)
-        for branch, values in combined:
-            raw = dict(zip(keys, values[: len(keys)], strict=True))
+        fields: list[Choice[object]] = [node.fields[k] for k in keys]
+        for branch, values in combine(fields + switches, tuple):
+            raw = cast(dict[str, Raw | None], dict(zip(keys, values[: len(keys)], strict=True)))
             active = values[len(keys) :]
-            remaps = [(r.source, r.target) for r, on in zip(node.remaps, active, strict=False) if on]
+            remaps = [
+                (r.source, r.target) for r, on in zip(node.remaps, active, strict=False) if on
+            ]
             env = [
                 (e.name, e.value)
                 for e, on in zip(node.env, active[len(node.remaps) :], strict=True)
@@ -269,7 +274,7 @@ def _node_renderer(
     return render
 
 
-def _param_renderer(name: Raw, value: object, location: Location) -> Render:
+def _param_renderer(name: object, value: object, location: Location) -> Render:
     def render(values: Values) -> list[Fields]:
         shown: object = value
         if isinstance(value, DeferredValue):
@@ -282,7 +287,7 @@ def _param_renderer(name: Raw, value: object, location: Location) -> Render:
             shown = values.text(value)  # type: ignore[arg-type]
         else:
             shown = json_value(value)
-        return [{"name": values.text(name), "value": shown, **_where(location)}]
+        return [{"name": values.text(cast(Raw, name)), "value": shown, **_where(location)}]
 
     return render
 

@@ -47,9 +47,7 @@ class Lowering:
             {name: package.path for name, package in analysis.workspace.packages.items()}
         )
         solver_variables = set(model.solver.variables)
-        self.feature_inputs: set[Input] = {
-            arg.input for file in model.files for arg in file.args
-        }
+        self.feature_inputs: set[Input] = {arg.input for file in model.files for arg in file.args}
         self.concrete: dict[Input, str] = {}
         for input_ in space.inputs():
             if isinstance(input_, EnvInput):
@@ -59,9 +57,7 @@ class Lowering:
                 default = analysis.model(input_.file).unset_defaults.get(input_.name)
                 if default is not None:
                     self.concrete[input_] = default
-        truth = space.assignment(
-            {i: self.concrete.get(i) for i in space.inputs()}, self.host
-        )
+        truth = space.assignment({i: self.concrete.get(i) for i in space.inputs()}, self.host)
         self.fixed: dict[str, bool] = {}
         self.open: set[str] = set()
         for atom in space.atoms():

@@ -1,0 +1,135 @@
+"""The engine's answers: derived states, refusals, presence, completion (examples inline)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import pytest
+
+from configuration.helpers import choices, configurator, present, run, states
+from rosvar.configuration.choices import ChoiceError
+from rosvar.configuration.engine import Configurator
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+MAIN = """  <arg name="robot" default="kobuki"/>
+  <arg name="cam" default="false"/>
+  <node pkg="pkg" type="drive" name="$(arg robot)"/>
+  <include file="$(find pkg)/launch/camera.launch" if="$(arg cam)"/>
+"""
+CAMERA = """  <arg name="fps" default="30"/>
+  <node pkg="pkg" type="cam" name="camera"><param name="fps" value="$(arg fps)"/></node>
+"""
+CLASH = '  <node pkg="pkg" type="cam" name="camera"/>\n'
+
+
+@pytest.fixture
+def engine(ws: LaunchWorkspace) -> Configurator:
+    ws.launch("main.launch", MAIN)
+    ws.launch("camera.launch", CAMERA)
+    ws.launch("other_camera.launch", CLASH)
+    return configurator(ws)
+
+
+def test_nothing_chosen_nothing_decided(engine: Configurator) -> None:
+    state = run(engine)
+    assert states(state) == {}
+    assert not state.complete and state.command is None
+    assert state.unselected == len(state.features)
+    assert set(present(state).values()) == {"undetermined"}
+
+
+def test_value_selects_its_arg_and_file_and_deselects_its_siblings(engine: Configurator) -> None:
+    found = states(run(engine, "set main.launch:robot=kobuki"))
+    assert found["main.launch"] == "selected*"
+    assert found["main.launch:robot"] == "selected"
+    assert found["main.launch:robot=kobuki"] == "selected"
+    assert found["main.launch:robot=<other>"] == "deselected*"
+
+
+def test_include_selects_the_included_file_and_exclude_deselects_the_clash(
+    engine: Configurator,
+) -> None:
+    found = states(run(engine, "set main.launch:cam=true"))
+    assert found["camera.launch"] == "selected*"
+    assert found["other_camera.launch"] == "deselected*"  # both declare /camera
+    assert "camera.launch" not in states(run(engine, "set main.launch:cam=false"))
+
+
+def test_refusal_names_the_earlier_choice_and_the_constraints(engine: Configurator) -> None:
+    state = run(
+        engine, "select other_camera.launch", "select main.launch", "set main.launch:cam=true"
+    )
+    [refusal] = state.refused
+    assert refusal.choice.feature == "main.launch:cam"
+    assert "select other_camera.launch" in refusal.reason
+    assert "select main.launch" not in refusal.reason  # not needed for the contradiction
+    assert "includes" in refusal.reason and "both declare node /camera" in refusal.reason
+    assert [c.feature for c in state.choices] == ["other_camera.launch", "main.launch"]
+    assert states(state)["main.launch:cam=true"] == "deselected*"
+
+
+def test_unknown_feature_is_a_usage_error(engine: Configurator) -> None:
+    with pytest.raises(ChoiceError):
+        run(engine, "select nowhere.launch")
+
+
+def test_unselect_takes_a_choice_back(engine: Configurator) -> None:
+    state = run(engine, "set main.launch:cam=true", "unselect main.launch:cam")
+    assert states(state) == {}
+
+
+def test_set_replaces_the_earlier_value(engine: Configurator) -> None:
+    state = run(engine, "set main.launch:robot=kobuki", "set main.launch:robot=husky")
+    assert state.refused == []
+    assert present(state)["/husky"] == "present"
+
+
+def test_presence_present_absent_undetermined(engine: Configurator) -> None:
+    state = run(engine, "select main.launch")
+    nodes = {(n["name"], n["presence"], n["condition"]) for n in state.graph.nodes}
+    assert ("/kobuki", "undetermined", "robot=kobuki") in nodes
+    # the camera of main.launch's model: only when cam
+    assert ("/camera", "undetermined", "cam") in nodes
+    state = run(engine, "select main.launch", "set main.launch:cam=false")
+    names = {n["name"]: n["presence"] for n in state.graph.nodes if n["id"].startswith("main")}
+    assert names["/camera"] == "absent"
+
+
+def test_typed_other_value_is_evaluated(engine: Configurator) -> None:
+    state = run(engine, "set main.launch:robot=r2d2")
+    assert states(state)["main.launch:robot=<other>"] == "selected"
+    assert present(state)["/r2d2"] == "present"
+
+
+def test_included_file_is_not_launched_on_its_own(engine: Configurator) -> None:
+    state = run(engine, "set main.launch:cam=true")
+    cameras = [n for n in state.graph.nodes if n["name"] == "/camera" and n["presence"] != "absent"]
+    assert [n["id"].split("|")[0] for n in cameras] == ["main.launch"]
+
+
+def test_completion_reaches_a_complete_product(engine: Configurator) -> None:
+    chosen = choices("set main.launch:cam=true")
+    state = engine.state(chosen + engine.completion(chosen))
+    assert state.complete and state.unselected == 0 and state.configurations == 1
+    assert state.command == "roslaunch pkg main.launch cam:=true"
+
+
+def test_conflict_certain_possible_gone(ws: LaunchWorkspace) -> None:
+    ws.launch(
+        "a.launch",
+        '  <arg name="on" default="true"/>\n  <node pkg="p" type="t" name="n" if="$(arg on)"/>',
+    )
+    ws.launch("b.launch", '  <node pkg="p" type="t" name="n"/>')
+    engine = configurator(ws)
+    [conflict] = run(engine).conflicts
+    assert (conflict.files, conflict.status, conflict.condition) == (
+        ("a.launch", "b.launch"),
+        "possible",
+        "on",
+    )
+    [conflict] = run(engine, "set a.launch:on=true").conflicts
+    assert conflict.status == "certain" and conflict.condition is None
+    assert run(engine, "set a.launch:on=false").conflicts == []
+    assert run(engine, "deselect b.launch").conflicts == []
