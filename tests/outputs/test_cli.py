@@ -206,3 +206,84 @@ def test_real_process_exit_codes(workspace: LaunchWorkspace) -> None:
     )
     assert clash.returncode == EXIT_FAILS
     assert json.loads(clash.stdout)["conflicts"][0]["name"] == "/teleop"
+
+
+# -- configure ----------------------------------------------------------------------------------
+ROBOT = """  <arg name="model" default="kobuki"/>
+  <arg name="speed"/>
+  <node pkg="pkg" type="drive" name="$(arg model)"><param name="speed" value="$(arg speed)"/></node>
+"""
+
+
+@pytest.fixture
+def robot(ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch) -> str:
+    ws.launch("robot.launch", ROBOT)
+    ws.launch("other.launch", '  <node pkg="pkg" type="t" name="kobuki"/>')
+    monkeypatch.chdir(ws.root)
+    return "pkg/launch/robot.launch"
+
+
+def test_json_has_the_agreed_fields_and_validates(
+    robot: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, out, _err = run(capsys, "configure", ".", "--select", robot, "--json")
+    assert code == EXIT_OK
+    document = json.loads(out)
+    assert {"features", "conflicts", "graph", "complete", "command", "refused"} <= set(document)
+    assert document["features"][f"{robot}:model"]["state"] == "selected"
+    assert document["features"][f"{robot}:model"]["derived"] is True
+    assert document["features"][robot]["derived"] is False
+    assert set(document["graph"]) >= {"nodes", "params", "topics"}
+    assert document["complete"] is False and document["command"] is None
+    schema_check(document, "configure.schema.json")
+
+
+def test_complete_with_a_typed_value(robot: str, capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _err = run(
+        capsys, "configure", ".", "--set", f"{robot}:speed=0.5", "--deselect",
+        "pkg/launch/other.launch", "--set", f"{robot}:model=kobuki", "--json",
+    )  # fmt: skip
+    assert code == EXIT_OK
+    document = json.loads(out)
+    assert document["complete"] is True
+    # a required arg is always named, a default one only when it differs
+    assert document["command"] == "roslaunch pkg robot.launch speed:=0.5"
+    params = [p for p in document["graph"]["params"] if p["presence"] == "present"]
+    assert [(p["name"], p["value"]) for p in params] == [("/kobuki/speed", 0.5)]
+    schema_check(document, "configure.schema.json")
+
+
+def test_refused_choice_exits_1_and_is_listed(
+    robot: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, out, _err = run(
+        capsys, "configure", ".", "--set", f"{robot}:model=kobuki", "--select",
+        "pkg/launch/other.launch",
+    )  # fmt: skip
+    assert code == EXIT_FAILS
+    assert "refused: select pkg/launch/other.launch is impossible after set" in out
+    assert "both declare node /kobuki" in out
+
+
+def test_text_summary_tells_what_is_left(robot: str, capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _err = run(capsys, "configure", ".", "--select", robot)
+    assert code == EXIT_OK
+    assert "selected files: pkg/launch/robot.launch" in out
+    assert f"--set {robot}:speed=..." in out
+    code, out, _err = run(capsys, "configure", ".", "--select", robot, "--set",
+                          f"{robot}:speed=1", "--finish")  # fmt: skip
+    assert code == EXIT_OK and out.splitlines()[-1] == "roslaunch pkg robot.launch speed:=1"
+
+
+def test_usage_errors(robot: str, capsys: pytest.CaptureFixture[str]) -> None:
+    code, _out, err = run(capsys, "configure", ".", "--select", "nowhere.launch")
+    assert code == EXIT_USAGE and "no feature 'nowhere.launch'" in err
+    code, _out, err = run(capsys, "configure", ".", "--set", robot)
+    assert code == EXIT_USAGE and "FILE:ARG=VALUE" in err
+    code, _out, err = run(capsys, "configure", ".", "--env", "NOVALUE")
+    assert code == EXIT_USAGE
+
+
+def test_nothing_to_configure(tmp_path: object, capsys: pytest.CaptureFixture[str]) -> None:
+    code = main(["configure", str(tmp_path)])
+    assert code == EXIT_INPUT

@@ -82,6 +82,7 @@ class ConfigurationState:
     configurations: int
     unselected: int
     commands: list[list[Launch]] = field(default_factory=list)  # files sharing a command line
+    untyped: list[str] = field(default_factory=list)  # args at <other> still without a text
 
     def to_json(self) -> dict[str, object]:
         count = self.configurations
@@ -96,6 +97,7 @@ class ConfigurationState:
             "configurations": count if count <= EXACT_INTEGER else str(count),
             "unselected": self.unselected,
             "launched": [launch.spelled for group in self.commands for launch in group],
+            "untyped": self.untyped,
         }
 
 
@@ -315,6 +317,14 @@ class Configurator:
             configurations=self._count(decisions),
             unselected=unselected,
             commands=commands,
+            untyped=[
+                arg
+                for arg, values in self.catalog.args.items()
+                for feature, value in values[1]
+                if value.slot is OTHER
+                and decisions.decided.get(feature.variable)
+                and arg not in texts
+            ],
         )
 
     def _count(self, decisions: Decisions) -> int:

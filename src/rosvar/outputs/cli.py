@@ -1,8 +1,8 @@
 """The ``rosvar`` command line.
 
 Exit codes: 0 success; 1 the analysed launch configuration fails (errors or
-conflicts, ``resolve``); 2 usage error; 3 nothing to analyse (no launch file
-found, a ``--launch`` file missing).
+conflicts, ``resolve``) or a choice was refused (``configure``); 2 usage error;
+3 nothing to analyse (no launch file found, a ``--launch`` file missing).
 """
 
 from __future__ import annotations
@@ -18,6 +18,8 @@ from rosvar import __version__
 from rosvar.analyses.features import extract
 from rosvar.analyses.metrics import compute
 from rosvar.analyses.resolve import resolve
+from rosvar.configuration.choices import ChoiceError, UserChoice
+from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.diagnostics import Severity
 from rosvar.interpreter.analysis import Analysis
 from rosvar.outputs.describe import describe_model
@@ -82,13 +84,9 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         return EXIT_INPUT
     # the launch files' own packages are known even when no PATH contains them
     workspace = _workspace([*options.paths, *files])
-    env: dict[str, str] = {}
-    for item in options.env:
-        name, sep, value = item.partition("=")
-        if not sep or not name:
-            print(f"rosvar: --env expects NAME=VALUE, got {item!r}", file=sys.stderr)
-            return EXIT_USAGE
-        env[name] = value
+    env = _environment(options.env)
+    if env is None:
+        return EXIT_USAGE
     args = command_line_mappings(options.args)
     # The given values become known slots: conditions split on them instead of
     # leaving them to <other> terms (the semantics does not change).
@@ -115,7 +113,19 @@ def cmd_resolve(options: argparse.Namespace) -> int:
     return EXIT_OK if result.ok else EXIT_FAILS
 
 
-def _analysis(options: argparse.Namespace) -> Analysis | None:
+def _environment(items: Sequence[str]) -> dict[str, str] | None:
+    """``--env NAME=VALUE`` words as a mapping; None (after a message) when one is malformed."""
+    env: dict[str, str] = {}
+    for item in items:
+        name, sep, value = item.partition("=")
+        if not sep or not name:
+            print(f"rosvar: --env expects NAME=VALUE, got {item!r}", file=sys.stderr)
+            return None
+        env[name] = value
+    return env
+
+
+def _analysis(options: argparse.Namespace, env: dict[str, str] | None = None) -> Analysis | None:
     workspace = _workspace(options.paths)
     if not workspace.launch_files:
         print("rosvar: no launch files found", file=sys.stderr)
@@ -123,7 +133,10 @@ def _analysis(options: argparse.Namespace) -> Analysis | None:
     hints = load_hints(getattr(options, "hints", None))
     for diagnostic in hints.diagnostics:
         print(diagnostic, file=sys.stderr)
-    return Analysis(workspace, hints.args, hints.env, hints.executables)
+    env_values = {k: list(v) for k, v in hints.env.items()}
+    for name, value in (env or {}).items():  # given values split conditions, as in resolve
+        env_values.setdefault(name, []).append(value)
+    return Analysis(workspace, hints.args, env_values, hints.executables)
 
 
 def cmd_features(options: argparse.Namespace) -> int:
@@ -152,6 +165,92 @@ def cmd_metrics(options: argparse.Namespace) -> int:
     else:
         print("  ".join(f"{key}={value}" for key, value in metrics.items()))
     return EXIT_OK
+
+
+def cmd_configure(options: argparse.Namespace) -> int:
+    env = _environment(options.env)
+    if env is None:
+        return EXIT_USAGE
+    analysis = _analysis(options, env)
+    if analysis is None:
+        return EXIT_INPUT
+    try:
+        choices = [UserChoice.parse(action, text) for action, text in options.choices]
+        configurator = Configurator(analysis, extract(analysis, progress=_progress), env)
+        if options.finish:
+            choices += configurator.completion(choices)
+        state = configurator.state(choices)
+    except ChoiceError as error:
+        print(f"rosvar: {error}", file=sys.stderr)
+        return EXIT_USAGE
+    if options.json:
+        json.dump(state.to_json(), sys.stdout, indent=2, ensure_ascii=False)
+        sys.stdout.write("\n")
+    else:
+        _print_state(state)
+    return EXIT_FAILS if state.refused else EXIT_OK
+
+
+def _print_state(state: ConfigurationState) -> None:
+    """The summary of a configuration step, for people."""
+    features = state.features.values()
+    files = [(k, f) for k, f in state.features.items() if f.kind == "file"]
+    print(
+        f"{len(state.features) - state.unselected} of {len(state.features)} features decided, "
+        f"{state.unselected} unselected; {state.configurations} valid configurations"
+    )
+    for refusal in state.refused:
+        print(f"refused: {refusal.reason}")
+    chosen = [k for k, f in files if f.state == "selected"]
+    print(f"selected files: {', '.join(chosen) if chosen else 'none'}")
+    graph = state.graph
+    for kind, elements in (("nodes", graph.nodes), ("params", graph.params)):
+        counts = {p: sum(1 for e in elements if e["presence"] == p) for p in PRESENCES}
+        print(f"{kind}: {counts['present']} present, {counts['undetermined']} undetermined")
+    for error in graph.errors:
+        if error["presence"] == "present":
+            print(f"error: {error['file']}:{error['line']}: {error['message']}")
+    for conflict in state.conflicts:
+        when = f", when {conflict.condition}" if conflict.condition else ""
+        print(
+            f"conflict ({conflict.status}): {' and '.join(conflict.files)}: "
+            f"{', '.join(conflict.names)}{when}"
+        )
+    if state.complete:
+        print(
+            state.command
+            or "nothing to launch (no file selected, or an <other> value lacks its text)"
+        )
+        return
+    open_files = [k for k, f in files if f.state == "unselected"]
+    open_args = [
+        k
+        for k, f in state.features.items()
+        if f.kind == "arg"
+        and f.state == "selected"
+        and any(v.parent == k and v.state == "unselected" for v in features)
+    ]
+    print(f"left: {len(open_files)} files to select or deselect, {len(open_args)} args to set")
+    for arg in [*state.untyped, *open_args][:10]:
+        print(f"  --set {arg}=...")
+
+
+PRESENCES = ("present", "absent", "undetermined")
+
+
+class _Choice(argparse.Action):
+    """Keeps every choice option in one list, in command-line order."""
+
+    def __call__(
+        self,
+        parser: argparse.ArgumentParser,
+        namespace: argparse.Namespace,
+        values: object,
+        option_string: str | None = None,
+    ) -> None:
+        found = list(getattr(namespace, self.dest, None) or [])
+        found.append((self.const, str(values)))
+        setattr(namespace, self.dest, found)
 
 
 def parser() -> argparse.ArgumentParser:
@@ -186,6 +285,25 @@ def parser() -> argparse.ArgumentParser:
     metrics.add_argument("--hints", metavar="FILE")
     metrics.add_argument("--json", action="store_true")
     metrics.set_defaults(run=cmd_metrics)
+    configure = commands.add_parser(
+        "configure", help="one step of a configuration: the state after the given choices"
+    )
+    configure.add_argument("paths", nargs="+", metavar="PATH")
+    for action, metavar in (
+        ("select", "FEATURE"),
+        ("deselect", "FEATURE"),
+        ("unselect", "FEATURE"),
+        ("set", "FILE:ARG=VALUE"),
+    ):
+        configure.add_argument(
+            f"--{action}", dest="choices", action=_Choice, const=action, metavar=metavar
+        )
+    configure.set_defaults(choices=[])
+    configure.add_argument("--finish", action="store_true", help="finish with defaults")
+    configure.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
+    configure.add_argument("--hints", metavar="FILE")
+    configure.add_argument("--json", action="store_true")
+    configure.set_defaults(run=cmd_configure)
     return top
 
 
