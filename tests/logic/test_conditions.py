@@ -278,6 +278,14 @@ def _random_condition(space: ConditionSpace, rng: random.Random) -> BDD:
     return ~result if rng.random() < 0.2 else result
 
 
+def test_support_agrees_with_dd_on_random_conditions() -> None:
+    space = make_space()
+    rng = random.Random(7)
+    conditions = [space.true, space.false] + [_random_condition(space, rng) for _ in range(200)]
+    for condition in conditions:
+        assert space.support(condition) == space.bdd.support(condition)
+
+
 def _known(space: ConditionSpace) -> BDD:
     """Valid configurations in which every arg holds a known value."""
     care = space.valid

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import gc
 import os
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 
 from rosvar.interpreter import tags  # noqa: F401 - registers the tag handlers
 from rosvar.interpreter.domains import DomainTable, entry_declarations
@@ -42,10 +44,11 @@ class Analysis:
     def all_models(self, progress: Progress | None = None) -> list[LaunchModel]:
         files = self.workspace.launch_files
         models = []
-        for index, file in enumerate(files):
-            if progress is not None:
-                progress(index, len(files), file)
-            models.append(self.model(file))
+        with _collector_paused():
+            for index, file in enumerate(files):
+                if progress is not None:
+                    progress(index, len(files), file)
+                models.append(self.model(file))
         return models
 
     def label(self, file: str) -> str:
@@ -92,3 +95,20 @@ class Analysis:
         model.anon_count = it.anon_count
         model.diagnostics = it.sink.items
         return model
+
+
+@contextmanager
+def _collector_paused() -> Iterator[None]:
+    """Pause CPython's cyclic garbage collector while models are built.
+
+    Models are a large heap of long-lived objects that form no cycles: the collector
+    rescanned all of it each time it grew by a quarter (a third of the time on 2,000
+    files) and found nothing to free. Reference counting still frees everything else.
+    """
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()

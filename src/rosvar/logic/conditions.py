@@ -24,6 +24,9 @@ BDD = Any  # dd.cudd.Function: dd ships no type information
 BOOLEAN_WORDS = ("true", "false")
 MAX_FULL = 200  # longer formulas over <other> values help nobody
 MAX_CUBES = 256  # beyond this many disjuncts a formula is no longer readable
+MAX_CACHE_ENTRIES = 1 << 20
+"""CUDD's computed table grows with the unique table, i.e. with the number of variables
+(hundreds of MB on large workspaces) although the BDDs stay small; about 40 MB is plenty."""
 
 
 class _TooComplex(Exception):
@@ -83,7 +86,7 @@ class ConditionSpace:
         self.bdd = _cudd.BDD()
         # Declaration order is already local (one file's inputs together); dynamic
         # reordering would cost more than it saves, quadratically in the variables.
-        self.bdd.configure(reordering=False)
+        self.bdd.configure(reordering=False, max_cache_hard=MAX_CACHE_ENTRIES)
         self.true: BDD = self.bdd.true
         self.false: BDD = self.bdd.false
         self._constraints: list[BDD] = []
@@ -155,10 +158,31 @@ class ConditionSpace:
             return self.bdd.var(name)
         return self._new_var(atom)
 
+    def support(self, u: BDD) -> set[str]:
+        """The variables ``u`` depends on, in time linear in the size of ``u``.
+
+        ``dd``'s own ``support`` walks every variable of the manager in Python; with tens
+        of thousands of atoms in a large workspace that made each call cost as much as
+        the workspace is large, and analysis quadratic.
+        """
+        names: set[str] = set()
+        seen: set[int] = set()
+        stack = [u]
+        while stack:
+            node = stack.pop()
+            name = node.var
+            if name is None or int(node) in seen:
+                continue
+            seen.add(int(node))
+            names.add(name)
+            stack.append(node.low)
+            stack.append(node.high)
+        return names
+
     def constrain(self, constraint: BDD) -> None:
         """Add a fact every configuration satisfies (e.g. two predicates exclude each other)."""
         self._constraints.append(constraint)
-        for name in self.bdd.support(constraint):
+        for name in self.support(constraint):
             self._facts_of.setdefault(name, []).append(constraint)
 
     def care(self, condition: BDD) -> BDD:
@@ -170,7 +194,7 @@ class ConditionSpace:
         """
         result = self.true
         seen: set[int] = set()
-        for name in self.bdd.support(condition):
+        for name in self.support(condition):
             atom = self._atom_of[name]
             if isinstance(atom, SlotAtom) and id(atom.input) not in seen:
                 seen.add(id(atom.input))
@@ -229,7 +253,7 @@ class ConditionSpace:
         return result
 
     def evaluate(self, condition: BDD, assignment: Mapping[str, bool]) -> bool:
-        support = self.bdd.support(condition)
+        support = self.support(condition)
         if not support:
             return bool(condition == self.true)
         reduced = self.bdd.let({name: assignment[name] for name in support}, condition)
@@ -259,7 +283,7 @@ class ConditionSpace:
         if known_only:
             others = {
                 name: False
-                for name in self.bdd.support(local)
+                for name in self.support(local)
                 if isinstance(atom := self._atom_of[name], SlotAtom)
                 and atom.slot is OTHER
                 and isinstance(atom.input, ArgInput)
@@ -299,7 +323,7 @@ class ConditionSpace:
     def _inputs_of(self, u: BDD) -> set[Input]:
         return {
             atom.input
-            for atom in (self._atom_of[name] for name in self.bdd.support(u))
+            for atom in (self._atom_of[name] for name in self.support(u))
             if isinstance(atom, SlotAtom)
         }
 

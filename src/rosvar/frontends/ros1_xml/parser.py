@@ -198,6 +198,12 @@ def _parse(data: bytes, filename: str, watch: str | None) -> tuple[ParseResult, 
         return _error("xml-encoding", f"unsupported encoding: {exc}", Location(filename, 1, 1)), []
     except RecursionError:
         return _error("xml-too-deep", "document too deeply nested", Location(filename, 1, 1)), []
+    finally:
+        # The handlers refer to the parser: without this cycle the parser is freed at once
+        # instead of waiting for the cyclic collector.
+        parser.StartElementHandler = parser.EndElementHandler = None
+        parser.CharacterDataHandler = parser.StartDoctypeDeclHandler = None
+        parser.EntityDeclHandler = parser.ExternalEntityRefHandler = None
     return ParseResult(document.children[0] if document.children else None), watched
 
 
