@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import weakref
 from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager
 from typing import Any, TypeVar
 
 from rosvar.diagnostics import DiagnosticSink, Location
@@ -144,24 +143,13 @@ class Interpretation:
     def location(self) -> Location:
         return self._location
 
-    @contextmanager
-    def at(self, entity: Entity) -> Iterator[None]:
-        saved = self._location
-        self._location = entity.location
-        try:
-            yield
-        finally:
-            self._location = saved
+    def at(self, entity: Entity) -> _At:
+        """Attribute what happens inside to ``entity``'s location."""
+        return _At(self, entity.location)
 
-    @contextmanager
-    def under(self, condition: BDD) -> Iterator[bool]:
-        """Narrow the path condition; yields whether anything is left."""
-        saved = self.pc
-        self.pc = saved & condition
-        try:
-            yield self.pc != self.space.false
-        finally:
-            self.pc = saved
+    def under(self, condition: BDD) -> _Under:
+        """Narrow the path condition; entering says whether anything is left."""
+        return _Under(self, condition)
 
     def fail(
         self, condition: BDD, code: str, message: str, location: Location | None = None
@@ -177,7 +165,10 @@ class Interpretation:
 
     def strip(self, choice: Choice[V | Fail], context: str = "") -> Choice[V]:
         """Record the failing branches of ``choice`` as errors; keep the rest."""
-        if not any(isinstance(leaf, Fail) for _condition, leaf in choice.branches):
+        for _condition, leaf in choice.branches:
+            if isinstance(leaf, Fail):
+                break
+        else:
             return choice  # type: ignore[return-value]  # nothing failed: no copy
         good: list[tuple[BDD, V]] = []
         for condition, leaf in choice:
@@ -299,6 +290,44 @@ class Interpretation:
         if path not in self.model.files:
             self.model.files.append(path)
         return result.root
+
+
+class _At:
+    """The context of :meth:`Interpretation.at` (a class: this runs for every tag, and
+    generator-based context managers cost several times more)."""
+
+    __slots__ = ("_it", "_location", "_saved")
+
+    def __init__(self, it: Interpretation, location: Location) -> None:
+        self._it = it
+        self._location = location
+
+    def __enter__(self) -> None:
+        self._saved = self._it._location
+        self._it._location = self._location
+
+    def __exit__(self, *_exc: object) -> None:
+        self._it._location = self._saved
+
+
+class _Under:
+    """The context of :meth:`Interpretation.under` (a class, as :class:`_At`)."""
+
+    __slots__ = ("_condition", "_it", "_saved")
+
+    def __init__(self, it: Interpretation, condition: BDD) -> None:
+        self._it = it
+        self._condition = condition
+
+    def __enter__(self) -> bool:
+        it = self._it
+        self._saved = it.pc
+        if self._condition is not it.space.true:  # most tags have no if/unless
+            it.pc = self._saved & self._condition
+        return bool(it.pc != it.space.false)
+
+    def __exit__(self, *_exc: object) -> None:
+        self._it.pc = self._saved
 
 
 def split(interpretation: Interpretation, choice: Choice[V]) -> Iterator[tuple[BDD, V]]:

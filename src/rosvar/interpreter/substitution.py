@@ -89,8 +89,9 @@ def collect(text: str) -> tuple[str, ...]:
     return tuple(bodies)
 
 
-def _split(body: str) -> list[str]:
-    words = [w for w in body.split(" ") if w]
+@functools.lru_cache(maxsize=65536)
+def _split(body: str) -> tuple[str, ...]:
+    words = tuple(w for w in body.split(" ") if w)
     if not words:
         raise SubstitutionError(
             f"Unknown substitution command [{body}]. Valid commands are {list(COMMANDS)}"
@@ -100,6 +101,34 @@ def _split(body: str) -> list[str]:
             f"Unknown substitution command [{body}]. Valid commands are {list(COMMANDS)}"
         )
     return words
+
+
+@functools.lru_cache(maxsize=65536)
+def _segments(
+    text: str, bodies: tuple[str, ...]
+) -> tuple[tuple[str, ...], tuple[str | int, ...]]:
+    """The distinct first-pass bodies of ``text``, and ``text`` cut at each of them.
+
+    An int segment stands for the value of that body; cutting at every occurrence is
+    roslaunch's ``replace()`` of all of them. Cached: the same texts recur in every
+    file that includes them.
+    """
+    segments: list[str | int] = [text]
+    distinct = tuple(dict.fromkeys(b for b in bodies if _split(b)[0] in FIRST_PASS))
+    for index, body in enumerate(distinct):
+        marker = f"$({body})"
+        next_segments: list[str | int] = []
+        for segment in segments:
+            if isinstance(segment, int):
+                next_segments.append(segment)
+                continue
+            pieces = segment.split(marker)
+            for k, piece in enumerate(pieces):
+                if k:
+                    next_segments.append(index)
+                next_segments.append(piece)
+        segments = next_segments
+    return distinct, tuple(segments)
 
 
 # -- the find pass, on a concrete string (also used to evaluate terms later) ----------------
@@ -195,22 +224,7 @@ class Substituter:
             return Apply("find_pass", (value,), display=value)
 
     def _first_pass(self, text: str, bodies: Sequence[str], scope: Scope) -> Choice[Value]:
-        # Segment the text at each distinct body; replace() semantics = all occurrences.
-        segments: list[str | int] = [text]
-        distinct = list(dict.fromkeys(b for b in bodies if _split(b)[0] in FIRST_PASS))
-        for index, body in enumerate(distinct):
-            marker = f"$({body})"
-            next_segments: list[str | int] = []
-            for segment in segments:
-                if isinstance(segment, int):
-                    next_segments.append(segment)
-                    continue
-                pieces = segment.split(marker)
-                for k, piece in enumerate(pieces):
-                    if k:
-                        next_segments.append(index)
-                    next_segments.append(piece)
-            segments = next_segments
+        distinct, segments = _segments(text, tuple(bodies))
         values = [self._command(body, scope) for body in distinct]
         if not values:
             return Choice.const(self.space, text)
@@ -282,6 +296,8 @@ class Substituter:
 
     def arg(self, name: str, scope: Scope) -> Choice[Value]:
         value = scope.args.get(name)
+        if value is not None and all(v is not MISSING for _c, v in value.branches):
+            return value  # type: ignore[return-value]  # defined everywhere: no copy
         missing = Fail(f"requires the '{name}' arg to be set", "arg-undefined")
         if value is None:
             return Choice.const(self.space, missing)

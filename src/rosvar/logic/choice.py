@@ -28,6 +28,8 @@ class Fail:
 
 def _key(leaf: object) -> object:
     """Merge key: equal *and* of the same type (0, False and 0.0 are different params)."""
+    if type(leaf) is str:  # the common leaf; other keys are tuples, never equal to a str
+        return leaf
     try:
         hash(leaf)
     except TypeError:
@@ -45,22 +47,22 @@ class Choice(Generic[T]):
     def __init__(self, branches: Iterable[tuple[BDD, T]], false: BDD = None) -> None:
         """``false`` (the manager's false) is needed only when ``branches`` may be empty."""
         self.branches: tuple[tuple[BDD, T], ...]
-        self.false: BDD = false
         if isinstance(branches, list) and len(branches) == 1:  # the common constant case
             condition = branches[0][0]
-            self.false = condition.bdd.false
+            self.false = condition.bdd.false if false is None else false
             self.branches = () if condition == self.false else (branches[0],)
             return
         merged: dict[object, tuple[BDD, T]] = {}
         for condition, leaf in branches:
-            if self.false is None:
-                self.false = condition.bdd.false
             key = _key(leaf)
             if key in merged:
                 merged[key] = (merged[key][0] | condition, leaf)
             else:
                 merged[key] = (condition, leaf)
-        self.branches = tuple((c, v) for c, v in merged.values() if c != c.bdd.false)
+        if false is None and merged:
+            false = next(iter(merged.values()))[0].bdd.false
+        self.false = false
+        self.branches = tuple(branch for branch in merged.values() if branch[0] != false)
 
     @staticmethod
     def const(space: ConditionSpace, leaf: U) -> Choice[U]:
@@ -99,7 +101,7 @@ class Choice(Generic[T]):
         for condition, leaf in self.branches:
             for inner, value in function(leaf):
                 joint = condition & inner
-                if joint != joint.bdd.false:
+                if joint != self.false:
                     out.append((joint, value))
         return Choice(out, self.false)
 
@@ -148,8 +150,12 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
         # the common case: nothing varies, one combination
         joint = choices[0].branches[0][0]
         for choice in choices[1:]:
-            joint = joint & choice.branches[0][0]
-        return Choice([(joint, function([choice.branches[0][1] for choice in choices]))])
+            condition = choice.branches[0][0]
+            if condition is not joint:  # constants share the space's true: nothing to do
+                joint = joint & condition
+        leaves = [choice.branches[0][1] for choice in choices]
+        return Choice([(joint, function(leaves))], choices[0].false)
+    false = choices[0].false if choices else None
     partial: list[tuple[BDD, list[V]]] = []
     first = True
     for choice in choices:
@@ -161,7 +167,7 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
         for c1, vs in partial:
             for c2, v in choice.branches:
                 joint = c1 & c2
-                if joint != joint.bdd.false:
+                if joint != false:
                     nxt.append((joint, [*vs, v]))
         partial = nxt
-    return Choice(((c, function(vs)) for c, vs in partial), choices[0].false if choices else None)
+    return Choice(((c, function(vs)) for c, vs in partial), false)

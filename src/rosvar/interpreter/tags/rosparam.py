@@ -37,7 +37,7 @@ def unroll(name: str, value: object) -> list[tuple[str, object]]:
 def yaml_params(text: str, full_param: str, param: str, source: str) -> list[tuple[str, object]]:
     """What ``load_rosparam`` sets for a concrete YAML text (cached: callers must not mutate)."""
     try:
-        data = load_yaml(text)
+        data = _parsed_yaml(text)
     except yaml.YAMLError as error:
         where = "YAML block" if not source else f"file {source}"
         raise ValueError(f"invalid YAML in {where}: {error}") from error
@@ -46,6 +46,12 @@ def yaml_params(text: str, full_param: str, param: str, source: str) -> list[tup
     if not param and not isinstance(data, dict):
         raise ValueError("'param' attribute must be set for non-dictionary values")
     return unroll(full_param, data)
+
+
+@functools.lru_cache(maxsize=1024)
+def _parsed_yaml(text: str) -> object:
+    """A YAML text parsed once (many files load the same parameter file in other namespaces)."""
+    return load_yaml(text)
 
 
 @tag("rosparam")
