@@ -189,7 +189,10 @@ class Interpretation:
         return None if value is None else self.strip(value, context)
 
     def attr(self, entity: Entity, name: str, scope: Scope) -> Choice[Raw] | None:
-        return self.resolve(entity.get(name), scope, f"<{entity.tag}> attribute '{name}'")
+        text = entity.get(name)
+        if text is None:  # most optional attributes are absent: no message to format
+            return None
+        return self.resolve(text, scope, f"<{entity.tag}> attribute '{name}'")
 
     def required(self, entity: Entity, name: str, scope: Scope) -> Choice[Raw] | None:
         if not entity.has(name):
