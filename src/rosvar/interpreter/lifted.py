@@ -8,6 +8,7 @@ becomes a :class:`Fail` branch.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 
 from rosvar.interpreter.model import Raw
@@ -42,14 +43,15 @@ for _name, _function in LIFTED.items():
 
 def lift(name: str, *operands: Choice[Raw]) -> Choice[Raw | Fail]:
     """``LIFTED[name]`` over all branch combinations of ``operands``."""
-    function = LIFTED[name]
+    return combine(list(operands), lambda leaves: _apply(name, tuple(leaves)))
 
-    def apply(leaves: list[Raw]) -> Raw | Fail:
-        if any(is_term(leaf) for leaf in leaves):
-            return Apply(name, tuple(leaves))
-        try:
-            return function(*leaves)
-        except ValueError as error:
-            return Fail(str(error), "name-invalid")
 
-    return combine(list(operands), apply)
+@functools.lru_cache(maxsize=65536)
+def _apply(name: str, leaves: tuple[Raw, ...]) -> Raw | Fail:
+    """One combination (cached: the same namespaces and names recur in every includer)."""
+    if any(is_term(leaf) for leaf in leaves):
+        return Apply(name, leaves)
+    try:
+        return LIFTED[name](*leaves)
+    except ValueError as error:
+        return Fail(str(error), "name-invalid")

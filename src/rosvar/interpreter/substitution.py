@@ -104,9 +104,7 @@ def _split(body: str) -> tuple[str, ...]:
 
 
 @functools.lru_cache(maxsize=65536)
-def _segments(
-    text: str, bodies: tuple[str, ...]
-) -> tuple[tuple[str, ...], tuple[str | int, ...]]:
+def _segments(text: str, bodies: tuple[str, ...]) -> tuple[tuple[str, ...], tuple[str | int, ...]]:
     """The distinct first-pass bodies of ``text``, and ``text`` cut at each of them.
 
     An int segment stands for the value of that body; cutting at every occurrence is
