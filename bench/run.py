@@ -124,6 +124,8 @@ class Job:
     repeats: int
     budget_s: float  # stop repeating once another run would likely overrun this
     files: list[str] = field(default_factory=list)
+    analysis: object = None  # the last run's interpreted Analysis, for the feature model
+    analysis_ms: float = 0.0  # what interpreting it took
 
 
 def _timed_runs(job: Job, run: Callable[[], object]) -> tuple[float, float, int]:
@@ -151,14 +153,18 @@ def measure_analyze(job: Job) -> Metrics:
     from rosvar.workspace import discover
 
     def run() -> None:
+        job.analysis = None  # the previous run's models must not inflate this one's heap
         clear_cache()
+        started = time.perf_counter()
         workspace = discover(job.roots, ros_package_path=job.package_path)
-        Analysis(workspace).all_models()
+        analysis = Analysis(workspace)
+        analysis.all_models()
+        job.analysis, job.analysis_ms = analysis, (time.perf_counter() - started) * 1000
         job.files = workspace.launch_files
 
     wall, cpu, runs = _timed_runs(job, run)
     peak_kib = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss  # KiB on Linux
-    clear_cache()  # leave the baseline a heap as small as it found
+    clear_cache()
     gc.collect()
     return {
         "files": len(job.files),
@@ -184,50 +190,63 @@ FEATURES_BUDGET_S = 120.0  # the feature model of a large workload may not finis
 
 
 def measure_features(job: Job) -> Metrics:
-    """``rosvar features``' work: feature model, conflicts (name index), valid-config count.
+    """``rosvar features``' work on the models ``measure_analyze`` interpreted, timed apart.
 
-    Timed from a fresh analysis (interpretation included) and, apart, the extraction
-    alone on already interpreted models. Bounded by an alarm: a timeout is a figure too.
+    Interpretation is the analyze measurement's (and another module's cost); what is
+    timed here is the feature model proper: extraction (Algorithm 1, conflicts through
+    the name index, the solver's BDDs) and the valid-configuration count, then, apart,
+    the solver questions ``rosvar features`` answers on top (core/dead features with
+    explanations, the simplest trigger of every conflict). Bounded by an alarm: a
+    timeout is a figure too. The models are dropped afterwards, so the baseline that
+    follows finds a small heap.
     """
-    from rosvar.analyses.features import count_configurations, extract
+    from rosvar.analyses.features import (
+        core_and_dead,
+        count_configurations,
+        extract,
+        simplest_trigger,
+    )
     from rosvar.interpreter.analysis import Analysis
-    from rosvar.workspace import discover
+
+    analysis, job.analysis = job.analysis, None
+    if not isinstance(analysis, Analysis):
+        return {}
 
     def expire(_signum: int, _frame: object) -> None:
         raise TimeoutError
 
+    metrics: Metrics = {"features_interpret_ms": job.analysis_ms}
     previous = signal.signal(signal.SIGALRM, expire)
     signal.alarm(int(FEATURES_BUDGET_S))
     try:
-        workspace = discover(job.roots, ros_package_path=job.package_path)
         wall, cpu = time.perf_counter(), time.process_time()
-        analysis = Analysis(workspace)
-        analysis.all_models()
-        models_ms = (time.perf_counter() - wall) * 1000
         model = extract(analysis)
         count_configurations(model)
-        total_ms = (time.perf_counter() - wall) * 1000
-        total_cpu = (time.process_time() - cpu) * 1000
+        metrics["features_ms"] = (time.perf_counter() - wall) * 1000
+        metrics["features_cpu_ms"] = (time.process_time() - cpu) * 1000
+        metrics["conflict_pairs"] = len(model.clashes)
+        metrics["constraints"] = len(model.constraints)
+        wall = time.perf_counter()
+        core_and_dead(model)
+        for condition in {c.condition for c in model.constraints if c.kind == "excludes"}:
+            simplest_trigger(model.space, condition)
+        metrics["features_questions_ms"] = (time.perf_counter() - wall) * 1000
     except TimeoutError:
-        return {"features_timeout_s": FEATURES_BUDGET_S}
+        metrics["features_timeout_s"] = FEATURES_BUDGET_S
     finally:
         signal.alarm(0)
         signal.signal(signal.SIGALRM, previous)
-    return {
-        "features_ms": total_ms,
-        "features_cpu_ms": total_cpu,
-        "features_extract_ms": total_ms - models_ms,
-        "conflict_pairs": len(model.clashes),
-        "constraints": len(model.constraints),
-    }
+        del analysis
+        gc.collect()
+    return metrics
 
 
-# Run in this order (the baseline needs the file list); peak RSS is read before the baseline,
-# the feature model last (its BDD would dominate the peak).
+# Run in this order: peak RSS is read right after the analysis, the feature model reuses
+# its models (and frees them), the baseline parses the files the analysis found.
 ISOLATED_MEASUREMENTS: dict[str, Callable[[Job], Metrics]] = {
     "analyze": measure_analyze,
-    "minidom": measure_minidom,
     "features": measure_features,
+    "minidom": measure_minidom,
 }
 
 
@@ -430,6 +449,16 @@ def _in_process_cell(outcome: Outcome, _steps: object) -> str:
     return _number(outcome.get("analyze_ms")) + suffix
 
 
+def _features_cell(outcome: Outcome, _steps: object) -> str:
+    if outcome.get("features_timeout_s") is not None and outcome.get("features_ms") is None:
+        return f"> {FEATURES_BUDGET_S:,.0f} s"
+    return _number(outcome.get("features_ms"))
+
+
+def _questions_cell(outcome: Outcome, _steps: object) -> str:
+    return _number(outcome.get("features_questions_ms"))
+
+
 COLUMNS: list[Column] = [
     Column("workload", lambda o, _s: o.workload.name, "<"),
     Column("files", lambda o, _s: _number(o.get("files"))),
@@ -441,6 +470,9 @@ COLUMNS: list[Column] = [
     Column("minidom ms", lambda o, _s: _number(o.get("minidom_ms"), 1)),
     Column("× minidom parse", lambda o, _s: _ratio(o)),
     Column("growth vs previous size", _growth_cell, "<"),
+    Column("features: interpretation ms", lambda o, _s: _number(o.get("features_interpret_ms"))),
+    Column("features: model ms", _features_cell),
+    Column("features: core/dead + triggers ms", _questions_cell),
 ]
 
 
@@ -516,16 +548,18 @@ def near_linear(outcomes: dict[str, Outcome]) -> Verdict:
 
 
 def features_within(workload: str, limit_s: float) -> Target:
-    """Target on the feature model; a timeout of the bounded measurement is a FAIL."""
+    """Target on the feature model (interpretation apart); a timeout of it is a FAIL."""
     inner = at_most(workload, "features_ms", limit_s * 1000, "ms")
 
     def check(outcomes: dict[str, Outcome]) -> Verdict:
         outcome = outcomes.get(workload)
-        if outcome is not None and outcome.get("features_timeout_s") is not None:
+        timed_out = outcome is not None and outcome.get("features_timeout_s") is not None
+        if timed_out and outcome is not None and outcome.get("features_ms") is None:
             return Verdict("FAIL", f"not done within {FEATURES_BUDGET_S:.0f} s")
         return inner.check(outcomes)
 
-    return Target(f"{workload}: feature model ≤ {limit_s * 1000:,.0f} ms", check)
+    label = f"{workload}: feature model (after interpretation) ≤ {limit_s * 1000:,.0f} ms"
+    return Target(label, check)
 
 
 TARGETS: list[Target] = [
@@ -660,6 +694,13 @@ def write_doc(
         "files with `xml.dom.minidom` in the same subprocess — what roslaunch itself does.",
         "- *CPU ms*: the process CPU time of the same runs (median). Other load on a shared "
         "machine stretches wall time, hardly CPU time.",
+        "- *features*: `rosvar features`' work on the models of the last in-process run, "
+        "timed once: *interpretation* is what interpreting them took (another module's "
+        "cost), *model* is the feature model proper (`extract`: Algorithm 1, conflicts "
+        "through the name index, the solver's BDDs; then `count_configurations`), and "
+        "*core/dead + triggers* the solver questions answered on top (`core_and_dead` with "
+        "explanations, `simplest_trigger` of every conflict). The feature-model targets are "
+        f"on *model*; it is bounded by {FEATURES_BUDGET_S:.0f} s.",
         "- *growth*: CPU-time ratio between consecutive generated sizes; near-linear means "
         f"time ~ n^k with k ≤ log2(2.3) ≈ {LINEAR_EXPONENT:.2f}.",
         f"- Every subprocess is bounded by {TIMEOUT_S:.0f} s and {MEMORY_LIMIT_MB:,} MB of "
