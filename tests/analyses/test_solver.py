@@ -269,10 +269,10 @@ def test_simplest_trigger_tells_args_of_different_files_apart(ws: LaunchWorkspac
 
 @pytest.mark.parametrize("system", ["examples", "lizi", "kobuki"])
 def test_one_pass_possible_values_match_asking_the_solver(system: str) -> None:
-    """_possible_values (one BDD traversal) agrees with two solver queries per variable."""
+    """possible_values (one BDD traversal) agrees with two solver queries per variable."""
     from pathlib import Path
 
-    from rosvar.analyses.features import _possible_values
+    from rosvar.analyses.features import possible_values
     from rosvar.interpreter.analysis import Analysis
     from rosvar.workspace import discover
 
@@ -282,7 +282,7 @@ def test_one_pass_possible_values_match_asking_the_solver(system: str) -> None:
         pytest.skip(f"{path} is not here")
     model = extract(Analysis(discover([str(path)], ros_package_path="")))
     solver = model.solver
-    fast = _possible_values(solver)
+    fast = possible_values(solver)
     for name in solver.variables:
         variable = solver.manager.var(name)
         slow = {
@@ -291,3 +291,68 @@ def test_one_pass_possible_values_match_asking_the_solver(system: str) -> None:
             if (solver.formula & part) != solver.manager.false
         }
         assert fast[name] == slow, name
+
+
+# -- the solver's structure: components, exclusions per name ---------------------------------
+def clique_and_loner(ws: LaunchWorkspace) -> FeatureModel:
+    """Three files redeclaring /n (one only under an arg, one only under an environment
+    variable), two files clashing on /p or /q depending on an environment variable, a
+    file one of them includes, and a file on its own."""
+    ws.launch(
+        "a.launch",
+        '  <arg name="use" default="true"/>\n  <node pkg="pkg" type="t" name="n" if="$(arg use)"/>',
+    )
+    ws.launch("b.launch", '  <node pkg="pkg" type="t" name="n"/>')
+    ws.launch("c.launch", '  <node pkg="pkg" type="t" name="n" if="$(optenv FLAG true)"/>')
+    both = (
+        '  <node pkg="pkg" type="t" name="p" if="$(optenv SIDE true)"/>\n'
+        '  <node pkg="pkg" type="t" name="q" unless="$(optenv SIDE true)"/>\n'
+    )
+    ws.launch("d.launch", both)
+    ws.launch("e.launch", both + INCLUDE.format(target="f.launch", attrs=""))
+    ws.launch(
+        "f.launch", '  <arg name="mode" default="slow"/>\n  <param name="m" value="$(arg mode)"/>'
+    )
+    ws.launch(
+        "g.launch", '  <arg name="level" default="1"/>\n  <param name="l" value="$(arg level)"/>'
+    )
+    return extract(ws.analysis())
+
+
+def test_formula_is_the_tree_and_every_constraint(ws: LaunchWorkspace) -> None:
+    """Exclusions enter per clashing name, yet the formula is exactly tree ∧ constraints."""
+    model = clique_and_loner(ws)
+    solver = model.solver
+    assert {c.kind for c in model.constraints} == {"excludes", "requires"}
+    expected = solver.tree
+    for constraint in solver.constraints:
+        expected &= constraint
+    assert solver.formula == expected
+    assert count_configurations(model) == brute_force_count(model)
+
+
+def test_components_are_the_linked_files(ws: LaunchWorkspace) -> None:
+    model = clique_and_loner(ws)
+    components = sorted(
+        sorted(name.rsplit("/", 1)[1] for name in c.files) for c in model.solver.components
+    )
+    assert components == [
+        ["a.launch", "b.launch", "c.launch"],
+        ["d.launch", "e.launch", "f.launch"],
+        ["g.launch"],
+    ]
+    variables = [v for c in model.solver.components for v in c.variables]
+    assert sorted(variables) == sorted(model.solver.variables)
+
+
+def test_count_under_choices_is_the_product_over_components(ws: LaunchWorkspace) -> None:
+    model = clique_and_loner(ws)
+    solver = model.solver
+    assert solver.count() == count_configurations(model)
+    b = next(f for f in model.files if f.id.endswith("/b.launch"))
+    level = next(a for f in model.files for a in f.args if a.name == "level")
+    choices = {str(b.variable.var): True, str(level.values[0].variable.var): True}
+    restricted = solver.manager.let(choices, solver.formula)
+    free = len(solver.variables) - len(choices)
+    assert solver.count(choices) == int(solver.manager.count(restricted, nvars=free))
+    assert 0 < solver.count(choices) < solver.count()

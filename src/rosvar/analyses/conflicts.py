@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import os
 from collections import defaultdict
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
 from rosvar.diagnostics import Location
@@ -46,17 +46,29 @@ class Clash:
         return (self.first.file, self.second.file)
 
 
-def _same_file(a: str, b: str) -> bool:
-    return a == b or os.path.realpath(a) == os.path.realpath(b)
+def _written_in(file: str) -> Callable[[str], bool]:
+    """Whether a location's file is ``file``, symlinks resolved once per distinct path
+    (a model holds thousands of elements from a handful of included files)."""
+    real = os.path.realpath(file)
+    seen: dict[str, bool] = {file: True}
+
+    def test(other: str) -> bool:
+        found = seen.get(other)
+        if found is None:
+            found = seen[other] = os.path.realpath(other) == real
+        return found
+
+    return test
 
 
 def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
     """Nodes and params written in ``model.file`` itself (Algorithm 1's GETELEMENTS)."""
+    own = _written_in(model.file)
     for node in model.nodes:
-        if not node.is_test and _same_file(node.location.file, model.file):
+        if not node.is_test and own(node.location.file):
             yield from _node_occurrences(model, node)
     for param in model.params:
-        if not isinstance(param, ParamDecl) or not _same_file(param.location.file, model.file):
+        if not isinstance(param, ParamDecl) or not own(param.location.file):
             continue
         for condition, param_name in param.name:
             if isinstance(param_name, str):
@@ -79,10 +91,11 @@ def repeated_inclusions(model: LaunchModel) -> list[Clash]:
     them; only a declaration meeting itself, through two includes, is the entry
     file's own clash.
     """
+    own = _written_in(model.file)
     seen: dict[tuple[str, Location], list[Occurrence]] = defaultdict(list)
     found: list[Clash] = []
     for node in model.nodes:
-        if node.is_test or _same_file(node.location.file, model.file):
+        if node.is_test or own(node.location.file):
             continue
         for occurrence in _node_occurrences(model, node):
             earlier = seen[(occurrence.name, occurrence.location)]

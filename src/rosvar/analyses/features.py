@@ -12,12 +12,13 @@ are solver questions, not enumeration.
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import cache, cached_property
 
 import dd.cudd as _cudd
 
-from rosvar.analyses.conflicts import Clash, clashes, index, repeated_inclusions
+from rosvar.analyses.conflicts import Clash, Occurrence, clashes, index, repeated_inclusions
 from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
@@ -172,6 +173,7 @@ def extract(
         if progress is not None:
             progress(number, len(chosen), file)
         models.append(analysis.model(file))
+    real = cache(os.path.realpath)  # per extraction: paths recur in every pair and include
     features: list[FileFeature] = []
     by_file: dict[str, FileFeature] = {}
     constraints: list[Constraint] = []
@@ -213,14 +215,14 @@ def extract(
             feature.args.append(arg)
             feature_inputs.add(input_)
         features.append(feature)
-        by_file[os.path.realpath(model.file)] = feature
+        by_file[real(model.file)] = feature
     for model in models:
-        source = by_file[os.path.realpath(model.file)]
+        source = by_file[real(model.file)]
         for include in model.includes:
             if not include.resolved or include.location.file != model.file:
                 continue
             for condition, target in include.file:
-                target_feature = by_file.get(os.path.realpath(str(target)))
+                target_feature = by_file.get(real(str(target)))
                 if target_feature is None:
                     continue
                 when = include.condition & condition
@@ -235,7 +237,8 @@ def extract(
                         space.valid_implies(when),
                     )
                 )
-    found = clashes(index(models))
+    buckets = index(models)
+    found = clashes(buckets)
     internal = [c for c in found if c.first.file == c.second.file and c.kind == "node"]
     internal += [clash for model in models for clash in repeated_inclusions(model)]
     between: dict[tuple[str, str], list[Clash]] = {}
@@ -244,8 +247,8 @@ def extract(
             key = tuple(sorted(clash.files))
             between.setdefault(key, []).append(clash)  # type: ignore[arg-type]
     for (file_a, file_b), pair_clashes in sorted(between.items()):
-        a = by_file[os.path.realpath(file_a)]
-        b = by_file[os.path.realpath(file_b)]
+        a = by_file[real(file_a)]
+        b = by_file[real(file_b)]
         condition = space.false
         for clash in pair_clashes:
             condition |= clash.condition
@@ -262,7 +265,7 @@ def extract(
                 space.valid_implies(condition),
             )
         )
-    solver = _formula(space, features, constraints)
+    solver = _formula(space, features, constraints, buckets)
     return FeatureModel(
         space, features, constraints, found, internal, solver, _unknown_values(features)
     )
@@ -331,36 +334,98 @@ def _order(
 
 
 @dataclass
-class Solver:
-    """The feature model as BDDs in a manager of its own, ordered for it."""
+class Component:
+    """Files linked by cross-tree constraints, and their formula.
 
-    manager: _cudd.BDD
-    variables: list[str]
-    tree: BDD  # the feature tree alone
-    constraints: list[BDD]  # the cross-tree constraints, as in FeatureModel.constraints
-    formula: BDD  # everything
+    Components share no variable, so every question about the whole model splits
+    into one per component (a count is the product of the components' counts),
+    and each component is built and asked about on its own.
+    """
+
+    files: list[str]  # feature ids
+    variables: list[str]  # its feature variables, in the solver's order (a contiguous range)
+    formula: BDD  # its files' tree ∧ their cross-tree constraints
+
+
+class Solver:
+    """The feature model as BDDs in a manager of its own, ordered for it.
+
+    ``components`` hold the model: one formula per group of linked files.
+    ``formula`` is their conjunction, built on first use (cheap: components occupy
+    contiguous levels). ``constraints`` are the cross-tree constraints one by one,
+    as in ``FeatureModel.constraints``, for explanations and exports; they are
+    translated on first use, since counting and propagation never need them.
+    """
+
+    def __init__(
+        self,
+        manager: _cudd.BDD,
+        variables: list[str],
+        tree: BDD,
+        components: list[Component],
+        constraints: Callable[[], list[BDD]],
+    ) -> None:
+        self.manager = manager
+        self.variables = variables
+        self.tree = tree  # the feature tree alone
+        self.components = components
+        self._translate = constraints
+
+    @cached_property
+    def constraints(self) -> list[BDD]:
+        return self._translate()
+
+    @cached_property
+    def formula(self) -> BDD:
+        """Everything: the conjunction of the components."""
+        return _conjoin(self.manager, [c.formula for c in self.components])
 
     def var(self, variable: BDD) -> BDD:
         """The counterpart of an analysis-space feature variable."""
         return self.manager.var(_name(variable))
+
+    def restrict(self, choices: Mapping[str, bool]) -> list[BDD]:
+        """Each component's formula under ``choices`` (variable name → value)."""
+        return [self.manager.let(dict(choices), c.formula) for c in self.components]
+
+    def count(self, choices: Mapping[str, bool] | None = None) -> int:
+        """Valid configurations (agreeing with ``choices``): product of the components' counts.
+
+        Variables fixed by ``choices`` no longer count as free.
+        """
+        fixed = set(choices or {})
+        total = 1
+        for component, formula in zip(self.components, self.restrict(choices or {}), strict=True):
+            free = len([v for v in component.variables if v not in fixed])
+            total *= int(self.manager.count(formula, nvars=free))
+        return total
 
 
 def _formula(
     space: ConditionSpace,
     features: Sequence[FileFeature],
     constraints: Sequence[Constraint],
+    buckets: Mapping[tuple[str, str], Sequence[Occurrence]],
 ) -> Solver:
-    """The whole feature model as one BDD over file and value variables only.
+    """The whole feature model over file and value variables only, one BDD per component.
 
     Atoms that are not features (predicates on typed-in values, environment
     variables, other files' plumbing) are quantified out of each constraint:
     an ``<other>`` value is taken as able to do anything a typed value could.
+    Exclusions enter per clashing name, not per pair of files (``_exclusions``).
     """
     keep = _order(space, features, constraints)
     kept = set(keep)
     manager = _cudd.BDD()
     manager.configure(reordering=False)
     manager.declare(*keep)  # a fresh manager in the chosen order (reordering in place is slow)
+
+    def translate(formula: BDD) -> BDD:
+        others = {name for name in space.bdd.support(formula) if name not in kept}
+        if others:
+            formula = space.bdd.exist(others, formula)
+        return _cudd.copy_bdd(formula, manager)
+
     parts: list[BDD] = []
     for feature in features:
         present = manager.var(_name(feature.variable))
@@ -372,26 +437,136 @@ def _formula(
                 none &= ~variable
             part &= (present & exactly_one(manager, variables)) | (~present & none)
         parts.append(part)
-    copies: list[BDD] = []
+    tree = _conjoin(manager, parts)
+    files = {f.file: f for f in features}
+    linked = _Links([f.id for f in features])
+    pieces: list[tuple[str, BDD]] = [(f.id, part) for f, part in zip(features, parts, strict=True)]
     for constraint in constraints:
-        formula = constraint.formula
-        others = {name for name in space.bdd.support(formula) if name not in kept}
-        if others:
-            formula = space.bdd.exist(others, formula)
-        copies.append(_cudd.copy_bdd(formula, manager))
-    tree = _conjoin(manager, parts, keep)
-    return Solver(manager, keep, tree, copies, _conjoin(manager, parts + copies, keep))
+        linked.join(constraint.files)
+        if constraint.kind != "excludes":
+            pieces.append((constraint.files[0], translate(constraint.formula)))
+    for members, exclusion in _exclusions(space, manager, files, buckets, kept, translate):
+        linked.join(members)
+        pieces.append((members[0], exclusion))
+    grouped: dict[str, list[BDD]] = {}
+    for file_id, piece in pieces:
+        grouped.setdefault(linked.find(file_id), []).append(piece)
+    level = {name: index for index, name in enumerate(keep)}
+    by_id = {f.id: f for f in features}
+    components = []
+    for root, members in linked.groups().items():
+        variables = [
+            name
+            for file_id in members
+            for name in [_name(by_id[file_id].variable)]
+            + [_name(v.variable) for a in by_id[file_id].args for v in a.values]
+        ]
+        variables.sort(key=level.__getitem__)
+        components.append(Component(members, variables, _conjoin(manager, grouped[root])))
+    components.sort(key=lambda c: level[c.variables[0]] if c.variables else -1)
+    return Solver(
+        manager, keep, tree, components, lambda: [translate(c.formula) for c in constraints]
+    )
 
 
-def _conjoin(manager: _cudd.BDD, parts: Sequence[BDD], order: Sequence[str]) -> BDD:
-    """Conjunction scheduled bottom-up (deepest variables first) to keep it narrow."""
-    level = {name: index for index, name in enumerate(order)}
+class _Links:
+    """Union-find over feature ids: which files constraints link into one component."""
 
-    def deepest(part: BDD) -> int:
-        return max((level[name] for name in manager.support(part)), default=-1)
+    def __init__(self, ids: Sequence[str]) -> None:
+        self.parent = {i: i for i in ids}
+
+    def find(self, item: str) -> str:
+        root = item
+        while self.parent[root] != root:
+            root = self.parent[root]
+        while self.parent[item] != root:
+            self.parent[item], item = root, self.parent[item]
+        return root
+
+    def join(self, items: Sequence[str]) -> None:
+        roots = [self.find(i) for i in items]
+        for other in roots[1:]:
+            self.parent[other] = roots[0]
+
+    def groups(self) -> dict[str, list[str]]:
+        found: dict[str, list[str]] = {}
+        for item in self.parent:
+            found.setdefault(self.find(item), []).append(item)
+        return found
+
+
+def _exclusions(
+    space: ConditionSpace,
+    manager: _cudd.BDD,
+    files: Mapping[str, FileFeature],
+    buckets: Mapping[tuple[str, str], Sequence[Occurrence]],
+    kept: set[str],
+    translate: Callable[[BDD], BDD],
+) -> Iterator[tuple[list[str], BDD]]:
+    """The excludes constraints, as one at-most-one per clashing name (plus rare pairs).
+
+    The pairs of files clashing on a name ``n`` exclude each other exactly when at
+    most one file ``f`` has ``F ∧ C_f`` (``C_f``: when ``f`` declares ``n``) —
+    one BDD linear in the files instead of one constraint per pair, which is what
+    makes clone-and-own systems (cliques of files redeclaring the same names)
+    cheap. Where ``C_f`` mentions atoms that are not features, quantifying them
+    out does not distribute over the names, so such files keep the pairwise
+    constraint, restricted to those names: together this is the conjunction of
+    the pairwise ``excludes`` exactly.
+    """
+    dirty: dict[tuple[str, str], BDD] = {}
+    for occurrences in buckets.values():
+        when: dict[str, BDD] = {}
+        for occurrence in occurrences:
+            if occurrence.file in files:
+                when[occurrence.file] = (
+                    when.get(occurrence.file, space.false) | occurrence.condition
+                )
+        if len(when) < 2:
+            continue
+        clean: list[tuple[str, BDD]] = []
+        unclean: list[str] = []
+        for file, condition in when.items():
+            if space.bdd.support(condition) <= kept:
+                clean.append((file, _cudd.copy_bdd(files[file].variable & condition, manager)))
+            else:
+                unclean.append(file)
+        for position, file in enumerate(unclean):
+            for other in [*unclean[position + 1 :], *(f for f, _x in clean)]:
+                key = (file, other) if file < other else (other, file)
+                dirty[key] = dirty.get(key, space.false) | (when[file] & when[other])
+        if len(clean) >= 2:
+            clean.sort(key=lambda item: manager.level_of_var(_name(files[item[0]].variable)))
+            yield [files[f].id for f, _x in clean], _at_most_one(manager, [x for _f, x in clean])
+    for (first, second), condition in dirty.items():
+        a, b = files[first], files[second]
+        if condition != space.false:
+            yield [a.id, b.id], translate(~(a.variable & b.variable & condition))
+
+
+def _at_most_one(manager: _cudd.BDD, literals: Sequence[BDD]) -> BDD:
+    """At most one of ``literals`` holds: a chain built from the last literal up."""
+    result, none = manager.true, manager.true
+    for literal in reversed(literals):
+        result = (literal & none) | (~literal & result)
+        none &= ~literal
+    return result
+
+
+def _conjoin(manager: _cudd.BDD, parts: Sequence[BDD]) -> BDD:
+    """Conjunction scheduled from the bottom of the order up, by each part's top variable.
+
+    Each intermediate result is then the conjunction of every part lying below some
+    level, never a part reaching far up without those that prune it — the result
+    does not grow beyond the final diagram's width (ordering by the deepest
+    variable instead made Husky's intermediate results twenty times the final one).
+    """
+
+    def top(part: BDD) -> int:
+        return min((manager.level_of_var(name) for name in manager.support(part)), default=-1)
 
     result = manager.true
-    for part in sorted(parts, key=deepest, reverse=True):
+    for part in sorted(parts, key=top, reverse=True):
         result &= part
     return result
 
@@ -418,7 +593,7 @@ def core_and_dead(model: FeatureModel) -> list[Verdict]:
         candidates.append((file.id, solver.var(file.variable)))
         for arg in file.args:
             candidates.extend((v.id, solver.var(v.variable)) for v in arg.values)
-    possible = _possible_values(solver)
+    possible = possible_values(solver)
     for feature_id, variable in candidates:
         values = possible.get(_name(variable), {False, True})
         if True not in values:
@@ -428,19 +603,21 @@ def core_and_dead(model: FeatureModel) -> list[Verdict]:
     return verdicts
 
 
-def _possible_values(solver: Solver) -> dict[str, set[bool]]:
+def possible_values(solver: Solver, formula: BDD | None = None) -> dict[str, set[bool]]:
     """For every variable, the values it takes in some valid configuration — one BDD pass.
 
     A value is possible when some path to TRUE sets it, or skips the variable's level
     (then it is free). Asking the solver twice per feature instead costs two
-    operations on the whole diagram each, minutes on a large system.
+    operations on the whole diagram each, minutes on a large system. ``formula``
+    (default: the whole model) may be a component's formula, restricted or not; the
+    answer is then meant for that component's variables only.
     """
     manager = solver.manager
     depth = len(solver.variables)
     names = [manager.var_at_level(level) for level in range(depth)]
     possible: dict[str, set[bool]] = {name: set() for name in names}
     free = [0] * (depth + 1)  # difference array over levels skipped by some edge
-    root = solver.formula
+    root = solver.formula if formula is None else formula
     if root == manager.false:
         return possible
 
