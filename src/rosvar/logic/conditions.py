@@ -24,6 +24,9 @@ BDD = Any  # dd.cudd.Function: dd ships no type information
 BOOLEAN_WORDS = ("true", "false")
 MAX_FULL = 200  # longer formulas over <other> values help nobody
 MAX_CUBES = 256  # beyond this many disjuncts a formula is no longer readable
+INITIAL_CACHE_ENTRIES = 1 << 16
+"""CUDD starts with a computed table of 2^18 entries, whose set-up alone is more than 10 ms
+(a tenth of analysing a small system); it grows when hits show it is worth it."""
 MAX_CACHE_ENTRIES = 1 << 20
 """CUDD's computed table grows with the unique table, i.e. with the number of variables
 (hundreds of MB on large workspaces) although the BDDs stay small; about 40 MB is plenty."""
@@ -83,7 +86,7 @@ class ConditionSpace:
     """The BDD manager of one analysis and the meaning of its variables."""
 
     def __init__(self) -> None:
-        self.bdd = _cudd.BDD()
+        self.bdd = _cudd.BDD(initial_cache_size=INITIAL_CACHE_ENTRIES)
         # Declaration order is already local (one file's inputs together); dynamic
         # reordering would cost more than it saves, quadratically in the variables.
         self.bdd.configure(reordering=False, max_cache_hard=MAX_CACHE_ENTRIES)
