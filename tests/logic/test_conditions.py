@@ -13,6 +13,9 @@ import math
 import random
 import re
 
+import pytest
+
+from rosvar.logic import conditions as conditions_module
 from rosvar.logic.conditions import BDD, ConditionSpace, register_predicate
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Input, Slot
 from rosvar.logic.terms import Apply, Hole
@@ -278,12 +281,26 @@ def _random_condition(space: ConditionSpace, rng: random.Random) -> BDD:
     return ~result if rng.random() < 0.2 else result
 
 
-def test_support_agrees_with_dd_on_random_conditions() -> None:
+def test_support_agrees_with_dd_on_random_conditions(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(conditions_module, "SUPPORT_WALK_FACTOR", 0)  # always walk the BDD
     space = make_space()
     rng = random.Random(7)
     conditions = [space.true, space.false] + [_random_condition(space, rng) for _ in range(200)]
     for condition in conditions:
         assert space.support(condition) == space.bdd.support(condition)
+
+
+def test_evaluate_and_cofactor_agree_with_dd_let_on_random_conditions() -> None:
+    space = make_space()
+    rng = random.Random(11)
+    names = sorted(space.bdd.vars)
+    for _ in range(200):
+        condition = _random_condition(space, rng)
+        assignment = {name: rng.random() < 0.5 for name in names}
+        expected = space.bdd.let(assignment, condition) == space.true
+        assert space.evaluate(condition, assignment) is expected
+        fixed = dict(rng.sample(sorted(assignment.items()), rng.randint(1, len(names))))
+        assert space.cofactor(condition, fixed) == space.bdd.let(fixed, condition)
 
 
 def _known(space: ConditionSpace) -> BDD:

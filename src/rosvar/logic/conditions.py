@@ -27,6 +27,7 @@ MAX_CUBES = 256  # beyond this many disjuncts a formula is no longer readable
 INITIAL_CACHE_ENTRIES = 1 << 16
 """CUDD starts with a computed table of 2^18 entries, whose set-up alone is more than 10 ms
 (a tenth of analysing a small system); it grows when hits show it is worth it."""
+SUPPORT_WALK_FACTOR = 16  # a node visited in Python costs about as much as 16 variables in dd
 MAX_CACHE_ENTRIES = 1 << 20
 """CUDD's computed table grows with the unique table, i.e. with the number of variables
 (hundreds of MB on large workspaces) although the BDDs stay small; about 40 MB is plenty."""
@@ -166,8 +167,11 @@ class ConditionSpace:
 
         ``dd``'s own ``support`` walks every variable of the manager in Python; with tens
         of thousands of atoms in a large workspace that made each call cost as much as
-        the workspace is large, and analysis quadratic.
+        the workspace is large, and analysis quadratic. It stays the faster choice for a
+        BDD that is large next to the number of variables.
         """
+        if u.dag_size * SUPPORT_WALK_FACTOR > len(self._atoms):
+            return cast(set[str], self.bdd.support(u))
         names: set[str] = set()
         seen: set[int] = set()
         stack = [u]
@@ -256,11 +260,28 @@ class ConditionSpace:
         return result
 
     def evaluate(self, condition: BDD, assignment: Mapping[str, bool]) -> bool:
-        support = self.support(condition)
-        if not support:
-            return bool(condition == self.true)
-        reduced = self.bdd.let({name: assignment[name] for name in support}, condition)
-        return bool(reduced == self.true)
+        """The truth of ``condition`` under ``assignment``: one path from the root down."""
+        flipped = False
+        node = condition
+        while (name := node.var) is not None:
+            flipped ^= bool(node.negated)  # children are those of the regular node
+            node = node.high if assignment[name] else node.low
+        return bool(node == self.true) != flipped
+
+    def cofactor(self, u: BDD, values: Mapping[str, bool]) -> BDD:
+        """``u`` with the variables of ``values`` fixed, in time linear in the size of ``u``.
+
+        ``dd``'s ``let`` with Boolean values builds a cube over every variable of the
+        manager first; one composition per variable does not.
+        """
+        for name, value in values.items():
+            u = self.bdd.let({name: self.true if value else self.false}, u)
+        return u
+
+    def _children(self, u: BDD) -> tuple[BDD, BDD]:
+        """The cofactors of ``u`` by its top variable (false, true)."""
+        low, high = u.low, u.high
+        return (~low, ~high) if u.negated else (low, high)
 
     # -- readable form ---------------------------------------------------------------------
     def describe(self, condition: BDD, qualify: bool = False, known_only: bool = True) -> str:
@@ -291,8 +312,8 @@ class ConditionSpace:
                 and atom.slot is OTHER
                 and isinstance(atom.input, ArgInput)
             }
-            known = self.bdd.let(others, condition) if others else condition
-            care = self.bdd.let(others, local) if others else local
+            known = self.cofactor(condition, others)
+            care = self.cofactor(local, others)
             if (known & care) == self.false:
                 return "only for other values"
             if (care & ~known) == self.false and not self.valid_implies(condition):
@@ -385,8 +406,8 @@ class ConditionSpace:
             yield {}
             return
         var = u.var
-        for value in (False, True):
-            for path in self._paths(self.bdd.let({var: value}, u), budget):
+        for value, child in zip((False, True), self._children(u), strict=True):
+            for path in self._paths(child, budget):
                 yield {var: value, **path}
 
     def _grouped_cubes(
