@@ -20,9 +20,13 @@ STAMP  := $(VENV)/.installed
 #   python3-roslaunch: the real roslaunch, used by the differential tests' oracle
 #                      (tests/oracle/roslaunch_oracle.py runs under Debian's /usr/bin/python3).
 #   python3-venv:      lets Debian's python3 create .venv (ensurepip).
-SYSTEM_PACKAGES := python3-roslaunch python3-venv
+#   chromium:          the headless browser of the web UI's end-to-end tests (tests/outputs/web),
+#                      driven by Playwright with executable_path (Playwright's own browser
+#                      builds are never downloaded).
+SYSTEM_PACKAGES := python3-roslaunch python3-venv chromium
 CHECK_python3-roslaunch := /usr/bin/python3 -c 'import roslaunch'
 CHECK_python3-venv := $(PYTHON) -c 'import ensurepip, venv'
+CHECK_chromium := /usr/bin/chromium --version
 
 APT_ENV := env DEBIAN_FRONTEND=noninteractive
 # Empty when we are root; "sudo" when we are not and sudo exists.

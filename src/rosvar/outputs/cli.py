@@ -12,6 +12,7 @@ import gc
 import json
 import os
 import sys
+import time
 from collections.abc import Sequence
 
 from rosvar import __version__
@@ -24,6 +25,7 @@ from rosvar.diagnostics import Severity
 from rosvar.interpreter.analysis import Analysis
 from rosvar.outputs.describe import describe_model
 from rosvar.outputs.exports import WRITERS, write
+from rosvar.outputs.web.server import make_server
 from rosvar.ros.names import command_line_mappings
 from rosvar.workspace import Workspace, discover
 from rosvar.workspace.hints import load_hints
@@ -253,6 +255,32 @@ class _Choice(argparse.Action):
         setattr(namespace, self.dest, found)
 
 
+def cmd_serve(options: argparse.Namespace) -> int:
+    env = _environment(options.env)
+    if env is None:
+        return EXIT_USAGE
+    analysis = _analysis(options, env)
+    if analysis is None:
+        return EXIT_INPUT
+    started = time.perf_counter()
+    files = len(analysis.workspace.launch_files)
+    print(f"rosvar: analysing {files} launch files ...", file=sys.stderr, flush=True)
+    configurator = Configurator(analysis, extract(analysis, progress=_progress), env)
+    try:
+        server = make_server(configurator, options.host, options.port)
+    except OSError as error:
+        print(f"rosvar: cannot listen on {options.host}:{options.port}: {error}", file=sys.stderr)
+        return EXIT_USAGE
+    print(f"rosvar: ready in {time.perf_counter() - started:.1f} s", file=sys.stderr)
+    print(f"rosvar: serving {server.url} (Ctrl-C stops)", flush=True)
+    with server:
+        try:
+            server.serve_forever()
+        except KeyboardInterrupt:
+            pass
+    return EXIT_OK
+
+
 def parser() -> argparse.ArgumentParser:
     top = argparse.ArgumentParser(
         prog="rosvar",
@@ -304,6 +332,13 @@ def parser() -> argparse.ArgumentParser:
     configure.add_argument("--hints", metavar="FILE")
     configure.add_argument("--json", action="store_true")
     configure.set_defaults(run=cmd_configure)
+    serve = commands.add_parser("serve", help="configure step by step in the browser")
+    serve.add_argument("paths", nargs="+", metavar="PATH")
+    serve.add_argument("--host", default="127.0.0.1", help="address to bind (default: loopback)")
+    serve.add_argument("--port", type=int, default=8080, help="port (0: any free one)")
+    serve.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
+    serve.add_argument("--hints", metavar="FILE")
+    serve.set_defaults(run=cmd_serve)
     return top
 
 

@@ -1,0 +1,146 @@
+"""The JSON API of ``rosvar serve``: validated requests in, configuration states out.
+
+Every route is one entry of a table (method, path) → handler; every handler checks its
+fields before the engine sees them (known session, known action, known feature id, bounded
+text), and a bad request becomes an :class:`ApiError` with a 4xx status and a message.
+Engine calls are serialised by one lock: the BDD manager is not thread-safe, and the HTTP
+server answers each connection in its own thread.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable, Mapping
+from http import HTTPStatus
+
+from rosvar.configuration.engine import ConfigurationState, Configurator, UserChoice
+from rosvar.configuration.session import Session
+from rosvar.outputs.web.sessions import DEFAULT_CAPACITY, SessionStore
+
+ACTIONS = ("select", "deselect", "unselect", "set")
+MAX_TEXT = 4096
+"""Longest accepted string field (feature ids and typed values are far shorter)."""
+
+Body = Mapping[str, object]
+Query = Mapping[str, str]
+Reply = dict[str, object]
+
+
+class ApiError(Exception):
+    """A request the API refuses: ``status`` is a 4xx code, ``message`` says why."""
+
+    def __init__(self, status: HTTPStatus, message: str) -> None:
+        super().__init__(message)
+        self.status = status
+        self.message = message
+
+
+def _text(fields: Mapping[str, object], name: str) -> str:
+    value = fields.get(name)
+    if not isinstance(value, str):
+        raise ApiError(HTTPStatus.BAD_REQUEST, f"field {name!r} must be a string")
+    if len(value) > MAX_TEXT:
+        raise ApiError(HTTPStatus.BAD_REQUEST, f"field {name!r} is longer than {MAX_TEXT}")
+    return value
+
+
+def _only(fields: Mapping[str, object], allowed: set[str]) -> None:
+    unknown = sorted(set(fields) - allowed)
+    if unknown:
+        raise ApiError(HTTPStatus.BAD_REQUEST, f"unknown field(s): {', '.join(unknown)}")
+
+
+class Api:
+    """Sessions of one :class:`Configurator`, reached through the route table."""
+
+    def __init__(self, configurator: Configurator, capacity: int = DEFAULT_CAPACITY) -> None:
+        self._store = SessionStore(configurator, capacity)
+        self._lock = threading.Lock()
+        features = configurator.state([]).to_json()["features"]
+        assert isinstance(features, dict)
+        self._kinds: dict[str, str] = {key: value["kind"] for key, value in features.items()}
+        steps: dict[str, Callable[[Session], ConfigurationState]] = {
+            "undo": Session.undo,
+            "redo": Session.redo,
+            "reset": Session.reset,
+        }
+        self.routes: dict[tuple[str, str], Callable[[Query, Body], Reply]] = {
+            ("POST", "/api/session"): self._open,
+            ("GET", "/api/state"): self._state,
+            ("POST", "/api/choose"): self._choose,
+            **{("POST", f"/api/{name}"): self._stepper(step) for name, step in steps.items()},
+        }
+
+    def handle(self, method: str, path: str, query: Query, body: Body) -> Reply:
+        route = self.routes.get((method, path))
+        if route is None:
+            if any(known == path for _, known in self.routes):
+                raise ApiError(HTTPStatus.METHOD_NOT_ALLOWED, f"{method} not allowed on {path}")
+            raise ApiError(HTTPStatus.NOT_FOUND, f"no such API: {path}")
+        with self._lock:
+            return route(query, body)
+
+    @property
+    def sessions(self) -> int:
+        return len(self._store)
+
+    # -- routes ------------------------------------------------------------------------------
+    def _open(self, query: Query, body: Body) -> Reply:
+        _only(query, set())
+        _only(body, set())
+        key, session = self._store.create()
+        return self._reply(key, session, session.current())
+
+    def _state(self, query: Query, body: Body) -> Reply:
+        _only(query, {"session"})
+        key, session = self._session(query)
+        return self._reply(key, session, session.current())
+
+    def _choose(self, query: Query, body: Body) -> Reply:
+        _only(query, set())
+        _only(body, {"session", "action", "feature", "value"})
+        key, session = self._session(body)
+        choice = self._choice(body)
+        return self._reply(key, session, session.apply(choice))
+
+    def _stepper(self, step: Callable[[Session], ConfigurationState]) -> Callable[[Query, Body], Reply]:
+        def route(query: Query, body: Body) -> Reply:
+            _only(query, set())
+            _only(body, {"session"})
+            key, session = self._session(body)
+            return self._reply(key, session, step(session))
+
+        return route
+
+    # -- checks ------------------------------------------------------------------------------
+    def _session(self, fields: Mapping[str, object]) -> tuple[str, Session]:
+        key = _text(fields, "session")
+        session = self._store.get(key)
+        if session is None:
+            raise ApiError(HTTPStatus.NOT_FOUND, "unknown or expired session")
+        return key, session
+
+    def _choice(self, body: Body) -> UserChoice:
+        action = _text(body, "action")
+        if action not in ACTIONS:
+            raise ApiError(HTTPStatus.BAD_REQUEST, f"unknown action {action!r}")
+        feature = _text(body, "feature")
+        kind = self._kinds.get(feature)
+        if kind is None:
+            raise ApiError(HTTPStatus.BAD_REQUEST, f"unknown feature {feature!r}")
+        if action != "set":
+            if body.get("value") is not None:
+                raise ApiError(HTTPStatus.BAD_REQUEST, f"{action!r} takes no value")
+            return UserChoice(action, feature)
+        if kind != "arg":
+            raise ApiError(HTTPStatus.BAD_REQUEST, "'set' needs an arg feature (FILE:ARG)")
+        return UserChoice(action, feature, _text(body, "value"))
+
+    @staticmethod
+    def _reply(key: str, session: Session, state: ConfigurationState) -> Reply:
+        return {
+            "session": key,
+            **state.to_json(),
+            "can_undo": session.can_undo,
+            "can_redo": session.can_redo,
+        }

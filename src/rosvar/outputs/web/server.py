@@ -1,0 +1,172 @@
+"""The HTTP side of ``rosvar serve``: the app's own files and the JSON API, nothing else.
+
+Requests are checked before they reach the API: the ``Host`` header must name the loopback
+when the server is bound to it (a page elsewhere cannot reach the API through DNS
+rebinding), POST bodies must be JSON objects of bounded size with the JSON content type (a
+plain HTML form cannot post one), and every refusal is a 4xx answer ``{"error": message}``.
+"""
+
+from __future__ import annotations
+
+import ipaddress
+import json
+from http import HTTPStatus
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+from typing import Any
+from urllib.parse import parse_qsl, urlsplit
+
+from rosvar.configuration.engine import Configurator
+from rosvar.outputs.web.api import Api, ApiError
+from rosvar.outputs.web.assets import Asset, load_assets
+from rosvar.outputs.web.sessions import DEFAULT_CAPACITY
+
+MAX_BODY = 64 * 1024
+API_PREFIX = "/api/"
+LOOPBACK_NAMES = ("localhost", "127.0.0.1", "[::1]")
+
+SECURITY_HEADERS = {
+    "X-Content-Type-Options": "nosniff",
+    "X-Frame-Options": "DENY",
+    "Referrer-Policy": "no-referrer",
+    # scripts only from this server; Cytoscape sets inline styles on its canvas
+    "Content-Security-Policy": (
+        "default-src 'self'; script-src 'self'; style-src 'self' 'unsafe-inline'; "
+        "img-src 'self' data:; connect-src 'self'; frame-ancestors 'none'"
+    ),
+}
+
+
+def is_loopback(host: str) -> bool:
+    if host == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host).is_loopback
+    except ValueError:
+        return False
+
+
+class WebServer(ThreadingHTTPServer):
+    """One configurator's API and the app's files, on one address."""
+
+    daemon_threads = True
+
+    def __init__(self, api: Api, host: str, port: int) -> None:
+        self.api = api
+        self.assets: dict[str, Asset] = load_assets()
+        self.loopback = is_loopback(host)
+        super().__init__((host, port), _Handler)
+
+    @property
+    def url(self) -> str:
+        host, port = self.server_address[:2]
+        shown = f"[{host}]" if ":" in str(host) else str(host)
+        return f"http://{shown}:{port}/"
+
+    def allows_host(self, header: str | None) -> bool:
+        """On loopback, only requests addressed to a loopback name (no DNS rebinding)."""
+        if not self.loopback:
+            return True
+        if header is None:
+            return False
+        name = header.rsplit(":", 1)[0] if not header.endswith("]") else header
+        return name.lower() in LOOPBACK_NAMES
+
+
+def make_server(
+    configurator: Configurator,
+    host: str = "127.0.0.1",
+    port: int = 0,
+    capacity: int = DEFAULT_CAPACITY,
+) -> WebServer:
+    """A bound server (``port=0`` picks a free port; see ``.url``), not yet serving."""
+    return WebServer(Api(configurator, capacity), host, port)
+
+
+class _Handler(BaseHTTPRequestHandler):
+    server: WebServer
+    protocol_version = "HTTP/1.1"
+    server_version = "rosvar"
+    sys_version = ""
+
+    def do_GET(self) -> None:
+        self._dispatch("GET")
+
+    def do_POST(self) -> None:
+        self._dispatch("POST")
+
+    def _refuse_method(self) -> None:
+        self.close_connection = True  # a body, if any, is left unread
+        self._error(HTTPStatus.METHOD_NOT_ALLOWED, f"method {self.command} not allowed")
+
+    do_PUT = do_DELETE = do_PATCH = do_OPTIONS = do_HEAD = _refuse_method
+
+    def log_message(self, format: str, *args: Any) -> None:  # noqa: A002 - base signature
+        """Quiet: the terminal shows the URL, not one line per click."""
+
+    # -- dispatch ----------------------------------------------------------------------------
+    def _dispatch(self, method: str) -> None:
+        try:
+            if not self.server.allows_host(self.headers.get("Host")):
+                raise ApiError(HTTPStatus.FORBIDDEN, "requests must address the loopback host")
+            url = urlsplit(self.path)
+            if url.path.startswith(API_PREFIX):
+                body = self._body() if method == "POST" else {}
+                query = self._query(url.query)
+                self._send_json(HTTPStatus.OK, self.server.api.handle(method, url.path, query, body))
+            elif method == "GET" and not url.query and url.path in self.server.assets:
+                self._send_asset(self.server.assets[url.path])
+            else:
+                raise ApiError(HTTPStatus.NOT_FOUND, f"not found: {url.path}")
+        except ApiError as error:
+            self._error(error.status, error.message)
+
+    @staticmethod
+    def _query(text: str) -> dict[str, str]:
+        try:
+            pairs = parse_qsl(text, strict_parsing=bool(text), max_num_fields=8)
+        except ValueError as error:
+            raise ApiError(HTTPStatus.BAD_REQUEST, f"bad query string: {error}") from None
+        query = dict(pairs)
+        if len(query) != len(pairs):
+            raise ApiError(HTTPStatus.BAD_REQUEST, "repeated query parameter")
+        return query
+
+    def _body(self) -> dict[str, object]:
+        content_type = self.headers.get("Content-Type", "").split(";")[0].strip().lower()
+        if content_type != "application/json":
+            raise ApiError(HTTPStatus.UNSUPPORTED_MEDIA_TYPE, "body must be application/json")
+        length_header = self.headers.get("Content-Length")
+        if length_header is None or not length_header.isdigit():
+            raise ApiError(HTTPStatus.LENGTH_REQUIRED, "Content-Length required")
+        length = int(length_header)
+        if length > MAX_BODY:
+            self.close_connection = True  # the unread body must not be taken for a request
+            raise ApiError(HTTPStatus.REQUEST_ENTITY_TOO_LARGE, f"body over {MAX_BODY} bytes")
+        try:
+            body = json.loads(self.rfile.read(length) or b"{}")
+        except (UnicodeDecodeError, json.JSONDecodeError) as error:
+            raise ApiError(HTTPStatus.BAD_REQUEST, f"body is not JSON: {error}") from None
+        if not isinstance(body, dict):
+            raise ApiError(HTTPStatus.BAD_REQUEST, "body must be a JSON object")
+        return body
+
+    # -- answers -----------------------------------------------------------------------------
+    def _send(self, status: HTTPStatus, body: bytes, content_type: str, cache: str) -> None:
+        self.send_response(status)
+        self.send_header("Content-Type", content_type)
+        self.send_header("Content-Length", str(len(body)))
+        self.send_header("Cache-Control", cache)
+        for name, value in SECURITY_HEADERS.items():
+            self.send_header(name, value)
+        self.end_headers()
+        self.wfile.write(body)
+
+    def _send_json(self, status: HTTPStatus, document: object) -> None:
+        body = json.dumps(document, ensure_ascii=False, separators=(",", ":")).encode()
+        self._send(status, body, "application/json; charset=utf-8", "no-store")
+
+    def _send_asset(self, asset: Asset) -> None:
+        self._send(HTTPStatus.OK, asset.body, asset.content_type, "no-cache")
+
+    def _error(self, status: HTTPStatus, message: str) -> None:
+        self._send_json(status, {"error": message})

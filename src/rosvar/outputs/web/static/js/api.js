@@ -1,0 +1,96 @@
+// The server's JSON API, with one configuration session per browser tab.
+//
+// The session id lives in sessionStorage, which belongs to one tab. A duplicated tab starts
+// with a copy of it, so at start-up a tab asks the others (BroadcastChannel) whether one of
+// them already holds its id, and opens a fresh session if so: two tabs never share choices.
+
+const KEY = "rosvar.session";
+const CHANNEL = "rosvar.sessions";
+const CLAIM_WAIT_MS = 150;
+
+export class ApiError extends Error {
+  constructor(status, message) {
+    super(message);
+    this.status = status;
+  }
+}
+
+async function request(method, path, body) {
+  const options = { method, headers: {} };
+  if (body !== undefined) {
+    options.headers["Content-Type"] = "application/json";
+    options.body = JSON.stringify(body);
+  }
+  const response = await fetch(path, options);
+  const document = await response.json();
+  if (!response.ok) throw new ApiError(response.status, document.error || response.statusText);
+  return document;
+}
+
+// Resolves true when another open tab answers that it owns `id`.
+function claimedElsewhere(channel, id) {
+  return new Promise((resolve) => {
+    const timer = setTimeout(() => { channel.removeEventListener("message", listen); resolve(false); },
+                             CLAIM_WAIT_MS);
+    function listen(event) {
+      if (event.data && event.data.owns === id) {
+        clearTimeout(timer);
+        channel.removeEventListener("message", listen);
+        resolve(true);
+      }
+    }
+    channel.addEventListener("message", listen);
+    channel.postMessage({ asks: id });
+  });
+}
+
+export class Client {
+  constructor() {
+    this.session = null;
+    this.channel = "BroadcastChannel" in window ? new BroadcastChannel(CHANNEL) : null;
+    if (this.channel) {
+      this.channel.addEventListener("message", (event) => {
+        if (event.data && event.data.asks && event.data.asks === this.session) {
+          this.channel.postMessage({ owns: this.session });
+        }
+      });
+    }
+  }
+
+  // The tab's state: its own session if the server still has it, else a new one.
+  async start() {
+    const known = sessionStorage.getItem(KEY);
+    if (known && !(this.channel && await claimedElsewhere(this.channel, known))) {
+      try {
+        return this.adopt(await request("GET", `/api/state?session=${encodeURIComponent(known)}`));
+      } catch (error) {
+        if (!(error instanceof ApiError && error.status === 404)) throw error;
+      }
+    }
+    return this.open();
+  }
+
+  async open() {
+    return this.adopt(await request("POST", "/api/session", {}));
+  }
+
+  adopt(state) {
+    this.session = state.session;
+    sessionStorage.setItem(KEY, state.session);
+    return state;
+  }
+
+  choose(action, feature, value) {
+    const fields = { action, feature };
+    if (value !== undefined) fields.value = value;
+    return this.post("/api/choose", fields);
+  }
+
+  undo() { return this.post("/api/undo", {}); }
+  redo() { return this.post("/api/redo", {}); }
+  reset() { return this.post("/api/reset", {}); }
+
+  async post(path, fields) {
+    return this.adopt(await request("POST", path, { session: this.session, ...fields }));
+  }
+}

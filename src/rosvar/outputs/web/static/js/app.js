@@ -1,0 +1,100 @@
+// Wires the page: every user action goes to the server, and every state it answers updates
+// the tree, the graph, the details and the bar at once. Actions run one after another, in
+// the order they were made.
+
+import { ApiError, Client } from "./api.js";
+import { Bar } from "./bar.js";
+import { DetailsPanel } from "./details.js";
+import { GraphView } from "./graph.js";
+import { FeatureTree } from "./tree.js";
+
+const $ = (id) => document.getElementById(id);
+
+const client = new Client();
+let state = null;
+let queue = Promise.resolve();
+
+const bar = new Bar(
+  {
+    featuresLeft: $("features-left"), configurations: $("configurations"), completeness: $("completeness"),
+    undo: $("undo"), redo: $("redo"), reset: $("reset"), message: $("message"),
+    command: $("command"), copy: $("copy"),
+  },
+  { undo: () => act(() => client.undo()), redo: () => act(() => client.redo()), reset: () => act(() => client.reset()) },
+);
+const tree = new FeatureTree($("tree"), $("conflict-popup"), (action, feature, value) => {
+  act(() => client.choose(action, feature, value));
+});
+const details = new DetailsPanel($("details"), $("details-body"), $("details-close"));
+const graph = new GraphView($("graph"), (element) => {
+  details.show(element, state);
+  $("focus").disabled = !element;
+});
+
+function render(next) {
+  state = next;
+  tree.update(state);
+  graph.update(state);
+  bar.update(state);
+  const counts = graph.counts();
+  $("graph-counts").textContent = `${counts.nodes} nodes · ${counts.topics} topics`
+    + (graph.options.params ? ` · ${counts.params} params` : "") + ` · ${counts.undetermined} undetermined`;
+  // body[data-step] counts rendered states: tests (and curious users) can wait for the next one
+  document.body.dataset.step = String(Number(document.body.dataset.step ?? 0) + 1);
+}
+
+// Runs one server call after the previous one, then renders its answer.
+function act(call) {
+  queue = queue.then(async () => {
+    document.body.classList.add("busy");
+    bar.say("");
+    try {
+      render(await call());
+    } catch (error) {
+      if (error instanceof ApiError && error.status === 404) {
+        render(await client.open()); // the server forgot this tab's session
+        bar.say("Your session had expired: started over.", true);
+      } else {
+        bar.say(`Error: ${error.message}`, true);
+      }
+    } finally {
+      document.body.classList.remove("busy");
+    }
+  });
+  return queue;
+}
+
+function wireToolbars() {
+  $("tree-filter").addEventListener("input", (event) => tree.filter(event.target.value));
+  $("expand-all").addEventListener("click", () => tree.expand(true));
+  $("collapse-all").addEventListener("click", () => tree.expand(false));
+  $("graph-search").addEventListener("input", (event) => graph.search(event.target.value));
+  $("graph-search").addEventListener("keydown", (event) => { if (event.key === "Enter") graph.fit(); });
+  $("show-params").addEventListener("change", (event) => { graph.setOption("params", event.target.checked); render(state); });
+  $("group-namespaces").addEventListener("change", (event) => graph.setOption("groups", event.target.checked));
+  $("fit").addEventListener("click", () => graph.fit());
+  $("focus").addEventListener("click", () => { $("show-all").disabled = !graph.focusSelected(); });
+  $("show-all").addEventListener("click", () => { graph.showAll(); $("show-all").disabled = true; });
+  document.addEventListener("keydown", (event) => {
+    if (!(event.ctrlKey || event.metaKey) || event.key.toLowerCase() !== "z") return;
+    if (event.target.matches("input")) return;
+    event.preventDefault();
+    if (event.shiftKey ? state.can_redo : state.can_undo) act(() => (event.shiftKey ? client.redo() : client.undo()));
+  });
+}
+
+async function start() {
+  wireToolbars();
+  try {
+    const first = await client.start();
+    tree.build(first.features);
+    render(first);
+  } catch (error) {
+    bar.say(`Cannot reach the rosvar server: ${error.message}`, true);
+  }
+}
+
+// A handle for the browser console and the end-to-end tests.
+window.rosvar = { graph, tree, act, get state() { return state; } };
+
+start();

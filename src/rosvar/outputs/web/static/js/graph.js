@@ -1,0 +1,228 @@
+// The computation graph: ROS nodes, the topics they are wired to and (on request) params,
+// drawn with Cytoscape.js and a layered (dagre) layout.
+//
+// Graph ids are stable across steps, so a new state that keeps the same elements only
+// restyles them (present/undetermined, conflicts); the layout runs again only when elements
+// appear or disappear. Absent elements are not drawn.
+
+cytoscape.use(cytoscapeDagre);
+
+const LAYOUT = { name: "dagre", rankDir: "LR", nodeSep: 14, rankSep: 70, padding: 20, animate: false };
+
+const STYLE = [
+  { selector: "node", style: {
+    label: "data(label)", "font-size": 11, "text-valign": "bottom", "text-margin-y": 3,
+    "min-zoomed-font-size": 7, "text-wrap": "ellipsis", "text-max-width": 180,
+    "border-width": 1.5, "border-color": "#333",
+  } },
+  { selector: 'node[kind = "node"]', style: { shape: "ellipse", "background-color": "#fff", width: 28, height: 28 } },
+  { selector: 'node[kind = "topic"]', style: { shape: "round-rectangle", "background-color": "#8ecae6", width: 24, height: 14 } },
+  { selector: 'node[kind = "param"]', style: { shape: "tag", "background-color": "#ffd166", width: 18, height: 12 } },
+  { selector: 'node[kind = "namespace"]', style: {
+    shape: "round-rectangle", "background-color": "#f3f5f9", "border-style": "dotted",
+    "border-color": "#9aa3b5", "text-valign": "top", "text-margin-y": -2, "font-weight": "bold",
+    padding: 14,
+  } },
+  { selector: "edge", style: { width: 1.2, "line-color": "#9aa3b5", "curve-style": "bezier" } },
+  { selector: ".undetermined", style: { "border-style": "dashed", "line-style": "dashed", "background-opacity": 0.7 } },
+  { selector: "node.conflict", style: { "border-color": "#b42318", "border-width": 4, color: "#b42318" } },
+  { selector: "node.match", style: { "border-color": "#2f6fdb", "border-width": 4 } },
+  { selector: ":selected", style: { "overlay-color": "#2f6fdb", "overlay-opacity": 0.18, "overlay-padding": 5 } },
+  { selector: ".faded", style: { opacity: 0.15 } },
+  { selector: ".hidden", style: { display: "none" } },
+];
+
+const PREFIX = { node: "n:", topic: "t:", param: "p:", namespace: "ns:" };
+
+function namespaceOf(name) {
+  const cut = String(name).lastIndexOf("/");
+  return cut > 0 ? String(name).slice(0, cut + 1) : "/";
+}
+
+function lastSegment(name) {
+  const text = String(name).replace(/\/$/, "");
+  return text.slice(text.lastIndexOf("/") + 1) || text;
+}
+
+// Every node or param name that takes part in a conflict of the state.
+function conflictNames(conflicts) {
+  const names = new Set();
+  for (const conflict of conflicts) for (const name of conflict.names) names.add(name);
+  return names;
+}
+
+export class GraphView {
+  // onSelect(element | null) is called with the selected element's JSON (plus its kind)
+  // whenever the selection or the selected element's data changes.
+  constructor(container, onSelect) {
+    this.cy = cytoscape({ container, style: STYLE, minZoom: 0.05, maxZoom: 4, boxSelectionEnabled: false });
+    this.options = { params: false, groups: false };
+    this.signature = "";
+    this.focused = null; // element id whose neighbourhood alone is shown
+    this.needle = "";
+    this.state = null;
+    this.onSelect = onSelect;
+    this.cy.on("select unselect", () => this.notifySelection());
+  }
+
+  selectedElement() {
+    const selected = this.cy.$(":selected");
+    return selected.nonempty() ? selected[0].data("element") ?? null : null;
+  }
+
+  notifySelection() {
+    this.onSelect(this.selectedElement());
+  }
+
+  update(state) {
+    this.state = state;
+    this.render();
+  }
+
+  setOption(name, value) {
+    this.options[name] = value;
+    this.render();
+  }
+
+  // -- elements -------------------------------------------------------------------------------
+  elements(graph, conflicts) {
+    const clashing = conflictNames(conflicts);
+    const wanted = [];
+    const namespaces = new Set();
+    const group = (name) => {
+      if (!this.options.groups) return undefined;
+      const ns = namespaceOf(name);
+      if (ns === "/") return undefined;
+      namespaces.add(ns);
+      return PREFIX.namespace + ns;
+    };
+    const add = (kind, item, label, classes) => {
+      const data = { id: PREFIX[kind] + item.id, kind, label, element: { kind, ...item } };
+      const parent = group(item.name);
+      if (parent) data.parent = parent;
+      wanted.push({ group: "nodes", data, classes: [item.presence, ...classes].join(" ") });
+    };
+    const visible = (item) => item.presence !== "absent";
+    const nodeIds = new Map(); // ROS node name → element ids (variants share a name)
+    for (const node of graph.nodes.filter(visible)) {
+      const clash = clashing.has(node.name);
+      const name = this.options.groups ? lastSegment(node.name) : node.name;
+      add("node", node, clash ? `⚠ ${name}` : name, clash ? ["conflict"] : []);
+      if (!nodeIds.has(node.name)) nodeIds.set(node.name, []);
+      nodeIds.get(node.name).push(node.id);
+    }
+    const shown = new Set(graph.nodes.filter(visible).map((node) => node.id));
+    for (const topic of graph.topics.filter(visible)) {
+      add("topic", topic, this.options.groups ? lastSegment(topic.name) : topic.name, []);
+      for (const nodeId of topic.nodes.filter((id) => shown.has(id))) {
+        const undetermined = topic.presence === "undetermined" ? "undetermined" : "";
+        wanted.push({ group: "edges", classes: undetermined,
+                      data: { id: `e:${topic.id}:${nodeId}`, source: PREFIX.node + nodeId, target: PREFIX.topic + topic.id } });
+      }
+    }
+    if (this.options.params) {
+      for (const param of graph.params.filter(visible)) {
+        const clash = clashing.has(param.name);
+        const name = this.options.groups ? lastSegment(param.name) : param.name;
+        add("param", param, clash ? `⚠ ${name}` : name, clash ? ["conflict"] : []);
+        // a private param (/ns/node/x) hangs on its node
+        for (const [nodeName, ids] of nodeIds) {
+          if (!String(param.name).startsWith(`${nodeName}/`)) continue;
+          for (const nodeId of ids) {
+            wanted.push({ group: "edges", classes: param.presence === "undetermined" ? "undetermined" : "",
+                          data: { id: `e:${param.id}:${nodeId}`, source: PREFIX.node + nodeId, target: PREFIX.param + param.id } });
+          }
+        }
+      }
+    }
+    for (const ns of namespaces) {
+      // nested namespaces nest their boxes: /a/b/ inside /a/
+      const outer = namespaceOf(ns.slice(0, -1));
+      const data = { id: PREFIX.namespace + ns, kind: "namespace", label: ns,
+                     element: { kind: "namespace", name: ns } };
+      if (outer !== "/") {
+        data.parent = PREFIX.namespace + outer;
+        namespaces.add(outer); // visited later by this same loop
+      }
+      wanted.unshift({ group: "nodes", data, classes: "" });
+    }
+    return wanted;
+  }
+
+  render() {
+    if (!this.state) return;
+    const wanted = this.elements(this.state.graph, this.state.conflicts);
+    const signature = wanted.map((item) => `${item.data.id}>${item.data.parent ?? ""}`).sort().join("\n");
+    const cy = this.cy;
+    const selected = cy.$(":selected").map((element) => element.id());
+    cy.batch(() => {
+      if (signature === this.signature) {
+        for (const item of wanted) cy.getElementById(item.data.id).data(item.data).classes(item.classes);
+      } else {
+        cy.elements().remove();
+        cy.add(wanted);
+        // the same ids are the same elements: keep them selected across steps
+        for (const id of selected) cy.getElementById(id).select();
+      }
+    });
+    if (signature !== this.signature) {
+      this.signature = signature;
+      cy.layout(LAYOUT).run();
+    }
+    if (this.focused && cy.getElementById(this.focused).empty()) this.focused = null;
+    this.applyVisibility();
+    this.notifySelection();
+  }
+
+  // -- navigation -----------------------------------------------------------------------------
+  search(text) {
+    this.needle = text.trim().toLowerCase();
+    this.applyVisibility();
+  }
+
+  // Fit the view to the search matches (or everything).
+  fit() {
+    const matches = this.cy.nodes(".match");
+    this.cy.fit(matches.nonempty() ? matches : this.cy.elements(":visible"), 30);
+  }
+
+  focusSelected() {
+    const selected = this.cy.$(":selected");
+    if (selected.empty()) return false;
+    this.focused = selected[0].id();
+    this.applyVisibility();
+    this.cy.fit(this.cy.elements(":visible"), 30);
+    return true;
+  }
+
+  showAll() {
+    this.focused = null;
+    this.applyVisibility();
+    this.fit();
+  }
+
+  applyVisibility() {
+    const cy = this.cy;
+    cy.batch(() => {
+      cy.elements().removeClass("hidden faded match");
+      if (this.focused) {
+        const centre = cy.getElementById(this.focused);
+        const keep = centre.closedNeighborhood().union(centre.closedNeighborhood().ancestors());
+        cy.elements().difference(keep).addClass("hidden");
+      }
+      if (this.needle) {
+        const matches = cy.nodes().filter((node) => node.data("kind") !== "namespace"
+          && String(node.data("label")).toLowerCase().includes(this.needle));
+        matches.addClass("match");
+        cy.elements().difference(matches.union(matches.ancestors())).addClass("faded");
+      }
+    });
+  }
+
+  counts() {
+    const visible = this.cy.nodes(":visible");
+    const of = (kind) => visible.filter(`[kind = "${kind}"]`).length;
+    const undetermined = visible.filter(".undetermined").length;
+    return { nodes: of("node"), topics: of("topic"), params: of("param"), undetermined };
+  }
+}

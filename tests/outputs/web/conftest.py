@@ -1,0 +1,72 @@
+"""Fixtures of the web UI tests: live ``rosvar serve`` servers and a headless Chromium.
+
+Servers (``outputs.web.live``) run in a thread of the test process with the real engine over
+``examples/`` or a corpus system. The browser is Debian's ``/usr/bin/chromium`` driven by
+Playwright (its own browser builds are never downloaded). Without chromium or Playwright the
+browser tests skip, except under CI (``CI=true``), where ``make test`` installs both and a
+skip would hide a failure.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterator
+from typing import Any
+
+import pytest
+from outputs.web.live import REPO, Live, configurator, corpus_system, running
+
+from rosvar.configuration.engine import Configurator
+
+CHROMIUM = "/usr/bin/chromium"
+
+
+@pytest.fixture(scope="session")
+def examples_engine() -> Configurator:
+    return configurator([REPO / "examples"])
+
+
+@pytest.fixture(scope="module")
+def examples(examples_engine: Configurator) -> Iterator[Live]:
+    with running(examples_engine) as live:
+        yield live
+
+
+@pytest.fixture(scope="module")
+def lizi() -> Iterator[Live]:
+    with running(configurator([corpus_system("lizi")])) as live:
+        yield live
+
+
+# -- browser -------------------------------------------------------------------------------------
+def _unavailable(reason: str) -> None:
+    if os.environ.get("CI", "").lower() == "true":
+        pytest.fail(f"browser tests cannot run under CI: {reason}")
+    pytest.skip(reason)
+
+
+@pytest.fixture(scope="session")
+def browser() -> Iterator[Any]:
+    try:
+        from playwright.sync_api import sync_playwright
+    except ImportError:
+        _unavailable("Playwright is not installed (pip install -e '.[test]')")
+    if not os.access(CHROMIUM, os.X_OK):
+        _unavailable(f"{CHROMIUM} not found (make setup installs Debian's chromium)")
+    with sync_playwright() as playwright:
+        chromium = playwright.chromium.launch(executable_path=CHROMIUM)
+        yield chromium
+        chromium.close()
+
+
+@pytest.fixture
+def page(browser: Any) -> Iterator[Any]:
+    """A fresh browser context (own sessionStorage) whose page errors fail the test."""
+    context = browser.new_context(viewport={"width": 1400, "height": 850})
+    tab = context.new_page()
+    errors: list[str] = []
+    tab.on("pageerror", lambda error: errors.append(str(error)))
+    tab.on("console", lambda message: errors.append(message.text) if message.type == "error" else None)
+    yield tab
+    context.close()
+    assert errors == [], f"errors in the page: {errors}"

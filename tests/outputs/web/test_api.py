@@ -1,0 +1,141 @@
+"""The JSON API over plain HTTP: sessions per tab, choices, undo/redo/reset, refused requests."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from outputs.web.live import Live, running
+
+from rosvar.configuration.engine import Configurator
+from rosvar.outputs.web.api import MAX_TEXT
+
+
+def states(reply: dict[str, Any]) -> dict[str, tuple[str, bool]]:
+    return {key: (f["state"], f["derived"]) for key, f in reply["features"].items()}
+
+
+def first_of(reply: dict[str, Any], kind: str) -> str:
+    return next(key for key, f in reply["features"].items() if f["kind"] == kind)
+
+
+def test_new_session_has_the_engine_state(examples: Live, examples_engine: Configurator) -> None:
+    reply = examples.open()
+    assert isinstance(reply["session"], str) and reply["session"]
+    expected = examples_engine.state([]).to_json()
+    assert {key: reply[key] for key in expected} == expected
+    assert (reply["can_undo"], reply["can_redo"]) == (False, False)
+
+
+def test_choose_applies_a_choice(examples: Live) -> None:
+    reply = examples.open()
+    file = first_of(reply, "file")
+    after = examples.post("/api/choose", {"session": reply["session"], "action": "select", "feature": file})
+    assert after["features"][file]["state"] == "selected"
+    assert after["features"][file]["derived"] is False
+    assert after["session"] == reply["session"]
+    assert (after["can_undo"], after["can_redo"]) == (True, False)
+
+
+def test_two_sessions_never_see_each_others_choices(examples: Live) -> None:
+    one, two = examples.open(), examples.open()
+    assert one["session"] != two["session"]
+    file = first_of(one, "file")
+    examples.post("/api/choose", {"session": one["session"], "action": "deselect", "feature": file})
+    other = examples.call("GET", f"/api/state?session={two['session']}").json()
+    assert states(other) == states(two)
+    assert other["can_undo"] is False
+    mine = examples.call("GET", f"/api/state?session={one['session']}").json()
+    assert mine["features"][file]["state"] == "deselected"
+
+
+def test_undo_redo_reset(examples: Live) -> None:
+    start = examples.open()
+    key = start["session"]
+    file = first_of(start, "file")
+    chosen = examples.post("/api/choose", {"session": key, "action": "select", "feature": file})
+    undone = examples.post("/api/undo", {"session": key})
+    assert states(undone) == states(start)
+    assert (undone["can_undo"], undone["can_redo"]) == (False, True)
+    redone = examples.post("/api/redo", {"session": key})
+    assert states(redone) == states(chosen)
+    reset = examples.post("/api/reset", {"session": key})
+    assert states(reset) == states(start)
+    assert reset["can_redo"] is False
+
+
+def test_set_with_a_typed_value_selects_the_other_slot(examples: Live) -> None:
+    reply = examples.open()
+    arg = next(
+        key
+        for key, f in reply["features"].items()
+        if f["kind"] == "arg" and f"{key}=<other>" in reply["features"]
+    )
+    after = examples.post(
+        "/api/choose",
+        {"session": reply["session"], "action": "set", "feature": arg, "value": "typed by a test"},
+    )
+    assert after["features"][f"{arg}=<other>"]["state"] == "selected"
+    assert after["features"][f"{arg}=<other>"]["derived"] is False
+
+
+def test_expired_sessions_are_forgotten(examples_engine: Configurator) -> None:
+    with running(examples_engine, capacity=2) as live:
+        oldest = live.open()["session"]
+        live.open()
+        live.open()
+        reply = live.call("POST", "/api/undo", {"session": oldest})
+        assert reply.status == 404
+        assert "session" in reply.json()["error"]
+        assert live.server.api.sessions == 2
+
+
+BAD_CHOICES: dict[str, tuple[dict[str, object], int]] = {
+    "unknown action": ({"action": "explode", "feature": "FILE"}, 400),
+    "unknown feature": ({"action": "select", "feature": "no/such.launch"}, 400),
+    "feature not a string": ({"action": "select", "feature": 3}, 400),
+    "missing feature": ({"action": "select"}, 400),
+    "select with a value": ({"action": "select", "feature": "FILE", "value": "x"}, 400),
+    "set on a file": ({"action": "set", "feature": "FILE", "value": "x"}, 400),
+    "set without a value": ({"action": "set", "feature": "ARG"}, 400),
+    "too long a value": ({"action": "set", "feature": "ARG", "value": "x" * (MAX_TEXT + 1)}, 400),
+    "unknown field": ({"action": "select", "feature": "FILE", "why": "not"}, 400),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD_CHOICES))
+def test_bad_choices_are_refused(examples: Live, case: str) -> None:
+    reply = examples.open()
+    ids = {"FILE": first_of(reply, "file"), "ARG": first_of(reply, "arg")}
+    fields, status = BAD_CHOICES[case]
+    body = {"session": reply["session"], **{k: ids.get(v, v) if isinstance(v, str) else v
+                                            for k, v in fields.items()}}
+    answer = examples.call("POST", "/api/choose", body)
+    assert answer.status == status
+    assert isinstance(answer.json()["error"], str)
+    unchanged = examples.call("GET", f"/api/state?session={reply['session']}").json()
+    assert states(unchanged) == states(reply)
+    assert unchanged["can_undo"] is False
+
+
+BAD_REQUESTS: dict[str, tuple[str, str, object, int]] = {
+    "unknown session": ("POST", "/api/undo", {"session": "nope"}, 404),
+    "session missing": ("POST", "/api/undo", {}, 400),
+    "session not a string": ("POST", "/api/redo", {"session": ["x"]}, 400),
+    "state without session": ("GET", "/api/state", None, 400),
+    "state with extra query": ("GET", "/api/state?session=a&x=1", None, 400),
+    "body not an object": ("POST", "/api/session", [1, 2], 400),
+    "fields when opening": ("POST", "/api/session", {"session": "mine"}, 400),
+    "unknown API": ("POST", "/api/finish-everything", {}, 404),
+    "GET on a POST route": ("GET", "/api/choose", None, 405),
+    "POST on a GET route": ("POST", "/api/state", {}, 405),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD_REQUESTS))
+def test_bad_requests_get_4xx_and_a_message(examples: Live, case: str) -> None:
+    method, path, body, status = BAD_REQUESTS[case]
+    reply = examples.call(method, path, body)
+    assert reply.status == status
+    assert reply.headers["Content-Type"].startswith("application/json")
+    assert isinstance(reply.json()["error"], str) and reply.json()["error"]

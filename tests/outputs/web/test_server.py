@@ -1,0 +1,106 @@
+"""The HTTP layer: only the app's own files, loopback Host, JSON bodies of bounded size."""
+
+from __future__ import annotations
+
+import json
+import socket
+
+import pytest
+from outputs.web.live import Live
+
+from rosvar.outputs.web.assets import load_assets
+from rosvar.outputs.web.server import MAX_BODY, is_loopback
+
+
+def test_page_and_assets_are_served(examples: Live) -> None:
+    for url, asset in load_assets().items():
+        reply = examples.call("GET", url)
+        assert reply.status == 200, url
+        assert reply.body == asset.body
+        assert reply.headers["Content-Type"] == asset.content_type
+    page = examples.call("GET", "/")
+    assert "script-src 'self'" in page.headers["Content-Security-Policy"]
+    assert page.headers["X-Content-Type-Options"] == "nosniff"
+
+
+TRAVERSALS = [
+    "/assets/../assets.py",
+    "/assets/%2e%2e/server.py",
+    "/assets/js/../../api.py",
+    "/assets/vendor/%2E%2E%2F%2E%2E%2Fsessions.py",
+    "/static/index.html",
+    "/index.html",
+    "//etc/passwd",
+    "/assets//etc/passwd",
+    "/assets/",
+    "/assets/js",
+    "/assets/style.css?x=1",
+    "/etc/passwd",
+    "/../../../../etc/passwd",
+]
+
+
+@pytest.mark.parametrize("path", TRAVERSALS)
+def test_nothing_outside_the_app_is_served(examples: Live, path: str) -> None:
+    reply = examples.call("GET", path)
+    assert reply.status == 404
+    assert "error" in reply.json()
+    assert b"import" not in reply.body and b"root:" not in reply.body
+
+
+def test_host_header_must_name_the_loopback(examples: Live) -> None:
+    port = examples.server.server_address[1]
+    for host in ("evil.example", f"evil.example:{port}", "127.0.0.1.evil.example"):
+        reply = examples.call("GET", "/", headers={"Host": host})
+        assert reply.status == 403, host
+    for host in (f"localhost:{port}", f"127.0.0.1:{port}", "localhost"):
+        assert examples.call("GET", "/", headers={"Host": host}).status == 200, host
+
+
+def test_loopback_addresses() -> None:
+    assert all(is_loopback(h) for h in ("127.0.0.1", "127.8.0.1", "::1", "localhost"))
+    assert not any(is_loopback(h) for h in ("0.0.0.0", "192.168.1.2", "::", "example.org"))
+
+
+def test_body_must_be_json_of_bounded_size(examples: Live) -> None:
+    wrong_type = examples.call(
+        "POST", "/api/session", raw=b"{}", headers={"Content-Type": "text/plain"}
+    )
+    assert wrong_type.status == 415
+    form = examples.call(
+        "POST", "/api/session", raw=b"a=b",
+        headers={"Content-Type": "application/x-www-form-urlencoded"},
+    )  # fmt: skip
+    assert form.status == 415
+    broken = examples.call(
+        "POST", "/api/session", raw=b"{not json", headers={"Content-Type": "application/json"}
+    )
+    assert broken.status == 400
+    big = json.dumps({"session": "x" * MAX_BODY}).encode()
+    too_big = examples.call(
+        "POST", "/api/undo", raw=big, headers={"Content-Type": "application/json"}
+    )
+    assert too_big.status == 413
+    assert "error" in too_big.json()
+
+
+def test_body_needs_a_length(examples: Live) -> None:
+    host, port = examples.server.server_address[:2]
+    with socket.create_connection((str(host), port), timeout=30) as connection:
+        connection.sendall(
+            b"POST /api/session HTTP/1.1\r\nHost: 127.0.0.1\r\n"
+            b"Content-Type: application/json\r\nConnection: close\r\n\r\n"
+        )
+        answer = b""
+        while chunk := connection.recv(65536):
+            answer += chunk
+    status_line, _, rest = answer.partition(b"\r\n")
+    assert status_line.split()[1] == b"411"
+    assert "error" in json.loads(rest.partition(b"\r\n\r\n")[2])
+
+
+@pytest.mark.parametrize("method", ["PUT", "DELETE", "PATCH", "OPTIONS"])
+def test_other_methods_are_not_allowed(examples: Live, method: str) -> None:
+    reply = examples.call(method, "/api/session", raw=b"")
+    assert reply.status == 405
+    assert "error" in reply.json()

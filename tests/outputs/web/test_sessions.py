@@ -1,0 +1,25 @@
+"""The session store: fresh ids, least recently used sessions forgotten beyond the capacity."""
+
+from __future__ import annotations
+
+import pytest
+
+from rosvar.configuration.engine import Configurator
+from rosvar.outputs.web.sessions import SessionStore
+
+
+def test_least_recently_used_session_is_forgotten(examples_engine: Configurator) -> None:
+    store = SessionStore(examples_engine, capacity=2)
+    first, _ = store.create()
+    second, _ = store.create()
+    assert first != second
+    assert store.get(first) is not None  # first is now the most recently used
+    third, _ = store.create()
+    assert store.get(second) is None
+    assert store.get(first) is not None and store.get(third) is not None
+    assert len(store) == 2
+
+
+def test_capacity_must_hold_a_session(examples_engine: Configurator) -> None:
+    with pytest.raises(ValueError):
+        SessionStore(examples_engine, capacity=0)
