@@ -7,13 +7,17 @@ Exit codes (``rosvar.outputs.cli``): 0 success, 1 the configuration fails (error
 from __future__ import annotations
 
 import json
+import os
+import signal
 import subprocess
 import sys
+import urllib.request
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import pytest
 
+import rosvar
 from rosvar.outputs.cli import EXIT_FAILS, EXIT_INPUT, EXIT_OK, EXIT_USAGE, main
 
 if TYPE_CHECKING:
@@ -287,3 +291,38 @@ def test_usage_errors(robot: str, capsys: pytest.CaptureFixture[str]) -> None:
 def test_nothing_to_configure(tmp_path: object, capsys: pytest.CaptureFixture[str]) -> None:
     code = main(["configure", str(tmp_path)])
     assert code == EXIT_INPUT
+
+
+# -- serve --------------------------------------------------------------------------------------
+def test_serve_prints_its_url_answers_and_stops_on_ctrl_c(robot: str) -> None:
+    source = str(Path(rosvar.__file__).resolve().parents[1])  # these sources, from any cwd
+    server = subprocess.Popen(
+        [sys.executable, "-m", "rosvar", "serve", ".", "--port", "0"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env={**os.environ, "PYTHONPATH": source},
+    )
+    try:
+        assert server.stdout is not None
+        line = server.stdout.readline()  # printed once the model is loaded
+        assert line.startswith("rosvar: serving http://127.0.0.1:"), line
+        url = line.split()[2]
+        request = urllib.request.Request(
+            f"{url}api/session", b"{}", {"Content-Type": "application/json"}
+        )
+        with urllib.request.urlopen(request, timeout=60) as reply:
+            state = json.load(reply)
+        assert robot in state["features"] and state["session"]
+    finally:
+        server.send_signal(signal.SIGINT)
+        _out, err = server.communicate(timeout=60)
+    assert server.returncode == EXIT_OK
+    assert "analysing 2 launch files" in err
+
+
+def test_serve_usage_errors(robot: str, capsys: pytest.CaptureFixture[str]) -> None:
+    code, _out, err = run(capsys, "serve", ".", "--env", "NOVALUE")
+    assert code == EXIT_USAGE and "NAME=VALUE" in err
+    code, _out, err = run(capsys, "serve", ".", "--host", "203.0.113.1", "--port", "0")
+    assert code == EXIT_USAGE and "cannot listen" in err

@@ -8,6 +8,7 @@ conflicts, ``resolve``) or a choice was refused (``configure``); 2 usage error;
 from __future__ import annotations
 
 import argparse
+import contextlib
 import gc
 import json
 import os
@@ -273,11 +274,8 @@ def cmd_serve(options: argparse.Namespace) -> int:
         return EXIT_USAGE
     print(f"rosvar: ready in {time.perf_counter() - started:.1f} s", file=sys.stderr)
     print(f"rosvar: serving {server.url} (Ctrl-C stops)", flush=True)
-    with server:
-        try:
-            server.serve_forever()
-        except KeyboardInterrupt:
-            pass
+    with server, contextlib.suppress(KeyboardInterrupt):  # Ctrl-C is how it stops
+        server.serve_forever()
     return EXIT_OK
 
 

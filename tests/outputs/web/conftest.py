@@ -14,8 +14,8 @@ from collections.abc import Iterator
 from typing import Any
 
 import pytest
-from outputs.web.live import REPO, Live, configurator, corpus_system, running
 
+from outputs.web.live import REPO, Live, configurator, corpus_system, running
 from rosvar.configuration.engine import Configurator
 
 CHROMIUM = "/usr/bin/chromium"
@@ -66,7 +66,9 @@ def page(browser: Any) -> Iterator[Any]:
     tab = context.new_page()
     errors: list[str] = []
     tab.on("pageerror", lambda error: errors.append(str(error)))
-    tab.on("console", lambda message: errors.append(message.text) if message.type == "error" else None)
+    tab.on(
+        "console", lambda message: errors.append(message.text) if message.type == "error" else None
+    )
     yield tab
     context.close()
     assert errors == [], f"errors in the page: {errors}"

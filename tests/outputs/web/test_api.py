@@ -5,8 +5,8 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
-from outputs.web.live import Live, running
 
+from outputs.web.live import Live, running
 from rosvar.configuration.engine import Configurator
 from rosvar.outputs.web.api import MAX_TEXT
 
@@ -30,7 +30,9 @@ def test_new_session_has_the_engine_state(examples: Live, examples_engine: Confi
 def test_choose_applies_a_choice(examples: Live) -> None:
     reply = examples.open()
     file = first_of(reply, "file")
-    after = examples.post("/api/choose", {"session": reply["session"], "action": "select", "feature": file})
+    after = examples.post(
+        "/api/choose", {"session": reply["session"], "action": "select", "feature": file}
+    )
     assert after["features"][file]["state"] == "selected"
     assert after["features"][file]["derived"] is False
     assert after["session"] == reply["session"]
@@ -108,8 +110,10 @@ def test_bad_choices_are_refused(examples: Live, case: str) -> None:
     reply = examples.open()
     ids = {"FILE": first_of(reply, "file"), "ARG": first_of(reply, "arg")}
     fields, status = BAD_CHOICES[case]
-    body = {"session": reply["session"], **{k: ids.get(v, v) if isinstance(v, str) else v
-                                            for k, v in fields.items()}}
+    body = {
+        "session": reply["session"],
+        **{k: ids.get(v, v) if isinstance(v, str) else v for k, v in fields.items()},
+    }
     answer = examples.call("POST", "/api/choose", body)
     assert answer.status == status
     assert isinstance(answer.json()["error"], str)

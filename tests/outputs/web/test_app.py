@@ -33,6 +33,12 @@ class App:
         return state
 
     @property
+    def features(self) -> dict[str, Any]:
+        """The features of the shown state (cheaper to fetch than the whole state)."""
+        features: dict[str, Any] = self.page.evaluate("window.rosvar.state.features")
+        return features
+
+    @property
     def session(self) -> str:
         return str(self.page.evaluate("sessionStorage.getItem('rosvar.session')"))
 
@@ -84,7 +90,7 @@ class App:
 
     def reveal(self, feature: str) -> None:
         """Unfold the rows above ``feature`` by clicking their names."""
-        features = self.state["features"]
+        features = self.features
         chain = []
         parent = features[feature]["parent"]
         while parent is not None:
@@ -105,14 +111,14 @@ class App:
         field.fill(text)
         self.wait_for_update(lambda: field.press("Enter"))
 
-    def finish(self) -> None:
-        """Decide every feature left: files off, args at a known value (first one offered)."""
+    def decide_the_rest(self) -> None:
+        """Click until no feature is left: files off, args at a known value (first offered)."""
         for _ in range(MAX_STEPS):
-            state = self.state
-            if state["complete"]:
+            features = self.features
+            left = [k for k, f in features.items() if f["state"] == "unselected"]
+            if not left:
                 return
-            features = state["features"]
-            feature = next(k for k, f in features.items() if f["state"] == "unselected")
+            feature = left[0]
             kind = features[feature]["kind"]
             if kind == "file":
                 self.choose(feature, "deselect")
@@ -125,7 +131,7 @@ class App:
                 self.choose(known[0], "select")
             else:
                 self.type_other(arg, "typed-by-test")
-            if self.state["refused"]:
+            if self.page.evaluate("window.rosvar.state.refused.length"):
                 self.choose(known[0] if known else f"{arg}={OTHER}", "deselect")
         raise AssertionError(f"not complete after {MAX_STEPS} steps")
 
@@ -136,11 +142,25 @@ class App:
         assert self.state["features"] == server["features"]
         expected = {k: MARKS[f["state"]][f["derived"]] for k, f in server["features"].items()}
         assert self.marks() == expected
-        present = [e for e in server["graph"]["nodes"] if e["presence"] != "absent"]
-        assert len(self.graph_labels()) == len(present) + len(
-            [t for t in server["graph"]["topics"] if t["presence"] != "absent"]
+        drawn = [e for kind in ("nodes", "tests", "topics") for e in server["graph"].get(kind, [])]
+        shown = self.page.evaluate(
+            """() => window.rosvar.graph.cy.nodes(':visible')
+                 .filter((n) => n.data('kind') !== 'namespace')
+                 .map((n) => [n.data('element').id, n.hasClass('undetermined')])"""
+        )
+        assert sorted(map(tuple, shown)) == sorted(
+            (e["id"], e["presence"] == "undetermined") for e in drawn if e["presence"] != "absent"
         )
         assert self.warned_files() == {f for c in server["conflicts"] for f in c["files"]}
+        clashing = {name for c in server["conflicts"] for name in c["names"]}
+        marked = self.page.evaluate(
+            "() => window.rosvar.graph.cy.nodes('.conflict').map((n) => n.data('element').id)"
+        )
+        assert sorted(marked) == sorted(
+            e["id"]
+            for e in [*server["graph"]["nodes"], *server["graph"].get("tests", [])]
+            if e["presence"] != "absent" and f"node {e['name']}" in clashing
+        )
         command = self.page.locator("#command").inner_text()
         if server["complete"]:
             assert command == server["command"]
@@ -148,11 +168,15 @@ class App:
         return server
 
 
+def present_nodes(state: dict[str, Any]) -> int:
+    return sum(1 for node in state["graph"]["nodes"] if node["presence"] == "present")
+
+
 def file_named(state: dict[str, Any], name: str) -> str:
     return next(k for k, f in state["features"].items() if f["kind"] == "file" and k.endswith(name))
 
 
-# -- the bundled example ---------------------------------------------------------------------------
+# -- the bundled example ------------------------------------------------------------------------
 def test_page_shows_the_workspace(page: Any, examples: Live) -> None:
     app = App(page, examples)
     server = app.assert_shows_server_state()
@@ -252,7 +276,7 @@ def test_complete_product_gives_the_command(page: Any, examples: Live) -> None:
     robot = file_named(app.state, "robot.launch")
     app.choose(robot, "select")
     app.choose(f"{robot}:model=husky", "select")
-    app.finish()
+    app.decide_the_rest()
     server = app.assert_shows_server_state()
     assert server["complete"] and server["unselected"] == 0
     command = page.locator("#command").inner_text()
@@ -282,18 +306,30 @@ def test_tabs_keep_their_own_sessions(page: Any, examples: Live) -> None:
     assert first.session == session and first.marks()[robot] == "✓"
 
 
-# -- Lizi --------------------------------------------------------------------------------------------
+# -- Lizi ------------------------------------------------------------------------------------------
 def test_lizi_configured_to_a_complete_product(page: Any, lizi: Live) -> None:
     app = App(page, lizi)
     start = app.assert_shows_server_state()
-    files = [k for k, f in start["features"].items() if f["kind"] == "file"]
-    with_args = next(k for k in files if any(f["parent"] == k for f in start["features"].values()))
-    app.choose(with_args, "select")
+    robot = file_named(start, "lizi/launch/lizi.launch")
+    joints = file_named(start, "joints_test.launch")
+    assert {robot, joints} <= app.warned_files()  # both declare /robot_state_publisher
+    app.choose(robot, "select")
     chosen = app.assert_shows_server_state()
-    assert chosen["configurations"] != start["configurations"]
-    app.finish()
+    assert present_nodes(chosen) > present_nodes(start)  # the selected file's own nodes
+    app.choose(joints, "deselect")
+    app.assert_shows_server_state()
+    assert robot not in app.warned_files() and app.marks()[joints] == "✗"
+    app.choose(f"{robot}:gazebo=true", "select")
+    app.type_other(f"{robot}:x", "1.5")
+    typed = app.assert_shows_server_state()
+    assert app.marks()[f"{robot}:x={OTHER}"] == "✓"
+    app.wait_for_update(lambda: page.click("#undo"))
+    assert app.marks()[f"{robot}:x={OTHER}"] == "·"
+    app.wait_for_update(lambda: page.click("#redo"))
+    assert app.assert_shows_server_state()["features"] == typed["features"]
+    app.wait_for_update(lambda: page.click("#finish"))
     server = app.assert_shows_server_state()
     assert server["complete"]
     command = page.locator("#command").inner_text()
-    assert command.startswith("roslaunch ")
-    assert with_args.rsplit("/", 1)[-1] in command
+    assert command.startswith("roslaunch ") and "lizi.launch" in command
+    assert "gazebo:=true" in command and "x:=1.5" in command  # given, not defaults

@@ -6,8 +6,8 @@ import json
 import socket
 
 import pytest
-from outputs.web.live import Live
 
+from outputs.web.live import Live
 from rosvar.outputs.web.assets import load_assets
 from rosvar.outputs.web.server import MAX_BODY, is_loopback
 

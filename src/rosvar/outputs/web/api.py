@@ -13,11 +13,11 @@ import threading
 from collections.abc import Callable, Mapping
 from http import HTTPStatus
 
-from rosvar.configuration.engine import ConfigurationState, Configurator, UserChoice
+from rosvar.configuration.choices import ACTIONS, ChoiceError, UserChoice
+from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.session import Session
 from rosvar.outputs.web.sessions import DEFAULT_CAPACITY, SessionStore
 
-ACTIONS = ("select", "deselect", "unselect", "set")
 MAX_TEXT = 4096
 """Longest accepted string field (feature ids and typed values are far shorter)."""
 
@@ -54,6 +54,7 @@ class Api:
     """Sessions of one :class:`Configurator`, reached through the route table."""
 
     def __init__(self, configurator: Configurator, capacity: int = DEFAULT_CAPACITY) -> None:
+        self._configurator = configurator
         self._store = SessionStore(configurator, capacity)
         self._lock = threading.Lock()
         features = configurator.state([]).to_json()["features"]
@@ -68,6 +69,7 @@ class Api:
             ("POST", "/api/session"): self._open,
             ("GET", "/api/state"): self._state,
             ("POST", "/api/choose"): self._choose,
+            ("POST", "/api/finish"): self._finish,
             **{("POST", f"/api/{name}"): self._stepper(step) for name, step in steps.items()},
         }
 
@@ -101,9 +103,25 @@ class Api:
         _only(body, {"session", "action", "feature", "value"})
         key, session = self._session(body)
         choice = self._choice(body)
-        return self._reply(key, session, session.apply(choice))
+        try:
+            state = session.apply(choice)
+        except ChoiceError as error:  # well-formed but meaningless to the engine
+            raise ApiError(HTTPStatus.BAD_REQUEST, str(error)) from None
+        return self._reply(key, session, state)
 
-    def _stepper(self, step: Callable[[Session], ConfigurationState]) -> Callable[[Query, Body], Reply]:
+    def _finish(self, query: Query, body: Body) -> Reply:
+        """Every feature left at its default, as ordinary choices (undone one at a time)."""
+        _only(query, set())
+        _only(body, {"session"})
+        key, session = self._session(body)
+        state = session.current()
+        for choice in self._configurator.completion(state.choices):
+            state = session.apply(choice)
+        return self._reply(key, session, state)
+
+    def _stepper(
+        self, step: Callable[[Session], ConfigurationState]
+    ) -> Callable[[Query, Body], Reply]:
         def route(query: Query, body: Body) -> Reply:
             _only(query, set())
             _only(body, {"session"})

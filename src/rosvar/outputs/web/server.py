@@ -53,14 +53,14 @@ class WebServer(ThreadingHTTPServer):
     def __init__(self, api: Api, host: str, port: int) -> None:
         self.api = api
         self.assets: dict[str, Asset] = load_assets()
+        self.host = host
         self.loopback = is_loopback(host)
         super().__init__((host, port), _Handler)
 
     @property
     def url(self) -> str:
-        host, port = self.server_address[:2]
-        shown = f"[{host}]" if ":" in str(host) else str(host)
-        return f"http://{shown}:{port}/"
+        shown = f"[{self.host}]" if ":" in self.host else self.host
+        return f"http://{shown}:{self.server_address[1]}/"
 
     def allows_host(self, header: str | None) -> bool:
         """On loopback, only requests addressed to a loopback name (no DNS rebinding)."""
@@ -100,7 +100,7 @@ class _Handler(BaseHTTPRequestHandler):
 
     do_PUT = do_DELETE = do_PATCH = do_OPTIONS = do_HEAD = _refuse_method
 
-    def log_message(self, format: str, *args: Any) -> None:  # noqa: A002 - base signature
+    def log_message(self, format: str, *args: Any) -> None:
         """Quiet: the terminal shows the URL, not one line per click."""
 
     # -- dispatch ----------------------------------------------------------------------------
@@ -112,7 +112,9 @@ class _Handler(BaseHTTPRequestHandler):
             if url.path.startswith(API_PREFIX):
                 body = self._body() if method == "POST" else {}
                 query = self._query(url.query)
-                self._send_json(HTTPStatus.OK, self.server.api.handle(method, url.path, query, body))
+                self._send_json(
+                    HTTPStatus.OK, self.server.api.handle(method, url.path, query, body)
+                )
             elif method == "GET" and not url.query and url.path in self.server.assets:
                 self._send_asset(self.server.assets[url.path])
             else:

@@ -89,6 +89,7 @@ export class Client {
   undo() { return this.post("/api/undo", {}); }
   redo() { return this.post("/api/redo", {}); }
   reset() { return this.post("/api/reset", {}); }
+  finish() { return this.post("/api/finish", {}); }
 
   async post(path, fields) {
     return this.adopt(await request("POST", path, { session: this.session, ...fields }));

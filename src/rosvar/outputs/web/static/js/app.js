@@ -17,10 +17,15 @@ let queue = Promise.resolve();
 const bar = new Bar(
   {
     featuresLeft: $("features-left"), configurations: $("configurations"), completeness: $("completeness"),
-    undo: $("undo"), redo: $("redo"), reset: $("reset"), message: $("message"),
-    command: $("command"), copy: $("copy"),
+    undo: $("undo"), redo: $("redo"), reset: $("reset"), finish: $("finish"),
+    message: $("message"), command: $("command"), copy: $("copy"),
   },
-  { undo: () => act(() => client.undo()), redo: () => act(() => client.redo()), reset: () => act(() => client.reset()) },
+  {
+    undo: () => act(() => client.undo()),
+    redo: () => act(() => client.redo()),
+    reset: () => act(() => client.reset()),
+    finish: () => act(() => client.finish()),
+  },
 );
 const tree = new FeatureTree($("tree"), $("conflict-popup"), (action, feature, value) => {
   act(() => client.choose(action, feature, value));

@@ -1,4 +1,4 @@
-// The bar: counts, undo/redo/reset, messages, and the command with its copy button.
+// The bar: counts, undo/redo/reset/finish, messages, and the command with its copy button.
 
 function formatCount(value) {
   // the server sends counts above 2**53 as decimal strings
@@ -11,6 +11,7 @@ export class Bar {
     elements.undo.addEventListener("click", handlers.undo);
     elements.redo.addEventListener("click", handlers.redo);
     elements.reset.addEventListener("click", handlers.reset);
+    elements.finish.addEventListener("click", handlers.finish);
     elements.copy.addEventListener("click", () => this.copy());
   }
 
@@ -22,6 +23,7 @@ export class Bar {
     e.completeness.classList.toggle("complete", state.complete);
     e.undo.disabled = !state.can_undo;
     e.redo.disabled = !state.can_redo;
+    e.finish.disabled = state.complete;
     const command = state.complete && state.command !== null;
     e.command.classList.toggle("pending", !command);
     e.command.textContent = command ? state.command
@@ -29,9 +31,13 @@ export class Bar {
     e.copy.disabled = !command;
     e.copy.textContent = "Copy";
     const refused = state.refused ?? [];
+    const stops = (state.graph.errors ?? []).filter((error) => error.presence === "present");
     if (refused.length) {
       const last = refused[refused.length - 1];
       this.say(`Refused ${last.choice.action} ${last.choice.feature}: ${last.reason}`, true);
+    } else if (stops.length) {
+      const first = stops[0];
+      this.say(`roslaunch would stop: ${first.message} (${first.file}:${first.line})`, true);
     }
   }
 

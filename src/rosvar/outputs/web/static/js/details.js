@@ -1,5 +1,7 @@
 // The details of one graph element: its attributes, presence, condition and file:line.
 
+import { clashName } from "./graph.js";
+
 const SHOWN_APART = new Set(["id", "kind", "name", "presence", "condition", "filename", "line", "col", "nodes"]);
 
 function cell(value) {
@@ -45,7 +47,8 @@ export class DetailsPanel {
     for (const [key, value] of Object.entries(element)) {
       if (!SHOWN_APART.has(key)) table.append(row(key, cell(value)));
     }
-    const clashes = state.conflicts.filter((conflict) => conflict.names.includes(element.name));
+    const name = clashName(element.kind, element.name);
+    const clashes = state.conflicts.filter((conflict) => conflict.names.includes(name));
     for (const conflict of clashes) {
       table.append(row(`⚠ ${conflict.status} conflict`,
         `${conflict.files.join(" and ")}${conflict.condition ? ` when ${conflict.condition}` : ""}`));

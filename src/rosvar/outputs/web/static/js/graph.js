@@ -1,5 +1,5 @@
-// The computation graph: ROS nodes, the topics they are wired to and (on request) params,
-// drawn with Cytoscape.js and a layered (dagre) layout.
+// The computation graph: ROS nodes (and test nodes), the topics they are wired to and (on
+// request) params, drawn with Cytoscape.js and a layered (dagre) layout.
 //
 // Graph ids are stable across steps, so a new state that keeps the same elements only
 // restyles them (present/undetermined, conflicts); the layout runs again only when elements
@@ -16,6 +16,7 @@ const STYLE = [
     "border-width": 1.5, "border-color": "#333",
   } },
   { selector: 'node[kind = "node"]', style: { shape: "ellipse", "background-color": "#fff", width: 28, height: 28 } },
+  { selector: 'node[kind = "test"]', style: { shape: "ellipse", "background-color": "#fff", "border-style": "double", "border-width": 4, width: 28, height: 28 } },
   { selector: 'node[kind = "topic"]', style: { shape: "round-rectangle", "background-color": "#8ecae6", width: 24, height: 14 } },
   { selector: 'node[kind = "param"]', style: { shape: "tag", "background-color": "#ffd166", width: 18, height: 12 } },
   { selector: 'node[kind = "namespace"]', style: {
@@ -32,7 +33,7 @@ const STYLE = [
   { selector: ".hidden", style: { display: "none" } },
 ];
 
-const PREFIX = { node: "n:", topic: "t:", param: "p:", namespace: "ns:" };
+const PREFIX = { node: "n:", test: "n:", topic: "t:", param: "p:", namespace: "ns:" };
 
 function namespaceOf(name) {
   const cut = String(name).lastIndexOf("/");
@@ -44,11 +45,16 @@ function lastSegment(name) {
   return text.slice(text.lastIndexOf("/") + 1) || text;
 }
 
-// Every node or param name that takes part in a conflict of the state.
+// Every "kind name" (e.g. "node /controller") that takes part in a conflict of the state.
 function conflictNames(conflicts) {
   const names = new Set();
   for (const conflict of conflicts) for (const name of conflict.names) names.add(name);
   return names;
+}
+
+// How a conflict names an element: its kind ("test" nodes clash as nodes) and ROS name.
+export function clashName(kind, name) {
+  return `${kind === "test" ? "node" : kind} ${name}`;
 }
 
 export class GraphView {
@@ -104,14 +110,16 @@ export class GraphView {
     };
     const visible = (item) => item.presence !== "absent";
     const nodeIds = new Map(); // ROS node name → element ids (variants share a name)
-    for (const node of graph.nodes.filter(visible)) {
-      const clash = clashing.has(node.name);
+    const shown = new Set();
+    const nodes = [["node", graph.nodes], ["test", graph.tests ?? []]];
+    for (const [kind, node] of nodes.flatMap(([k, list]) => list.filter(visible).map((n) => [k, n]))) {
+      const clash = clashing.has(clashName(kind, node.name));
       const name = this.options.groups ? lastSegment(node.name) : node.name;
-      add("node", node, clash ? `⚠ ${name}` : name, clash ? ["conflict"] : []);
+      add(kind, node, clash ? `⚠ ${name}` : name, clash ? ["conflict"] : []);
       if (!nodeIds.has(node.name)) nodeIds.set(node.name, []);
       nodeIds.get(node.name).push(node.id);
+      shown.add(node.id);
     }
-    const shown = new Set(graph.nodes.filter(visible).map((node) => node.id));
     for (const topic of graph.topics.filter(visible)) {
       add("topic", topic, this.options.groups ? lastSegment(topic.name) : topic.name, []);
       for (const nodeId of topic.nodes.filter((id) => shown.has(id))) {
@@ -122,7 +130,7 @@ export class GraphView {
     }
     if (this.options.params) {
       for (const param of graph.params.filter(visible)) {
-        const clash = clashing.has(param.name);
+        const clash = clashing.has(clashName("param", param.name));
         const name = this.options.groups ? lastSegment(param.name) : param.name;
         add("param", param, clash ? `⚠ ${name}` : name, clash ? ["conflict"] : []);
         // a private param (/ns/node/x) hangs on its node

@@ -12,6 +12,11 @@ const MARKS = {
   unselected: ["·", "·"],
 };
 
+// A value feature naming a literal value (not <other>, not <default: TEXT>).
+function isLiteral(feature) {
+  return feature.kind === "value" && !feature.value.startsWith("<");
+}
+
 function element(tag, attributes = {}, ...children) {
   const node = document.createElement(tag);
   for (const [name, value] of Object.entries(attributes)) {
@@ -163,7 +168,11 @@ export class FeatureTree {
       const id = button.closest(".feature").dataset.id;
       const feature = this.state.features[id];
       const mine = !feature.derived && feature.state === `${button.dataset.action}ed`;
-      this.onChoose(mine ? "unselect" : button.dataset.action, id);
+      if (mine) this.onChoose("unselect", id);
+      else if (button.dataset.action === "select" && isLiteral(feature)) {
+        // "set" replaces the arg's earlier value, as a radio button would
+        this.onChoose("set", feature.parent, feature.value);
+      } else this.onChoose(button.dataset.action, id);
     }
   }
 
@@ -202,13 +211,16 @@ export class FeatureTree {
     }
   }
 
-  // The text of an accepted "set" that went to an <other> slot, shown in its input.
+  // The text of an accepted "set" that went to an <other> slot, shown in its input; an
+  // <other> slot selected without a text yet asks for one.
   showTyped(state) {
     const typed = new Map();
     for (const choice of state.choices ?? []) {
       if (choice.action === "set") typed.set(choice.feature, choice.value);
     }
+    const untyped = new Set(state.untyped ?? []);
     for (const [argId, input] of this.others) {
+      input.classList.toggle("needs-text", untyped.has(argId));
       if (document.activeElement === input) continue;
       const text = typed.get(argId);
       const other = state.features[`${argId}=${OTHER}`];
