@@ -81,6 +81,19 @@ def test_set_with_a_typed_value_selects_the_other_slot(examples: Live) -> None:
     assert after["features"][f"{arg}=<other>"]["derived"] is False
 
 
+def test_finish_completes_with_choices_undone_one_by_one(examples: Live) -> None:
+    reply = examples.open()
+    key = reply["session"]
+    file = first_of(reply, "file")
+    examples.post("/api/choose", {"session": key, "action": "select", "feature": file})
+    done = examples.post("/api/finish", {"session": key})
+    assert done["complete"] and done["unselected"] == 0 and done["command"]
+    assert len(done["choices"]) > 1 and done["choices"][0]["feature"] == file
+    back = examples.post("/api/undo", {"session": key})
+    assert back["choices"] == done["choices"][:-1]
+    assert back["can_redo"] is True
+
+
 def test_expired_sessions_are_forgotten(examples_engine: Configurator) -> None:
     with running(examples_engine, capacity=2) as live:
         oldest = live.open()["session"]
