@@ -15,6 +15,7 @@ from outputs.web.live import Live
 MARKS = {"selected": ("✓", "(✓)"), "deselected": ("✗", "(✗)"), "unselected": ("·", "·")}
 OTHER = "<other>"
 MAX_STEPS = 400
+FINISH_TIMEOUT_S = 180  # a few dozen engine steps; the machine running the tests may be busy
 
 
 class App:
@@ -83,10 +84,10 @@ class App:
         return self.row(feature).locator(":scope > summary, :scope > .row").first
 
     # -- acting --------------------------------------------------------------------------------
-    def wait_for_update(self, act: Any) -> None:
+    def wait_for_update(self, act: Any, timeout_s: float = 30) -> None:
         before = self.page.locator("body").get_attribute("data-step")
         act()
-        self.page.wait_for_selector(f'body:not([data-step="{before}"])')
+        self.page.wait_for_selector(f'body:not([data-step="{before}"])', timeout=timeout_s * 1000)
 
     def reveal(self, feature: str) -> None:
         """Unfold the rows above ``feature`` by clicking their names."""
@@ -327,7 +328,7 @@ def test_lizi_configured_to_a_complete_product(page: Any, lizi: Live) -> None:
     assert app.marks()[f"{robot}:x={OTHER}"] == "·"
     app.wait_for_update(lambda: page.click("#redo"))
     assert app.assert_shows_server_state()["features"] == typed["features"]
-    app.wait_for_update(lambda: page.click("#finish"))
+    app.wait_for_update(lambda: page.click("#finish"), FINISH_TIMEOUT_S)
     server = app.assert_shows_server_state()
     assert server["complete"]
     command = page.locator("#command").inner_text()
