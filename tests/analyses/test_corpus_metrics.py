@@ -1,9 +1,7 @@
 """Metrics on the four corpus systems (``shared/corpus``; skipped where it is absent).
 
 A is checked against ``shared/corpus/MANIFEST.md`` (harosvar's counting rule, reproduced there);
-LF is the number of launch files of the system folder. Husky's feature model takes about a
-minute to build (the final conjunction in ``features._formula``), so its extract-based checks run
-only with ``ROSVAR_SLOW_TESTS=1``; its A is checked without the feature model.
+LF is the number of launch files of the system folder.
 """
 
 from __future__ import annotations
@@ -29,7 +27,6 @@ MANIFEST = {
     "lizi": (14, 66),
     "husky": (137, 391),
 }
-SLOW = os.environ.get("ROSVAR_SLOW_TESTS") == "1"
 KEYS = ["LF", "LV", "LC", "LC_U", "LC_A", "A", "ACG", "AS", "AS_D", "AS_V", "IF", "IF_M"]
 
 
@@ -52,8 +49,6 @@ _CACHE: dict[str, Result] = {}
 
 
 def result(system: str) -> Result:
-    if system == "husky" and not SLOW:
-        pytest.skip("husky's feature model takes ~55 s (set ROSVAR_SLOW_TESTS=1 to run it)")
     if system not in _CACHE:
         directory = system_dir(system)
         analysis = Analysis(discover([directory], ros_package_path=""))
