@@ -1,6 +1,7 @@
 # rosvar: set-up and everyday jobs.
 #
-#   make demo    set everything up, then analyse the bundled example workspace (examples/)
+#   make demo    set everything up, analyse the bundled example workspace (examples/) and
+#                serve the web UI on it (Ctrl-C stops; DEMO_PATHS and DEMO_PORT override)
 #   make test    set everything up, then run ruff, mypy and the whole pytest suite
 #   make bench   set everything up, then run the benchmarks
 #   make setup   only the set-up (idempotent; quick when already done)
@@ -57,10 +58,13 @@ $(STAMP): pyproject.toml | $(VPY)
 	$(VENV)/bin/pip install -q -e '.[test]'
 	touch $@
 
+# The web UI on the example, plus the Lizi corpus system when ../shared/corpus is there.
+DEMO_PATHS ?= examples $(wildcard ../shared/corpus/lizi)
+DEMO_PORT  ?= 8080
+
 demo: setup
 	$(VENV)/bin/rosvar analyze examples
-	$(VENV)/bin/rosvar features examples
-	$(VENV)/bin/rosvar resolve examples --launch examples/example/launch/robot.launch use_teleop:=true
+	$(VENV)/bin/rosvar serve $(DEMO_PATHS) --port $(DEMO_PORT)
 
 test: setup
 	$(VPY) -m ruff check src tests bench
