@@ -665,35 +665,36 @@ def possible_values(solver: Solver, formula: BDD | None = None) -> dict[str, set
     possible: dict[str, set[bool]] = {name: set() for name in names}
     free = [0] * (depth + 1)  # difference array over levels skipped by some edge
     root = solver.formula if formula is None else formula
-    if root == manager.false:
+    true, false = manager.true, manager.false  # each access builds a new wrapper: hoisted
+    if root == false:
         return possible
-
-    def level(u: BDD) -> int:
-        return depth if u in (manager.true, manager.false) else int(u.level)
 
     def skip(start: int, stop: int) -> None:
         if start < stop:
             free[start] += 1
             free[stop] -= 1
 
-    skip(0, level(root))
+    skip(0, depth if root == true else root.level)
     seen: set[BDD] = set()
     stack = [root]
     while stack:
         u = stack.pop()
-        if u in seen or u == manager.true:
+        if u in seen or u == true:
             continue
         seen.add(u)
-        low, high = u.low, u.high
-        if u.negated:
-            low, high = ~low, ~high
-        here = int(u.level)
-        for value, child in ((False, low), (True, high)):
-            if child == manager.false:
+        negated, here = u.negated, u.level
+        taken = possible[names[here]]
+        for value, child in ((False, u.low), (True, u.high)):
+            if negated:
+                child = ~child
+            if child == false:
                 continue
-            possible[names[here]].add(value)
-            skip(here + 1, level(child))
-            stack.append(child)
+            taken.add(value)
+            if child == true:
+                skip(here + 1, depth)
+            else:
+                skip(here + 1, child.level)
+                stack.append(child)
     running = 0
     for position, name in enumerate(names):
         running += free[position]
