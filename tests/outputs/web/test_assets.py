@@ -5,6 +5,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import pytest
+
 from rosvar.outputs.web.assets import ASSET_PREFIX, STATIC, load_assets
 
 
@@ -40,3 +42,14 @@ def test_only_known_kinds_of_file_are_served(tmp_path: Path) -> None:
     table = load_assets(tmp_path)
     assert sorted(table) == ["/", "/assets/app.js", "/assets/sub/deep.css"]
     assert table["/"].content_type.startswith("text/html")
+
+
+def test_package_data_ships_every_asset() -> None:
+    """An installed rosvar serves the same app: pyproject's package-data covers static/."""
+    tomllib = pytest.importorskip("tomllib")
+    pyproject = tomllib.loads((STATIC.parents[4] / "pyproject.toml").read_text())
+    patterns = pyproject["tool"]["setuptools"]["package-data"]["rosvar.outputs.web"]
+    package = STATIC.parent
+    shipped = {p for pattern in patterns for p in package.glob(pattern) if p.is_file()}
+    served = {STATIC / url.removeprefix(ASSET_PREFIX) for url in load_assets() if url != "/"}
+    assert served | {STATIC / "index.html"} <= shipped
