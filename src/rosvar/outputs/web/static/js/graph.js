@@ -7,7 +7,12 @@
 
 cytoscape.use(cytoscapeDagre);
 
-const LAYOUT = { name: "dagre", rankDir: "LR", nodeSep: 14, rankSep: 70, padding: 20, animate: false };
+// Connected elements get the layered layout; launch files declare few topics, so most nodes
+// have no edge and would stack in one rank: they go to a grid under the layered part instead.
+// Namespace boxes are packed by Cytoscape's force-directed layout (it handles compounds).
+const LAYERED = { name: "dagre", rankDir: "LR", nodeSep: 14, rankSep: 70, animate: false, fit: false };
+const GROUPED = { name: "cose", animate: false, fit: false, nodeDimensionsIncludeLabels: true, randomize: false };
+const CELL = { width: 150, height: 56 };
 
 const STYLE = [
   { selector: "node", style: {
@@ -175,11 +180,41 @@ export class GraphView {
     });
     if (signature !== this.signature) {
       this.signature = signature;
-      cy.layout(LAYOUT).run();
+      this.layout();
     }
     if (this.focused && cy.getElementById(this.focused).empty()) this.focused = null;
     this.applyVisibility();
     this.notifySelection();
+  }
+
+  layout() {
+    const cy = this.cy;
+    if (this.options.groups) {
+      cy.layout(GROUPED).run();
+    } else {
+      const loose = cy.nodes().filter((node) => node.degree(false) === 0);
+      const layered = cy.elements().difference(loose);
+      let top = 0;
+      let left = 0;
+      if (layered.nonempty()) {
+        layered.layout(LAYERED).run();
+        const box = layered.boundingBox();
+        top = box.y2 + CELL.height;
+        left = box.x1;
+      }
+      if (loose.nonempty()) {
+        // as many columns as make the grid's shape the view's
+        const aspect = cy.width() / Math.max(1, cy.height());
+        const cols = Math.ceil(Math.sqrt((loose.length * aspect * CELL.height) / CELL.width));
+        const rows = Math.ceil(loose.length / cols);
+        loose.layout({
+          name: "grid", fit: false, cols, avoidOverlap: true,
+          boundingBox: { x1: left, y1: top, w: cols * CELL.width, h: rows * CELL.height },
+          sort: (a, b) => String(a.data("label")).localeCompare(String(b.data("label"))),
+        }).run();
+      }
+    }
+    cy.fit(cy.elements(), 30);
   }
 
   // -- navigation -----------------------------------------------------------------------------
