@@ -38,6 +38,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 from xml.dom import minidom
 
 BENCH = Path(__file__).resolve().parent
@@ -241,12 +242,98 @@ def measure_features(job: Job) -> Metrics:
     return metrics
 
 
+WEB_BUDGET_S = 300.0  # engine construction plus the clicks, bounded
+WEB_MAX_FILES = 500  # larger generated workspaces are not measured through HTTP
+WEB_CLICKS = 60
+WEB_SEED = 7
+
+
+def measure_web(job: Job) -> Metrics:
+    """Click-to-data latency of ``rosvar serve``: ``POST /api/choose`` round trips over HTTP.
+
+    The server runs in a thread of this process on a free loopback port; one keep-alive
+    connection plays the browser. A seeded random sequence of clicks (a random open feature,
+    not an ``<other>`` slot, selected or deselected; a new session once the product is
+    complete) is timed from sending each request to the last byte of its answer: the engine
+    step, the JSON and the transfer. Refused choices count as well, being round trips too.
+    """
+    import http.client
+    import random
+    import threading
+
+    from rosvar.analyses.features import extract
+    from rosvar.configuration.engine import Configurator
+    from rosvar.interpreter.analysis import Analysis
+    from rosvar.outputs.web.server import make_server
+    from rosvar.workspace import discover
+
+    if len(job.files) > WEB_MAX_FILES:
+        return {}
+
+    def expire(_signum: int, _frame: object) -> None:
+        raise TimeoutError
+
+    previous = signal.signal(signal.SIGALRM, expire)
+    signal.alarm(int(WEB_BUDGET_S))
+    rounds: list[float] = []
+    sizes: list[int] = []
+    server = None
+    try:
+        analysis = Analysis(discover(job.roots, ros_package_path=job.package_path))
+        server = make_server(Configurator(analysis, extract(analysis)), port=0)
+        threading.Thread(target=server.serve_forever, daemon=True).start()
+        connection = http.client.HTTPConnection("127.0.0.1", server.server_address[1])
+
+        def call(path: str, body: dict[str, object]) -> dict[str, Any]:
+            wall = time.perf_counter()
+            connection.request("POST", path, json.dumps(body), {"Content-Type": "application/json"})
+            answer = connection.getresponse().read()
+            if path == "/api/choose":
+                rounds.append((time.perf_counter() - wall) * 1000)
+                sizes.append(len(answer))
+            state: dict[str, Any] = json.loads(answer)
+            return state
+
+        state = call("/api/session", {})
+        rng = random.Random(WEB_SEED)
+        while len(rounds) < WEB_CLICKS:
+            features = state["features"]
+            open_ = [
+                k for k, f in features.items()
+                if f["state"] == "unselected" and f["value"] != "<other>"
+            ]  # fmt: skip
+            if not open_:
+                state = call("/api/session", {})
+                continue
+            feature = rng.choice(open_)
+            kind = features[feature]["kind"]
+            action = "select" if kind == "value" else rng.choice(("select", "deselect"))
+            body = {"session": state["session"], "action": action, "feature": feature}
+            state = call("/api/choose", body)
+    except TimeoutError:
+        if len(rounds) < 2:
+            return {"web_timeout_s": WEB_BUDGET_S}
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, previous)
+        if server is not None:
+            server.shutdown()
+            server.server_close()
+    return {
+        "web_clicks": len(rounds),
+        "web_choose_p50_ms": statistics.median(rounds),
+        "web_choose_p95_ms": statistics.quantiles(rounds, n=20)[-1],
+        "web_answer_kb": statistics.median(sizes) / 1024,
+    }
+
+
 # Run in this order: peak RSS is read right after the analysis, the feature model reuses
 # its models (and frees them), the baseline parses the files the analysis found.
 ISOLATED_MEASUREMENTS: dict[str, Callable[[Job], Metrics]] = {
     "analyze": measure_analyze,
     "features": measure_features,
     "minidom": measure_minidom,
+    "web": measure_web,
 }
 
 
@@ -459,6 +546,14 @@ def _questions_cell(outcome: Outcome, _steps: object) -> str:
     return _number(outcome.get("features_questions_ms"))
 
 
+def _web_cell(outcome: Outcome, _steps: object) -> str:
+    if outcome.get("web_timeout_s") is not None:
+        return "timeout"
+    p50, p95 = outcome.get("web_choose_p50_ms"), outcome.get("web_choose_p95_ms")
+    size = outcome.get("web_answer_kb")
+    return "—" if p50 is None else f"{p50:,.1f} / {_number(p95, 1)} ({_number(size)})"
+
+
 COLUMNS: list[Column] = [
     Column("workload", lambda o, _s: o.workload.name, "<"),
     Column("files", lambda o, _s: _number(o.get("files"))),
@@ -473,6 +568,7 @@ COLUMNS: list[Column] = [
     Column("features: interpretation ms", lambda o, _s: _number(o.get("features_interpret_ms"))),
     Column("features: model ms", _features_cell),
     Column("features: core/dead + triggers ms", _questions_cell),
+    Column("web click p50/p95 ms (answer KB)", _web_cell),
 ]
 
 
@@ -566,6 +662,7 @@ TARGETS: list[Target] = [
     *(features_within(system, 0.2) for system in ("kobuki", "turtlebot2", "lizi", "husky")),
     features_within("gen-10000", 30),
     at_most("husky", "analyze_ms", 100, "ms"),
+    at_most("husky", "web_choose_p95_ms", 50, "ms"),
     at_most("gen-400", "analyze_ms", 1, "s", scale=1000),
     at_most("gen-400", "peak_mb", 150, "MB"),
     at_most("gen-10000", "analyze_ms", 25, "s", scale=1000),
