@@ -28,9 +28,10 @@ INITIAL_CACHE_ENTRIES = 1 << 16
 """CUDD starts with a computed table of 2^18 entries, whose set-up alone is more than 10 ms
 (a tenth of analysing a small system); it grows when hits show it is worth it."""
 SUPPORT_WALK_FACTOR = 16  # a node visited in Python costs about as much as 16 variables in dd
-MAX_CACHE_ENTRIES = 1 << 20
+MAX_CACHE_ENTRIES = 1 << 18
 """CUDD's computed table grows with the unique table, i.e. with the number of variables
-(hundreds of MB on large workspaces) although the BDDs stay small; about 40 MB is plenty."""
+(hundreds of MB on large workspaces) although the BDDs stay small; 2^18 entries (8 MB) cost
+neither interpretation nor the feature model any time on the benchmarks."""
 
 
 class _TooComplex(Exception):
