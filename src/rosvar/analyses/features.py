@@ -138,7 +138,7 @@ def graph_inputs(model: LaunchModel) -> set[ArgInput]:
             add_choice(param.value)
     support: set[str] = set()
     for condition in conditions:
-        support |= space.bdd.support(condition)
+        support |= space.support(condition)
     inputs = {
         atom.input
         for atom in (space.atom_of(name) for name in support)
@@ -468,7 +468,7 @@ def _formula(
     manager.declare(*keep)  # a fresh manager in the chosen order (reordering in place is slow)
 
     def translate(formula: BDD) -> BDD:
-        others = {name for name in space.bdd.support(formula) if name not in kept}
+        others = {name for name in space.support(formula) if name not in kept}
         if others:
             formula = space.bdd.exist(others, formula)
         return _cudd.copy_bdd(formula, manager)
@@ -562,6 +562,8 @@ def _exclusions(
     the pairwise ``excludes`` exactly.
     """
     dirty: dict[tuple[str, str], BDD] = {}
+    done: set[frozenset[tuple[str, BDD]]] = set()  # names declared alike: one group for all
+    literals: dict[tuple[str, BDD], BDD | None] = {}  # F ∧ C_F in the solver; None: unclean
     for occurrences in buckets.values():
         when: dict[str, BDD] = {}
         for occurrence in occurrences:
@@ -569,19 +571,28 @@ def _exclusions(
                 when[occurrence.file] = (
                     when.get(occurrence.file, space.false) | occurrence.condition
                 )
-        if len(when) < 2:
+        alike = frozenset(when.items())
+        if len(when) < 2 or alike in done:
             continue
+        done.add(alike)
         clean: list[tuple[str, BDD]] = []
         unclean: list[str] = []
         for file, condition in when.items():
-            if space.bdd.support(condition) <= kept:
-                clean.append((file, _cudd.copy_bdd(files[file].variable & condition, manager)))
-            else:
+            if (file, condition) not in literals:
+                literals[file, condition] = (
+                    _cudd.copy_bdd(files[file].variable & condition, manager)
+                    if space.support(condition) <= kept
+                    else None
+                )
+            literal = literals[file, condition]
+            if literal is None:
                 unclean.append(file)
+            else:
+                clean.append((file, literal))
         for position, file in enumerate(unclean):
             for other in [*unclean[position + 1 :], *(f for f, _x in clean)]:
-                key = (file, other) if file < other else (other, file)
-                dirty[key] = dirty.get(key, space.false) | (when[file] & when[other])
+                pair = (file, other) if file < other else (other, file)
+                dirty[pair] = dirty.get(pair, space.false) | (when[file] & when[other])
         if len(clean) >= 2:
             clean.sort(key=lambda item: manager.level_of_var(_name(files[item[0]].variable)))
             yield [files[f].id for f, _x in clean], _at_most_one(manager, [x for _f, x in clean])
@@ -609,8 +620,10 @@ def _conjoin(manager: _cudd.BDD, parts: Sequence[BDD]) -> BDD:
     variable instead made Husky's intermediate results twenty times the final one).
     """
 
+    constants = (manager.true, manager.false)
+
     def top(part: BDD) -> int:
-        return min((manager.level_of_var(name) for name in manager.support(part)), default=-1)
+        return -1 if part in constants else int(part.level)  # the root is the top variable
 
     result = manager.true
     for part in sorted(parts, key=top, reverse=True):
@@ -756,7 +769,7 @@ def simplest_trigger(space: ConditionSpace, condition: BDD) -> dict[str, str]:
     """
     involved = {
         atom.input
-        for atom in (space.atom_of(n) for n in space.bdd.support(condition))
+        for atom in (space.atom_of(n) for n in space.support(condition))
         if isinstance(atom, SlotAtom)
     }
     target = condition

@@ -100,9 +100,7 @@ def compute(analysis: Analysis, model: FeatureModel) -> Metrics:
         for decision in launch_model.decisions:
             inputs = {
                 atom.input
-                for atom in (
-                    model.space.atom_of(n) for n in model.space.bdd.support(decision.outcome)
-                )
+                for atom in (model.space.atom_of(n) for n in model.space.support(decision.outcome))
                 if isinstance(atom, SlotAtom) and isinstance(atom.input, ArgInput)
             }
             for input_ in inputs & wanted:
