@@ -327,6 +327,74 @@ def measure_web(job: Job) -> Metrics:
     }
 
 
+CONFIGURE_BUDGET_S = 300.0  # engine construction plus the selection sequences, bounded
+CONFIGURE_SEQUENCES = 5
+CONFIGURE_SEED = 4
+
+
+def measure_configure(job: Job) -> Metrics:
+    """Per-step latency of the configuration engine, in-process, over random sequences.
+
+    A step is what a session does for one click: ``Configurator.state(choices + [one])``,
+    the answer for the shorter list being cached. Each seeded sequence selects or deselects
+    a random unselected feature (not an ``<other>`` value) until the product is complete.
+    ``to_json()`` of each state is timed apart (what the web server then serialises).
+    """
+    import random
+
+    from rosvar.analyses.features import extract
+    from rosvar.configuration.choices import UserChoice
+    from rosvar.configuration.engine import Configurator
+    from rosvar.interpreter.analysis import Analysis
+    from rosvar.workspace import discover
+
+    def expire(_signum: int, _frame: object) -> None:
+        raise TimeoutError
+
+    previous = signal.signal(signal.SIGALRM, expire)
+    signal.alarm(int(CONFIGURE_BUDGET_S))
+    steps: list[float] = []
+    documents: list[float] = []
+    built_ms = 0.0
+    try:
+        analysis = Analysis(discover(job.roots, ros_package_path=job.package_path))
+        started = time.perf_counter()
+        engine = Configurator(analysis, extract(analysis))
+        built_ms = (time.perf_counter() - started) * 1000
+        rng = random.Random(CONFIGURE_SEED)
+        for _sequence in range(CONFIGURE_SEQUENCES):
+            choices: list[UserChoice] = []
+            while True:
+                wall = time.perf_counter()
+                state = engine.state(choices)
+                steps.append((time.perf_counter() - wall) * 1000)
+                wall = time.perf_counter()
+                state.to_json()
+                documents.append((time.perf_counter() - wall) * 1000)
+                open_ = [
+                    f for f in engine.catalog
+                    if state.features[f.id].state == "unselected" and f.value != "<other>"
+                ]  # fmt: skip
+                if not open_:
+                    break
+                feature = rng.choice(open_)
+                action = "select" if feature.kind == "value" else rng.choice(("select", "deselect"))
+                choices.append(UserChoice.parse(action, feature.id))
+    except TimeoutError:
+        if len(steps) < 2:
+            return {"configure_timeout_s": CONFIGURE_BUDGET_S}
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, previous)
+    return {
+        "configure_build_ms": built_ms,
+        "configure_steps": len(steps),
+        "configure_step_p50_ms": statistics.median(steps),
+        "configure_step_p95_ms": statistics.quantiles(steps, n=20)[-1],
+        "configure_json_p95_ms": statistics.quantiles(documents, n=20)[-1],
+    }
+
+
 # Run in this order: peak RSS is read right after the analysis, the feature model reuses
 # its models (and frees them), the baseline parses the files the analysis found.
 ISOLATED_MEASUREMENTS: dict[str, Callable[[Job], Metrics]] = {
@@ -334,6 +402,7 @@ ISOLATED_MEASUREMENTS: dict[str, Callable[[Job], Metrics]] = {
     "features": measure_features,
     "minidom": measure_minidom,
     "web": measure_web,
+    "configure": measure_configure,
 }
 
 
@@ -554,6 +623,13 @@ def _web_cell(outcome: Outcome, _steps: object) -> str:
     return "—" if p50 is None else f"{p50:,.1f} / {_number(p95, 1)} ({_number(size)})"
 
 
+def _configure_cell(outcome: Outcome, _steps: object) -> str:
+    if outcome.get("configure_timeout_s") is not None:
+        return f"> {CONFIGURE_BUDGET_S:,.0f} s"
+    p50, p95 = outcome.get("configure_step_p50_ms"), outcome.get("configure_step_p95_ms")
+    return "—" if p50 is None else f"{p50:,.1f} / {_number(p95, 1)}"
+
+
 COLUMNS: list[Column] = [
     Column("workload", lambda o, _s: o.workload.name, "<"),
     Column("files", lambda o, _s: _number(o.get("files"))),
@@ -569,6 +645,7 @@ COLUMNS: list[Column] = [
     Column("features: model ms", _features_cell),
     Column("features: core/dead + triggers ms", _questions_cell),
     Column("web click p50/p95 ms (answer KB)", _web_cell),
+    Column("configure step p50/p95 ms", _configure_cell),
 ]
 
 
@@ -663,6 +740,7 @@ TARGETS: list[Target] = [
     features_within("gen-10000", 30),
     at_most("husky", "analyze_ms", 100, "ms"),
     at_most("husky", "web_choose_p95_ms", 50, "ms"),
+    at_most("husky", "configure_step_p95_ms", 10, "ms"),
     at_most("gen-400", "analyze_ms", 1, "s", scale=1000),
     at_most("gen-400", "peak_mb", 150, "MB"),
     at_most("gen-10000", "analyze_ms", 25, "s", scale=1000),

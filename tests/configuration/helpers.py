@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import json
 import os
-from collections.abc import Mapping
-from typing import TYPE_CHECKING
+import random
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any
 
 from rosvar.analyses.features import extract
 from rosvar.configuration.choices import UserChoice
@@ -48,3 +50,61 @@ def present(state: ConfigurationState, kind: str = "nodes") -> dict[str, str]:
     """Element name → presence, for the elements not absent."""
     elements = getattr(state.graph, kind)
     return {e["name"]: e["presence"] for e in elements if e["presence"] != "absent"}
+
+
+def random_product(engine: Configurator, rng: random.Random) -> ConfigurationState:
+    """A complete product reached by random choices, as a user clicking around would.
+
+    Known values are preferred to ``<other>``; an ``<other>`` value that gets selected all
+    the same is given a typed text. Files are selected one time in five: products of a few
+    files, as people build them (and which load more often than a dozen files together).
+    """
+    chosen: list[UserChoice] = []
+    while True:
+        state = engine.state(chosen)
+        if state.untyped:
+            chosen.append(UserChoice("set", state.untyped[0], f"typed{rng.randint(0, 9)}"))
+            continue
+        if state.complete:
+            return state
+        open_ = [f for f in engine.catalog if state.features[f.id].state == "unselected"]
+        known = [f for f in open_ if f.value != "<other>"]
+        feature = rng.choice(known or open_)
+        action = "select" if feature.kind == "value" or rng.random() < 0.2 else "deselect"
+        chosen.append(UserChoice(action, feature.id))
+
+
+PRESENCE_FIELDS = ("presence", "condition", "id")
+
+
+def product(state: ConfigurationState, members: Sequence[str] | None = None) -> dict[str, Any]:
+    """The present elements, shaped like ``rosvar resolve --json`` (of some launched files).
+
+    ``ok`` is false when an error is present or two present nodes share a name.
+    """
+
+    def mine(element: Mapping[str, Any]) -> bool:
+        return members is None or str(element["id"]).split("|")[0] in members
+
+    def bare(elements: list[dict[str, Any]]) -> list[dict[str, Any]]:
+        return [
+            {k: v for k, v in e.items() if k not in PRESENCE_FIELDS}
+            for e in elements
+            if e["presence"] == "present" and mine(e)
+        ]
+
+    nodes = bare(state.graph.nodes)
+    errors = bare(state.graph.errors)
+    names = [n["name"] for n in nodes]
+    return {
+        "ok": not errors and len(names) == len(set(names)),
+        "nodes": nodes,
+        "tests": bare(state.graph.tests),
+        "params": {p["name"]: p["value"] for p in bare(state.graph.params)},
+        "errors": errors,
+        "conflicts": [],
+    }
+
+
+def canonical(entries: Sequence[Mapping[str, Any]]) -> list[str]:
+    return sorted(json.dumps(e, sort_keys=True) for e in entries)

@@ -295,11 +295,11 @@ def _node(r: _Restriction, node: object) -> dict[str, object]:
         "col": location.col,
     }
     if node.is_test:
-        entry.update(_test_fields(raw, location))
+        entry.update(test_fields(raw, location))
     return entry
 
 
-def _test_fields(raw: Mapping[str, str | None], location: Location) -> dict[str, object]:
+def test_fields(raw: Mapping[str, str | None], location: Location) -> dict[str, object]:
     """``_test_attrs`` and the ``Test`` constructor: defaults 60 s and 0 retries, output log."""
     try:
         time_limit = float(raw.get("time-limit") or 60.0)

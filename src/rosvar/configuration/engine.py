@@ -57,6 +57,7 @@ class Graph:
     """Element variants with their presence; ``errors`` are where roslaunch would stop."""
 
     nodes: list[Fields] = field(default_factory=list)
+    tests: list[Fields] = field(default_factory=list)
     params: list[Fields] = field(default_factory=list)
     topics: list[Fields] = field(default_factory=list)
     errors: list[Fields] = field(default_factory=list)
@@ -64,6 +65,7 @@ class Graph:
     def to_json(self) -> dict[str, object]:
         return {
             "nodes": self.nodes,
+            "tests": self.tests,
             "params": self.params,
             "topics": self.topics,
             "errors": self.errors,
@@ -154,7 +156,9 @@ class Configurator:
             feature = self.catalog.lookup(choice.feature)
             if choice.action == "unselect":
                 effective = [e for e in effective if feature.id not in e.targets]
-                decisions = self._decisions(effective)
+                found = self._decisions(effective)
+                assert found is not None, "a part of an accepted list was refused"
+                decisions = found
                 accepted.append(choice)
                 continue
             try:
@@ -165,13 +169,11 @@ class Configurator:
             kept = effective
             if choice.action == "set":  # a new value replaces the arg's earlier one
                 kept = [e for e in effective if feature.id not in e.targets]
-            before = self._decisions(kept)
-            after = self.derivation.add(before, entry.variable, entry.value)
+            after = self._decisions([*kept, entry])
             if after is None:
                 refused.append(Refusal(choice, self._reason(kept, entry)))
                 continue
             effective = [*kept, entry]
-            self._remember(effective, after)
             decisions = after
             accepted.append(choice)
         return self._answer(accepted, refused, effective, decisions)
@@ -226,7 +228,8 @@ class Configurator:
                 )
         raise _Refused(f"{feature.id} takes no value other than its known ones")
 
-    def _decisions(self, effective: Sequence[_Effective]) -> Decisions:
+    def _decisions(self, effective: Sequence[_Effective]) -> Decisions | None:
+        """The solver's answer for a list of literals (None: unsatisfiable), from the cache."""
         key = tuple((e.variable, e.value) for e in effective)
         length = len(key)
         while length and key[:length] not in self._steps:
@@ -235,7 +238,8 @@ class Configurator:
         for position in range(length, len(key)):
             variable, value = key[position]
             found = self.derivation.add(decisions, variable, value)
-            assert found is not None, "an accepted list of choices became unsatisfiable"
+            if found is None:
+                return None
             decisions = found
             self._steps[key[: position + 1]] = decisions
         if key:
@@ -243,9 +247,6 @@ class Configurator:
         while len(self._steps) > CACHED_STEPS:
             self._steps.popitem(last=False)
         return decisions
-
-    def _remember(self, effective: Sequence[_Effective], decisions: Decisions) -> None:
-        self._steps[tuple((e.variable, e.value) for e in effective)] = decisions
 
     def _reason(self, earlier: Sequence[_Effective], entry: _Effective) -> str:
         """The earlier choices and the constraints that together rule ``entry`` out."""
@@ -366,8 +367,13 @@ class Configurator:
         self, decisions: Decisions, values: Mapping[str, Values], texts: Mapping[str, str]
     ) -> Graph:
         graph = Graph()
-        lists = {"node": graph.nodes, "param": graph.params, "topic": graph.topics,
-                 "error": graph.errors}  # fmt: skip
+        lists = {
+            "node": graph.nodes,
+            "test": graph.tests,
+            "param": graph.params,
+            "topic": graph.topics,
+            "error": graph.errors,
+        }
         judged: dict[tuple[BDD, BDD], tuple[str, dict[str, bool]]] = {}
         for element in self.graph.elements:
             bounds = element.bounds

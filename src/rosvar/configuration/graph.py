@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from typing import cast
 
 from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.resolve import ResolutionError, test_fields
 from rosvar.analyses.values import json_value
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
@@ -67,7 +68,7 @@ class Values:
 class Element:
     """One variant of a node, param, topic or error, with its presence condition."""
 
-    kind: str  # "node", "param", "topic", "error"
+    kind: str  # "node", "test", "param", "topic", "error"
     id: str
     entry: str  # the entry launch file (path) whose model holds it
     condition: BDD  # analysis manager, fixed atoms substituted
@@ -130,8 +131,7 @@ class VariationalGraph:
             return f"{key}#{counters[key]}"
 
         for node in model.nodes:
-            if not node.is_test:
-                self._add_node(model, node, launched, new_id)
+            self._add_node(model, node, launched, new_id)
         for param in model.params:
             condition = launched & param.condition
             if isinstance(param, ParamDecl):
@@ -153,6 +153,23 @@ class VariationalGraph:
                     _yaml_renderer(param),
                     _needs(
                         param.scope_ns, param.command, param.ns, param.file, param.param, param.text
+                    ),
+                )
+        for include in model.includes:
+            if not include.resolved:  # roslaunch stops where it cannot read the file
+                target = Values({}, None).text(include.file.values()[0]) if include.file else ""
+                message = f"cannot load included file {target}"
+                self._add(
+                    "error",
+                    new_id(include.location),
+                    model.file,
+                    launched & include.condition,
+                    _static(
+                        {
+                            "code": "include-unknown",
+                            "message": message,
+                            **include.location.to_json(),
+                        }
                     ),
                 )
         for error in model.errors:
@@ -187,14 +204,14 @@ class VariationalGraph:
             ]
             id_ = new_id(node.location)
             element = self._add(
-                "node",
+                "test" if node.is_test else "node",
                 id_,
                 model.file,
                 launched & node.condition & branch,
                 _node_renderer(raw, remaps, env, node),
                 _needs(*raw.values(), *(p for pair in remaps + env for p in pair)),
             )
-            if element is not None:
+            if element is not None and not node.is_test:
                 self._topic_uses(element, raw, remaps)
 
     def _topic_uses(
@@ -256,6 +273,12 @@ def _node_renderer(
             mapping.pop(key, None)
             mapping[key] = values.text(target) or ""
         namespace = text.get("namespace") or "/"
+        extra: Fields = {}
+        if node.is_test:
+            try:
+                extra = test_fields(text, node.location)
+            except ResolutionError:
+                extra = {}
         return [
             {
                 "name": names.ns_join(namespace, text.get("name") or ""),
@@ -268,6 +291,7 @@ def _node_renderer(
                 "filename": node.filename,
                 "line": node.location.line,
                 "col": node.location.col,
+                **extra,
             }
         ]
 
