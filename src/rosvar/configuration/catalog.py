@@ -2,9 +2,7 @@
 
 The feature model names files relative to their package roots; a user names them as typed
 on the command line. The catalogue re-spells every id (``FILE``, ``FILE:ARG``,
-``FILE:ARG=VALUE``), ties each feature to its solver variable, and groups the variables by
-connected component of the constraint graph: a choice can only change what is decided in
-its own component.
+``FILE:ARG=VALUE``) and ties each feature to its solver variable.
 """
 
 from __future__ import annotations
@@ -31,7 +29,6 @@ class Feature:
     value: str | None
     parent: str | None
     variable: str
-    component: int
 
 
 @dataclass(frozen=True)
@@ -60,19 +57,15 @@ class Catalog:
         self.by_variable: dict[str, Feature] = {}
         self.args: dict[str, tuple[ArgFeature, list[tuple[Feature, ValueFeature]]]] = {}
         self._by_path: dict[str, str] = {}
-        component_of = _components(model)
         for file in model.files:
             file_id = spell(file.file)
             variable = str(solver.var(file.variable).var)
-            component = component_of[file.id]
             self.files.append(FileEntry(file_id, file.file, file, variable))
             self._by_path[os.path.realpath(file.file)] = file_id
-            self._add(Feature(file_id, "file", file_id, None, None, None, variable, component))
+            self._add(Feature(file_id, "file", file_id, None, None, None, variable))
             for arg in file.args:
                 arg_id = f"{file_id}:{arg.name}"
-                self._add(
-                    Feature(arg_id, "arg", file_id, arg.name, None, file_id, variable, component)
-                )
+                self._add(Feature(arg_id, "arg", file_id, arg.name, None, file_id, variable))
                 values = []
                 for value in arg.values:
                     entry = Feature(
@@ -83,12 +76,10 @@ class Catalog:
                         value.value,
                         arg_id,
                         str(solver.var(value.variable).var),
-                        component,
                     )
                     self._add(entry)
                     values.append((entry, value))
                 self.args[arg_id] = (arg, values)
-        self.components = max(component_of.values(), default=-1) + 1
 
     def _add(self, feature: Feature) -> None:
         self.features[feature.id] = feature
@@ -131,27 +122,3 @@ def _speller(spelling: Mapping[str, str] | None) -> Callable[[str], str]:
         return os.path.relpath(path)
 
     return spell
-
-
-def _components(model: FeatureModel) -> dict[str, int]:
-    """File id → connected component of the constraint graph (files linked by constraints)."""
-    neighbours: dict[str, set[str]] = {f.id: set() for f in model.files}
-    for constraint in model.constraints:
-        first, *rest = constraint.files
-        for other in rest:
-            neighbours[first].add(other)
-            neighbours[other].add(first)
-    component: dict[str, int] = {}
-    number = -1
-    for start in neighbours:
-        if start in component:
-            continue
-        number += 1
-        stack = [start]
-        component[start] = number
-        while stack:
-            for other in neighbours[stack.pop()]:
-                if other not in component:
-                    component[other] = number
-                    stack.append(other)
-    return component

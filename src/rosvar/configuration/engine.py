@@ -9,8 +9,9 @@ adds one choice at a time pays for one step.
 from __future__ import annotations
 
 from collections import OrderedDict
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import cached_property
 
 from rosvar.analyses.features import FeatureModel, explain
 from rosvar.configuration.catalog import Catalog, Feature, FileEntry
@@ -81,10 +82,15 @@ class ConfigurationState:
     graph: Graph
     complete: bool
     command: str | None
-    configurations: int
+    counter: Callable[[], int] = field(repr=False)  # counting can cost more than the step
     unselected: int
     commands: list[list[Launch]] = field(default_factory=list)  # files sharing a command line
     untyped: list[str] = field(default_factory=list)  # args at <other> still without a text
+
+    @cached_property
+    def configurations(self) -> int:
+        """Valid configurations remaining (counted on first use)."""
+        return self.counter()
 
     def to_json(self) -> dict[str, object]:
         count = self.configurations
@@ -129,12 +135,7 @@ class Configurator:
         self.analysis = analysis
         self.model = model
         self.catalog = Catalog(model, spelling)
-        self.derivation = Derivation(
-            solver.manager,
-            solver.formula,
-            solver.variables,
-            {f.variable: f.component for f in self.catalog},
-        )
+        self.derivation = Derivation(solver)
         self.lowering = Lowering(analysis, model, env or {})
         file_ids = {entry.path: entry.id for entry in self.catalog.files}
         self.graph = VariationalGraph(analysis, model, self.lowering, file_ids)
@@ -145,6 +146,8 @@ class Configurator:
         }
         self._steps: OrderedDict[tuple[tuple[str, bool], ...], Decisions] = OrderedDict()
         self._rendered: dict[str, list[Fields]] = {}
+        self._counts: dict[BDD, int] = {}  # by a component's cube of user literals
+        self._described: dict[tuple[BDD, frozenset[tuple[str, bool]]], str] = {}
 
     # -- choices -------------------------------------------------------------------------
     def state(self, choices: Sequence[UserChoice]) -> ConfigurationState:
@@ -256,15 +259,16 @@ class Configurator:
             atom = manager.var(e.variable)
             return atom if e.value else ~atom
 
+        component = self.derivation.component_of[entry.variable]
         goal = literal(entry)
-        kept = list(earlier)
+        kept = [e for e in earlier if self.derivation.component_of[e.variable] == component]
         position = 0
         while position < len(kept):
             trial = kept[:position] + kept[position + 1 :]
             cube = goal
             for e in trial:
                 cube &= literal(e)
-            if self.derivation.satisfiable(cube):
+            if self.derivation.satisfiable(component, cube):
                 position += 1
             else:
                 kept = trial
@@ -315,7 +319,7 @@ class Configurator:
             graph=self._graph(decisions, values, texts),
             complete=complete,
             command=command,
-            configurations=self._count(decisions),
+            counter=lambda: self._count(decisions),
             unselected=unselected,
             commands=commands,
             untyped=[
@@ -329,16 +333,30 @@ class Configurator:
         )
 
     def _count(self, decisions: Decisions) -> int:
-        manager = self.derivation.manager
-        formula = self.derivation.formula
-        literals = dict(decisions.literals)
-        restricted = manager.let(literals, formula) if literals else formula
-        free = len(self.derivation.variables) - len(decisions.literals)
-        return int(manager.count(restricted, nvars=free)) if restricted != manager.false else 0
+        """Valid configurations left: the product of the components' counts (each cached)."""
+        derivation = self.derivation
+        total = 1
+        for component, cube in decisions.cubes.items():
+            found = self._counts.get(cube)
+            if found is None:
+                members = derivation.members[component]
+                fixed = {v: b for v, b in decisions.literals.items() if v in set(members)}
+                formula = derivation.cofactor(derivation.formulas[component], fixed)
+                free = len(members) - len(fixed)
+                found = int(derivation.manager.count(formula, nvars=free))
+                self._counts[cube] = found
+            total *= found
+        return total
 
     def _describe(self, condition: BDD, values: Mapping[str, bool]) -> str:
-        space = self.analysis.space
-        return space.describe(space.bdd.let(dict(values), condition) if values else condition)
+        """``condition`` simplified under ``values`` (decided variables), for people."""
+        key = (condition, frozenset(values.items()))
+        text = self._described.get(key)
+        if text is None:
+            space = self.analysis.space
+            text = space.describe(space.cofactor(condition, values))
+            self._described[key] = text
+        return text
 
     def _values(self, entry: FileEntry, decisions: Decisions, texts: Mapping[str, str]) -> Values:
         """Concrete strings of a file's inputs as far as the choices fix them."""
