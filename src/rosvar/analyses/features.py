@@ -425,7 +425,7 @@ class Solver:
     @cached_property
     def formula(self) -> BDD:
         """Everything: the conjunction of the components."""
-        return _conjoin(self.manager, [c.formula for c in self.components])
+        return conjoin(self.manager, [c.formula for c in self.components])
 
     def var(self, variable: BDD) -> BDD:
         """The counterpart of an analysis-space feature variable."""
@@ -484,7 +484,7 @@ def _formula(
                 none &= ~variable
             part &= (present & exactly_one(manager, variables)) | (~present & none)
         parts.append(part)
-    tree = _conjoin(manager, parts)
+    tree = conjoin(manager, parts)
     files = {f.file: f for f in features}
     linked = _Links([f.id for f in features])
     pieces: list[tuple[str, BDD]] = [(f.id, part) for f, part in zip(features, parts, strict=True)]
@@ -509,7 +509,7 @@ def _formula(
             + [_name(v.variable) for a in by_id[file_id].args for v in a.values]
         ]
         variables.sort(key=level.__getitem__)
-        components.append(Component(members, variables, _conjoin(manager, grouped[root])))
+        components.append(Component(members, variables, conjoin(manager, grouped[root])))
     components.sort(key=lambda c: level[c.variables[0]] if c.variables else -1)
     return Solver(
         manager, keep, tree, components, lambda: [translate(c.formula) for c in constraints]
@@ -611,7 +611,7 @@ def _at_most_one(manager: _cudd.BDD, literals: Sequence[BDD]) -> BDD:
     return result
 
 
-def _conjoin(manager: _cudd.BDD, parts: Sequence[BDD]) -> BDD:
+def conjoin(manager: _cudd.BDD, parts: Sequence[BDD]) -> BDD:
     """Conjunction scheduled from the bottom of the order up, by each part's top variable.
 
     Each intermediate result is then the conjunction of every part lying below some

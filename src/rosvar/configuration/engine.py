@@ -147,6 +147,7 @@ class Configurator:
         self._steps: OrderedDict[tuple[tuple[str, bool], ...], Decisions] = OrderedDict()
         self._rendered: dict[str, list[Fields]] = {}
         self._counts: dict[BDD, int] = {}  # by a component's cube of user literals
+        self._entries: dict[str, tuple[tuple[str, str | None], list[Fields]]] = {}
         self._described: dict[tuple[BDD, frozenset[tuple[str, bool]]], str] = {}
 
     # -- choices -------------------------------------------------------------------------
@@ -410,19 +411,25 @@ class Configurator:
                 if presence in (PRESENT, ABSENT)
                 else self._describe(element.condition, restricted)
             )
-            shown = self._fields(element, values if presence != ABSENT else None)
-            for number, fields in enumerate(shown):
-                identifier = element.id if number == 0 else f"{element.id}/{number}"
+            static = not element.inputs or presence == ABSENT
+            entries = self._entries.get(element.id) if static else None
+            if entries is None or entries[0] != (presence, condition):
+                shown = self._fields(element, None if presence == ABSENT else values)
                 extra: Fields = {"nodes": element.nodes} if element.kind == "topic" else {}
-                lists[element.kind].append(
+                made = [
                     {
                         **fields,
                         **extra,
                         "presence": presence,
                         "condition": condition,
-                        "id": identifier,
+                        "id": element.id if number == 0 else f"{element.id}/{number}",
                     }
-                )
+                    for number, fields in enumerate(shown)
+                ]
+                entries = ((presence, condition), made)
+                if static:  # the same entries serve every state with this verdict
+                    self._entries[element.id] = entries
+            lists[element.kind].extend(entries[1])
         return graph
 
     def _fields(self, element: Element, values: Mapping[str, Values] | None) -> list[Fields]:

@@ -1,0 +1,60 @@
+"""Derived states and presences against the plain solver: ``formula ∧ literals ∧ v`` built."""
+
+from __future__ import annotations
+
+import random
+from typing import TYPE_CHECKING
+
+from rosvar.analyses.features import extract
+from rosvar.configuration.derivation import ABSENT, PRESENT, UNDETERMINED, Derivation
+from rosvar.configuration.lowering import Bounds
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+FILES = {
+    "a.launch": '  <arg name="x" default="1"/>\n  <arg name="cam" default="false"/>\n'
+    '  <node pkg="p" type="t" name="n$(arg x)"/>\n'
+    '  <include file="$(find pkg)/launch/b.launch" if="$(arg cam)"/>',
+    "b.launch": '  <arg name="y" default="u"/>\n  <node pkg="p" type="t" name="cam_$(arg y)"/>',
+    "c.launch": '  <node pkg="p" type="t" name="n1"/>\n  <node pkg="p" type="t" name="cam_u"/>',
+    "d.launch": '  <arg name="z" default="true"/>\n'
+    '  <node pkg="p" type="t" name="d" if="$(arg z)"/>',
+}
+
+
+def test_decisions_agree_with_the_built_formula(ws: LaunchWorkspace) -> None:
+    for name, body in FILES.items():
+        ws.launch(name, body)
+    solver = extract(ws.analysis()).solver
+    derivation = Derivation(solver)
+    manager, formula = solver.manager, solver.formula
+    rng = random.Random(3)
+    for _ in range(30):
+        decisions = derivation.initial
+        for _ in range(rng.randint(0, 4)):
+            variable, value = rng.choice(solver.variables), rng.random() < 0.5
+            found = derivation.add(decisions, variable, value)
+            literal = manager.var(variable) if value else ~manager.var(variable)
+            possible = (formula & decisions.cube & literal) != manager.false
+            assert (found is not None) == possible
+            decisions = found or decisions
+        restricted = formula & decisions.cube
+        for variable in solver.variables:
+            atom = manager.var(variable)
+            expected = (
+                False if (restricted & atom) == manager.false
+                else True if (restricted & ~atom) == manager.false
+                else None
+            )  # fmt: skip
+            assert decisions.decided.get(variable) is expected, variable
+        condition = manager.var(rng.choice(solver.variables)) | manager.var(
+            rng.choice(solver.variables)
+        )
+        presence, _values = derivation.presence(Bounds(condition, condition), decisions)
+        expected_presence = (
+            PRESENT if (restricted & ~condition) == manager.false
+            else ABSENT if (restricted & condition) == manager.false
+            else UNDETERMINED
+        )  # fmt: skip
+        assert presence == expected_presence
