@@ -95,14 +95,15 @@ def product(state: ConfigurationState, members: Sequence[str] | None = None) -> 
 
     nodes = bare(state.graph.nodes)
     errors = bare(state.graph.errors)
-    names = [n["name"] for n in nodes]
+    names = [str(n["name"]) for n in nodes]
+    twice = sorted({name for name in names if names.count(name) > 1})
     return {
-        "ok": not errors and len(names) == len(set(names)),
+        "ok": not errors and not twice,
         "nodes": nodes,
         "tests": bare(state.graph.tests),
         "params": {p["name"]: p["value"] for p in bare(state.graph.params)},
         "errors": errors,
-        "conflicts": [],
+        "conflicts": [{"kind": "node-name", "name": name} for name in twice],
     }
 
 

@@ -394,10 +394,16 @@ class Configurator:
             "error": graph.errors,
         }
         judged: dict[tuple[BDD, BDD], tuple[str, dict[str, bool]]] = {}
+        typed: dict[str, dict[Input, str]] = {}  # entry file → its args' <other> texts
+        for entry in self.catalog.files:
+            for arg in entry.feature.args:
+                text = texts.get(f"{entry.id}:{arg.name}")
+                if text is not None:
+                    typed.setdefault(entry.path, {})[arg.input] = text
         for element in self.graph.elements:
             bounds = element.bounds
-            if not bounds.exact and texts and element.entry:
-                bounds = self.lowering.decide(element.condition, values[element.entry].concrete)
+            if not bounds.exact and element.entry in typed:
+                bounds = self.lowering.decide(element.condition, typed[element.entry])
             key = (bounds.must, bounds.may)
             verdict = judged.get(key)
             if verdict is None:

@@ -71,6 +71,7 @@ class Lowering:
             else:
                 self.fixed[name] = truth[name]
         self._cache: dict[BDD, tuple[BDD, Bounds]] = {}
+        self._decided: dict[tuple[BDD, frozenset[tuple[Input, str]]], Bounds] = {}
 
     def fix(self, condition: BDD) -> BDD:
         """``condition`` with the fixed atoms substituted (still in the analysis' manager)."""
@@ -90,17 +91,22 @@ class Lowering:
             self._cache[condition] = found
         return found
 
-    def decide(self, condition: BDD, concrete: Mapping[Input, str]) -> Bounds:
-        """Bounds once the open predicates whose terms ``concrete`` completes are decided."""
-        fixed = self.fix(condition)
-        bdd = self.space.bdd
-        values: dict[str, bool] = {}
-        for name in bdd.support(fixed) & self.open:
-            atom = self.space.atom_of(name)
-            assert isinstance(atom, PredicateAtom)
-            if term_inputs(atom.term) <= set(concrete) | set(self.concrete):
-                values[name] = decide_predicate(atom, {**self.concrete, **concrete}, self.host)
-        return self._copy(bdd.let(values, fixed) if values else fixed)
+    def decide(self, condition: BDD, typed: Mapping[Input, str]) -> Bounds:
+        """Bounds once the open predicates whose terms the ``typed`` texts complete are decided."""
+        key = (condition, frozenset(typed.items()))
+        found = self._decided.get(key)
+        if found is None:
+            fixed = self.fix(condition)
+            concrete = {**self.concrete, **typed}
+            values: dict[str, bool] = {}
+            for name in self.space.support(fixed) & self.open:
+                atom = self.space.atom_of(name)
+                assert isinstance(atom, PredicateAtom)
+                if term_inputs(atom.term) <= concrete.keys():
+                    values[name] = decide_predicate(atom, concrete, self.host)
+            found = self._copy(self.space.cofactor(fixed, values))
+            self._decided[key] = found
+        return found
 
     def _copy(self, fixed: BDD) -> Bounds:
         bdd = self.space.bdd
