@@ -356,3 +356,19 @@ def test_count_under_choices_is_the_product_over_components(ws: LaunchWorkspace)
     free = len(solver.variables) - len(choices)
     assert solver.count(choices) == int(solver.manager.count(restricted, nvars=free))
     assert 0 < solver.count(choices) < solver.count()
+
+
+def test_restrict_touches_only_the_chosen_components(ws: LaunchWorkspace) -> None:
+    model = clique_and_loner(ws)
+    solver = model.solver
+    level = next(a for f in model.files for a in f.args if a.name == "level")
+    name = str(level.values[0].variable.var)
+    home = solver.component_of[name]
+    restricted = solver.restrict({name: False})
+    for number, (component, formula) in enumerate(zip(solver.components, restricted, strict=True)):
+        if number == home:
+            assert (
+                formula == solver.manager.let({name: False}, component.formula) != component.formula
+            )
+        else:
+            assert formula == component.formula

@@ -431,9 +431,24 @@ class Solver:
         """The counterpart of an analysis-space feature variable."""
         return self.manager.var(_name(variable))
 
+    @cached_property
+    def component_of(self) -> dict[str, int]:
+        """Variable name → index of the component it belongs to."""
+        return {v: n for n, c in enumerate(self.components) for v in c.variables}
+
     def restrict(self, choices: Mapping[str, bool]) -> list[BDD]:
-        """Each component's formula under ``choices`` (variable name → value)."""
-        return [self.manager.let(dict(choices), c.formula) for c in self.components]
+        """Each component's formula under ``choices`` (variable name → value).
+
+        Each component gets only its own choices: ``dd``'s ``let`` costs as much as
+        the cube it is given, and untouched components are returned as they are.
+        """
+        own: list[dict[str, bool]] = [{} for _ in self.components]
+        for name, value in choices.items():
+            own[self.component_of[name]][name] = value
+        return [
+            self.manager.let(mine, c.formula) if mine else c.formula
+            for c, mine in zip(self.components, own, strict=True)
+        ]
 
     def count(self, choices: Mapping[str, bool] | None = None) -> int:
         """Valid configurations (agreeing with ``choices``): product of the components' counts.
