@@ -266,7 +266,9 @@ def cmd_serve(options: argparse.Namespace) -> int:
     started = time.perf_counter()
     files = len(analysis.workspace.launch_files)
     print(f"rosvar: analysing {files} launch files ...", file=sys.stderr, flush=True)
-    configurator = Configurator(analysis, extract(analysis, progress=_progress), env)
+    model = extract(analysis, progress=_progress)
+    print("rosvar: building the configuration engine ...", file=sys.stderr, flush=True)
+    configurator = Configurator(analysis, model, env)
     try:
         server = make_server(configurator, options.host, options.port)
     except OSError as error:
