@@ -145,7 +145,9 @@ class Configurator:
             for entry in self.catalog.files
         }
         self._steps: OrderedDict[tuple[tuple[str, bool], ...], Decisions] = OrderedDict()
-        self._rendered: dict[str, list[Fields]] = {}
+        self._rendered: dict[
+            tuple[str, frozenset[tuple[Input, str | None]] | None], list[Fields]
+        ] = {}
         self._counts: dict[BDD, int] = {}  # by a component's cube of user literals
         self._entries: dict[str, tuple[tuple[str, str | None], list[Fields]]] = {}
         self._described: dict[tuple[BDD, frozenset[tuple[str, bool]]], str] = {}
@@ -439,14 +441,18 @@ class Configurator:
         return graph
 
     def _fields(self, element: Element, values: Mapping[str, Values] | None) -> list[Fields]:
-        """The element's fields: with the state's values, or symbolic (``values`` None)."""
-        if not element.inputs or values is None:
-            found = self._rendered.get(element.id)
-            if found is None:
-                found = element.fields(Values(self.lowering.concrete, self.lowering.host))
-                self._rendered[element.id] = found
-            return found
-        return element.fields(values[element.entry])
+        """The element's fields: with the state's values, or symbolic (``values`` None).
+
+        Rendered once per combination of the strings its terms read.
+        """
+        given = values[element.entry] if values is not None and element.inputs else None
+        strings = frozenset((i, given.concrete.get(i)) for i in element.inputs) if given else None
+        key = (element.id, strings)
+        found = self._rendered.get(key)
+        if found is None:
+            found = element.fields(given or Values(self.lowering.concrete, self.lowering.host))
+            self._rendered[key] = found
+        return found
 
     def _launches(self, decisions: Decisions, texts: Mapping[str, str]) -> list[Launch] | None:
         """The launched files and their args; None while an <other> value has no text."""
