@@ -57,9 +57,8 @@ class Api:
         self._configurator = configurator
         self._store = SessionStore(configurator, capacity)
         self._lock = threading.Lock()
-        features = configurator.state([]).to_json()["features"]
-        assert isinstance(features, dict)
-        self._kinds: dict[str, str] = {key: value["kind"] for key, value in features.items()}
+        features = configurator.state([]).features  # the ids never change: known once
+        self._kinds = {key: feature.kind for key, feature in features.items()}
         steps: dict[str, Callable[[Session], ConfigurationState]] = {
             "undo": Session.undo,
             "redo": Session.redo,
