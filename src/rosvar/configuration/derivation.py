@@ -31,6 +31,7 @@ from rosvar.logic.conditions import BDD
 
 PRESENT, ABSENT, UNDETERMINED = "present", "absent", "undetermined"
 WITNESSES = 24
+CACHED_ROOTS = 64  # formulas restricted by a step's literals, shared by that step's walks
 """Witnesses kept per component and step: enough to show most variables open."""
 
 
@@ -69,6 +70,7 @@ class Derivation:
         self._supports: dict[BDD, frozenset[str]] = {}
         self._restricted: dict[object, tuple[str | None, BDD, BDD, int | None]] = {}
         self._judged: dict[tuple[BDD, BDD, BDD], str] = {}
+        self._roots: dict[tuple[int, frozenset[tuple[str, bool]]], BDD] = {}
         self._random = random.Random(0)  # reproducible witnesses, hence reproducible timings
         components = range(len(self.members))
         empty = Decisions(
@@ -139,7 +141,7 @@ class Derivation:
                 for v in candidates
                 if v not in decided and not (ones ^ all_ones) >> self.position[v] & 1
             }
-            found = self._walks(component, {**step.literals, variable: not seen}, 1, prefer)
+            found = self._walks(component, step.literals, 1, prefer, (variable, not seen))
             for witness in found:
                 witnesses.append(witness)
                 ones, all_ones = ones | witness, all_ones & witness
@@ -156,53 +158,54 @@ class Derivation:
         literals: Mapping[str, bool],
         count: int,
         prefer: Mapping[str, bool] | None = None,
+        extra: tuple[str, bool] | None = None,
     ) -> tuple[int, ...]:
-        """Up to ``count`` valid configurations of ``component`` that agree with ``literals``.
+        """Up to ``count`` valid configurations of ``component`` that agree with ``literals``
+        (and with the literal ``extra``, applied to the restriction by ``literals``, which is
+        remembered: one step's walks share it).
 
-        A walk of the formula from the root to TRUE: nodes whose variable is fixed follow
-        the literal, the others the branch ``prefer`` names first, else a random one. Nodes
-        found to lead nowhere under the literals are remembered across the walks, so none
-        is explored twice.
+        The formula is first restricted by the literals inside CUDD; in a reduced BDD every
+        node but FALSE reaches TRUE, so each walk goes from the root to TRUE without ever
+        backing up: where one branch is FALSE it takes the other, elsewhere the branch
+        ``prefer`` names, else a random one.
         """
         manager = self.manager
         true, false = manager.true, manager.false
         coin = self._random.getrandbits
-        dead: set[BDD] = set()
+        members = self.members[component]
+        fixed = {v: literals[v] for v in members if v in literals}
+        key = (component, frozenset(fixed.items()))
+        root = self._roots.get(key)
+        if root is None:
+            root = manager.let(fixed, self.formulas[component]) if fixed else self.formulas[component]
+            if len(self._roots) >= CACHED_ROOTS:
+                self._roots.pop(next(iter(self._roots)))
+            self._roots[key] = root
+        if extra is not None:
+            root = manager.let(dict([extra]), root)
+            literals = {**literals, extra[0]: extra[1]}
+        if root == false:
+            return ()
         found: list[int] = []
         for _ in range(count):
             path: dict[str, bool] = {}
-            stack: list[tuple[BDD, str, BDD | None]] = []  # node, its variable, branch left
-            node = self.formulas[component]
+            node = root
             while node != true:
-                if node == false or node in dead:
-                    while stack:  # back up to the last node with a branch left
-                        parent, name, other = stack.pop()
-                        if other is not None:
-                            stack.append((parent, name, None))
-                            path[name] = not path[name]
-                            node = other
-                            break
-                        dead.add(parent)
-                        del path[name]
-                    else:
-                        return tuple(found)
-                    continue
                 low, high = node.low, node.high
                 if node.negated:
                     low, high = ~low, ~high
                 name = str(node.var)
-                value = literals.get(name)
-                if value is None:
-                    value = prefer.get(name) if prefer else None
-                    if value is None:
-                        value = bool(coin(1))
-                    stack.append((node, name, low if value else high))
+                if low == false:
+                    value = True
+                elif high == false:
+                    value = False
                 else:
-                    stack.append((node, name, None))
+                    preferred = prefer.get(name) if prefer else None
+                    value = bool(coin(1)) if preferred is None else preferred
                 path[name] = value
                 node = high if value else low
             bits = 0
-            for variable in self.members[component]:
+            for variable in members:
                 value = path.get(variable)
                 if value is None:
                     value = literals.get(variable)
