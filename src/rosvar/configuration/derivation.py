@@ -177,7 +177,9 @@ class Derivation:
         key = (component, frozenset(fixed.items()))
         root = self._roots.get(key)
         if root is None:
-            root = manager.let(fixed, self.formulas[component]) if fixed else self.formulas[component]
+            root = self.formulas[component]
+            if fixed:
+                root = manager.let(fixed, root)
             if len(self._roots) >= CACHED_ROOTS:
                 self._roots.pop(next(iter(self._roots)))
             self._roots[key] = root
