@@ -197,15 +197,13 @@ class Derivation:
                 if node.negated:
                     low, high = ~low, ~high
                 name = str(node.var)
-                if low == false:
-                    value = True
-                elif high == false:
-                    value = False
+                if low == false or high == false:
+                    branch = low == false
                 else:
                     preferred = prefer.get(name) if prefer else None
-                    value = bool(coin(1)) if preferred is None else preferred
-                path[name] = value
-                node = high if value else low
+                    branch = bool(coin(1)) if preferred is None else preferred
+                path[name] = branch
+                node = high if branch else low
             bits = 0
             for variable in members:
                 value = path.get(variable)
