@@ -147,6 +147,22 @@ def _timed_runs(job: Job, run: Callable[[], object]) -> tuple[float, float, int]
     return statistics.median(walls), statistics.median(cpus), len(walls)
 
 
+def _expire(_signum: int, _frame: object) -> None:
+    raise TimeoutError
+
+
+def _arm(seconds: float) -> object:
+    """Raise TimeoutError in this process after ``seconds``; returns what ``_disarm`` restores."""
+    previous = signal.signal(signal.SIGALRM, _expire)
+    signal.alarm(int(seconds))
+    return previous
+
+
+def _disarm(previous: object) -> None:
+    signal.alarm(0)
+    signal.signal(signal.SIGALRM, previous)  # type: ignore[arg-type]
+
+
 def measure_analyze(job: Job) -> Metrics:
     """What ``rosvar analyze`` does before printing, with nothing cached from a prior run."""
     from rosvar.frontends.ros1_xml.parser import clear_cache
@@ -213,12 +229,8 @@ def measure_features(job: Job) -> Metrics:
     if not isinstance(analysis, Analysis):
         return {}
 
-    def expire(_signum: int, _frame: object) -> None:
-        raise TimeoutError
-
     metrics: Metrics = {"features_interpret_ms": job.analysis_ms}
-    previous = signal.signal(signal.SIGALRM, expire)
-    signal.alarm(int(FEATURES_BUDGET_S))
+    previous = _arm(FEATURES_BUDGET_S)
     try:
         wall, cpu = time.perf_counter(), time.process_time()
         model = extract(analysis)
@@ -235,8 +247,7 @@ def measure_features(job: Job) -> Metrics:
     except TimeoutError:
         metrics["features_timeout_s"] = FEATURES_BUDGET_S
     finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, previous)
+        _disarm(previous)
         del analysis
         gc.collect()
     return metrics
@@ -270,11 +281,7 @@ def measure_web(job: Job) -> Metrics:
     if len(job.files) > WEB_MAX_FILES:
         return {}
 
-    def expire(_signum: int, _frame: object) -> None:
-        raise TimeoutError
-
-    previous = signal.signal(signal.SIGALRM, expire)
-    signal.alarm(int(WEB_BUDGET_S))
+    previous = _arm(WEB_BUDGET_S)
     rounds: list[float] = []
     sizes: list[int] = []
     server = None
@@ -314,8 +321,7 @@ def measure_web(job: Job) -> Metrics:
         if len(rounds) < 2:
             return {"web_timeout_s": WEB_BUDGET_S}
     finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, previous)
+        _disarm(previous)
         if server is not None:
             server.shutdown()
             server.server_close()
@@ -348,11 +354,7 @@ def measure_configure(job: Job) -> Metrics:
     from rosvar.interpreter.analysis import Analysis
     from rosvar.workspace import discover
 
-    def expire(_signum: int, _frame: object) -> None:
-        raise TimeoutError
-
-    previous = signal.signal(signal.SIGALRM, expire)
-    signal.alarm(int(CONFIGURE_BUDGET_S))
+    previous = _arm(CONFIGURE_BUDGET_S)
     steps: list[float] = []
     documents: list[float] = []
     built_ms = 0.0
@@ -384,8 +386,7 @@ def measure_configure(job: Job) -> Metrics:
         if len(steps) < 2:
             return {"configure_timeout_s": CONFIGURE_BUDGET_S}
     finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, previous)
+        _disarm(previous)
     return {
         "configure_build_ms": built_ms,
         "configure_steps": len(steps),
@@ -842,7 +843,7 @@ def write_doc(
     outcomes: Sequence[Outcome], targets: list[str], profiled: str | None, context: str
 ) -> None:
     sizes = ", ".join(f"{w.size:,}" for w in WORKLOADS.values() if w.family == "generated")
-    imports = [o.get("import_mb") for o in outcomes if o.get("import_mb") is not None]
+    imports = [mb for o in outcomes if (mb := o.get("import_mb")) is not None]
     import_note = f" (about {min(imports):.0f} MB of it is Python and imports)" if imports else ""
     parts = [
         "# Performance of `rosvar analyze`",

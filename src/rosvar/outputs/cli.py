@@ -142,6 +142,15 @@ def _analysis(options: argparse.Namespace, env: dict[str, str] | None = None) ->
     return Analysis(workspace, hints.args, env_values, hints.executables)
 
 
+def _analysis_with_env(options: argparse.Namespace) -> tuple[Analysis, dict[str, str]] | int:
+    """The analysis of commands that take ``--env``, or the exit code when it cannot start."""
+    env = _environment(options.env)
+    if env is None:
+        return EXIT_USAGE
+    analysis = _analysis(options, env)
+    return EXIT_INPUT if analysis is None else (analysis, env)
+
+
 def cmd_features(options: argparse.Namespace) -> int:
     analysis = _analysis(options)
     if analysis is None:
@@ -171,12 +180,10 @@ def cmd_metrics(options: argparse.Namespace) -> int:
 
 
 def cmd_configure(options: argparse.Namespace) -> int:
-    env = _environment(options.env)
-    if env is None:
-        return EXIT_USAGE
-    analysis = _analysis(options, env)
-    if analysis is None:
-        return EXIT_INPUT
+    loaded = _analysis_with_env(options)
+    if isinstance(loaded, int):
+        return loaded
+    analysis, env = loaded
     try:
         choices = [UserChoice.parse(action, text) for action, text in options.choices]
         configurator = Configurator(analysis, extract(analysis, progress=_progress), env)
@@ -257,12 +264,10 @@ class _Choice(argparse.Action):
 
 
 def cmd_serve(options: argparse.Namespace) -> int:
-    env = _environment(options.env)
-    if env is None:
-        return EXIT_USAGE
-    analysis = _analysis(options, env)
-    if analysis is None:
-        return EXIT_INPUT
+    loaded = _analysis_with_env(options)
+    if isinstance(loaded, int):
+        return loaded
+    analysis, env = loaded
     started = time.perf_counter()
     files = len(analysis.workspace.launch_files)
     print(f"rosvar: analysing {files} launch files ...", file=sys.stderr, flush=True)
