@@ -8,6 +8,7 @@ included file, a node named after an arg follows the arg's value).
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
 from typing import Any
 
 from outputs.web.live import Live
@@ -61,6 +62,15 @@ class App:
             """() => window.rosvar.graph.cy.nodes(':visible')
                  .filter((n) => n.data('kind') !== 'namespace').map((n) => n.data('label'))"""
         ))  # fmt: skip
+
+    def wait_for_visible(self, test: Callable[[str], str], timeout_s: float = 30) -> None:
+        """Wait until the number of drawn elements passes ``test`` (the graph redraws
+        after the click's event handler returns)."""
+        count = (
+            "window.rosvar.graph.cy.nodes(':visible')"
+            ".filter((n) => n.data('kind') !== 'namespace').length"
+        )
+        self.page.wait_for_function(f"() => {test(count)}", timeout=timeout_s * 1000)
 
     def warned_files(self) -> set[str]:
         return set(self.page.evaluate(
@@ -266,9 +276,11 @@ def test_graph_navigation(page: Any, examples: Live) -> None:
     assert matches and all("controller" in label for label in matches)
     page.evaluate("() => { window.rosvar.graph.cy.nodes('.match')[0].select(); }")
     page.click("#focus")
+    app.wait_for_visible(lambda count: f"{count} < {with_params}")
     focused = len(app.graph_labels())
     assert 0 < focused < with_params
     page.click("#show-all")
+    app.wait_for_visible(lambda count: f"{count} === {with_params}")
     assert len(app.graph_labels()) == with_params
 
 
