@@ -58,6 +58,19 @@ def examples_model() -> FeatureModel:
     return load("examples")
 
 
+@pytest.fixture
+def dead_model(ws: Any) -> FeatureModel:
+    """``both.launch`` includes two files clashing unconditionally: it can never be selected."""
+    ws.launch(
+        "both.launch",
+        '  <include file="$(find pkg)/launch/a.launch"/>\n'
+        '  <include file="$(find pkg)/launch/b.launch"/>',
+    )
+    for name in ("a.launch", "b.launch"):
+        ws.launch(name, '  <node pkg="pkg" type="t" name="same"/>')
+    return extract(ws.analysis())
+
+
 # -- flamapy ---------------------------------------------------------------------------------
 
 

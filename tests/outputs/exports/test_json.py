@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 import pytest
 
-from rosvar.analyses.features import FeatureModel, core_and_dead, count_configurations, extract
+from rosvar.analyses.features import FeatureModel, core_and_dead, count_configurations
 from rosvar.outputs.exports import WRITERS, write
 from rosvar.outputs.exports import json as json_export
 from rosvar.outputs.exports._common import Tree
@@ -148,16 +148,9 @@ def test_examples(examples_model: FeatureModel) -> None:
     assert (arg["default"], arg["boolean"], len(arg["values"])) == ("cmd_vel", False, 2)
 
 
-def test_dead_features_are_explained(ws: LaunchWorkspace) -> None:
+def test_dead_features_are_explained(dead_model: FeatureModel) -> None:
     """A file that includes two files clashing unconditionally can never be selected."""
-    ws.launch(
-        "both.launch",
-        '  <include file="$(find pkg)/launch/a.launch"/>\n'
-        '  <include file="$(find pkg)/launch/b.launch"/>',
-    )
-    for name in ("a.launch", "b.launch"):
-        ws.launch(name, '  <node pkg="pkg" type="t" name="same"/>')
-    document = check(extract(ws.analysis()))
+    document = check(dead_model)
     assert [v["feature"] for v in document["dead"]] == ["pkg/launch/both.launch"]
     assert len(document["dead"][0]["because"]) == 3
 

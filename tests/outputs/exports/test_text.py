@@ -5,12 +5,12 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from rosvar.analyses.features import FeatureModel, count_configurations, extract
+from rosvar.analyses.features import FeatureModel, count_configurations
 from rosvar.outputs.exports import text
 from rosvar.outputs.exports._common import conflicts
 
 if TYPE_CHECKING:
-    from conftest import LaunchWorkspace  # tests/conftest.py
+    pass  # tests/conftest.py
 
 
 def sections(report: str) -> dict[str, list[str]]:
@@ -58,15 +58,8 @@ def test_corpus(model: FeatureModel) -> None:
     assert report.count("\n    simplest trigger: ") == len(conflicts(model))
 
 
-def test_dead_feature_with_reasons(ws: LaunchWorkspace) -> None:
-    ws.launch(
-        "both.launch",
-        '  <include file="$(find pkg)/launch/a.launch"/>\n'
-        '  <include file="$(find pkg)/launch/b.launch"/>',
-    )
-    for name in ("a.launch", "b.launch"):
-        ws.launch(name, '  <node pkg="pkg" type="t" name="same"/>')
-    report = sections(text.write(extract(ws.analysis())))
+def test_dead_feature_with_reasons(dead_model: FeatureModel) -> None:
+    report = sections(text.write(dead_model))
     assert report["Core and dead features"] == [
         "  dead pkg/launch/both.launch",
         "    because pkg/launch/both.launch includes pkg/launch/a.launch",
