@@ -2,30 +2,25 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import ClearParamDecl, Raw
 from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.values import bool_attribute
 from rosvar.logic.choice import Choice, Fail
-from rosvar.logic.conditions import BDD, register_predicate
+from rosvar.logic.conditions import BDD, PREDICATES, register_predicate
 from rosvar.logic.terms import Apply, Hole
 
 # Tests on attribute text; on a term they become predicate atoms decided per configuration.
-TEXT_TESTS: dict[str, tuple[Callable[[str], bool], str]] = {
-    "empty": (lambda text: text == "", "{} is empty"),
-    "bool-true": (lambda text: text.lower() == "true", "{} is 'true'"),
-    "bool-false": (lambda text: text.lower() == "false", "{} is 'false'"),
-}
-for _name, (_test, _display) in TEXT_TESTS.items():
-    register_predicate(_name, _test, _display)
+register_predicate("empty", lambda text: text == "", "{} is empty")
+register_predicate("bool-true", lambda text: text.lower() == "true", "{} is 'true'")
+register_predicate("bool-false", lambda text: text.lower() == "false", "{} is 'false'")
 
 
 def where_text(it: Interpretation, value: Choice[object], test: str) -> BDD:
-    """Where ``value`` is text passing ``test``: decided now for strings, later for terms."""
-    check = TEXT_TESTS[test][0]
+    """Where ``value`` is text passing the predicate ``test``: decided now for strings, later
+    (as a predicate atom) for terms."""
+    check = PREDICATES[test][0]
     result = it.space.false
     for condition, leaf in value:
         if isinstance(leaf, str):
