@@ -164,6 +164,25 @@ def test_resolve_json(workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[
     assert (document["errors"][0]["line"], document["errors"][0]["col"]) == (4, 3)
 
 
+def test_resolve_json_special_values(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Values JSON has no type for keep a tagged form that the schema documents."""
+    file = ws.launch(
+        "special.launch",
+        "<rosparam>\n  day: 2001-12-14\n  blob: !!binary aGVsbG8=\n  big: .inf\n</rosparam>",
+    )
+    code, out, _err = run(capsys, "resolve", str(ws.root), "--launch", file, "--json")
+    document = json.loads(out)
+    assert code == EXIT_OK
+    assert document["params"] == {
+        "/day": {"__datetime__": "2001-12-14"},
+        "/blob": {"__binary__": "aGVsbG8="},
+        "/big": "inf",
+    }
+    schema_check(document, "resolve.schema.json")
+
+
 def test_resolve_input_and_usage_errors(
     workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
 ) -> None:
