@@ -7,32 +7,19 @@ from typing import Any
 
 import pytest
 
+from conftest import LaunchWorkspace
+
 from .client import Result, RoslaunchOracle, requires_oracle, shared_oracle
 
 pytestmark = requires_oracle
 
 
-PACKAGE_XML = """<?xml version="1.0"?>
-<package format="2">
-  <name>{name}</name>
-  <version>0.0.0</version>
-  <description>test package</description>
-  <maintainer email="test@example.com">test</maintainer>
-  <license>BSD</license>
-</package>
-"""
-
-
 def make_package(root: Path, name: str, files: dict[str, str]) -> Path:
     """A package directory (package.xml only, no CMakeLists.txt) holding the given files."""
-    pkg = root / name
-    pkg.mkdir(parents=True, exist_ok=True)
-    (pkg / "package.xml").write_text(PACKAGE_XML.format(name=name))
-    for rel, text in files.items():
-        path = pkg / rel
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text)
-    return pkg
+    workspace = LaunchWorkspace(root)
+    for relative, text in files.items():
+        workspace.write(relative, text, name)
+    return workspace.package(name)
 
 
 def launch(body: str) -> str:
