@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from rosvar.workspace import Package, discover
 from rosvar.workspace.executables import executables
 
@@ -53,10 +55,9 @@ def test_scripts_nodes_and_bin(tmp_path: Path) -> None:
     assert executables(package) == {"teleop.py", "run_me", "mover", "helper.py", "wrapper.py"}
 
 
-def test_cmake_targets(tmp_path: Path) -> None:
-    directory = package_dir(tmp_path)
-    write(
-        directory / "CMakeLists.txt",
+BUILD_FILES = {
+    "cmake": (
+        "CMakeLists.txt",
         "cmake_minimum_required(VERSION 3.0.2)\nproject(drv)\n"
         "add_executable(${PROJECT_NAME}_node src/node.cpp)\n"
         "ADD_EXECUTABLE( upper_case src/u.cpp )\n"
@@ -64,15 +65,10 @@ def test_cmake_targets(tmp_path: Path) -> None:
         "catkin_install_python(PROGRAMS scripts/a.py nodes/b\n"
         "  DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n"
         "install(PROGRAMS tools/c.sh DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n",
-    )
-    package = Package("drv", str(directory), None)
-    assert executables(package) == {"drv_node", "upper_case", "a.py", "b", "c.sh"}
-
-
-def test_setup_py_console_scripts_multiline(tmp_path: Path) -> None:
-    directory = package_dir(tmp_path)
-    write(
-        directory / "setup.py",
+        {"drv_node", "upper_case", "a.py", "b", "c.sh"},
+    ),
+    "setup.py over lines": (
+        "setup.py",
         "from setuptools import setup\n"
         "setup(\n"
         "    name='drv',\n"
@@ -83,32 +79,31 @@ def test_setup_py_console_scripts_multiline(tmp_path: Path) -> None:
         "        ],\n"
         "    },\n"
         ")\n",
-    )
-    package = Package("drv", str(directory), None)
-    assert executables(package) == {"talker", "listener"}
-
-
-def test_setup_cfg_console_scripts(tmp_path: Path) -> None:
-    directory = package_dir(tmp_path)
-    write(
-        directory / "setup.cfg",
-        "[metadata]\nname = drv\n\n[options.entry_points]\nconsole_scripts =\n"
-        "    cfg_tool = drv.tool:main\n",
-    )
-    package = Package("drv", str(directory), None)
-    assert executables(package) == {"cfg_tool"}
-
-
-def test_setup_py_console_scripts_on_one_line(tmp_path: Path) -> None:
-    directory = package_dir(tmp_path)
-    write(
-        directory / "setup.py",
+        {"talker", "listener"},
+    ),
+    "setup.py on one line": (
+        "setup.py",
         "from setuptools import setup\n"
         "setup(name='drv', entry_points={'console_scripts': "
         "['talker = drv.talker:main', 'listener = drv.listener:main']})\n",
-    )
-    package = Package("drv", str(directory), None)
-    assert executables(package) == {"talker", "listener"}
+        {"talker", "listener"},
+    ),
+    "setup.cfg": (
+        "setup.cfg",
+        "[metadata]\nname = drv\n\n[options.entry_points]\nconsole_scripts =\n"
+        "    cfg_tool = drv.tool:main\n",
+        {"cfg_tool"},
+    ),
+}
+
+
+@pytest.mark.parametrize(
+    ("name", "text", "expected"), list(BUILD_FILES.values()), ids=list(BUILD_FILES)
+)
+def test_build_file_targets(tmp_path: Path, name: str, text: str, expected: set[str]) -> None:
+    directory = package_dir(tmp_path)
+    write(directory / name, text)
+    assert executables(Package("drv", str(directory), None)) == expected
 
 
 def test_all_sources_together(tmp_path: Path) -> None:
