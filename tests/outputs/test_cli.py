@@ -183,6 +183,27 @@ def test_resolve_json_special_values(
     schema_check(document, "resolve.schema.json")
 
 
+def test_resolve_package_and_file_name(
+    workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """``--launch PKG FILE`` names the same file as its path, as ``roslaunch PKG FILE`` does."""
+    root = str(workspace.root)
+    for extra in ([], ["use_teleop:=false"]):
+        code, by_name, _err = run(capsys, "resolve", root, "--launch", "pkg", "good.launch", *extra)
+        assert (code, by_name) == run(
+            capsys, "resolve", root, "--launch", good_file(workspace), *extra
+        )[:2]
+    assert code == EXIT_OK and "/planner" in by_name
+    workspace.write("other/good.launch", GOOD)
+    code, _out, err = run(capsys, "resolve", root, "--launch", "pkg", "good.launch")
+    assert code == EXIT_INPUT and "multiple files named [good.launch]" in err
+    code, _out, err = run(capsys, "resolve", root, "--launch", "nopkg", "good.launch")
+    assert code == EXIT_INPUT and "package 'nopkg' is not in the workspace" in err
+    with pytest.raises(SystemExit) as exit_info:
+        main(["resolve", root, "--launch", "pkg", "good.launch", "extra"])
+    assert exit_info.value.code == EXIT_USAGE
+
+
 def test_resolve_input_and_usage_errors(
     workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
 ) -> None:

@@ -96,6 +96,20 @@ def test_package_of_resolves_symlinks(tmp_path: Path) -> None:
     assert workspace.package_of(link / "x.launch") == workspace.packages["real"]
 
 
+def test_find_resource_by_file_name_as_roslaunch_pkg_file(tmp_path: Path) -> None:
+    """``roslaunch PKG FILE``: FILE anywhere below PKG, hidden folders skipped."""
+    package = make_package(tmp_path / "drv", "drv")
+    deep = write(package / "launch" / "sub" / "deep.launch")
+    twice = [write(package / d / "twice.launch") for d in ("launch", "other")]
+    write(package / ".hidden" / "secret.launch")
+    workspace = discover([tmp_path], ros_package_path="")
+    assert workspace.find_resource("drv", "deep.launch") == [str(deep)]
+    assert sorted(workspace.find_resource("drv", "twice.launch") or []) == sorted(map(str, twice))
+    assert workspace.find_resource("drv", "secret.launch") == []
+    assert workspace.find_resource("drv", "sub/deep.launch") == []  # a name, not a path
+    assert workspace.find_resource("nowhere", "deep.launch") is None
+
+
 def test_catkin_ignore_and_hidden_directories_are_skipped(tmp_path: Path) -> None:
     ignored = make_package(tmp_path / "ignored", "ignored")
     (ignored / "CATKIN_IGNORE").write_text("")

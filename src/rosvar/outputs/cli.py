@@ -80,13 +80,16 @@ def cmd_analyze(options: argparse.Namespace) -> int:
 
 
 def cmd_resolve(options: argparse.Namespace) -> int:
-    files = [os.path.abspath(f) for f in options.launch]
-    missing = [f for f in files if not os.path.isfile(f)]
+    paths = [os.path.abspath(words[0]) for words in options.launch if len(words) == 1]
+    missing = [f for f in paths if not os.path.isfile(f)]
     if missing:
         print(f"rosvar: launch file not found: {', '.join(missing)}", file=sys.stderr)
         return EXIT_INPUT
     # the launch files' own packages are known even when no PATH contains them
-    workspace = _workspace([*options.paths, *files])
+    workspace = _workspace([*options.paths, *paths])
+    files = _launch_files(options.launch, workspace)
+    if files is None:
+        return EXIT_INPUT
     env = _environment(options.env)
     if env is None:
         return EXIT_USAGE
@@ -114,6 +117,30 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         for error in result.errors:
             print(f"error: {error.location}: {error.message}")
     return EXIT_OK if result.ok else EXIT_FAILS
+
+
+def _launch_files(launches: Sequence[Sequence[str]], workspace: Workspace) -> list[str] | None:
+    """``--launch FILE`` and ``--launch PKG FILE`` (looked up as ``roslaunch PKG FILE`` does)
+    as paths; None (after a message) when a file cannot be found."""
+    files = []
+    for words in launches:
+        if len(words) == 1:
+            files.append(os.path.abspath(words[0]))
+            continue
+        package, name = words
+        found = workspace.find_resource(package, name)
+        if found is None or len(found) != 1:
+            why = (
+                f"package '{package}' is not in the workspace"
+                if found is None
+                else f"multiple files named [{name}] in package [{package}]: {', '.join(found)}"
+                if found
+                else f"no file named [{name}] in package [{package}]"
+            )
+            print(f"rosvar: {why}", file=sys.stderr)
+            return None
+        files.extend(found)
+    return files
 
 
 def _environment(items: Sequence[str]) -> dict[str, str] | None:
@@ -303,7 +330,14 @@ def parser() -> argparse.ArgumentParser:
     res.add_argument(
         "paths", nargs="*", metavar="PATH", help="package roots (and name:=value args)"
     )
-    res.add_argument("--launch", action="append", required=True, metavar="FILE")
+    res.add_argument(
+        "--launch",
+        action="append",
+        nargs="+",
+        required=True,
+        metavar=("FILE|PKG", "FILE"),
+        help="a launch file, or a package and a file name in it (as roslaunch takes them)",
+    )
     res.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
     res.add_argument("--json", action="store_true")
     res.set_defaults(run=cmd_resolve)
@@ -355,8 +389,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         top.error(f"unrecognized arguments: {' '.join(w for w in extra if w not in mappings)}")
     if options.command == "resolve":
         # ROS habit: name:=value words may stand anywhere on the command line
-        options.args = [p for p in options.paths if ":=" in p] + mappings
+        words = [*options.paths, *mappings, *(w for group in options.launch for w in group)]
+        options.args = [w for w in words if ":=" in w]
         options.paths = [p for p in options.paths if ":=" not in p]
+        options.launch = [[w for w in group if ":=" not in w] for group in options.launch]
+        for group in options.launch:
+            if len(group) > 2 or (len(group) == 2 and os.path.isfile(group[0])):
+                stray = " ".join(group[1:])
+                top.error(f"unrecognized arguments: {stray} (--launch takes FILE or PKG FILE)")
     try:
         return int(options.run(options))
     except KeyboardInterrupt:

@@ -60,6 +60,22 @@ class Workspace:
                 found = _innermost(index, real)
         return found
 
+    def find_resource(self, package: str, name: str) -> list[str] | None:
+        """Files called ``name`` anywhere below ``package`` (None: no such package).
+
+        roslaunch's ``roslaunch PKG FILE`` looks the file up this way (roslib's
+        ``find_resource``): by file name, symlinks followed, hidden folders skipped.
+        """
+        directory = self.find(package)
+        if directory is None:
+            return None
+        found = []
+        for folder, subfolders, files in os.walk(directory, followlinks=True):
+            if name in files:
+                found.append(os.path.abspath(os.path.join(folder, name)))
+            subfolders[:] = [d for d in subfolders if not d.startswith(".")]
+        return found
+
     def _path_index(self) -> dict[str, Package]:
         # Rebuilt when packages are added, so a hand-built Workspace works too.
         size = len(self.packages) + len(self.shadowed)
