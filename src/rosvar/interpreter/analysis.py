@@ -34,6 +34,7 @@ class Analysis:
         self.space = ConditionSpace()
         self.domains = DomainTable(workspace, extra_values, env_values, extra_executables)
         self._models: dict[str, LaunchModel] = {}
+        self._labels: dict[str, str] | None = None
 
     def model(self, file: str) -> LaunchModel:
         """The model of ``file`` as an entry point (interpreted once, then cached)."""
@@ -52,7 +53,19 @@ class Analysis:
         return models
 
     def label(self, file: str) -> str:
-        """The file as people name it: relative to the root it was found under."""
+        """The file as people name it: relative to the root it was found under, or its
+        absolute path when a file found before it already has that name (two roots holding
+        the same relative path): labels name feature variables, so they must be unique."""
+        if self._labels is None:
+            self._labels = {}
+            taken: set[str] = set()
+            for found in self.workspace.launch_files:
+                relative = self._relative(found)
+                self._labels[found] = found if relative in taken else relative
+                taken.add(relative)
+        return self._labels.get(file) or self._relative(file)
+
+    def _relative(self, file: str) -> str:
         for root in self.workspace.roots:
             relative = os.path.relpath(file, root)
             if not relative.startswith(".."):

@@ -7,7 +7,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 from urllib.parse import unquote
 
-import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -120,12 +119,8 @@ def test_root_named_like_a_file(tmp_path: Path, flamapy: Flamapy) -> None:
     assert flamapy.count(read) == count_configurations(model) == 3
 
 
-@pytest.mark.xfail(
-    raises=ValueError,
-    reason="features._order keys files by id, so extract() fails when two files share one",
-)
-def test_repeated_ids_get_distinct_names(tmp_path: Path, flamapy: Flamapy) -> None:
-    """Two roots holding the same relative path give two files with one id."""
+def test_same_relative_path_in_two_roots(tmp_path: Path, flamapy: Flamapy) -> None:
+    """Two roots holding the same relative path: the later file is named by its full path."""
     for root in ("one", "two"):
         launch = tmp_path / root / "pkg" / "launch"
         launch.mkdir(parents=True)
@@ -136,14 +131,14 @@ def test_repeated_ids_get_distinct_names(tmp_path: Path, flamapy: Flamapy) -> No
         )
     workspace = discover([str(tmp_path / "one"), str(tmp_path / "two")], ros_package_path="")
     model = extract(Analysis(workspace))
+    later = str(tmp_path / "two" / "pkg" / "launch" / "x.launch")
+    assert [f.id for f in model.files] == ["pkg/launch/x.launch", later]
     ids = model.feature_ids()
-    tree = Tree(model)
-    assert len({e.id for e in tree.entries}) == len(tree.entries) == len(ids)
-    if len(set(ids)) < len(ids):  # the repeated case this test is about
-        assert any("%~2" in e.id for e in tree.entries)
+    assert len(set(ids)) == len(ids)
     read = flamapy.uvl(uvl.write(model))
     assert len(set(flamapy.names(read))) == len(ids) + 1
-    assert flamapy.count(read) == count_configurations(model)
+    # each file off, or on with a=1 or another a (3 × 3), but not both on with a=1: /n_1 twice
+    assert flamapy.count(read) == count_configurations(model) == 8
 
 
 @given(st.text(max_size=12), st.text(max_size=12))
