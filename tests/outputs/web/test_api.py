@@ -39,6 +39,18 @@ def test_choose_applies_a_choice(examples: Live) -> None:
     assert (after["can_undo"], after["can_redo"]) == (True, False)
 
 
+def test_a_tab_naming_its_version_gets_only_what_changed(examples: Live) -> None:
+    reply = examples.open()
+    file = first_of(reply, "file")
+    body = {"session": reply["session"], "version": reply["version"]}
+    after = examples.post("/api/choose", {**body, "action": "select", "feature": file})
+    assert after["base"] == reply["version"] and after["version"] > reply["version"]
+    whole = examples.call("GET", f"/api/state?session={reply['session']}").json()
+    changed = {k for k, f in whole["features"].items() if f != reply["features"][k]}
+    assert file in changed and set(after["features"]) == changed
+    assert "configurations" in after and "conflicts" not in after  # unchanged fields are left out
+
+
 def test_two_sessions_never_see_each_others_choices(examples: Live) -> None:
     one, two = examples.open(), examples.open()
     assert one["session"] != two["session"]
@@ -115,6 +127,7 @@ BAD_CHOICES: dict[str, tuple[dict[str, object], int]] = {
     "set without a value": ({"action": "set", "feature": "ARG"}, 400),
     "too long a value": ({"action": "set", "feature": "ARG", "value": "x" * (MAX_TEXT + 1)}, 400),
     "unknown field": ({"action": "select", "feature": "FILE", "why": "not"}, 400),
+    "version not a number": ({"action": "select", "feature": "FILE", "version": "1"}, 400),
 }
 
 

@@ -150,7 +150,8 @@ class App:
     def assert_shows_server_state(self) -> dict[str, Any]:
         """The page shows exactly the state the server holds for its session."""
         server = self.server_state()
-        assert self.state["features"] == server["features"]
+        # the page builds its state from deltas; a refusal is in the answer only
+        assert {**self.state, "version": 0, "refused": []} == {**server, "version": 0}
         expected = {k: MARKS[f["state"]][f["derived"]] for k, f in server["features"].items()}
         assert self.marks() == expected
         drawn = [e for kind in ("nodes", "tests", "topics") for e in server["graph"].get(kind, [])]
@@ -209,7 +210,9 @@ def test_select_and_deselect_files(page: Any, examples: Live) -> None:
     assert app.marks()[control] == "(✓)"
     app.choose(robot, "select")  # clicking the pressed ✓ again withdraws the choice
     assert app.marks()[robot] == "·"
-    app.choose(robot, "deselect")
+    with page.expect_response("**/api/choose") as answer:
+        app.choose(robot, "deselect")
+    assert answer.value.json()["base"] == app.state["version"] - 1  # only what changed
     assert app.marks()[robot] == "✗"
     app.assert_shows_server_state()
 

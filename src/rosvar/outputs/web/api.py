@@ -3,6 +3,8 @@
 Every route is one entry of a table (method, path) → handler; every handler checks its
 fields before the engine sees them (known session, known action, known feature id, bounded
 text), and a bad request becomes an :class:`ApiError` with a 4xx status and a message.
+A request that names the ``version`` of the state its tab holds is answered with a delta
+against it (:mod:`rosvar.outputs.web.sessions`); the others get the whole state.
 Engine calls are serialised by one lock: the BDD manager is not thread-safe, and the HTTP
 server answers each connection in its own thread.
 """
@@ -16,7 +18,7 @@ from http import HTTPStatus
 from rosvar.configuration.choices import ACTIONS, ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.session import Session
-from rosvar.outputs.web.sessions import DEFAULT_CAPACITY, SessionStore
+from rosvar.outputs.web.sessions import DEFAULT_CAPACITY, SessionStore, Tab
 
 MAX_TEXT = 4096
 """Longest accepted string field (feature ids and typed values are far shorter)."""
@@ -42,6 +44,14 @@ def _text(fields: Mapping[str, object], name: str) -> str:
     if len(value) > MAX_TEXT:
         raise ApiError(HTTPStatus.BAD_REQUEST, f"field {name!r} is longer than {MAX_TEXT}")
     return value
+
+
+def _version(fields: Mapping[str, object]) -> int | None:
+    """The version of the state the tab holds, if it says."""
+    value = fields.get("version")
+    if value is None or (isinstance(value, int) and not isinstance(value, bool)):
+        return value
+    raise ApiError(HTTPStatus.BAD_REQUEST, "field 'version' must be an integer")
 
 
 def _only(fields: Mapping[str, object], allowed: set[str]) -> None:
@@ -89,53 +99,56 @@ class Api:
     def _open(self, query: Query, body: Body) -> Reply:
         _only(query, set())
         _only(body, set())
-        key, session = self._store.create()
-        return self._reply(key, session, session.current())
+        key, tab = self._store.create()
+        return self._reply(key, tab, tab.session.current(), None)
 
     def _state(self, query: Query, body: Body) -> Reply:
         _only(query, {"session"})
-        key, session = self._session(query)
-        return self._reply(key, session, session.current())
+        key, tab = self._session(query)
+        return self._reply(key, tab, tab.session.current(), None)
 
     def _choose(self, query: Query, body: Body) -> Reply:
         _only(query, set())
-        _only(body, {"session", "action", "feature", "value"})
-        key, session = self._session(body)
+        _only(body, {"session", "version", "action", "feature", "value"})
+        key, tab = self._session(body)
+        known = _version(body)
         choice = self._choice(body)
         try:
-            state = session.apply(choice)
+            state = tab.session.apply(choice)
         except ChoiceError as error:  # well-formed but meaningless to the engine
             raise ApiError(HTTPStatus.BAD_REQUEST, str(error)) from None
-        return self._reply(key, session, state)
+        return self._reply(key, tab, state, known)
 
     def _finish(self, query: Query, body: Body) -> Reply:
         """Every feature left at its default, as ordinary choices (undone one at a time)."""
         _only(query, set())
-        _only(body, {"session"})
-        key, session = self._session(body)
-        state = session.current()
+        _only(body, {"session", "version"})
+        key, tab = self._session(body)
+        known = _version(body)
+        state = tab.session.current()
         for choice in self._configurator.completion(state.choices):
-            state = session.apply(choice)
-        return self._reply(key, session, state)
+            state = tab.session.apply(choice)
+        return self._reply(key, tab, state, known)
 
     def _stepper(
         self, step: Callable[[Session], ConfigurationState]
     ) -> Callable[[Query, Body], Reply]:
         def route(query: Query, body: Body) -> Reply:
             _only(query, set())
-            _only(body, {"session"})
-            key, session = self._session(body)
-            return self._reply(key, session, step(session))
+            _only(body, {"session", "version"})
+            key, tab = self._session(body)
+            known = _version(body)
+            return self._reply(key, tab, step(tab.session), known)
 
         return route
 
     # -- checks ------------------------------------------------------------------------------
-    def _session(self, fields: Mapping[str, object]) -> tuple[str, Session]:
+    def _session(self, fields: Mapping[str, object]) -> tuple[str, Tab]:
         key = _text(fields, "session")
-        session = self._store.get(key)
-        if session is None:
+        tab = self._store.get(key)
+        if tab is None:
             raise ApiError(HTTPStatus.NOT_FOUND, "unknown or expired session")
-        return key, session
+        return key, tab
 
     def _choice(self, body: Body) -> UserChoice:
         action = _text(body, "action")
@@ -154,10 +167,10 @@ class Api:
         return UserChoice(action, feature, _text(body, "value"))
 
     @staticmethod
-    def _reply(key: str, session: Session, state: ConfigurationState) -> Reply:
-        return {
-            "session": key,
+    def _reply(key: str, tab: Tab, state: ConfigurationState, known: int | None) -> Reply:
+        document = {
             **state.to_json(),
-            "can_undo": session.can_undo,
-            "can_redo": session.can_redo,
+            "can_undo": tab.session.can_undo,
+            "can_redo": tab.session.can_redo,
         }
+        return {"session": key, **tab.answer(document, known)}

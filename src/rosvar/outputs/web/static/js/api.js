@@ -1,8 +1,13 @@
 // The server's JSON API, with one configuration session per browser tab.
 //
+// The client holds the tab's state and sends its version with every step: the server then
+// answers with what changed only (delta.js), which the client applies.
+//
 // The session id lives in sessionStorage, which belongs to one tab. A duplicated tab starts
 // with a copy of it, so at start-up a tab asks the others (BroadcastChannel) whether one of
 // them already holds its id, and opens a fresh session if so: two tabs never share choices.
+
+import { patch, touched } from "./delta.js";
 
 const KEY = "rosvar.session";
 const CHANNEL = "rosvar.sessions";
@@ -47,6 +52,7 @@ function claimedElsewhere(channel, id) {
 export class Client {
   constructor() {
     this.session = null;
+    this.state = null;
     this.channel = "BroadcastChannel" in window ? new BroadcastChannel(CHANNEL) : null;
     if (this.channel) {
       this.channel.addEventListener("message", (event) => {
@@ -62,7 +68,7 @@ export class Client {
     const known = sessionStorage.getItem(KEY);
     if (known && !(this.channel && await claimedElsewhere(this.channel, known))) {
       try {
-        return this.adopt(await request("GET", `/api/state?session=${encodeURIComponent(known)}`));
+        return await this.whole(known);
       } catch (error) {
         if (!(error instanceof ApiError && error.status === 404)) throw error;
       }
@@ -71,13 +77,21 @@ export class Client {
   }
 
   async open() {
-    return this.adopt(await request("POST", "/api/session", {}));
+    return this.receive(await request("POST", "/api/session", {}));
   }
 
-  adopt(state) {
+  async whole(session) {
+    return this.receive(await request("GET", `/api/state?session=${encodeURIComponent(session)}`));
+  }
+
+  // {state, changes}: the state after an answer, and what it changed (null: everything).
+  async receive(answer) {
+    const state = patch(this.state, answer);
+    if (state === null) return this.whole(answer.session); // out of step: ask for all of it
+    this.state = state;
     this.session = state.session;
     sessionStorage.setItem(KEY, state.session);
-    return state;
+    return { state, changes: touched(answer) };
   }
 
   choose(action, feature, value) {
@@ -92,6 +106,7 @@ export class Client {
   finish() { return this.post("/api/finish", {}); }
 
   async post(path, fields) {
-    return this.adopt(await request("POST", path, { session: this.session, ...fields }));
+    const version = this.state?.version;
+    return this.receive(await request("POST", path, { session: this.session, version, ...fields }));
   }
 }

@@ -1,6 +1,7 @@
 // Wires the page: every user action goes to the server, and every state it answers updates
-// the tree, the graph, the details and the bar at once. Actions run one after another, in
-// the order they were made.
+// the tree, the graph, the details and the bar at once (the tree and the graph only where
+// the answer says something changed). Actions run one after another, in the order they
+// were made.
 
 import { ApiError, Client } from "./api.js";
 import { Bar } from "./bar.js";
@@ -36,10 +37,11 @@ const graph = new GraphView($("graph"), (element) => {
   $("focus").disabled = !element;
 });
 
-function render(next) {
+// changes: what changed since the state rendered before (delta.js touched), null for all.
+function render(next, changes = null) {
   state = next;
-  tree.update(state);
-  graph.update(state);
+  tree.update(state, changes?.features ?? null);
+  graph.update(state, changes);
   bar.update(state);
   const counts = graph.counts();
   $("graph-counts").textContent = `${counts.nodes} nodes · ${counts.topics} topics`
@@ -54,10 +56,11 @@ function act(call) {
     document.body.classList.add("busy");
     bar.say("");
     try {
-      render(await call());
+      const answer = await call();
+      render(answer.state, answer.changes);
     } catch (error) {
       if (error instanceof ApiError && error.status === 404) {
-        render(await client.open()); // the server forgot this tab's session
+        render((await client.open()).state); // the server forgot this tab's session
         bar.say("Your session had expired: started over.", true);
       } else {
         bar.say(`Error: ${error.message}`, true);
@@ -91,7 +94,7 @@ function wireToolbars() {
 async function start() {
   wireToolbars();
   try {
-    const first = await client.start();
+    const { state: first } = await client.start();
     tree.build(first.features);
     render(first);
   } catch (error) {

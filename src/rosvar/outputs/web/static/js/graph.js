@@ -2,8 +2,8 @@
 // request) params, drawn with Cytoscape.js and a layered (dagre) layout.
 //
 // Graph ids are stable across steps, so a new state that keeps the same elements only
-// restyles them (present/undetermined, conflicts); the layout runs again only when elements
-// appear or disappear. Absent elements are not drawn.
+// restyles the ones that changed (present/undetermined, conflicts); the layout runs again
+// only when elements appear or disappear. Absent elements are not drawn.
 
 cytoscape.use(cytoscapeDagre);
 
@@ -85,9 +85,11 @@ export class GraphView {
     this.onSelect(this.selectedElement());
   }
 
-  update(state) {
+  // changes: what changed since the last update (delta.js touched), null for everything.
+  update(state, changes = null) {
     this.state = state;
-    this.render();
+    if (changes === null || changes.fields.has("conflicts")) this.render();
+    else if (changes.graph.size) this.render(changes.graph);
   }
 
   setOption(name, value) {
@@ -107,8 +109,9 @@ export class GraphView {
       namespaces.add(ns);
       return PREFIX.namespace + ns;
     };
+    // data.owner: the id of the graph entry the Cytoscape element is drawn for
     const add = (kind, item, label, classes) => {
-      const data = { id: PREFIX[kind] + item.id, kind, label, element: { kind, ...item } };
+      const data = { id: PREFIX[kind] + item.id, owner: item.id, kind, label, element: { kind, ...item } };
       const parent = group(item.name);
       if (parent) data.parent = parent;
       wanted.push({ group: "nodes", data, classes: [item.presence, ...classes].join(" ") });
@@ -130,7 +133,7 @@ export class GraphView {
       for (const nodeId of topic.nodes.filter((id) => shown.has(id))) {
         const undetermined = topic.presence === "undetermined" ? "undetermined" : "";
         wanted.push({ group: "edges", classes: undetermined,
-                      data: { id: `e:${topic.id}:${nodeId}`, source: PREFIX.node + nodeId, target: PREFIX.topic + topic.id } });
+                      data: { id: `e:${topic.id}:${nodeId}`, owner: topic.id, source: PREFIX.node + nodeId, target: PREFIX.topic + topic.id } });
       }
     }
     if (this.options.params) {
@@ -143,7 +146,7 @@ export class GraphView {
           if (!String(param.name).startsWith(`${nodeName}/`)) continue;
           for (const nodeId of ids) {
             wanted.push({ group: "edges", classes: param.presence === "undetermined" ? "undetermined" : "",
-                          data: { id: `e:${param.id}:${nodeId}`, source: PREFIX.node + nodeId, target: PREFIX.param + param.id } });
+                          data: { id: `e:${param.id}:${nodeId}`, owner: param.id, source: PREFIX.node + nodeId, target: PREFIX.param + param.id } });
           }
         }
       }
@@ -162,7 +165,8 @@ export class GraphView {
     return wanted;
   }
 
-  render() {
+  // changed: ids of the graph entries that changed (null: any may have).
+  render(changed = null) {
     if (!this.state) return;
     const wanted = this.elements(this.state.graph, this.state.conflicts);
     const signature = wanted.map((item) => `${item.data.id}>${item.data.parent ?? ""}`).sort().join("\n");
@@ -170,7 +174,10 @@ export class GraphView {
     const selected = cy.$(":selected").map((element) => element.id());
     cy.batch(() => {
       if (signature === this.signature) {
-        for (const item of wanted) cy.getElementById(item.data.id).data(item.data).classes(item.classes);
+        for (const item of wanted) {
+          if (changed && !changed.has(item.data.owner)) continue;
+          cy.getElementById(item.data.id).data(item.data).classes(item.classes);
+        }
       } else {
         cy.elements().remove();
         cy.add(wanted);

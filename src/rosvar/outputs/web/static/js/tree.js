@@ -189,9 +189,11 @@ export class FeatureTree {
   }
 
   // -- state ----------------------------------------------------------------------------------
-  update(state) {
+  // changed: the ids of the features that changed since the last update (null: all of them).
+  update(state, changed = null) {
     this.state = state;
-    for (const [id, node] of this.rows) {
+    for (const id of changed ?? this.rows.keys()) {
+      const node = this.rows.get(id);
       const feature = state.features[id];
       node.classList.remove("selected", "deselected", "unselected", "derived");
       node.classList.add(feature.state);

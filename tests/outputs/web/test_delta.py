@@ -1,0 +1,113 @@
+"""Deltas: applied to the state a tab holds, they give exactly the server's whole state."""
+
+from __future__ import annotations
+
+import json
+import random
+from typing import Any
+
+import pytest
+
+from outputs.web.live import configurator, corpus_system
+from rosvar.configuration.engine import Configurator
+from rosvar.outputs.web.api import Api
+from rosvar.outputs.web.delta import diff, patch
+
+STEPS = ("undo", "redo", "reset", "finish")
+
+
+def wire(document: dict[str, Any]) -> dict[str, Any]:
+    """The document as the page receives it (tuples become lists)."""
+    answer: dict[str, Any] = json.loads(json.dumps(document))
+    return answer
+
+
+def random_request(rng: random.Random, model: dict[str, Any]) -> tuple[str, dict[str, Any]]:
+    """A click of a user: mostly a choice on an open feature, sometimes undo/redo/reset/finish."""
+    key = {"session": model["session"], "version": model["version"]}
+    features = model["features"]
+    open_ = sorted(k for k, f in features.items() if f["state"] == "unselected")
+    if not open_ or rng.random() < 0.15:
+        return f"/api/{rng.choice(STEPS)}", key
+    feature = rng.choice(open_)
+    if features[feature]["value"] == "<other>":
+        return "/api/choose", {**key, "action": "set", "feature": features[feature]["parent"],
+                               "value": f"typed {rng.randrange(3)}"}  # fmt: skip
+    action = rng.choice(("select", "deselect"))
+    return "/api/choose", {**key, "action": action, "feature": feature}
+
+
+def replay(engine: Configurator, clicks: int, seed: int) -> int:
+    """Random clicks with deltas applied as the page does; returns how many came as deltas."""
+    api = Api(engine)
+    model = wire(api.handle("POST", "/api/session", {}, {}))
+    rng = random.Random(seed)
+    deltas = 0
+    for _ in range(clicks):
+        path, body = random_request(rng, model)
+        answer = wire(api.handle("POST", path, {}, body))
+        deltas += "base" in answer
+        model = patch(model, answer)
+        whole = wire(api.handle("GET", "/api/state", {"session": model["session"]}, {}))
+        # a refusal is in the answer only, the session's state has none
+        assert {**model, "version": 0, "refused": []} == {**whole, "version": 0}
+        assert all(r["choice"]["feature"] == body.get("feature") for r in model["refused"])
+    return deltas
+
+
+def test_deltas_rebuild_every_state_of_the_example(examples_engine: Configurator) -> None:
+    assert replay(examples_engine, clicks=60, seed=1) == 60
+
+
+@pytest.fixture(scope="module")
+def lizi_engine() -> Configurator:
+    return configurator([corpus_system("lizi")])
+
+
+def test_deltas_rebuild_every_state_of_lizi(lizi_engine: Configurator) -> None:
+    assert replay(lizi_engine, clicks=40, seed=2) == 40
+
+
+DOCUMENT: dict[str, Any] = {
+    "features": {"a": {"state": "unselected"}, "b": {"state": "unselected"}},
+    "graph": {
+        "nodes": [{"id": "n1", "x": 1}, {"id": "n2", "x": 2}, {"id": "n3", "x": 3}],
+        "params": [{"id": "p1"}],
+    },
+    "complete": False,
+    "command": None,
+    "version": 1,
+}
+
+
+def test_a_delta_holds_only_what_changed() -> None:
+    after = {
+        **DOCUMENT,
+        "features": {**DOCUMENT["features"], "b": {"state": "selected"}},
+        "graph": {
+            "nodes": [{"id": "n0"}, {"id": "n1", "x": 1}, {"id": "n3", "x": 4}],
+            "params": DOCUMENT["graph"]["params"],
+        },
+        "command": "roslaunch x y",
+    }
+    delta = wire(diff(DOCUMENT, after))
+    assert delta["features"] == {"b": {"state": "selected"}}
+    assert delta["graph"] == {
+        "nodes": {"removed": ["n2"], "put": [[0, {"id": "n0"}], [2, {"id": "n3", "x": 4}]]}
+    }
+    assert set(delta) == {"features", "graph", "command"}
+    assert patch(DOCUMENT, {**delta, "base": 1}) == after
+
+
+def test_entries_that_swap_places_are_sent_again() -> None:
+    nodes = DOCUMENT["graph"]["nodes"]
+    after = {**DOCUMENT, "graph": {**DOCUMENT["graph"], "nodes": [nodes[2], nodes[0], nodes[1]]}}
+    delta = wire(diff(DOCUMENT, after))
+    assert len(delta["graph"]["nodes"]["put"]) == 3
+    assert patch(DOCUMENT, {**delta, "base": 1}) == after
+
+
+def test_a_delta_against_another_version_is_refused() -> None:
+    with pytest.raises(ValueError, match="version"):
+        patch(DOCUMENT, {"base": 7, "complete": True})
+    assert patch(DOCUMENT, {"complete": True}) == {"complete": True}  # a whole document
