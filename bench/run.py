@@ -272,6 +272,8 @@ def measure_web(job: Job) -> Metrics:
     not an ``<other>`` slot, selected or deselected; a new session once the product is
     complete) is timed from sending each request to the last byte of its answer: the engine
     step, the JSON and the transfer. Refused choices count as well, being round trips too.
+    As the page does, each click names the version of the state held, is answered with a
+    delta and patched in; the patched state is checked against the server's whole one.
     """
     import http.client
     import random
@@ -280,6 +282,7 @@ def measure_web(job: Job) -> Metrics:
     from rosvar.analyses.features import extract
     from rosvar.configuration.engine import Configurator
     from rosvar.interpreter.analysis import Analysis
+    from rosvar.outputs.web.delta import patch
     from rosvar.outputs.web.server import make_server
     from rosvar.workspace import discover
 
@@ -303,9 +306,9 @@ def measure_web(job: Job) -> Metrics:
             if path == "/api/choose":
                 rounds.append((time.perf_counter() - wall) * 1000)
                 sizes.append(len(answer))
-            state: dict[str, Any] = json.loads(answer)
-            return state
+            return patch(state, json.loads(answer))
 
+        state: dict[str, Any] = {}
         state = call("/api/session", {})
         rng = random.Random(WEB_SEED)
         while len(rounds) < WEB_CLICKS:
@@ -320,8 +323,17 @@ def measure_web(job: Job) -> Metrics:
             feature = rng.choice(open_)
             kind = features[feature]["kind"]
             action = "select" if kind == "value" else rng.choice(("select", "deselect"))
-            body = {"session": state["session"], "action": action, "feature": feature}
+            body = {
+                "session": state["session"],
+                "version": state["version"],
+                "action": action,
+                "feature": feature,
+            }
             state = call("/api/choose", body)
+        connection.request("GET", f"/api/state?session={state['session']}")
+        whole = json.loads(connection.getresponse().read())
+        if {**state, "version": 0, "refused": []} != {**whole, "version": 0}:
+            raise AssertionError("the state patched from the answers is not the server's")
     except TimeoutError:
         if len(rounds) < 2:
             return {"web_timeout_s": WEB_BUDGET_S}

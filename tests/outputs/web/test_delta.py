@@ -111,3 +111,24 @@ def test_a_delta_against_another_version_is_refused() -> None:
     with pytest.raises(ValueError, match="version"):
         patch(DOCUMENT, {"base": 7, "complete": True})
     assert patch(DOCUMENT, {"complete": True}) == {"complete": True}  # a whole document
+
+
+def random_lists(rng: random.Random) -> tuple[list[dict[str, Any]], list[dict[str, Any]]]:
+    """Two lists of entries as states give them: some dropped, added, changed, or all moved."""
+    before = [{"id": f"e{n}", "v": 0} for n in range(rng.randrange(8))]
+    after = [e if rng.random() < 0.6 else {**e, "v": 1} for e in before if rng.random() < 0.7]
+    for n in range(rng.randrange(4)):
+        after.insert(rng.randrange(len(after) + 1), {"id": f"new{n}", "v": 2})
+    if rng.random() < 0.2:
+        rng.shuffle(after)
+    return before, after
+
+
+def test_patching_a_diff_gives_the_new_lists() -> None:
+    rng = random.Random(3)
+    for _ in range(2000):
+        before, after = random_lists(rng)
+        old = {"graph": {"nodes": before}, "version": 5}
+        new = {"graph": {"nodes": after}}
+        delta = wire(diff(old, new))
+        assert patch(old, {**delta, "base": 5})["graph"]["nodes"] == after

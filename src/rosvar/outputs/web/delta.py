@@ -76,20 +76,33 @@ def _same(old: object, new: object) -> bool:
 
 
 def _list_diff(before: Sequence[Entry], after: Sequence[Entry]) -> Document:
-    old = {entry["id"]: entry for entry in before}
+    """One walk over both lists: most entries are the same object at the same place."""
     put: list[tuple[int, Entry]] = []
-    kept: list[str] = []
+    removed: list[str] = []
+    places: dict[str, int] | None = None  # id → place in ``before``, built on first need
+    following = 0  # place in ``before`` of the next entry not yet matched
     for index, entry in enumerate(after):
-        known = old.get(entry["id"])
-        if known is not None:
-            kept.append(entry["id"])
-        if known is None or not _same(known, entry):
+        if following < len(before) and before[following] is entry:
+            following += 1
+            continue
+        key = entry["id"]
+        if following < len(before) and before[following]["id"] == key:
+            place = following
+        else:
+            if places is None:
+                places = {old["id"]: number for number, old in enumerate(before)}
+            found = places.get(key)
+            if found is None:  # a new entry
+                put.append((index, entry))
+                continue
+            place = found
+            if place < following:  # entries swapped places: send the list whole
+                return {"removed": list(places), "put": list(enumerate(after))}
+            removed.extend(old["id"] for old in before[following:place])
+        if before[place] != entry:
             put.append((index, entry))
-    present = set(kept)
-    removed = [entry["id"] for entry in before if entry["id"] not in present]
-    if len(kept) > 1 and kept != [entry["id"] for entry in before if entry["id"] in present]:
-        # entries swapped places: places relative to the kept ones would not hold
-        return {"removed": list(old), "put": list(enumerate(after))}
+        following = place + 1
+    removed.extend(old["id"] for old in before[following:])
     return {"removed": removed, "put": put}
 
 
