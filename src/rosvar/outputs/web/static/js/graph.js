@@ -1,9 +1,9 @@
 // The computation graph: ROS nodes (and test nodes), the topics they are wired to and (on
 // request) params, drawn with Cytoscape.js and a layered (dagre) layout.
 //
-// Graph ids are stable across steps, so a new state that keeps the same elements only
-// restyles the ones that changed (present/undetermined, conflicts); the layout runs again
-// only when elements appear or disappear. Absent elements are not drawn.
+// Graph ids are stable across steps, so a new state only restyles the elements that changed
+// (present/undetermined, conflicts) and removes the ones that became absent (absent elements
+// are not drawn); the layout runs again only when elements appear.
 
 cytoscape.use(cytoscapeDagre);
 
@@ -68,7 +68,6 @@ export class GraphView {
   constructor(container, onSelect) {
     this.cy = cytoscape({ container, style: STYLE, minZoom: 0.05, maxZoom: 4, boxSelectionEnabled: false });
     this.options = { params: false, groups: false };
-    this.signature = "";
     this.focused = null; // element id whose neighbourhood alone is shown
     this.needle = "";
     this.state = null;
@@ -165,30 +164,31 @@ export class GraphView {
     return wanted;
   }
 
-  // changed: ids of the graph entries that changed (null: any may have).
+  // changed: ids of the graph entries that changed (null: any may have). Elements that are
+  // no longer wanted are removed and the others keep their places; the layout runs again
+  // only when elements are added.
   render(changed = null) {
     if (!this.state) return;
-    const wanted = this.elements(this.state.graph, this.state.conflicts);
-    const signature = wanted.map((item) => `${item.data.id}>${item.data.parent ?? ""}`).sort().join("\n");
+    const wanted = new Map(this.elements(this.state.graph, this.state.conflicts).map((item) => [item.data.id, item]));
     const cy = this.cy;
     const selected = cy.$(":selected").map((element) => element.id());
+    const added = [];
     cy.batch(() => {
-      if (signature === this.signature) {
-        for (const item of wanted) {
-          if (changed && !changed.has(item.data.owner)) continue;
-          cy.getElementById(item.data.id).data(item.data).classes(item.classes);
-        }
-      } else {
-        cy.elements().remove();
-        cy.add(wanted);
-        // the same ids are the same elements: keep them selected across steps
-        for (const id of selected) cy.getElementById(id).select();
+      // gone, or moved into another namespace box (drawn again below)
+      cy.remove(cy.elements().filter((element) => {
+        const item = wanted.get(element.id());
+        return !item || item.data.parent !== element.data("parent");
+      }));
+      for (const item of wanted.values()) {
+        const element = cy.getElementById(item.data.id);
+        if (element.empty()) added.push(item);
+        else if (!changed || changed.has(item.data.owner)) element.data(item.data).classes(item.classes);
       }
+      cy.add(added);
+      // the same ids are the same elements: keep them selected across steps
+      for (const id of selected) cy.getElementById(id).select();
     });
-    if (signature !== this.signature) {
-      this.signature = signature;
-      this.layout();
-    }
+    if (added.length) this.layout();
     if (this.focused && cy.getElementById(this.focused).empty()) this.focused = null;
     this.applyVisibility();
     this.notifySelection();
