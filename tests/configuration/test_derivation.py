@@ -51,7 +51,7 @@ def test_decisions_agree_with_the_built_formula(ws: LaunchWorkspace) -> None:
         condition = manager.var(rng.choice(solver.variables)) | manager.var(
             rng.choice(solver.variables)
         )
-        presence, _values = derivation.presence(Bounds(condition, condition), decisions)
+        presence = derivation.presence(Bounds(condition, condition), decisions).presence
         expected_presence = (
             PRESENT if (restricted & ~condition) == manager.false
             else ABSENT if (restricted & condition) == manager.false

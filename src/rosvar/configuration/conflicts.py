@@ -9,15 +9,13 @@ otherwise, with its condition simplified under the choices.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-
-import dd.cudd as _cudd
 
 from rosvar.analyses.conflicts import Clash
 from rosvar.analyses.features import FeatureModel, conjoin
 from rosvar.configuration.derivation import Decisions
-from rosvar.configuration.lowering import Bounds, Lowering
+from rosvar.configuration.lowering import Lowering
 from rosvar.logic.conditions import BDD
 
 CERTAIN, POSSIBLE = "certain", "possible"
@@ -31,9 +29,11 @@ class Clashing:
 
     files: tuple[str, str]  # spelled ids
     names: tuple[str, ...]
-    both: BDD  # solver: both files selected
+    component: int
+    variables: frozenset[str]  # of the blocks it is judged on
+    possible: BDD  # the blocks ∧ both files ∧ the clash may happen
+    escapes: BDD  # the blocks ∧ both files ∧ the clash may not happen
     condition: BDD  # analysis manager, fixed atoms substituted
-    bounds: Bounds
 
 
 @dataclass(frozen=True)
@@ -53,10 +53,14 @@ class ConflictState:
 
 
 class Conflicts:
-    """Every clashing pair of the model, judged against ``tree ∧ requires``, per component.
+    """Every clashing pair of the model, judged against ``tree ∧ requires``.
 
-    A pair's files are linked by their exclusion, so they share a component of the feature
-    model; the pair's status only changes when a choice in that component does.
+    The tree is a conjunction of one part per file, so ``tree ∧ requires`` falls apart
+    into *blocks*: files linked by requires constraints (each file alone where a
+    component's requires are left out). The blocks are satisfiable under any valid
+    choices, so a pair's status only depends on the blocks its files and condition
+    touch: it is judged on their conjunction, small, and only again when a user
+    literal on their variables changes.
     """
 
     def __init__(
@@ -64,29 +68,18 @@ class Conflicts:
     ) -> None:
         solver = model.solver
         self.manager = manager = solver.manager
-        self.lowering = lowering
         component_of = {f: i for i, c in enumerate(solver.components) for f in c.files}
-        self._quantified = [set(c.variables) for c in solver.components]
-        parts: list[list[BDD]] = []
-        for component in solver.components:
-            others = set(solver.variables) - set(component.variables)
-            parts.append([manager.exist(others, solver.tree) if others else solver.tree])
-        for constraint, formula in zip(model.constraints, solver.constraints, strict=True):
-            if constraint.kind == "requires":
-                parts[component_of[constraint.files[0]]].append(formula)
-        # Where the whole component is too large a diagram, tree ∧ requires would be as
-        # large and slow to build: such a component is judged on its tree alone.
-        self.allowed = [
-            conjoin(manager, p) if c.formula.dag_size <= REQUIRES_LIMIT else p[0]
-            for c, p in zip(solver.components, parts, strict=True)
-        ]
+        blocks = _blocks(model, component_of)
+        block_of = {v: n for n, (variables, _formula) in enumerate(blocks) for v in variables}
         groups: dict[tuple[str, str], list[Clash]] = {}
         for clash in model.clashes:
             if clash.first.file != clash.second.file or clash.kind == "node":
                 key = tuple(sorted(clash.files))
                 groups.setdefault(key, []).append(clash)  # type: ignore[arg-type]
         features = {f.file: f for f in model.files}
-        self.pairs: list[tuple[int, Clashing]] = []
+        space = lowering.space
+        self.pairs: list[Clashing] = []
+        self._reading: dict[str, list[int]] = {}  # variable → the pairs whose blocks hold it
         for (first, second), clashes in sorted(groups.items()):
             condition = model.space.false
             for clash in clashes:
@@ -95,50 +88,94 @@ class Conflicts:
             if bounds.may == manager.false:
                 continue
             a, b = features[first], features[second]
+            both = solver.var(a.variable) & solver.var(b.variable)
+            support = (
+                manager.support(both)
+                | manager.support(bounds.may)
+                | manager.support(bounds.must)
+                | space.support(fixed)
+            )
+            mine = solver.components[component_of[a.id]].variables
+            touched = sorted({block_of[v] for v in support & set(mine)})
+            within = conjoin(manager, [blocks[n][1] for n in touched])
+            variables = frozenset(v for n in touched for v in blocks[n][0])
+            for variable in variables:
+                self._reading.setdefault(variable, []).append(len(self.pairs))
             self.pairs.append(
-                (
+                Clashing(
+                    (file_ids[first], file_ids[second]),
+                    tuple(sorted({f"{c.kind} {c.name}" for c in clashes})),
                     component_of[a.id],
-                    Clashing(
-                        (file_ids[first], file_ids[second]),
-                        tuple(sorted({f"{c.kind} {c.name}" for c in clashes})),
-                        solver.var(a.variable) & solver.var(b.variable),
-                        fixed,
-                        bounds,
-                    ),
+                    variables,
+                    within & both & bounds.may,
+                    within & both & ~bounds.must,
+                    fixed,
                 )
             )
-        self._judged: dict[tuple[int, BDD], ConflictState | None] = {}
-
-    def _satisfiable(self, component: int, cube: BDD) -> bool:
-        found = _cudd.and_exists(self.allowed[component], cube, self._quantified[component])
-        return bool(found != self.manager.false)
 
     def judge(
-        self, decisions: Decisions, describe: Callable[[BDD, Mapping[str, bool]], str]
-    ) -> list[ConflictState]:
-        found = []
-        for number, (component, pair) in enumerate(self.pairs):
-            cube = decisions.cubes[component]
-            key = (number, cube)
-            if key not in self._judged:
-                self._judged[key] = self._status(component, pair, cube, decisions, describe)
-            state = self._judged[key]
-            if state is not None:
-                found.append(state)
+        self,
+        decisions: Decisions,
+        describe: Callable[[BDD, Mapping[str, bool]], str],
+        before: tuple[Decisions, Sequence[ConflictState | None]] | None = None,
+    ) -> list[ConflictState | None]:
+        """Each pair's state (None: gone), judged again only where a user literal on its
+        blocks differs from ``before`` (an earlier step and its answer)."""
+        if before is None:
+            again: Iterable[int] = range(len(self.pairs))
+            found: list[ConflictState | None] = [None] * len(self.pairs)
+        else:
+            earlier, answer = before
+            changed = decisions.literals.items() ^ earlier.literals.items()
+            again = sorted({n for v, _ in changed for n in self._reading.get(v, ())})
+            found = list(answer)
+        for number in again:
+            found[number] = self._status(self.pairs[number], decisions, describe)
         return found
 
     def _status(
         self,
-        component: int,
         pair: Clashing,
-        cube: BDD,
         decisions: Decisions,
         describe: Callable[[BDD, Mapping[str, bool]], str],
     ) -> ConflictState | None:
-        both = cube & pair.both
-        if both == self.manager.false or not self._satisfiable(component, both & pair.bounds.may):
+        false = self.manager.false
+        cube = decisions.cubes[pair.component]  # its literals outside the blocks change nothing
+        if pair.possible & cube == false:
             return None
-        if not self._satisfiable(component, both & ~pair.bounds.must):
+        if pair.escapes & cube == false:
             return ConflictState(pair.files, pair.names, CERTAIN, None)
-        literals = {v: b for v, b in decisions.literals.items() if v in self._quantified[component]}
+        literals = {v: b for v, b in decisions.literals.items() if v in pair.variables}
         return ConflictState(pair.files, pair.names, POSSIBLE, describe(pair.condition, literals))
+
+
+def _blocks(
+    model: FeatureModel, component_of: Mapping[str, int]
+) -> list[tuple[frozenset[str], BDD]]:
+    """The files' variables linked by requires constraints, each set with its formula.
+
+    A component whose formula is too large a diagram keeps its requires out: ``tree ∧
+    requires`` would be as large and slow to build, so its files are judged on the tree.
+    """
+    solver = model.solver
+    manager = solver.manager
+    large = {i for i, c in enumerate(solver.components) if c.formula.dag_size > REQUIRES_LIMIT}
+    blocks: list[tuple[set[str], list[BDD]]] = []
+    for file in model.files:
+        variables = {str(solver.var(file.variable).var)} | {
+            str(solver.var(value.variable).var) for arg in file.args for value in arg.values
+        }
+        others = set(solver.variables) - variables
+        blocks.append((variables, [manager.exist(others, solver.tree)]))
+    for constraint, formula in zip(model.constraints, solver.constraints, strict=True):
+        if constraint.kind != "requires" or component_of[constraint.files[0]] in large:
+            continue
+        support = manager.support(formula)
+        linked = [b for b in blocks if b[0] & support]
+        rest = [b for b in blocks if not b[0] & support]
+        merged = (
+            set().union(*(b[0] for b in linked)),
+            [f for b in linked for f in b[1]] + [formula],
+        )
+        blocks = [*rest, merged]
+    return [(frozenset(variables), conjoin(manager, parts)) for variables, parts in blocks]

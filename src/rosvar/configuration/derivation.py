@@ -9,9 +9,11 @@ Two kinds of evidence answer the questions:
 * *witnesses*: valid configurations of a component, found by a depth-first walk of its BDD
   that follows the user literals. A variable that takes both values among the witnesses is
   open; so is an element whose condition is true in one witness and false in another.
-* *refutations*: a satisfiability check ``∃ all. formula ∧ literals ∧ v`` done inside CUDD
-  (``and_exists``), which never builds the restricted formula. Only what the witnesses leave
-  unsettled is checked; a check that succeeds is followed by a walk that adds a witness.
+* *refutations*: satisfiability checks ``∃ all. formula ∧ literals ∧ g`` done inside CUDD
+  (``and_exists``), which never build the restricted formula. What the witnesses leave
+  unsettled goes to one check (``g``: one of them differs from the witnesses), which
+  usually refutes the lot; when it does not, halving finds one that differs and a walk
+  adds a witness.
 
 Literals are added one at a time; each step keeps the witnesses that agree with the new
 literal and only looks at the variables still open in the literal's component.
@@ -21,7 +23,7 @@ from __future__ import annotations
 
 import random
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import dd.cudd as _cudd
 
@@ -31,8 +33,8 @@ from rosvar.logic.conditions import BDD
 
 PRESENT, ABSENT, UNDETERMINED = "present", "absent", "undetermined"
 WITNESSES = 24
-CACHED_ROOTS = 64  # formulas restricted by a step's literals, shared by that step's walks
 """Witnesses kept per component and step: enough to show most variables open."""
+CACHED_ROOTS = 64  # formulas restricted by a step's literals, shared by that step's walks
 
 
 @dataclass(frozen=True)
@@ -43,6 +45,7 @@ class Decisions:
     cubes: Mapping[int, BDD]  # the user literals of each component, conjoined
     decided: Mapping[str, bool]  # every variable fixed in all valid configurations
     witnesses: Mapping[int, tuple[int, ...]]  # per component: one bit per variable position
+    fixed: Mapping[int, tuple[int, int]]  # per component: the literals' positions and values
 
     @property
     def cube(self) -> BDD:
@@ -52,6 +55,28 @@ class Decisions:
         for cube in cubes:
             result &= cube
         return result
+
+    def valid(self, component: int, witness: int) -> bool:
+        """A valid configuration of ``component`` (found at any step) is still valid here
+        when it agrees with the user literals."""
+        mask, bits = self.fixed[component]
+        return witness & mask == bits
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """Presence of a condition at one step, and what it depended on.
+
+    ``values`` are the decided variables of its support. When restriction by them was not
+    enough, ``components`` are those whose literals the judgement read; an undetermined
+    one keeps ``witnesses`` (a valid configuration without it, one that may have it):
+    it stays undetermined while both agree with the user literals.
+    """
+
+    presence: str
+    values: Mapping[str, bool]
+    components: frozenset[int] = frozenset()
+    witnesses: tuple[int, int] | None = None
 
 
 class Derivation:
@@ -68,17 +93,20 @@ class Derivation:
         self._quantified = [set(c.variables) for c in solver.components]
         self.component_of = {v: i for i, c in enumerate(self.members) for v in c}
         self._supports: dict[BDD, frozenset[str]] = {}
-        self._restricted: dict[object, tuple[str | None, BDD, BDD, int | None]] = {}
-        self._judged: dict[tuple[BDD, BDD, BDD], str] = {}
-        self._roots: dict[tuple[int, frozenset[tuple[str, bool]]], BDD] = {}
+        self._restricted: dict[object, tuple[str | None, BDD, BDD, frozenset[int]]] = {}
+        self._judged: dict[tuple[BDD, BDD, BDD], tuple[str, tuple[int, int] | None]] = {}
+        self._roots: dict[tuple[int, BDD], BDD] = {}
+        self._counts: dict[tuple[int, BDD], int] = {}
         self._random = random.Random(0)  # reproducible witnesses, hence reproducible timings
         components = range(len(self.members))
         empty = Decisions(
             {},
             {i: manager.true for i in components},
             {},
-            {i: self._walks(i, {}, WITNESSES) for i in components},
+            {},
+            {i: (0, 0) for i in components},
         )
+        empty = replace(empty, witnesses={i: self._walks(i, empty, WITNESSES) for i in components})
         for i in components:
             if empty.witnesses[i]:  # else the model has no valid configuration at all
                 empty = self._settle(empty, i, self.members[i])
@@ -93,56 +121,58 @@ class Derivation:
         """``decisions`` plus the user literal ``variable = value``; None when unsatisfiable."""
         component = self.component_of[variable]
         atom = self.manager.var(variable)
-        cube = decisions.cubes[component] & (atom if value else ~atom)
-        literals = {**decisions.literals, variable: value}
-        cubes = {**decisions.cubes, component: cube}
+        bit = 1 << self.position[variable]
+        mask, bits = decisions.fixed[component]
+        step = Decisions(
+            {**decisions.literals, variable: value},
+            {**decisions.cubes, component: decisions.cubes[component] & (atom if value else ~atom)},
+            decisions.decided,
+            decisions.witnesses,
+            {**decisions.fixed, component: (mask | bit, bits | bit if value else bits)},
+        )
         known = decisions.decided.get(variable)
         if known is not None:
-            if known != value:
-                return None
-            return Decisions(literals, cubes, decisions.decided, decisions.witnesses)
-        bit = 1 << self.position[variable]
+            return step if known == value else None
         kept = tuple(w for w in decisions.witnesses[component] if bool(w & bit) == value)
         if not kept:
-            if not self.satisfiable(component, cube):
+            if not self.satisfiable(component, step.cubes[component]):
                 return None  # refuted inside CUDD: a walk would have to try every path
-            kept = self._walks(component, literals, 1)
-        step = Decisions(
-            literals,
-            cubes,
-            {**decisions.decided, variable: value},
-            {**decisions.witnesses, component: kept},
+            kept = self._walks(component, step, 1)
+        step = replace(
+            step,
+            decided={**decisions.decided, variable: value},
+            witnesses={**decisions.witnesses, component: kept},
         )
         return self._settle(step, component, self.members[component])
 
     def _settle(self, step: Decisions, component: int, candidates: Sequence[str]) -> Decisions:
         """Decide the open ``candidates``: open where witnesses disagree, else by refutation.
 
-        A new witness prefers, for every candidate the witnesses agree on so far, the value
-        not seen yet: one walk then shows many variables open at once.
+        The *suspects* are the candidates every witness gives the same value. One solver
+        question refutes them all at once (no valid configuration differs from the
+        witnesses on any of them), which is the common answer; otherwise halving finds
+        one that can differ, and a walk that prefers, for every suspect, the value not
+        seen yet shows it and usually many others open.
         """
         witnesses = list(step.witnesses[component])
-        cube = step.cubes[component]
         decided = dict(step.decided)
         ones, all_ones = 0, -1
         for witness in witnesses:
             ones, all_ones = ones | witness, all_ones & witness
-        for variable in candidates:
-            bit = 1 << self.position[variable]
-            if variable in decided or (ones & bit and not all_ones & bit):
-                continue
-            seen = bool(all_ones & bit)
-            atom = self.manager.var(variable)
-            if not self.satisfiable(component, cube & (~atom if seen else atom)):
-                decided[variable] = seen
-                continue
-            prefer = {
-                v: not all_ones >> self.position[v] & 1
-                for v in candidates
-                if v not in decided and not (ones ^ all_ones) >> self.position[v] & 1
-            }
-            found = self._walks(component, step.literals, 1, prefer, (variable, not seen))
-            for witness in found:
+        while True:
+            suspects = [
+                (variable, bool(all_ones >> self.position[variable] & 1))
+                for variable in candidates
+                if variable not in decided and not (ones ^ all_ones) >> self.position[variable] & 1
+            ]
+            if not suspects:
+                break
+            found = self._differing(component, step.cubes[component], suspects, decided)
+            if found is None:
+                break
+            variable, seen = found
+            prefer = {v: not s for v, s in suspects}
+            for witness in self._walks(component, step, 1, prefer, (variable, not seen)):
                 witnesses.append(witness)
                 ones, all_ones = ones | witness, all_ones & witness
         return Decisions(
@@ -150,39 +180,88 @@ class Derivation:
             step.cubes,
             decided,
             {**step.witnesses, component: tuple(witnesses[-WITNESSES:])},
+            step.fixed,
         )
+
+    def _differing(
+        self,
+        component: int,
+        cube: BDD,
+        suspects: Sequence[tuple[str, bool]],
+        decided: dict[str, bool],
+    ) -> tuple[str, bool] | None:
+        """A suspect some valid configuration sets to the value not seen (None: none does).
+
+        Suspects refuted on the way, a whole half at a time, go to ``decided``.
+        """
+        group = list(suspects)
+        if not self.satisfiable(component, cube & self._differs(group)):
+            decided.update(group)
+            return None
+        while len(group) > 1:
+            half = group[: len(group) // 2]
+            if self.satisfiable(component, cube & self._differs(half)):
+                group = half
+            else:
+                decided.update(half)
+                group = group[len(half) :]  # the other half holds one that differs
+        return group[0]
+
+    def _differs(self, literals: Sequence[tuple[str, bool]]) -> BDD:
+        """Some variable differs from its value in ``literals``."""
+        return ~self.manager.cube(dict(literals))
+
+    def root(self, component: int, decisions: Decisions) -> BDD:
+        """The component's formula with its user literals fixed (remembered per step)."""
+        cube = decisions.cubes[component]
+        key = (component, cube)
+        root = self._roots.get(key)
+        if root is None:
+            mine = {v: b for v, b in decisions.literals.items() if v in self._quantified[component]}
+            root = (
+                self.manager.let(mine, self.formulas[component])
+                if mine
+                else self.formulas[component]
+            )
+            if len(self._roots) >= CACHED_ROOTS:
+                self._roots.pop(next(iter(self._roots)))
+            self._roots[key] = root
+        return root
+
+    def count(self, decisions: Decisions) -> int:
+        """Valid configurations left: the product of the components' counts (each cached)."""
+        total = 1
+        for component, cube in decisions.cubes.items():
+            found = self._counts.get((component, cube))
+            if found is None:
+                mask = decisions.fixed[component][0]
+                free = len(self.members[component]) - mask.bit_count()
+                found = int(self.manager.count(self.root(component, decisions), nvars=free))
+                self._counts[(component, cube)] = found
+            total *= found
+        return total
 
     def _walks(
         self,
         component: int,
-        literals: Mapping[str, bool],
+        decisions: Decisions,
         count: int,
         prefer: Mapping[str, bool] | None = None,
         extra: tuple[str, bool] | None = None,
     ) -> tuple[int, ...]:
-        """Up to ``count`` valid configurations of ``component`` that agree with ``literals``
-        (and with the literal ``extra``, applied to the restriction by ``literals``, which is
-        remembered: one step's walks share it).
+        """Up to ``count`` valid configurations of ``component`` under the user literals of
+        ``decisions`` (and the literal ``extra``).
 
-        The formula is first restricted by the literals inside CUDD; in a reduced BDD every
-        node but FALSE reaches TRUE, so each walk goes from the root to TRUE without ever
-        backing up: where one branch is FALSE it takes the other, elsewhere the branch
-        ``prefer`` names, else a random one.
+        In a reduced BDD every node but FALSE reaches TRUE, so each walk of the restricted
+        formula goes from the root to TRUE without ever backing up: where one branch is
+        FALSE it takes the other, elsewhere the branch ``prefer`` names, else a random one.
         """
         manager = self.manager
         true, false = manager.true, manager.false
         coin = self._random.getrandbits
         members = self.members[component]
-        fixed = {v: literals[v] for v in members if v in literals}
-        key = (component, frozenset(fixed.items()))
-        root = self._roots.get(key)
-        if root is None:
-            root = self.formulas[component]
-            if fixed:
-                root = manager.let(fixed, root)
-            if len(self._roots) >= CACHED_ROOTS:
-                self._roots.pop(next(iter(self._roots)))
-            self._roots[key] = root
+        literals = decisions.literals
+        root = self.root(component, decisions)
         if extra is not None:
             root = manager.let(dict([extra]), root)
             literals = {**literals, extra[0]: extra[1]}
@@ -218,12 +297,12 @@ class Derivation:
             found.append(bits)
         return tuple(found)
 
-    def presence(self, bounds: Bounds, decisions: Decisions) -> tuple[str, dict[str, bool]]:
-        """Present, absent or undetermined, and the decided variables it was restricted by.
+    def presence(self, bounds: Bounds, decisions: Decisions) -> Verdict:
+        """Present, absent or undetermined, and what the verdict depended on.
 
         Restricting by the decided variables settles most conditions; the witnesses show
         most of the rest undetermined; only what is left goes to the solver. Answers are
-        remembered: most elements keep theirs from one step to the next.
+        remembered: most conditions keep theirs from one step to the next.
         """
         support = self._support(bounds.may) | self._support(bounds.must)
         values = {v: decisions.decided[v] for v in support if v in decisions.decided}
@@ -232,53 +311,59 @@ class Derivation:
         if restricted is None:
             restricted = self._restrict(bounds, values, support - values.keys())
             self._restricted[key] = restricted
-        verdict, must, may, component = restricted
+        verdict, must, may, components = restricted
         if verdict is not None:
-            return verdict, values
+            return Verdict(verdict, values)
+        (component,) = components if len(components) == 1 else (None,)
         cube = decisions.cube if component is None else decisions.cubes[component]
         judged = self._judged.get((must, may, cube))
         if judged is None:
             judged = self._judge(must, may, component, decisions)
             self._judged[(must, may, cube)] = judged
-        return judged, values
+        return Verdict(judged[0], values, components, judged[1])
 
     def _restrict(
         self, bounds: Bounds, values: Mapping[str, bool], open_: frozenset[str]
-    ) -> tuple[str | None, BDD, BDD, int | None]:
-        """The verdict restriction alone gives, else what the solver must judge."""
+    ) -> tuple[str | None, BDD, BDD, frozenset[int]]:
+        """The verdict restriction alone gives, else what the solver must judge: the
+        restricted bounds and the components of their open variables."""
         must = self.cofactor(bounds.must, values)
         may = self.cofactor(bounds.may, values)
         if must == self.manager.true:
-            return PRESENT, must, may, None
+            return PRESENT, must, may, frozenset()
         if may == self.manager.false:
-            return ABSENT, must, may, None
+            return ABSENT, must, may, frozenset()
         if not open_ or (must == may and len(open_) == 1):
             # only an <other> text decides it, or one open variable (it takes both values)
-            return UNDETERMINED, must, may, None
-        components = {self.component_of[v] for v in open_}
+            return UNDETERMINED, must, may, frozenset()
         # conditions over several components are rare (no constraint links their files)
-        return None, must, may, components.pop() if len(components) == 1 else None
+        return None, must, may, frozenset(self.component_of[v] for v in open_)
 
-    def _judge(self, must: BDD, may: BDD, component: int | None, decisions: Decisions) -> str:
+    def _judge(
+        self, must: BDD, may: BDD, component: int | None, decisions: Decisions
+    ) -> tuple[str, tuple[int, int] | None]:
+        """The verdict, with the witnesses that show it undetermined when there are some."""
         if component is None:
             everything, cube = self.solver.formula, decisions.cube
             if _cudd.and_exists(everything, cube & ~must, self._all) == self.manager.false:
-                return PRESENT
+                return PRESENT, None
             if _cudd.and_exists(everything, cube & may, self._all) == self.manager.false:
-                return ABSENT
-            return UNDETERMINED
-        sometimes_not = sometimes = False
+                return ABSENT, None
+            return UNDETERMINED, None
+        without = within = None
         for witness in decisions.witnesses[component]:
-            sometimes_not |= not self._holds(must, witness)
-            sometimes |= self._holds(may, witness)
-            if sometimes and sometimes_not:
-                return UNDETERMINED
+            if without is None and not self._holds(must, witness):
+                without = witness
+            if within is None and self._holds(may, witness):
+                within = witness
+            if without is not None and within is not None:
+                return UNDETERMINED, (without, within)
         cube = decisions.cubes[component]
-        if not sometimes_not and not self.satisfiable(component, cube & ~must):
-            return PRESENT
-        if not sometimes and not self.satisfiable(component, cube & may):
-            return ABSENT
-        return UNDETERMINED
+        if without is None and not self.satisfiable(component, cube & ~must):
+            return PRESENT, None
+        if within is None and not self.satisfiable(component, cube & may):
+            return ABSENT, None
+        return UNDETERMINED, None
 
     def _holds(self, u: BDD, witness: int) -> bool:
         """The truth of ``u`` in a witness: one path from the root down."""
@@ -289,12 +374,8 @@ class Derivation:
         return bool(u == self.manager.true) != flipped
 
     def cofactor(self, u: BDD, values: Mapping[str, bool]) -> BDD:
-        """``u`` with ``values`` fixed, one variable at a time (dd's ``let`` with Booleans
-        builds a cube over every variable of the manager)."""
-        true, false = self.manager.true, self.manager.false
-        for name, value in values.items():
-            u = self.manager.let({name: true if value else false}, u)
-        return u
+        """``u`` with ``values`` fixed."""
+        return self.manager.let(dict(values), u) if values else u
 
     def _support(self, u: BDD) -> frozenset[str]:
         found = self._supports.get(u)

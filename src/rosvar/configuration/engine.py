@@ -2,15 +2,17 @@
 
 A :class:`Configurator` is built once per workspace (feature model, lowered presence
 conditions, the variational graph) and answers any list of choices, statelessly. Choices
-are replayed in order; the solver's answer after each prefix is cached, so a session that
-adds one choice at a time pays for one step.
+are replayed in order and every prefix's replay is cached, so a session that adds one
+choice at a time pays for one step. What a list of literals shows (presences, graph
+entries, conflicts) is derived from the longest earlier list it extends: only what the
+new literals can change is judged again, and unchanged entries stay the same objects.
 """
 
 from __future__ import annotations
 
 from collections import OrderedDict
-from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 from rosvar.analyses.features import FeatureModel, explain
@@ -21,6 +23,7 @@ from rosvar.configuration.conflicts import Conflicts, ConflictState
 from rosvar.configuration.derivation import ABSENT, PRESENT, Decisions, Derivation
 from rosvar.configuration.graph import Element, Fields, Values, VariationalGraph
 from rosvar.configuration.lowering import Lowering
+from rosvar.configuration.presence import Judged, Presences, Typed
 from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import LaunchModel
 from rosvar.logic.conditions import BDD
@@ -121,6 +124,29 @@ class _Effective:
     text: str | None = None
 
 
+@dataclass(frozen=True)
+class _Replay:
+    """A list of choices replayed: the accepted and refused ones, and the literals."""
+
+    accepted: tuple[UserChoice, ...]
+    refused: tuple[Refusal, ...]
+    effective: tuple[_Effective, ...]
+    decisions: Decisions
+
+
+@dataclass(frozen=True)
+class _View:
+    """What a list of literals (with its typed texts) shows, kept to derive longer lists'."""
+
+    decisions: Decisions
+    texts: Mapping[str, str]  # arg id → its <other> text
+    typed: Typed
+    presences: list[Judged]  # per condition of ``Presences``
+    entries: list[list[Fields]]  # per element of the graph
+    conflicts: list[ConflictState | None]  # per pair of ``Conflicts``
+    graph: Graph
+
+
 class Configurator:
     """Built once per workspace; answers any list of user choices (stateless)."""
 
@@ -144,45 +170,98 @@ class Configurator:
             entry.path: self.lowering.bounds(self.graph.launched[entry.path])
             for entry in self.catalog.files
         }
+        self.presences = Presences(
+            self.graph.elements, self.derivation, self.lowering, self._describe
+        )
+        self._elements_of: list[list[int]] = [[] for _ in self.presences.conditions]
+        for index, condition in enumerate(self.presences.of_element):
+            self._elements_of[condition].append(index)
+        self._inputs_read: dict[str, list[int]] = {}  # value variable or arg id → elements
+        self._paths = paths = {entry.path: entry for entry in self.catalog.files}
+        self._files = {entry.id: entry for entry in self.catalog.files}
+        for index, element in enumerate(self.graph.elements):
+            for arg in paths[element.entry].feature.args if element.inputs else ():
+                if arg.input in element.inputs:
+                    arg_id = f"{paths[element.entry].id}:{arg.name}"
+                    for feature, _value in self.catalog.values_of(arg_id):
+                        self._inputs_read.setdefault(feature.variable, []).append(index)
+                    self._inputs_read.setdefault(arg_id, []).append(index)
+        self._of_kind: dict[str, list[int]] = {}
+        for index, element in enumerate(self.graph.elements):
+            self._of_kind.setdefault(element.kind, []).append(index)
+        self._others = [
+            (arg_id, feature.variable)
+            for arg_id, (_arg, values) in self.catalog.args.items()
+            for feature, value in values
+            if value.slot is OTHER
+        ]
+        self._feature_states = {
+            feature.id: {
+                (decided, chosen): FeatureState(
+                    feature.kind,
+                    feature.file,
+                    feature.arg,
+                    feature.value,
+                    feature.parent,
+                    "unselected" if decided is None else "selected" if decided else "deselected",
+                    decided is not None and not chosen,
+                )
+                for decided in (None, True, False)
+                for chosen in (True, False)
+            }
+            for feature in self.catalog
+        }
         self._steps: OrderedDict[tuple[tuple[str, bool], ...], Decisions] = OrderedDict()
+        self._replays: OrderedDict[tuple[UserChoice, ...], _Replay] = OrderedDict()
+        self._start = _Replay((), (), (), self.derivation.initial)
+        self._views: OrderedDict[tuple[tuple[str, bool, str | None], ...], _View] = OrderedDict()
         self._rendered: dict[
             tuple[str, frozenset[tuple[Input, str | None]] | None], list[Fields]
         ] = {}
-        self._counts: dict[BDD, int] = {}  # by a component's cube of user literals
         self._entries: dict[str, tuple[tuple[str, str | None], list[Fields]]] = {}
         self._described: dict[tuple[BDD, frozenset[tuple[str, bool]]], str] = {}
+        self._initial_view = self._view(self._start)
 
     # -- choices -------------------------------------------------------------------------
     def state(self, choices: Sequence[UserChoice]) -> ConfigurationState:
-        effective: list[_Effective] = []
-        accepted: list[UserChoice] = []
-        refused: list[Refusal] = []
-        decisions = self.derivation.initial
-        for choice in choices:
-            feature = self.catalog.lookup(choice.feature)
-            if choice.action == "unselect":
-                effective = [e for e in effective if feature.id not in e.targets]
-                found = self._decisions(effective)
-                assert found is not None, "a part of an accepted list was refused"
-                decisions = found
-                accepted.append(choice)
-                continue
-            try:
-                entry = self._literal(choice, feature)
-            except _Refused as refusal:
-                refused.append(Refusal(choice, str(refusal)))
-                continue
-            kept = effective
-            if choice.action == "set":  # a new value replaces the arg's earlier one
-                kept = [e for e in effective if feature.id not in e.targets]
-            after = self._decisions([*kept, entry])
-            if after is None:
-                refused.append(Refusal(choice, self._reason(kept, entry)))
-                continue
-            effective = [*kept, entry]
-            decisions = after
-            accepted.append(choice)
-        return self._answer(accepted, refused, effective, decisions)
+        return self._answer(self._replay(tuple(choices)))
+
+    def _replay(self, choices: tuple[UserChoice, ...]) -> _Replay:
+        """The replay of ``choices``, from the longest prefix replayed before."""
+        length = len(choices)
+        while length and choices[:length] not in self._replays:
+            length -= 1
+        replay = self._replays[choices[:length]] if length else self._start
+        for position in range(length, len(choices)):
+            replay = self._apply(replay, choices[position])
+            self._replays[choices[: position + 1]] = replay
+        if choices:
+            self._replays.move_to_end(choices)
+        while len(self._replays) > CACHED_STEPS:
+            self._replays.popitem(last=False)
+        return replay
+
+    def _apply(self, replay: _Replay, choice: UserChoice) -> _Replay:
+        """``replay`` with one more choice: accepted, or refused with the reason."""
+        feature = self.catalog.lookup(choice.feature)
+        accepted = (*replay.accepted, choice)
+        if choice.action == "unselect":
+            effective = tuple(e for e in replay.effective if feature.id not in e.targets)
+            found = self._decisions(effective)
+            assert found is not None, "a part of an accepted list was refused"
+            return _Replay(accepted, replay.refused, effective, found)
+        try:
+            entry = self._literal(choice, feature)
+        except _Refused as refusal:
+            return replace(replay, refused=(*replay.refused, Refusal(choice, str(refusal))))
+        kept = replay.effective
+        if choice.action == "set":  # a new value replaces the arg's earlier one
+            kept = tuple(e for e in kept if feature.id not in e.targets)
+        after = self._decisions([*kept, entry])
+        if after is None:
+            reason = self._reason(kept, entry)
+            return replace(replay, refused=(*replay.refused, Refusal(choice, reason)))
+        return _Replay(accepted, replay.refused, (*kept, entry), after)
 
     def completion(self, choices: Sequence[UserChoice]) -> list[UserChoice]:
         """Choices that finish ``choices`` with defaults: open files off, open args at default."""
@@ -285,71 +364,119 @@ class Configurator:
         return f"{text}: {'; '.join(because)}"
 
     # -- the answer ---------------------------------------------------------------------
-    def _answer(
-        self,
-        accepted: list[UserChoice],
-        refused: list[Refusal],
-        effective: Sequence[_Effective],
-        decisions: Decisions,
-    ) -> ConfigurationState:
-        chosen = {t for e in effective for t in e.targets}
-        features: dict[str, FeatureState] = {}
-        for feature in self.catalog:
-            decided = decisions.decided.get(feature.variable)
-            state = "unselected" if decided is None else "selected" if decided else "deselected"
-            features[feature.id] = FeatureState(
-                feature.kind,
-                feature.file,
-                feature.arg,
-                feature.value,
-                feature.parent,
-                state,
-                state != "unselected" and feature.id not in chosen,
-            )
-        texts = {e.arg: e.text for e in effective if e.arg is not None and e.text is not None}
-        values = {entry.path: self._values(entry, decisions, texts) for entry in self.catalog.files}
-        unselected = sum(1 for f in features.values() if f.state == "unselected")
-        complete = len(decisions.decided) == len(self.derivation.variables)
+    def _answer(self, replay: _Replay) -> ConfigurationState:
+        decisions = replay.decisions
+        view = self._view(replay)
+        chosen = {t for e in replay.effective for t in e.targets}
+        states, decided = self._feature_states, decisions.decided
+        features = {
+            f.id: states[f.id][decided.get(f.variable), f.id in chosen] for f in self.catalog
+        }
+        texts = _texts(replay.effective)
+        complete = len(decided) == len(self.derivation.variables)
         launches = self._launches(decisions, texts) if complete else None
         commands = group(launches or [])
         workspace = self.analysis.workspace
         command = "\n".join(command_line(g, workspace) for g in commands) if launches else None
         return ConfigurationState(
-            choices=accepted,
-            refused=refused,
+            choices=list(replay.accepted),
+            refused=list(replay.refused),
             features=features,
-            conflicts=self.conflicts.judge(decisions, self._describe),
-            graph=self._graph(decisions, values, texts),
+            conflicts=[c for c in view.conflicts if c is not None],
+            graph=view.graph,
             complete=complete,
             command=command,
-            counter=lambda: self._count(decisions),
-            unselected=unselected,
+            counter=lambda: self.derivation.count(decisions),
+            unselected=sum(1 for f in features.values() if f.state == "unselected"),
             commands=commands,
             untyped=[
-                arg
-                for arg, values in self.catalog.args.items()
-                for feature, value in values[1]
-                if value.slot is OTHER
-                and decisions.decided.get(feature.variable)
-                and arg not in texts
+                arg for arg, variable in self._others if decided.get(variable) and arg not in texts
             ],
         )
 
-    def _count(self, decisions: Decisions) -> int:
-        """Valid configurations left: the product of the components' counts (each cached)."""
-        derivation = self.derivation
-        total = 1
-        for component, cube in decisions.cubes.items():
-            found = self._counts.get(cube)
-            if found is None:
-                members = derivation.members[component]
-                fixed = {v: b for v, b in decisions.literals.items() if v in set(members)}
-                formula = derivation.cofactor(derivation.formulas[component], fixed)
-                free = len(members) - len(fixed)
-                found = int(derivation.manager.count(formula, nvars=free))
-                self._counts[cube] = found
-            total *= found
-        return total
+    def _view(self, replay: _Replay) -> _View:
+        """The view of the replay's literals, derived from the longest earlier list's."""
+        key = tuple((e.variable, e.value, e.text) for e in replay.effective)
+        length = len(key)
+        while length and key[:length] not in self._views:
+            length -= 1
+        if length == len(key) and key:
+            self._views.move_to_end(key)
+            return self._views[key]
+        before = self._views[key[:length]] if length else None
+        if before is None and key:
+            before = self._initial_view
+        view = self._derive(replay, before)
+        if key:
+            self._views[key] = view
+            while len(self._views) > CACHED_STEPS:
+                self._views.popitem(last=False)
+        return view
+
+    def _derive(self, replay: _Replay, before: _View | None) -> _View:
+        """The view of ``replay`` from ``before`` (an earlier step of its literals, or none):
+        elements are rendered again only where their condition's verdict or the strings
+        their fields read changed."""
+        decisions = replay.decisions
+        texts = _texts(replay.effective)
+        typed = self._typed(texts)
+        if before is None:
+            presences = self.presences.judge(decisions, typed)
+            conflicts = self.conflicts.judge(decisions, self._describe)
+            entries: list[list[Fields]] = [[] for _ in self.graph.elements]
+            again: Iterable[int] = range(len(self.graph.elements))
+        else:
+            presences = self.presences.judge(
+                decisions, typed, (before.decisions, before.typed, before.presences)
+            )
+            conflicts = self.conflicts.judge(
+                decisions, self._describe, (before.decisions, before.conflicts)
+            )
+            entries = list(before.entries)
+            again = self._rerendered(decisions, texts, before, presences)
+        values: dict[str, Values] = {}
+        for index in again:
+            element = self.graph.elements[index]
+            judged = presences[self.presences.of_element[index]]
+            if element.entry not in values and element.inputs:
+                values[element.entry] = self._values(element.entry, decisions, texts)
+            entries[index] = self._element_entries(element, judged, values)
+        graph = Graph(
+            **{
+                f"{kind}s": [fields for index in indices for fields in entries[index]]
+                for kind, indices in self._of_kind.items()
+            }
+        )
+        return _View(decisions, texts, typed, presences, entries, conflicts, graph)
+
+    def _rerendered(
+        self,
+        decisions: Decisions,
+        texts: Mapping[str, str],
+        before: _View,
+        presences: Sequence[Judged],
+    ) -> set[int]:
+        """Elements whose verdict or read strings differ from ``before``."""
+        again: set[int] = set()
+        for condition, judged in enumerate(presences):
+            earlier = before.presences[condition]
+            if judged is not earlier and judged.shown != earlier.shown:
+                again.update(self._elements_of[condition])
+        changed = decisions.decided.items() ^ before.decisions.decided.items()
+        for variable, _value in changed:
+            again.update(self._inputs_read.get(variable, ()))
+        for arg in texts.keys() | before.texts.keys():
+            if texts.get(arg) != before.texts.get(arg):
+                again.update(self._inputs_read.get(arg, ()))
+        return again
+
+    def _typed(self, texts: Mapping[str, str]) -> Typed:
+        """Entry file → the ``<other>`` texts typed for its args."""
+        typed: dict[str, dict[Input, str]] = {}
+        for arg_id, text in texts.items():
+            path = self._files[self.catalog.features[arg_id].file].path
+            typed.setdefault(path, {})[self.catalog.args[arg_id][0].input] = text
+        return typed
 
     def _describe(self, condition: BDD, values: Mapping[str, bool]) -> str:
         """``condition`` simplified under ``values`` (decided variables), for people."""
@@ -361,8 +488,9 @@ class Configurator:
             self._described[key] = text
         return text
 
-    def _values(self, entry: FileEntry, decisions: Decisions, texts: Mapping[str, str]) -> Values:
+    def _values(self, path: str, decisions: Decisions, texts: Mapping[str, str]) -> Values:
         """Concrete strings of a file's inputs as far as the choices fix them."""
+        entry = self._paths[path]
         concrete: dict[Input, str] = dict(self.lowering.concrete)
         for arg in entry.feature.args:
             text = self._arg_text(entry, arg.name, decisions, texts)
@@ -384,61 +512,32 @@ class Configurator:
                 return str(value.slot)
         return None
 
-    def _graph(
-        self, decisions: Decisions, values: Mapping[str, Values], texts: Mapping[str, str]
-    ) -> Graph:
-        graph = Graph()
-        lists = {
-            "node": graph.nodes,
-            "test": graph.tests,
-            "param": graph.params,
-            "topic": graph.topics,
-            "error": graph.errors,
-        }
-        judged: dict[tuple[BDD, BDD], tuple[str, dict[str, bool]]] = {}
-        typed: dict[str, dict[Input, str]] = {}  # entry file → its args' <other> texts
-        for entry in self.catalog.files:
-            for arg in entry.feature.args:
-                text = texts.get(f"{entry.id}:{arg.name}")
-                if text is not None:
-                    typed.setdefault(entry.path, {})[arg.input] = text
-        for element in self.graph.elements:
-            bounds = element.bounds
-            if not bounds.exact and element.entry in typed:
-                bounds = self.lowering.decide(element.condition, typed[element.entry])
-            key = (bounds.must, bounds.may)
-            verdict = judged.get(key)
-            if verdict is None:
-                verdict = self.derivation.presence(bounds, decisions)
-                judged[key] = verdict
-            presence, restricted = verdict
-            if presence == ABSENT and element.kind == "error":
-                continue
-            condition = (
-                None
-                if presence in (PRESENT, ABSENT)
-                else self._describe(element.condition, restricted)
-            )
-            static = not element.inputs or presence == ABSENT
-            entries = self._entries.get(element.id) if static else None
-            if entries is None or entries[0] != (presence, condition):
-                shown = self._fields(element, None if presence == ABSENT else values)
-                extra: Fields = {"nodes": element.nodes} if element.kind == "topic" else {}
-                made = [
-                    {
-                        **fields,
-                        **extra,
-                        "presence": presence,
-                        "condition": condition,
-                        "id": element.id if number == 0 else f"{element.id}/{number}",
-                    }
-                    for number, fields in enumerate(shown)
-                ]
-                entries = ((presence, condition), made)
-                if static:  # the same entries serve every state with this verdict
-                    self._entries[element.id] = entries
-            lists[element.kind].extend(entries[1])
-        return graph
+    def _element_entries(
+        self, element: Element, judged: Judged, values: Mapping[str, Values]
+    ) -> list[Fields]:
+        """The element's graph entries: none for an absent error, else one per variant."""
+        presence, condition = judged.shown
+        if presence == ABSENT and element.kind == "error":
+            return []
+        static = not element.inputs or presence == ABSENT
+        entries = self._entries.get(element.id) if static else None
+        if entries is None or entries[0] != (presence, condition):
+            shown = self._fields(element, None if presence == ABSENT else values)
+            extra: Fields = {"nodes": element.nodes} if element.kind == "topic" else {}
+            made = [
+                {
+                    **fields,
+                    **extra,
+                    "presence": presence,
+                    "condition": condition,
+                    "id": element.id if number == 0 else f"{element.id}/{number}",
+                }
+                for number, fields in enumerate(shown)
+            ]
+            entries = ((presence, condition), made)
+            if static:  # the same entries serve every state with this verdict
+                self._entries[element.id] = entries
+        return entries[1]
 
     def _fields(self, element: Element, values: Mapping[str, Values] | None) -> list[Fields]:
         """The element's fields: with the state's values, or symbolic (``values`` None).
@@ -458,8 +557,7 @@ class Configurator:
         """The launched files and their args; None while an <other> value has no text."""
         launches = []
         for entry in self.catalog.files:
-            presence, _ = self.derivation.presence(self._launched[entry.path], decisions)
-            if presence != PRESENT:
+            if self.derivation.presence(self._launched[entry.path], decisions).presence != PRESENT:
                 continue
             model = self.analysis.model(entry.path)
             reads: dict[str, str | None] = {}
@@ -492,6 +590,11 @@ class Configurator:
             if decisions.decided.get(feature.variable):
                 return value.slot
         return None
+
+
+def _texts(effective: Iterable[_Effective]) -> dict[str, str]:
+    """Arg id → the text typed for its ``<other>`` value."""
+    return {e.arg: e.text for e in effective if e.arg is not None and e.text is not None}
 
 
 class _Refused(Exception):

@@ -1,0 +1,135 @@
+"""Presence of the graph's conditions, carried from one step to the next.
+
+Graph elements share conditions (every element of one branch of a file has the same), so
+verdicts are kept per distinct condition. A verdict depends on the decided variables of
+the condition's support, on the ``<other>`` texts typed for its file's args (they decide
+open predicates) and, when restriction by the decided variables was not enough, on the
+user literals of the components the solver judged it in. From an earlier step of the same
+list of literals, a condition is judged again only when one of those changed, and even
+then not when the solver found it present or absent (more literals cannot undo that) or
+when the witnesses that showed it undetermined still agree with the literals.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass
+
+from rosvar.configuration.derivation import UNDETERMINED, Decisions, Derivation, Verdict
+from rosvar.configuration.graph import Element
+from rosvar.configuration.lowering import Bounds, Lowering
+from rosvar.logic.conditions import BDD
+from rosvar.logic.inputs import Input
+
+Typed = Mapping[str, Mapping[Input, str]]
+"""Entry file → the ``<other>`` texts typed for its args."""
+
+
+@dataclass(frozen=True)
+class Condition:
+    """A presence condition some elements of one entry file's model share."""
+
+    entry: str
+    condition: BDD  # analysis manager, fixed atoms substituted
+    bounds: Bounds
+
+
+@dataclass(frozen=True)
+class Judged:
+    """A condition's verdict at one step, and the condition simplified for people."""
+
+    verdict: Verdict
+    description: str | None  # None once present or absent
+
+    @property
+    def shown(self) -> tuple[str, str | None]:
+        """What elements show of it: presence and condition."""
+        return self.verdict.presence, self.description
+
+
+class Presences:
+    """The distinct conditions of the graph's elements, judged step after step."""
+
+    def __init__(
+        self,
+        elements: Sequence[Element],
+        derivation: Derivation,
+        lowering: Lowering,
+        describe: Callable[[BDD, Mapping[str, bool]], str],
+    ) -> None:
+        self.derivation = derivation
+        self.lowering = lowering
+        self.describe = describe
+        self.conditions: list[Condition] = []
+        self.of_element: list[int] = []
+        number: dict[tuple[str, BDD], int] = {}
+        for element in elements:
+            key = (element.entry, element.condition)
+            if key not in number:
+                number[key] = len(self.conditions)
+                self.conditions.append(Condition(element.entry, element.condition, element.bounds))
+            self.of_element.append(number[key])
+        self._reading: dict[str, list[int]] = {}  # variable → conditions over it
+        self._typed_in: dict[str, list[int]] = {}  # entry → conditions texts can decide
+        variables = set(derivation.variables)
+        for index, condition in enumerate(self.conditions):
+            # the condition's support, not its bounds': typed texts may bring variables back
+            for variable in lowering.space.support(condition.condition) & variables:
+                self._reading.setdefault(variable, []).append(index)
+            if not condition.bounds.exact:
+                self._typed_in.setdefault(condition.entry, []).append(index)
+
+    def judge(
+        self,
+        decisions: Decisions,
+        typed: Typed,
+        before: tuple[Decisions, Typed, Sequence[Judged]] | None = None,
+    ) -> list[Judged]:
+        """Every condition's verdict; ``before`` is an earlier step of the same list of
+        literals (a prefix) with its typed texts and answer, of which most is kept."""
+        if before is None:
+            return [self._judge(c, decisions, typed) for c in self.conditions]
+        earlier, earlier_typed, answer = before
+        again = self._touched(decisions, typed, earlier, earlier_typed)
+        components = {c for c, cube in decisions.cubes.items() if cube != earlier.cubes[c]}
+        if components:
+            again.update(
+                index
+                for index, judged in enumerate(answer)
+                if judged.verdict.components & components and _stale(judged.verdict, decisions)
+            )
+        found = list(answer)
+        for index in again:
+            found[index] = self._judge(self.conditions[index], decisions, typed)
+        return found
+
+    def _touched(
+        self, decisions: Decisions, typed: Typed, earlier: Decisions, earlier_typed: Typed
+    ) -> set[int]:
+        """Conditions whose decided variables or typed texts changed."""
+        changed: Iterable[tuple[str, bool]] = decisions.decided.items() ^ earlier.decided.items()
+        touched = {index for v, _ in changed for index in self._reading.get(v, ())}
+        for entry in typed.keys() | earlier_typed.keys():
+            if typed.get(entry) != earlier_typed.get(entry):
+                touched.update(self._typed_in.get(entry, ()))
+        return touched
+
+    def _judge(self, condition: Condition, decisions: Decisions, typed: Typed) -> Judged:
+        bounds = condition.bounds
+        if not bounds.exact and condition.entry in typed:
+            bounds = self.lowering.decide(condition.condition, typed[condition.entry])
+        verdict = self.derivation.presence(bounds, decisions)
+        description = None
+        if verdict.presence == UNDETERMINED:
+            description = self.describe(condition.condition, verdict.values)
+        return Judged(verdict, description)
+
+
+def _stale(verdict: Verdict, decisions: Decisions) -> bool:
+    """The solver's verdict may differ under the (more) literals of ``decisions``."""
+    if verdict.presence != UNDETERMINED:
+        return False  # present or absent in every valid configuration stays so
+    if verdict.witnesses is None:
+        return True
+    (component,) = verdict.components
+    return not all(decisions.valid(component, w) for w in verdict.witnesses)
