@@ -185,13 +185,17 @@ class Interpretation:
         return result
 
     def resolve(self, text: str | None, scope: Scope, context: str = "") -> Choice[Raw] | None:
+        if text is not None and "$" not in text:  # most texts are literal: nothing can fail
+            return Choice.const(self.space, text)
         value = self.substituter.resolve(text, scope)
         return None if value is None else self.strip(value, context)
 
     def attr(self, entity: Entity, name: str, scope: Scope) -> Choice[Raw] | None:
-        text = entity.get(name)
+        text = entity.attributes.get(name)
         if text is None:  # most optional attributes are absent: no message to format
             return None
+        if "$" not in text:  # nor does a literal need one
+            return Choice.const(self.space, text)
         return self.resolve(text, scope, f"<{entity.tag}> attribute '{name}'")
 
     def required(self, entity: Entity, name: str, scope: Scope) -> Choice[Raw] | None:

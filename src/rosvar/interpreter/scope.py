@@ -80,13 +80,19 @@ class Scope:
         """Inherited remaps, where a remap of this scope hides a parent's with the same source."""
         if self.parent is None:
             return list(self.remaps)
+        return self.parent.remaps_with(self.remaps)
+
+    def remaps_with(self, remaps: list[Remap]) -> list[Remap]:
+        """The remaps of a child scope whose own are ``remaps`` (a node's), without making it."""
+        if not remaps:
+            return self.remap_list()
         inherited: list[Remap] = []
-        for remap in self.parent.remap_list():
+        for remap in self.remap_list():
             hidden = None
-            for own in self.remaps:
+            for own in remaps:
                 if own.source == remap.source:
                     hidden = own.condition if hidden is None else hidden | own.condition
             condition = remap.condition if hidden is None else remap.condition & ~hidden
             if condition != condition.bdd.false:
                 inherited.append(Remap(condition, remap.source, remap.target))
-        return inherited + list(self.remaps)
+        return inherited + list(remaps)

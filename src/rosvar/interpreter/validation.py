@@ -6,10 +6,13 @@ same functions once terms become concrete, so both fail alike.
 
 from __future__ import annotations
 
+import functools
+
 from rosvar.interpreter.values import bool_attribute, float_attribute
 from rosvar.logic.terms import is_term
 
 
+@functools.lru_cache(maxsize=65536)
 def node_problem(
     name: object,
     package: object,
@@ -20,7 +23,10 @@ def node_problem(
     required: object,
     respawn_delay: object = None,
 ) -> str | None:
-    """What roslaunch's ``Node`` constructor and attribute parsing reject, or None."""
+    """What roslaunch's ``Node`` constructor and attribute parsing reject, or None.
+
+    Cached: every includer checks the same field values again.
+    """
     if any(
         is_term(v)
         for v in (name, package, node_type, output, cwd, respawn, required, respawn_delay)

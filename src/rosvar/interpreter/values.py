@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from typing import cast
@@ -12,6 +13,18 @@ import yaml
 def convert_value(value: str, type_: str) -> object:
     """roslaunch's ``convert_value``: ``auto`` guesses int, float, bool, then str."""
     type_ = type_.lower()
+    if type_ == "yaml":
+        try:
+            return load_yaml(value)
+        except yaml.parser.ParserError as error:
+            raise ValueError(str(error)) from error
+    return _convert_scalar(value, type_)
+
+
+@functools.lru_cache(maxsize=65536)
+def _convert_scalar(value: str, type_: str) -> object:
+    """The non-YAML types (cached: the same texts recur in every includer, and the
+    results are immutable, unlike a YAML value, which each caller gets fresh)."""
     if type_ == "auto":
         try:
             if "." in value:
@@ -21,7 +34,7 @@ def convert_value(value: str, type_: str) -> object:
         except ValueError:
             pass
         if value.lower() in ("true", "false"):
-            return convert_value(value, "bool")
+            return _convert_scalar(value, "bool")
         return value
     if type_ in ("str", "string"):
         return value
@@ -36,11 +49,6 @@ def convert_value(value: str, type_: str) -> object:
         if word in ("false", "0"):
             return False
         raise ValueError(f"{word} is not a '{type_}' type")
-    if type_ == "yaml":
-        try:
-            return load_yaml(value)
-        except yaml.parser.ParserError as error:
-            raise ValueError(str(error)) from error
     raise ValueError(f"Unknown type '{type_}'")
 
 

@@ -53,12 +53,11 @@ class Choice(Generic[T]):
             self.branches = () if condition == self.false else (branches[0],)
             return
         merged: dict[object, tuple[BDD, T]] = {}
-        for condition, leaf in branches:
-            key = _key(leaf)
-            if key in merged:
-                merged[key] = (merged[key][0] | condition, leaf)
-            else:
-                merged[key] = (condition, leaf)
+        for branch in branches:
+            leaf = branch[1]
+            key = leaf if type(leaf) is str else _key(leaf)
+            known = merged.get(key)
+            merged[key] = branch if known is None else (known[0] | branch[0], leaf)
         if false is None and merged:
             false = next(iter(merged.values()))[0].bdd.false
         self.false = false
@@ -145,29 +144,39 @@ def ite(space: ConditionSpace, condition: BDD, then: Choice[V], otherwise: Choic
 
 
 def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> Choice[U]:
-    """Cross product of several choices (only jointly possible combinations)."""
-    if choices and all(len(choice.branches) == 1 for choice in choices):
-        # the common case: nothing varies, one combination
-        joint = choices[0].branches[0][0]
-        for choice in choices[1:]:
-            condition = choice.branches[0][0]
-            if condition is not joint:  # constants share the space's true: nothing to do
-                joint = joint & condition
-        leaves = [choice.branches[0][1] for choice in choices]
-        return Choice([(joint, function(leaves))], choices[0].false)
-    false = choices[0].false if choices else None
-    partial: list[tuple[BDD, list[V]]] = []
-    first = True
-    for choice in choices:
-        if first:
-            partial = [(c, [v]) for c, v in choice.branches]
-            first = False
+    """Cross product of several choices (only jointly possible combinations).
+
+    Most operands have a single branch (a constant, or a value that does not vary):
+    they are conjoined once instead of crossed with every combination of the others.
+    Combinations come in the order of a nested loop over the operands, first outermost.
+    """
+    if not choices:
+        return Choice([], None)
+    false = choices[0].false
+    joint = None  # conjunction of the single branches' conditions; None stands for true
+    varying: list[int] = []
+    for index, choice in enumerate(choices):
+        branches = choice.branches
+        if len(branches) != 1:
+            varying.append(index)
             continue
-        nxt: list[tuple[BDD, list[V]]] = []
+        condition = branches[0][0]
+        if joint is None:
+            joint = condition
+        elif condition is not joint:  # constants share the space's true: nothing to do
+            joint = joint & condition
+    leaves = [choice.branches[0][1] if len(choice.branches) == 1 else None for choice in choices]
+    if not varying:
+        return Choice([(joint, function(leaves))], false)
+    partial: list[tuple[BDD | None, list[V]]] = [(joint, leaves)]  # type: ignore[list-item]
+    for index in varying:
+        nxt: list[tuple[BDD | None, list[V]]] = []
         for c1, vs in partial:
-            for c2, v in choice.branches:
-                joint = c1 & c2
-                if joint != false:
-                    nxt.append((joint, [*vs, v]))
+            for c2, v in choices[index].branches:
+                both = c2 if c1 is None else c1 & c2
+                if both != false:
+                    chosen = list(vs)
+                    chosen[index] = v
+                    nxt.append((both, chosen))
         partial = nxt
-    return Choice(((c, function(vs)) for c, vs in partial), false)
+    return Choice([(c, function(vs)) for c, vs in partial], false)

@@ -129,9 +129,7 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
                 it.model.params.append(
                     ParamDecl(it.pc, private.location, full, private.value, "node-param")
                 )
-        remap_scope = scope.child(scope.ns)
-        remap_scope.remaps = own_remaps
-        remaps = remap_scope.remap_list()
+        remaps = scope.remaps_with(own_remaps)
         problem = combine(
             [
                 fields[k]
