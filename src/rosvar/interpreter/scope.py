@@ -40,7 +40,7 @@ class PrivateParam:
     location: Location
 
 
-@dataclass
+@dataclass(slots=True)  # one or two per tag: slots make them cheaper to build and read
 class Scope:
     ns: Choice[Raw]
     filename: str

@@ -101,6 +101,7 @@ class ConditionSpace:
         self._var_of: dict[Atom, str] = {}
         self._atom_of: dict[str, Atom] = {}
         self._domains: dict[Input, tuple[Slot, ...]] = {}
+        self._slot_names: dict[Input, dict[Slot, str]] = {}  # `slot` without a SlotAtom
         self._input_constraints: dict[Input, BDD] = {}
         self._facts_of: dict[str, list[BDD]] = {}
         self._described: dict[tuple[BDD, bool, bool, int], str] = {}
@@ -125,6 +126,7 @@ class ConditionSpace:
         slots = tuple(dict.fromkeys(domain))
         self._domains[input_] = slots
         variables = [self._new_var(SlotAtom(input_, slot)) for slot in slots]
+        self._slot_names[input_] = {slot: str(v.var) for slot, v in zip(slots, variables)}
         exactly_one = self.exactly_one(variables)
         self._input_constraints[input_] = exactly_one
         self._constraints.append(exactly_one)
@@ -156,7 +158,7 @@ class ConditionSpace:
 
     def slot(self, input_: Input, slot: Slot) -> BDD:
         """The atom "``input_`` holds ``slot``" (false if the slot is not in the domain)."""
-        name = self._var_of.get(SlotAtom(input_, slot))
+        name = self._slot_names.get(input_, {}).get(slot)
         return self.bdd.var(name) if name is not None else self.false
 
     def predicate(self, test: str, term: Term) -> BDD:
@@ -169,9 +171,9 @@ class ConditionSpace:
         # pairs is linear when each pair is adjacent, exponential when all predicates sit
         # below all slots (one file's 19 `bool-invalid` errors made 700k nodes).
         levels = [
-            self.bdd.level_of_var(self._var_of[SlotAtom(input_, slot)])
+            self.bdd.level_of_var(name)
             for input_ in term_inputs(term)
-            for slot in self._domains.get(input_, ())
+            for name in self._slot_names.get(input_, {}).values()
         ]
         return self._new_var(atom, max(levels) + 1 if levels else None)
 

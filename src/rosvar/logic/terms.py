@@ -20,9 +20,20 @@ class TermError(Exception):
 
 @dataclass(frozen=True)
 class Hole:
-    """The concrete string of an input (known only once a configuration is given)."""
+    """The concrete string of an input (known only once a configuration is given).
+
+    The hash is computed once, as :class:`Apply`'s: holes are operands of cached
+    function applications and keys of predicate atoms.
+    """
 
     input: Input
+    _hash: int = field(default=0, init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "_hash", hash(self.input))
+
+    def __hash__(self) -> int:
+        return self._hash
 
     def __str__(self) -> str:
         return f"⟨{self.input}⟩"
