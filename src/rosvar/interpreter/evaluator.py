@@ -281,8 +281,9 @@ def evaluate(expr: str, env: EvalEnvironment) -> str:
     """
     tree, source = _parse(expr)
     _analyse(tree, source)
+    interpreter = _Interpreter(env, source)
     try:
-        return _Interpreter(env, source).run(tree)
+        return interpreter.run(tree)
     except (EvalRefused, EvalFailed) as exc:
         if exc.col < 0:
             exc.col = source.prefix
@@ -291,6 +292,8 @@ def evaluate(expr: str, env: EvalEnvironment) -> str:
         raise EvalRefused("expression is nested too deeply to evaluate", source.prefix) from None
     except MemoryError:
         raise EvalRefused("evaluation ran out of memory", source.prefix) from None
+    finally:
+        interpreter.release()
 
 
 # --------------------------------------------------------------------------- parsing
@@ -789,6 +792,14 @@ class _Interpreter:
         self._work = 0
         self._sizer = _Sizer()
         self._functions: dict[str, _Function] = {}
+
+    def release(self) -> None:
+        """Drop the functions made for this evaluation.
+
+        They refer back to the interpreter: the cycle would keep everything the
+        environment reaches (the whole interpretation) until a full collection.
+        """
+        self._functions.clear()
 
     def run(self, tree: ast.Expression) -> str:
         value = self._eval(tree.body, None)
