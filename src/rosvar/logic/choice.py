@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
-from typing import Any, Generic, TypeVar
+from typing import Any, Generic, TypeVar, cast
 
 from rosvar.logic.conditions import BDD, ConditionSpace
 
@@ -165,12 +165,13 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
             joint = condition
         elif condition is not joint:  # constants share the space's true: nothing to do
             joint = joint & condition
-    leaves = [choice.branches[0][1] if len(choice.branches) == 1 else None for choice in choices]
+    # the varying operands' places are filled per combination below
+    leaves = cast(list[V], [c.branches[0][1] if len(c.branches) == 1 else None for c in choices])
     if not varying:
         return Choice([(joint, function(leaves))], false)
-    partial: list[tuple[BDD | None, list[V]]] = [(joint, leaves)]  # type: ignore[list-item]
+    partial: list[tuple[BDD, list[V]]] = [(joint, leaves)]
     for index in varying:
-        nxt: list[tuple[BDD | None, list[V]]] = []
+        nxt: list[tuple[BDD, list[V]]] = []
         for c1, vs in partial:
             for c2, v in choices[index].branches:
                 both = c2 if c1 is None else c1 & c2

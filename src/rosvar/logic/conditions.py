@@ -126,7 +126,9 @@ class ConditionSpace:
         slots = tuple(dict.fromkeys(domain))
         self._domains[input_] = slots
         variables = [self._new_var(SlotAtom(input_, slot)) for slot in slots]
-        self._slot_names[input_] = {slot: str(v.var) for slot, v in zip(slots, variables)}
+        self._slot_names[input_] = {
+            slot: str(v.var) for slot, v in zip(slots, variables, strict=True)
+        }
         exactly_one = self.exactly_one(variables)
         self._input_constraints[input_] = exactly_one
         self._constraints.append(exactly_one)
