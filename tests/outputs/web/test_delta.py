@@ -68,10 +68,14 @@ def test_deltas_rebuild_every_state_of_lizi(lizi_engine: Configurator) -> None:
     assert replay(lizi_engine, clicks=40, seed=2) == 40
 
 
+def node(key: str, x: int, presence: str = "undetermined") -> dict[str, Any]:
+    return {"id": key, "x": x, "presence": presence, "condition": f"c{x}"}
+
+
 DOCUMENT: dict[str, Any] = {
     "features": {"a": {"state": "unselected"}, "b": {"state": "unselected"}},
     "graph": {
-        "nodes": [{"id": "n1", "x": 1}, {"id": "n2", "x": 2}, {"id": "n3", "x": 3}],
+        "nodes": [node("n1", 1), node("n2", 2), node("n3", 3), node("n4", 4)],
         "params": [{"id": "p1"}],
     },
     "complete": False,
@@ -81,11 +85,12 @@ DOCUMENT: dict[str, Any] = {
 
 
 def test_a_delta_holds_only_what_changed() -> None:
+    changed = {**node("n3", 3, "present"), "condition": None}
     after = {
         **DOCUMENT,
         "features": {**DOCUMENT["features"], "b": {"state": "selected"}},
         "graph": {
-            "nodes": [{"id": "n0"}, {"id": "n1", "x": 1}, {"id": "n3", "x": 4}],
+            "nodes": [node("n0", 0), node("n1", 1), changed, node("n4", 5)],
             "params": DOCUMENT["graph"]["params"],
         },
         "command": "roslaunch x y",
@@ -93,7 +98,14 @@ def test_a_delta_holds_only_what_changed() -> None:
     delta = wire(diff(DOCUMENT, after))
     assert delta["features"] == {"b": {"state": "selected"}}
     assert delta["graph"] == {
-        "nodes": {"removed": ["n2"], "put": [[0, {"id": "n0"}], [2, {"id": "n3", "x": 4}]]}
+        "nodes": {
+            "removed": ["n2"],
+            "put": [
+                [0, node("n0", 0)],  # new
+                [2, {"id": "n3", "presence": "present", "condition": None}],  # its verdict only
+                [3, node("n4", 5)],  # another field changed: whole
+            ],
+        }
     }
     assert set(delta) == {"features", "graph", "command"}
     assert patch(DOCUMENT, {**delta, "base": 1}) == after
@@ -114,9 +126,17 @@ def test_a_delta_against_another_version_is_refused() -> None:
 
 
 def random_lists(rng: random.Random) -> tuple[list[dict[str, Any]], list[dict[str, Any]]]:
-    """Two lists of entries as states give them: some dropped, added, changed, or all moved."""
-    before = [{"id": f"e{n}", "v": 0} for n in range(rng.randrange(8))]
-    after = [e if rng.random() < 0.6 else {**e, "v": 1} for e in before if rng.random() < 0.7]
+    """Two lists of entries as states give them: some dropped, added, changed (a field more,
+    less or other), or all moved."""
+    changes = [
+        lambda e: e,
+        lambda e: {**e, "presence": "present", "condition": None},
+        lambda e: {**e, "x": -1},
+        lambda e: {**e, "more": True},
+        lambda e: {k: v for k, v in e.items() if k != "x"},
+    ]
+    before = [node(f"e{n}", n) for n in range(rng.randrange(8))]
+    after = [rng.choice(changes)(e) for e in before if rng.random() < 0.7]
     for n in range(rng.randrange(4)):
         after.insert(rng.randrange(len(after) + 1), {"id": f"new{n}", "v": 2})
     if rng.random() < 0.2:

@@ -11,7 +11,9 @@ A delta is a document of the same shape, read field by field:
 * ``features``: only the features whose entry changed (the set of ids never changes);
 * ``graph``: per list that changed, ``{"removed": [ids], "put": [[index, entry], ...]}``:
   entries gone, then entries added or changed with their place in the new list (entries
-  keep their relative order from one state to the next, so the places are few and exact);
+  keep their relative order from one state to the next, so the places are few and exact).
+  An entry whose ``presence`` or ``condition`` alone changed (most changes) is sent as its
+  id and these two fields, merged into the entry at that place;
 * any other field: present only when its value changed, and then whole;
 * ``base``: the version of the document the delta applies to (set by the sender).
 
@@ -29,6 +31,7 @@ Entry = Mapping[str, Any]
 KEYED = "features"  # a mapping id → entry
 LISTS = "graph"  # a mapping kind → list of entries with an "id"
 BASE = "base"
+PRESENCE, CONDITION = "presence", "condition"  # the fields of graph entries most choices change
 
 
 def diff(before: Document, after: Document) -> Document:
@@ -99,11 +102,27 @@ def _list_diff(before: Sequence[Entry], after: Sequence[Entry]) -> Document:
             if place < following:  # entries swapped places: send the list whole
                 return {"removed": list(places), "put": list(enumerate(after))}
             removed.extend(old["id"] for old in before[following:place])
-        if before[place] != entry:
-            put.append((index, entry))
+        old = before[place]
+        if old != entry:
+            if old.keys() <= entry.keys():
+                put.append((index, _update(old, entry)))
+            else:  # a field went away, which a merge cannot say: the entry is sent anew
+                removed.append(key)
+                put.append((index, entry))
         following = place + 1
     removed.extend(old["id"] for old in before[following:])
     return {"removed": removed, "put": put}
+
+
+def _update(old: Entry, new: Entry) -> Entry:
+    """What to send of a changed entry: its id and verdict when nothing else changed (a copy
+    and a C-level comparison: thousands of entries change on some clicks), else all of it."""
+    probe = dict(new)
+    probe[PRESENCE] = old.get(PRESENCE)
+    probe[CONDITION] = old.get(CONDITION)
+    if probe == old:
+        return {"id": new["id"], PRESENCE: new[PRESENCE], CONDITION: new[CONDITION]}
+    return new
 
 
 def _list_patch(before: Sequence[Entry], change: Mapping[str, Any]) -> list[Entry]:
@@ -112,7 +131,7 @@ def _list_patch(before: Sequence[Entry], change: Mapping[str, Any]) -> list[Entr
     # in order of place: the entries before ``index`` are already the new list's
     for index, entry in change["put"]:
         if index < len(entries) and entries[index]["id"] == entry["id"]:
-            entries[index] = entry
+            entries[index] = {**entries[index], **entry}
         else:
             entries.insert(index, entry)
     return entries

@@ -2,9 +2,10 @@
 // format: src/rosvar/outputs/web/delta.py, whose patch() this mirrors).
 //
 // An answer with a "base" is a delta against the state of that version: "features" holds
-// the changed features only, "graph" per changed list {removed: [ids], put: [[index, entry]]},
-// and any other field is present only when its value changed. An answer without "base" is
-// the whole state.
+// the changed features only, "graph" per changed list {removed: [ids], put: [[index, entry]]}
+// (an entry with the id of the entry at that place holds only its changed fields), and any
+// other field is present only when its value changed. An answer without "base" is the whole
+// state.
 
 export const KEYED = "features";
 export const LISTS = "graph";
@@ -31,7 +32,7 @@ function patchList(entries, change) {
   const result = entries.filter((entry) => !gone.has(entry.id));
   // in order of place: the entries before `index` are already the new list's
   for (const [index, entry] of change.put) {
-    if (index < result.length && result[index].id === entry.id) result[index] = entry;
+    if (index < result.length && result[index].id === entry.id) result[index] = { ...result[index], ...entry };
     else result.splice(index, 0, entry);
   }
   return result;
