@@ -5,10 +5,13 @@ from __future__ import annotations
 import itertools
 from typing import TYPE_CHECKING
 
+import dd.cudd
 import pytest
 
+from rosvar.analyses import features
 from rosvar.analyses.features import (
     FeatureModel,
+    ModelTooLarge,
     core_and_dead,
     count_configurations,
     extract,
@@ -372,3 +375,38 @@ def test_restrict_touches_only_the_chosen_components(ws: LaunchWorkspace) -> Non
             )
         else:
             assert formula == component.formula
+
+
+def test_a_model_linking_too_many_files_is_listed_not_solved(
+    ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Over the link budget nothing pairwise is computed up front; the listing still is."""
+    monkeypatch.setattr(features, "LINK_BUDGET", 3)  # clique_and_loner: /n links 3 pairs, /p 1
+    model = clique_and_loner(ws)
+    assert not model.solved and count_configurations(model) is None
+    assert "clashes" not in vars(model) and "constraints" not in vars(model)  # not built yet
+    with pytest.raises(ModelTooLarge, match="4 pairs of files"):
+        core_and_dead(model)
+    assert [d.code for d in model.diagnostics] == ["model-too-large"]
+    assert {c.kind for c in model.constraints} == {"excludes", "requires"}
+    monkeypatch.setattr(features, "LINK_BUDGET", 4)  # at most the budget: solved
+    assert extract(ws.analysis()).solved
+
+
+def test_memory_bound_turns_the_refusal_of_cudd_into_model_too_large(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    manager = dd.cudd.BDD()
+    names = [f"x{number}" for number in range(3000)]
+    manager.declare(*names)
+
+    def parity() -> dd.cudd.Function:
+        result = manager.false
+        for name in names:  # about two nodes per variable: many more than one node chunk
+            result = manager.apply("xor", result, manager.var(name))
+        return result
+
+    monkeypatch.setattr(features, "MEMORY_BUDGET", 1)
+    with pytest.raises(ModelTooLarge), features._memory_bound(manager):
+        parity()
+    assert len(parity()) > len(names)  # the bound is lifted afterwards

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import os
 from collections import defaultdict
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 
 from rosvar.diagnostics import Location
@@ -122,7 +122,7 @@ def index(models: Iterable[LaunchModel]) -> dict[tuple[str, str], list[Occurrenc
     return buckets
 
 
-def clashes(buckets: dict[tuple[str, str], list[Occurrence]]) -> list[Clash]:
+def clashes(buckets: Mapping[tuple[str, str], Sequence[Occurrence]]) -> list[Clash]:
     """Every pair of distinct declarations sharing a bucket and possibly present together."""
     found: list[Clash] = []
     for (kind, name), occurrences in buckets.items():

@@ -14,6 +14,7 @@ from __future__ import annotations
 import os
 from collections import deque
 from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import cache, cached_property
 
@@ -78,15 +79,52 @@ class Constraint:
     unconditional: bool = False
 
 
+class ModelTooLarge(RuntimeError):
+    """The solver's BDDs would outgrow their budget: the model is listed, not solved."""
+
+
 @dataclass
 class FeatureModel:
+    """The feature tree and its cross-tree constraints, with the solver that answers on them.
+
+    The pairwise views — ``clashes``, ``internal`` and the ``excludes`` entries of
+    ``constraints`` — are built on first use: they grow with the square of the files
+    redeclaring a name, and neither the solver nor the count needs them. ``solution``
+    is the solver, or why it was not built (``solver`` raises that then).
+    """
+
     space: ConditionSpace
     files: list[FileFeature]
-    constraints: list[Constraint]
-    clashes: list[Clash]
-    internal: list[Clash]
-    solver: Solver
+    requires: list[Constraint]
+    declarations: Mapping[tuple[str, str], list[Occurrence]]  # by (kind, resolved name)
+    launch_models: list[LaunchModel]
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    solution: Solver | ModelTooLarge = field(init=False)
+
+    @property
+    def solved(self) -> bool:
+        """Whether the solver was built within its budget."""
+        return not isinstance(self.solution, ModelTooLarge)
+
+    @property
+    def solver(self) -> Solver:
+        if isinstance(self.solution, ModelTooLarge):
+            raise ModelTooLarge(*self.solution.args)
+        return self.solution
+
+    @cached_property
+    def clashes(self) -> list[Clash]:
+        return clashes(self.declarations)
+
+    @cached_property
+    def internal(self) -> list[Clash]:
+        """Clashes inside one file: two of its nodes, or one file included twice."""
+        found = [c for c in self.clashes if c.first.file == c.second.file and c.kind == "node"]
+        return found + [c for model in self.launch_models for c in repeated_inclusions(model)]
+
+    @cached_property
+    def constraints(self) -> list[Constraint]:
+        return self.requires + _excludes(self.space, self.files, self.clashes)
 
     def feature_ids(self) -> list[str]:
         ids: list[str] = []
@@ -174,10 +212,10 @@ def extract(
         if progress is not None:
             progress(number, len(chosen), file)
         models.append(analysis.model(file))
-    real = cache(os.path.realpath)  # per extraction: paths recur in every pair and include
+    real = cache(os.path.realpath)  # per extraction: paths recur in every include
     features: list[FileFeature] = []
     by_file: dict[str, FileFeature] = {}
-    constraints: list[Constraint] = []
+    requires: list[Constraint] = []
     feature_inputs: set[ArgInput] = set()
     for model in models:
         label = analysis.label(model.file)
@@ -227,7 +265,7 @@ def extract(
                 if target_feature is None:
                     continue
                 when = include.condition & condition
-                constraints.append(
+                requires.append(
                     Constraint(
                         "requires",
                         (source.id, target_feature.id),
@@ -239,17 +277,58 @@ def extract(
                     )
                 )
     buckets = index(models)
-    found = clashes(buckets)
-    internal = [c for c in found if c.first.file == c.second.file and c.kind == "node"]
-    internal += [clash for model in models for clash in repeated_inclusions(model)]
+    feature_model = FeatureModel(
+        space, features, requires, buckets, models, _unknown_values(features)
+    )
+    try:
+        _check_links(buckets)
+        feature_model.solution = _formula(space, features, feature_model.constraints, buckets)
+    except ModelTooLarge as too_large:
+        feature_model.solution = too_large
+        feature_model.diagnostics.append(
+            Diagnostic(
+                "model-too-large",
+                Severity.WARNING,
+                f"the feature model is listed but not solved: {too_large}; the number of "
+                "valid configurations and core/dead features are unknown",
+                Location(", ".join(analysis.workspace.roots)),
+            )
+        )
+    return feature_model
+
+
+LINK_BUDGET = 20_000
+"""Most pairs of files sharing a declared name before the solver is not attempted.
+
+The pairs are what ordering the variables and listing the ``excludes`` constraints cost,
+quadratic where many files redeclare a name; workspaces that link this many files
+through their clashes also have BDDs far beyond ``MEMORY_BUDGET`` (Husky: about 500).
+"""
+
+
+def _check_links(buckets: Mapping[tuple[str, str], Sequence[Occurrence]]) -> None:
+    """Raise :class:`ModelTooLarge` before any pairwise work if clashes link too many files."""
+    groups = {frozenset(o.file for o in occurrences) for occurrences in buckets.values()}
+    links = sum(len(group) * (len(group) - 1) // 2 for group in groups)
+    if links > LINK_BUDGET:
+        raise ModelTooLarge(
+            f"{links:,} pairs of files declare a common name (budget {LINK_BUDGET:,})"
+        )
+
+
+def _excludes(
+    space: ConditionSpace, features: Sequence[FileFeature], found: Sequence[Clash]
+) -> list[Constraint]:
+    """One ``excludes`` constraint per pair of files whose declarations clash."""
+    by_file = {f.file: f for f in features}  # an occurrence's file is its model's file
     between: dict[tuple[str, str], list[Clash]] = {}
     for clash in found:
         if clash.first.file != clash.second.file:
             key = tuple(sorted(clash.files))
             between.setdefault(key, []).append(clash)  # type: ignore[arg-type]
+    constraints = []
     for (file_a, file_b), pair_clashes in sorted(between.items()):
-        a = by_file[real(file_a)]
-        b = by_file[real(file_b)]
+        a, b = by_file[file_a], by_file[file_b]
         condition = space.false
         for clash in pair_clashes:
             condition |= clash.condition
@@ -266,10 +345,7 @@ def extract(
                 space.valid_implies(condition),
             )
         )
-    solver = _formula(space, features, constraints, buckets)
-    return FeatureModel(
-        space, features, constraints, found, internal, solver, _unknown_values(features)
-    )
+    return constraints
 
 
 def _unknown_values(features: Sequence[FileFeature]) -> list[Diagnostic]:
@@ -488,44 +564,45 @@ def _formula(
             formula = space.bdd.exist(others, formula)
         return _cudd.copy_bdd(formula, manager)
 
-    parts: list[BDD] = []
-    for feature in features:
-        present = manager.var(_name(feature.variable))
-        part = manager.true
-        for arg in feature.args:
-            variables = [manager.var(_name(v.variable)) for v in arg.values]
-            none = manager.true
-            for variable in variables:
-                none &= ~variable
-            part &= (present & exactly_one(manager, variables)) | (~present & none)
-        parts.append(part)
-    tree = conjoin(manager, parts)
-    files = {f.file: f for f in features}
-    linked = _Links([f.id for f in features])
-    pieces: list[tuple[str, BDD]] = [(f.id, part) for f, part in zip(features, parts, strict=True)]
-    for constraint in constraints:
-        linked.join(constraint.files)
-        if constraint.kind != "excludes":
-            pieces.append((constraint.files[0], translate(constraint.formula)))
-    for members, exclusion in _exclusions(space, manager, files, buckets, kept, translate):
-        linked.join(members)
-        pieces.append((members[0], exclusion))
-    grouped: dict[str, list[BDD]] = {}
-    for file_id, piece in pieces:
-        grouped.setdefault(linked.find(file_id), []).append(piece)
-    level = {name: index for index, name in enumerate(keep)}
-    by_id = {f.id: f for f in features}
-    components = []
-    for root, members in linked.groups().items():
-        variables = [
-            name
-            for file_id in members
-            for name in [_name(by_id[file_id].variable)]
-            + [_name(v.variable) for a in by_id[file_id].args for v in a.values]
-        ]
-        variables.sort(key=level.__getitem__)
-        components.append(Component(members, variables, conjoin(manager, grouped[root])))
-    components.sort(key=lambda c: level[c.variables[0]] if c.variables else -1)
+    with _memory_bound(manager):
+        parts: list[BDD] = []
+        for feature in features:
+            present = manager.var(_name(feature.variable))
+            part = manager.true
+            for arg in feature.args:
+                variables = [manager.var(_name(v.variable)) for v in arg.values]
+                none = manager.true
+                for variable in variables:
+                    none &= ~variable
+                part &= (present & exactly_one(manager, variables)) | (~present & none)
+            parts.append(part)
+        tree = conjoin(manager, parts)
+        files = {f.file: f for f in features}
+        linked = _Links([f.id for f in features])
+        pieces = [(f.id, part) for f, part in zip(features, parts, strict=True)]
+        for constraint in constraints:
+            linked.join(constraint.files)
+            if constraint.kind != "excludes":
+                pieces.append((constraint.files[0], translate(constraint.formula)))
+        for members, exclusion in _exclusions(space, manager, files, buckets, kept, translate):
+            linked.join(members)
+            pieces.append((members[0], exclusion))
+        grouped: dict[str, list[BDD]] = {}
+        for file_id, piece in pieces:
+            grouped.setdefault(linked.find(file_id), []).append(piece)
+        level = {name: index for index, name in enumerate(keep)}
+        by_id = {f.id: f for f in features}
+        components = []
+        for root, members in linked.groups().items():
+            variables = [
+                name
+                for file_id in members
+                for name in [_name(by_id[file_id].variable)]
+                + [_name(v.variable) for a in by_id[file_id].args for v in a.values]
+            ]
+            variables.sort(key=level.__getitem__)
+            components.append(Component(members, variables, conjoin(manager, grouped[root])))
+        components.sort(key=lambda c: level[c.variables[0]] if c.variables else -1)
     return Solver(
         manager, keep, tree, components, lambda: [translate(c.formula) for c in constraints]
     )
@@ -626,6 +703,36 @@ def _at_most_one(manager: _cudd.BDD, literals: Sequence[BDD]) -> BDD:
     return result
 
 
+MEMORY_BUDGET = 128 << 20
+"""Bytes the solver's BDD manager may use while the model is built (CUDD enforces it).
+
+Husky, the largest corpus system, peaks near 31 MB (a million nodes take about 100 MB);
+a generated workspace whose exclusions span the whole order reaches it within seconds
+and would go on for hours. A bound on memory, unlike one on time, does not depend on
+the machine's load: the same model is solved, or not, everywhere.
+"""
+
+
+@contextmanager
+def _memory_bound(manager: _cudd.BDD) -> Iterator[None]:
+    """Building in ``manager`` within ``MEMORY_BUDGET``, or :class:`ModelTooLarge`.
+
+    Past the bound CUDD returns NULL, which ``dd`` reports as a ValueError (operators)
+    or a RuntimeError (``apply`` and the like), told from other errors by their text.
+    The bound is lifted afterwards: the solver's later questions must not fail on a
+    model it holds.
+    """
+    unbounded = manager.configure(max_memory=MEMORY_BUDGET)["max_memory"]
+    try:
+        yield
+    except (ValueError, RuntimeError) as error:
+        if not any(sign in str(error) for sign in ("NULL", "out of memory")):
+            raise
+        raise ModelTooLarge(f"its BDD outgrew {MEMORY_BUDGET >> 20} MB") from error
+    finally:
+        manager.configure(max_memory=unbounded)
+
+
 def conjoin(manager: _cudd.BDD, parts: Sequence[BDD]) -> BDD:
     """Conjunction scheduled from the bottom of the order up, by each part's top variable.
 
@@ -646,8 +753,13 @@ def conjoin(manager: _cudd.BDD, parts: Sequence[BDD]) -> BDD:
     return result
 
 
-def count_configurations(model: FeatureModel) -> int:
-    """Valid configurations (model counting on the BDD; no enumeration)."""
+def count_configurations(model: FeatureModel) -> int | None:
+    """Valid configurations (model counting on the BDD; no enumeration); None: unknown.
+
+    Unknown when the model was too large to solve (``FeatureModel.solution``).
+    """
+    if not model.solved:
+        return None
     solver = model.solver
     return int(solver.manager.count(solver.formula, nvars=len(solver.variables)))
 

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 import pytest
 
+from rosvar.analyses import features
 from rosvar.analyses.features import FeatureModel, core_and_dead, count_configurations
 from rosvar.outputs.exports import WRITERS, write
 from rosvar.outputs.exports import json as json_export
@@ -37,9 +38,9 @@ def check(model: FeatureModel) -> dict[str, Any]:
             "system": str,
             "features": list,
             "constraints": list,
-            "configurations": int,
-            "core": list,
-            "dead": list,
+            "configurations": int if model.solved else type(None),
+            "core": list if model.solved else type(None),
+            "dead": list if model.solved else type(None),
             "conflicts": list,
             "diagnostics": list,
         },
@@ -95,8 +96,8 @@ def check(model: FeatureModel) -> dict[str, Any]:
         assert all(kinds[f] == "file" for f in constraint["files"])
         for location in constraint["locations"]:
             typed(location, LOCATION)
-    verdicts = core_and_dead(model)
-    for kind in ("core", "dead"):
+    verdicts = core_and_dead(model) if model.solved else []
+    for kind in ("core", "dead") if model.solved else ():
         assert [v["feature"] for v in document[kind]] == [
             v.feature for v in verdicts if v.kind == kind
         ]
@@ -159,6 +160,18 @@ def test_tricky(ws: LaunchWorkspace) -> None:
     document = check(tricky(ws))
     (conflict,) = document["conflicts"]
     assert conflict["trigger"] == {"clash.launch:on": "true"}
+
+
+def test_a_model_too_large_to_solve_is_still_listed(
+    ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(features, "LINK_BUDGET", 0)
+    model = tricky(ws)
+    document = check(model)
+    assert not model.solved
+    assert document["constraints"] and all(c["formula"] is None for c in document["constraints"])
+    assert len(document["conflicts"]) == 1
+    assert [d["code"] for d in document["diagnostics"]] == ["model-too-large"]
 
 
 def test_registry(examples_model: FeatureModel) -> None:

@@ -5,12 +5,17 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+import pytest
+
+from rosvar.analyses import features
 from rosvar.analyses.features import FeatureModel, count_configurations
 from rosvar.outputs.exports import text
 from rosvar.outputs.exports._common import conflicts
 
+from .test_uvl import tricky
+
 if TYPE_CHECKING:
-    pass  # tests/conftest.py
+    from conftest import LaunchWorkspace  # tests/conftest.py
 
 
 def sections(report: str) -> dict[str, list[str]]:
@@ -66,3 +71,18 @@ def test_dead_feature_with_reasons(dead_model: FeatureModel) -> None:
         "    because pkg/launch/both.launch includes pkg/launch/b.launch",
         "    because pkg/launch/a.launch and pkg/launch/b.launch both declare node /same",
     ]
+
+
+def test_a_model_too_large_to_solve_is_reported_unknown(
+    ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(features, "LINK_BUDGET", 0)
+    model = tricky(ws)
+    report = sections(text.write(model))
+    assert report["Feature model of ws"][-1] == "  unknown number of valid configurations"
+    assert report["Core and dead features"] == [
+        "  unknown: the model is too large to solve (see the diagnostics)"
+    ]
+    assert len(report["Conflicts (name clashes)"]) == 2  # the clash and its trigger
+    (diagnostic,) = report["Diagnostics"]
+    assert diagnostic.endswith("[model-too-large]")

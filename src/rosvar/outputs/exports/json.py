@@ -46,10 +46,18 @@ def document(model: FeatureModel) -> dict[str, Any]:
     """The JSON document as Python data (``write`` serialises it)."""
     tree = Tree(model)
     describe = model.space.describe
-    formulas = {e.source: render(e.formula, str, LOGIC_OPERATORS) for e in exported(tree)}
-    verdicts: dict[str, list[dict[str, Any]]] = {"core": [], "dead": []}
-    for verdict in core_and_dead(model):
-        verdicts[verdict.kind].append({"feature": verdict.feature, "because": verdict.because})
+    formulas = (
+        {e.source: render(e.formula, str, LOGIC_OPERATORS) for e in exported(tree)}
+        if model.solved
+        else {}
+    )
+    verdicts: dict[str, list[dict[str, Any]] | None] = dict.fromkeys(("core", "dead"))
+    if model.solved:  # unknown (null) for a model too large to solve
+        found = core_and_dead(model)
+        for kind in verdicts:
+            verdicts[kind] = [
+                {"feature": v.feature, "because": v.because} for v in found if v.kind == kind
+            ]
     trigger = Triggers(model)
     return {
         "system": tree.root,

@@ -34,7 +34,7 @@ def _where(location: Location, tree: Tree) -> str:
     return f"{file}:{location.line}:{location.col}" if location.line > 0 else file
 
 
-def _summary(model: FeatureModel, tree: Tree, configurations: int) -> list[str]:
+def _summary(model: FeatureModel, tree: Tree, configurations: int | None) -> list[str]:
     files = [e for e in tree.entries if e.kind == "file"]
     args = [e for e in tree.entries if e.kind == "arg"]
     values = [e for e in tree.entries if e.kind == "value"]
@@ -49,7 +49,8 @@ def _summary(model: FeatureModel, tree: Tree, configurations: int) -> list[str]:
         f"{_plural(len(values), 'value')}",
         f"{INDENT}{_plural(len(model.constraints), 'constraint')}"
         + (f": {by_kind}" if by_kind else ""),
-        f"{INDENT}{configurations} valid configurations",
+        f"{INDENT}{'unknown number of' if configurations is None else configurations} "
+        "valid configurations",
     ]
 
 
@@ -91,6 +92,8 @@ def _constraints(model: FeatureModel, tree: Tree) -> list[str]:
 
 def _verdicts(model: FeatureModel) -> list[str]:
     lines = ["", "Core and dead features"]
+    if not model.solved:
+        return [*lines, f"{INDENT}unknown: the model is too large to solve (see the diagnostics)"]
     verdicts = core_and_dead(model)
     if not verdicts:
         lines.append(f"{INDENT}none: every feature can be selected and deselected")
