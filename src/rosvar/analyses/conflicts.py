@@ -12,6 +12,7 @@ import os
 from collections import defaultdict
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
+from functools import cache
 
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl
@@ -46,24 +47,29 @@ class Clash:
         return (self.first.file, self.second.file)
 
 
-def _written_in(file: str) -> Callable[[str], bool]:
+Resolve = Callable[[str], str]  # a path to its real path (``os.path.realpath``, maybe cached)
+
+
+def _written_in(file: str, real: Resolve) -> Callable[[str], bool]:
     """Whether a location's file is ``file``, symlinks resolved once per distinct path
     (a model holds thousands of elements from a handful of included files)."""
-    real = os.path.realpath(file)
+    target = real(file)
     seen: dict[str, bool] = {file: True}
 
     def test(other: str) -> bool:
         found = seen.get(other)
         if found is None:
-            found = seen[other] = os.path.realpath(other) == real
+            found = seen[other] = real(other) == target
         return found
 
     return test
 
 
-def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
+def declared_occurrences(
+    model: LaunchModel, real: Resolve = os.path.realpath
+) -> Iterable[Occurrence]:
     """Nodes and params written in ``model.file`` itself (Algorithm 1's GETELEMENTS)."""
-    own = _written_in(model.file)
+    own = _written_in(model.file, real)
     for node in model.nodes:
         if not node.is_test and own(node.location.file):
             yield from _node_occurrences(model, node)
@@ -91,7 +97,7 @@ def repeated_inclusions(model: LaunchModel) -> list[Clash]:
     them; only a declaration meeting itself, through two includes, is the entry
     file's own clash.
     """
-    own = _written_in(model.file)
+    own = _written_in(model.file, os.path.realpath)
     seen: dict[tuple[str, Location], list[Occurrence]] = defaultdict(list)
     found: list[Clash] = []
     for node in model.nodes:
@@ -115,9 +121,11 @@ def _node_name(parts: Sequence[object]) -> str | None:
 
 
 def index(models: Iterable[LaunchModel]) -> dict[tuple[str, str], list[Occurrence]]:
+    """Every file's own declarations, by kind and resolved name."""
     buckets: dict[tuple[str, str], list[Occurrence]] = defaultdict(list)
+    real = cache(os.path.realpath)  # included files recur in the models of their includers
     for model in models:
-        for occurrence in declared_occurrences(model):
+        for occurrence in declared_occurrences(model, real):
             buckets[(occurrence.kind, occurrence.name)].append(occurrence)
     return buckets
 
