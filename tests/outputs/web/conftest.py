@@ -72,3 +72,11 @@ def page(browser: Any) -> Iterator[Any]:
     yield tab
     context.close()
     assert errors == [], f"errors in the page: {errors}"
+
+
+@pytest.fixture(scope="module")
+def husky() -> Iterator[Live]:
+    """The largest corpus system (5 MB of state): the page must live on deltas there."""
+    root, external = corpus_system("husky"), corpus_system("_external")
+    with running(configurator([root], str(external))) as live:
+        yield live

@@ -349,3 +349,17 @@ def test_lizi_configured_to_a_complete_product(page: Any, lizi: Live) -> None:
     command = page.locator("#command").inner_text()
     assert command.startswith("roslaunch ") and "lizi.launch" in command
     assert "gazebo:=true" in command and "x:=1.5" in command  # given, not defaults
+
+
+# -- Husky -----------------------------------------------------------------------------------------
+def test_husky_clicks_update_the_page_in_place(page: Any, husky: Live) -> None:
+    app = App(page, husky)
+    start = app.state
+    value = next(k for k, f in start["features"].items() if f["kind"] == "value"
+                 and f["state"] == "unselected" and not f["value"].startswith("<"))  # fmt: skip
+    with page.expect_response("**/api/choose") as answer:
+        app.choose(value, "select")
+    assert len(answer.value.body()) < len(json.dumps(start)) / 10  # a delta, not the state
+    assert app.assert_shows_server_state()["features"][value]["state"] == "selected"
+    app.wait_for_update(lambda: page.click("#undo"))
+    assert app.marks()[value] == "·"
