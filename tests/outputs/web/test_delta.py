@@ -100,9 +100,9 @@ def test_a_delta_holds_only_what_changed() -> None:
     assert delta["graph"] == {
         "nodes": {
             "removed": ["n2"],
-            "put": [
-                [0, node("n0", 0)],  # new
-                [2, {"id": "n3", "presence": "present", "condition": None}],  # its verdict only
+            "added": [[0, node("n0", 0)]],
+            "changed": [
+                [2, {"presence": "present", "condition": None}],  # its verdict only
                 [3, node("n4", 5)],  # another field changed: whole
             ],
         }
@@ -115,7 +115,7 @@ def test_entries_that_swap_places_are_sent_again() -> None:
     nodes = DOCUMENT["graph"]["nodes"]
     after = {**DOCUMENT, "graph": {**DOCUMENT["graph"], "nodes": [nodes[2], nodes[0], nodes[1]]}}
     delta = wire(diff(DOCUMENT, after))
-    assert len(delta["graph"]["nodes"]["put"]) == 3
+    assert len(delta["graph"]["nodes"]["added"]) == 3
     assert patch(DOCUMENT, {**delta, "base": 1}) == after
 
 

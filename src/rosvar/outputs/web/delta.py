@@ -9,11 +9,12 @@ rest by equality; nothing is serialised to compare it.
 A delta is a document of the same shape, read field by field:
 
 * ``features``: only the features whose entry changed (the set of ids never changes);
-* ``graph``: per list that changed, ``{"removed": [ids], "put": [[index, entry], ...]}``:
-  entries gone, then entries added or changed with their place in the new list (entries
-  keep their relative order from one state to the next, so the places are few and exact).
-  An entry whose ``presence`` or ``condition`` alone changed (most changes) is sent as its
-  id and these two fields, merged into the entry at that place;
+* ``graph``: per list that changed, ``{"removed": [ids], "added": [[index, entry], ...],
+  "changed": [[index, fields], ...]}``: entries gone; entries new, inserted at their place
+  in the new list in order (entries keep their relative order from one state to the next,
+  so this rebuilds the new list's order exactly); then fields merged into the entry at a
+  place. Most changes are of ``presence`` and ``condition`` alone, and only these two
+  fields are sent then (the ids, long paths, would be most of the answer);
 * any other field: present only when its value changed, and then whole;
 * ``base``: the version of the document the delta applies to (set by the sender).
 
@@ -45,7 +46,7 @@ def diff(before: Document, after: Document) -> Document:
             delta[key] = {}
             for kind, entries in value.items():
                 change = _list_diff(before[key].get(kind, []), entries)
-                if change["removed"] or change["put"]:
+                if any(change.values()):
                     delta[key][kind] = change
         elif key not in before or not _same(before[key], value):
             delta[key] = value
@@ -80,8 +81,9 @@ def _same(old: object, new: object) -> bool:
 
 def _list_diff(before: Sequence[Entry], after: Sequence[Entry]) -> Document:
     """One walk over both lists: most entries are the same object at the same place."""
-    put: list[tuple[int, Entry]] = []
     removed: list[str] = []
+    added: list[tuple[int, Entry]] = []
+    changed: list[tuple[int, Entry]] = []
     places: dict[str, int] | None = None  # id → place in ``before``, built on first need
     following = 0  # place in ``before`` of the next entry not yet matched
     for index, entry in enumerate(after):
@@ -95,43 +97,41 @@ def _list_diff(before: Sequence[Entry], after: Sequence[Entry]) -> Document:
             if places is None:
                 places = {old["id"]: number for number, old in enumerate(before)}
             found = places.get(key)
-            if found is None:  # a new entry
-                put.append((index, entry))
+            if found is None:
+                added.append((index, entry))
                 continue
             place = found
             if place < following:  # entries swapped places: send the list whole
-                return {"removed": list(places), "put": list(enumerate(after))}
+                return {"removed": list(places), "added": list(enumerate(after)), "changed": []}
             removed.extend(old["id"] for old in before[following:place])
         old = before[place]
         if old != entry:
             if old.keys() <= entry.keys():
-                put.append((index, _update(old, entry)))
+                changed.append((index, _changes(old, entry)))
             else:  # a field went away, which a merge cannot say: the entry is sent anew
                 removed.append(key)
-                put.append((index, entry))
+                added.append((index, entry))
         following = place + 1
     removed.extend(old["id"] for old in before[following:])
-    return {"removed": removed, "put": put}
+    return {"removed": removed, "added": added, "changed": changed}
 
 
-def _update(old: Entry, new: Entry) -> Entry:
-    """What to send of a changed entry: its id and verdict when nothing else changed (a copy
-    and a C-level comparison: thousands of entries change on some clicks), else all of it."""
+def _changes(old: Entry, new: Entry) -> Entry:
+    """What to send of a changed entry: its verdict when nothing else changed (a copy and a
+    C-level comparison: thousands of entries change on some clicks), else all of it."""
     probe = dict(new)
     probe[PRESENCE] = old.get(PRESENCE)
     probe[CONDITION] = old.get(CONDITION)
     if probe == old:
-        return {"id": new["id"], PRESENCE: new[PRESENCE], CONDITION: new[CONDITION]}
+        return {PRESENCE: new[PRESENCE], CONDITION: new[CONDITION]}
     return new
 
 
 def _list_patch(before: Sequence[Entry], change: Mapping[str, Any]) -> list[Entry]:
     gone = set(change["removed"])
     entries = [entry for entry in before if entry["id"] not in gone]
-    # in order of place: the entries before ``index`` are already the new list's
-    for index, entry in change["put"]:
-        if index < len(entries) and entries[index]["id"] == entry["id"]:
-            entries[index] = {**entries[index], **entry}
-        else:
-            entries.insert(index, entry)
+    for index, entry in change["added"]:  # in order of place: those before are in place
+        entries.insert(index, entry)
+    for index, fields in change["changed"]:
+        entries[index] = {**entries[index], **fields}
     return entries

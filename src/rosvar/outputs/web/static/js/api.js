@@ -91,7 +91,7 @@ export class Client {
     this.state = state;
     this.session = state.session;
     sessionStorage.setItem(KEY, state.session);
-    return { state, changes: touched(answer) };
+    return { state, changes: touched(answer, state) };
   }
 
   choose(action, feature, value) {

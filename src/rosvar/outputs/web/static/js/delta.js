@@ -2,10 +2,9 @@
 // format: src/rosvar/outputs/web/delta.py, whose patch() this mirrors).
 //
 // An answer with a "base" is a delta against the state of that version: "features" holds
-// the changed features only, "graph" per changed list {removed: [ids], put: [[index, entry]]}
-// (an entry with the id of the entry at that place holds only its changed fields), and any
-// other field is present only when its value changed. An answer without "base" is the whole
-// state.
+// the changed features only, "graph" per changed list {removed: [ids], added: [[index,
+// entry]], changed: [[index, fields]]} (drop, insert in order of place, merge), and any other
+// field is present only when its value changed. An answer without "base" is the whole state.
 
 export const KEYED = "features";
 export const LISTS = "graph";
@@ -30,22 +29,21 @@ export function patch(state, answer) {
 function patchList(entries, change) {
   const gone = new Set(change.removed);
   const result = entries.filter((entry) => !gone.has(entry.id));
-  // in order of place: the entries before `index` are already the new list's
-  for (const [index, entry] of change.put) {
-    if (index < result.length && result[index].id === entry.id) result[index] = { ...result[index], ...entry };
-    else result.splice(index, 0, entry);
-  }
+  for (const [index, entry] of change.added) result.splice(index, 0, entry); // in order of place
+  for (const [index, fields] of change.changed) result[index] = { ...result[index], ...fields };
   return result;
 }
 
-// What an answer changes, for views that update only that: null (everything) for a whole
-// state, else {features: Set of ids, graph: Set of entry ids, fields: Set of other fields}.
-export function touched(answer) {
+// What an answer changed, for views that update only that: null (everything) for a whole
+// state, else {features: Set of ids, graph: Set of entry ids, fields: Set of other fields};
+// state is the state after the answer (changed entries are known by their place in it).
+export function touched(answer, state) {
   if (!("base" in answer)) return null;
   const graph = new Set();
-  for (const change of Object.values(answer[LISTS] ?? {})) {
+  for (const [kind, change] of Object.entries(answer[LISTS] ?? {})) {
     for (const id of change.removed) graph.add(id);
-    for (const [, entry] of change.put) graph.add(entry.id);
+    for (const [, entry] of change.added) graph.add(entry.id);
+    for (const [index] of change.changed) graph.add(state[LISTS][kind][index].id);
   }
   return {
     features: new Set(Object.keys(answer[KEYED] ?? {})),
