@@ -302,17 +302,17 @@ def measure_web(job: Job) -> Metrics:
         threading.Thread(target=server.serve_forever, daemon=True).start()
         connection = http.client.HTTPConnection("127.0.0.1", server.server_address[1])
 
-        def call(path: str, body: dict[str, object]) -> dict[str, Any]:
+        def call(path: str, body: dict[str, object], held: dict[str, Any]) -> dict[str, Any]:
+            """The state after the request: ``held`` patched with the answer."""
             wall = time.perf_counter()
             connection.request("POST", path, json.dumps(body), {"Content-Type": "application/json"})
             answer = connection.getresponse().read()
             if path == "/api/choose":
                 rounds.append((time.perf_counter() - wall) * 1000)
                 sizes.append(len(answer))
-            return patch(state, json.loads(answer))
+            return patch(held, json.loads(answer))
 
-        state: dict[str, Any] = {}
-        state = call("/api/session", {})
+        state = call("/api/session", {}, {})
         rng = random.Random(WEB_SEED)
         while len(rounds) < WEB_CLICKS:
             features = state["features"]
@@ -321,7 +321,7 @@ def measure_web(job: Job) -> Metrics:
                 if f["state"] == "unselected" and f["value"] != "<other>"
             ]  # fmt: skip
             if not open_:
-                state = call("/api/session", {})
+                state = call("/api/session", {}, state)
                 continue
             feature = rng.choice(open_)
             kind = features[feature]["kind"]
@@ -332,7 +332,7 @@ def measure_web(job: Job) -> Metrics:
                 "action": action,
                 "feature": feature,
             }
-            state = call("/api/choose", body)
+            state = call("/api/choose", body, state)
         connection.request("GET", f"/api/state?session={state['session']}")
         whole = json.loads(connection.getresponse().read())
         if {**state, "version": 0, "refused": []} != {**whole, "version": 0}:
