@@ -12,7 +12,7 @@ from __future__ import annotations
 import ast
 import functools
 import os
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -129,6 +129,18 @@ def _segments(text: str, bodies: tuple[str, ...]) -> tuple[tuple[str, ...], tupl
     return distinct, tuple(segments)
 
 
+@functools.lru_cache(maxsize=65536)
+def _plan(text: str) -> tuple[tuple[str, ...], tuple[str | int, ...], bool]:
+    """How to resolve ``text``: its first-pass bodies and segments (as :func:`_segments`),
+    and whether a find pass follows. Raises :class:`SubstitutionError` for malformed text.
+    """
+    bodies = collect(text)
+    for body in bodies:
+        _split(body)
+    distinct, segments = _segments(text, bodies)
+    return distinct, segments, any(_split(b)[0] == "find" for b in bodies)
+
+
 # -- the find pass, on a concrete string (also used to evaluate terms later) ----------------
 @dataclass(frozen=True)
 class PackageTable:
@@ -188,15 +200,11 @@ class Substituter:
         try:
             if text.startswith("$(eval ") and text.endswith(")"):
                 return self._eval(text[7:-1], scope)
-            bodies = collect(text)
-            for body in bodies:
-                _split(body)
-            first = self._first_pass(text, bodies, scope)
+            distinct, segments, find = _plan(text)
         except SubstitutionError as error:
             return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
-        if not any(_split(b)[0] == "find" for b in bodies):
-            return first
-        return first.map(self._apply_find)
+        first = self._first_pass(text, distinct, segments, scope)
+        return first.map(self._apply_find) if find else first
 
     def _apply_find(self, value: Value) -> Value:
         if isinstance(value, Fail):
@@ -221,11 +229,18 @@ class Substituter:
                 self.host.note_unknown_package(name)
             return Apply("find_pass", (value,), display=value)
 
-    def _first_pass(self, text: str, bodies: Sequence[str], scope: Scope) -> Choice[Value]:
-        distinct, segments = _segments(text, tuple(bodies))
+    def _first_pass(
+        self,
+        text: str,
+        distinct: tuple[str, ...],
+        segments: tuple[str | int, ...],
+        scope: Scope,
+    ) -> Choice[Value]:
         values = [self._command(body, scope) for body in distinct]
         if not values:
             return Choice.const(self.space, text)
+        if segments == ("", 0, ""):  # the whole text is one substitution: its value as is
+            return values[0]
 
         def join(leaves: list[Value]) -> Value:
             for leaf in leaves:
