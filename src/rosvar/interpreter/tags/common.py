@@ -65,12 +65,15 @@ def namespace_scope(
         empty = where_text(it, ns, "empty")
         it.fail(empty, "ns-empty", f"<{tag_name}> tag has an empty 'ns' attribute")
         ns = ns.restrict(~empty)
-    child_ns = it.lift(
-        "child_namespace",
-        scope.ns,
-        ns if ns is not None else Choice.const(it.space, ""),
-        context=f"<{tag_name}> namespace",
-    )
+    if ns is None and all(isinstance(leaf, str) for _c, leaf in scope.ns):
+        child_ns = scope.ns  # what child_namespace gives without a child (a term it would wrap)
+    else:
+        child_ns = it.lift(
+            "child_namespace",
+            scope.ns,
+            ns if ns is not None else Choice.const(it.space, ""),
+            context=f"<{tag_name}> namespace",
+        )
     if include_filename is not None:
         child = scope.include_child(child_ns, include_filename)
     else:
