@@ -16,6 +16,7 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros.names import settable
 from rosvar.workspace import Workspace
+from rosvar.workspace.paths import real_path
 
 Progress = Callable[[int, int, str], None]
 
@@ -79,7 +80,7 @@ class Analysis:
         it = Interpretation(
             self.workspace, self.space, self.domains.arg_domain, self.domains.env_domain, file
         )
-        it.stack.append(os.path.realpath(file))
+        it.stack.append(real_path(file))
         root = it.load(file)
         model = it.model
         if root is not None:

@@ -10,7 +10,6 @@ never changes the semantics, only how finely conditions are split.
 
 from __future__ import annotations
 
-import functools
 import os
 import re
 from collections import defaultdict
@@ -23,9 +22,9 @@ from rosvar.interpreter.evaluator import EvalRefused, compared_literals
 from rosvar.logic.inputs import OTHER, UNSET, Slot
 from rosvar.workspace import Workspace
 from rosvar.workspace.executables import executables
+from rosvar.workspace.paths import real_path
 
 _WHOLE_ARG = re.compile(r"\s*\$\(arg\s+([^\s)]+)\s*\)\s*")
-_realpath = functools.lru_cache(maxsize=65536)(os.path.realpath)
 _FIND = re.compile(r"\$\(find\s+([^\s)]+)\s*\)")
 _ONE_ARG = re.compile(r"([^$]*)\$\(arg\s+([^\s)]+)\s*\)([^$]*)")
 PARAM_TYPES = ("str", "string", "int", "double", "bool", "boolean", "yaml", "auto")
@@ -220,7 +219,7 @@ class DomainTable:
         """Literal values that including files pass to ``file``'s args."""
         if self._passed is None:
             self._passed = self._index_includes()
-        return self._passed.get(_realpath(file), {})
+        return self._passed.get(real_path(file), {})
 
     def forwarded_literals(
         self, file: str, name: str, seen: frozenset[str] = frozenset()
@@ -233,7 +232,7 @@ class DomainTable:
         """
         if self._passed is None:
             self._passed = self._index_includes()
-        key = f"{_realpath(file)}\x00{name}"
+        key = f"{real_path(file)}\x00{name}"
         if key in seen:
             return set()
         values: set[str] = set()
@@ -260,7 +259,7 @@ class DomainTable:
                     if "$" not in value:
                         index[target][name].add(value)
                     elif forwarded := _WHOLE_ARG.fullmatch(value):
-                        source = f"{_realpath(launch_file)}\x00{forwarded.group(1)}"
+                        source = f"{real_path(launch_file)}\x00{forwarded.group(1)}"
                         self._forwards.setdefault(source, []).append((target, name))
         return index
 
@@ -272,4 +271,4 @@ class DomainTable:
         text = _FIND.sub(find, text).replace("$(dirname)", os.path.dirname(launch_file))
         if "$" in text or "\x00" in text:
             return None
-        return str(_realpath(text))
+        return str(real_path(text))

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import functools
-import os
 from typing import cast
 
 from rosvar.frontends.entity import Entity
@@ -15,9 +13,9 @@ from rosvar.interpreter.tags.common import bool_value, namespace_scope
 from rosvar.interpreter.tags.env import handle_env
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import BDD
+from rosvar.workspace.paths import real_path
 
 ATTRIBUTES = ("file", "ns", "clear_params", "pass_all_args")
-_realpath = functools.lru_cache(maxsize=65536)(os.path.realpath)
 
 
 @tag("include")
@@ -71,7 +69,7 @@ def _include(it: Interpretation, entity: Entity, scope: Scope, file: Raw, pass_a
     child.args = passed
     child.include_args = None
     child.anon = {}
-    path = _realpath(file)
+    path = real_path(file)
     if path in it.stack:
         it.fail(it.space.true, "include-cycle", f"include cycle: {file} includes itself")
         return

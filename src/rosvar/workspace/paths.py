@@ -1,0 +1,24 @@
+"""Resolved (symlink-free) paths, cached: every launch file is resolved by several steps."""
+
+from __future__ import annotations
+
+import functools
+import os
+
+
+def real_path(path: str) -> str:
+    """``os.path.realpath``, with one ``lstat`` per new absolute path instead of one per
+    component (relative paths depend on the working directory: never cached)."""
+    return _real_absolute(path) if os.path.isabs(path) else os.path.realpath(path)
+
+
+@functools.lru_cache(maxsize=65536)
+def _real_absolute(path: str) -> str:
+    """A path's directory is resolved once (and cached) for all the files in it, so only
+    the last component is checked; ``.`` and ``..``, whose meaning depends on the
+    symlinks before them, go to ``os.path.realpath`` whole."""
+    head, tail = os.path.split(path)
+    if tail in ("", ".", "..") or head == path:
+        return os.path.realpath(path)
+    joined = os.path.join(_real_absolute(head), tail)
+    return os.path.realpath(joined) if os.path.islink(joined) else joined
