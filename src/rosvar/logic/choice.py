@@ -52,16 +52,20 @@ class Choice(Generic[T]):
             self.false = condition.bdd.false if false is None else false
             self.branches = () if condition == self.false else (branches[0],)
             return
-        merged: dict[object, tuple[BDD, T]] = {}
-        for branch in branches:
-            leaf = branch[1]
-            key = leaf if type(leaf) is str else _key(leaf)
-            known = merged.get(key)
-            merged[key] = branch if known is None else (known[0] | branch[0], leaf)
+        merged = _merged(branches)
         if false is None and merged:
-            false = next(iter(merged.values()))[0].bdd.false
+            false = merged[0][0].bdd.false
         self.false = false
-        self.branches = tuple(branch for branch in merged.values() if branch[0] != false)
+        self.branches = tuple(branch for branch in merged if branch[0] != false)
+
+    @staticmethod
+    def _of_possible(branches: Iterable[tuple[BDD, U]], false: BDD) -> Choice[U]:
+        """The constructor for branches whose conditions are known not to be false (taken
+        from a choice, or just checked): equal leaves merged, nothing compared again."""
+        choice: Choice[U] = object.__new__(Choice)
+        choice.branches = _merged(branches)
+        choice.false = false
+        return choice
 
     @staticmethod
     def const(space: ConditionSpace, leaf: U) -> Choice[U]:
@@ -92,7 +96,7 @@ class Choice(Generic[T]):
         return [v for _, v in self.branches]
 
     def map(self, function: Callable[[T], U]) -> Choice[U]:
-        return Choice([(c, function(v)) for c, v in self.branches], self.false)
+        return Choice._of_possible([(c, function(v)) for c, v in self.branches], self.false)
 
     def bind(self, function: Callable[[T], Choice[U]]) -> Choice[U]:
         """Apply a conditional function to each branch and flatten."""
@@ -102,7 +106,7 @@ class Choice(Generic[T]):
                 joint = condition & inner
                 if joint != self.false:
                     out.append((joint, value))
-        return Choice(out, self.false)
+        return Choice._of_possible(out, self.false)
 
     def restrict(self, condition: BDD) -> Choice[T]:
         """Only the part of this value that can hold under ``condition``."""
@@ -122,6 +126,17 @@ class Choice(Generic[T]):
         for condition, _leaf in self.branches:
             result |= condition
         return result
+
+
+def _merged(branches: Iterable[tuple[BDD, V]]) -> tuple[tuple[BDD, V], ...]:
+    """Branches with equal leaves joined into the first one's place."""
+    merged: dict[object, tuple[BDD, V]] = {}
+    for branch in branches:
+        leaf = branch[1]
+        key = leaf if type(leaf) is str else _key(leaf)
+        known = merged.get(key)
+        merged[key] = branch if known is None else (known[0] | branch[0], leaf)
+    return tuple(merged.values())
 
 
 def _false_of(choice: Choice[Any]) -> BDD:
@@ -180,4 +195,4 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
                     chosen[index] = v
                     nxt.append((both, chosen))
         partial = nxt
-    return Choice([(c, function(vs)) for c, vs in partial], false)
+    return Choice._of_possible([(c, function(vs)) for c, vs in partial], false)
