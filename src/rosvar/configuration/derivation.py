@@ -35,6 +35,8 @@ PRESENT, ABSENT, UNDETERMINED = "present", "absent", "undetermined"
 WITNESSES = 24
 """Witnesses kept per component and step: enough to show most variables open."""
 CACHED_ROOTS = 64  # formulas restricted by a step's literals, shared by that step's walks
+SMALL_ROOT = 5_000
+"""Nodes of a restricted formula up to which a conjunction with it costs less than a check."""
 
 
 @dataclass(frozen=True)
@@ -95,7 +97,7 @@ class Derivation:
         self._supports: dict[BDD, frozenset[str]] = {}
         self._restricted: dict[object, tuple[str | None, BDD, BDD, frozenset[int]]] = {}
         self._judged: dict[tuple[BDD, BDD, BDD], tuple[str, tuple[int, int] | None]] = {}
-        self._roots: dict[tuple[int, BDD], BDD] = {}
+        self._roots: dict[tuple[int, BDD], tuple[BDD, int]] = {}  # with its size
         self._counts: dict[tuple[int, BDD], int] = {}
         self._random = random.Random(0)  # reproducible witnesses, hence reproducible timings
         components = range(len(self.members))
@@ -213,20 +215,31 @@ class Derivation:
 
     def root(self, component: int, decisions: Decisions) -> BDD:
         """The component's formula with its user literals fixed (remembered per step)."""
+        return self._root(component, decisions)[0]
+
+    def _root(self, component: int, decisions: Decisions) -> tuple[BDD, int]:
         cube = decisions.cubes[component]
         key = (component, cube)
-        root = self._roots.get(key)
-        if root is None:
+        found = self._roots.get(key)
+        if found is None:
             mine = {v: b for v, b in decisions.literals.items() if v in self._quantified[component]}
-            root = (
-                self.manager.let(mine, self.formulas[component])
-                if mine
-                else self.formulas[component]
-            )
+            root = self.cofactor(self.formulas[component], mine)
+            found = (root, root.dag_size)
             if len(self._roots) >= CACHED_ROOTS:
                 self._roots.pop(next(iter(self._roots)))
-            self._roots[key] = root
-        return root
+            self._roots[key] = found
+        return found
+
+    def _example(self, component: int, decisions: Decisions, goal: BDD) -> int | bool:
+        """A valid configuration satisfying ``goal`` where the restricted formula is small
+        enough to conjoin; else only whether there is one (False: none)."""
+        root, size = self._root(component, decisions)
+        if size > SMALL_ROOT:
+            return self.satisfiable(component, decisions.cubes[component] & goal)
+        both = root & goal
+        if both == self.manager.false:
+            return False
+        return self._walk(component, both, decisions.literals)
 
     def count(self, decisions: Decisions) -> int:
         """Valid configurations left: the product of the components' counts (each cached)."""
@@ -256,46 +269,52 @@ class Derivation:
         formula goes from the root to TRUE without ever backing up: where one branch is
         FALSE it takes the other, elsewhere the branch ``prefer`` names, else a random one.
         """
-        manager = self.manager
-        true, false = manager.true, manager.false
-        coin = self._random.getrandbits
-        members = self.members[component]
         literals = decisions.literals
         root = self.root(component, decisions)
         if extra is not None:
-            root = manager.let(dict([extra]), root)
+            root = self.manager.let(dict([extra]), root)
             literals = {**literals, extra[0]: extra[1]}
-        if root == false:
+        if root == self.manager.false:
             return ()
-        found: list[int] = []
-        for _ in range(count):
-            path: dict[str, bool] = {}
-            node = root
-            while node != true:
-                low, high = node.low, node.high
-                if node.negated:
-                    low, high = ~low, ~high
-                name = str(node.var)
-                if low == false or high == false:
-                    branch = low == false
-                else:
-                    preferred = prefer.get(name) if prefer else None
-                    branch = bool(coin(1)) if preferred is None else preferred
-                path[name] = branch
-                node = high if branch else low
-            bits = 0
-            for variable in members:
-                value = path.get(variable)
-                if value is None:
-                    value = literals.get(variable)
-                if value is None and prefer:
-                    value = prefer.get(variable)
-                if value is None:
-                    value = bool(coin(1))
-                if value:
-                    bits |= 1 << self.position[variable]
-            found.append(bits)
-        return tuple(found)
+        return tuple(self._walk(component, root, literals, prefer) for _ in range(count))
+
+    def _walk(
+        self,
+        component: int,
+        root: BDD,
+        literals: Mapping[str, bool],
+        prefer: Mapping[str, bool] | None = None,
+    ) -> int:
+        """One configuration of ``component`` satisfying ``root`` (a restriction of its
+        formula by ``literals``, not FALSE), as bits."""
+        true, false = self.manager.true, self.manager.false
+        coin = self._random.getrandbits
+        path: dict[str, bool] = {}
+        node = root
+        while node != true:
+            low, high = node.low, node.high
+            if node.negated:
+                low, high = ~low, ~high
+            name = str(node.var)
+            if low == false or high == false:
+                branch = low == false
+            else:
+                preferred = prefer.get(name) if prefer else None
+                branch = bool(coin(1)) if preferred is None else preferred
+            path[name] = branch
+            node = high if branch else low
+        bits = 0
+        for variable in self.members[component]:
+            value = path.get(variable)
+            if value is None:
+                value = literals.get(variable)
+            if value is None and prefer:
+                value = prefer.get(variable)
+            if value is None:
+                value = bool(coin(1))
+            if value:
+                bits |= 1 << self.position[variable]
+        return bits
 
     def presence(self, bounds: Bounds, decisions: Decisions) -> Verdict:
         """Present, absent or undetermined, and what the verdict depended on.
@@ -358,12 +377,15 @@ class Derivation:
                 within = witness
             if without is not None and within is not None:
                 return UNDETERMINED, (without, within)
-        cube = decisions.cubes[component]
-        if without is None and not self.satisfiable(component, cube & ~must):
+        found_without = self._example(component, decisions, ~must) if without is None else without
+        if found_without is False:  # (a witness is an int, never the object False)
             return PRESENT, None
-        if within is None and not self.satisfiable(component, cube & may):
+        found_within = self._example(component, decisions, may) if within is None else within
+        if found_within is False:
             return ABSENT, None
-        return UNDETERMINED, None
+        if found_without is True or found_within is True:
+            return UNDETERMINED, None
+        return UNDETERMINED, (found_without, found_within)
 
     def _holds(self, u: BDD, witness: int) -> bool:
         """The truth of ``u`` in a witness: one path from the root down."""
