@@ -22,8 +22,10 @@ literal and only looks at the variables still open in the literal's component.
 from __future__ import annotations
 
 import random
+from collections import deque
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
+from itertools import chain
 
 import dd.cudd as _cudd
 
@@ -35,6 +37,8 @@ PRESENT, ABSENT, UNDETERMINED = "present", "absent", "undetermined"
 WITNESSES = 24
 """Witnesses kept per component and step: enough to show most variables open."""
 CACHED_ROOTS = 64  # formulas restricted by a step's literals, shared by that step's walks
+EXAMPLES = 64
+"""Configurations found for presence judgements, kept to judge other conditions too."""
 SMALL_ROOT = 5_000
 """Nodes of a restricted formula up to which a conjunction with it costs less than a check."""
 
@@ -99,8 +103,9 @@ class Derivation:
         self._judged: dict[tuple[BDD, BDD, BDD], tuple[str, tuple[int, int] | None]] = {}
         self._roots: dict[tuple[int, BDD], tuple[BDD, int]] = {}  # with its size
         self._counts: dict[tuple[int, BDD], int] = {}
-        self._random = random.Random(0)  # reproducible witnesses, hence reproducible timings
         components = range(len(self.members))
+        self._random = random.Random(0)  # reproducible witnesses, hence reproducible timings
+        self._examples: dict[int, deque[int]] = {i: deque(maxlen=EXAMPLES) for i in components}
         empty = Decisions(
             {},
             {i: manager.true for i in components},
@@ -239,7 +244,9 @@ class Derivation:
         both = root & goal
         if both == self.manager.false:
             return False
-        return self._walk(component, both, decisions.literals)
+        found = self._walk(component, both, decisions.literals)
+        self._examples[component].append(found)
+        return found
 
     def count(self, decisions: Decisions) -> int:
         """Valid configurations left: the product of the components' counts (each cached)."""
@@ -289,31 +296,33 @@ class Derivation:
         formula by ``literals``, not FALSE), as bits."""
         true, false = self.manager.true, self.manager.false
         coin = self._random.getrandbits
-        path: dict[str, bool] = {}
-        node = root
-        while node != true:
+        position = self.position
+        bits = 0
+        seen: set[str] = set()
+        node, flipped = root, False
+        while (name := node.var) is not None:
+            flipped ^= bool(node.negated)  # the children are those of the regular node
             low, high = node.low, node.high
-            if node.negated:
-                low, high = ~low, ~high
-            name = str(node.var)
-            if low == false or high == false:
-                branch = low == false
+            dead = true if flipped else false  # the child that is FALSE under the flip
+            if low == dead or high == dead:
+                branch = low == dead
             else:
                 preferred = prefer.get(name) if prefer else None
                 branch = bool(coin(1)) if preferred is None else preferred
-            path[name] = branch
+            seen.add(name)
+            if branch:
+                bits |= 1 << position[name]
             node = high if branch else low
-        bits = 0
         for variable in self.members[component]:
-            value = path.get(variable)
-            if value is None:
-                value = literals.get(variable)
+            if variable in seen:
+                continue
+            value = literals.get(variable)
             if value is None and prefer:
                 value = prefer.get(variable)
             if value is None:
                 value = bool(coin(1))
             if value:
-                bits |= 1 << self.position[variable]
+                bits |= 1 << position[variable]
         return bits
 
     def presence(self, bounds: Bounds, decisions: Decisions) -> Verdict:
@@ -370,7 +379,8 @@ class Derivation:
                 return ABSENT, None
             return UNDETERMINED, None
         without = within = None
-        for witness in decisions.witnesses[component]:
+        examples = (w for w in self._examples[component] if decisions.valid(component, w))
+        for witness in chain(decisions.witnesses[component], examples):
             if without is None and not self._holds(must, witness):
                 without = witness
             if within is None and self._holds(may, witness):
