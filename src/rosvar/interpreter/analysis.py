@@ -46,7 +46,7 @@ class Analysis:
     def all_models(self, progress: Progress | None = None) -> list[LaunchModel]:
         files = self.workspace.launch_files
         models = []
-        with _collector_paused():
+        with collector_paused():
             for index, file in enumerate(files):
                 if progress is not None:
                     progress(index, len(files), file)
@@ -112,8 +112,9 @@ class Analysis:
 
 
 @contextmanager
-def _collector_paused() -> Iterator[None]:
-    """Pause CPython's cyclic garbage collector while models are built.
+def collector_paused() -> Iterator[None]:
+    """Pause CPython's cyclic garbage collector while models (or what is derived from
+    them, such as the feature model) are built.
 
     Models are a large heap of long-lived objects that form no cycles: the collector
     rescanned all of it each time it grew by a quarter (a third of the time on 2,000
