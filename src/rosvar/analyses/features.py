@@ -285,7 +285,8 @@ def extract(
         _check_links(buckets)
         feature_model.solution = _formula(space, features, feature_model.constraints, buckets)
     except ModelTooLarge as too_large:
-        feature_model.solution = too_large
+        # kept without its traceback, whose frames hold the half-built BDDs
+        feature_model.solution = ModelTooLarge(*too_large.args)
         feature_model.diagnostics.append(
             Diagnostic(
                 "model-too-large",
