@@ -242,6 +242,18 @@ def test_values_known_and_typed_change_the_graph(page: Any, examples: Live) -> N
     app.assert_shows_server_state()
 
 
+def test_a_tab_whose_state_the_server_forgot_gets_it_whole(page: Any, examples: Live) -> None:
+    app = App(page, examples)
+    robot = file_named(app.state, "robot.launch")
+    app.server_state()
+    app.server_state()  # two other readers: the server no longer holds the page's version
+    with page.expect_response("**/api/choose") as answer:
+        app.choose(robot, "select")
+    assert "base" not in answer.value.json()
+    app.assert_shows_server_state()
+    assert app.marks()[robot] == "✓"
+
+
 def test_warnings_follow_the_conflicts(page: Any, examples: Live) -> None:
     app = App(page, examples)
     control = file_named(app.state, "control.xml")
