@@ -12,9 +12,12 @@ from dataclasses import dataclass, field
 from rosvar.diagnostics import Location
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, slots=True)
 class Entity:
-    """One element: tag, raw attributes in document order, children, direct text."""
+    """One element: tag, raw attributes in document order, children, direct text.
+
+    Slots: the parse cache holds every element of every launch file of a workspace.
+    """
 
     tag: str
     attributes: dict[str, str]

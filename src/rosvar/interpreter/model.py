@@ -4,6 +4,8 @@ Every element carries a presence ``condition`` (a BDD over the entry file's inpu
 and attributes as :class:`~rosvar.logic.choice.Choice` values, so restricting the
 model to one configuration (see :mod:`rosvar.analyses.resolve`) gives what
 roslaunch would load, without reading the XML again.
+
+Element classes have slots: a large workspace's models hold millions of them.
 """
 
 from __future__ import annotations
@@ -36,21 +38,21 @@ class Binary:
     data: bytes
 
 
-@dataclass
+@dataclass(slots=True)
 class Remap:
     condition: BDD
     source: Raw
     target: Raw
 
 
-@dataclass
+@dataclass(slots=True)
 class EnvSetting:
     condition: BDD
     name: Raw
     value: Raw
 
 
-@dataclass
+@dataclass(slots=True)
 class NodeDecl:
     """A ``<node>`` or ``<test>``; ``fields`` hold raw strings (or None when absent)."""
 
@@ -66,7 +68,7 @@ class NodeDecl:
         return self.fields[key]
 
 
-@dataclass
+@dataclass(slots=True)
 class ParamDecl:
     """One parameter set on the parameter server (dicts from YAML already unrolled)."""
 
@@ -77,7 +79,7 @@ class ParamDecl:
     origin: str  # "param", "rosparam", "node-param"
 
 
-@dataclass
+@dataclass(slots=True)
 class YamlDecl:
     """A ``<rosparam>`` some of whose attributes are only known per configuration.
 
@@ -95,14 +97,14 @@ class YamlDecl:
     text: Raw
 
 
-@dataclass
+@dataclass(slots=True)
 class ClearParamDecl:
     condition: BDD
     location: Location
     name: Choice[Raw]
 
 
-@dataclass
+@dataclass(slots=True)
 class MachineDecl:
     condition: BDD
     location: Location
@@ -110,7 +112,7 @@ class MachineDecl:
     attributes: dict[str, Choice[Raw | None]]
 
 
-@dataclass
+@dataclass(slots=True)
 class IncludeDecl:
     """An ``<include>`` and what became of it (``resolved`` is False for unreadable targets)."""
 
@@ -121,7 +123,7 @@ class IncludeDecl:
     resolved: bool
 
 
-@dataclass
+@dataclass(slots=True)
 class Decision:
     """An ``if``/``unless`` roslaunch evaluated (on path ``condition``): true where ``outcome``."""
 
@@ -131,7 +133,7 @@ class Decision:
     outcome: BDD
 
 
-@dataclass
+@dataclass(slots=True)
 class ErrorEvent:
     """Under ``condition`` roslaunch stops here with ``message``."""
 
@@ -141,7 +143,7 @@ class ErrorEvent:
     message: str
 
 
-@dataclass
+@dataclass(slots=True)
 class ArgDecl:
     """An ``<arg>`` declaration of the entry file (its inputs) or of an included file."""
 

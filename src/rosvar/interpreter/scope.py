@@ -30,7 +30,7 @@ MISSING: Final = _Missing()
 ArgValue = Choice[Raw | _Missing]
 
 
-@dataclass
+@dataclass(slots=True)
 class PrivateParam:
     """A ``~name`` param declared outside a node: applied to later nodes of the scope."""
 
