@@ -18,7 +18,8 @@ from typing import TYPE_CHECKING
 import pytest
 
 import rosvar
-from rosvar.outputs.cli import EXIT_FAILS, EXIT_INPUT, EXIT_OK, EXIT_USAGE, main
+from rosvar.analyses import features
+from rosvar.outputs.cli import EXIT_FAILS, EXIT_INPUT, EXIT_OK, EXIT_TOO_LARGE, EXIT_USAGE, main
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -366,3 +367,18 @@ def test_serve_usage_errors(robot: str, capsys: pytest.CaptureFixture[str]) -> N
     assert code == EXIT_USAGE and "NAME=VALUE" in err
     code, _out, err = run(capsys, "serve", ".", "--host", "203.0.113.1", "--port", "0")
     assert code == EXIT_USAGE and "cannot listen" in err
+
+
+def test_a_model_too_large_to_solve(
+    workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Listed by the formats that need no solver; the others exit 4 with the reason."""
+    workspace.write("launch/clone.launch", GOOD)  # clashes with good.launch: one linked pair
+    monkeypatch.setattr(features, "LINK_BUDGET", 0)
+    root = str(workspace.root)
+    code, out, _err = run(capsys, "features", root)
+    assert code == EXIT_OK and "unknown number of valid configurations" in out
+    for argv in (("features", root, "--format", "uvl"), ("configure", root)):
+        code, _out, err = run(capsys, *argv)
+        assert code == EXIT_TOO_LARGE
+        assert err.startswith("rosvar: the feature model is too large to solve: ")

@@ -17,7 +17,7 @@ import time
 from collections.abc import Sequence
 
 from rosvar import __version__
-from rosvar.analyses.features import extract
+from rosvar.analyses.features import ModelTooLarge, extract
 from rosvar.analyses.metrics import compute
 from rosvar.analyses.resolve import resolve
 from rosvar.configuration.choices import ChoiceError, UserChoice
@@ -31,7 +31,7 @@ from rosvar.ros.names import command_line_mappings
 from rosvar.workspace import Workspace, discover
 from rosvar.workspace.hints import load_hints
 
-EXIT_OK, EXIT_FAILS, EXIT_USAGE, EXIT_INPUT = 0, 1, 2, 3
+EXIT_OK, EXIT_FAILS, EXIT_USAGE, EXIT_INPUT, EXIT_TOO_LARGE = 0, 1, 2, 3, 4
 
 
 def _progress(index: int, total: int, file: str) -> None:
@@ -403,6 +403,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 130
     except BrokenPipeError:
         return EXIT_OK
+    except ModelTooLarge as error:  # what needs the solver of a model listed but not solved
+        print(f"rosvar: the feature model is too large to solve: {error}", file=sys.stderr)
+        return EXIT_TOO_LARGE
     finally:
         # free BDD nodes before their manager: CUDD complains when the interpreter
         # tears modules down in an arbitrary order
