@@ -68,9 +68,13 @@ def _passed_args(include: Entity, root: Entity) -> Iterator[tuple[str | None, st
 
 
 def _walk(entity: Entity) -> Iterator[Entity]:
-    yield entity
-    for child in entity.children:
-        yield from _walk(child)
+    """``entity`` and every element below it, in document order (a stack, not nested
+    generators: those pass each element up through every level)."""
+    stack = [entity]
+    while stack:
+        element = stack.pop()
+        yield element
+        stack.extend(reversed(element.children))
 
 
 def file_facts(root: Entity) -> dict[str, ArgFacts]:
