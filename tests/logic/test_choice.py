@@ -256,3 +256,18 @@ def _random_choice(space: ConditionSpace, rng: random.Random, tag: str) -> Choic
         else:
             branches.append((x_is(space, slot), leaf))
     return Choice(branches)
+
+
+def test_constants_are_shared_within_a_space_only(space: ConditionSpace) -> None:
+    other = ConditionSpace()
+    text = Choice.const(space, "x")
+    assert Choice.const(space, "x") is text
+    assert Choice.const(space, None) is Choice.const(space, None)
+    elsewhere = Choice.const(other, "x")
+    assert elsewhere is not text
+    assert elsewhere.branches[0][0] == other.true  # a condition of its own manager
+    # 1 == True: numbers and bools are never looked up by value; lists cannot be
+    assert Choice.const(space, True).single() is True
+    assert Choice.const(space, 1).single() == 1 and Choice.const(space, 1).single() is not True
+    listed = Choice.const(space, ["a"])
+    assert listed.single() == ["a"] and Choice.const(space, ["a"]) is not listed

@@ -69,9 +69,17 @@ class Choice(Generic[T]):
 
     @staticmethod
     def const(space: ConditionSpace, leaf: U) -> Choice[U]:
+        """``leaf`` in every configuration; one shared object per text (or None) and space."""
+        shared = type(leaf) is str or leaf is None
+        if shared:
+            known: Choice[U] | None = space.constants.get(leaf)
+            if known is not None:
+                return known
         choice: Choice[U] = object.__new__(Choice)  # skips Generic's __new__: a hot path
         choice.branches = ((space.true, leaf),)
         choice.false = space.false
+        if shared:
+            space.constants[leaf] = choice
         return choice
 
     @staticmethod

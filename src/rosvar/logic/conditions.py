@@ -108,6 +108,9 @@ class ConditionSpace:
         self._input_constraints: dict[Input, BDD] = {}
         self._facts_of: dict[str, list[BDD]] = {}
         self._described: dict[tuple[BDD, bool, bool, int], str] = {}
+        # Choice.const's constants of this space, by text: choices are immutable, and the
+        # same literal is met again in every file that includes the one it is written in.
+        self.constants: dict[object, Any] = {}
 
     # -- declaring atoms -------------------------------------------------------------
     def _new_var(self, atom: Atom, level: int | None = None) -> BDD:
