@@ -142,7 +142,7 @@ class Derivation:
             return step if known == value else None
         kept = tuple(w for w in decisions.witnesses[component] if bool(w & bit) == value)
         if not kept:
-            if not self.satisfiable(component, step.cubes[component]):
+            if not self._possible(component, step, self.manager.true):
                 return None  # refuted inside CUDD: a walk would have to try every path
             kept = self._walks(component, step, 1)
         step = replace(
@@ -174,7 +174,7 @@ class Derivation:
             ]
             if not suspects:
                 break
-            found = self._differing(component, step.cubes[component], suspects, decided)
+            found = self._differing(component, step, suspects, decided)
             if found is None:
                 break
             variable, seen = found
@@ -193,7 +193,7 @@ class Derivation:
     def _differing(
         self,
         component: int,
-        cube: BDD,
+        step: Decisions,
         suspects: Sequence[tuple[str, bool]],
         decided: dict[str, bool],
     ) -> tuple[str, bool] | None:
@@ -202,12 +202,12 @@ class Derivation:
         Suspects refuted on the way, a whole half at a time, go to ``decided``.
         """
         group = list(suspects)
-        if not self.satisfiable(component, cube & self._differs(group)):
+        if not self._possible(component, step, self._differs(group)):
             decided.update(group)
             return None
         while len(group) > 1:
             half = group[: len(group) // 2]
-            if self.satisfiable(component, cube & self._differs(half)):
+            if self._possible(component, step, self._differs(half)):
                 group = half
             else:
                 decided.update(half)
@@ -235,12 +235,21 @@ class Derivation:
             self._roots[key] = found
         return found
 
+    def _possible(self, component: int, decisions: Decisions, goal: BDD) -> bool:
+        """Some valid configuration under the user literals satisfies ``goal``: conjoined
+        with the restricted formula where it is small (``and_exists`` first builds a cube
+        over every variable of the manager), else checked inside CUDD."""
+        root, size = self._root(component, decisions)
+        if size > SMALL_ROOT:
+            return self.satisfiable(component, decisions.cubes[component] & goal)
+        return bool(root & goal != self.manager.false)
+
     def _example(self, component: int, decisions: Decisions, goal: BDD) -> int | bool:
         """A valid configuration satisfying ``goal`` where the restricted formula is small
         enough to conjoin; else only whether there is one (False: none)."""
         root, size = self._root(component, decisions)
         if size > SMALL_ROOT:
-            return self.satisfiable(component, decisions.cubes[component] & goal)
+            return self._possible(component, decisions, goal)
         both = root & goal
         if both == self.manager.false:
             return False

@@ -3,9 +3,8 @@
 A :class:`Configurator` is built once per workspace (feature model, lowered presence
 conditions, the variational graph) and answers any list of choices, statelessly. Choices
 are replayed in order and every prefix's replay is cached, so a session that adds one
-choice at a time pays for one step. What a list of literals shows (presences, graph
-entries, conflicts) is derived from the longest earlier list it extends: only what the
-new literals can change is judged again, and unchanged entries stay the same objects.
+choice at a time pays for one step; what the literals show comes from ``view``, derived
+from the longest earlier list of them.
 """
 
 from __future__ import annotations
@@ -20,17 +19,17 @@ from rosvar.configuration.catalog import Catalog, Feature, FileEntry
 from rosvar.configuration.choices import ChoiceError, Refusal, UserChoice
 from rosvar.configuration.command import Launch, command_line, group
 from rosvar.configuration.conflicts import Conflicts, ConflictState
-from rosvar.configuration.derivation import ABSENT, PRESENT, Decisions, Derivation
-from rosvar.configuration.graph import Element, Fields, Values, VariationalGraph
+from rosvar.configuration.derivation import PRESENT, Decisions, Derivation
+from rosvar.configuration.graph import VariationalGraph
 from rosvar.configuration.lowering import Lowering
-from rosvar.configuration.presence import Judged, Presences, Typed
+from rosvar.configuration.view import Graph, Views
 from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import LaunchModel
 from rosvar.logic.conditions import BDD
-from rosvar.logic.inputs import OTHER, UNSET, Input
+from rosvar.logic.inputs import OTHER, UNSET
 
 CACHED_STEPS = 4096
-"""Solver answers kept per list of effective choices (a session's history and then some)."""
+"""Replays and solver answers kept per list of choices (a session's history and then some)."""
 EXACT_INTEGER = 2**53  # larger counts go to JSON as strings
 
 
@@ -53,26 +52,6 @@ class FeatureState:
             "parent": self.parent,
             "state": self.state,
             "derived": self.derived,
-        }
-
-
-@dataclass
-class Graph:
-    """Element variants with their presence; ``errors`` are where roslaunch would stop."""
-
-    nodes: list[Fields] = field(default_factory=list)
-    tests: list[Fields] = field(default_factory=list)
-    params: list[Fields] = field(default_factory=list)
-    topics: list[Fields] = field(default_factory=list)
-    errors: list[Fields] = field(default_factory=list)
-
-    def to_json(self) -> dict[str, object]:
-        return {
-            "nodes": self.nodes,
-            "tests": self.tests,
-            "params": self.params,
-            "topics": self.topics,
-            "errors": self.errors,
         }
 
 
@@ -134,19 +113,6 @@ class _Replay:
     decisions: Decisions
 
 
-@dataclass(frozen=True)
-class _View:
-    """What a list of literals (with its typed texts) shows, kept to derive longer lists'."""
-
-    decisions: Decisions
-    texts: Mapping[str, str]  # arg id → its <other> text
-    typed: Typed
-    presences: list[Judged]  # per condition of ``Presences``
-    entries: list[list[Fields]]  # per element of the graph
-    conflicts: list[ConflictState | None]  # per pair of ``Conflicts``
-    graph: Graph
-
-
 class Configurator:
     """Built once per workspace; answers any list of user choices (stateless)."""
 
@@ -170,25 +136,9 @@ class Configurator:
             entry.path: self.lowering.bounds(self.graph.launched[entry.path])
             for entry in self.catalog.files
         }
-        self.presences = Presences(
-            self.graph.elements, self.derivation, self.lowering, self._describe
+        self.views = Views(
+            analysis, self.catalog, self.graph, self.lowering, self.derivation, self.conflicts
         )
-        self._elements_of: list[list[int]] = [[] for _ in self.presences.conditions]
-        for index, condition in enumerate(self.presences.of_element):
-            self._elements_of[condition].append(index)
-        self._inputs_read: dict[str, list[int]] = {}  # value variable or arg id → elements
-        self._paths = paths = {entry.path: entry for entry in self.catalog.files}
-        self._files = {entry.id: entry for entry in self.catalog.files}
-        for index, element in enumerate(self.graph.elements):
-            for arg in paths[element.entry].feature.args if element.inputs else ():
-                if arg.input in element.inputs:
-                    arg_id = f"{paths[element.entry].id}:{arg.name}"
-                    for feature, _value in self.catalog.values_of(arg_id):
-                        self._inputs_read.setdefault(feature.variable, []).append(index)
-                    self._inputs_read.setdefault(arg_id, []).append(index)
-        self._of_kind: dict[str, list[int]] = {}
-        for index, element in enumerate(self.graph.elements):
-            self._of_kind.setdefault(element.kind, []).append(index)
         self._others = [
             (arg_id, feature.variable)
             for arg_id, (_arg, values) in self.catalog.args.items()
@@ -214,13 +164,6 @@ class Configurator:
         self._steps: OrderedDict[tuple[tuple[str, bool], ...], Decisions] = OrderedDict()
         self._replays: OrderedDict[tuple[UserChoice, ...], _Replay] = OrderedDict()
         self._start = _Replay((), (), (), self.derivation.initial)
-        self._views: OrderedDict[tuple[tuple[str, bool, str | None], ...], _View] = OrderedDict()
-        self._rendered: dict[
-            tuple[str, frozenset[tuple[Input, str | None]] | None], list[Fields]
-        ] = {}
-        self._entries: dict[str, tuple[tuple[str, str | None], list[Fields]]] = {}
-        self._described: dict[tuple[BDD, frozenset[tuple[str, bool]]], str] = {}
-        self._initial_view = self._view(self._start)
 
     # -- choices -------------------------------------------------------------------------
     def state(self, choices: Sequence[UserChoice]) -> ConfigurationState:
@@ -366,13 +309,14 @@ class Configurator:
     # -- the answer ---------------------------------------------------------------------
     def _answer(self, replay: _Replay) -> ConfigurationState:
         decisions = replay.decisions
-        view = self._view(replay)
+        texts = _texts(replay.effective)
+        key = tuple((e.variable, e.value, e.text) for e in replay.effective)
+        view = self.views.view(key, decisions, texts)
         chosen = {t for e in replay.effective for t in e.targets}
         states, decided = self._feature_states, decisions.decided
         features = {
             f.id: states[f.id][decided.get(f.variable), f.id in chosen] for f in self.catalog
         }
-        texts = _texts(replay.effective)
         complete = len(decided) == len(self.derivation.variables)
         launches = self._launches(decisions, texts) if complete else None
         commands = group(launches or [])
@@ -393,165 +337,6 @@ class Configurator:
                 arg for arg, variable in self._others if decided.get(variable) and arg not in texts
             ],
         )
-
-    def _view(self, replay: _Replay) -> _View:
-        """The view of the replay's literals, derived from the longest earlier list's."""
-        key = tuple((e.variable, e.value, e.text) for e in replay.effective)
-        length = len(key)
-        while length and key[:length] not in self._views:
-            length -= 1
-        if length == len(key) and key:
-            self._views.move_to_end(key)
-            return self._views[key]
-        before = self._views[key[:length]] if length else None
-        if before is None and key:
-            before = self._initial_view
-        view = self._derive(replay, before)
-        if key:
-            self._views[key] = view
-            while len(self._views) > CACHED_STEPS:
-                self._views.popitem(last=False)
-        return view
-
-    def _derive(self, replay: _Replay, before: _View | None) -> _View:
-        """The view of ``replay`` from ``before`` (an earlier step of its literals, or none):
-        elements are rendered again only where their condition's verdict or the strings
-        their fields read changed."""
-        decisions = replay.decisions
-        texts = _texts(replay.effective)
-        typed = self._typed(texts)
-        if before is None:
-            presences = self.presences.judge(decisions, typed)
-            conflicts = self.conflicts.judge(decisions, self._describe)
-            entries: list[list[Fields]] = [[] for _ in self.graph.elements]
-            again: Iterable[int] = range(len(self.graph.elements))
-        else:
-            presences = self.presences.judge(
-                decisions, typed, (before.decisions, before.typed, before.presences)
-            )
-            conflicts = self.conflicts.judge(
-                decisions, self._describe, (before.decisions, before.conflicts)
-            )
-            entries = list(before.entries)
-            again = self._rerendered(decisions, texts, before, presences)
-        values: dict[str, Values] = {}
-        for index in again:
-            element = self.graph.elements[index]
-            judged = presences[self.presences.of_element[index]]
-            if element.entry not in values and element.inputs:
-                values[element.entry] = self._values(element.entry, decisions, texts)
-            entries[index] = self._element_entries(element, judged, values)
-        graph = Graph(
-            **{
-                f"{kind}s": [fields for index in indices for fields in entries[index]]
-                for kind, indices in self._of_kind.items()
-            }
-        )
-        return _View(decisions, texts, typed, presences, entries, conflicts, graph)
-
-    def _rerendered(
-        self,
-        decisions: Decisions,
-        texts: Mapping[str, str],
-        before: _View,
-        presences: Sequence[Judged],
-    ) -> set[int]:
-        """Elements whose verdict or read strings differ from ``before``."""
-        again: set[int] = set()
-        for condition, judged in enumerate(presences):
-            earlier = before.presences[condition]
-            if judged is not earlier and judged.shown != earlier.shown:
-                again.update(self._elements_of[condition])
-        changed = decisions.decided.items() ^ before.decisions.decided.items()
-        for variable, _value in changed:
-            again.update(self._inputs_read.get(variable, ()))
-        for arg in texts.keys() | before.texts.keys():
-            if texts.get(arg) != before.texts.get(arg):
-                again.update(self._inputs_read.get(arg, ()))
-        return again
-
-    def _typed(self, texts: Mapping[str, str]) -> Typed:
-        """Entry file → the ``<other>`` texts typed for its args."""
-        typed: dict[str, dict[Input, str]] = {}
-        for arg_id, text in texts.items():
-            path = self._files[self.catalog.features[arg_id].file].path
-            typed.setdefault(path, {})[self.catalog.args[arg_id][0].input] = text
-        return typed
-
-    def _describe(self, condition: BDD, values: Mapping[str, bool]) -> str:
-        """``condition`` simplified under ``values`` (decided variables), for people."""
-        key = (condition, frozenset(values.items()))
-        text = self._described.get(key)
-        if text is None:
-            space = self.analysis.space
-            text = space.describe(space.cofactor(condition, values))
-            self._described[key] = text
-        return text
-
-    def _values(self, path: str, decisions: Decisions, texts: Mapping[str, str]) -> Values:
-        """Concrete strings of a file's inputs as far as the choices fix them."""
-        entry = self._paths[path]
-        concrete: dict[Input, str] = dict(self.lowering.concrete)
-        for arg in entry.feature.args:
-            text = self._arg_text(entry, arg.name, decisions, texts)
-            if text is not None:
-                concrete[arg.input] = text
-        return Values(concrete, self.lowering.host)
-
-    def _arg_text(
-        self, entry: FileEntry, name: str, decisions: Decisions, texts: Mapping[str, str]
-    ) -> str | None:
-        """The string an arg is given (or defaults to), once its value is decided."""
-        arg_id = f"{entry.id}:{name}"
-        for feature, value in self.catalog.values_of(arg_id):
-            if decisions.decided.get(feature.variable):
-                if value.slot is OTHER:
-                    return texts.get(arg_id)
-                if value.slot is UNSET:
-                    return self.analysis.model(entry.path).unset_defaults.get(name)
-                return str(value.slot)
-        return None
-
-    def _element_entries(
-        self, element: Element, judged: Judged, values: Mapping[str, Values]
-    ) -> list[Fields]:
-        """The element's graph entries: none for an absent error, else one per variant."""
-        presence, condition = judged.shown
-        if presence == ABSENT and element.kind == "error":
-            return []
-        static = not element.inputs or presence == ABSENT
-        entries = self._entries.get(element.id) if static else None
-        if entries is None or entries[0] != (presence, condition):
-            shown = self._fields(element, None if presence == ABSENT else values)
-            extra: Fields = {"nodes": element.nodes} if element.kind == "topic" else {}
-            made = [
-                {
-                    **fields,
-                    **extra,
-                    "presence": presence,
-                    "condition": condition,
-                    "id": element.id if number == 0 else f"{element.id}/{number}",
-                }
-                for number, fields in enumerate(shown)
-            ]
-            entries = ((presence, condition), made)
-            if static:  # the same entries serve every state with this verdict
-                self._entries[element.id] = entries
-        return entries[1]
-
-    def _fields(self, element: Element, values: Mapping[str, Values] | None) -> list[Fields]:
-        """The element's fields: with the state's values, or symbolic (``values`` None).
-
-        Rendered once per combination of the strings its terms read.
-        """
-        given = values[element.entry] if values is not None and element.inputs else None
-        strings = frozenset((i, given.concrete.get(i)) for i in element.inputs) if given else None
-        key = (element.id, strings)
-        found = self._rendered.get(key)
-        if found is None:
-            found = element.fields(given or Values(self.lowering.concrete, self.lowering.host))
-            self._rendered[key] = found
-        return found
 
     def _launches(self, decisions: Decisions, texts: Mapping[str, str]) -> list[Launch] | None:
         """The launched files and their args; None while an <other> value has no text."""
@@ -574,7 +359,7 @@ class Configurator:
                             return None
                         given[name] = reads[name] = literals[0]
                     continue
-                text = self._arg_text(entry, name, decisions, texts)
+                text = self.views.arg_text(entry, name, decisions, texts)
                 chosen = self._chosen_slot(entry, name, decisions)
                 if chosen is OTHER and text is None:
                     return None

@@ -23,6 +23,8 @@ from rosvar.logic.inputs import Input
 
 Typed = Mapping[str, Mapping[Input, str]]
 """Entry file → the ``<other>`` texts typed for its args."""
+Describe = Callable[[BDD, Mapping[str, bool]], str]
+"""A condition simplified under decided variables, for people."""
 
 
 @dataclass(frozen=True)
@@ -55,11 +57,9 @@ class Presences:
         elements: Sequence[Element],
         derivation: Derivation,
         lowering: Lowering,
-        describe: Callable[[BDD, Mapping[str, bool]], str],
     ) -> None:
         self.derivation = derivation
         self.lowering = lowering
-        self.describe = describe
         self.conditions: list[Condition] = []
         self.of_element: list[int] = []
         number: dict[tuple[str, BDD], int] = {}
@@ -83,12 +83,13 @@ class Presences:
         self,
         decisions: Decisions,
         typed: Typed,
+        describe: Describe,
         before: tuple[Decisions, Typed, Sequence[Judged]] | None = None,
     ) -> list[Judged]:
         """Every condition's verdict; ``before`` is an earlier step of the same list of
         literals (a prefix) with its typed texts and answer, of which most is kept."""
         if before is None:
-            return [self._judge(c, decisions, typed) for c in self.conditions]
+            return [self._judge(c, decisions, typed, describe) for c in self.conditions]
         earlier, earlier_typed, answer = before
         again = self._touched(decisions, typed, earlier, earlier_typed)
         components = {c for c, cube in decisions.cubes.items() if cube != earlier.cubes[c]}
@@ -100,7 +101,7 @@ class Presences:
             )
         found = list(answer)
         for index in again:
-            found[index] = self._judge(self.conditions[index], decisions, typed)
+            found[index] = self._judge(self.conditions[index], decisions, typed, describe)
         return found
 
     def _touched(
@@ -114,14 +115,16 @@ class Presences:
                 touched.update(self._typed_in.get(entry, ()))
         return touched
 
-    def _judge(self, condition: Condition, decisions: Decisions, typed: Typed) -> Judged:
+    def _judge(
+        self, condition: Condition, decisions: Decisions, typed: Typed, describe: Describe
+    ) -> Judged:
         bounds = condition.bounds
         if not bounds.exact and condition.entry in typed:
             bounds = self.lowering.decide(condition.condition, typed[condition.entry])
         verdict = self.derivation.presence(bounds, decisions)
         description = None
         if verdict.presence == UNDETERMINED:
-            description = self.describe(condition.condition, verdict.values)
+            description = describe(condition.condition, verdict.values)
         return Judged(verdict, description)
 
 

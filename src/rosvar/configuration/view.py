@@ -1,0 +1,261 @@
+"""What a list of user literals shows: the graph's entries and the clashes, step after step.
+
+A view is derived from the view of the longest earlier list it extends (a prefix: more
+literals only remove configurations). Presences and clashes are judged again only where
+the new literals reach (see ``presence`` and ``conflicts``), and an element is rendered
+again only when its verdict or the strings its fields read changed: every other entry
+stays the same object, so a client can tell what changed by identity.
+"""
+
+from __future__ import annotations
+
+from collections import OrderedDict
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+
+from rosvar.configuration.catalog import Catalog, FileEntry
+from rosvar.configuration.conflicts import Conflicts, ConflictState
+from rosvar.configuration.derivation import ABSENT, Decisions, Derivation
+from rosvar.configuration.graph import Element, Fields, Values, VariationalGraph
+from rosvar.configuration.lowering import Lowering
+from rosvar.configuration.presence import Judged, Presences, Typed
+from rosvar.interpreter.analysis import Analysis
+from rosvar.logic.conditions import BDD
+from rosvar.logic.inputs import OTHER, UNSET, Input
+
+CACHED_VIEWS = 4096
+"""Views kept per list of literals (a session's history and then some)."""
+
+Key = tuple[tuple[str, bool, str | None], ...]
+"""A list of literals: variable, value and the ``<other>`` text it gives, if any."""
+
+
+@dataclass
+class Graph:
+    """Element variants with their presence; ``errors`` are where roslaunch would stop."""
+
+    nodes: list[Fields] = field(default_factory=list)
+    tests: list[Fields] = field(default_factory=list)
+    params: list[Fields] = field(default_factory=list)
+    topics: list[Fields] = field(default_factory=list)
+    errors: list[Fields] = field(default_factory=list)
+
+    def to_json(self) -> dict[str, object]:
+        return {
+            "nodes": self.nodes,
+            "tests": self.tests,
+            "params": self.params,
+            "topics": self.topics,
+            "errors": self.errors,
+        }
+
+
+@dataclass(frozen=True)
+class View:
+    """What one list of literals shows, kept to derive longer lists' views."""
+
+    decisions: Decisions
+    texts: Mapping[str, str]  # arg id → its <other> text
+    typed: Typed
+    presences: list[Judged]  # per condition of ``Presences``
+    entries: list[list[Fields]]  # per element of the graph
+    conflicts: list[ConflictState | None]  # per pair of ``Conflicts``; None: gone
+    graph: Graph
+
+
+class Views:
+    """Every list of literals' view, each derived from the longest earlier list's."""
+
+    def __init__(
+        self,
+        analysis: Analysis,
+        catalog: Catalog,
+        graph: VariationalGraph,
+        lowering: Lowering,
+        derivation: Derivation,
+        conflicts: Conflicts,
+    ) -> None:
+        self.analysis = analysis
+        self.catalog = catalog
+        self.graph = graph
+        self.lowering = lowering
+        self.conflicts = conflicts
+        self._described: dict[tuple[BDD, frozenset[tuple[str, bool]]], str] = {}
+        self.presences = Presences(graph.elements, derivation, lowering)
+        self._elements_of: list[list[int]] = [[] for _ in self.presences.conditions]
+        for index, condition in enumerate(self.presences.of_element):
+            self._elements_of[condition].append(index)
+        self._paths = {entry.path: entry for entry in catalog.files}
+        self._files = {entry.id: entry for entry in catalog.files}
+        self._reading: dict[str, list[int]] = {}  # value variable or arg id → elements
+        self._of_kind: dict[str, list[int]] = {}
+        for index, element in enumerate(graph.elements):
+            self._of_kind.setdefault(element.kind, []).append(index)
+            if not element.inputs:
+                continue
+            entry = self._paths[element.entry]
+            for arg in entry.feature.args:
+                if arg.input in element.inputs:
+                    arg_id = f"{entry.id}:{arg.name}"
+                    for feature, _value in catalog.values_of(arg_id):
+                        self._reading.setdefault(feature.variable, []).append(index)
+                    self._reading.setdefault(arg_id, []).append(index)
+        self._rendered: dict[
+            tuple[str, frozenset[tuple[Input, str | None]] | None], list[Fields]
+        ] = {}
+        self._entries: dict[str, tuple[tuple[str, str | None], list[Fields]]] = {}
+        self._views: OrderedDict[Key, View] = OrderedDict()
+        self.initial = self._derive(derivation.initial, {}, None)
+
+    def view(self, key: Key, decisions: Decisions, texts: Mapping[str, str]) -> View:
+        """The view of the literals ``key`` (whose solver answer is ``decisions``)."""
+        if not key:
+            return self.initial
+        length = len(key)
+        while length and key[:length] not in self._views:
+            length -= 1
+        if length == len(key):
+            self._views.move_to_end(key)
+            return self._views[key]
+        before = self._views[key[:length]] if length else self.initial
+        view = self._derive(decisions, texts, before)
+        self._views[key] = view
+        while len(self._views) > CACHED_VIEWS:
+            self._views.popitem(last=False)
+        return view
+
+    def describe(self, condition: BDD, values: Mapping[str, bool]) -> str:
+        """``condition`` simplified under ``values`` (decided variables), for people."""
+        key = (condition, frozenset(values.items()))
+        text = self._described.get(key)
+        if text is None:
+            space = self.analysis.space
+            text = space.describe(space.cofactor(condition, values))
+            self._described[key] = text
+        return text
+
+    def arg_text(
+        self, entry: FileEntry, name: str, decisions: Decisions, texts: Mapping[str, str]
+    ) -> str | None:
+        """The string an arg is given (or defaults to), once its value is decided."""
+        arg_id = f"{entry.id}:{name}"
+        for feature, value in self.catalog.values_of(arg_id):
+            if decisions.decided.get(feature.variable):
+                if value.slot is OTHER:
+                    return texts.get(arg_id)
+                if value.slot is UNSET:
+                    return self.analysis.model(entry.path).unset_defaults.get(name)
+                return str(value.slot)
+        return None
+
+    def _derive(self, decisions: Decisions, texts: Mapping[str, str], before: View | None) -> View:
+        """The view from ``before`` (an earlier list of the same literals, or none)."""
+        typed = self._typed(texts)
+        if before is None:
+            presences = self.presences.judge(decisions, typed, self.describe)
+            conflicts = self.conflicts.judge(decisions, self.describe)
+            entries: list[list[Fields]] = [[] for _ in self.graph.elements]
+            again: Iterable[int] = range(len(self.graph.elements))
+        else:
+            presences = self.presences.judge(
+                decisions, typed, self.describe, (before.decisions, before.typed, before.presences)
+            )
+            conflicts = self.conflicts.judge(
+                decisions, self.describe, (before.decisions, before.conflicts)
+            )
+            entries = list(before.entries)
+            again = self._rerendered(decisions, texts, before, presences)
+        values: dict[str, Values] = {}
+        for index in again:
+            element = self.graph.elements[index]
+            judged = presences[self.presences.of_element[index]]
+            if element.entry not in values and element.inputs:
+                values[element.entry] = self._values(element.entry, decisions, texts)
+            entries[index] = self._element_entries(element, judged, values)
+        graph = Graph(
+            **{
+                f"{kind}s": [fields for index in indices for fields in entries[index]]
+                for kind, indices in self._of_kind.items()
+            }
+        )
+        return View(decisions, texts, typed, presences, entries, conflicts, graph)
+
+    def _rerendered(
+        self,
+        decisions: Decisions,
+        texts: Mapping[str, str],
+        before: View,
+        presences: Sequence[Judged],
+    ) -> set[int]:
+        """Elements whose verdict or read strings differ from ``before``."""
+        again: set[int] = set()
+        for condition, judged in enumerate(presences):
+            earlier = before.presences[condition]
+            if judged is not earlier and judged.shown != earlier.shown:
+                again.update(self._elements_of[condition])
+        changed = decisions.decided.items() ^ before.decisions.decided.items()
+        for variable, _value in changed:
+            again.update(self._reading.get(variable, ()))
+        for arg in texts.keys() | before.texts.keys():
+            if texts.get(arg) != before.texts.get(arg):
+                again.update(self._reading.get(arg, ()))
+        return again
+
+    def _typed(self, texts: Mapping[str, str]) -> Typed:
+        """Entry file → the ``<other>`` texts typed for its args."""
+        typed: dict[str, dict[Input, str]] = {}
+        for arg_id, text in texts.items():
+            path = self._files[self.catalog.features[arg_id].file].path
+            typed.setdefault(path, {})[self.catalog.args[arg_id][0].input] = text
+        return typed
+
+    def _values(self, path: str, decisions: Decisions, texts: Mapping[str, str]) -> Values:
+        """Concrete strings of a file's inputs as far as the choices fix them."""
+        entry = self._paths[path]
+        concrete: dict[Input, str] = dict(self.lowering.concrete)
+        for arg in entry.feature.args:
+            text = self.arg_text(entry, arg.name, decisions, texts)
+            if text is not None:
+                concrete[arg.input] = text
+        return Values(concrete, self.lowering.host)
+
+    def _element_entries(
+        self, element: Element, judged: Judged, values: Mapping[str, Values]
+    ) -> list[Fields]:
+        """The element's graph entries: none for an absent error, else one per variant."""
+        presence, condition = judged.shown
+        if presence == ABSENT and element.kind == "error":
+            return []
+        static = not element.inputs or presence == ABSENT
+        entries = self._entries.get(element.id) if static else None
+        if entries is None or entries[0] != (presence, condition):
+            shown = self._fields(element, None if presence == ABSENT else values)
+            extra: Fields = {"nodes": element.nodes} if element.kind == "topic" else {}
+            made = [
+                {
+                    **fields,
+                    **extra,
+                    "presence": presence,
+                    "condition": condition,
+                    "id": element.id if number == 0 else f"{element.id}/{number}",
+                }
+                for number, fields in enumerate(shown)
+            ]
+            entries = ((presence, condition), made)
+            if static:  # the same entries serve every state with this verdict
+                self._entries[element.id] = entries
+        return entries[1]
+
+    def _fields(self, element: Element, values: Mapping[str, Values] | None) -> list[Fields]:
+        """The element's fields: with the state's values, or symbolic (``values`` None).
+
+        Rendered once per combination of the strings its terms read.
+        """
+        given = values[element.entry] if values is not None and element.inputs else None
+        strings = frozenset((i, given.concrete.get(i)) for i in element.inputs) if given else None
+        key = (element.id, strings)
+        found = self._rendered.get(key)
+        if found is None:
+            found = element.fields(given or Values(self.lowering.concrete, self.lowering.host))
+            self._rendered[key] = found
+        return found
