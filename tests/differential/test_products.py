@@ -32,18 +32,12 @@ from .harness import (
 
 pytestmark = requires_oracle
 PRODUCTS = 3
-TOO_SLOW = {
-    "husky": "the engine takes about a second per step on Husky's main component (358k BDD "
-    "nodes): a product of a hundred random steps is minutes",
-}
 
 
 @pytest.mark.parametrize("system", CORPUS_SYSTEMS)
 def test_engine_products_load_as_in_roslaunch(system: str) -> None:
     if not (CORPUS / system).is_dir() or not (CORPUS / "_external").is_dir():
         pytest.skip(f"corpus not found at {CORPUS}")
-    if system in TOO_SLOW:
-        pytest.skip(TOO_SLOW[system])
     problems: list[str] = []
     compared = 0
     for run in system_runs(system):
