@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import ast
 import builtins
+import functools
 import itertools
 import math
 import operator
@@ -255,8 +256,8 @@ def referenced_args(expr: str) -> frozenset[str]:
     computed ``arg(x)`` contributes only ``x``.  Raises :class:`EvalRefused` when the expression
     is not allowed at all, so callers can report it early.
     """
-    tree, source = _parse(expr)
-    return frozenset(_analyse(tree, source).args)
+    _tree, _source, analysis = _checked(expr)
+    return frozenset(analysis.args)
 
 
 def compared_literals(expr: str) -> dict[str, set[str]]:
@@ -269,8 +270,8 @@ def compared_literals(expr: str) -> dict[str, set[str]]:
     ``in``/``not in``) a tuple/list/set whose literal elements are taken.  Raises
     :class:`EvalRefused` like :func:`referenced_args`.
     """
-    tree, source = _parse(expr)
-    return {name: set(values) for name, values in _analyse(tree, source).compared.items()}
+    _tree, _source, analysis = _checked(expr)
+    return {name: set(values) for name, values in analysis.compared.items()}
 
 
 def evaluate(expr: str, env: EvalEnvironment) -> str:
@@ -279,8 +280,7 @@ def evaluate(expr: str, env: EvalEnvironment) -> str:
     Raises :class:`EvalRefused` for disallowed expressions and exceeded resource guards, and
     :class:`EvalFailed` where roslaunch would raise at run time.
     """
-    tree, source = _parse(expr)
-    _analyse(tree, source)
+    tree, source, _analysis = _checked(expr)
     interpreter = _Interpreter(env, source)
     try:
         return interpreter.run(tree)
@@ -328,6 +328,14 @@ class _Source:
         """Offset of the attribute name (more useful than the start of the receiver)."""
         end = node.end_col_offset if node.end_col_offset is not None else node.col_offset
         return self._chars(node.end_lineno, end - len(node.attr.encode("utf-8")))
+
+
+@functools.lru_cache(maxsize=4096)
+def _checked(expr: str) -> tuple[ast.Expression, _Source, _Analyser]:
+    """Parsed and checked once per text (read-only afterwards): an expression is evaluated
+    for every combination of the values of the args it reads, in every includer."""
+    tree, source = _parse(expr)
+    return tree, source, _analyse(tree, source)
 
 
 def _parse(expr: str) -> tuple[ast.Expression, _Source]:

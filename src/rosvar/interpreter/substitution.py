@@ -387,8 +387,10 @@ class _Undecidable(Exception):
     pass
 
 
-def _env_names(expression: str) -> set[str]:
-    """Environment variables read by ``env('X')``/``optenv('X', ...)`` calls."""
+@functools.lru_cache(maxsize=4096)
+def _env_names(expression: str) -> frozenset[str]:
+    """Environment variables read by ``env('X')``/``optenv('X', ...)`` calls (cached: the
+    same expression is met in every includer)."""
     tree = ast.parse(expression, mode="eval")
     names: set[str] = set()
     for node in ast.walk(tree):
@@ -405,7 +407,7 @@ def _env_names(expression: str) -> set[str]:
                 names.add(node.args[0].value)
             else:
                 raise _Undecidable("the environment variable name is not a literal")
-    return names
+    return frozenset(names)
 
 
 def _operand(value: object) -> str | Term:
