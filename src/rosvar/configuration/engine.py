@@ -35,6 +35,9 @@ EXACT_INTEGER = 2**53  # larger counts go to JSON as strings
 
 @dataclass(frozen=True)
 class FeatureState:
+    """One feature's state; the engine hands out one object per feature and state, so
+    states share them and an unchanged feature is the same object (and JSON dict)."""
+
     kind: str
     file: str
     arg: str | None
@@ -44,6 +47,10 @@ class FeatureState:
     derived: bool
 
     def to_json(self) -> dict[str, object]:
+        return self._document
+
+    @cached_property
+    def _document(self) -> dict[str, object]:
         return {
             "kind": self.kind,
             "file": self.file,
