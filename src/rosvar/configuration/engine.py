@@ -9,7 +9,6 @@ from the longest earlier list of them.
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from functools import cached_property
@@ -22,6 +21,7 @@ from rosvar.configuration.conflicts import Conflicts, ConflictState
 from rosvar.configuration.derivation import PRESENT, Decisions, Derivation
 from rosvar.configuration.graph import VariationalGraph
 from rosvar.configuration.lowering import Lowering
+from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.view import Graph, Views
 from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import LaunchModel
@@ -168,9 +168,12 @@ class Configurator:
             }
             for feature in self.catalog
         }
-        self._steps: OrderedDict[tuple[tuple[str, bool], ...], Decisions] = OrderedDict()
-        self._replays: OrderedDict[tuple[UserChoice, ...], _Replay] = OrderedDict()
-        self._start = _Replay((), (), (), self.derivation.initial)
+        self._steps: PrefixCache[tuple[str, bool], Decisions] = PrefixCache(
+            self.derivation.initial, CACHED_STEPS
+        )
+        self._replays: PrefixCache[UserChoice, _Replay] = PrefixCache(
+            _Replay((), (), (), self.derivation.initial), CACHED_STEPS
+        )
 
     # -- choices -------------------------------------------------------------------------
     def state(self, choices: Sequence[UserChoice]) -> ConfigurationState:
@@ -178,17 +181,10 @@ class Configurator:
 
     def _replay(self, choices: tuple[UserChoice, ...]) -> _Replay:
         """The replay of ``choices``, from the longest prefix replayed before."""
-        length = len(choices)
-        while length and choices[:length] not in self._replays:
-            length -= 1
-        replay = self._replays[choices[:length]] if length else self._start
+        length, replay = self._replays.longest(choices)
         for position in range(length, len(choices)):
             replay = self._apply(replay, choices[position])
-            self._replays[choices[: position + 1]] = replay
-        if choices:
-            self._replays.move_to_end(choices)
-        while len(self._replays) > CACHED_STEPS:
-            self._replays.popitem(last=False)
+            self._replays.put(choices[: position + 1], replay)
         return replay
 
     def _apply(self, replay: _Replay, choice: UserChoice) -> _Replay:
@@ -266,21 +262,14 @@ class Configurator:
     def _decisions(self, effective: Sequence[_Effective]) -> Decisions | None:
         """The solver's answer for a list of literals (None: unsatisfiable), from the cache."""
         key = tuple((e.variable, e.value) for e in effective)
-        length = len(key)
-        while length and key[:length] not in self._steps:
-            length -= 1
-        decisions = self._steps[key[:length]] if length else self.derivation.initial
+        length, decisions = self._steps.longest(key)
         for position in range(length, len(key)):
             variable, value = key[position]
             found = self.derivation.add(decisions, variable, value)
             if found is None:
                 return None
             decisions = found
-            self._steps[key[: position + 1]] = decisions
-        if key:
-            self._steps.move_to_end(key)
-        while len(self._steps) > CACHED_STEPS:
-            self._steps.popitem(last=False)
+            self._steps.put(key[: position + 1], decisions)
         return decisions
 
     def _reason(self, earlier: Sequence[_Effective], entry: _Effective) -> str:

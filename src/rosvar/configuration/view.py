@@ -9,7 +9,6 @@ stays the same object, so a client can tell what changed by identity.
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 
@@ -18,6 +17,7 @@ from rosvar.configuration.conflicts import Conflicts, ConflictState
 from rosvar.configuration.derivation import ABSENT, Decisions, Derivation
 from rosvar.configuration.graph import Element, Fields, Values, VariationalGraph
 from rosvar.configuration.lowering import Lowering
+from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.presence import Judged, Presences, Typed
 from rosvar.interpreter.analysis import Analysis
 from rosvar.logic.conditions import BDD
@@ -104,24 +104,18 @@ class Views:
             tuple[str, frozenset[tuple[Input, str | None]] | None], list[Fields]
         ] = {}
         self._entries: dict[str, tuple[tuple[str, str | None], list[Fields]]] = {}
-        self._views: OrderedDict[Key, View] = OrderedDict()
         self.initial = self._derive(derivation.initial, {}, None)
+        self._views: PrefixCache[tuple[str, bool, str | None], View] = PrefixCache(
+            self.initial, CACHED_VIEWS
+        )
 
     def view(self, key: Key, decisions: Decisions, texts: Mapping[str, str]) -> View:
         """The view of the literals ``key`` (whose solver answer is ``decisions``)."""
-        if not key:
-            return self.initial
-        length = len(key)
-        while length and key[:length] not in self._views:
-            length -= 1
+        length, before = self._views.longest(key)
         if length == len(key):
-            self._views.move_to_end(key)
-            return self._views[key]
-        before = self._views[key[:length]] if length else self.initial
+            return before
         view = self._derive(decisions, texts, before)
-        self._views[key] = view
-        while len(self._views) > CACHED_VIEWS:
-            self._views.popitem(last=False)
+        self._views.put(key, view)
         return view
 
     def describe(self, condition: BDD, values: Mapping[str, bool]) -> str:
