@@ -104,3 +104,15 @@ def test_other_methods_are_not_allowed(examples: Live, method: str) -> None:
     reply = examples.call(method, "/api/session", raw=b"")
     assert reply.status == 405
     assert "error" in reply.json()
+
+
+def test_dropped_connections_are_not_logged_as_errors(
+    examples: Live, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A closed tab resets its connection: no traceback; a real failure still has one."""
+    for error, logged in ((ConnectionResetError(104, "reset"), False), (KeyError("bug"), True)):
+        try:
+            raise error
+        except Exception:
+            examples.server.handle_error(None, ("127.0.0.1", 1))
+        assert ("Traceback" in capsys.readouterr().err) is logged

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ipaddress
 import json
+import sys
 from http import HTTPStatus
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from typing import Any
@@ -70,6 +71,12 @@ class WebServer(ThreadingHTTPServer):
             return False
         name = header.rsplit(":", 1)[0] if not header.endswith("]") else header
         return name.lower() in LOOPBACK_NAMES
+
+    def handle_error(self, request: object, client_address: object) -> None:
+        """A browser that drops its connection (a closed tab, a reload) is no server error."""
+        if isinstance(sys.exc_info()[1], ConnectionError):
+            return
+        super().handle_error(request, client_address)  # type: ignore[arg-type]
 
 
 def make_server(
