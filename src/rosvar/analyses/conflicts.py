@@ -8,17 +8,16 @@ declarations sharing a bucket are compared.
 
 from __future__ import annotations
 
-import os
 from collections import defaultdict
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
-from functools import cache
 
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl
 from rosvar.logic.choice import combine
 from rosvar.logic.conditions import BDD
 from rosvar.ros import names
+from rosvar.workspace.paths import real_path
 
 
 @dataclass(frozen=True)
@@ -47,29 +46,24 @@ class Clash:
         return (self.first.file, self.second.file)
 
 
-Resolve = Callable[[str], str]  # a path to its real path (``os.path.realpath``, maybe cached)
-
-
-def _written_in(file: str, real: Resolve) -> Callable[[str], bool]:
+def _written_in(file: str) -> Callable[[str], bool]:
     """Whether a location's file is ``file``, symlinks resolved once per distinct path
     (a model holds thousands of elements from a handful of included files)."""
-    target = real(file)
+    target = real_path(file)
     seen: dict[str, bool] = {file: True}
 
     def test(other: str) -> bool:
         found = seen.get(other)
         if found is None:
-            found = seen[other] = real(other) == target
+            found = seen[other] = real_path(other) == target
         return found
 
     return test
 
 
-def declared_occurrences(
-    model: LaunchModel, real: Resolve = os.path.realpath
-) -> Iterable[Occurrence]:
+def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
     """Nodes and params written in ``model.file`` itself (Algorithm 1's GETELEMENTS)."""
-    own = _written_in(model.file, real)
+    own = _written_in(model.file)
     for node in model.nodes:
         if not node.is_test and own(node.location.file):
             yield from _node_occurrences(model, node)
@@ -97,7 +91,7 @@ def repeated_inclusions(model: LaunchModel) -> list[Clash]:
     them; only a declaration meeting itself, through two includes, is the entry
     file's own clash.
     """
-    own = _written_in(model.file, os.path.realpath)
+    own = _written_in(model.file)
     seen: dict[tuple[str, Location], list[Occurrence]] = defaultdict(list)
     found: list[Clash] = []
     for node in model.nodes:
@@ -123,9 +117,8 @@ def _node_name(parts: Sequence[object]) -> str | None:
 def index(models: Iterable[LaunchModel]) -> dict[tuple[str, str], list[Occurrence]]:
     """Every file's own declarations, by kind and resolved name."""
     buckets: dict[tuple[str, str], list[Occurrence]] = defaultdict(list)
-    real = cache(os.path.realpath)  # included files recur in the models of their includers
     for model in models:
-        for occurrence in declared_occurrences(model, real):
+        for occurrence in declared_occurrences(model):
             buckets[(occurrence.kind, occurrence.name)].append(occurrence)
     return buckets
 

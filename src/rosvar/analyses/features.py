@@ -16,7 +16,7 @@ from collections import deque
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, field
-from functools import cache, cached_property
+from functools import cached_property
 
 import dd.cudd as _cudd
 
@@ -35,6 +35,7 @@ from rosvar.logic.conditions import (
 )
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
 from rosvar.logic.terms import Apply, Hole, Operand, term_inputs
+from rosvar.workspace.paths import real_path
 
 
 @dataclass
@@ -64,6 +65,11 @@ class FileFeature:
     file: str
     variable: BDD
     args: list[ArgFeature] = field(default_factory=list)
+
+    def variable_names(self) -> list[str]:
+        """The file's variable, then its args' values: a block of the solver's order (the
+        names are the same in the analysis' manager and the solver's)."""
+        return [_name(self.variable)] + [_name(v.variable) for a in self.args for v in a.values]
 
 
 @dataclass
@@ -213,7 +219,6 @@ def extract(
         if progress is not None:
             progress(number, len(chosen), file)
         models.append(analysis.model(file))
-    real = cache(os.path.realpath)  # per extraction: paths recur in every include
     features: list[FileFeature] = []
     by_file: dict[str, FileFeature] = {}
     requires: list[Constraint] = []
@@ -255,14 +260,14 @@ def extract(
             feature.args.append(arg)
             feature_inputs.add(input_)
         features.append(feature)
-        by_file[real(model.file)] = feature
+        by_file[real_path(model.file)] = feature
     for model in models:
-        source = by_file[real(model.file)]
+        source = by_file[real_path(model.file)]
         for include in model.includes:
             if not include.resolved or include.location.file != model.file:
                 continue
             for condition, target in include.file:
-                target_feature = by_file.get(real(str(target)))
+                target_feature = by_file.get(real_path(str(target)))
                 if target_feature is None:
                     continue
                 when = include.condition & condition
@@ -411,15 +416,10 @@ def _order(
                 visited.add(nxt)
                 queue.append(nxt)
         components.append(_force(component, neighbours))
-    blocks = [[name for i in component for name in _block(by_id[i])] for component in components]
+    blocks = [[name for i in files for name in by_id[i].variable_names()] for files in components]
     blocks.sort(key=len)
     _ = space
     return [name for block in blocks for name in block]
-
-
-def _block(feature: FileFeature) -> list[str]:
-    """A file's variables: the file, then its args' values."""
-    return [_name(feature.variable)] + [_name(v.variable) for a in feature.args for v in a.values]
 
 
 def _force(files: list[str], neighbours: Mapping[str, set[str]]) -> list[str]:
@@ -596,12 +596,7 @@ def _formula(
         by_id = {f.id: f for f in features}
         components = []
         for root, members in linked.groups().items():
-            variables = [
-                name
-                for file_id in members
-                for name in [_name(by_id[file_id].variable)]
-                + [_name(v.variable) for a in by_id[file_id].args for v in a.values]
-            ]
+            variables = [name for file_id in members for name in by_id[file_id].variable_names()]
             variables.sort(key=level.__getitem__)
             components.append(Component(members, variables, conjoin(manager, grouped[root])))
         components.sort(key=lambda c: level[c.variables[0]] if c.variables else -1)

@@ -162,9 +162,7 @@ def _blocks(
     large = {i for i, c in enumerate(solver.components) if c.formula.dag_size > REQUIRES_LIMIT}
     blocks: list[tuple[set[str], list[BDD]]] = []
     for file in model.files:
-        variables = {str(solver.var(file.variable).var)} | {
-            str(solver.var(value.variable).var) for arg in file.args for value in arg.values
-        }
+        variables = set(file.variable_names())
         others = set(solver.variables) - variables
         blocks.append((variables, [manager.exist(others, solver.tree)]))
     for constraint, formula in zip(model.constraints, solver.constraints, strict=True):
