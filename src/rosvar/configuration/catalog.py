@@ -113,6 +113,13 @@ class Catalog:
     def values_of(self, arg_id: str) -> list[tuple[Feature, ValueFeature]]:
         return self.args[arg_id][1]
 
+    def chosen(self, arg_id: str, decided: Mapping[str, bool]) -> ValueFeature | None:
+        """The value the arg takes once ``decided`` (variable → value) selects one."""
+        for feature, value in self.values_of(arg_id):
+            if decided.get(feature.variable):
+                return value
+        return None
+
 
 def _speller(spelling: Mapping[str, str] | None) -> Callable[[str], str]:
     def spell(path: str) -> str:

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 from rosvar.analyses.features import FeatureModel, explain
-from rosvar.configuration.catalog import Catalog, Feature, FileEntry
+from rosvar.configuration.catalog import Catalog, Feature
 from rosvar.configuration.choices import ChoiceError, Refusal, UserChoice
 from rosvar.configuration.command import Launch, command_line, group
 from rosvar.configuration.conflicts import Conflicts, ConflictState
@@ -356,21 +356,16 @@ class Configurator:
                         given[name] = reads[name] = literals[0]
                     continue
                 text = self.views.arg_text(entry, name, decisions, texts)
-                chosen = self._chosen_slot(entry, name, decisions)
-                if chosen is OTHER and text is None:
+                chosen = self.catalog.chosen(f"{entry.id}:{name}", decisions.decided)
+                slot = None if chosen is None else chosen.slot
+                if slot is OTHER and text is None:
                     return None
                 reads[name] = text
-                if chosen is not UNSET and (text != default or arg.default is None):
+                if slot is not UNSET and (text != default or arg.default is None):
                     assert text is not None
                     given[name] = text
             launches.append(Launch(entry.path, entry.id, given, reads))
         return launches
-
-    def _chosen_slot(self, entry: FileEntry, name: str, decisions: Decisions) -> object:
-        for feature, value in self.catalog.values_of(f"{entry.id}:{name}"):
-            if decisions.decided.get(feature.variable):
-                return value.slot
-        return None
 
 
 def _texts(effective: Iterable[_Effective]) -> dict[str, str]:

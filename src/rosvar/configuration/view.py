@@ -133,14 +133,14 @@ class Views:
     ) -> str | None:
         """The string an arg is given (or defaults to), once its value is decided."""
         arg_id = f"{entry.id}:{name}"
-        for feature, value in self.catalog.values_of(arg_id):
-            if decisions.decided.get(feature.variable):
-                if value.slot is OTHER:
-                    return texts.get(arg_id)
-                if value.slot is UNSET:
-                    return self.analysis.model(entry.path).unset_defaults.get(name)
-                return str(value.slot)
-        return None
+        value = self.catalog.chosen(arg_id, decisions.decided)
+        if value is None:
+            return None
+        if value.slot is OTHER:
+            return texts.get(arg_id)
+        if value.slot is UNSET:
+            return self.analysis.model(entry.path).unset_defaults.get(name)
+        return str(value.slot)
 
     def _derive(self, decisions: Decisions, texts: Mapping[str, str], before: View | None) -> View:
         """The view from ``before`` (an earlier list of the same literals, or none)."""
