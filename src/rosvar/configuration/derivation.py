@@ -97,7 +97,7 @@ class Derivation:
         self.formulas = [c.formula for c in solver.components]
         self.members = [list(c.variables) for c in solver.components]
         self._quantified = [set(c.variables) for c in solver.components]
-        self.component_of = {v: i for i, c in enumerate(self.members) for v in c}
+        self.component_of = solver.component_of
         self._supports: dict[BDD, frozenset[str]] = {}
         self._restricted: dict[object, tuple[str | None, BDD, BDD, frozenset[int]]] = {}
         self._judged: dict[tuple[BDD, BDD, BDD], tuple[str, tuple[int, int] | None]] = {}
