@@ -27,6 +27,7 @@ import math
 import os
 import platform
 import pstats
+import random
 import resource
 import signal
 import statistics
@@ -35,7 +36,7 @@ import sys
 import sysconfig
 import tempfile
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -261,6 +262,22 @@ def measure_features(job: Job) -> Metrics:
     return metrics
 
 
+def random_click(
+    rng: random.Random, features: Mapping[str, Mapping[str, Any]]
+) -> tuple[str, str] | None:
+    """A seeded user's next click, on features as JSON: a random open feature (not an
+    ``<other>`` slot, which wants a typed text), a value selected, a file or an arg selected
+    or deselected; None once nothing is open (the product is complete)."""
+    open_ = [
+        k for k, f in features.items() if f["state"] == "unselected" and f["value"] != "<other>"
+    ]
+    if not open_:
+        return None
+    feature = rng.choice(open_)
+    kind = features[feature]["kind"]
+    return ("select" if kind == "value" else rng.choice(("select", "deselect"))), feature
+
+
 WEB_BUDGET_S = 300.0  # engine construction plus the clicks, bounded
 WEB_MAX_FILES = 500  # larger generated workspaces are not measured through HTTP
 WEB_CLICKS = 60
@@ -279,7 +296,6 @@ def measure_web(job: Job) -> Metrics:
     delta and patched in; the patched state is checked against the server's whole one.
     """
     import http.client
-    import random
     import threading
 
     from rosvar.analyses.features import extract
@@ -315,17 +331,11 @@ def measure_web(job: Job) -> Metrics:
         state = call("/api/session", {}, {})
         rng = random.Random(WEB_SEED)
         while len(rounds) < WEB_CLICKS:
-            features = state["features"]
-            open_ = [
-                k for k, f in features.items()
-                if f["state"] == "unselected" and f["value"] != "<other>"
-            ]  # fmt: skip
-            if not open_:
+            click = random_click(rng, state["features"])
+            if click is None:
                 state = call("/api/session", {}, state)
                 continue
-            feature = rng.choice(open_)
-            kind = features[feature]["kind"]
-            action = "select" if kind == "value" else rng.choice(("select", "deselect"))
+            action, feature = click
             body = {
                 "session": state["session"],
                 "version": state["version"],
@@ -366,7 +376,6 @@ def measure_configure(job: Job) -> Metrics:
     a random unselected feature (not an ``<other>`` value) until the product is complete.
     ``to_json()`` of each state is timed apart (what the web server then serialises).
     """
-    import random
 
     from rosvar.analyses.features import extract
     from rosvar.configuration.choices import UserChoice
@@ -395,15 +404,10 @@ def measure_configure(job: Job) -> Metrics:
                 wall = time.perf_counter()
                 state.to_json()
                 documents.append((time.perf_counter() - wall) * 1000)
-                open_ = [
-                    f for f in engine.catalog
-                    if state.features[f.id].state == "unselected" and f.value != "<other>"
-                ]  # fmt: skip
-                if not open_:
+                click = random_click(rng, {k: f.to_json() for k, f in state.features.items()})
+                if click is None:
                     break
-                feature = rng.choice(open_)
-                action = "select" if feature.kind == "value" else rng.choice(("select", "deselect"))
-                choices.append(UserChoice.parse(action, feature.id))
+                choices.append(UserChoice.parse(*click))
     except TimeoutError:
         if len(steps) < 2:
             return {"configure_timeout_s": CONFIGURE_BUDGET_S}
