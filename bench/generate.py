@@ -8,13 +8,21 @@ keep the corpus's proportions so per-file cost stays comparable as the size grow
 * 2-5 ``<arg>`` per file: booleans steer ``if``/``unless`` on nodes, groups and includes,
   strings end up in node names, namespaces and remaps; a few have no default (command-line
   inputs) or default to ``$(optenv ...)`` like Husky's;
-* shared global parameter names with file-specific values, so files that include each
-  other set the same parameter differently (conflicts for the analysis to find);
+* each file's nodes and parameters sit in its package's namespace (``<group ns="PKG">``,
+  the multi-robot layout), and parameter names shared by several files of a package, with
+  file-specific values, so files that include each other set the same parameter
+  differently (conflicts for the analysis to find). Sharing stays within a package, as
+  clashes stay within one robot's configurations in the corpus: a file shares a name with
+  a few others (Husky: about 500 pairs for 137 files), not with every file of the
+  workspace;
 * inline ``<rosparam>`` YAML and ``rosparam load``;
-* ``<include>`` of 1-2 files of the same or the previous package, some conditional, all
-  passing args (the first package's "previous" is the last, so every size has one shape).
-  Each file has a *level* and includes only lower levels, so there are no cycles and an
-  include chain holds at most ``MAX_LEVEL + 1`` files, as in real systems.
+* ``<include>`` of 1-2 files of the same or the previous package of the same *system*
+  (``PACKAGES_PER_SYSTEM`` packages, about one Husky), some conditional, all passing args
+  (a system's first package's "previous" is its last, so every size has one shape). A large
+  workspace is many systems side by side, not one system that grows: includes do not cross
+  systems, as the corpus systems do not include each other. Each file has a *level* and
+  includes only lower levels, so there are no cycles and an include chain holds at most
+  ``MAX_LEVEL + 1`` files, as in real systems.
 
 Output is a pure function of ``(n_files, seed)``: each file draws from its own seeded RNG.
 Run as a script to write a workspace: ``python bench/generate.py DIR N [--seed S]``.
@@ -28,6 +36,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 FILES_PER_PACKAGE = 20
+PACKAGES_PER_SYSTEM = 5
 MAX_LEVEL = 3
 LEVEL_WEIGHTS = (35, 30, 20, 15)  # share of files at level 0 (leaves) .. MAX_LEVEL (bringups)
 EXECUTABLES = ("driver", "controller", "monitor", "relay", "bridge", "estimator", "planner")
@@ -70,14 +79,14 @@ STRING_ARGS = (
     ("scan_topic", "scan"),
     ("map_frame", "map"),
 )
-# Global parameters many files set, each with its own value: the source of conflicts.
+# Parameters several files of a package set, each with its own value: the source of conflicts.
 SHARED_PARAMS = (
-    "/use_sim_time",
-    "/robot/max_velocity",
-    "/robot/controller_frequency",
-    "/diagnostics/period",
-    "/tf/publish_rate",
-    "/navigation/planner",
+    "use_sim_time",
+    "robot/max_velocity",
+    "robot/controller_frequency",
+    "diagnostics/period",
+    "tf/publish_rate",
+    "navigation/planner",
 )
 OPTENV_RATE = 0.15  # share of string args defaulting to $(optenv ...), as in Husky
 REQUIRED_RATE = 0.1  # share of args without a default (true command-line inputs)
@@ -141,13 +150,17 @@ def _plan(n_files: int, seed: int) -> list[_Plan]:
 
 
 def _include_candidates(plans: list[_Plan], plan: _Plan) -> list[_Plan]:
-    """Lower-level files of this package or of the previous one (the last, for the first).
+    """Lower-level files of this package or of the previous one in its system (the
+    system's last, for its first).
 
-    Levels alone rule out cycles; wrapping around gives the first package the same choice
-    as every other, so the include shape does not depend on the workspace size.
+    Levels alone rule out cycles; wrapping around gives a system's first package the same
+    choice as every other, so the include shape does not depend on the workspace size.
     """
     number = plan.index // FILES_PER_PACKAGE
-    previous = (number - 1) % ((len(plans) + FILES_PER_PACKAGE - 1) // FILES_PER_PACKAGE)
+    first = number - number % PACKAGES_PER_SYSTEM
+    packages_total = (len(plans) + FILES_PER_PACKAGE - 1) // FILES_PER_PACKAGE
+    in_system = min(PACKAGES_PER_SYSTEM, packages_total - first)
+    previous = first + (number - first - 1) % in_system
     packages = dict.fromkeys((previous, number))
     return [
         candidate
@@ -247,30 +260,32 @@ def _render(plans: list[_Plan], plan: _Plan, seed: int) -> str:
     for arg in plan.args:
         default = "" if arg.default is None else f' default="{arg.default}"'
         out.add(1, f'<arg name="{arg.name}"{default}/>')
-    out.add(0, "")
-    for name in rng.sample(SHARED_PARAMS, rng.randint(1, 2)):
-        value = f"$(arg {bools[0].name})" if name == "/use_sim_time" else str(plan.index % 5)
-        out.add(1, f'<param name="{name}" value="{value}"/>')
-    if rng.random() < 0.5:
-        out.add(1, f'<rosparam command="load" file="$(find {plan.package})/config/params.yaml"/>')
     candidates = _include_candidates(plans, plan)
-    if candidates:
+    if candidates:  # outside the package's group: each file names its own namespace
         for target in rng.sample(candidates, min(len(candidates), rng.randint(1, 2))):
             out.add(0, "")
             _render_include(out, rng, plan, target, bools)
+    out.add(0, "")
+    out.add(1, f'<group ns="{plan.package}">')
+    for name in rng.sample(SHARED_PARAMS, rng.randint(1, 2)):
+        value = f"$(arg {bools[0].name})" if name == "use_sim_time" else str(plan.index % 5)
+        out.add(2, f'<param name="{name}" value="{value}"/>')
+    if rng.random() < 0.5:
+        out.add(2, f'<rosparam command="load" file="$(find {plan.package})/config/params.yaml"/>')
     number = 0
     for _ in range(rng.randint(1, 2)):
         out.add(0, "")
         ns = _string_ref(rng, strings, "robot") if rng.random() < 0.6 else f"ns_{plan.index % 9}"
-        out.add(1, f'<group ns="{ns}"{_condition(rng, bools, 0.3)}>')
-        out.add(2, f'<param name="robot/max_velocity" value="{rng.randint(1, 4)}.0"/>')
+        out.add(2, f'<group ns="{ns}"{_condition(rng, bools, 0.3)}>')
+        out.add(3, f'<param name="robot/max_velocity" value="{rng.randint(1, 4)}.0"/>')
         for _ in range(rng.randint(1, 2)):
-            _render_node(out, rng, 2, plan, number, bools, strings)
+            _render_node(out, rng, 3, plan, number, bools, strings)
             number += 1
-        out.add(1, "</group>")
+        out.add(2, "</group>")
     if rng.random() < 0.5:
         out.add(0, "")
-        _render_node(out, rng, 1, plan, number, bools, strings)
+        _render_node(out, rng, 2, plan, number, bools, strings)
+    out.add(1, "</group>")
     out.add(0, "</launch>")
     return "\n".join(out.lines) + "\n"
 

@@ -886,8 +886,9 @@ def write_doc(
         "- Workloads: the four corpus systems (`../shared/corpus/<system>`, with `_external` "
         "as the ROS_PACKAGE_PATH so its packages resolve but its launch files are not "
         "analysed) and synthetic workspaces from `bench/generate.py` (seed 0) of "
-        f"{sizes} launch files: packages of 20 files, 2–5 args, conditional nodes, groups "
-        "and includes, shared parameter names, inline `<rosparam>` YAML, include depth ≤ 4.",
+        f"{sizes} launch files: packages of 20 files in systems of 5 packages (includes "
+        "stay within a system), 2–5 args, conditional nodes, groups and includes, parameter "
+        "names shared within a package, inline `<rosparam>` YAML, include depth ≤ 4.",
         "- *in-process*: discover + `Analysis` + `all_models()` — what `rosvar analyze` does "
         "before printing — in a fresh subprocess (`bench/run.py --one`), parser cache "
         f"cleared and a new `Analysis` each run; median of {REPEATS} runs "

@@ -382,6 +382,7 @@ def test_a_model_linking_too_many_files_is_listed_not_solved(
     ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Over the link budget nothing pairwise is computed up front; the listing still is."""
+    monkeypatch.setattr(features, "LINKS_PER_FILE", 0)
     monkeypatch.setattr(features, "LINK_BUDGET", 3)  # clique_and_loner: /n links 3 pairs, /p 1
     model = clique_and_loner(ws)
     assert not model.solved and count_configurations(model) is None
@@ -392,6 +393,18 @@ def test_a_model_linking_too_many_files_is_listed_not_solved(
     assert {c.kind for c in model.constraints} == {"excludes", "requires"}
     monkeypatch.setattr(features, "LINK_BUDGET", 4)  # at most the budget: solved
     assert extract(ws.analysis()).solved
+    monkeypatch.setattr(features, "LINK_BUDGET", 0)
+    monkeypatch.setattr(features, "LINKS_PER_FILE", 1)  # 7 files: a budget of 7 pairs
+    assert extract(ws.analysis()).solved
+
+
+def test_the_memory_bound_grows_with_the_files(monkeypatch: pytest.MonkeyPatch) -> None:
+    manager = dd.cudd.BDD()
+    monkeypatch.setattr(features, "MEMORY_BUDGET", 1 << 20)
+    monkeypatch.setattr(features, "MEMORY_PER_FILE", 1 << 20)
+    with features._memory_bound(manager, 3):
+        assert manager.configure()["max_memory"] == 4 << 20
+    assert manager.configure()["max_memory"] > 4 << 20  # lifted afterwards
 
 
 def test_memory_bound_turns_the_refusal_of_cudd_into_model_too_large(
@@ -408,7 +421,7 @@ def test_memory_bound_turns_the_refusal_of_cudd_into_model_too_large(
         return result
 
     monkeypatch.setattr(features, "MEMORY_BUDGET", 1)
-    with pytest.raises(ModelTooLarge), features._memory_bound(manager):
+    with pytest.raises(ModelTooLarge), features._memory_bound(manager, 0):
         parity()
     assert len(parity()) > len(names)  # the bound is lifted afterwards
     gc.collect()  # the failed build's nodes, held by the error's frames, go before their manager

@@ -375,6 +375,7 @@ def test_a_model_too_large_to_solve(
     """Listed by the formats that need no solver; the others exit 4 with the reason."""
     workspace.write("launch/clone.launch", GOOD)  # clashes with good.launch: one linked pair
     monkeypatch.setattr(features, "LINK_BUDGET", 0)
+    monkeypatch.setattr(features, "LINKS_PER_FILE", 0)
     root = str(workspace.root)
     code, out, _err = run(capsys, "features", root)
     assert code == EXIT_OK and "unknown number of valid configurations" in out

@@ -35,6 +35,7 @@ from rosvar.logic.conditions import (
 )
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
 from rosvar.logic.terms import Apply, Hole, Operand, term_inputs
+from rosvar.logic.transfer import transfer
 from rosvar.workspace.paths import real_path
 
 
@@ -287,7 +288,7 @@ def extract(
         space, features, requires, buckets, models, _unknown_values(features)
     )
     try:
-        _check_links(buckets)
+        _check_links(buckets, len(features))
         feature_model.solution = _formula(space, features, feature_model.constraints, buckets)
     except ModelTooLarge as too_large:
         # kept without its traceback, whose frames hold the half-built BDDs
@@ -305,22 +306,25 @@ def extract(
 
 
 LINK_BUDGET = 20_000
-"""Most pairs of files sharing a declared name before the solver is not attempted.
+LINKS_PER_FILE = 50
+"""Most pairs of files sharing a declared name before the solver is not attempted:
+``LINK_BUDGET + LINKS_PER_FILE × files``.
 
 The pairs are what ordering the variables and listing the ``excludes`` constraints cost,
 quadratic where many files redeclare a name; workspaces that link this many files
-through their clashes also have BDDs far beyond ``MEMORY_BUDGET`` (Husky: about 500).
+through their clashes also have BDDs far beyond the memory budget. Real systems link a
+few files per file (Husky: 501 pairs for 137 files), so a workspace of many systems gets
+a budget that grows with it.
 """
 
 
-def _check_links(buckets: Mapping[tuple[str, str], Sequence[Occurrence]]) -> None:
+def _check_links(buckets: Mapping[tuple[str, str], Sequence[Occurrence]], files: int) -> None:
     """Raise :class:`ModelTooLarge` before any pairwise work if clashes link too many files."""
     groups = {frozenset(o.file for o in occurrences) for occurrences in buckets.values()}
     links = sum(len(group) * (len(group) - 1) // 2 for group in groups)
-    if links > LINK_BUDGET:
-        raise ModelTooLarge(
-            f"{links:,} pairs of files declare a common name (budget {LINK_BUDGET:,})"
-        )
+    budget = LINK_BUDGET + LINKS_PER_FILE * files
+    if links > budget:
+        raise ModelTooLarge(f"{links:,} pairs of files declare a common name (budget {budget:,})")
 
 
 def _excludes(
@@ -561,12 +565,9 @@ def _formula(
     manager.declare(*keep)  # a fresh manager in the chosen order (reordering in place is slow)
 
     def translate(formula: BDD) -> BDD:
-        others = {name for name in space.support(formula) if name not in kept}
-        if others:
-            formula = space.bdd.exist(others, formula)
-        return _cudd.copy_bdd(formula, manager)
+        return transfer(formula, manager, {n for n in space.support(formula) if n not in kept})
 
-    with _memory_bound(manager):
+    with _memory_bound(manager, len(features)):
         parts: list[BDD] = []
         for feature in features:
             present = manager.var(_name(feature.variable))
@@ -669,7 +670,7 @@ def _exclusions(
         for file, condition in when.items():
             if (file, condition) not in literals:
                 literals[file, condition] = (
-                    _cudd.copy_bdd(files[file].variable & condition, manager)
+                    transfer(files[file].variable & condition, manager)
                     if space.support(condition) <= kept
                     else None
                 )
@@ -701,31 +702,36 @@ def _at_most_one(manager: _cudd.BDD, literals: Sequence[BDD]) -> BDD:
 
 
 MEMORY_BUDGET = 128 << 20
-"""Bytes the solver's BDD manager may use while the model is built (CUDD enforces it).
+MEMORY_PER_FILE = 256 << 10
+"""Bytes the solver's BDD manager may use while the model is built (CUDD enforces it):
+``MEMORY_BUDGET + MEMORY_PER_FILE × files``.
 
 Husky, the largest corpus system, peaks near 31 MB (a million nodes take about 100 MB);
-a generated workspace whose exclusions span the whole order reaches it within seconds
-and would go on for hours. A bound on memory, unlike one on time, does not depend on
-the machine's load: the same model is solved, or not, everywhere.
+workspaces of many such systems need about 0.2 MB per launch file (2,000 generated files:
+408 MB). A workspace whose exclusions span the whole order reaches the bound within
+seconds and would go on for hours. A bound on memory, unlike one on time, does not depend
+on the machine's load: the same model is solved, or not, everywhere.
 """
 
 
 @contextmanager
-def _memory_bound(manager: _cudd.BDD) -> Iterator[None]:
-    """Building in ``manager`` within ``MEMORY_BUDGET``, or :class:`ModelTooLarge`.
+def _memory_bound(manager: _cudd.BDD, files: int) -> Iterator[None]:
+    """Building in ``manager`` within the memory budget of ``files`` launch files, or
+    :class:`ModelTooLarge`.
 
     Past the bound CUDD returns NULL, which ``dd`` reports as a ValueError (operators)
     or a RuntimeError (``apply`` and the like), told from other errors by their text.
     The bound is lifted afterwards: the solver's later questions must not fail on a
     model it holds.
     """
-    unbounded = manager.configure(max_memory=MEMORY_BUDGET)["max_memory"]
+    budget = MEMORY_BUDGET + MEMORY_PER_FILE * files
+    unbounded = manager.configure(max_memory=budget)["max_memory"]
     try:
         yield
     except (ValueError, RuntimeError) as error:
         if not any(sign in str(error) for sign in ("NULL", "out of memory")):
             raise
-        raise ModelTooLarge(f"its BDD outgrew {MEMORY_BUDGET >> 20} MB") from error
+        raise ModelTooLarge(f"its BDD outgrew {budget >> 20} MB") from error
     finally:
         manager.configure(max_memory=unbounded)
 
@@ -758,7 +764,7 @@ def count_configurations(model: FeatureModel) -> int | None:
     if not model.solved:
         return None
     solver = model.solver
-    return int(solver.manager.count(solver.formula, nvars=len(solver.variables)))
+    return solver.count()
 
 
 @dataclass

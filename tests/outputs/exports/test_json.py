@@ -166,6 +166,7 @@ def test_a_model_too_large_to_solve_is_still_listed(
     ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     monkeypatch.setattr(features, "LINK_BUDGET", 0)
+    monkeypatch.setattr(features, "LINKS_PER_FILE", 0)
     model = tricky(ws)
     document = check(model)
     assert not model.solved

@@ -77,6 +77,7 @@ def test_a_model_too_large_to_solve_is_reported_unknown(
     ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     monkeypatch.setattr(features, "LINK_BUDGET", 0)
+    monkeypatch.setattr(features, "LINKS_PER_FILE", 0)
     model = tricky(ws)
     report = sections(text.write(model))
     assert report["Feature model of ws"][-1] == "  unknown number of valid configurations"
