@@ -365,6 +365,7 @@ def measure_web(job: Job) -> Metrics:
 
 CONFIGURE_BUDGET_S = 300.0  # engine construction plus the selection sequences, bounded
 CONFIGURE_SEQUENCES = 5
+CONFIGURE_MAX_FILES = 2_000  # the issue measures the engine up to the 2,000-file workspace
 CONFIGURE_SEED = 4
 
 
@@ -383,7 +384,7 @@ def measure_configure(job: Job) -> Metrics:
     from rosvar.interpreter.analysis import Analysis
     from rosvar.workspace import discover
 
-    if not job.feature_model_built:
+    if len(job.files) > CONFIGURE_MAX_FILES or not job.feature_model_built:
         return {}
     previous = _arm(CONFIGURE_BUDGET_S)
     steps: list[float] = []
