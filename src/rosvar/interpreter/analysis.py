@@ -32,7 +32,7 @@ class Analysis:
         extra_executables: Mapping[str, Sequence[str]] | None = None,
     ) -> None:
         self.workspace = workspace
-        self.space = ConditionSpace()
+        self.space = ConditionSpace(len(workspace.launch_files))
         self.domains = DomainTable(workspace, extra_values, env_values, extra_executables)
         self._models: dict[str, LaunchModel] = {}
         self._labels: dict[str, str] | None = None
