@@ -376,3 +376,20 @@ def test_describe_says_when_other_values_matter() -> None:
     only_known = space.slot(WORLD, "empty")
     assert space.describe(only_known, known_only=False) == "world=empty"
     assert space.describe(only_known) != space.describe(space.true)
+
+
+# -- sizing the manager ---------------------------------------------------------------------------
+def test_memory_estimate_grows_with_files_within_bounds() -> None:
+    estimate = conditions_module.memory_estimate
+    assert estimate(0) == conditions_module.MIN_MEMORY
+    assert estimate(10**6) == conditions_module.MAX_MEMORY
+    sizes = [estimate(n) for n in (100, 400, 1000, 2000)]
+    assert sizes == sorted(sizes) and len(set(sizes)) == len(sizes)
+
+
+@pytest.mark.filterwarnings("ignore:Changed in `dd`")  # statistics()' note on its 'mem' key
+def test_computed_table_stays_fixed_as_variables_grow() -> None:
+    space = ConditionSpace(files=10_000)
+    for index in range(3_000):  # CUDD grows the table with the unique table unless capped
+        space.declare_input(ArgInput(F, f"a{index}"), ("x", OTHER))
+    assert space.bdd.statistics()["cache_size"] == conditions_module.CACHE_ENTRIES
