@@ -9,7 +9,7 @@ the functions registered in :data:`TAGS` (see :mod:`rosvar.interpreter.tags`).
 from __future__ import annotations
 
 import weakref
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Sequence
 from typing import Any, TypeVar
 
 from rosvar.diagnostics import DiagnosticSink, Location
@@ -235,9 +235,10 @@ class Interpretation:
 
     def condition_of(self, entity: Entity, scope: Scope) -> BDD:
         """``ifunless_test``: where the tag is processed."""
-        if_text, unless_text = entity.get("if"), entity.get("unless")
-        if if_text is None and unless_text is None:
+        attributes = entity.attributes
+        if "if" not in attributes and "unless" not in attributes:  # most tags
             return self.space.true
+        if_text, unless_text = attributes.get("if"), attributes.get("unless")
         if if_text is not None and unless_text is not None:
             self.fail(
                 self.space.true,
@@ -337,11 +338,24 @@ class _Under:
         self._it.pc = self._saved
 
 
-def split(interpretation: Interpretation, choice: Choice[V]) -> Iterator[tuple[BDD, V]]:
-    """Iterate the branches of ``choice`` that are possible on the current path."""
-    for condition, leaf in choice:
-        if interpretation.pc & condition != interpretation.space.false:
-            yield condition, leaf
+def split(interpretation: Interpretation, choice: Choice[V]) -> Sequence[tuple[BDD, V]]:
+    """The branches of ``choice`` that are possible on the current path.
+
+    Most paths are true, where every branch is possible (a choice keeps no false
+    branch), and most choices are constants, possible wherever the path is: neither
+    needs a conjunction. (A sequence, not a generator: callers restore the path before
+    the next branch, so nothing is gained by testing branches late.)
+    """
+    space = interpretation.space
+    pc = interpretation.pc
+    if pc == space.true:
+        return choice.branches
+    false = space.false
+    return [
+        branch
+        for branch in choice.branches
+        if (pc if branch[0] is space.true else pc & branch[0]) != false
+    ]
 
 
 def choice_terms(value: Choice[Raw]) -> list[Term]:

@@ -94,8 +94,10 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
         node_type = it.required(entity, "type", scope)
         if package is None or node_type is None:
             return
-        for key in OPTIONAL:
-            fields[key] = it.attr(entity, key, scope) or Choice.const(it.space, None)
+        absent: Choice[Raw | None] = Choice.const(it.space, None)
+        attributes = entity.attributes
+        for key in OPTIONAL:  # mostly absent: no call for them
+            fields[key] = absent if key not in attributes else it.attr(entity, key, scope) or absent
         machine = fields["machine"]
         fields["machine"] = combine(
             [machine, it.default_machine],

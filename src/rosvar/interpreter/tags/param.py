@@ -66,8 +66,7 @@ def handle_param(it: Interpretation, entity: Entity, scope: Scope, force_local: 
             return
         it.check_attributes(entity, ATTRIBUTES)
         ptype = (entity.get("type") or "auto").lower().strip()
-        given = [(k, it.attr(entity, k, scope)) for k in SOURCES]
-        present = [(k, v) for k, v in given if v is not None]
+        present = [(k, it.attr(entity, k, scope)) for k in SOURCES if entity.has(k)]
         if len(present) != 1:
             it.fail(
                 it.space.true,
