@@ -6,7 +6,13 @@ import random
 from typing import TYPE_CHECKING
 
 from rosvar.analyses.features import extract
-from rosvar.configuration.derivation import ABSENT, PRESENT, UNDETERMINED, Derivation
+from rosvar.configuration.derivation import (
+    ABSENT,
+    PRESENT,
+    UNDETERMINED,
+    Derivation,
+    Verdict,
+)
 from rosvar.configuration.lowering import Bounds
 
 if TYPE_CHECKING:
@@ -26,12 +32,18 @@ FILES = {
 def test_decisions_agree_with_the_built_formula(ws: LaunchWorkspace) -> None:
     for name, body in FILES.items():
         ws.launch(name, body)
-    solver = extract(ws.analysis()).solver
-    derivation = Derivation(solver)
+    model = extract(ws.analysis())
+    solver = model.solver
+    derivation = Derivation(model)
     manager, formula = solver.manager, solver.formula
     rng = random.Random(3)
     for _ in range(30):
         decisions = derivation.initial
+        conditions = [
+            manager.var(rng.choice(solver.variables)) | manager.var(rng.choice(solver.variables))
+            for _ in range(3)
+        ]
+        earlier: list[Verdict | None] = [None] * len(conditions)
         for _ in range(rng.randint(0, 4)):
             variable, value = rng.choice(solver.variables), rng.random() < 0.5
             found = derivation.add(decisions, variable, value)
@@ -39,22 +51,22 @@ def test_decisions_agree_with_the_built_formula(ws: LaunchWorkspace) -> None:
             possible = (formula & decisions.cube & literal) != manager.false
             assert (found is not None) == possible
             decisions = found or decisions
-        restricted = formula & decisions.cube
-        for variable in solver.variables:
-            atom = manager.var(variable)
-            expected = (
-                False if (restricted & atom) == manager.false
-                else True if (restricted & ~atom) == manager.false
-                else None
-            )  # fmt: skip
-            assert decisions.decided.get(variable) is expected, variable
-        condition = manager.var(rng.choice(solver.variables)) | manager.var(
-            rng.choice(solver.variables)
-        )
-        presence = derivation.presence(Bounds(condition, condition), decisions).presence
-        expected_presence = (
-            PRESENT if (restricted & ~condition) == manager.false
-            else ABSENT if (restricted & condition) == manager.false
-            else UNDETERMINED
-        )  # fmt: skip
-        assert presence == expected_presence
+            restricted = formula & decisions.cube
+            for variable in solver.variables:
+                atom = manager.var(variable)
+                expected = (
+                    False if (restricted & atom) == manager.false
+                    else True if (restricted & ~atom) == manager.false
+                    else None
+                )  # fmt: skip
+                assert decisions.decided.get(variable) is expected, variable
+            # judged with the verdicts of the step before as hints (their witnesses repaired)
+            asked = [(Bounds(c, c), e) for c, e in zip(conditions, earlier, strict=True)]
+            earlier = list(derivation.presences(asked, decisions))
+            for condition, verdict in zip(conditions, earlier, strict=True):
+                expected_presence = (
+                    PRESENT if (restricted & ~condition) == manager.false
+                    else ABSENT if (restricted & condition) == manager.false
+                    else UNDETERMINED
+                )  # fmt: skip
+                assert verdict.presence == expected_presence

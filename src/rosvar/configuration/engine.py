@@ -25,7 +25,6 @@ from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.view import Graph, Views
 from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import LaunchModel
-from rosvar.logic.conditions import BDD
 from rosvar.logic.inputs import OTHER, UNSET
 
 CACHED_STEPS = 4096
@@ -130,11 +129,10 @@ class Configurator:
         env: Mapping[str, str] | None = None,
         spelling: Mapping[str, str] | None = None,
     ) -> None:
-        solver = model.solver
         self.analysis = analysis
         self.model = model
         self.catalog = Catalog(model, spelling)
-        self.derivation = Derivation(solver)
+        self.derivation = Derivation(model)
         self.lowering = Lowering(analysis, model, env or {})
         file_ids = {entry.path: entry.id for entry in self.catalog.files}
         self.graph = VariationalGraph(analysis, model, self.lowering, file_ids)
@@ -275,27 +273,19 @@ class Configurator:
     def _reason(self, earlier: Sequence[_Effective], entry: _Effective) -> str:
         """The earlier choices and the constraints that together rule ``entry`` out."""
         manager = self.derivation.manager
-
-        def literal(e: _Effective) -> BDD:
-            atom = manager.var(e.variable)
-            return atom if e.value else ~atom
-
         component = self.derivation.component_of[entry.variable]
-        goal = literal(entry)
         kept = [e for e in earlier if self.derivation.component_of[e.variable] == component]
         position = 0
         while position < len(kept):
             trial = kept[:position] + kept[position + 1 :]
-            cube = goal
-            for e in trial:
-                cube &= literal(e)
-            if self.derivation.satisfiable(component, cube):
+            if self.derivation.satisfiable([(e.variable, e.value) for e in [*trial, entry]]):
                 position += 1
             else:
                 kept = trial
-        cube = goal
-        for e in kept:
-            cube &= literal(e)
+        cube = manager.true
+        for e in [*kept, entry]:
+            atom = manager.var(e.variable)
+            cube &= atom if e.value else ~atom
         because = explain(self.model, cube)
         text = f"{_show(entry.choice)} is impossible"
         if kept:

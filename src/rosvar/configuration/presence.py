@@ -89,7 +89,7 @@ class Presences:
         """Every condition's verdict; ``before`` is an earlier step of the same list of
         literals (a prefix) with its typed texts and answer, of which most is kept."""
         if before is None:
-            return [self._judge(c, decisions, typed, describe) for c in self.conditions]
+            return self._judge(range(len(self.conditions)), decisions, typed, describe, None)
         earlier, earlier_typed, answer = before
         again = self._touched(decisions, typed, earlier, earlier_typed)
         components = {c for c, cube in decisions.cubes.items() if cube != earlier.cubes[c]}
@@ -100,8 +100,11 @@ class Presences:
                 if judged.verdict.components & components and _stale(judged.verdict, decisions)
             )
         found = list(answer)
-        for index in again:
-            found[index] = self._judge(self.conditions[index], decisions, typed, describe)
+        ordered = sorted(again)
+        for index, judged in zip(
+            ordered, self._judge(ordered, decisions, typed, describe, answer), strict=True
+        ):
+            found[index] = judged
         return found
 
     def _touched(
@@ -116,16 +119,32 @@ class Presences:
         return touched
 
     def _judge(
-        self, condition: Condition, decisions: Decisions, typed: Typed, describe: Describe
-    ) -> Judged:
-        bounds = condition.bounds
-        if not bounds.exact and condition.entry in typed:
-            bounds = self.lowering.decide(condition.condition, typed[condition.entry])
-        verdict = self.derivation.presence(bounds, decisions)
-        description = None
-        if verdict.presence == UNDETERMINED:
-            description = describe(condition.condition, verdict.values)
-        return Judged(verdict, description)
+        self,
+        indices: Sequence[int],
+        decisions: Decisions,
+        typed: Typed,
+        describe: Describe,
+        answer: Sequence[Judged] | None,
+    ) -> list[Judged]:
+        """The conditions of ``indices``, judged in one pass (the solver's example for one
+        may show the next undetermined), with their verdicts in ``answer`` (an earlier
+        step) as hints."""
+        bounds: list[tuple[Bounds, Verdict | None]] = []
+        for index in indices:
+            condition = self.conditions[index]
+            found = condition.bounds
+            if not found.exact and condition.entry in typed:
+                found = self.lowering.decide(condition.condition, typed[condition.entry])
+            bounds.append((found, None if answer is None else answer[index].verdict))
+        judged = []
+        for index, verdict in zip(
+            indices, self.derivation.presences(bounds, decisions), strict=True
+        ):
+            description = None
+            if verdict.presence == UNDETERMINED:
+                description = describe(self.conditions[index].condition, verdict.values)
+            judged.append(Judged(verdict, description))
+        return judged
 
 
 def _stale(verdict: Verdict, decisions: Decisions) -> bool:

@@ -1,0 +1,209 @@
+"""The feature model as clauses of an incremental SAT solver: valid configurations on demand.
+
+The engine asks "is there a valid configuration under the user literals where ``g`` holds?"
+thousands of times, and an answer "yes" is worth most with an example: a new witness, which
+settles many other questions. A BDD answers the first part only after restricting the
+component's formula by the literals (a diagram of 10⁵ nodes on Husky), while an
+incremental SAT solver takes the user literals as *assumptions* and returns a model in a
+tenth of a millisecond, whatever was asked before.
+
+Every variable the solver assigns costs time in every call, so the clauses are kept over
+the feature variables alone where they can be: the feature tree is split into one part per
+arg of a file (the file and the arg's values: the tree is their conjunction), and each part
+and each cross-tree constraint (``Solver.constraints``; with the tree they make the
+components' formulas) becomes one clause per path of its BDD to FALSE. A goal (a condition
+bound) gets a *switch*: a fresh variable that implies it by the same clauses, so asking for
+"one of these goals" is one clause over their switches. A diagram with too many paths is
+translated by Tseitin's encoding instead: one variable per node, equivalent to it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from pysat.solvers import Solver as _Sat
+
+from rosvar.analyses.features import FeatureModel
+from rosvar.logic.conditions import BDD
+
+BACKEND = "cadical195"
+"""The solver pysat drives: of those that take preferred phases, the fastest on Husky."""
+PATHS = 256
+"""Paths to FALSE up to which a diagram becomes clauses of its own; else Tseitin's."""
+
+GROWTH = 2
+"""Switches per feature variable after which the solver starts afresh."""
+
+Clause = list[int]
+
+
+class Sat:
+    """One SAT solver for the whole feature model; variable ``i + 1`` is the solver's
+    ``i``-th feature variable, so a model's first literals are a configuration's bits."""
+
+    def __init__(self, model: FeatureModel) -> None:
+        solver = model.solver
+        self.manager = manager = solver.manager
+        self._atoms = {variable: i + 1 for i, variable in enumerate(solver.variables)}
+        self._width = len(solver.variables)
+        self._true = self._width + 1  # a variable every model sets: TRUE
+        everything = set(solver.variables)
+        parts = list(solver.constraints)
+        for file in model.files:
+            present = solver.var(file.variable).var
+            for arg in file.args:
+                mine = {present, *(solver.var(v.variable).var for v in arg.values)}
+                parts.append(manager.exist(everything - mine, solver.tree))
+        self._parts = parts
+        self._start()
+
+    def _start(self) -> None:
+        """A fresh solver with the model's clauses: also once switches made too many
+        variables (each call pays for every variable, and every switch stays one)."""
+        self._top = self._true
+        self._nodes: dict[BDD, int] = {}  # regular BDD node → its Tseitin variable
+        self._goals: dict[BDD, int] = {}  # goal → its switch (or Tseitin literal)
+        self._sat = _Sat(name=BACKEND, bootstrap_with=[[self._true]])
+        for part in self._parts:
+            clauses = self._clauses(part)
+            if clauses is None:
+                clauses = [[self._literal(part)]]
+            self._sat.append_formula(clauses)
+        self._base = self._top
+
+    def atom(self, variable: str, value: bool) -> int:
+        """The literal ``variable = value``."""
+        return self._atoms[variable] if value else -self._atoms[variable]
+
+    def _goal(self, u: BDD) -> int:
+        """A literal that implies ``u`` (made on first use): assumed, it asks for ``u``."""
+        found = self._goals.get(u)
+        if found is None:
+            clauses = self._clauses(u)
+            if clauses is None:
+                found = self._literal(u)
+            else:
+                found = self._variable()
+                self._sat.append_formula([[-found, *clause] for clause in clauses])
+            self._goals[u] = found
+        return found
+
+    def _variable(self) -> int:
+        self._top += 1
+        return self._top
+
+    def _clauses(self, u: BDD) -> list[Clause] | None:
+        """``u`` as clauses over feature variables (one per path to FALSE); None when
+        there would be more than ``PATHS``."""
+        false = self.manager.false
+        counts: dict[BDD, int] = {}
+
+        def paths(v: BDD) -> int:
+            if v.var is None:
+                return int(v == false)
+            found = counts.get(v)
+            if found is None:
+                found = counts[v] = sum(paths(child) for child in _children(v))
+            return found
+
+        if paths(u) > PATHS:
+            return None
+        clauses: list[Clause] = []
+        stack: list[tuple[BDD, Clause]] = [(u, [])]
+        while stack:
+            v, clause = stack.pop()
+            if v.var is None:
+                if v == false:
+                    clauses.append(clause)
+                continue
+            x = self._atoms[v.var]
+            low, high = _children(v)
+            stack += [(low, [*clause, x]), (high, [*clause, -x])]
+        return clauses
+
+    def _literal(self, u: BDD) -> int:
+        """A literal equivalent to ``u`` (Tseitin: its nodes translated on first use)."""
+        if u.var is None:
+            return self._true if u == self.manager.true else -self._true
+        regular = ~u if u.negated else u
+        found = self._nodes.get(regular)
+        if found is None:
+            self._translate(regular)
+            found = self._nodes[regular]
+        return -found if u.negated else found
+
+    def _translate(self, root: BDD) -> None:
+        """Clauses for every node under ``root`` not translated yet, children first."""
+        nodes, clauses = self._nodes, []
+        stack = [root]
+        while stack:
+            node = stack[-1]
+            if node in nodes:
+                stack.pop()
+                continue
+            pending = [
+                child
+                for child in (_regular(node.low), _regular(node.high))
+                if child.var is not None and child not in nodes
+            ]
+            if pending:
+                stack.extend(pending)
+                continue
+            stack.pop()
+            n, x = self._variable(), self._atoms[node.var]
+            nodes[node] = n
+            low, high = self._literal(node.low), self._literal(node.high)
+            clauses += [
+                [-n, -x, high],
+                [-n, x, low],
+                [n, -x, -high],
+                [n, x, -low],
+                [n, -high, -low],  # implied, but it lets propagation go up without x
+                [-n, high, low],
+            ]
+        self._sat.append_formula(clauses)
+
+    def satisfiable(self, assumptions: Sequence[int]) -> bool:
+        """Some valid configuration satisfies every literal of ``assumptions``."""
+        return bool(self._sat.solve(assumptions=assumptions))
+
+    def model(
+        self,
+        atoms: Sequence[int],
+        goal: BDD | None = None,
+        some: Sequence[int] = (),
+        prefer: Sequence[int] = (),
+    ) -> int | None:
+        """A valid configuration (bit ``i``: the ``i``-th variable) with the literals of
+        ``atoms`` (see ``atom``), where ``goal`` holds and at least one literal of
+        ``some`` does, if given; where it has a choice, it takes the literals of
+        ``prefer``. None when there is none."""
+        if self._top - self._base > GROWTH * self._width:
+            self._start()
+        assumptions = list(atoms)
+        if goal is not None:
+            assumptions.append(self._goal(goal))
+        if prefer:
+            self._sat.set_phases(prefer)
+        switch = None
+        if some:
+            switch = self._variable()  # the clause holds only while assumed: retired below
+            self._sat.add_clause([-switch, *some])
+            assumptions.append(switch)
+        found = None
+        if self._sat.solve(assumptions=assumptions):
+            model = self._sat.get_model()[: self._width]
+            found = int("".join(["1" if literal > 0 else "0" for literal in reversed(model)]), 2)
+        if switch is not None:
+            self._sat.add_clause([-switch])  # (the model must be read before)
+        return found
+
+
+def _children(u: BDD) -> tuple[BDD, BDD]:
+    """The low and high cofactors of ``u`` (not of its regular node)."""
+    return (~u.low, ~u.high) if u.negated else (u.low, u.high)
+
+
+def _regular(u: BDD) -> BDD:
+    """The node of ``u`` without its complement mark."""
+    return ~u if u.negated else u

@@ -1,0 +1,53 @@
+"""The SAT solver's models against the feature model's BDDs."""
+
+from __future__ import annotations
+
+import random
+from typing import TYPE_CHECKING
+
+import pytest
+
+from configuration.test_derivation import FILES
+from rosvar.analyses.features import conjoin, extract
+from rosvar.configuration import sat as sat_module
+from rosvar.configuration.sat import PATHS, Sat
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+
+def test_tree_and_constraints_make_the_components(ws: LaunchWorkspace) -> None:
+    for name, body in FILES.items():
+        ws.launch(name, body)
+    solver = extract(ws.analysis()).solver
+    assert conjoin(solver.manager, [solver.tree, *solver.constraints]) == solver.formula
+
+
+@pytest.mark.parametrize("paths", [PATHS, 0])  # 0: every diagram by Tseitin's encoding
+def test_models_are_valid_and_satisfy_what_was_asked(
+    ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch, paths: int
+) -> None:
+    monkeypatch.setattr(sat_module, "PATHS", paths)
+    for name, body in FILES.items():
+        ws.launch(name, body)
+    model = extract(ws.analysis())
+    solver = model.solver
+    manager, formula, variables = solver.manager, solver.formula, solver.variables
+    sat = Sat(model)
+    rng = random.Random(5)
+    for _ in range(60):
+        literals = {v: rng.random() < 0.5 for v in rng.sample(variables, rng.randint(0, 3))}
+        a, b = (manager.var(rng.choice(variables)) for _ in range(2))
+        goal = (a & ~b) | (~a & b)
+        some = [sat.atom(v, rng.random() < 0.5) for v in rng.sample(variables, 2)]
+        found = sat.model([sat.atom(v, b) for v, b in literals.items()], goal, some)
+        wanted = formula & manager.cube(literals) & goal
+        alternatives = manager.false
+        for literal in some:
+            atom = manager.var(variables[abs(literal) - 1])
+            alternatives |= atom if literal > 0 else ~atom
+        wanted &= alternatives
+        assert (found is None) == (wanted == manager.false)
+        if found is not None:
+            values = {v: bool(found >> i & 1) for i, v in enumerate(variables)}
+            assert manager.let(values, wanted) == manager.true
