@@ -362,6 +362,90 @@ def test_count_under_choices_is_the_product_over_components(ws: LaunchWorkspace)
     assert 0 < solver.count(choices) < solver.count()
 
 
+def unweighted_count(manager: dd.cudd.BDD, formula: dd.cudd.Function, nvars: int) -> int:
+    """Satisfying assignments of the ``nvars`` first levels, in Python integers: the plain
+    recursion over the whole diagram, without the weights and stand-ins under test."""
+    return _below(manager, {}, formula, 0, nvars)
+
+
+def _below(
+    manager: dd.cudd.BDD,
+    memo: dict[dd.cudd.Function, int],
+    edge: dd.cudd.Function,
+    level: int,
+    nvars: int,
+) -> int:
+    """Assignments of the levels from ``level`` on that ``edge`` accepts."""
+    if edge == manager.true:
+        return 1 << (nvars - level)
+    if edge == manager.false:
+        return 0
+    if edge not in memo:
+        node = ~edge if edge.negated else edge
+        count = sum(_below(manager, memo, c, node.level + 1, nvars) for c in (node.low, node.high))
+        memo[edge] = count if not edge.negated else (1 << (nvars - edge.level)) - count
+    return memo[edge] << (edge.level - level)
+
+
+def stand_ins(ws: LaunchWorkspace) -> FeatureModel:
+    """``side`` decides a clash on one value (``right``) and has four values no constraint
+    mentions (``left``, ``up``, ``down`` and ``<other>``, which is none of the values
+    known); ``speed`` is mentioned by no constraint."""
+    ws.launch(
+        "a.launch",
+        '  <arg name="side" default="left"/>\n  <arg name="speed" default="slow"/>\n'
+        '  <node pkg="pkg" type="t" name="n" if="$(eval side == \'right\')"/>\n'
+        '  <param name="s" value="$(arg speed)"/>\n'
+        '  <param name="t" value="$(arg side)"/>',
+    )
+    ws.launch("b.launch", '  <node pkg="pkg" type="t" name="n"/>')
+    for value in ("up", "down"):
+        ws.launch(
+            f"{value}.launch",
+            '  <include file="$(find pkg)/launch/a.launch">\n'
+            f'    <arg name="side" value="{value}"/>\n  </include>',
+        )
+    return extract(ws.analysis())
+
+
+def test_stand_ins_count_as_the_values_they_replace_under_any_choice(
+    ws: LaunchWorkspace,
+) -> None:
+    model = stand_ins(ws)
+    solver = model.solver
+    a = next(c for c in solver.components if any(f.endswith("/a.launch") for f in c.files))
+    groups = [len(names) for _stand_in, names in a.stand_ins]
+    assert sorted(groups) == [2, 4]  # speed (its file stands in), side's other values
+    assert len(a.counted_variables) < len(a.variables)
+    everything = len(solver.variables)
+    for name in solver.variables:
+        for value in (False, True):
+            restricted = solver.manager.let({name: value}, solver.formula)
+            expected = int(solver.manager.count(restricted, nvars=everything - 1))
+            assert solver.count({name: value}) == expected, (name, value)
+    pairs = [(n, m) for n in a.variables for m in a.variables if n < m]
+    for first, second in pairs:
+        choices = {first: True, second: False}
+        restricted = solver.manager.let(choices, solver.formula)
+        assert solver.count(choices) == int(solver.manager.count(restricted, nvars=everything - 2))
+
+
+def test_counts_beyond_a_double_are_exact(ws: LaunchWorkspace) -> None:
+    """36 args of three values each: 3^36 > 2^53 ways to configure a.launch alone."""
+    flags = "".join(
+        f'  <arg name="f{i}" default="true"/>\n'
+        f'  <node pkg="pkg" type="t" name="n{i}" if="$(arg f{i})"/>\n'
+        for i in range(36)
+    )
+    ws.launch("a.launch", flags + '  <node pkg="pkg" type="t" name="x" if="$(arg f0)"/>')
+    ws.launch("b.launch", '  <node pkg="pkg" type="t" name="x"/>')
+    model = extract(ws.analysis())
+    solver = model.solver
+    exact = unweighted_count(solver.manager, solver.formula, len(solver.variables))
+    assert int(float(exact)) != exact  # a double could not hold it
+    assert count_configurations(model) == exact
+
+
 def test_restrict_touches_only_the_chosen_components(ws: LaunchWorkspace) -> None:
     model = clique_and_loner(ws)
     solver = model.solver
