@@ -18,6 +18,7 @@ from typing import Any
 import dd.cudd as cudd
 import pytest
 
+from rosvar.analyses.counting import weighted_count
 from rosvar.analyses.features import FeatureModel, extract
 from rosvar.interpreter.analysis import Analysis
 from rosvar.workspace import discover
@@ -110,22 +111,21 @@ def flamapy(tmp_path: Path) -> Flamapy:
 
 
 def _cardinality(manager: Any, children: list[Any], low: int, high: int) -> Any:
-    """Between ``low`` and ``high`` of ``children`` hold (``high`` -1: no upper bound)."""
+    """Between ``low`` and ``high`` of ``children`` hold (``high`` -1: no upper bound).
+
+    Built from the last child up, ``within[c]`` meaning "the children so far, plus ``c``
+    chosen before them, stay within the bounds" (a loop: a recursive closure would tie its
+    BDDs and their manager into a cycle that the collector frees in any order).
+    """
     high = len(children) if high < 0 else high
-    table: dict[tuple[int, int], Any] = {}
-
-    def ways(index: int, count: int) -> Any:
-        if count > high:
-            return manager.false
-        if index == len(children):
-            return manager.true if count >= low else manager.false
-        key = (index, count)
-        if key not in table:
-            child = children[index]
-            table[key] = (child & ways(index + 1, count + 1)) | (~child & ways(index + 1, count))
-        return table[key]
-
-    return ways(0, 0)
+    counts = range(len(children) + 1)
+    within = [manager.true if low <= c <= high else manager.false for c in counts]
+    for child in reversed(children):
+        within = [
+            (child & within[c + 1]) | (~child & within[c]) if c < len(children) else within[c]
+            for c in counts
+        ]
+    return within[0]
 
 
 def _transformations() -> Any:
@@ -180,7 +180,7 @@ def count(fm: Any) -> int:
             formula &= ~parent | group
     for constraint in fm.get_constraints():
         formula &= _ast(manager, constraint.ast.root)
-    return int(manager.count(formula, nvars=len(features)))
+    return weighted_count(manager, formula, {f.name: (1, 1) for f in features})
 
 
 def _depth_first(feature: Any) -> Iterator[Any]:
