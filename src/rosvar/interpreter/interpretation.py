@@ -155,6 +155,8 @@ class Interpretation:
         self, condition: BDD, code: str, message: str, location: Location | None = None
     ) -> None:
         """roslaunch raises here under ``condition`` (within the current path)."""
+        if condition == self.space.false:  # most checks find nothing: no conjunction
+            return
         where = self.pc & condition
         if where == self.space.false:
             return

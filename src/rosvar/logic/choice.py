@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
-from typing import Any, Generic, TypeVar, cast
+from typing import Any, Generic, TypeVar
 
 from rosvar.logic.conditions import BDD, ConditionSpace
 
@@ -178,18 +178,19 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
     false = choices[0].false
     joint = None  # conjunction of the single branches' conditions; None stands for true
     varying: list[int] = []
+    leaves: list[Any] = []  # the varying operands' places are filled per combination below
     for index, choice in enumerate(choices):
         branches = choice.branches
         if len(branches) != 1:
             varying.append(index)
+            leaves.append(None)
             continue
-        condition = branches[0][0]
+        condition, leaf = branches[0]
+        leaves.append(leaf)
         if joint is None:
             joint = condition
         elif condition is not joint:  # constants share the space's true: nothing to do
             joint = joint & condition
-    # the varying operands' places are filled per combination below
-    leaves = cast(list[V], [c.branches[0][1] if len(c.branches) == 1 else None for c in choices])
     if not varying:
         return Choice([(joint, function(leaves))], false)
     partial: list[tuple[BDD, list[V]]] = [(joint, leaves)]

@@ -61,7 +61,7 @@ def declare(
     declared = scope.declared.get(name, it.space.false)
     if not scope.pass_all_args:
         it.fail(declared, "arg-duplicate", f"arg '{name}' has already been declared")
-    scope.declared[name] = declared | it.pc
+    scope.declared[name] = it.pc if declared == it.space.false else declared | it.pc
     target = scope.include_args if scope.include_args is not None else scope.args
     existing = target.get(name)
     missing: ArgValue = Choice.const(it.space, MISSING)
