@@ -59,11 +59,11 @@ class Choice(Generic[T]):
         self.branches = tuple(branch for branch in merged if branch[0] != false)
 
     @staticmethod
-    def _of_possible(branches: Iterable[tuple[BDD, U]], false: BDD) -> Choice[U]:
+    def _of_possible(branches: list[tuple[BDD, U]], false: BDD) -> Choice[U]:
         """The constructor for branches whose conditions are known not to be false (taken
         from a choice, or just checked): equal leaves merged, nothing compared again."""
         choice: Choice[U] = object.__new__(Choice)
-        choice.branches = _merged(branches)
+        choice.branches = _merged(branches) if len(branches) > 1 else tuple(branches)
         choice.false = false
         return choice
 
