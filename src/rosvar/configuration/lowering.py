@@ -14,14 +14,13 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-import dd.cudd as _cudd
-
 from rosvar.analyses.features import FeatureModel
 from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.substitution import PackageTable
 from rosvar.logic.conditions import BDD, PredicateAtom, SlotAtom, decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import term_inputs
+from rosvar.logic.transfer import transfer
 
 
 @dataclass(frozen=True)
@@ -84,7 +83,7 @@ class Lowering:
         found = self._cache.get(condition)
         if found is None:
             bdd = self.space.bdd
-            support = bdd.support(condition)
+            support = self.space.support(condition)
             values = {n: self.fixed[n] for n in support if n in self.fixed}
             fixed = bdd.let(values, condition) if values else condition
             found = (fixed, self._copy(fixed))
@@ -109,12 +108,11 @@ class Lowering:
         return found
 
     def _copy(self, fixed: BDD) -> Bounds:
-        bdd = self.space.bdd
-        open_ = bdd.support(fixed) & self.open
-        must = bdd.forall(open_, fixed) if open_ else fixed
-        may = bdd.exist(open_, fixed) if open_ else fixed
-        return Bounds(_cudd.copy_bdd(must, self.manager), _cudd.copy_bdd(may, self.manager))
+        """In the solver's manager: ``∀ open. fixed`` and ``∃ open. fixed``."""
+        open_ = self.space.support(fixed) & self.open
+        must = ~transfer(~fixed, self.manager, open_)
+        return Bounds(must, transfer(fixed, self.manager, open_))
 
     def back(self, condition: BDD) -> BDD:
         """A solver BDD in the analysis' manager (for describing it)."""
-        return _cudd.copy_bdd(condition, self.space.bdd)
+        return transfer(condition, self.space.bdd)

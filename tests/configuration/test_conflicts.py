@@ -1,0 +1,57 @@
+"""Blocks of ``tree ∧ requires`` that clashes are judged on, and their size bound."""
+
+from __future__ import annotations
+
+import os
+from typing import TYPE_CHECKING
+
+import pytest
+
+from configuration.helpers import configurator, run
+from rosvar.analyses.features import extract
+from rosvar.configuration import conflicts
+from rosvar.configuration.conflicts import _blocks
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+MAIN = """  <arg name="cam" default="false"/>
+  <include file="$(find pkg)/launch/camera.launch" if="$(arg cam)"/>
+"""
+CAMERA = '  <arg name="fps" default="30"/>\n  <node pkg="pkg" type="cam" name="camera"/>\n'
+CLASH = '  <node pkg="pkg" type="cam" name="camera"/>\n'
+
+
+@pytest.fixture
+def workspace(ws: LaunchWorkspace) -> LaunchWorkspace:
+    ws.launch("main.launch", MAIN)
+    ws.launch("camera.launch", CAMERA)
+    ws.launch("other_camera.launch", CLASH)
+    return ws
+
+
+def block_files(ws: LaunchWorkspace) -> list[set[str]]:
+    """Each block as the base names of the files whose variables it holds."""
+    model = extract(ws.analysis())
+    solver = model.solver
+    component_of = {f: i for i, c in enumerate(solver.components) for f in c.files}
+    owner = {v: os.path.basename(f.file) for f in model.files for v in f.variable_names()}
+    return sorted(
+        ({owner[v] for v in variables} for variables, _ in _blocks(model, component_of)), key=sorted
+    )
+
+
+def test_requires_link_files_into_one_block(workspace: LaunchWorkspace) -> None:
+    assert block_files(workspace) == [{"camera.launch", "main.launch"}, {"other_camera.launch"}]
+
+
+def test_a_block_over_the_limit_goes_back_to_one_block_per_file(
+    workspace: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(conflicts, "BLOCK_LIMIT", 1)
+    assert block_files(workspace) == [{"camera.launch"}, {"main.launch"}, {"other_camera.launch"}]
+    engine = configurator(workspace)  # the clash is still judged, on the tree alone
+    [conflict] = run(engine).conflicts
+    assert conflict.files == ("camera.launch", "other_camera.launch")
+    assert conflict.status == "certain"
+    assert run(engine, "deselect other_camera.launch").conflicts == []
