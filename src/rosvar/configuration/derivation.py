@@ -14,6 +14,7 @@ the questions:
   the lot; when it does not, its model is a new witness, which prefers the values not
   seen yet and so shows many open at once.
 
+Witnesses are kept as a cover (``_cover``: enough to show every open variable open).
 Literals are added one at a time; each step keeps the witnesses that agree with the new
 literal, *repairs* the others (``_repaired``: the files where one disagrees copied from a
 witness that agrees) and only looks at the variables still open in the literal's
@@ -29,14 +30,14 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from itertools import chain
 
+import dd.cudd as _cudd
+
 from rosvar.analyses.features import FeatureModel
 from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.sat import Sat
 from rosvar.logic.conditions import BDD
 
 PRESENT, ABSENT, UNDETERMINED = "present", "absent", "undetermined"
-WITNESSES = 24
-"""Witnesses kept per component and step: enough to show most variables open."""
 CACHED_ROOTS = 64  # formulas restricted by a step's literals, for counting
 SOURCES = 4  # witnesses tried as the source of a repair
 CACHED_REPAIRS = 4096  # repaired witnesses by witness and literals, dropped all at once
@@ -103,12 +104,15 @@ class Derivation:
             self.position[v]: n for n, f in enumerate(model.files) for v in f.variable_names()
         }
         # the constraints that leave each file, with the files they link
-        self._crossing: list[list[tuple[BDD, frozenset[int]]]] = [[] for _ in model.files]
+        self._crossing: list[list[tuple[BDD, int, frozenset[int]]]] = [[] for _ in model.files]
         for constraint in solver.constraints:
-            files = frozenset(self._file_at[self.position[v]] for v in manager.support(constraint))
+            support = [self.position[v] for v in manager.support(constraint)]
+            files = frozenset(self._file_at[at] for at in support)
             if len(files) > 1:
+                reads = sum(1 << at for at in support)
                 for file in files:
-                    self._crossing[file].append((constraint, files))
+                    self._crossing[file].append((constraint, reads, files))
+        self._kept: dict[tuple[BDD, int], bool] = {}  # constraint, bits it reads → it holds
         self._repairs: dict[tuple[int, BDD], int | None] = {}
         self._quantified = [set(c.variables) for c in solver.components]
         self.component_of = solver.component_of
@@ -207,11 +211,12 @@ class Derivation:
                 break
             witnesses.append(found)
             ones, all_ones = ones | found, all_ones & found
+        shown = undecided & (ones ^ all_ones)  # the open variables
         return Decisions(
             step.literals,
             step.cubes,
             decided,
-            {**step.witnesses, component: tuple(witnesses[-WITNESSES:])},
+            {**step.witnesses, component: _cover(witnesses, shown)},
             step.fixed,
         )
 
@@ -222,7 +227,12 @@ class Derivation:
         found = self._roots.get(key)
         if found is None:
             mine = {v: b for v, b in decisions.literals.items() if v in self._quantified[component]}
-            found = self.cofactor(self.formulas[component], mine)
+            # (``let``: CUDD's restrict takes longer on a diagram this large)
+            found = (
+                self.manager.let(mine, self.formulas[component])
+                if mine
+                else self.formulas[component]
+            )
             if len(self._roots) >= CACHED_ROOTS:
                 self._roots.pop(next(iter(self._roots)))
             self._roots[key] = found
@@ -347,8 +357,8 @@ class Derivation:
                 broken = {
                     linked
                     for file in files
-                    for constraint, others in self._crossing[file]
-                    if not self._holds(constraint, patched)
+                    for constraint, reads, others in self._crossing[file]
+                    if not self._keeps(constraint, reads, patched)
                     for linked in others
                 }
                 fresh = broken - files
@@ -359,6 +369,17 @@ class Derivation:
         if len(self._repairs) >= CACHED_REPAIRS:
             self._repairs.clear()
         self._repairs[key] = found
+        return found
+
+    def _keeps(self, constraint: BDD, reads: int, witness: int) -> bool:
+        """The truth of ``constraint`` (over the variables of ``reads``) in ``witness``,
+        remembered for those variables' values: repairs ask it of many similar witnesses."""
+        key = (constraint, witness & reads)
+        found = self._kept.get(key)
+        if found is None:
+            if len(self._kept) >= CACHED_REPAIRS:
+                self._kept.clear()
+            found = self._kept[key] = self._holds(constraint, witness)
         return found
 
     def _judge(
@@ -407,8 +428,16 @@ class Derivation:
         return bool(u == self.manager.true) != flipped
 
     def cofactor(self, u: BDD, values: Mapping[str, bool]) -> BDD:
-        """``u`` with ``values`` fixed."""
-        return self.manager.let(dict(values), u) if values else u
+        """``u`` with ``values`` fixed: CUDD's restrict to their cube, which is the cofactor
+        when the care set is a cube (``let`` spends several times longer making a cube of
+        its own, over every variable of the manager)."""
+        if not values:
+            return u
+        cube = self.manager.true
+        for variable, value in values.items():
+            atom = self.manager.var(variable)
+            cube &= atom if value else ~atom
+        return _cudd.restrict(u, cube)
 
     def _support(self, u: BDD) -> frozenset[str]:
         found = self._supports.get(u)
@@ -416,3 +445,17 @@ class Derivation:
             found = frozenset(self.manager.support(u))
             self._supports[u] = found
         return found
+
+
+def _cover(witnesses: Sequence[int], shown: int) -> tuple[int, ...]:
+    """The witnesses, newest first, that show a variable of ``shown`` take a value no
+    witness kept before gives it: together they show every one of them open, and
+    witnesses kept from step to step (and repaired) spare most questions to the solver."""
+    ones = zeros = 0
+    kept = []
+    for witness in reversed(witnesses):
+        if shown & (witness & ~ones | ~witness & ~zeros):
+            kept.append(witness)
+            ones |= witness
+            zeros |= ~witness
+    return tuple(kept)

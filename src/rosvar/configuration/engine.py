@@ -150,7 +150,7 @@ class Configurator:
             for feature, value in values
             if value.slot is OTHER
         ]
-        self._feature_states = {
+        self._feature_states = {  # by feature: by (decided value, chosen by the user)
             feature.id: {
                 (decided, chosen): FeatureState(
                     feature.kind,
@@ -166,6 +166,9 @@ class Configurator:
             }
             for feature in self.catalog
         }
+        self._feature_rows = [
+            (f.id, f.variable, self._feature_states[f.id]) for f in self.catalog
+        ]  # what a state's features are read from, without attribute lookups
         self._steps: PrefixCache[tuple[str, bool], Decisions] = PrefixCache(
             self.derivation.initial, CACHED_STEPS
         )
@@ -299,9 +302,10 @@ class Configurator:
         key = tuple((e.variable, e.value, e.text) for e in replay.effective)
         view = self.views.view(key, decisions, texts)
         chosen = {t for e in replay.effective for t in e.targets}
-        states, decided = self._feature_states, decisions.decided
+        decided = decisions.decided
         features = {
-            f.id: states[f.id][decided.get(f.variable), f.id in chosen] for f in self.catalog
+            id_: states[decided.get(variable), id_ in chosen]
+            for id_, variable, states in self._feature_rows
         }
         complete = len(decided) == len(self.derivation.variables)
         launches = self._launches(decisions, texts) if complete else None

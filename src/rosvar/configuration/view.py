@@ -81,6 +81,7 @@ class Views:
         self.lowering = lowering
         self.conflicts = conflicts
         self._described: dict[tuple[BDD, frozenset[tuple[str, bool]]], str] = {}
+        self._simplified: dict[BDD, str] = {}  # a condition cofactored → its description
         self.presences = Presences(graph.elements, derivation, lowering)
         self._elements_of: list[list[int]] = [[] for _ in self.presences.conditions]
         for index, condition in enumerate(self.presences.of_element):
@@ -124,7 +125,10 @@ class Views:
         text = self._described.get(key)
         if text is None:
             space = self.analysis.space
-            text = space.describe(space.cofactor(condition, values))
+            restricted = space.cofactor(condition, values)
+            text = self._simplified.get(restricted)  # other values often leave the same
+            if text is None:
+                text = self._simplified[restricted] = space.describe(restricted)
             self._described[key] = text
         return text
 
@@ -160,15 +164,21 @@ class Views:
             entries = list(before.entries)
             again = self._rerendered(decisions, texts, before, presences)
         values: dict[str, Values] = {}
+        changed: set[str] = set()  # kinds with an entry rendered anew
         for index in again:
             element = self.graph.elements[index]
             judged = presences[self.presences.of_element[index]]
             if element.entry not in values and element.inputs:
                 values[element.entry] = self._values(element.entry, decisions, texts)
-            entries[index] = self._element_entries(element, judged, values)
+            found = self._element_entries(element, judged, values)
+            if found is not entries[index]:
+                changed.add(element.kind)
+            entries[index] = found
         graph = Graph(
             **{
                 f"{kind}s": [fields for index in indices for fields in entries[index]]
+                if before is None or kind in changed
+                else getattr(before.graph, f"{kind}s")  # the same list: no entry changed
                 for kind, indices in self._of_kind.items()
             }
         )
