@@ -597,6 +597,13 @@ class Solver:
         """The counterpart of an analysis-space feature variable."""
         return self.manager.var(_name(variable))
 
+    def file_tree(self, feature: FileFeature) -> BDD:
+        """One file's part of the feature tree (``∃`` the other files' variables ``. tree``)."""
+        args = [
+            (_name(feature.variable), [_name(v.variable) for v in a.values]) for a in feature.args
+        ]
+        return conjoin(self.manager, _arg_trees(self.manager, args))
+
     @cached_property
     def component_of(self) -> dict[str, int]:
         """Variable name → index of the component it belongs to."""

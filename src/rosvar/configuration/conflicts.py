@@ -16,7 +16,7 @@ from rosvar.analyses.conflicts import Clash
 from rosvar.analyses.features import FeatureModel, conjoin
 from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.lowering import Lowering
-from rosvar.logic.conditions import BDD
+from rosvar.logic.conditions import BDD, walked_support
 
 CERTAIN, POSSIBLE = "certain", "possible"
 REQUIRES_LIMIT = 100_000
@@ -91,13 +91,10 @@ class Conflicts:
             if bounds.may == manager.false:
                 continue
             a, b = features[first], features[second]
-            both = solver.var(a.variable) & solver.var(b.variable)
-            support = (
-                manager.support(both)
-                | manager.support(bounds.may)
-                | manager.support(bounds.must)
-                | space.support(fixed)
-            )
+            pair = (solver.var(a.variable), solver.var(b.variable))
+            both = pair[0] & pair[1]
+            # the bounds are ``fixed`` copied with atoms quantified: no other variables
+            support = space.support(fixed) | {file.var for file in pair}
             mine = solver.components[component_of[a.id]].variables
             touched = sorted({block_of[v] for v in support & set(mine)})
             within = conjoin(manager, [blocks[n][1] for n in touched])
@@ -166,17 +163,13 @@ def _blocks(
     solver = model.solver
     manager = solver.manager
     large = {i for i, c in enumerate(solver.components) if c.formula.dag_size > REQUIRES_LIMIT}
-    alone: dict[str, tuple[frozenset[str], BDD]] = {}
-    for file in model.files:
-        variables = frozenset(file.variable_names())
-        others = set(solver.variables) - variables
-        alone[file.id] = (variables, manager.exist(others, solver.tree))
+    alone = {f.id: (frozenset(f.variable_names()), solver.file_tree(f)) for f in model.files}
     blocks = [(variables, formula, {file}) for file, (variables, formula) in alone.items()]
     left_out: set[str] = set()  # variables of the files whose requires are left out
     for constraint, formula in zip(model.constraints, solver.constraints, strict=True):
         if constraint.kind != "requires" or component_of[constraint.files[0]] in large:
             continue
-        support = manager.support(formula)
+        support = walked_support(formula)
         if support & left_out:
             continue
         linked = [b for b in blocks if b[0] & support]

@@ -51,6 +51,24 @@ def memory_estimate(files: int) -> int:
     return min(MAX_MEMORY, max(MIN_MEMORY, files * MEMORY_PER_FILE))
 
 
+def walked_support(u: BDD) -> set[str]:
+    """The variables ``u`` depends on, found by visiting its nodes: linear in ``u``'s size,
+    where ``dd``'s ``support`` walks every variable of its manager in Python."""
+    names: set[str] = set()
+    seen: set[int] = set()
+    stack = [u]
+    while stack:
+        node = stack.pop()
+        name = node.var
+        if name is None or int(node) in seen:
+            continue
+        seen.add(int(node))
+        names.add(name)
+        stack.append(node.low)
+        stack.append(node.high)
+    return names
+
+
 class _TooComplex(Exception):
     """The condition has too many disjuncts to print usefully."""
 
@@ -213,19 +231,7 @@ class ConditionSpace:
         """
         if u.dag_size * SUPPORT_WALK_FACTOR > len(self._atoms):
             return cast(set[str], self.bdd.support(u))
-        names: set[str] = set()
-        seen: set[int] = set()
-        stack = [u]
-        while stack:
-            node = stack.pop()
-            name = node.var
-            if name is None or int(node) in seen:
-                continue
-            seen.add(int(node))
-            names.add(name)
-            stack.append(node.low)
-            stack.append(node.high)
-        return names
+        return walked_support(u)
 
     def constrain(self, constraint: BDD) -> None:
         """Add a fact every configuration satisfies (e.g. two predicates exclude each other)."""
