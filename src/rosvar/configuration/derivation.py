@@ -112,11 +112,13 @@ class Derivation:
                 reads = sum(1 << at for at in support)
                 for file in files:
                     self._crossing[file].append((constraint, reads, files))
-        self._kept: dict[tuple[BDD, int], bool] = {}  # constraint, bits it reads → it holds
+        self._reads: dict[frozenset[int], int] = {}  # files → what their constraints read
+        self._broke: dict[tuple[frozenset[int], int], frozenset[int]] = {}
         self._repairs: dict[tuple[int, BDD], int | None] = {}
         self._quantified = [set(c.variables) for c in solver.components]
         self.component_of = solver.component_of
         self._supports: dict[BDD, frozenset[str]] = {}
+        self._masks_of: dict[BDD, int] = {}
         self._restricted: dict[object, tuple[str | None, BDD, BDD, frozenset[int]]] = {}
         self._judged: dict[tuple[BDD, BDD, BDD], tuple[str, tuple[int, int] | None]] = {}
         self._roots: dict[tuple[int, BDD], BDD] = {}
@@ -285,7 +287,7 @@ class Derivation:
             if judged is None:
                 judged = None
                 if earlier is not None and component is not None:
-                    judged = self._carried(component, must, may, earlier, decisions)
+                    judged = self._carried(must, may, earlier, decisions)
                 if judged is None:
                     judged = self._judge(must, may, component, decisions)
                 self._judged[(must, may, cube)] = judged
@@ -309,11 +311,42 @@ class Derivation:
         # conditions over several components are rare (no constraint links their files)
         return None, must, may, frozenset(self.component_of[v] for v in open_)
 
+    def carried(self, bounds: Bounds, earlier: Verdict, decisions: Decisions) -> Verdict | None:
+        """``earlier``, the verdict of the same ``bounds`` under fewer literals that
+        decided no more of their support, still holding with its witnesses repaired
+        (``_repairs_of``); None: judge again.
+
+        A repair that left the support of a bound alone left its truth as it was."""
+        repaired, before = self._repairs_of(earlier, decisions), earlier.witnesses
+        if repaired is None or before is None:
+            return None
+        (without, within), (before_without, before_within) = repaired, before
+        if (without ^ before_without) & self._mask(bounds.must) and self._holds(
+            bounds.must, without
+        ):
+            return None
+        if (within ^ before_within) & self._mask(bounds.may) and not self._holds(
+            bounds.may, within
+        ):
+            return None
+        return Verdict(earlier.presence, earlier.values, earlier.components, repaired)
+
     def _carried(
-        self, component: int, must: BDD, may: BDD, earlier: Verdict, decisions: Decisions
+        self, must: BDD, may: BDD, earlier: Verdict, decisions: Decisions
     ) -> tuple[str, tuple[int, int]] | None:
-        """``earlier`` (undetermined under fewer literals) still undetermined, shown by its
-        witnesses repaired to agree with the new literals; None when that fails.
+        """``earlier`` (undetermined under fewer literals) still undetermined for the
+        restricted bounds ``must`` and ``may``, shown by its witnesses repaired."""
+        repaired = self._repairs_of(earlier, decisions)
+        if repaired is None:
+            return None
+        without, within = repaired
+        if self._holds(must, without) or not self._holds(may, within):
+            return None
+        return UNDETERMINED, repaired
+
+    def _repairs_of(self, earlier: Verdict, decisions: Decisions) -> tuple[int, int] | None:
+        """The witnesses of ``earlier`` (an undetermined verdict under fewer literals)
+        repaired to agree with the literals of ``decisions``; None when one cannot be.
 
         A step adds literals to a few files, and a witness that disagrees with one usually
         shows the condition of a file far from them. Copying the blocks of those files
@@ -323,12 +356,11 @@ class Derivation:
         """
         if earlier.witnesses is None:
             return None
+        (component,) = earlier.components
         without, within = (self._repaired(component, w, decisions) for w in earlier.witnesses)
         if without is None or within is None:
             return None
-        if self._holds(must, without) or not self._holds(may, within):
-            return None
-        return UNDETERMINED, (without, within)
+        return without, within
 
     def _repaired(self, component: int, witness: int, decisions: Decisions) -> int | None:
         """``witness`` with the files where it disagrees with the user literals copied
@@ -349,18 +381,12 @@ class Derivation:
             wrong &= ~self._blocks[file]
         found = None
         for source in decisions.witnesses[component][:SOURCES]:
-            files, fresh, block = set(start), set(start), 0
+            files, fresh, block = frozenset(start), frozenset(start), 0
             while fresh:
                 for file in fresh:
                     block |= self._blocks[file]
                 patched = witness & ~block | source & block
-                broken = {
-                    linked
-                    for file in files
-                    for constraint, reads, others in self._crossing[file]
-                    if not self._keeps(constraint, reads, patched)
-                    for linked in others
-                }
+                broken = self._broken(files, patched)
                 fresh = broken - files
                 files |= fresh
             if not broken:
@@ -371,15 +397,29 @@ class Derivation:
         self._repairs[key] = found
         return found
 
-    def _keeps(self, constraint: BDD, reads: int, witness: int) -> bool:
-        """The truth of ``constraint`` (over the variables of ``reads``) in ``witness``,
-        remembered for those variables' values: repairs ask it of many similar witnesses."""
-        key = (constraint, witness & reads)
-        found = self._kept.get(key)
+    def _broken(self, files: frozenset[int], patched: int) -> frozenset[int]:
+        """The files linked by the constraints leaving ``files`` that ``patched`` breaks,
+        remembered for the values of the variables they read: a step repairs many
+        witnesses the same way, which differ elsewhere."""
+        reads = self._reads.get(files)
+        if reads is None:
+            reads = 0
+            for file in files:
+                for _constraint, read, _others in self._crossing[file]:
+                    reads |= read
+            self._reads[files] = reads
+        key = (files, patched & reads)
+        found = self._broke.get(key)
         if found is None:
-            if len(self._kept) >= CACHED_REPAIRS:
-                self._kept.clear()
-            found = self._kept[key] = self._holds(constraint, witness)
+            if len(self._broke) >= CACHED_REPAIRS:
+                self._broke.clear()
+            found = self._broke[key] = frozenset(
+                linked
+                for file in files
+                for constraint, _read, others in self._crossing[file]
+                if not self._holds(constraint, patched)
+                for linked in others
+            )
         return found
 
     def _judge(
@@ -438,6 +478,13 @@ class Derivation:
             atom = self.manager.var(variable)
             cube &= atom if value else ~atom
         return _cudd.restrict(u, cube)
+
+    def _mask(self, u: BDD) -> int:
+        """The positions of ``u``'s support, as bits."""
+        found = self._masks_of.get(u)
+        if found is None:
+            found = self._masks_of[u] = sum(1 << self.position[v] for v in self._support(u))
+        return found
 
     def _support(self, u: BDD) -> frozenset[str]:
         found = self._supports.get(u)

@@ -61,6 +61,10 @@ class FeatureState:
         }
 
 
+_Row = tuple[str, str, dict[tuple[bool | None, bool], FeatureState]]
+"""A feature's id, its variable and its states by (decided value, chosen by the user)."""
+
+
 @dataclass
 class ConfigurationState:
     choices: list[UserChoice]
@@ -166,9 +170,13 @@ class Configurator:
             }
             for feature in self.catalog
         }
-        self._feature_rows = [
-            (f.id, f.variable, self._feature_states[f.id]) for f in self.catalog
-        ]  # what a state's features are read from, without attribute lookups
+        self._rows = {f.id: (f.id, f.variable, self._feature_states[f.id]) for f in self.catalog}
+        self._rows_of: dict[str, list[_Row]] = {}
+        for row in self._rows.values():
+            self._rows_of.setdefault(row[1], []).append(row)
+        self._last: (
+            tuple[Mapping[str, bool], frozenset[str], dict[str, FeatureState], int] | None
+        ) = None
         self._steps: PrefixCache[tuple[str, bool], Decisions] = PrefixCache(
             self.derivation.initial, CACHED_STEPS
         )
@@ -301,12 +309,9 @@ class Configurator:
         texts = _texts(replay.effective)
         key = tuple((e.variable, e.value, e.text) for e in replay.effective)
         view = self.views.view(key, decisions, texts)
-        chosen = {t for e in replay.effective for t in e.targets}
+        chosen = frozenset(t for e in replay.effective for t in e.targets)
         decided = decisions.decided
-        features = {
-            id_: states[decided.get(variable), id_ in chosen]
-            for id_, variable, states in self._feature_rows
-        }
+        features, unselected = self._features(decided, chosen)
         complete = len(decided) == len(self.derivation.variables)
         launches = self._launches(decisions, texts) if complete else None
         commands = group(launches or [])
@@ -321,12 +326,41 @@ class Configurator:
             complete=complete,
             command=command,
             counter=lambda: self.derivation.count(decisions),
-            unselected=sum(1 for f in features.values() if f.state == "unselected"),
+            unselected=unselected,
             commands=commands,
             untyped=[
                 arg for arg, variable in self._others if decided.get(variable) and arg not in texts
             ],
         )
+
+    def _features(
+        self, decided: Mapping[str, bool], chosen: frozenset[str]
+    ) -> tuple[dict[str, FeatureState], int]:
+        """Each feature's state, and how many are unselected: the last answer's with the
+        features whose variable got decided (or undecided) or whose choice changed since,
+        as a step changes a few of hundreds."""
+        if self._last is None:
+            rows: Iterable[_Row]
+            rows, features, unselected = self._rows.values(), {}, 0
+        else:
+            before_decided, before_chosen, before, unselected = self._last
+            features = dict(before)
+            changed = decided.items() ^ before_decided.items()
+            rows = {
+                row[0]: row
+                for row in [
+                    *(row for variable, _ in changed for row in self._rows_of.get(variable, ())),
+                    *(self._rows[i] for i in chosen ^ before_chosen if i in self._rows),
+                ]
+            }.values()
+        for id_, variable, states in rows:
+            earlier = features.get(id_)
+            state = features[id_] = states[decided.get(variable), id_ in chosen]
+            unselected += (state.state == "unselected") - (
+                earlier is not None and earlier.state == "unselected"
+            )
+        self._last = (decided, chosen, features, unselected)
+        return features, unselected
 
     def _launches(self, decisions: Decisions, texts: Mapping[str, str]) -> list[Launch] | None:
         """The launched files and their args; None while an <other> value has no text."""

@@ -93,13 +93,22 @@ class Presences:
         earlier, earlier_typed, answer = before
         again = self._touched(decisions, typed, earlier, earlier_typed)
         components = {c for c, cube in decisions.cubes.items() if cube != earlier.cubes[c]}
-        if components:
-            again.update(
-                index
-                for index, judged in enumerate(answer)
-                if judged.verdict.components & components and _stale(judged.verdict, decisions)
-            )
         found = list(answer)
+        if components:
+            for index, judged in enumerate(answer):
+                verdict = judged.verdict
+                if (
+                    verdict.components.isdisjoint(components)
+                    or not _stale(verdict, decisions)
+                    or index in again
+                ):
+                    continue
+                # its decided variables are those of before: repaired witnesses may do
+                carried = self.derivation.carried(self._bounds(index, typed), verdict, decisions)
+                if carried is None:
+                    again.add(index)
+                else:
+                    found[index] = Judged(carried, judged.description)
         ordered = sorted(again)
         for index, judged in zip(
             ordered, self._judge(ordered, decisions, typed, describe, answer), strict=True
@@ -118,6 +127,13 @@ class Presences:
                 touched.update(self._typed_in.get(entry, ()))
         return touched
 
+    def _bounds(self, index: int, typed: Typed) -> Bounds:
+        """The bounds of a condition, decided further by the texts typed for its file."""
+        condition = self.conditions[index]
+        if not condition.bounds.exact and condition.entry in typed:
+            return self.lowering.decide(condition.condition, typed[condition.entry])
+        return condition.bounds
+
     def _judge(
         self,
         indices: Sequence[int],
@@ -129,13 +145,10 @@ class Presences:
         """The conditions of ``indices``, judged in one pass (the solver's example for one
         may show the next undetermined), with their verdicts in ``answer`` (an earlier
         step) as hints."""
-        bounds: list[tuple[Bounds, Verdict | None]] = []
-        for index in indices:
-            condition = self.conditions[index]
-            found = condition.bounds
-            if not found.exact and condition.entry in typed:
-                found = self.lowering.decide(condition.condition, typed[condition.entry])
-            bounds.append((found, None if answer is None else answer[index].verdict))
+        bounds = [
+            (self._bounds(index, typed), None if answer is None else answer[index].verdict)
+            for index in indices
+        ]
         judged = []
         for index, verdict in zip(
             indices, self.derivation.presences(bounds, decisions), strict=True

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from itertools import chain
 
 from rosvar.configuration.catalog import Catalog, FileEntry
 from rosvar.configuration.conflicts import Conflicts, ConflictState
@@ -176,7 +177,7 @@ class Views:
             entries[index] = found
         graph = Graph(
             **{
-                f"{kind}s": [fields for index in indices for fields in entries[index]]
+                f"{kind}s": list(chain.from_iterable(map(entries.__getitem__, indices)))
                 if before is None or kind in changed
                 else getattr(before.graph, f"{kind}s")  # the same list: no entry changed
                 for kind, indices in self._of_kind.items()
