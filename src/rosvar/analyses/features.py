@@ -33,6 +33,7 @@ from rosvar.logic.conditions import (
     PredicateAtom,
     SlotAtom,
     exactly_one,
+    walked_support,
 )
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
 from rosvar.logic.terms import Apply, Hole, Operand, term_inputs
@@ -855,21 +856,35 @@ class Verdict:
 
 
 def core_and_dead(model: FeatureModel) -> list[Verdict]:
-    """Features in every (core) or no (dead) valid configuration, with the constraints why."""
+    """Features in every (core) or no (dead) valid configuration, with the constraints why.
+
+    A value of a dead file is dead for the same reason (it needs its file): it shares the
+    file's explanation instead of searching again — a file that includes one it clashes
+    with has every value dead, and each search costs many conjunctions.
+    """
     solver = model.solver
     verdicts: list[Verdict] = []
-    candidates: list[tuple[str, BDD]] = []
-    for file in model.files:
-        candidates.append((file.id, solver.var(file.variable)))
-        for arg in file.args:
-            candidates.extend((v.id, solver.var(v.variable)) for v in arg.values)
     possible = possible_values(solver)
-    for feature_id, variable in candidates:
-        values = possible.get(_name(variable), {False, True})
-        if True not in values:
-            verdicts.append(Verdict(feature_id, "dead", explain(model, variable)))
-        elif False not in values:
-            verdicts.append(Verdict(feature_id, "core", explain(model, ~variable)))
+
+    def values_of(variable: BDD) -> set[bool]:
+        return possible.get(_name(variable), {False, True})
+
+    for file in model.files:
+        variable = solver.var(file.variable)
+        dead_file = True not in values_of(variable)
+        if dead_file:
+            because = explain(model, variable)
+            verdicts.append(Verdict(file.id, "dead", because))
+        elif False not in values_of(variable):
+            verdicts.append(Verdict(file.id, "core", explain(model, ~variable)))
+        for value in (v for arg in file.args for v in arg.values):
+            variable = solver.var(value.variable)
+            if dead_file:
+                verdicts.append(Verdict(value.id, "dead", because))
+            elif True not in values_of(variable):
+                verdicts.append(Verdict(value.id, "dead", explain(model, variable)))
+            elif False not in values_of(variable):
+                verdicts.append(Verdict(value.id, "core", explain(model, ~variable)))
     return verdicts
 
 
@@ -932,11 +947,12 @@ def explain(model: FeatureModel, goal: BDD) -> list[str]:
     The search starts from the constraints around the feature's file and widens one
     hop of the constraint graph at a time: explanations are local in practice, and
     conjoining every constraint of a large system for each trial would be quadratic
-    in expensive BDD operations.
+    in expensive BDD operations. Only the tree parts of the files the constraints and
+    ``goal`` mention take part: the other files' parts are satisfiable on their own.
     """
     solver = model.solver
     false = solver.manager.false
-    mentioned = {name for name in solver.manager.support(goal)}
+    mentioned = walked_support(goal)
     files = {f.id for f in model.files if _name(f.variable) in mentioned} | {
         f.id
         for f in model.files
@@ -944,10 +960,13 @@ def explain(model: FeatureModel, goal: BDD) -> list[str]:
         for v in a.values
         if _name(v.variable) in mentioned
     }
+    by_id = {f.id: f for f in model.files}
     chosen: list[int] = []
     while True:
         chosen = [n for n, c in enumerate(model.constraints) if set(c.files) & files]
-        formula = solver.tree & goal
+        involved = files | {f for n in chosen for f in model.constraints[n].files}
+        tree = conjoin(solver.manager, [solver.file_tree(by_id[f]) for f in sorted(involved)])
+        formula = tree & goal
         for number in chosen:
             formula &= solver.constraints[number]
         if formula == false:
@@ -960,7 +979,7 @@ def explain(model: FeatureModel, goal: BDD) -> list[str]:
     position = 0
     while position < len(kept):
         trial = kept[:position] + kept[position + 1 :]
-        formula = solver.tree & goal
+        formula = tree & goal
         for number in trial:
             formula &= solver.constraints[number]
         if formula == false:
