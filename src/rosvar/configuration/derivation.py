@@ -40,6 +40,7 @@ from rosvar.logic.conditions import BDD
 PRESENT, ABSENT, UNDETERMINED = "present", "absent", "undetermined"
 CACHED_ROOTS = 64  # formulas restricted by a step's literals, for counting
 SOURCES = 4  # witnesses tried as the source of a repair
+REPAIRED_FILES = 8  # files a repair may copy: beyond, the solver is the cheaper way
 CACHED_REPAIRS = 4096  # repaired witnesses by witness and literals, dropped all at once
 EXAMPLES = 64
 """Configurations found for presence judgements, kept to judge other conditions too."""
@@ -382,14 +383,14 @@ class Derivation:
         found = None
         for source in decisions.witnesses[component][:SOURCES]:
             files, fresh, block = frozenset(start), frozenset(start), 0
-            while fresh:
+            while fresh and len(files) <= REPAIRED_FILES:
                 for file in fresh:
                     block |= self._blocks[file]
                 patched = witness & ~block | source & block
                 broken = self._broken(files, patched)
                 fresh = broken - files
                 files |= fresh
-            if not broken:
+            if not fresh:
                 found = patched
                 break
         if len(self._repairs) >= CACHED_REPAIRS:
