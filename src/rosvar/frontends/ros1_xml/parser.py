@@ -235,11 +235,15 @@ def parse_launch_bytes(data: bytes, filename: str) -> ParseResult:
     return ParseResult(launch, [*result.diagnostics, warning])
 
 
-def _read_bytes(path: str | os.PathLike[str]) -> bytes | ParseResult:
-    """Read a whole regular file, refusing oversized ones before reading them."""
+def _read_bytes(
+    path: str | os.PathLike[str], info: os.stat_result | None = None
+) -> bytes | ParseResult:
+    """Read a whole regular file, refusing oversized ones before reading them (``info``:
+    what ``os.stat`` just said about it, when the caller asked)."""
     name = os.fspath(path)
     try:
-        info = os.stat(name)
+        if info is None:
+            info = os.stat(name)
         if not stat.S_ISREG(info.st_mode):
             return _error(
                 "file-unreadable", "cannot read file: not a regular file", Location(name, 1, 1)
@@ -278,9 +282,14 @@ def parse_xml_file(path: str | os.PathLike[str]) -> ParseResult:
     return parse_xml_bytes(data, os.fspath(path))
 
 
-def parse_launch_file(path: str | os.PathLike[str]) -> ParseResult:
-    """Read and parse a roslaunch file; Locations use ``path`` as given. Never raises."""
-    data = _read_bytes(path)
+def parse_launch_file(
+    path: str | os.PathLike[str], info: os.stat_result | None = None
+) -> ParseResult:
+    """Read and parse a roslaunch file; Locations use ``path`` as given. Never raises.
+
+    ``info`` is the file's ``os.stat``, when the caller has just taken it.
+    """
+    data = _read_bytes(path, info)
     if isinstance(data, ParseResult):
         return data
     return parse_launch_bytes(data, os.fspath(path))
@@ -306,7 +315,7 @@ def load_launch_file(path: str | os.PathLike[str]) -> ParseResult:
         return parse_launch_file(name)
     cached = _cache.get(key)
     if cached is None:
-        cached = parse_launch_file(name)
+        cached = parse_launch_file(name, info)
         if any(d.code == "file-unreadable" for d in cached.diagnostics):
             return cached  # permissions may change without touching mtime
         _cache[key] = cached

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import functools
 import os
+import stat
 
 import yaml
 
@@ -97,6 +98,16 @@ def read_text(path: str) -> str:
     return _read_text(path, info.st_mtime_ns, info.st_size)
 
 
+def _regular_file(path: str) -> os.stat_result | None:
+    """``os.stat`` of ``path`` if it is a regular file (``os.path.isfile``, keeping the
+    answer: reading the file then needs no second ``stat``)."""
+    try:
+        info = os.stat(path)
+    except (OSError, ValueError):
+        return None
+    return info if stat.S_ISREG(info.st_mode) else None
+
+
 @functools.lru_cache(maxsize=1024)
 def _read_text(path: str, _mtime: int, _size: int) -> str:
     with open(path) as handle:
@@ -117,17 +128,20 @@ def load_rosparam(
     """
     if command not in ("load", "dump", "delete"):
         raise ValueError("command must be 'load', 'dump', or 'delete'")
+    info = None
     if file is not None:
-        if command == "load" and not os.path.isfile(file):
-            raise MissingFile(f"file does not exist [{file}]")
+        if command == "load":
+            info = _regular_file(file)
+            if info is None:
+                raise MissingFile(f"file does not exist [{file}]")
         if command == "delete":
             raise ValueError("'file' attribute is invalid with 'delete' command.")
     if command != "load":
         return []
     param_name = names.ns_join(ns or "", param or "")
-    if file is not None:
+    if file is not None and info is not None:
         try:
-            text = read_text(file)
+            text = _read_text(file, info.st_mtime_ns, info.st_size)
         except OSError as error:
             raise ValueError(str(error)) from None
     full = names.ns_join(scope_ns, param_name) if param_name else scope_ns
