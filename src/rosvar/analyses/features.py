@@ -149,6 +149,9 @@ def _term_inputs(value: Operand) -> set[ArgInput]:
     return {i for i in term_inputs(value) if isinstance(i, ArgInput)}
 
 
+_TERMS = (Hole, Apply)  # a union type written inline is built anew at every call
+
+
 def graph_inputs(model: LaunchModel) -> set[ArgInput]:
     """Args whose value changes a node, param or remap (AFFECTSCG), read off the BDD supports.
 
@@ -157,16 +160,21 @@ def graph_inputs(model: LaunchModel) -> set[ArgInput]:
     is in the support of a presence condition or of a branch of an attribute.
     """
     space = model.space
+    true = space.true
     conditions: set[BDD] = set()  # elements share conditions: each support is taken once
     terms: set[ArgInput] = set()
+    seen: set[int] = set()  # and choices (one per literal, shared): each is read once
 
     def add_choice(choice: Choice[object]) -> None:
+        if id(choice) in seen:
+            return
+        seen.add(id(choice))
         for condition, leaf in choice:
-            if condition != space.true:
+            if condition != true:
                 conditions.add(condition)
             if isinstance(leaf, DeferredValue):
                 leaf = leaf.raw
-            if isinstance(leaf, Hole | Apply):
+            if isinstance(leaf, _TERMS):
                 terms.update(_term_inputs(leaf))
 
     for node in model.nodes:
@@ -176,7 +184,7 @@ def graph_inputs(model: LaunchModel) -> set[ArgInput]:
         for remap in node.remaps:
             conditions.add(remap.condition)
             for raw in (remap.source, remap.target):
-                if isinstance(raw, Hole | Apply):
+                if isinstance(raw, _TERMS):
                     terms.update(_term_inputs(raw))
     for param in model.params:
         conditions.add(param.condition)
