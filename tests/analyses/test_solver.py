@@ -423,6 +423,7 @@ def test_stand_ins_count_as_the_values_they_replace_under_any_choice(
             restricted = solver.manager.let({name: value}, solver.formula)
             expected = int(solver.manager.count(restricted, nvars=everything - 1))
             assert solver.count({name: value}) == expected, (name, value)
+    assert features.possible_values(solver) == features.possible_values(solver, solver.formula)
     pairs = [(n, m) for n in a.variables for m in a.variables if n < m]
     for first, second in pairs:
         choices = {first: True, second: False}

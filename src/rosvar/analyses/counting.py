@@ -64,7 +64,10 @@ def weighted_count(manager: _cudd.BDD, formula: BDD, weights: Mapping[str, Weigh
         found = values.get(high_key)
         d_high = d(high, high_key) if found is None else found
         off, on = weight_at[node.level]
-        value = values[key] = (off * d_low + on * d_high) // (off + on)
+        if off == on == 1:  # most variables: a shift, not a long division
+            value = values[key] = (d_low + d_high) >> 1
+        else:
+            value = values[key] = (off * d_low + on * d_high) // (off + on)
         return value
 
     negated = formula.negated

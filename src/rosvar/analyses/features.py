@@ -904,13 +904,36 @@ def possible_values(solver: Solver, formula: BDD | None = None) -> dict[str, set
     operations on the whole diagram each, minutes on a large system. ``formula``
     (default: the whole model) may be a component's formula, restricted or not; the
     answer is then meant for that component's variables only.
+
+    The whole model is read off each component's ``counted`` diagram, never building
+    the full formulas: a value a stand-in counts for is possible where the stand-in
+    is true, and left out where it is false or, in a group of two or more, where
+    another value of the group is taken instead.
     """
     manager = solver.manager
-    depth = len(solver.variables)
-    names = [manager.var_at_level(level) for level in range(depth)]
+    names = [manager.var_at_level(level) for level in range(len(solver.variables))]
+    if formula is not None:
+        return _one_pass(manager, names, formula)
+    possible: dict[str, set[bool]] = {}
+    for component in solver.components:
+        if component.counted == manager.false:  # no valid configuration at all
+            return {name: set() for name in names}
+        found = _one_pass(manager, names, component.counted)
+        possible.update((name, found[name]) for name in component.counted_variables)
+        for stand_in, group in component.stand_ins:
+            taken = found[stand_in]
+            values = {True} if True in taken else set()
+            if False in taken or (True in taken and len(group) > 1):
+                values.add(False)
+            possible.update((name, set(values)) for name in group)
+    return possible
+
+
+def _one_pass(manager: _cudd.BDD, names: Sequence[str], root: BDD) -> dict[str, set[bool]]:
+    """``possible_values`` of ``root`` over the levels ``names`` (all of the manager's)."""
+    depth = len(names)
     possible: dict[str, set[bool]] = {name: set() for name in names}
     free = [0] * (depth + 1)  # difference array over levels skipped by some edge
-    root = solver.formula if formula is None else formula
     true, false = manager.true, manager.false  # each access builds a new wrapper: hoisted
     if root == false:
         return possible
