@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 
 from rosvar.diagnostics import Diagnostic, DiagnosticSink, Location
 from rosvar.frontends.ros1_xml.parser import is_launch_root, parse_xml_file
+from rosvar.workspace.paths import real_path
 
 PACKAGE_FILE = "package.xml"
 EXECUTABLES_FILE = ".executables"
@@ -119,7 +120,7 @@ class _Discovery:
         self.launch_files: set[str] = set()
 
     def add_package(self, directory: str) -> None:
-        real = os.path.realpath(directory)
+        real = real_path(directory)
         if real in self.package_dirs:
             return  # reached twice (overlapping roots, or a root also on ROS_PACKAGE_PATH)
         self.package_dirs.add(real)
