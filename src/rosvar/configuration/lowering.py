@@ -82,10 +82,9 @@ class Lowering:
     def lower(self, condition: BDD) -> tuple[BDD, Bounds]:
         found = self._cache.get(condition)
         if found is None:
-            bdd = self.space.bdd
             support = self.space.support(condition)
             values = {n: self.fixed[n] for n in support if n in self.fixed}
-            fixed = bdd.let(values, condition) if values else condition
+            fixed = self.space.cofactor(condition, values)
             found = (fixed, self._copy(fixed))
             self._cache[condition] = found
         return found
