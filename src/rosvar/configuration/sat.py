@@ -12,9 +12,9 @@ the feature variables alone where they can be: the feature tree is split into on
 arg of a file (the file and the arg's values: the tree is their conjunction), and each part
 and each cross-tree constraint (``Solver.constraints``; with the tree they make the
 components' formulas) becomes one clause per path of its BDD to FALSE. A goal (a condition
-bound) gets a *switch*: a fresh variable that implies it by the same clauses, so asking for
-"one of these goals" is one clause over their switches. A diagram with too many paths is
-translated by Tseitin's encoding instead: one variable per node, equivalent to it.
+bound) gets a *switch*: a fresh variable that implies it by the same clauses, assumed when
+the goal is asked for. A diagram with too many paths is translated by Tseitin's encoding
+instead: one variable per node, equivalent to it.
 """
 
 from __future__ import annotations
@@ -90,6 +90,7 @@ class Sat:
         return found
 
     def _variable(self) -> int:
+        """A fresh SAT variable."""
         self._top += 1
         return self._top
 
