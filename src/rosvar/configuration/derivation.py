@@ -301,7 +301,7 @@ class Derivation:
         """The verdict restriction alone gives, else what the solver must judge: the
         restricted bounds and the components of their open variables."""
         must = self.cofactor(bounds.must, values)
-        may = self.cofactor(bounds.may, values)
+        may = must if bounds.may == bounds.must else self.cofactor(bounds.may, values)
         if must == self.manager.true:
             return PRESENT, must, may, frozenset()
         if may == self.manager.false:
