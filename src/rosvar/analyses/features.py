@@ -608,10 +608,15 @@ class Solver:
 
     def file_tree(self, feature: FileFeature) -> BDD:
         """One file's part of the feature tree (``∃`` the other files' variables ``. tree``)."""
+        return conjoin(self.manager, self.arg_trees(feature))
+
+    def arg_trees(self, feature: FileFeature) -> list[BDD]:
+        """The parts of the feature tree of each arg of a file: the file is selected exactly
+        when one of the arg's values is (their conjunction is ``file_tree``)."""
         args = [
             (_name(feature.variable), [_name(v.variable) for v in a.values]) for a in feature.args
         ]
-        return conjoin(self.manager, _arg_trees(self.manager, args))
+        return _arg_trees(self.manager, args)
 
     @cached_property
     def component_of(self) -> dict[str, int]:

@@ -44,17 +44,13 @@ class Sat:
 
     def __init__(self, model: FeatureModel) -> None:
         solver = model.solver
-        self.manager = manager = solver.manager
+        self.manager = solver.manager
         self._atoms = {variable: i + 1 for i, variable in enumerate(solver.variables)}
         self._width = len(solver.variables)
         self._true = self._width + 1  # a variable every model sets: TRUE
-        everything = set(solver.variables)
         parts = list(solver.constraints)
         for file in model.files:
-            present = solver.var(file.variable).var
-            for arg in file.args:
-                mine = {present, *(solver.var(v.variable).var for v in arg.values)}
-                parts.append(manager.exist(everything - mine, solver.tree))
+            parts.extend(solver.arg_trees(file))
         self._parts = parts
         self._start()
 
