@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 import pytest
 
 from configuration.helpers import choices, configurator, present, run, states
+from rosvar.analyses.features import count_configurations
 from rosvar.configuration.choices import ChoiceError
 from rosvar.configuration.engine import Configurator
 
@@ -133,3 +134,22 @@ def test_conflict_certain_possible_gone(ws: LaunchWorkspace) -> None:
     assert conflict.status == "certain" and conflict.condition is None
     assert run(engine, "set a.launch:on=false").conflicts == []
     assert run(engine, "deselect b.launch").conflicts == []
+
+
+def test_configurations_are_counted_exactly_beyond_a_double(ws: LaunchWorkspace) -> None:
+    """40 args used in conditions: over 2^53 configurations, which CUDD's double rounds."""
+    args = "".join(
+        f'  <arg name="a{n}" default="true"/>\n'
+        f'  <node pkg="p" type="t" name="n{n}" if="$(arg a{n})"/>\n'
+        for n in range(40)
+    )
+    ws.launch("many.launch", args)
+    engine = configurator(ws)
+    model = engine.model
+    everything = run(engine).configurations
+    assert everything == count_configurations(model) and everything > 2**53
+    chosen = run(engine, "set many.launch:a0=true").configurations
+    [arg] = [a for a in model.files[0].args if a.name == "a0"]
+    [value] = [v for v in arg.values if v.slot == "true"]
+    assert chosen == model.solver.count({model.solver.var(value.variable).var: True})
+    assert 0 < chosen < everything

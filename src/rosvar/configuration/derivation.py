@@ -35,7 +35,7 @@ import dd.cudd as _cudd
 from rosvar.analyses.features import FeatureModel
 from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.sat import Sat
-from rosvar.logic.conditions import BDD
+from rosvar.logic.conditions import BDD, walked_support
 
 PRESENT, ABSENT, UNDETERMINED = "present", "absent", "undetermined"
 CACHED_ROOTS = 64  # formulas restricted by a step's literals, for counting
@@ -97,6 +97,7 @@ class Derivation:
         self.sat = Sat(model)
         self.variables = list(solver.variables)
         self.position = {v: i for i, v in enumerate(self.variables)}
+        self.components = solver.components
         self.formulas = [c.formula for c in solver.components]
         self.members = [list(c.variables) for c in solver.components]
         self._masks = [sum(1 << self.position[v] for v in c.variables) for c in solver.components]
@@ -107,7 +108,7 @@ class Derivation:
         # the constraints that leave each file, with the files they link
         self._crossing: list[list[tuple[BDD, int, frozenset[int]]]] = [[] for _ in model.files]
         for constraint in solver.constraints:
-            support = [self.position[v] for v in manager.support(constraint)]
+            support = [self.position[v] for v in walked_support(constraint)]
             files = frozenset(self._file_at[at] for at in support)
             if len(files) > 1:
                 reads = sum(1 << at for at in support)
@@ -242,14 +243,16 @@ class Derivation:
         return found
 
     def count(self, decisions: Decisions) -> int:
-        """Valid configurations left: the product of the components' counts (each cached)."""
+        """Valid configurations left: the product of the components' exact counts (each
+        cached; CUDD's own count is a double, exact only below 2^53)."""
         total = 1
         for component, cube in decisions.cubes.items():
             found = self._counts.get((component, cube))
             if found is None:
-                mask = decisions.fixed[component][0]
-                free = len(self.members[component]) - mask.bit_count()
-                found = int(self.manager.count(self._root(component, decisions), nvars=free))
+                mine = {
+                    v: b for v, b in decisions.literals.items() if self.component_of[v] == component
+                }
+                found = self.components[component].count(mine)
                 self._counts[(component, cube)] = found
             total *= found
         return total
@@ -490,7 +493,7 @@ class Derivation:
     def _support(self, u: BDD) -> frozenset[str]:
         found = self._supports.get(u)
         if found is None:
-            found = frozenset(self.manager.support(u))
+            found = frozenset(walked_support(u))
             self._supports[u] = found
         return found
 
