@@ -24,7 +24,7 @@ from collections.abc import Sequence
 from pysat.solvers import Solver as _Sat
 
 from rosvar.analyses.features import FeatureModel
-from rosvar.logic.conditions import BDD
+from rosvar.logic.conditions import BDD, children_first, cofactors
 
 BACKEND = "glucose4"
 """The solver pysat drives: it follows preferred phases (CaDiCaL 1.9.5 through pysat does
@@ -101,7 +101,7 @@ class Sat:
                 return int(v == false)
             found = counts.get(v)
             if found is None:
-                found = counts[v] = sum(paths(child) for child in _children(v))
+                found = counts[v] = sum(paths(child) for child in cofactors(v))
             return found
 
         if paths(u) > PATHS:
@@ -115,7 +115,7 @@ class Sat:
                     clauses.append(clause)
                 continue
             x = self._atoms[v.var]
-            low, high = _children(v)
+            low, high = cofactors(v)
             stack += [(low, [*clause, x]), (high, [*clause, -x])]
         return clauses
 
@@ -133,21 +133,11 @@ class Sat:
     def _translate(self, root: BDD) -> None:
         """Clauses for every node under ``root`` not translated yet, children first."""
         nodes, clauses = self._nodes, []
-        stack = [root]
-        while stack:
-            node = stack[-1]
-            if node in nodes:
-                stack.pop()
-                continue
-            pending = [
-                child
-                for child in (_regular(node.low), _regular(node.high))
-                if child.var is not None and child not in nodes
-            ]
-            if pending:
-                stack.extend(pending)
-                continue
-            stack.pop()
+
+        def inner(node: BDD) -> list[BDD]:
+            return [c for c in (_regular(node.low), _regular(node.high)) if c.var is not None]
+
+        for node in children_first(root, inner, nodes):
             n, x = self._variable(), self._atoms[node.var]
             nodes[node] = n
             low, high = self._literal(node.low), self._literal(node.high)
@@ -195,11 +185,6 @@ class Sat:
         if switch is not None:
             self._sat.add_clause([-switch])  # (the model must be read before)
         return found
-
-
-def _children(u: BDD) -> tuple[BDD, BDD]:
-    """The low and high cofactors of ``u`` (not of its regular node)."""
-    return (~u.low, ~u.high) if u.negated else (u.low, u.high)
 
 
 def _regular(u: BDD) -> BDD:

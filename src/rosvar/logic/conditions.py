@@ -9,7 +9,7 @@ t" (decided only when a configuration makes t concrete). Everything that asks
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Container, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, cast
 
@@ -49,6 +49,32 @@ def memory_estimate(files: int) -> int:
     wide margin while small systems start small.
     """
     return min(MAX_MEMORY, max(MIN_MEMORY, files * MEMORY_PER_FILE))
+
+
+def cofactors(u: BDD) -> tuple[BDD, BDD]:
+    """The low and high cofactors of ``u`` by its top variable (``dd`` gives the children of
+    its regular node, which a complemented ``u`` negates)."""
+    low, high = u.low, u.high
+    return (~low, ~high) if u.negated else (low, high)
+
+
+def children_first(
+    root: BDD, children: Callable[[BDD], Iterable[BDD]], done: Container[BDD]
+) -> Iterator[BDD]:
+    """The nodes under ``root`` not in ``done``, each after its ``children``; the caller adds
+    each node it is given to ``done``. An explicit stack: no recursion limit."""
+    stack = [root]
+    while stack:
+        node = stack[-1]
+        if node in done:
+            stack.pop()
+            continue
+        pending = [child for child in children(node) if child not in done]
+        if pending:
+            stack.extend(pending)
+            continue
+        stack.pop()
+        yield node
 
 
 def walked_support(u: BDD) -> set[str]:
@@ -325,11 +351,6 @@ class ConditionSpace:
             u = self.bdd.let({name: self.true if value else self.false}, u)
         return u
 
-    def _children(self, u: BDD) -> tuple[BDD, BDD]:
-        """The cofactors of ``u`` by its top variable (false, true)."""
-        low, high = u.low, u.high
-        return (~low, ~high) if u.negated else (low, high)
-
     # -- readable form ---------------------------------------------------------------------
     def describe(self, condition: BDD, qualify: bool = False, known_only: bool = True) -> str:
         key = (condition, qualify, known_only, len(self._constraints))
@@ -453,7 +474,7 @@ class ConditionSpace:
             yield {}
             return
         var = u.var
-        for value, child in zip((False, True), self._children(u), strict=True):
+        for value, child in zip((False, True), cofactors(u), strict=True):
             for path in self._paths(child, budget):
                 yield {var: value, **path}
 

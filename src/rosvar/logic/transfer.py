@@ -16,37 +16,21 @@ from collections.abc import Collection
 
 import dd.cudd as _cudd
 
-from rosvar.logic.conditions import BDD
+from rosvar.logic.conditions import BDD, children_first, cofactors
 
 
 def transfer(u: BDD, target: _cudd.BDD, hidden: Collection[str] = ()) -> BDD:
     """``∃ hidden. u`` rebuilt in ``target``, which declares the rest of its support.
 
-    Functions are rebuilt before the functions above them (an explicit stack: no recursion
-    limit), so a node on a ``hidden`` variable becomes the disjunction of its children's
-    copies, which no longer depend on it. Quantification does not commute with negation,
-    so a complemented edge is its own function here: its children are the complements of
-    those ``dd`` gives, which belong to the regular node.
+    Functions are rebuilt before the functions above them, so a node on a ``hidden``
+    variable becomes the disjunction of its cofactors' copies, which no longer depend on
+    it. Quantification does not commute with negation, so a complemented edge is its own
+    function here, with its own cofactors.
     """
     source = u.bdd
     copies: dict[BDD, BDD] = {source.true: target.true, source.false: target.false}
-
-    def children(function: BDD) -> tuple[BDD, BDD]:
-        low, high = function.low, function.high
-        return (~low, ~high) if function.negated else (low, high)
-
-    stack = [u]
-    while stack:
-        function = stack[-1]
-        if function in copies:
-            stack.pop()
-            continue
-        low, high = children(function)
-        pending = [child for child in (low, high) if child not in copies]
-        if pending:
-            stack.extend(pending)
-            continue
-        stack.pop()
+    for function in children_first(u, cofactors, copies):
+        low, high = cofactors(function)
         name = function.var
         copies[function] = (
             copies[high] | copies[low]
