@@ -109,8 +109,8 @@ class Lowering:
     def _copy(self, fixed: BDD) -> Bounds:
         """In the solver's manager: ``∀ open. fixed`` and ``∃ open. fixed``."""
         open_ = self.space.support(fixed) & self.open
-        must = ~transfer(~fixed, self.manager, open_)
-        return Bounds(must, transfer(fixed, self.manager, open_))
+        may = transfer(fixed, self.manager, open_)
+        return Bounds(~transfer(~fixed, self.manager, open_) if open_ else may, may)
 
     def back(self, condition: BDD) -> BDD:
         """A solver BDD in the analysis' manager (for describing it)."""
