@@ -16,7 +16,7 @@ the questions:
 
 Witnesses are kept as a cover (``_cover``: enough to show every open variable open).
 Literals are added one at a time; each step keeps the witnesses that agree with the new
-literal, *repairs* the others (``_repaired``: the files where one disagrees copied from a
+literal, *repairs* the others (``repaired``: the files where one disagrees copied from a
 witness that agrees) and only looks at the variables still open in the literal's
 component. Repairs also carry most undetermined verdicts from one step to the next
 without a question to the solver. The BDDs of the components are only restricted to
@@ -38,7 +38,6 @@ from rosvar.configuration.sat import Sat
 from rosvar.logic.conditions import BDD, walked_support
 
 PRESENT, ABSENT, UNDETERMINED = "present", "absent", "undetermined"
-CACHED_ROOTS = 64  # formulas restricted by a step's literals, for counting
 SOURCES = 4  # witnesses tried as the source of a repair
 REPAIRED_FILES = 8  # files a repair may copy: beyond, the solver is the cheaper way
 CACHED_REPAIRS = 4096  # repaired witnesses by witness and literals, dropped all at once
@@ -117,13 +116,12 @@ class Derivation:
         self._reads: dict[frozenset[int], int] = {}  # files → what their constraints read
         self._broke: dict[tuple[frozenset[int], int], frozenset[int]] = {}
         self._repairs: dict[tuple[int, BDD], int | None] = {}
-        self._quantified = [set(c.variables) for c in solver.components]
+        self._block_of: dict[frozenset[int], int] = {}  # files → their variables' positions
         self.component_of = solver.component_of
         self._supports: dict[BDD, frozenset[str]] = {}
         self._masks_of: dict[BDD, int] = {}
         self._restricted: dict[object, tuple[str | None, BDD, BDD, frozenset[int]]] = {}
         self._judged: dict[tuple[BDD, BDD, BDD], tuple[str, tuple[int, int] | None]] = {}
-        self._roots: dict[tuple[int, BDD], BDD] = {}
         self._counts: dict[tuple[int, BDD], int] = {}
         components = range(len(self.members))
         self._examples: deque[int] = deque(maxlen=EXAMPLES)
@@ -172,7 +170,7 @@ class Derivation:
             decided={**decisions.decided, variable: value},
             witnesses={**decisions.witnesses, component: kept},
         )
-        repaired = (self._repaired(component, w, step) for w in witnesses if w not in kept)
+        repaired = self.repaired(component, (w for w in witnesses if w not in kept), step).values()
         kept += tuple(dict.fromkeys(w for w in repaired if w is not None and w not in kept))
         step = replace(step, witnesses={**decisions.witnesses, component: kept})
         return self._settle(step, component)
@@ -223,24 +221,6 @@ class Derivation:
             {**step.witnesses, component: _cover(witnesses, shown)},
             step.fixed,
         )
-
-    def _root(self, component: int, decisions: Decisions) -> BDD:
-        """The component's formula with its user literals fixed (remembered per step)."""
-        cube = decisions.cubes[component]
-        key = (component, cube)
-        found = self._roots.get(key)
-        if found is None:
-            mine = {v: b for v, b in decisions.literals.items() if v in self._quantified[component]}
-            # (``let``: CUDD's restrict takes longer on a diagram this large)
-            found = (
-                self.manager.let(mine, self.formulas[component])
-                if mine
-                else self.formulas[component]
-            )
-            if len(self._roots) >= CACHED_ROOTS:
-                self._roots.pop(next(iter(self._roots)))
-            self._roots[key] = found
-        return found
 
     def count(self, decisions: Decisions) -> int:
         """Valid configurations left: the product of the components' exact counts (each
@@ -315,16 +295,16 @@ class Derivation:
         # conditions over several components are rare (no constraint links their files)
         return None, must, may, frozenset(self.component_of[v] for v in open_)
 
-    def carried(self, bounds: Bounds, earlier: Verdict, decisions: Decisions) -> Verdict | None:
+    def carried(
+        self, bounds: Bounds, earlier: Verdict, repaired: tuple[int, int]
+    ) -> Verdict | None:
         """``earlier``, the verdict of the same ``bounds`` under fewer literals that
-        decided no more of their support, still holding with its witnesses repaired
-        (``_repairs_of``); None: judge again.
+        decided no more of their support, still holding with its witnesses ``repaired``
+        (``repairs``); None: judge again.
 
         A repair that left the support of a bound alone left its truth as it was."""
-        repaired, before = self._repairs_of(earlier, decisions), earlier.witnesses
-        if repaired is None or before is None:
-            return None
-        (without, within), (before_without, before_within) = repaired, before
+        assert earlier.witnesses is not None
+        (without, within), (before_without, before_within) = repaired, earlier.witnesses
         if (without ^ before_without) & self._mask(bounds.must) and self._holds(
             bounds.must, without
         ):
@@ -340,7 +320,7 @@ class Derivation:
     ) -> tuple[str, tuple[int, int]] | None:
         """``earlier`` (undetermined under fewer literals) still undetermined for the
         restricted bounds ``must`` and ``may``, shown by its witnesses repaired."""
-        repaired = self._repairs_of(earlier, decisions)
+        repaired = self.repairs(earlier, decisions)
         if repaired is None:
             return None
         without, within = repaired
@@ -348,58 +328,83 @@ class Derivation:
             return None
         return UNDETERMINED, repaired
 
-    def _repairs_of(self, earlier: Verdict, decisions: Decisions) -> tuple[int, int] | None:
+    def repairs(self, earlier: Verdict, decisions: Decisions) -> tuple[int, int] | None:
         """The witnesses of ``earlier`` (an undetermined verdict under fewer literals)
-        repaired to agree with the literals of ``decisions``; None when one cannot be.
-
-        A step adds literals to a few files, and a witness that disagrees with one usually
-        shows the condition of a file far from them. Copying the blocks of those files
-        from a current witness keeps every constraint inside a block and outside them
-        satisfied; only the constraints crossing a block's border are checked. Most
-        undetermined conditions are carried so, without a question to the solver.
-        """
+        repaired to agree with the literals of ``decisions`` (``repaired``); None when
+        one cannot be."""
         if earlier.witnesses is None:
             return None
         (component,) = earlier.components
-        without, within = (self._repaired(component, w, decisions) for w in earlier.witnesses)
+        found = self.repaired(component, earlier.witnesses, decisions)
+        without, within = (found[w] for w in earlier.witnesses)
         if without is None or within is None:
             return None
         return without, within
 
-    def _repaired(self, component: int, witness: int, decisions: Decisions) -> int | None:
-        """``witness`` with the files where it disagrees with the user literals copied
-        from one of the component's witnesses, and then the files of every constraint
-        the copy breaks, until none is broken (None when no source of the first few
-        gives a valid configuration)."""
+    def repaired(
+        self, component: int, witnesses: Iterable[int], decisions: Decisions
+    ) -> dict[int, int | None]:
+        """Each of ``witnesses`` (valid configurations of ``component`` under fewer
+        literals) repaired to agree with the literals of ``decisions``: itself when it
+        does, None when it cannot be.
+
+        A step adds literals to a few files, and a witness that disagrees with one usually
+        shows the condition of a file far from them. Copying the blocks of those files
+        from a current witness keeps every constraint inside a block and outside them
+        satisfied; only the constraints crossing a block's border are checked, and the
+        files of those the copy breaks copied too, until none is broken (``_copied``).
+        Most undetermined conditions are carried so, without a question to the solver.
+        The witnesses of a step disagree with the same new literals: they share the
+        files to copy, and one pass serves them all.
+        """
         mask, bits = decisions.fixed[component]
-        wrong = (witness ^ bits) & mask
-        if not wrong:
-            return witness
-        key = (witness, decisions.cubes[component])
-        if key in self._repairs:
-            return self._repairs[key]
-        start: set[int] = set()
-        while wrong:
-            file = self._file_at[(wrong & -wrong).bit_length() - 1]
-            start.add(file)
-            wrong &= ~self._blocks[file]
-        found = None
-        for source in decisions.witnesses[component][:SOURCES]:
-            files, fresh, block = frozenset(start), frozenset(start), 0
-            while fresh and len(files) <= REPAIRED_FILES:
-                for file in fresh:
-                    block |= self._blocks[file]
-                patched = witness & ~block | source & block
-                broken = self._broken(files, patched)
-                fresh = broken - files
-                files |= fresh
-            if not fresh:
-                found = patched
-                break
-        if len(self._repairs) >= CACHED_REPAIRS:
-            self._repairs.clear()
-        self._repairs[key] = found
+        cube = decisions.cubes[component]
+        sources = decisions.witnesses[component][:SOURCES]
+        starts: dict[int, frozenset[int]] = {}  # wrong bits → their files
+        found: dict[int, int | None] = {}
+        for witness in witnesses:
+            wrong = (witness ^ bits) & mask
+            if not wrong:
+                found[witness] = witness
+                continue
+            key = (witness, cube)
+            if key in self._repairs:
+                found[witness] = self._repairs[key]
+                continue
+            start = starts.get(wrong)
+            if start is None:
+                files, rest = set(), wrong
+                while rest:
+                    file = self._file_at[(rest & -rest).bit_length() - 1]
+                    files.add(file)
+                    rest &= ~self._blocks[file]
+                start = starts[wrong] = frozenset(files)
+            repaired = None
+            for source in sources:
+                repaired = self._copied(witness, source, start)
+                if repaired is not None:
+                    break
+            if len(self._repairs) >= CACHED_REPAIRS:
+                self._repairs.clear()
+            self._repairs[key] = found[witness] = repaired
         return found
+
+    def _copied(self, witness: int, source: int, files: frozenset[int]) -> int | None:
+        """``witness`` with the blocks of ``files`` copied from ``source``, and then those
+        of the files of every constraint the copy breaks; None beyond ``REPAIRED_FILES``."""
+        if len(files) > REPAIRED_FILES:
+            return None
+        while True:
+            block = self._block_of.get(files)
+            if block is None:
+                block = self._block_of[files] = sum(self._blocks[file] for file in files)
+            patched = witness & ~block | source & block
+            fresh = self._broken(files, patched) - files
+            if not fresh:
+                return patched
+            files |= fresh
+            if len(files) > REPAIRED_FILES:
+                return None
 
     def _broken(self, files: frozenset[int], patched: int) -> frozenset[int]:
         """The files linked by the constraints leaving ``files`` that ``patched`` breaks,

@@ -91,30 +91,67 @@ class Presences:
         if before is None:
             return self._judge(range(len(self.conditions)), decisions, typed, describe, None)
         earlier, earlier_typed, answer = before
-        again = self._touched(decisions, typed, earlier, earlier_typed)
+        # present or absent in every valid configuration stays so under more literals
+        again = {
+            index
+            for index in self._touched(decisions, typed, earlier, earlier_typed)
+            if answer[index].verdict.presence == UNDETERMINED
+        }
         components = {c for c, cube in decisions.cubes.items() if cube != earlier.cubes[c]}
         found = list(answer)
         if components:
-            for index, judged in enumerate(answer):
-                verdict = judged.verdict
-                if (
-                    verdict.components.isdisjoint(components)
-                    or not _stale(verdict, decisions)
-                    or index in again
-                ):
-                    continue
-                # its decided variables are those of before: repaired witnesses may do
-                carried = self.derivation.carried(self._bounds(index, typed), verdict, decisions)
-                if carried is None:
-                    again.add(index)
-                else:
-                    found[index] = Judged(carried, judged.description)
+            self._carry(answer, found, again, components, decisions, typed)
         ordered = sorted(again)
         for index, judged in zip(
             ordered, self._judge(ordered, decisions, typed, describe, answer), strict=True
         ):
             found[index] = judged
         return found
+
+    def _carry(
+        self,
+        answer: Sequence[Judged],
+        found: list[Judged],
+        again: set[int],
+        components: set[int],
+        decisions: Decisions,
+        typed: Typed,
+    ) -> None:
+        """Undetermined verdicts of ``answer`` in ``components`` (whose literals changed)
+        whose decided variables did not change, kept in ``found`` where their witnesses
+        still agree with the literals or repaired ones still show them undetermined, else
+        added to ``again``. The verdicts share witnesses: each is repaired once."""
+        carried: dict[int, list[int]] = {}  # component → its verdicts to carry
+        for index, judged in enumerate(answer):
+            verdict = judged.verdict
+            if (
+                verdict.presence != UNDETERMINED
+                or verdict.components.isdisjoint(components)
+                or index in again
+            ):
+                continue
+            if verdict.witnesses is None:  # judged in several components: no witnesses
+                again.add(index)
+            else:
+                (component,) = verdict.components
+                carried.setdefault(component, []).append(index)
+        for component, indices in carried.items():
+            witnesses = {w for index in indices for w in answer[index].verdict.witnesses or ()}
+            repaired = self.derivation.repaired(component, witnesses, decisions)
+            for index in indices:
+                verdict = answer[index].verdict
+                assert verdict.witnesses is not None
+                without, within = (repaired[w] for w in verdict.witnesses)
+                if (without, within) == verdict.witnesses:
+                    continue  # they agree with the literals: it stays undetermined
+                kept = None
+                if without is not None and within is not None:
+                    pair = (without, within)
+                    kept = self.derivation.carried(self._bounds(index, typed), verdict, pair)
+                if kept is None:
+                    again.add(index)
+                else:
+                    found[index] = Judged(kept, answer[index].description)
 
     def _touched(
         self, decisions: Decisions, typed: Typed, earlier: Decisions, earlier_typed: Typed
@@ -158,13 +195,3 @@ class Presences:
                 description = describe(self.conditions[index].condition, verdict.values)
             judged.append(Judged(verdict, description))
         return judged
-
-
-def _stale(verdict: Verdict, decisions: Decisions) -> bool:
-    """The solver's verdict may differ under the (more) literals of ``decisions``."""
-    if verdict.presence != UNDETERMINED:
-        return False  # present or absent in every valid configuration stays so
-    if verdict.witnesses is None:
-        return True
-    (component,) = verdict.components
-    return not all(decisions.valid(component, w) for w in verdict.witnesses)
