@@ -7,6 +7,7 @@ import os
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 
+from rosvar.frontends.ros1_xml.parser import Snapshot
 from rosvar.interpreter import tags  # noqa: F401 - registers the tag handlers
 from rosvar.interpreter.domains import DomainTable, entry_declarations
 from rosvar.interpreter.interpretation import Interpretation
@@ -33,7 +34,10 @@ class Analysis:
     ) -> None:
         self.workspace = workspace
         self.space = ConditionSpace(len(workspace.launch_files))
-        self.domains = DomainTable(workspace, extra_values, env_values, extra_executables)
+        self.files = Snapshot()
+        self.domains = DomainTable(
+            workspace, extra_values, env_values, extra_executables, files=self.files
+        )
         self._models: dict[str, LaunchModel] = {}
         self._labels: dict[str, str] | None = None
 
@@ -78,7 +82,12 @@ class Analysis:
         # the BDD variable order (the feature model pairs them).
         self.space.file_atom(file, self.label(file))
         it = Interpretation(
-            self.workspace, self.space, self.domains.arg_domain, self.domains.env_domain, file
+            self.workspace,
+            self.space,
+            self.domains.arg_domain,
+            self.domains.env_domain,
+            file,
+            self.files,
         )
         it.stack.append(real_path(file))
         root = it.load(file)

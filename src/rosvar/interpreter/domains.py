@@ -17,7 +17,7 @@ from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from rosvar.frontends.entity import Entity
-from rosvar.frontends.ros1_xml.parser import load_launch_file
+from rosvar.frontends.ros1_xml.parser import Snapshot
 from rosvar.interpreter.evaluator import EvalRefused, compared_literals
 from rosvar.logic.inputs import OTHER, UNSET, Slot
 from rosvar.workspace import Workspace
@@ -152,8 +152,10 @@ class DomainTable:
         extra_values: Mapping[str, Sequence[str]] | None = None,
         env_values: Mapping[str, Sequence[str]] | None = None,
         extra_executables: Mapping[str, Sequence[str]] | None = None,
+        files: Snapshot | None = None,
     ) -> None:
         self.workspace = workspace
+        self._files = files or Snapshot()
         self._executables = extra_executables or {}
         self._forwards: dict[str, list[tuple[str, str]]] = {}
         self._facts: dict[str, dict[str, ArgFacts]] = {}
@@ -163,7 +165,7 @@ class DomainTable:
 
     def facts(self, file: str) -> dict[str, ArgFacts]:
         if file not in self._facts:
-            root = load_launch_file(file).root
+            root = self._files.load(file).root
             self._facts[file] = file_facts(root) if root is not None else {}
         return self._facts[file]
 
@@ -248,7 +250,7 @@ class DomainTable:
     def _index_includes(self) -> dict[str, dict[str, set[str]]]:
         index: dict[str, dict[str, set[str]]] = defaultdict(lambda: defaultdict(set))
         for launch_file in self.workspace.launch_files:
-            root = load_launch_file(launch_file).root
+            root = self._files.load(launch_file).root
             if root is None:
                 continue
             for element in _walk(root):

@@ -8,14 +8,15 @@ the functions registered in :data:`TAGS` (see :mod:`rosvar.interpreter.tags`).
 
 from __future__ import annotations
 
+import functools
 import weakref
 from collections.abc import Callable, Sequence
-from typing import Any, TypeVar
+from typing import Any, Concatenate, ParamSpec, TypeVar
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
-from rosvar.frontends.ros1_xml.parser import load_launch_file
-from rosvar.interpreter.lifted import lift
+from rosvar.frontends.ros1_xml.parser import Snapshot
+from rosvar.interpreter.lifted import apply, lift
 from rosvar.interpreter.model import Decision, ErrorEvent, LaunchModel, Raw
 from rosvar.interpreter.scope import MISSING, ArgValue, Scope
 from rosvar.interpreter.substitution import Substituter
@@ -27,6 +28,7 @@ from rosvar.workspace import Workspace
 
 Handler = Callable[["Interpretation", Entity, Scope], None]
 V = TypeVar("V")
+P = ParamSpec("P")
 TAGS: dict[str, Handler] = {}
 MAX_INCLUDE_DEPTH = 64
 
@@ -42,6 +44,31 @@ def tag(name: str) -> Callable[[Handler], Handler]:
         return handler
 
     return register
+
+
+def processed(
+    body: Callable[Concatenate[Interpretation, Entity, Scope, P], None],
+) -> Callable[Concatenate[Interpretation, Entity, Scope, P], None]:
+    """roslaunch's ``ifunless_test``, which every tag handler starts with: ``body`` runs
+    where the tag's ``if``/``unless`` lets it, on the path narrowed to there.
+
+    One wrapper for all tags, and no condition to compute nor path to narrow for the
+    many tags with neither attribute (this runs for every element walked).
+    """
+
+    def guarded(
+        it: Interpretation, entity: Entity, scope: Scope, /, *args: P.args, **kwargs: P.kwargs
+    ) -> None:
+        attributes = entity.attributes
+        if "if" not in attributes and "unless" not in attributes:
+            body(it, entity, scope, *args, **kwargs)
+            return
+        with it.under(it.condition_of(entity, scope)) as live:
+            if live:
+                body(it, entity, scope, *args, **kwargs)
+
+    functools.update_wrapper(guarded, body)  # the handler's name in profiles and errors
+    return guarded
 
 
 def _truthy(text: str) -> bool:
@@ -66,8 +93,10 @@ class Interpretation:
         domains: Callable[[str, str], tuple[Slot, ...]],
         env_domains: Callable[[str], tuple[Slot, ...]],
         file: str,
+        files: Snapshot | None = None,
     ) -> None:
         self.workspace = workspace
+        self.files = files or Snapshot()
         self.space = space
         self._domains = domains
         self._env_domains = env_domains
@@ -182,9 +211,23 @@ class Interpretation:
         return Choice(good, self.space.false)
 
     def lift(self, name: str, *operands: Choice[Raw], context: str = "") -> Choice[Raw]:
-        """A lifted name function (see :mod:`rosvar.interpreter.lifted`), failures recorded."""
-        result: Choice[Raw] = self.strip(lift(name, *operands), context)
-        return result
+        """A lifted name function (see :mod:`rosvar.interpreter.lifted`), failures recorded.
+
+        Most operands are constants (one branch, true): their result is the function's
+        value, a constant too, with no cross product to build nor branches to strip.
+        """
+        true = self.space.true
+        leaves = []
+        for operand in operands:
+            branches = operand.branches
+            if len(branches) != 1 or branches[0][0] is not true:
+                return self.strip(lift(name, *operands), context)
+            leaves.append(branches[0][1])
+        value = apply(name, tuple(leaves))
+        if isinstance(value, Fail):
+            self.fail(true, value.code, f"{context}: {value.message}" if context else value.message)
+            return Choice.empty(self.space)
+        return Choice.const(self.space, value)
 
     def resolve(self, text: str | None, scope: Scope, context: str = "") -> Choice[Raw] | None:
         if text is not None and "$" not in text:  # most texts are literal: nothing can fail
@@ -286,7 +329,7 @@ class Interpretation:
 
     def load(self, path: str) -> Entity | None:
         """Parse a launch file (cached); parse problems become errors at the current tag."""
-        result = load_launch_file(path)
+        result = self.files.load(path)
         for diagnostic in result.diagnostics:
             self.sink.add(diagnostic)
         if result.root is None:

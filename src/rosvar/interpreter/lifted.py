@@ -43,11 +43,11 @@ for _name, _function in LIFTED.items():
 
 def lift(name: str, *operands: Choice[Raw]) -> Choice[Raw | Fail]:
     """``LIFTED[name]`` over all branch combinations of ``operands``."""
-    return combine(list(operands), lambda leaves: _apply(name, tuple(leaves)))
+    return combine(list(operands), lambda leaves: apply(name, tuple(leaves)))
 
 
 @functools.lru_cache(maxsize=65536)
-def _apply(name: str, leaves: tuple[Raw, ...]) -> Raw | Fail:
+def apply(name: str, leaves: tuple[Raw, ...]) -> Raw | Fail:
     """One combination (cached: the same namespaces and names recur in every includer)."""
     if any(is_term(leaf) for leaf in leaves):
         return Apply(name, leaves)

@@ -130,15 +130,22 @@ def _segments(text: str, bodies: tuple[str, ...]) -> tuple[tuple[str, ...], tupl
 
 
 @functools.lru_cache(maxsize=65536)
-def _plan(text: str) -> tuple[tuple[str, ...], tuple[str | int, ...], bool]:
+def _plan(
+    text: str,
+) -> tuple[tuple[str, ...], tuple[str | int, ...], bool, tuple[str, ...] | None]:
     """How to resolve ``text``: its first-pass bodies and segments (as :func:`_segments`),
-    and whether a find pass follows. Raises :class:`SubstitutionError` for malformed text.
+    whether a find pass follows, and the args it reads when it reads nothing else (no
+    ``env``, ``anon``, ``dirname`` nor ``find``): its value is then a function of theirs.
+    Raises :class:`SubstitutionError` for malformed text.
     """
     bodies = collect(text)
     for body in bodies:
         _split(body)
     distinct, segments = _segments(text, bodies)
-    return distinct, segments, any(_split(b)[0] == "find" for b in bodies)
+    find = any(_split(b)[0] == "find" for b in bodies)
+    words = [_split(body) for body in distinct]
+    only_args = not find and all(w[0] == "arg" and len(w) == 2 for w in words)
+    return distinct, segments, find, tuple(w[1] for w in words) if only_args else None
 
 
 # -- the find pass, on a concrete string (also used to evaluate terms later) ----------------
@@ -191,6 +198,9 @@ class Substituter:
     def __init__(self, host: Host) -> None:
         self.host = host
         self.space = host.space
+        # Values of texts that read args only, by text and the (immutable) choices of the
+        # args read: a file's texts recur in its elements and its includes' walks.
+        self._known: dict[tuple[object, ...], Choice[Value]] = {}
 
     def resolve(self, text: str | None, scope: Scope) -> Choice[Value] | None:
         if text is None:
@@ -200,9 +210,16 @@ class Substituter:
         try:
             if text.startswith("$(eval ") and text.endswith(")"):
                 return self._eval(text[7:-1], scope)
-            distinct, segments, find = _plan(text)
+            distinct, segments, find, reads = _plan(text)
         except SubstitutionError as error:
             return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+        if reads is not None:
+            args = scope.args
+            key = (text, *[args.get(name) for name in reads])
+            known = self._known.get(key)
+            if known is None:
+                known = self._known[key] = self._first_pass(text, distinct, segments, scope)
+            return known
         first = self._first_pass(text, distinct, segments, scope)
         return first.map(self._apply_find) if find else first
 

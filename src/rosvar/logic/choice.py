@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from typing import Any, Generic, TypeVar
 
 from rosvar.logic.conditions import BDD, ConditionSpace
+from rosvar.logic.terms import Apply, Hole
 
 T = TypeVar("T", covariant=True)
 U = TypeVar("U")
@@ -26,9 +27,14 @@ class Fail:
     code: str = "launch-error"
 
 
+_SELF_KEYED = frozenset({str, Hole, Apply})
+"""Leaf types that are their own merge key: equal only to leaves of their own type (terms
+compare their class), and the most common leaves."""
+
+
 def _key(leaf: object) -> object:
     """Merge key: equal *and* of the same type (0, False and 0.0 are different params)."""
-    if type(leaf) is str:  # the common leaf; other keys are tuples, never equal to a str
+    if type(leaf) in _SELF_KEYED:  # other keys are tuples, never equal to these
         return leaf
     try:
         hash(leaf)
@@ -117,7 +123,13 @@ class Choice(Generic[T]):
         return Choice._of_possible(out, self.false)
 
     def restrict(self, condition: BDD) -> Choice[T]:
-        """Only the part of this value that can hold under ``condition``."""
+        """Only the part of this value that can hold under ``condition``.
+
+        Under true the value is itself: the same object, so that a constant stays
+        recognisable as one (its condition the space's own true) downstream.
+        """
+        if condition.var is None and condition != self.false:
+            return self
         return Choice([(c & condition, v) for c, v in self.branches], self.false)
 
     def where(self, predicate: Callable[[T], bool]) -> BDD:
@@ -141,7 +153,7 @@ def _merged(branches: Iterable[tuple[BDD, V]]) -> tuple[tuple[BDD, V], ...]:
     merged: dict[object, tuple[BDD, V]] = {}
     for branch in branches:
         leaf = branch[1]
-        key = leaf if type(leaf) is str else _key(leaf)
+        key = leaf if type(leaf) in _SELF_KEYED else _key(leaf)
         known = merged.get(key)
         merged[key] = branch if known is None else (known[0] | branch[0], leaf)
     return tuple(merged.values())
@@ -193,13 +205,15 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
             joint = joint & condition
     if not varying:
         return Choice([(joint, function(leaves))], false)
+    if joint is not None and joint.var is None and joint != false:  # true: nothing to conjoin
+        joint = None
     partial: list[tuple[BDD, list[V]]] = [(joint, leaves)]
     for index in varying:
         nxt: list[tuple[BDD, list[V]]] = []
         for c1, vs in partial:
             for c2, v in choices[index].branches:
                 both = c2 if c1 is None else c1 & c2
-                if both != false:
+                if c1 is None or both != false:  # a branch alone is never false
                     chosen = list(vs)
                     chosen[index] = v
                     nxt.append((both, chosen))

@@ -9,7 +9,6 @@ when a concrete configuration supplies the missing strings (HAROS-style
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
 
 from rosvar.logic.inputs import Input
 
@@ -18,45 +17,68 @@ class TermError(Exception):
     """Evaluating a term failed the way roslaunch would fail at that point."""
 
 
-@dataclass(frozen=True)
 class Hole:
     """The concrete string of an input (known only once a configuration is given).
 
-    The hash is computed once, as :class:`Apply`'s: holes are operands of cached
-    function applications and keys of predicate atoms.
+    Immutable (never assign to a term's attributes). A plain class with slots rather
+    than a frozen dataclass, whose construction sets each field through
+    ``object.__setattr__``: terms are built in every includer's walk. The hash is
+    computed once, as :class:`Apply`'s: holes are operands of cached function
+    applications and keys of predicate atoms.
     """
 
-    input: Input
-    _hash: int = field(default=0, init=False, repr=False, compare=False)
+    __slots__ = ("_hash", "input")
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "_hash", hash(self.input))
+    def __init__(self, input: Input) -> None:
+        self.input = input
+        self._hash = hash(input)
+
+    def __eq__(self, other: object) -> bool:
+        return other.__class__ is Hole and self.input == other.input
 
     def __hash__(self) -> int:
         return self._hash
+
+    def __repr__(self) -> str:
+        return f"Hole(input={self.input!r})"
 
     def __str__(self) -> str:
         return f"⟨{self.input}⟩"
 
 
-@dataclass(frozen=True)
 class Apply:
     """``function(*operands)`` where some operand is a term.
 
     ``function`` names an entry of :data:`FUNCTIONS`; ``display`` is how people see it.
-    The hash is computed once: terms are dictionary keys on hot paths and nest deeply.
+    Immutable, with slots, as :class:`Hole`. The hash is computed once: terms are
+    dictionary keys on hot paths and nest deeply.
     """
 
-    function: str
-    operands: tuple[Operand, ...]
-    display: str = ""
-    _hash: int = field(default=0, init=False, repr=False, compare=False)
+    __slots__ = ("_hash", "display", "function", "operands")
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "_hash", hash((self.function, self.operands, self.display)))
+    def __init__(self, function: str, operands: tuple[Operand, ...], display: str = "") -> None:
+        self.function = function
+        self.operands = operands
+        self.display = display
+        self._hash = hash((function, operands, display))
+
+    def __eq__(self, other: object) -> bool:
+        return (
+            other.__class__ is Apply
+            and self._hash == other._hash
+            and self.function == other.function
+            and self.operands == other.operands
+            and self.display == other.display
+        )
 
     def __hash__(self) -> int:
         return self._hash
+
+    def __repr__(self) -> str:
+        return (
+            f"Apply(function={self.function!r}, operands={self.operands!r}, "
+            f"display={self.display!r})"
+        )
 
     def __str__(self) -> str:
         if self.display:

@@ -331,6 +331,25 @@ def clear_cache() -> None:
     _cache.clear()
 
 
+class Snapshot:
+    """Launch files as one analysis reads them: each loaded through the cache once, then
+    taken as unchanged. An analysis is one moment, and it loads a file again for every
+    include of it and every question about it: the cache's ``stat`` each time cost more
+    than the rest of the lookup. The results are shared: read-only, diagnostics included.
+    """
+
+    __slots__ = ("_loaded",)
+
+    def __init__(self) -> None:
+        self._loaded: dict[str, ParseResult] = {}
+
+    def load(self, path: str) -> ParseResult:
+        result = self._loaded.get(path)
+        if result is None:
+            result = self._loaded[path] = load_launch_file(path)
+        return result
+
+
 class _FirstTag(Exception):
     def __init__(self, tag: str) -> None:
         super().__init__(tag)

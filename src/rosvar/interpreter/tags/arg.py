@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, split, tag
+from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
 from rosvar.interpreter.model import ArgDecl, Raw
 from rosvar.interpreter.scope import MISSING, ArgValue, Scope
 from rosvar.logic.choice import Choice, ite
@@ -12,42 +12,40 @@ ATTRIBUTES = ("name", "value", "default", "doc")
 
 
 @tag("arg")
+@processed
 def handle_arg(it: Interpretation, entity: Entity, scope: Scope) -> None:
-    with it.under(it.condition_of(entity, scope)) as live:
-        if not live:
-            return
-        it.check_attributes(entity, ATTRIBUTES)
-        names = it.required(entity, "name", scope)
-        if names is None:
-            return
-        value = it.attr(entity, "value", scope)
-        default = it.attr(entity, "default", scope)
-        it.attr(entity, "doc", scope)
-        if value is not None and default is not None:
-            it.fail(
-                it.space.true,
-                "arg-value-and-default",
-                "<arg> tag must have one and only one of value/default.",
-            )
-            return
-        for condition, name in split(it, names):
-            if not isinstance(name, str):
-                it.warn("arg-name-unknown", f"arg name {name} is only known per configuration")
-                continue
-            with it.under(condition):
-                declare(it, scope, name, value, default)
-                if len(it.stack) == 1 and scope.include_args is None:
-                    it.model.args.append(
-                        ArgDecl(
-                            name=name,
-                            location=entity.location,
-                            condition=it.pc,
-                            default=entity.get("default"),
-                            value=entity.get("value"),
-                            doc=entity.get("doc"),
-                            input=it.model.inputs.get(name),
-                        )
+    it.check_attributes(entity, ATTRIBUTES)
+    names = it.required(entity, "name", scope)
+    if names is None:
+        return
+    value = it.attr(entity, "value", scope)
+    default = it.attr(entity, "default", scope)
+    it.attr(entity, "doc", scope)
+    if value is not None and default is not None:
+        it.fail(
+            it.space.true,
+            "arg-value-and-default",
+            "<arg> tag must have one and only one of value/default.",
+        )
+        return
+    for condition, name in split(it, names):
+        if not isinstance(name, str):
+            it.warn("arg-name-unknown", f"arg name {name} is only known per configuration")
+            continue
+        with it.under(condition):
+            declare(it, scope, name, value, default)
+            if len(it.stack) == 1 and scope.include_args is None:
+                it.model.args.append(
+                    ArgDecl(
+                        name=name,
+                        location=entity.location,
+                        condition=it.pc,
+                        default=entity.get("default"),
+                        value=entity.get("value"),
+                        doc=entity.get("doc"),
+                        input=it.model.inputs.get(name),
                     )
+                )
 
 
 def declare(
@@ -77,6 +75,8 @@ def declare(
     elif default is not None:
         if existing is None:
             new: ArgValue = default
+        elif all(v is not MISSING for _c, v in existing.branches):
+            new = existing  # given everywhere: the default never applies
         else:
             new = existing.bind(lambda v: default if v is MISSING else Choice.const(it.space, v))
         target[name] = ite(it.space, it.pc, new, old)

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, tag
+from rosvar.interpreter.interpretation import Interpretation, processed, tag
 from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.tags.common import namespace_scope
 
@@ -11,11 +11,9 @@ ATTRIBUTES = ("ns", "clear_params")
 
 
 @tag("group")
+@processed
 def handle_group(it: Interpretation, entity: Entity, scope: Scope) -> None:
-    with it.under(it.condition_of(entity, scope)) as live:
-        if not live:
-            return
-        it.check_attributes(entity, ATTRIBUTES)
-        child = namespace_scope(it, "group", entity, scope)
-        child.params = list(child.params)
-        it.walk(entity.children, child)
+    it.check_attributes(entity, ATTRIBUTES)
+    child = namespace_scope(it, "group", entity, scope)
+    child.params = list(child.params)
+    it.walk(entity.children, child)

@@ -5,7 +5,13 @@ from __future__ import annotations
 from typing import cast
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import MAX_INCLUDE_DEPTH, Interpretation, split, tag
+from rosvar.interpreter.interpretation import (
+    MAX_INCLUDE_DEPTH,
+    Interpretation,
+    processed,
+    split,
+    tag,
+)
 from rosvar.interpreter.model import IncludeDecl, Raw
 from rosvar.interpreter.scope import MISSING, Scope
 from rosvar.interpreter.tags.arg import declare, handle_arg
@@ -19,19 +25,17 @@ ATTRIBUTES = ("file", "ns", "clear_params", "pass_all_args")
 
 
 @tag("include")
+@processed
 def handle_include(it: Interpretation, entity: Entity, scope: Scope) -> None:
-    with it.under(it.condition_of(entity, scope)) as live:
-        if not live:
-            return
-        it.check_attributes(entity, ATTRIBUTES)
-        files = it.required(entity, "file", scope)
-        if files is None:
-            return
-        pass_all = bool_value(it, it.attr(entity, "pass_all_args", scope), False, "pass_all_args")
-        for f_condition, file in split(it, files):
-            for p_condition, flag in split(it, pass_all):
-                with it.under(f_condition & p_condition):
-                    _include(it, entity, scope, file, flag is True)
+    it.check_attributes(entity, ATTRIBUTES)
+    files = it.required(entity, "file", scope)
+    if files is None:
+        return
+    pass_all = bool_value(it, it.attr(entity, "pass_all_args", scope), False, "pass_all_args")
+    for f_condition, file in split(it, files):
+        for p_condition, flag in split(it, pass_all):
+            with it.under(f_condition & p_condition):
+                _include(it, entity, scope, file, flag is True)
 
 
 def _include(it: Interpretation, entity: Entity, scope: Scope, file: Raw, pass_all: bool) -> None:

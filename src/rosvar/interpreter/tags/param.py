@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, split, tag
+from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
 from rosvar.interpreter.model import Binary, DeferredValue, ParamDecl, Raw
 from rosvar.interpreter.scope import PrivateParam, Scope
 from rosvar.interpreter.values import convert_value
@@ -60,50 +60,49 @@ def add_private(
     params[:] = kept
 
 
+@processed
 def handle_param(it: Interpretation, entity: Entity, scope: Scope, force_local: bool) -> None:
-    with it.under(it.condition_of(entity, scope)) as live:
-        if not live:
-            return
-        it.check_attributes(entity, ATTRIBUTES)
-        ptype = (entity.get("type") or "auto").lower().strip()
-        present = [(k, it.attr(entity, k, scope)) for k in SOURCES if entity.has(k)]
-        if len(present) != 1:
-            it.fail(
-                it.space.true,
-                "param-invalid",
-                "<param> tag must have one and only one of value/textfile/binfile.",
-            )
-            return
-        kind, raw = present[0]
-        assert raw is not None
-        if not entity.has("name"):
-            it.fail(
-                it.space.true,
-                "attribute-missing",
-                "<param> tag is missing required attribute: 'name'",
-            )
-            return
-        names_choice = it.resolve((entity.get("name") or "").strip(), scope, "<param> name")
-        assert names_choice is not None
-        value = _value_choice(it, kind, raw, ptype)
-        if not value.branches:
-            return
-        for condition, name in split(it, names_choice):
-            with it.under(condition):
-                private = isinstance(name, str) and names.is_private(name)
-                if private or force_local:
-                    key = names.canonicalize_name(name) if isinstance(name, str) else name
-                    if isinstance(key, str):
-                        add_private(it, scope.params, key, value)
-                    else:
-                        it.warn(
-                            "param-name-unknown",
-                            f"param name {key} is only known per configuration",
-                        )
-                    continue
-                joined = it.lift("ns_join", scope.ns, Choice.const(it.space, name))
-                full = it.lift("canonicalize", joined)
-                it.model.params.append(ParamDecl(it.pc, entity.location, full, value, "param"))
+    it.check_attributes(entity, ATTRIBUTES)
+    ptype = (entity.get("type") or "auto").lower().strip()
+    attributes = entity.attributes
+    present = [(k, it.attr(entity, k, scope)) for k in SOURCES if k in attributes]
+    if len(present) != 1:
+        it.fail(
+            it.space.true,
+            "param-invalid",
+            "<param> tag must have one and only one of value/textfile/binfile.",
+        )
+        return
+    kind, raw = present[0]
+    assert raw is not None
+    if not entity.has("name"):
+        it.fail(
+            it.space.true,
+            "attribute-missing",
+            "<param> tag is missing required attribute: 'name'",
+        )
+        return
+    names_choice = it.resolve((entity.get("name") or "").strip(), scope, "<param> name")
+    assert names_choice is not None
+    value = _value_choice(it, kind, raw, ptype)
+    if not value.branches:
+        return
+    for condition, name in split(it, names_choice):
+        with it.under(condition):
+            private = isinstance(name, str) and names.is_private(name)
+            if private or force_local:
+                key = names.canonicalize_name(name) if isinstance(name, str) else name
+                if isinstance(key, str):
+                    add_private(it, scope.params, key, value)
+                else:
+                    it.warn(
+                        "param-name-unknown",
+                        f"param name {key} is only known per configuration",
+                    )
+                continue
+            joined = it.lift("ns_join", scope.ns, Choice.const(it.space, name))
+            full = it.lift("canonicalize", joined)
+            it.model.params.append(ParamDecl(it.pc, entity.location, full, value, "param"))
 
 
 @tag("param")

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, split, tag
+from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
 from rosvar.interpreter.model import Raw, Remap
 from rosvar.interpreter.scope import Scope
 from rosvar.logic.terms import Apply
@@ -12,27 +12,24 @@ from rosvar.ros import names
 ATTRIBUTES = ("from", "to")
 
 
-def remap_pairs(it: Interpretation, entity: Entity, scope: Scope) -> list[Remap]:
-    """The remaps a ``<remap>`` adds on the current path (``_remap_tag`` + ``add_remap``)."""
-    with it.under(it.condition_of(entity, scope)) as live:
-        if not live:
-            return []
-        it.check_attributes(entity, ATTRIBUTES)
-        sources = it.required(entity, "from", scope)
-        targets = it.required(entity, "to", scope)
-        if sources is None or targets is None:
-            return []
-        result = []
-        for s_condition, source in split(it, sources):
-            for t_condition, target in split(it, targets):
-                condition = it.pc & s_condition & t_condition
-                if condition == it.space.false:
-                    continue
-                with it.under(condition):
-                    pair = _canonical_pair(it, source, target)
-                if pair is not None:
-                    result.append(Remap(condition, *pair))
-        return result
+@processed
+def add_remaps(it: Interpretation, entity: Entity, scope: Scope, remaps: list[Remap]) -> None:
+    """Add to ``remaps`` what a ``<remap>`` adds on the current path (``_remap_tag`` +
+    ``add_remap``): a scope's own, or a node's."""
+    it.check_attributes(entity, ATTRIBUTES)
+    sources = it.required(entity, "from", scope)
+    targets = it.required(entity, "to", scope)
+    if sources is None or targets is None:
+        return
+    for s_condition, source in split(it, sources):
+        for t_condition, target in split(it, targets):
+            condition = it.pc & s_condition & t_condition
+            if condition == it.space.false:
+                continue
+            with it.under(condition):
+                pair = _canonical_pair(it, source, target)
+            if pair is not None:
+                add_remap(remaps, Remap(condition, *pair))
 
 
 def _canonical(value: Raw) -> Raw:
@@ -72,5 +69,4 @@ def add_remap(remaps: list[Remap], new: Remap) -> None:
 
 @tag("remap")
 def handle_remap(it: Interpretation, entity: Entity, scope: Scope) -> None:
-    for remap in remap_pairs(it, entity, scope):
-        add_remap(scope.remaps, remap)
+    add_remaps(it, entity, scope, scope.remaps)

@@ -9,7 +9,7 @@ import stat
 import yaml
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, split, tag
+from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
 from rosvar.interpreter.model import ParamDecl, Raw, YamlDecl
 from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.tags.common import bool_value
@@ -56,16 +56,14 @@ def _parsed_yaml(text: str) -> object:
 
 
 @tag("rosparam")
+@processed
 def handle_rosparam(it: Interpretation, entity: Entity, scope: Scope) -> None:
-    with it.under(it.condition_of(entity, scope)) as live:
-        if not live:
-            return
-        it.check_attributes(entity, ATTRIBUTES)
-        values = {a: it.attr(entity, a, scope) for a in ATTRIBUTES}
-        subst = bool_value(it, values["subst_value"], False, "subst_value")
-        for s_condition, substitute in split(it, subst):
-            with it.under(s_condition):
-                _load(it, entity, scope, values, substitute is True)
+    it.check_attributes(entity, ATTRIBUTES)
+    values = {a: it.attr(entity, a, scope) for a in ATTRIBUTES}
+    subst = bool_value(it, values["subst_value"], False, "subst_value")
+    for s_condition, substitute in split(it, subst):
+        with it.under(s_condition):
+            _load(it, entity, scope, values, substitute is True)
 
 
 def _one(it: Interpretation, value: Choice[Raw] | None) -> list[tuple[object, Raw | None]]:
