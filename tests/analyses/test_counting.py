@@ -8,7 +8,7 @@ import random
 import dd.cudd
 import pytest
 
-from rosvar.analyses.counting import Weight, weighted_count
+from rosvar.analyses.counting import CountedDiagram, Weight
 from rosvar.logic.conditions import BDD
 
 
@@ -39,16 +39,47 @@ def random_formula(manager: dd.cudd.BDD, rng: random.Random, names: list[str]) -
 
 
 @pytest.mark.parametrize("seed", range(40))
-def test_weighted_count_equals_enumeration(seed: int) -> None:
+def test_counts_equal_enumeration(seed: int) -> None:
+    """The first count, then counts under other weights (some zero, as choices are), each
+    against listing the assignments."""
     rng = random.Random(seed)
     manager = dd.cudd.BDD()
     names = [f"x{i}" for i in range(7)]
     manager.declare(*names)
     formula = random_formula(manager, rng, names[:5])  # x5, x6: counted, never mentioned
-    weights = {name: (rng.randint(0, 3), rng.randint(0, 4)) for name in names}
-    assert weighted_count(manager, formula, weights) == enumerated(manager, formula, weights)
+    first = {name: (rng.randint(1, 3), rng.randint(1, 4)) for name in names}
+    diagram = CountedDiagram(manager, formula, first)
+    assert diagram.first == enumerated(manager, formula, first)
+    for _ in range(4):
+        weights = dict(first)
+        for name in rng.sample(names, rng.randint(1, 3)):
+            weights[name] = (rng.randint(0, 3), rng.randint(0, 4))
+        assert diagram.count(weights) == enumerated(manager, formula, weights)
     ones = dict.fromkeys(names, (1, 1))
-    assert weighted_count(manager, formula, ones) == int(manager.count(formula, nvars=7))
+    assert diagram.count(ones) == int(manager.count(formula, nvars=7))
+
+
+def test_a_count_recomputes_the_levels_above_the_deepest_change() -> None:
+    """Changing only the top variable's weight leaves the nodes below as they were: their
+    values are reused, rescaled to the new total weight."""
+    manager = dd.cudd.BDD()
+    names = [f"x{i}" for i in range(6)]
+    manager.declare(*names)
+    x0, x2, x3, x5 = (manager.var(name) for name in ("x0", "x2", "x3", "x5"))
+    formula = (x0 | x3) & ((x2 & ~x5) | (~x2 & x5))
+    diagram = CountedDiagram(manager, formula, dict.fromkeys(names, (1, 1)))
+    for top in ((0, 1), (1, 0), (2, 5)):
+        weights = {**dict.fromkeys(names, (1, 1)), "x0": top}
+        assert diagram.count(weights) == enumerated(manager, formula, weights)
+
+
+def test_complemented_edges_flip_the_lowest_bit_of_int() -> None:
+    """``CountedDiagram`` tells a complemented child's node by ``int(u) ^ 1``."""
+    manager = dd.cudd.BDD()
+    manager.declare("a", "b", "c")
+    u = (manager.var("a") & manager.var("b")) | ~manager.var("c")
+    for node in (u, u.low, u.high, manager.true, manager.var("c")):
+        assert int(~node) == int(node) ^ 1
 
 
 def test_counts_beyond_a_double_are_exact() -> None:
@@ -59,14 +90,17 @@ def test_counts_beyond_a_double_are_exact() -> None:
     formula = manager.var("x0") | manager.var("x1")
     exact = 3**40 - 3**38
     assert int(float(exact)) != exact
-    assert weighted_count(manager, formula, dict.fromkeys(names, (1, 2))) == exact
+    assert CountedDiagram(manager, formula, dict.fromkeys(names, (1, 2))).first == exact
 
 
 def test_constants_and_zero_weights() -> None:
     manager = dd.cudd.BDD()
     manager.declare("a", "b")
     weights = {"a": (2, 3), "b": (1, 4)}
-    assert weighted_count(manager, manager.true, weights) == 5 * 5
-    assert weighted_count(manager, manager.false, weights) == 0
-    assert weighted_count(manager, ~manager.var("a"), weights) == 2 * 5
-    assert weighted_count(manager, manager.var("a"), {"a": (0, 0), "b": (1, 1)}) == 0
+    assert CountedDiagram(manager, manager.true, weights).first == 5 * 5
+    assert CountedDiagram(manager, manager.false, weights).first == 0
+    assert CountedDiagram(manager, ~manager.var("a"), weights).first == 2 * 5
+    diagram = CountedDiagram(manager, manager.var("a"), weights)
+    assert diagram.count({"a": (0, 0), "b": (1, 1)}) == 0
+    with pytest.raises(ValueError):
+        CountedDiagram(manager, manager.var("a"), {"a": (0, 0), "b": (1, 1)})

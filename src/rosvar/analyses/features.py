@@ -21,7 +21,7 @@ from functools import cached_property
 import dd.cudd as _cudd
 
 from rosvar.analyses.conflicts import Clash, Occurrence, clashes, index, repeated_inclusions
-from rosvar.analyses.counting import Weight, weighted_count
+from rosvar.analyses.counting import CountedDiagram, Weight
 from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.interpreter.analysis import Analysis, collector_paused
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
@@ -506,7 +506,7 @@ class Component:
         self._workspace_files = workspace_files  # what the memory budget is measured by
         mentioned: set[str] = set()
         for constraint in constraints:
-            mentioned |= manager.support(constraint)
+            mentioned |= walked_support(constraint)
         self.stand_ins: list[tuple[str, list[str]]] = []  # (stand-in, the values it counts for)
         kept: list[tuple[str, list[str]]] = []
         for file, values in args:
@@ -524,6 +524,11 @@ class Component:
         self.counted = conjoin(manager, [*_arg_trees(manager, kept), *constraints])
 
     @cached_property
+    def _counter(self) -> CountedDiagram:
+        """``counted`` under the weights of no choice (the count of every configuration)."""
+        return CountedDiagram(self.manager, self.counted, self._weights({}))
+
+    @cached_property
     def tree(self) -> BDD:
         """The component's part of the feature tree."""
         return conjoin(self.manager, _arg_trees(self.manager, self._args))
@@ -537,15 +542,20 @@ class Component:
 
     def count(self, choices: Mapping[str, bool]) -> int:
         """Valid configurations of the component agreeing with ``choices``: a weighted count
-        of ``counted``. A chosen variable weighs 1 for its value, 0 for the other; a stand-in
-        is true for as many ways as the values it counts for that ``choices`` leave open."""
+        of ``counted``, which after the first recomputes only the levels above the deepest
+        choice."""
+        return self._counter.count(self._weights(choices)) if choices else self._counter.first
+
+    def _weights(self, choices: Mapping[str, bool]) -> dict[str, Weight]:
+        """A chosen variable weighs 1 for its value, 0 for the other; a stand-in is true
+        for as many ways as the values it counts for that ``choices`` leave open."""
         weights = {name: _weight(choices.get(name)) for name in self.counted_variables}
         for stand_in, values in self.stand_ins:
             off, on = (1, 1) if stand_in in values else weights[stand_in]
             chosen = [choices[v] for v in values if v in choices]
             ways = int(chosen.count(True) == 1) if True in chosen else len(values) - len(chosen)
             weights[stand_in] = (0 if True in chosen else off, on * ways)
-        return weighted_count(self.manager, self.counted, weights)
+        return weights
 
 
 def _weight(choice: bool | None) -> Weight:

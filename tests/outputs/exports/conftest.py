@@ -18,7 +18,7 @@ from typing import Any
 import dd.cudd as cudd
 import pytest
 
-from rosvar.analyses.counting import weighted_count
+from rosvar.analyses.counting import CountedDiagram
 from rosvar.analyses.features import FeatureModel, extract
 from rosvar.interpreter.analysis import Analysis
 from rosvar.workspace import discover
@@ -180,7 +180,7 @@ def count(fm: Any) -> int:
             formula &= ~parent | group
     for constraint in fm.get_constraints():
         formula &= _ast(manager, constraint.ast.root)
-    return weighted_count(manager, formula, {f.name: (1, 1) for f in features})
+    return CountedDiagram(manager, formula, {f.name: (1, 1) for f in features}).first
 
 
 def _depth_first(feature: Any) -> Iterator[Any]:
