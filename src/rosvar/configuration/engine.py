@@ -23,7 +23,7 @@ from rosvar.configuration.graph import VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.view import Graph, Views
-from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.analysis import Analysis, collector_paused
 from rosvar.interpreter.model import LaunchModel
 from rosvar.logic.inputs import OTHER, UNSET
 
@@ -126,6 +126,7 @@ class _Replay:
 class Configurator:
     """Built once per workspace; answers any list of user choices (stateless)."""
 
+    @collector_paused()  # a long-lived heap: left young, the collector rescanned it each step
     def __init__(
         self,
         analysis: Analysis,

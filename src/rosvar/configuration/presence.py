@@ -49,6 +49,43 @@ class Judged:
         return self.verdict.presence, self.description
 
 
+SEVERAL = -1
+"""The key of ``Judgement.open`` for verdicts the solver judged in several components."""
+
+
+@dataclass(frozen=True)
+class Judgement:
+    """Every condition's verdict at one step, with the undetermined ones the solver judged
+    by component (``SEVERAL``: in more than one): those a step in it may overturn. A step
+    visits its component's, not all conditions."""
+
+    verdicts: list[Judged]  # per condition of ``Presences``
+    open: Mapping[int, frozenset[int]]
+
+    def moved(self, verdicts: list[Judged], changed: Iterable[int]) -> Judgement:
+        """``verdicts``, which differ from these at ``changed`` only."""
+        open_ = dict(self.open)
+        for index in changed:
+            before, after = _open_key(self.verdicts[index]), _open_key(verdicts[index])
+            if before != after:
+                if before is not None:
+                    open_[before] = open_[before] - {index}
+                if after is not None:
+                    open_[after] = open_.get(after, frozenset()) | {index}
+        return Judgement(verdicts, open_)
+
+
+def _open_key(judged: Judged) -> int | None:
+    """The component whose steps may overturn ``judged``, if the solver judged it."""
+    verdict = judged.verdict
+    if verdict.presence != UNDETERMINED or not verdict.components:
+        return None
+    if verdict.witnesses is None:
+        return SEVERAL
+    (component,) = verdict.components
+    return component
+
+
 class Presences:
     """The distinct conditions of the graph's elements, judged step after step."""
 
@@ -71,11 +108,14 @@ class Presences:
             self.of_element.append(number[key])
         self._reading: dict[str, list[int]] = {}  # variable → conditions over it
         self._typed_in: dict[str, list[int]] = {}  # entry → conditions texts can decide
+        self._masks: list[int] = []  # per condition: the positions of ``_reading``'s variables
         variables = set(derivation.variables)
         for index, condition in enumerate(self.conditions):
             # the condition's support, not its bounds': typed texts may bring variables back
-            for variable in lowering.space.support(condition.condition) & variables:
+            reading = lowering.space.support(condition.condition) & variables
+            for variable in reading:
                 self._reading.setdefault(variable, []).append(index)
+            self._masks.append(sum(1 << derivation.position[v] for v in reading))
             if not condition.bounds.exact:
                 self._typed_in.setdefault(condition.entry, []).append(index)
 
@@ -84,33 +124,39 @@ class Presences:
         decisions: Decisions,
         typed: Typed,
         describe: Describe,
-        before: tuple[Decisions, Typed, Sequence[Judged]] | None = None,
-    ) -> list[Judged]:
+        before: tuple[Decisions, Typed, Judgement] | None = None,
+    ) -> Judgement:
         """Every condition's verdict; ``before`` is an earlier step of the same list of
         literals (a prefix) with its typed texts and answer, of which most is kept."""
         if before is None:
-            return self._judge(range(len(self.conditions)), decisions, typed, describe, None)
+            verdicts = self._judge(range(len(self.conditions)), decisions, typed, describe, None)
+            open_: dict[int, set[int]] = {}
+            for index, judged in enumerate(verdicts):
+                key = _open_key(judged)
+                if key is not None:
+                    open_.setdefault(key, set()).add(index)
+            return Judgement(verdicts, {k: frozenset(v) for k, v in open_.items()})
         earlier, earlier_typed, answer = before
         # present or absent in every valid configuration stays so under more literals
         again = {
             index
             for index in self._touched(decisions, typed, earlier, earlier_typed)
-            if answer[index].verdict.presence == UNDETERMINED
+            if answer.verdicts[index].verdict.presence == UNDETERMINED
         }
         components = {c for c, cube in decisions.cubes.items() if cube != earlier.cubes[c]}
-        found = list(answer)
+        found = list(answer.verdicts)
         if components:
             self._carry(answer, found, again, components, decisions, typed)
         ordered = sorted(again)
         for index, judged in zip(
-            ordered, self._judge(ordered, decisions, typed, describe, answer), strict=True
+            ordered, self._judge(ordered, decisions, typed, describe, answer.verdicts), strict=True
         ):
             found[index] = judged
-        return found
+        return answer.moved(found, ordered)
 
     def _carry(
         self,
-        answer: Sequence[Judged],
+        answer: Judgement,
         found: list[Judged],
         again: set[int],
         components: set[int],
@@ -121,25 +167,16 @@ class Presences:
         whose decided variables did not change, kept in ``found`` where their witnesses
         still agree with the literals or repaired ones still show them undetermined, else
         added to ``again``. The verdicts share witnesses: each is repaired once."""
-        carried: dict[int, list[int]] = {}  # component → its verdicts to carry
-        for index, judged in enumerate(answer):
-            verdict = judged.verdict
-            if (
-                verdict.presence != UNDETERMINED
-                or verdict.components.isdisjoint(components)
-                or index in again
-            ):
-                continue
-            if verdict.witnesses is None:  # judged in several components: no witnesses
+        verdicts = answer.verdicts
+        for index in answer.open.get(SEVERAL, ()):  # judged without witnesses
+            if not verdicts[index].verdict.components.isdisjoint(components):
                 again.add(index)
-            else:
-                (component,) = verdict.components
-                carried.setdefault(component, []).append(index)
-        for component, indices in carried.items():
-            witnesses = {w for index in indices for w in answer[index].verdict.witnesses or ()}
+        for component in components:
+            indices = answer.open.get(component, frozenset()) - again
+            witnesses = {w for index in indices for w in verdicts[index].verdict.witnesses or ()}
             repaired = self.derivation.repaired(component, witnesses, decisions)
             for index in indices:
-                verdict = answer[index].verdict
+                verdict = verdicts[index].verdict
                 assert verdict.witnesses is not None
                 without, within = (repaired[w] for w in verdict.witnesses)
                 if (without, within) == verdict.witnesses:
@@ -147,11 +184,15 @@ class Presences:
                 kept = None
                 if without is not None and within is not None:
                     pair = (without, within)
-                    kept = self.derivation.carried(self._bounds(index, typed), verdict, pair)
+                    before_without, before_within = verdict.witnesses
+                    if (without ^ before_without | within ^ before_within) & self._masks[index]:
+                        kept = self.derivation.carried(self._bounds(index, typed), verdict, pair)
+                    else:  # the repairs left its support alone, so its truth in them
+                        kept = Verdict(verdict.presence, verdict.values, verdict.components, pair)
                 if kept is None:
                     again.add(index)
                 else:
-                    found[index] = Judged(kept, answer[index].description)
+                    found[index] = Judged(kept, verdicts[index].description)
 
     def _touched(
         self, decisions: Decisions, typed: Typed, earlier: Decisions, earlier_typed: Typed

@@ -9,7 +9,7 @@ stays the same object, so a client can tell what changed by identity.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from itertools import chain
 
@@ -19,7 +19,7 @@ from rosvar.configuration.derivation import ABSENT, Decisions, Derivation
 from rosvar.configuration.graph import Element, Fields, Values, VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
-from rosvar.configuration.presence import Judged, Presences, Typed
+from rosvar.configuration.presence import Judged, Judgement, Presences, Typed
 from rosvar.interpreter.analysis import Analysis
 from rosvar.logic.conditions import BDD
 from rosvar.logic.inputs import OTHER, UNSET, Input
@@ -58,7 +58,7 @@ class View:
     decisions: Decisions
     texts: Mapping[str, str]  # arg id → its <other> text
     typed: Typed
-    presences: list[Judged]  # per condition of ``Presences``
+    presences: Judgement
     entries: list[list[Fields]]  # per element of the graph
     conflicts: list[ConflictState | None]  # per pair of ``Conflicts``; None: gone
     graph: Graph
@@ -168,7 +168,7 @@ class Views:
         changed: set[str] = set()  # kinds with an entry rendered anew
         for index in again:
             element = self.graph.elements[index]
-            judged = presences[self.presences.of_element[index]]
+            judged = presences.verdicts[self.presences.of_element[index]]
             if element.entry not in values and element.inputs:
                 values[element.entry] = self._values(element.entry, decisions, texts)
             found = self._element_entries(element, judged, values)
@@ -190,12 +190,12 @@ class Views:
         decisions: Decisions,
         texts: Mapping[str, str],
         before: View,
-        presences: Sequence[Judged],
+        presences: Judgement,
     ) -> set[int]:
         """Elements whose verdict or read strings differ from ``before``."""
         again: set[int] = set()
-        for condition, judged in enumerate(presences):
-            earlier = before.presences[condition]
+        for condition, judged in enumerate(presences.verdicts):
+            earlier = before.presences.verdicts[condition]
             if judged is not earlier and judged.shown != earlier.shown:
                 again.update(self._elements_of[condition])
         changed = decisions.decided.items() ^ before.decisions.decided.items()
