@@ -8,7 +8,8 @@ import random
 import dd.cudd
 import pytest
 
-from rosvar.analyses.counting import CountedDiagram, Weight
+from rosvar.analyses import counting
+from rosvar.analyses.counting import PRIMES, CountedDiagram, Weight
 from rosvar.logic.conditions import BDD
 
 
@@ -38,8 +39,15 @@ def random_formula(manager: dd.cudd.BDD, rng: random.Random, names: list[str]) -
     return formula
 
 
+@pytest.fixture(params=["one by one", "vectorised"])
+def recount(request: pytest.FixtureRequest, monkeypatch: pytest.MonkeyPatch) -> str:
+    """Recounts either way: node by node in Python, or by level in numpy modulo primes."""
+    monkeypatch.setattr(counting, "VECTOR_FROM", 0 if request.param == "vectorised" else 10**9)
+    return str(request.param)
+
+
 @pytest.mark.parametrize("seed", range(40))
-def test_counts_equal_enumeration(seed: int) -> None:
+def test_counts_equal_enumeration(seed: int, recount: str) -> None:
     """The first count, then counts under other weights (some zero, as choices are), each
     against listing the assignments."""
     rng = random.Random(seed)
@@ -59,7 +67,7 @@ def test_counts_equal_enumeration(seed: int) -> None:
     assert diagram.count(ones) == int(manager.count(formula, nvars=7))
 
 
-def test_a_count_recomputes_the_levels_above_the_deepest_change() -> None:
+def test_a_count_recomputes_the_levels_above_the_deepest_change(recount: str) -> None:
     """Changing only the top variable's weight leaves the nodes below as they were: their
     values are reused, rescaled to the new total weight."""
     manager = dd.cudd.BDD()
@@ -104,3 +112,48 @@ def test_constants_and_zero_weights() -> None:
     assert diagram.count({"a": (0, 0), "b": (1, 1)}) == 0
     with pytest.raises(ValueError):
         CountedDiagram(manager, manager.var("a"), {"a": (0, 0), "b": (1, 1)})
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_vectorised_recounts_of_large_counts_equal_the_exact_ones(
+    seed: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Counts of hundreds of bits, under choices (bounded by the first count) and under
+    larger weights (bounded by the total): both ways of recounting agree."""
+    rng = random.Random(seed)
+    manager = dd.cudd.BDD()
+    names = [f"x{i}" for i in range(160)]
+    manager.declare(*names)
+    formula = manager.true
+    for _ in range(60):
+        a, b, c = rng.sample(names, 3)
+        formula &= (
+            manager.var(a) | ~manager.var(b) | (manager.var(c) if seed % 2 else manager.false)
+        )
+    first = {name: (rng.randint(1, 5), rng.randint(1, 5)) for name in names}
+    diagram = CountedDiagram(manager, formula, first)
+    assert diagram.first.bit_length() > 100
+    for changed in (
+        first,
+        {**first, names[-1]: (0, 1), names[3]: (1, 0)},
+        {**first, names[-2]: (7, 9)},
+    ):
+        monkeypatch.setattr(counting, "VECTOR_FROM", 10**9)
+        exact = diagram.count(changed)
+        monkeypatch.setattr(counting, "VECTOR_FROM", 0)
+        assert diagram.count(changed) == exact
+
+
+def test_a_level_weight_no_modulus_can_divide_is_counted_one_by_one(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A level whose total weight is a multiple of a modulus has no inverse modulo it: the
+    recount falls back to Python integers and stays exact."""
+    monkeypatch.setattr(counting, "VECTOR_FROM", 0)
+    manager = dd.cudd.BDD()
+    names = ["a", "b", "c"]
+    manager.declare(*names)
+    formula = (manager.var("a") & ~manager.var("b")) | manager.var("c")
+    diagram = CountedDiagram(manager, formula, dict.fromkeys(names, (1, 1)))
+    weights = {**dict.fromkeys(names, (1, 1)), "b": (1, PRIMES[0] - 1)}
+    assert diagram.count(weights) == enumerated(manager, formula, weights)

@@ -10,19 +10,32 @@ weighs ``(w_false, w_true)``, and an assignment weighs the product of its
 variables' weights. The feature model counts its constrained variables this way
 and folds each file's unconstrained args into the weight of the file's variable
 (``features.Component``); a choice is a weight of ``(1, 0)`` or ``(0, 1)``.
+
+A recount that touches many nodes runs level by level in numpy, modulo a few primes
+below 2^31 (products stay within ``int64``), and the exact integer is put back
+together by the Chinese remainder theorem: enough primes are taken for their product
+to exceed a bound of the count, so the residues determine it.
 """
 
 from __future__ import annotations
 
 import sys
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from functools import cached_property
 
 import dd.cudd as _cudd
+import numpy as np
+import numpy.typing as npt
 
 from rosvar.interpreter.analysis import collector_paused
 from rosvar.logic.conditions import BDD
 
 Weight = tuple[int, int]  # (weight of false, weight of true)
+Array = npt.NDArray[np.int64]
+
+VECTOR_FROM = 2_000
+"""A recount over at least this many nodes runs in numpy; fewer are cheaper one by one."""
 
 
 class CountedDiagram:
@@ -78,6 +91,14 @@ class CountedDiagram:
             times *= sum(weight_at[level])
             over *= sum(self._weights[level])
         deepest = max(changed)
+        if self._above[deepest] >= VECTOR_FROM:
+            dominated = all(
+                off <= self._weights[level][0] and on <= self._weights[level][1]
+                for level, (off, on) in weight_at.items()
+            )  # then every assignment weighs at most as before: the first count bounds it
+            found = self._residues.count(weight_at, total, self.first if dominated else total)
+            if found is not None:
+                return found
         old = self._values
         values = list(old)
         levels, lows, highs = self._levels, self._lows, self._highs
@@ -98,6 +119,22 @@ class CountedDiagram:
         if levels[root] > deepest:
             return self._value(old, total, times, over)
         return self._value(values, total)
+
+    @cached_property
+    def _above(self) -> dict[int, int]:
+        """Per weighted level, the nodes at it or above: what a recount down to it visits."""
+        at: dict[int, int] = dict.fromkeys(self._weights, 0)
+        for level in self._levels[1:]:
+            at[level] += 1
+        above, running = {}, 0
+        for level in sorted(at):
+            running += at[level]
+            above[level] = running
+        return above
+
+    @cached_property
+    def _residues(self) -> _Residues:
+        return _Residues.of(self._levels, self._lows, self._highs, self._root)
 
     def _value(self, values: list[int], total: int, times: int = 1, over: int = 1) -> int:
         root = self._root
@@ -188,3 +225,138 @@ def _read(
         finally:
             sys.setrecursionlimit(limit)
     return levels, lows, highs, values, ~root if negated else root
+
+
+def _primes(count: int) -> list[int]:
+    """The ``count`` largest primes below 2^31 (Miller–Rabin with the bases 2, 7 and 61
+    decides every number below 2^32)."""
+    found: list[int] = []
+    candidate = 2**31 - 1
+    while len(found) < count:
+        if _is_prime(candidate):
+            found.append(candidate)
+        candidate -= 2
+    return found
+
+
+def _is_prime(n: int) -> bool:
+    odd, twos = n - 1, 0
+    while not odd & 1:
+        odd, twos = odd >> 1, twos + 1
+    for base in (2, 7, 61):
+        x = pow(base, odd, n)
+        if x in (1, n - 1):
+            continue
+        for _ in range(twos - 1):
+            x = x * x % n
+            if x == n - 1:
+                break
+        else:
+            return False
+    return True
+
+
+PRIMES = _primes(64)
+"""Moduli of the vectorised recount: 64 of them bound counts up to about 2^1980."""
+
+
+@dataclass(frozen=True)
+class _Level:
+    """The nodes of one level: their places, and their children's (``negated``: the low
+    edge is complemented)."""
+
+    level: int
+    places: Array
+    lows: Array
+    highs: Array
+    negated: npt.NDArray[np.bool_] | None  # None: no low edge of the level is complemented
+
+
+@dataclass(frozen=True)
+class _Residues:
+    """``CountedDiagram``'s nodes by level, deepest first, for counting modulo primes."""
+
+    size: int
+    levels: Sequence[_Level]
+    root: int
+
+    @classmethod
+    def of(cls, levels: list[int], lows: list[int], highs: list[int], root: int) -> _Residues:
+        level_of = np.asarray(levels, dtype=np.int64)
+        low = np.asarray(lows, dtype=np.int64)
+        negated = low < 0
+        low = np.where(negated, ~low, low)
+        high = np.asarray(highs, dtype=np.int64)
+        order = np.argsort(-level_of[1:], kind="stable") + 1  # children before parents
+        groups = np.split(order, np.flatnonzero(np.diff(level_of[order])) + 1)
+        return cls(
+            len(levels),
+            [
+                _Level(
+                    int(level_of[places[0]]),
+                    places,
+                    low[places],
+                    high[places],
+                    negated[places] if negated[places].any() else None,
+                )
+                for places in groups
+                if len(places)
+            ],
+            root,
+        )
+
+    def count(self, weight_at: Mapping[int, Weight], total: int, bound: int) -> int | None:
+        """The count under ``weight_at`` (``total``: their total weight), known to be at
+        most ``bound``; None when a level's total weight is a multiple of a modulus (its
+        division has no inverse there) or the bound needs more moduli than there are."""
+        moduli, product = [], 1
+        for prime in PRIMES:
+            if product > bound:
+                break
+            moduli.append(prime)
+            product *= prime
+        if product <= bound:
+            return None
+        inverse: dict[int, list[int]] = {}  # total weight of a level → its inverses
+        for off, on in set(weight_at.values()):
+            if off and on and off != on:
+                if any((off + on) % m == 0 for m in moduli):
+                    return None
+                inverse[off + on] = [pow(off + on, -1, m) for m in moduli]
+        p = np.asarray(moduli, dtype=np.int64)
+        everything = np.asarray([total % m for m in moduli], dtype=np.int64)
+        values = np.empty((self.size, len(moduli)), dtype=np.int64)
+        values[0] = everything
+        for level in self.levels:
+            off, on = weight_at[level.level]
+            d_low = values[level.lows]
+            if level.negated is not None:
+                flipped = everything - d_low
+                d_low = np.where(level.negated[:, None], flipped + (flipped < 0) * p, d_low)
+            d_high = values[level.highs]
+            if off == on:  # (d_low + d_high) / 2 modulo odd primes: add p to make it even
+                both = d_low + d_high
+                both = (both + (both & 1) * p) >> 1
+                values[level.places] = both - (both >= p) * p
+            elif not off:
+                values[level.places] = d_high
+            elif not on:
+                values[level.places] = d_low
+            else:
+                weights = np.asarray([[off % m, on % m] for m in moduli], dtype=np.int64)
+                mixed = (weights[:, 0] * d_low % p + weights[:, 1] * d_high % p) % p
+                values[level.places] = mixed * np.asarray(inverse[off + on], dtype=np.int64) % p
+        root = self.root
+        residues = values[~root if root < 0 else root]
+        if root < 0:
+            residues = (everything - residues) % p
+        return _restored(residues.tolist(), moduli, product)
+
+
+def _restored(residues: list[int], moduli: list[int], product: int) -> int:
+    """The number below ``product`` with these residues (Chinese remainder theorem)."""
+    found = 0
+    for residue, modulus in zip(residues, moduli, strict=True):
+        rest = product // modulus
+        found += residue * rest * pow(rest, -1, modulus)
+    return found % product
