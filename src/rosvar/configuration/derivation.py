@@ -295,25 +295,20 @@ class Derivation:
         # conditions over several components are rare (no constraint links their files)
         return None, must, may, frozenset(self.component_of[v] for v in open_)
 
-    def carried(
-        self, bounds: Bounds, earlier: Verdict, repaired: tuple[int, int]
-    ) -> Verdict | None:
-        """``earlier``, the verdict of the same ``bounds`` under fewer literals that
-        decided no more of their support, still holding with its witnesses ``repaired``
-        (``repairs``); None: judge again.
+    def carries(self, bounds: Bounds, before: tuple[int, int], after: tuple[int, int]) -> bool:
+        """The witnesses ``before`` of an undetermined verdict of ``bounds`` (one without
+        ``must``, one with ``may``), repaired into ``after``, still show it undetermined.
 
         A repair that left the support of a bound alone left its truth as it was."""
-        assert earlier.witnesses is not None
-        (without, within), (before_without, before_within) = repaired, earlier.witnesses
+        (without, within), (before_without, before_within) = after, before
         if (without ^ before_without) & self._mask(bounds.must) and self._holds(
             bounds.must, without
         ):
-            return None
-        if (within ^ before_within) & self._mask(bounds.may) and not self._holds(
-            bounds.may, within
-        ):
-            return None
-        return Verdict(earlier.presence, earlier.values, earlier.components, repaired)
+            return False
+        return not (
+            (within ^ before_within) & self._mask(bounds.may)
+            and not self._holds(bounds.may, within)
+        )
 
     def _carried(
         self, must: BDD, may: BDD, earlier: Verdict, decisions: Decisions

@@ -52,27 +52,35 @@ class Judged:
 SEVERAL = -1
 """The key of ``Judgement.open`` for verdicts the solver judged in several components."""
 
+Held = Mapping[int, int]
+"""A witness kept in verdicts → the valid configuration it stands for at a step."""
+
 
 @dataclass(frozen=True)
 class Judgement:
     """Every condition's verdict at one step, with the undetermined ones the solver judged
-    by component (``SEVERAL``: in more than one): those a step in it may overturn. A step
-    visits its component's, not all conditions."""
+    by component (``SEVERAL``: in more than one): those a step in it may overturn, so a
+    step visits its component's, not all conditions.
+
+    An undetermined verdict keeps the witnesses it was judged with; ``held`` maps each of
+    them, per component, to what it is repaired to at this step. A step repairs each
+    witness once, and visits only the verdicts whose support a repair changed: the others
+    stay the same objects, shown by the same witnesses.
+    """
 
     verdicts: list[Judged]  # per condition of ``Presences``
     open: Mapping[int, frozenset[int]]
+    held: Mapping[int, Held]
 
-    def moved(self, verdicts: list[Judged], changed: Iterable[int]) -> Judgement:
-        """``verdicts``, which differ from these at ``changed`` only."""
-        open_ = dict(self.open)
-        for index in changed:
-            before, after = _open_key(self.verdicts[index]), _open_key(verdicts[index])
-            if before != after:
-                if before is not None:
-                    open_[before] = open_[before] - {index}
-                if after is not None:
-                    open_[after] = open_.get(after, frozenset()) | {index}
-        return Judgement(verdicts, open_)
+    def witnesses(self, index: int) -> tuple[int, int] | None:
+        """The configurations that show verdict ``index`` undetermined at this step."""
+        verdict = self.verdicts[index].verdict
+        if verdict.witnesses is None:
+            return None
+        (component,) = verdict.components
+        held = self.held[component]
+        without, within = verdict.witnesses
+        return held[without], held[within]
 
 
 def _open_key(judged: Judged) -> int | None:
@@ -129,13 +137,9 @@ class Presences:
         """Every condition's verdict; ``before`` is an earlier step of the same list of
         literals (a prefix) with its typed texts and answer, of which most is kept."""
         if before is None:
-            verdicts = self._judge(range(len(self.conditions)), decisions, typed, describe, None)
-            open_: dict[int, set[int]] = {}
-            for index, judged in enumerate(verdicts):
-                key = _open_key(judged)
-                if key is not None:
-                    open_.setdefault(key, set()).add(index)
-            return Judgement(verdicts, {k: frozenset(v) for k, v in open_.items()})
+            indices = range(len(self.conditions))
+            verdicts = self._judge(indices, decisions, typed, describe, [None] * len(indices))
+            return _judgement(verdicts, indices, {}, {})
         earlier, earlier_typed, answer = before
         # present or absent in every valid configuration stays so under more literals
         again = {
@@ -144,55 +148,65 @@ class Presences:
             if answer.verdicts[index].verdict.presence == UNDETERMINED
         }
         components = {c for c, cube in decisions.cubes.items() if cube != earlier.cubes[c]}
-        found = list(answer.verdicts)
-        if components:
-            self._carry(answer, found, again, components, decisions, typed)
+        held = dict(answer.held)
+        for index in answer.open.get(SEVERAL, ()):  # judged without witnesses
+            if not answer.verdicts[index].verdict.components.isdisjoint(components):
+                again.add(index)
+        for component in components & held.keys():
+            held[component] = self._carry(answer, component, again, decisions, typed)
         ordered = sorted(again)
+        hints = [_hint(answer, index) for index in ordered]
+        found = list(answer.verdicts)
         for index, judged in zip(
-            ordered, self._judge(ordered, decisions, typed, describe, answer.verdicts), strict=True
+            ordered, self._judge(ordered, decisions, typed, describe, hints), strict=True
         ):
             found[index] = judged
-        return answer.moved(found, ordered)
+        return _judgement(found, ordered, answer.open, held, answer.verdicts)
 
     def _carry(
         self,
         answer: Judgement,
-        found: list[Judged],
+        component: int,
         again: set[int],
-        components: set[int],
         decisions: Decisions,
         typed: Typed,
-    ) -> None:
-        """Undetermined verdicts of ``answer`` in ``components`` (whose literals changed)
-        whose decided variables did not change, kept in ``found`` where their witnesses
-        still agree with the literals or repaired ones still show them undetermined, else
-        added to ``again``. The verdicts share witnesses: each is repaired once."""
-        verdicts = answer.verdicts
-        for index in answer.open.get(SEVERAL, ()):  # judged without witnesses
-            if not verdicts[index].verdict.components.isdisjoint(components):
+    ) -> dict[int, int]:
+        """The witnesses ``answer`` holds in ``component`` (whose literals changed)
+        repaired; the undetermined verdicts they no longer show so (their support changed
+        in a repair, or one failed) are added to ``again``."""
+        before = answer.held[component]
+        repaired = self.derivation.repaired(component, set(before.values()), decisions)
+        held: dict[int, int] = {}
+        failed: set[int] = set()
+        changed = 0  # the positions some repair changed
+        for kept, value in before.items():
+            found = repaired[value]
+            if found is None:
+                failed.add(kept)
+            else:
+                held[kept] = found
+                changed |= found ^ value
+        if not changed and not failed:
+            return held
+        masks = self._masks
+        for index in answer.open.get(component, frozenset()) - again:
+            verdict = answer.verdicts[index].verdict
+            assert verdict.witnesses is not None
+            without, within = verdict.witnesses
+            if (
+                without in failed
+                or within in failed
+                or (
+                    masks[index] & changed
+                    and not self.derivation.carries(
+                        self._bounds(index, typed),
+                        (before[without], before[within]),
+                        (held[without], held[within]),
+                    )
+                )
+            ):
                 again.add(index)
-        for component in components:
-            indices = answer.open.get(component, frozenset()) - again
-            witnesses = {w for index in indices for w in verdicts[index].verdict.witnesses or ()}
-            repaired = self.derivation.repaired(component, witnesses, decisions)
-            for index in indices:
-                verdict = verdicts[index].verdict
-                assert verdict.witnesses is not None
-                without, within = (repaired[w] for w in verdict.witnesses)
-                if (without, within) == verdict.witnesses:
-                    continue  # they agree with the literals: it stays undetermined
-                kept = None
-                if without is not None and within is not None:
-                    pair = (without, within)
-                    before_without, before_within = verdict.witnesses
-                    if (without ^ before_without | within ^ before_within) & self._masks[index]:
-                        kept = self.derivation.carried(self._bounds(index, typed), verdict, pair)
-                    else:  # the repairs left its support alone, so its truth in them
-                        kept = Verdict(verdict.presence, verdict.values, verdict.components, pair)
-                if kept is None:
-                    again.add(index)
-                else:
-                    found[index] = Judged(kept, verdicts[index].description)
+        return held
 
     def _touched(
         self, decisions: Decisions, typed: Typed, earlier: Decisions, earlier_typed: Typed
@@ -218,14 +232,13 @@ class Presences:
         decisions: Decisions,
         typed: Typed,
         describe: Describe,
-        answer: Sequence[Judged] | None,
+        hints: Sequence[Verdict | None],
     ) -> list[Judged]:
         """The conditions of ``indices``, judged in one pass (the solver's example for one
-        may show the next undetermined), with their verdicts in ``answer`` (an earlier
-        step) as hints."""
+        may show the next undetermined), with their verdicts at an earlier step (if any) as
+        ``hints``."""
         bounds = [
-            (self._bounds(index, typed), None if answer is None else answer[index].verdict)
-            for index in indices
+            (self._bounds(index, typed), hint) for index, hint in zip(indices, hints, strict=True)
         ]
         judged = []
         for index, verdict in zip(
@@ -236,3 +249,40 @@ class Presences:
                 description = describe(self.conditions[index].condition, verdict.values)
             judged.append(Judged(verdict, description))
         return judged
+
+
+def _hint(answer: Judgement, index: int) -> Verdict:
+    """Verdict ``index`` of ``answer``, with the witnesses that show it at that step."""
+    verdict = answer.verdicts[index].verdict
+    witnesses = answer.witnesses(index)
+    if witnesses is None or witnesses == verdict.witnesses:
+        return verdict
+    return Verdict(verdict.presence, verdict.values, verdict.components, witnesses)
+
+
+def _judgement(
+    verdicts: list[Judged],
+    changed: Iterable[int],
+    open_: Mapping[int, frozenset[int]],
+    held: dict[int, Held],
+    before: Sequence[Judged] | None = None,
+) -> Judgement:
+    """``verdicts``, which differ from ``before`` (with ``open_`` and ``held``) at
+    ``changed`` only; their new witnesses stand for themselves."""
+    moved = {k: set(v) for k, v in open_.items()}
+    grown: dict[int, dict[int, int]] = {}
+    for index in changed:
+        old = None if before is None else _open_key(before[index])
+        new = _open_key(verdicts[index])
+        if old != new:
+            if old is not None:
+                moved[old].discard(index)
+            if new is not None:
+                moved.setdefault(new, set()).add(index)
+        witnesses = verdicts[index].verdict.witnesses
+        if new is not None and new != SEVERAL and witnesses is not None:
+            mine = grown.get(new)
+            if mine is None:
+                mine = grown[new] = dict(held.get(new, {}))
+            mine.update((w, w) for w in witnesses)
+    return Judgement(verdicts, {k: frozenset(v) for k, v in moved.items()}, {**held, **grown})
