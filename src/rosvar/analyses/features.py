@@ -33,6 +33,7 @@ from rosvar.logic.conditions import (
     PredicateAtom,
     SlotAtom,
     exactly_one,
+    memory_estimate,
     walked_support,
 )
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
@@ -656,6 +657,15 @@ class Solver:
         return total
 
 
+SOLVER_CACHE = 1 << 20
+"""Most entries of CUDD's computed table in the solver's manager (``dd`` lets it grow without
+bound). Components are built one after another and share no variable, so the table only
+helps within one component's conjunction; grown with the whole workspace it only cost
+page faults and cache misses: 16 M entries (512 MB) for 10,000 generated files, whose
+conjunctions took 15 s instead of 6 s with 1 M entries (the same hit rate, 17 %). Husky's
+table never outgrows its first 256 k entries."""
+
+
 def _formula(
     space: ConditionSpace,
     features: Sequence[FileFeature],
@@ -671,8 +681,8 @@ def _formula(
     """
     keep = _order(space, features, constraints)
     kept = set(keep)
-    manager = _cudd.BDD()
-    manager.configure(reordering=False)
+    manager = _cudd.BDD(memory_estimate(len(features)))  # dd's default touches 8 MB at once
+    manager.configure(reordering=False, max_cache_hard=SOLVER_CACHE)
     manager.declare(*keep)  # a fresh manager in the chosen order (reordering in place is slow)
 
     def translate(formula: BDD) -> BDD:
