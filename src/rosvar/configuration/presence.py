@@ -148,7 +148,7 @@ class Presences:
             if answer.verdicts[index].verdict.presence == UNDETERMINED
         }
         components = {c for c, cube in decisions.cubes.items() if cube != earlier.cubes[c]}
-        held = dict(answer.held)
+        held = {**answer.held}
         for index in answer.open.get(SEVERAL, ()):  # judged without witnesses
             if not answer.verdicts[index].verdict.components.isdisjoint(components):
                 again.add(index)
@@ -170,7 +170,7 @@ class Presences:
         again: set[int],
         decisions: Decisions,
         typed: Typed,
-    ) -> dict[int, int]:
+    ) -> Held:
         """The witnesses ``answer`` holds in ``component`` (whose literals changed)
         repaired; the undetermined verdicts they no longer show so (their support changed
         in a repair, or one failed) are added to ``again``."""
@@ -187,7 +187,7 @@ class Presences:
                 held[kept] = found
                 changed |= found ^ value
         if not changed and not failed:
-            return held
+            return before  # every witness agrees with the literals
         masks = self._masks
         for index in answer.open.get(component, frozenset()) - again:
             verdict = answer.verdicts[index].verdict
@@ -264,25 +264,36 @@ def _judgement(
     verdicts: list[Judged],
     changed: Iterable[int],
     open_: Mapping[int, frozenset[int]],
-    held: dict[int, Held],
+    held: Mapping[int, Held],
     before: Sequence[Judged] | None = None,
 ) -> Judgement:
     """``verdicts``, which differ from ``before`` (with ``open_`` and ``held``) at
-    ``changed`` only; their new witnesses stand for themselves."""
-    moved = {k: set(v) for k, v in open_.items()}
+    ``changed`` only; their new witnesses stand for themselves. Only what changed is
+    copied; a component's witnesses no verdict keeps any more are dropped once they
+    outnumber the others."""
+    moved: dict[int, set[int]] = {}
     grown: dict[int, dict[int, int]] = {}
     for index in changed:
         old = None if before is None else _open_key(before[index])
         new = _open_key(verdicts[index])
-        if old != new:
-            if old is not None:
-                moved[old].discard(index)
-            if new is not None:
-                moved.setdefault(new, set()).add(index)
-        witnesses = verdicts[index].verdict.witnesses
-        if new is not None and new != SEVERAL and witnesses is not None:
-            mine = grown.get(new)
-            if mine is None:
-                mine = grown[new] = dict(held.get(new, {}))
-            mine.update((w, w) for w in witnesses)
-    return Judgement(verdicts, {k: frozenset(v) for k, v in moved.items()}, {**held, **grown})
+        for key in (old, new):
+            if key is not None and key not in moved:
+                moved[key] = set(open_.get(key, ()))
+        if old is not None:
+            moved[old].discard(index)
+        if new is None:
+            continue
+        moved[new].add(index)
+        if new == SEVERAL:
+            continue
+        mine = grown.get(new)
+        if mine is None:
+            mine = grown[new] = dict(held.get(new, {}))
+        mine.update((w, w) for w in verdicts[index].verdict.witnesses or ())
+    for component, mine in grown.items():
+        kept = moved[component]
+        if len(mine) > 4 * len(kept) + 64:
+            used = {w for index in kept for w in verdicts[index].verdict.witnesses or ()}
+            grown[component] = {w: mine[w] for w in used}
+    opened = {**open_, **{key: frozenset(indices) for key, indices in moved.items()}}
+    return Judgement(verdicts, opened, {**held, **grown})
