@@ -78,7 +78,8 @@ class Verdict:
     ``values`` are the decided variables of its support. When restriction by them was not
     enough, ``components`` are those whose literals the judgement read; an undetermined
     one keeps ``witnesses`` (a valid configuration without it, one that may have it):
-    it stays undetermined while both agree with the user literals.
+    it stays undetermined while both agree with the user literals, or their repairs
+    (``repaired``) still show it so.
     """
 
     presence: str

@@ -7,7 +7,8 @@ open predicates) and, when restriction by the decided variables was not enough, 
 user literals of the components the solver judged it in. From an earlier step of the same
 list of literals, a condition is judged again only when one of those changed, and even
 then not when the solver found it present or absent (more literals cannot undo that) or
-when the witnesses that showed it undetermined still agree with the literals.
+when the witnesses that showed it undetermined still agree with the literals, or were
+repaired to without changing its support (``Judgement.held``).
 """
 
 from __future__ import annotations
