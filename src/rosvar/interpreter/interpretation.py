@@ -131,8 +131,7 @@ class Interpretation:
     def _input_value(self, input_: ArgInput | EnvInput, unset: object) -> Choice[Any]:
         """An input's value per slot: the literal, ``unset`` when not given, a hole for others."""
         branches: list[tuple[BDD, object]] = []
-        for slot in self.space.domain(input_):
-            atom = self.space.slot(input_, slot)
+        for slot, atom in self.space.slot_atoms(input_):
             if slot is UNSET:
                 branches.append((atom, unset))
             elif slot is OTHER:
@@ -244,14 +243,14 @@ class Interpretation:
         return self.resolve(text, scope, f"<{entity.tag}> attribute '{name}'")
 
     def required(self, entity: Entity, name: str, scope: Scope) -> Choice[Raw] | None:
-        if not entity.has(name):
+        value = self.attr(entity, name, scope)  # None exactly when the attribute is absent
+        if value is None:
             self.fail(
                 self.space.true,
                 "attribute-missing",
                 f"<{entity.tag}> tag is missing required attribute: '{name}'",
             )
-            return None
-        return self.attr(entity, name, scope)
+        return value
 
     def check_attributes(self, entity: Entity, allowed: Sequence[str]) -> None:
         for name in entity.attributes:

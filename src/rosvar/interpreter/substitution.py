@@ -135,8 +135,8 @@ def _plan(
 ) -> tuple[tuple[str, ...], tuple[str | int, ...], bool, tuple[str, ...] | None]:
     """How to resolve ``text``: its first-pass bodies and segments (as :func:`_segments`),
     whether a find pass follows, and the args it reads when it reads nothing else (no
-    ``env``, ``anon``, ``dirname`` nor ``find``): its value is then a function of theirs.
-    Raises :class:`SubstitutionError` for malformed text.
+    ``env``, ``anon`` nor ``dirname``): its value is then a function of theirs (and of the
+    workspace's packages). Raises :class:`SubstitutionError` for malformed text.
     """
     bodies = collect(text)
     for body in bodies:
@@ -144,7 +144,7 @@ def _plan(
     distinct, segments = _segments(text, bodies)
     find = any(_split(b)[0] == "find" for b in bodies)
     words = [_split(body) for body in distinct]
-    only_args = not find and all(w[0] == "arg" and len(w) == 2 for w in words)
+    only_args = all(w[0] == "arg" and len(w) == 2 for w in words)
     return distinct, segments, find, tuple(w[1] for w in words) if only_args else None
 
 
@@ -183,6 +183,15 @@ def find_pass(text: str, lookup: Callable[[str], str | None]) -> str:
     return resolved
 
 
+def _names_unknown_package(value: object) -> bool:
+    """Whether ``value`` is a find pass left symbolic because a package is not known."""
+    return (
+        isinstance(value, Apply)
+        and value.function == "find_pass"
+        and isinstance(value.operands[0], str)
+    )
+
+
 def _find_term(host: object, text: str) -> str:
     if not isinstance(host, PackageTable):
         raise LookupError("no package table to resolve $(find)")
@@ -198,8 +207,8 @@ class Substituter:
     def __init__(self, host: Host) -> None:
         self.host = host
         self.space = host.space
-        # Values of texts that read args only, by text and the (immutable) choices of the
-        # args read: a file's texts recur in its elements and its includes' walks.
+        # Values of texts that read args only (and packages), by text and the immutable
+        # choices of the args read: a file's texts recur in its elements and its includes'.
         self._known: dict[tuple[object, ...], Choice[Value]] = {}
 
     def resolve(self, text: str | None, scope: Scope) -> Choice[Value] | None:
@@ -218,8 +227,20 @@ class Substituter:
             key = (text, *[args.get(name) for name in reads])
             known = self._known.get(key)
             if known is None:
-                known = self._known[key] = self._first_pass(text, distinct, segments, scope)
+                known = self._resolved(text, distinct, segments, find, scope)
+                if not any(map(_names_unknown_package, known.values())):
+                    self._known[key] = known  # (else its warning belongs to each place)
             return known
+        return self._resolved(text, distinct, segments, find, scope)
+
+    def _resolved(
+        self,
+        text: str,
+        distinct: tuple[str, ...],
+        segments: tuple[str | int, ...],
+        find: bool,
+        scope: Scope,
+    ) -> Choice[Value]:
         first = self._first_pass(text, distinct, segments, scope)
         return first.map(self._apply_find) if find else first
 

@@ -167,6 +167,7 @@ class ConditionSpace:
         self._atom_of: dict[str, Atom] = {}
         self._domains: dict[Input, tuple[Slot, ...]] = {}
         self._slot_names: dict[Input, dict[Slot, str]] = {}  # `slot` without a SlotAtom
+        self._slot_atoms: dict[Input, tuple[tuple[Slot, BDD], ...]] = {}
         self._input_constraints: dict[Input, BDD] = {}
         self._facts_of: dict[str, list[BDD]] = {}
         self._described: dict[tuple[BDD, bool, bool, int], str] = {}
@@ -197,6 +198,7 @@ class ConditionSpace:
         self._slot_names[input_] = {
             slot: str(v.var) for slot, v in zip(slots, variables, strict=True)
         }
+        self._slot_atoms[input_] = tuple(zip(slots, variables, strict=True))
         exactly_one = self.exactly_one(variables)
         self._input_constraints[input_] = exactly_one
         self._constraints.append(exactly_one)
@@ -225,6 +227,10 @@ class ConditionSpace:
 
     def inputs(self) -> list[Input]:
         return list(self._domains)
+
+    def slot_atoms(self, input_: Input) -> tuple[tuple[Slot, BDD], ...]:
+        """Each slot of a declared input with its atom, in domain order."""
+        return self._slot_atoms[input_]
 
     def slot(self, input_: Input, slot: Slot) -> BDD:
         """The atom "``input_`` holds ``slot``" (false if the slot is not in the domain)."""

@@ -63,8 +63,9 @@ def namespace_scope(
         ns = it.attr(entity, "ns", scope)
         assert ns is not None
         empty = where_text(it, ns, "empty")
-        it.fail(empty, "ns-empty", f"<{tag_name}> tag has an empty 'ns' attribute")
-        ns = ns.restrict(~empty)
+        if empty != it.space.false:
+            it.fail(empty, "ns-empty", f"<{tag_name}> tag has an empty 'ns' attribute")
+            ns = ns.restrict(~empty)
     if ns is None and all(isinstance(leaf, str) for _c, leaf in scope.ns):
         child_ns = scope.ns  # what child_namespace gives without a child (a term it would wrap)
     else:

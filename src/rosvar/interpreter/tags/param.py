@@ -6,6 +6,7 @@ from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
 from rosvar.interpreter.model import Binary, DeferredValue, ParamDecl, Raw
 from rosvar.interpreter.scope import PrivateParam, Scope
+from rosvar.interpreter.tags.rosparam import read_text
 from rosvar.interpreter.values import convert_value
 from rosvar.logic.choice import Choice, Fail
 from rosvar.ros import names
@@ -18,9 +19,8 @@ def param_value(kind: str, raw: str, ptype: str) -> object:
     """``Loader.param_value`` for a concrete string; raises ValueError/OSError as roslaunch."""
     if kind == "value":
         return convert_value(raw.strip(), ptype)
-    if kind == "textfile":
-        with open(raw) as handle:
-            return convert_value(handle.read(), ptype)
+    if kind == "textfile":  # read once while unchanged: every includer loads it again
+        return convert_value(read_text(raw), ptype)
     if kind == "binfile":
         with open(raw, "rb") as handle:
             return Binary(handle.read())

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
 from rosvar.interpreter.model import Raw, Remap
@@ -32,26 +34,33 @@ def add_remaps(it: Interpretation, entity: Entity, scope: Scope, remaps: list[Re
                 add_remap(remaps, Remap(condition, *pair))
 
 
-def _canonical(value: Raw) -> Raw:
-    if isinstance(value, str):
-        return names.canonicalize_name(value)
-    return Apply("canonicalize", (value,))
+@functools.lru_cache(maxsize=65536)
+def _canonical_text(text: str) -> tuple[str, bool]:
+    """A remap name canonicalised, and whether that is a legal name (cached: the same
+    names recur in every includer)."""
+    canonical = names.canonicalize_name(text)
+    return canonical, canonical == "" or names.is_legal_name(canonical)
 
 
 def _canonical_pair(it: Interpretation, source: Raw, target: Raw) -> tuple[Raw, Raw] | None:
-    source, target = _canonical(source), _canonical(target)
+    pair: list[Raw] = []
     for label, value in (("from", source), ("to", target)):
-        if value == "":
+        if not isinstance(value, str):
+            pair.append(Apply("canonicalize", (value,)))
+            continue
+        canonical, legal = _canonical_text(value)
+        if canonical == "":
             it.fail(it.space.true, "remap-invalid", "remap from/to attributes cannot be empty")
             return None
-        if isinstance(value, str) and not names.is_legal_name(value):
+        if not legal:
             it.fail(
                 it.space.true,
                 "remap-invalid",
-                f"remap {label} [{value}] is not a valid ROS name",
+                f"remap {label} [{canonical}] is not a valid ROS name",
             )
             return None
-    return source, target
+        pair.append(canonical)
+    return pair[0], pair[1]
 
 
 def add_remap(remaps: list[Remap], new: Remap) -> None:
