@@ -157,3 +157,21 @@ def test_a_level_weight_no_modulus_can_divide_is_counted_one_by_one(
     diagram = CountedDiagram(manager, formula, dict.fromkeys(names, (1, 1)))
     weights = {**dict.fromkeys(names, (1, 1)), "b": (1, PRIMES[0] - 1)}
     assert diagram.count(weights) == enumerated(manager, formula, weights)
+
+
+@pytest.mark.parametrize("seed", range(20))
+def test_taken_values_equal_enumeration(seed: int) -> None:
+    """A variable takes a value when some satisfying assignment gives it that value."""
+    rng = random.Random(seed)
+    manager = dd.cudd.BDD()
+    names = [f"x{i}" for i in range(6)]
+    manager.declare(*names)
+    formula = random_formula(manager, rng, names[:5])
+    expected: dict[str, set[bool]] = {name: set() for name in names}
+    for bits in itertools.product((False, True), repeat=len(names)):
+        assignment = dict(zip(names, bits, strict=True))
+        if manager.let(assignment, formula) == manager.true:
+            for name, bit in assignment.items():
+                expected[name].add(bit)
+    taken = CountedDiagram(manager, formula, dict.fromkeys(names, (1, 1))).taken()
+    assert taken == expected

@@ -136,6 +136,53 @@ class CountedDiagram:
     def _residues(self) -> _Residues:
         return _Residues.of(self._levels, self._lows, self._highs, self._root)
 
+    def taken(self) -> dict[str, set[bool]]:
+        """For each weighted variable, the values it takes in some assignment satisfying the
+        formula: those of the edges from its nodes to anything but FALSE, and both where a
+        path to TRUE skips its level. One pass over the lists."""
+        if not self._level_of:
+            return {}
+        top = min(self._level_of.values())
+        bottom = max(self._level_of.values()) + 1
+        falses: set[int] = set()  # levels with an edge of that value to a satisfiable child
+        trues: set[int] = set()
+        free = [0] * (bottom - top + 1)  # difference array over the levels some edge skips
+        levels, lows, highs = self._levels, self._lows, self._highs
+        root = self._root
+        if root == ~0:  # FALSE: nothing satisfies it
+            return {name: set() for name in self._level_of}
+        free[0] += 1  # the levels above the root are free
+        free[(levels[root if root >= 0 else ~root] if root else bottom) - top] -= 1
+        seen: set[int] = set()
+        stack = [root]  # functions: a place, or ``~place`` for the negated node
+        while stack:
+            function = stack.pop()
+            if function in seen or function == 0:
+                continue
+            seen.add(function)
+            flipped = function < 0
+            place = ~function if flipped else function
+            here = levels[place]
+            low, high = lows[place], highs[place]
+            if flipped:
+                low, high = ~low, ~high
+            for taking, child in ((falses, low), (trues, high)):
+                if child == ~0:  # FALSE
+                    continue
+                taking.add(here)
+                free[here + 1 - top] += 1
+                free[(levels[child if child >= 0 else ~child] if child else bottom) - top] -= 1
+                stack.append(child)
+        values: dict[int, set[bool]] = {}
+        running = 0
+        for level in range(top, bottom):
+            running += free[level - top]
+            values[level] = {False, True} if running > 0 else set()
+            values[level].update(
+                v for v, found in ((False, falses), (True, trues)) if level in found
+            )
+        return {name: values[level] for name, level in self._level_of.items()}
+
     def _value(self, values: list[int], total: int, times: int = 1, over: int = 1) -> int:
         root = self._root
         if root < 0:

