@@ -343,6 +343,9 @@ def test_serve_prints_its_url_answers_and_stops_on_ctrl_c(robot: str) -> None:
         stderr=subprocess.PIPE,
         text=True,
         env={**os.environ, "PYTHONPATH": source},
+        # a test run started in the background inherits SIGINT ignored, and so would the
+        # server: give it Ctrl-C as a terminal would
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
     )
     try:
         assert server.stdout is not None

@@ -27,9 +27,8 @@ from functools import cached_property
 
 import dd.cudd as _cudd
 
-# Only numpy's element-wise integer operations are used. Its BLAS would otherwise start a
-# worker thread per core at import, which competes with the analysis for the cores and, not
-# blocking signals, may be the thread a Ctrl-C is delivered to (``rosvar serve``).
+# Only numpy's element-wise integer operations are used: its BLAS would otherwise start a
+# worker thread per core at import, for nothing.
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import numpy as np
 import numpy.typing as npt
