@@ -9,7 +9,7 @@ import dd.cudd
 import pytest
 
 from rosvar.analyses import counting
-from rosvar.analyses.counting import PRIMES, CountedDiagram, Weight
+from rosvar.analyses.counting import CountedDiagram, Weight, moduli
 from rosvar.logic.conditions import BDD
 
 
@@ -155,7 +155,7 @@ def test_a_level_weight_no_modulus_can_divide_is_counted_one_by_one(
     manager.declare(*names)
     formula = (manager.var("a") & ~manager.var("b")) | manager.var("c")
     diagram = CountedDiagram(manager, formula, dict.fromkeys(names, (1, 1)))
-    weights = {**dict.fromkeys(names, (1, 1)), "b": (1, PRIMES[0] - 1)}
+    weights = {**dict.fromkeys(names, (1, 1)), "b": (1, moduli()[0] - 1)}
     assert diagram.count(weights) == enumerated(manager, formula, weights)
 
 

@@ -23,21 +23,21 @@ import os
 import sys
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cache, cached_property
+from typing import TYPE_CHECKING, TypeAlias
 
 import dd.cudd as _cudd
-
-# Only numpy's element-wise integer operations are used: its BLAS would otherwise start a
-# worker thread per core at import, for nothing.
-os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
-import numpy as np
-import numpy.typing as npt
 
 from rosvar.interpreter.analysis import collector_paused
 from rosvar.logic.conditions import BDD
 
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
+
+    Array: TypeAlias = npt.NDArray[np.int64]
+
 Weight = tuple[int, int]  # (weight of false, weight of true)
-Array = npt.NDArray[np.int64]
 
 VECTOR_FROM = 2_000
 """A recount over at least this many nodes runs in numpy; fewer are cheaper one by one."""
@@ -308,8 +308,11 @@ def _is_prime(n: int) -> bool:
     return True
 
 
-PRIMES = _primes(64)
-"""Moduli of the vectorised recount: 64 of them bound counts up to about 2^1980."""
+@cache
+def moduli() -> list[int]:
+    """Moduli of the vectorised recount, found on first use: 64 of them bound counts up
+    to about 2^1980."""
+    return _primes(64)
 
 
 @dataclass(frozen=True)
@@ -334,6 +337,15 @@ class _Residues:
 
     @classmethod
     def of(cls, levels: list[int], lows: list[int], highs: list[int], root: int) -> _Residues:
+        """The levels of a diagram read by ``CountedDiagram``.
+
+        numpy is imported here, on first need: it costs about 100 ms, which every rosvar
+        command would otherwise pay at start-up. Only its element-wise integer operations
+        are used, so its BLAS is kept from starting a worker thread per core.
+        """
+        os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+        import numpy as np
+
         level_of = np.asarray(levels, dtype=np.int64)
         low = np.asarray(lows, dtype=np.int64)
         negated = low < 0
@@ -361,23 +373,25 @@ class _Residues:
         """The count under ``weight_at`` (``total``: their total weight), known to be at
         most ``bound``; None when a level's total weight is a multiple of a modulus (its
         division has no inverse there) or the bound needs more moduli than there are."""
-        moduli, product = [], 1
-        for prime in PRIMES:
+        import numpy as np  # imported by ``of``
+
+        taken, product = [], 1
+        for prime in moduli():
             if product > bound:
                 break
-            moduli.append(prime)
+            taken.append(prime)
             product *= prime
         if product <= bound:
             return None
         inverse: dict[int, list[int]] = {}  # total weight of a level → its inverses
         for off, on in set(weight_at.values()):
             if off and on and off != on:
-                if any((off + on) % m == 0 for m in moduli):
+                if any((off + on) % m == 0 for m in taken):
                     return None
-                inverse[off + on] = [pow(off + on, -1, m) for m in moduli]
-        p = np.asarray(moduli, dtype=np.int64)
-        everything = np.asarray([total % m for m in moduli], dtype=np.int64)
-        values = np.empty((self.size, len(moduli)), dtype=np.int64)
+                inverse[off + on] = [pow(off + on, -1, m) for m in taken]
+        p = np.asarray(taken, dtype=np.int64)
+        everything = np.asarray([total % m for m in taken], dtype=np.int64)
+        values = np.empty((self.size, len(taken)), dtype=np.int64)
         values[0] = everything
         for level in self.levels:
             off, on = weight_at[level.level]
@@ -395,20 +409,20 @@ class _Residues:
             elif not on:
                 values[level.places] = d_low
             else:
-                weights = np.asarray([[off % m, on % m] for m in moduli], dtype=np.int64)
+                weights = np.asarray([[off % m, on % m] for m in taken], dtype=np.int64)
                 mixed = (weights[:, 0] * d_low % p + weights[:, 1] * d_high % p) % p
                 values[level.places] = mixed * np.asarray(inverse[off + on], dtype=np.int64) % p
         root = self.root
         residues = values[~root if root < 0 else root]
         if root < 0:
             residues = (everything - residues) % p
-        return _restored(residues.tolist(), moduli, product)
+        return _restored(residues.tolist(), taken, product)
 
 
-def _restored(residues: list[int], moduli: list[int], product: int) -> int:
+def _restored(residues: list[int], primes: list[int], product: int) -> int:
     """The number below ``product`` with these residues (Chinese remainder theorem)."""
     found = 0
-    for residue, modulus in zip(residues, moduli, strict=True):
+    for residue, modulus in zip(residues, primes, strict=True):
         rest = product // modulus
         found += residue * rest * pow(rest, -1, modulus)
     return found % product
