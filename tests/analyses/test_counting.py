@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import itertools
 import random
+from typing import Any
 
 import dd.cudd
 import pytest
@@ -175,3 +176,32 @@ def test_taken_values_equal_enumeration(seed: int) -> None:
                 expected[name].add(bit)
     taken = CountedDiagram(manager, formula, dict.fromkeys(names, (1, 1))).taken()
     assert taken == expected
+
+
+def test_a_prepared_diagram_recounts_with_what_it_built(monkeypatch: pytest.MonkeyPatch) -> None:
+    """``prepare`` builds the vectorised recount's levels of a large diagram once, ahead of
+    the first recount, which then uses them; a small diagram, recounted one by one, gets
+    nothing built."""
+    built: list[int] = []
+    of = counting._Residues.of
+
+    def spied(*args: Any) -> counting._Residues:
+        built.append(len(args[0]))
+        return of(*args)
+
+    monkeypatch.setattr(counting._Residues, "of", spied)
+    manager = dd.cudd.BDD()
+    names = [f"x{i}" for i in range(12)]
+    manager.declare(*names)
+    formula = random_formula(manager, random.Random(3), names) | manager.var("x0")
+    weights = dict.fromkeys(names, (1, 1))
+    diagram = CountedDiagram(manager, formula, weights)
+    monkeypatch.setattr(counting, "VECTOR_FROM", len(diagram))
+    diagram.prepare()
+    assert built == []
+    monkeypatch.setattr(counting, "VECTOR_FROM", len(diagram) - 1)
+    diagram.prepare()
+    assert built == [len(diagram)]
+    chosen = {**weights, names[-1]: (0, 1)}
+    assert diagram.count(chosen) == enumerated(manager, formula, chosen)
+    assert built == [len(diagram)]

@@ -5,6 +5,9 @@ from __future__ import annotations
 import random
 from typing import TYPE_CHECKING
 
+import pytest
+
+from rosvar.analyses.counting import CountedDiagram
 from rosvar.analyses.features import extract
 from rosvar.configuration.derivation import (
     ABSENT,
@@ -70,3 +73,18 @@ def test_decisions_agree_with_the_built_formula(ws: LaunchWorkspace) -> None:
                     else UNDETERMINED
                 )  # fmt: skip
                 assert verdict.presence == expected_presence
+
+
+def test_prepared_counts_are_those_of_every_component(
+    ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    for name, body in FILES.items():
+        ws.launch(name, body)
+    model = extract(ws.analysis())
+    derivation = Derivation(model)
+    prepared: list[CountedDiagram] = []
+    monkeypatch.setattr(CountedDiagram, "prepare", lambda diagram: prepared.append(diagram))
+    derivation.prepare_counts()
+    components = model.solver.components
+    assert len(components) > 1
+    assert prepared == [component.counted_diagram for component in components]

@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+import gc
+from typing import TYPE_CHECKING, Any
 
 import pytest
 
@@ -10,6 +11,7 @@ from configuration.helpers import choices, configurator, present, run, states
 from rosvar.analyses.features import count_configurations
 from rosvar.configuration.choices import ChoiceError
 from rosvar.configuration.engine import Configurator
+from rosvar.configuration.view import View
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -108,6 +110,23 @@ def test_included_file_is_not_launched_on_its_own(engine: Configurator) -> None:
     state = run(engine, "set main.launch:cam=true")
     cameras = [n for n in state.graph.nodes if n["name"] == "/camera" and n["presence"] != "absent"]
     assert [n["id"].split("|")[0] for n in cameras] == ["main.launch"]
+
+
+def test_a_step_runs_without_the_collector_and_restores_it(
+    engine: Configurator, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    collecting: list[bool] = []
+    derive = engine.views.view
+
+    def view(*args: Any) -> View:
+        collecting.append(gc.isenabled())
+        return derive(*args)
+
+    monkeypatch.setattr(engine.views, "view", view)
+    assert gc.isenabled()
+    run(engine, "set main.launch:cam=true", "set camera.launch:fps=60")
+    assert collecting == [False]
+    assert gc.isenabled()
 
 
 def test_completion_reaches_a_complete_product(engine: Configurator) -> None:

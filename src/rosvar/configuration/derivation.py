@@ -238,6 +238,12 @@ class Derivation:
             total *= found
         return total
 
+    def prepare_counts(self) -> None:
+        """Make every component ready to be counted after any choice (``count``): for a
+        server, which would otherwise charge the first count and recount to clicks."""
+        for component in self.components:
+            component.counted_diagram.prepare()
+
     def presence(self, bounds: Bounds, decisions: Decisions) -> Verdict:
         """Present, absent or undetermined, and what the verdict depended on."""
         return self.presences([(bounds, None)], decisions)[0]

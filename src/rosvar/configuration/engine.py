@@ -187,7 +187,12 @@ class Configurator:
 
     # -- choices -------------------------------------------------------------------------
     def state(self, choices: Sequence[UserChoice]) -> ConfigurationState:
-        return self._answer(self._replay(tuple(choices)))
+        """The answer for ``choices``. A step adds long-lived objects (views, verdicts,
+        rendered entries) and no cycles: the collector is paused, and they go to the
+        oldest generation unscanned, where its young scans found nothing to free in them
+        (1.2–1.7 s over the bench's 852 Husky steps, up to 10 ms on one)."""
+        with collector_paused():
+            return self._answer(self._replay(tuple(choices)))
 
     def _replay(self, choices: tuple[UserChoice, ...]) -> _Replay:
         """The replay of ``choices``, from the longest prefix replayed before."""

@@ -8,7 +8,7 @@ import pytest
 
 from outputs.web.live import Live, running
 from rosvar.configuration.engine import Configurator
-from rosvar.outputs.web.api import MAX_TEXT
+from rosvar.outputs.web.api import MAX_TEXT, Api
 
 
 def states(reply: dict[str, Any]) -> dict[str, tuple[str, bool]]:
@@ -169,3 +169,13 @@ def test_bad_requests_get_4xx_and_a_message(examples: Live, case: str) -> None:
     assert reply.status == status
     assert reply.headers["Content-Type"].startswith("application/json")
     assert isinstance(reply.json()["error"], str) and reply.json()["error"]
+
+
+def test_a_new_api_prepares_the_counts(
+    examples_engine: Configurator, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The counts after clicks are made ready when the server starts, not on a click."""
+    prepared: list[bool] = []
+    monkeypatch.setattr(examples_engine.derivation, "prepare_counts", lambda: prepared.append(True))
+    Api(examples_engine)
+    assert prepared == [True]

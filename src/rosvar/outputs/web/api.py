@@ -68,6 +68,7 @@ class Api:
         self._store = SessionStore(configurator, capacity)
         self._lock = threading.Lock()
         features = configurator.state([]).features  # the ids never change: known once
+        configurator.derivation.prepare_counts()
         self._kinds = {key: feature.kind for key, feature in features.items()}
         steps: dict[str, Callable[[Session], ConfigurationState]] = {
             "undo": Session.undo,
