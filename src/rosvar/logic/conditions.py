@@ -374,14 +374,17 @@ class ConditionSpace:
         a condition that this view would show as ``true`` but that fails for some
         other value is shown in full.
         """
-        if condition == self.false or not self.satisfiable(condition):
-            return "false"
+        # the facts over the condition and their variables, found once: walking a BDD's
+        # support in Python is most of describing an undetermined condition in the engine
         local = self.care(condition)
-        involved = self._inputs_of(local)
+        if condition == self.false or (condition & local) == self.false:  # unsatisfiable
+            return "false"
+        variables = self.support(local)
+        involved = self._inputs_of(variables)
         if known_only:
             others = {
                 name: False
-                for name in self.support(local)
+                for name in variables
                 if isinstance(atom := self._atom_of[name], SlotAtom)
                 and atom.slot is OTHER
                 and isinstance(atom.input, ArgInput)
@@ -390,7 +393,7 @@ class ConditionSpace:
             care = self.cofactor(local, others)
             if (known & care) == self.false:
                 return "only for other values"
-            if (care & ~known) == self.false and not self.valid_implies(condition):
+            if (care & ~known) == self.false and (local & ~condition) != self.false:
                 full = self._describe(condition, qualify, known_only=False)
                 return full if len(full) <= MAX_FULL else "true for every known value"
             domains = {
@@ -410,7 +413,7 @@ class ConditionSpace:
         try:
             cubes = self._prime_cubes(simplified, known, care, domains)
         except _TooComplex:
-            names = sorted({str(i) for i in self._inputs_of(simplified)})
+            names = sorted({str(i) for i in self._inputs_of(self.support(simplified))})
             shown = ", ".join(names[:6]) + (", …" if len(names) > 6 else "")
             return f"a condition over {len(names)} inputs ({shown})"
         rendered = [self._render_cube(cube, qualify, domains) for cube in cubes]
@@ -418,10 +421,10 @@ class ConditionSpace:
             return rendered[0]
         return " ∨ ".join(f"({r})" if "∧" in r else r for r in sorted(rendered))
 
-    def _inputs_of(self, u: BDD) -> set[Input]:
+    def _inputs_of(self, variables: Iterable[str]) -> set[Input]:
         return {
             atom.input
-            for atom in (self._atom_of[name] for name in self.support(u))
+            for atom in (self._atom_of[name] for name in variables)
             if isinstance(atom, SlotAtom)
         }
 
