@@ -2,7 +2,8 @@
 
 An engine answers a list of choices from its answer for the longest earlier list, carrying
 most verdicts with repaired witnesses; a fresh engine judges the whole list from nothing.
-Both must show the same graph after every step of random sessions.
+Both must show the same graph after every step of random sessions (a YAML load gives one
+symbolic entry until its inputs are known, then one per key).
 """
 
 from __future__ import annotations
@@ -28,6 +29,7 @@ FILES = {
     '  <node pkg="p" type="t" name="cam_u" unless="$(arg w)"/>',
     "d.launch": '  <arg name="z" default="true"/>\n  <arg name="v" default="a"/>\n'
     '  <node pkg="p" type="t" name="d_$(arg v)" if="$(arg z)"/>\n'
+    '  <rosparam subst_value="true">{gain: $(arg v), rate: 2}</rosparam>\n'
     '  <include file="$(find pkg)/launch/b.launch" if="$(arg z)"><arg name="y" value="$(arg v)"/>'
     "</include>",
     "e.launch": '  <arg name="k" default="0"/>\n  <param name="rate" value="$(arg k)"/>\n'
