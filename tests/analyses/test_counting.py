@@ -91,6 +91,32 @@ def test_complemented_edges_flip_the_lowest_bit_of_int() -> None:
         assert int(~node) == int(node) ^ 1
 
 
+@pytest.mark.parametrize("seed", range(10))
+def test_nodes_read_in_memory_are_those_dd_shows(seed: int) -> None:
+    """Each node ``_read`` found in CUDD's memory has the level and children that ``dd``'s
+    wrappers give (a complemented low edge as ``~place``)."""
+    rng = random.Random(seed)
+    manager = dd.cudd.BDD()
+    names = [f"x{i}" for i in range(8)]
+    manager.declare(*names)
+    formula = random_formula(manager, rng, names)
+    weights = {manager.level_of_var(name): (1, 1) for name in names}
+    levels, lows, highs, _values, root = counting._read(manager, formula, weights, 2**8)
+    function_at: dict[int, BDD] = {}  # place → its function (never complemented), from the root
+    pending = [(~root if root < 0 else root, ~formula if root < 0 else formula)]
+    while pending:
+        place, function = pending.pop()
+        assert function_at.setdefault(place, function) == function
+        if place == 0:
+            assert function == manager.true
+            continue
+        assert levels[place] == function.level
+        low, high = lows[place], highs[place]
+        pending.append((high, function.high))
+        pending.append((~low, ~function.low) if low < 0 else (low, function.low))
+    assert len(function_at) == len(levels)
+
+
 def test_counts_beyond_a_double_are_exact() -> None:
     """3^40 ways minus those with x0 and x1 both off: not representable in a double."""
     manager = dd.cudd.BDD()

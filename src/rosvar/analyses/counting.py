@@ -19,6 +19,7 @@ to exceed a bound of the count, so the residues determine it.
 
 from __future__ import annotations
 
+import ctypes
 import os
 import sys
 from collections.abc import Mapping, Sequence
@@ -52,8 +53,8 @@ class CountedDiagram:
     + w₁·D(high)) / (w₀ + w₁)``), a complemented edge is ``T − D`` (``T``: the total
     weight of all variables), and the count is ``D(root)``.
 
-    The first count reads the nodes through ``dd``'s wrappers, which costs several
-    times the arithmetic, and keeps them as plain lists with their values ``D``.
+    The first count reads the nodes in CUDD's memory (``_read``) and keeps them as
+    plain lists with their values ``D``.
     ``D(u) / T`` depends only on the weights of ``u``'s level and those below, so a
     later count whose weights differ on some levels recomputes only the nodes down to
     the deepest of them and rescales the first count's values of the nodes below: the
@@ -226,6 +227,33 @@ def _combine(weight: Weight, d_low: int, d_high: int) -> int:
     return (off * d_low + on * d_high) // (off + on)
 
 
+@cache
+def _memory() -> memoryview:
+    """The process's memory as 64-bit words, for reading CUDD's nodes where they lie.
+
+    Only the words of live nodes are ever read (``_read``): the view maps no memory
+    of its own, it only spares a ``ctypes`` call per read.
+    """
+    everything = (ctypes.c_uint64 * (sys.maxsize // 8)).from_address(0)
+    return memoryview(everything).cast("B").cast("Q")
+
+
+def _indices(manager: _cudd.BDD, weight_at: Mapping[int, Weight]) -> dict[int, int]:
+    """CUDD's index of each weighted level's variable, read off its node ``x ? TRUE :
+    FALSE``, which also checks the layout ``_read`` relies on: a CUDD node is its
+    variable's index (32 bits, then the reference count's), the next node in its
+    hash chain, then its ``then`` and ``else`` children (64-bit pointers)."""
+    words = _memory()
+    true = int(manager.true) - 2
+    found = {}
+    for level in weight_at:
+        node = (int(manager.var(manager.var_at_level(level))) - 2) >> 3
+        if (words[node + 2], words[node + 3]) != (true, true ^ 1):
+            raise RuntimeError("dd's CUDD lays its nodes out otherwise than counting expects")
+        found[words[node] & 0xFFFFFFFF] = level
+    return found
+
+
 @collector_paused()  # its lists are young: the collector would rescan them as they grow
 def _read(
     manager: _cudd.BDD, formula: BDD, weight_at: Mapping[int, Weight], total: int
@@ -234,33 +262,38 @@ def _read(
     one's level, low and high child (places; a complemented edge as ``~place``) and
     ``D``; and the root's place (complemented likewise).
 
-    Nodes are told apart by ``int``, which for ``dd`` is the node's pointer plus 2; CUDD
-    marks a complemented edge in the pointer's lowest bit, so ``int(~u) == int(u) ^ 1``
-    (``tests/analyses/test_counting.py`` checks it) and a child's regular node needs no
-    wrapper of its own. Recursive, since a stack kept by hand was half as fast (the depth
-    is at most the number of variables).
+    The nodes are read in CUDD's memory (``_memory``, layout checked by ``_indices``),
+    not through ``dd``'s wrappers: a wrapper per child (a Python object, a reference
+    taken and dropped) made reading a node cost twice its arithmetic. Safe while
+    ``formula`` is referenced, since nothing runs in CUDD meanwhile: its nodes can be
+    neither freed nor moved. ``int`` of a ``dd`` function is its pointer plus 2, and
+    CUDD marks a complemented edge in the pointer's lowest bit (``then`` edges never
+    are). Recursive, since a stack kept by hand was half as fast (the depth is at
+    most the number of variables).
     """
-    true = int(manager.true)
-    found = {true: 0}  # regular node → its place
+    words = _memory()
+    weight_of = {
+        index: (level, *weight_at[level]) for index, level in _indices(manager, weight_at).items()
+    }
+    found = {int(manager.true) - 2: 0}  # regular node's address → its place
     levels, lows, highs, values = [len(manager.vars)], [0], [0], [total]
 
-    def visit(node: BDD, key: int) -> int:
-        low, high = node.low, node.high  # CUDD's high edges are never complemented
-        low_key, high_key = int(low), int(high)
-        negated = low_key & 1
+    def visit(node: int) -> int:
+        at = node >> 3
+        low, high = words[at + 3], words[at + 2]
+        negated = low & 1
         if negated:
-            low_key ^= 1
-        low_place = found.get(low_key)
+            low ^= 1
+        low_place = found.get(low)
         if low_place is None:
-            low_place = visit(low, low_key)
-        high_place = found.get(high_key)
+            low_place = visit(low)
+        high_place = found.get(high)
         if high_place is None:
-            high_place = visit(high, high_key)
-        level = node.level
+            high_place = visit(high)
+        level, off, on = weight_of[words[at] & 0xFFFFFFFF]
         d_low = total - values[low_place] if negated else values[low_place]
         d_high = values[high_place]
-        off, on = weight_at[level]  # as in ``_combine``, inlined: a call per node costs
-        if off == on:
+        if off == on:  # as in ``_combine``, inlined: a call per node costs
             values.append((d_low + d_high) >> 1)
         elif not off:
             values.append(d_high)
@@ -268,20 +301,20 @@ def _read(
             values.append(d_low)
         else:
             values.append((off * d_low + on * d_high) // (off + on))
-        found[key] = place = len(levels)
+        found[node] = place = len(levels)
         levels.append(level)
         lows.append(~low_place if negated else low_place)
         highs.append(high_place)
         return place
 
-    key = int(formula)
-    negated = key & 1
-    root = found.get(key ^ negated)
+    pointer = int(formula) - 2
+    negated = pointer & 1
+    root = found.get(pointer ^ negated)
     if root is None:
         limit = sys.getrecursionlimit()
         sys.setrecursionlimit(limit + len(weight_at))
         try:
-            root = visit(formula, key ^ negated)
+            root = visit(pointer ^ negated)
         finally:
             sys.setrecursionlimit(limit)
     return levels, lows, highs, values, ~root if negated else root
