@@ -72,6 +72,7 @@ class Judgement:
     verdicts: list[Judged]  # per condition of ``Presences``
     open: Mapping[int, frozenset[int]]
     held: Mapping[int, Held]
+    judged: Sequence[int]  # the verdicts judged at this step: the others are the earlier ones
 
     def witnesses(self, index: int) -> tuple[int, int] | None:
         """The configurations that show verdict ``index`` undetermined at this step."""
@@ -263,7 +264,7 @@ def _hint(answer: Judgement, index: int) -> Verdict:
 
 def _judgement(
     verdicts: list[Judged],
-    changed: Iterable[int],
+    changed: Sequence[int],
     open_: Mapping[int, frozenset[int]],
     held: Mapping[int, Held],
     before: Sequence[Judged] | None = None,
@@ -297,4 +298,4 @@ def _judgement(
             used = {w for index in kept for w in verdicts[index].verdict.witnesses or ()}
             grown[component] = {w: mine[w] for w in used}
     opened = {**open_, **{key: frozenset(indices) for key, indices in moved.items()}}
-    return Judgement(verdicts, opened, {**held, **grown})
+    return Judgement(verdicts, opened, {**held, **grown}, changed)

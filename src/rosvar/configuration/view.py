@@ -217,8 +217,8 @@ class Views:
     ) -> set[int]:
         """Elements whose verdict or read strings differ from ``before``."""
         again: set[int] = set()
-        for condition, judged in enumerate(presences.verdicts):
-            earlier = before.presences.verdicts[condition]
+        for condition in presences.judged:
+            judged, earlier = presences.verdicts[condition], before.presences.verdicts[condition]
             if judged is not earlier and judged.shown != earlier.shown:
                 again.update(self._elements_of[condition])
         changed = decisions.decided.items() ^ before.decisions.decided.items()
