@@ -111,6 +111,18 @@ def test_a_delta_holds_only_what_changed() -> None:
     assert patch(DOCUMENT, {**delta, "base": 1}) == after
 
 
+def test_entries_changed_in_place_are_sent_by_place() -> None:
+    nodes = DOCUMENT["graph"]["nodes"]
+    fewer = {k: v for k, v in nodes[2].items() if k != "condition"}
+    after = [nodes[0], {**nodes[1], "presence": "absent"}, fewer, dict(nodes[3])]
+    change = diff(DOCUMENT, {**DOCUMENT, "graph": {**DOCUMENT["graph"], "nodes": after}})
+    assert change["graph"]["nodes"] == {
+        "removed": [nodes[2]["id"]],
+        "added": [(2, fewer)],
+        "changed": [(1, {"presence": "absent", "condition": nodes[1]["condition"]})],
+    }
+
+
 def test_entries_that_swap_places_are_sent_again() -> None:
     nodes = DOCUMENT["graph"]["nodes"]
     after = {**DOCUMENT, "graph": {**DOCUMENT["graph"], "nodes": [nodes[2], nodes[0], nodes[1]]}}
@@ -127,7 +139,7 @@ def test_a_delta_against_another_version_is_refused() -> None:
 
 def random_lists(rng: random.Random) -> tuple[list[dict[str, Any]], list[dict[str, Any]]]:
     """Two lists of entries as states give them: some dropped, added, changed (a field more,
-    less or other), or all moved."""
+    less or other), or all moved; or, as most steps do, only changed in place."""
     changes = [
         lambda e: e,
         lambda e: {**e, "presence": "present", "condition": None},
@@ -136,6 +148,8 @@ def random_lists(rng: random.Random) -> tuple[list[dict[str, Any]], list[dict[st
         lambda e: {k: v for k, v in e.items() if k != "x"},
     ]
     before = [node(f"e{n}", n) for n in range(rng.randrange(8))]
+    if rng.random() < 0.3:
+        return before, [rng.choice(changes)(e) for e in before]
     after = [rng.choice(changes)(e) for e in before if rng.random() < 0.7]
     for n in range(rng.randrange(4)):
         after.insert(rng.randrange(len(after) + 1), {"id": f"new{n}", "v": 2})

@@ -24,6 +24,8 @@ A delta is a document of the same shape, read field by field:
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from itertools import compress
+from operator import is_not
 from typing import Any
 
 Document = dict[str, Any]
@@ -84,6 +86,12 @@ def _list_diff(before: Sequence[Entry], after: Sequence[Entry]) -> Document:
     removed: list[str] = []
     added: list[tuple[int, Entry]] = []
     changed: list[tuple[int, Entry]] = []
+    if len(before) == len(after):  # the usual step: entries replaced in place, found in C
+        differ = list(compress(range(len(after)), map(is_not, before, after)))
+        if all(before[i]["id"] == after[i]["id"] for i in differ):
+            for index in differ:
+                _compare(index, before[index], after[index], removed, added, changed)
+            return {"removed": removed, "added": added, "changed": changed}
     places: dict[str, int] | None = None  # id → place in ``before``, built on first need
     following = 0  # place in ``before`` of the next entry not yet matched
     for index, entry in enumerate(after):
@@ -104,16 +112,27 @@ def _list_diff(before: Sequence[Entry], after: Sequence[Entry]) -> Document:
             if place < following:  # entries swapped places: send the list whole
                 return {"removed": list(places), "added": list(enumerate(after)), "changed": []}
             removed.extend(old["id"] for old in before[following:place])
-        old = before[place]
-        if old != entry:
-            if old.keys() <= entry.keys():
-                changed.append((index, _changes(old, entry)))
-            else:  # a field went away, which a merge cannot say: the entry is sent anew
-                removed.append(key)
-                added.append((index, entry))
+        _compare(index, before[place], entry, removed, added, changed)
         following = place + 1
     removed.extend(old["id"] for old in before[following:])
     return {"removed": removed, "added": added, "changed": changed}
+
+
+def _compare(
+    index: int,
+    old: Entry,
+    new: Entry,
+    removed: list[str],
+    added: list[tuple[int, Entry]],
+    changed: list[tuple[int, Entry]],
+) -> None:
+    """An entry that kept its id, now at ``index``: what of it to send, if anything."""
+    if old != new:
+        if old.keys() <= new.keys():
+            changed.append((index, _changes(old, new)))
+        else:  # a field went away, which a merge cannot say: the entry is sent anew
+            removed.append(new["id"])
+            added.append((index, new))
 
 
 def _changes(old: Entry, new: Entry) -> Entry:
