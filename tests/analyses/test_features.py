@@ -13,7 +13,16 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from rosvar.analyses.features import ArgFeature, Constraint, FeatureModel, FileFeature, extract
+from rosvar.analyses.features import (
+    ArgFeature,
+    Constraint,
+    FeatureModel,
+    FileFeature,
+    _declaring,
+    _excluding,
+    count_configurations,
+    extract,
+)
 from rosvar.logic.inputs import OTHER, ArgInput
 
 if TYPE_CHECKING:
@@ -401,6 +410,34 @@ def test_files_with_disjoint_names_do_not_exclude_each_other(ws: LaunchWorkspace
     model = model_of(ws)
     assert constraints(model, "excludes") == []
     assert model.clashes == [] and model.internal == []
+
+
+def test_the_solver_links_the_files_excludes_pair_without_building_them(
+    ws: LaunchWorkspace,
+) -> None:
+    """The solver finds the pairs of clashing files per name (``_excluding``): the files of
+    the ``excludes`` constraints, which are built only when asked for. a and c declare
+    /n under conditions that never hold together: no pair."""
+    ws.launch(
+        "a.launch",
+        '  <node pkg="pkg" type="t" name="n" if="$(optenv USE_A false)"/>\n'
+        '  <param name="p" value="1"/>',
+    )
+    ws.launch("b.launch", '  <param name="p" value="2"/>\n  <node pkg="pkg" type="t" name="n"/>')
+    ws.launch("c.launch", '  <node pkg="pkg" type="t" name="n" unless="$(optenv USE_A false)"/>')
+    model = model_of(ws)
+    count_configurations(model)
+    assert "clashes" not in vars(model) and "constraints" not in vars(model)
+    files = {f.file: f for f in model.files}
+    found = {
+        (files[a].id, files[b].id)
+        for a, b in _excluding(_declaring(model.space, files, model.declarations))
+    }
+    assert found == {c.files for c in constraints(model, "excludes")}
+    assert found == {
+        ("pkg/launch/a.launch", "pkg/launch/b.launch"),
+        ("pkg/launch/b.launch", "pkg/launch/c.launch"),
+    }
 
 
 def test_clash_inside_one_file_is_reported_as_internal(ws: LaunchWorkspace) -> None:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import os
 from collections import deque
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -302,7 +302,9 @@ def extract(
     )
     try:
         _check_links(buckets, len(features))
-        feature_model.solution = _formula(space, features, feature_model.constraints, buckets)
+        feature_model.solution = _formula(
+            space, features, requires, buckets, lambda: feature_model.constraints
+        )
     except ModelTooLarge as too_large:
         # kept without its traceback, whose frames hold the half-built BDDs
         feature_model.solution = ModelTooLarge(*too_large.args)
@@ -399,7 +401,7 @@ FORCE_PATIENCE = 10  # rounds without a shorter span before FORCE stops
 
 
 def _order(
-    space: ConditionSpace, features: Sequence[FileFeature], constraints: Sequence[Constraint]
+    space: ConditionSpace, features: Sequence[FileFeature], links: Iterable[Sequence[str]]
 ) -> list[str]:
     """Feature variables in file blocks: linked files close together, components apart.
 
@@ -412,8 +414,7 @@ def _order(
     operand lying above the other's variables).
     """
     neighbours: dict[str, set[str]] = {f.id: set() for f in features}
-    for constraint in constraints:
-        a, b = constraint.files
+    for a, b in links:  # files a constraint links (feature ids)
         if a != b:
             neighbours[a].add(b)
             neighbours[b].add(a)
@@ -675,17 +676,24 @@ table never outgrows its first 256 k entries."""
 def _formula(
     space: ConditionSpace,
     features: Sequence[FileFeature],
-    constraints: Sequence[Constraint],
+    requires: Sequence[Constraint],
     buckets: Mapping[tuple[str, str], Sequence[Occurrence]],
+    constraints: Callable[[], Sequence[Constraint]],
 ) -> Solver:
     """The whole feature model over file and value variables only, one BDD per component.
 
     Atoms that are not features (predicates on typed-in values, environment
     variables, other files' plumbing) are quantified out of each constraint:
     an ``<other>`` value is taken as able to do anything a typed value could.
-    Exclusions enter per clashing name, not per pair of files (``_exclusions``).
+    Exclusions enter per clashing name, not per pair of files (``_exclusions``), and
+    the pairs of files they link are found per name too (``_excluding``): the
+    pairwise ``excludes`` constraints (``constraints``, every cross-tree constraint)
+    are built only if asked for.
     """
-    keep = _order(space, features, constraints)
+    files = {f.file: f for f in features}
+    declaring = _declaring(space, files, buckets)
+    excluding = [(files[a].id, files[b].id) for a, b in _excluding(declaring)]
+    keep = _order(space, features, [*(c.files for c in requires), *excluding])
     kept = set(keep)
     manager = _cudd.BDD(memory_estimate(len(features)))  # dd's default touches 8 MB at once
     manager.configure(reordering=False, max_cache_hard=SOLVER_CACHE)
@@ -695,14 +703,12 @@ def _formula(
         return transfer(formula, manager, {n for n in space.support(formula) if n not in kept})
 
     with _memory_bound(manager, len(features)):
-        files = {f.file: f for f in features}
         linked = _Links([f.id for f in features])
         pieces: list[tuple[str, BDD]] = []
-        for constraint in constraints:
+        for constraint in requires:
             linked.join(constraint.files)
-            if constraint.kind != "excludes":
-                pieces.append((constraint.files[0], translate(constraint.formula)))
-        for members, exclusion in _exclusions(space, manager, files, buckets, kept, translate):
+            pieces.append((constraint.files[0], translate(constraint.formula)))
+        for members, exclusion in _exclusions(space, manager, files, declaring, kept, translate):
             linked.join(members)
             pieces.append((members[0], exclusion))
         grouped: dict[str, list[BDD]] = {}
@@ -723,7 +729,7 @@ def _formula(
                 Component(manager, members, variables, args, grouped.get(root, []), len(features))
             )
         components.sort(key=lambda c: level[c.variables[0]] if c.variables else -1)
-    return Solver(manager, keep, components, lambda: [translate(c.formula) for c in constraints])
+    return Solver(manager, keep, components, lambda: [translate(c.formula) for c in constraints()])
 
 
 class _Links:
@@ -752,11 +758,53 @@ class _Links:
         return found
 
 
+def _declaring(
+    space: ConditionSpace,
+    files: Mapping[str, FileFeature],
+    buckets: Mapping[tuple[str, str], Sequence[Occurrence]],
+) -> list[dict[str, BDD]]:
+    """For each name declared by two files or more, when each of them declares it; names
+    declared alike (a moveit configuration's files share dozens of parameter names, all
+    under the same conditions) once for all."""
+    done: set[frozenset[tuple[str, BDD]]] = set()
+    found = []
+    for occurrences in buckets.values():
+        when: dict[str, BDD] = {}
+        for occurrence in occurrences:
+            if occurrence.file in files:
+                when[occurrence.file] = (
+                    when.get(occurrence.file, space.false) | occurrence.condition
+                )
+        alike = frozenset(when.items())
+        if len(when) >= 2 and alike not in done:
+            done.add(alike)
+            found.append(when)
+    return found
+
+
+def _excluding(declaring: Iterable[Mapping[str, BDD]]) -> list[tuple[str, str]]:
+    """The pairs of files (paths) declaring a common name under conditions that can hold
+    together: the files of the ``excludes`` constraints (``conflicts.clashes``' pairs of
+    declarations, taken per file: the conjunction of two disjunctions is satisfiable
+    when one pair of their terms is)."""
+    pairs: set[tuple[str, str]] = set()
+    for when in declaring:
+        files = sorted(when)
+        for position, first in enumerate(files):
+            for second in files[position + 1 :]:
+                if (first, second) in pairs:
+                    continue
+                both = when[first] & when[second]
+                if both != both.bdd.false:
+                    pairs.add((first, second))
+    return sorted(pairs)
+
+
 def _exclusions(
     space: ConditionSpace,
     manager: _cudd.BDD,
     files: Mapping[str, FileFeature],
-    buckets: Mapping[tuple[str, str], Sequence[Occurrence]],
+    declaring: Iterable[Mapping[str, BDD]],
     kept: set[str],
     translate: Callable[[BDD], BDD],
 ) -> Iterator[tuple[list[str], BDD]]:
@@ -772,19 +820,8 @@ def _exclusions(
     the pairwise ``excludes`` exactly.
     """
     dirty: dict[tuple[str, str], BDD] = {}
-    done: set[frozenset[tuple[str, BDD]]] = set()  # names declared alike: one group for all
     literals: dict[tuple[str, BDD], BDD | None] = {}  # F ∧ C_F in the solver; None: unclean
-    for occurrences in buckets.values():
-        when: dict[str, BDD] = {}
-        for occurrence in occurrences:
-            if occurrence.file in files:
-                when[occurrence.file] = (
-                    when.get(occurrence.file, space.false) | occurrence.condition
-                )
-        alike = frozenset(when.items())
-        if len(when) < 2 or alike in done:
-            continue
-        done.add(alike)
+    for when in declaring:
         clean: list[tuple[str, BDD]] = []
         unclean: list[str] = []
         for file, condition in when.items():
