@@ -268,17 +268,45 @@ def _read(
     ``formula`` is referenced, since nothing runs in CUDD meanwhile: its nodes can be
     neither freed nor moved. ``int`` of a ``dd`` function is its pointer plus 2, and
     CUDD marks a complemented edge in the pointer's lowest bit (``then`` edges never
-    are). Recursive, since a stack kept by hand was half as fast (the depth is at
-    most the number of variables).
+    are).
     """
-    words = _memory()
     weight_of = {
         index: (level, *weight_at[level]) for index, level in _indices(manager, weight_at).items()
     }
-    found = {int(manager.true) - 2: 0}  # regular node's address → its place
-    levels, lows, highs, values = [len(manager.vars)], [0], [0], [total]
+    reader = _Reader(weight_of, total, int(manager.true) - 2, len(manager.vars))
+    pointer = int(formula) - 2
+    negated = pointer & 1
+    root = reader.found.get(pointer ^ negated)
+    if root is None:
+        limit = sys.getrecursionlimit()
+        sys.setrecursionlimit(limit + len(weight_at))
+        try:
+            root = reader.visit(pointer ^ negated)
+        finally:
+            sys.setrecursionlimit(limit)
+    return reader.levels, reader.lows, reader.highs, reader.values, ~root if negated else root
 
-    def visit(node: int) -> int:
+
+class _Reader:
+    """``_read``'s lists as they grow. A class, not a closure over ``_read``'s locals:
+    compiled (mypyc), a recursive closure keeps them in a cycle only the collector
+    frees, the manager included."""
+
+    __slots__ = ("found", "highs", "levels", "lows", "total", "values", "weight_of", "words")
+
+    def __init__(
+        self, weight_of: dict[int, tuple[int, int, int]], total: int, true: int, bottom: int
+    ) -> None:
+        self.words = _memory()
+        self.weight_of = weight_of  # a variable's index → its level and weight
+        self.total = total
+        self.found = {true: 0}  # regular node's address → its place
+        self.levels, self.lows, self.highs, self.values = [bottom], [0], [0], [total]
+
+    def visit(self, node: int) -> int:
+        """Place the node at address ``node`` after its children. Recursive, since a stack
+        kept by hand was half as fast (the depth is at most the number of variables)."""
+        words, found, values = self.words, self.found, self.values
         at = node >> 3
         low, high = words[at + 3], words[at + 2]
         negated = low & 1
@@ -286,12 +314,12 @@ def _read(
             low ^= 1
         low_place = found.get(low)
         if low_place is None:
-            low_place = visit(low)
+            low_place = self.visit(low)
         high_place = found.get(high)
         if high_place is None:
-            high_place = visit(high)
-        level, off, on = weight_of[words[at] & 0xFFFFFFFF]
-        d_low = total - values[low_place] if negated else values[low_place]
+            high_place = self.visit(high)
+        level, off, on = self.weight_of[words[at] & 0xFFFFFFFF]
+        d_low = self.total - values[low_place] if negated else values[low_place]
         d_high = values[high_place]
         if off == on:  # as in ``_combine``, inlined: a call per node costs
             values.append((d_low + d_high) >> 1)
@@ -301,23 +329,11 @@ def _read(
             values.append(d_low)
         else:
             values.append((off * d_low + on * d_high) // (off + on))
-        found[node] = place = len(levels)
-        levels.append(level)
-        lows.append(~low_place if negated else low_place)
-        highs.append(high_place)
+        found[node] = place = len(self.levels)
+        self.levels.append(level)
+        self.lows.append(~low_place if negated else low_place)
+        self.highs.append(high_place)
         return place
-
-    pointer = int(formula) - 2
-    negated = pointer & 1
-    root = found.get(pointer ^ negated)
-    if root is None:
-        limit = sys.getrecursionlimit()
-        sys.setrecursionlimit(limit + len(weight_at))
-        try:
-            root = visit(pointer ^ negated)
-        finally:
-            sys.setrecursionlimit(limit)
-    return levels, lows, highs, values, ~root if negated else root
 
 
 def _primes(count: int) -> list[int]:
