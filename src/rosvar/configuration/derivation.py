@@ -445,10 +445,12 @@ class Derivation:
         without = within = None
         if component is not None:
             examples = (w for w in self._examples if decisions.valid(component, w))
+            exact = must == may  # the usual case: one walk down the diagram answers both
             for witness in chain(decisions.witnesses[component], examples):
-                if without is None and not self._holds(must, witness):
+                holds = self._holds(must, witness) if exact else None
+                if without is None and not (holds if exact else self._holds(must, witness)):
                     without = witness
-                if within is None and self._holds(may, witness):
+                if within is None and (holds if exact else self._holds(may, witness)):
                     within = witness
                 if without is not None and within is not None:
                     return UNDETERMINED, (without, within)
