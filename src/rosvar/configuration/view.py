@@ -29,6 +29,10 @@ CACHED_VIEWS = 4096
 
 Key = tuple[tuple[str, bool, str | None], ...]
 """A list of literals: variable, value and the ``<other>`` text it gives, if any."""
+Strings = frozenset[tuple[Input, str | None]]
+"""The strings of the inputs an element's terms read (None: not known yet)."""
+_Shown = tuple[str, str, str | None, Strings | None]
+"""An element shown: its id, presence, condition and the strings it was rendered with."""
 
 
 @dataclass
@@ -103,10 +107,8 @@ class Views:
                     for feature, _value in catalog.values_of(arg_id):
                         self._reading.setdefault(feature.variable, []).append(index)
                     self._reading.setdefault(arg_id, []).append(index)
-        self._rendered: dict[
-            tuple[str, frozenset[tuple[Input, str | None]] | None], list[Fields]
-        ] = {}
-        self._entries: dict[str, tuple[tuple[str, str | None], list[Fields]]] = {}
+        self._rendered: dict[tuple[str, Strings | None], list[Fields]] = {}
+        self._entries: dict[_Shown, list[Fields]] = {}
         self.initial = self._derive(derivation.initial, {}, None)
         self._views: PrefixCache[tuple[str, bool, str | None], View] = PrefixCache(
             self.initial, CACHED_VIEWS
@@ -250,16 +252,22 @@ class Views:
     def _element_entries(
         self, element: Element, judged: Judged, values: Mapping[str, Values]
     ) -> list[Fields]:
-        """The element's graph entries: none for an absent error, else one per variant."""
+        """The element's graph entries: none for an absent error, else one per variant.
+
+        Made once per verdict and strings its terms read: the same entries serve every
+        state that shows them (a session's later clicks, and other sessions, meet them
+        again)."""
         presence, condition = judged.shown
         if presence == ABSENT and element.kind == "error":
             return []
-        static = not element.inputs or presence == ABSENT
-        entries = self._entries.get(element.id) if static else None
-        if entries is None or entries[0] != (presence, condition):
-            shown = self._fields(element, None if presence == ABSENT else values)
+        given = values[element.entry] if presence != ABSENT and element.inputs else None
+        strings = frozenset((i, given.concrete.get(i)) for i in element.inputs) if given else None
+        key = (element.id, presence, condition, strings)
+        entries = self._entries.get(key)
+        if entries is None:
+            shown = self._fields(element, given, strings)
             extra: Fields = {"nodes": element.nodes} if element.kind == "topic" else {}
-            made = [
+            entries = self._entries[key] = [
                 {
                     **fields,
                     **extra,
@@ -269,18 +277,13 @@ class Views:
                 }
                 for number, fields in enumerate(shown)
             ]
-            entries = ((presence, condition), made)
-            if static:  # the same entries serve every state with this verdict
-                self._entries[element.id] = entries
-        return entries[1]
+        return entries
 
-    def _fields(self, element: Element, values: Mapping[str, Values] | None) -> list[Fields]:
-        """The element's fields: with the state's values, or symbolic (``values`` None).
-
-        Rendered once per combination of the strings its terms read.
-        """
-        given = values[element.entry] if values is not None and element.inputs else None
-        strings = frozenset((i, given.concrete.get(i)) for i in element.inputs) if given else None
+    def _fields(
+        self, element: Element, given: Values | None, strings: Strings | None
+    ) -> list[Fields]:
+        """The element's fields: with the strings ``given`` for its inputs, or symbolic
+        (``given`` None). Rendered once per combination of the strings its terms read."""
         key = (element.id, strings)
         found = self._rendered.get(key)
         if found is None:
