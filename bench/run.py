@@ -20,6 +20,7 @@ import argparse
 import cProfile
 import datetime
 import gc
+import importlib.util
 import io
 import itertools
 import json
@@ -38,6 +39,7 @@ import tempfile
 import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from importlib.machinery import EXTENSION_SUFFIXES
 from pathlib import Path
 from typing import Any
 from xml.dom import minidom
@@ -849,8 +851,18 @@ def _machine() -> str:
     return (
         f"{os.cpu_count()} CPUs (nproc {len(os.sched_getaffinity(0))}), {cpu}; "
         f"Python {platform.python_version()} ({platform.python_implementation()}); "
-        f"{platform.system()} {platform.release()}"
+        f"{platform.system()} {platform.release()}; rosvar {_build()}"
     )
+
+
+def _build() -> str:
+    """Whether the measured rosvar is the compiled build (setup.py) or plain Python sources."""
+    spec = importlib.util.find_spec("rosvar.interpreter.interpretation")
+    origin = spec.origin if spec is not None else None
+    if origin is None:
+        return "not found"
+    kind = "compiled by mypyc" if origin.endswith(tuple(EXTENSION_SUFFIXES)) else "plain Python"
+    return f"{kind} ({Path(origin).parent.parent.parent})"
 
 
 def _revision() -> str:

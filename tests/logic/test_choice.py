@@ -70,7 +70,7 @@ def y_true(space: ConditionSpace) -> BDD:
 # -- construction and merging -------------------------------------------------------------------
 def test_equal_leaves_share_one_branch(space: ConditionSpace) -> None:
     a, b, c = x_is(space, "a"), x_is(space, "b"), x_is(space, "c")
-    choice = Choice([(a, "one"), (b, "two"), (c, "one")])
+    choice = Choice.of([(a, "one"), (b, "two"), (c, "one")])
     assert len(choice) == 2
     assert sorted(choice.values()) == ["one", "two"]
     conditions = dict((v, cond) for cond, v in choice)
@@ -79,19 +79,21 @@ def test_equal_leaves_share_one_branch(space: ConditionSpace) -> None:
 
 
 def test_unhashable_leaves_merge_by_value(space: ConditionSpace) -> None:
-    choice = Choice([(x_is(space, "a"), [1, 2]), (x_is(space, "b"), [1, 2]), (y_true(space), {})])
+    choice = Choice.of(
+        [(x_is(space, "a"), [1, 2]), (x_is(space, "b"), [1, 2]), (y_true(space), {})]
+    )
     assert len(choice) == 2
     assert choice.where(lambda v: v == [1, 2]) == x_is(space, "a", "b")
 
 
 def test_false_branches_are_dropped(space: ConditionSpace) -> None:
-    assert len(Choice([(space.false, "x")])) == 0
-    assert Choice([(space.false, "x"), (x_is(space, "a"), "y")]).values() == ["y"]
-    assert Choice([(space.false, "x")]).single() is None
+    assert len(Choice.of([(space.false, "x")])) == 0
+    assert Choice.of([(space.false, "x"), (x_is(space, "a"), "y")]).values() == ["y"]
+    assert Choice.of([(space.false, "x")]).single() is None
 
 
 def test_leaves_of_different_types_stay_apart(space: ConditionSpace) -> None:
-    choice = Choice([(x_is(space, "a"), 1), (x_is(space, "b"), True), (x_is(space, "c"), 1.0)])
+    choice = Choice.of([(x_is(space, "a"), 1), (x_is(space, "b"), True), (x_is(space, "c"), 1.0)])
     assert len(choice) == 3
     picked = {
         type(value_in(space, choice, config))
@@ -105,7 +107,7 @@ def test_const_single_and_covered(space: ConditionSpace) -> None:
     choice = Choice.const(space, "v")
     assert choice.single() == "v"
     assert choice.covered() == space.true
-    two = Choice([(x_is(space, "a"), "p"), (x_is(space, "b"), "q")])
+    two = Choice.of([(x_is(space, "a"), "p"), (x_is(space, "b"), "q")])
     assert two.single() is None
     assert two.covered() == x_is(space, "a", "b")
     assert "p" in repr(two) and "q" in repr(two)
@@ -113,19 +115,19 @@ def test_const_single_and_covered(space: ConditionSpace) -> None:
 
 # -- map, bind, restrict, where -----------------------------------------------------------------
 def test_map_merges_what_becomes_equal(space: ConditionSpace) -> None:
-    choice = Choice([(x_is(space, "a"), "A"), (x_is(space, "b"), "a"), (x_is(space, "c"), "B")])
+    choice = Choice.of([(x_is(space, "a"), "A"), (x_is(space, "b"), "a"), (x_is(space, "c"), "B")])
     lowered = choice.map(str.lower)
     assert len(lowered) == 2
     assert lowered.where(lambda v: v == "a") == x_is(space, "a", "b")
 
 
 def test_bind_flattens_and_drops_impossible_pairs(space: ConditionSpace) -> None:
-    outer = Choice([(x_is(space, "a"), "A"), (~x_is(space, "a"), "notA")])
+    outer = Choice.of([(x_is(space, "a"), "A"), (~x_is(space, "a"), "notA")])
 
     def inner(leaf: str) -> Choice[str]:
         # the inner choice conflicts with the outer branch "A" in its first branch
         b = x_is(space, "b")
-        return Choice([(b, leaf + "/b"), (~b & y_true(space), leaf + "/y")])
+        return Choice.of([(b, leaf + "/b"), (~b & y_true(space), leaf + "/y")])
 
     bound = outer.bind(inner)
     assert_disjoint(space, bound)
@@ -145,7 +147,7 @@ def test_bind_flattens_and_drops_impossible_pairs(space: ConditionSpace) -> None
 
 
 def test_restrict_where(space: ConditionSpace) -> None:
-    choice = Choice([(x_is(space, "a"), "p"), (~x_is(space, "a"), "q")])
+    choice = Choice.of([(x_is(space, "a"), "p"), (~x_is(space, "a"), "q")])
     restricted = choice.restrict(y_true(space) & x_is(space, "a"))
     assert restricted.values() == ["p"]
     assert choice.where(lambda v: v == "nothing") == space.false
@@ -191,15 +193,15 @@ def test_ite_agrees_with_per_configuration_choice(space: ConditionSpace) -> None
 # -- combine --------------------------------------------------------------------------------------
 def test_combine_prunes_impossible_combinations(space: ConditionSpace) -> None:
     a = x_is(space, "a")
-    first = Choice([(a, "1"), (~a, "2")])
-    second = Choice([(a, "p"), (~a, "q")])
+    first = Choice.of([(a, "1"), (~a, "2")])
+    second = Choice.of([(a, "p"), (~a, "q")])
     combined = combine([first, second], lambda vs: "".join(vs))
     assert sorted(combined.values()) == ["1p", "2q"]  # not the 4 of a plain cross product
 
 
 def test_combine_is_the_cross_product_of_independent_choices(space: ConditionSpace) -> None:
-    first = Choice([(x_is(space, "a"), "1"), (~x_is(space, "a"), "2")])
-    second = Choice([(y_true(space), "p"), (~y_true(space), "q")])
+    first = Choice.of([(x_is(space, "a"), "1"), (~x_is(space, "a"), "2")])
+    second = Choice.of([(y_true(space), "p"), (~y_true(space), "q")])
     combined = combine([first, second], lambda vs: "".join(vs))
     assert sorted(combined.values()) == ["1p", "1q", "2p", "2q"]
     assert combined.where(lambda v: v == "1q") == x_is(space, "a") & ~y_true(space)
@@ -224,7 +226,7 @@ def test_combine_agrees_with_per_configuration_values(space: ConditionSpace) -> 
 
 
 def test_combine_keeps_failures_as_leaves(space: ConditionSpace) -> None:
-    failing = Choice([(x_is(space, "a"), Fail("boom")), (~x_is(space, "a"), "ok")])
+    failing = Choice.of([(x_is(space, "a"), Fail("boom")), (~x_is(space, "a"), "ok")])
     combined = combine(
         [failing, Choice.const(space, "!")],
         lambda vs: vs[0] if isinstance(vs[0], Fail) else vs[0] + vs[1],
@@ -255,7 +257,7 @@ def _random_choice(space: ConditionSpace, rng: random.Random, tag: str) -> Choic
             branches.append((x_is(space, slot) & ~y_true(space), f"{tag}{rng.randint(0, 2)}"))
         else:
             branches.append((x_is(space, slot), leaf))
-    return Choice(branches)
+    return Choice.of(branches)
 
 
 def test_constants_are_shared_within_a_space_only(space: ConditionSpace) -> None:

@@ -89,7 +89,7 @@ class Constraint:
     unconditional: bool = False
 
 
-class ModelTooLarge(RuntimeError):
+class ModelTooLarge(Exception):
     """The solver's BDDs would outgrow their budget: the model is listed, not solved."""
 
 

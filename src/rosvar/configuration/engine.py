@@ -126,13 +126,22 @@ class _Replay:
 class Configurator:
     """Built once per workspace; answers any list of user choices (stateless)."""
 
-    @collector_paused()  # a long-lived heap: left young, the collector rescanned it each step
     def __init__(
         self,
         analysis: Analysis,
         model: FeatureModel,
         env: Mapping[str, str] | None = None,
         spelling: Mapping[str, str] | None = None,
+    ) -> None:
+        self._build(analysis, model, env, spelling)
+
+    @collector_paused()  # a long-lived heap: left young, the collector rescanned it each step
+    def _build(
+        self,
+        analysis: Analysis,
+        model: FeatureModel,
+        env: Mapping[str, str] | None,
+        spelling: Mapping[str, str] | None,
     ) -> None:
         self.analysis = analysis
         self.model = model

@@ -187,7 +187,7 @@ class VariationalGraph:
         keys = sorted(node.fields)
         space = model.space
         switches: list[Choice[object]] = [
-            Choice([(c, True), (~c, False)], space.false)
+            Choice.of([(c, True), (~c, False)], space.false)
             for c in [r.condition for r in node.remaps] + [e.condition for e in node.env]
         ]
         fields: list[Choice[object]] = [node.fields[k] for k in keys]

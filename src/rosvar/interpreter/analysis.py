@@ -89,6 +89,12 @@ class Analysis:
             file,
             self.files,
         )
+        try:
+            return self._run(it, file)
+        finally:
+            it.close()
+
+    def _run(self, it: Interpretation, file: str) -> LaunchModel:
         it.stack.append(real_path(file))
         root = it.load(file)
         model = it.model

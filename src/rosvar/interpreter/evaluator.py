@@ -159,13 +159,9 @@ _STR_METHODS: Final = frozenset(
 )  # fmt: skip
 #: Bare names that never read a launch arg.  Whitelisted builtins are included: they would
 #: only read an arg that shadows the builtin, which real launch files do not declare.
-_NOT_ARG_NAMES: Final = (
-    _HOST_FUNCTION_NAMES | _BOOL_NAMES.keys() | _MATH_NAMES.keys() | _BUILTIN_FUNCTIONS.keys()
-)
-_CALLABLE_NAMES: Final = (
-    _HOST_FUNCTION_NAMES
-    | {name for name, value in _MATH_NAMES.items() if callable(value)}
-    | _BUILTIN_FUNCTIONS.keys()
+_NOT_ARG_NAMES: Final = _HOST_FUNCTION_NAMES.union(_BOOL_NAMES, _MATH_NAMES, _BUILTIN_FUNCTIONS)
+_CALLABLE_NAMES: Final = _HOST_FUNCTION_NAMES.union(
+    (name for name, value in _MATH_NAMES.items() if callable(value)), _BUILTIN_FUNCTIONS
 )
 _LITERAL_TYPES: Final = (str, int, float, bool, type(None))
 _CONVERSION_FUNCTIONS: Final = frozenset({"str", "int", "float"})
@@ -352,8 +348,8 @@ def _parse(expr: str) -> tuple[ast.Expression, _Source]:
     except SyntaxError as exc:
         col = source.offset(exc.lineno, (exc.offset or 1) - 1)
         raise EvalRefused(f"invalid Python expression: {exc.msg}", col) from None
-    except (ValueError, RecursionError, MemoryError) as exc:
-        raise EvalRefused(f"cannot parse expression: {exc}", source.prefix) from None
+    except (ValueError, RecursionError, MemoryError) as unparsable:
+        raise EvalRefused(f"cannot parse expression: {unparsable}", source.prefix) from None
     return tree, source
 
 
@@ -834,8 +830,8 @@ class _Interpreter:
             raise
         except (RecursionError, MemoryError):
             raise
-        except Exception as exc:
-            raise EvalFailed(f"{type(exc).__name__}: {exc}", self._col(node)) from exc
+        except Exception as failure:
+            raise EvalFailed(f"{type(failure).__name__}: {failure}", self._col(node)) from failure
 
     def tick(self) -> None:
         """Count one comprehension iteration or function call."""

@@ -9,7 +9,6 @@ the functions registered in :data:`TAGS` (see :mod:`rosvar.interpreter.tags`).
 from __future__ import annotations
 
 import functools
-import weakref
 from collections.abc import Callable, Sequence
 from typing import Any, Concatenate, ParamSpec, TypeVar
 
@@ -86,6 +85,8 @@ register_predicate("false", _falsy, "{} is false")
 class Interpretation:
     """State of one symbolic roslaunch run over one or more entry files."""
 
+    __deletable__ = ("substituter",)  # by ``close`` (a compiled class declares it)
+
     def __init__(
         self,
         workspace: Workspace,
@@ -102,9 +103,9 @@ class Interpretation:
         self._env_domains = env_domains
         self.sink = DiagnosticSink()
         self.pc: BDD = space.true
-        # A weak reference: a cycle would let the garbage collector free BDD nodes
-        # after their manager, which CUDD reports as an error.
-        self.substituter = Substituter(weakref.proxy(self))
+        # A cycle (broken by ``close``): left to the garbage collector, it could free BDD
+        # nodes after their manager, which CUDD reports as an error.
+        self.substituter = Substituter(self)
         inputs: dict[str, ArgInput] = {}
         self.model = LaunchModel(file=file, space=space, inputs=inputs, domains={})
         self.default_machine: Choice[Raw | None] = Choice.const(space, None)
@@ -113,6 +114,10 @@ class Interpretation:
         self._location = Location(file)
 
     # -- Host protocol for substitution ------------------------------------------------
+    def close(self) -> None:
+        """Drop the substituter: reference counting then frees this run's BDDs."""
+        del self.substituter
+
     def find_package(self, name: str) -> str | None:
         return self.workspace.find(name)
 
@@ -138,7 +143,7 @@ class Interpretation:
                 branches.append((atom, Hole(input_)))
             else:
                 branches.append((atom, slot))
-        return Choice(branches)
+        return Choice.of(branches)
 
     def new_anon(self, scope: Scope, anon_id: str) -> Choice[Raw]:
         pc = self.pc
@@ -148,7 +153,7 @@ class Interpretation:
         base = anon_id.replace(".", "_").replace("-", "_").replace(":", "_")
         self.model.anon_ids.add(base)
         names = current.map(lambda n: f"{base}_anon{n + 1}")
-        self.anon_count = Choice(
+        self.anon_count = Choice.of(
             [(c & pc, n + 1) for c, n in current] + [(c & ~pc, n) for c, n in current]
         )
         return names
@@ -207,7 +212,7 @@ class Interpretation:
                 self.fail(condition, leaf.code, message)
             else:
                 good.append((condition, leaf))
-        return Choice(good, self.space.false)
+        return Choice.of(good, self.space.false)
 
     def lift(self, name: str, *operands: Choice[Raw], context: str = "") -> Choice[Raw]:
         """A lifted name function (see :mod:`rosvar.interpreter.lifted`), failures recorded.

@@ -383,8 +383,10 @@ class Substituter:
             return Choice.const(
                 space, Fail(f"$(eval {expression}): {error.message}", "eval-refused")
             )
-        except _Undecidable as error:
-            return Choice.const(space, Fail(f"$(eval {expression}): {error}", "eval-undecidable"))
+        except _Undecidable as undecidable:
+            return Choice.const(
+                space, Fail(f"$(eval {expression}): {undecidable}", "eval-undecidable")
+            )
         arg_choices = [scope.args.get(n, Choice.const(space, MISSING)) for n in arg_names]
         env_choices = [self.host.env_value(n) for n in env_names]
         filename = scope.filename
@@ -493,8 +495,8 @@ def _run_eval(
         return evaluate(expression, environment)
     except EvalRefused as error:
         return Fail(f"$(eval {expression}): {error.message}", "eval-refused")
-    except EvalFailed as error:
-        return Fail(f"$(eval {expression}): {error.message}", "eval-failed")
+    except EvalFailed as failure:
+        return Fail(f"$(eval {expression}): {failure.message}", "eval-failed")
 
 
 def _eval_term(host: object, expression: str, *operands: object) -> str:

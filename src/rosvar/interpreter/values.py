@@ -79,12 +79,11 @@ def float_attribute(value: str | None, default: float, label: str) -> float:
 _SafeLoader: type[yaml.SafeLoader] = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
 
-class RosparamLoader(_SafeLoader):  # type: ignore[valid-type,misc]
-    """``yaml.SafeLoader`` with rosparam's additions (``!degrees``, ``!radians``, binary).
-
-    rosparam registers these on PyYAML's global SafeLoader; a subclass keeps the
-    behaviour without touching global state.
-    """
+# ``yaml.SafeLoader`` with rosparam's additions (``!degrees``, ``!radians``, binary).
+# rosparam registers these on PyYAML's global SafeLoader; a subclass keeps the behaviour
+# without touching global state. It is made by ``type`` so that it stays an ordinary
+# Python class when this module is compiled (a compiled subclass of the C loader crashes).
+RosparamLoader: type[yaml.SafeLoader] = type("RosparamLoader", (_SafeLoader,), {})
 
 
 def _radians(loader: yaml.SafeLoader, node: yaml.Node) -> float:

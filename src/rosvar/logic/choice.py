@@ -50,28 +50,30 @@ class Choice(Generic[T]):
 
     __slots__ = ("branches", "false")
 
-    def __init__(self, branches: Iterable[tuple[BDD, T]], false: BDD = None) -> None:
-        """``false`` (the manager's false) is needed only when ``branches`` may be empty."""
-        self.branches: tuple[tuple[BDD, T], ...]
+    def __init__(self, branches: tuple[tuple[BDD, T], ...], false: BDD) -> None:
+        """Branches already merged and possible; ``Choice.of`` makes any branches so."""
+        self.branches = branches
+        self.false = false
+
+    @staticmethod
+    def of(branches: Iterable[tuple[BDD, U]], false: BDD = None) -> Choice[U]:
+        """Equal leaves merged, impossible branches dropped; ``false`` (the manager's false)
+        is needed only when ``branches`` may be empty."""
         if isinstance(branches, list) and len(branches) == 1:  # the common constant case
             condition = branches[0][0]
-            self.false = condition.bdd.false if false is None else false
-            self.branches = () if condition == self.false else (branches[0],)
-            return
+            if false is None:
+                false = condition.bdd.false
+            return Choice(() if condition == false else (branches[0],), false)
         merged = _merged(branches)
         if false is None and merged:
             false = merged[0][0].bdd.false
-        self.false = false
-        self.branches = tuple(branch for branch in merged if branch[0] != false)
+        return Choice(tuple(branch for branch in merged if branch[0] != false), false)
 
     @staticmethod
     def _of_possible(branches: list[tuple[BDD, U]], false: BDD) -> Choice[U]:
         """The constructor for branches whose conditions are known not to be false (taken
         from a choice, or just checked): equal leaves merged, nothing compared again."""
-        choice: Choice[U] = object.__new__(Choice)
-        choice.branches = _merged(branches) if len(branches) > 1 else tuple(branches)
-        choice.false = false
-        return choice
+        return Choice(_merged(branches) if len(branches) > 1 else tuple(branches), false)
 
     @staticmethod
     def const(space: ConditionSpace, leaf: U) -> Choice[U]:
@@ -81,9 +83,7 @@ class Choice(Generic[T]):
             known: Choice[U] | None = space.constants.get(leaf)
             if known is not None:
                 return known
-        choice: Choice[U] = object.__new__(Choice)  # skips Generic's __new__: a hot path
-        choice.branches = ((space.true, leaf),)
-        choice.false = space.false
+        choice = Choice(((space.true, leaf),), space.false)
         if shared:
             space.constants[leaf] = choice
         return choice
@@ -91,7 +91,7 @@ class Choice(Generic[T]):
     @staticmethod
     def empty(space: ConditionSpace) -> Choice[U]:
         """No value in any configuration (every branch failed)."""
-        return Choice([], space.false)
+        return Choice((), space.false)
 
     def __iter__(self) -> Iterator[tuple[BDD, T]]:
         return iter(self.branches)
@@ -130,7 +130,7 @@ class Choice(Generic[T]):
         """
         if condition.var is None and condition != self.false:
             return self
-        return Choice([(c & condition, v) for c, v in self.branches], self.false)
+        return Choice.of([(c & condition, v) for c, v in self.branches], self.false)
 
     def where(self, predicate: Callable[[T], bool]) -> BDD:
         """The condition under which the value satisfies ``predicate``."""
@@ -171,7 +171,7 @@ def ite(space: ConditionSpace, condition: BDD, then: Choice[V], otherwise: Choic
         return then
     if condition == space.false:
         return otherwise
-    return Choice(
+    return Choice.of(
         [(c & condition, v) for c, v in then.branches]
         + [(c & ~condition, v) for c, v in otherwise.branches],
         space.false,
@@ -186,7 +186,7 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
     Combinations come in the order of a nested loop over the operands, first outermost.
     """
     if not choices:
-        return Choice([], None)
+        return Choice((), None)
     false = choices[0].false
     joint = None  # conjunction of the single branches' conditions; None stands for true
     varying: list[int] = []
@@ -204,7 +204,7 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
         elif condition is not joint:  # constants share the space's true: nothing to do
             joint = joint & condition
     if not varying:
-        return Choice([(joint, function(leaves))], false)
+        return Choice.of([(joint, function(leaves))], false)
     if joint is not None and joint.var is None and joint != false:  # true: nothing to conjoin
         joint = None
     partial: list[tuple[BDD, list[V]]] = [(joint, leaves)]

@@ -51,9 +51,9 @@ def load_hints(path: str | None) -> Hints:
             loader.dispose()
     except OSError as error:
         return problem(f"cannot read hints file: {error.strerror}")
-    except yaml.YAMLError as error:
-        mark = getattr(error, "problem_mark", None)
-        return problem(f"invalid YAML: {error}", mark.line + 1 if mark else 1)
+    except yaml.YAMLError as invalid:
+        mark = getattr(invalid, "problem_mark", None)
+        return problem(f"invalid YAML: {invalid}", mark.line + 1 if mark else 1)
     if root is None:
         return hints
     if not isinstance(root, yaml.MappingNode):

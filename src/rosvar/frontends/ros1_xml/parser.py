@@ -194,8 +194,13 @@ def _parse(data: bytes, filename: str, watch: str | None) -> tuple[ParseResult, 
         if exc.code in _ENCODING_ERRORS:
             return _error("xml-encoding", f"bad encoding: {reason}", location), []
         return _error("xml-malformed", f"malformed XML: {reason}", location), []
-    except (ValueError, LookupError) as exc:  # pyexpat: "multi-byte encodings are not supported"
-        return _error("xml-encoding", f"unsupported encoding: {exc}", Location(filename, 1, 1)), []
+    except (
+        ValueError,
+        LookupError,
+    ) as unsupported:  # pyexpat: "multi-byte encodings are not supported"
+        return _error(
+            "xml-encoding", f"unsupported encoding: {unsupported}", Location(filename, 1, 1)
+        ), []
     except RecursionError:
         return _error("xml-too-deep", "document too deeply nested", Location(filename, 1, 1)), []
     finally:
@@ -258,8 +263,8 @@ def _read_bytes(
                 data += handle.read(MAX_FILE_BYTES + 1 - len(data))
     except ValueError as exc:  # e.g. an embedded NUL in the name
         return _error("file-unreadable", f"cannot read file: {exc}", Location(name, 1, 1))
-    except OSError as exc:
-        reason = exc.strerror or str(exc)
+    except OSError as failure:
+        reason = failure.strerror or str(failure)
         return _error("file-unreadable", f"cannot read file: {reason}", Location(name, 1, 1))
     if len(data) > MAX_FILE_BYTES:  # grew after stat
         return _too_large(name, len(data))

@@ -99,10 +99,10 @@ def handle_param(it: Interpretation, entity: Entity, scope: Scope, force_local: 
                         "param-name-unknown",
                         f"param name {key} is only known per configuration",
                     )
-                continue
-            joined = it.lift("ns_join", scope.ns, Choice.const(it.space, name))
-            full = it.lift("canonicalize", joined)
-            it.model.params.append(ParamDecl(it.pc, entity.location, full, value, "param"))
+            else:
+                joined = it.lift("ns_join", scope.ns, Choice.const(it.space, name))
+                full = it.lift("canonicalize", joined)
+                it.model.params.append(ParamDecl(it.pc, entity.location, full, value, "param"))
 
 
 @tag("param")
