@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import gc
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import pytest
 
@@ -11,7 +11,6 @@ from configuration.helpers import choices, configurator, present, run, states
 from rosvar.analyses.features import count_configurations
 from rosvar.configuration.choices import ChoiceError
 from rosvar.configuration.engine import Configurator
-from rosvar.configuration.view import View
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -115,18 +114,29 @@ def test_included_file_is_not_launched_on_its_own(engine: Configurator) -> None:
 def test_a_step_runs_without_the_collector_and_restores_it(
     engine: Configurator, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    collecting: list[bool] = []
-    derive = engine.views.view
+    """Were the collector running during the step, its thousands of allocations would
+    start collections at a threshold of 100 (the few before and after it do not)."""
+    started: list[int] = []
 
-    def view(*args: Any) -> View:
-        collecting.append(gc.isenabled())
-        return derive(*args)
+    def record(phase: str, info: dict[str, int]) -> None:
+        if phase == "start":
+            started.append(info["generation"])
 
-    monkeypatch.setattr(engine.views, "view", view)
-    assert gc.isenabled()
-    run(engine, "set main.launch:cam=true", "set camera.launch:fps=60")
-    assert collecting == [False]
-    assert gc.isenabled()
+    chosen = choices("set main.launch:cam=true", "set camera.launch:fps=60")
+    threshold = gc.get_threshold()
+    gc.collect()
+    gc.callbacks.append(record)
+    gc.set_threshold(100)
+    try:
+        assert gc.isenabled()
+        state = engine.state(chosen)
+        assert started == []
+        assert gc.isenabled()
+        gc.collect(0)  # the hook does see collections
+    finally:
+        gc.set_threshold(*threshold)
+        gc.callbacks.remove(record)
+    assert started and not state.refused and len(state.choices) == 2
 
 
 def test_completion_reaches_a_complete_product(engine: Configurator) -> None:

@@ -9,7 +9,7 @@ declarations sharing a bucket are compared.
 from __future__ import annotations
 
 from collections import defaultdict
-from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 
 from rosvar.diagnostics import Location
@@ -46,24 +46,27 @@ class Clash:
         return (self.first.file, self.second.file)
 
 
-def _written_in(file: str) -> Callable[[str], bool]:
+class _WrittenIn:
     """Whether a location's file is ``file``, symlinks resolved once per distinct path
-    (a model holds thousands of elements from a handful of included files)."""
-    target = real_path(file)
-    seen: dict[str, bool] = {file: True}
+    (a model holds thousands of elements from a handful of included files).
 
-    def test(other: str) -> bool:
-        found = seen.get(other)
+    A class, not a closure: compiled, a returned closure and its variables form a cycle
+    that only the garbage collector frees."""
+
+    def __init__(self, file: str) -> None:
+        self._target = real_path(file)
+        self._seen = {file: True}
+
+    def __call__(self, other: str) -> bool:
+        found = self._seen.get(other)
         if found is None:
-            found = seen[other] = real_path(other) == target
+            found = self._seen[other] = real_path(other) == self._target
         return found
-
-    return test
 
 
 def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
     """Nodes and params written in ``model.file`` itself (Algorithm 1's GETELEMENTS)."""
-    own = _written_in(model.file)
+    own = _WrittenIn(model.file)
     for node in model.nodes:
         if not node.is_test and own(node.location.file):
             yield from _node_occurrences(model, node)
@@ -91,7 +94,7 @@ def repeated_inclusions(model: LaunchModel) -> list[Clash]:
     them; only a declaration meeting itself, through two includes, is the entry
     file's own clash.
     """
-    own = _written_in(model.file)
+    own = _WrittenIn(model.file)
     seen: dict[tuple[str, Location], list[Occurrence]] = defaultdict(list)
     found: list[Clash] = []
     for node in model.nodes:

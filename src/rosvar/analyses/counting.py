@@ -28,6 +28,7 @@ from functools import cache, cached_property
 from typing import TYPE_CHECKING, TypeAlias
 
 import dd.cudd as _cudd
+from mypy_extensions import mypyc_attr
 
 from rosvar.interpreter.analysis import collector_paused
 from rosvar.logic.conditions import BDD
@@ -44,6 +45,8 @@ VECTOR_FROM = 2_000
 """A recount over at least this many nodes runs in numpy; fewer are cheaper one by one."""
 
 
+# a Python class when compiled: mypyc makes a native class's cached_property a property
+@mypyc_attr(native_class=False)
 class CountedDiagram:
     """A BDD counted exactly under some weights, then again under others.
 
@@ -372,16 +375,28 @@ def moduli() -> list[int]:
     return _primes(64)
 
 
-@dataclass(frozen=True)
 class _Level:
     """The nodes of one level: their places, and their children's (``negated``: the low
-    edge is complemented)."""
+    edge is complemented; None: no low edge of the level is).
 
-    level: int
-    places: Array
-    lows: Array
-    highs: Array
-    negated: npt.NDArray[np.bool_] | None  # None: no low edge of the level is complemented
+    Not a dataclass: a compiled dataclass needs its field types at run time, and numpy is
+    only imported on first use."""
+
+    __slots__ = ("highs", "level", "lows", "negated", "places")
+
+    def __init__(
+        self,
+        level: int,
+        places: Array,
+        lows: Array,
+        highs: Array,
+        negated: npt.NDArray[np.bool_] | None,
+    ) -> None:
+        self.level = level
+        self.places = places
+        self.lows = lows
+        self.highs = highs
+        self.negated = negated
 
 
 @dataclass(frozen=True)

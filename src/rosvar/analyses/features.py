@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 import dd.cudd as _cudd
+from mypy_extensions import mypyc_attr
 
 from rosvar.analyses.conflicts import Clash, Occurrence, clashes, index, repeated_inclusions
 from rosvar.analyses.counting import CountedDiagram, Weight
@@ -93,6 +94,8 @@ class ModelTooLarge(Exception):
     """The solver's BDDs would outgrow their budget: the model is listed, not solved."""
 
 
+# a Python class when compiled: mypyc makes a native class's cached_property a property
+@mypyc_attr(native_class=False)
 @dataclass
 class FeatureModel:
     """The feature tree and its cross-tree constraints, with the solver that answers on them.
@@ -166,24 +169,12 @@ def graph_inputs(model: LaunchModel) -> set[ArgInput]:
     true = space.true
     conditions: set[BDD] = set()  # elements share conditions: each support is taken once
     terms: set[ArgInput] = set()
-    seen: set[int] = set()  # and choices (one per literal, shared): each is read once
-
-    def add_choice(choice: Choice[object]) -> None:
-        if id(choice) in seen:
-            return
-        seen.add(id(choice))
-        for condition, leaf in choice:
-            if condition != true:
-                conditions.add(condition)
-            if isinstance(leaf, DeferredValue):
-                leaf = leaf.raw
-            if isinstance(leaf, _TERMS):
-                terms.update(_term_inputs(leaf))
-
+    choices: dict[int, Choice[object]] = {}  # and choices (one per literal, shared): by id
     for node in model.nodes:
         conditions.add(node.condition)
         for key in ("name", "namespace", "pkg", "type", "args", "machine"):
-            add_choice(node.fields[key])
+            field_value = node.fields[key]
+            choices[id(field_value)] = field_value
         for remap in node.remaps:
             conditions.add(remap.condition)
             for raw in (remap.source, remap.target):
@@ -192,8 +183,16 @@ def graph_inputs(model: LaunchModel) -> set[ArgInput]:
     for param in model.params:
         conditions.add(param.condition)
         if isinstance(param, ParamDecl):
-            add_choice(param.name)
-            add_choice(param.value)
+            choices[id(param.name)] = param.name
+            choices[id(param.value)] = param.value
+    for choice in choices.values():
+        for condition, leaf in choice:
+            if condition != true:
+                conditions.add(condition)
+            if isinstance(leaf, DeferredValue):
+                leaf = leaf.raw
+            if isinstance(leaf, _TERMS):
+                terms.update(_term_inputs(leaf))
     support: set[str] = set()
     for condition in conditions:
         support |= space.support(condition)
@@ -476,6 +475,8 @@ def _force(files: list[str], neighbours: Mapping[str, set[str]]) -> list[str]:
     return best
 
 
+# a Python class when compiled: mypyc makes a native class's cached_property a property
+@mypyc_attr(native_class=False)
 class Component:
     """Files linked by cross-tree constraints, and their formula.
 
@@ -583,6 +584,8 @@ def _arg_trees(manager: _cudd.BDD, args: Sequence[tuple[str, list[str]]]) -> lis
     return trees
 
 
+# a Python class when compiled: mypyc makes a native class's cached_property a property
+@mypyc_attr(native_class=False)
 class Solver:
     """The feature model as BDDs in a manager of its own, ordered for it.
 

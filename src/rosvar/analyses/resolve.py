@@ -194,9 +194,9 @@ def resolve(
 def _restrict(
     r: _Restriction, model: LaunchModel, result: Resolution, seen: dict[str, Location]
 ) -> None:
-    for error in model.errors:
-        if r.holds(error.condition):
-            raise ResolutionError(error.code, error.message, error.location)
+    for event in model.errors:
+        if r.holds(event.condition):
+            raise ResolutionError(event.code, event.message, event.location)
     for include in model.includes:
         if not include.resolved and r.holds(include.condition):
             file = r.pick(include.file, include.location, "<include> file")

@@ -266,7 +266,7 @@ class Derivation:
             key = (bounds.must, bounds.may, frozenset(values.items()))
             restricted = self._restricted.get(key)
             if restricted is None:
-                restricted = self._restrict(bounds, values, support - values.keys())
+                restricted = self._restrict(bounds, values, support.difference(values))
                 self._restricted[key] = restricted
             verdict, must, may, components = restricted
             if verdict is not None:
@@ -444,7 +444,8 @@ class Derivation:
         """
         without = within = None
         if component is not None:
-            examples = (w for w in self._examples if decisions.valid(component, w))
+            # filter, not a generator expression: compiled, that would test every example
+            examples = filter(lambda w: decisions.valid(component, w), self._examples)
             exact = must == may  # the usual case: one walk down the diagram answers both
             for witness in chain(decisions.witnesses[component], examples):
                 holds = self._holds(must, witness) if exact else None

@@ -13,6 +13,8 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 
+from mypy_extensions import mypyc_attr
+
 from rosvar.analyses.features import FeatureModel, explain
 from rosvar.configuration.catalog import Catalog, Feature
 from rosvar.configuration.choices import ChoiceError, Refusal, UserChoice
@@ -32,6 +34,8 @@ CACHED_STEPS = 4096
 EXACT_INTEGER = 2**53  # larger counts go to JSON as strings
 
 
+# a Python class when compiled: mypyc makes a native class's cached_property a property
+@mypyc_attr(native_class=False)
 @dataclass(frozen=True)
 class FeatureState:
     """One feature's state; the engine hands out one object per feature and state, so
@@ -65,6 +69,8 @@ _Row = tuple[str, str, dict[tuple[bool | None, bool], FeatureState]]
 """A feature's id, its variable and its states by (decided value, chosen by the user)."""
 
 
+# a Python class when compiled: mypyc makes a native class's cached_property a property
+@mypyc_attr(native_class=False)
 @dataclass
 class ConfigurationState:
     choices: list[UserChoice]

@@ -94,17 +94,7 @@ class Sat:
         """``u`` as clauses over feature variables (one per path to FALSE); None when
         there would be more than ``PATHS``."""
         false = self.manager.false
-        counts: dict[BDD, int] = {}
-
-        def paths(v: BDD) -> int:
-            if v.var is None:
-                return int(v == false)
-            found = counts.get(v)
-            if found is None:
-                found = counts[v] = sum(paths(child) for child in cofactors(v))
-            return found
-
-        if paths(u) > PATHS:
+        if _false_paths(u, false, {}) > PATHS:
             return None
         clauses: list[Clause] = []
         stack: list[tuple[BDD, Clause]] = [(u, [])]
@@ -133,11 +123,7 @@ class Sat:
     def _translate(self, root: BDD) -> None:
         """Clauses for every node under ``root`` not translated yet, children first."""
         nodes, clauses = self._nodes, []
-
-        def inner(node: BDD) -> list[BDD]:
-            return [c for c in (_regular(node.low), _regular(node.high)) if c.var is not None]
-
-        for node in children_first(root, inner, nodes):
+        for node in children_first(root, _inner_children, nodes):
             n, x = self._variable(), self._atoms[node.var]
             nodes[node] = n
             low, high = self._literal(node.low), self._literal(node.high)
@@ -190,3 +176,20 @@ class Sat:
 def _regular(u: BDD) -> BDD:
     """The node of ``u`` without its complement mark."""
     return ~u if u.negated else u
+
+
+def _false_paths(v: BDD, false: BDD, counts: dict[BDD, int]) -> int:
+    """How many paths lead from ``v`` to FALSE (``counts``: those known, by node).
+
+    A function, not a closure: compiled, a recursive closure and the variables of its
+    caller form a cycle that only the garbage collector frees."""
+    if v.var is None:
+        return int(v == false)
+    found = counts.get(v)
+    if found is None:
+        found = counts[v] = sum(_false_paths(child, false, counts) for child in cofactors(v))
+    return found
+
+
+def _inner_children(node: BDD) -> list[BDD]:
+    return [c for c in (_regular(node.low), _regular(node.high)) if c.var is not None]

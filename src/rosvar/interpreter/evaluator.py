@@ -1181,8 +1181,15 @@ class _Interpreter:
                 if all(self._eval(condition, inner) for condition in generator.ifs):
                     yield None
 
+        def elements(element: ast.expr) -> Iterator[object]:
+            """A generator expression's items, lazily (compiled, an inline generator
+            expression would be built as a list, and ``1 in (1 / v for v in [1, 0])``
+            would divide by zero)."""
+            for _ in rounds():
+                yield self._eval(element, inner)
+
         if isinstance(node, ast.GeneratorExp):
-            return (self._eval(node.elt, inner) for _ in rounds())
+            return elements(node.elt)
         if isinstance(node, ast.ListComp):
             return [self._eval(node.elt, inner) for _ in rounds()]
         if isinstance(node, ast.SetComp):

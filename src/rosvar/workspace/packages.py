@@ -42,8 +42,12 @@ class Workspace:
     # Packages hidden by an earlier one of the same name: $(find) never returns them,
     # but files inside them still belong to them.
     shadowed: list[Package] = field(default_factory=list)
-    _index: dict[str, Package] = field(default_factory=dict, init=False, repr=False, compare=False)
-    _indexed: int = field(default=-1, init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        # Packages by directory, rebuilt when packages are added (so that a hand-built
+        # Workspace works too); not fields, since they are only a cache.
+        self._index: dict[str, Package] = {}
+        self._indexed = -1
 
     def find(self, name: str) -> str | None:
         """Directory of package ``name``; ``None`` leaves unknown packages to the caller."""
@@ -78,7 +82,6 @@ class Workspace:
         return found
 
     def _path_index(self) -> dict[str, Package]:
-        # Rebuilt when packages are added, so a hand-built Workspace works too.
         size = len(self.packages) + len(self.shadowed)
         if size != self._indexed:
             self._index = {package.path: package for package in self.shadowed}
