@@ -13,9 +13,10 @@ from pathlib import Path
 
 from setuptools import setup
 
-PLAIN_PYTHON = ("__main__.py", "outputs/web/server.py")
-"""Modules left as Python: ``python -m rosvar`` runs ``__main__`` as a script, and the web
-server subclasses the standard library's HTTP server classes (which compiled classes cannot)."""
+PLAIN_PYTHON = ("__main__.py", "lazy.py", "outputs/web/server.py")
+"""Modules left as Python: ``python -m rosvar`` runs ``__main__`` as a script, ``lazy`` keeps
+``functools.cached_property`` out of mypyc's sight, and the web server subclasses the standard
+library's HTTP server classes (which compiled classes cannot)."""
 
 
 def compiled_modules() -> list[str]:

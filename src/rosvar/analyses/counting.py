@@ -24,13 +24,14 @@ import os
 import sys
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from functools import cache, cached_property
+from functools import cache
 from typing import TYPE_CHECKING, TypeAlias
 
 import dd.cudd as _cudd
 from mypy_extensions import mypyc_attr
 
 from rosvar.interpreter.analysis import collector_paused
+from rosvar.lazy import lazy_property
 from rosvar.logic.conditions import BDD
 
 if TYPE_CHECKING:
@@ -45,7 +46,7 @@ VECTOR_FROM = 2_000
 """A recount over at least this many nodes runs in numpy; fewer are cheaper one by one."""
 
 
-# a Python class when compiled: mypyc makes a native class's cached_property a property
+# a Python class when compiled, for its lazy properties (rosvar.lazy)
 @mypyc_attr(native_class=False)
 class CountedDiagram:
     """A BDD counted exactly under some weights, then again under others.
@@ -137,7 +138,7 @@ class CountedDiagram:
             _ = self._residues
             moduli()
 
-    @cached_property
+    @lazy_property
     def _above(self) -> dict[int, int]:
         """Per weighted level, the nodes at it or above: what a recount down to it visits."""
         at: dict[int, int] = dict.fromkeys(self._weights, 0)
@@ -149,7 +150,7 @@ class CountedDiagram:
             above[level] = running
         return above
 
-    @cached_property
+    @lazy_property
     def _residues(self) -> _Residues:
         return _Residues.of(self._levels, self._lows, self._highs, self._root)
 

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
-from functools import cached_property
 
 from mypy_extensions import mypyc_attr
 
@@ -27,6 +26,7 @@ from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.view import Graph, Views
 from rosvar.interpreter.analysis import Analysis, collector_paused
 from rosvar.interpreter.model import LaunchModel
+from rosvar.lazy import lazy_property
 from rosvar.logic.inputs import OTHER, UNSET
 
 CACHED_STEPS = 4096
@@ -34,7 +34,7 @@ CACHED_STEPS = 4096
 EXACT_INTEGER = 2**53  # larger counts go to JSON as strings
 
 
-# a Python class when compiled: mypyc makes a native class's cached_property a property
+# a Python class when compiled, for its lazy properties (rosvar.lazy)
 @mypyc_attr(native_class=False)
 @dataclass(frozen=True)
 class FeatureState:
@@ -52,7 +52,7 @@ class FeatureState:
     def to_json(self) -> dict[str, object]:
         return self._document
 
-    @cached_property
+    @lazy_property
     def _document(self) -> dict[str, object]:
         return {
             "kind": self.kind,
@@ -69,7 +69,7 @@ _Row = tuple[str, str, dict[tuple[bool | None, bool], FeatureState]]
 """A feature's id, its variable and its states by (decided value, chosen by the user)."""
 
 
-# a Python class when compiled: mypyc makes a native class's cached_property a property
+# a Python class when compiled, for its lazy properties (rosvar.lazy)
 @mypyc_attr(native_class=False)
 @dataclass
 class ConfigurationState:
@@ -85,7 +85,7 @@ class ConfigurationState:
     commands: list[list[Launch]] = field(default_factory=list)  # files sharing a command line
     untyped: list[str] = field(default_factory=list)  # args at <other> still without a text
 
-    @cached_property
+    @lazy_property
     def configurations(self) -> int:
         """Valid configurations remaining (counted on first use)."""
         return self.counter()

@@ -47,7 +47,7 @@ def test_only_known_kinds_of_file_are_served(tmp_path: Path) -> None:
 def test_package_data_ships_every_asset() -> None:
     """An installed rosvar serves the same app: pyproject's package-data covers static/."""
     tomllib = pytest.importorskip("tomllib")
-    pyproject = tomllib.loads((STATIC.parents[4] / "pyproject.toml").read_text())
+    pyproject = tomllib.loads((Path(__file__).resolve().parents[3] / "pyproject.toml").read_text())
     patterns = pyproject["tool"]["setuptools"]["package-data"]["rosvar.outputs.web"]
     package = STATIC.parent
     shipped = {p for pattern in patterns for p in package.glob(pattern) if p.is_file()}
