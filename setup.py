@@ -2,7 +2,7 @@
 
 rosvar's sources are strictly typed (``mypy --strict``), which is what mypyc needs to turn
 them into native code: the interpreter, the feature model and the configuration engine run
-about twice as fast compiled (docs/performance.md). ``ROSVAR_COMPILE=0`` builds the plain
+about 1.5 times as fast compiled (docs/performance.md). ``ROSVAR_COMPILE=0`` builds the plain
 Python package (for a machine without a C compiler); the code is the same either way.
 """
 
