@@ -20,7 +20,8 @@ library's HTTP server classes (which compiled classes cannot)."""
 
 
 def compiled_modules() -> list[str]:
-    """The module files mypyc compiles, as paths relative to this file."""
+    """The module files mypyc compiles, as paths relative to the project root (setuptools
+    runs this file from there)."""
     package = Path("src", "rosvar")
     return sorted(
         str(path)

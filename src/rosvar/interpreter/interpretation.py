@@ -113,11 +113,11 @@ class Interpretation:
         self.stack: list[str] = []
         self._location = Location(file)
 
-    # -- Host protocol for substitution ------------------------------------------------
     def close(self) -> None:
         """Drop the substituter: reference counting then frees this run's BDDs."""
         del self.substituter
 
+    # -- Host protocol for substitution ------------------------------------------------
     def find_package(self, name: str) -> str | None:
         return self.workspace.find(name)
 

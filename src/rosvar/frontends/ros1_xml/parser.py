@@ -194,10 +194,8 @@ def _parse(data: bytes, filename: str, watch: str | None) -> tuple[ParseResult, 
         if exc.code in _ENCODING_ERRORS:
             return _error("xml-encoding", f"bad encoding: {reason}", location), []
         return _error("xml-malformed", f"malformed XML: {reason}", location), []
-    except (
-        ValueError,
-        LookupError,
-    ) as unsupported:  # pyexpat: "multi-byte encodings are not supported"
+    # pyexpat: "multi-byte encodings are not supported"
+    except (ValueError, LookupError) as unsupported:
         return _error(
             "xml-encoding", f"unsupported encoding: {unsupported}", Location(filename, 1, 1)
         ), []
