@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import random
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -43,6 +44,33 @@ def test_a_node_named_after_an_arg_has_one_variant_per_value(ws: LaunchWorkspace
         "/kobuki": "absent",
         "/r2": "present",  # the typed text fills the term
     }
+
+
+def test_conditional_remaps_on_independent_args_are_parts_not_variants(
+    ws: LaunchWorkspace,
+) -> None:
+    """Variants per combination would be 2^24 here (one rtabmap.launch node had 44)."""
+    args = "".join(f'  <arg name="c{i}" default="false"/>\n' for i in range(24))
+    remaps = "".join(
+        f'<remap if="$(arg c{i})" from="in{i}" to="on{i}"/>'
+        f'<env unless="$(arg c{i})" name="E{i}" value="off"/>'
+        for i in range(24)
+    )
+    ws.launch("a.launch", f'{args}  <node pkg="p" type="t" name="n">{remaps}</node>')
+    engine = configurator(ws)
+    state = run(engine, "select a.launch")
+    schema = json.loads((REPO / "docs" / "schema" / "configure.schema.json").read_text())
+    pytest.importorskip("jsonschema").validate(state.to_json(), schema)
+    [node] = state.graph.nodes
+    assert node["remaps"] == [] and node["env"] == []
+    assert {(u["kind"], u["condition"]) for u in node["undetermined"]} == {
+        *(("remap", f"c{i}") for i in range(24)),
+        *(("env", f"¬c{i}") for i in range(24)),
+    }
+    [later] = run(engine, "select a.launch", "select a.launch:c3=true").graph.nodes
+    assert later["remaps"] == [["in3", "on3"]]
+    assert len(later["undetermined"]) == 46 and ["E3", "off"] not in later["env"]
+    _same_as_resolve(engine, ws.analysis(), seed=2, products=4, loading=4)
 
 
 def test_environment_as_given_else_unset(ws: LaunchWorkspace) -> None:

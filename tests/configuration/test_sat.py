@@ -33,7 +33,7 @@ def test_models_are_valid_and_satisfy_what_was_asked(
     model = extract(ws.analysis())
     solver = model.solver
     manager, formula, variables = solver.manager, solver.formula, solver.variables
-    sat = Sat(model)
+    sat = Sat.whole(model)
     rng = random.Random(5)
     for _ in range(60):
         literals = {v: rng.random() < 0.5 for v in rng.sample(variables, rng.randint(0, 3))}
@@ -51,3 +51,27 @@ def test_models_are_valid_and_satisfy_what_was_asked(
         if found is not None:
             values = {v: bool(found >> i & 1) for i, v in enumerate(variables)}
             assert manager.let(values, wanted) == manager.true
+
+
+def test_each_component_has_a_solver_whose_models_are_its_valid_configurations(
+    ws: LaunchWorkspace,
+) -> None:
+    for name, body in FILES.items():
+        ws.launch(name, body)
+    model = extract(ws.analysis())
+    solver = model.solver
+    manager, variables = solver.manager, solver.variables
+    sats = Sat.per_component(model)
+    assert len(sats) == len(solver.components) > 1
+    rng = random.Random(8)
+    for sat, component in zip(sats, solver.components, strict=True):
+        mine = component.variables
+        for _ in range(20):
+            literals = {v: rng.random() < 0.5 for v in rng.sample(mine, min(2, len(mine)))}
+            found = sat.model([sat.atom(v, b) for v, b in literals.items()])
+            wanted = component.formula & manager.cube(literals)
+            assert (found is None) == (wanted == manager.false)
+            if found is not None:
+                values = {v: bool(found >> i & 1) for i, v in enumerate(variables)}
+                assert not {v for v, b in values.items() if b} - set(mine)  # its bits only
+                assert manager.let({v: values[v] for v in mine}, wanted) == manager.true

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
+from itertools import count
 
 from rosvar.analyses.conflicts import Clash
 from rosvar.analyses.features import FeatureModel, conjoin
@@ -164,7 +165,9 @@ def _blocks(
     manager = solver.manager
     large = {i for i, c in enumerate(solver.components) if c.formula.dag_size > REQUIRES_LIMIT}
     alone = {f.id: (frozenset(f.variable_names()), solver.file_tree(f)) for f in model.files}
-    blocks = [(variables, formula, {file}) for file, (variables, formula) in alone.items()]
+    numbers = count()  # a block's key: merged blocks get a new one
+    blocks = {next(numbers): (v, formula, {file}) for file, (v, formula) in alone.items()}
+    block_of = {v: n for n, (variables, _formula, _files) in blocks.items() for v in variables}
     left_out: set[str] = set()  # variables of the files whose requires are left out
     for constraint, formula in zip(model.constraints, solver.constraints, strict=True):
         if constraint.kind != "requires" or component_of[constraint.files[0]] in large:
@@ -172,14 +175,17 @@ def _blocks(
         support = walked_support(formula)
         if support & left_out:
             continue
-        linked = [b for b in blocks if b[0] & support]
-        blocks = [b for b in blocks if not b[0] & support]
+        linked = [blocks.pop(n) for n in sorted({block_of[v] for v in support if v in block_of})]
         merged = conjoin(manager, [*(b[1] for b in linked), formula])
         files = set().union(*(b[2] for b in linked))
         variables = frozenset().union(*(b[0] for b in linked))
         if merged.dag_size > BLOCK_LIMIT:
             left_out |= variables
-            blocks.extend((*alone[file], {file}) for file in files)
+            parts = [(alone[file][0], alone[file][1], {file}) for file in files]
         else:
-            blocks.append((variables, merged, files))
-    return [(variables, formula) for variables, formula, _files in blocks]
+            parts = [(variables, merged, files)]
+        for part in parts:
+            number = next(numbers)
+            blocks[number] = part
+            block_of.update(dict.fromkeys(part[0], number))
+    return [(variables, formula) for variables, formula, _files in blocks.values()]

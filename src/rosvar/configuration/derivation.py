@@ -94,7 +94,9 @@ class Derivation:
     def __init__(self, model: FeatureModel) -> None:
         solver = model.solver
         self.manager = manager = solver.manager
-        self.sat = Sat(model)
+        self.sats = Sat.per_component(model)
+        self._model = model
+        self._whole_sat: Sat | None = None
         self.variables = list(solver.variables)
         self.position = {v: i for i, v in enumerate(self.variables)}
         self.components = solver.components
@@ -125,23 +127,35 @@ class Derivation:
         self._judged: dict[tuple[BDD, BDD, BDD], tuple[str, tuple[int, int] | None]] = {}
         self._counts: dict[tuple[int, BDD], int] = {}
         components = range(len(self.members))
-        self._examples: deque[int] = deque(maxlen=EXAMPLES)
-        first = self.sat.model([])
+        self._examples: dict[int, deque[int]] = {}  # per component: its solver's models
+        firsts = [sat.model([]) for sat in self.sats]
+        valid = None not in firsts  # else the model has no valid configuration at all
         empty = Decisions(
             {},
             {i: manager.true for i in components},
             {},
-            {i: () if first is None else (first,) for i in components},
+            {i: (first,) if valid and first is not None else () for i, first in enumerate(firsts)},
             {i: (0, 0) for i in components},
         )
-        if first is not None:  # else the model has no valid configuration at all
+        if valid:
             for i in components:
                 empty = self._settle(empty, i)
         self.initial = empty
 
     def satisfiable(self, literals: Iterable[tuple[str, bool]]) -> bool:
         """Some valid configuration sets every variable of ``literals`` to its value."""
-        return self.sat.satisfiable([self.sat.atom(v, b) for v, b in literals])
+        own: list[list[int]] = [[] for _ in self.sats]
+        for variable, value in literals:
+            component = self.component_of[variable]
+            own[component].append(self.sats[component].atom(variable, value))
+        return all(sat.satisfiable(mine) for sat, mine in zip(self.sats, own, strict=True))
+
+    def _whole(self) -> Sat:
+        """A solver for questions about several components at once (rare: no constraint
+        links their files), made on first need."""
+        if self._whole_sat is None:
+            self._whole_sat = Sat.whole(self._model)
+        return self._whole_sat
 
     def add(self, decisions: Decisions, variable: str, value: bool) -> Decisions | None:
         """``decisions`` plus the user literal ``variable = value``; None when unsatisfiable."""
@@ -162,7 +176,7 @@ class Derivation:
         witnesses = decisions.witnesses[component]
         kept = tuple(w for w in witnesses if bool(w & bit) == value)
         if not kept:
-            found = self.sat.model(self._assumptions(step))
+            found = self.sats[component].model(self._assumptions(step, component))
             if found is None:
                 return None
             kept = (found,)
@@ -176,9 +190,12 @@ class Derivation:
         step = replace(step, witnesses={**decisions.witnesses, component: kept})
         return self._settle(step, component)
 
-    def _assumptions(self, decisions: Decisions) -> list[int]:
-        """The user literals, as the SAT solver's assumptions."""
-        return [self.sat.atom(v, b) for v, b in decisions.literals.items()]
+    def _assumptions(self, decisions: Decisions, component: int | None) -> list[int]:
+        """The user literals on ``component`` (None: all), as its solver's assumptions."""
+        if component is None:
+            return [self._whole().atom(v, b) for v, b in decisions.literals.items()]
+        sat, of = self.sats[component], self.component_of
+        return [sat.atom(v, b) for v, b in decisions.literals.items() if of[v] == component]
 
     def _settle(self, step: Decisions, component: int) -> Decisions:
         """Decide the component's open variables: open where witnesses disagree, else by
@@ -192,7 +209,8 @@ class Derivation:
         """
         witnesses = list(step.witnesses[component])
         decided = dict(step.decided)
-        assumptions = self._assumptions(step)
+        sat = self.sats[component]
+        assumptions = self._assumptions(step, component)
         position, variables = self.position, self.variables
         undecided = self._masks[component]
         for variable in decided:
@@ -207,8 +225,8 @@ class Derivation:
                 at = (suspected & -suspected).bit_length() - 1
                 suspected &= suspected - 1
                 suspects.append((variables[at], bool(all_ones >> at & 1)))
-            differ = [self.sat.atom(v, not seen) for v, seen in suspects]
-            found = self.sat.model(assumptions, some=differ, prefer=differ)
+            differ = [sat.atom(v, not seen) for v, seen in suspects]
+            found = sat.model(assumptions, some=differ, prefer=differ)
             if found is None:
                 decided.update(suspects)
                 break
@@ -445,7 +463,9 @@ class Derivation:
         without = within = None
         if component is not None:
             # filter, not a generator expression: compiled, that would test every example
-            examples = filter(lambda w: decisions.valid(component, w), self._examples)
+            examples = filter(
+                lambda w: decisions.valid(component, w), self._examples.get(component, ())
+            )
             exact = must == may  # the usual case: one walk down the diagram answers both
             for witness in chain(decisions.witnesses[component], examples):
                 holds = self._holds(must, witness) if exact else None
@@ -456,21 +476,23 @@ class Derivation:
                 if without is not None and within is not None:
                     return UNDETERMINED, (without, within)
         if without is None:
-            without = self._example(decisions, ~must)
+            without = self._example(decisions, ~must, component)
             if without is None:
                 return PRESENT, None
         if within is None:
-            within = self._example(decisions, may)
+            within = self._example(decisions, may, component)
             if within is None:
                 return ABSENT, None
         return UNDETERMINED, None if component is None else (without, within)
 
-    def _example(self, decisions: Decisions, goal: BDD) -> int | None:
-        """A valid configuration under the user literals where ``goal`` holds, kept to
-        judge other conditions too; None: there is none."""
-        found = self.sat.model(self._assumptions(decisions), goal)
-        if found is not None:
-            self._examples.append(found)
+    def _example(self, decisions: Decisions, goal: BDD, component: int | None) -> int | None:
+        """A valid configuration under the user literals where ``goal`` (over ``component``;
+        None: over several) holds, kept to judge its component's other conditions too;
+        None: there is none."""
+        sat = self._whole() if component is None else self.sats[component]
+        found = sat.model(self._assumptions(decisions, component), goal)
+        if found is not None and component is not None:
+            self._examples.setdefault(component, deque(maxlen=EXAMPLES)).append(found)
         return found
 
     def _holds(self, u: BDD, witness: int) -> bool:

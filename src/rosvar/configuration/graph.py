@@ -12,13 +12,14 @@ symbolic until the user's choices make their inputs concrete.
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import cast
 
 from rosvar.analyses.features import FeatureModel
 from rosvar.analyses.resolve import ResolutionError, test_fields
 from rosvar.analyses.values import json_value
+from rosvar.configuration.derivation import PRESENT, UNDETERMINED
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
 from rosvar.interpreter.analysis import Analysis
@@ -40,7 +41,10 @@ from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
 
 Fields = dict[str, object]
-Render = Callable[["Values"], list[Fields]]
+Shown = tuple[str, str | None]
+"""A condition's presence at one step, and its readable form while undetermined."""
+Render = Callable[["Values", Sequence[Shown]], list[Fields]]
+"""An element's fields for concrete values and the presence of each of its parts."""
 
 
 class Values:
@@ -64,6 +68,19 @@ class Values:
             return str(raw)
 
 
+@dataclass(frozen=True)
+class Part:
+    """A remap or environment setting that only some configurations of its node have.
+
+    Judged at each step like an element (its condition includes its node's), not
+    multiplied into the node's variants: conditional remaps on independent args make a
+    variant per combination (44 of them on one node of armadillo's rtabmap.launch,
+    billions of variants), while a part costs one more condition to judge."""
+
+    condition: BDD  # analysis manager, fixed atoms substituted
+    bounds: Bounds  # solver manager
+
+
 @dataclass
 class Element:
     """One variant of a node, param, topic or error, with its presence condition."""
@@ -76,9 +93,11 @@ class Element:
     render: Render  # fields for one set of concrete values (several for a YAML load)
     inputs: frozenset[Input] = frozenset()  # inputs its fields still need
     nodes: list[str] = field(default_factory=list)  # topics: the node variants using it
+    parts: tuple[Part, ...] = ()  # nodes: their conditional remaps and environment settings
 
-    def fields(self, values: Values) -> list[Fields]:
-        return self.render(values)
+    def fields(self, values: Values, parts: Sequence[Shown] = ()) -> list[Fields]:
+        """Its fields, given the presence of each of its ``parts``."""
+        return self.render(values, parts)
 
 
 class VariationalGraph:
@@ -114,11 +133,14 @@ class VariationalGraph:
         render: Render,
         inputs: Iterable[Input] = (),
         nodes: list[str] | None = None,
+        parts: tuple[Part, ...] = (),
     ) -> Element | None:
         fixed, bounds = self.lowering.lower(condition)
         if not self.lowering.space.satisfiable(fixed):
             return None  # e.g. two values of one arg: combinations no configuration has
-        element = Element(kind, id_, entry, fixed, bounds, render, frozenset(inputs), nodes or [])
+        element = Element(
+            kind, id_, entry, fixed, bounds, render, frozenset(inputs), nodes or [], parts
+        )
         self.elements.append(element)
         return element
 
@@ -185,50 +207,60 @@ class VariationalGraph:
         self, model: LaunchModel, node: NodeDecl, launched: BDD, new_id: Callable[[Location], str]
     ) -> None:
         keys = sorted(node.fields)
-        space = model.space
-        switches: list[Choice[object]] = [
-            Choice.of([(c, True), (~c, False)], space.false)
-            for c in [r.condition for r in node.remaps] + [e.condition for e in node.env]
-        ]
         fields: list[Choice[object]] = [node.fields[k] for k in keys]
-        for branch, values in combine(fields + switches, tuple):
-            raw = cast(dict[str, Raw | None], dict(zip(keys, values[: len(keys)], strict=True)))
-            active = values[len(keys) :]
-            remaps = [
-                (r.source, r.target) for r, on in zip(node.remaps, active, strict=False) if on
-            ]
-            env = [
-                (e.name, e.value)
-                for e, on in zip(node.env, active[len(node.remaps) :], strict=True)
-                if on
-            ]
-            id_ = new_id(node.location)
+        for branch, values in combine(fields, tuple):
+            raw = cast(dict[str, Raw | None], dict(zip(keys, values, strict=True)))
+            condition = launched & node.condition & branch
+            parts: list[Part] = []
+            remaps = self._parted(
+                condition, [(r.condition, r.source, r.target) for r in node.remaps], parts
+            )
+            env = self._parted(condition, [(e.condition, e.name, e.value) for e in node.env], parts)
             element = self._add(
                 "test" if node.is_test else "node",
-                id_,
+                new_id(node.location),
                 model.file,
-                launched & node.condition & branch,
+                condition,
                 _node_renderer(raw, remaps, env, node),
-                _needs(*raw.values(), *(p for pair in remaps + env for p in pair)),
+                _needs(*raw.values(), *(p for pair in remaps + env for p in pair[:2])),
+                parts=tuple(parts),
             )
             if element is not None and not node.is_test:
                 self._topic_uses(element, raw, remaps)
 
+    def _parted(
+        self, condition: BDD, settings: list[tuple[BDD, Raw, Raw]], parts: list[Part]
+    ) -> list[_Setting]:
+        """The settings a node variant of ``condition`` may have, each with the index of
+        its part in ``parts`` (added) or None when the variant always has it."""
+        kept: list[_Setting] = []
+        for own, first, second in settings:
+            both = condition & own
+            if both == condition:
+                kept.append((first, second, None))
+                continue
+            fixed, bounds = self.lowering.lower(both)
+            if self.lowering.space.satisfiable(fixed):
+                kept.append((first, second, len(parts)))
+                parts.append(Part(fixed, bounds))
+        return kept
+
     def _topic_uses(
-        self, element: Element, raw: Mapping[str, Raw | None], remaps: list[tuple[Raw, Raw]]
+        self, element: Element, raw: Mapping[str, Raw | None], remaps: list[_Setting]
     ) -> None:
         symbolic = Values({}, None)
         namespace = symbolic.text(raw.get("namespace")) or "/"
         node_name = names.ns_join(namespace, symbolic.text(raw.get("name")) or "")
-        for _source, target in remaps:
+        for _source, target, part in remaps:
+            used = element.condition if part is None else element.parts[part].condition
             name = symbolic.text(target) or ""
             if names.is_private(name):
                 topic = names.ns_join(node_name + "/", name[1:])
             else:
                 topic = names.ns_join(namespace, name)
-            nodes, condition = self._topics.get(topic, ([], element.condition.bdd.false))
+            nodes, condition = self._topics.get(topic, ([], used.bdd.false))
             nodes.append(element.id)
-            self._topics[topic] = (nodes, condition | element.condition)
+            self._topics[topic] = (nodes, condition | used)
 
 
 def _launched(model: FeatureModel) -> dict[str, BDD]:
@@ -252,26 +284,39 @@ def _needs(*raws: object) -> set[Input]:
 
 
 def _static(fields: Fields) -> Render:
-    return lambda _values: [fields]
+    return lambda _values, _parts: [fields]
+
+
+_Setting = tuple[Raw, Raw, int | None]
+"""A remap (from, to) or environment setting (name, value) of a node variant, with the
+index of its part (None: the variant always has it)."""
 
 
 def _node_renderer(
     raw: Mapping[str, Raw | None],
-    remaps: list[tuple[Raw, Raw]],
-    env: list[tuple[Raw, Raw]],
+    remaps: list[_Setting],
+    env: list[_Setting],
     node: NodeDecl,
 ) -> Render:
-    def render(values: Values) -> list[Fields]:
+    def render(values: Values, parts: Sequence[Shown]) -> list[Fields]:
         text = {k: values.text(v) for k, v in raw.items()}
         try:
             typed: Fields = node_values(text)
         except ValueError:
             typed = {}
+        undetermined: list[Fields] = []
         mapping: dict[str, str] = {}
-        for source, target in remaps:
-            key = values.text(source) or ""
-            mapping.pop(key, None)
-            mapping[key] = values.text(target) or ""
+        for remap in remaps:
+            pair = _present("remap", remap, values, parts, undetermined)
+            if pair is not None:
+                key = pair[0] or ""
+                mapping.pop(key, None)
+                mapping[key] = pair[1] or ""
+        settings = []
+        for setting in env:
+            pair = _present("env", setting, values, parts, undetermined)
+            if pair is not None:
+                settings.append(list(pair))
         namespace = text.get("namespace") or "/"
         extra: Fields = {}
         if node.is_test:
@@ -287,7 +332,8 @@ def _node_renderer(
                 "type": text.get("type"),
                 **typed,
                 "remaps": sorted([list(p) for p in mapping.items()]),
-                "env": sorted([values.text(n), values.text(v)] for n, v in env),
+                "env": sorted(settings),
+                **({"undetermined": undetermined} if undetermined else {}),
                 "filename": node.filename,
                 "line": node.location.line,
                 "col": node.location.col,
@@ -298,8 +344,21 @@ def _node_renderer(
     return render
 
 
+def _present(
+    kind: str, setting: _Setting, values: Values, parts: Sequence[Shown], undetermined: list[Fields]
+) -> tuple[str | None, str | None] | None:
+    """A setting's strings where the step has it, else None; an undetermined one is added to
+    ``undetermined`` with its condition."""
+    first, second, part = setting
+    shown = (values.text(first), values.text(second))
+    presence, condition = (PRESENT, None) if part is None else parts[part]
+    if presence == UNDETERMINED:
+        undetermined.append({"kind": kind, "pair": list(shown), "condition": condition})
+    return shown if presence == PRESENT else None
+
+
 def _param_renderer(name: object, value: object, location: Location) -> Render:
-    def render(values: Values) -> list[Fields]:
+    def render(values: Values, _parts: Sequence[Shown]) -> list[Fields]:
         shown: object = value
         if isinstance(value, DeferredValue):
             concrete = values.text(value.raw) or ""
@@ -319,7 +378,7 @@ def _param_renderer(name: object, value: object, location: Location) -> Render:
 def _yaml_renderer(param: YamlDecl) -> Render:
     raws = (param.scope_ns, param.command, param.ns, param.file, param.param, param.text)
 
-    def render(values: Values) -> list[Fields]:
+    def render(values: Values, _parts: Sequence[Shown]) -> list[Fields]:
         scope_ns, command, ns, file, name, body = (values.text(p) for p in raws)
         symbolic = [{"name": f"{scope_ns} (YAML)", "value": "<yaml>", **_where(param.location)}]
         if not values.knows(raws):

@@ -109,13 +109,21 @@ class Presences:
         self.lowering = lowering
         self.conditions: list[Condition] = []
         self.of_element: list[int] = []
+        self.of_parts: list[tuple[int, ...]] = []  # per element: its parts' conditions
         number: dict[tuple[str, BDD], int] = {}
-        for element in elements:
-            key = (element.entry, element.condition)
+
+        def numbered(entry: str, condition: BDD, bounds: Bounds) -> int:
+            key = (entry, condition)
             if key not in number:
                 number[key] = len(self.conditions)
-                self.conditions.append(Condition(element.entry, element.condition, element.bounds))
-            self.of_element.append(number[key])
+                self.conditions.append(Condition(entry, condition, bounds))
+            return number[key]
+
+        for element in elements:
+            self.of_element.append(numbered(element.entry, element.condition, element.bounds))
+            self.of_parts.append(
+                tuple(numbered(element.entry, p.condition, p.bounds) for p in element.parts)
+            )
         self._reading: dict[str, list[int]] = {}  # variable → conditions over it
         self._typed_in: dict[str, list[int]] = {}  # entry → conditions texts can decide
         self._masks: list[int] = []  # per condition: the positions of ``_reading``'s variables

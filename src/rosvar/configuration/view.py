@@ -16,7 +16,7 @@ from itertools import accumulate, chain
 from rosvar.configuration.catalog import Catalog, FileEntry
 from rosvar.configuration.conflicts import Conflicts, ConflictState
 from rosvar.configuration.derivation import ABSENT, Decisions, Derivation
-from rosvar.configuration.graph import Element, Fields, Values, VariationalGraph
+from rosvar.configuration.graph import Element, Fields, Shown, Values, VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.presence import Judged, Judgement, Presences, Typed
@@ -24,15 +24,13 @@ from rosvar.interpreter.analysis import Analysis
 from rosvar.logic.conditions import BDD
 from rosvar.logic.inputs import OTHER, UNSET, Input
 
-CACHED_VIEWS = 4096
-"""Views kept per list of literals (a session's history and then some)."""
-
 Key = tuple[tuple[str, bool, str | None], ...]
 """A list of literals: variable, value and the ``<other>`` text it gives, if any."""
 Strings = frozenset[tuple[Input, str | None]]
 """The strings of the inputs an element's terms read (None: not known yet)."""
-_Shown = tuple[str, str, str | None, Strings | None]
-"""An element shown: its id, presence, condition and the strings it was rendered with."""
+_Entry = tuple[str, str, str | None, Strings | None, tuple[Shown, ...]]
+"""An element shown: its id, presence, condition, the strings it was rendered with and its
+parts as shown."""
 
 
 @dataclass
@@ -80,7 +78,9 @@ class Views:
         lowering: Lowering,
         derivation: Derivation,
         conflicts: Conflicts,
+        cached: int,
     ) -> None:
+        """``cached``: how many views to keep (``engine.CACHED_FEATURES``)."""
         self.analysis = analysis
         self.catalog = catalog
         self.graph = graph
@@ -92,6 +92,9 @@ class Views:
         self._elements_of: list[list[int]] = [[] for _ in self.presences.conditions]
         for index, condition in enumerate(self.presences.of_element):
             self._elements_of[condition].append(index)
+        for index, parts in enumerate(self.presences.of_parts):
+            for condition in set(parts):
+                self._elements_of[condition].append(index)
         self._paths = {entry.path: entry for entry in catalog.files}
         self._files = {entry.id: entry for entry in catalog.files}
         self._reading: dict[str, list[int]] = {}  # value variable or arg id → elements
@@ -107,11 +110,11 @@ class Views:
                     for feature, _value in catalog.values_of(arg_id):
                         self._reading.setdefault(feature.variable, []).append(index)
                     self._reading.setdefault(arg_id, []).append(index)
-        self._rendered: dict[tuple[str, Strings | None], list[Fields]] = {}
-        self._entries: dict[_Shown, list[Fields]] = {}
+        self._rendered: dict[tuple[str, Strings | None, tuple[Shown, ...]], list[Fields]] = {}
+        self._entries: dict[_Entry, list[Fields]] = {}
         self.initial = self._derive(derivation.initial, {}, None)
         self._views: PrefixCache[tuple[str, bool, str | None], View] = PrefixCache(
-            self.initial, CACHED_VIEWS
+            self.initial, cached
         )
 
     def view(self, key: Key, decisions: Decisions, texts: Mapping[str, str]) -> View:
@@ -174,7 +177,8 @@ class Views:
             judged = presences.verdicts[self.presences.of_element[index]]
             if element.entry not in values and element.inputs:
                 values[element.entry] = self._values(element.entry, decisions, texts)
-            found = self._element_entries(element, judged, values)
+            parts = tuple(presences.verdicts[c].shown for c in self.presences.of_parts[index])
+            found = self._element_entries(element, judged, parts, values)
             if found is not entries[index]:
                 moved.setdefault(element.kind, []).append(index)
             entries[index] = found
@@ -250,7 +254,11 @@ class Views:
         return Values(concrete, self.lowering.host)
 
     def _element_entries(
-        self, element: Element, judged: Judged, values: Mapping[str, Values]
+        self,
+        element: Element,
+        judged: Judged,
+        parts: tuple[Shown, ...],
+        values: Mapping[str, Values],
     ) -> list[Fields]:
         """The element's graph entries: none for an absent error, else one per variant.
 
@@ -262,10 +270,10 @@ class Views:
             return []
         given = values[element.entry] if presence != ABSENT and element.inputs else None
         strings = frozenset((i, given.concrete.get(i)) for i in element.inputs) if given else None
-        key = (element.id, presence, condition, strings)
+        key = (element.id, presence, condition, strings, parts)
         entries = self._entries.get(key)
         if entries is None:
-            shown = self._fields(element, given, strings)
+            shown = self._fields(element, given, strings, parts)
             extra: Fields = {"nodes": element.nodes} if element.kind == "topic" else {}
             entries = self._entries[key] = [
                 {
@@ -280,13 +288,19 @@ class Views:
         return entries
 
     def _fields(
-        self, element: Element, given: Values | None, strings: Strings | None
+        self,
+        element: Element,
+        given: Values | None,
+        strings: Strings | None,
+        parts: tuple[Shown, ...],
     ) -> list[Fields]:
         """The element's fields: with the strings ``given`` for its inputs, or symbolic
-        (``given`` None). Rendered once per combination of the strings its terms read."""
-        key = (element.id, strings)
+        (``given`` None), and its parts as they are shown. Rendered once per combination
+        of the strings its terms read and its parts' presences."""
+        key = (element.id, strings, parts)
         found = self._rendered.get(key)
         if found is None:
-            found = element.fields(given or Values(self.lowering.concrete, self.lowering.host))
+            values = given or Values(self.lowering.concrete, self.lowering.host)
+            found = element.fields(values, parts)
             self._rendered[key] = found
         return found
