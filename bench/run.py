@@ -457,10 +457,11 @@ def run_one(options: argparse.Namespace) -> None:
 
     metrics: Metrics = {"import_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024}
     job = Job(options.paths, options.package_path, options.repeats, options.budget)
-    for measure in ISOLATED_MEASUREMENTS.values():
+    for name, measure in ISOLATED_MEASUREMENTS.items():
         metrics.update(measure(job))
-    sys.stdout.write(json.dumps(metrics) + "\n")
-    sys.stdout.flush()
+        # the figures so far, each time: a later measurement that fails keeps them
+        sys.stdout.write(json.dumps({**metrics, "measured": name}) + "\n")
+        sys.stdout.flush()
     os._exit(0)  # the BDD manager's teardown is not part of any measurement
 
 
@@ -542,11 +543,14 @@ def measure_isolated(workload: Workload, roots: list[str], outcome: Outcome) -> 
     ]  # fmt: skip
     finished = run_bounded(command, _env(workload))
     lines = finished.stdout.strip().splitlines()
+    measured = json.loads(lines[-1]) if lines else {}
+    last = measured.pop("measured", None)  # the last measurement whose figures came
+    outcome.metrics.update(measured)
     if finished.returncode == 0 and lines:
-        outcome.metrics.update(json.loads(lines[-1]))
         return True
-    outcome.notes.append(_failure(finished, "in-process"))
-    return False
+    after = f"after {last}" if last else "before any figure"
+    outcome.notes.append(_failure(finished, f"in-process ({after})"))
+    return "analyze_ms" in outcome.metrics
 
 
 def _rosvar_command() -> list[str]:

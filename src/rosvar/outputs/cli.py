@@ -42,6 +42,15 @@ def _progress(index: int, total: int, file: str) -> None:
         sys.stderr.flush()
 
 
+def _print_json(document: object) -> None:
+    """``document`` on stdout: indented for a terminal, on one line for a pipe or a file.
+
+    Python's fast JSON encoder only writes without indentation: indented, Husky's analysis
+    took 0.3 s to print, five times as long as to compute (``jq`` indents it again)."""
+    indent = 2 if sys.stdout.isatty() else None
+    sys.stdout.write(json.dumps(document, indent=indent, ensure_ascii=False) + "\n")
+
+
 def _workspace(paths: Sequence[str]) -> Workspace:
     workspace = discover(paths)
     for diagnostic in workspace.diagnostics:
@@ -57,8 +66,7 @@ def cmd_analyze(options: argparse.Namespace) -> int:
     analysis = Analysis(workspace)
     models = analysis.all_models(_progress)
     if options.json:
-        json.dump({"files": [describe_model(m) for m in models]}, sys.stdout, indent=2)
-        sys.stdout.write("\n")
+        _print_json({"files": [describe_model(m) for m in models]})
         return EXIT_OK
     cwd = os.getcwd()
     diagnostics = [d for m in models for d in m.diagnostics]
@@ -104,8 +112,7 @@ def cmd_resolve(options: argparse.Namespace) -> int:
     result = resolve(analysis, files, args, env)
     document = result.to_json()
     if options.json:
-        json.dump(document, sys.stdout, indent=2)
-        sys.stdout.write("\n")
+        _print_json(document)
     else:
         for node in document["nodes"]:  # type: ignore[attr-defined]
             print(f"node  {node['name']}  ({node['package']}/{node['type']})")
@@ -199,8 +206,7 @@ def cmd_metrics(options: argparse.Namespace) -> int:
     model = extract(analysis, progress=_progress)
     metrics = compute(analysis, model).to_json()
     if options.json:
-        json.dump(metrics, sys.stdout, indent=2)
-        sys.stdout.write("\n")
+        _print_json(metrics)
     else:
         print("  ".join(f"{key}={value}" for key, value in metrics.items()))
     return EXIT_OK
@@ -221,8 +227,7 @@ def cmd_configure(options: argparse.Namespace) -> int:
         print(f"rosvar: {error}", file=sys.stderr)
         return EXIT_USAGE
     if options.json:
-        json.dump(state.to_json(), sys.stdout, indent=2, ensure_ascii=False)
-        sys.stdout.write("\n")
+        _print_json(state.to_json())
     else:
         _print_state(state)
     return EXIT_FAILS if state.refused else EXIT_OK

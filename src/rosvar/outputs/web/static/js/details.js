@@ -4,8 +4,16 @@ import { clashName } from "./graph.js";
 
 const SHOWN_APART = new Set(["id", "kind", "name", "presence", "condition", "filename", "line", "col", "nodes"]);
 
-function cell(value) {
+// A node's remaps and env settings whose own condition is still open.
+function undetermined(settings) {
+  const arrow = { remap: "→", env: "=" };
+  return settings.map(({ kind, pair, condition }) =>
+    `${kind} ${pair[0]} ${arrow[kind]} ${pair[1]} when ${condition}`).join("; ");
+}
+
+function cell(value, key) {
   if (value === null || value === undefined) return "—";
+  if (key === "undetermined") return undetermined(value);
   if (typeof value === "object") return JSON.stringify(value);
   return String(value);
 }
@@ -45,7 +53,7 @@ export class DetailsPanel {
       table.append(row("nodes", element.nodes.map((id) => names.get(id) ?? id).join(", ") || "—"));
     }
     for (const [key, value] of Object.entries(element)) {
-      if (!SHOWN_APART.has(key)) table.append(row(key, cell(value)));
+      if (!SHOWN_APART.has(key)) table.append(row(key, cell(value, key)));
     }
     const name = clashName(element.kind, element.name);
     const clashes = state.conflicts.filter((conflict) => conflict.names.includes(name));
