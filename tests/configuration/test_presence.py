@@ -19,7 +19,8 @@ if TYPE_CHECKING:
 
 FILES = {
     "a.launch": '  <arg name="x" default="1"/>\n  <arg name="cam" default="false"/>\n'
-    '  <node pkg="p" type="t" name="n$(arg x)"/>\n'
+    '  <node pkg="p" type="t" name="n$(arg x)"><remap if="$(arg cam)" from="in" to="c_$(arg x)"/>'
+    '<env unless="$(arg cam)" name="E" value="$(arg x)"/></node>\n'
     '  <include file="$(find pkg)/launch/b.launch" if="$(arg cam)"/>\n'
     '  <include file="$(find pkg)/launch/e.launch" unless="$(arg cam)"/>',
     "b.launch": '  <arg name="y" default="u"/>\n  <node pkg="p" type="t" name="cam_$(arg y)"/>\n'

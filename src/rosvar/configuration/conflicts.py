@@ -121,18 +121,32 @@ class Conflicts:
         before: tuple[Decisions, Sequence[ConflictState | None]] | None = None,
     ) -> list[ConflictState | None]:
         """Each pair's state (None: gone), judged again only where a user literal on its
-        blocks differs from ``before`` (an earlier step and its answer)."""
+        blocks differs from ``before`` (an earlier step and its answer).
+
+        When ``before``'s literals are among these (a session's next click), they only
+        remove configurations: a clash gone stays gone, and a certain one is certain or gone.
+        """
         if before is None:
             again: Iterable[int] = range(len(self.pairs))
             found: list[ConflictState | None] = [None] * len(self.pairs)
+            more = False
         else:
             earlier, answer = before
             changed = decisions.literals.items() ^ earlier.literals.items()
             again = sorted({n for v, _ in changed for n in self._reading.get(v, ())})
             found = list(answer)
+            more = earlier.literals.items() <= decisions.literals.items()
         for number in again:
-            found[number] = self._status(self.pairs[number], decisions, describe)
+            was, pair = found[number], self.pairs[number]
+            if not more or (was is not None and was.status != CERTAIN):
+                found[number] = self._status(pair, decisions, describe)
+            elif was is not None and not self._possible(pair, decisions):
+                found[number] = None
         return found
+
+    def _possible(self, pair: Clashing, decisions: Decisions) -> bool:
+        cube = decisions.cubes[pair.component]  # its literals outside the blocks change nothing
+        return pair.possible & cube != self.manager.false
 
     def _status(
         self,
@@ -140,11 +154,9 @@ class Conflicts:
         decisions: Decisions,
         describe: Callable[[BDD, Mapping[str, bool]], str],
     ) -> ConflictState | None:
-        false = self.manager.false
-        cube = decisions.cubes[pair.component]  # its literals outside the blocks change nothing
-        if pair.possible & cube == false:
+        if not self._possible(pair, decisions):
             return None
-        if pair.escapes & cube == false:
+        if pair.escapes & decisions.cubes[pair.component] == self.manager.false:
             return ConflictState(pair.files, pair.names, CERTAIN, None)
         literals = {v: b for v, b in decisions.literals.items() if v in pair.variables}
         return ConflictState(pair.files, pair.names, POSSIBLE, describe(pair.condition, literals))
