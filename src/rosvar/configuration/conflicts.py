@@ -146,7 +146,7 @@ class Conflicts:
 
     def _possible(self, pair: Clashing, decisions: Decisions) -> bool:
         cube = decisions.cubes[pair.component]  # its literals outside the blocks change nothing
-        return pair.possible & cube != self.manager.false
+        return bool(pair.possible & cube != self.manager.false)
 
     def _status(
         self,
