@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import os
+import random
 from typing import TYPE_CHECKING
 
 import pytest
 
 from configuration.helpers import configurator, run
+from configuration.test_presence import FILES as PRESENCE_FILES
 from rosvar.analyses.features import extract
 from rosvar.configuration import conflicts
 from rosvar.configuration.conflicts import _blocks
@@ -55,3 +57,27 @@ def test_a_block_over_the_limit_goes_back_to_one_block_per_file(
     assert conflict.files == ("camera.launch", "other_camera.launch")
     assert conflict.status == "certain"
     assert run(engine, "deselect other_camera.launch").conflicts == []
+
+
+def test_the_satisfiability_tests_agree_with_the_conjunctions(ws: LaunchWorkspace) -> None:
+    """``_meets`` asks ``∃ variables. u ∧ cube`` instead of building ``u ∧ cube``."""
+    for name, body in PRESENCE_FILES.items():
+        ws.launch(name, body)
+    engine = configurator(ws)
+    derivation, judged = engine.derivation, engine.conflicts
+    variables = list(derivation.variables)
+    false = judged.manager.false
+    assert judged.pairs
+    rng = random.Random(11)
+    outcomes: list[bool] = []
+    for _ in range(40):
+        decisions = derivation.initial
+        for variable in rng.sample(variables, rng.randint(0, 4)):
+            decisions = derivation.add(decisions, variable, rng.random() < 0.5) or decisions
+        for pair in judged.pairs:
+            cube = decisions.cubes[pair.component]
+            for u in (pair.possible, pair.escapes):
+                expected = (u & cube) != false
+                assert judged._meets(u, pair, decisions) == expected
+                outcomes.append(expected)
+    assert len(outcomes) >= 80 and set(outcomes) == {True, False}
