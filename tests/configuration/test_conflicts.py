@@ -77,7 +77,7 @@ def test_the_satisfiability_tests_agree_with_the_conjunctions(ws: LaunchWorkspac
         for pair in judged.pairs:
             cube = decisions.cubes[pair.component]
             for u in (pair.possible, pair.escapes):
-                expected = (u & cube) != false
+                expected = (pair.within & u & cube) != false
                 assert judged._meets(u, pair, decisions) == expected
                 outcomes.append(expected)
     assert len(outcomes) >= 80 and set(outcomes) == {True, False}

@@ -37,8 +37,9 @@ class Clashing:
     names: tuple[str, ...]
     component: int
     variables: frozenset[str]  # of the blocks it is judged on
-    possible: BDD  # the blocks ∧ both files ∧ the clash may happen
-    escapes: BDD  # the blocks ∧ both files ∧ the clash may not happen
+    within: BDD  # the blocks' conjunction (shared by the pairs judged on the same blocks)
+    possible: BDD  # both files ∧ the clash may happen (the blocks not conjoined)
+    escapes: BDD  # both files ∧ the clash may not happen
     condition: BDD  # analysis manager, fixed atoms substituted
 
 
@@ -86,6 +87,8 @@ class Conflicts:
         space = lowering.space
         self.pairs: list[Clashing] = []
         self._reading: dict[str, list[int]] = {}  # variable → the pairs whose blocks hold it
+        members = [set(c.variables) for c in solver.components]
+        withins: dict[tuple[int, ...], tuple[BDD, frozenset[str]]] = {}
         for (first, second), clashes in sorted(groups.items()):
             condition = model.space.false
             for clash in clashes:
@@ -98,10 +101,13 @@ class Conflicts:
             both = pair[0] & pair[1]
             # the bounds are ``fixed`` copied with atoms quantified: no other variables
             support = space.support(fixed) | {file.var for file in pair}
-            mine = solver.components[component_of[a.id]].variables
-            touched = sorted({block_of[v] for v in support & set(mine)})
-            within = conjoin(manager, [blocks[n][1] for n in touched])
-            variables = frozenset(v for n in touched for v in blocks[n][0])
+            touched = tuple(sorted({block_of[v] for v in support & members[component_of[a.id]]}))
+            if touched not in withins:
+                withins[touched] = (
+                    conjoin(manager, [blocks[n][1] for n in touched]),
+                    frozenset(v for n in touched for v in blocks[n][0]),
+                )
+            within, variables = withins[touched]
             for variable in variables:
                 self._reading.setdefault(variable, []).append(len(self.pairs))
             self.pairs.append(
@@ -110,8 +116,9 @@ class Conflicts:
                     tuple(sorted({f"{c.kind} {c.name}" for c in clashes})),
                     component_of[a.id],
                     variables,
-                    within & both & bounds.may,
-                    within & both & ~bounds.must,
+                    within,
+                    both & bounds.may,
+                    both & ~bounds.must,
                     fixed,
                 )
             )
@@ -150,13 +157,17 @@ class Conflicts:
         return self._meets(pair.possible, pair, decisions)
 
     def _meets(self, u: BDD, pair: Clashing, decisions: Decisions) -> bool:
-        """Some configuration of ``u`` (one of ``pair``'s diagrams) has the user literals.
+        """Some configuration of the pair's blocks and ``u`` (its ``possible`` or
+        ``escapes``) has the user literals.
 
-        Asked as ``∃ pair.variables. u ∧ cube`` (CUDD's and-abstract), which stops at the
-        first path to TRUE and builds none of the conjunction's nodes: ``u & cube`` built
-        up to ``u``'s size in new nodes, then collected (most of a step on 2,000 files)."""
+        Asked as ``∃ pair.variables. within ∧ (u ∧ cube)`` (CUDD's and-abstract), which
+        stops at the first path to TRUE and builds none of the conjunction's nodes: the
+        blocks' diagram reaches 20,000 nodes (``BLOCK_LIMIT``), and conjoining it with the
+        clash at build and with the choices at each step made as many new nodes each time
+        (most of the engine's construction and of a step on generated workspaces)."""
         cube = decisions.cubes[pair.component]  # its literals outside the blocks change nothing
-        return bool(_cudd.and_exists(u, cube, pair.variables) != self.manager.false)
+        found = _cudd.and_exists(pair.within, u & cube, pair.variables)
+        return bool(found != self.manager.false)
 
     def _status(
         self,
