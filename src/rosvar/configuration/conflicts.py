@@ -149,12 +149,9 @@ class Conflicts:
             was, pair = found[number], self.pairs[number]
             if not more or (was is not None and was.status != CERTAIN):
                 found[number] = self._status(pair, decisions, describe)
-            elif was is not None and not self._possible(pair, decisions):
+            elif was is not None and not self._meets(pair.possible, pair, decisions):
                 found[number] = None
         return found
-
-    def _possible(self, pair: Clashing, decisions: Decisions) -> bool:
-        return self._meets(pair.possible, pair, decisions)
 
     def _meets(self, u: BDD, pair: Clashing, decisions: Decisions) -> bool:
         """Some configuration of the pair's blocks and ``u`` (its ``possible`` or
@@ -175,7 +172,7 @@ class Conflicts:
         decisions: Decisions,
         describe: Callable[[BDD, Mapping[str, bool]], str],
     ) -> ConflictState | None:
-        if not self._possible(pair, decisions):
+        if not self._meets(pair.possible, pair, decisions):
             return None
         if not self._meets(pair.escapes, pair, decisions):
             return ConflictState(pair.files, pair.names, CERTAIN, None)

@@ -32,8 +32,8 @@ from rosvar.logic.inputs import OTHER, UNSET
 CACHED_FEATURES = 1_000_000
 """Views, replays and solver answers are kept per list of choices (a session's history and
 then some), each holding a state of every feature: as many as make this many feature states
-in all, at least ``MIN_CACHED_STEPS``. A fixed count of 4,096 steps
-held 20 GB on 2,000 generated files."""
+in all, at least ``MIN_CACHED_STEPS``. A fixed count of 4,096 steps held 20 GB on 2,000
+generated files."""
 MIN_CACHED_STEPS = 64
 EXACT_INTEGER = 2**53  # larger counts go to JSON as strings
 

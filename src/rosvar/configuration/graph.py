@@ -95,7 +95,7 @@ class Element:
     nodes: list[str] = field(default_factory=list)  # topics: the node variants using it
     parts: tuple[Part, ...] = ()  # nodes: their conditional remaps and environment settings
 
-    def fields(self, values: Values, parts: Sequence[Shown] = ()) -> list[Fields]:
+    def fields(self, values: Values, parts: Sequence[Shown]) -> list[Fields]:
         """Its fields, given the presence of each of its ``parts``."""
         return self.render(values, parts)
 
