@@ -7,10 +7,8 @@
 #   make setup   only the set-up (idempotent; quick when already done)
 #
 # The set-up installs missing Debian packages (apt-get, as root or through sudo), creates the
-# virtual environment .venv and installs rosvar into it, compiled by mypyc (setup.py), with its
-# test extras. The installed package is a compiled copy: the set-up reinstalls it whenever a
-# source file changes, so `make test` always tests the sources as they are. To run the plain
-# sources while editing, put them first on the path: `PYTHONPATH=src .venv/bin/python -m pytest`.
+# virtual environment .venv and installs rosvar into it in editable mode with its test extras
+# (plain Python: no compiler, no build step), so `make test` always tests the sources as they are.
 
 PYTHON ?= python3
 VENV   := .venv
@@ -27,14 +25,10 @@ STAMP  := $(VENV)/.installed
 #   chromium:          the headless browser of the web UI's end-to-end tests (tests/outputs/web),
 #                      driven by Playwright with executable_path (Playwright's own browser
 #                      builds are never downloaded).
-#   gcc, python3-dev:  the C compiler and Python headers that mypyc's compiled build needs
-#                      (setup.py; checked against the Python that creates .venv).
-SYSTEM_PACKAGES := python3-roslaunch python3-venv chromium gcc python3-dev
+SYSTEM_PACKAGES := python3-roslaunch python3-venv chromium
 CHECK_python3-roslaunch := /usr/bin/python3 -c 'import roslaunch'
 CHECK_python3-venv := $(PYTHON) -c 'import ensurepip, venv'
 CHECK_chromium := /usr/bin/chromium --version
-CHECK_gcc := gcc --version
-CHECK_python3-dev := $(PYTHON) -c 'import os, sysconfig, sys; sys.exit(not os.path.exists(os.path.join(sysconfig.get_paths()["include"], "Python.h")))'
 
 APT_ENV := env DEBIAN_FRONTEND=noninteractive
 # Empty when we are root; "sudo" when we are not and sudo exists.
@@ -58,12 +52,13 @@ system-packages:
 	fi
 
 $(VPY): | system-packages
+	@echo "Creating the virtual environment $(VENV)"
 	$(PYTHON) -m venv $(VENV)
 
-# Reinstalled only when the project's metadata or a source file is newer than the stamp.
-SOURCES := $(shell find src/rosvar -type f ! -path '*/__pycache__/*')
-$(STAMP): pyproject.toml setup.py $(SOURCES) | $(VPY)
-	$(VENV)/bin/pip install -q '.[test]'
+# Reinstalled only when the project's metadata changes (the install is editable).
+$(STAMP): pyproject.toml | $(VPY)
+	@echo "Installing rosvar and its test tools into $(VENV) (pip)"
+	$(VENV)/bin/pip install --disable-pip-version-check --progress-bar off -e '.[test]'
 	touch $@
 
 # The web UI on the example, plus the Lizi corpus system when ../shared/corpus is there.

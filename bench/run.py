@@ -39,7 +39,6 @@ import tempfile
 import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
-from importlib.machinery import EXTENSION_SUFFIXES
 from pathlib import Path
 from typing import Any
 from xml.dom import minidom
@@ -221,9 +220,8 @@ FEATURES_BUDGET_S = 120.0  # the feature model of a large workload may not finis
 
 
 QUESTIONS_MAX_FILES = 137
-"""The solver questions are timed up to Husky's size. The alarm cannot cut one question
-short in the compiled build (a compiled call runs no signal handler until it returns), and
-on 400 generated files one question outlasted the budget by minutes."""
+"""The solver questions are timed up to Husky's size: on 400 generated files one question
+outlasted the budget by minutes."""
 
 
 def measure_features(job: Job) -> Metrics:
@@ -868,13 +866,10 @@ def _machine() -> str:
 
 
 def _build() -> str:
-    """Whether the measured rosvar is the compiled build (setup.py) or plain Python sources."""
-    spec = importlib.util.find_spec("rosvar.interpreter.interpretation")
+    """Where the measured rosvar's sources are."""
+    spec = importlib.util.find_spec("rosvar")
     origin = spec.origin if spec is not None else None
-    if origin is None:
-        return "not found"
-    kind = "compiled by mypyc" if origin.endswith(tuple(EXTENSION_SUFFIXES)) else "plain Python"
-    return f"{kind} ({Path(origin).parent.parent.parent})"
+    return "not found" if origin is None else f"plain Python ({Path(origin).parent})"
 
 
 def _revision() -> str:

@@ -48,10 +48,7 @@ class Clash:
 
 class _WrittenIn:
     """Whether a location's file is ``file``, symlinks resolved once per distinct path
-    (a model holds thousands of elements from a handful of included files).
-
-    A class, not a closure: compiled, a returned closure and its variables form a cycle
-    that only the garbage collector frees."""
+    (a model holds thousands of elements from a handful of included files)."""
 
     def __init__(self, file: str) -> None:
         self._target = real_path(file)

@@ -24,14 +24,12 @@ import os
 import sys
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from functools import cache
+from functools import cache, cached_property
 from typing import TYPE_CHECKING, TypeAlias
 
 import dd.cudd as _cudd
-from mypy_extensions import mypyc_attr
 
 from rosvar.interpreter.analysis import collector_paused
-from rosvar.lazy import lazy_property
 from rosvar.logic.conditions import BDD
 
 if TYPE_CHECKING:
@@ -46,8 +44,6 @@ VECTOR_FROM = 2_000
 """A recount over at least this many nodes runs in numpy; fewer are cheaper one by one."""
 
 
-# a Python class when compiled, for its lazy properties (rosvar.lazy)
-@mypyc_attr(native_class=False)
 class CountedDiagram:
     """A BDD counted exactly under some weights, then again under others.
 
@@ -138,7 +134,7 @@ class CountedDiagram:
             _ = self._residues
             moduli()
 
-    @lazy_property
+    @cached_property
     def _above(self) -> dict[int, int]:
         """Per weighted level, the nodes at it or above: what a recount down to it visits."""
         at: dict[int, int] = dict.fromkeys(self._weights, 0)
@@ -150,7 +146,7 @@ class CountedDiagram:
             above[level] = running
         return above
 
-    @lazy_property
+    @cached_property
     def _residues(self) -> _Residues:
         return _Residues.of(self._levels, self._lows, self._highs, self._root)
 

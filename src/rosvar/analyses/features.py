@@ -16,16 +16,15 @@ from collections import deque
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import dd.cudd as _cudd
-from mypy_extensions import mypyc_attr
 
 from rosvar.analyses.conflicts import Clash, Occurrence, clashes, index, repeated_inclusions
 from rosvar.analyses.counting import CountedDiagram, Weight
 from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.interpreter.analysis import Analysis, collector_paused
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
-from rosvar.lazy import lazy_property
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import (
     BDD,
@@ -94,8 +93,6 @@ class ModelTooLarge(Exception):
     """The solver's BDDs would outgrow their budget: the model is listed, not solved."""
 
 
-# a Python class when compiled, for its lazy properties (rosvar.lazy)
-@mypyc_attr(native_class=False)
 @dataclass
 class FeatureModel:
     """The feature tree and its cross-tree constraints, with the solver that answers on them.
@@ -125,17 +122,17 @@ class FeatureModel:
             raise ModelTooLarge(*self.solution.args)
         return self.solution
 
-    @lazy_property
+    @cached_property
     def clashes(self) -> list[Clash]:
         return clashes(self.declarations)
 
-    @lazy_property
+    @cached_property
     def internal(self) -> list[Clash]:
         """Clashes inside one file: two of its nodes, or one file included twice."""
         found = [c for c in self.clashes if c.first.file == c.second.file and c.kind == "node"]
         return found + [c for model in self.launch_models for c in repeated_inclusions(model)]
 
-    @lazy_property
+    @cached_property
     def constraints(self) -> list[Constraint]:
         return self.requires + _excludes(self.space, self.files, self.clashes)
 
@@ -475,8 +472,6 @@ def _force(files: list[str], neighbours: Mapping[str, set[str]]) -> list[str]:
     return best
 
 
-# a Python class when compiled, for its lazy properties (rosvar.lazy)
-@mypyc_attr(native_class=False)
 class Component:
     """Files linked by cross-tree constraints, and their formula.
 
@@ -528,17 +523,17 @@ class Component:
         self.counted_variables = [name for name in variables if name not in left_out]
         self.counted = conjoin(manager, [*_arg_trees(manager, kept), *constraints])
 
-    @lazy_property
+    @cached_property
     def counted_diagram(self) -> CountedDiagram:
         """``counted`` under the weights of no choice (the count of every configuration)."""
         return CountedDiagram(self.manager, self.counted, self._weights({}))
 
-    @lazy_property
+    @cached_property
     def tree(self) -> BDD:
         """The component's part of the feature tree."""
         return conjoin(self.manager, _arg_trees(self.manager, self._args))
 
-    @lazy_property
+    @cached_property
     def formula(self) -> BDD:
         """Its files' tree ∧ their cross-tree constraints, over all its variables."""
         with _memory_bound(self.manager, self._workspace_files):
@@ -584,8 +579,6 @@ def _arg_trees(manager: _cudd.BDD, args: Sequence[tuple[str, list[str]]]) -> lis
     return trees
 
 
-# a Python class when compiled, for its lazy properties (rosvar.lazy)
-@mypyc_attr(native_class=False)
 class Solver:
     """The feature model as BDDs in a manager of its own, ordered for it.
 
@@ -609,16 +602,16 @@ class Solver:
         self.components = components
         self._translate = constraints
 
-    @lazy_property
+    @cached_property
     def tree(self) -> BDD:
         """The feature tree alone."""
         return conjoin(self.manager, [c.tree for c in self.components])
 
-    @lazy_property
+    @cached_property
     def constraints(self) -> list[BDD]:
         return self._translate()
 
-    @lazy_property
+    @cached_property
     def formula(self) -> BDD:
         """Everything: the conjunction of the components."""
         return conjoin(self.manager, [c.formula for c in self.components])
@@ -639,7 +632,7 @@ class Solver:
         ]
         return _arg_trees(self.manager, args)
 
-    @lazy_property
+    @cached_property
     def component_of(self) -> dict[str, int]:
         """Variable name → index of the component it belongs to."""
         return {v: n for n, c in enumerate(self.components) for v in c.variables}

@@ -462,9 +462,8 @@ class Derivation:
         """
         without = within = None
         if component is not None:
-            # filter, not a generator expression: compiled, that would test every example
-            examples = filter(
-                lambda w: decisions.valid(component, w), self._examples.get(component, ())
+            examples = (
+                w for w in self._examples.get(component, ()) if decisions.valid(component, w)
             )
             exact = must == may  # the usual case: one walk down the diagram answers both
             for witness in chain(decisions.witnesses[component], examples):

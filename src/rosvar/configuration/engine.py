@@ -11,8 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
-
-from mypy_extensions import mypyc_attr
+from functools import cached_property
 
 from rosvar.analyses.features import FeatureModel, explain
 from rosvar.configuration.catalog import Catalog, Feature
@@ -26,7 +25,6 @@ from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.view import Graph, Views
 from rosvar.interpreter.analysis import Analysis, collector_paused
 from rosvar.interpreter.model import LaunchModel
-from rosvar.lazy import lazy_property
 from rosvar.logic.inputs import OTHER, UNSET
 
 CACHED_FEATURES = 1_000_000
@@ -38,8 +36,6 @@ MIN_CACHED_STEPS = 64
 EXACT_INTEGER = 2**53  # larger counts go to JSON as strings
 
 
-# a Python class when compiled, for its lazy properties (rosvar.lazy)
-@mypyc_attr(native_class=False)
 @dataclass(frozen=True)
 class FeatureState:
     """One feature's state; the engine hands out one object per feature and state, so
@@ -56,7 +52,7 @@ class FeatureState:
     def to_json(self) -> dict[str, object]:
         return self._document
 
-    @lazy_property
+    @cached_property
     def _document(self) -> dict[str, object]:
         return {
             "kind": self.kind,
@@ -73,8 +69,6 @@ _Row = tuple[str, str, dict[tuple[bool | None, bool], FeatureState]]
 """A feature's id, its variable and its states by (decided value, chosen by the user)."""
 
 
-# a Python class when compiled, for its lazy properties (rosvar.lazy)
-@mypyc_attr(native_class=False)
 @dataclass
 class ConfigurationState:
     choices: list[UserChoice]
@@ -89,7 +83,7 @@ class ConfigurationState:
     commands: list[list[Launch]] = field(default_factory=list)  # files sharing a command line
     untyped: list[str] = field(default_factory=list)  # args at <other> still without a text
 
-    @lazy_property
+    @cached_property
     def configurations(self) -> int:
         """Valid configurations remaining (counted on first use)."""
         return self.counter()

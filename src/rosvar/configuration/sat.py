@@ -215,10 +215,7 @@ def _regular(u: BDD) -> BDD:
 
 
 def _false_paths(v: BDD, false: BDD, counts: dict[BDD, int]) -> int:
-    """How many paths lead from ``v`` to FALSE (``counts``: those known, by node).
-
-    A function, not a closure: compiled, a recursive closure and the variables of its
-    caller form a cycle that only the garbage collector frees."""
+    """How many paths lead from ``v`` to FALSE (``counts``: those known, by node)."""
     if v.var is None:
         return int(v == false)
     found = counts.get(v)

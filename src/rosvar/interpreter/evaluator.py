@@ -1182,9 +1182,8 @@ class _Interpreter:
                     yield None
 
         def elements(element: ast.expr) -> Iterator[object]:
-            """A generator expression's items, lazily (compiled, an inline generator
-            expression would be built as a list, and ``1 in (1 / v for v in [1, 0])``
-            would divide by zero)."""
+            """A generator expression's items, lazily: ``1 in (1 / v for v in [1, 0])``
+            must stop before it divides by zero."""
             for _ in rounds():
                 yield self._eval(element, inner)
 

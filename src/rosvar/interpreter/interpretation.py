@@ -85,8 +85,6 @@ register_predicate("false", _falsy, "{} is false")
 class Interpretation:
     """State of one symbolic roslaunch run over one or more entry files."""
 
-    __deletable__ = ("substituter",)  # by ``close`` (a compiled class declares it)
-
     def __init__(
         self,
         workspace: Workspace,

@@ -81,9 +81,9 @@ _SafeLoader: type[yaml.SafeLoader] = getattr(yaml, "CSafeLoader", yaml.SafeLoade
 
 # ``yaml.SafeLoader`` with rosparam's additions (``!degrees``, ``!radians``, binary).
 # rosparam registers these on PyYAML's global SafeLoader; a subclass keeps the behaviour
-# without touching global state. It is made by ``type`` so that it stays an ordinary
-# Python class when this module is compiled (a compiled subclass of the C loader crashes).
-RosparamLoader: type[yaml.SafeLoader] = type("RosparamLoader", (_SafeLoader,), {})
+# without touching global state.
+class RosparamLoader(_SafeLoader):  # type: ignore[valid-type,misc]
+    """PyYAML's safe loader (the C one when built) with rosparam's tags."""
 
 
 def _radians(loader: yaml.SafeLoader, node: yaml.Node) -> float:
