@@ -177,7 +177,7 @@ def _disarm(previous: object) -> None:
 def measure_analyze(job: Job) -> Metrics:
     """What ``rosvar analyze`` does before printing, with nothing cached from a prior run."""
     from rosvar.frontends.ros1_xml.parser import clear_cache
-    from rosvar.interpreter.analysis import Analysis
+    from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace import discover
 
     def reset() -> None:
@@ -241,7 +241,7 @@ def measure_features(job: Job) -> Metrics:
         extract,
         simplest_trigger,
     )
-    from rosvar.interpreter.analysis import Analysis
+    from rosvar.interpreter.workspace_models import Analysis
 
     analysis, job.analysis = job.analysis, None
     if not isinstance(analysis, Analysis):
@@ -315,7 +315,7 @@ def measure_web(job: Job) -> Metrics:
 
     from rosvar.analyses.features import extract
     from rosvar.configuration.engine import Configurator
-    from rosvar.interpreter.analysis import Analysis
+    from rosvar.interpreter.workspace_models import Analysis
     from rosvar.outputs.web.delta import patch
     from rosvar.outputs.web.server import make_server
     from rosvar.workspace import discover
@@ -396,7 +396,7 @@ def measure_configure(job: Job) -> Metrics:
     from rosvar.analyses.features import extract
     from rosvar.configuration.choices import UserChoice
     from rosvar.configuration.engine import Configurator
-    from rosvar.interpreter.analysis import Analysis
+    from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace import discover
 
     if len(job.files) > CONFIGURE_MAX_FILES or not job.feature_model_built:
@@ -451,7 +451,7 @@ ISOLATED_MEASUREMENTS: dict[str, Callable[[Job], Metrics]] = {
 
 def run_one(options: argparse.Namespace) -> None:
     """The ``--one`` mode: import cost recorded apart, then every isolated measurement."""
-    import rosvar.interpreter.analysis  # noqa: F401 - imported before measuring
+    import rosvar.interpreter.workspace_models  # noqa: F401 - imported before measuring
 
     metrics: Metrics = {"import_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024}
     job = Job(options.paths, options.package_path, options.repeats, options.budget)
@@ -816,7 +816,7 @@ def target_lines(outcomes: Sequence[Outcome]) -> list[str]:
 def profile_one(options: argparse.Namespace) -> None:
     """The ``--one --profile-one`` mode: cProfile of one analyze run, top functions printed."""
     from rosvar.frontends.ros1_xml.parser import clear_cache
-    from rosvar.interpreter.analysis import Analysis
+    from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace import discover
 
     clear_cache()

@@ -17,7 +17,7 @@ from playwright.sync_api import Page, sync_playwright
 
 from rosvar.analyses.features import extract
 from rosvar.configuration.engine import Configurator
-from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.web.server import make_server
 from rosvar.workspace import discover
 

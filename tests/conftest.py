@@ -1,9 +1,9 @@
 """Shared fixtures: a throw-away ROS workspace for launch files written inline by a test.
 
 ``ws`` (a :class:`LaunchWorkspace` under ``tmp_path``) writes launch files into a package,
-analyses them with one :class:`~rosvar.interpreter.analysis.Analysis`, restricts the model to
-configurations and, where the roslaunch oracle is available, compares a restriction with the real
-roslaunch (``tests/oracle``) using the differential harness's :func:`compare`.
+analyses them with one :class:`~rosvar.interpreter.workspace_models.Analysis`, restricts the model
+to configurations and, where the roslaunch oracle is available, compares a restriction with the
+real roslaunch (``tests/oracle``) using the differential harness's :func:`compare`.
 
 The directory ``tests/`` is put on ``sys.path`` so that test modules (which pytest imports in
 ``importlib`` mode, outside any package) can import ``oracle.client`` like the harness does.
@@ -19,8 +19,8 @@ from typing import Any
 import pytest
 
 from rosvar.analyses.resolve import Resolution, resolve
-from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
 TESTS = Path(__file__).resolve().parent

@@ -16,7 +16,7 @@ import pytest
 from rosvar.analyses.features import FeatureModel, extract
 from rosvar.analyses.metrics import Metrics, command_line_args, compute
 from rosvar.frontends.ros1_xml.parser import load_launch_file
-from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
 CORPUS = Path(__file__).resolve().parents[3] / "shared" / "corpus"

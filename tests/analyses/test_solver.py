@@ -277,7 +277,7 @@ def test_one_pass_possible_values_match_asking_the_solver(system: str) -> None:
     from pathlib import Path
 
     from rosvar.analyses.features import possible_values
-    from rosvar.interpreter.analysis import Analysis
+    from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace import discover
 
     root = Path(__file__).resolve().parents[2]

@@ -11,8 +11,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from rosvar.analyses.features import extract
-from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.domains import PARAM_TYPES
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.inputs import OTHER, UNSET, EnvInput, Slot
 from rosvar.workspace import discover
 from rosvar.workspace.hints import load_hints

@@ -14,7 +14,7 @@ from rosvar.configuration.derivation import (
     PRESENT,
     UNDETERMINED,
     Derivation,
-    Verdict,
+    PresenceVerdict,
 )
 from rosvar.configuration.lowering import Bounds
 
@@ -46,7 +46,7 @@ def test_decisions_agree_with_the_built_formula(ws: LaunchWorkspace) -> None:
             manager.var(rng.choice(solver.variables)) | manager.var(rng.choice(solver.variables))
             for _ in range(3)
         ]
-        earlier: list[Verdict | None] = [None] * len(conditions)
+        earlier: list[PresenceVerdict | None] = [None] * len(conditions)
         for _ in range(rng.randint(0, 4)):
             variable, value = rng.choice(solver.variables), rng.random() < 0.5
             found = derivation.add(decisions, variable, value)

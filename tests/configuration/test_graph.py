@@ -14,7 +14,7 @@ from rosvar.analyses.features import extract
 from rosvar.analyses.resolve import resolve
 from rosvar.configuration.command import given
 from rosvar.configuration.engine import Configurator
-from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
 if TYPE_CHECKING:

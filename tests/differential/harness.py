@@ -3,8 +3,9 @@
 For every launch file of a system, a few configurations (command-line args) are chosen from the
 file's variational model (:func:`configurations`). Each configuration is loaded by the roslaunch
 oracle (``tests/oracle``, all jobs of a system in one batch) and restricted by rosvar in-process
-(:func:`rosvar.analyses.resolve.resolve`, one :class:`~rosvar.interpreter.analysis.Analysis` per
-system), and the two results are compared (:func:`compare`). Each case ends up as
+(:func:`rosvar.analyses.resolve.resolve`, one
+:class:`~rosvar.interpreter.workspace_models.Analysis` per system), and the two
+results are compared (:func:`compare`). Each case ends up as
 
 * ``agree``: same nodes, tests and parameters, or both refuse the configuration;
 * ``differ``: anything else, including rosvar raising an exception;
@@ -39,8 +40,8 @@ from pathlib import Path
 from typing import Any
 
 from rosvar.analyses.resolve import resolve
-from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
 try:

@@ -17,7 +17,7 @@ from configuration.helpers import product, random_product
 from rosvar.analyses.features import extract
 from rosvar.configuration.command import given
 from rosvar.configuration.engine import Configurator
-from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
 from .harness import (

@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, TypeAlias
 
 import dd.cudd as _cudd
 
-from rosvar.interpreter.analysis import collector_paused
+from rosvar.interpreter.workspace_models import collector_paused
 from rosvar.logic.conditions import BDD
 
 if TYPE_CHECKING:

@@ -23,8 +23,8 @@ import dd.cudd as _cudd
 from rosvar.analyses.conflicts import Clash, Occurrence, clashes, index, repeated_inclusions
 from rosvar.analyses.counting import CountedDiagram, Weight
 from rosvar.diagnostics import Diagnostic, Location, Severity
-from rosvar.interpreter.analysis import Analysis, collector_paused
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
+from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import (
     BDD,

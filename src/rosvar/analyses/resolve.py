@@ -13,14 +13,14 @@ import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
-from rosvar.analyses.values import json_value
+from rosvar.analyses.json_values import json_value
 from rosvar.diagnostics import Location
-from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl, Raw
 from rosvar.interpreter.substitution import PackageTable
 from rosvar.interpreter.tags.param import param_value
 from rosvar.interpreter.tags.rosparam import load_rosparam
 from rosvar.interpreter.validation import node_values
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import ArgInput, EnvInput, Input
 from rosvar.logic.terms import Apply, Hole, TermError, evaluate

@@ -72,7 +72,7 @@ class Decisions:
 
 
 @dataclass(frozen=True)
-class Verdict:
+class PresenceVerdict:
     """Presence of a condition at one step, and what it depended on.
 
     ``values`` are the decided variables of its support. When restriction by them was not
@@ -262,13 +262,13 @@ class Derivation:
         for component in self.components:
             component.counted_diagram.prepare()
 
-    def presence(self, bounds: Bounds, decisions: Decisions) -> Verdict:
+    def presence(self, bounds: Bounds, decisions: Decisions) -> PresenceVerdict:
         """Present, absent or undetermined, and what the verdict depended on."""
         return self.presences([(bounds, None)], decisions)[0]
 
     def presences(
-        self, conditions: Sequence[tuple[Bounds, Verdict | None]], decisions: Decisions
-    ) -> list[Verdict]:
+        self, conditions: Sequence[tuple[Bounds, PresenceVerdict | None]], decisions: Decisions
+    ) -> list[PresenceVerdict]:
         """Each condition's verdict, and what it depended on; with a condition may come
         its verdict under fewer literals (a prefix of these), whose witnesses may be
         repaired (``_carried``).
@@ -288,7 +288,7 @@ class Derivation:
                 self._restricted[key] = restricted
             verdict, must, may, components = restricted
             if verdict is not None:
-                verdicts.append(Verdict(verdict, values))
+                verdicts.append(PresenceVerdict(verdict, values))
                 continue
             (component,) = components if len(components) == 1 else (None,)
             cube = decisions.cube if component is None else decisions.cubes[component]
@@ -300,7 +300,7 @@ class Derivation:
                 if judged is None:
                     judged = self._judge(must, may, component, decisions)
                 self._judged[(must, may, cube)] = judged
-            verdicts.append(Verdict(judged[0], values, components, judged[1]))
+            verdicts.append(PresenceVerdict(judged[0], values, components, judged[1]))
         return verdicts
 
     def _restrict(
@@ -336,7 +336,7 @@ class Derivation:
         )
 
     def _carried(
-        self, must: BDD, may: BDD, earlier: Verdict, decisions: Decisions
+        self, must: BDD, may: BDD, earlier: PresenceVerdict, decisions: Decisions
     ) -> tuple[str, tuple[int, int]] | None:
         """``earlier`` (undetermined under fewer literals) still undetermined for the
         restricted bounds ``must`` and ``may``, shown by its witnesses repaired."""
@@ -348,7 +348,7 @@ class Derivation:
             return None
         return UNDETERMINED, repaired
 
-    def repairs(self, earlier: Verdict, decisions: Decisions) -> tuple[int, int] | None:
+    def repairs(self, earlier: PresenceVerdict, decisions: Decisions) -> tuple[int, int] | None:
         """The witnesses of ``earlier`` (an undetermined verdict under fewer literals)
         repaired to agree with the literals of ``decisions`` (``repaired``); None when
         one cannot be."""

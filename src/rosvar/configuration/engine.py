@@ -23,8 +23,8 @@ from rosvar.configuration.graph import VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.view import Graph, Views
-from rosvar.interpreter.analysis import Analysis, collector_paused
 from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.inputs import OTHER, UNSET
 
 CACHED_FEATURES = 1_000_000

@@ -17,12 +17,11 @@ from dataclasses import dataclass, field
 from typing import cast
 
 from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.json_values import json_value
 from rosvar.analyses.resolve import ResolutionError, test_fields
-from rosvar.analyses.values import json_value
 from rosvar.configuration.derivation import PRESENT, UNDETERMINED
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
-from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.model import (
     DeferredValue,
     LaunchModel,
@@ -34,6 +33,7 @@ from rosvar.interpreter.model import (
 from rosvar.interpreter.tags.param import param_value
 from rosvar.interpreter.tags.rosparam import load_rosparam
 from rosvar.interpreter.validation import node_values
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import BDD
 from rosvar.logic.inputs import Input

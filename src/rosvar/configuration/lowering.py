@@ -15,8 +15,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from rosvar.analyses.features import FeatureModel
-from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.substitution import PackageTable
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.conditions import BDD, PredicateAtom, SlotAtom, decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import term_inputs

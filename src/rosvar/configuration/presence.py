@@ -16,7 +16,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
-from rosvar.configuration.derivation import UNDETERMINED, Decisions, Derivation, Verdict
+from rosvar.configuration.derivation import UNDETERMINED, Decisions, Derivation, PresenceVerdict
 from rosvar.configuration.graph import Element
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.logic.conditions import BDD
@@ -41,7 +41,7 @@ class Condition:
 class Judged:
     """A condition's verdict at one step, and the condition simplified for people."""
 
-    verdict: Verdict
+    verdict: PresenceVerdict
     description: str | None  # None once present or absent
 
     @property
@@ -242,7 +242,7 @@ class Presences:
         decisions: Decisions,
         typed: Typed,
         describe: Describe,
-        hints: Sequence[Verdict | None],
+        hints: Sequence[PresenceVerdict | None],
     ) -> list[Judged]:
         """The conditions of ``indices``, judged in one pass (the solver's example for one
         may show the next undetermined), with their verdicts at an earlier step (if any) as
@@ -261,13 +261,13 @@ class Presences:
         return judged
 
 
-def _hint(answer: Judgement, index: int) -> Verdict:
+def _hint(answer: Judgement, index: int) -> PresenceVerdict:
     """Verdict ``index`` of ``answer``, with the witnesses that show it at that step."""
     verdict = answer.verdicts[index].verdict
     witnesses = answer.witnesses(index)
     if witnesses is None or witnesses == verdict.witnesses:
         return verdict
-    return Verdict(verdict.presence, verdict.values, verdict.components, witnesses)
+    return PresenceVerdict(verdict.presence, verdict.values, verdict.components, witnesses)
 
 
 def _judgement(

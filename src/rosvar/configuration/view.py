@@ -20,7 +20,7 @@ from rosvar.configuration.graph import Element, Fields, Shown, Values, Variation
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.presence import Judged, Judgement, Presences, Typed
-from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.conditions import BDD
 from rosvar.logic.inputs import OTHER, UNSET, Input
 

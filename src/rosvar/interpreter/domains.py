@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import Snapshot
-from rosvar.interpreter.evaluator import EvalRefused, compared_literals
+from rosvar.interpreter.safe_eval import EvalRefused, compared_literals
 from rosvar.logic.inputs import OTHER, UNSET, Slot
 from rosvar.workspace import Workspace
 from rosvar.workspace.executables import executables

@@ -16,14 +16,14 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
 
-from rosvar.interpreter.evaluator import (
+from rosvar.interpreter.model import Raw
+from rosvar.interpreter.safe_eval import (
     EvalEnvironment,
     EvalFailed,
     EvalRefused,
     evaluate,
     referenced_args,
 )
-from rosvar.interpreter.model import Raw
 from rosvar.interpreter.scope import MISSING, Scope, _Missing
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.conditions import ConditionSpace

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import functools
 
-from rosvar.interpreter.values import bool_attribute, float_attribute
+from rosvar.interpreter.typed_values import bool_attribute, float_attribute
 from rosvar.logic.terms import is_term
 
 

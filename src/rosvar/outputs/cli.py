@@ -23,7 +23,7 @@ from rosvar.analyses.resolve import resolve
 from rosvar.configuration.choices import ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.diagnostics import Severity
-from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.describe import describe_model
 from rosvar.outputs.exports import WRITERS, write
 from rosvar.outputs.web.server import make_server

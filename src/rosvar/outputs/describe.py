@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from rosvar.analyses.values import json_value
+from rosvar.analyses.json_values import json_value
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import OTHER, UNSET, Slot

@@ -20,7 +20,7 @@ import pytest
 
 from rosvar.analyses.counting import CountedDiagram
 from rosvar.analyses.features import FeatureModel, extract
-from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
 REPO = Path(__file__).resolve().parents[3]

@@ -11,7 +11,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from rosvar.analyses.features import FeatureModel, count_configurations, extract
-from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.exports import uvl
 from rosvar.outputs.exports._common import Tree, escape
 from rosvar.workspace import discover

@@ -20,7 +20,7 @@ import pytest
 
 from rosvar.analyses.features import extract
 from rosvar.configuration.engine import Configurator
-from rosvar.interpreter.analysis import Analysis
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.web.server import WebServer, make_server
 from rosvar.workspace import discover
 

@@ -6,7 +6,7 @@ from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import ClearParamDecl, Raw
 from rosvar.interpreter.scope import Scope
-from rosvar.interpreter.values import bool_attribute
+from rosvar.interpreter.typed_values import bool_attribute
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.conditions import BDD, PREDICATES, register_predicate
 from rosvar.logic.terms import Apply, Hole

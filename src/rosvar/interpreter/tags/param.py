@@ -2,17 +2,31 @@
 
 from __future__ import annotations
 
+import yaml
+
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
 from rosvar.interpreter.model import Binary, DeferredValue, ParamDecl, Raw
+from rosvar.interpreter.rosparam_yaml import load_yaml
 from rosvar.interpreter.scope import PrivateParam, Scope
 from rosvar.interpreter.tags.rosparam import read_text
-from rosvar.interpreter.values import convert_value
+from rosvar.interpreter.typed_values import convert_scalar
 from rosvar.logic.choice import Choice, Fail
 from rosvar.ros import names
 
 ATTRIBUTES = ("name", "value", "type", "textfile", "binfile", "command")
 SOURCES = ("value", "textfile", "binfile", "command")
+
+
+def convert_value(value: str, type_: str) -> object:
+    """roslaunch's ``convert_value``: ``auto`` guesses int, float, bool, then str."""
+    type_ = type_.lower()
+    if type_ == "yaml":
+        try:
+            return load_yaml(value)
+        except yaml.parser.ParserError as error:
+            raise ValueError(str(error)) from error
+    return convert_scalar(value, type_)
 
 
 def param_value(kind: str, raw: str, ptype: str) -> object:

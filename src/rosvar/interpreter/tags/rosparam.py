@@ -11,9 +11,9 @@ import yaml
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
 from rosvar.interpreter.model import ParamDecl, Raw, YamlDecl
+from rosvar.interpreter.rosparam_yaml import load_yaml
 from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.tags.common import bool_value
-from rosvar.interpreter.values import load_yaml
 from rosvar.logic.choice import Choice
 from rosvar.ros import names
 

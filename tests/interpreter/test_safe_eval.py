@@ -19,7 +19,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from rosvar.interpreter.evaluator import (
+from rosvar.interpreter.safe_eval import (
     MAX_ITERATIONS,
     EvalEnvironment,
     EvalFailed,

@@ -45,7 +45,7 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Final, NoReturn, TypeVar, cast
 
-from rosvar.interpreter.values import convert_value
+from rosvar.interpreter.typed_values import convert_scalar
 
 __all__ = [
     "MAX_COMBINATORIC_ARGUMENT",
@@ -241,7 +241,7 @@ def convert_auto(value: str) -> bool | int | float | str:
     Replicated statement by statement because the quirks matter: ``'1_0'`` stays a string,
     ``'1_0.5'`` becomes ``10.5``, ``' 7 '`` becomes ``7``, ``'TRUE'`` becomes ``True``.
     """
-    return cast(bool | int | float | str, convert_value(value, "auto"))
+    return cast(bool | int | float | str, convert_scalar(value, "auto"))
 
 
 def referenced_args(expr: str) -> frozenset[str]:
