@@ -9,13 +9,7 @@ import pytest
 
 from rosvar.analyses.counting import CountedDiagram
 from rosvar.analyses.features import extract
-from rosvar.configuration.derivation import (
-    ABSENT,
-    PRESENT,
-    UNDETERMINED,
-    Derivation,
-    PresenceVerdict,
-)
+from rosvar.configuration.derivation import Derivation, Presence, PresenceVerdict
 from rosvar.configuration.lowering import Bounds
 
 if TYPE_CHECKING:
@@ -68,9 +62,9 @@ def test_decisions_agree_with_the_built_formula(ws: LaunchWorkspace) -> None:
             earlier = list(derivation.presences(asked, decisions))
             for condition, verdict in zip(conditions, earlier, strict=True):
                 expected_presence = (
-                    PRESENT if (restricted & ~condition) == manager.false
-                    else ABSENT if (restricted & condition) == manager.false
-                    else UNDETERMINED
+                    Presence.PRESENT if (restricted & ~condition) == manager.false
+                    else Presence.ABSENT if (restricted & condition) == manager.false
+                    else Presence.UNDETERMINED
                 )  # fmt: skip
                 assert verdict.presence == expected_presence
 

@@ -7,10 +7,16 @@ Choices are plain data. The engine replays a list of them in order, so a statele
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Literal, cast
+from enum import StrEnum
 
-Action = Literal["select", "deselect", "unselect", "set"]
-ACTIONS: tuple[Action, ...] = ("select", "deselect", "unselect", "set")
+
+class Action(StrEnum):
+    """What a choice does to its feature."""
+
+    SELECT = "select"
+    DESELECT = "deselect"
+    UNSELECT = "unselect"
+    SET = "set"
 
 
 class ChoiceError(ValueError):
@@ -32,14 +38,16 @@ class UserChoice:
     @staticmethod
     def parse(action: str, text: str) -> UserChoice:
         """``set`` takes ``FILE:ARG=VALUE``; the other actions a feature id."""
-        if action not in ACTIONS:
-            raise ChoiceError(f"unknown action {action!r} (one of {', '.join(ACTIONS)})")
-        if action != "set":
-            return UserChoice(cast(Action, action), text)
+        try:
+            known = Action(action)
+        except ValueError:
+            raise ChoiceError(f"unknown action {action!r} (one of {', '.join(Action)})") from None
+        if known != Action.SET:
+            return UserChoice(known, text)
         feature, sep, value = text.partition("=")
         if not sep or ":" not in feature:
             raise ChoiceError(f"set expects FILE:ARG=VALUE, got {text!r}")
-        return UserChoice("set", feature, value)
+        return UserChoice(Action.SET, feature, value)
 
     def to_json(self) -> dict[str, object]:
         return {"action": self.action, "feature": self.feature, "value": self.value}

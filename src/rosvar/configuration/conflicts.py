@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
+from enum import StrEnum
 from itertools import count
 
 import dd.cudd as _cudd
@@ -21,12 +22,18 @@ from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.lowering import Lowering
 from rosvar.logic.conditions import BDD, walked_support
 
-CERTAIN, POSSIBLE = "certain", "possible"
 REQUIRES_LIMIT = 100_000
 """Nodes of a component's formula above which its requires are left out of clash judgements."""
 BLOCK_LIMIT = 20_000
 """Nodes of a block's ``tree ∧ requires`` above which its requires are left out (the corpus's
 largest block has 2,886 nodes; a generated system of 100 files linked by includes, 127,000)."""
+
+
+class Certainty(StrEnum):
+    """Whether a conflict happens in every valid configuration left, or only in some."""
+
+    CERTAIN = "certain"
+    POSSIBLE = "possible"
 
 
 @dataclass(frozen=True)
@@ -47,7 +54,7 @@ class Clashing:
 class ConflictState:
     files: tuple[str, str]
     names: tuple[str, ...]
-    status: str  # certain | possible
+    status: Certainty
     condition: str | None
 
     def to_json(self) -> dict[str, object]:
@@ -147,7 +154,7 @@ class Conflicts:
             more = earlier.literals.items() <= decisions.literals.items()
         for number in again:
             was, pair = found[number], self.pairs[number]
-            if not more or (was is not None and was.status != CERTAIN):
+            if not more or (was is not None and was.status != Certainty.CERTAIN):
                 found[number] = self._status(pair, decisions, describe)
             elif was is not None and not self._meets(pair.possible, pair, decisions):
                 found[number] = None
@@ -175,9 +182,11 @@ class Conflicts:
         if not self._meets(pair.possible, pair, decisions):
             return None
         if not self._meets(pair.escapes, pair, decisions):
-            return ConflictState(pair.files, pair.names, CERTAIN, None)
+            return ConflictState(pair.files, pair.names, Certainty.CERTAIN, None)
         literals = {v: b for v, b in decisions.literals.items() if v in pair.variables}
-        return ConflictState(pair.files, pair.names, POSSIBLE, describe(pair.condition, literals))
+        return ConflictState(
+            pair.files, pair.names, Certainty.POSSIBLE, describe(pair.condition, literals)
+        )
 
 
 def _blocks(

@@ -28,6 +28,7 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
+from enum import StrEnum
 from itertools import chain
 
 import dd.cudd as _cudd
@@ -37,12 +38,19 @@ from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.sat import Sat
 from rosvar.logic.conditions import BDD, walked_support
 
-PRESENT, ABSENT, UNDETERMINED = "present", "absent", "undetermined"
 SOURCES = 4  # witnesses tried as the source of a repair
 REPAIRED_FILES = 8  # files a repair may copy: beyond, the solver is the cheaper way
 CACHED_REPAIRS = 4096  # repaired witnesses by witness and literals, dropped all at once
 EXAMPLES = 64
 """Configurations found for presence judgements, kept to judge other conditions too."""
+
+
+class Presence(StrEnum):
+    """Whether a condition holds in every valid configuration left, in none, or in some."""
+
+    PRESENT = "present"
+    ABSENT = "absent"
+    UNDETERMINED = "undetermined"
 
 
 @dataclass(frozen=True)
@@ -82,7 +90,7 @@ class PresenceVerdict:
     (``repaired``) still show it so.
     """
 
-    presence: str
+    presence: Presence
     values: Mapping[str, bool]
     components: frozenset[int] = frozenset()
     witnesses: tuple[int, int] | None = None
@@ -123,8 +131,8 @@ class Derivation:
         self.component_of = solver.component_of
         self._supports: dict[BDD, frozenset[str]] = {}
         self._masks_of: dict[BDD, int] = {}
-        self._restricted: dict[object, tuple[str | None, BDD, BDD, frozenset[int]]] = {}
-        self._judged: dict[tuple[BDD, BDD, BDD], tuple[str, tuple[int, int] | None]] = {}
+        self._restricted: dict[object, tuple[Presence | None, BDD, BDD, frozenset[int]]] = {}
+        self._judged: dict[tuple[BDD, BDD, BDD], tuple[Presence, tuple[int, int] | None]] = {}
         self._counts: dict[tuple[int, BDD], int] = {}
         components = range(len(self.members))
         self._examples: dict[int, deque[int]] = {}  # per component: its solver's models
@@ -305,18 +313,18 @@ class Derivation:
 
     def _restrict(
         self, bounds: Bounds, values: Mapping[str, bool], open_: frozenset[str]
-    ) -> tuple[str | None, BDD, BDD, frozenset[int]]:
+    ) -> tuple[Presence | None, BDD, BDD, frozenset[int]]:
         """The verdict restriction alone gives, else what the solver must judge: the
         restricted bounds and the components of their open variables."""
         must = self.cofactor(bounds.must, values)
         may = must if bounds.may == bounds.must else self.cofactor(bounds.may, values)
         if must == self.manager.true:
-            return PRESENT, must, may, frozenset()
+            return Presence.PRESENT, must, may, frozenset()
         if may == self.manager.false:
-            return ABSENT, must, may, frozenset()
+            return Presence.ABSENT, must, may, frozenset()
         if not open_ or (must == may and len(open_) == 1):
             # only an <other> text decides it, or one open variable (it takes both values)
-            return UNDETERMINED, must, may, frozenset()
+            return Presence.UNDETERMINED, must, may, frozenset()
         # conditions over several components are rare (no constraint links their files)
         return None, must, may, frozenset(self.component_of[v] for v in open_)
 
@@ -337,7 +345,7 @@ class Derivation:
 
     def _carried(
         self, must: BDD, may: BDD, earlier: PresenceVerdict, decisions: Decisions
-    ) -> tuple[str, tuple[int, int]] | None:
+    ) -> tuple[Presence, tuple[int, int]] | None:
         """``earlier`` (undetermined under fewer literals) still undetermined for the
         restricted bounds ``must`` and ``may``, shown by its witnesses repaired."""
         repaired = self.repairs(earlier, decisions)
@@ -346,7 +354,7 @@ class Derivation:
         without, within = repaired
         if self._holds(must, without) or not self._holds(may, within):
             return None
-        return UNDETERMINED, repaired
+        return Presence.UNDETERMINED, repaired
 
     def repairs(self, earlier: PresenceVerdict, decisions: Decisions) -> tuple[int, int] | None:
         """The witnesses of ``earlier`` (an undetermined verdict under fewer literals)
@@ -453,7 +461,7 @@ class Derivation:
 
     def _judge(
         self, must: BDD, may: BDD, component: int | None, decisions: Decisions
-    ) -> tuple[str, tuple[int, int] | None]:
+    ) -> tuple[Presence, tuple[int, int] | None]:
         """The verdict, with the witnesses that show it undetermined in one component.
 
         It needs a valid configuration without ``must`` and one with ``may``: sought among
@@ -473,16 +481,16 @@ class Derivation:
                 if within is None and (holds if exact else self._holds(may, witness)):
                     within = witness
                 if without is not None and within is not None:
-                    return UNDETERMINED, (without, within)
+                    return Presence.UNDETERMINED, (without, within)
         if without is None:
             without = self._example(decisions, ~must, component)
             if without is None:
-                return PRESENT, None
+                return Presence.PRESENT, None
         if within is None:
             within = self._example(decisions, may, component)
             if within is None:
-                return ABSENT, None
-        return UNDETERMINED, None if component is None else (without, within)
+                return Presence.ABSENT, None
+        return Presence.UNDETERMINED, None if component is None else (without, within)
 
     def _example(self, decisions: Decisions, goal: BDD, component: int | None) -> int | None:
         """A valid configuration under the user literals where ``goal`` (over ``component``;

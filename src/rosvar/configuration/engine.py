@@ -11,14 +11,15 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
+from enum import StrEnum
 from functools import cached_property
 
 from rosvar.analyses.features import FeatureModel, explain
 from rosvar.configuration.catalog import Catalog, Feature
-from rosvar.configuration.choices import ChoiceError, Refusal, UserChoice
+from rosvar.configuration.choices import Action, ChoiceError, Refusal, UserChoice
 from rosvar.configuration.command import Launch, command_line, group
 from rosvar.configuration.conflicts import Conflicts, ConflictState
-from rosvar.configuration.derivation import PRESENT, Decisions, Derivation
+from rosvar.configuration.derivation import Decisions, Derivation, Presence
 from rosvar.configuration.graph import VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
@@ -36,6 +37,14 @@ MIN_CACHED_STEPS = 64
 EXACT_INTEGER = 2**53  # larger counts go to JSON as strings
 
 
+class Selection(StrEnum):
+    """A feature's state: in every valid configuration left, in none, or still open."""
+
+    SELECTED = "selected"
+    DESELECTED = "deselected"
+    UNSELECTED = "unselected"
+
+
 @dataclass(frozen=True)
 class FeatureState:
     """One feature's state; the engine hands out one object per feature and state, so
@@ -46,7 +55,7 @@ class FeatureState:
     arg: str | None
     value: str | None
     parent: str | None
-    state: str  # selected | deselected | unselected
+    state: Selection
     derived: bool
 
     def to_json(self) -> dict[str, object]:
@@ -183,7 +192,11 @@ class Configurator:
                     feature.arg,
                     feature.value,
                     feature.parent,
-                    "unselected" if decided is None else "selected" if decided else "deselected",
+                    Selection.UNSELECTED
+                    if decided is None
+                    else Selection.SELECTED
+                    if decided
+                    else Selection.DESELECTED,
                     decided is not None and not chosen,
                 )
                 for decided in (None, True, False)
@@ -226,7 +239,7 @@ class Configurator:
         """``replay`` with one more choice: accepted, or refused with the reason."""
         feature = self.catalog.lookup(choice.feature)
         accepted = (*replay.accepted, choice)
-        if choice.action == "unselect":
+        if choice.action == Action.UNSELECT:
             effective = tuple(e for e in replay.effective if feature.id not in e.targets)
             found = self._decisions(effective)
             assert found is not None, "a part of an accepted list was refused"
@@ -236,7 +249,7 @@ class Configurator:
         except _Refused as refusal:
             return replace(replay, refused=(*replay.refused, Refusal(choice, str(refusal))))
         kept = replay.effective
-        if choice.action == "set":  # a new value replaces the arg's earlier one
+        if choice.action == Action.SET:  # a new value replaces the arg's earlier one
             kept = tuple(e for e in kept if feature.id not in e.targets)
         after = self._decisions([*kept, entry])
         if after is None:
@@ -249,7 +262,7 @@ class Configurator:
         added: list[UserChoice] = []
         while True:
             state = self.state([*choices, *added])
-            open_ = [f for f in self.catalog if state.features[f.id].state == "unselected"]
+            open_ = [f for f in self.catalog if state.features[f.id].state == Selection.UNSELECTED]
             if not open_:
                 return added
             # values of the files in the product first, then files (deselecting one may
@@ -259,22 +272,22 @@ class Configurator:
 
     @staticmethod
     def _in(feature: Feature, state: ConfigurationState) -> bool:
-        return state.features[feature.file].state == "selected"
+        return state.features[feature.file].state == Selection.SELECTED
 
     def _default_choice(self, feature: Feature, state: ConfigurationState) -> UserChoice:
         if feature.kind == "file":
-            return UserChoice("deselect", feature.id)
+            return UserChoice(Action.DESELECT, feature.id)
         arg = feature.id if feature.kind == "arg" else str(feature.parent)
         values = self.catalog.values_of(arg)
-        possible = [f for f, _v in values if state.features[f.id].state != "deselected"]
+        possible = [f for f, _v in values if state.features[f.id].state != Selection.DESELECTED]
         defaults = [f for f, v in values if v.default and f in possible]
         known = [f for f in possible if f.value != "<other>"]
-        return UserChoice("select", (defaults or known or possible)[0].id)
+        return UserChoice(Action.SELECT, (defaults or known or possible)[0].id)
 
     def _literal(self, choice: UserChoice, feature: Feature) -> _Effective:
-        if choice.action in ("select", "deselect"):
+        if choice.action in (Action.SELECT, Action.DESELECT):
             return _Effective(
-                choice, frozenset({feature.id}), feature.variable, choice.action == "select"
+                choice, frozenset({feature.id}), feature.variable, choice.action == Action.SELECT
             )
         if feature.kind != "arg" or choice.value is None:
             raise ChoiceError(f"set expects FILE:ARG=VALUE, got {choice.feature!r}")
@@ -382,8 +395,8 @@ class Configurator:
         for id_, variable, states in rows:
             earlier = features.get(id_)
             state = features[id_] = states[decided.get(variable), id_ in chosen]
-            unselected += (state.state == "unselected") - (
-                earlier is not None and earlier.state == "unselected"
+            unselected += (state.state == Selection.UNSELECTED) - (
+                earlier is not None and earlier.state == Selection.UNSELECTED
             )
         self._last = (decided, chosen, features, unselected)
         return features, unselected
@@ -392,7 +405,10 @@ class Configurator:
         """The launched files and their args; None while an <other> value has no text."""
         launches = []
         for entry in self.catalog.files:
-            if self.derivation.presence(self._launched[entry.path], decisions).presence != PRESENT:
+            if (
+                self.derivation.presence(self._launched[entry.path], decisions).presence
+                != Presence.PRESENT
+            ):
                 continue
             model = self.analysis.model(entry.path)
             reads: dict[str, str | None] = {}
@@ -440,6 +456,6 @@ def _required(model: LaunchModel, name: str) -> bool:
 
 
 def _show(choice: UserChoice) -> str:
-    if choice.action == "set":
+    if choice.action == Action.SET:
         return f"set {choice.feature}={choice.value}"
     return f"{choice.action} {choice.feature}"

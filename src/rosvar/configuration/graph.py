@@ -19,7 +19,7 @@ from typing import cast
 from rosvar.analyses.features import FeatureModel
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.resolve import ResolutionError, test_fields
-from rosvar.configuration.derivation import PRESENT, UNDETERMINED
+from rosvar.configuration.derivation import Presence
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import (
@@ -351,10 +351,10 @@ def _present(
     ``undetermined`` with its condition."""
     first, second, part = setting
     shown = (values.text(first), values.text(second))
-    presence, condition = (PRESENT, None) if part is None else parts[part]
-    if presence == UNDETERMINED:
+    presence, condition = (Presence.PRESENT, None) if part is None else parts[part]
+    if presence == Presence.UNDETERMINED:
         undetermined.append({"kind": kind, "pair": list(shown), "condition": condition})
-    return shown if presence == PRESENT else None
+    return shown if presence == Presence.PRESENT else None
 
 
 def _param_renderer(name: object, value: object, location: Location) -> Render:

@@ -16,7 +16,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
-from rosvar.configuration.derivation import UNDETERMINED, Decisions, Derivation, PresenceVerdict
+from rosvar.configuration.derivation import Decisions, Derivation, Presence, PresenceVerdict
 from rosvar.configuration.graph import Element
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.logic.conditions import BDD
@@ -88,7 +88,7 @@ class Judgement:
 def _open_key(judged: Judged) -> int | None:
     """The component whose steps may overturn ``judged``, if the solver judged it."""
     verdict = judged.verdict
-    if verdict.presence != UNDETERMINED or not verdict.components:
+    if verdict.presence != Presence.UNDETERMINED or not verdict.components:
         return None
     if verdict.witnesses is None:
         return SEVERAL
@@ -155,7 +155,7 @@ class Presences:
         again = {
             index
             for index in self._touched(decisions, typed, earlier, earlier_typed)
-            if answer.verdicts[index].verdict.presence == UNDETERMINED
+            if answer.verdicts[index].verdict.presence == Presence.UNDETERMINED
         }
         components = {c for c, cube in decisions.cubes.items() if cube != earlier.cubes[c]}
         held = {**answer.held}
@@ -255,7 +255,7 @@ class Presences:
             indices, self.derivation.presences(bounds, decisions), strict=True
         ):
             description = None
-            if verdict.presence == UNDETERMINED:
+            if verdict.presence == Presence.UNDETERMINED:
                 description = describe(self.conditions[index].condition, verdict.values)
             judged.append(Judged(verdict, description))
         return judged

@@ -15,7 +15,7 @@ from itertools import accumulate, chain
 
 from rosvar.configuration.catalog import Catalog, FileEntry
 from rosvar.configuration.conflicts import Conflicts, ConflictState
-from rosvar.configuration.derivation import ABSENT, Decisions, Derivation
+from rosvar.configuration.derivation import Decisions, Derivation, Presence
 from rosvar.configuration.graph import Element, Fields, Shown, Values, VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
@@ -266,9 +266,9 @@ class Views:
         state that shows them (a session's later clicks, and other sessions, meet them
         again)."""
         presence, condition = judged.shown
-        if presence == ABSENT and element.kind == "error":
+        if presence == Presence.ABSENT and element.kind == "error":
             return []
-        given = values[element.entry] if presence != ABSENT and element.inputs else None
+        given = values[element.entry] if presence != Presence.ABSENT and element.inputs else None
         strings = frozenset((i, given.concrete.get(i)) for i in element.inputs) if given else None
         key = (element.id, presence, condition, strings, parts)
         entries = self._entries.get(key)

@@ -20,8 +20,9 @@ from rosvar import __version__
 from rosvar.analyses.features import ModelTooLarge, extract
 from rosvar.analyses.metrics import compute
 from rosvar.analyses.resolve import resolve
-from rosvar.configuration.choices import ChoiceError, UserChoice
-from rosvar.configuration.engine import ConfigurationState, Configurator
+from rosvar.configuration.choices import Action, ChoiceError, UserChoice
+from rosvar.configuration.derivation import Presence
+from rosvar.configuration.engine import ConfigurationState, Configurator, Selection
 from rosvar.diagnostics import Severity
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.describe import describe_model
@@ -243,14 +244,17 @@ def _print_state(state: ConfigurationState) -> None:
     )
     for refusal in state.refused:
         print(f"refused: {refusal.reason}")
-    chosen = [k for k, f in files if f.state == "selected"]
+    chosen = [k for k, f in files if f.state == Selection.SELECTED]
     print(f"selected files: {', '.join(chosen) if chosen else 'none'}")
     graph = state.graph
     for kind, elements in (("nodes", graph.nodes), ("params", graph.params)):
-        counts = {p: sum(1 for e in elements if e["presence"] == p) for p in PRESENCES}
-        print(f"{kind}: {counts['present']} present, {counts['undetermined']} undetermined")
+        counts = {p: sum(1 for e in elements if e["presence"] == p) for p in Presence}
+        print(
+            f"{kind}: {counts[Presence.PRESENT]} present, "
+            f"{counts[Presence.UNDETERMINED]} undetermined"
+        )
     for error in graph.errors:
-        if error["presence"] == "present":
+        if error["presence"] == Presence.PRESENT:
             print(f"error: {error['file']}:{error['line']}: {error['message']}")
     for conflict in state.conflicts:
         when = f", when {conflict.condition}" if conflict.condition else ""
@@ -264,20 +268,17 @@ def _print_state(state: ConfigurationState) -> None:
             or "nothing to launch (no file selected, or an <other> value lacks its text)"
         )
         return
-    open_files = [k for k, f in files if f.state == "unselected"]
+    open_files = [k for k, f in files if f.state == Selection.UNSELECTED]
     open_args = [
         k
         for k, f in state.features.items()
         if f.kind == "arg"
-        and f.state == "selected"
-        and any(v.parent == k and v.state == "unselected" for v in features)
+        and f.state == Selection.SELECTED
+        and any(v.parent == k and v.state == Selection.UNSELECTED for v in features)
     ]
     print(f"left: {len(open_files)} files to select or deselect, {len(open_args)} args to set")
     for arg in [*state.untyped, *open_args][:10]:
         print(f"  --set {arg}=...")
-
-
-PRESENCES = ("present", "absent", "undetermined")
 
 
 class _Choice(argparse.Action):
@@ -361,12 +362,8 @@ def parser() -> argparse.ArgumentParser:
         "configure", help="one step of a configuration: the state after the given choices"
     )
     configure.add_argument("paths", nargs="+", metavar="PATH")
-    for action, metavar in (
-        ("select", "FEATURE"),
-        ("deselect", "FEATURE"),
-        ("unselect", "FEATURE"),
-        ("set", "FILE:ARG=VALUE"),
-    ):
+    for action in Action:
+        metavar = "FILE:ARG=VALUE" if action == Action.SET else "FEATURE"
         configure.add_argument(
             f"--{action}", dest="choices", action=_Choice, const=action, metavar=metavar
         )

@@ -15,7 +15,7 @@ import threading
 from collections.abc import Callable, Mapping
 from http import HTTPStatus
 
-from rosvar.configuration.choices import ACTIONS, ChoiceError, UserChoice
+from rosvar.configuration.choices import Action, ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.session import Session
 from rosvar.outputs.web.sessions import DEFAULT_CAPACITY, SessionStore, Tab
@@ -152,16 +152,18 @@ class Api:
         return key, tab
 
     def _choice(self, body: Body) -> UserChoice:
-        action = _text(body, "action")
-        if action not in ACTIONS:
-            raise ApiError(HTTPStatus.BAD_REQUEST, f"unknown action {action!r}")
+        text = _text(body, "action")
+        try:
+            action = Action(text)
+        except ValueError:
+            raise ApiError(HTTPStatus.BAD_REQUEST, f"unknown action {text!r}") from None
         feature = _text(body, "feature")
         kind = self._kinds.get(feature)
         if kind is None:
             raise ApiError(HTTPStatus.BAD_REQUEST, f"unknown feature {feature!r}")
-        if action != "set":
+        if action != Action.SET:
             if body.get("value") is not None:
-                raise ApiError(HTTPStatus.BAD_REQUEST, f"{action!r} takes no value")
+                raise ApiError(HTTPStatus.BAD_REQUEST, f"{text!r} takes no value")
             return UserChoice(action, feature)
         if kind != "arg":
             raise ApiError(HTTPStatus.BAD_REQUEST, "'set' needs an arg feature (FILE:ARG)")
