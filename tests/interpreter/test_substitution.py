@@ -125,3 +125,13 @@ def test_find_resolves_through_the_workspace(ws: LaunchWorkspace, tmp_path: Path
     )
     other = ws.root / "other_pkg"
     assert ws.resolve(file).params == {"/p": f"{other}/cfg {other}"}
+
+
+def test_commands_are_registered_in_roslaunchs_order_and_only_once() -> None:
+    from rosvar.interpreter.substitution import COMMANDS, FIRST_PASS, command
+
+    assert COMMANDS == ("find", "env", "optenv", "dirname", "anon", "arg")
+    handler = FIRST_PASS["env"]
+    with pytest.raises(ValueError, match="registered twice"):
+        command("env")(handler)
+    assert FIRST_PASS["env"] is handler

@@ -39,6 +39,8 @@ def tag(name: str) -> Callable[[Handler], Handler]:
     """Register the handler of ``<name>`` (extension by registry, not if-chains)."""
 
     def register(handler: Handler) -> Handler:
+        if name in TAGS:  # a second handler would silently replace the first
+            raise ValueError(f"tag <{name}> is registered twice")
         TAGS[name] = handler
         return handler
 

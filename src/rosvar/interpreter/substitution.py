@@ -29,9 +29,6 @@ from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, Term, concat, is_term, register
 
-COMMANDS = ("find", "env", "optenv", "dirname", "anon", "arg")
-FIRST_PASS = ("env", "optenv", "dirname", "anon", "arg")
-
 Value = Raw | Fail
 
 
@@ -201,6 +198,83 @@ def _find_term(host: object, text: str) -> str:
 register("find_pass", _find_term)
 
 
+Command = Callable[["Substituter", str, tuple[str, ...], Scope], Choice[Value]]
+"""A first-pass command: the substituter, the whole body (for messages), its parameters."""
+FIRST_PASS: dict[str, Command] = {}
+"""The commands of roslaunch's first pass by name, in roslaunch's order; ``find`` is the
+second pass (:func:`find_pass`)."""
+
+
+def command(name: str) -> Callable[[Command], Command]:
+    """Register the first-pass command ``$(name ...)`` (extension by registry, like tags)."""
+
+    def register(handler: Command) -> Command:
+        if name in FIRST_PASS:
+            raise ValueError(f"substitution command {name!r} is registered twice")
+        FIRST_PASS[name] = handler
+        return handler
+
+    return register
+
+
+def _invalid(substituter: Substituter, message: str) -> Choice[Value]:
+    return Choice.const(substituter.space, Fail(message, "substitution-invalid"))
+
+
+@command("env")
+def _env(
+    substituter: Substituter, body: str, params: tuple[str, ...], scope: Scope
+) -> Choice[Value]:
+    if len(params) != 1:
+        return _invalid(substituter, f"$(env var) command only accepts one argument [{body}]")
+    name = params[0]
+    return substituter.host.env_value(name).map(
+        lambda v: Fail(f"environment variable '{name}' is not set", "env-unset") if v is None else v
+    )
+
+
+@command("optenv")
+def _optenv(
+    substituter: Substituter, body: str, params: tuple[str, ...], scope: Scope
+) -> Choice[Value]:
+    if not params:
+        return _invalid(substituter, f"$(optenv var) must specify an environment variable [{body}]")
+    default = " ".join(params[1:])
+    return substituter.host.env_value(params[0]).map(lambda v: default if v is None else v)
+
+
+@command("dirname")
+def _dirname(
+    substituter: Substituter, body: str, params: tuple[str, ...], scope: Scope
+) -> Choice[Value]:
+    return Choice.const(substituter.space, os.path.abspath(os.path.dirname(scope.filename)))
+
+
+@command("anon")
+def _anon(
+    substituter: Substituter, body: str, params: tuple[str, ...], scope: Scope
+) -> Choice[Value]:
+    if len(params) != 1:
+        if not params:
+            return _invalid(substituter, f"$(anon var) must specify a name [{body}]")
+        return _invalid(substituter, f"$(anon var) may only specify one name [{body}]")
+    return substituter.anon(params[0], scope)
+
+
+@command("arg")
+def _arg(
+    substituter: Substituter, body: str, params: tuple[str, ...], scope: Scope
+) -> Choice[Value]:
+    if len(params) != 1:
+        if not params:
+            return _invalid(substituter, f"$(arg var) must specify a variable name [{body}]")
+        return _invalid(substituter, f"$(arg var) may only specify one arg [{body}]")
+    return substituter.arg(params[0], scope)
+
+
+COMMANDS = ("find", *FIRST_PASS)
+
+
 class Substituter:
     """Resolves attribute text in a scope, for all configurations at once."""
 
@@ -294,56 +368,7 @@ class Substituter:
 
     def _command(self, body: str, scope: Scope) -> Choice[Value]:
         words = _split(body)
-        command, params = words[0], words[1:]
-        space = self.space
-        if command == "arg":
-            if len(params) != 1:
-                message = (
-                    f"$(arg var) must specify a variable name [{body}]"
-                    if not params
-                    else f"$(arg var) may only specify one arg [{body}]"
-                )
-                return Choice.const(space, Fail(message, "substitution-invalid"))
-            return self.arg(params[0], scope)
-        if command == "env":
-            if len(params) != 1:
-                return Choice.const(
-                    space,
-                    Fail(
-                        f"$(env var) command only accepts one argument [{body}]",
-                        "substitution-invalid",
-                    ),
-                )
-            name = params[0]
-            return self.host.env_value(name).map(
-                lambda v: (
-                    Fail(f"environment variable '{name}' is not set", "env-unset")
-                    if v is None
-                    else v
-                )
-            )
-        if command == "optenv":
-            if not params:
-                return Choice.const(
-                    space,
-                    Fail(
-                        f"$(optenv var) must specify an environment variable [{body}]",
-                        "substitution-invalid",
-                    ),
-                )
-            default = " ".join(params[1:])
-            return self.host.env_value(params[0]).map(lambda v: default if v is None else v)
-        if command == "dirname":
-            return Choice.const(space, os.path.abspath(os.path.dirname(scope.filename)))
-        # anon
-        if len(params) != 1:
-            message = (
-                f"$(anon var) must specify a name [{body}]"
-                if not params
-                else f"$(anon var) may only specify one name [{body}]"
-            )
-            return Choice.const(space, Fail(message, "substitution-invalid"))
-        return self.anon(params[0], scope)
+        return FIRST_PASS[words[0]](self, body, words[1:], scope)
 
     def arg(self, name: str, scope: Scope) -> Choice[Value]:
         value = scope.args.get(name)
