@@ -31,8 +31,8 @@ from rosvar.logic.inputs import OTHER, UNSET
 CACHED_FEATURES = 1_000_000
 """Views, replays and solver answers are kept per list of choices (a session's history and
 then some), each holding a state of every feature: as many as make this many feature states
-in all, at least ``MIN_CACHED_STEPS``. A fixed count of 4,096 steps held 20 GB on 2,000
-generated files."""
+in all, at least ``MIN_CACHED_STEPS``. A fixed count of steps would hold memory in
+proportion to the workspace's size, without bound on large ones."""
 MIN_CACHED_STEPS = 64
 EXACT_INTEGER = 2**53  # larger counts go to JSON as strings
 
@@ -223,7 +223,7 @@ class Configurator:
         """The answer for ``choices``. A step adds long-lived objects (views, verdicts,
         rendered entries) and no cycles: the collector is paused, and they go to the
         oldest generation unscanned, where its young scans found nothing to free in them
-        (1.2–1.7 s over the bench's 852 Husky steps, up to 10 ms on one)."""
+        and cost a noticeable share of each step."""
         with collector_paused():
             return self._answer(self._replay(tuple(choices)))
 

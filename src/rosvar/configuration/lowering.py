@@ -111,7 +111,3 @@ class Lowering:
         open_ = self.space.support(fixed) & self.open
         may = transfer(fixed, self.manager, open_)
         return Bounds(~transfer(~fixed, self.manager, open_) if open_ else may, may)
-
-    def back(self, condition: BDD) -> BDD:
-        """A solver BDD in the analysis' manager (for describing it)."""
-        return transfer(condition, self.space.bdd)

@@ -191,8 +191,8 @@ class Views:
     ) -> tuple[dict[str, list[Fields]], list[int]]:
         """Each kind's list of entries, and where each element's start in it. A kind whose
         elements rendered anew kept their number of entries is the earlier list with those
-        replaced in place (a step changes hundreds of Husky's 8,700 entries); one without
-        any is the earlier list itself."""
+        replaced in place (a step changes a few of a large workspace's many entries); one
+        without any is the earlier list itself."""
         lists: dict[str, list[Fields]] = {}
         starts = [0] * len(entries) if before is None else before.starts
         for kind, indices in self._of_kind.items():

@@ -22,7 +22,7 @@ from rosvar.interpreter.substitution import Substituter
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.conditions import BDD, ConditionSpace, register_predicate
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
-from rosvar.logic.terms import Hole, Term, is_term
+from rosvar.logic.terms import Hole
 from rosvar.workspace import Workspace
 
 Handler = Callable[["Interpretation", Entity, Scope], None]
@@ -405,7 +405,3 @@ def split(interpretation: Interpretation, choice: Choice[V]) -> Sequence[tuple[B
         for branch in choice.branches
         if (pc if branch[0] is space.true else pc & branch[0]) != false
     ]
-
-
-def choice_terms(value: Choice[Raw]) -> list[Term]:
-    return [leaf for _c, leaf in value if is_term(leaf)]  # type: ignore[misc]

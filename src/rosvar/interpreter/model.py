@@ -76,7 +76,6 @@ class ParamDecl:
     location: Location
     name: Choice[Raw]
     value: Choice[object]
-    origin: str  # "param", "rosparam", "node-param"
 
 
 @dataclass(slots=True)

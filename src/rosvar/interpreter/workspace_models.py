@@ -132,11 +132,11 @@ def collector_paused() -> Iterator[None]:
     them, such as the feature model) are built.
 
     Models are a large heap of long-lived objects that form no cycles: the collector
-    rescanned all of it each time it grew by a quarter (a third of the time on 2,000
-    files) and found nothing to free. Reference counting still frees everything else.
+    rescanned all of it each time it grew by a quarter (a large share of the time on big
+    workspaces) and found nothing to free. Reference counting still frees everything else.
     Afterwards what was built goes straight to the oldest generation (freezing and
     unfreezing moves it there unscanned): left in the youngest, the collector's next run
-    scanned all of it, a tenth of the analysis time, and two more runs followed as it
+    scanned all of it, at a cost in analysis time, and two more runs followed as it
     aged. The rare cycles (an exception's frames) are still collected by a full run.
     """
     enabled = gc.isenabled()

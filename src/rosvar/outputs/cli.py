@@ -46,8 +46,8 @@ def _progress(index: int, total: int, file: str) -> None:
 def _print_json(document: object) -> None:
     """``document`` on stdout: indented for a terminal, on one line for a pipe or a file.
 
-    Python's fast JSON encoder only writes without indentation: indented, Husky's analysis
-    took 0.3 s to print, five times as long as to compute (``jq`` indents it again)."""
+    Python's fast JSON encoder only writes without indentation: indented, printing a large
+    analysis takes longer than computing it (``jq`` indents it again)."""
     indent = 2 if sys.stdout.isatty() else None
     sys.stdout.write(json.dumps(document, indent=indent, ensure_ascii=False) + "\n")
 

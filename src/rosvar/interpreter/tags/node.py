@@ -123,9 +123,7 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
     for private in [*scope.params, *param_scope.params]:
         full = it.lift("private_key", param_ns, Choice.const(it.space, private.key))
         with it.under(private.condition):
-            it.model.params.append(
-                ParamDecl(it.pc, private.location, full, private.value, "node-param")
-            )
+            it.model.params.append(ParamDecl(it.pc, private.location, full, private.value))
     remaps = scope.remaps_with(own_remaps)
     problem = combine(
         [

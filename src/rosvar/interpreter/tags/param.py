@@ -116,7 +116,7 @@ def handle_param(it: Interpretation, entity: Entity, scope: Scope, force_local: 
             else:
                 joined = it.lift("ns_join", scope.ns, Choice.const(it.space, name))
                 full = it.lift("canonicalize", joined)
-                it.model.params.append(ParamDecl(it.pc, entity.location, full, value, "param"))
+                it.model.params.append(ParamDecl(it.pc, entity.location, full, value))
 
 
 @tag("param")

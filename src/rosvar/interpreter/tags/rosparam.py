@@ -218,6 +218,5 @@ def _emit(
                 entity.location,
                 Choice.const(it.space, key),
                 Choice.const(it.space, value),
-                "rosparam",
             )
         )

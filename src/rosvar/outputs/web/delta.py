@@ -1,7 +1,7 @@
 """Answers as deltas: what changed between two state documents, and how to apply it.
 
 A click on a large workspace changes a few features and graph elements out of thousands
-(Husky: 1,220 features, 8,700 graph entries, 5 MB of JSON), so the server answers a tab that
+(megabytes of JSON in all), so the server answers a tab that
 already holds a state with only the difference. The engine keeps an unchanged graph entry as
 the same object from one state to the next, so most entries compare by identity and the
 rest by equality; nothing is serialised to compare it.
