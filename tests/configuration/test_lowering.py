@@ -1,0 +1,54 @@
+"""Lowering: analysis conditions as solver bounds, the environment and unset args fixed."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from rosvar.analyses.features import extract
+from rosvar.configuration.lowering import Lowering
+from rosvar.logic.conditions import BDD
+from rosvar.logic.inputs import ArgInput
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+LAUNCH = """
+  <arg name="robot" default="kobuki"/>
+  <node pkg="p" type="t" name="cam" if="$(optenv USE_CAM false)"/>
+  <node pkg="p" type="t" name="s" if="$(eval arg('robot').startswith('s'))"/>
+"""
+
+
+def _lowering(ws: LaunchWorkspace, env: dict[str, str]) -> tuple[Lowering, BDD, BDD]:
+    """The lowering under ``env``, and the conditions of the nodes ``cam`` and ``s``."""
+    path = ws.launch("a.launch", LAUNCH)
+    analysis = ws.analysis()
+    lowering = Lowering(analysis, extract(analysis), env)
+    cam, s = (node.condition for node in analysis.model(path).nodes)
+    return lowering, cam, s
+
+
+def test_the_environment_is_fixed_as_given_else_unset(ws: LaunchWorkspace) -> None:
+    for env, present in (({"USE_CAM": "true"}, True), ({}, False)):
+        lowering, cam, _s = _lowering(ws, env)
+        space = lowering.space
+        assert lowering.fix(cam) == (space.true if present else space.false)
+        bounds = lowering.bounds(cam)
+        assert bounds.exact
+        assert bounds.may == (lowering.manager.true if present else lowering.manager.false)
+
+
+def test_a_predicate_on_an_other_text_is_open_until_the_text_is_typed(
+    ws: LaunchWorkspace,
+) -> None:
+    lowering, _cam, s = _lowering(ws, {})
+    bounds = lowering.bounds(s)
+    assert not bounds.exact  # some <other> text starts with s, some does not
+    [robot] = [i for i in lowering.feature_inputs if isinstance(i, ArgInput) and i.name == "robot"]
+    starts = lowering.decide(s, {robot: "spot"})
+    other = lowering.decide(s, {robot: "husky"})
+    assert starts.exact and other.exact
+    assert starts.may != other.may  # the typed text decided the predicate both ways
+    for decided in (starts, other):  # within the bounds before the text was typed
+        assert decided.may & ~bounds.may == lowering.manager.false
+        assert bounds.must & ~decided.must == lowering.manager.false

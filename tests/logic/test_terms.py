@@ -1,0 +1,53 @@
+"""Terms: strings known only once a configuration supplies its inputs' texts."""
+
+from __future__ import annotations
+
+import pytest
+
+from rosvar.logic.inputs import ArgInput
+from rosvar.logic.terms import Apply, Hole, TermError, concat, evaluate, is_term, term_inputs
+
+ROBOT = ArgInput("a.launch", "robot")
+NAME = ArgInput("a.launch", "name")
+
+
+def test_concat_stays_a_string_without_terms_and_merges_neighbours() -> None:
+    assert concat(["a", "", "b"]) == "ab"
+    assert concat([]) == ""
+    joined = concat(["/", "ns", Hole(ROBOT), "_", "x"])
+    assert isinstance(joined, Apply)
+    assert joined.operands == ("/ns", Hole(ROBOT), "_x")
+    assert concat([Hole(ROBOT)]) == Hole(ROBOT)
+
+
+@pytest.mark.parametrize(
+    ("parts", "texts"),
+    [
+        (["/", Hole(ROBOT), "/", Hole(NAME)], {ROBOT: "husky", NAME: "base"}),
+        ([Hole(ROBOT), Hole(ROBOT), ""], {ROBOT: "r"}),
+        (["plain"], {}),
+    ],
+)
+def test_a_concatenation_evaluates_to_its_parts_filled_in(
+    parts: list[str | Hole], texts: dict[ArgInput, str]
+) -> None:
+    term = concat(list(parts))
+    filled = "".join(p if isinstance(p, str) else texts[p.input] for p in parts)
+    assert evaluate(term, texts) == filled
+    assert term_inputs(term) == {p.input for p in parts if isinstance(p, Hole)}
+    assert is_term(term) == bool(texts)
+
+
+def test_a_missing_input_or_function_is_a_term_error() -> None:
+    with pytest.raises(TermError, match="no value"):
+        evaluate(concat(["x", Hole(ROBOT)]), {NAME: "n"})
+    with pytest.raises(TermError, match="unknown term function"):
+        evaluate(Apply("no-such-function", (Hole(ROBOT),)), {ROBOT: "r"})
+
+
+def test_terms_are_values_and_show_their_holes() -> None:
+    assert Hole(ROBOT) == Hole(ArgInput("a.launch", "robot"))
+    assert hash(Apply("concat", ("a", Hole(ROBOT)))) == hash(Apply("concat", ("a", Hole(ROBOT))))
+    assert Apply("concat", ("a", Hole(ROBOT))) != Apply("concat", ("a", Hole(NAME)))
+    assert str(concat(["/", Hole(ROBOT)])) == f"/{Hole(ROBOT)}"
+    assert str(Apply("concat", (Hole(ROBOT),), display="shown")) == "shown"
