@@ -1,0 +1,127 @@
+"""What an expression can see: the caller's environment, and the names and operators the
+whitelist allows."""
+
+from __future__ import annotations
+
+import ast
+import builtins
+import math
+import operator
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any, Final
+
+
+@dataclass(frozen=True)
+class EvalEnvironment:
+    """What an expression can see outside itself; the caller decides how args and hosts resolve.
+
+    ``lookup_arg`` returns the raw string value of a launch arg and raises ``KeyError`` if it is
+    undefined.  ``functions`` supplies the host functions ``env optenv find anon dirname`` (other
+    keys are ignored; ``arg`` is always built from ``lookup_arg``).  A host function that is not
+    supplied makes its calls :class:`EvalRefused`.  Exceptions raised by either callable become
+    :class:`EvalFailed`, except :class:`EvalRefused`/:class:`EvalFailed`, which pass through.
+    """
+
+    lookup_arg: Callable[[str], str]
+    functions: Mapping[str, Callable[..., object]] = field(default_factory=dict)
+
+
+_HOST_FUNCTION_NAMES: Final = frozenset({"arg", "env", "optenv", "find", "anon", "dirname"})
+_BOOL_NAMES: Final[Mapping[str, bool]] = {
+    "true": True,
+    "false": False,
+    "True": True,
+    "False": False,
+}
+_MATH_NAMES: Final[Mapping[str, object]] = {
+    name: value for name, value in vars(math).items() if "__" not in name
+}
+_BUILTIN_FUNCTIONS: Final[Mapping[str, Callable[..., object]]] = {
+    name: getattr(builtins, name)
+    for name in (
+        "list", "dict", "map", "str", "float", "int",  # roslaunch's own __builtins__ list
+        "bool", "len", "abs", "min", "max", "round", "sorted",
+    )
+}  # fmt: skip
+_PYTHON_BUILTIN_NAMES: Final = frozenset(name for name in dir(builtins) if "__" not in name)
+_STR_METHODS: Final = frozenset(
+    {
+        "lower", "upper", "strip", "lstrip", "rstrip", "startswith", "endswith", "replace",
+        "split", "join", "format", "capitalize", "title", "isdigit", "isalpha", "isalnum",
+        "zfill", "count", "find", "rfind", "index",
+    }
+)  # fmt: skip
+#: Bare names that never read a launch arg.  Whitelisted builtins are included: they would
+#: only read an arg that shadows the builtin, which real launch files do not declare.
+_NOT_ARG_NAMES: Final = _HOST_FUNCTION_NAMES.union(_BOOL_NAMES, _MATH_NAMES, _BUILTIN_FUNCTIONS)
+_CALLABLE_NAMES: Final = _HOST_FUNCTION_NAMES.union(
+    (name for name, value in _MATH_NAMES.items() if callable(value)), _BUILTIN_FUNCTIONS
+)
+_LITERAL_TYPES: Final = (str, int, float, bool, type(None))
+_CONVERSION_FUNCTIONS: Final = frozenset({"str", "int", "float"})
+_CASE_METHODS: Final = frozenset({"lower", "upper", "strip", "lstrip", "rstrip"})
+
+_BIN_OPS: Final[Mapping[type[ast.operator], Callable[[Any, Any], Any]]] = {
+    ast.Add: operator.add,
+    ast.Sub: operator.sub,
+    ast.Mult: operator.mul,
+    ast.Div: operator.truediv,
+    ast.FloorDiv: operator.floordiv,
+    ast.Mod: operator.mod,
+    ast.Pow: operator.pow,
+    ast.LShift: operator.lshift,
+    ast.RShift: operator.rshift,
+    ast.BitOr: operator.or_,
+    ast.BitXor: operator.xor,
+    ast.BitAnd: operator.and_,
+}
+_UNARY_OPS: Final[Mapping[type[ast.unaryop], Callable[[Any], Any]]] = {
+    ast.Not: operator.not_,
+    ast.USub: operator.neg,
+    ast.UAdd: operator.pos,
+    ast.Invert: operator.invert,
+}
+
+
+def _contains(item: Any, container: Any) -> bool:
+    return item in container
+
+
+def _not_contains(item: Any, container: Any) -> bool:
+    return item not in container
+
+
+_COMPARE_OPS: Final[Mapping[type[ast.cmpop], Callable[[Any, Any], Any]]] = {
+    ast.Eq: operator.eq,
+    ast.NotEq: operator.ne,
+    ast.Lt: operator.lt,
+    ast.LtE: operator.le,
+    ast.Gt: operator.gt,
+    ast.GtE: operator.ge,
+    ast.Is: operator.is_,
+    ast.IsNot: operator.is_not,
+    ast.In: _contains,
+    ast.NotIn: _not_contains,
+}
+_REFUSED_NODES: Final[Mapping[type[ast.AST], str]] = {
+    ast.Lambda: "lambda expressions are not allowed",
+    ast.NamedExpr: "assignment expressions (:=) are not allowed",
+    ast.Starred: "starred unpacking (*) is not allowed",
+    ast.JoinedStr: "f-strings are not allowed",
+    ast.FormattedValue: "f-strings are not allowed",
+    ast.Await: "await is not allowed",
+    ast.Yield: "yield is not allowed",
+    ast.YieldFrom: "yield is not allowed",
+}
+_GETITEM: Final[Callable[[Any, Any], Any]] = operator.getitem
+_MULT: Final = ast.Mult()
+_EQ: Final = ast.Eq()
+_CONTAINERS: Final = (list, tuple, dict, set, frozenset)
+_SIZED: Final = (str, list, tuple, dict, set, frozenset)
+#: Calls whose cost does not depend on the size of their arguments.
+_CHEAP_FUNCTIONS: Final = frozenset({"len", "bool"})
+#: Calls that compare or hash every element of an iterable argument: an iterator is
+#: materialised first so that its elements can be weighed (they consume it entirely anyway).
+_CONSUMING_FUNCTIONS: Final = frozenset({"sorted", "min", "max", "dict"})
+_END: Final = object()
