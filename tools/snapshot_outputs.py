@@ -33,22 +33,46 @@ for system in SYSTEMS:
 
 HUSKY = CORPUS / "husky" / "husky"
 RUNS["husky.resolve.spawn.json"] = [
-    "resolve", str(CORPUS / "husky"), "multimaster:=false", "--launch",
-    str(HUSKY / "husky_gazebo/launch/spawn_husky.launch"), "--env", "ENABLE_EKF=false", "--json",
+    "resolve",
+    str(CORPUS / "husky"),
+    "multimaster:=false",
+    "--launch",
+    str(HUSKY / "husky_gazebo/launch/spawn_husky.launch"),
+    "--env",
+    "ENABLE_EKF=false",
+    "--json",
 ]
 RUNS["husky.resolve.gmapping.txt"] = [
-    "resolve", str(CORPUS / "husky"), "--launch", "husky_navigation", "gmapping_demo.launch",
+    "resolve",
+    str(CORPUS / "husky"),
+    "--launch",
+    "husky_navigation",
+    "gmapping_demo.launch",
 ]
 PLAYPEN = str(HUSKY / "husky_gazebo/launch/husky_playpen.launch")
 RUNS["husky.configure.playpen.json"] = [
-    "configure", str(CORPUS / "husky"), "--select", PLAYPEN, "--json",
+    "configure",
+    str(CORPUS / "husky"),
+    "--select",
+    PLAYPEN,
+    "--json",
 ]
 RUNS["husky.configure.playpen.finish.txt"] = [
-    "configure", str(CORPUS / "husky"), "--select", PLAYPEN, "--finish",
+    "configure",
+    str(CORPUS / "husky"),
+    "--select",
+    PLAYPEN,
+    "--finish",
 ]
 KOBUKI = str(CORPUS / "kobuki")
-RUNS["kobuki.resolve.all.json"] = ["resolve", KOBUKI, "--json", "--launch", "kobuki_node",
-                                   "minimal.launch"]
+RUNS["kobuki.resolve.all.json"] = [
+    "resolve",
+    KOBUKI,
+    "--json",
+    "--launch",
+    "kobuki_node",
+    "minimal.launch",
+]
 
 
 def main() -> int:
