@@ -8,8 +8,8 @@ import random
 import dd.cudd
 import pytest
 
-from rosvar.analyses import counting
-from rosvar.analyses.counting import CountedDiagram, Weight, moduli
+from rosvar.analyses.feature_model import counting
+from rosvar.analyses.feature_model.counting import CountedDiagram, Weight, moduli
 from rosvar.logic.conditions import BDD
 
 

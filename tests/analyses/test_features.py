@@ -13,16 +13,10 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from rosvar.analyses.features import (
-    ArgFeature,
-    Constraint,
-    FeatureModel,
-    FileFeature,
-    _declaring,
-    _excluding,
-    count_configurations,
-    extract,
-)
+from rosvar.analyses.feature_model.exclusions import declaring, excluding
+from rosvar.analyses.feature_model.extraction import extract
+from rosvar.analyses.feature_model.model import ArgFeature, Constraint, FeatureModel, FileFeature
+from rosvar.analyses.feature_model.operations import count_configurations
 from rosvar.logic.inputs import OTHER, ArgInput
 
 if TYPE_CHECKING:
@@ -431,7 +425,7 @@ def test_the_solver_links_the_files_excludes_pair_without_building_them(
     files = {f.file: f for f in model.files}
     found = {
         (files[a].id, files[b].id)
-        for a, b in _excluding(_declaring(model.space, files, model.declarations))
+        for a, b in excluding(declaring(model.space, files, model.declarations))
     }
     assert found == {c.files for c in constraints(model, "excludes")}
     assert found == {

@@ -9,13 +9,13 @@ from typing import TYPE_CHECKING
 import dd.cudd
 import pytest
 
-from rosvar.analyses import features
-from rosvar.analyses.features import (
-    FeatureModel,
-    ModelTooLarge,
+from rosvar.analyses.feature_model import extraction, operations
+from rosvar.analyses.feature_model import solver as solving
+from rosvar.analyses.feature_model.extraction import extract
+from rosvar.analyses.feature_model.model import FeatureModel, ModelTooLarge
+from rosvar.analyses.feature_model.operations import (
     core_and_dead,
     count_configurations,
-    extract,
     simplest_trigger,
 )
 from rosvar.logic.inputs import ArgInput
@@ -276,7 +276,7 @@ def test_one_pass_possible_values_match_asking_the_solver(system: str) -> None:
     """possible_values (one BDD traversal) agrees with two solver queries per variable."""
     from pathlib import Path
 
-    from rosvar.analyses.features import possible_values
+    from rosvar.analyses.feature_model.operations import possible_values
     from rosvar.interpreter.analysis import Analysis
     from rosvar.workspace import discover
 
@@ -423,7 +423,7 @@ def test_stand_ins_count_as_the_values_they_replace_under_any_choice(
             restricted = solver.manager.let({name: value}, solver.formula)
             expected = int(solver.manager.count(restricted, nvars=everything - 1))
             assert solver.count({name: value}) == expected, (name, value)
-    assert features.possible_values(solver) == features.possible_values(solver, solver.formula)
+    assert operations.possible_values(solver) == operations.possible_values(solver, solver.formula)
     pairs = [(n, m) for n in a.variables for m in a.variables if n < m]
     for first, second in pairs:
         choices = {first: True, second: False}
@@ -467,8 +467,8 @@ def test_a_model_linking_too_many_files_is_listed_not_solved(
     ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Over the link budget nothing pairwise is computed up front; the listing still is."""
-    monkeypatch.setattr(features, "LINKS_PER_FILE", 0)
-    monkeypatch.setattr(features, "LINK_BUDGET", 3)  # clique_and_loner: /n links 3 pairs, /p 1
+    monkeypatch.setattr(extraction, "LINKS_PER_FILE", 0)
+    monkeypatch.setattr(extraction, "LINK_BUDGET", 3)  # clique_and_loner: /n links 3 pairs, /p 1
     model = clique_and_loner(ws)
     assert not model.solved and count_configurations(model) is None
     assert "clashes" not in vars(model) and "constraints" not in vars(model)  # not built yet
@@ -476,18 +476,18 @@ def test_a_model_linking_too_many_files_is_listed_not_solved(
         core_and_dead(model)
     assert [d.code for d in model.diagnostics] == ["model-too-large"]
     assert {c.kind for c in model.constraints} == {"excludes", "requires"}
-    monkeypatch.setattr(features, "LINK_BUDGET", 4)  # at most the budget: solved
+    monkeypatch.setattr(extraction, "LINK_BUDGET", 4)  # at most the budget: solved
     assert extract(ws.analysis()).solved
-    monkeypatch.setattr(features, "LINK_BUDGET", 0)
-    monkeypatch.setattr(features, "LINKS_PER_FILE", 1)  # 7 files: a budget of 7 pairs
+    monkeypatch.setattr(extraction, "LINK_BUDGET", 0)
+    monkeypatch.setattr(extraction, "LINKS_PER_FILE", 1)  # 7 files: a budget of 7 pairs
     assert extract(ws.analysis()).solved
 
 
 def test_the_memory_bound_grows_with_the_files(monkeypatch: pytest.MonkeyPatch) -> None:
     manager = dd.cudd.BDD()
-    monkeypatch.setattr(features, "MEMORY_BUDGET", 1 << 20)
-    monkeypatch.setattr(features, "MEMORY_PER_FILE", 1 << 20)
-    with features._memory_bound(manager, 3):
+    monkeypatch.setattr(solving, "MEMORY_BUDGET", 1 << 20)
+    monkeypatch.setattr(solving, "MEMORY_PER_FILE", 1 << 20)
+    with solving.memory_bound(manager, 3):
         assert manager.configure()["max_memory"] == 4 << 20
     assert manager.configure()["max_memory"] > 4 << 20  # lifted afterwards
 
@@ -505,8 +505,8 @@ def test_memory_bound_turns_the_refusal_of_cudd_into_model_too_large(
             result = manager.apply("xor", result, manager.var(name))
         return result
 
-    monkeypatch.setattr(features, "MEMORY_BUDGET", 1)
-    with pytest.raises(ModelTooLarge), features._memory_bound(manager, 0):
+    monkeypatch.setattr(solving, "MEMORY_BUDGET", 1)
+    with pytest.raises(ModelTooLarge), solving.memory_bound(manager, 0):
         parity()
     assert len(parity()) > len(names)  # the bound is lifted afterwards
     gc.collect()  # the failed build's nodes, held by the error's frames, go before their manager

@@ -8,7 +8,8 @@ from typing import TYPE_CHECKING
 import pytest
 
 from configuration.test_derivation import FILES
-from rosvar.analyses.features import conjoin, extract
+from rosvar.analyses.feature_model.extraction import extract
+from rosvar.analyses.feature_model.solver import conjoin
 from rosvar.configuration import sat as sat_module
 from rosvar.configuration.sat import PATHS, Sat
 

@@ -16,7 +16,8 @@ from itertools import count
 import dd.cudd as _cudd
 
 from rosvar.analyses.conflicts import Clash
-from rosvar.analyses.features import FeatureModel, conjoin
+from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.feature_model.solver import conjoin
 from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.lowering import Lowering
 from rosvar.logic.conditions import BDD, walked_support

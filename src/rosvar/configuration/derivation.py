@@ -32,7 +32,7 @@ from itertools import chain
 
 import dd.cudd as _cudd
 
-from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.sat import Sat
 from rosvar.logic.conditions import BDD, walked_support

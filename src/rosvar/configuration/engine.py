@@ -13,7 +13,8 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 
-from rosvar.analyses.features import FeatureModel, explain
+from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.feature_model.operations import explain
 from rosvar.configuration.catalog import Catalog, Feature
 from rosvar.configuration.choices import ChoiceError, Refusal, UserChoice
 from rosvar.configuration.command import Launch, command_line, group

@@ -16,7 +16,7 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import cast
 
-from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.resolve import ResolutionError, test_fields
 from rosvar.analyses.values import json_value
 from rosvar.configuration.derivation import PRESENT, UNDETERMINED

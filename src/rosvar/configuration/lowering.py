@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.interpreter.analysis import Analysis
 from rosvar.interpreter.substitution import PackageTable
 from rosvar.logic.conditions import BDD, PredicateAtom, SlotAtom, decide_predicate

@@ -24,7 +24,7 @@ from collections.abc import Sequence
 import dd.cudd as _cudd
 from pysat.solvers import Solver as _Sat
 
-from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.logic.conditions import BDD, children_first, cofactors, walked_support
 
 BACKEND = "glucose4"

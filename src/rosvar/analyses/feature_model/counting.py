@@ -9,7 +9,7 @@ Weights let a count leave variables out of the diagram altogether: a variable
 weighs ``(w_false, w_true)``, and an assignment weighs the product of its
 variables' weights. The feature model counts its constrained variables this way
 and folds each file's unconstrained args into the weight of the file's variable
-(``features.Component``); a choice is a weight of ``(1, 0)`` or ``(0, 1)``.
+(``solver.Component``); a choice is a weight of ``(1, 0)`` or ``(0, 1)``.
 
 A recount that touches many nodes runs level by level in numpy, modulo a few primes
 below 2^31 (products stay within ``int64``), and the exact integer is put back
