@@ -10,7 +10,7 @@ import pytest
 
 from rosvar.analyses.feature_model import counting
 from rosvar.analyses.feature_model.counting import CountedDiagram, Weight, moduli
-from rosvar.logic.conditions import BDD
+from rosvar.logic.bdd import BDD, read
 
 
 def enumerated(manager: dd.cudd.BDD, formula: BDD, weights: dict[str, Weight]) -> int:
@@ -100,7 +100,7 @@ def test_nodes_read_in_memory_are_those_dd_shows(seed: int) -> None:
     manager.declare(*names)
     formula = random_formula(manager, rng, names)
     weights = {manager.level_of_var(name): (1, 1) for name in names}
-    levels, lows, highs, _values, root = counting._read(manager, formula, weights, 2**8)
+    levels, lows, highs, _values, root = read(manager, formula, weights, 2**8)
     function_at: dict[int, BDD] = {}  # place → its function (never complemented), from the root
     pending = [(~root if root < 0 else root, ~formula if root < 0 else formula)]
     while pending:

@@ -9,9 +9,9 @@ import pytest
 
 from configuration.test_derivation import FILES
 from rosvar.analyses.feature_model.extraction import extract
-from rosvar.analyses.feature_model.solver import conjoin
 from rosvar.configuration import sat as sat_module
 from rosvar.configuration.sat import PATHS, Sat
+from rosvar.logic.bdd import conjoin
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace

@@ -16,7 +16,8 @@ import re
 import pytest
 
 from rosvar.logic import conditions as conditions_module
-from rosvar.logic.conditions import BDD, ConditionSpace, register_predicate
+from rosvar.logic.bdd import BDD
+from rosvar.logic.conditions import ConditionSpace, register_predicate
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Input, Slot
 from rosvar.logic.terms import Apply, Hole
 

@@ -12,7 +12,7 @@ import random
 import dd.cudd
 import pytest
 
-from rosvar.logic.transfer import transfer
+from rosvar.logic.bdd import transfer
 
 NAMES = [f"x{number}" for number in range(12)]
 OPERATORS = ("and", "or", "xor")

@@ -13,14 +13,11 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from itertools import count
 
-import dd.cudd as _cudd
-
 from rosvar.analyses.conflicts import Clash
 from rosvar.analyses.feature_model.model import FeatureModel
-from rosvar.analyses.feature_model.solver import conjoin
 from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.lowering import Lowering
-from rosvar.logic.conditions import BDD, walked_support
+from rosvar.logic.bdd import BDD, and_exists, conjoin, walked_support
 
 CERTAIN, POSSIBLE = "certain", "possible"
 REQUIRES_LIMIT = 100_000
@@ -164,7 +161,7 @@ class Conflicts:
         clash at build and with the choices at each step made as many new nodes each time
         (most of the engine's construction and of a step on generated workspaces)."""
         cube = decisions.cubes[pair.component]  # its literals outside the blocks change nothing
-        found = _cudd.and_exists(pair.within, u & cube, pair.variables)
+        found = and_exists(pair.within, u & cube, pair.variables)
         return bool(found != self.manager.false)
 
     def _status(

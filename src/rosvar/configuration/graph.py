@@ -34,8 +34,8 @@ from rosvar.interpreter.model import (
 from rosvar.interpreter.tags.param import param_value
 from rosvar.interpreter.tags.rosparam import load_rosparam
 from rosvar.interpreter.validation import node_values
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
-from rosvar.logic.conditions import BDD
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names

@@ -9,25 +9,21 @@ t" (decided only when a configuration makes t concrete). Everything that asks
 
 from __future__ import annotations
 
-from collections.abc import Callable, Container, Iterable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, cast
 
-import dd.cudd as _cudd
-
+from rosvar.logic.bdd import BDD, cofactor, evaluate, new_manager, walked_support
 from rosvar.logic.inputs import OTHER, UNSET, Input, Slot
 from rosvar.logic.terms import Term, term_inputs
 from rosvar.logic.terms import evaluate as evaluate_term
 
-BDD = Any  # dd.cudd.Function: dd ships no type information
-
 CACHE_ENTRIES = 1 << 16
-"""Size of CUDD's computed table, fixed. CUDD's default start (2^18 entries) took more than
-10 ms to set up, and CUDD grows the table with the unique table, i.e. with the number of
-variables, whether or not it is used: interpretation fills a few percent of 2^16 entries
-(Husky: 15,000 lookups in all), and growing it to 2^18 only cost page faults (8 MB, 1,500
-faults, a few ms each run). The feature model's quantification in this manager does as many
-steps with 2^16 entries as with 2^18 (callgrind on Husky)."""
+"""Size of CUDD's computed table, fixed. CUDD's larger default start is slow to set up, and
+CUDD grows the table with the unique table, i.e. with the number of variables, whether or not
+it is used: interpretation fills a small part of this size, and a larger table only costs
+page faults; the feature model's quantification in this manager does as many steps with it
+as with a larger one (docs/performance.md)."""
 SUPPORT_WALK_FACTOR = 16  # a node visited in Python costs about as much as 16 variables in dd
 MEMORY_PER_FILE = 512 << 10
 MIN_MEMORY = 64 << 20
@@ -39,57 +35,12 @@ MAX_MEMORY = 1 << 30
 def memory_estimate(files: int) -> int:
     """What CUDD is told to expect for an analysis of ``files`` launch files.
 
-    CUDD touches a 128th of its estimate when the manager is created (8 MB, 2,000 page
-    faults, for ``dd``'s default of 1 GiB) and collects garbage more eagerly once it uses
-    90 % of it. Interpretation uses about 40 KB
-    per file (Husky 8 MB, 2,000 generated files 80 MB), so half a MB per file keeps a
-    wide margin while small systems start small.
+    CUDD touches a 128th of its estimate when the manager is created (page faults, for
+    ``dd``'s default of 1 GiB) and collects garbage more eagerly once it uses 90 % of it.
+    Interpretation uses a small fraction of this share per file (docs/performance.md), so it
+    keeps a wide margin while small systems start small.
     """
     return min(MAX_MEMORY, max(MIN_MEMORY, files * MEMORY_PER_FILE))
-
-
-def cofactors(u: BDD) -> tuple[BDD, BDD]:
-    """The low and high cofactors of ``u`` by its top variable (``dd`` gives the children of
-    its regular node, which a complemented ``u`` negates)."""
-    low, high = u.low, u.high
-    return (~low, ~high) if u.negated else (low, high)
-
-
-def children_first(
-    root: BDD, children: Callable[[BDD], Iterable[BDD]], done: Container[BDD]
-) -> Iterator[BDD]:
-    """The nodes under ``root`` not in ``done``, each after its ``children``; the caller adds
-    each node it is given to ``done``. An explicit stack: no recursion limit."""
-    stack = [root]
-    while stack:
-        node = stack[-1]
-        if node in done:
-            stack.pop()
-            continue
-        pending = [child for child in children(node) if child not in done]
-        if pending:
-            stack.extend(pending)
-            continue
-        stack.pop()
-        yield node
-
-
-def walked_support(u: BDD) -> set[str]:
-    """The variables ``u`` depends on, found by visiting its nodes: linear in ``u``'s size,
-    where ``dd``'s ``support`` walks every variable of its manager in Python."""
-    names: set[str] = set()
-    seen: set[int] = set()
-    stack = [u]
-    while stack:
-        node = stack.pop()
-        name = node.var
-        if name is None or int(node) in seen:
-            continue
-        seen.add(int(node))
-        names.add(name)
-        stack.append(node.low)
-        stack.append(node.high)
-    return names
 
 
 @dataclass(frozen=True)
@@ -146,10 +97,8 @@ class ConditionSpace:
 
     def __init__(self, files: int = 0) -> None:
         """``files``: how many launch files the analysis holds, to size the manager."""
-        self.bdd = _cudd.BDD(memory_estimate(files), CACHE_ENTRIES)
-        # Declaration order is already local (one file's inputs together); dynamic
-        # reordering would cost more than it saves, quadratically in the variables.
-        self.bdd.configure(reordering=False, max_cache_hard=CACHE_ENTRIES)
+        # declaration order is already local: one file's inputs together
+        self.bdd = new_manager(memory_estimate(files), CACHE_ENTRIES, CACHE_ENTRIES)
         self.true: BDD = self.bdd.true
         self.false: BDD = self.bdd.false
         self._constraints: list[BDD] = []
@@ -333,22 +282,11 @@ class ConditionSpace:
 
     def evaluate(self, condition: BDD, assignment: Mapping[str, bool]) -> bool:
         """The truth of ``condition`` under ``assignment``: one path from the root down."""
-        flipped = False
-        node = condition
-        while (name := node.var) is not None:
-            flipped ^= bool(node.negated)  # children are those of the regular node
-            node = node.high if assignment[name] else node.low
-        return bool(node == self.true) != flipped
+        return evaluate(condition, assignment.__getitem__)
 
     def cofactor(self, u: BDD, values: Mapping[str, bool]) -> BDD:
-        """``u`` with the variables of ``values`` fixed, in time linear in the size of ``u``.
-
-        ``dd``'s ``let`` with Boolean values builds a cube over every variable of the
-        manager first; one composition per variable does not.
-        """
-        for name, value in values.items():
-            u = self.bdd.let({name: self.true if value else self.false}, u)
-        return u
+        """``u`` with the variables of ``values`` fixed (``bdd.cofactor``)."""
+        return cofactor(u, values)
 
     def describe(self, condition: BDD, qualify: bool = False, known_only: bool = True) -> str:
         """``condition`` in readable form (``printer.describe``), remembered: elements share

@@ -10,17 +10,8 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator, Mapping
 from typing import cast
 
-import dd.cudd as _cudd
-
-from rosvar.logic.conditions import (
-    BDD,
-    PREDICATES,
-    ConditionSpace,
-    FileAtom,
-    PredicateAtom,
-    SlotAtom,
-    cofactors,
-)
+from rosvar.logic.bdd import BDD, cofactors, restrict
+from rosvar.logic.conditions import PREDICATES, ConditionSpace, FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.inputs import OTHER, ArgInput, EnvInput, Input, Slot
 
 BOOLEAN_WORDS = ("true", "false")
@@ -73,7 +64,7 @@ def describe(
     else:
         known, care = condition, local
         domains = {input_: space.domain(input_) for input_ in involved}
-    simplified = _cudd.restrict(known, care)
+    simplified = restrict(known, care)
     if simplified == space.true or (care & ~known) == space.false:
         return "true"
     try:

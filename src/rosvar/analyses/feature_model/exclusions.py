@@ -9,12 +9,10 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 
-import dd.cudd as _cudd
-
 from rosvar.analyses.conflicts import Occurrence
 from rosvar.analyses.feature_model.model import FileFeature, name_of
-from rosvar.logic.conditions import BDD, ConditionSpace
-from rosvar.logic.transfer import transfer
+from rosvar.logic.bdd import BDD, Manager, transfer
+from rosvar.logic.conditions import ConditionSpace
 
 
 def declaring(
@@ -61,7 +59,7 @@ def excluding(declaring: Iterable[Mapping[str, BDD]]) -> list[tuple[str, str]]:
 
 def exclusions(
     space: ConditionSpace,
-    manager: _cudd.BDD,
+    manager: Manager,
     files: Mapping[str, FileFeature],
     declaring: Iterable[Mapping[str, BDD]],
     kept: set[str],
@@ -108,7 +106,7 @@ def exclusions(
             yield [a.id, b.id], translate(~(a.variable & b.variable & condition))
 
 
-def _at_most_one(manager: _cudd.BDD, literals: Sequence[BDD]) -> BDD:
+def _at_most_one(manager: Manager, literals: Sequence[BDD]) -> BDD:
     """At most one of ``literals`` holds: a chain built from the last literal up."""
     result, none = manager.true, manager.true
     for literal in reversed(literals):

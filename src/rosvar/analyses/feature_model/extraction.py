@@ -23,8 +23,9 @@ from rosvar.analyses.feature_model.solver import build
 from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.interpreter.analysis import Analysis, collector_paused
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
-from rosvar.logic.conditions import BDD, PredicateAtom, SlotAtom
+from rosvar.logic.conditions import PredicateAtom, SlotAtom
 from rosvar.logic.inputs import UNSET, ArgInput
 from rosvar.logic.terms import Apply, Hole, Operand, term_inputs
 from rosvar.workspace.paths import real_path

@@ -17,7 +17,8 @@ from typing import TYPE_CHECKING
 from rosvar.analyses.conflicts import Clash, Occurrence, clashes, repeated_inclusions
 from rosvar.diagnostics import Diagnostic, Location
 from rosvar.interpreter.model import LaunchModel
-from rosvar.logic.conditions import BDD, ConditionSpace
+from rosvar.logic.bdd import BDD
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
 
 if TYPE_CHECKING:

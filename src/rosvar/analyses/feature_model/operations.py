@@ -4,14 +4,12 @@ core and dead features with the constraints why, and the simplest trigger of a c
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
 from dataclasses import dataclass
 
-import dd.cudd as _cudd
-
 from rosvar.analyses.feature_model.model import FeatureModel, name_of, value_text
-from rosvar.analyses.feature_model.solver import Solver, conjoin
-from rosvar.logic.conditions import BDD, ConditionSpace, FileAtom, SlotAtom, walked_support
+from rosvar.analyses.feature_model.solver import Solver
+from rosvar.logic.bdd import BDD, cofactors, conjoin, walked_support
+from rosvar.logic.conditions import ConditionSpace, FileAtom, SlotAtom
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
 
 
@@ -66,30 +64,23 @@ def core_and_dead(model: FeatureModel) -> list[FeatureVerdict]:
     return verdicts
 
 
-def possible_values(solver: Solver, formula: BDD | None = None) -> dict[str, set[bool]]:
-    """For every variable, the values it takes in some valid configuration — one BDD pass.
+def possible_values(solver: Solver) -> dict[str, set[bool]]:
+    """For every variable, the values it takes in some valid configuration — one pass over
+    each component's diagram.
 
     A value is possible when some path to TRUE sets it, or skips the variable's level
-    (then it is free). Asking the solver twice per feature instead costs two
-    operations on the whole diagram each, minutes on a large system. ``formula``
-    (default: the whole model) may be a component's formula, restricted or not; the
-    answer is then meant for that component's variables only.
-
-    The whole model is read off each component's ``counted`` diagram, never building
-    the full formulas, from the lists its count read (``CountedDiagram.taken``, no ``dd``
-    wrapper per edge: 60 against 120–220 ms on Husky's large component): a value a
-    stand-in counts for is possible where the stand-in is true, and left out where it is
-    false or, in a group of two or more, where
-    another value of the group is taken instead.
+    (then it is free); asking the solver twice per feature instead costs two operations
+    on the whole diagram each. The model is read off each component's ``counted``
+    diagram, never building the full formulas, from the lists its count read
+    (``CountedDiagram.taken``): a value a stand-in counts for is possible where the
+    stand-in is true, and left out where it is false or, in a group of two or more,
+    where another value of the group is taken instead.
     """
     manager = solver.manager
-    names = [manager.var_at_level(level) for level in range(len(solver.variables))]
-    if formula is not None:
-        return _one_pass(manager, names, formula)
     possible: dict[str, set[bool]] = {}
     for component in solver.components:
         if component.counted == manager.false:  # no valid configuration at all
-            return {name: set() for name in names}
+            return {name: set() for name in solver.variables}
         found = component.counted_diagram.taken()
         possible.update((name, found[name]) for name in component.counted_variables)
         for stand_in, group in component.stand_ins:
@@ -98,49 +89,6 @@ def possible_values(solver: Solver, formula: BDD | None = None) -> dict[str, set
             if False in taken or (True in taken and len(group) > 1):
                 values.add(False)
             possible.update((name, set(values)) for name in group)
-    return possible
-
-
-def _one_pass(manager: _cudd.BDD, names: Sequence[str], root: BDD) -> dict[str, set[bool]]:
-    """``possible_values`` of ``root`` over the levels ``names`` (all of the manager's)."""
-    depth = len(names)
-    possible: dict[str, set[bool]] = {name: set() for name in names}
-    free = [0] * (depth + 1)  # difference array over levels skipped by some edge
-    true, false = manager.true, manager.false  # each access builds a new wrapper: hoisted
-    if root == false:
-        return possible
-
-    def skip(start: int, stop: int) -> None:
-        if start < stop:
-            free[start] += 1
-            free[stop] -= 1
-
-    skip(0, depth if root == true else root.level)
-    seen: set[BDD] = set()
-    stack = [root]
-    while stack:
-        u = stack.pop()
-        if u in seen or u == true:
-            continue
-        seen.add(u)
-        negated, here = u.negated, u.level
-        taken = possible[names[here]]
-        for value, child in ((False, u.low), (True, u.high)):
-            if negated:
-                child = ~child
-            if child == false:
-                continue
-            taken.add(value)
-            if child == true:
-                skip(here + 1, depth)
-            else:
-                skip(here + 1, child.level)
-                stack.append(child)
-    running = 0
-    for position, name in enumerate(names):
-        running += free[position]
-        if running > 0:
-            possible[name] = {False, True}
     return possible
 
 
@@ -219,8 +167,9 @@ def simplest_trigger(space: ConditionSpace, condition: BDD) -> dict[str, str]:
         if u in memo:
             return memo[u]
         var = u.var
-        low_cost, low_path = cheapest(space.bdd.let({var: False}, u))
-        high_cost, high_path = cheapest(space.bdd.let({var: True}, u))
+        low, high = cofactors(u)
+        low_cost, low_path = cheapest(low)
+        high_cost, high_path = cheapest(high)
         high_cost += _cost(space, var)
         best = (
             (low_cost, {var: False, **low_path})

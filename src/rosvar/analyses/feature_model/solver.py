@@ -11,21 +11,14 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from functools import cached_property
 
-import dd.cudd as _cudd
-
 from rosvar.analyses.conflicts import Occurrence
-from rosvar.analyses.feature_model.counting import CountedDiagram, Weight
+from rosvar.analyses.feature_model.counting import CountedDiagram
 from rosvar.analyses.feature_model.exclusions import declaring, excluding, exclusions
 from rosvar.analyses.feature_model.model import Constraint, FileFeature, ModelTooLarge, name_of
 from rosvar.analyses.feature_model.ordering import order
-from rosvar.logic.conditions import (
-    BDD,
-    ConditionSpace,
-    exactly_one,
-    memory_estimate,
-    walked_support,
-)
-from rosvar.logic.transfer import transfer
+from rosvar.logic import bdd
+from rosvar.logic.bdd import BDD, Manager, Weight, conjoin, new_manager, transfer, walked_support
+from rosvar.logic.conditions import ConditionSpace, exactly_one, memory_estimate
 
 
 class Component:
@@ -47,7 +40,7 @@ class Component:
 
     def __init__(
         self,
-        manager: _cudd.BDD,
+        manager: Manager,
         files: list[str],
         variables: list[str],
         args: Sequence[tuple[str, list[str]]],
@@ -122,7 +115,7 @@ def _weight(choice: bool | None) -> Weight:
     return (1, 1) if choice is None else (0, 1) if choice else (1, 0)
 
 
-def _arg_trees(manager: _cudd.BDD, args: Sequence[tuple[str, list[str]]]) -> list[BDD]:
+def _arg_trees(manager: Manager, args: Sequence[tuple[str, list[str]]]) -> list[BDD]:
     """Each arg's part of the tree: its file selected ⇔ exactly one of its values."""
     trees = []
     for file, names in args:
@@ -148,7 +141,7 @@ class Solver:
 
     def __init__(
         self,
-        manager: _cudd.BDD,
+        manager: Manager,
         variables: list[str],
         components: list[Component],
         constraints: Callable[[], list[BDD]],
@@ -246,8 +239,7 @@ def build(
     linking = [(files[a].id, files[b].id) for a, b in excluding(declared)]
     keep = order(features, [*(c.files for c in requires), *linking])
     kept = set(keep)
-    manager = _cudd.BDD(memory_estimate(len(features)))  # dd's default touches much at once
-    manager.configure(reordering=False, max_cache_hard=SOLVER_CACHE)
+    manager = new_manager(memory_estimate(len(features)), SOLVER_CACHE)
     manager.declare(*keep)  # a fresh manager in the chosen order (reordering in place is slow)
 
     def translate(formula: BDD) -> BDD:
@@ -323,42 +315,11 @@ on the machine's load: the same model is solved, or not, everywhere.
 
 
 @contextmanager
-def memory_bound(manager: _cudd.BDD, files: int) -> Iterator[None]:
+def memory_bound(manager: Manager, files: int) -> Iterator[None]:
     """Building in ``manager`` within the memory budget of ``files`` launch files, or
-    :class:`ModelTooLarge`.
-
-    Past the bound CUDD returns NULL, which ``dd`` reports as a ValueError (operators)
-    or a RuntimeError (``apply`` and the like), told from other errors by their text.
-    The bound is lifted afterwards: the solver's later questions must not fail on a
-    model it holds.
-    """
-    budget = MEMORY_BUDGET + MEMORY_PER_FILE * files
-    unbounded = manager.configure(max_memory=budget)["max_memory"]
+    :class:`ModelTooLarge` (``bdd.memory_bound``)."""
     try:
-        yield
-    except (ValueError, RuntimeError) as error:
-        if not any(sign in str(error) for sign in ("NULL", "out of memory")):
-            raise
-        raise ModelTooLarge(f"its BDD outgrew {budget >> 20} MB") from error
-    finally:
-        manager.configure(max_memory=unbounded)
-
-
-def conjoin(manager: _cudd.BDD, parts: Sequence[BDD]) -> BDD:
-    """Conjunction scheduled from the bottom of the order up, by each part's top variable.
-
-    Each intermediate result is then the conjunction of every part lying below some
-    level, never a part reaching far up without those that prune it — the result
-    does not grow beyond the final diagram's width (ordering by the deepest
-    variable instead made intermediate results many times the final one).
-    """
-
-    constants = (manager.true, manager.false)
-
-    def top(part: BDD) -> int:
-        return -1 if part in constants else int(part.level)  # the root is the top variable
-
-    result = manager.true
-    for part in sorted(parts, key=top, reverse=True):
-        result &= part
-    return result
+        with bdd.memory_bound(manager, MEMORY_BUDGET + MEMORY_PER_FILE * files):
+            yield
+    except bdd.OutOfMemory as error:
+        raise ModelTooLarge(*error.args) from error
