@@ -129,7 +129,7 @@ class Job:
     files: list[str] = field(default_factory=list)
     analysis: object = None  # the last run's interpreted Analysis, for the feature model
     analysis_ms: float = 0.0  # what interpreting it took
-    # Whether the feature model was solved (within its budget, see analyses/features.py):
+    # Whether the feature model was solved (within its budget, see feature_model/extraction.py):
     # the engine measurements build it again and need its solver; generated workspaces
     # whose clashes link most files are listed but not solved.
     feature_model_built: bool = False

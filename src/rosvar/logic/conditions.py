@@ -187,7 +187,7 @@ class ConditionSpace:
             return self.bdd.var(name)
         # Next to the slots of the inputs it reads: a disjunction of (slot ∧ predicate)
         # pairs is linear when each pair is adjacent, exponential when all predicates sit
-        # below all slots (one file's 19 `bool-invalid` errors made 700k nodes).
+        # below all slots (a file testing many predicates blows up).
         levels = [
             self.bdd.level_of_var(name)
             for input_ in term_inputs(term)

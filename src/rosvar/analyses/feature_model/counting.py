@@ -1,8 +1,8 @@
 """Exact weighted model counting on a CUDD BDD, in Python integers.
 
 CUDD counts minterms in a ``double``: exact below 2^53 only, and past 2^1023 it
-overflows (``dd`` then reports "out of memory"). Feature models pass both — Husky
-has about 10^77 configurations — so counts are taken here, over the diagram's nodes
+overflows (``dd`` then reports "out of memory"). Feature models of real systems pass
+both, so counts are taken here, over the diagram's nodes
 with Python's unbounded integers.
 
 Weights let a count leave variables out of the diagram altogether: a variable

@@ -18,8 +18,7 @@ FORCE_PATIENCE = 10  # rounds without a shorter span before FORCE stops
 def order(features: Sequence[FileFeature], links: Iterable[Sequence[str]]) -> list[str]:
     """Feature variables in file blocks: linked files close together, components apart.
 
-    A constraint between two files is cheap for a BDD only if their variables are
-    close in the order. Cuthill–McKee (a breadth-first search from a file with
+    Cuthill–McKee (a breadth-first search from a file with
     few links) finds the components and a first order of each; FORCE then refines
     it (``_force``). The components go smallest first, so that conjoining them
     never passes below the largest diagram (a conjunction walks every part of one

@@ -409,7 +409,7 @@ def test_files_with_disjoint_names_do_not_exclude_each_other(ws: LaunchWorkspace
 def test_the_solver_links_the_files_excludes_pair_without_building_them(
     ws: LaunchWorkspace,
 ) -> None:
-    """The solver finds the pairs of clashing files per name (``_excluding``): the files of
+    """The solver finds the pairs of clashing files per name (``excluding``): the files of
     the ``excludes`` constraints, which are built only when asked for. a and c declare
     /n under conditions that never hold together: no pair."""
     ws.launch(
