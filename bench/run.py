@@ -129,7 +129,7 @@ class Job:
     files: list[str] = field(default_factory=list)
     analysis: object = None  # the last run's interpreted Analysis, for the feature model
     analysis_ms: float = 0.0  # what interpreting it took
-    # Whether the feature model was solved (within its budget, see analyses/features.py):
+    # Whether the feature model was solved (within its budget, see feature_model/extraction.py):
     # the engine measurements build it again and need its solver; generated workspaces
     # whose clashes link most files are listed but not solved.
     feature_model_built: bool = False
@@ -235,10 +235,10 @@ def measure_features(job: Job) -> Metrics:
     timeout is a figure too. The models are dropped afterwards, so the baseline that
     follows finds a small heap.
     """
-    from rosvar.analyses.features import (
+    from rosvar.analyses.feature_model.extraction import extract
+    from rosvar.analyses.feature_model.operations import (
         core_and_dead,
         count_configurations,
-        extract,
         simplest_trigger,
     )
     from rosvar.interpreter.workspace_models import Analysis
@@ -313,7 +313,7 @@ def measure_web(job: Job) -> Metrics:
     import http.client
     import threading
 
-    from rosvar.analyses.features import extract
+    from rosvar.analyses.feature_model.extraction import extract
     from rosvar.configuration.engine import Configurator
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.outputs.web.delta import patch
@@ -393,7 +393,7 @@ def measure_configure(job: Job) -> Metrics:
     ``to_json()`` of each state is timed apart (what the web server then serialises).
     """
 
-    from rosvar.analyses.features import extract
+    from rosvar.analyses.feature_model.extraction import extract
     from rosvar.configuration.choices import UserChoice
     from rosvar.configuration.engine import Configurator
     from rosvar.interpreter.workspace_models import Analysis

@@ -15,7 +15,7 @@ from pathlib import Path
 
 from playwright.sync_api import Page, sync_playwright
 
-from rosvar.analyses.features import extract
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.web.server import make_server

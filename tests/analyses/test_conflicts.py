@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rosvar.analyses.conflicts import Occurrence, clashes, declared_occurrences, index
-from rosvar.analyses.features import extract
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.diagnostics import Location
 from rosvar.logic.conditions import ConditionSpace
 

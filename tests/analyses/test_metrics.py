@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from rosvar.analyses.features import extract
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.metrics import Metrics, command_line_args, compute
 from rosvar.frontends.ros1_xml.parser import load_launch_file
 

@@ -8,7 +8,7 @@ import random
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
-from rosvar.analyses.features import extract
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.choices import UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from rosvar.analyses.features import extract
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.catalog import Catalog
 from rosvar.configuration.choices import ChoiceError
 

@@ -10,7 +10,7 @@ import pytest
 
 from configuration.helpers import configurator, run
 from configuration.test_presence import FILES as PRESENCE_FILES
-from rosvar.analyses.features import extract
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration import conflicts
 from rosvar.configuration.conflicts import _blocks
 

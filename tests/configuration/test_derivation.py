@@ -7,8 +7,8 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from rosvar.analyses.counting import CountedDiagram
-from rosvar.analyses.features import extract
+from rosvar.analyses.feature_model.counting import CountedDiagram
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.derivation import Derivation, Presence, PresenceVerdict
 from rosvar.configuration.lowering import Bounds
 

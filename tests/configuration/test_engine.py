@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 import pytest
 
 from configuration.helpers import choices, configurator, present, run, states
-from rosvar.analyses.features import count_configurations
+from rosvar.analyses.feature_model.operations import count_configurations
 from rosvar.configuration.choices import ChoiceError
 from rosvar.configuration.engine import Configurator
 

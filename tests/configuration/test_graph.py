@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 import pytest
 
 from configuration.helpers import canonical, configurator, product, random_product, run
-from rosvar.analyses.features import extract
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.resolve import resolve
 from rosvar.configuration.command import given
 from rosvar.configuration.engine import Configurator

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from rosvar.analyses.features import extract
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.lowering import Lowering
 from rosvar.logic.conditions import BDD
 from rosvar.logic.inputs import ArgInput

@@ -8,9 +8,10 @@ from typing import TYPE_CHECKING
 import pytest
 
 from configuration.test_derivation import FILES
-from rosvar.analyses.features import conjoin, extract
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration import sat as sat_module
 from rosvar.configuration.sat import PATHS, Sat
+from rosvar.logic.bdd import conjoin
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace

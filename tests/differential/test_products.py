@@ -14,7 +14,7 @@ import random
 import pytest
 
 from configuration.helpers import product, random_product
-from rosvar.analyses.features import extract
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.command import given
 from rosvar.configuration.engine import Configurator
 from rosvar.interpreter.workspace_models import Analysis

@@ -10,7 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from rosvar.analyses.features import extract
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.interpreter.domains import PARAM_TYPES
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.inputs import OTHER, UNSET, EnvInput, Slot

@@ -13,8 +13,9 @@ import random
 
 import pytest
 
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail, combine, ite
-from rosvar.logic.conditions import BDD, ConditionSpace
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, ArgInput, Input, Slot
 
 F = "/ws/pkg/launch/main.launch"

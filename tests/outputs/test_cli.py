@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 import pytest
 
 import rosvar
-from rosvar.analyses import features
+from rosvar.analyses.feature_model import extraction
 from rosvar.outputs.cli import EXIT_FAILS, EXIT_INPUT, EXIT_OK, EXIT_TOO_LARGE, EXIT_USAGE, main
 
 if TYPE_CHECKING:
@@ -377,8 +377,8 @@ def test_a_model_too_large_to_solve(
 ) -> None:
     """Listed by the formats that need no solver; the others exit 4 with the reason."""
     workspace.write("launch/clone.launch", GOOD)  # clashes with good.launch: one linked pair
-    monkeypatch.setattr(features, "LINK_BUDGET", 0)
-    monkeypatch.setattr(features, "LINKS_PER_FILE", 0)
+    monkeypatch.setattr(extraction, "LINK_BUDGET", 0)
+    monkeypatch.setattr(extraction, "LINKS_PER_FILE", 0)
     root = str(workspace.root)
     code, out, _err = run(capsys, "features", root)
     assert code == EXIT_OK and "unknown number of valid configurations" in out

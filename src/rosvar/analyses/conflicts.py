@@ -14,8 +14,8 @@ from dataclasses import dataclass
 
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import combine
-from rosvar.logic.conditions import BDD
 from rosvar.ros import names
 from rosvar.workspace.paths import real_path
 

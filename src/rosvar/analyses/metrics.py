@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import asdict, dataclass
 
-from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import load_launch_file
 from rosvar.interpreter.workspace_models import Analysis

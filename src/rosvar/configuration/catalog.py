@@ -12,7 +12,7 @@ from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from typing import Literal
 
-from rosvar.analyses.features import ArgFeature, FeatureModel, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
 from rosvar.configuration.choices import ChoiceError
 
 Kind = Literal["file", "arg", "value"]

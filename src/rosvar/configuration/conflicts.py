@@ -14,13 +14,11 @@ from dataclasses import dataclass
 from enum import StrEnum
 from itertools import count
 
-import dd.cudd as _cudd
-
 from rosvar.analyses.conflicts import Clash
-from rosvar.analyses.features import FeatureModel, conjoin
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.lowering import Lowering
-from rosvar.logic.conditions import BDD, walked_support
+from rosvar.logic.bdd import BDD, and_exists, conjoin, walked_support
 
 REQUIRES_LIMIT = 100_000
 """Nodes of a component's formula above which its requires are left out of clash judgements."""
@@ -170,7 +168,7 @@ class Conflicts:
         clash at build and with the choices at each step made as many new nodes each time
         (most of the engine's construction and of a step on generated workspaces)."""
         cube = decisions.cubes[pair.component]  # its literals outside the blocks change nothing
-        found = _cudd.and_exists(pair.within, u & cube, pair.variables)
+        found = and_exists(pair.within, u & cube, pair.variables)
         return bool(found != self.manager.false)
 
     def _status(

@@ -31,12 +31,10 @@ from dataclasses import dataclass, replace
 from enum import StrEnum
 from itertools import chain
 
-import dd.cudd as _cudd
-
-from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.sat import Sat
-from rosvar.logic.conditions import BDD, walked_support
+from rosvar.logic.bdd import BDD, cofactor, evaluate, walked_support
 
 SOURCES = 4  # witnesses tried as the source of a repair
 REPAIRED_FILES = 8  # files a repair may copy: beyond, the solver is the cheaper way
@@ -316,8 +314,8 @@ class Derivation:
     ) -> tuple[Presence | None, BDD, BDD, frozenset[int]]:
         """The verdict restriction alone gives, else what the solver must judge: the
         restricted bounds and the components of their open variables."""
-        must = self.cofactor(bounds.must, values)
-        may = must if bounds.may == bounds.must else self.cofactor(bounds.may, values)
+        must = cofactor(bounds.must, values)
+        may = must if bounds.may == bounds.must else cofactor(bounds.may, values)
         if must == self.manager.true:
             return Presence.PRESENT, must, may, frozenset()
         if may == self.manager.false:
@@ -504,23 +502,8 @@ class Derivation:
 
     def _holds(self, u: BDD, witness: int) -> bool:
         """The truth of ``u`` in a witness: one path from the root down."""
-        flipped = False
-        while (name := u.var) is not None:
-            flipped ^= bool(u.negated)  # the children are those of the regular node
-            u = u.high if witness >> self.position[name] & 1 else u.low
-        return bool(u == self.manager.true) != flipped
-
-    def cofactor(self, u: BDD, values: Mapping[str, bool]) -> BDD:
-        """``u`` with ``values`` fixed: CUDD's restrict to their cube, which is the cofactor
-        when the care set is a cube (``let`` spends several times longer making a cube of
-        its own, over every variable of the manager)."""
-        if not values:
-            return u
-        cube = self.manager.true
-        for variable, value in values.items():
-            atom = self.manager.var(variable)
-            cube &= atom if value else ~atom
-        return _cudd.restrict(u, cube)
+        position = self.position
+        return evaluate(u, lambda name: bool(witness >> position[name] & 1))
 
     def _mask(self, u: BDD) -> int:
         """The positions of ``u``'s support, as bits."""

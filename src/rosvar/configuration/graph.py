@@ -16,7 +16,7 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import cast
 
-from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.resolve import ResolutionError, test_fields
 from rosvar.configuration.derivation import Presence
@@ -34,8 +34,8 @@ from rosvar.interpreter.tags.param import param_value
 from rosvar.interpreter.tags.rosparam import load_rosparam
 from rosvar.interpreter.validation import node_values
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
-from rosvar.logic.conditions import BDD
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names

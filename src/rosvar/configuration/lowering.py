@@ -14,13 +14,13 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.interpreter.substitution import PackageTable
 from rosvar.interpreter.workspace_models import Analysis
-from rosvar.logic.conditions import BDD, PredicateAtom, SlotAtom, decide_predicate
+from rosvar.logic.bdd import BDD, transfer
+from rosvar.logic.conditions import PredicateAtom, SlotAtom, decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import term_inputs
-from rosvar.logic.transfer import transfer
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from rosvar.configuration.derivation import Decisions, Derivation, Presence, PresenceVerdict
 from rosvar.configuration.graph import Element
 from rosvar.configuration.lowering import Bounds, Lowering
-from rosvar.logic.conditions import BDD
+from rosvar.logic.bdd import BDD
 from rosvar.logic.inputs import Input
 
 Typed = Mapping[str, Mapping[Input, str]]

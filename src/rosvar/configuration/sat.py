@@ -21,11 +21,18 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-import dd.cudd as _cudd
 from pysat.solvers import Solver as _Sat
 
-from rosvar.analyses.features import FeatureModel
-from rosvar.logic.conditions import BDD, children_first, cofactors, walked_support
+from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.logic.bdd import (
+    BDD,
+    Manager,
+    children_first,
+    cofactors,
+    complemented,
+    regular,
+    walked_support,
+)
 
 BACKEND = "glucose4"
 """The solver pysat drives: it follows preferred phases (CaDiCaL 1.9.5 through pysat does
@@ -49,7 +56,7 @@ class Sat:
     generated files, 17,000 variables per call, and as many calls as files).
     """
 
-    def __init__(self, manager: _cudd.BDD, variables: Sequence[str], offset: int, parts: list[BDD]):
+    def __init__(self, manager: Manager, variables: Sequence[str], offset: int, parts: list[BDD]):
         self.manager = manager
         self._atoms = {variable: i + 1 for i, variable in enumerate(variables)}
         self._width = len(variables)
@@ -148,12 +155,12 @@ class Sat:
         """A literal equivalent to ``u`` (Tseitin: its nodes translated on first use)."""
         if u.var is None:
             return self._true if u == self.manager.true else -self._true
-        regular = ~u if u.negated else u
-        found = self._nodes.get(regular)
+        node = regular(u)
+        found = self._nodes.get(node)
         if found is None:
-            self._translate(regular)
-            found = self._nodes[regular]
-        return -found if u.negated else found
+            self._translate(node)
+            found = self._nodes[node]
+        return -found if complemented(u) else found
 
     def _translate(self, root: BDD) -> None:
         """Clauses for every node under ``root`` not translated yet, children first."""
@@ -161,7 +168,7 @@ class Sat:
         for node in children_first(root, _inner_children, nodes):
             n, x = self._variable(), self._atoms[node.var]
             nodes[node] = n
-            low, high = self._literal(node.low), self._literal(node.high)
+            low, high = (self._literal(child) for child in cofactors(node))  # a regular node
             clauses += [
                 [-n, -x, high],
                 [-n, x, low],
@@ -209,11 +216,6 @@ class Sat:
         return found
 
 
-def _regular(u: BDD) -> BDD:
-    """The node of ``u`` without its complement mark."""
-    return ~u if u.negated else u
-
-
 def _false_paths(v: BDD, false: BDD, counts: dict[BDD, int]) -> int:
     """How many paths lead from ``v`` to FALSE (``counts``: those known, by node)."""
     if v.var is None:
@@ -225,4 +227,4 @@ def _false_paths(v: BDD, false: BDD, counts: dict[BDD, int]) -> int:
 
 
 def _inner_children(node: BDD) -> list[BDD]:
-    return [c for c in (_regular(node.low), _regular(node.high)) if c.var is not None]
+    return [regular(c) for c in cofactors(node) if c.var is not None]

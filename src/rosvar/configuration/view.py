@@ -21,7 +21,7 @@ from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.presence import Judged, Judgement, Presences, Typed
 from rosvar.interpreter.workspace_models import Analysis
-from rosvar.logic.conditions import BDD
+from rosvar.logic.bdd import BDD
 from rosvar.logic.inputs import OTHER, UNSET, Input
 
 Key = tuple[tuple[str, bool, str | None], ...]

@@ -19,8 +19,9 @@ from rosvar.interpreter.lifted import apply, lift
 from rosvar.interpreter.model import Decision, ErrorEvent, LaunchModel, Raw
 from rosvar.interpreter.scope import MISSING, ArgValue, Scope
 from rosvar.interpreter.substitution import Substituter
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
-from rosvar.logic.conditions import BDD, ConditionSpace, register_predicate
+from rosvar.logic.conditions import ConditionSpace, register_predicate
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
 from rosvar.logic.terms import Hole
 from rosvar.workspace import Workspace

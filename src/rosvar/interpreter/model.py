@@ -13,8 +13,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from rosvar.diagnostics import Diagnostic, Location
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
-from rosvar.logic.conditions import BDD, ConditionSpace
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import ArgInput, Slot
 from rosvar.logic.terms import Term
 

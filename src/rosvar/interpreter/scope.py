@@ -15,8 +15,8 @@ from typing import Final
 
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import EnvSetting, Raw, Remap
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
-from rosvar.logic.conditions import BDD
 
 
 class _Missing:

@@ -11,7 +11,8 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import Any, Generic, TypeVar
 
-from rosvar.logic.conditions import BDD, ConditionSpace
+from rosvar.logic.bdd import BDD
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, Hole
 
 T = TypeVar("T", covariant=True)

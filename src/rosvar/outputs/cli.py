@@ -17,7 +17,8 @@ import time
 from collections.abc import Sequence
 
 from rosvar import __version__
-from rosvar.analyses.features import ModelTooLarge, extract
+from rosvar.analyses.feature_model.extraction import extract
+from rosvar.analyses.feature_model.model import ModelTooLarge
 from rosvar.analyses.metrics import compute
 from rosvar.analyses.resolve import resolve
 from rosvar.configuration.choices import Action, ChoiceError, UserChoice

@@ -7,8 +7,8 @@ from typing import TYPE_CHECKING
 import pytest
 
 from rosvar.interpreter.model import LaunchModel, NodeDecl
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
-from rosvar.logic.conditions import BDD
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace

@@ -18,8 +18,9 @@ from typing import Any
 import dd.cudd as cudd
 import pytest
 
-from rosvar.analyses.counting import CountedDiagram
-from rosvar.analyses.features import FeatureModel, extract
+from rosvar.analyses.feature_model.counting import CountedDiagram
+from rosvar.analyses.feature_model.extraction import extract
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 

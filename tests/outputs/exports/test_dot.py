@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.outputs.exports import dot
 from rosvar.outputs.exports._common import Tree
 

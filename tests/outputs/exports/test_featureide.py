@@ -10,7 +10,9 @@ from xml.etree import ElementTree
 
 import pytest
 
-from rosvar.analyses.features import FeatureModel, count_configurations, extract
+from rosvar.analyses.feature_model.extraction import extract
+from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.feature_model.operations import count_configurations
 from rosvar.outputs.exports import featureide
 from rosvar.outputs.exports._common import Tree
 

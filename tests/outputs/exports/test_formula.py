@@ -8,7 +8,7 @@ from typing import Any
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.outputs.exports._common import Tree
 from rosvar.outputs.exports._formula import (
     LOGIC_OPERATORS,

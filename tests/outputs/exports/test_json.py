@@ -8,8 +8,9 @@ from typing import TYPE_CHECKING, Any
 
 import pytest
 
-from rosvar.analyses import features
-from rosvar.analyses.features import FeatureModel, core_and_dead, count_configurations
+from rosvar.analyses.feature_model import extraction
+from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.feature_model.operations import core_and_dead, count_configurations
 from rosvar.outputs.exports import WRITERS, write
 from rosvar.outputs.exports import json as json_export
 from rosvar.outputs.exports._common import Tree
@@ -165,8 +166,8 @@ def test_tricky(ws: LaunchWorkspace) -> None:
 def test_a_model_too_large_to_solve_is_still_listed(
     ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    monkeypatch.setattr(features, "LINK_BUDGET", 0)
-    monkeypatch.setattr(features, "LINKS_PER_FILE", 0)
+    monkeypatch.setattr(extraction, "LINK_BUDGET", 0)
+    monkeypatch.setattr(extraction, "LINKS_PER_FILE", 0)
     model = tricky(ws)
     document = check(model)
     assert not model.solved

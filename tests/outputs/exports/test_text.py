@@ -7,8 +7,9 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from rosvar.analyses import features
-from rosvar.analyses.features import FeatureModel, count_configurations
+from rosvar.analyses.feature_model import extraction
+from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.feature_model.operations import count_configurations
 from rosvar.outputs.exports import text
 from rosvar.outputs.exports._common import conflicts
 
@@ -76,8 +77,8 @@ def test_dead_feature_with_reasons(dead_model: FeatureModel) -> None:
 def test_a_model_too_large_to_solve_is_reported_unknown(
     ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    monkeypatch.setattr(features, "LINK_BUDGET", 0)
-    monkeypatch.setattr(features, "LINKS_PER_FILE", 0)
+    monkeypatch.setattr(extraction, "LINK_BUDGET", 0)
+    monkeypatch.setattr(extraction, "LINKS_PER_FILE", 0)
     model = tricky(ws)
     report = sections(text.write(model))
     assert report["Feature model of ws"][-1] == "  unknown number of valid configurations"

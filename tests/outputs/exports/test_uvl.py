@@ -10,7 +10,9 @@ from urllib.parse import unquote
 from hypothesis import given
 from hypothesis import strategies as st
 
-from rosvar.analyses.features import FeatureModel, count_configurations, extract
+from rosvar.analyses.feature_model.extraction import extract
+from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.feature_model.operations import count_configurations
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.exports import uvl
 from rosvar.outputs.exports._common import Tree, escape

@@ -18,7 +18,7 @@ from typing import Any
 
 import pytest
 
-from rosvar.analyses.features import extract
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.web.server import WebServer, make_server

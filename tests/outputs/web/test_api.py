@@ -7,7 +7,7 @@ from typing import Any
 import pytest
 
 from outputs.web.live import Live, running
-from rosvar.analyses import counting
+from rosvar.analyses.feature_model import counting
 from rosvar.configuration.engine import Configurator
 from rosvar.outputs.web.api import MAX_TEXT, Api
 

@@ -7,8 +7,9 @@ from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import ClearParamDecl, Raw
 from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.typed_values import bool_attribute
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
-from rosvar.logic.conditions import BDD, PREDICATES, register_predicate
+from rosvar.logic.conditions import PREDICATES, register_predicate
 from rosvar.logic.terms import Apply, Hole
 
 # Tests on attribute text; on a term they become predicate atoms decided per configuration.

@@ -17,8 +17,8 @@ from rosvar.interpreter.scope import MISSING, Scope
 from rosvar.interpreter.tags.arg import declare, handle_arg
 from rosvar.interpreter.tags.common import bool_value, namespace_scope
 from rosvar.interpreter.tags.env import handle_env
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
-from rosvar.logic.conditions import BDD
 from rosvar.workspace.paths import real_path
 
 ATTRIBUTES = ("file", "ns", "clear_params", "pass_all_args")

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from rosvar.analyses.features import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.outputs.exports import dot, featureide, json, text, uvl
 
 Writer = Callable[[FeatureModel], str]

@@ -10,14 +10,9 @@ import os
 from dataclasses import dataclass
 
 from rosvar.analyses.conflicts import Clash
-from rosvar.analyses.features import (
-    ArgFeature,
-    FeatureModel,
-    FileFeature,
-    ValueFeature,
-    simplest_trigger,
-)
-from rosvar.logic.conditions import BDD
+from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.operations import simplest_trigger
+from rosvar.logic.bdd import BDD
 
 
 def system_name(model: FeatureModel) -> str:

@@ -13,8 +13,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 
-from rosvar.analyses.features import FeatureModel, FileFeature
-from rosvar.logic.conditions import BDD
+from rosvar.analyses.feature_model.model import FeatureModel, FileFeature
+from rosvar.logic.bdd import BDD
 from rosvar.outputs.exports._common import Tree
 
 

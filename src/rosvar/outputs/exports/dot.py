@@ -9,7 +9,7 @@ its condition when it has one.
 
 from __future__ import annotations
 
-from rosvar.analyses.features import ArgFeature, FeatureModel, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
 from rosvar.outputs.exports._common import Tree
 
 

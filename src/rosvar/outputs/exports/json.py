@@ -10,14 +10,8 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from rosvar.analyses.features import (
-    ArgFeature,
-    FeatureModel,
-    FileFeature,
-    ValueFeature,
-    core_and_dead,
-    count_configurations,
-)
+from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.operations import core_and_dead, count_configurations
 from rosvar.outputs.exports._common import Tree, Triggers, conflicts
 from rosvar.outputs.exports._formula import LOGIC_OPERATORS, exported, render
 

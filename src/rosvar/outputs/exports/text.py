@@ -10,14 +10,8 @@ from __future__ import annotations
 import os
 from collections import Counter
 
-from rosvar.analyses.features import (
-    ArgFeature,
-    FeatureModel,
-    FileFeature,
-    ValueFeature,
-    core_and_dead,
-    count_configurations,
-)
+from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.operations import core_and_dead, count_configurations
 from rosvar.diagnostics import Location
 from rosvar.outputs.exports._common import Tree, Triggers, conflicts
 

@@ -8,7 +8,7 @@ itself, so that the names remain distinct and decode back with ``urllib.parse.un
 
 from __future__ import annotations
 
-from rosvar.analyses.features import ArgFeature, FeatureModel, ValueFeature
+from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, ValueFeature
 from rosvar.outputs.exports._common import Tree
 from rosvar.outputs.exports._formula import exported, render
 

@@ -1,15 +1,15 @@
 """Exact weighted model counting on a CUDD BDD, in Python integers.
 
 CUDD counts minterms in a ``double``: exact below 2^53 only, and past 2^1023 it
-overflows (``dd`` then reports "out of memory"). Feature models pass both — Husky
-has about 10^77 configurations — so counts are taken here, over the diagram's nodes
+overflows (``dd`` then reports "out of memory"). Feature models of real systems pass
+both, so counts are taken here, over the diagram's nodes
 with Python's unbounded integers.
 
 Weights let a count leave variables out of the diagram altogether: a variable
 weighs ``(w_false, w_true)``, and an assignment weighs the product of its
 variables' weights. The feature model counts its constrained variables this way
 and folds each file's unconstrained args into the weight of the file's variable
-(``features.Component``); a choice is a weight of ``(1, 0)`` or ``(0, 1)``.
+(``solver.Component``); a choice is a weight of ``(1, 0)`` or ``(0, 1)``.
 
 A recount that touches many nodes runs level by level in numpy, modulo a few primes
 below 2^31 (products stay within ``int64``), and the exact integer is put back
@@ -19,26 +19,20 @@ to exceed a bound of the count, so the residues determine it.
 
 from __future__ import annotations
 
-import ctypes
 import os
-import sys
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from functools import cache, cached_property
 from typing import TYPE_CHECKING, TypeAlias
 
-import dd.cudd as _cudd
-
 from rosvar.interpreter.workspace_models import collector_paused
-from rosvar.logic.conditions import BDD
+from rosvar.logic.bdd import BDD, Manager, Weight, combine, read, taken
 
 if TYPE_CHECKING:
     import numpy as np
     import numpy.typing as npt
 
     Array: TypeAlias = npt.NDArray[np.int64]
-
-Weight = tuple[int, int]  # (weight of false, weight of true)
 
 VECTOR_FROM = 2_000
 """A recount over at least this many nodes runs in numpy; fewer are cheaper one by one."""
@@ -53,7 +47,7 @@ class CountedDiagram:
     + w₁·D(high)) / (w₀ + w₁)``), a complemented edge is ``T − D`` (``T``: the total
     weight of all variables), and the count is ``D(root)``.
 
-    The first count reads the nodes in CUDD's memory (``_read``) and keeps them as
+    The first count reads the nodes in CUDD's memory (``bdd.read``) and keeps them as
     plain lists with their values ``D``.
     ``D(u) / T`` depends only on the weights of ``u``'s level and those below, so a
     later count whose weights differ on some levels recomputes only the nodes down to
@@ -61,7 +55,7 @@ class CountedDiagram:
     configuration engine counts this way after every click.
     """
 
-    def __init__(self, manager: _cudd.BDD, formula: BDD, weights: Mapping[str, Weight]) -> None:
+    def __init__(self, manager: Manager, formula: BDD, weights: Mapping[str, Weight]) -> None:
         """Count ``formula`` under ``weights``, which give every weighted variable's weight
         and must be positive (``formula``'s support lies within them)."""
         self._level_of = {name: manager.level_of_var(name) for name in weights}
@@ -69,9 +63,10 @@ class CountedDiagram:
         self._total = _total(self._weights)
         if self._total == 0:
             raise ValueError("the first weights of a diagram must not be zero")
-        self._levels, self._lows, self._highs, self._values, self._root = _read(
-            manager, formula, self._weights, self._total
-        )
+        with collector_paused():  # its lists are young: the collector would rescan them
+            self._levels, self._lows, self._highs, self._values, self._root = read(
+                manager, formula, self._weights, self._total
+            )
 
     def __len__(self) -> int:
         """Nodes, the constant included."""
@@ -120,7 +115,7 @@ class CountedDiagram:
             if negated:
                 d_low = total - d_low
             d_high = old[high] * times // over if levels[high] > deepest else values[high]
-            values[place] = _combine(weight_at[level], d_low, d_high)
+            values[place] = combine(weight_at[level], d_low, d_high)
         root = ~self._root if self._root < 0 else self._root
         if levels[root] > deepest:
             return self._value(old, total, times, over)
@@ -128,8 +123,8 @@ class CountedDiagram:
 
     def prepare(self) -> None:
         """Make ready now what the first recount over many nodes would build: numpy's
-        import, the levels and the moduli (about 100 ms once per process, which a server
-        counting after every click would otherwise charge to one click)."""
+        import, the levels and the moduli (once per process, which a server counting after
+        every click would otherwise charge to one click)."""
         if len(self) > VECTOR_FROM:
             _ = self._residues
             moduli()
@@ -152,50 +147,8 @@ class CountedDiagram:
 
     def taken(self) -> dict[str, set[bool]]:
         """For each weighted variable, the values it takes in some assignment satisfying the
-        formula: those of the edges from its nodes to anything but FALSE, and both where a
-        path to TRUE skips its level. One pass over the lists."""
-        if not self._level_of:
-            return {}
-        top = min(self._level_of.values())
-        bottom = max(self._level_of.values()) + 1
-        falses: set[int] = set()  # levels with an edge of that value to a satisfiable child
-        trues: set[int] = set()
-        free = [0] * (bottom - top + 1)  # difference array over the levels some edge skips
-        levels, lows, highs = self._levels, self._lows, self._highs
-        root = self._root
-        if root == ~0:  # FALSE: nothing satisfies it
-            return {name: set() for name in self._level_of}
-        free[0] += 1  # the levels above the root are free
-        free[(levels[root if root >= 0 else ~root] if root else bottom) - top] -= 1
-        seen: set[int] = set()
-        stack = [root]  # functions: a place, or ``~place`` for the negated node
-        while stack:
-            function = stack.pop()
-            if function in seen or function == 0:
-                continue
-            seen.add(function)
-            flipped = function < 0
-            place = ~function if flipped else function
-            here = levels[place]
-            low, high = lows[place], highs[place]
-            if flipped:
-                low, high = ~low, ~high
-            for taking, child in ((falses, low), (trues, high)):
-                if child == ~0:  # FALSE
-                    continue
-                taking.add(here)
-                free[here + 1 - top] += 1
-                free[(levels[child if child >= 0 else ~child] if child else bottom) - top] -= 1
-                stack.append(child)
-        values: dict[int, set[bool]] = {}
-        running = 0
-        for level in range(top, bottom):
-            running += free[level - top]
-            values[level] = {False, True} if running > 0 else set()
-            values[level].update(
-                v for v, found in ((False, falses), (True, trues)) if level in found
-            )
-        return {name: values[level] for name, level in self._level_of.items()}
+        formula (``bdd.taken``)."""
+        return taken(self._levels, self._lows, self._highs, self._root, self._level_of)
 
     def _value(self, values: list[int], total: int, times: int = 1, over: int = 1) -> int:
         root = self._root
@@ -213,127 +166,6 @@ def _total(weights: Mapping[int, Weight]) -> int:
     for off, on in weights.values():
         total *= off + on
     return total
-
-
-def _combine(weight: Weight, d_low: int, d_high: int) -> int:
-    """``D`` of a node from its children's."""
-    off, on = weight
-    if off == on:  # most variables: a shift, not a long division
-        return (d_low + d_high) >> 1
-    if not off:
-        return d_high
-    if not on:
-        return d_low
-    return (off * d_low + on * d_high) // (off + on)
-
-
-@cache
-def _memory() -> memoryview:
-    """The process's memory as 64-bit words, for reading CUDD's nodes where they lie.
-
-    Only the words of live nodes are ever read (``_read``): the view maps no memory
-    of its own, it only spares a ``ctypes`` call per read.
-    """
-    everything = (ctypes.c_uint64 * (sys.maxsize // 8)).from_address(0)
-    return memoryview(everything).cast("B").cast("Q")
-
-
-def _indices(manager: _cudd.BDD, weight_at: Mapping[int, Weight]) -> dict[int, int]:
-    """CUDD's index of each weighted level's variable, read off its node ``x ? TRUE :
-    FALSE``, which also checks the layout ``_read`` relies on: a CUDD node is its
-    variable's index (32 bits, then the reference count's), the next node in its
-    hash chain, then its ``then`` and ``else`` children (64-bit pointers)."""
-    words = _memory()
-    true = int(manager.true) - 2
-    found = {}
-    for level in weight_at:
-        node = (int(manager.var(manager.var_at_level(level))) - 2) >> 3
-        if (words[node + 2], words[node + 3]) != (true, true ^ 1):
-            raise RuntimeError("dd's CUDD lays its nodes out otherwise than counting expects")
-        found[words[node] & 0xFFFFFFFF] = level
-    return found
-
-
-@collector_paused()  # its lists are young: the collector would rescan them as they grow
-def _read(
-    manager: _cudd.BDD, formula: BDD, weight_at: Mapping[int, Weight], total: int
-) -> tuple[list[int], list[int], list[int], list[int], int]:
-    """The nodes of ``formula``, children first after the constant TRUE (place 0): each
-    one's level, low and high child (places; a complemented edge as ``~place``) and
-    ``D``; and the root's place (complemented likewise).
-
-    The nodes are read in CUDD's memory (``_memory``, layout checked by ``_indices``),
-    not through ``dd``'s wrappers: a wrapper per child (a Python object, a reference
-    taken and dropped) made reading a node cost twice its arithmetic. Safe while
-    ``formula`` is referenced, since nothing runs in CUDD meanwhile: its nodes can be
-    neither freed nor moved. ``int`` of a ``dd`` function is its pointer plus 2, and
-    CUDD marks a complemented edge in the pointer's lowest bit (``then`` edges never
-    are).
-    """
-    weight_of = {
-        index: (level, *weight_at[level]) for index, level in _indices(manager, weight_at).items()
-    }
-    reader = _Reader(weight_of, total, int(manager.true) - 2, len(manager.vars))
-    pointer = int(formula) - 2
-    negated = pointer & 1
-    root = reader.found.get(pointer ^ negated)
-    if root is None:
-        limit = sys.getrecursionlimit()
-        sys.setrecursionlimit(limit + len(weight_at))
-        try:
-            root = reader.visit(pointer ^ negated)
-        finally:
-            sys.setrecursionlimit(limit)
-    return reader.levels, reader.lows, reader.highs, reader.values, ~root if negated else root
-
-
-class _Reader:
-    """``_read``'s lists as they grow. A class, not a closure over ``_read``'s locals:
-    compiled (mypyc), a recursive closure keeps them in a cycle only the collector
-    frees, the manager included."""
-
-    __slots__ = ("found", "highs", "levels", "lows", "total", "values", "weight_of", "words")
-
-    def __init__(
-        self, weight_of: dict[int, tuple[int, int, int]], total: int, true: int, bottom: int
-    ) -> None:
-        self.words = _memory()
-        self.weight_of = weight_of  # a variable's index → its level and weight
-        self.total = total
-        self.found = {true: 0}  # regular node's address → its place
-        self.levels, self.lows, self.highs, self.values = [bottom], [0], [0], [total]
-
-    def visit(self, node: int) -> int:
-        """Place the node at address ``node`` after its children. Recursive, since a stack
-        kept by hand was half as fast (the depth is at most the number of variables)."""
-        words, found, values = self.words, self.found, self.values
-        at = node >> 3
-        low, high = words[at + 3], words[at + 2]
-        negated = low & 1
-        if negated:
-            low ^= 1
-        low_place = found.get(low)
-        if low_place is None:
-            low_place = self.visit(low)
-        high_place = found.get(high)
-        if high_place is None:
-            high_place = self.visit(high)
-        level, off, on = self.weight_of[words[at] & 0xFFFFFFFF]
-        d_low = self.total - values[low_place] if negated else values[low_place]
-        d_high = values[high_place]
-        if off == on:  # as in ``_combine``, inlined: a call per node costs
-            values.append((d_low + d_high) >> 1)
-        elif not off:
-            values.append(d_high)
-        elif not on:
-            values.append(d_low)
-        else:
-            values.append((off * d_low + on * d_high) // (off + on))
-        found[node] = place = len(self.levels)
-        self.levels.append(level)
-        self.lows.append(~low_place if negated else low_place)
-        self.highs.append(high_place)
-        return place
 
 
 def _primes(count: int) -> list[int]:
@@ -376,8 +208,8 @@ class _Level:
     """The nodes of one level: their places, and their children's (``negated``: the low
     edge is complemented; None: no low edge of the level is).
 
-    Not a dataclass: a compiled dataclass needs its field types at run time, and numpy is
-    only imported on first use."""
+    Not a dataclass: its field types name numpy's, and numpy is only imported on first
+    use."""
 
     __slots__ = ("highs", "level", "lows", "negated", "places")
 
@@ -408,8 +240,8 @@ class _Residues:
     def of(cls, levels: list[int], lows: list[int], highs: list[int], root: int) -> _Residues:
         """The levels of a diagram read by ``CountedDiagram``.
 
-        numpy is imported here, on first need: it costs about 100 ms, which every rosvar
-        command would otherwise pay at start-up. Only its element-wise integer operations
+        numpy is imported here, on first need: its import is slow, and every rosvar command
+        would otherwise pay for it at start-up. Only its element-wise integer operations
         are used, so its BLAS is kept from starting a worker thread per core.
         """
         os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")

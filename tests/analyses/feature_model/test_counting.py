@@ -8,9 +8,9 @@ import random
 import dd.cudd
 import pytest
 
-from rosvar.analyses import counting
-from rosvar.analyses.counting import CountedDiagram, Weight, moduli
-from rosvar.logic.conditions import BDD
+from rosvar.analyses.feature_model import counting
+from rosvar.analyses.feature_model.counting import CountedDiagram, Weight, moduli
+from rosvar.logic.bdd import BDD
 
 
 def enumerated(manager: dd.cudd.BDD, formula: BDD, weights: dict[str, Weight]) -> int:
@@ -79,41 +79,6 @@ def test_a_count_recomputes_the_levels_above_the_deepest_change(recount: str) ->
     for top in ((0, 1), (1, 0), (2, 5)):
         weights = {**dict.fromkeys(names, (1, 1)), "x0": top}
         assert diagram.count(weights) == enumerated(manager, formula, weights)
-
-
-def test_complemented_edges_flip_the_lowest_bit_of_int() -> None:
-    """``CountedDiagram`` tells a complemented child's node by ``int(u) ^ 1``."""
-    manager = dd.cudd.BDD()
-    manager.declare("a", "b", "c")
-    u = (manager.var("a") & manager.var("b")) | ~manager.var("c")
-    for node in (u, u.low, u.high, manager.true, manager.var("c")):
-        assert int(~node) == int(node) ^ 1
-
-
-@pytest.mark.parametrize("seed", range(10))
-def test_nodes_read_in_memory_are_those_dd_shows(seed: int) -> None:
-    """Each node ``_read`` found in CUDD's memory has the level and children that ``dd``'s
-    wrappers give (a complemented low edge as ``~place``)."""
-    rng = random.Random(seed)
-    manager = dd.cudd.BDD()
-    names = [f"x{i}" for i in range(8)]
-    manager.declare(*names)
-    formula = random_formula(manager, rng, names)
-    weights = {manager.level_of_var(name): (1, 1) for name in names}
-    levels, lows, highs, _values, root = counting._read(manager, formula, weights, 2**8)
-    function_at: dict[int, BDD] = {}  # place → its function (never complemented), from the root
-    pending = [(~root if root < 0 else root, ~formula if root < 0 else formula)]
-    while pending:
-        place, function = pending.pop()
-        assert function_at.setdefault(place, function) == function
-        if place == 0:
-            assert function == manager.true
-            continue
-        assert levels[place] == function.level
-        low, high = lows[place], highs[place]
-        pending.append((high, function.high))
-        pending.append((~low, ~function.low) if low < 0 else (low, function.low))
-    assert len(function_at) == len(levels)
 
 
 def test_counts_beyond_a_double_are_exact() -> None:

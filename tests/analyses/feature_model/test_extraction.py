@@ -13,16 +13,10 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from rosvar.analyses.features import (
-    ArgFeature,
-    Constraint,
-    FeatureModel,
-    FileFeature,
-    _declaring,
-    _excluding,
-    count_configurations,
-    extract,
-)
+from rosvar.analyses.feature_model.exclusions import declaring, excluding
+from rosvar.analyses.feature_model.extraction import extract
+from rosvar.analyses.feature_model.model import ArgFeature, Constraint, FeatureModel, FileFeature
+from rosvar.analyses.feature_model.operations import count_configurations
 from rosvar.logic.inputs import OTHER, ArgInput
 
 if TYPE_CHECKING:
@@ -415,7 +409,7 @@ def test_files_with_disjoint_names_do_not_exclude_each_other(ws: LaunchWorkspace
 def test_the_solver_links_the_files_excludes_pair_without_building_them(
     ws: LaunchWorkspace,
 ) -> None:
-    """The solver finds the pairs of clashing files per name (``_excluding``): the files of
+    """The solver finds the pairs of clashing files per name (``excluding``): the files of
     the ``excludes`` constraints, which are built only when asked for. a and c declare
     /n under conditions that never hold together: no pair."""
     ws.launch(
@@ -431,7 +425,7 @@ def test_the_solver_links_the_files_excludes_pair_without_building_them(
     files = {f.file: f for f in model.files}
     found = {
         (files[a].id, files[b].id)
-        for a, b in _excluding(_declaring(model.space, files, model.declarations))
+        for a, b in excluding(declaring(model.space, files, model.declarations))
     }
     assert found == {c.files for c in constraints(model, "excludes")}
     assert found == {

@@ -1,0 +1,7 @@
+"""The feature model (the paper's Algorithm 1) and the questions its solver answers.
+
+``model``: the tree and its cross-tree constraints; ``extraction``: Algorithm 1;
+``ordering``: the solver's variable order; ``exclusions``: the excludes constraints as the
+solver builds them; ``solver``: the model as BDDs; ``counting``: exact weighted counts;
+``operations``: counting, core/dead features, explanations, simplest triggers.
+"""

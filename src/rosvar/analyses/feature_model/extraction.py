@@ -1,0 +1,232 @@
+"""Algorithm 1: the feature model of a workspace's launch files, read off their models.
+
+The args that make a feature are those affecting the computation graph (``graph_inputs``),
+their values the interpreter's input domains; an ``<include>`` becomes a *requires*
+constraint. The solver is built at once, within its budgets (``solver.build``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+
+from rosvar.analyses.conflicts import Occurrence, index
+from rosvar.analyses.feature_model.model import (
+    ArgFeature,
+    Constraint,
+    FeatureModel,
+    FileFeature,
+    ModelTooLarge,
+    ValueFeature,
+    value_text,
+)
+from rosvar.analyses.feature_model.solver import build
+from rosvar.diagnostics import Diagnostic, Location, Severity
+from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
+from rosvar.interpreter.workspace_models import Analysis, collector_paused
+from rosvar.logic.bdd import BDD
+from rosvar.logic.choice import Choice
+from rosvar.logic.conditions import PredicateAtom, SlotAtom
+from rosvar.logic.inputs import UNSET, ArgInput
+from rosvar.logic.terms import Apply, Hole, Operand, term_inputs
+from rosvar.workspace.paths import real_path
+
+
+def _term_inputs(value: Operand) -> set[ArgInput]:
+    return {i for i in term_inputs(value) if isinstance(i, ArgInput)}
+
+
+_TERMS = (Hole, Apply)  # a union type written inline is built anew at every call
+
+
+def graph_inputs(model: LaunchModel) -> set[ArgInput]:
+    """Args whose value changes a node, param or remap (AFFECTSCG), read off the BDD supports.
+
+    The interpreter already followed ``value=`` args, include arg passing and
+    ``pass_all_args``, so an arg affects the graph exactly when one of its atoms
+    is in the support of a presence condition or of a branch of an attribute.
+    """
+    if not model.inputs:  # no args to look for: common among the files of a system
+        return set()
+    space = model.space
+    true = space.true
+    conditions: set[BDD] = set()  # elements share conditions: each support is taken once
+    terms: set[ArgInput] = set()
+    choices: dict[int, Choice[object]] = {}  # and choices (one per literal, shared): by id
+    for node in model.nodes:
+        conditions.add(node.condition)
+        for key in ("name", "namespace", "pkg", "type", "args", "machine"):
+            field_value = node.fields[key]
+            choices[id(field_value)] = field_value
+        for remap in node.remaps:
+            conditions.add(remap.condition)
+            for raw in (remap.source, remap.target):
+                if isinstance(raw, _TERMS):
+                    terms.update(_term_inputs(raw))
+    for param in model.params:
+        conditions.add(param.condition)
+        if isinstance(param, ParamDecl):
+            choices[id(param.name)] = param.name
+            choices[id(param.value)] = param.value
+    for choice in choices.values():
+        for condition, leaf in choice:
+            if condition != true:
+                conditions.add(condition)
+            if isinstance(leaf, DeferredValue):
+                leaf = leaf.raw
+            if isinstance(leaf, _TERMS):
+                terms.update(_term_inputs(leaf))
+    support: set[str] = set()
+    for condition in conditions:
+        support |= space.support(condition)
+    inputs = {
+        atom.input
+        for atom in (space.atom_of(name) for name in support)
+        if isinstance(atom, SlotAtom) and isinstance(atom.input, ArgInput)
+    }
+    predicate_inputs = {
+        i
+        for atom in (space.atom_of(name) for name in support)
+        if isinstance(atom, PredicateAtom)
+        for i in _term_inputs(atom.term)
+    }
+    return {i for i in inputs | terms | predicate_inputs if i.file == model.file}
+
+
+@collector_paused()  # the collector would rescan the whole heap of models as it grows
+def extract(
+    analysis: Analysis,
+    files: Sequence[str] | None = None,
+    progress: Callable[[int, int, str], None] | None = None,
+) -> FeatureModel:
+    """Algorithm 1 over ``files`` (default: every launch file of the workspace)."""
+    space = analysis.space
+    chosen = list(files if files is not None else analysis.workspace.launch_files)
+    models: list[LaunchModel] = []
+    for number, file in enumerate(chosen):
+        if progress is not None:
+            progress(number, len(chosen), file)
+        models.append(analysis.model(file))
+    features: list[FileFeature] = []
+    by_file: dict[str, FileFeature] = {}
+    requires: list[Constraint] = []
+    feature_inputs: set[ArgInput] = set()
+    for model in models:
+        label = analysis.label(model.file)
+        feature = FileFeature(label, model.file, space.file_atom(model.file, label))
+        affecting = graph_inputs(model)
+        declared = {a.name: a for a in model.args if a.input is not None}
+        for name, input_ in model.inputs.items():
+            if input_ not in affecting:
+                continue
+            decl = declared.get(name)
+            default = model.unset_defaults.get(name) or (decl.default if decl else None)
+            domain = model.domains[name]
+            arg = ArgFeature(
+                id=f"{label}:{name}",
+                file=model.file,
+                name=name,
+                input=input_,
+                default=default,
+                boolean={s for s in domain if isinstance(s, str)} <= {"true", "false"}
+                and any(isinstance(s, str) for s in domain),
+                location=decl.location if decl else None,
+            )
+            for slot in domain:
+                if slot is UNSET and (decl is None or decl.default is None):
+                    continue  # a required arg must be given
+                text = value_text(slot, decl.default if decl else None)
+                arg.values.append(
+                    ValueFeature(
+                        id=f"{label}:{name}={text}",
+                        value=text,
+                        slot=slot,
+                        default=(slot == default) or slot is UNSET,
+                        variable=space.slot(input_, slot),
+                    )
+                )
+            feature.args.append(arg)
+            feature_inputs.add(input_)
+        features.append(feature)
+        by_file[real_path(model.file)] = feature
+    for model in models:
+        source = by_file[real_path(model.file)]
+        for include in model.includes:
+            if not include.resolved or include.location.file != model.file:
+                continue
+            for condition, target in include.file:
+                target_feature = by_file.get(real_path(str(target)))
+                if target_feature is None:
+                    continue
+                when = include.condition & condition
+                requires.append(
+                    Constraint(
+                        "requires",
+                        (source.id, target_feature.id),
+                        ~(source.variable & when) | target_feature.variable,
+                        when,
+                        f"{source.id} includes {target_feature.id}",
+                        (include.location,),
+                        space.valid_implies(when),
+                    )
+                )
+    buckets = index(models)
+    feature_model = FeatureModel(
+        space, features, requires, buckets, models, _unknown_values(features)
+    )
+    try:
+        _check_links(buckets, len(features))
+        feature_model.solution = build(
+            space, features, requires, buckets, lambda: feature_model.constraints
+        )
+    except ModelTooLarge as too_large:
+        # kept without its traceback, whose frames hold the half-built BDDs
+        feature_model.solution = ModelTooLarge(*too_large.args)
+        feature_model.diagnostics.append(
+            Diagnostic(
+                "model-too-large",
+                Severity.WARNING,
+                f"the feature model is listed but not solved: {too_large}; the number of "
+                "valid configurations and core/dead features are unknown",
+                Location(", ".join(analysis.workspace.roots)),
+            )
+        )
+    return feature_model
+
+
+LINK_BUDGET = 20_000
+LINKS_PER_FILE = 50
+"""Most pairs of files sharing a declared name before the solver is not attempted:
+``LINK_BUDGET + LINKS_PER_FILE × files``.
+
+The pairs are what ordering the variables and listing the ``excludes`` constraints cost,
+quadratic where many files redeclare a name; workspaces that link this many files
+through their clashes also have BDDs far beyond the memory budget. Real systems link a
+few files per file, so a workspace of many systems gets a budget that grows with it.
+"""
+
+
+def _check_links(buckets: Mapping[tuple[str, str], Sequence[Occurrence]], files: int) -> None:
+    """Raise :class:`ModelTooLarge` before any pairwise work if clashes link too many files."""
+    groups = {frozenset(o.file for o in occurrences) for occurrences in buckets.values()}
+    links = sum(len(group) * (len(group) - 1) // 2 for group in groups)
+    budget = LINK_BUDGET + LINKS_PER_FILE * files
+    if links > budget:
+        raise ModelTooLarge(f"{links:,} pairs of files declare a common name (budget {budget:,})")
+
+
+def _unknown_values(features: Sequence[FileFeature]) -> list[Diagnostic]:
+    """Args whose values static analysis could not find: only a typed-in value remains."""
+    found = []
+    for feature in features:
+        for arg in feature.args:
+            if all(not isinstance(v.slot, str) for v in arg.values):
+                found.append(
+                    Diagnostic(
+                        "values-unknown",
+                        Severity.NOTE,
+                        f"no value of arg '{arg.name}' could be inferred; it keeps the "
+                        "<other> slot for a value given at configuration time (or a hints file)",
+                        arg.location or Location(feature.file, 1, 1),
+                    )
+                )
+    return found

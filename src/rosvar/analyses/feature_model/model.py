@@ -1,0 +1,175 @@
+"""The feature model: root → launch files → their args that affect the computation graph
+(AFFECTSCG) → an xor-group of each arg's values (GETVALUES: the interpreter's input domains).
+
+Cross-tree constraints: an ``<include>`` *requires* the included file (under the include's
+condition); files whose declarations clash by name *exclude* each other (under the arg values
+where the clash happens). Everything is one BDD in the analysis' condition space, so counting,
+core/dead features and explanations are solver questions, not enumeration.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import TYPE_CHECKING
+
+from rosvar.analyses.conflicts import Clash, Occurrence, clashes, repeated_inclusions
+from rosvar.diagnostics import Diagnostic, Location
+from rosvar.interpreter.model import LaunchModel
+from rosvar.logic.bdd import BDD
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
+
+if TYPE_CHECKING:
+    from rosvar.analyses.feature_model.solver import Solver
+
+
+@dataclass
+class ValueFeature:
+    id: str
+    value: str
+    slot: Slot
+    default: bool
+    variable: BDD
+
+
+@dataclass
+class ArgFeature:
+    id: str
+    file: str
+    name: str
+    input: ArgInput
+    default: str | None
+    boolean: bool
+    location: Location | None
+    values: list[ValueFeature] = field(default_factory=list)
+
+
+@dataclass
+class FileFeature:
+    id: str
+    file: str
+    variable: BDD
+    args: list[ArgFeature] = field(default_factory=list)
+
+    def variable_names(self) -> list[str]:
+        """The file's variable, then its args' values: a block of the solver's order (the
+        names are the same in the analysis' manager and the solver's)."""
+        return [name_of(self.variable)] + [name_of(v.variable) for a in self.args for v in a.values]
+
+
+@dataclass
+class Constraint:
+    """A cross-tree constraint: ``formula`` must hold; ``text`` says why, for people."""
+
+    kind: str  # "requires", "excludes", "loads"
+    files: tuple[str, ...]
+    formula: BDD
+    condition: BDD  # when it bites (include condition, clash condition)
+    text: str
+    locations: tuple[Location, ...] = ()
+    unconditional: bool = False
+
+
+class ModelTooLarge(Exception):
+    """The solver's BDDs would outgrow their budget: the model is listed, not solved."""
+
+
+@dataclass
+class FeatureModel:
+    """The feature tree and its cross-tree constraints, with the solver that answers on them.
+
+    The pairwise views — ``clashes``, ``internal`` and the ``excludes`` entries of
+    ``constraints`` — are built on first use: they grow with the square of the files
+    redeclaring a name, and neither the solver nor the count needs them. ``solution``
+    is the solver, or why it was not built (``solver`` raises that then).
+    """
+
+    space: ConditionSpace
+    files: list[FileFeature]
+    requires: list[Constraint]
+    declarations: Mapping[tuple[str, str], list[Occurrence]]  # by (kind, resolved name)
+    launch_models: list[LaunchModel]
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    solution: Solver | ModelTooLarge = field(init=False)
+
+    @property
+    def solved(self) -> bool:
+        """Whether the solver was built within its budget."""
+        return not isinstance(self.solution, ModelTooLarge)
+
+    @property
+    def solver(self) -> Solver:
+        if isinstance(self.solution, ModelTooLarge):
+            raise ModelTooLarge(*self.solution.args)
+        return self.solution
+
+    @cached_property
+    def clashes(self) -> list[Clash]:
+        return clashes(self.declarations)
+
+    @cached_property
+    def internal(self) -> list[Clash]:
+        """Clashes inside one file: two of its nodes, or one file included twice."""
+        found = [c for c in self.clashes if c.first.file == c.second.file and c.kind == "node"]
+        return found + [c for model in self.launch_models for c in repeated_inclusions(model)]
+
+    @cached_property
+    def constraints(self) -> list[Constraint]:
+        return self.requires + _excludes(self.space, self.files, self.clashes)
+
+    def feature_ids(self) -> list[str]:
+        ids: list[str] = []
+        for file in self.files:
+            ids.append(file.id)
+            for arg in file.args:
+                ids.append(arg.id)
+                ids.extend(v.id for v in arg.values)
+        return ids
+
+
+def name_of(variable: BDD) -> str:
+    """The name of a feature variable: the same in the analysis' manager and the solver's."""
+    return str(variable.var)
+
+
+def value_text(slot: Slot, default_text: str | None) -> str:
+    """How a value feature shows ``slot``."""
+    if slot is OTHER:
+        return "<other>"
+    if slot is UNSET:
+        return f"<default: {default_text}>" if default_text else "<unset>"
+    return str(slot)
+
+
+def _excludes(
+    space: ConditionSpace, features: Sequence[FileFeature], found: Sequence[Clash]
+) -> list[Constraint]:
+    """One ``excludes`` constraint per pair of files whose declarations clash."""
+    by_file = {f.file: f for f in features}  # an occurrence's file is its model's file
+    between: dict[tuple[str, str], list[Clash]] = {}
+    for clash in found:
+        if clash.first.file != clash.second.file:
+            key = tuple(sorted(clash.files))
+            between.setdefault(key, []).append(clash)  # type: ignore[arg-type]
+    constraints = []
+    for (file_a, file_b), pair_clashes in sorted(between.items()):
+        a, b = by_file[file_a], by_file[file_b]
+        condition = space.false
+        for clash in pair_clashes:
+            condition |= clash.condition
+        names = sorted({f"{c.kind} {c.name}" for c in pair_clashes})
+        constraints.append(
+            Constraint(
+                "excludes",
+                (a.id, b.id),
+                ~(a.variable & b.variable & condition),
+                condition,
+                f"{a.id} and {b.id} both declare {', '.join(names[:3])}"
+                + (f" (+{len(names) - 3} more)" if len(names) > 3 else ""),
+                tuple(loc for c in pair_clashes for loc in (c.first.location, c.second.location)),
+                space.valid_implies(condition),
+            )
+        )
+    return constraints

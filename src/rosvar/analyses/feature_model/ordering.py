@@ -1,0 +1,86 @@
+"""The solver's variable order: linked files close together, components apart.
+
+A constraint between two files is cheap for a BDD only if their variables are close in the
+order: every constraint pending across a level can double the diagram's width there.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Iterable, Mapping, Sequence
+
+from rosvar.analyses.feature_model.model import FileFeature
+
+FORCE_ROUNDS = 100
+FORCE_PATIENCE = 10  # rounds without a shorter span before FORCE stops
+
+
+def order(features: Sequence[FileFeature], links: Iterable[Sequence[str]]) -> list[str]:
+    """Feature variables in file blocks: linked files close together, components apart.
+
+    Cuthill–McKee (a breadth-first search from a file with
+    few links) finds the components and a first order of each; FORCE then refines
+    it (``_force``). The components go smallest first, so that conjoining them
+    never passes below the largest diagram (a conjunction walks every part of one
+    operand lying above the other's variables).
+    """
+    neighbours: dict[str, set[str]] = {f.id: set() for f in features}
+    for a, b in links:  # files a constraint links (feature ids)
+        if a != b:
+            neighbours[a].add(b)
+            neighbours[b].add(a)
+    by_id = {f.id: f for f in features}
+    visited: set[str] = set()
+    components: list[list[str]] = []
+    for start in sorted(by_id, key=lambda f: (len(neighbours[f]), f)):
+        if start in visited:
+            continue
+        visited.add(start)
+        component: list[str] = []
+        queue = deque([start])
+        while queue:
+            current = queue.popleft()
+            component.append(current)
+            for nxt in sorted(neighbours[current] - visited, key=lambda f: (len(neighbours[f]), f)):
+                visited.add(nxt)
+                queue.append(nxt)
+        components.append(_force(component, neighbours))
+    blocks = [[name for i in files for name in by_id[i].variable_names()] for files in components]
+    blocks.sort(key=len)
+    return [name for block in blocks for name in block]
+
+
+def _force(files: list[str], neighbours: Mapping[str, set[str]]) -> list[str]:
+    """FORCE (Aloul, Markov and Sakallah, 2003) on one component's files.
+
+    Each round moves every file to the mean centre of its links and ranks the files
+    by that; the order with the shortest total span (the summed distance between
+    linked files) is kept, and the search stops once spans stop shrinking. Linear
+    in the links per round. Where clone-and-own configurations form a grid of requires
+    and excludes, it shrinks the diagram and its construction well beyond what
+    Cuthill–McKee alone finds.
+    """
+    links = [(a, b) for a in files for b in neighbours[a] if a < b]
+    if not links:
+        return files
+    position = {f: i for i, f in enumerate(files)}
+
+    def span() -> int:
+        return sum(abs(position[a] - position[b]) for a, b in links)
+
+    best, shortest, stale = files, span(), 0
+    for _round in range(FORCE_ROUNDS):
+        if stale == FORCE_PATIENCE:
+            break
+        pull = dict.fromkeys(files, 0.0)
+        for a, b in links:
+            centre = (position[a] + position[b]) / 2
+            pull[a] += centre
+            pull[b] += centre
+        files = sorted(files, key=lambda f: (pull[f] / len(neighbours[f]), position[f]))
+        position = {f: i for i, f in enumerate(files)}
+        length = span()
+        best, shortest, stale = (
+            (files, length, 0) if length < shortest else (best, shortest, stale + 1)
+        )
+    return best

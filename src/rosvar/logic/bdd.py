@@ -1,0 +1,393 @@
+"""The one door to ``dd`` and the CUDD library it wraps.
+
+Every other module uses BDDs through their operators (``& | ~``, ``==``) and ``dd``'s public
+methods (``var``, ``let``, ``dag_size``, …); whatever reaches further — creating a manager,
+bounding its memory, CUDD's restrict and and-abstract, and every walk over the nodes
+(complement marks, children, levels) — is here, once: cofactors, supports, evaluation under
+an assignment, copies between managers, conjunction by levels, and the reading of a BDD's
+nodes for an exact weighted count and for the values each variable can take.
+
+``read`` takes the nodes out of CUDD's memory, in the layout of the CUDD build that ``dd``
+0.6.0 ships (CUDD 3.0.0), which ``dd`` does not promise to keep: ``pyproject.toml`` pins that
+version of ``dd`` for it, and ``_indices`` checks the layout before every read.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import sys
+from collections.abc import Callable, Collection, Container, Iterable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from functools import cache
+from typing import Any, NamedTuple
+
+import dd.cudd as _cudd
+
+BDD = Any  # dd.cudd.Function: dd ships no type information
+Manager = Any  # dd.cudd.BDD
+Weight = tuple[int, int]  # (weight of false, weight of true)
+
+
+def new_manager(memory: int, cache_limit: int, initial_cache: int | None = None) -> Manager:
+    """A manager told to expect ``memory`` bytes, whose computed table starts with
+    ``initial_cache`` entries (None: CUDD's default) and never grows past ``cache_limit``.
+
+    Dynamic reordering is off: every caller declares its variables in an order chosen for
+    its formulas, and reordering would cost more than it saves, quadratically in the
+    variables.
+    """
+    manager = _cudd.BDD(memory, initial_cache)
+    manager.configure(reordering=False, max_cache_hard=cache_limit)
+    return manager
+
+
+class OutOfMemory(Exception):
+    """CUDD refused to grow past the bound of :func:`memory_bound`."""
+
+
+@contextmanager
+def memory_bound(manager: Manager, budget: int) -> Iterator[None]:
+    """Operations in ``manager`` within ``budget`` bytes, or :class:`OutOfMemory`.
+
+    Past the bound CUDD returns NULL, which ``dd`` reports as a ValueError (operators) or a
+    RuntimeError (``apply`` and the like), told from other errors by their text. The bound
+    is lifted afterwards: later questions must not fail on what was built within it.
+    """
+    unbounded = manager.configure(max_memory=budget)["max_memory"]
+    try:
+        yield
+    except (ValueError, RuntimeError) as error:
+        if not any(sign in str(error) for sign in ("NULL", "out of memory")):
+            raise
+        raise OutOfMemory(f"its BDD outgrew {budget >> 20} MB") from error
+    finally:
+        manager.configure(max_memory=unbounded)
+
+
+def restrict(u: BDD, care: BDD) -> BDD:
+    """A function agreeing with ``u`` wherever ``care`` holds, usually smaller (CUDD's
+    restrict, Coudert and Madre's generalised cofactor)."""
+    return _cudd.restrict(u, care)
+
+
+def and_exists(u: BDD, v: BDD, variables: Collection[str]) -> BDD:
+    """``∃ variables. u ∧ v`` without building the conjunction (CUDD's and-abstract): it
+    stops at the first path to TRUE, so asking whether it is FALSE is cheap."""
+    return _cudd.and_exists(u, v, variables)
+
+
+def cofactors(u: BDD) -> tuple[BDD, BDD]:
+    """The low and high cofactors of ``u`` by its top variable (``dd`` gives the children of
+    its regular node, which a complemented ``u`` negates)."""
+    low, high = u.low, u.high
+    return (~low, ~high) if u.negated else (low, high)
+
+
+def complemented(u: BDD) -> bool:
+    """Whether ``u`` is the complement of its node (CUDD marks the edge, not the node)."""
+    return bool(u.negated)
+
+
+def regular(u: BDD) -> BDD:
+    """The node of ``u``: ``u`` without its complement mark."""
+    return ~u if u.negated else u
+
+
+def cofactor(u: BDD, values: Mapping[str, bool]) -> BDD:
+    """``u`` with the variables of ``values`` fixed, in time linear in the size of ``u``.
+
+    CUDD's restrict to the cube of ``values``, which is the cofactor when the care set is a
+    cube: ``dd``'s ``let`` spends several times longer making a cube of its own, over every
+    variable of the manager.
+    """
+    if not values:
+        return u
+    manager = u.bdd
+    cube = manager.true
+    for name, value in values.items():
+        atom = manager.var(name)
+        cube &= atom if value else ~atom
+    return _cudd.restrict(u, cube)
+
+
+def evaluate(u: BDD, value: Callable[[str], bool]) -> bool:
+    """The truth of ``u`` where each variable ``x`` is ``value(x)``: one path from the root
+    down (the children are those of the regular node, so complement marks are counted)."""
+    flipped = False
+    while (name := u.var) is not None:
+        flipped ^= bool(u.negated)
+        u = u.high if value(name) else u.low
+    return (not u.negated) != flipped  # the constant node is TRUE
+
+
+def children_first(
+    root: BDD, children: Callable[[BDD], Iterable[BDD]], done: Container[BDD]
+) -> Iterator[BDD]:
+    """The nodes under ``root`` not in ``done``, each after its ``children``; the caller adds
+    each node it is given to ``done``. An explicit stack: no recursion limit."""
+    stack = [root]
+    while stack:
+        node = stack[-1]
+        if node in done:
+            stack.pop()
+            continue
+        pending = [child for child in children(node) if child not in done]
+        if pending:
+            stack.extend(pending)
+            continue
+        stack.pop()
+        yield node
+
+
+def walked_support(u: BDD) -> set[str]:
+    """The variables ``u`` depends on, found by visiting its nodes: linear in ``u``'s size,
+    where ``dd``'s ``support`` walks every variable of its manager in Python."""
+    names: set[str] = set()
+    seen: set[int] = set()
+    stack = [u]
+    while stack:
+        node = stack.pop()
+        name = node.var
+        if name is None or int(node) in seen:
+            continue
+        seen.add(int(node))
+        names.add(name)
+        stack.append(node.low)
+        stack.append(node.high)
+    return names
+
+
+def transfer(u: BDD, target: Manager, hidden: Collection[str] = ()) -> BDD:
+    """``∃ hidden. u`` rebuilt in ``target``, which declares the rest of its support, in time
+    linear in the size of ``u``.
+
+    ``dd``'s ``copy_bdd`` checks each support variable against ``target.vars``, a set it
+    rebuilds from every declared variable on each access, and its ``exist`` builds a cube
+    over every variable of the manager: both cost the managers' whole variable counts per
+    call, which made building the feature model's solver quadratic in the workspace.
+
+    Functions are rebuilt before the functions above them, so a node on a ``hidden``
+    variable becomes the disjunction of its cofactors' copies, which no longer depend on
+    it. Quantification does not commute with negation, so a complemented edge is its own
+    function here, with its own cofactors.
+    """
+    source = u.bdd
+    copies: dict[BDD, BDD] = {source.true: target.true, source.false: target.false}
+    for function in children_first(u, cofactors, copies):
+        low, high = cofactors(function)
+        name = function.var
+        copies[function] = (
+            copies[high] | copies[low]
+            if name in hidden
+            else target.ite(target.var(name), copies[high], copies[low])
+        )
+    return copies[u]
+
+
+def conjoin(manager: Manager, parts: Sequence[BDD]) -> BDD:
+    """Conjunction scheduled from the bottom of the order up, by each part's top variable.
+
+    Each intermediate result is then the conjunction of every part lying below some
+    level, never a part reaching far up without those that prune it — the result
+    does not grow beyond the final diagram's width (ordering by the deepest
+    variable instead made intermediate results many times the final one).
+    """
+
+    constants = (manager.true, manager.false)
+
+    def top(part: BDD) -> int:
+        return -1 if part in constants else int(part.level)  # the root is the top variable
+
+    result = manager.true
+    for part in sorted(parts, key=top, reverse=True):
+        result &= part
+    return result
+
+
+# -- the nodes of a BDD as plain lists, read in CUDD's memory ------------------------------------
+
+
+class Nodes(NamedTuple):
+    """A BDD's nodes, children first after the constant TRUE (place 0): each one's level, low
+    and high child (places; a complemented edge as ``~place``) and value ``D`` (``read``);
+    and the root's place (complemented likewise)."""
+
+    levels: list[int]
+    lows: list[int]
+    highs: list[int]
+    values: list[int]
+    root: int
+
+
+def combine(weight: Weight, d_low: int, d_high: int) -> int:
+    """``D`` of a node at a level of ``weight`` from its children's (``read``)."""
+    off, on = weight
+    if off == on:  # most variables: a shift, not a long division
+        return (d_low + d_high) >> 1
+    if not off:
+        return d_high
+    if not on:
+        return d_low
+    return (off * d_low + on * d_high) // (off + on)
+
+
+def read(manager: Manager, u: BDD, weight_at: Mapping[int, Weight], total: int) -> Nodes:
+    """The nodes of ``u``, with the values ``D`` of a count weighted by ``weight_at`` (by
+    level; it covers ``u``'s support, and ``total`` is the product of its weights' sums).
+
+    ``D(v) = c(v) · P(r)`` for a node ``v`` at level ``r``, where ``c(v)`` is its weighted
+    count over the weighted levels from ``r`` on and ``P(r)`` the total weight of those
+    above: an edge skipping levels then needs no correction, a complemented edge is
+    ``total − D``, and the count is ``D`` of the root (``combine``).
+
+    The nodes are read in CUDD's memory (``_memory``, layout checked by ``_indices``),
+    not through ``dd``'s wrappers: a wrapper per child (a Python object, a reference
+    taken and dropped) made reading a node cost twice its arithmetic. Safe while
+    ``u`` is referenced, since nothing runs in CUDD meanwhile: its nodes can be
+    neither freed nor moved. ``int`` of a ``dd`` function is its pointer plus 2, and
+    CUDD marks a complemented edge in the pointer's lowest bit (``then`` edges never
+    are).
+    """
+    weight_of = {
+        index: (level, *weight_at[level]) for index, level in _indices(manager, weight_at).items()
+    }
+    reader = _Reader(weight_of, total, int(manager.true) - 2, len(manager.vars))
+    pointer = int(u) - 2
+    negated = pointer & 1
+    root = reader.found.get(pointer ^ negated)
+    if root is None:
+        limit = sys.getrecursionlimit()
+        sys.setrecursionlimit(limit + len(weight_at))
+        try:
+            root = reader.visit(pointer ^ negated)
+        finally:
+            sys.setrecursionlimit(limit)
+    root = ~root if negated else root
+    return Nodes(reader.levels, reader.lows, reader.highs, reader.values, root)
+
+
+@cache
+def _memory() -> memoryview:
+    """The process's memory as 64-bit words, for reading CUDD's nodes where they lie.
+
+    Only the words of live nodes are ever read (``read``): the view maps no memory
+    of its own, it only spares a ``ctypes`` call per read.
+    """
+    everything = (ctypes.c_uint64 * (sys.maxsize // 8)).from_address(0)
+    return memoryview(everything).cast("B").cast("Q")
+
+
+def _indices(manager: Manager, weight_at: Mapping[int, Weight]) -> dict[int, int]:
+    """CUDD's index of each weighted level's variable, read off its node ``x ? TRUE :
+    FALSE``, which also checks the layout ``read`` relies on: a CUDD node is its
+    variable's index (32 bits, then the reference count's), the next node in its
+    hash chain, then its ``then`` and ``else`` children (64-bit pointers)."""
+    words = _memory()
+    true = int(manager.true) - 2
+    found = {}
+    for level in weight_at:
+        node = (int(manager.var(manager.var_at_level(level))) - 2) >> 3
+        if (words[node + 2], words[node + 3]) != (true, true ^ 1):
+            raise RuntimeError("dd's CUDD lays its nodes out otherwise than rosvar reads them")
+        found[words[node] & 0xFFFFFFFF] = level
+    return found
+
+
+class _Reader:
+    """``read``'s lists as they grow. A class, not a closure over ``read``'s locals: a
+    recursive closure keeps them in a cycle only the collector frees, the manager
+    included."""
+
+    __slots__ = ("found", "highs", "levels", "lows", "total", "values", "weight_of", "words")
+
+    def __init__(
+        self, weight_of: dict[int, tuple[int, int, int]], total: int, true: int, bottom: int
+    ) -> None:
+        self.words = _memory()
+        self.weight_of = weight_of  # a variable's index → its level and weight
+        self.total = total
+        self.found = {true: 0}  # regular node's address → its place
+        self.levels, self.lows, self.highs, self.values = [bottom], [0], [0], [total]
+
+    def visit(self, node: int) -> int:
+        """Place the node at address ``node`` after its children. Recursive, since a stack
+        kept by hand was slower (the depth is at most the number of variables)."""
+        words, found, values = self.words, self.found, self.values
+        at = node >> 3
+        low, high = words[at + 3], words[at + 2]
+        negated = low & 1
+        if negated:
+            low ^= 1
+        low_place = found.get(low)
+        if low_place is None:
+            low_place = self.visit(low)
+        high_place = found.get(high)
+        if high_place is None:
+            high_place = self.visit(high)
+        level, off, on = self.weight_of[words[at] & 0xFFFFFFFF]
+        d_low = self.total - values[low_place] if negated else values[low_place]
+        d_high = values[high_place]
+        if off == on:  # as in ``combine``, inlined: a call per node costs
+            values.append((d_low + d_high) >> 1)
+        elif not off:
+            values.append(d_high)
+        elif not on:
+            values.append(d_low)
+        else:
+            values.append((off * d_low + on * d_high) // (off + on))
+        found[node] = place = len(self.levels)
+        self.levels.append(level)
+        self.lows.append(~low_place if negated else low_place)
+        self.highs.append(high_place)
+        return place
+
+
+def taken(
+    levels: Sequence[int],
+    lows: Sequence[int],
+    highs: Sequence[int],
+    root: int,
+    level_of: Mapping[str, int],
+) -> dict[str, set[bool]]:
+    """For each variable of ``level_of`` (``read``'s levels, covering the diagram's support),
+    the values it takes in some assignment satisfying the diagram ``levels, lows, highs,
+    root`` (as ``read`` gives it): those of the edges from its nodes to anything but
+    FALSE, and both where a path to TRUE skips its level. One pass over the lists."""
+    if not level_of:
+        return {}
+    top = min(level_of.values())
+    bottom = max(level_of.values()) + 1
+    falses: set[int] = set()  # levels with an edge of that value to a satisfiable child
+    trues: set[int] = set()
+    free = [0] * (bottom - top + 1)  # difference array over the levels some edge skips
+    if root == ~0:  # FALSE: nothing satisfies it
+        return {name: set() for name in level_of}
+    free[0] += 1  # the levels above the root are free
+    free[(levels[root if root >= 0 else ~root] if root else bottom) - top] -= 1
+    seen: set[int] = set()
+    stack = [root]  # functions: a place, or ``~place`` for the negated node
+    while stack:
+        function = stack.pop()
+        if function in seen or function == 0:
+            continue
+        seen.add(function)
+        flipped = function < 0
+        place = ~function if flipped else function
+        here = levels[place]
+        low, high = lows[place], highs[place]
+        if flipped:
+            low, high = ~low, ~high
+        for taking, child in ((falses, low), (trues, high)):
+            if child == ~0:  # FALSE
+                continue
+            taking.add(here)
+            free[here + 1 - top] += 1
+            free[(levels[child if child >= 0 else ~child] if child else bottom) - top] -= 1
+            stack.append(child)
+    values: dict[int, set[bool]] = {}
+    running = 0
+    for level in range(top, bottom):
+        running += free[level - top]
+        values[level] = {False, True} if running > 0 else set()
+        values[level].update(v for v, found in ((False, falses), (True, trues)) if level in found)
+    return {name: values[level] for name, level in level_of.items()}
