@@ -105,19 +105,29 @@ export function differences(variants) {
   return differ;
 }
 
-// One line telling a variant from its twins: what differs, briefest first.
-function variantHint(variant, differ) {
-  const parts = [];
-  for (const key of differ) {
-    if (key === "launched by") parts.push(`by ${shortPath(entryFile(variant.id))}`);
-    else if (key === "filename" || key === "line") {
-      if (!parts.some((p) => p.startsWith("@"))) parts.push(`@${baseName(variant.filename)}:${variant.line}`);
-    } else if (key === "condition") parts.push(`if ${variant.condition ?? "always"}`);
-    else parts.push(`${key}=${JSON.stringify(variant[key])}`);
-    if (parts.join(" ").length > 48) break;
-  }
-  const text = parts.join(" ");
-  return text.length > 60 ? `${text.slice(0, 59)}…` : text;
+function flat(value) {
+  return (typeof value === "string" ? value : JSON.stringify(value ?? null)).replace(/\s+/g, " ");
+}
+
+// Where the values of a field start to differ among variants (their common prefix's length).
+function divergence(variants, key) {
+  const texts = variants.map((v) => flat(v[key]));
+  let at = 0;
+  while (at < texts[0].length && texts.every((t) => t[at] === texts[0][at])) at += 1;
+  return at;
+}
+
+// One line telling a variant from its twins: the first field that differs, from where it
+// differs.
+function variantHint(variant, differ, variants) {
+  const key = differ[0];
+  if (key === undefined) return "";
+  if (key === "launched by") return `by ${shortPath(entryFile(variant.id))}`;
+  if (key === "filename" || key === "line") return `@${baseName(variant.filename)}:${variant.line}`;
+  const text = flat(variant[key]);
+  const from = Math.max(0, divergence(variants, key) - 6);
+  const shown = text.slice(from, from + 34);
+  return `${key}: ${from ? "…" : ""}${shown}${from + 34 < text.length ? "…" : ""}`;
 }
 
 // A group of the overview: members (graph entries) and subgroups, by key.
@@ -321,8 +331,17 @@ export class GraphView {
         if (twins.length === 1) { addNode(twins[0][0], twins[0][1], "", group); continue; }
         const differ = differences(twins.map(([, item]) => item));
         if (this.expanded.has(key)) {
-          const variants = { key, label: name };
-          for (const [kind, item] of twins) addNode(kind, item, variantHint(item, differ), variants);
+          const variants = { key, label: name, members: twins };
+          const items = twins.map(([, item]) => item);
+          const page = this.pages.get(key) ?? PAGE;
+          const seen = new Map(); // hint → times used: equal hints get a number
+          twins.slice(0, page).forEach(([kind, item], index) => {
+            let hint = variantHint(item, differ, items);
+            if (seen.has(hint) || !hint) hint = `${hint} (${index + 1} of ${twins.length})`.trim();
+            seen.set(hint, true);
+            addNode(kind, item, hint, variants);
+          });
+          if (twins.length > page) addMore(variants, twins.slice(page));
           continue;
         }
         const variants = new Group(key, name, group);
@@ -342,11 +361,15 @@ export class GraphView {
       }
       if (hidden.length) addMore(group, hidden);
     };
+    const opened = new Map(); // key → label of the groups drawn open
     const emit = (group) => {
       for (const child of [...group.children.values()].sort((a, b) => a.label.localeCompare(b.label))) {
         // a group with one subgroup and nothing else opens with it: no click for nothing
         const lone = child.children.size === 1 && child.members.length === 0;
-        if (lone || this.isOpen(child, selectedFiles)) emit(child);
+        if (lone || this.isOpen(child, selectedFiles)) {
+          opened.set(child.key, child.label);
+          emit(child);
+        }
         else addGroupUnit(child);
       }
       emitMembers(group);
@@ -364,14 +387,15 @@ export class GraphView {
                       data: { id: `e:${topic.id}:${unit}`, owner: topic.id, source: unit, target: id } });
       }
     }
-    if (this.options.params) this.paramUnits(state, wanted, drawnNodes, unitOf);
+    if (this.options.params) this.paramUnits(state, wanted, drawnNodes, unitOf, opened);
     return { wanted, unitOf, searchNames };
   }
 
   // Params as bundles: a node's own params (/ns/node/x) hang on it as one tag; the others
   // are counted on the unit that draws their launch file's or namespace's group.
-  paramUnits(state, wanted, drawnNodes, unitOf) {
+  paramUnits(state, wanted, drawnNodes, unitOf, opened) {
     const bundles = new Map(); // unit id → {name: where they are, params}
+    const boxes = new Map(wanted.filter((w) => w.data.kind === "group").map((item) => [item.data.id, { item, params: 0 }]));
     const put = (unit, name, param) => {
       if (!bundles.has(unit)) bundles.set(unit, { name, params: [] });
       bundles.get(unit).params.push(param);
@@ -385,11 +409,29 @@ export class GraphView {
         const units = drawnNodes.get(name);
         if (units) owner = units.find((unit) => entryFile(unit.slice(PREFIX.node.length)) === entryFile(param.id)) ?? units[0];
       }
-      if (owner) put(owner, name, param);
-      else {
-        const path = this.path("param", param);
-        put(`loose:${path.join("\u0001")}`, path[path.length - 1], param);
+      if (owner) {
+        put(owner, name, param);
+        continue;
       }
+      // the box of a closed group counts them; the deepest open group gets one bundle
+      let key = "";
+      let box = null;
+      let open = ["", "the workspace"];
+      for (const label of this.path("param", param)) {
+        key = `${key}\u0001${label}`;
+        box = boxes.get(PREFIX.group + key);
+        if (box) break;
+        if (opened.has(key)) open = [key, opened.get(key)];
+      }
+      if (box) {
+        box.params += 1;
+        unitOf.set(param.id, box.item.data.id);
+      } else put(`loose:${open[0]}`, open[1], param);
+    }
+    for (const { item, params } of boxes.values()) {
+      if (!params) continue;
+      item.data.label += ` · ${plural(params, "param")}`;
+      item.data.width = widthFor(item.data.label);
     }
     for (const [owner, { name: where, params }] of bundles) {
       const loose = owner.startsWith("loose:");
