@@ -57,7 +57,9 @@ def test_the_state_names_each_args_default_value(examples: Live) -> None:
     defaults = reply["defaults"]
     features = reply["features"]
     # robot.launch: <arg name="model" default="kobuki"/>; control.xml: use_teleop default true
-    robot = next(k for k, f in features.items() if k.endswith("robot.launch") and f["kind"] == "file")
+    robot = next(
+        k for k, f in features.items() if k.endswith("robot.launch") and f["kind"] == "file"
+    )
     assert defaults[f"{robot}:model"] == f"{robot}:model=kobuki"
     assert all(features[arg]["kind"] == "arg" for arg in defaults)
     assert all(features[value]["parent"] == arg for arg, value in defaults.items())

@@ -296,11 +296,15 @@ def test_warnings_follow_the_conflicts(page: Any, examples: Live) -> None:
 
 def test_clicking_a_graph_element_shows_its_details(page: Any, examples: Live) -> None:
     app = App(page, examples)
-    (box,) = app.units("group")  # nothing selected: the package is one box
-    app.click_graph_element(box["id"], double=True)  # opens it
+    (package,) = app.units("group")  # nothing selected: the package is one box
+    assert app.units("node") == []
+    app.click_graph_element(package["id"], double=True)  # opens it: a box per file
+    box = next(u for u in app.units("group") if "robot.launch" in u["label"])
+    app.click_graph_element(box["id"], double=True)
     app.wait_for_layout()
-    node = next(n for n in app.state["graph"]["nodes"] if n["presence"] != "absent")
-    app.click_graph_element(f"n:{node['id']}")
+    (unit, *_) = app.units("node")
+    node = unit["element"]
+    app.click_graph_element(unit["id"])
     details = page.locator("#details")
     assert details.is_visible()
     text = details.inner_text()
@@ -310,7 +314,7 @@ def test_clicking_a_graph_element_shows_its_details(page: Any, examples: Live) -
     robot = file_named(app.state, "robot.launch")
     app.choose(robot, "select")  # a step does not bring the closed details back
     assert details.is_hidden()
-    app.click_graph_element(f"n:{node['id']}")
+    app.click_graph_element(unit["id"])
     assert details.is_visible()
 
 
@@ -322,10 +326,10 @@ def test_graph_navigation(page: Any, examples: Live) -> None:
     app.wait_for_layout()
     bundles = app.units("params")
     params = [p for p in app.state["graph"]["params"] if p["presence"] != "absent"]
-    assert bundles and sum(len(b["element"]["params"]) for b in bundles) == len(params)
+    drawing = page.evaluate("window.rosvar.graph.drawing()")
+    assert bundles and all(p["id"] in drawing for p in params)
     page.fill("#graph-search", "controller")
     matches = page.evaluate("window.rosvar.graph.cy.nodes('.match').map((n) => n.id())")
-    drawing = page.evaluate("window.rosvar.graph.drawing()")
     named = {drawing[n["id"]] for n in app.state["graph"]["nodes"] if "controller" in n["name"]
              and n["presence"] != "absent"}  # fmt: skip
     assert matches and set(matches) == named
@@ -420,7 +424,7 @@ LEGIBLE_ZOOM = 0.6  # 12 px labels at 7 px or more
 
 
 def husky_file(app: App, name: str) -> str:
-    return file_named(app.features and app.state, f"husky_gazebo/launch/{name}")
+    return file_named(app.state, f"husky_gazebo/launch/{name}")
 
 
 def drawn(app: App) -> int:
@@ -430,7 +434,9 @@ def drawn(app: App) -> int:
 
 def overlapping(app: App) -> list[tuple[str, str]]:
     """Pairs of drawn units whose shapes overlap (a layout that left things on each other)."""
-    boxes = [u for kind in ("node", "group", "variants", "topic", "params") for u in app.units(kind)]
+    boxes = [
+        u for kind in ("node", "group", "variants", "topic", "params") for u in app.units(kind)
+    ]
     pairs = []
     for i, a in enumerate(boxes):
         for b in boxes[i + 1 :]:
@@ -516,8 +522,10 @@ def test_husky_params_and_namespaces_stay_bounded(page: Any, husky: Live) -> Non
     page.select_option("#group-by", "namespace")
     app.assert_shows_server_state()
     assert drawn(app) <= MAX_DRAWN
-    size = page.evaluate("(() => { const b = window.rosvar.graph.cy.elements().boundingBox();"
-                         " return Math.max(b.w, b.h); })()")
+    size = page.evaluate(
+        "(() => { const b = window.rosvar.graph.cy.elements().boundingBox();"
+        " return Math.max(b.w, b.h); })()"
+    )
     assert size < 10_000  # model px: the drawing stays a few screens wide at most
     assert overlapping(app) == []
 

@@ -456,8 +456,6 @@ export class GraphView {
     const selected = cy.$(":selected").map((element) => element.id());
     const added = [];
     let removed = 0;
-    cy.stop(true);
-    cy.nodes().stop(true); // a layout still moving: its units start again from where they are
     const before = new Map(cy.nodes().map((node) => [node.id(), { ...node.position() }]));
     cy.batch(() => {
       const gone = cy.elements().filter((element) => !wanted.has(element.id()));
@@ -518,6 +516,8 @@ export class GraphView {
         node.position(start);
       }
     });
+    cy.stop(true);
+    cy.nodes().stop(true); // a layout still moving: its units start again from where they are
     const runs = ++this.layoutRuns;
     this.container.dataset.layout = "running";
     const viewport = this.viewportFor(target);
