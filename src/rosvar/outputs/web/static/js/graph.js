@@ -484,29 +484,23 @@ export class GraphView {
     const cy = this.cy;
     const loose = cy.nodes().filter((node) => node.degree(false) === 0);
     const layered = cy.elements().difference(loose);
-    let top = 0;
+    // the elements drawn one by one (the selected files') first, at the top left; under them
+    // the part topics connect (layered), beside it (or under a wide one) the boxes
+    const single = loose.filter((node) => ["node", "test", "params"].includes(node.data("kind")));
+    let top = single.nonempty() ? this.grid(single, 0, 0, true) + CELL.height / 2 : 0;
     let left = 0;
     if (layered.nonempty()) {
       layered.layout(LAYERED).run();
       const box = layered.boundingBox();
-      // the grid goes beside a tall layered part, under a wide one
-      if (box.h * (cy.width() / Math.max(1, cy.height())) > box.w) [top, left] = [box.y1, box.x2 + CELL.width / 2];
-      else [top, left] = [box.y2 + CELL.height / 2, box.x1];
-    }
-    if (loose.nonempty()) {
-      // one by one first, then variants, boxes and the rest; as many columns as fit the view
-      const rank = { node: 0, test: 0, params: 1, variants: 2, group: 3, more: 4, topic: 5 };
-      const order = loose.sort((a, b) => (rank[a.data("kind")] - rank[b.data("kind")])
-        || String(a.data("label")).localeCompare(String(b.data("label"))));
-      // the grid takes the view's shape, but no wider than the view at the lowest legible zoom
+      for (const node of layered.nodes()) {
+        const at = node.position();
+        node.position({ x: at.x - box.x1, y: at.y - box.y1 + top });
+      }
       const aspect = cy.width() / Math.max(1, cy.height());
-      const widest = Math.max(1, Math.floor((cy.width() - 2 * PADDING) / ZOOM.min / CELL.width));
-      const cols = Math.max(1, Math.min(widest, Math.ceil(Math.sqrt((order.length * aspect * CELL.height) / CELL.width))));
-      order.forEach((node, index) => {
-        node.position({ x: left + (index % cols) * CELL.width + CELL.width / 2,
-                        y: top + Math.floor(index / cols) * CELL.height + CELL.height / 2 });
-      });
+      if (box.h * aspect > box.w) left = box.w + CELL.width / 2;
+      else top += box.h + CELL.height / 2;
     }
+    this.grid(loose.difference(single), left, top);
     const target = new Map(cy.nodes().map((node) => [node.id(), { ...node.position() }]));
     const origin = this.origin;
     this.origin = null;
@@ -524,6 +518,26 @@ export class GraphView {
     const finish = () => { if (runs === this.layoutRuns) this.container.dataset.layout = "done"; };
     for (const node of cy.nodes()) node.animate({ position: target.get(node.id()) }, { duration: ANIMATION_MS });
     cy.animate({ ...viewport }, { duration: ANIMATION_MS, complete: finish });
+  }
+
+  // Places nodes in a grid from (left, top), variants before boxes, by label; as many
+  // columns as make the view's shape, no wider than the view at the lowest legible zoom.
+  // Rows as wide as that (wide) for the few elements shown first. Returns the grid's bottom.
+  grid(nodes, left, top, wide = false) {
+    if (nodes.empty()) return top;
+    const cy = this.cy;
+    const rank = { node: 0, test: 0, params: 1, variants: 2, group: 3, more: 4, topic: 5 };
+    const order = nodes.sort((a, b) => (rank[a.data("kind")] - rank[b.data("kind")])
+      || String(a.data("label")).localeCompare(String(b.data("label"))));
+    const aspect = cy.width() / Math.max(1, cy.height());
+    const widest = Math.max(1, Math.floor((cy.width() - 2 * PADDING) / ZOOM.min / CELL.width));
+    const shaped = Math.ceil(Math.sqrt((order.length * aspect * CELL.height) / CELL.width));
+    const cols = Math.max(1, Math.min(widest, wide ? order.length : shaped));
+    order.forEach((node, index) => {
+      node.position({ x: left + (index % cols) * CELL.width + CELL.width / 2,
+                      y: top + Math.floor(index / cols) * CELL.height + CELL.height / 2 });
+    });
+    return top + Math.ceil(order.length / cols) * CELL.height;
   }
 
   // The zoom and pan that show `positions` (id → position) legibly: everything if it fits at
@@ -546,11 +560,13 @@ export class GraphView {
     if (!all.length) return { zoom: 1, pan: { x: 0, y: 0 } };
     let b = box(all);
     let zoom = zoomFor(b);
-    if (zoom < ZOOM.min) {
+    let most = ZOOM.max;
+    if (zoom < ZOOM.min) { // too much for one view: the first ones at a natural size, the rest below
       b = box(chosen);
       zoom = zoomFor(b);
+      most = 1;
     }
-    zoom = Math.max(ZOOM.min, Math.min(ZOOM.max, zoom));
+    zoom = Math.max(ZOOM.min, Math.min(most, zoom));
     // centred when it fits, else its top left corner at the view's
     const fitsX = (b.x2 - b.x1) * zoom <= cy.width() - 2 * PADDING;
     const fitsY = (b.y2 - b.y1) * zoom <= cy.height() - 2 * PADDING;
