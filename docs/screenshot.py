@@ -1,15 +1,18 @@
 """Take the screenshot of the web UI shown in docs/web.md (``docs/web-ui.png``).
 
-    python docs/screenshot.py [--out FILE] [PATH...]
+    python docs/screenshot.py [--out FILE] [--corpus DIR]
 
-Serves PATH (default: the bundled ``examples/``) in-process on a free loopback port, opens it
-in headless Chromium (Debian's ``/usr/bin/chromium`` through Playwright, as the browser tests
-do), makes a few choices as a user would and saves the page.
+Serves Husky (``DIR/husky``, its dependencies in ``DIR/_external``; default: the shared
+corpus next to the repository, or ``$ROSVAR_CORPUS``) in-process on a free loopback port,
+opens it in headless Chromium (Debian's ``/usr/bin/chromium`` through Playwright, as the
+browser tests do) at 1400×900, makes a few choices as a user would (a world, a robot
+description, one node's details: a configuration half done) and saves the page.
 """
 
 from __future__ import annotations
 
 import argparse
+import os
 import threading
 from pathlib import Path
 
@@ -22,6 +25,7 @@ from rosvar.outputs.web.server import make_server
 from rosvar.workspace import discover
 
 DOCS = Path(__file__).resolve().parent
+CORPUS = Path(os.environ.get("ROSVAR_CORPUS", DOCS.parent.parent / "shared" / "corpus"))
 CHROMIUM = "/usr/bin/chromium"
 
 
@@ -38,36 +42,36 @@ def choose(page: Page, feature: str, action: str) -> None:
 
 
 def stage(page: Page) -> None:
-    """Robot launch chosen, its model set, one node's details open: the UI at work."""
+    """Husky's playpen world chosen, the empty world left out, the playpen's args unfolded
+    in the tree: a configuration half done, its own nodes drawn first."""
     features = page.evaluate("window.rosvar.state.features")
-    robot = next(k for k, f in features.items() if k.endswith("robot.launch"))
-    choose(page, robot, "select")
-    page.locator(f'.feature[data-id="{robot}"] > summary .name').click()
-    page.locator(f'.feature[data-id="{robot}:model"] > summary .name').click()
-    choose(page, f"{robot}:model=husky", "select")
-    node = page.evaluate(
-        """() => window.rosvar.state.graph.nodes.find((n) => n.name === '/husky').id"""
-    )
-    where = page.evaluate(
-        "(id) => window.rosvar.graph.cy.getElementById('n:' + id).renderedPosition()", node
-    )
-    box = page.locator("#graph").bounding_box()
-    assert box is not None
-    page.mouse.click(box["x"] + where["x"], box["y"] + where["y"])
+
+    def named(end: str) -> str:
+        return next(k for k, f in features.items() if f["kind"] == "file" and k.endswith(end))
+
+    playpen = named("husky_gazebo/launch/husky_playpen.launch")
+    choose(page, playpen, "select")
+    choose(page, named("husky_gazebo/launch/husky_empty_world.launch"), "deselect")
+    page.locator(f'.feature[data-id="{playpen}"] > summary .name').click()
+    page.locator(f'.feature[data-id="{playpen}"]').scroll_into_view_if_needed()
+    page.wait_for_selector('#graph[data-layout="done"]')
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("paths", nargs="*", default=[str(DOCS.parent / "examples")])
+    parser.add_argument("--corpus", type=Path, default=CORPUS)
     parser.add_argument("--out", default=str(DOCS / "web-ui.png"))
     options = parser.parse_args()
-    analysis = Analysis(discover(options.paths))
+    workspace = discover(
+        [str(options.corpus / "husky")], ros_package_path=str(options.corpus / "_external")
+    )
+    analysis = Analysis(workspace)
     server = make_server(Configurator(analysis, extract(analysis)), port=0)
     threading.Thread(target=server.serve_forever, daemon=True).start()
     try:
         with sync_playwright() as playwright:
             browser = playwright.chromium.launch(executable_path=CHROMIUM)
-            page = browser.new_page(viewport={"width": 1400, "height": 820})
+            page = browser.new_page(viewport={"width": 1400, "height": 900})
             page.goto(server.url)
             page.wait_for_selector("body[data-step]")
             stage(page)

@@ -52,6 +52,22 @@ def test_a_tab_naming_its_version_gets_only_what_changed(examples: Live) -> None
     assert "configurations" in after and "conflicts" not in after  # unchanged fields are left out
 
 
+def test_the_state_names_each_args_default_value(examples: Live) -> None:
+    reply = examples.open()
+    defaults = reply["defaults"]
+    features = reply["features"]
+    # robot.launch: <arg name="model" default="kobuki"/>; control.xml: use_teleop default true
+    robot = next(
+        k for k, f in features.items() if k.endswith("robot.launch") and f["kind"] == "file"
+    )
+    assert defaults[f"{robot}:model"] == f"{robot}:model=kobuki"
+    assert all(features[arg]["kind"] == "arg" for arg in defaults)
+    assert all(features[value]["parent"] == arg for arg, value in defaults.items())
+    body = {"session": reply["session"], "version": reply["version"]}
+    after = examples.post("/api/choose", {**body, "action": "select", "feature": robot})
+    assert "defaults" not in after  # the same in every state: never in a delta
+
+
 def test_two_sessions_never_see_each_others_choices(examples: Live) -> None:
     one, two = examples.open(), examples.open()
     assert one["session"] != two["session"]

@@ -57,19 +57,54 @@ class App:
                  (row) => [row.dataset.id, row.querySelector('.mark').textContent]))"""
         ))  # fmt: skip
 
+    def assert_draws(self, server: dict[str, Any]) -> None:
+        """Every element that may be present is drawn, alone or in a box of the overview;
+        an element drawn alone shows its presence and whether it is in a conflict."""
+        self.wait_for_layout()
+        drawing: dict[str, str] = self.page.evaluate("window.rosvar.graph.drawing()")
+        units: dict[str, list[Any]] = self.page.evaluate(
+            """() => Object.fromEntries(window.rosvar.graph.cy.nodes().map((n) =>
+                 [n.id(), [n.hasClass('undetermined'), n.hasClass('conflict')]]))"""
+        )
+        clashing = {name for c in server["conflicts"] for name in c["names"]}
+        prefix = {"nodes": "n:", "tests": "n:", "topics": "t:"}
+        for kind, mark in prefix.items():
+            for entry in server["graph"].get(kind, []):
+                unit = drawing.get(entry["id"])
+                if entry["presence"] == "absent":
+                    assert unit is None, f"absent {entry['name']} is drawn"
+                    continue
+                assert unit in units, f"{entry['name']} is not drawn"
+                if unit == mark + entry["id"]:  # drawn alone
+                    undetermined, conflict = units[unit]
+                    assert undetermined == (entry["presence"] == "undetermined")
+                    if kind != "topics":
+                        assert conflict == (f"node {entry['name']}" in clashing)
+
+    def wait_for_layout(self) -> None:
+        self.page.wait_for_selector('#graph[data-layout="done"]')
+
+    def units(self, kind: str) -> list[dict[str, Any]]:
+        """The drawn units of a kind ("node", "group", "variants", "params", ...)."""
+        return list(self.page.evaluate(
+            """(kind) => window.rosvar.graph.cy.nodes(`[kind = "${kind}"]`).map((n) =>
+                 ({id: n.id(), label: n.data('label'), element: n.data('element'),
+                   box: n.renderedBoundingBox({includeLabels: false})}))""", kind
+        ))  # fmt: skip
+
     def graph_labels(self) -> list[str]:
+        """The names of the elements drawn one by one (not in a box of the overview)."""
+        self.wait_for_layout()
         return list(self.page.evaluate(
             """() => window.rosvar.graph.cy.nodes(':visible')
-                 .filter((n) => n.data('kind') !== 'namespace').map((n) => n.data('label'))"""
+                 .filter((n) => ['node', 'test', 'topic'].includes(n.data('kind')))
+                 .map((n) => n.data('element').name)"""
         ))  # fmt: skip
 
     def wait_for_visible(self, test: Callable[[str], str], timeout_s: float = 30) -> None:
         """Wait until the number of drawn elements passes ``test`` (the graph redraws
         after the click's event handler returns)."""
-        count = (
-            "window.rosvar.graph.cy.nodes(':visible')"
-            ".filter((n) => n.data('kind') !== 'namespace').length"
-        )
+        count = "window.rosvar.graph.cy.nodes(':visible').length"
         self.page.wait_for_function(f"() => {test(count)}", timeout=timeout_s * 1000)
 
     def warned_files(self) -> set[str]:
@@ -79,13 +114,19 @@ class App:
                  .map((row) => row.dataset.id)"""
         ))  # fmt: skip
 
-    def click_graph_element(self, element_id: str) -> None:
+    def click_graph_element(self, element_id: str, double: bool = False) -> None:
         """A real mouse click where the element is drawn on the canvas."""
+        self.wait_for_layout()
+        self.page.evaluate(
+            "(id) => window.rosvar.graph.cy.center(window.rosvar.graph.cy.getElementById(id))",
+            element_id,
+        )
         where = self.page.evaluate(
             "(id) => window.rosvar.graph.cy.getElementById(id).renderedPosition()", element_id
         )
         box = self.page.locator("#graph").bounding_box()
-        self.page.mouse.click(box["x"] + where["x"], box["y"] + where["y"])
+        click = self.page.mouse.dblclick if double else self.page.mouse.click
+        click(box["x"] + where["x"], box["y"] + where["y"])
 
     def row(self, feature: str) -> Any:
         return self.page.locator(f'.feature[data-id="{feature}"]').first
@@ -154,25 +195,8 @@ class App:
         assert {**self.state, "version": 0, "refused": []} == {**server, "version": 0}
         expected = {k: MARKS[f["state"]][f["derived"]] for k, f in server["features"].items()}
         assert self.marks() == expected
-        drawn = [e for kind in ("nodes", "tests", "topics") for e in server["graph"].get(kind, [])]
-        shown = self.page.evaluate(
-            """() => window.rosvar.graph.cy.nodes(':visible')
-                 .filter((n) => n.data('kind') !== 'namespace')
-                 .map((n) => [n.data('element').id, n.hasClass('undetermined')])"""
-        )
-        assert sorted(map(tuple, shown)) == sorted(
-            (e["id"], e["presence"] == "undetermined") for e in drawn if e["presence"] != "absent"
-        )
+        self.assert_draws(server)
         assert self.warned_files() == {f for c in server["conflicts"] for f in c["files"]}
-        clashing = {name for c in server["conflicts"] for name in c["names"]}
-        marked = self.page.evaluate(
-            "() => window.rosvar.graph.cy.nodes('.conflict').map((n) => n.data('element').id)"
-        )
-        assert sorted(marked) == sorted(
-            e["id"]
-            for e in [*server["graph"]["nodes"], *server["graph"].get("tests", [])]
-            if e["presence"] != "absent" and f"node {e['name']}" in clashing
-        )
         command = self.page.locator("#command").inner_text()
         if server["complete"]:
             assert command == server["command"]
@@ -272,31 +296,49 @@ def test_warnings_follow_the_conflicts(page: Any, examples: Live) -> None:
 
 def test_clicking_a_graph_element_shows_its_details(page: Any, examples: Live) -> None:
     app = App(page, examples)
-    node = next(n for n in app.state["graph"]["nodes"] if n["presence"] != "absent")
-    app.click_graph_element(f"n:{node['id']}")
+    (package,) = app.units("group")  # nothing selected: the package is one box
+    assert app.units("node") == []
+    app.click_graph_element(package["id"], double=True)  # opens it: a box per file
+    box = next(u for u in app.units("group") if "robot.launch" in u["label"])
+    app.click_graph_element(box["id"], double=True)
+    app.wait_for_layout()
+    (unit, *_) = app.units("node")
+    node = unit["element"]
+    app.click_graph_element(unit["id"])
     details = page.locator("#details")
     assert details.is_visible()
     text = details.inner_text()
     assert node["name"] in text and f":{node['line']}" in text and node["presence"] in text
+    page.click("#details-close")
+    assert details.is_hidden()
+    robot = file_named(app.state, "robot.launch")
+    app.choose(robot, "select")  # a step does not bring the closed details back
+    assert details.is_hidden()
+    app.click_graph_element(unit["id"])
+    assert details.is_visible()
 
 
 def test_graph_navigation(page: Any, examples: Live) -> None:
     app = App(page, examples)
+    app.choose(file_named(app.state, "robot.launch"), "select")
     total = len(app.graph_labels())
     page.check("#show-params")
-    with_params = len(app.graph_labels())
-    assert with_params > total, "params are hidden until asked for"
+    app.wait_for_layout()
+    bundles = app.units("params")
+    params = [p for p in app.state["graph"]["params"] if p["presence"] != "absent"]
+    drawing = page.evaluate("window.rosvar.graph.drawing()")
+    assert bundles and all(p["id"] in drawing for p in params)
     page.fill("#graph-search", "controller")
-    matches = page.evaluate("window.rosvar.graph.cy.nodes('.match').map((n) => n.data('label'))")
-    assert matches and all("controller" in label for label in matches)
+    matches = page.evaluate("window.rosvar.graph.cy.nodes('.match').map((n) => n.id())")
+    named = {drawing[n["id"]] for n in app.state["graph"]["nodes"] if "controller" in n["name"]
+             and n["presence"] != "absent"}  # fmt: skip
+    assert matches and set(matches) == named
     page.evaluate("() => { window.rosvar.graph.cy.nodes('.match')[0].select(); }")
     page.click("#focus")
-    app.wait_for_visible(lambda count: f"{count} < {with_params}")
-    focused = len(app.graph_labels())
-    assert 0 < focused < with_params
+    drawn = page.evaluate("window.rosvar.graph.cy.nodes().length")
+    app.wait_for_visible(lambda count: f"{count} < {drawn}")
     page.click("#show-all")
-    app.wait_for_visible(lambda count: f"{count} === {with_params}")
-    assert len(app.graph_labels()) == with_params
+    app.wait_for_visible(lambda count: f"{count} >= {total}")
 
 
 def test_complete_product_gives_the_command(page: Any, examples: Live) -> None:
@@ -375,3 +417,159 @@ def test_husky_clicks_update_the_page_in_place(page: Any, husky: Live) -> None:
     assert app.assert_shows_server_state()["features"][value]["state"] == "selected"
     app.wait_for_update(lambda: page.click("#undo"))
     assert app.marks()[value] == "·"
+
+
+MAX_DRAWN = 150  # units a readable drawing holds; Husky has 985 nodes and 7,500 params
+LEGIBLE_ZOOM = 0.6  # 12 px labels at 7 px or more
+
+
+def husky_file(app: App, name: str) -> str:
+    return file_named(app.state, f"husky_gazebo/launch/{name}")
+
+
+def drawn(app: App) -> int:
+    app.wait_for_layout()
+    return int(app.page.evaluate("window.rosvar.graph.cy.nodes().length"))
+
+
+def overlapping(app: App) -> list[tuple[str, str]]:
+    """Pairs of drawn units whose shapes overlap (a layout that left things on each other)."""
+    boxes = [
+        u for kind in ("node", "group", "variants", "topic", "params") for u in app.units(kind)
+    ]
+    pairs = []
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1 :]:
+            p, q = a["box"], b["box"]
+            if p["x1"] < q["x2"] and q["x1"] < p["x2"] and p["y1"] < q["y2"] and q["y1"] < p["y2"]:
+                pairs.append((a["id"], b["id"]))
+    return pairs
+
+
+def test_husky_overview_aggregates_and_opens_the_selected_files(page: Any, husky: Live) -> None:
+    app = App(page, husky)
+    app.assert_shows_server_state()
+    assert drawn(app) <= MAX_DRAWN < len(app.state["graph"]["nodes"])
+    assert page.evaluate("window.rosvar.graph.cy.zoom()") >= LEGIBLE_ZOOM
+    assert overlapping(app) == []
+    assert app.units("node") == []  # nothing selected: every node is in a box
+    playpen = husky_file(app, "husky_playpen.launch")
+    runs = page.evaluate("window.rosvar.graph.layoutRuns")
+    app.choose(playpen, "select")
+    server = app.assert_shows_server_state()
+    own = [n for n in server["graph"]["nodes"] if n["id"].startswith(f"{playpen}|")
+           and n["presence"] != "absent"]  # fmt: skip
+    alone = {u["element"]["id"] for u in app.units("node")}
+    assert own and {n["id"] for n in own} <= alone  # the selected file's nodes, one by one
+    assert page.evaluate("window.rosvar.graph.layoutRuns") > runs  # placed again
+    assert overlapping(app) == []
+    assert page.evaluate("window.rosvar.graph.cy.zoom()") >= LEGIBLE_ZOOM
+    # elements going away: the layout runs again (no holes) and the page still shows all
+    runs = page.evaluate("window.rosvar.graph.layoutRuns")
+    app.choose(husky_file(app, "husky_empty_world.launch"), "deselect")
+    app.assert_shows_server_state()
+    assert page.evaluate("window.rosvar.graph.layoutRuns") > runs
+    assert overlapping(app) == []
+
+
+def test_husky_groups_open_close_and_page(page: Any, husky: Live) -> None:
+    app = App(page, husky)
+    gazebo = next(u for u in app.units("group") if "husky_gazebo" in u["label"])
+    app.click_graph_element(gazebo["id"], double=True)
+    app.assert_shows_server_state()
+    assert drawn(app) <= MAX_DRAWN
+    spawn = next(u for u in app.units("group") if "spawn_husky.launch" in u["label"])
+    app.click_graph_element(spawn["id"], double=True)
+    app.assert_shows_server_state()
+    assert drawn(app) <= MAX_DRAWN
+    variants = next(u for u in app.units("variants") if "spawn_husky_model" in u["label"])
+    app.click_graph_element(variants["id"])
+    assert "they differ in" in page.locator("#details").inner_text()
+    page.locator("#details button", has_text="Show each variant").click()
+    app.wait_for_layout()
+    twins = [u for u in app.units("node") if u["element"]["name"] == variants["element"]["name"]]
+    more = app.units("more")
+    assert len(twins) > 1 and drawn(app) <= MAX_DRAWN + len(twins)
+    labels = [u["label"] for u in twins]
+    assert len(set(labels)) == len(labels), "variants of one name are told apart"
+    if more:  # a page of the group at a time
+        before = drawn(app)
+        app.click_graph_element(more[0]["id"], double=True)
+        assert drawn(app) > before
+    page.click("#overview")
+    app.wait_for_layout()
+    assert app.units("node") == [] and drawn(app) <= MAX_DRAWN
+
+
+def test_husky_params_and_namespaces_stay_bounded(page: Any, husky: Live) -> None:
+    app = App(page, husky)
+    app.choose(husky_file(app, "husky_playpen.launch"), "select")
+    page.check("#show-params")
+    app.wait_for_layout()
+    params = [p for p in app.state["graph"]["params"] if p["presence"] != "absent"]
+    bundles = app.units("params")
+    drawing = page.evaluate("window.rosvar.graph.drawing()")
+    assert len(params) > MAX_DRAWN and all(p["id"] in drawing for p in params)
+    assert drawn(app) <= MAX_DRAWN
+    assert any("params" in u["label"] for u in app.units("group"))  # counted on closed boxes
+    largest = max(bundles, key=lambda b: len(b["element"]["params"]))
+    app.click_graph_element(largest["id"])
+    rows = page.locator("#details tr")
+    assert rows.count() == min(50, len(largest["element"]["params"]))
+    if len(largest["element"]["params"]) > 50:
+        page.locator("#details button", has_text="more").click()
+        assert rows.count() > 50
+    page.select_option("#group-by", "namespace")
+    app.assert_shows_server_state()
+    assert drawn(app) <= MAX_DRAWN
+    size = page.evaluate(
+        "(() => { const b = window.rosvar.graph.cy.elements().boundingBox();"
+        " return Math.max(b.w, b.h); })()"
+    )
+    assert size < 10_000  # model px: the drawing stays a few screens wide at most
+    assert overlapping(app) == []
+
+
+def test_husky_counts_defaults_and_refusals_read_well(page: Any, husky: Live) -> None:
+    app = App(page, husky)
+    server = app.server_state()
+    shown = page.locator("#configurations")
+    exact = str(server["configurations"])
+    assert len(exact) > 20 and shown.inner_text().startswith("≈ ")
+    assert "× 10" in shown.inner_text() and len(shown.inner_text()) < 16
+    assert shown.get_attribute("title").replace(",", "").find(exact) >= 0
+    # defaults: badged; an unevaluated default reads whole, without the <default: ...> wrapper
+    port = next(a for a in server["defaults"] if a.endswith("base.launch:port"))
+    default = server["defaults"][port]
+    app.reveal(default)
+    value = app.own_row(default)
+    assert value.locator(".default-badge").is_visible()
+    text = value.locator(".name").inner_text()
+    assert text == "$(optenv HUSKY_PORT /dev/prolific)"
+    assert value.locator(".name").evaluate("(e) => e.scrollWidth <= e.clientWidth + 1")
+    assert "default: $(optenv HUSKY_PORT /dev/prolific)" in app.own_row(port).inner_text()
+    # a refusal: a readable, bounded notice that pushes nothing down, closed with its ×
+    um6 = file_named(server, "um6_config/um6.launch")
+    um7 = file_named(server, "um7_config/um7.launch")
+    app.choose(um6, "select")
+    top = page.locator("main").bounding_box()["y"]
+    app.choose(um7, "select")
+    notice = page.locator("#notice")
+    assert notice.is_visible()
+    text = notice.inner_text()
+    assert text.startswith("Not applied: select husky_bringup/um7_config/um7.launch")
+    assert "husky_bringup/um6_config/um6.launch" in text and "../" not in text
+    assert page.locator("main").bounding_box()["y"] == top
+    assert notice.bounding_box()["height"] <= 0.4 * 900
+    page.click("#notice-close")
+    assert notice.is_hidden()
+
+
+def test_husky_double_click_is_one_choice(page: Any, husky: Live) -> None:
+    app = App(page, husky)
+    base = file_named(app.state, "husky_base/launch/base.launch")
+    button = app.own_row(base).locator('.choose button[data-action="select"]')
+    app.wait_for_update(button.dblclick)
+    page.wait_for_function("() => !document.body.classList.contains('busy')")
+    server = app.assert_shows_server_state()
+    assert server["choices"] == [{"action": "select", "feature": base, "value": None}]

@@ -1,7 +1,8 @@
 // Wires the page: every user action goes to the server, and every state it answers updates
 // the tree, the graph, the details and the bar at once (the tree and the graph only where
-// the answer says something changed). Actions run one after another, in the order they
-// were made.
+// the answer says something changed). A choice made while the previous one is still being
+// answered is ignored (a double click is one choice); the steps the page makes itself run
+// one after another.
 
 import { ApiError, Client } from "./api.js";
 import { Bar } from "./bar.js";
@@ -20,21 +21,27 @@ const bar = new Bar(
     featuresLeft: $("features-left"), configurations: $("configurations"), completeness: $("completeness"),
     undo: $("undo"), redo: $("redo"), reset: $("reset"), finish: $("finish"),
     message: $("message"), command: $("command"), copy: $("copy"),
+    notice: $("notice"), noticeText: $("notice-text"), noticeClose: $("notice-close"),
   },
   {
-    undo: () => act(() => client.undo()),
-    redo: () => act(() => client.redo()),
-    reset: () => act(() => client.reset()),
-    finish: () => act(() => client.finish()),
+    undo: () => choose(() => client.undo()),
+    redo: () => choose(() => client.redo()),
+    reset: () => choose(() => client.reset()),
+    finish: () => choose(() => client.finish()),
   },
 );
 const tree = new FeatureTree($("tree"), $("conflict-popup"), (action, feature, value) => {
-  act(() => client.choose(action, feature, value));
+  choose(() => client.choose(action, feature, value));
 });
-const details = new DetailsPanel($("details"), $("details-body"), $("details-close"));
-const graph = new GraphView($("graph"), (element) => {
-  details.show(element, state);
+const graph = new GraphView($("graph"), (element, byUser) => {
+  // a new selection opens the details; a step only refreshes them if they are open
+  if (byUser || details.shown !== null) details.show(element, state);
   $("focus").disabled = !element;
+}, () => showCounts());
+const details = new DetailsPanel($("details"), $("details-body"), $("details-close"), {
+  open: (unitId) => graph.open(unitId),
+  close: (groupKey) => graph.close(groupKey),
+  unselect: () => graph.cy.$(":selected").unselect(),
 });
 
 // changes: what changed since the state rendered before (delta.js touched), null for all.
@@ -43,18 +50,31 @@ function render(next, changes = null) {
   tree.update(state, changes?.features ?? null);
   graph.update(state, changes);
   bar.update(state);
-  const counts = graph.counts();
-  $("graph-counts").textContent = `${counts.nodes} nodes · ${counts.topics} topics`
-    + (graph.options.params ? ` · ${counts.params} params` : "") + ` · ${counts.undetermined} undetermined`;
   // body[data-step] counts rendered states: tests (and curious users) can wait for the next one
   document.body.dataset.step = String(Number(document.body.dataset.step ?? 0) + 1);
 }
 
+function showCounts() {
+  const counts = graph.counts();
+  $("graph-counts").textContent = `${counts.nodes} nodes · ${counts.topics} topics`
+    + (graph.options.params ? ` · ${counts.params} params` : "") + ` · ${counts.undetermined} undetermined`
+    + ` · drawn as ${counts.drawn}`;
+}
+
+// A user's step: dropped while another is being answered (no double choices).
+let pending = 0;
+function choose(call) {
+  if (pending) return queue;
+  return act(call);
+}
+
 // Runs one server call after the previous one, then renders its answer.
 function act(call) {
+  pending += 1;
   queue = queue.then(async () => {
     document.body.classList.add("busy");
     bar.say("");
+    bar.dismiss();
     try {
       const answer = await call();
       render(answer.state, answer.changes);
@@ -66,6 +86,7 @@ function act(call) {
         bar.say(`Error: ${error.message}`, true);
       }
     } finally {
+      pending -= 1;
       document.body.classList.remove("busy");
     }
   });
@@ -78,8 +99,9 @@ function wireToolbars() {
   $("collapse-all").addEventListener("click", () => tree.expand(false));
   $("graph-search").addEventListener("input", (event) => graph.search(event.target.value));
   $("graph-search").addEventListener("keydown", (event) => { if (event.key === "Enter") graph.fit(); });
-  $("show-params").addEventListener("change", (event) => { graph.setOption("params", event.target.checked); render(state); });
-  $("group-namespaces").addEventListener("change", (event) => graph.setOption("groups", event.target.checked));
+  $("show-params").addEventListener("change", (event) => { graph.setOption("params", event.target.checked); });
+  $("group-by").addEventListener("change", (event) => { graph.setOption("grouping", event.target.value); });
+  $("overview").addEventListener("click", () => graph.overview());
   $("fit").addEventListener("click", () => graph.fit());
   $("focus").addEventListener("click", () => { $("show-all").disabled = !graph.focusSelected(); });
   $("show-all").addEventListener("click", () => { graph.showAll(); $("show-all").disabled = true; });
@@ -87,7 +109,7 @@ function wireToolbars() {
     if (!(event.ctrlKey || event.metaKey) || event.key.toLowerCase() !== "z") return;
     if (event.target.matches("input")) return;
     event.preventDefault();
-    if (event.shiftKey ? state.can_redo : state.can_undo) act(() => (event.shiftKey ? client.redo() : client.undo()));
+    if (event.shiftKey ? state.can_redo : state.can_undo) choose(() => (event.shiftKey ? client.redo() : client.undo()));
   });
 }
 
@@ -95,7 +117,7 @@ async function start() {
   wireToolbars();
   try {
     const { state: first } = await client.start();
-    tree.build(first.features);
+    tree.build(first.features, first.defaults);
     render(first);
   } catch (error) {
     bar.say(`Cannot reach the rosvar server: ${error.message}`, true);
@@ -103,6 +125,6 @@ async function start() {
 }
 
 // A handle for the browser console and the end-to-end tests.
-window.rosvar = { graph, tree, act, get state() { return state; } };
+window.rosvar = { graph, tree, act, details, get state() { return state; } };
 
 start();

@@ -1,35 +1,51 @@
 // The computation graph: ROS nodes (and test nodes), the topics they are wired to and (on
-// request) params, drawn with Cytoscape.js and a layered (dagre) layout.
+// request) params, drawn with Cytoscape.js.
 //
-// Graph ids are stable across steps, so a new state only restyles the elements that changed
-// (present/undetermined, conflicts) and removes the ones that became absent (absent elements
-// are not drawn); the layout runs again only when elements appear.
+// A large workspace has thousands of graph entries (Husky: 985 nodes, 7,500 params), far more
+// than a readable drawing holds, so the view aggregates: entries are grouped (by package then
+// launch file, by launch file, or by namespace), every group is drawn as one box with its
+// counts until it is expanded, entries of one name within a group (variants) fold into one
+// box, an expanded group shows a page of its members at a time, and params are never drawn
+// one by one (a node's params are one tag, listed in the details). Groups holding elements of
+// the selected launch files open by themselves: those come first.
+//
+// Graph ids are stable across steps. When the drawn units appear or go the layout runs again
+// and every unit moves to its new place in an animation (new units grow from the box they
+// came out of); otherwise a step only restyles the units (present/undetermined, conflicts).
+
+import { baseName, entryFile, namespacePath, packageOf, packageOfPath, shortPath } from "./names.js";
 
 cytoscape.use(cytoscapeDagre);
 
-// Connected elements get the layered layout; launch files declare few topics, so most nodes
-// have no edge and would stack in one rank: they go to a grid under the layered part instead.
-// Namespace boxes are packed by Cytoscape's force-directed layout (it handles compounds).
-const LAYERED = { name: "dagre", rankDir: "LR", nodeSep: 14, rankSep: 70, animate: false, fit: false };
-const GROUPED = { name: "cose", animate: false, fit: false, nodeDimensionsIncludeLabels: true, randomize: false };
-const CELL = { width: 150, height: 56 };
+const LAYERED = { name: "dagre", rankDir: "LR", nodeSep: 14, rankSep: 110, animate: false, fit: false,
+                  nodeDimensionsIncludeLabels: true };
+const CELL = { width: 250, height: 80 }; // a grid cell: a unit and its two-line label
+const PAGE = 24; // members of an expanded group drawn at a time
+const ANIMATION_MS = 350;
+const ZOOM = { min: 0.6, max: 1.6 }; // the fit never goes below a zoom whose labels are legible
+const PADDING = 30;
 
 const STYLE = [
   { selector: "node", style: {
-    label: "data(label)", "font-size": 11, "text-valign": "bottom", "text-margin-y": 3,
-    "min-zoomed-font-size": 7, "text-wrap": "ellipsis", "text-max-width": 180,
+    label: "data(label)", "font-size": 12, "text-valign": "bottom", "text-margin-y": 3,
+    "min-zoomed-font-size": 6, "text-wrap": "wrap", "text-max-width": CELL.width - 16,
+    "text-background-color": "#fff", "text-background-opacity": 0.8, "text-background-padding": 1,
     "border-width": 1.5, "border-color": "#333",
   } },
-  { selector: 'node[kind = "node"]', style: { shape: "ellipse", "background-color": "#fff", width: 28, height: 28 } },
-  { selector: 'node[kind = "test"]', style: { shape: "ellipse", "background-color": "#fff", "border-style": "double", "border-width": 4, width: 28, height: 28 } },
+  { selector: 'node[kind = "node"]', style: { shape: "ellipse", "background-color": "#fff", width: 26, height: 26 } },
+  { selector: 'node[kind = "test"]', style: { shape: "ellipse", "background-color": "#fff", "border-style": "double", "border-width": 4, width: 26, height: 26 } },
   { selector: 'node[kind = "topic"]', style: { shape: "round-rectangle", "background-color": "#8ecae6", width: 24, height: 14 } },
-  { selector: 'node[kind = "param"]', style: { shape: "tag", "background-color": "#ffd166", width: 18, height: 12 } },
-  { selector: 'node[kind = "namespace"]', style: {
-    shape: "round-rectangle", "background-color": "#f3f5f9", "border-style": "dotted",
-    "border-color": "#9aa3b5", "text-valign": "top", "text-margin-y": -2, "font-weight": "bold",
-    padding: 14,
+  { selector: 'node[kind = "params"]', style: { shape: "tag", "background-color": "#ffd166", width: 22, height: 14, "font-size": 11 } },
+  // boxes carry their label inside, sized to it
+  { selector: 'node[kind = "group"], node[kind = "variants"], node[kind = "more"]', style: {
+    shape: "round-rectangle", width: "data(width)", height: 40, "text-valign": "center",
+    "text-margin-y": 0, "text-background-opacity": 0, "line-height": 1.3,
   } },
+  { selector: 'node[kind = "group"]', style: { "background-color": "#e8edf7", "border-color": "#6b7ba3", "font-weight": "bold" } },
+  { selector: 'node[kind = "variants"]', style: { "background-color": "#fff", "border-width": 4, "border-style": "double" } },
+  { selector: 'node[kind = "more"]', style: { "background-color": "#f6f7f9", "border-style": "dotted", height: 26 } },
   { selector: "edge", style: { width: 1.2, "line-color": "#9aa3b5", "curve-style": "bezier" } },
+  { selector: 'edge[kind = "params"]', style: { "line-color": "#e0b54a", "line-style": "dotted" } },
   { selector: ".undetermined", style: { "border-style": "dashed", "line-style": "dashed", "background-opacity": 0.7 } },
   { selector: "node.conflict", style: { "border-color": "#b42318", "border-width": 4, color: "#b42318" } },
   { selector: "node.match", style: { "border-color": "#2f6fdb", "border-width": 4 } },
@@ -38,17 +54,13 @@ const STYLE = [
   { selector: ".hidden", style: { display: "none" } },
 ];
 
-const PREFIX = { node: "n:", test: "n:", topic: "t:", param: "p:", namespace: "ns:" };
+const PREFIX = { node: "n:", test: "n:", topic: "t:", params: "p:", group: "g:", variants: "v:", more: "m:" };
 
-function namespaceOf(name) {
-  const cut = String(name).lastIndexOf("/");
-  return cut > 0 ? String(name).slice(0, cut + 1) : "/";
-}
-
-function lastSegment(name) {
-  const text = String(name).replace(/\/$/, "");
-  return text.slice(text.lastIndexOf("/") + 1) || text;
-}
+export const GROUPINGS = {
+  package: "package, then launch file",
+  file: "launch file",
+  namespace: "namespace",
+};
 
 // Every "kind name" (e.g. "node /controller") that takes part in a conflict of the state.
 function conflictNames(conflicts) {
@@ -62,166 +74,507 @@ export function clashName(kind, name) {
   return `${kind === "test" ? "node" : kind} ${name}`;
 }
 
+// A label line no longer than a box holds: long paths keep their end.
+function fitted(text, room = 28) {
+  return text.length > room ? `…${text.slice(text.length - room + 1)}` : text;
+}
+
+function plural(count, word) {
+  return `${count.toLocaleString("en")} ${word}${count === 1 ? "" : "s"}`;
+}
+
+// A box as wide as its longest line (12px text), no wider than a grid cell.
+function widthFor(label) {
+  const longest = Math.max(...String(label).split("\n").map((line) => line.length));
+  return Math.min(CELL.width - 16, 20 + 8 * longest);
+}
+
+// The fields on which variants of one name differ, for telling them apart.
+const SAME_FOR_VARIANTS = new Set(["id", "presence", "condition", "col", "kind"]);
+
+export function differences(variants) {
+  const keys = new Set(variants.flatMap((v) => Object.keys(v)));
+  const differ = [];
+  for (const key of keys) {
+    if (SAME_FOR_VARIANTS.has(key)) continue;
+    const seen = new Set(variants.map((v) => JSON.stringify(v[key] ?? null)));
+    if (seen.size > 1) differ.push(key);
+  }
+  if (new Set(variants.map((v) => entryFile(v.id))).size > 1) differ.unshift("launched by");
+  if (new Set(variants.map((v) => v.condition)).size > 1) differ.push("condition");
+  return differ;
+}
+
+function flat(value) {
+  return (typeof value === "string" ? value : JSON.stringify(value ?? null)).replace(/\s+/g, " ");
+}
+
+// Where the values of a field start to differ among variants (their common prefix's length).
+function divergence(variants, key) {
+  const texts = variants.map((v) => flat(v[key]));
+  let at = 0;
+  while (at < texts[0].length && texts.every((t) => t[at] === texts[0][at])) at += 1;
+  return at;
+}
+
+// One line telling a variant from its twins: the first field that differs, from where it
+// differs.
+function variantHint(variant, differ, variants) {
+  const key = differ[0];
+  if (key === undefined) return "";
+  if (key === "launched by") return `by ${shortPath(entryFile(variant.id))}`;
+  if (key === "filename" || key === "line") return `@${baseName(variant.filename)}:${variant.line}`;
+  const text = flat(variant[key]);
+  const from = Math.max(0, divergence(variants, key) - 6);
+  const shown = text.slice(from, from + 34);
+  return `${key}: ${from ? "…" : ""}${shown}${from + 34 < text.length ? "…" : ""}`;
+}
+
+// A group of the overview: members (graph entries) and subgroups, by key.
+class Group {
+  constructor(key, label, parent) {
+    this.key = key;
+    this.label = label;
+    this.parent = parent;
+    this.children = new Map();
+    this.members = [];
+    this.total = 0; // entries under it, all levels
+    this.present = 0;
+    this.conflict = false;
+    this.files = new Set(); // entry files of its members
+    this.params = 0;
+  }
+
+  child(key, label) {
+    if (!this.children.has(key)) this.children.set(key, new Group(key, label, this));
+    return this.children.get(key);
+  }
+}
+
 export class GraphView {
-  // onSelect(element | null) is called with the selected element's JSON (plus its kind)
-  // whenever the selection or the selected element's data changes.
-  constructor(container, onSelect) {
+  // onSelect(element | null, byUser) is called with the selected unit's description
+  // whenever the selection (byUser: true) or the selected unit's data (false) changes.
+  // onDrawn() is called after every redraw.
+  constructor(container, onSelect, onDrawn = () => {}) {
+    this.container = container;
     this.cy = cytoscape({ container, style: STYLE, minZoom: 0.05, maxZoom: 4, boxSelectionEnabled: false });
-    this.options = { params: false, groups: false };
-    this.focused = null; // element id whose neighbourhood alone is shown
+    this.options = { params: false, grouping: "package" };
+    this.expanded = new Set(); // group keys the user opened
+    this.collapsed = new Set(); // group keys the user closed (even if they would open themselves)
+    this.pages = new Map(); // group key → members shown
+    this.focused = null; // unit id whose neighbourhood alone is shown
     this.needle = "";
     this.state = null;
+    this.units = new Map(); // unit id → {names: lowercased member names} for the search
+    this.unitOf = new Map(); // graph entry id → the unit that draws it
     this.onSelect = onSelect;
-    this.cy.on("select unselect", () => this.notifySelection());
+    this.onDrawn = onDrawn;
+    this.layoutRuns = 0;
+    this.container.dataset.layout = "done";
+    this.cy.on("select unselect", () => this.onSelect(this.selectedElement(), true));
+    this.cy.on("dbltap", "node", (event) => this.open(event.target.id()));
   }
 
   selectedElement() {
     const selected = this.cy.$(":selected");
-    return selected.nonempty() ? selected[0].data("element") ?? null : null;
-  }
-
-  notifySelection() {
-    this.onSelect(this.selectedElement());
+    if (selected.empty() || !selected[0].data("element")) return null;
+    return { ...selected[0].data("element"), unitId: selected[0].id() };
   }
 
   // changes: what changed since the last update (delta.js touched), null for everything.
   update(state, changes = null) {
     this.state = state;
-    if (changes === null || changes.fields.has("conflicts")) this.render();
-    else if (changes.graph.size) this.render(changes.graph);
+    const relevant = changes === null || changes.graph.size || changes.features.size
+      || changes.fields.has("conflicts");
+    if (relevant) this.render();
   }
 
   setOption(name, value) {
     this.options[name] = value;
+    if (name === "grouping") this.overview();
+    else this.render();
+  }
+
+  // Opens a group or a variants box (or shows more of a group), by unit id.
+  open(unitId) {
+    const element = this.cy.getElementById(unitId).data("element");
+    if (!element) return;
+    if (element.kind === "more") this.pages.set(element.group, (this.pages.get(element.group) ?? PAGE) + PAGE);
+    else if (element.kind === "group" || element.kind === "variants") {
+      this.collapsed.delete(element.key);
+      this.expanded.add(element.key);
+      this.origin = this.cy.getElementById(unitId).position();
+    } else return;
+    this.cy.$(":selected").unselect();
     this.render();
   }
 
-  // -- elements -------------------------------------------------------------------------------
-  elements(graph, conflicts) {
-    const clashing = conflictNames(conflicts);
-    const wanted = [];
-    const namespaces = new Set();
-    const group = (name) => {
-      if (!this.options.groups) return undefined;
-      const ns = namespaceOf(name);
-      if (ns === "/") return undefined;
-      namespaces.add(ns);
-      return PREFIX.namespace + ns;
-    };
-    // data.owner: the id of the graph entry the Cytoscape element is drawn for
-    const add = (kind, item, label, classes) => {
-      const data = { id: PREFIX[kind] + item.id, owner: item.id, kind, label, element: { kind, ...item } };
-      const parent = group(item.name);
-      if (parent) data.parent = parent;
-      wanted.push({ group: "nodes", data, classes: [item.presence, ...classes].join(" ") });
-    };
+  // Closes the group a unit is drawn in (it is drawn as one box again).
+  close(groupKey) {
+    this.expanded.delete(groupKey);
+    for (const key of [...this.expanded]) if (key.startsWith(`${groupKey}\u0001`)) this.expanded.delete(key);
+    this.collapsed.add(groupKey);
+    this.render();
+  }
+
+  // Back to the overview: every group closed but those of the selected files.
+  overview() {
+    this.expanded.clear();
+    this.collapsed.clear();
+    this.pages.clear();
+    this.focused = null;
+    this.render();
+  }
+
+  // -- grouping -------------------------------------------------------------------------------
+  // The path of group labels an entry files under.
+  path(kind, item) {
+    const file = entryFile(item.id);
+    if (this.options.grouping === "namespace") return namespacePath(item.name);
+    if (this.options.grouping === "file") return [shortPath(file)];
+    const feature = this.state.features[file];
+    return [feature ? packageOf(feature) : packageOfPath(file), shortPath(file)];
+  }
+
+  tree(state, clashing) {
+    const root = new Group("", "", null);
     const visible = (item) => item.presence !== "absent";
-    const nodeIds = new Map(); // ROS node name → element ids (variants share a name)
-    const shown = new Set();
-    const nodes = [["node", graph.nodes], ["test", graph.tests ?? []]];
-    for (const [kind, node] of nodes.flatMap(([k, list]) => list.filter(visible).map((n) => [k, n]))) {
-      const clash = clashing.has(clashName(kind, node.name));
-      const name = this.options.groups ? lastSegment(node.name) : node.name;
-      add(kind, node, clash ? `⚠ ${name}` : name, clash ? ["conflict"] : []);
-      if (!nodeIds.has(node.name)) nodeIds.set(node.name, []);
-      nodeIds.get(node.name).push(node.id);
-      shown.add(node.id);
-    }
-    for (const topic of graph.topics.filter(visible)) {
-      add("topic", topic, this.options.groups ? lastSegment(topic.name) : topic.name, []);
-      for (const nodeId of topic.nodes.filter((id) => shown.has(id))) {
-        const undetermined = topic.presence === "undetermined" ? "undetermined" : "";
-        wanted.push({ group: "edges", classes: undetermined,
-                      data: { id: `e:${topic.id}:${nodeId}`, owner: topic.id, source: PREFIX.node + nodeId, target: PREFIX.topic + topic.id } });
-      }
-    }
-    if (this.options.params) {
-      for (const param of graph.params.filter(visible)) {
-        const clash = clashing.has(clashName("param", param.name));
-        const name = this.options.groups ? lastSegment(param.name) : param.name;
-        add("param", param, clash ? `⚠ ${name}` : name, clash ? ["conflict"] : []);
-        // a private param (/ns/node/x) hangs on its node
-        for (const [nodeName, ids] of nodeIds) {
-          if (!String(param.name).startsWith(`${nodeName}/`)) continue;
-          for (const nodeId of ids) {
-            wanted.push({ group: "edges", classes: param.presence === "undetermined" ? "undetermined" : "",
-                          data: { id: `e:${param.id}:${nodeId}`, owner: param.id, source: PREFIX.node + nodeId, target: PREFIX.param + param.id } });
-          }
+    const nodes = [["node", state.graph.nodes], ["test", state.graph.tests ?? []]];
+    for (const [kind, list] of nodes) {
+      for (const item of list.filter(visible)) {
+        let group = root;
+        for (const label of this.path(kind, item)) group = group.child(`${group.key}\u0001${label}`, label);
+        group.members.push([kind, item]);
+        const conflict = clashing.has(clashName(kind, item.name));
+        for (let g = group; g; g = g.parent) {
+          g.total += 1;
+          if (item.presence === "present") g.present += 1;
+          g.conflict ||= conflict;
+          g.files.add(entryFile(item.id));
         }
       }
     }
-    for (const ns of namespaces) {
-      // nested namespaces nest their boxes: /a/b/ inside /a/
-      const outer = namespaceOf(ns.slice(0, -1));
-      const data = { id: PREFIX.namespace + ns, kind: "namespace", label: ns,
-                     element: { kind: "namespace", name: ns } };
-      if (outer !== "/") {
-        data.parent = PREFIX.namespace + outer;
-        namespaces.add(outer); // visited later by this same loop
-      }
-      wanted.unshift({ group: "nodes", data, classes: "" });
-    }
-    return wanted;
+    return root;
   }
 
-  // changed: ids of the graph entries that changed (null: any may have). Elements that are
-  // no longer wanted are removed and the others keep their places; the layout runs again
-  // only when elements are added.
-  render(changed = null) {
+  // Whether a group is drawn opened: the user said so, or it holds elements of selected files.
+  isOpen(group, selectedFiles) {
+    if (this.expanded.has(group.key)) return true;
+    if (this.collapsed.has(group.key)) return false;
+    for (const file of group.files) if (selectedFiles.has(file)) return true;
+    return false;
+  }
+
+  // -- units ----------------------------------------------------------------------------------
+  plan(state) {
+    const clashing = conflictNames(state.conflicts);
+    const selectedFiles = new Set(Object.entries(state.features)
+      .filter(([, f]) => f.kind === "file" && f.state === "selected").map(([id]) => id));
+    const root = this.tree(state, clashing);
+    const wanted = [];
+    const unitOf = new Map();
+    const searchNames = new Map();
+    const drawnNodes = new Map(); // ROS node name → unit ids of nodes drawn one by one
+
+    const presenceClass = (present, total) => (present === total ? "present" : "undetermined");
+    const addGroupUnit = (group) => {
+      const id = PREFIX.group + group.key;
+      const counts = [plural(group.total, "node")];
+      const label = `${group.conflict ? "⚠ " : ""}${fitted(group.label)}\n${counts.join(" · ")}`;
+      const element = { kind: "group", key: group.key, name: group.label, total: group.total,
+                        present: group.present, files: group.files.size };
+      wanted.push({ group: "nodes", classes: [presenceClass(group.present, group.total), group.conflict ? "conflict" : ""].join(" "),
+                    data: { id, kind: "group", label, width: widthFor(label), element, owner: group.key } });
+      const names = [];
+      const collect = (g) => {
+        for (const [, item] of g.members) { unitOf.set(item.id, id); names.push(String(item.name).toLowerCase()); }
+        for (const c of g.children.values()) collect(c);
+      };
+      collect(group);
+      searchNames.set(id, names);
+      return id;
+    };
+    const addNode = (kind, item, hint, group) => {
+      const id = PREFIX[kind] + item.id;
+      const clash = clashing.has(clashName(kind, item.name));
+      const label = `${clash ? "⚠ " : ""}${item.name}${hint ? `\n${hint}` : ""}`;
+      wanted.push({ group: "nodes", classes: [item.presence, clash ? "conflict" : ""].join(" "),
+                    data: { id, kind, label, owner: item.id, element: { kind, ...item, group: group.key, groupName: group.label } } });
+      unitOf.set(item.id, id);
+      searchNames.set(id, [String(item.name).toLowerCase()]);
+      if (!drawnNodes.has(item.name)) drawnNodes.set(item.name, []);
+      drawnNodes.get(item.name).push(id);
+    };
+    const addMore = (group, hidden) => {
+      const id = PREFIX.more + group.key;
+      wanted.push({ group: "nodes", classes: "",
+                    data: { id, kind: "more", label: `+${hidden.length} more`, width: widthFor(`+${hidden.length} more`),
+                            element: { kind: "more", group: group.key, name: group.label, hidden: hidden.length } } });
+      for (const [, item] of hidden) unitOf.set(item.id, id);
+      searchNames.set(id, hidden.map(([, item]) => String(item.name).toLowerCase()));
+    };
+    const emitMembers = (group) => {
+      const byName = new Map();
+      for (const [kind, item] of group.members) {
+        if (!byName.has(item.name)) byName.set(item.name, []);
+        byName.get(item.name).push([kind, item]);
+      }
+      const names = [...byName.keys()].sort();
+      const limit = this.pages.get(group.key) ?? PAGE;
+      const hidden = [];
+      let shown = 0;
+      for (const name of names) {
+        const twins = byName.get(name);
+        if (shown >= limit) { hidden.push(...twins); continue; }
+        shown += 1;
+        const key = `${group.key}\u0001=${name}`;
+        if (twins.length === 1) { addNode(twins[0][0], twins[0][1], "", group); continue; }
+        const differ = differences(twins.map(([, item]) => item));
+        if (this.expanded.has(key)) {
+          const variants = { key, label: name, members: twins };
+          const items = twins.map(([, item]) => item);
+          const page = this.pages.get(key) ?? PAGE;
+          const seen = new Map(); // hint → times used: equal hints get a number
+          twins.slice(0, page).forEach(([kind, item], index) => {
+            let hint = variantHint(item, differ, items);
+            if (seen.has(hint) || !hint) hint = `${hint} (${index + 1} of ${twins.length})`.trim();
+            seen.set(hint, true);
+            addNode(kind, item, hint, variants);
+          });
+          if (twins.length > page) addMore(variants, twins.slice(page));
+          continue;
+        }
+        const variants = new Group(key, name, group);
+        for (const [, item] of twins) {
+          variants.members.push(["node", item]);
+          variants.total += 1;
+          if (item.presence === "present") variants.present += 1;
+          variants.conflict ||= clashing.has(clashName("node", item.name));
+        }
+        const id = PREFIX.variants + key;
+        const label = `${variants.conflict ? "⚠ " : ""}${fitted(name)}\n${twins.length} variants`;
+        wanted.push({ group: "nodes", classes: [presenceClass(variants.present, variants.total), variants.conflict ? "conflict" : ""].join(" "),
+                      data: { id, kind: "variants", label, width: widthFor(label), owner: key,
+                              element: { kind: "variants", key, name, total: twins.length, present: variants.present, differ } } });
+        for (const [, item] of twins) unitOf.set(item.id, id);
+        searchNames.set(id, [String(name).toLowerCase()]);
+      }
+      if (hidden.length) addMore(group, hidden);
+    };
+    const opened = new Map(); // key → label of the groups drawn open
+    const emit = (group) => {
+      for (const child of [...group.children.values()].sort((a, b) => a.label.localeCompare(b.label))) {
+        // a group with one subgroup and nothing else opens with it: no click for nothing
+        const lone = child.children.size === 1 && child.members.length === 0;
+        if (lone || this.isOpen(child, selectedFiles)) {
+          opened.set(child.key, child.label);
+          emit(child);
+        }
+        else addGroupUnit(child);
+      }
+      emitMembers(group);
+    };
+    emit(root);
+
+    // topics: one by one, wired to whatever unit draws each of their nodes
+    for (const topic of state.graph.topics.filter((t) => t.presence !== "absent")) {
+      const id = PREFIX.topic + topic.id;
+      wanted.push({ group: "nodes", classes: topic.presence, data: { id, kind: "topic", label: topic.name, owner: topic.id, element: { kind: "topic", ...topic } } });
+      unitOf.set(topic.id, id);
+      searchNames.set(id, [String(topic.name).toLowerCase()]);
+      for (const unit of new Set(topic.nodes.map((nodeId) => unitOf.get(nodeId)).filter(Boolean))) {
+        wanted.push({ group: "edges", classes: topic.presence === "undetermined" ? "undetermined" : "",
+                      data: { id: `e:${topic.id}:${unit}`, owner: topic.id, source: unit, target: id } });
+      }
+    }
+    if (this.options.params) this.paramUnits(state, wanted, drawnNodes, unitOf, opened);
+    return { wanted, unitOf, searchNames };
+  }
+
+  // Params as bundles: a node's own params (/ns/node/x) hang on it as one tag; the others
+  // are counted on the unit that draws their launch file's or namespace's group.
+  paramUnits(state, wanted, drawnNodes, unitOf, opened) {
+    const bundles = new Map(); // unit id → {name: where they are, params}
+    const boxes = new Map(wanted.filter((w) => w.data.kind === "group").map((item) => [item.data.id, { item, params: 0 }]));
+    const put = (unit, name, param) => {
+      if (!bundles.has(unit)) bundles.set(unit, { name, params: [] });
+      bundles.get(unit).params.push(param);
+    };
+    for (const param of state.graph.params) {
+      if (param.presence === "absent") continue;
+      let owner = null;
+      let name = String(param.name);
+      while (!owner && name.lastIndexOf("/") > 0) {
+        name = name.slice(0, name.lastIndexOf("/"));
+        const units = drawnNodes.get(name);
+        if (units) owner = units.find((unit) => entryFile(unit.slice(PREFIX.node.length)) === entryFile(param.id)) ?? units[0];
+      }
+      if (owner) {
+        put(owner, name, param);
+        continue;
+      }
+      // the box of a closed group counts them; the deepest open group gets one bundle
+      let key = "";
+      let box = null;
+      let open = ["", "the workspace"];
+      for (const label of this.path("param", param)) {
+        key = `${key}\u0001${label}`;
+        box = boxes.get(PREFIX.group + key);
+        if (box) break;
+        if (opened.has(key)) open = [key, opened.get(key)];
+      }
+      if (box) {
+        box.params += 1;
+        unitOf.set(param.id, box.item.data.id);
+      } else put(`loose:${open[0]}`, open[1], param);
+    }
+    for (const { item, params } of boxes.values()) {
+      if (!params) continue;
+      item.data.label += ` · ${plural(params, "param")}`;
+      item.data.width = widthFor(item.data.label);
+    }
+    for (const [owner, { name: where, params }] of bundles) {
+      const loose = owner.startsWith("loose:");
+      const id = `${PREFIX.params}${owner}`;
+      const present = params.filter((p) => p.presence === "present").length;
+      wanted.push({ group: "nodes", classes: present === params.length ? "present" : "undetermined",
+                    data: { id, kind: "params", label: `${plural(params.length, "param")}${loose ? ` in ${where}` : ""}`, owner: id,
+                            element: { kind: "params", name: where, params } } });
+      for (const param of params) unitOf.set(param.id, id);
+      if (!loose) wanted.push({ group: "edges", classes: "", data: { id: `e:${id}`, kind: "params", source: owner, target: id } });
+    }
+  }
+
+  // -- drawing --------------------------------------------------------------------------------
+  render() {
     if (!this.state) return;
-    const wanted = new Map(this.elements(this.state.graph, this.state.conflicts).map((item) => [item.data.id, item]));
+    const { wanted: list, unitOf, searchNames } = this.plan(this.state);
+    this.unitOf = unitOf;
+    this.units = searchNames;
+    const wanted = new Map(list.map((item) => [item.data.id, item]));
     const cy = this.cy;
     const selected = cy.$(":selected").map((element) => element.id());
     const added = [];
+    let removed = 0;
+    const before = new Map(cy.nodes().map((node) => [node.id(), { ...node.position() }]));
     cy.batch(() => {
-      // gone, or moved into another namespace box (drawn again below)
-      cy.remove(cy.elements().filter((element) => {
-        const item = wanted.get(element.id());
-        return !item || item.data.parent !== element.data("parent");
-      }));
+      const gone = cy.elements().filter((element) => !wanted.has(element.id()));
+      removed = gone.length;
+      cy.remove(gone);
       for (const item of wanted.values()) {
         const element = cy.getElementById(item.data.id);
         if (element.empty()) added.push(item);
-        else if (!changed || changed.has(item.data.owner)) element.data(item.data).classes(item.classes);
+        else element.data(item.data).classes(item.classes);
       }
       cy.add(added);
       // the same ids are the same elements: keep them selected across steps
       for (const id of selected) cy.getElementById(id).select();
     });
-    if (added.length) this.layout();
+    if (added.length || removed) this.layout(before);
     if (this.focused && cy.getElementById(this.focused).empty()) this.focused = null;
     this.applyVisibility();
-    this.notifySelection();
+    this.onSelect(this.selectedElement(), false);
+    this.onDrawn();
   }
 
-  layout() {
+  // Places every unit (layered where topics connect them, a grid for the rest), then moves
+  // them there from where they were (new ones from the box they came out of) and the view to
+  // the units that matter most: the elements drawn one by one, else everything.
+  layout(before) {
     const cy = this.cy;
-    if (this.options.groups) {
-      cy.layout(GROUPED).run();
-    } else {
-      const loose = cy.nodes().filter((node) => node.degree(false) === 0);
-      const layered = cy.elements().difference(loose);
-      let top = 0;
-      let left = 0;
-      if (layered.nonempty()) {
-        layered.layout(LAYERED).run();
-        const box = layered.boundingBox();
-        top = box.y2 + CELL.height;
-        left = box.x1;
+    const loose = cy.nodes().filter((node) => node.degree(false) === 0);
+    const layered = cy.elements().difference(loose);
+    // the elements drawn one by one (the selected files') first, at the top left; under them
+    // the part topics connect (layered), beside it (or under a wide one) the boxes
+    const single = loose.filter((node) => ["node", "test", "params"].includes(node.data("kind")));
+    let top = single.nonempty() ? this.grid(single, 0, 0, true) + CELL.height / 2 : 0;
+    let left = 0;
+    if (layered.nonempty()) {
+      layered.layout(LAYERED).run();
+      const box = layered.boundingBox();
+      for (const node of layered.nodes()) {
+        const at = node.position();
+        node.position({ x: at.x - box.x1, y: at.y - box.y1 + top });
       }
-      if (loose.nonempty()) {
-        // as many columns as make the grid's shape the view's
-        const aspect = cy.width() / Math.max(1, cy.height());
-        const cols = Math.ceil(Math.sqrt((loose.length * aspect * CELL.height) / CELL.width));
-        const rows = Math.ceil(loose.length / cols);
-        loose.layout({
-          name: "grid", fit: false, cols, avoidOverlap: true,
-          boundingBox: { x1: left, y1: top, w: cols * CELL.width, h: rows * CELL.height },
-          sort: (a, b) => String(a.data("label")).localeCompare(String(b.data("label"))),
-        }).run();
-      }
+      const aspect = cy.width() / Math.max(1, cy.height());
+      if (box.h * aspect > box.w) left = box.w + CELL.width / 2;
+      else top += box.h + CELL.height / 2;
     }
-    cy.fit(cy.elements(), 30);
+    this.grid(loose.difference(single), left, top);
+    const target = new Map(cy.nodes().map((node) => [node.id(), { ...node.position() }]));
+    const origin = this.origin;
+    this.origin = null;
+    cy.batch(() => {
+      for (const node of cy.nodes()) {
+        const start = before.get(node.id()) ?? origin ?? target.get(node.id());
+        node.position(start);
+      }
+    });
+    cy.stop(true);
+    cy.nodes().stop(true); // a layout still moving: its units start again from where they are
+    const runs = ++this.layoutRuns;
+    this.container.dataset.layout = "running";
+    const viewport = this.viewportFor(target);
+    const finish = () => { if (runs === this.layoutRuns) this.container.dataset.layout = "done"; };
+    for (const node of cy.nodes()) node.animate({ position: target.get(node.id()) }, { duration: ANIMATION_MS });
+    cy.animate({ ...viewport }, { duration: ANIMATION_MS, complete: finish });
+  }
+
+  // Places nodes in a grid from (left, top), variants before boxes, by label; as many
+  // columns as make the view's shape, no wider than the view at the lowest legible zoom.
+  // Rows as wide as that (wide) for the few elements shown first. Returns the grid's bottom.
+  grid(nodes, left, top, wide = false) {
+    if (nodes.empty()) return top;
+    const cy = this.cy;
+    const rank = { node: 0, test: 0, params: 1, variants: 2, group: 3, more: 4, topic: 5 };
+    const order = nodes.sort((a, b) => (rank[a.data("kind")] - rank[b.data("kind")])
+      || String(a.data("label")).localeCompare(String(b.data("label"))));
+    const aspect = cy.width() / Math.max(1, cy.height());
+    const widest = Math.max(1, Math.floor((cy.width() - 2 * PADDING) / ZOOM.min / CELL.width));
+    const shaped = Math.ceil(Math.sqrt((order.length * aspect * CELL.height) / CELL.width));
+    const cols = Math.max(1, Math.min(widest, wide ? order.length : shaped));
+    order.forEach((node, index) => {
+      node.position({ x: left + (index % cols) * CELL.width + CELL.width / 2,
+                      y: top + Math.floor(index / cols) * CELL.height + CELL.height / 2 });
+    });
+    return top + Math.ceil(order.length / cols) * CELL.height;
+  }
+
+  // The zoom and pan that show `positions` (id → position) legibly: everything if it fits at
+  // a readable zoom, else the one-by-one elements (top left first).
+  viewportFor(positions, ids = null) {
+    const cy = this.cy;
+    const chosen = ids ?? (() => {
+      const single = cy.nodes().filter((n) => ["node", "test", "params"].includes(n.data("kind"))).map((n) => n.id());
+      return single.length ? single : [...positions.keys()];
+    })();
+    const all = [...positions.keys()];
+    const box = (names) => {
+      const points = names.map((id) => positions.get(id)).filter(Boolean);
+      const xs = points.map((p) => p.x);
+      const ys = points.map((p) => p.y);
+      return { x1: Math.min(...xs) - CELL.width / 2, x2: Math.max(...xs) + CELL.width / 2,
+               y1: Math.min(...ys) - 30, y2: Math.max(...ys) + CELL.height - 20 };
+    };
+    const zoomFor = (b) => Math.min((cy.width() - 2 * PADDING) / (b.x2 - b.x1), (cy.height() - 2 * PADDING) / (b.y2 - b.y1));
+    if (!all.length) return { zoom: 1, pan: { x: 0, y: 0 } };
+    let b = box(all);
+    let zoom = zoomFor(b);
+    let most = ZOOM.max;
+    if (zoom < ZOOM.min) { // too much for one view: the first ones at a natural size, the rest below
+      b = box(chosen);
+      zoom = zoomFor(b);
+      most = 1;
+    }
+    zoom = Math.max(ZOOM.min, Math.min(most, zoom));
+    // centred when it fits, else its top left corner at the view's
+    const fitsX = (b.x2 - b.x1) * zoom <= cy.width() - 2 * PADDING;
+    const fitsY = (b.y2 - b.y1) * zoom <= cy.height() - 2 * PADDING;
+    const pan = {
+      x: fitsX ? cy.width() / 2 - zoom * (b.x1 + b.x2) / 2 : PADDING - zoom * b.x1,
+      y: fitsY ? cy.height() / 2 - zoom * (b.y1 + b.y2) / 2 : PADDING - zoom * b.y1,
+    };
+    return { zoom, pan };
   }
 
   // -- navigation -----------------------------------------------------------------------------
@@ -230,10 +583,12 @@ export class GraphView {
     this.applyVisibility();
   }
 
-  // Fit the view to the search matches (or everything).
+  // Fit the view to the search matches (or everything), at a legible zoom.
   fit() {
     const matches = this.cy.nodes(".match");
-    this.cy.fit(matches.nonempty() ? matches : this.cy.elements(":visible"), 30);
+    const shown = matches.nonempty() ? matches : this.cy.nodes(":visible");
+    const positions = new Map(shown.map((node) => [node.id(), { ...node.position() }]));
+    this.cy.animate(this.viewportFor(positions, [...positions.keys()]), { duration: ANIMATION_MS });
   }
 
   focusSelected() {
@@ -241,7 +596,7 @@ export class GraphView {
     if (selected.empty()) return false;
     this.focused = selected[0].id();
     this.applyVisibility();
-    this.cy.fit(this.cy.elements(":visible"), 30);
+    this.fit();
     return true;
   }
 
@@ -257,22 +612,34 @@ export class GraphView {
       cy.elements().removeClass("hidden faded match");
       if (this.focused) {
         const centre = cy.getElementById(this.focused);
-        const keep = centre.closedNeighborhood().union(centre.closedNeighborhood().ancestors());
-        cy.elements().difference(keep).addClass("hidden");
+        cy.elements().difference(centre.closedNeighborhood()).addClass("hidden");
       }
       if (this.needle) {
-        const matches = cy.nodes().filter((node) => node.data("kind") !== "namespace"
-          && String(node.data("label")).toLowerCase().includes(this.needle));
+        const matches = cy.nodes().filter((node) => (this.units.get(node.id()) ?? [])
+          .some((name) => name.includes(this.needle)));
         matches.addClass("match");
-        cy.elements().difference(matches.union(matches.ancestors())).addClass("faded");
+        cy.elements().difference(matches).addClass("faded");
       }
     });
   }
 
+  // Graph entry id → the id of the unit that draws it (the tests' and the console's view).
+  drawing() {
+    return Object.fromEntries(this.unitOf);
+  }
+
+  // What the graph shows, in graph entries (a box counts what it holds).
   counts() {
-    const visible = this.cy.nodes(":visible");
-    const of = (kind) => visible.filter(`[kind = "${kind}"]`).length;
-    const undetermined = visible.filter(".undetermined").length;
-    return { nodes: of("node"), topics: of("topic"), params: of("param"), undetermined };
+    const entries = { node: 0, topic: 0, param: 0, undetermined: 0 };
+    if (!this.state) return { ...entries, drawn: 0 };
+    const shown = (item) => item.presence !== "absent" && this.unitOf.has(item.id);
+    for (const item of [...this.state.graph.nodes, ...(this.state.graph.tests ?? [])].filter(shown)) {
+      entries.node += 1;
+      if (item.presence === "undetermined") entries.undetermined += 1;
+    }
+    entries.topic = this.state.graph.topics.filter(shown).length;
+    entries.param = this.options.params ? this.state.graph.params.filter(shown).length : 0;
+    return { nodes: entries.node, topics: entries.topic, params: entries.param,
+             undetermined: entries.undetermined, drawn: this.cy.nodes().length };
   }
 }

@@ -4,13 +4,24 @@
 // built once (build) and every new state only updates marks, buttons and warnings (update):
 // what the user opened, typed or scrolled stays as it was.
 
+import { packageOf } from "./names.js";
+
 const OTHER = "<other>";
+const DEFAULT = /^<default: (.*)>$/s;
 
 const MARKS = {
   selected: ["✓", "(✓)"],
   deselected: ["✗", "(✗)"],
   unselected: ["·", "·"],
 };
+
+// How a value reads: "<default: $(find x)/a>" is the default's text, unevaluated; "<unset>"
+// an arg given no value.
+function valueText(value) {
+  const match = DEFAULT.exec(value);
+  if (match) return match[1];
+  return value === "<unset>" ? "(no value)" : value;
+}
 
 // A value feature naming a literal value (not <other>, not <default: TEXT>).
 function isLiteral(feature) {
@@ -26,15 +37,6 @@ function element(tag, attributes = {}, ...children) {
   }
   node.append(...children);
   return node;
-}
-
-// The ROS package of a file feature: the engine's field, else the directory above launch/.
-function packageOf(feature) {
-  if (feature.package) return feature.package;
-  const parts = feature.file.split("/");
-  const launch = parts.lastIndexOf("launch");
-  if (launch > 0) return parts[launch - 1];
-  return parts.length > 1 ? parts[parts.length - 2] : ".";
 }
 
 function fileLabel(id, pkg) {
@@ -70,7 +72,10 @@ export class FeatureTree {
     document.addEventListener("keydown", (event) => { if (event.key === "Escape") popup.hidden = true; });
   }
 
-  build(features) {
+  // defaults: arg id → the id of its default value.
+  build(features, defaults = {}) {
+    this.defaults = new Set(Object.values(defaults));
+    this.defaultOf = defaults;
     const children = new Map();
     for (const [id, feature] of Object.entries(features)) {
       const key = feature.parent ?? "";
@@ -112,13 +117,14 @@ export class FeatureTree {
   }
 
   argNode(id, feature, children) {
-    const hint = feature.default != null ? `default: ${feature.default}` : "";
+    const fallback = this.defaultOf[id];
+    const hint = fallback ? `default: ${valueText(fallback.slice(id.length + 1))}` : "";
     const values = element("ul", { class: "values" });
     const node = element("details", { class: "feature arg", "data-id": id },
       element("summary", { class: "row" },
         element("span", { class: "mark" }),
         element("span", { class: "name", title: id, text: feature.arg }),
-        element("span", { class: "hint", text: hint }),
+        element("span", { class: "hint", text: hint, title: hint }),
         chooseButtons()),
       values);
     for (const [valueId, value] of children.get(id) ?? []) {
@@ -128,12 +134,16 @@ export class FeatureTree {
     return node;
   }
 
+  // A value, whole (long ones wrap); the arg's default is badged, an unevaluated default
+  // reads as its text.
   valueNode(id, feature) {
-    const node = element("li", { class: "feature value", "data-id": id },
+    const isDefault = this.defaults.has(id);
+    const text = valueText(feature.value);
+    const node = element("li", { class: `feature value${isDefault ? " default" : ""}`, "data-id": id },
       element("div", { class: "row" },
         element("span", { class: "mark" }),
-        element("span", { class: "name", title: id }, element("code", { text: feature.value })),
-        element("span", { class: "hint", text: feature.default === true ? "default" : "" }),
+        element("span", { class: "name", title: isDefault ? `${text} (the default)` : text }, element("code", { text })),
+        isDefault ? element("span", { class: "badge default-badge", text: "default" }) : "",
         chooseButtons()));
     this.rows.set(id, node);
     return node;
