@@ -207,6 +207,14 @@ def graph_inputs(model: LaunchModel) -> set[ArgInput]:
     return {i for i in inputs | terms | predicate_inputs if i.file == model.file}
 
 
+def _set_by_value(model: LaunchModel) -> set[str]:
+    """Args whose every declaration gives a ``value=``: roslaunch refuses to override them
+    from the command line, so they are no features (as the paper's A leaves them out)."""
+    return {a.name for a in model.args if a.value is not None} - {
+        a.name for a in model.args if a.value is None
+    }
+
+
 def _value_text(slot: Slot, default_text: str | None) -> str:
     if slot is OTHER:
         return "<other>"
@@ -238,8 +246,9 @@ def extract(
         feature = FileFeature(label, model.file, space.file_atom(model.file, label))
         affecting = graph_inputs(model)
         declared = {a.name: a for a in model.args if a.input is not None}
+        fixed = _set_by_value(model)
         for name, input_ in model.inputs.items():
-            if input_ not in affecting:
+            if input_ not in affecting or name in fixed:
                 continue
             decl = declared.get(name)
             default = model.unset_defaults.get(name) or (decl.default if decl else None)

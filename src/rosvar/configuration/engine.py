@@ -280,7 +280,9 @@ class Configurator:
             raise ChoiceError(f"set expects FILE:ARG=VALUE, got {choice.feature!r}")
         values = self.catalog.values_of(feature.id)
         for entry, value in values:
-            if value.slot == choice.value:
+            # a known value, or the default's feature by its text (``<default: $(...)>``):
+            # choosing the default leaves the arg unset, never typed as a value
+            if value.slot == choice.value or (value.slot is UNSET and value.value == choice.value):
                 return _Effective(choice, frozenset({feature.id, entry.id}), entry.variable, True)
         for entry, value in values:
             if value.slot is OTHER:
