@@ -159,10 +159,24 @@ def test_conflict_certain_possible_gone(ws: LaunchWorkspace) -> None:
         "possible",
         "on",
     )
-    [conflict] = run(engine, "set a.launch:on=true").conflicts
-    assert conflict.status == "certain" and conflict.condition is None
+    [conflict] = run(engine, "select b.launch").conflicts
+    assert (conflict.status, conflict.condition) == ("possible", "on")
     assert run(engine, "set a.launch:on=false").conflicts == []
     assert run(engine, "deselect b.launch").conflicts == []
+    # certain once both files are there, but the solver deselects b.launch then: a clash
+    # with a file out of the product is not shown (the README's control.xml and teleop_only)
+    assert states(run(engine, "set a.launch:on=true"))["b.launch"] == "deselected*"
+    assert run(engine, "set a.launch:on=true").conflicts == []
+
+
+def test_a_certain_clash_is_certain_only_once_its_files_are_in(ws: LaunchWorkspace) -> None:
+    ws.launch("a.launch", '  <node pkg="p" type="t" name="n"/>\n  <node pkg="p" type="t" name="n"/>')
+    engine = configurator(ws)
+    [conflict] = run(engine).conflicts
+    assert (conflict.files, conflict.status) == (("a.launch", "a.launch"), "possible")
+    [conflict] = run(engine, "select a.launch").conflicts
+    assert conflict.status == "certain"
+    assert run(engine, "deselect a.launch").conflicts == []
 
 
 def test_configurations_are_counted_exactly_beyond_a_double(ws: LaunchWorkspace) -> None:

@@ -349,7 +349,7 @@ class Configurator:
             choices=list(replay.accepted),
             refused=list(replay.refused),
             features=features,
-            conflicts=[c for c in view.conflicts if c is not None],
+            conflicts=self.conflicts.shown(view.conflicts, decisions),
             graph=view.graph,
             complete=complete,
             command=command,
