@@ -170,7 +170,7 @@ def test_conflict_certain_possible_gone(ws: LaunchWorkspace) -> None:
 
 
 def test_a_certain_clash_is_certain_only_once_its_files_are_in(ws: LaunchWorkspace) -> None:
-    ws.launch("a.launch", '  <node pkg="p" type="t" name="n"/>\n  <node pkg="p" type="t" name="n"/>')
+    ws.launch("a.launch", '  <node pkg="p" type="t" name="n"/>\n' * 2)
     engine = configurator(ws)
     [conflict] = run(engine).conflicts
     assert (conflict.files, conflict.status) == (("a.launch", "a.launch"), "possible")

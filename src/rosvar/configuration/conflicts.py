@@ -4,8 +4,9 @@ A clash is judged on the feature tree and the *requires* constraints only (the e
 constraints say the clash must not happen, so they would hide it): ``S = tree ∧ requires
 ∧ user literals``. It is gone when no configuration of ``S`` has both files and the clash
 condition, certain when every configuration of ``S`` with both files has it, and possible
-otherwise, with its condition simplified under the choices. What a user is shown (:meth:`Conflicts.shown`) is
-about the product: no clash of a file out of it, and none certain before both files are in.
+otherwise, with its condition simplified under the choices. What a user is shown
+(:meth:`Conflicts.shown`) is about the product: no clash of a file out of it, and none certain
+before both files are in.
 """
 
 from __future__ import annotations
