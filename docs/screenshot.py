@@ -62,7 +62,7 @@ def main() -> None:
     parser.add_argument("--out", default=str(DOCS / "web-ui.png"))
     options = parser.parse_args()
     analysis = Analysis(discover(options.paths))
-    server = make_server(Configurator(analysis, extract(analysis)), port=0)
+    server = make_server(Configurator(analysis, extract(analysis, products=True)), port=0)
     threading.Thread(target=server.serve_forever, daemon=True).start()
     try:
         with sync_playwright() as playwright:

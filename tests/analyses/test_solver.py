@@ -87,6 +87,19 @@ def test_count_by_hand_for_two_files(ws: LaunchWorkspace) -> None:
     assert brute_force_count(model) == 11
 
 
+def test_in_products_an_included_file_takes_its_args_from_the_include(
+    ws: LaunchWorkspace,
+) -> None:
+    """As above, but a requires b with b's args at their defaults (``products``): "a on,
+    b on, mode=<other>" goes too (2 robot x 3 use_x = 6 -> 9), then the clash as above
+    (2 robot x 1 x 1 mode = 2 -> 7)."""
+    two_files(ws)
+    model = extract(ws.analysis(), products=True)
+    assert count_configurations(model) == brute_force_count(model) == 7
+    [requires] = model.requires
+    assert requires.text.endswith("which takes no args from the command line then")
+
+
 @pytest.mark.parametrize("extra_if", ["", ' if="$(arg flag)"'])
 def test_count_equals_brute_force(ws: LaunchWorkspace, extra_if: str) -> None:
     ws.launch(

@@ -122,7 +122,7 @@ def test_a_step_runs_without_the_collector_and_restores_it(
         if phase == "start":
             started.append(info["generation"])
 
-    chosen = choices("set main.launch:cam=true", "set camera.launch:fps=60")
+    chosen = choices("set main.launch:cam=true", "set main.launch:robot=husky")
     threshold = gc.get_threshold()
     gc.collect()
     gc.callbacks.append(record)
@@ -137,6 +137,27 @@ def test_a_step_runs_without_the_collector_and_restores_it(
         gc.set_threshold(*threshold)
         gc.callbacks.remove(record)
     assert started and not state.refused and len(state.choices) == 2
+
+
+def test_an_included_file_takes_no_args_from_the_command_line(engine: Configurator) -> None:
+    """main.launch includes camera.launch without passing ``fps``: in that product fps is
+    its default, derived, and setting it is refused with the include as the reason (it
+    would change nothing: the command cannot give it)."""
+    found = states(run(engine, "set main.launch:cam=true"))
+    assert found["camera.launch:fps=30"] == "selected*"
+    for words in (
+        ["set main.launch:cam=true", "set camera.launch:fps=60"],
+        ["set camera.launch:fps=60", "set main.launch:cam=true"],
+    ):
+        state = run(engine, *words)
+        [refusal] = state.refused
+        assert refusal.choice == choices(words[1])[0]
+        assert "main.launch includes pkg/launch/camera.launch" in refusal.reason
+        assert "no args from the command line" in refusal.reason
+    alone = run(engine, "set camera.launch:fps=60", "deselect main.launch")
+    chosen = alone.choices
+    alone = engine.state(chosen + engine.completion(chosen))
+    assert alone.command is not None and "fps:=60" in alone.command
 
 
 def test_completion_reaches_a_complete_product(engine: Configurator) -> None:

@@ -114,7 +114,7 @@ def _same_as_resolve(
 
 def test_complete_products_of_the_example_equal_resolve() -> None:
     analysis = Analysis(discover([REPO / "examples"], ros_package_path=""))
-    engine = Configurator(analysis, extract(analysis))
+    engine = Configurator(analysis, extract(analysis, products=True))
     _same_as_resolve(engine, analysis, seed=1, products=12, loading=8)
 
 
@@ -122,7 +122,7 @@ def test_complete_products_of_lizi_equal_resolve() -> None:
     if not (CORPUS / "lizi").is_dir():
         pytest.skip(f"corpus not found at {CORPUS}")
     analysis = Analysis(discover([CORPUS / "lizi"], ros_package_path=str(CORPUS / "_external")))
-    engine = Configurator(analysis, extract(analysis))
+    engine = Configurator(analysis, extract(analysis, products=True))
     # most of Lizi's products fail in roslaunch (packages missing from the corpus, a
     # realsense include with unused args): they must fail for the engine too
     _same_as_resolve(engine, analysis, seed=1, products=5, loading=1)

@@ -109,6 +109,7 @@ class FeatureModel:
     declarations: Mapping[tuple[str, str], list[Occurrence]]  # by (kind, resolved name)
     launch_models: list[LaunchModel]
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    products: bool = False  # built for the configuration engine (``extract``'s ``products``)
     solution: Solver | ModelTooLarge = field(init=False)
 
     @property
@@ -207,6 +208,20 @@ def graph_inputs(model: LaunchModel) -> set[ArgInput]:
     return {i for i in inputs | terms | predicate_inputs if i.file == model.file}
 
 
+def _given_by_include(space: ConditionSpace, target: FileFeature) -> BDD:
+    """The included file's args at their defaults (as when not given on the command line;
+    ``<default: …>`` where the default is a substitution): a file loaded by an include takes
+    its args from the include, so in a product that includes it its own args are not free
+    (a required arg, without a default, is left alone)."""
+    unset = space.true
+    for arg in target.args:
+        defaults = sorted((v.slot is not UNSET, v.id) for v in arg.values if v.default)
+        if defaults:
+            by_id = {v.id: v for v in arg.values}
+            unset &= by_id[defaults[0][1]].variable
+    return unset
+
+
 def _set_by_value(model: LaunchModel) -> set[str]:
     """Args whose every declaration gives a ``value=``: roslaunch refuses to override them
     from the command line, so they are no features (as the paper's A leaves them out)."""
@@ -228,8 +243,15 @@ def extract(
     analysis: Analysis,
     files: Sequence[str] | None = None,
     progress: Callable[[int, int, str], None] | None = None,
+    *,
+    products: bool = False,
 ) -> FeatureModel:
-    """Algorithm 1 over ``files`` (default: every launch file of the workspace)."""
+    """Algorithm 1 over ``files`` (default: every launch file of the workspace).
+
+    ``products``: the model of the products the configuration engine builds, where a file
+    loaded by an include takes its args from the include, so its own are at their defaults
+    (:func:`_given_by_include`); the paper's model leaves them free.
+    """
     space = analysis.space
     chosen = list(files if files is not None else analysis.workspace.launch_files)
     models: list[LaunchModel] = []
@@ -290,20 +312,26 @@ def extract(
                 if target_feature is None:
                     continue
                 when = include.condition & condition
+                unset = _given_by_include(space, target_feature) if products else space.true
                 requires.append(
                     Constraint(
                         "requires",
                         (source.id, target_feature.id),
-                        ~(source.variable & when) | target_feature.variable,
+                        ~(source.variable & when) | (target_feature.variable & unset),
                         when,
-                        f"{source.id} includes {target_feature.id}",
+                        f"{source.id} includes {target_feature.id}"
+                        + (
+                            ", which takes no args from the command line then"
+                            if unset != space.true
+                            else ""
+                        ),
                         (include.location,),
                         space.valid_implies(when),
                     )
                 )
     buckets = index(models)
     feature_model = FeatureModel(
-        space, features, requires, buckets, models, _unknown_values(features)
+        space, features, requires, buckets, models, _unknown_values(features), products
     )
     try:
         _check_links(buckets, len(features))

@@ -137,6 +137,9 @@ class Configurator:
         env: Mapping[str, str] | None = None,
         spelling: Mapping[str, str] | None = None,
     ) -> None:
+        """``model`` from ``extract(analysis, products=True)``."""
+        if not model.products:
+            raise ValueError("the configurator needs extract(..., products=True)")
         self._build(analysis, model, env, spelling)
 
     @collector_paused()  # a long-lived heap: left young, the collector rescanned it each step

@@ -219,7 +219,9 @@ def cmd_configure(options: argparse.Namespace) -> int:
     analysis, env = loaded
     try:
         choices = [UserChoice.parse(action, text) for action, text in options.choices]
-        configurator = Configurator(analysis, extract(analysis, progress=_progress), env)
+        configurator = Configurator(
+            analysis, extract(analysis, progress=_progress, products=True), env
+        )
         if options.finish:
             choices += configurator.completion(choices)
         state = configurator.state(choices)
@@ -303,7 +305,7 @@ def cmd_serve(options: argparse.Namespace) -> int:
     started = time.perf_counter()
     files = len(analysis.workspace.launch_files)
     print(f"rosvar: analysing {files} launch files ...", file=sys.stderr, flush=True)
-    model = extract(analysis, progress=_progress)
+    model = extract(analysis, progress=_progress, products=True)
     print("rosvar: building the configuration engine ...", file=sys.stderr, flush=True)
     configurator = Configurator(analysis, model, env)
     try:
