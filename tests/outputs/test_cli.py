@@ -132,6 +132,21 @@ def test_resolve_ok(workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[st
     )
     assert code == EXIT_OK
     assert out.splitlines() == ["node  /planner  (pkg/planner_node)", "param /home = '/home/robot'"]
+    assert "warning" not in _err
+
+
+def test_resolve_warns_of_an_arg_no_file_reads(
+    workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """roslaunch ignores it silently: the output is that of no such arg, and stderr says so."""
+    file = good_file(workspace)
+    plain = run(capsys, "resolve", str(workspace.root), "--launch", file)
+    code, out, err = run(
+        capsys, "resolve", str(workspace.root), "use_telop:=false", "--launch", file
+    )
+    assert (code, out) == plain[:2]
+    assert "no launched file has an arg 'use_telop'" in err
+    assert "did you mean 'use_teleop'?" in err and "(args: two, use_teleop)" in err
 
 
 def test_resolve_conflict_and_error_exit_1(

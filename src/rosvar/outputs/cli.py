@@ -9,12 +9,13 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import difflib
 import gc
 import json
 import os
 import sys
 import time
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 from rosvar import __version__
 from rosvar.analyses.features import ModelTooLarge, extract
@@ -109,6 +110,7 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         extra_values={k: [v] for k, v in args.items()},
         env_values={k: [v] for k, v in env.items()},
     )
+    _warn_unknown_args(analysis, files, args)
     result = resolve(analysis, files, args, env)
     document = result.to_json()
     if options.json:
@@ -124,6 +126,21 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         for error in result.errors:
             print(f"error: {error.location}: {error.message}")
     return EXIT_OK if result.ok else EXIT_FAILS
+
+
+def _warn_unknown_args(analysis: Analysis, files: Sequence[str], args: Mapping[str, str]) -> None:
+    """A ``name:=value`` that no launched file reads is ignored (by roslaunch too): say so,
+    a misspelt name would otherwise go unnoticed."""
+    known = sorted({name for file in files for name in analysis.model(file).inputs})
+    for name in args:
+        if name not in known:
+            near = difflib.get_close_matches(name, known, n=1)
+            hint = f"; did you mean '{near[0]}'?" if near else ""
+            print(
+                f"rosvar: warning: no launched file has an arg '{name}'; it is ignored{hint} "
+                f"(args: {', '.join(known) or 'none'})",
+                file=sys.stderr,
+            )
 
 
 def _launch_files(launches: Sequence[Sequence[str]], workspace: Workspace) -> list[str] | None:
