@@ -401,3 +401,73 @@ def test_a_model_too_large_to_solve(
         code, _out, err = run(capsys, *argv)
         assert code == EXIT_TOO_LARGE
         assert err.startswith("rosvar: the feature model is too large to solve: ")
+
+
+# -- readable summaries -------------------------------------------------------------------------
+REPO = Path(__file__).resolve().parents[2]
+
+
+def test_metrics_table_has_a_row_per_path_as_in_json(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    ws.launch("robot.launch", ROBOT)
+    examples = str(REPO / "examples")
+    rows = {}
+    for path in (examples, str(ws.root)):
+        code, out, _err = run(capsys, "metrics", path, "--json")
+        rows[path] = json.loads(out)
+    code, out, _err = run(capsys, "metrics", examples, str(ws.root))
+    assert code == EXIT_OK
+    header, *lines = out.splitlines()
+    assert header.split() == ["system", *rows[examples]]
+    for path, line in zip(rows, lines, strict=False):
+        assert line.split() == [path, *map(str, rows[path].values())]
+    assert "LF launch files" in out and "docs/features.md#metrics" in out
+    code, out, _err = run(capsys, "metrics", examples, str(ws.root), "--json")
+    assert json.loads(out) == rows
+
+
+def test_counts_for_people_are_short_and_json_exact(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """30 independent Boolean args (three values each) and a file: over 10^14 configurations."""
+    ws.launch(
+        "many.launch",
+        "".join(
+            f'  <arg name="a{n}" default="true"/>\n  <node pkg="p" type="t" name="n{n}" '
+            f'if="$(arg a{n})"/>\n'
+            for n in range(30)
+        )
+        + '  <arg name="port"/>\n  <param name="port" value="$(arg port)"/>\n',
+    )
+    _code, out, _err = run(capsys, "features", str(ws.root), "--format", "json")
+    exact = json.loads(out)["configurations"]
+    exponent = len(str(exact)) - 1
+    superscript = str(exponent).translate(str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹"))
+    _code, out, err = run(capsys, "features", str(ws.root))
+    shown = f"  ≈ {round(exact / 10**exponent, 1)} × 10{superscript} valid configurations"
+    assert exponent > 9 and out.splitlines()[3] == shown
+    assert "1 note [values-unknown]" in out and "[values-unknown]" in err
+    assert "arg 'port'" in err and "arg 'port'" not in out
+
+
+def test_analyze_marks_a_cut_path(ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]) -> None:
+    path = ws.launch("a" * 70 + ".launch", '  <node pkg="p" type="t" name="n"/>')
+    _code, out, _err = run(capsys, "analyze", str(ws.root))
+    [row] = [line for line in out.splitlines() if ".launch" in line]
+    shown = row.split()[0]
+    assert shown.startswith("…") and os.path.relpath(path).endswith(shown[1:])
+
+
+def test_configure_summarises_a_clash_of_many_params(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    params = "".join(f'<param name="p{n}" value="1"/>' for n in range(12))
+    for name in ("a.launch", "b.launch"):
+        ws.launch(name, f'  <node pkg="p" type="t" name="n">{params}</node>')
+    _code, out, _err = run(capsys, "configure", str(ws.root), "--json")
+    [conflict] = json.loads(out)["conflicts"]
+    assert len(conflict["names"]) == 13
+    _code, out, _err = run(capsys, "configure", str(ws.root))
+    [line] = [line for line in out.splitlines() if line.startswith("conflict")]
+    assert line.endswith(": node /n, param /n/p0, param /n/p1 and 10 params")

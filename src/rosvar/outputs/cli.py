@@ -25,7 +25,7 @@ from rosvar.configuration.choices import ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.diagnostics import Severity
 from rosvar.interpreter.analysis import Analysis
-from rosvar.outputs.describe import describe_model
+from rosvar.outputs.describe import count_text, describe_model
 from rosvar.outputs.exports import WRITERS, write
 from rosvar.outputs.web.server import make_server
 from rosvar.ros.names import command_line_mappings
@@ -75,8 +75,10 @@ def cmd_analyze(options: argparse.Namespace) -> int:
     print(f"{'file':<60} {'args':>5} {'nodes':>6} {'params':>7} {'errors':>7}")
     for model in models:
         name = os.path.relpath(model.file, cwd)
+        if len(name) > 60:  # its tail, marked: the file names differ at the end
+            name = "…" + name[-59:]
         print(
-            f"{name[-60:]:<60} {len(model.inputs):>5} {len(model.nodes):>6} "
+            f"{name:<60} {len(model.inputs):>5} {len(model.nodes):>6} "
             f"{len(model.params):>7} {len(model.errors):>7}"
         )
     errors = [d for d in diagnostics if d.severity is Severity.ERROR]
@@ -179,8 +181,12 @@ def _environment(items: Sequence[str]) -> dict[str, str] | None:
     return env
 
 
-def _analysis(options: argparse.Namespace, env: dict[str, str] | None = None) -> Analysis | None:
-    workspace = _workspace(options.paths)
+def _analysis(
+    options: argparse.Namespace,
+    env: dict[str, str] | None = None,
+    paths: Sequence[str] | None = None,
+) -> Analysis | None:
+    workspace = _workspace(options.paths if paths is None else paths)
     if not workspace.launch_files:
         print("rosvar: no launch files found", file=sys.stderr)
         return None
@@ -208,6 +214,10 @@ def cmd_features(options: argparse.Namespace) -> int:
         return EXIT_INPUT
     model = extract(analysis, progress=_progress)
     text = write(model, options.format)
+    if options.format == "text":  # the text summarises its notes: they are listed here
+        for diagnostic in model.diagnostics:
+            if diagnostic.severity is Severity.NOTE:
+                print(diagnostic, file=sys.stderr)
     if options.output:
         with open(options.output, "w", encoding="utf-8") as handle:
             handle.write(text)
@@ -216,16 +226,33 @@ def cmd_features(options: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+METRICS_LEGEND = (
+    "LF launch files: LV in no conflict, LC in a potential one (LC_U: an unconditional one, "
+    "LC_A: all depend on args)\n"
+    "A args a user can set: ACG those affecting the computation graph, AS those of them with "
+    "non-Boolean values (AS_D: with a default, AS_V: with values inferred besides it)\n"
+    "IF if/unless decided by ACG args (IF_M: the most by one arg); see docs/features.md#metrics"
+)
+
+
 def cmd_metrics(options: argparse.Namespace) -> int:
-    analysis = _analysis(options)
-    if analysis is None:
-        return EXIT_INPUT
-    model = extract(analysis, progress=_progress)
-    metrics = compute(analysis, model).to_json()
+    """One row per PATH: each is a system, analysed on its own (dependencies come from
+    ``ROS_PACKAGE_PATH``, not from the other PATHs)."""
+    rows: dict[str, dict[str, int]] = {}
+    for path in options.paths:
+        analysis = _analysis(options, paths=[path])
+        if analysis is None:
+            return EXIT_INPUT
+        rows[path] = compute(analysis, extract(analysis, progress=_progress)).to_json()
     if options.json:
-        _print_json(metrics)
-    else:
-        print("  ".join(f"{key}={value}" for key, value in metrics.items()))
+        _print_json(next(iter(rows.values())) if len(rows) == 1 else rows)
+        return EXIT_OK
+    keys = list(next(iter(rows.values())))
+    width = max(len("system"), *(len(path) for path in rows))
+    print(f"{'system':<{width}}" + "".join(f" {key:>5}" for key in keys))
+    for path, metrics in rows.items():
+        print(f"{path:<{width}}" + "".join(f" {metrics[key]:>5}" for key in keys))
+    print(f"\n{METRICS_LEGEND}")
     return EXIT_OK
 
 
@@ -258,7 +285,7 @@ def _print_state(state: ConfigurationState) -> None:
     files = [(k, f) for k, f in state.features.items() if f.kind == "file"]
     print(
         f"{len(state.features) - state.unselected} of {len(state.features)} features decided, "
-        f"{state.unselected} unselected; {state.configurations} valid configurations"
+        f"{state.unselected} unselected; {count_text(state.configurations)} valid configurations"
     )
     for refusal in state.refused:
         print(f"refused: {refusal.reason}")
@@ -275,7 +302,7 @@ def _print_state(state: ConfigurationState) -> None:
         when = f", when {conflict.condition}" if conflict.condition else ""
         print(
             f"conflict ({conflict.status}): {' and '.join(conflict.files)}: "
-            f"{', '.join(conflict.names)}{when}"
+            f"{_clashing(conflict.names)}{when}"
         )
     if state.complete:
         print(
@@ -297,6 +324,19 @@ def _print_state(state: ConfigurationState) -> None:
 
 
 PRESENCES = ("present", "absent", "undetermined")
+SHOWN_NAMES = 3
+
+
+def _clashing(names: Sequence[str]) -> str:
+    """``node /x, param /x/a and 41 params``: the nodes and a few params (a clash of two
+    moveit configurations lists hundreds of params; --json has them all)."""
+    nodes = [n for n in names if n.startswith("node ")]
+    params = [n for n in names if not n.startswith("node ")]
+    shown = nodes + params[: max(0, SHOWN_NAMES - len(nodes))]
+    left = len(names) - len(shown)
+    if not left:
+        return ", ".join(shown)
+    return f"{', '.join(shown)} and {left} param{'s' if left > 1 else ''}"
 
 
 class _Choice(argparse.Action):
