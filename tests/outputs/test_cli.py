@@ -6,8 +6,10 @@ Exit codes (``rosvar.outputs.cli``): 0 success, 1 the configuration fails (error
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
+import shlex
 import signal
 import subprocess
 import sys
@@ -19,7 +21,15 @@ import pytest
 
 import rosvar
 from rosvar.analyses import features
-from rosvar.outputs.cli import EXIT_FAILS, EXIT_INPUT, EXIT_OK, EXIT_TOO_LARGE, EXIT_USAGE, main
+from rosvar.outputs.cli import (
+    EXIT_FAILS,
+    EXIT_INPUT,
+    EXIT_OK,
+    EXIT_TOO_LARGE,
+    EXIT_USAGE,
+    main,
+    parser,
+)
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -471,3 +481,17 @@ def test_configure_summarises_a_clash_of_many_params(
     _code, out, _err = run(capsys, "configure", str(ws.root))
     [line] = [line for line in out.splitlines() if line.startswith("conflict")]
     assert line.endswith(": node /n, param /n/p0, param /n/p1 and 10 params")
+
+
+def test_every_option_is_described_with_an_example_that_parses() -> None:
+    top = parser()
+    [commands] = [a for a in top._actions if isinstance(a, argparse._SubParsersAction)]
+    for name, command in commands.choices.items():
+        for action in command._actions:
+            assert action.help, f"{name} {action.dest}"
+        assert command.epilog and "docs/cli.md" in command.epilog
+        example = command.epilog.split("example:\n")[1].split("\n\n")[0]
+        for line in example.replace("\\\n", " ").splitlines():
+            words = shlex.split(line.split("|")[0])
+            assert words[:2] == ["rosvar", name]
+            top.parse_known_args(words[1:])  # exits (SystemExit) on a usage error

@@ -377,22 +377,68 @@ def cmd_serve(options: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+PATHS_HELP = (
+    "folders to search for ROS packages and launch files (a workspace, a system's folder); "
+    "packages on ROS_PACKAGE_PATH are found too"
+)
+ENV_HELP = (
+    "an environment variable of the configuration (repeatable); variables not given are "
+    "unset: rosvar never reads its own environment for them"
+)
+HINTS_HELP = "YAML file with arg and env values analysis cannot infer (docs/hints.md)"
+EXAMPLES = {
+    "analyze": "rosvar analyze examples\n  rosvar analyze examples --json | jq '.files[0].nodes'",
+    "resolve": (
+        "rosvar resolve examples robot:=husky --launch examples/example/launch/mapping.launch\n"
+        "  rosvar resolve examples --launch example mapping.launch --env ROBOT_HOME=/home/r"
+    ),
+    "features": (
+        "rosvar features examples\n  rosvar features examples --format uvl -o example.uvl"
+    ),
+    "metrics": "rosvar metrics ../shared/corpus/kobuki ../shared/corpus/lizi",
+    "configure": (
+        "rosvar configure examples --select examples/example/launch/robot.launch \\\n"
+        "      --set examples/example/launch/robot.launch:model=husky --finish"
+    ),
+    "serve": "rosvar serve examples ../shared/corpus/lizi --port 8080",
+}
+
+
+def _command(
+    commands: argparse._SubParsersAction[argparse.ArgumentParser], name: str, help_: str
+) -> argparse.ArgumentParser:
+    """A sub-command with its help, an example and the pointer to the docs."""
+    return commands.add_parser(
+        name,
+        help=help_,
+        description=help_[0].upper() + help_[1:] + ".",
+        epilog=f"example:\n  {EXAMPLES[name]}\n\nAll commands and options: docs/cli.md",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+
+
 def parser() -> argparse.ArgumentParser:
     top = argparse.ArgumentParser(
         prog="rosvar",
         description="Variability analysis of ROS launch files: all configurations at once.",
+        epilog="example:\n  rosvar analyze examples\n\n"
+        "'rosvar COMMAND --help' describes a command; all of them: docs/cli.md",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     top.add_argument("--version", action="version", version=f"rosvar {__version__}")
-    commands = top.add_subparsers(dest="command", required=True)
-    analyze = commands.add_parser("analyze", help="interpret every launch file below PATH")
-    analyze.add_argument("paths", nargs="+", metavar="PATH")
-    analyze.add_argument("--json", action="store_true", help="machine-readable output")
-    analyze.set_defaults(run=cmd_analyze)
-    res = commands.add_parser(
-        "resolve", help="one concrete configuration, as roslaunch would load it"
+    commands = top.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    analyze = _command(commands, "analyze", "interpret every launch file below PATH")
+    analyze.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
+    analyze.add_argument(
+        "--json", action="store_true", help="the whole model as JSON (docs/json-schema.md)"
     )
+    analyze.set_defaults(run=cmd_analyze)
+    res = _command(commands, "resolve", "one concrete configuration, as roslaunch would load it")
     res.add_argument(
-        "paths", nargs="*", metavar="PATH", help="package roots (and name:=value args)"
+        "paths",
+        nargs="*",
+        metavar="PATH",
+        help=PATHS_HELP + "; name:=value words (the args, as for roslaunch) may stand anywhere",
     )
     res.add_argument(
         "--launch",
@@ -400,47 +446,72 @@ def parser() -> argparse.ArgumentParser:
         nargs="+",
         required=True,
         metavar=("FILE|PKG", "FILE"),
-        help="a launch file, or a package and a file name in it (as roslaunch takes them)",
+        help="a launch file, or a package and a file name in it (as roslaunch takes them); "
+        "repeatable: several files share one command line",
     )
-    res.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
-    res.add_argument("--json", action="store_true")
+    res.add_argument("--env", action="append", default=[], metavar="NAME=VALUE", help=ENV_HELP)
+    res.add_argument(
+        "--json", action="store_true", help="nodes, params, conflicts and errors as JSON"
+    )
     res.set_defaults(run=cmd_resolve)
-    features = commands.add_parser("features", help="the feature model (paper Algorithm 1)")
-    features.add_argument("paths", nargs="+", metavar="PATH")
-    features.add_argument("--hints", metavar="FILE", help="YAML with extra values (docs/hints.md)")
-    features.add_argument("--format", choices=sorted(WRITERS), default="text")
-    features.add_argument("-o", "--output", metavar="FILE")
-    features.set_defaults(run=cmd_features)
-    metrics = commands.add_parser("metrics", help="the paper's Table I and II metrics")
-    metrics.add_argument("paths", nargs="+", metavar="PATH")
-    metrics.add_argument("--hints", metavar="FILE")
-    metrics.add_argument("--json", action="store_true")
-    metrics.set_defaults(run=cmd_metrics)
-    configure = commands.add_parser(
-        "configure", help="one step of a configuration: the state after the given choices"
+    features = _command(commands, "features", "the feature model (paper Algorithm 1)")
+    features.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
+    features.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
+    features.add_argument(
+        "--format",
+        choices=sorted(WRITERS),
+        default="text",
+        help="text (default; its notes go to stderr), json, uvl, featureide or dot",
     )
-    configure.add_argument("paths", nargs="+", metavar="PATH")
-    for action, metavar in (
-        ("select", "FEATURE"),
-        ("deselect", "FEATURE"),
-        ("unselect", "FEATURE"),
-        ("set", "FILE:ARG=VALUE"),
-    ):
+    features.add_argument("-o", "--output", metavar="FILE", help="write to FILE, not stdout")
+    features.set_defaults(run=cmd_features)
+    metrics = _command(commands, "metrics", "the paper's Table I and II metrics")
+    metrics.add_argument("paths", nargs="+", metavar="PATH", help="one system per PATH: a row each")
+    metrics.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
+    metrics.add_argument(
+        "--json", action="store_true", help="the metrics as JSON (keyed by PATH when several)"
+    )
+    metrics.set_defaults(run=cmd_metrics)
+    configure = _command(
+        commands, "configure", "one step of a configuration: the state after the given choices"
+    )
+    configure.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
+    for action, metavar, help_ in (
+        ("select", "FEATURE", "put a file, arg or value in the product (FILE, FILE:ARG, "
+         "FILE:ARG=VALUE; FILE as a path or as 'rosvar features' prints it)"),
+        ("deselect", "FEATURE", "keep the feature out of the product"),
+        ("unselect", "FEATURE", "take back the earlier choice on the feature"),
+        ("set", "FILE:ARG=VALUE", "give an arg a value (any text: an unknown one is the "
+         "arg's <other> value)"),
+    ):  # fmt: skip
         configure.add_argument(
-            f"--{action}", dest="choices", action=_Choice, const=action, metavar=metavar
+            f"--{action}",
+            dest="choices",
+            action=_Choice,
+            const=action,
+            metavar=metavar,
+            help=help_ + "; repeatable, applied in order",
         )
     configure.set_defaults(choices=[])
-    configure.add_argument("--finish", action="store_true", help="finish with defaults")
-    configure.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
-    configure.add_argument("--hints", metavar="FILE")
-    configure.add_argument("--json", action="store_true")
+    configure.add_argument(
+        "--finish",
+        action="store_true",
+        help="finish with defaults: open args at their default, open files deselected",
+    )
+    configure.add_argument(
+        "--env", action="append", default=[], metavar="NAME=VALUE", help=ENV_HELP
+    )
+    configure.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
+    configure.add_argument(
+        "--json", action="store_true", help="the whole state as JSON (docs/configure.md)"
+    )
     configure.set_defaults(run=cmd_configure)
-    serve = commands.add_parser("serve", help="configure step by step in the browser")
-    serve.add_argument("paths", nargs="+", metavar="PATH")
+    serve = _command(commands, "serve", "configure step by step in the browser")
+    serve.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
     serve.add_argument("--host", default="127.0.0.1", help="address to bind (default: loopback)")
     serve.add_argument("--port", type=int, default=8080, help="port (0: any free one)")
-    serve.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
-    serve.add_argument("--hints", metavar="FILE")
+    serve.add_argument("--env", action="append", default=[], metavar="NAME=VALUE", help=ENV_HELP)
+    serve.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
     serve.set_defaults(run=cmd_serve)
     return top
 
