@@ -16,6 +16,7 @@ import os
 import sys
 import time
 from collections.abc import Mapping, Sequence
+from dataclasses import replace
 
 from rosvar import __version__
 from rosvar.analyses.features import ModelTooLarge, extract
@@ -23,7 +24,7 @@ from rosvar.analyses.metrics import compute
 from rosvar.analyses.resolve import resolve
 from rosvar.configuration.choices import ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
-from rosvar.diagnostics import Severity
+from rosvar.diagnostics import Location, Severity
 from rosvar.interpreter.analysis import Analysis
 from rosvar.outputs.describe import count_text, describe_model
 from rosvar.outputs.exports import WRITERS, write
@@ -84,7 +85,7 @@ def cmd_analyze(options: argparse.Namespace) -> int:
     errors = [d for d in diagnostics if d.severity is Severity.ERROR]
     print(f"\n{len(diagnostics)} diagnostics ({len(errors)} errors)")
     for diagnostic in diagnostics[:20]:
-        print(f"  {diagnostic}")
+        print(f"  {replace(diagnostic, location=_relative(diagnostic.location))}")
     if len(diagnostics) > 20:
         print(f"  ... {len(diagnostics) - 20} more (use --json)")
     return EXIT_OK
@@ -123,11 +124,20 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         for name, value in document["params"].items():  # type: ignore[attr-defined]
             print(f"param {name} = {value!r}")
         for conflict in result.conflicts:
-            where = ", ".join(str(loc) for loc in conflict.locations)
+            where = ", ".join(_where(loc) for loc in conflict.locations)
             print(f"conflict: {conflict.kind} {conflict.name} at {where}")
         for error in result.errors:
-            print(f"error: {error.location}: {error.message}")
+            print(f"error: {_where(error.location)}: {error.message}")
     return EXIT_OK if result.ok else EXIT_FAILS
+
+
+def _relative(location: Location) -> Location:
+    """``location`` with its file relative to the current directory, as the tables show it."""
+    return replace(location, file=os.path.relpath(location.file))
+
+
+def _where(location: Location) -> str:
+    return str(_relative(location))
 
 
 def _warn_unknown_args(analysis: Analysis, files: Sequence[str], args: Mapping[str, str]) -> None:
