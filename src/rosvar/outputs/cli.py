@@ -70,12 +70,11 @@ def cmd_analyze(options: argparse.Namespace) -> int:
     if options.json:
         _print_json({"files": [describe_model(m) for m in models]})
         return EXIT_OK
-    cwd = os.getcwd()
     diagnostics = [d for m in models for d in m.diagnostics]
     print(f"{len(models)} launch files, {len(workspace.packages)} packages")
     print(f"{'file':<60} {'args':>5} {'nodes':>6} {'params':>7} {'errors':>7}")
     for model in models:
-        name = os.path.relpath(model.file, cwd)
+        name = _shown(model.file)
         if len(name) > 60:  # its tail, marked: the file names differ at the end
             name = "…" + name[-59:]
         print(
@@ -131,9 +130,17 @@ def cmd_resolve(options: argparse.Namespace) -> int:
     return EXIT_OK if result.ok else EXIT_FAILS
 
 
+def _shown(path: str) -> str:
+    """A path for people: relative to the current directory, unless the absolute one is
+    shorter (a file far from it)."""
+    relative = os.path.relpath(path)
+    absolute = os.path.abspath(path)
+    return relative if len(relative) <= len(absolute) else absolute
+
+
 def _relative(location: Location) -> Location:
-    """``location`` with its file relative to the current directory, as the tables show it."""
-    return replace(location, file=os.path.relpath(location.file))
+    """``location`` with its file as :func:`_shown` spells it."""
+    return replace(location, file=_shown(location.file))
 
 
 def _where(location: Location) -> str:
