@@ -329,7 +329,7 @@ def measure_web(job: Job) -> Metrics:
     server = None
     try:
         analysis = Analysis(discover(job.roots, ros_package_path=job.package_path))
-        server = make_server(Configurator(analysis, extract(analysis)), port=0)
+        server = make_server(Configurator(analysis, extract(analysis, products=True)), port=0)
         threading.Thread(target=server.serve_forever, daemon=True).start()
         connection = http.client.HTTPConnection("127.0.0.1", server.server_address[1])
 
@@ -408,7 +408,7 @@ def measure_configure(job: Job) -> Metrics:
     try:
         analysis = Analysis(discover(job.roots, ros_package_path=job.package_path))
         started = time.perf_counter()
-        engine = Configurator(analysis, extract(analysis))
+        engine = Configurator(analysis, extract(analysis, products=True))
         built_ms = (time.perf_counter() - started) * 1000
         rng = random.Random(CONFIGURE_SEED)
         for _sequence in range(CONFIGURE_SEQUENCES):

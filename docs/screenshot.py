@@ -66,7 +66,7 @@ def main() -> None:
         [str(options.corpus / "husky")], ros_package_path=str(options.corpus / "_external")
     )
     analysis = Analysis(workspace)
-    server = make_server(Configurator(analysis, extract(analysis)), port=0)
+    server = make_server(Configurator(analysis, extract(analysis, products=True)), port=0)
     threading.Thread(target=server.serve_forever, daemon=True).start()
     try:
         with sync_playwright() as playwright:

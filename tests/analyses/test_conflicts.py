@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import os
 import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from rosvar.analyses.conflicts import Occurrence, clashes, declared_occurrences, index
 from rosvar.analyses.feature_model.extraction import extract
+from rosvar.analyses.resolve import resolve
 from rosvar.diagnostics import Location
 from rosvar.logic.conditions import ConditionSpace
 
@@ -130,3 +132,20 @@ def test_twenty_files_one_shared_name(ws: LaunchWorkspace) -> None:
     assert len(model.clashes) == 20 * 19 // 2
     assert {c.name for c in model.clashes} == {"/shared"}
     assert len([c for c in model.constraints if c.kind == "excludes"]) == 190
+
+
+def test_anonymous_names_of_two_entry_files_never_clash(ws: LaunchWorkspace) -> None:
+    """roslaunch gives each top-level file a fresh ``$(anon)`` context (a random name per id
+    and file): ``resolve`` of both files loads, so the feature model has no clash; two uses
+    of one id in one file share the name and do clash (Husky's run_benchmark_ompl.launch)."""
+    anon = '  <node pkg="p" type="t" name="$(anon bench)"><param name="x" value="1"/></node>\n'
+    ws.launch("a.launch", anon)
+    ws.launch("b.launch", anon)
+    ws.launch("twice.launch", anon + anon)
+    analysis = ws.analysis()
+    model = extract(analysis)
+    files = {os.path.basename(f) for c in model.clashes for f in c.files}
+    assert files == {"twice.launch"}
+    paths = sorted(f.file for f in model.files)
+    for pair, loads in (((0, 1), True), ((2,), False)):
+        assert resolve(analysis, [paths[i] for i in pair], {}).ok is loads

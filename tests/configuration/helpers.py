@@ -19,7 +19,7 @@ if TYPE_CHECKING:
 def configurator(ws: LaunchWorkspace, env: Mapping[str, str] | None = None) -> Configurator:
     """Feature ids read ``a.launch``, ``a.launch:x``, ``a.launch:x=1``."""
     analysis = ws.analysis()
-    model = extract(analysis)
+    model = extract(analysis, products=True)
     spelling = {os.path.realpath(f.file): os.path.basename(f.file) for f in model.files}
     return Configurator(analysis, model, env, spelling)
 

@@ -36,3 +36,21 @@ def test_default_spelling_is_relative_to_the_current_directory(
     ws.launch("a.launch", '  <node pkg="p" type="t" name="n"/>')
     monkeypatch.chdir(ws.root)
     assert [f.id for f in Catalog(extract(ws.analysis()))] == ["pkg/launch/a.launch"]
+
+
+def test_a_file_by_its_feature_model_id_or_any_path_and_near_misses_suggested(
+    ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch, tmp_path_factory: pytest.TempPathFactory
+) -> None:
+    """``rosvar features`` prints ids from the workspace root; the user's shell is elsewhere."""
+    path = ws.launch(
+        "a.launch", '  <arg name="x" default="1"/>\n  <node pkg="p" type="t" name="n$(arg x)"/>'
+    )
+    model = extract(ws.analysis())
+    monkeypatch.chdir(tmp_path_factory.mktemp("elsewhere"))
+    catalog = Catalog(model)
+    [file] = model.files
+    spelled = catalog.lookup(path).id
+    for text in (file.id, path, os.path.relpath(path)):
+        assert catalog.lookup(f"{text}:x=1").id == f"{spelled}:x=1"
+    with pytest.raises(ChoiceError, match=r"did you mean '.*a\.launch:x'"):
+        catalog.lookup(f"{spelled}:y")

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from configuration.helpers import configurator, run
-from rosvar.configuration.command import Launch, group
+from configuration.helpers import canonical, choices, configurator, product, run
+from rosvar.analyses.resolve import resolve
+from rosvar.configuration.command import Launch, given, group
+from rosvar.configuration.engine import ConfigurationState
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -43,3 +45,47 @@ def test_engine_commands(ws: LaunchWorkspace) -> None:
     included = run(engine, "select c.launch", "set a.launch:robot=kobuki", "deselect b.launch")
     assert included.command == "roslaunch pkg c.launch"  # a.launch comes with c.launch
     assert [launch.spelled for g in included.commands for launch in g] == ["c.launch"]
+
+
+def test_choosing_a_substituted_default_leaves_the_arg_off(ws: LaunchWorkspace) -> None:
+    """The default's feature reads ``<default: $(...)>``: by select or by set (as the web UI
+    does), the arg stays off the command and the product is what roslaunch loads for it."""
+    ws.launch(
+        "a.launch",
+        '  <arg name="scan" default="$(optenv LASER scan)"/>\n'
+        '  <node pkg="p" type="t" name="n"><remap from="in" to="$(arg scan)"/></node>',
+    )
+    engine = configurator(ws)
+    [default] = [f for f in engine.catalog if f.kind == "value" and f.value != "<other>"]
+    assert default.value == "<default: $(optenv LASER scan)>"
+    for word in (f"select {default.id}", f"set a.launch:scan={default.value}"):
+        state = run(engine, word)
+        assert state.command == "roslaunch pkg a.launch", word
+        assert_resolves_the_same(ws, state)
+
+
+def test_an_arg_set_by_value_is_never_asked_for(ws: LaunchWorkspace) -> None:
+    """Husky's move_group.launch: ``--finish`` must not pick an ``<other>`` for it."""
+    ws.launch(
+        "a.launch",
+        '  <arg name="info" default="false"/>\n'
+        '  <arg unless="$(arg info)" name="c" value=""/>\n'
+        '  <arg if="$(arg info)" name="c" value="--debug"/>\n'
+        '  <node pkg="p" type="t" name="n" args="$(arg c)"/>\n',
+    )
+    engine = configurator(ws)
+    chosen = choices("select a.launch")
+    state = engine.state(chosen + engine.completion(chosen))
+    assert state.complete and state.command == "roslaunch pkg a.launch"
+    assert_resolves_the_same(ws, state)
+
+
+def assert_resolves_the_same(ws: LaunchWorkspace, state: ConfigurationState) -> None:
+    """Each command line of a complete product loads what the product shows."""
+    assert state.commands
+    for members in state.commands:
+        resolution = resolve(ws.analysis(), [m.path for m in members], given(members)).to_json()
+        ours = product(state, [m.spelled for m in members])
+        assert ours["ok"] == resolution["ok"], state.command
+        assert canonical(ours["nodes"]) == canonical(resolution["nodes"]), state.command
+        assert ours["params"] == resolution["params"], state.command

@@ -122,7 +122,7 @@ def test_a_step_runs_without_the_collector_and_restores_it(
         if phase == "start":
             started.append(info["generation"])
 
-    chosen = choices("set main.launch:cam=true", "set camera.launch:fps=60")
+    chosen = choices("set main.launch:cam=true", "set main.launch:robot=husky")
     threshold = gc.get_threshold()
     gc.collect()
     gc.callbacks.append(record)
@@ -137,6 +137,27 @@ def test_a_step_runs_without_the_collector_and_restores_it(
         gc.set_threshold(*threshold)
         gc.callbacks.remove(record)
     assert started and not state.refused and len(state.choices) == 2
+
+
+def test_an_included_file_takes_no_args_from_the_command_line(engine: Configurator) -> None:
+    """main.launch includes camera.launch without passing ``fps``: in that product fps is
+    its default, derived, and setting it is refused with the include as the reason (it
+    would change nothing: the command cannot give it)."""
+    found = states(run(engine, "set main.launch:cam=true"))
+    assert found["camera.launch:fps=30"] == "selected*"
+    for words in (
+        ["set main.launch:cam=true", "set camera.launch:fps=60"],
+        ["set camera.launch:fps=60", "set main.launch:cam=true"],
+    ):
+        state = run(engine, *words)
+        [refusal] = state.refused
+        assert refusal.choice == choices(words[1])[0]
+        assert "main.launch includes pkg/launch/camera.launch" in refusal.reason
+        assert "no args from the command line" in refusal.reason
+    alone = run(engine, "set camera.launch:fps=60", "deselect main.launch")
+    chosen = alone.choices
+    alone = engine.state(chosen + engine.completion(chosen))
+    assert alone.command is not None and "fps:=60" in alone.command
 
 
 def test_completion_reaches_a_complete_product(engine: Configurator) -> None:
@@ -159,10 +180,24 @@ def test_conflict_certain_possible_gone(ws: LaunchWorkspace) -> None:
         "possible",
         "on",
     )
-    [conflict] = run(engine, "set a.launch:on=true").conflicts
-    assert conflict.status == "certain" and conflict.condition is None
+    [conflict] = run(engine, "select b.launch").conflicts
+    assert (conflict.status, conflict.condition) == ("possible", "on")
     assert run(engine, "set a.launch:on=false").conflicts == []
     assert run(engine, "deselect b.launch").conflicts == []
+    # certain once both files are there, but the solver deselects b.launch then: a clash
+    # with a file out of the product is not shown (the README's control.xml and teleop_only)
+    assert states(run(engine, "set a.launch:on=true"))["b.launch"] == "deselected*"
+    assert run(engine, "set a.launch:on=true").conflicts == []
+
+
+def test_a_certain_clash_is_certain_only_once_its_files_are_in(ws: LaunchWorkspace) -> None:
+    ws.launch("a.launch", '  <node pkg="p" type="t" name="n"/>\n' * 2)
+    engine = configurator(ws)
+    [conflict] = run(engine).conflicts
+    assert (conflict.files, conflict.status) == (("a.launch", "a.launch"), "possible")
+    [conflict] = run(engine, "select a.launch").conflicts
+    assert conflict.status == "certain"
+    assert run(engine, "deselect a.launch").conflicts == []
 
 
 def test_configurations_are_counted_exactly_beyond_a_double(ws: LaunchWorkspace) -> None:

@@ -46,7 +46,7 @@ def test_engine_products_load_as_in_roslaunch(system: str) -> None:
         analysis = Analysis(
             discover(roots, ros_package_path=""), env_values={k: [v] for k, v in env.items()}
         )
-        engine = Configurator(analysis, extract(analysis, files=run.files()), env)
+        engine = Configurator(analysis, extract(analysis, files=run.files(), products=True), env)
         rng = random.Random(f"{SEED}:{run.name}")
         cases = []
         for _ in range(PRODUCTS):

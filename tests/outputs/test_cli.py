@@ -6,8 +6,10 @@ Exit codes (``rosvar.outputs.cli``): 0 success, 1 the configuration fails (error
 
 from __future__ import annotations
 
+import argparse
 import json
 import os
+import shlex
 import signal
 import subprocess
 import sys
@@ -19,7 +21,15 @@ import pytest
 
 import rosvar
 from rosvar.analyses.feature_model import extraction
-from rosvar.outputs.cli import EXIT_FAILS, EXIT_INPUT, EXIT_OK, EXIT_TOO_LARGE, EXIT_USAGE, main
+from rosvar.outputs.cli import (
+    EXIT_FAILS,
+    EXIT_INPUT,
+    EXIT_OK,
+    EXIT_TOO_LARGE,
+    EXIT_USAGE,
+    main,
+    parser,
+)
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -132,6 +142,21 @@ def test_resolve_ok(workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[st
     )
     assert code == EXIT_OK
     assert out.splitlines() == ["node  /planner  (pkg/planner_node)", "param /home = '/home/robot'"]
+    assert "warning" not in _err
+
+
+def test_resolve_warns_of_an_arg_no_file_reads(
+    workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """roslaunch ignores it silently: the output is that of no such arg, and stderr says so."""
+    file = good_file(workspace)
+    plain = run(capsys, "resolve", str(workspace.root), "--launch", file)
+    code, out, err = run(
+        capsys, "resolve", str(workspace.root), "use_telop:=false", "--launch", file
+    )
+    assert (code, out) == plain[:2]
+    assert "no launched file has an arg 'use_telop'" in err
+    assert "did you mean 'use_teleop'?" in err and "(args: two, use_teleop)" in err
 
 
 def test_resolve_conflict_and_error_exit_1(
@@ -386,3 +411,87 @@ def test_a_model_too_large_to_solve(
         code, _out, err = run(capsys, *argv)
         assert code == EXIT_TOO_LARGE
         assert err.startswith("rosvar: the feature model is too large to solve: ")
+
+
+# -- readable summaries -------------------------------------------------------------------------
+REPO = Path(__file__).resolve().parents[2]
+
+
+def test_metrics_table_has_a_row_per_path_as_in_json(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    ws.launch("robot.launch", ROBOT)
+    examples = str(REPO / "examples")
+    rows = {}
+    for path in (examples, str(ws.root)):
+        code, out, _err = run(capsys, "metrics", path, "--json")
+        rows[path] = json.loads(out)
+    code, out, _err = run(capsys, "metrics", examples, str(ws.root))
+    assert code == EXIT_OK
+    header, *lines = out.splitlines()
+    assert header.split() == ["system", *rows[examples]]
+    for path, line in zip(rows, lines, strict=False):
+        assert line.split() == [path, *map(str, rows[path].values())]
+    assert "LF launch files" in out and "docs/features.md#metrics" in out
+    code, out, _err = run(capsys, "metrics", examples, str(ws.root), "--json")
+    assert json.loads(out) == rows
+
+
+def test_counts_for_people_are_short_and_json_exact(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """30 independent Boolean args (three values each) and a file: over 10^14 configurations."""
+    ws.launch(
+        "many.launch",
+        "".join(
+            f'  <arg name="a{n}" default="true"/>\n  <node pkg="p" type="t" name="n{n}" '
+            f'if="$(arg a{n})"/>\n'
+            for n in range(30)
+        )
+        + '  <arg name="port"/>\n  <param name="port" value="$(arg port)"/>\n',
+    )
+    _code, out, _err = run(capsys, "features", str(ws.root), "--format", "json")
+    exact = json.loads(out)["configurations"]
+    exponent = len(str(exact)) - 1
+    superscript = str(exponent).translate(str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹"))
+    _code, out, err = run(capsys, "features", str(ws.root))
+    shown = f"  ≈ {round(exact / 10**exponent, 1)} × 10{superscript} valid configurations"
+    assert exponent > 9 and out.splitlines()[3] == shown
+    assert "1 note [values-unknown]" in out and "[values-unknown]" in err
+    assert "arg 'port'" in err and "arg 'port'" not in out
+
+
+def test_analyze_marks_a_cut_path(ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]) -> None:
+    path = ws.launch("a" * 70 + ".launch", '  <node pkg="p" type="t" name="n"/>')
+    _code, out, _err = run(capsys, "analyze", str(ws.root))
+    [row] = [line for line in out.splitlines() if ".launch" in line]
+    shown = row.split()[0]
+    assert shown.startswith("…") and os.path.relpath(path).endswith(shown[1:])
+
+
+def test_configure_summarises_a_clash_of_many_params(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    params = "".join(f'<param name="p{n}" value="1"/>' for n in range(12))
+    for name in ("a.launch", "b.launch"):
+        ws.launch(name, f'  <node pkg="p" type="t" name="n">{params}</node>')
+    _code, out, _err = run(capsys, "configure", str(ws.root), "--json")
+    [conflict] = json.loads(out)["conflicts"]
+    assert len(conflict["names"]) == 13
+    _code, out, _err = run(capsys, "configure", str(ws.root))
+    [line] = [line for line in out.splitlines() if line.startswith("conflict")]
+    assert line.endswith(": node /n, param /n/p0, param /n/p1 and 10 params")
+
+
+def test_every_option_is_described_with_an_example_that_parses() -> None:
+    top = parser()
+    [commands] = [a for a in top._actions if isinstance(a, argparse._SubParsersAction)]
+    for name, command in commands.choices.items():
+        for action in command._actions:
+            assert action.help, f"{name} {action.dest}"
+        assert command.epilog and "docs/cli.md" in command.epilog
+        example = command.epilog.split("example:\n")[1].split("\n\n")[0]
+        for line in example.replace("\\\n", " ").splitlines():
+            words = shlex.split(line.split("|")[0])
+            assert words[:2] == ["rosvar", name]
+            top.parse_known_args(words[1:])  # exits (SystemExit) on a usage error

@@ -3,17 +3,19 @@
 Two declarations clash when they give a node (or a parameter) the same fully
 resolved name and can be present together. Instead of comparing every pair of
 files (quadratic), every declaration is put in a bucket keyed by its name; only
-declarations sharing a bucket are compared.
+declarations sharing a bucket are compared. A ``$(anon)`` name never clashes with another
+file's: roslaunch draws its random part anew for each file of a command line (each top-level
+file gets a fresh substitution context), so only a file's includes share it.
 """
 
 from __future__ import annotations
 
 from collections import defaultdict
 from collections.abc import Iterable, Iterator, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from rosvar.diagnostics import Location
-from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl
+from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, anon_pattern
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import combine
 from rosvar.ros import names
@@ -29,6 +31,7 @@ class Occurrence:
     file: str
     location: Location
     condition: BDD
+    anonymous: bool = False  # the name holds a ``$(anon)`` part, random per entry file
 
 
 @dataclass(frozen=True)
@@ -64,17 +67,24 @@ class _WrittenIn:
 def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
     """Nodes and params written in ``model.file`` itself (Algorithm 1's GETELEMENTS)."""
     own = _WrittenIn(model.file)
+    anon = anon_pattern(model.anon_ids)
+    found: list[Occurrence] = []
     for node in model.nodes:
         if not node.is_test and own(node.location.file):
-            yield from _node_occurrences(model, node)
+            found.extend(_node_occurrences(model, node))
     for param in model.params:
         if not isinstance(param, ParamDecl) or not own(param.location.file):
             continue
         for condition, param_name in param.name:
             if isinstance(param_name, str):
-                yield Occurrence(
-                    "param", param_name, model.file, param.location, param.condition & condition
+                found.append(
+                    Occurrence(
+                        "param", param_name, model.file, param.location, param.condition & condition
+                    )
                 )
+    if anon is None:
+        return found
+    return [replace(o, anonymous=True) if anon.search(o.name) else o for o in found]
 
 
 def _node_occurrences(model: LaunchModel, node: NodeDecl) -> Iterator[Occurrence]:
@@ -132,6 +142,8 @@ def clashes(buckets: Mapping[tuple[str, str], Sequence[Occurrence]]) -> list[Cla
         for i, first in enumerate(occurrences):
             for second in occurrences[i + 1 :]:
                 if first.location == second.location:
+                    continue
+                if (first.anonymous or second.anonymous) and first.file != second.file:
                     continue
                 both = first.condition & second.condition
                 if both != both.bdd.false:

@@ -9,13 +9,12 @@ locations.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from rosvar.analyses.json_values import json_value
 from rosvar.diagnostics import Location
-from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl, Raw
+from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl, Raw, anon_pattern
 from rosvar.interpreter.substitution import PackageTable
 from rosvar.interpreter.tags.param import param_value
 from rosvar.interpreter.tags.rosparam import load_rosparam
@@ -109,11 +108,8 @@ class _Restriction:
         roslaunch draws one random name per id; the deterministic ``{id}_anon{n}``
         stand-in must keep counting across the files of one command line.
         """
-        if offset and self.model.anon_ids:
-            bases = "|".join(
-                re.escape(b) for b in sorted(self.model.anon_ids, key=len, reverse=True)
-            )
-            pattern = re.compile(rf"(?<![\w])({bases})_anon(\d+)(?![\w])")
+        pattern = anon_pattern(self.model.anon_ids)
+        if offset and pattern is not None:
             self._shift = lambda text: pattern.sub(
                 lambda m: f"{m.group(1)}_anon{int(m.group(2)) + offset}", text
             )

@@ -7,6 +7,7 @@ on the command line. The catalogue re-spells every id (``FILE``, ``FILE:ARG``,
 
 from __future__ import annotations
 
+import difflib
 import os
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
@@ -62,6 +63,7 @@ class Catalog:
             variable = str(solver.var(file.variable).var)
             self.files.append(FileEntry(file_id, file.file, file, variable))
             self._by_path[os.path.realpath(file.file)] = file_id
+            self._by_path[file.id] = file_id  # as ``rosvar features`` prints it
             self._add(Feature(file_id, "file", file_id, None, None, None, variable))
             for arg in file.args:
                 arg_id = f"{file_id}:{arg.name}"
@@ -93,13 +95,15 @@ class Catalog:
         return self._by_path[os.path.realpath(path)]
 
     def lookup(self, text: str) -> Feature:
-        """The feature named ``text``; the file part may be any path to the file."""
+        """The feature named ``text``; the file part may be any path to the file (from the
+        current directory, absolute) or its id in the feature model (from the workspace root,
+        as ``rosvar features`` prints it). An unknown id is refused with the nearest ones."""
         found = self.features.get(text)
         if found is not None:
             return found
         file, sep, rest = text.partition(":")
         while True:
-            spelled = self._by_path.get(os.path.realpath(file))
+            spelled = self._by_path.get(file) or self._by_path.get(os.path.realpath(file))
             if spelled is not None:
                 found = self.features.get(spelled + sep + rest)
                 if found is not None:
@@ -108,7 +112,9 @@ class Catalog:
             if not sep2:
                 break
             file, rest = f"{file}:{head}", tail
-        raise ChoiceError(f"no feature {text!r}")
+        near = difflib.get_close_matches(text, self.features, n=3, cutoff=0.6)
+        hint = f"; did you mean {' or '.join(repr(n) for n in near)}?" if near else ""
+        raise ChoiceError(f"no feature {text!r}{hint}")
 
     def values_of(self, arg_id: str) -> list[tuple[Feature, ValueFeature]]:
         return self.args[arg_id][1]

@@ -4,7 +4,9 @@ A clash is judged on the feature tree and the *requires* constraints only (the e
 constraints say the clash must not happen, so they would hide it): ``S = tree ∧ requires
 ∧ user literals``. It is gone when no configuration of ``S`` has both files and the clash
 condition, certain when every configuration of ``S`` with both files has it, and possible
-otherwise, with its condition simplified under the choices.
+otherwise, with its condition simplified under the choices. What a user is shown
+(:meth:`Conflicts.shown`) is about the product: no clash of a file out of it, and none certain
+before both files are in.
 """
 
 from __future__ import annotations
@@ -40,6 +42,7 @@ class Clashing:
 
     files: tuple[str, str]  # spelled ids
     names: tuple[str, ...]
+    file_variables: tuple[str, str]
     component: int
     variables: frozenset[str]  # of the blocks it is judged on
     within: BDD  # the blocks' conjunction (shared by the pairs judged on the same blocks)
@@ -119,6 +122,7 @@ class Conflicts:
                 Clashing(
                     (file_ids[first], file_ids[second]),
                     tuple(sorted({f"{c.kind} {c.name}" for c in clashes})),
+                    (str(pair[0].var), str(pair[1].var)),
                     component_of[a.id],
                     variables,
                     within,
@@ -157,6 +161,25 @@ class Conflicts:
             elif was is not None and not self._meets(pair.possible, pair, decisions):
                 found[number] = None
         return found
+
+    def shown(
+        self, found: Sequence[ConflictState | None], decisions: Decisions
+    ) -> list[ConflictState]:
+        """The pairs' states (``judge``'s answer) as they bear on the product: a pair with a
+        file deselected, by the user or derived, is not in it; one certain given both
+        files is only possible while a file is still open."""
+        decided = decisions.decided
+        shown = []
+        for pair, state in zip(self.pairs, found, strict=True):
+            if state is None:
+                continue
+            first, second = (decided.get(v) for v in pair.file_variables)
+            if first is False or second is False:
+                continue
+            if state.status == Certainty.CERTAIN and not (first and second):
+                state = ConflictState(pair.files, pair.names, Certainty.POSSIBLE, None)
+            shown.append(state)
+        return shown
 
     def _meets(self, u: BDD, pair: Clashing, decisions: Decisions) -> bool:
         """Some configuration of the pair's blocks and ``u`` (its ``possible`` or

@@ -147,6 +147,9 @@ class Configurator:
         env: Mapping[str, str] | None = None,
         spelling: Mapping[str, str] | None = None,
     ) -> None:
+        """``model`` from ``extract(analysis, products=True)``."""
+        if not model.products:
+            raise ValueError("the configurator needs extract(..., products=True)")
         self._build(analysis, model, env, spelling)
 
     @collector_paused()  # a long-lived heap: left young, the collector rescanned it each step
@@ -294,7 +297,9 @@ class Configurator:
             raise ChoiceError(f"set expects FILE:ARG=VALUE, got {choice.feature!r}")
         values = self.catalog.values_of(feature.id)
         for entry, value in values:
-            if value.slot == choice.value:
+            # a known value, or the default's feature by its text (``<default: $(...)>``):
+            # choosing the default leaves the arg unset, never typed as a value
+            if value.slot == choice.value or (value.slot is UNSET and value.value == choice.value):
                 return _Effective(choice, frozenset({feature.id, entry.id}), entry.variable, True)
         for entry, value in values:
             if value.slot is OTHER:
@@ -361,7 +366,7 @@ class Configurator:
             choices=list(replay.accepted),
             refused=list(replay.refused),
             features=features,
-            conflicts=[c for c in view.conflicts if c is not None],
+            conflicts=self.conflicts.shown(view.conflicts, decisions),
             graph=view.graph,
             complete=complete,
             command=command,

@@ -113,13 +113,26 @@ class VariationalGraph:
         self.lowering = lowering
         self.elements: list[Element] = []
         self.launched: dict[str, BDD] = _launched(model)
-        self._topics: dict[str, tuple[list[str], BDD]] = {}
+        self._topics: dict[tuple[str, str], _Topic] = {}
         for file in model.files:
             self._add_model(
                 analysis.model(file.file), file_ids[file.file], self.launched[file.file]
             )
-        for name, (nodes, condition) in sorted(self._topics.items()):
-            self._add("topic", f"topic:{name}", "", condition, _static({"name": name}), nodes=nodes)
+        for (entry, name), (nodes, condition, raws) in sorted(self._topics.items()):
+            if not entry:
+                self._add(
+                    "topic", f"topic:{name}", "", condition, _static({"name": name}), nodes=nodes
+                )
+                continue
+            self._add(
+                "topic",
+                f"topic:{file_ids[entry]}|{name}",
+                entry,
+                condition,
+                _topic_renderer(raws),
+                _needs(*raws),
+                nodes=nodes,
+            )
 
     def by_kind(self, kind: str) -> Iterable[Element]:
         return (e for e in self.elements if e.kind == kind)
@@ -249,18 +262,16 @@ class VariationalGraph:
         self, element: Element, raw: Mapping[str, Raw | None], remaps: list[_Setting]
     ) -> None:
         symbolic = Values({}, None)
-        namespace = symbolic.text(raw.get("namespace")) or "/"
-        node_name = names.ns_join(namespace, symbolic.text(raw.get("name")) or "")
         for _source, target, part in remaps:
             used = element.condition if part is None else element.parts[part].condition
-            name = symbolic.text(target) or ""
-            if names.is_private(name):
-                topic = names.ns_join(node_name + "/", name[1:])
-            else:
-                topic = names.ns_join(namespace, name)
-            nodes, condition = self._topics.get(topic, ([], used.bdd.false))
+            raws = (raw.get("namespace"), raw.get("name"), target)
+            topic = _topic_name(symbolic, *raws)
+            # a name that reads args is the entry file's own: another file's ⟨scan⟩ is
+            # another arg, and its string is known only with that file's choices
+            key = (element.entry if _needs(*raws) else "", topic)
+            nodes, condition, _raws = self._topics.get(key, ([], used.bdd.false, raws))
             nodes.append(element.id)
-            self._topics[topic] = (nodes, condition | used)
+            self._topics[key] = (nodes, condition | used, raws)
 
 
 def _launched(model: FeatureModel) -> dict[str, BDD]:
@@ -273,6 +284,24 @@ def _launched(model: FeatureModel) -> dict[str, BDD]:
         source, target = (by_id[i] for i in constraint.files)
         launched[target.file] &= ~(source.variable & constraint.condition)
     return launched
+
+
+_Topic = tuple[list[str], BDD, tuple[Raw | None, Raw | None, Raw]]
+"""A topic's node variants, when one of them uses it, and the namespace, name and remap
+target it was named from (the first use's)."""
+
+
+def _topic_name(values: Values, namespace: Raw | None, name: Raw | None, target: Raw) -> str:
+    """The topic a node remaps to, resolved in its namespace (a private name in its own)."""
+    space = values.text(namespace) or "/"
+    topic = values.text(target) or ""
+    if names.is_private(topic):
+        return names.ns_join(names.ns_join(space, values.text(name) or "") + "/", topic[1:])
+    return names.ns_join(space, topic)
+
+
+def _topic_renderer(raws: tuple[Raw | None, Raw | None, Raw]) -> Render:
+    return lambda values, _parts: [{"name": _topic_name(values, *raws)}]
 
 
 def _needs(*raws: object) -> set[Input]:

@@ -2,8 +2,9 @@
 
 Graph elements share conditions (every element of one branch of a file has the same), so
 verdicts are kept per distinct condition. A verdict depends on the decided variables of
-the condition's support, on the ``<other>`` texts typed for its file's args (they decide
-open predicates) and, when restriction by the decided variables was not enough, on the
+the condition's support, on the ``<other>`` texts typed (they decide open predicates, of
+its file's args or of an includer's, through the condition that its file is launched) and,
+when restriction by the decided variables was not enough, on the
 user literals of the components the solver judged it in. From an earlier step of the same
 list of literals, a condition is judged again only when one of those changed, and even
 then not when the solver found it present or absent (more literals cannot undo that) or
@@ -125,7 +126,7 @@ class Presences:
                 tuple(numbered(element.entry, p.condition, p.bounds) for p in element.parts)
             )
         self._reading: dict[str, list[int]] = {}  # variable → conditions over it
-        self._typed_in: dict[str, list[int]] = {}  # entry → conditions texts can decide
+        self._open: list[int] = []  # conditions typed texts can decide
         self._masks: list[int] = []  # per condition: the positions of ``_reading``'s variables
         variables = set(derivation.variables)
         for index, condition in enumerate(self.conditions):
@@ -135,7 +136,7 @@ class Presences:
                 self._reading.setdefault(variable, []).append(index)
             self._masks.append(sum(1 << derivation.position[v] for v in reading))
             if not condition.bounds.exact:
-                self._typed_in.setdefault(condition.entry, []).append(index)
+                self._open.append(index)
 
     def judge(
         self,
@@ -224,16 +225,17 @@ class Presences:
         """Conditions whose decided variables or typed texts changed."""
         changed: Iterable[tuple[str, bool]] = decisions.decided.items() ^ earlier.decided.items()
         touched = {index for v, _ in changed for index in self._reading.get(v, ())}
-        for entry in typed.keys() | earlier_typed.keys():
-            if typed.get(entry) != earlier_typed.get(entry):
-                touched.update(self._typed_in.get(entry, ()))
+        if typed != earlier_typed:
+            touched.update(self._open)
         return touched
 
     def _bounds(self, index: int, typed: Typed) -> Bounds:
-        """The bounds of a condition, decided further by the texts typed for its file."""
+        """The bounds of a condition, decided further by the texts typed (for any file's
+        args: whether a file is launched reads its includers')."""
         condition = self.conditions[index]
-        if not condition.bounds.exact and condition.entry in typed:
-            return self.lowering.decide(condition.condition, typed[condition.entry])
+        if not condition.bounds.exact and typed:
+            texts = {i: text for texts in typed.values() for i, text in texts.items()}
+            return self.lowering.decide(condition.condition, texts)
         return condition.bounds
 
     def _judge(

@@ -28,9 +28,9 @@ Key = tuple[tuple[str, bool, str | None], ...]
 """A list of literals: variable, value and the ``<other>`` text it gives, if any."""
 Strings = frozenset[tuple[Input, str | None]]
 """The strings of the inputs an element's terms read (None: not known yet)."""
-_Entry = tuple[str, str, str | None, Strings | None, tuple[Shown, ...]]
-"""An element shown: its id, presence, condition, the strings it was rendered with and its
-parts as shown."""
+_Entry = tuple[str, str, str | None, Strings | None, tuple[Shown, ...], tuple[str, ...]]
+"""An element shown: its id, presence, condition, the strings it was rendered with, its
+parts as shown and (a topic) the node variants using it that are not absent."""
 
 
 @dataclass
@@ -110,6 +110,12 @@ class Views:
                     for feature, _value in catalog.values_of(arg_id):
                         self._reading.setdefault(feature.variable, []).append(index)
                     self._reading.setdefault(arg_id, []).append(index)
+        index_of = {element.id: index for index, element in enumerate(graph.elements)}
+        self._users: dict[int, list[int]] = {}  # topic → its nodes, node → its topics
+        for index, element in enumerate(graph.elements):
+            for node in element.nodes:
+                self._users.setdefault(index, []).append(index_of[node])
+                self._users.setdefault(index_of[node], []).append(index)
         self._rendered: dict[tuple[str, Strings | None, tuple[Shown, ...]], list[Fields]] = {}
         self._entries: dict[_Entry, list[Fields]] = {}
         self.initial = self._derive(derivation.initial, {}, None)
@@ -172,13 +178,20 @@ class Views:
             again = self._rerendered(decisions, texts, before, presences)
         values: dict[str, Values] = {}
         moved: dict[str, list[int]] = {}  # per kind: the elements rendered anew
-        for index in again:
+        for index in again:  # in graph order: a topic comes after its nodes
             element = self.graph.elements[index]
             judged = presences.verdicts[self.presences.of_element[index]]
             if element.entry not in values and element.inputs:
                 values[element.entry] = self._values(element.entry, decisions, texts)
             parts = tuple(presences.verdicts[c].shown for c in self.presences.of_parts[index])
-            found = self._element_entries(element, judged, parts, values)
+            users = tuple(
+                self.graph.elements[n].id
+                for n in self._users.get(index, ())
+                if entries[n] and entries[n][0]["presence"] != Presence.ABSENT
+            )
+            found = self._element_entries(
+                element, judged, parts, values, users if element.kind == "topic" else ()
+            )
             if found is not entries[index]:
                 moved.setdefault(element.kind, []).append(index)
             entries[index] = found
@@ -220,8 +233,9 @@ class Views:
         texts: Mapping[str, str],
         before: View,
         presences: Judgement,
-    ) -> set[int]:
-        """Elements whose verdict or read strings differ from ``before``."""
+    ) -> list[int]:
+        """Elements whose verdict or read strings differ from ``before`` (and the topics of
+        nodes among them, whose lists of nodes may change), in graph order."""
         again: set[int] = set()
         for condition in presences.judged:
             judged, earlier = presences.verdicts[condition], before.presences.verdicts[condition]
@@ -233,7 +247,10 @@ class Views:
         for arg in texts.keys() | before.texts.keys():
             if texts.get(arg) != before.texts.get(arg):
                 again.update(self._reading.get(arg, ()))
-        return again
+        for index in list(again):
+            if self.graph.elements[index].kind != "topic":
+                again.update(self._users.get(index, ()))
+        return sorted(again)
 
     def _typed(self, texts: Mapping[str, str]) -> Typed:
         """Entry file → the ``<other>`` texts typed for its args."""
@@ -259,8 +276,10 @@ class Views:
         judged: Judged,
         parts: tuple[Shown, ...],
         values: Mapping[str, Values],
+        users: tuple[str, ...],
     ) -> list[Fields]:
-        """The element's graph entries: none for an absent error, else one per variant.
+        """The element's graph entries: none for an absent error, else one per variant
+        (a topic's with ``users``, its node variants not absent).
 
         Made once per verdict and strings its terms read: the same entries serve every
         state that shows them (a session's later clicks, and other sessions, meet them
@@ -270,11 +289,11 @@ class Views:
             return []
         given = values[element.entry] if presence != Presence.ABSENT and element.inputs else None
         strings = frozenset((i, given.concrete.get(i)) for i in element.inputs) if given else None
-        key = (element.id, presence, condition, strings, parts)
+        key = (element.id, presence, condition, strings, parts, users)
         entries = self._entries.get(key)
         if entries is None:
             shown = self._fields(element, given, strings, parts)
-            extra: Fields = {"nodes": element.nodes} if element.kind == "topic" else {}
+            extra: Fields = {"nodes": list(users)} if element.kind == "topic" else {}
             entries = self._entries[key] = [
                 {
                     **fields,

@@ -10,6 +10,8 @@ Element classes have slots: a large workspace's models hold millions of them.
 
 from __future__ import annotations
 
+import re
+from collections.abc import Collection
 from dataclasses import dataclass, field
 
 from rosvar.diagnostics import Diagnostic, Location
@@ -178,3 +180,12 @@ class LaunchModel:
     anon_ids: set[str] = field(default_factory=set)  # bases of the $(anon) names generated
     anon_count: Choice[int] | None = None  # how many, per configuration
     loads: BDD = None  # configurations in which roslaunch loads the file without error
+
+
+def anon_pattern(bases: Collection[str]) -> re.Pattern[str] | None:
+    """The ``{base}_anon{n}`` names that stand for ``$(anon base)`` (the interpreter's
+    counter in place of roslaunch's random part) inside a name; None without bases."""
+    if not bases:
+        return None
+    alternatives = "|".join(re.escape(b) for b in sorted(bases, key=len, reverse=True))
+    return re.compile(rf"(?<![\w])({alternatives})_anon(\d+)(?![\w])")

@@ -9,12 +9,14 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import difflib
 import gc
 import json
 import os
 import sys
 import time
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
+from dataclasses import replace
 
 from rosvar import __version__
 from rosvar.analyses.feature_model.extraction import extract
@@ -24,9 +26,9 @@ from rosvar.analyses.resolve import resolve
 from rosvar.configuration.choices import Action, ChoiceError, UserChoice
 from rosvar.configuration.derivation import Presence
 from rosvar.configuration.engine import ConfigurationState, Configurator, Selection
-from rosvar.diagnostics import Severity
+from rosvar.diagnostics import Location, Severity
 from rosvar.interpreter.workspace_models import Analysis
-from rosvar.outputs.describe import describe_model
+from rosvar.outputs.describe import count_text, describe_model
 from rosvar.outputs.exports import WRITERS, write
 from rosvar.outputs.web.server import make_server
 from rosvar.ros.names import command_line_mappings
@@ -70,20 +72,21 @@ def cmd_analyze(options: argparse.Namespace) -> int:
     if options.json:
         _print_json({"files": [describe_model(m) for m in models]})
         return EXIT_OK
-    cwd = os.getcwd()
     diagnostics = [d for m in models for d in m.diagnostics]
     print(f"{len(models)} launch files, {len(workspace.packages)} packages")
     print(f"{'file':<60} {'args':>5} {'nodes':>6} {'params':>7} {'errors':>7}")
     for model in models:
-        name = os.path.relpath(model.file, cwd)
+        name = _shown(model.file)
+        if len(name) > 60:  # its tail, marked: the file names differ at the end
+            name = "…" + name[-59:]
         print(
-            f"{name[-60:]:<60} {len(model.inputs):>5} {len(model.nodes):>6} "
+            f"{name:<60} {len(model.inputs):>5} {len(model.nodes):>6} "
             f"{len(model.params):>7} {len(model.errors):>7}"
         )
     errors = [d for d in diagnostics if d.severity is Severity.ERROR]
     print(f"\n{len(diagnostics)} diagnostics ({len(errors)} errors)")
     for diagnostic in diagnostics[:20]:
-        print(f"  {diagnostic}")
+        print(f"  {replace(diagnostic, location=_relative(diagnostic.location))}")
     if len(diagnostics) > 20:
         print(f"  ... {len(diagnostics) - 20} more (use --json)")
     return EXIT_OK
@@ -111,6 +114,7 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         extra_values={k: [v] for k, v in args.items()},
         env_values={k: [v] for k, v in env.items()},
     )
+    _warn_unknown_args(analysis, files, args)
     result = resolve(analysis, files, args, env)
     document = result.to_json()
     if options.json:
@@ -121,11 +125,43 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         for name, value in document["params"].items():  # type: ignore[attr-defined]
             print(f"param {name} = {value!r}")
         for conflict in result.conflicts:
-            where = ", ".join(str(loc) for loc in conflict.locations)
+            where = ", ".join(_where(loc) for loc in conflict.locations)
             print(f"conflict: {conflict.kind} {conflict.name} at {where}")
         for error in result.errors:
-            print(f"error: {error.location}: {error.message}")
+            print(f"error: {_where(error.location)}: {error.message}")
     return EXIT_OK if result.ok else EXIT_FAILS
+
+
+def _shown(path: str) -> str:
+    """A path for people: relative to the current directory, unless the absolute one is
+    shorter (a file far from it)."""
+    relative = os.path.relpath(path)
+    absolute = os.path.abspath(path)
+    return relative if len(relative) <= len(absolute) else absolute
+
+
+def _relative(location: Location) -> Location:
+    """``location`` with its file as :func:`_shown` spells it."""
+    return replace(location, file=_shown(location.file))
+
+
+def _where(location: Location) -> str:
+    return str(_relative(location))
+
+
+def _warn_unknown_args(analysis: Analysis, files: Sequence[str], args: Mapping[str, str]) -> None:
+    """A ``name:=value`` that no launched file reads is ignored (by roslaunch too): say so,
+    a misspelt name would otherwise go unnoticed."""
+    known = sorted({name for file in files for name in analysis.model(file).inputs})
+    for name in args:
+        if name not in known:
+            near = difflib.get_close_matches(name, known, n=1)
+            hint = f"; did you mean '{near[0]}'?" if near else ""
+            print(
+                f"rosvar: warning: no launched file has an arg '{name}'; it is ignored{hint} "
+                f"(args: {', '.join(known) or 'none'})",
+                file=sys.stderr,
+            )
 
 
 def _launch_files(launches: Sequence[Sequence[str]], workspace: Workspace) -> list[str] | None:
@@ -164,8 +200,12 @@ def _environment(items: Sequence[str]) -> dict[str, str] | None:
     return env
 
 
-def _analysis(options: argparse.Namespace, env: dict[str, str] | None = None) -> Analysis | None:
-    workspace = _workspace(options.paths)
+def _analysis(
+    options: argparse.Namespace,
+    env: dict[str, str] | None = None,
+    paths: Sequence[str] | None = None,
+) -> Analysis | None:
+    workspace = _workspace(options.paths if paths is None else paths)
     if not workspace.launch_files:
         print("rosvar: no launch files found", file=sys.stderr)
         return None
@@ -193,6 +233,10 @@ def cmd_features(options: argparse.Namespace) -> int:
         return EXIT_INPUT
     model = extract(analysis, progress=_progress)
     text = write(model, options.format)
+    if options.format == "text":  # the text summarises its notes: they are listed here
+        for diagnostic in model.diagnostics:
+            if diagnostic.severity is Severity.NOTE:
+                print(diagnostic, file=sys.stderr)
     if options.output:
         with open(options.output, "w", encoding="utf-8") as handle:
             handle.write(text)
@@ -201,16 +245,33 @@ def cmd_features(options: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+METRICS_LEGEND = (
+    "LF launch files: LV in no conflict, LC in a potential one (LC_U: an unconditional one, "
+    "LC_A: all depend on args)\n"
+    "A args a user can set: ACG those affecting the computation graph, AS those of them with "
+    "non-Boolean values (AS_D: with a default, AS_V: with values inferred besides it)\n"
+    "IF if/unless decided by ACG args (IF_M: the most by one arg); see docs/features.md#metrics"
+)
+
+
 def cmd_metrics(options: argparse.Namespace) -> int:
-    analysis = _analysis(options)
-    if analysis is None:
-        return EXIT_INPUT
-    model = extract(analysis, progress=_progress)
-    metrics = compute(analysis, model).to_json()
+    """One row per PATH: each is a system, analysed on its own (dependencies come from
+    ``ROS_PACKAGE_PATH``, not from the other PATHs)."""
+    rows: dict[str, dict[str, int]] = {}
+    for path in options.paths:
+        analysis = _analysis(options, paths=[path])
+        if analysis is None:
+            return EXIT_INPUT
+        rows[path] = compute(analysis, extract(analysis, progress=_progress)).to_json()
     if options.json:
-        _print_json(metrics)
-    else:
-        print("  ".join(f"{key}={value}" for key, value in metrics.items()))
+        _print_json(next(iter(rows.values())) if len(rows) == 1 else rows)
+        return EXIT_OK
+    keys = list(next(iter(rows.values())))
+    width = max(len("system"), *(len(path) for path in rows))
+    print(f"{'system':<{width}}" + "".join(f" {key:>5}" for key in keys))
+    for path, metrics in rows.items():
+        print(f"{path:<{width}}" + "".join(f" {metrics[key]:>5}" for key in keys))
+    print(f"\n{METRICS_LEGEND}")
     return EXIT_OK
 
 
@@ -221,7 +282,9 @@ def cmd_configure(options: argparse.Namespace) -> int:
     analysis, env = loaded
     try:
         choices = [UserChoice.parse(action, text) for action, text in options.choices]
-        configurator = Configurator(analysis, extract(analysis, progress=_progress), env)
+        configurator = Configurator(
+            analysis, extract(analysis, progress=_progress, products=True), env
+        )
         if options.finish:
             choices += configurator.completion(choices)
         state = configurator.state(choices)
@@ -241,7 +304,7 @@ def _print_state(state: ConfigurationState) -> None:
     files = [(k, f) for k, f in state.features.items() if f.kind == "file"]
     print(
         f"{len(state.features) - state.unselected} of {len(state.features)} features decided, "
-        f"{state.unselected} unselected; {state.configurations} valid configurations"
+        f"{state.unselected} unselected; {count_text(state.configurations)} valid configurations"
     )
     for refusal in state.refused:
         print(f"refused: {refusal.reason}")
@@ -261,7 +324,7 @@ def _print_state(state: ConfigurationState) -> None:
         when = f", when {conflict.condition}" if conflict.condition else ""
         print(
             f"conflict ({conflict.status}): {' and '.join(conflict.files)}: "
-            f"{', '.join(conflict.names)}{when}"
+            f"{_clashing(conflict.names)}{when}"
         )
     if state.complete:
         print(
@@ -280,6 +343,21 @@ def _print_state(state: ConfigurationState) -> None:
     print(f"left: {len(open_files)} files to select or deselect, {len(open_args)} args to set")
     for arg in [*state.untyped, *open_args][:10]:
         print(f"  --set {arg}=...")
+
+
+SHOWN_NAMES = 3
+
+
+def _clashing(names: Sequence[str]) -> str:
+    """``node /x, param /x/a and 41 params``: the nodes and a few params (a clash of two
+    moveit configurations lists hundreds of params; --json has them all)."""
+    nodes = [n for n in names if n.startswith("node ")]
+    params = [n for n in names if not n.startswith("node ")]
+    shown = nodes + params[: max(0, SHOWN_NAMES - len(nodes))]
+    left = len(names) - len(shown)
+    if not left:
+        return ", ".join(shown)
+    return f"{', '.join(shown)} and {left} param{'s' if left > 1 else ''}"
 
 
 class _Choice(argparse.Action):
@@ -305,7 +383,7 @@ def cmd_serve(options: argparse.Namespace) -> int:
     started = time.perf_counter()
     files = len(analysis.workspace.launch_files)
     print(f"rosvar: analysing {files} launch files ...", file=sys.stderr, flush=True)
-    model = extract(analysis, progress=_progress)
+    model = extract(analysis, progress=_progress, products=True)
     print("rosvar: building the configuration engine ...", file=sys.stderr, flush=True)
     configurator = Configurator(analysis, model, env)
     try:
@@ -320,22 +398,68 @@ def cmd_serve(options: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+PATHS_HELP = (
+    "folders to search for ROS packages and launch files (a workspace, a system's folder); "
+    "packages on ROS_PACKAGE_PATH are found too"
+)
+ENV_HELP = (
+    "an environment variable of the configuration (repeatable); variables not given are "
+    "unset: rosvar never reads its own environment for them"
+)
+HINTS_HELP = "YAML file with arg and env values analysis cannot infer (docs/hints.md)"
+EXAMPLES = {
+    "analyze": "rosvar analyze examples\n  rosvar analyze examples --json | jq '.files[0].nodes'",
+    "resolve": (
+        "rosvar resolve examples robot:=husky --launch examples/example/launch/mapping.launch\n"
+        "  rosvar resolve examples --launch example mapping.launch --env ROBOT_HOME=/home/r"
+    ),
+    "features": (
+        "rosvar features examples\n  rosvar features examples --format uvl -o example.uvl"
+    ),
+    "metrics": "rosvar metrics ../shared/corpus/kobuki ../shared/corpus/lizi",
+    "configure": (
+        "rosvar configure examples --select examples/example/launch/robot.launch \\\n"
+        "      --set examples/example/launch/robot.launch:model=husky --finish"
+    ),
+    "serve": "rosvar serve examples ../shared/corpus/lizi --port 8080",
+}
+
+
+def _command(
+    commands: argparse._SubParsersAction[argparse.ArgumentParser], name: str, help_: str
+) -> argparse.ArgumentParser:
+    """A sub-command with its help, an example and the pointer to the docs."""
+    return commands.add_parser(
+        name,
+        help=help_,
+        description=help_[0].upper() + help_[1:] + ".",
+        epilog=f"example:\n  {EXAMPLES[name]}\n\nAll commands and options: docs/cli.md",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+
+
 def parser() -> argparse.ArgumentParser:
     top = argparse.ArgumentParser(
         prog="rosvar",
         description="Variability analysis of ROS launch files: all configurations at once.",
+        epilog="example:\n  rosvar analyze examples\n\n"
+        "'rosvar COMMAND --help' describes a command; all of them: docs/cli.md",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     top.add_argument("--version", action="version", version=f"rosvar {__version__}")
-    commands = top.add_subparsers(dest="command", required=True)
-    analyze = commands.add_parser("analyze", help="interpret every launch file below PATH")
-    analyze.add_argument("paths", nargs="+", metavar="PATH")
-    analyze.add_argument("--json", action="store_true", help="machine-readable output")
-    analyze.set_defaults(run=cmd_analyze)
-    res = commands.add_parser(
-        "resolve", help="one concrete configuration, as roslaunch would load it"
+    commands = top.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    analyze = _command(commands, "analyze", "interpret every launch file below PATH")
+    analyze.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
+    analyze.add_argument(
+        "--json", action="store_true", help="the whole model as JSON (docs/json-schema.md)"
     )
+    analyze.set_defaults(run=cmd_analyze)
+    res = _command(commands, "resolve", "one concrete configuration, as roslaunch would load it")
     res.add_argument(
-        "paths", nargs="*", metavar="PATH", help="package roots (and name:=value args)"
+        "paths",
+        nargs="*",
+        metavar="PATH",
+        help=PATHS_HELP + "; name:=value words (the args, as for roslaunch) may stand anywhere",
     )
     res.add_argument(
         "--launch",
@@ -343,43 +467,72 @@ def parser() -> argparse.ArgumentParser:
         nargs="+",
         required=True,
         metavar=("FILE|PKG", "FILE"),
-        help="a launch file, or a package and a file name in it (as roslaunch takes them)",
+        help="a launch file, or a package and a file name in it (as roslaunch takes them); "
+        "repeatable: several files share one command line",
     )
-    res.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
-    res.add_argument("--json", action="store_true")
+    res.add_argument("--env", action="append", default=[], metavar="NAME=VALUE", help=ENV_HELP)
+    res.add_argument(
+        "--json", action="store_true", help="nodes, params, conflicts and errors as JSON"
+    )
     res.set_defaults(run=cmd_resolve)
-    features = commands.add_parser("features", help="the feature model (paper Algorithm 1)")
-    features.add_argument("paths", nargs="+", metavar="PATH")
-    features.add_argument("--hints", metavar="FILE", help="YAML with extra values (docs/hints.md)")
-    features.add_argument("--format", choices=sorted(WRITERS), default="text")
-    features.add_argument("-o", "--output", metavar="FILE")
-    features.set_defaults(run=cmd_features)
-    metrics = commands.add_parser("metrics", help="the paper's Table I and II metrics")
-    metrics.add_argument("paths", nargs="+", metavar="PATH")
-    metrics.add_argument("--hints", metavar="FILE")
-    metrics.add_argument("--json", action="store_true")
-    metrics.set_defaults(run=cmd_metrics)
-    configure = commands.add_parser(
-        "configure", help="one step of a configuration: the state after the given choices"
+    features = _command(commands, "features", "the feature model (paper Algorithm 1)")
+    features.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
+    features.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
+    features.add_argument(
+        "--format",
+        choices=sorted(WRITERS),
+        default="text",
+        help="text (default; its notes go to stderr), json, uvl, featureide or dot",
     )
-    configure.add_argument("paths", nargs="+", metavar="PATH")
-    for action in Action:
-        metavar = "FILE:ARG=VALUE" if action == Action.SET else "FEATURE"
+    features.add_argument("-o", "--output", metavar="FILE", help="write to FILE, not stdout")
+    features.set_defaults(run=cmd_features)
+    metrics = _command(commands, "metrics", "the paper's Table I and II metrics")
+    metrics.add_argument("paths", nargs="+", metavar="PATH", help="one system per PATH: a row each")
+    metrics.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
+    metrics.add_argument(
+        "--json", action="store_true", help="the metrics as JSON (keyed by PATH when several)"
+    )
+    metrics.set_defaults(run=cmd_metrics)
+    configure = _command(
+        commands, "configure", "one step of a configuration: the state after the given choices"
+    )
+    configure.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
+    for action, metavar, help_ in (
+        (Action.SELECT, "FEATURE", "put a file, arg or value in the product (FILE, FILE:ARG, "
+         "FILE:ARG=VALUE; FILE as a path or as 'rosvar features' prints it)"),
+        (Action.DESELECT, "FEATURE", "keep the feature out of the product"),
+        (Action.UNSELECT, "FEATURE", "take back the earlier choice on the feature"),
+        (Action.SET, "FILE:ARG=VALUE", "give an arg a value (any text: an unknown one is the "
+         "arg's <other> value)"),
+    ):  # fmt: skip
         configure.add_argument(
-            f"--{action}", dest="choices", action=_Choice, const=action, metavar=metavar
+            f"--{action}",
+            dest="choices",
+            action=_Choice,
+            const=action,
+            metavar=metavar,
+            help=help_ + "; repeatable, applied in order",
         )
     configure.set_defaults(choices=[])
-    configure.add_argument("--finish", action="store_true", help="finish with defaults")
-    configure.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
-    configure.add_argument("--hints", metavar="FILE")
-    configure.add_argument("--json", action="store_true")
+    configure.add_argument(
+        "--finish",
+        action="store_true",
+        help="finish with defaults: open args at their default, open files deselected",
+    )
+    configure.add_argument(
+        "--env", action="append", default=[], metavar="NAME=VALUE", help=ENV_HELP
+    )
+    configure.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
+    configure.add_argument(
+        "--json", action="store_true", help="the whole state as JSON (docs/configure.md)"
+    )
     configure.set_defaults(run=cmd_configure)
-    serve = commands.add_parser("serve", help="configure step by step in the browser")
-    serve.add_argument("paths", nargs="+", metavar="PATH")
+    serve = _command(commands, "serve", "configure step by step in the browser")
+    serve.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
     serve.add_argument("--host", default="127.0.0.1", help="address to bind (default: loopback)")
     serve.add_argument("--port", type=int, default=8080, help="port (0: any free one)")
-    serve.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
-    serve.add_argument("--hints", metavar="FILE")
+    serve.add_argument("--env", action="append", default=[], metavar="NAME=VALUE", help=ENV_HELP)
+    serve.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
     serve.set_defaults(run=cmd_serve)
     return top
 

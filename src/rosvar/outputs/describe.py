@@ -98,3 +98,19 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
         ],
         "diagnostics": [d.to_json() for d in model.diagnostics],
     }
+
+
+EXACT_BELOW = 10**7
+SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def count_text(count: int) -> str:
+    """A count for people: exact while short, else ``≈ 8.8 × 10⁵⁹`` (the JSON stays exact)."""
+    if count < EXACT_BELOW:
+        return str(count)
+    digits = str(count)
+    exponent = len(digits) - 1
+    mantissa = round(count / 10**exponent, 1)
+    if mantissa >= 10:  # 9.96 rounds up
+        mantissa, exponent = 1.0, exponent + 1
+    return f"≈ {mantissa} × 10{str(exponent).translate(SUPERSCRIPTS)}"

@@ -188,6 +188,18 @@ def test_an_arg_the_graph_does_not_see_is_not_a_feature(ws: LaunchWorkspace, bod
     assert arg_names(model_of(ws), "a.launch") == []
 
 
+def test_an_arg_only_set_by_value_is_not_a_feature(ws: LaunchWorkspace) -> None:
+    """Husky's move_group.launch: ``command_args`` has a ``value=`` under ``if`` and under
+    ``unless``; the command line cannot set it (roslaunch refuses to override it)."""
+    ws.launch(
+        "a.launch",
+        TOGGLE + '  <arg unless="$(arg x)" name="c" value=""/>\n'
+        '  <arg if="$(arg x)" name="c" value="--debug"/>\n'
+        '  <node pkg="pkg" type="t" name="n" args="$(arg c)"/>\n',
+    )
+    assert arg_names(model_of(ws), "a.launch") == ["x"]
+
+
 def test_include_arg_passing_makes_the_includers_arg_a_feature(ws: LaunchWorkspace) -> None:
     ws.launch("a.launch", X + INCLUDE_B.format(attrs="", body='<arg name="y" value="$(arg x)"/>'))
     ws.launch("b.launch", B_USES_Y)

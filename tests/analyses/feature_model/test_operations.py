@@ -20,7 +20,7 @@ if TYPE_CHECKING:
     from conftest import LaunchWorkspace
 
 
-def two_files(ws: LaunchWorkspace) -> FeatureModel:
+def two_files(ws: LaunchWorkspace, *, products: bool = False) -> FeatureModel:
     ws.launch(
         "a.launch",
         '  <arg name="robot" default="kobuki"/>\n'
@@ -35,7 +35,7 @@ def two_files(ws: LaunchWorkspace) -> FeatureModel:
         '  <param name="speed" value="$(arg mode)"/>\n'
         '  <node pkg="pkg" type="t" name="x"/>\n',
     )
-    return extract(ws.analysis())
+    return extract(ws.analysis(), products=products)
 
 
 def test_count_by_hand_for_two_files(ws: LaunchWorkspace) -> None:
@@ -54,6 +54,18 @@ def test_count_by_hand_for_two_files(ws: LaunchWorkspace) -> None:
     #       not a clash for every value, so the solver keeps it.)
     assert count_configurations(model) == 11
     assert brute_force_count(model) == 11
+
+
+def test_in_products_an_included_file_takes_its_args_from_the_include(
+    ws: LaunchWorkspace,
+) -> None:
+    """As above, but a requires b with b's args at their defaults (``products``): "a on,
+    b on, mode=<other>" goes too (2 robot x 3 use_x = 6 -> 9), then the clash as above
+    (2 robot x 1 x 1 mode = 2 -> 7)."""
+    model = two_files(ws, products=True)
+    assert count_configurations(model) == brute_force_count(model) == 7
+    [requires] = model.requires
+    assert requires.text.endswith("which takes no args from the command line then")
 
 
 @pytest.mark.parametrize("extra_if", ["", ' if="$(arg flag)"'])

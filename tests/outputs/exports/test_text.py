@@ -10,6 +10,7 @@ import pytest
 from rosvar.analyses.feature_model import extraction
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.operations import count_configurations
+from rosvar.outputs.describe import count_text
 from rosvar.outputs.exports import text
 from rosvar.outputs.exports._common import conflicts
 
@@ -58,7 +59,7 @@ def test_examples(examples_model: FeatureModel) -> None:
 
 def test_corpus(model: FeatureModel) -> None:
     report = text.write(model)
-    assert f"  {count_configurations(model)} valid configurations\n" in report
+    assert f"  {count_text(count_configurations(model))} valid configurations\n" in report
     for file in model.files:
         assert f"\n    {file.id}\n" in report
     assert report.count("\n    simplest trigger: ") == len(conflicts(model))

@@ -83,7 +83,7 @@ class Live:
 
 def configurator(paths: list[Path], package_path: str = "") -> Configurator:
     analysis = Analysis(discover([str(p) for p in paths], ros_package_path=package_path))
-    return Configurator(analysis, extract(analysis))
+    return Configurator(analysis, extract(analysis, products=True))
 
 
 @contextmanager

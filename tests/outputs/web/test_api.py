@@ -49,7 +49,9 @@ def test_a_tab_naming_its_version_gets_only_what_changed(examples: Live) -> None
     whole = examples.call("GET", f"/api/state?session={reply['session']}").json()
     changed = {k for k, f in whole["features"].items() if f != reply["features"][k]}
     assert file in changed and set(after["features"]) == changed
-    assert "configurations" in after and "conflicts" not in after  # unchanged fields are left out
+    assert "configurations" in after
+    for field in ("conflicts", "graph", "command"):  # unchanged fields are left out
+        assert (field in after) == (whole[field] != reply[field]), field
 
 
 def test_the_state_names_each_args_default_value(examples: Live) -> None:

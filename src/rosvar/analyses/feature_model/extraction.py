@@ -25,7 +25,7 @@ from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
-from rosvar.logic.conditions import PredicateAtom, SlotAtom
+from rosvar.logic.conditions import ConditionSpace, PredicateAtom, SlotAtom
 from rosvar.logic.inputs import UNSET, ArgInput
 from rosvar.logic.terms import Apply, Hole, Operand, term_inputs
 from rosvar.workspace.paths import real_path
@@ -92,13 +92,42 @@ def graph_inputs(model: LaunchModel) -> set[ArgInput]:
     return {i for i in inputs | terms | predicate_inputs if i.file == model.file}
 
 
+def _given_by_include(space: ConditionSpace, target: FileFeature) -> BDD:
+    """The included file's args at their defaults (as when not given on the command line;
+    ``<default: …>`` where the default is a substitution): a file loaded by an include takes
+    its args from the include, so in a product that includes it its own args are not free
+    (a required arg, without a default, is left alone)."""
+    unset = space.true
+    for arg in target.args:
+        defaults = sorted((v.slot is not UNSET, v.id) for v in arg.values if v.default)
+        if defaults:
+            by_id = {v.id: v for v in arg.values}
+            unset &= by_id[defaults[0][1]].variable
+    return unset
+
+
+def _set_by_value(model: LaunchModel) -> set[str]:
+    """Args whose every declaration gives a ``value=``: roslaunch refuses to override them
+    from the command line, so they are no features (as the paper's A leaves them out)."""
+    return {a.name for a in model.args if a.value is not None} - {
+        a.name for a in model.args if a.value is None
+    }
+
+
 @collector_paused()  # the collector would rescan the whole heap of models as it grows
 def extract(
     analysis: Analysis,
     files: Sequence[str] | None = None,
     progress: Callable[[int, int, str], None] | None = None,
+    *,
+    products: bool = False,
 ) -> FeatureModel:
-    """Algorithm 1 over ``files`` (default: every launch file of the workspace)."""
+    """Algorithm 1 over ``files`` (default: every launch file of the workspace).
+
+    ``products``: the model of the products the configuration engine builds, where a file
+    loaded by an include takes its args from the include, so its own are at their defaults
+    (:func:`_given_by_include`); the paper's model leaves them free.
+    """
     space = analysis.space
     chosen = list(files if files is not None else analysis.workspace.launch_files)
     models: list[LaunchModel] = []
@@ -115,8 +144,9 @@ def extract(
         feature = FileFeature(label, model.file, space.file_atom(model.file, label))
         affecting = graph_inputs(model)
         declared = {a.name: a for a in model.args if a.input is not None}
+        fixed = _set_by_value(model)
         for name, input_ in model.inputs.items():
-            if input_ not in affecting:
+            if input_ not in affecting or name in fixed:
                 continue
             decl = declared.get(name)
             default = model.unset_defaults.get(name) or (decl.default if decl else None)
@@ -158,20 +188,26 @@ def extract(
                 if target_feature is None:
                     continue
                 when = include.condition & condition
+                unset = _given_by_include(space, target_feature) if products else space.true
                 requires.append(
                     Constraint(
                         "requires",
                         (source.id, target_feature.id),
-                        ~(source.variable & when) | target_feature.variable,
+                        ~(source.variable & when) | (target_feature.variable & unset),
                         when,
-                        f"{source.id} includes {target_feature.id}",
+                        f"{source.id} includes {target_feature.id}"
+                        + (
+                            ", which takes no args from the command line then"
+                            if unset != space.true
+                            else ""
+                        ),
                         (include.location,),
                         space.valid_implies(when),
                     )
                 )
     buckets = index(models)
     feature_model = FeatureModel(
-        space, features, requires, buckets, models, _unknown_values(features)
+        space, features, requires, buckets, models, _unknown_values(features), products
     )
     try:
         _check_links(buckets, len(features))

@@ -92,6 +92,7 @@ class FeatureModel:
     declarations: Mapping[tuple[str, str], list[Occurrence]]  # by (kind, resolved name)
     launch_models: list[LaunchModel]
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    products: bool = False  # built for the configuration engine (``extract``'s ``products``)
     solution: Solver | ModelTooLarge = field(init=False)
 
     @property

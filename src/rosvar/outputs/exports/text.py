@@ -12,7 +12,8 @@ from collections import Counter
 
 from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
 from rosvar.analyses.feature_model.operations import core_and_dead, count_configurations
-from rosvar.diagnostics import Location
+from rosvar.diagnostics import Location, Severity
+from rosvar.outputs.describe import count_text
 from rosvar.outputs.exports._common import Tree, Triggers, conflicts
 
 INDENT = "  "
@@ -43,7 +44,7 @@ def _summary(model: FeatureModel, tree: Tree, configurations: int | None) -> lis
         f"{_plural(len(values), 'value')}",
         f"{INDENT}{_plural(len(model.constraints), 'constraint')}"
         + (f": {by_kind}" if by_kind else ""),
-        f"{INDENT}{'unknown number of' if configurations is None else configurations} "
+        f"{INDENT}{'unknown number of' if configurations is None else count_text(configurations)} "
         "valid configurations",
     ]
 
@@ -126,5 +127,10 @@ def write(model: FeatureModel) -> str:
     lines += _conflicts(model, tree)
     if model.diagnostics:
         lines += ["", "Diagnostics"]
-        lines += [f"{INDENT}{diagnostic}" for diagnostic in model.diagnostics]
+        lines += [f"{INDENT}{d}" for d in model.diagnostics if d.severity is not Severity.NOTE]
+        notes = Counter(d.code for d in model.diagnostics if d.severity is Severity.NOTE)
+        lines += [
+            f"{INDENT}{_plural(count, 'note')} [{code}] (listed on stderr and in --format json)"
+            for code, count in sorted(notes.items())
+        ]
     return "\n".join(lines) + "\n"
