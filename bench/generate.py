@@ -345,6 +345,10 @@ UNIFORM_STRINGS = (("robot_name", "robot"), ("robot_ns", "base"))
 
 def _uniform_launch(package: str, position: int, last: int, rng: random.Random) -> str:
     """One launch file of the uniform shape; ``last`` is the package's last position."""
+
+    def condition() -> str:
+        return f'{rng.choice(("if", "unless"))}="$(arg {rng.choice(UNIFORM_BOOLS)})"'
+
     out = _Writer()
     out.add(0, '<?xml version="1.0"?>')
     out.add(0, "<launch>")
@@ -352,33 +356,24 @@ def _uniform_launch(package: str, position: int, last: int, rng: random.Random) 
         out.add(1, f'<arg name="{name}" default="{rng.choice(("true", "false"))}"/>')
     for name, value in UNIFORM_STRINGS:
         out.add(1, f'<arg name="{name}" default="{value}_{position}"/>')
-    if position != last:
+    if position != last:  # the end of a run includes the package's last file
         target = last if position % UNIFORM_CHAIN == UNIFORM_CHAIN - 1 else position + 1
-        target = min(target, last)
-        keyword = rng.choice(("if", "unless"))
         out.add(
             1,
-            f'<include file="$(find {package})/launch/uniform_{target:02d}.launch"'
-            f' {keyword}="$(arg {rng.choice(UNIFORM_BOOLS)})">',
+            f'<include file="$(find {package})/launch/uniform_{target:02d}.launch" {condition()}>',
         )
         out.add(2, f'<arg name="use_sim" value="$(arg {rng.choice(UNIFORM_BOOLS)})"/>')
         out.add(2, '<arg name="robot_name" value="$(arg robot_name)"/>')
         out.add(1, "</include>")
-    group = f'<group ns="$(arg robot_ns)" if="$(arg {rng.choice(UNIFORM_BOOLS)})">'
-    for number in range(5):
-        depth = 1
+    for number in range(5):  # two nodes outside the group, three in it
         if number == 2:
-            out.add(1, group)
-        if number >= 2:
-            depth = 2
+            out.add(1, f'<group ns="$(arg robot_ns)" if="$(arg {rng.choice(UNIFORM_BOOLS)})">')
+        depth = 1 if number < 2 else 2
         executable = rng.choice(EXECUTABLES)
-        keyword = rng.choice(("if", "unless"))
-        name = f"$(arg robot_name)_{executable}_{number}" if number % 2 else f"{executable}_{number}"
-        out.add(
-            depth,
-            f'<node pkg="{package}" type="{executable}" name="{name}"'
-            f' {keyword}="$(arg {rng.choice(UNIFORM_BOOLS)})">',
-        )
+        name = f"{executable}_{number}"
+        if number % 2:
+            name = f"$(arg robot_name)_{name}"
+        out.add(depth, f'<node pkg="{package}" type="{executable}" name="{name}" {condition()}>')
         out.add(depth + 1, f'<param name="rate" value="{rng.randint(1, 100)}"/>')
         out.add(depth, "</node>")
     out.add(1, "</group>")

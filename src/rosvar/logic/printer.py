@@ -249,12 +249,14 @@ def _render_cube(
     return " ∧ ".join(parts)
 
 
-def _sort_key(key: object) -> tuple[int, str]:
+def _sort_key(key: object) -> tuple[int, str, str]:
+    """Files, then inputs, then predicates, each by name; ties (an arg of the same name in
+    two files, two tests of one term) in a fixed order too."""
     if isinstance(key, FileAtom):
-        return (-1, key.label)
+        return (-1, key.label, key.file)
     if isinstance(key, PredicateAtom):
-        return (1, str(key.term))
-    return (0, str(key))
+        return (1, str(key.term), key.test)
+    return (0, str(key), key.file if isinstance(key, ArgInput) else "")
 
 
 def _merge_cubes(cubes: list[Cube], domains: Domains) -> list[Cube]:

@@ -10,28 +10,24 @@ from __future__ import annotations
 import argparse
 import contextlib
 import gc
-import json
 import os
 import sys
 import time
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 from rosvar import __version__
-from rosvar.analyses.feature_model.extraction import extract
-from rosvar.analyses.feature_model.model import ModelTooLarge
-from rosvar.analyses.metrics import compute
-from rosvar.analyses.resolve import resolve
-from rosvar.configuration.choices import Action, ChoiceError, UserChoice
-from rosvar.configuration.derivation import Presence
-from rosvar.configuration.engine import ConfigurationState, Configurator, Selection
+from rosvar.configuration.choices import Action
 from rosvar.diagnostics import Severity
-from rosvar.interpreter.workspace_models import Analysis
-from rosvar.outputs.describe import describe_model
-from rosvar.outputs.exports import WRITERS, write
-from rosvar.outputs.web.server import make_server
+from rosvar.outputs.exports import FORMATS
 from rosvar.ros.names import command_line_mappings
-from rosvar.workspace import Workspace, discover
-from rosvar.workspace.hints import load_hints
+
+# Each command imports what it needs when it runs: `dd` (and CUDD), the interpreter, numpy
+# and the web server are not what `--version`, `--help` or another command pays for.
+if TYPE_CHECKING:
+    from rosvar.configuration.engine import ConfigurationState
+    from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.workspace import Workspace
 
 EXIT_OK, EXIT_FAILS, EXIT_USAGE, EXIT_INPUT, EXIT_TOO_LARGE = 0, 1, 2, 3, 4
 
@@ -49,19 +45,28 @@ def _print_json(document: object) -> None:
 
     Python's fast JSON encoder only writes without indentation: indented, printing a large
     analysis takes longer than computing it (``jq`` indents it again)."""
+    import json
+
     indent = 2 if sys.stdout.isatty() else None
     sys.stdout.write(json.dumps(document, indent=indent, ensure_ascii=False) + "\n")
 
 
-def _workspace(paths: Sequence[str]) -> Workspace:
-    workspace = discover(paths)
+def _workspace(paths: Sequence[str], deps: Sequence[str]) -> Workspace:
+    """The packages and launch files below ``paths``; those below ``deps`` (then the
+    environment's ROS_PACKAGE_PATH) resolve ``$(find)`` but add no launch files."""
+    from rosvar.workspace import discover
+
+    workspace = discover(paths, deps=deps)
     for diagnostic in workspace.diagnostics:
         print(diagnostic, file=sys.stderr)
     return workspace
 
 
 def cmd_analyze(options: argparse.Namespace) -> int:
-    workspace = _workspace(options.paths)
+    from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.outputs.describe import describe_model
+
+    workspace = _workspace(options.paths, options.deps)
     if not workspace.launch_files:
         print("rosvar: no launch files found", file=sys.stderr)
         return EXIT_INPUT
@@ -90,13 +95,16 @@ def cmd_analyze(options: argparse.Namespace) -> int:
 
 
 def cmd_resolve(options: argparse.Namespace) -> int:
+    from rosvar.analyses.resolve import resolve
+    from rosvar.interpreter.workspace_models import Analysis
+
     paths = [os.path.abspath(words[0]) for words in options.launch if len(words) == 1]
     missing = [f for f in paths if not os.path.isfile(f)]
     if missing:
         print(f"rosvar: launch file not found: {', '.join(missing)}", file=sys.stderr)
         return EXIT_INPUT
     # the launch files' own packages are known even when no PATH contains them
-    workspace = _workspace([*options.paths, *paths])
+    workspace = _workspace([*options.paths, *paths], options.deps)
     files = _launch_files(options.launch, workspace)
     if files is None:
         return EXIT_INPUT
@@ -165,7 +173,10 @@ def _environment(items: Sequence[str]) -> dict[str, str] | None:
 
 
 def _analysis(options: argparse.Namespace, env: dict[str, str] | None = None) -> Analysis | None:
-    workspace = _workspace(options.paths)
+    from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.workspace.hints import load_hints
+
+    workspace = _workspace(options.paths, options.deps)
     if not workspace.launch_files:
         print("rosvar: no launch files found", file=sys.stderr)
         return None
@@ -188,6 +199,9 @@ def _analysis_with_env(options: argparse.Namespace) -> tuple[Analysis, dict[str,
 
 
 def cmd_features(options: argparse.Namespace) -> int:
+    from rosvar.analyses.feature_model.extraction import extract
+    from rosvar.outputs.exports import write
+
     analysis = _analysis(options)
     if analysis is None:
         return EXIT_INPUT
@@ -202,6 +216,9 @@ def cmd_features(options: argparse.Namespace) -> int:
 
 
 def cmd_metrics(options: argparse.Namespace) -> int:
+    from rosvar.analyses.feature_model.extraction import extract
+    from rosvar.analyses.metrics import compute
+
     analysis = _analysis(options)
     if analysis is None:
         return EXIT_INPUT
@@ -215,6 +232,10 @@ def cmd_metrics(options: argparse.Namespace) -> int:
 
 
 def cmd_configure(options: argparse.Namespace) -> int:
+    from rosvar.analyses.feature_model.extraction import extract
+    from rosvar.configuration.choices import ChoiceError, UserChoice
+    from rosvar.configuration.engine import Configurator
+
     loaded = _analysis_with_env(options)
     if isinstance(loaded, int):
         return loaded
@@ -237,6 +258,9 @@ def cmd_configure(options: argparse.Namespace) -> int:
 
 def _print_state(state: ConfigurationState) -> None:
     """The summary of a configuration step, for people."""
+    from rosvar.configuration.derivation import Presence
+    from rosvar.configuration.engine import Selection
+
     features = state.features.values()
     files = [(k, f) for k, f in state.features.items() if f.kind == "file"]
     print(
@@ -298,6 +322,10 @@ class _Choice(argparse.Action):
 
 
 def cmd_serve(options: argparse.Namespace) -> int:
+    from rosvar.analyses.feature_model.extraction import extract
+    from rosvar.configuration.engine import Configurator
+    from rosvar.outputs.web.server import make_server
+
     loaded = _analysis_with_env(options)
     if isinstance(loaded, int):
         return loaded
@@ -320,6 +348,17 @@ def cmd_serve(options: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def _deps_option(command: argparse.ArgumentParser) -> None:
+    command.add_argument(
+        "--deps",
+        action="append",
+        default=[],
+        metavar="PATH",
+        help="packages below PATH resolve $(find) and executables but add no launch files "
+        "(e.g. /opt/ros/noetic/share; repeatable; ROS_PACKAGE_PATH is read after them)",
+    )
+
+
 def parser() -> argparse.ArgumentParser:
     top = argparse.ArgumentParser(
         prog="rosvar",
@@ -329,6 +368,7 @@ def parser() -> argparse.ArgumentParser:
     commands = top.add_subparsers(dest="command", required=True)
     analyze = commands.add_parser("analyze", help="interpret every launch file below PATH")
     analyze.add_argument("paths", nargs="+", metavar="PATH")
+    _deps_option(analyze)
     analyze.add_argument("--json", action="store_true", help="machine-readable output")
     analyze.set_defaults(run=cmd_analyze)
     res = commands.add_parser(
@@ -337,6 +377,7 @@ def parser() -> argparse.ArgumentParser:
     res.add_argument(
         "paths", nargs="*", metavar="PATH", help="package roots (and name:=value args)"
     )
+    _deps_option(res)
     res.add_argument(
         "--launch",
         action="append",
@@ -350,12 +391,14 @@ def parser() -> argparse.ArgumentParser:
     res.set_defaults(run=cmd_resolve)
     features = commands.add_parser("features", help="the feature model (paper Algorithm 1)")
     features.add_argument("paths", nargs="+", metavar="PATH")
+    _deps_option(features)
     features.add_argument("--hints", metavar="FILE", help="YAML with extra values (docs/hints.md)")
-    features.add_argument("--format", choices=sorted(WRITERS), default="text")
+    features.add_argument("--format", choices=sorted(FORMATS), default="text")
     features.add_argument("-o", "--output", metavar="FILE")
     features.set_defaults(run=cmd_features)
     metrics = commands.add_parser("metrics", help="the paper's Table I and II metrics")
     metrics.add_argument("paths", nargs="+", metavar="PATH")
+    _deps_option(metrics)
     metrics.add_argument("--hints", metavar="FILE")
     metrics.add_argument("--json", action="store_true")
     metrics.set_defaults(run=cmd_metrics)
@@ -363,6 +406,7 @@ def parser() -> argparse.ArgumentParser:
         "configure", help="one step of a configuration: the state after the given choices"
     )
     configure.add_argument("paths", nargs="+", metavar="PATH")
+    _deps_option(configure)
     for action in Action:
         metavar = "FILE:ARG=VALUE" if action == Action.SET else "FEATURE"
         configure.add_argument(
@@ -376,6 +420,7 @@ def parser() -> argparse.ArgumentParser:
     configure.set_defaults(run=cmd_configure)
     serve = commands.add_parser("serve", help="configure step by step in the browser")
     serve.add_argument("paths", nargs="+", metavar="PATH")
+    _deps_option(serve)
     serve.add_argument("--host", default="127.0.0.1", help="address to bind (default: loopback)")
     serve.add_argument("--port", type=int, default=8080, help="port (0: any free one)")
     serve.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
@@ -406,7 +451,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 130
     except BrokenPipeError:
         return EXIT_OK
-    except ModelTooLarge as error:  # what needs the solver of a model listed but not solved
+    except Exception as error:
+        from rosvar.analyses.feature_model.model import ModelTooLarge  # imported if raised
+
+        if not isinstance(error, ModelTooLarge):
+            raise
+        # what needs the solver of a model listed but not solved
         print(f"rosvar: the feature model is too large to solve: {error}", file=sys.stderr)
         return EXIT_TOO_LARGE
     finally:
