@@ -21,25 +21,7 @@ from contextlib import contextmanager
 from functools import cache
 from typing import Any, NamedTuple
 
-
-def _import_cudd() -> Any:
-    """``dd.cudd``, without the ``networkx`` that ``dd`` imports for drawing diagrams (an
-    optional import, which rosvar never uses): it was most of the start-up of every command
-    that analyses. A ``None`` in ``sys.modules`` makes that import fail as if it were not
-    installed; the entry is removed afterwards, so nothing else is kept from importing it."""
-    blocked = "networkx" not in sys.modules
-    if blocked:
-        sys.modules["networkx"] = None  # type: ignore[assignment]
-    try:
-        import dd.cudd
-
-        return dd.cudd
-    finally:
-        if blocked:
-            del sys.modules["networkx"]
-
-
-_cudd = _import_cudd()
+import dd.cudd as _cudd
 
 BDD = Any  # dd.cudd.Function: dd ships no type information
 Manager = Any  # dd.cudd.BDD
