@@ -25,7 +25,16 @@ keep the corpus's proportions so per-file cost stays comparable as the size grow
   ``MAX_LEVEL + 1`` files, as in real systems.
 
 Output is a pure function of ``(n_files, seed)``: each file draws from its own seeded RNG.
-Run as a script to write a workspace: ``python bench/generate.py DIR N [--seed S]``.
+
+The *uniform* shape (:func:`generate_uniform`, ``--shape uniform``) is the one of the
+workspace-scale issue instead: every file alike, with 5 args (3 booleans, 2 strings), 5
+nodes each under ``if``/``unless`` of a boolean, one ``<group>`` (a namespace from an arg,
+itself conditional) and one ``<include>`` passing args. Includes chain the files of a package
+in runs of ``UNIFORM_CHAIN`` and the last of a run includes the package's last file, the one
+file without an include, so chains stay short whatever the size.
+
+Run as a script to write a workspace:
+``python bench/generate.py DIR N [--seed S] [--shape corpus|uniform]``.
 """
 
 from __future__ import annotations
@@ -329,13 +338,79 @@ def generate_workspace(root: Path, n_files: int, seed: int = 0) -> list[Path]:
     return written
 
 
+UNIFORM_CHAIN = 5  # files of a package that include each other in a row
+UNIFORM_BOOLS = ("use_sim", "use_lidar", "use_teleop")
+UNIFORM_STRINGS = (("robot_name", "robot"), ("robot_ns", "base"))
+
+
+def _uniform_launch(package: str, position: int, last: int, rng: random.Random) -> str:
+    """One launch file of the uniform shape; ``last`` is the package's last position."""
+
+    def condition() -> str:
+        return f'{rng.choice(("if", "unless"))}="$(arg {rng.choice(UNIFORM_BOOLS)})"'
+
+    out = _Writer()
+    out.add(0, '<?xml version="1.0"?>')
+    out.add(0, "<launch>")
+    for name in UNIFORM_BOOLS:
+        out.add(1, f'<arg name="{name}" default="{rng.choice(("true", "false"))}"/>')
+    for name, value in UNIFORM_STRINGS:
+        out.add(1, f'<arg name="{name}" default="{value}_{position}"/>')
+    if position != last:  # the end of a run includes the package's last file
+        target = last if position % UNIFORM_CHAIN == UNIFORM_CHAIN - 1 else position + 1
+        out.add(
+            1,
+            f'<include file="$(find {package})/launch/uniform_{target:02d}.launch" {condition()}>',
+        )
+        out.add(2, f'<arg name="use_sim" value="$(arg {rng.choice(UNIFORM_BOOLS)})"/>')
+        out.add(2, '<arg name="robot_name" value="$(arg robot_name)"/>')
+        out.add(1, "</include>")
+    for number in range(5):  # two nodes outside the group, three in it
+        if number == 2:
+            out.add(1, f'<group ns="$(arg robot_ns)" if="$(arg {rng.choice(UNIFORM_BOOLS)})">')
+        depth = 1 if number < 2 else 2
+        executable = rng.choice(EXECUTABLES)
+        name = f"{executable}_{number}"
+        if number % 2:
+            name = f"$(arg robot_name)_{name}"
+        out.add(depth, f'<node pkg="{package}" type="{executable}" name="{name}" {condition()}>')
+        out.add(depth + 1, f'<param name="rate" value="{rng.randint(1, 100)}"/>')
+        out.add(depth, "</node>")
+    out.add(1, "</group>")
+    out.add(0, "</launch>")
+    return "\n".join(out.lines) + "\n"
+
+
+def generate_uniform(root: Path, n_files: int, seed: int = 0) -> list[Path]:
+    """Write ``n_files`` launch files of the uniform shape below ``root``; returns their paths."""
+    written: list[Path] = []
+    for number in range((n_files + FILES_PER_PACKAGE - 1) // FILES_PER_PACKAGE):
+        package = root / _package_name(number)
+        (package / "launch").mkdir(parents=True, exist_ok=True)
+        (package / "package.xml").write_text(_package_xml(package.name), encoding="utf-8")
+        (package / ".executables").write_text("\n".join(EXECUTABLES) + "\n", encoding="utf-8")
+        count = min(FILES_PER_PACKAGE, n_files - number * FILES_PER_PACKAGE)
+        for position in range(count):
+            rng = random.Random(f"uniform:{seed}:{number}:{position}")
+            path = package / "launch" / f"uniform_{position:02d}.launch"
+            path.write_text(
+                _uniform_launch(package.name, position, count - 1, rng), encoding="utf-8"
+            )
+            written.append(path)
+    return written
+
+
+SHAPES = {"corpus": generate_workspace, "uniform": generate_uniform}
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("root", type=Path)
     parser.add_argument("n_files", type=int)
     parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--shape", choices=sorted(SHAPES), default="corpus")
     options = parser.parse_args()
-    paths = generate_workspace(options.root, options.n_files, options.seed)
+    paths = SHAPES[options.shape](options.root, options.n_files, options.seed)
     print(f"{len(paths)} launch files written below {options.root}")
 
 

@@ -30,6 +30,7 @@ import platform
 import pstats
 import random
 import resource
+import shutil
 import signal
 import statistics
 import subprocess
@@ -57,6 +58,7 @@ REPEATS = 3
 SINGLE_RUN_FROM = 2_000  # workloads this large are timed once: one run is minutes
 GENERATED_SIZES = (100, 400, 2_000, 10_000)
 QUICK_SIZES = (100, 400)
+UNIFORM_SIZES = (400, 2_000)  # the issue's shape: 5 args, 5 conditional nodes, group, include
 GROWTH_KEY = "analyze_cpu_ms"  # CPU time: robust to other load on a shared machine
 LINEAR_EXPONENT = math.log2(2.3)  # "x2 files => at most x2.3 time", as a power of n
 PROFILE_TOP = 15
@@ -95,26 +97,33 @@ def _corpus(system: str) -> Workload:
     return Workload(system, "corpus", prepare, package_path=str(EXTERNAL))
 
 
-def _generated(n_files: int) -> Workload:
-    def prepare(scratch: Path) -> list[str]:
-        from generate import generate_workspace  # bench/ is sys.path[0] for this script
+def _generated(n_files: int, shape: str = "corpus") -> Workload:
+    """A workspace of ``bench/generate.py``: ``gen-N`` shaped like the corpus, ``uni-N`` the
+    uniform shape of the workspace-scale issue (every file alike)."""
+    prefix = "gen" if shape == "corpus" else "uni"
 
-        root = scratch / f"gen{n_files}"
+    def prepare(scratch: Path) -> list[str]:
+        from generate import SHAPES  # bench/ is sys.path[0] for this script
+
+        root = scratch / f"{prefix}{n_files}"
         if not root.exists():
             started = time.perf_counter()
-            generate_workspace(root, n_files, seed=0)
+            SHAPES[shape](root, n_files, 0)
             took = time.perf_counter() - started
             print(f"  generated {n_files} launch files in {took:.1f} s", file=sys.stderr)
         return [str(root)]
 
     repeats = 1 if n_files >= SINGLE_RUN_FROM else REPEATS
-    return Workload(f"gen-{n_files}", "generated", prepare, size=n_files, repeats=repeats)
+    family = "generated" if shape == "corpus" else shape
+    return Workload(f"{prefix}-{n_files}", family, prepare, size=n_files, repeats=repeats)
 
 
 for _system in ("kobuki", "turtlebot2", "lizi", "husky"):
     register_workload(_corpus(_system))
 for _size in GENERATED_SIZES:
     register_workload(_generated(_size))
+for _size in UNIFORM_SIZES:
+    register_workload(_generated(_size, "uniform"))
 
 
 # -- measurements inside the isolated process (run.py --one) -------------------------------
@@ -564,9 +573,126 @@ def measure_whole_process(workload: Workload, roots: list[str], outcome: Outcome
     finished = run_bounded(command, _env(workload), stdout=False)
     if finished.returncode == 0:
         outcome.metrics["whole_ms"] = finished.wall_ms
+        outcome.metrics["whole_peak_mb"] = finished.peak_mb
         return True
     outcome.notes.append(_failure(finished, "whole-process"))
     return False
+
+
+# -- whole processes as a user runs them -----------------------------------------------------
+COMMAND_REPEATS = 3
+HAROSVAR = "harosvar"  # the paper's prototype (github.com/git-afsanos/harosvar), if installed
+
+
+@dataclass(frozen=True)
+class Command:
+    """A command line measured as a whole process: wall time (median of
+    ``COMMAND_REPEATS``) and peak RSS (the largest), with the targets of the issue."""
+
+    name: str
+    argv: Callable[[Path], list[str] | None]  # None: not available on this machine
+    wall_s: float | None = None
+    peak_mb: float | None = None
+
+
+def _rosvar(*words: str, workload: str | None = None) -> Callable[[Path], list[str]]:
+    def argv(scratch: Path) -> list[str]:
+        roots = WORKLOADS[workload].prepare(scratch) if workload else []
+        return [*_rosvar_command(), *words[:1], *roots, *words[1:]]
+
+    return argv
+
+
+def _harosvar(scratch: Path) -> list[str] | None:
+    found = shutil.which(HAROSVAR)
+    return None if found is None else [found, *WORKLOADS["uni-400"].prepare(scratch)]
+
+
+COMMANDS: list[Command] = [
+    Command("rosvar --version", _rosvar("--version"), wall_s=0.15),
+    Command("rosvar analyze uni-400", _rosvar("analyze", workload="uni-400")),
+    Command(
+        "rosvar analyze uni-400 --json",
+        _rosvar("analyze", "--json", workload="uni-400"),
+        wall_s=1.0,
+        peak_mb=150,
+    ),
+    Command(
+        "rosvar analyze uni-2000 --json", _rosvar("analyze", "--json", workload="uni-2000"), 5.0
+    ),
+    Command(
+        "rosvar features husky _external",
+        lambda _scratch: [*_rosvar_command(), "features", str(CORPUS / "husky"), str(EXTERNAL)],
+        wall_s=2.0,
+    ),
+    Command("harosvar uni-400 (the paper's prototype)", _harosvar),
+]
+
+
+@dataclass
+class CommandOutcome:
+    command: Command
+    wall_ms: float | None = None
+    peak_mb: float | None = None
+    note: str = ""
+
+
+def measure_commands(scratch: Path) -> list[CommandOutcome]:
+    """Each command of :data:`COMMANDS` in fresh processes, output to /dev/null, with an
+    empty ROS_PACKAGE_PATH (the command line says everything)."""
+    outcomes = []
+    for command in COMMANDS:
+        print(f"{command.name} ...", file=sys.stderr, flush=True)
+        outcome = CommandOutcome(command)
+        outcomes.append(outcome)
+        argv = command.argv(scratch)
+        if argv is None:
+            outcome.note = "not installed"
+            continue
+        walls, peaks = [], []
+        for _ in range(COMMAND_REPEATS):
+            finished = run_bounded(argv, {**os.environ, "ROS_PACKAGE_PATH": ""}, stdout=False)
+            if finished.returncode != 0:
+                outcome.note = _failure(finished, "run")
+                break
+            walls.append(finished.wall_ms)
+            peaks.append(finished.peak_mb)
+        if walls:
+            outcome.wall_ms, outcome.peak_mb = statistics.median(walls), max(peaks)
+    return outcomes
+
+
+def command_lines(outcomes: Sequence[CommandOutcome]) -> list[str]:
+    """The commands' figures as a Markdown table, then a PASS/FAIL line per target."""
+    lines = ["| command | wall s | peak MB | target |", "|---|---:|---:|---|"]
+    verdicts = []
+    for outcome in outcomes:
+        command = outcome.command
+        wall = None if outcome.wall_ms is None else outcome.wall_ms / 1000
+        limits = []
+        if command.wall_s is not None:
+            limits.append(f"≤ {command.wall_s:g} s")
+            verdicts.append(_verdict(command.name, "wall", wall, command.wall_s, "s", outcome))
+        if command.peak_mb is not None:
+            limits.append(f"≤ {command.peak_mb:g} MB")
+            verdicts.append(
+                _verdict(command.name, "peak", outcome.peak_mb, command.peak_mb, "MB", outcome)
+            )
+        shown = outcome.note or _number(wall, 2)
+        lines.append(
+            f"| `{command.name}` | {shown} | {_number(outcome.peak_mb)} | {', '.join(limits)} |"
+        )
+    return [*lines, "", *verdicts]
+
+
+def _verdict(
+    name: str, what: str, value: float | None, limit: float, unit: str, outcome: CommandOutcome
+) -> str:
+    label = f"{name}: {what} ≤ {limit:g} {unit}"
+    if value is None:
+        return f"FAIL  {label}: {outcome.note or 'no figure'}"
+    status = "PASS" if value <= limit else "FAIL"
+    return f"{status}  {label}: {value:,.2f} {unit}"
 
 
 # Each returns whether it got its figures; a failure skips it for larger sizes of the family.
@@ -897,7 +1023,11 @@ def _kept_notes() -> str:
 
 
 def write_doc(
-    outcomes: Sequence[Outcome], targets: list[str], profiled: str | None, context: str
+    outcomes: Sequence[Outcome],
+    targets: list[str],
+    commands: list[str],
+    profiled: str | None,
+    context: str,
 ) -> None:
     sizes = ", ".join(f"{w.size:,}" for w in WORKLOADS.values() if w.family == "generated")
     imports = [mb for o in outcomes if (mb := o.get("import_mb")) is not None]
@@ -950,6 +1080,25 @@ def write_doc(
     if notes:
         parts += ["Notes:", "", *notes, ""]
     parts += ["## Targets", "", "```", *targets, "```", ""]
+    if commands:
+        table, verdicts = commands[: commands.index("")], commands[commands.index("") + 1 :]
+        parts += [
+            "## Whole processes, as a user runs them",
+            "",
+            f"Wall time (median of {COMMAND_REPEATS}) and peak RSS (`wait4`'s `ru_maxrss`) "
+            "of each command in a fresh process, output to `/dev/null`, ROS_PACKAGE_PATH "
+            "empty; the targets are those of the workspace-scale issue. `uni-N` is "
+            "`bench/generate.py --shape uniform` (5 args, 5 conditional nodes, a group and "
+            f"an include per file); the paper's prototype (`{HAROSVAR}`) runs on the same "
+            "workspace where it is installed.",
+            "",
+            *table,
+            "",
+            "```",
+            *verdicts,
+            "```",
+            "",
+        ]
     if profiled:
         parts += [
             f"## Profile (top {PROFILE_TOP} by cumulative time)",
@@ -980,7 +1129,7 @@ def run_all(options: argparse.Namespace) -> None:
     load_before, revision_before = os.getloadavg()[1], _revision()
     with tempfile.TemporaryDirectory(prefix="rosvar-bench-") as scratch_dir:
         scratch = Path(scratch_dir)
-        for workload in selected(options):
+        for workload in [] if options.commands_only else selected(options):
             outcome = Outcome(workload)
             outcomes.append(outcome)
             print(f"{workload.name} ...", file=sys.stderr, flush=True)
@@ -994,6 +1143,7 @@ def run_all(options: argparse.Namespace) -> None:
                 if not measure(workload, roots, outcome) and workload.size:
                     failed.add(key)
         profiled = profile(WORKLOADS[options.profile], scratch) if options.profile else None
+        commands = [] if options.no_commands else command_lines(measure_commands(scratch))
     print()
     print(text_table(outcomes))
     for outcome in outcomes:
@@ -1002,6 +1152,9 @@ def run_all(options: argparse.Namespace) -> None:
     print()
     targets = target_lines(outcomes)
     print("\n".join(targets))
+    if commands:
+        print("\nwhole processes, as a user runs them:")
+        print("\n".join(commands))
     if profiled:
         print(f"\nprofile of {options.profile} (top {PROFILE_TOP} by cumulative time):")
         print(profiled)
@@ -1016,7 +1169,7 @@ def run_all(options: argparse.Namespace) -> None:
             f"{os.getloadavg()[1]:.1f} at the end: other work on the machine stretches wall "
             "times."
         )
-        write_doc(outcomes, targets, profiled, context)
+        write_doc(outcomes, targets, commands, profiled, context)
 
 
 def parse_options(argv: Sequence[str] | None = None) -> argparse.Namespace:
@@ -1027,6 +1180,12 @@ def parse_options(argv: Sequence[str] | None = None) -> argparse.Namespace:
     )
     parser.add_argument("--only", nargs="+", metavar="NAME", help="workloads to run, by name")
     parser.add_argument("--no-skip", action="store_true", help="attempt sizes after a failure")
+    parser.add_argument(
+        "--no-commands", action="store_true", help="skip the whole-process command rows"
+    )
+    parser.add_argument(
+        "--commands-only", action="store_true", help="only the whole-process command rows"
+    )
     parser.add_argument("--profile", metavar="NAME", choices=sorted(WORKLOADS))
     parser.add_argument("--write-doc", action="store_true", help=f"write {DOC.relative_to(REPO)}")
     # Internal: the isolated measurement process.

@@ -8,8 +8,13 @@ valid configurations, and with ``known_only`` modulo the ``<other>`` slots of ar
 
 from __future__ import annotations
 
+import itertools
 import random
 import re
+from collections.abc import Iterable, Sequence
+from pathlib import Path
+
+import pytest
 
 from logic.spaces import (
     DOMAINS,
@@ -22,10 +27,15 @@ from logic.spaces import (
     make_space,
     random_condition,
 )
+from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
-from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.conditions import PREDICATES, ConditionSpace, FileAtom, PredicateAtom
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Input
+from rosvar.logic.printer import Printer
 from rosvar.logic.terms import Hole
+from rosvar.outputs.describe import describe_model
+from rosvar.workspace import discover
 
 
 # -- readable descriptions ----------------------------------------------------------------------
@@ -200,3 +210,159 @@ def test_describe_says_when_other_values_matter() -> None:
     only_known = space.slot(WORLD, "empty")
     assert space.describe(only_known, known_only=False) == "world=empty"
     assert space.describe(only_known) != space.describe(space.true)
+
+
+# -- every description of the corpus, read back -------------------------------------------------
+CORPUS = Path(__file__).resolve().parents[2].parent / "shared" / "corpus"
+SUMMARIES = ("only for other values", "true for every known value", "a condition over ")
+
+
+class _Reader:
+    """Reads descriptions of conditions of ``space`` back into BDDs: every literal the
+    printer can write (slots, predicates, files), looked up by its text among the atoms of
+    the condition and its facts.
+
+    Two atoms may print alike (an ``$(eval)`` over an arg bound to an environment variable
+    and the same one over the arg itself): :meth:`readings` gives a BDD per way of telling
+    them apart, and one of them must be the condition.
+    """
+
+    def __init__(self, space: ConditionSpace, variables: Iterable[str], qualify: bool) -> None:
+        self.space = space
+        self.atoms: dict[str, list[BDD]] = {}
+        inputs = set()
+        for name in variables:
+            atom = space.atom_of(name)
+            if isinstance(atom, PredicateAtom):
+                text = PREDICATES[atom.test][1].format(atom.term)
+            elif isinstance(atom, FileAtom):
+                text = atom.label
+            else:
+                inputs.add(atom.input)
+                continue
+            if space.bdd.var(name) not in self.atoms.setdefault(text, []):
+                self.atoms[text].append(space.bdd.var(name))
+        self.named = {
+            (f"{i.file}:{i.name}" if qualify and isinstance(i, ArgInput) else str(i)): i
+            for i in inputs
+        }
+
+    def readings(self, text: str) -> list[BDD]:
+        alike = sorted(t for t, atoms in self.atoms.items() if len(atoms) > 1 and t in text)
+        results = []
+        for picks in itertools.product(*(range(len(self.atoms[t])) for t in alike)):
+            chosen = {t: self.atoms[t][pick] for t, pick in zip(alike, picks, strict=True)}
+            results.append(self._read(text, chosen))
+        return results
+
+    def _read(self, text: str, chosen: dict[str, BDD]) -> BDD:
+        result = self.space.false
+        for cube_text in text.split(" ∨ "):
+            if cube_text.startswith("(") and cube_text.endswith(")") and "∧" in cube_text:
+                cube_text = cube_text[1:-1]
+            cube = self.space.true
+            for part in cube_text.split(" ∧ "):
+                cube &= self._literal(part, chosen)
+            result |= cube
+        return result
+
+    def _atom(self, text: str, chosen: dict[str, BDD]) -> BDD | None:
+        found = self.atoms.get(text)
+        return None if found is None else chosen.get(text, found[0])
+
+    def _literal(self, part: str, chosen: dict[str, BDD]) -> BDD:
+        space, named = self.space, self.named
+        if part.startswith("¬(") and part.endswith(")"):
+            atom = self._atom(part[2:-1], chosen)
+            if atom is not None:
+                return ~atom
+        atom = self._atom(part, chosen)
+        if atom is not None:
+            return atom
+        atom = self._atom(part[1:], chosen) if part.startswith("¬") else None
+        if atom is not None:
+            return ~atom
+        for op in ("∈", "≠", "="):
+            name, found, rest = part.partition(op)
+            if found and name in named:
+                input_ = named[name]
+                if op == "=":
+                    return _slot_named(space, input_, rest)
+                if op == "≠":
+                    return ~_slot_named(space, input_, rest)
+                union = space.false
+                texts = rest[1:-1].split(", ")
+                for slot in space.domain(input_):
+                    if (slot if isinstance(slot, str) else repr(slot)) in texts:
+                        union |= space.slot(input_, slot)
+                return union
+        name = part.removeprefix("¬")
+        assert name in named, (part, sorted(named))
+        word = "false" if part.startswith("¬") else "true"  # in any case: True, FALSE, …
+        input_ = named[name]
+        slots = [s for s in space.domain(input_) if isinstance(s, str) and s.lower() == word]
+        assert len(slots) == 1, (part, space.domain(input_))
+        return space.slot(input_, slots[0])
+
+
+def _check_descriptions(models: Sequence[LaunchModel]) -> tuple[int, list[str]]:
+    """Describe every model as ``analyze --json`` does, then read every description back and
+    compare it with its condition modulo the facts (and, for the default view, with every
+    arg holding a known value). Returns how many were checked and the failures."""
+    space = models[0].space
+    seen: dict[tuple[BDD, bool, bool], str] = {}
+    describe = Printer.describe
+
+    def recording(self: Printer, condition: BDD, qualify: bool = False, known: bool = True) -> str:
+        text = describe(self, condition, qualify, known)
+        seen[condition, qualify, known] = text
+        return text
+
+    Printer.describe = recording  # type: ignore[method-assign]
+    try:
+        for model in models:
+            describe_model(model)
+    finally:
+        Printer.describe = describe  # type: ignore[method-assign]
+    failures = []
+    for (condition, qualify, known_only), text in seen.items():
+        inputs = space.care_inputs(space.support(condition))
+        names = [str(i) for i in inputs]
+        if len(set(names)) < len(names) and not qualify:
+            text, qualify = space.describe(condition, qualify=True, known_only=known_only), True
+        care = space.care(condition)
+        for input_ in inputs:
+            care &= space.input_constraint(input_)
+        known = care
+        if known_only:
+            for input_ in inputs:
+                if isinstance(input_, ArgInput):
+                    known &= ~space.slot(input_, OTHER)
+        if text == "false":
+            ok = (condition & care) == space.false
+        elif text == "only for other values":
+            ok = (condition & known) == space.false and (condition & care) != space.false
+        elif text == "true for every known value":
+            ok = (known & ~condition) == space.false and (care & ~condition) != space.false
+        elif text.startswith("a condition over "):
+            ok = True  # a summary of a formula too long to read
+        else:
+            variables = space.support(care) | space.support(condition)
+            within = care if (known & ~condition) == space.false else known
+            reader = _Reader(space, variables, qualify)
+            readings = [space.true] if text == "true" else reader.readings(text)
+            # a "true for every known value" shown in full is the whole formula
+            ok = any((described & within) == (condition & within) for described in readings)
+        if not ok:
+            failures.append(f"{text!r} (known_only={known_only})")
+    return len(seen), failures
+
+
+@pytest.mark.parametrize("system", ["kobuki", "turtlebot2", "lizi", "husky"])
+def test_every_corpus_description_means_its_condition(system: str) -> None:
+    if not (CORPUS / system).is_dir():
+        pytest.skip(f"corpus not found at {CORPUS}")
+    workspace = discover([CORPUS / system], deps=[CORPUS / "_external"], ros_package_path="")
+    checked, failures = _check_descriptions(Analysis(workspace).all_models())
+    assert checked > 40
+    assert failures == []

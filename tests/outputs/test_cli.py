@@ -495,3 +495,62 @@ def test_every_option_is_described_with_an_example_that_parses() -> None:
             words = shlex.split(line.split("|")[0])
             assert words[:2] == ["rosvar", name]
             top.parse_known_args(words[1:])  # exits (SystemExit) on a usage error
+
+
+# -- dependencies and start-up ------------------------------------------------------------------
+def test_every_command_takes_deps(
+    tmp_path: Path, ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Packages under --deps resolve $(find) and executables, yet are no features."""
+    import conftest
+
+    underlay = conftest.LaunchWorkspace(tmp_path / "opt")  # a sourced installation's share/
+    underlay.launch("driver.launch", '  <node pkg="base" type="drive" name="driver"/>', "base")
+    (underlay.package("base") / ".executables").write_text("drive\n")
+    main_file = ws.launch(
+        "robot.launch", '  <include file="$(find base)/launch/driver.launch"/>', "robot"
+    )
+    root, deps = str(ws.root), str(underlay.root)
+
+    code, out, _err = run(capsys, "analyze", root, "--deps", deps, "--json")
+    (model,) = json.loads(out)["files"]
+    assert code == EXIT_OK and model["file"] == main_file
+    assert [i["resolved"] for i in model["includes"]] == [True]
+    assert [n["name"] for n in model["nodes"]] == ["driver"]
+    assert model["errors"] == [] and model["diagnostics"] == []
+    code, out, _err = run(capsys, "analyze", root, "--json")
+    (alone,) = json.loads(out)["files"]
+    assert [i["resolved"] for i in alone["includes"]] == [False]
+
+    code, out, _err = run(capsys, "resolve", root, "--deps", deps, "--launch", main_file)
+    assert code == EXIT_OK and "node  /driver  (base/drive)" in out
+    code, out, _err = run(capsys, "features", root, "--deps", deps, "--format", "json")
+    assert code == EXIT_OK
+    files = [f["path"] for f in json.loads(out)["features"] if f["kind"] == "file"]
+    assert files == [main_file]
+    for argv in (("metrics",), ("configure", "--finish")):
+        code, _out, err = run(capsys, argv[0], root, "--deps", deps, *argv[1:])
+        assert code == EXIT_OK, err
+    code, _out, err = run(capsys, "analyze", root, "--deps", str(tmp_path / "nowhere"))
+    assert code == EXIT_OK and "[path-missing]" in err
+    code, _out, err = run(capsys, "serve", root, "--deps", deps, "--host", "203.0.113.1")
+    assert code == EXIT_USAGE and "cannot listen" in err  # got past the analysis
+
+
+def test_version_and_help_import_no_analysis() -> None:
+    """`--version`, `--help` and a command's `--help` import neither `dd` (nor `networkx`
+    through it), numpy, the interpreter nor the web server."""
+    heavy = ("dd", "networkx", "numpy", "rosvar.interpreter", "rosvar.outputs.web")
+    probe = (
+        "import sys\n"
+        "from rosvar.outputs.cli import main\n"
+        "for argv in (['--version'], ['--help'], ['features', '--help']):\n"
+        "    try:\n"
+        "        main(argv)\n"
+        "    except SystemExit:\n"
+        "        pass\n"
+        f"print(sorted(m for m in sys.modules if m.split('.')[0] in {heavy!r}\n"
+        f"             or m.startswith({heavy!r})))\n"
+    )
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
+    assert done.stdout.strip().splitlines()[-1] == "[]"

@@ -159,6 +159,33 @@ def test_ros_package_path_defaults_to_the_environment(
     assert discover([tmp_path / "env"]).find("from_env") == str(env)
 
 
+def test_deps_resolve_packages_but_add_no_launch_files(tmp_path: Path) -> None:
+    root = make_package(tmp_path / "ws" / "mine", "mine")
+    write(root / "launch" / "mine.launch")
+    underlay = tmp_path / "opt" / "share"
+    dep = make_package(underlay / "dep", "dep")
+    write(dep / "launch" / "dep.launch")
+    env = tmp_path / "env"
+    make_package(env / "dep", "dep")  # ROS_PACKAGE_PATH comes after --deps
+    from_env = make_package(env / "only_env", "only_env")
+
+    workspace = discover([tmp_path / "ws"], deps=[underlay], ros_package_path=str(env))
+
+    assert workspace.launch_files == [str(root / "launch" / "mine.launch")]
+    assert workspace.find("dep") == str(dep)
+    assert workspace.find("only_env") == str(from_env)
+    assert [package.path for package in workspace.shadowed] == [str(env / "dep")]
+    assert workspace.find_resource("dep", "dep.launch") == [str(dep / "launch" / "dep.launch")]
+
+
+def test_a_missing_dep_is_reported(tmp_path: Path) -> None:
+    make_package(tmp_path / "ws" / "mine", "mine")
+    workspace = discover([tmp_path / "ws"], deps=[tmp_path / "nowhere"], ros_package_path="")
+    assert codes(workspace) == ["path-missing"]
+    assert workspace.diagnostics[0].severity is Severity.ERROR
+    assert set(workspace.packages) == {"mine"}
+
+
 def test_duplicate_packages_first_root_wins(tmp_path: Path) -> None:
     first = make_package(tmp_path / "b_first" / "dup", "dup")
     second = make_package(tmp_path / "a_second" / "dup", "dup")
@@ -308,3 +335,11 @@ def test_corpus_husky_with_external_resolves_gazebo_ros() -> None:
     assert Path(gazebo_ros, "package.xml").is_file()
     assert workspace.find("husky_gazebo") is not None
     assert discover([corpus / "husky"], ros_package_path="").find("gazebo_ros") is None
+
+
+def test_corpus_husky_with_external_as_deps() -> None:
+    corpus = corpus_or_skip()
+    workspace = discover([corpus / "husky"], deps=[corpus / "_external"], ros_package_path="")
+    assert workspace.find("gazebo_ros") is not None
+    alone = discover([corpus / "husky"], ros_package_path="")
+    assert workspace.launch_files == alone.launch_files

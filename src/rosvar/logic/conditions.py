@@ -11,12 +11,15 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any, cast
+from typing import TYPE_CHECKING, Any, cast
 
 from rosvar.logic.bdd import BDD, cofactor, evaluate, new_manager, walked_support
 from rosvar.logic.inputs import OTHER, UNSET, Input, Slot
 from rosvar.logic.terms import Term, term_inputs
 from rosvar.logic.terms import evaluate as evaluate_term
+
+if TYPE_CHECKING:
+    from rosvar.logic.printer import Printer
 
 CACHE_ENTRIES = 1 << 16
 """Size of CUDD's computed table, fixed. CUDD's larger default start is slow to set up, and
@@ -112,7 +115,9 @@ class ConditionSpace:
         self._slot_atoms: dict[Input, tuple[tuple[Slot, BDD], ...]] = {}
         self._input_constraints: dict[Input, BDD] = {}
         self._facts_of: dict[str, list[BDD]] = {}
+        self._fact_inputs: dict[str, set[Input]] = {}  # the inputs of the facts of a variable
         self._described: dict[tuple[BDD, bool, bool, int], str] = {}
+        self._printer: Printer | None = None
         # Choice.const's constants of this space, by text: choices are immutable, and the
         # same literal is met again in every file that includes the one it is written in.
         self.constants: dict[object, Any] = {}
@@ -210,8 +215,11 @@ class ConditionSpace:
     def constrain(self, constraint: BDD) -> None:
         """Add a fact every configuration satisfies (e.g. two predicates exclude each other)."""
         self._constraints.append(constraint)
-        for name in self.support(constraint):
+        names = self.support(constraint)
+        inputs = {a.input for a in map(self._atom_of.__getitem__, names) if isinstance(a, SlotAtom)}
+        for name in names:
             self._facts_of.setdefault(name, []).append(constraint)
+            self._fact_inputs.setdefault(name, set()).update(inputs)
 
     def care(self, condition: BDD) -> BDD:
         """The facts that can matter for ``condition``: those over its variables.
@@ -220,9 +228,14 @@ class ConditionSpace:
         satisfiable on its own, so it changes no answer about ``condition`` — and
         the global conjunction grows with the whole workspace.
         """
+        return self.care_over(self.support(condition))
+
+    def care_over(self, variables: Iterable[str]) -> BDD:
+        """The facts over ``variables``: the exactly-one constraints of their inputs and
+        the facts added with :meth:`constrain` that mention them."""
         result = self.true
         seen: set[int] = set()
-        for name in self.support(condition):
+        for name in variables:
             atom = self._atom_of[name]
             if isinstance(atom, SlotAtom) and id(atom.input) not in seen:
                 seen.add(id(atom.input))
@@ -230,6 +243,32 @@ class ConditionSpace:
             for fact in self._facts_of.get(name, ()):
                 result &= fact
         return result
+
+    def care_key(self, variables: Iterable[str]) -> frozenset[object]:
+        """What :meth:`care_over` depends on: the inputs of the slot atoms among ``variables``
+        and the variables that carry facts. Equal keys, equal care."""
+        key: set[object] = set()
+        for name in variables:
+            atom = self._atom_of[name]
+            if isinstance(atom, SlotAtom):
+                key.add(atom.input)
+            if name in self._facts_of:
+                key.add(name)
+        return frozenset(key)
+
+    def care_inputs(self, variables: Iterable[str]) -> set[Input]:
+        """The inputs :meth:`care_over` involves (perhaps a few more than its support)."""
+        inputs: set[Input] = set()
+        for name in variables:
+            atom = self._atom_of[name]
+            if isinstance(atom, SlotAtom):
+                inputs.add(atom.input)
+            inputs.update(self._fact_inputs.get(name, ()))
+        return inputs
+
+    def facts(self) -> int:
+        """How many facts the space holds: what depends on them is stale once it grows."""
+        return len(self._constraints)
 
     @property
     def valid(self) -> BDD:
@@ -289,14 +328,16 @@ class ConditionSpace:
         return cofactor(u, values)
 
     def describe(self, condition: BDD, qualify: bool = False, known_only: bool = True) -> str:
-        """``condition`` in readable form (``printer.describe``), remembered: elements share
+        """``condition`` in readable form (``printer.Printer``), remembered: elements share
         conditions, and describing is the slow part of ``--json``."""
-        from rosvar.logic.printer import describe  # the printer reads the space: not at the top
-
         key = (condition, qualify, known_only, len(self._constraints))
         text = self._described.get(key)
         if text is None:
-            text = self._described[key] = describe(self, condition, qualify, known_only)
+            if self._printer is None:
+                from rosvar.logic.printer import Printer  # it reads the space: not at the top
+
+                self._printer = Printer(self)
+            text = self._described[key] = self._printer.describe(condition, qualify, known_only)
         return text
 
     def atoms(self) -> Iterable[Atom]:

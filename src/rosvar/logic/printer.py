@@ -1,13 +1,15 @@
 """Presence conditions in readable form: a short formula such as ``use_teleop=true ∧ ¬sim``.
 
-A condition is printed modulo the facts of its space: simplified under them, split into
-cubes grouped by input (``x∈{a,b}``), each cube widened while it stays inside the condition,
-and the redundant cubes left out.
+A condition is printed modulo the facts of its space, as a prime and irredundant cover
+(Minato–Morreale's, from the BDD) whose slot literals are grouped by input (``x∈{a,b}``,
+``x≠c``). Conditions over the same variables share their facts, the ``<other>`` slots to
+hide and the inputs' domains: :class:`Printer` computes those once per set of variables.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
 from typing import cast
 
 from rosvar.logic.bdd import BDD, cofactors, restrict
@@ -17,66 +19,125 @@ from rosvar.logic.inputs import OTHER, ArgInput, EnvInput, Input, Slot
 BOOLEAN_WORDS = ("true", "false")
 MAX_FULL = 200  # longer formulas over <other> values help nobody
 MAX_CUBES = 256  # beyond this many disjuncts a formula is no longer readable
+FULL_CUBES = MAX_FULL // 4  # a disjunct takes at least 4 characters (" ∨ " and a name)
+TRUE_FOR_KNOWN = "true for every known value"
+
+Domains = Mapping[Input, tuple[Slot, ...]]
 
 
 class _TooComplex(Exception):
     """The condition has too many disjuncts to print usefully."""
 
 
-def describe(
-    space: ConditionSpace, condition: BDD, qualify: bool = False, known_only: bool = True
-) -> str:
-    """A short readable formula, e.g. ``use_teleop=true ∧ ¬sim``, modulo validity.
+@dataclass(frozen=True)
+class _Context:
+    """What describing a condition over some variables needs besides the condition."""
 
-    With ``known_only`` (the default) arg inputs are assumed to hold one of the
-    values analysis knows, which hides the rarely useful ``<other>`` refinements;
-    a condition that this view would show as ``true`` but that fails for some
-    other value is shown in full.
-    """
-    # the facts over the condition and their variables, found once: walking a BDD's
-    # support in Python is most of describing an undetermined condition in the engine
-    local = space.care(condition)
-    if condition == space.false or (condition & local) == space.false:  # unsatisfiable
-        return "false"
-    variables = space.support(local)
-    involved = _inputs_of(space, variables)
-    if known_only:
-        others = {
-            name: False
-            for name in variables
-            if isinstance(atom := space.atom_of(name), SlotAtom)
-            and atom.slot is OTHER
-            and isinstance(atom.input, ArgInput)
-        }
-        known = space.cofactor(condition, others)
-        care = space.cofactor(local, others)
-        if (known & care) == space.false:
+    care: BDD  # the facts over those variables
+    domains: Domains  # of the inputs the facts involve
+    known: BDD  # the atoms "arg x holds <other>" of those inputs, all false (a cube)
+    known_care: BDD  # ``care`` with them false
+    known_domains: Domains  # ``domains`` without the <other> slots of args
+
+
+class Printer:
+    """The readable form of the conditions of one space (``ConditionSpace.describe``)."""
+
+    def __init__(self, space: ConditionSpace) -> None:
+        self.space = space
+        self._contexts: dict[frozenset[object], _Context] = {}
+        self._facts = space.facts()
+
+    def describe(self, condition: BDD, qualify: bool = False, known_only: bool = True) -> str:
+        """A short readable formula, e.g. ``use_teleop=true ∧ ¬sim``, modulo validity.
+
+        With ``known_only`` (the default) arg inputs are assumed to hold one of the
+        values analysis knows, which hides the rarely useful ``<other>`` refinements;
+        a condition that this view would show as ``true`` but that fails for some
+        other value is shown in full when that is short.
+        """
+        space = self.space
+        if condition == space.false:
+            return "false"
+        context = self._context(frozenset(space.support(condition)))
+        care = context.care
+        if (condition & care) == space.false:  # unsatisfiable
+            return "false"
+        if not known_only:
+            return self._formula(condition, care, qualify, context.domains)
+        known = restrict(condition, context.known)
+        known_care = context.known_care
+        if (known & known_care) == space.false:
             return "only for other values"
-        if (care & ~known) == space.false and (local & ~condition) != space.false:
-            full = describe(space, condition, qualify, known_only=False)
-            return full if len(full) <= MAX_FULL else "true for every known value"
-        domains = {
-            input_: tuple(
-                s for s in space.domain(input_) if s is not OTHER or isinstance(input_, EnvInput)
-            )
-            for input_ in involved
-        }
-    else:
-        known, care = condition, local
-        domains = {input_: space.domain(input_) for input_ in involved}
-    simplified = restrict(known, care)
-    if simplified == space.true or (care & ~known) == space.false:
-        return "true"
-    try:
-        cubes = _prime_cubes(space, simplified, known, care, domains)
-    except _TooComplex:
-        names = sorted({str(i) for i in _inputs_of(space, space.support(simplified))})
-        shown = ", ".join(names[:6]) + (", …" if len(names) > 6 else "")
-        return f"a condition over {len(names)} inputs ({shown})"
-    rendered = [_render_cube(space, cube, qualify, domains) for cube in cubes]
-    if len(rendered) == 1:
-        return rendered[0]
-    return " ∨ ".join(f"({r})" if "∧" in r else r for r in sorted(rendered))
+        if (known_care & ~known) == space.false and (care & ~condition) != space.false:
+            try:  # the full formula, if it is short: a long one is not worth computing
+                full = self._formula(condition, care, qualify, context.domains, FULL_CUBES)
+            except _TooComplex:
+                return TRUE_FOR_KNOWN
+            return full if len(full) <= MAX_FULL else TRUE_FOR_KNOWN
+        return self._formula(known, known_care, qualify, context.known_domains)
+
+    def _context(self, variables: frozenset[str]) -> _Context:
+        """The context of conditions over ``variables``, computed once for all conditions
+        with the same facts (while the space's facts stay the same)."""
+        space = self.space
+        facts = space.facts()
+        if facts != self._facts:
+            self._contexts.clear()
+            self._facts = facts
+        key = space.care_key(variables)
+        found = self._contexts.get(key)
+        if found is not None:
+            return found
+        care = space.care_over(variables)
+        involved = space.care_inputs(variables)
+        known = space.true
+        for input_ in involved:
+            if isinstance(input_, ArgInput):
+                known &= ~space.slot(input_, OTHER)
+        context = _Context(
+            care,
+            {input_: space.domain(input_) for input_ in involved},
+            known,
+            restrict(care, known),
+            {
+                input_: tuple(
+                    s
+                    for s in space.domain(input_)
+                    if s is not OTHER or isinstance(input_, EnvInput)
+                )
+                for input_ in involved
+            },
+        )
+        self._contexts[key] = context
+        return context
+
+    def _formula(
+        self,
+        condition: BDD,
+        care: BDD,
+        qualify: bool,
+        domains: Domains,
+        budget: int | None = None,
+    ) -> str:
+        """``condition`` modulo ``care`` as a disjunction of cubes; with a ``budget`` of cubes,
+        :class:`_TooComplex` past it, else a summary past :data:`MAX_CUBES`."""
+        space = self.space
+        if (care & ~condition) == space.false:
+            return "true"
+        try:
+            cubes = _cover(space, condition, care, domains, budget or MAX_CUBES)
+        except _TooComplex:
+            if budget is not None:
+                raise
+            support = space.support(restrict(condition, care))
+            names = sorted({str(i) for i in _inputs_of(space, support)})
+            shown = ", ".join(names[:6]) + (", …" if len(names) > 6 else "")
+            return f"a condition over {len(names)} inputs ({shown})"
+        rendered = [_render_cube(space, cube, qualify, domains) for cube in cubes]
+        if len(rendered) == 1:
+            return rendered[0]
+        return " ∨ ".join(f"({r})" if "∧" in r else r for r in sorted(rendered))
 
 
 def _inputs_of(space: ConditionSpace, variables: Iterable[str]) -> set[Input]:
@@ -87,97 +148,91 @@ def _inputs_of(space: ConditionSpace, variables: Iterable[str]) -> set[Input]:
     }
 
 
-def _prime_cubes(
+Cube = dict[object, frozenset[Slot] | bool]  # an input's slots, or a predicate's or file's truth
+Literals = tuple[tuple[str, bool], ...]  # a cube over the BDD's variables
+
+
+def _cover(
     space: ConditionSpace,
-    simplified: BDD,
     target: BDD,
     care: BDD,
-    domains: Mapping[Input, tuple[Slot, ...]],
-) -> list[dict[object, frozenset[Slot] | bool]]:
-    """Cubes of ``simplified``, each widened while it stays inside ``target`` (mod care)."""
-    cubes = _merge_cubes(_grouped_cubes(space, simplified, domains), domains)
-    widened: list[dict[object, frozenset[Slot] | bool]] = []
-    outside = care & ~target
-    for cube in cubes:
-        for key in sorted(cube, key=_sort_key):
-            trial = {k: v for k, v in cube.items() if k != key}
-            if (_cube_bdd(space, trial) & outside) == space.false:
-                cube = trial
-        if cube not in widened:
-            widened.append(cube)
-    covered = [_cube_bdd(space, c) for c in widened]
-    result = []
-    for index, cube in enumerate(widened):
-        others = space.false
-        for j, bdd in enumerate(covered):
-            if j != index and (j > index or widened[j] in result):
-                others |= bdd
-        if ((covered[index] & care) & ~others) != space.false:
-            result.append(cube)
-    return result or widened
+    domains: Domains,
+    budget: int = MAX_CUBES,
+) -> list[Cube]:
+    """A prime and irredundant cover of ``target`` modulo ``care``, grouped by input.
+
+    Minato–Morreale's irredundant sum of products of the interval [target ∧ care,
+    target ∨ ¬care], computed on the BDD itself: its size follows the diagram's, not the
+    number of paths through it. Slot literals are then grouped by input (``x=a``, or the
+    slots left by ``¬x=b ∧ ¬x=c``), and cubes that differ in one input's slots merged
+    (``x=a ∨ x=b`` → ``x∈{a,b}``), which keeps them prime and irredundant: a merged cube
+    covers exactly what its parts did.
+    """
+    _covered, literals = _isop(target & care, target | ~care, {}, budget)
+    return _merge_cubes([_grouped(space, cube, domains) for cube in literals], domains)
 
 
-def _cube_bdd(space: ConditionSpace, cube: Mapping[object, frozenset[Slot] | bool]) -> BDD:
-    result = space.true
-    for key, value in cube.items():
-        if isinstance(key, PredicateAtom | FileAtom):
-            atom = space.bdd.var(space.variable_name(key))
-            result &= atom if value else ~atom
-        else:
-            assert isinstance(value, frozenset)
-            any_slot = space.false
-            for slot in value:
-                any_slot |= space.slot(key, slot)  # type: ignore[arg-type]
-            result &= any_slot
+def _isop(
+    lower: BDD, upper: BDD, memo: dict[tuple[BDD, BDD], tuple[BDD, list[Literals]]], budget: int
+) -> tuple[BDD, list[Literals]]:
+    """The function and cubes of an irredundant cover ``c``, ``lower ≤ c ≤ upper`` (Minato's
+    recursion: the cubes that need the top variable false, those that need it true, then
+    those that need neither for what is left)."""
+    manager = lower.bdd
+    if lower == manager.false:
+        return manager.false, []
+    if upper == manager.true:
+        return manager.true, [()]
+    found = memo.get((lower, upper))
+    if found is not None:
+        return found
+    name = lower.var if upper.var is None or lower.level <= upper.level else upper.var
+    lower_0, lower_1 = _split(lower, name)
+    upper_0, upper_1 = _split(upper, name)
+    cover_0, cubes_0 = _isop(lower_0 & ~upper_1, upper_0, memo, budget)
+    cover_1, cubes_1 = _isop(lower_1 & ~upper_0, upper_1, memo, budget)
+    rest = (lower_0 & ~cover_0) | (lower_1 & ~cover_1)
+    cover_both, cubes_both = _isop(rest, upper_0 & upper_1, memo, budget)
+    cubes = [
+        *(((name, False), *cube) for cube in cubes_0),
+        *(((name, True), *cube) for cube in cubes_1),
+        *cubes_both,
+    ]
+    if len(cubes) > budget:
+        raise _TooComplex
+    result = manager.ite(manager.var(name), cover_1, cover_0) | cover_both, cubes
+    memo[lower, upper] = result
     return result
 
 
-def _paths(
-    space: ConditionSpace, u: BDD, budget: list[int] | None = None
-) -> Iterator[dict[str, bool]]:
-    if budget is None:
-        budget = [MAX_CUBES]
-    if u == space.false:
-        return
-    if u == space.true:
-        budget[0] -= 1
-        if budget[0] < 0:
-            raise _TooComplex
-        yield {}
-        return
-    var = u.var
-    for value, child in zip((False, True), cofactors(u), strict=True):
-        for path in _paths(space, child, budget):
-            yield {var: value, **path}
+def _split(u: BDD, name: str) -> tuple[BDD, BDD]:
+    """The cofactors of ``u`` by ``name``, which is ``u``'s top variable or above it."""
+    return cofactors(u) if u.var == name else (u, u)
 
 
-def _grouped_cubes(
-    space: ConditionSpace, u: BDD, domains: Mapping[Input, tuple[Slot, ...]]
-) -> list[dict[object, frozenset[Slot] | bool]]:
-    cubes: list[dict[object, frozenset[Slot] | bool]] = []
-    for path in _paths(space, u):
-        cube: dict[object, frozenset[Slot] | bool] = {}
-        negated: dict[Input, set[Slot]] = {}
-        for name, value in path.items():
-            atom = space.atom_of(name)
-            if isinstance(atom, PredicateAtom | FileAtom):
-                cube[atom] = value
-            elif value:
-                cube[atom.input] = frozenset([atom.slot])
-            else:
-                negated.setdefault(atom.input, set()).add(atom.slot)
-        for input_, slots in negated.items():
-            if input_ not in cube:
-                cube[input_] = frozenset(s for s in domains[input_] if s not in slots)
-        cubes.append(cube)
-    return cubes
+def _grouped(space: ConditionSpace, literals: Literals, domains: Domains) -> Cube:
+    """A cube of atoms as one entry per input (its possible slots), predicate and file."""
+    cube: Cube = {}
+    negated: dict[Input, set[Slot]] = {}
+    for name, value in literals:
+        atom = space.atom_of(name)
+        if isinstance(atom, PredicateAtom | FileAtom):
+            cube[atom] = value
+        elif value:
+            cube[atom.input] = frozenset([atom.slot])
+        else:
+            negated.setdefault(atom.input, set()).add(atom.slot)
+    for input_, slots in negated.items():
+        if input_ not in cube:
+            cube[input_] = frozenset(s for s in domains[input_] if s not in slots)
+    return cube
 
 
 def _render_cube(
     space: ConditionSpace,
-    cube: Mapping[object, frozenset[Slot] | bool],
+    cube: Cube,
     qualify: bool,
-    domains: Mapping[Input, tuple[Slot, ...]],
+    domains: Domains,
 ) -> str:
     parts = []
     for key, value in sorted(cube.items(), key=lambda kv: _sort_key(kv[0])):
@@ -194,22 +249,28 @@ def _render_cube(
     return " ∧ ".join(parts)
 
 
-def _sort_key(key: object) -> tuple[int, str]:
+def _sort_key(key: object) -> tuple[int, str, str]:
+    """Files, then inputs, then predicates, each by name; ties (an arg of the same name in
+    two files, two tests of one term) in a fixed order too."""
     if isinstance(key, FileAtom):
-        return (-1, key.label)
+        return (-1, key.label, key.file)
     if isinstance(key, PredicateAtom):
-        return (1, str(key.term))
-    return (0, str(key))
+        return (1, str(key.term), key.test)
+    return (0, str(key), key.file if isinstance(key, ArgInput) else "")
 
 
-def _merge_cubes(
-    cubes: list[dict[object, frozenset[Slot] | bool]], domains: Mapping[Input, tuple[Slot, ...]]
-) -> list[dict[object, frozenset[Slot] | bool]]:
+def _merge_cubes(cubes: list[Cube], domains: Domains) -> list[Cube]:
     """Join cubes that differ only in the slots of one input (x=a ∨ x=b → x∈{a,b}).
 
-    Cubes are bucketed by everything but one key, so each round is linear in the
-    number of cubes rather than quadratic.
+    Only cubes over the same keys can join (prime cubes never differ in one predicate
+    alone), and cubes are bucketed by everything but one key, so each round is linear in
+    the number of cubes rather than quadratic.
     """
+    by_keys: dict[frozenset[object], list[Cube]] = {}
+    for cube in cubes:
+        by_keys.setdefault(frozenset(cube), []).append(cube)
+    if all(len(group) == 1 for group in by_keys.values()):
+        return cubes
     changed = True
     while changed and len(cubes) > 1:
         changed = False
@@ -220,7 +281,7 @@ def _merge_cubes(
                 rest = frozenset((k, v) for k, v in cube.items() if k != key)
                 buckets.setdefault(rest, []).append(index)
             merged_any = False
-            result: list[dict[object, frozenset[Slot] | bool]] = []
+            result: list[Cube] = []
             for members in buckets.values():
                 current = cubes[members[0]]
                 for other_index in members[1:]:
@@ -237,11 +298,7 @@ def _merge_cubes(
     return cubes
 
 
-def _merge_pair(
-    a: dict[object, frozenset[Slot] | bool],
-    b: dict[object, frozenset[Slot] | bool],
-    domains: Mapping[Input, tuple[Slot, ...]],
-) -> dict[object, frozenset[Slot] | bool] | None:
+def _merge_pair(a: Cube, b: Cube, domains: Domains) -> Cube | None:
     keys = set(a) | set(b)
     differing = [k for k in keys if a.get(k) != b.get(k)]
     if len(differing) != 1:

@@ -11,29 +11,25 @@ import argparse
 import contextlib
 import difflib
 import gc
-import json
 import os
 import sys
 import time
 from collections.abc import Mapping, Sequence
 from dataclasses import replace
+from typing import TYPE_CHECKING
 
 from rosvar import __version__
-from rosvar.analyses.feature_model.extraction import extract
-from rosvar.analyses.feature_model.model import ModelTooLarge
-from rosvar.analyses.metrics import compute
-from rosvar.analyses.resolve import resolve
-from rosvar.configuration.choices import Action, ChoiceError, UserChoice
-from rosvar.configuration.derivation import Presence
-from rosvar.configuration.engine import ConfigurationState, Configurator, Selection
+from rosvar.configuration.choices import Action
 from rosvar.diagnostics import Location, Severity
-from rosvar.interpreter.workspace_models import Analysis
-from rosvar.outputs.describe import count_text, describe_model
-from rosvar.outputs.exports import WRITERS, write
-from rosvar.outputs.web.server import make_server
+from rosvar.outputs.exports import FORMATS
 from rosvar.ros.names import command_line_mappings
-from rosvar.workspace import Workspace, discover
-from rosvar.workspace.hints import load_hints
+
+# Each command imports what it needs when it runs: `dd` (and CUDD), the interpreter, numpy
+# and the web server are not what `--version`, `--help` or another command pays for.
+if TYPE_CHECKING:
+    from rosvar.configuration.engine import ConfigurationState
+    from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.workspace import Workspace
 
 EXIT_OK, EXIT_FAILS, EXIT_USAGE, EXIT_INPUT, EXIT_TOO_LARGE = 0, 1, 2, 3, 4
 
@@ -51,19 +47,28 @@ def _print_json(document: object) -> None:
 
     Python's fast JSON encoder only writes without indentation: indented, printing a large
     analysis takes longer than computing it (``jq`` indents it again)."""
+    import json
+
     indent = 2 if sys.stdout.isatty() else None
     sys.stdout.write(json.dumps(document, indent=indent, ensure_ascii=False) + "\n")
 
 
-def _workspace(paths: Sequence[str]) -> Workspace:
-    workspace = discover(paths)
+def _workspace(paths: Sequence[str], deps: Sequence[str]) -> Workspace:
+    """The packages and launch files below ``paths``; those below ``deps`` (then the
+    environment's ROS_PACKAGE_PATH) resolve ``$(find)`` but add no launch files."""
+    from rosvar.workspace import discover
+
+    workspace = discover(paths, deps=deps)
     for diagnostic in workspace.diagnostics:
         print(diagnostic, file=sys.stderr)
     return workspace
 
 
 def cmd_analyze(options: argparse.Namespace) -> int:
-    workspace = _workspace(options.paths)
+    from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.outputs.describe import describe_model
+
+    workspace = _workspace(options.paths, options.deps)
     if not workspace.launch_files:
         print("rosvar: no launch files found", file=sys.stderr)
         return EXIT_INPUT
@@ -93,13 +98,16 @@ def cmd_analyze(options: argparse.Namespace) -> int:
 
 
 def cmd_resolve(options: argparse.Namespace) -> int:
+    from rosvar.analyses.resolve import resolve
+    from rosvar.interpreter.workspace_models import Analysis
+
     paths = [os.path.abspath(words[0]) for words in options.launch if len(words) == 1]
     missing = [f for f in paths if not os.path.isfile(f)]
     if missing:
         print(f"rosvar: launch file not found: {', '.join(missing)}", file=sys.stderr)
         return EXIT_INPUT
     # the launch files' own packages are known even when no PATH contains them
-    workspace = _workspace([*options.paths, *paths])
+    workspace = _workspace([*options.paths, *paths], options.deps)
     files = _launch_files(options.launch, workspace)
     if files is None:
         return EXIT_INPUT
@@ -205,7 +213,10 @@ def _analysis(
     env: dict[str, str] | None = None,
     paths: Sequence[str] | None = None,
 ) -> Analysis | None:
-    workspace = _workspace(options.paths if paths is None else paths)
+    from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.workspace.hints import load_hints
+
+    workspace = _workspace(options.paths if paths is None else paths, options.deps)
     if not workspace.launch_files:
         print("rosvar: no launch files found", file=sys.stderr)
         return None
@@ -228,6 +239,9 @@ def _analysis_with_env(options: argparse.Namespace) -> tuple[Analysis, dict[str,
 
 
 def cmd_features(options: argparse.Namespace) -> int:
+    from rosvar.analyses.feature_model.extraction import extract
+    from rosvar.outputs.exports import write
+
     analysis = _analysis(options)
     if analysis is None:
         return EXIT_INPUT
@@ -256,7 +270,10 @@ METRICS_LEGEND = (
 
 def cmd_metrics(options: argparse.Namespace) -> int:
     """One row per PATH: each is a system, analysed on its own (dependencies come from
-    ``ROS_PACKAGE_PATH``, not from the other PATHs)."""
+    ``--deps`` and ``ROS_PACKAGE_PATH``, not from the other PATHs)."""
+    from rosvar.analyses.feature_model.extraction import extract
+    from rosvar.analyses.metrics import compute
+
     rows: dict[str, dict[str, int]] = {}
     for path in options.paths:
         analysis = _analysis(options, paths=[path])
@@ -276,6 +293,10 @@ def cmd_metrics(options: argparse.Namespace) -> int:
 
 
 def cmd_configure(options: argparse.Namespace) -> int:
+    from rosvar.analyses.feature_model.extraction import extract
+    from rosvar.configuration.choices import ChoiceError, UserChoice
+    from rosvar.configuration.engine import Configurator
+
     loaded = _analysis_with_env(options)
     if isinstance(loaded, int):
         return loaded
@@ -300,6 +321,10 @@ def cmd_configure(options: argparse.Namespace) -> int:
 
 def _print_state(state: ConfigurationState) -> None:
     """The summary of a configuration step, for people."""
+    from rosvar.configuration.derivation import Presence
+    from rosvar.configuration.engine import Selection
+    from rosvar.outputs.describe import count_text
+
     features = state.features.values()
     files = [(k, f) for k, f in state.features.items() if f.kind == "file"]
     print(
@@ -376,6 +401,10 @@ class _Choice(argparse.Action):
 
 
 def cmd_serve(options: argparse.Namespace) -> int:
+    from rosvar.analyses.feature_model.extraction import extract
+    from rosvar.configuration.engine import Configurator
+    from rosvar.outputs.web.server import make_server
+
     loaded = _analysis_with_env(options)
     if isinstance(loaded, int):
         return loaded
@@ -425,6 +454,17 @@ EXAMPLES = {
 }
 
 
+def _deps_option(command: argparse.ArgumentParser) -> None:
+    command.add_argument(
+        "--deps",
+        action="append",
+        default=[],
+        metavar="PATH",
+        help="packages below PATH resolve $(find) and executables but add no launch files "
+        "(e.g. /opt/ros/noetic/share; repeatable; ROS_PACKAGE_PATH is read after them)",
+    )
+
+
 def _command(
     commands: argparse._SubParsersAction[argparse.ArgumentParser], name: str, help_: str
 ) -> argparse.ArgumentParser:
@@ -450,6 +490,7 @@ def parser() -> argparse.ArgumentParser:
     commands = top.add_subparsers(dest="command", required=True, metavar="COMMAND")
     analyze = _command(commands, "analyze", "interpret every launch file below PATH")
     analyze.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
+    _deps_option(analyze)
     analyze.add_argument(
         "--json", action="store_true", help="the whole model as JSON (docs/json-schema.md)"
     )
@@ -461,6 +502,7 @@ def parser() -> argparse.ArgumentParser:
         metavar="PATH",
         help=PATHS_HELP + "; name:=value words (the args, as for roslaunch) may stand anywhere",
     )
+    _deps_option(res)
     res.add_argument(
         "--launch",
         action="append",
@@ -477,10 +519,11 @@ def parser() -> argparse.ArgumentParser:
     res.set_defaults(run=cmd_resolve)
     features = _command(commands, "features", "the feature model (paper Algorithm 1)")
     features.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
+    _deps_option(features)
     features.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
     features.add_argument(
         "--format",
-        choices=sorted(WRITERS),
+        choices=sorted(FORMATS),
         default="text",
         help="text (default; its notes go to stderr), json, uvl, featureide or dot",
     )
@@ -488,6 +531,7 @@ def parser() -> argparse.ArgumentParser:
     features.set_defaults(run=cmd_features)
     metrics = _command(commands, "metrics", "the paper's Table I and II metrics")
     metrics.add_argument("paths", nargs="+", metavar="PATH", help="one system per PATH: a row each")
+    _deps_option(metrics)
     metrics.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
     metrics.add_argument(
         "--json", action="store_true", help="the metrics as JSON (keyed by PATH when several)"
@@ -497,6 +541,7 @@ def parser() -> argparse.ArgumentParser:
         commands, "configure", "one step of a configuration: the state after the given choices"
     )
     configure.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
+    _deps_option(configure)
     for action, metavar, help_ in (
         (Action.SELECT, "FEATURE", "put a file, arg or value in the product (FILE, FILE:ARG, "
          "FILE:ARG=VALUE; FILE as a path or as 'rosvar features' prints it)"),
@@ -529,6 +574,7 @@ def parser() -> argparse.ArgumentParser:
     configure.set_defaults(run=cmd_configure)
     serve = _command(commands, "serve", "configure step by step in the browser")
     serve.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
+    _deps_option(serve)
     serve.add_argument("--host", default="127.0.0.1", help="address to bind (default: loopback)")
     serve.add_argument("--port", type=int, default=8080, help="port (0: any free one)")
     serve.add_argument("--env", action="append", default=[], metavar="NAME=VALUE", help=ENV_HELP)
@@ -559,7 +605,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 130
     except BrokenPipeError:
         return EXIT_OK
-    except ModelTooLarge as error:  # what needs the solver of a model listed but not solved
+    except Exception as error:
+        from rosvar.analyses.feature_model.model import ModelTooLarge  # imported if raised
+
+        if not isinstance(error, ModelTooLarge):
+            raise
+        # what needs the solver of a model listed but not solved
         print(f"rosvar: the feature model is too large to solve: {error}", file=sys.stderr)
         return EXIT_TOO_LARGE
     finally:

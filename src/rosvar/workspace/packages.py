@@ -225,13 +225,18 @@ def _looks_like_launch(directory: str, name: str) -> bool:
 
 
 def discover(
-    paths: Sequence[str | os.PathLike[str]], *, ros_package_path: str | None = None
+    paths: Sequence[str | os.PathLike[str]],
+    *,
+    deps: Sequence[str | os.PathLike[str]] = (),
+    ros_package_path: str | None = None,
 ) -> Workspace:
-    """Find packages and launch files below ``paths``, then packages on ROS_PACKAGE_PATH.
+    """Find packages and launch files below ``paths``, then packages below ``deps`` and on
+    ROS_PACKAGE_PATH.
 
     A path may be a directory or a single launch file (listed as given, with its
-    enclosing package registered). ``ros_package_path`` defaults to the environment;
-    its packages come after the roots' and contribute no launch files.
+    enclosing package registered). ``deps`` (a sourced ROS installation's ``share``, an
+    underlay) and ``ros_package_path`` (default: the environment's) play the same part:
+    their packages come after the roots', in that order, and contribute no launch files.
     """
     state = _Discovery()
     roots = [os.path.abspath(os.fspath(path)) for path in paths]
@@ -245,6 +250,12 @@ def discover(
         else:
             state.sink.error("path-missing", f"no such file or directory: {root}", Location(root))
 
+    for dep in deps:
+        directory = os.path.abspath(os.path.expanduser(os.fspath(dep)))
+        if os.path.isdir(directory):
+            state.crawl(directory, list_launch=False, inside_package=False)
+        else:
+            state.sink.error("path-missing", f"no such directory: {directory}", Location(directory))
     if ros_package_path is None:
         ros_package_path = os.environ.get("ROS_PACKAGE_PATH", "")
     for entry in ros_package_path.split(os.pathsep):

@@ -11,7 +11,7 @@ import pytest
 from rosvar.analyses.feature_model import extraction
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.operations import core_and_dead, count_configurations
-from rosvar.outputs.exports import WRITERS, write
+from rosvar.outputs.exports import FORMATS, write, writer
 from rosvar.outputs.exports import json as json_export
 from rosvar.outputs.exports._common import Tree
 
@@ -177,9 +177,9 @@ def test_a_model_too_large_to_solve_is_still_listed(
 
 
 def test_registry(examples_model: FeatureModel) -> None:
-    assert set(WRITERS) == {"text", "json", "uvl", "featureide", "dot"}
-    for name, writer in WRITERS.items():
-        assert write(examples_model, name) == writer(examples_model)
+    assert set(FORMATS) == {"text", "json", "uvl", "featureide", "dot"}
+    for name in FORMATS:
+        assert write(examples_model, name) == writer(name)(examples_model)
     assert write(examples_model, "json") == json_export.write(examples_model)
     with pytest.raises(ValueError, match="unknown feature-model format 'sxfm'"):
         write(examples_model, "sxfm")
