@@ -136,7 +136,7 @@ class VariationalGraph:
         parts: tuple[Part, ...] = (),
     ) -> Element | None:
         fixed, bounds = self.lowering.lower(condition)
-        if not self.lowering.space.satisfiable(fixed):
+        if not self.lowering.satisfiable(fixed):
             return None  # e.g. two values of one arg: combinations no configuration has
         element = Element(
             kind, id_, entry, fixed, bounds, render, frozenset(inputs), nodes or [], parts
@@ -240,7 +240,7 @@ class VariationalGraph:
                 kept.append((first, second, None))
                 continue
             fixed, bounds = self.lowering.lower(both)
-            if self.lowering.space.satisfiable(fixed):
+            if self.lowering.satisfiable(fixed):
                 kept.append((first, second, len(parts)))
                 parts.append(Part(fixed, bounds))
         return kept

@@ -220,9 +220,13 @@ class ConditionSpace:
         satisfiable on its own, so it changes no answer about ``condition`` — and
         the global conjunction grows with the whole workspace.
         """
+        return self.care_of(self.support(condition))
+
+    def care_of(self, support: Iterable[str]) -> BDD:
+        """``care`` of a condition whose support is ``support`` (known to the caller)."""
         result = self.true
         seen: set[int] = set()
-        for name in self.support(condition):
+        for name in support:
             atom = self._atom_of[name]
             if isinstance(atom, SlotAtom) and id(atom.input) not in seen:
                 seen.add(id(atom.input))
