@@ -34,7 +34,7 @@ from itertools import chain
 from rosvar.analyses.feature_model.model import FeatureModel, FileFeature, name_of
 from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.sat import Sat
-from rosvar.logic.bdd import BDD, cofactor, cofactors, evaluate, walked_support
+from rosvar.logic.bdd import BDD, children_first, cofactor, cofactors, evaluate, walked_support
 
 SOURCES = 4  # witnesses tried as the source of a repair
 REPAIRED_FILES = 8  # files a repair may copy: beyond, the solver is the cheaper way
@@ -533,23 +533,22 @@ class Derivation:
         self, goal: BDD, component: int, decisions: Decisions, candidates: Sequence[int]
     ) -> int | None:
         """A valid configuration where ``goal`` holds, made from one of ``candidates``
-        (valid ones) without the solver: the literals ``goal`` implies set, the values of
-        the args of their files made one per arg again, and only the parts of the formula
-        that read those files checked (the others hold as in the candidate).
+        (valid ones) without the solver: the path of ``goal`` to TRUE closest to it taken
+        (``_closest``), the values of the args of the files it changed made one per arg
+        again, and only the parts of the formula that read those files checked (the others
+        hold as in the candidate).
 
         Variants of one element differ in the values of a few args, so a configuration
         found for one usually becomes one for the next by setting those values."""
-        mask, bits = self._implied(goal)
-        if not mask:
-            return None
-        files = set()
-        rest = mask
-        while rest:
-            file = self._file_at[(rest & -rest).bit_length() - 1]
-            files.add(file)
-            rest &= ~self._blocks[file]
         for witness in candidates[-MUTATED:]:
+            mask, bits = self._closest(goal, witness)
             mutated = witness & ~mask | bits
+            files = set()
+            rest = mutated ^ witness
+            while rest:
+                file = self._file_at[(rest & -rest).bit_length() - 1]
+                files.add(file)
+                rest &= ~self._blocks[file]
             for file in files:
                 mutated = self._one_value_each(file, mutated, mask)
             parts = (part for file in files for part in self._parts_of[file])
@@ -560,6 +559,26 @@ class Derivation:
             ):
                 return mutated
         return None
+
+    def _closest(self, goal: BDD, witness: int) -> tuple[int, int]:
+        """The literals of a path of ``goal`` to TRUE that differs from ``witness`` in the
+        fewest variables (positions and values, as bits)."""
+        false, position = self.manager.false, self.position
+        best: dict[BDD, tuple[int, int, int] | None] = {self.manager.true: (0, 0, 0), false: None}
+        for node in children_first(goal, cofactors, best):
+            bit = 1 << position[node.var]
+            has = bool(witness & bit)
+            found = None
+            for value, child in zip((False, True), cofactors(node), strict=True):
+                below = best[child]
+                if below is None:
+                    continue
+                cost = below[0] + (value != has)
+                if found is None or cost < found[0]:
+                    found = (cost, below[1] | bit, below[2] | bit if value else below[2])
+            best[node] = found
+        path = best[goal]
+        return (0, 0) if path is None else (path[1], path[2])
 
     def _one_value_each(self, file: int, bits: int, fixed: int) -> int:
         """``bits`` with one value for each arg of a selected ``file`` (the one set, else
