@@ -109,12 +109,16 @@ class VariationalGraph:
         model: FeatureModel,
         lowering: Lowering,
         file_ids: Mapping[str, str],
+        progress: Callable[[int, int], None] | None = None,
     ) -> None:
+        """``progress``: told how many of the files are done, and of how many."""
         self.lowering = lowering
         self.elements: list[Element] = []
         self.launched: dict[str, BDD] = _launched(model)
         self._topics: dict[str, tuple[list[str], BDD]] = {}
-        for file in model.files:
+        for done, file in enumerate(model.files):
+            if progress is not None:
+                progress(done, len(model.files))
             self._add_model(
                 analysis.model(file.file), file_ids[file.file], self.launched[file.file]
             )

@@ -23,7 +23,7 @@ from rosvar.analyses.metrics import compute
 from rosvar.analyses.resolve import resolve
 from rosvar.configuration.choices import Action, ChoiceError, UserChoice
 from rosvar.configuration.derivation import Presence
-from rosvar.configuration.engine import ConfigurationState, Configurator, Selection
+from rosvar.configuration.engine import ConfigurationState, Configurator, Progress, Selection
 from rosvar.diagnostics import Severity
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.describe import describe_model
@@ -42,6 +42,24 @@ def _progress(index: int, total: int, file: str) -> None:
         if index + 1 == total:
             sys.stderr.write("\n")
         sys.stderr.flush()
+
+
+def _building(tty_only: bool) -> Progress:
+    """Shows how far the configuration engine's build is: one line rewritten in place on
+    a terminal, else (unless ``tty_only``) a line per phase."""
+    tty = sys.stderr.isatty()
+
+    def show(phase: str, done: int, total: int) -> None:
+        if tty:
+            end = "\n" if phase == "ready" else ""
+            counted = f" {done:,}/{total:,}" if total > 1 else ""
+            line = f"rosvar: building the configuration engine: {phase}{counted}"
+            sys.stderr.write(f"\r{line:<79}{end}")
+        elif not tty_only and done == 0:
+            sys.stderr.write(f"rosvar: building the configuration engine: {phase} ...\n")
+        sys.stderr.flush()
+
+    return show
 
 
 def _print_json(document: object) -> None:
@@ -221,7 +239,8 @@ def cmd_configure(options: argparse.Namespace) -> int:
     analysis, env = loaded
     try:
         choices = [UserChoice.parse(action, text) for action, text in options.choices]
-        configurator = Configurator(analysis, extract(analysis, progress=_progress), env)
+        model = extract(analysis, progress=_progress)
+        configurator = Configurator(analysis, model, env, progress=_building(tty_only=True))
         if options.finish:
             choices += configurator.completion(choices)
         state = configurator.state(choices)
@@ -306,8 +325,7 @@ def cmd_serve(options: argparse.Namespace) -> int:
     files = len(analysis.workspace.launch_files)
     print(f"rosvar: analysing {files} launch files ...", file=sys.stderr, flush=True)
     model = extract(analysis, progress=_progress)
-    print("rosvar: building the configuration engine ...", file=sys.stderr, flush=True)
-    configurator = Configurator(analysis, model, env)
+    configurator = Configurator(analysis, model, env, progress=_building(tty_only=False))
     try:
         server = make_server(configurator, options.host, options.port)
     except OSError as error:
