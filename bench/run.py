@@ -695,10 +695,56 @@ def _verdict(
     return f"{status}  {label}: {value:,.2f} {unit}"
 
 
+ENGINE_START_WORKLOAD = "husky"  # measured with the third-party packages as launch files too
+
+
+def _serve_until_ready(roots: list[str]) -> tuple[float, float] | None:
+    """``rosvar serve`` on ``roots`` until it listens: wall seconds and peak RSS (MB)."""
+    command = [*_rosvar_command(), "serve", *roots, "--port", "0"]
+    started = time.perf_counter()
+    process = subprocess.Popen(
+        command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, preexec_fn=_limit_memory
+    )
+    try:
+        assert process.stdout is not None
+        line = process.stdout.readline()  # "serving URL" once ready, "" if it stopped
+        wall = time.perf_counter() - started
+        if not line:
+            return None
+        status = Path(f"/proc/{process.pid}/status").read_text(encoding="utf-8")
+        peak = next(int(row.split()[1]) for row in status.splitlines() if row.startswith("VmHWM"))
+        return wall, peak / 1024
+    finally:
+        process.terminate()
+        process.wait(timeout=30)
+
+
+def measure_engine_start(workload: Workload, roots: list[str], outcome: Outcome) -> bool:
+    """The configuration engine's start on a real workspace, Husky with every third-party
+    package as launch files too (issue 17): ``configure`` to its answer, ``serve`` until
+    it listens."""
+    if workload.name != ENGINE_START_WORKLOAD:
+        return True
+    paths = [*roots, str(EXTERNAL)]
+    finished = run_bounded([*_rosvar_command(), "configure", *paths], _env(workload), False)
+    if finished.returncode != 0:
+        outcome.notes.append(_failure(finished, "engine start (configure)"))
+        return False
+    outcome.metrics["engine_configure_s"] = finished.wall_ms / 1000
+    outcome.metrics["engine_configure_mb"] = finished.peak_mb
+    served = _serve_until_ready(paths)
+    if served is None:
+        outcome.notes.append("engine start (serve): stopped before it was ready")
+        return False
+    outcome.metrics["engine_serve_s"], outcome.metrics["engine_serve_mb"] = served
+    return True
+
+
 # Each returns whether it got its figures; a failure skips it for larger sizes of the family.
 DRIVER_MEASUREMENTS: dict[str, Callable[[Workload, list[str], Outcome], bool]] = {
     "isolated": measure_isolated,
     "whole-process": measure_whole_process,
+    "engine-start": measure_engine_start,
 }
 
 
@@ -918,6 +964,11 @@ TARGETS: list[Target] = [
     at_most("husky", "analyze_ms", 100, "ms"),
     at_most("husky", "web_choose_p95_ms", 50, "ms"),
     at_most("husky", "configure_step_p95_ms", 10, "ms"),
+    *(
+        at_most(ENGINE_START_WORKLOAD, f"engine_{command}_{key}", limit, unit)
+        for command in ("configure", "serve")
+        for key, limit, unit in (("s", 10, "s"), ("mb", 400, "MB"))
+    ),
     at_most("gen-400", "analyze_ms", 1, "s", scale=1000),
     at_most("gen-400", "peak_mb", 150, "MB"),
     at_most("gen-10000", "analyze_ms", 25, "s", scale=1000),

@@ -11,6 +11,7 @@ from rosvar.analyses.feature_model.counting import CountedDiagram
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.derivation import Derivation, Presence, PresenceVerdict
 from rosvar.configuration.lowering import Bounds
+from rosvar.logic.bdd import BDD
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -82,3 +83,40 @@ def test_prepared_counts_are_those_of_every_component(
     components = model.solver.components
     assert len(components) > 1
     assert prepared == [component.counted_diagram for component in components]
+
+
+def test_witnesses_of_conjunctions_are_valid_configurations(ws: LaunchWorkspace) -> None:
+    """Variants' conditions are conjunctions of a file and arg values: their examples are
+    mostly made from earlier ones without the solver (``_mutated``), and each must still be
+    a valid configuration that shows its verdict."""
+    for name, body in FILES.items():
+        ws.launch(name, body)
+    model = extract(ws.analysis())
+    solver = model.solver
+    derivation = Derivation(model)
+    manager, formula = solver.manager, solver.formula
+    position = derivation.position
+
+    def holds(u: BDD, bits: int) -> bool:
+        values = {v: bool(bits >> position[v] & 1) for v in solver.variables}
+        return bool(manager.let(values, u) == manager.true)
+
+    rng = random.Random(5)
+    decisions = derivation.initial
+    for _ in range(60):
+        condition = manager.true
+        for variable in rng.sample(solver.variables, rng.randint(1, 4)):
+            atom = manager.var(variable)
+            condition &= atom if rng.random() < 0.7 else ~atom
+        (verdict,) = derivation.presences([(Bounds(condition, condition), None)], decisions)
+        restricted = formula & decisions.cube
+        expected = (
+            Presence.PRESENT if (restricted & ~condition) == manager.false
+            else Presence.ABSENT if (restricted & condition) == manager.false
+            else Presence.UNDETERMINED
+        )  # fmt: skip
+        assert verdict.presence == expected
+        if verdict.witnesses is not None:
+            without, within = verdict.witnesses
+            assert holds(formula, without) and holds(formula, within)
+            assert not holds(condition, without) and holds(condition, within)

@@ -31,14 +31,15 @@ from dataclasses import dataclass, replace
 from enum import StrEnum
 from itertools import chain
 
-from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel, FileFeature, name_of
 from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.sat import Sat
-from rosvar.logic.bdd import BDD, cofactor, evaluate, walked_support
+from rosvar.logic.bdd import BDD, children_first, cofactor, cofactors, evaluate, walked_support
 
 SOURCES = 4  # witnesses tried as the source of a repair
 REPAIRED_FILES = 8  # files a repair may copy: beyond, the solver is the cheaper way
 CACHED_REPAIRS = 4096  # repaired witnesses by witness and literals, dropped all at once
+MUTATED = 4  # the latest candidates a missing example is first sought from (``_mutated``)
 EXAMPLES = 64
 """Configurations found for presence judgements, kept to judge other conditions too."""
 
@@ -115,13 +116,20 @@ class Derivation:
         }
         # the constraints that leave each file, with the files they link
         self._crossing: list[list[tuple[BDD, int, frozenset[int]]]] = [[] for _ in model.files]
+        # every part of the component formulas that reads a file, and its args' values
+        self._parts_of: list[list[BDD]] = [solver.arg_trees(f) for f in model.files]
+        self._groups = [_groups(f, self.position) for f in model.files]
+        self._file_bit = [1 << self.position[name_of(f.variable)] for f in model.files]
         for constraint in solver.constraints:
             support = [self.position[v] for v in walked_support(constraint)]
             files = frozenset(self._file_at[at] for at in support)
+            for file in files:
+                self._parts_of[file].append(constraint)
             if len(files) > 1:
                 reads = sum(1 << at for at in support)
                 for file in files:
                     self._crossing[file].append((constraint, reads, files))
+        self._necessary: dict[BDD, tuple[int, int]] = {}
         self._reads: dict[frozenset[int], int] = {}  # files → what their constraints read
         self._broke: dict[tuple[frozenset[int], int], frozenset[int]] = {}
         self._repairs: dict[tuple[int, BDD], int | None] = {}
@@ -471,15 +479,26 @@ class Derivation:
             examples = (
                 w for w in self._examples.get(component, ()) if decisions.valid(component, w)
             )
+            candidates = list(chain(decisions.witnesses[component], examples))
             exact = must == may  # the usual case: one walk down the diagram answers both
-            for witness in chain(decisions.witnesses[component], examples):
-                holds = self._holds(must, witness) if exact else None
+            mask, bits = self._implied(may)  # a witness without these has no ``may``
+            for witness in candidates:
+                if witness & mask != bits:
+                    holds = False
+                elif exact:
+                    holds = self._holds(must, witness)
+                else:
+                    holds = None
                 if without is None and not (holds if exact else self._holds(must, witness)):
                     without = witness
-                if within is None and (holds if exact else self._holds(may, witness)):
+                if within is None and (holds if holds is not None else self._holds(may, witness)):
                     within = witness
                 if without is not None and within is not None:
                     return Presence.UNDETERMINED, (without, within)
+            if within is None:
+                within = self._mutated(may, component, decisions, candidates)
+                if within is not None:
+                    self._examples.setdefault(component, deque(maxlen=EXAMPLES)).append(within)
         if without is None:
             without = self._example(decisions, ~must, component)
             if without is None:
@@ -489,6 +508,94 @@ class Derivation:
             if within is None:
                 return Presence.ABSENT, None
         return Presence.UNDETERMINED, None if component is None else (without, within)
+
+    def _implied(self, u: BDD) -> tuple[int, int]:
+        """Literals every model of ``u`` has (positions and values, as bits): those of the
+        nodes from its root down while one cofactor is FALSE — a conjunction's top."""
+        found = self._necessary.get(u)
+        if found is None:
+            mask = bits = 0
+            false = self.manager.false
+            node = u
+            while node.var is not None:
+                low, high = cofactors(node)
+                bit = 1 << self.position[node.var]
+                if low == false:
+                    mask, bits, node = mask | bit, bits | bit, high
+                elif high == false:
+                    mask, node = mask | bit, low
+                else:
+                    break
+            found = self._necessary[u] = (mask, bits)
+        return found
+
+    def _mutated(
+        self, goal: BDD, component: int, decisions: Decisions, candidates: Sequence[int]
+    ) -> int | None:
+        """A valid configuration where ``goal`` holds, made from one of ``candidates``
+        (valid ones) without the solver: the path of ``goal`` to TRUE closest to it taken
+        (``_closest``), the values of the args of the files it changed made one per arg
+        again, and only the parts of the formula that read those files checked (the others
+        hold as in the candidate).
+
+        Variants of one element differ in the values of a few args, so a configuration
+        found for one usually becomes one for the next by setting those values."""
+        for witness in candidates[-MUTATED:]:
+            mask, bits = self._closest(goal, witness)
+            mutated = witness & ~mask | bits
+            files = set()
+            rest = mutated ^ witness
+            while rest:
+                file = self._file_at[(rest & -rest).bit_length() - 1]
+                files.add(file)
+                rest &= ~self._blocks[file]
+            for file in files:
+                mutated = self._one_value_each(file, mutated, mask)
+            parts = (part for file in files for part in self._parts_of[file])
+            if (
+                decisions.valid(component, mutated)
+                and self._holds(goal, mutated)
+                and all(self._holds(part, mutated) for part in parts)
+            ):
+                return mutated
+        return None
+
+    def _closest(self, goal: BDD, witness: int) -> tuple[int, int]:
+        """The literals of a path of ``goal`` to TRUE that differs from ``witness`` in the
+        fewest variables (positions and values, as bits)."""
+        false, position = self.manager.false, self.position
+        best: dict[BDD, tuple[int, int, int] | None] = {self.manager.true: (0, 0, 0), false: None}
+        for node in children_first(goal, cofactors, best):
+            bit = 1 << position[node.var]
+            has = bool(witness & bit)
+            found = None
+            for value, child in zip((False, True), cofactors(node), strict=True):
+                below = best[child]
+                if below is None:
+                    continue
+                cost = below[0] + (value != has)
+                if found is None or cost < found[0]:
+                    found = (cost, below[1] | bit, below[2] | bit if value else below[2])
+            best[node] = found
+        path = best[goal]
+        return (0, 0) if path is None else (path[1], path[2])
+
+    def _one_value_each(self, file: int, bits: int, fixed: int) -> int:
+        """``bits`` with one value for each arg of a selected ``file`` (the one set, else
+        its default or first value not cleared by ``fixed``), none for an unselected one."""
+        for group, preferred in self._groups[file]:
+            if not bits & self._file_bit[file]:
+                bits &= ~group
+                continue
+            chosen = bits & group
+            if chosen and not chosen & (chosen - 1):
+                continue
+            kept = chosen & fixed or group & ~fixed
+            if not kept:
+                continue  # every value is ruled out: the check of the parts refuses it
+            pick = preferred if preferred & kept else kept & -kept
+            bits = bits & ~group | pick
+        return bits
 
     def _example(self, decisions: Decisions, goal: BDD, component: int | None) -> int | None:
         """A valid configuration under the user literals where ``goal`` (over ``component``;
@@ -518,6 +625,18 @@ class Derivation:
             found = frozenset(walked_support(u))
             self._supports[u] = found
         return found
+
+
+def _groups(file: FileFeature, position: Mapping[str, int]) -> list[tuple[int, int]]:
+    """Per arg of ``file``: the positions of its values, and its default value's (else its
+    first value's), as bits."""
+    groups = []
+    for arg in file.args:
+        bits = [1 << position[name_of(v.variable)] for v in arg.values]
+        if bits:
+            defaults = [b for b, v in zip(bits, arg.values, strict=True) if v.default]
+            groups.append((sum(bits), (defaults or bits)[0]))
+    return groups
 
 
 def _cover(witnesses: Sequence[int], shown: int) -> tuple[int, ...]:

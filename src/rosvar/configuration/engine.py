@@ -29,6 +29,9 @@ from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.inputs import OTHER, UNSET
 
+Progress = Callable[[str, int, int], None]
+"""Told what the engine builds while it is built: a phase, and how far it is (done, total)."""
+
 CACHED_FEATURES = 1_000_000
 """Views, replays and solver answers are kept per list of choices (a session's history and
 then some), each holding a state of every feature: as many as make this many feature states
@@ -146,11 +149,13 @@ class Configurator:
         model: FeatureModel,
         env: Mapping[str, str] | None = None,
         spelling: Mapping[str, str] | None = None,
+        progress: Progress | None = None,
     ) -> None:
-        """``model`` from ``extract(analysis, products=True)``."""
+        """``model`` from ``extract(analysis, products=True)``; ``progress``: told how far
+        the build is (a large workspace takes a while)."""
         if not model.products:
             raise ValueError("the configurator needs extract(..., products=True)")
-        self._build(analysis, model, env, spelling)
+        self._build(analysis, model, env, spelling, progress or _silent)
 
     @collector_paused()  # a long-lived heap: left young, the collector rescanned it each step
     def _build(
@@ -159,20 +164,30 @@ class Configurator:
         model: FeatureModel,
         env: Mapping[str, str] | None,
         spelling: Mapping[str, str] | None,
+        progress: Progress,
     ) -> None:
         self.analysis = analysis
         self.model = model
         self.catalog = Catalog(model, spelling)
+        progress("solver", 0, 1)
         self.derivation = Derivation(model)
         self.lowering = Lowering(analysis, model, env or {})
         file_ids = {entry.path: entry.id for entry in self.catalog.files}
-        self.graph = VariationalGraph(analysis, model, self.lowering, file_ids)
+        self.graph = VariationalGraph(
+            analysis,
+            model,
+            self.lowering,
+            file_ids,
+            lambda done, total: progress("graph of files", done, total),
+        )
+        progress("conflicts", 0, 1)
         self.conflicts = Conflicts(model, self.lowering, file_ids)
         self._launched = {
             entry.path: self.lowering.bounds(self.graph.launched[entry.path])
             for entry in self.catalog.files
         }
         cached = max(MIN_CACHED_STEPS, CACHED_FEATURES // max(1, len(self.catalog.features)))
+        progress("presence of elements", 0, len(self.graph.elements))
         self.views = Views(
             analysis,
             self.catalog,
@@ -221,6 +236,7 @@ class Configurator:
         self._replays: PrefixCache[UserChoice, _Replay] = PrefixCache(
             _Replay((), (), (), self.derivation.initial), cached
         )
+        progress("ready", 1, 1)
 
     # -- choices -------------------------------------------------------------------------
     def state(self, choices: Sequence[UserChoice]) -> ConfigurationState:
@@ -442,6 +458,10 @@ class Configurator:
                     given[name] = text
             launches.append(Launch(entry.path, entry.id, given, reads))
         return launches
+
+
+def _silent(_phase: str, _done: int, _total: int) -> None:
+    """No progress shown."""
 
 
 def _texts(effective: Iterable[_Effective]) -> dict[str, str]:

@@ -109,12 +109,16 @@ class VariationalGraph:
         model: FeatureModel,
         lowering: Lowering,
         file_ids: Mapping[str, str],
+        progress: Callable[[int, int], None] | None = None,
     ) -> None:
+        """``progress``: told how many of the files are done, and of how many."""
         self.lowering = lowering
         self.elements: list[Element] = []
         self.launched: dict[str, BDD] = _launched(model)
         self._topics: dict[tuple[str, str], _Topic] = {}
-        for file in model.files:
+        for done, file in enumerate(model.files):
+            if progress is not None:
+                progress(done, len(model.files))
             self._add_model(
                 analysis.model(file.file), file_ids[file.file], self.launched[file.file]
             )
@@ -149,7 +153,7 @@ class VariationalGraph:
         parts: tuple[Part, ...] = (),
     ) -> Element | None:
         fixed, bounds = self.lowering.lower(condition)
-        if not self.lowering.space.satisfiable(fixed):
+        if not self.lowering.satisfiable(fixed):
             return None  # e.g. two values of one arg: combinations no configuration has
         element = Element(
             kind, id_, entry, fixed, bounds, render, frozenset(inputs), nodes or [], parts
@@ -253,7 +257,7 @@ class VariationalGraph:
                 kept.append((first, second, None))
                 continue
             fixed, bounds = self.lowering.lower(both)
-            if self.lowering.space.satisfiable(fixed):
+            if self.lowering.satisfiable(fixed):
                 kept.append((first, second, len(parts)))
                 parts.append(Part(fixed, bounds))
         return kept

@@ -71,6 +71,8 @@ class Lowering:
                 self.fixed[name] = truth[name]
         self._cache: dict[BDD, tuple[BDD, Bounds]] = {}
         self._decided: dict[tuple[BDD, frozenset[tuple[Input, str]]], Bounds] = {}
+        self._cares: dict[frozenset[str], BDD] = {}
+        self._satisfiable: dict[BDD, bool] = {}
 
     def fix(self, condition: BDD) -> BDD:
         """``condition`` with the fixed atoms substituted (still in the analysis' manager)."""
@@ -79,14 +81,35 @@ class Lowering:
     def bounds(self, condition: BDD) -> Bounds:
         return self.lower(condition)[1]
 
+    def satisfiable(self, fixed: BDD) -> bool:
+        """``space.satisfiable`` of a lowered condition (``lower`` answers it on the way)."""
+        found = self._satisfiable.get(fixed)
+        if found is None:
+            found = self._satisfiable[fixed] = self._judge(fixed, self.space.support(fixed))
+        return found
+
+    def _judge(self, fixed: BDD, support: set[str]) -> bool:
+        """Satisfiability with the facts that matter conjoined once per support: the
+        variants of one element share theirs."""
+        key = frozenset(support)
+        care = self._cares.get(key)
+        if care is None:
+            care = self._cares[key] = self.space.care_over(support)
+        return bool((fixed & care) != self.space.false)
+
     def lower(self, condition: BDD) -> tuple[BDD, Bounds]:
         found = self._cache.get(condition)
         if found is None:
             support = self.space.support(condition)
             values = {n: self.fixed[n] for n in support if n in self.fixed}
             fixed = self.space.cofactor(condition, values)
-            found = (fixed, self._copy(fixed))
+            kept = support  # the support of ``fixed`` when nothing was fixed
+            if values:
+                kept = self.space.support(fixed)
+            found = (fixed, self._copy(fixed, kept))
             self._cache[condition] = found
+            if fixed not in self._satisfiable:
+                self._satisfiable[fixed] = self._judge(fixed, kept)
         return found
 
     def decide(self, condition: BDD, typed: Mapping[Input, str]) -> Bounds:
@@ -102,12 +125,14 @@ class Lowering:
                 assert isinstance(atom, PredicateAtom)
                 if term_inputs(atom.term) <= concrete.keys():
                     values[name] = decide_predicate(atom, concrete, self.host)
-            found = self._copy(self.space.cofactor(fixed, values))
+            decided = self.space.cofactor(fixed, values)
+            found = self._copy(decided, self.space.support(decided))
             self._decided[key] = found
         return found
 
-    def _copy(self, fixed: BDD) -> Bounds:
-        """In the solver's manager: ``∀ open. fixed`` and ``∃ open. fixed``."""
-        open_ = self.space.support(fixed) & self.open
+    def _copy(self, fixed: BDD, support: set[str]) -> Bounds:
+        """In the solver's manager: ``∀ open. fixed`` and ``∃ open. fixed`` (``support``:
+        that of ``fixed``)."""
+        open_ = support & self.open
         may = transfer(fixed, self.manager, open_)
         return Bounds(~transfer(~fixed, self.manager, open_) if open_ else may, may)

@@ -27,7 +27,7 @@ from rosvar.ros.names import command_line_mappings
 # Each command imports what it needs when it runs: `dd` (and CUDD), the interpreter, numpy
 # and the web server are not what `--version`, `--help` or another command pays for.
 if TYPE_CHECKING:
-    from rosvar.configuration.engine import ConfigurationState
+    from rosvar.configuration.engine import ConfigurationState, Progress
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace import Workspace
 
@@ -40,6 +40,24 @@ def _progress(index: int, total: int, file: str) -> None:
         if index + 1 == total:
             sys.stderr.write("\n")
         sys.stderr.flush()
+
+
+def _building(tty_only: bool) -> Progress:
+    """Shows how far the configuration engine's build is: one line rewritten in place on
+    a terminal, else (unless ``tty_only``) a line per phase."""
+    tty = sys.stderr.isatty()
+
+    def show(phase: str, done: int, total: int) -> None:
+        if tty:
+            end = "\n" if phase == "ready" else ""
+            counted = f" {done:,}/{total:,}" if total > 1 else ""
+            line = f"rosvar: building the configuration engine: {phase}{counted}"
+            sys.stderr.write(f"\r{line:<79}{end}")
+        elif not tty_only and done == 0:
+            sys.stderr.write(f"rosvar: building the configuration engine: {phase} ...\n")
+        sys.stderr.flush()
+
+    return show
 
 
 def _print_json(document: object) -> None:
@@ -303,9 +321,8 @@ def cmd_configure(options: argparse.Namespace) -> int:
     analysis, env = loaded
     try:
         choices = [UserChoice.parse(action, text) for action, text in options.choices]
-        configurator = Configurator(
-            analysis, extract(analysis, progress=_progress, products=True), env
-        )
+        model = extract(analysis, progress=_progress, products=True)
+        configurator = Configurator(analysis, model, env, progress=_building(tty_only=True))
         if options.finish:
             choices += configurator.completion(choices)
         state = configurator.state(choices)
@@ -413,8 +430,7 @@ def cmd_serve(options: argparse.Namespace) -> int:
     files = len(analysis.workspace.launch_files)
     print(f"rosvar: analysing {files} launch files ...", file=sys.stderr, flush=True)
     model = extract(analysis, progress=_progress, products=True)
-    print("rosvar: building the configuration engine ...", file=sys.stderr, flush=True)
-    configurator = Configurator(analysis, model, env)
+    configurator = Configurator(analysis, model, env, progress=_building(tty_only=False))
     try:
         server = make_server(configurator, options.host, options.port)
     except OSError as error:
