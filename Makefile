@@ -70,7 +70,7 @@ demo: setup
 	$(VENV)/bin/rosvar serve $(DEMO_PATHS) --port $(DEMO_PORT)
 
 test: setup
-	$(VPY) -m ruff check src tests bench setup.py
+	$(VPY) -m ruff check src tests bench tools docs/screenshot.py
 	$(VPY) -m mypy
 	$(VPY) -m pytest -q
 
