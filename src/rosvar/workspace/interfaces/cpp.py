@@ -297,7 +297,11 @@ class Unit:
                 continue
             reached[id(function)] = function
             for node in _walk(function.node, {"identifier", "field_identifier", "type_identifier"}):
-                pending.extend(self.functions.get(_text(node), ()))
+                name = _text(node)
+                pending.extend(self.functions.get(name, ()))
+                if name in self.fields:  # a member's constructor runs with its owner's
+                    for word in re.findall(r"\w+", self.fields[name]):
+                        pending.extend(f for f in self.functions.get(word, ()) if f.owner == word)
         return list(reached.values())
 
 
@@ -377,8 +381,11 @@ class _Evaluator:
         self.assignments: dict[int, dict[str, list[Node]]] = {}
         self.calls: dict[str, list[_CallSite]] = {}
         self.active: set[tuple[int, int]] = set()
+        self._writes: dict[str, list[tuple[Function, Node]]] | None = None
+        self._fields: dict[str, Value] = {}
         for function in reached:
-            for call in _walk(function.node, {"call_expression", "new_expression", "declaration"}):
+            kinds = {"call_expression", "new_expression", "declaration", "field_initializer"}
+            for call in _walk(function.node, kinds):
                 for site in self._call_sites(call, function):
                     self.calls.setdefault(site.name, []).append(site)
 
@@ -399,6 +406,9 @@ class _Evaluator:
             if type_node is not None:
                 name = _last(_text(type_node).split("<")[0])
                 yield _CallSite(name, caller, _arguments(node), name)
+        elif node.type == "field_initializer":
+            name = _last(self.unit.fields.get(_text(node.named_children[0]), "").split("<")[0])
+            yield _CallSite(name, caller, _arguments(node), name)
         else:
             for _, variable in _declared(node):
                 if variable.arguments is not None:
@@ -409,6 +419,9 @@ class _Evaluator:
         """The declared type of a receiver variable, when the unit declares it."""
         if node.type == "this":
             return function.owner
+        if node.type in ("subscript_expression", "pointer_expression"):
+            inner = node.child_by_field_name("argument")
+            return self._type_of(inner, function) if inner is not None else None
         if node.type == "field_expression":
             member = node.child_by_field_name("field")
             return self.unit.fields.get(_text(member)) if member is not None else None
@@ -432,11 +445,31 @@ class _Evaluator:
                         node.child_by_field_name("left"),
                         node.child_by_field_name("right"),
                     )
-                    if left is not None and right is not None and left.type == "identifier":
+                    if left is None or right is None:
+                        continue
+                    if left.type == "identifier":
                         assignments.setdefault(_text(left), []).append(right)
+                    elif left.type == "field_expression":
+                        argument = left.child_by_field_name("argument")
+                        member = left.child_by_field_name("field")
+                        if argument is not None and argument.type == "this" and member is not None:
+                            assignments.setdefault("this->" + _text(member), []).append(right)
             self.locals[key] = scope
             self.assignments[key] = assignments
         return self.locals[key]
+
+    def _member_writes(self) -> dict[str, list[tuple[Function, Node]]]:
+        """Assignments to members (a name no local declares, or ``this->name``) by member."""
+        if self._writes is None:
+            self._writes = {}
+            for function in self.reached:
+                scope = self._scope(function)
+                for name, nodes in self.assignments[id(function)].items():
+                    member = name.removeprefix("this->")
+                    if member == name and name in scope:
+                        continue
+                    self._writes.setdefault(member, []).extend((function, n) for n in nodes)
+        return self._writes
 
     def evaluate(self, node: Node, function: Function | None) -> Value:
         key = (id(node), id(function))
@@ -589,15 +622,19 @@ class _Evaluator:
         return Text.unknown(name)
 
     def _field(self, name: str) -> Value:
+        if name not in self._fields:
+            self._fields[name] = self._field_value(name)
+        return self._fields[name]
+
+    def _field_value(self, name: str) -> Value:
         values: set[Value] = set()
         for write in self.unit.writes.get(name, []):
             if write.construct is not None:
                 values.add(self.construct(*write.construct, write.function))
             elif write.value is not None:
                 values.add(self.evaluate(write.value, write.function))
-        for function in self.reached:
-            for node in self._scope_assignments(function, name):
-                values.add(self.evaluate(node, function))
+        for function, node in self._member_writes().get(name, []):
+            values.add(self.evaluate(node, function))
         values.discard(None)
         if len(values) == 1:
             return values.pop()
@@ -609,27 +646,6 @@ class _Evaluator:
                 Handle(Text.unknown(name)) if any(isinstance(v, Handle) for v in values) else None
             )
         return None
-
-    def _scope_assignments(self, function: Function, name: str) -> list[Node]:
-        if name in self._scope(function):
-            return []
-        found = list(self.assignments[id(function)].get(name, []))
-        for node in _walk(function.node, {"assignment_expression"}):
-            left = node.child_by_field_name("left")
-            right = node.child_by_field_name("right")
-            if left is not None and right is not None and left.type == "field_expression":
-                argument, member = (
-                    left.child_by_field_name("argument"),
-                    left.child_by_field_name("field"),
-                )
-                if (
-                    argument is not None
-                    and argument.type == "this"
-                    and member is not None
-                    and _text(member) == name
-                ):
-                    found.append(right)
-        return found
 
     def _constant(self, name: str) -> Value:
         node = self.unit.constants.get(name)

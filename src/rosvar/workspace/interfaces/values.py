@@ -28,6 +28,8 @@ class Text:
 
     def within(self, namespace: Text) -> Text:
         """This name as a node handle in ``namespace`` resolves it (``~``, ``/`` kept)."""
+        if self.static and self.value[:1] in ("/", "~"):
+            return self
         if not self.static and self.value.startswith("{"):
             if namespace.value in ("", "~"):
                 return Text(namespace.value + self.value, False)
