@@ -32,6 +32,7 @@ from rosvar.outputs.web.server import make_server
 from rosvar.ros.names import command_line_mappings
 from rosvar.workspace import Workspace, discover
 from rosvar.workspace.hints import load_hints
+from rosvar.workspace.interfaces.extraction import extract_interfaces
 
 EXIT_OK, EXIT_FAILS, EXIT_USAGE, EXIT_INPUT, EXIT_TOO_LARGE = 0, 1, 2, 3, 4
 
@@ -320,6 +321,44 @@ def cmd_serve(options: argparse.Namespace) -> int:
     return EXIT_OK
 
 
+def cmd_interfaces(options: argparse.Namespace) -> int:
+    roots = [os.path.abspath(path) for path in options.paths]
+    workspace = _workspace(options.paths)
+    packages = [
+        package
+        for package in workspace.packages.values()
+        if any(os.path.commonpath([package.path, root]) in (package.path, root) for root in roots)
+    ]
+    interfaces = extract_interfaces(packages)
+    if options.json:
+        _print_json(interfaces.to_json())
+        return EXIT_OK
+    for node in interfaces.nodes:
+        print(f"{node.package} {node.executable} ({node.kind})")
+        for entry in node.entries:
+            detail = entry.type if entry.type is not None else f"default {entry.default}"
+            print(f"  {entry.role:<14} {entry.name:<40} {detail}  {entry.location}")
+    for diagnostic in interfaces.diagnostics:
+        print(diagnostic, file=sys.stderr)
+    return EXIT_OK
+
+
+def _add_interfaces(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    interfaces = commands.add_parser(
+        "interfaces",
+        help="topics, services, actions and parameters of every node and nodelet",
+        description="Read the C++ and Python sources of the packages below PATH and list what "
+        "each executable and nodelet class publishes, subscribes, serves, calls and reads.",
+        epilog="example: rosvar interfaces ~/catkin_ws/src --json | jq '.interfaces[0]'",
+    )
+    interfaces.add_argument("paths", nargs="+", metavar="PATH", help="package roots to read")
+    interfaces.add_argument("--json", action="store_true", help="machine-readable output")
+    interfaces.add_argument(
+        "--hints", metavar="FILE", help="YAML with interface entries (docs/hints.md, nodes:)"
+    )
+    interfaces.set_defaults(run=cmd_interfaces)
+
+
 def parser() -> argparse.ArgumentParser:
     top = argparse.ArgumentParser(
         prog="rosvar",
@@ -381,6 +420,7 @@ def parser() -> argparse.ArgumentParser:
     serve.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
     serve.add_argument("--hints", metavar="FILE")
     serve.set_defaults(run=cmd_serve)
+    _add_interfaces(commands)
     return top
 
 

@@ -224,7 +224,9 @@ class Unit:
                 if macro is not None and value is not None:
                     text = _text(value).strip()
                     if text.startswith('"'):
-                        self.constants[_text(macro)] = _PARSER.parse(text.encode()).root_node
+                        self.constants[_text(macro)] = _PARSER.parse(
+                            (text + ";").encode()
+                        ).root_node
             elif _enclosing_function(node) is None:
                 for name, variable in _declared(node):
                     if variable.init is not None:
@@ -296,13 +298,23 @@ class Unit:
             if id(function) in reached:
                 continue
             reached[id(function)] = function
-            for node in _walk(function.node, {"identifier", "field_identifier", "type_identifier"}):
+            names = {"identifier", "field_identifier", "type_identifier"}
+            for node in (n for part in _parts(function) for n in _walk(part, names)):
                 name = _text(node)
                 pending.extend(self.functions.get(name, ()))
                 if name in self.fields:  # a member's constructor runs with its owner's
                     for word in re.findall(r"\w+", self.fields[name]):
                         pending.extend(f for f in self.functions.get(word, ()) if f.owner == word)
         return list(reached.values())
+
+
+def _parts(function: Function) -> list[Node]:
+    """What runs when ``function`` does: its member initialisers and body, not its name."""
+    return [
+        c
+        for c in function.node.children
+        if c.type in ("field_initializer_list", "compound_statement")
+    ]
 
 
 def _function_declarator(node: Node) -> Node | None:

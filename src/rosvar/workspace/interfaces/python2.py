@@ -44,11 +44,22 @@ def parse(source: str, filename: str) -> tuple[ast.Module, int]:
 def _rewrite(line: str) -> str:
     for pattern, replacement in _REWRITES:
         changed = pattern.sub(replacement, line)
-        if changed != line:
-            try:
-                ast.parse(changed.strip() or "pass")
-            except SyntaxError:
-                continue
+        if changed != line and _parses(changed.strip()):
             return changed
     indent = line[: len(line) - len(line.lstrip())]
     return indent + "pass"
+
+
+def _parses(statement: str) -> bool:
+    """Whether ``statement`` is valid alone, or as the header of a block (``except E as e:``)."""
+    for candidate in (
+        statement,
+        f"try:\n    pass\n{statement}\n    pass",
+        f"{statement}\n    pass",
+    ):
+        try:
+            ast.parse(candidate)
+        except SyntaxError:
+            continue
+        return True
+    return False
