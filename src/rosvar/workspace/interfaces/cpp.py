@@ -66,13 +66,31 @@ class Function:
     parameters: list[tuple[str, str]]
     node: Node
     file: str
+    _kinds: dict[str, list[Node]] | None = field(default=None, repr=False)
+
+    def nodes(self, *types: str) -> list[Node]:
+        """The nodes of ``types`` in the definition, in source order (one walk, kept)."""
+        if self._kinds is None:
+            self._kinds = {}
+            for node in _walk_all(self.node):
+                self._kinds.setdefault(node.type, []).append(node)
+        found = [node for kind in types for node in self._kinds.get(kind, ())]
+        if len(types) > 1:
+            found.sort(key=lambda node: node.start_byte)
+        return found
 
 
 @dataclass
 class _Parsed:
+    """A parsed file, with the nodes that declare things listed in source order."""
+
     path: str
     root: Node
     includes: list[str]
+    declarations: list[Node]
+
+
+_DECLARING = frozenset({"function_definition", "field_declaration", "declaration", "preproc_def"})
 
 
 @lru_cache(maxsize=4096)
@@ -81,26 +99,40 @@ def _parse(path: str) -> _Parsed | None:
     if data is None:
         return None
     root = _PARSER.parse(data).root_node
-    includes = []
-    for node in _walk(root, {"preproc_include"}):
+    includes, declarations = [], []
+    for node in _walk(root, _DECLARING | {"preproc_include"}):
+        if node.type != "preproc_include":
+            declarations.append(node)
+            continue
         target = node.child_by_field_name("path")
         if target is not None:
             includes.append(_text(target).strip('"<>'))
-    return _Parsed(path, root, includes)
+    return _Parsed(path, root, includes, declarations)
 
 
 def _text(node: Node) -> str:
     return node.text.decode("utf-8", errors="replace") if node.text is not None else ""
 
 
+def _walk_all(node: Node) -> Iterator[Node]:
+    """Every node below ``node`` (itself included), in source order."""
+    cursor = node.walk()
+    while True:
+        current = cursor.node
+        if current is not None:
+            yield current
+        if cursor.goto_first_child() or cursor.goto_next_sibling():
+            continue
+        while True:
+            if not cursor.goto_parent() or cursor.node == node:
+                return
+            if cursor.goto_next_sibling():
+                break
+
+
 def _walk(node: Node, types: set[str] | frozenset[str]) -> Iterator[Node]:
     """Every descendant of one of ``types``, in source order (including ``node``)."""
-    stack = [node]
-    while stack:
-        current = stack.pop()
-        if current.type in types:
-            yield current
-        stack.extend(reversed(current.children))
+    return (current for current in _walk_all(node) if current.type in types)
 
 
 def _last(name: str) -> str:
@@ -210,9 +242,7 @@ class Unit:
         return unit
 
     def _index(self, parsed: _Parsed) -> None:
-        for node in _walk(
-            parsed.root, {"function_definition", "field_declaration", "declaration", "preproc_def"}
-        ):
+        for node in parsed.declarations:
             if node.type == "function_definition":
                 self._function(node, parsed.path)
             elif _function_declarator(node) is not None:
@@ -268,7 +298,7 @@ class Unit:
         function = Function(_last(qualified), owner, parameters, node, path)
         self.functions.setdefault(function.name, []).append(function)
         self.signatures.setdefault(function.name, []).append([t for t, _ in parameters])
-        for initializer in _walk(node, {"field_initializer"}):
+        for initializer in function.nodes("field_initializer"):
             name_node = initializer.named_children[0]
             self.writes.setdefault(_text(name_node), []).append(
                 _Write(
@@ -298,8 +328,11 @@ class Unit:
             if id(function) in reached:
                 continue
             reached[id(function)] = function
-            names = {"identifier", "field_identifier", "type_identifier"}
-            for node in (n for part in _parts(function) for n in _walk(part, names)):
+            parts = _parts(function)
+            start = min((part.start_byte for part in parts), default=function.node.end_byte)
+            for node in function.nodes("identifier", "field_identifier", "type_identifier"):
+                if node.start_byte < start:
+                    continue  # the function's own name and parameters
                 name = _text(node)
                 pending.extend(self.functions.get(name, ()))
                 if name in self.fields:  # a member's constructor runs with its owner's
@@ -396,8 +429,8 @@ class _Evaluator:
         self._writes: dict[str, list[tuple[Function, Node]]] | None = None
         self._fields: dict[str, Value] = {}
         for function in reached:
-            kinds = {"call_expression", "new_expression", "declaration", "field_initializer"}
-            for call in _walk(function.node, kinds):
+            kinds = ("call_expression", "new_expression", "declaration", "field_initializer")
+            for call in function.nodes(*kinds):
                 for site in self._call_sites(call, function):
                     self.calls.setdefault(site.name, []).append(site)
 
@@ -449,7 +482,7 @@ class _Evaluator:
         if key not in self.locals:
             scope: dict[str, _Variable] = {}
             assignments: dict[str, list[Node]] = {}
-            for node in _walk(function.node, {"declaration", "assignment_expression"}):
+            for node in function.nodes("declaration", "assignment_expression"):
                 if node.type == "declaration":
                     scope.update(_declared(node))
                 else:
@@ -712,8 +745,8 @@ class _Collector:
         )
 
     def scan(self, function: Function) -> None:
-        for node in _walk(
-            function.node, {"call_expression", "new_expression", "declaration", "field_initializer"}
+        for node in function.nodes(
+            "call_expression", "new_expression", "declaration", "field_initializer"
         ):
             if node.type == "call_expression":
                 self._call(node, function)

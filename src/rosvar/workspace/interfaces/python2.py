@@ -30,6 +30,15 @@ def parse(source: str, filename: str) -> tuple[ast.Module, int]:
     """
     lines = source.split("\n")
     rewritten = 0
+    try:
+        return ast.parse(source, filename=filename), 0
+    except SyntaxError:
+        # rewrite every Python 2 statement at once: re-parsing per line costs a parse a line
+        for index, line in enumerate(lines):
+            changed = _statement(line)
+            if changed != line:
+                lines[index] = changed
+                rewritten += 1
     while True:
         try:
             return ast.parse("\n".join(lines), filename=filename), rewritten
@@ -39,6 +48,15 @@ def parse(source: str, filename: str) -> tuple[ast.Module, int]:
                 raise
             lines[index] = _rewrite(lines[index])
             rewritten += 1
+
+
+def _statement(line: str) -> str:
+    """``line`` with a Python 2 ``print`` or ``except E, e`` statement rewritten, if it is one."""
+    for pattern, replacement in _REWRITES[:4]:
+        if pattern.match(line) and not re.match(r"\s*print\s*=", line):
+            changed = pattern.sub(replacement, line)
+            return changed if _parses(changed.strip()) else line
+    return line
 
 
 def _rewrite(line: str) -> str:
