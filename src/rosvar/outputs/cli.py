@@ -33,6 +33,7 @@ from rosvar.ros.names import command_line_mappings
 from rosvar.workspace import Workspace, discover
 from rosvar.workspace.hints import load_hints
 from rosvar.workspace.interfaces.extraction import extract_interfaces
+from rosvar.workspace.interfaces.overrides import apply_hints
 
 EXIT_OK, EXIT_FAILS, EXIT_USAGE, EXIT_INPUT, EXIT_TOO_LARGE = 0, 1, 2, 3, 4
 
@@ -330,6 +331,9 @@ def cmd_interfaces(options: argparse.Namespace) -> int:
         if any(os.path.commonpath([package.path, root]) in (package.path, root) for root in roots)
     ]
     interfaces = extract_interfaces(packages)
+    hints = load_hints(options.hints)
+    interfaces.diagnostics.extend(hints.diagnostics)
+    apply_hints(interfaces, hints.nodes)
     if options.json:
         _print_json(interfaces.to_json())
         return EXIT_OK

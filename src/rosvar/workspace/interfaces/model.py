@@ -36,7 +36,8 @@ class Role(enum.StrEnum):
 
 
 class Origin(enum.StrEnum):
-    """Where an entry comes from, in increasing order of authority for one node."""
+    """Where an entry comes from: the catalogue stands in for sources not in the workspace,
+    hints override both."""
 
     SOURCE = "source"
     CATALOGUE = "catalogue"
@@ -68,6 +69,7 @@ class Entry:
     type: str | None = None
     default: Default | None = None
     static: bool = True
+    when: str | None = None  # a hint's presence condition, as written (launch args, params)
 
     def to_json(self) -> dict[str, object]:
         document: dict[str, object] = {"name": self.name}
@@ -81,6 +83,8 @@ class Entry:
         document["origin"] = str(self.origin)
         if not self.static:
             document["static"] = False
+        if self.when is not None:
+            document["when"] = self.when
         return document
 
 
