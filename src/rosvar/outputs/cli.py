@@ -32,8 +32,9 @@ from rosvar.outputs.web.server import make_server
 from rosvar.ros.names import command_line_mappings
 from rosvar.workspace import Workspace, discover
 from rosvar.workspace.hints import load_hints
+from rosvar.workspace.interfaces.catalogue import load_catalogue
 from rosvar.workspace.interfaces.extraction import extract_interfaces
-from rosvar.workspace.interfaces.overrides import apply_hints
+from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
 
 EXIT_OK, EXIT_FAILS, EXIT_USAGE, EXIT_INPUT, EXIT_TOO_LARGE = 0, 1, 2, 3, 4
 
@@ -333,6 +334,8 @@ def cmd_interfaces(options: argparse.Namespace) -> int:
     interfaces = extract_interfaces(packages)
     hints = load_hints(options.hints)
     interfaces.diagnostics.extend(hints.diagnostics)
+    if options.catalogue:
+        add_catalogue(interfaces, load_catalogue())
     apply_hints(interfaces, hints.nodes)
     if options.json:
         _print_json(interfaces.to_json())
@@ -359,6 +362,11 @@ def _add_interfaces(commands: argparse._SubParsersAction[argparse.ArgumentParser
     interfaces.add_argument("--json", action="store_true", help="machine-readable output")
     interfaces.add_argument(
         "--hints", metavar="FILE", help="YAML with interface entries (docs/hints.md, nodes:)"
+    )
+    interfaces.add_argument(
+        "--catalogue",
+        action="store_true",
+        help="also list the bundled third-party nodes no source below PATH defines",
     )
     interfaces.set_defaults(run=cmd_interfaces)
 

@@ -140,3 +140,21 @@ def test_ros_type() -> None:
     assert ros_type("boost::shared_ptr<const nav_msgs::Odometry>") == "nav_msgs/Odometry"
     assert ros_type("std_srvs::Empty::Request &") == "std_srvs/Empty"
     assert ros_type("int (*)(void)") is None
+
+
+def test_callback_type_through_typedef(tmp_path: Path) -> None:
+    source = """\
+typedef boost::shared_ptr<sensor_msgs::JointState const> StatePtr;
+using Command = std_msgs::Float64;
+void onState(const StatePtr& state) {}
+int main() {
+  ros::NodeHandle nh;
+  nh.subscribe("joint_states", 1, &onState);
+  nh.advertise<Command>("command", 1);
+}
+"""
+    entries, _ = _extract(tmp_path, {"t.cpp": source}, "main")
+    assert [(e.name, e.type) for e in entries] == [
+        ("joint_states", "sensor_msgs/JointState"),
+        ("command", "std_msgs/Float64"),
+    ]

@@ -90,7 +90,16 @@ class _Parsed:
     declarations: list[Node]
 
 
-_DECLARING = frozenset({"function_definition", "field_declaration", "declaration", "preproc_def"})
+_DECLARING = frozenset(
+    {
+        "function_definition",
+        "field_declaration",
+        "declaration",
+        "preproc_def",
+        "type_definition",
+        "alias_declaration",
+    }
+)
 
 
 @lru_cache(maxsize=4096)
@@ -213,6 +222,7 @@ class Unit:
     files: list[str]
     functions: dict[str, list[Function]] = field(default_factory=dict)
     signatures: dict[str, list[list[str]]] = field(default_factory=dict)
+    aliases: dict[str, str] = field(default_factory=dict)
     fields: dict[str, str] = field(default_factory=dict)
     writes: dict[str, list[_Write]] = field(default_factory=dict)
     constants: dict[str, Node] = field(default_factory=dict)
@@ -243,7 +253,9 @@ class Unit:
 
     def _index(self, parsed: _Parsed) -> None:
         for node in parsed.declarations:
-            if node.type == "function_definition":
+            if node.type in ("type_definition", "alias_declaration"):
+                self._alias(node)
+            elif node.type == "function_definition":
                 self._function(node, parsed.path)
             elif _function_declarator(node) is not None:
                 self._signature(node)
@@ -261,6 +273,22 @@ class Unit:
                 for name, variable in _declared(node):
                     if variable.init is not None:
                         self.constants[name] = variable.init
+
+    def _alias(self, node: Node) -> None:
+        """``typedef T Name;`` or ``using Name = T;``: message types are often spelled so."""
+        aliased = node.child_by_field_name("type")
+        name = node.child_by_field_name("declarator" if node.type == "type_definition" else "name")
+        if aliased is not None and name is not None:
+            self.aliases[_text(name)] = _text(aliased)
+
+    def message_type(self, text: str) -> str | None:
+        """The ROS type of C++ type ``text``, through the unit's type aliases."""
+        for _ in range(8):  # an alias of an alias; a cycle stops here
+            bare = re.sub(r"\b(const|typename)\b|[&*\s]", "", text)
+            if bare not in self.aliases:
+                break
+            text = self.aliases[bare]
+        return ros_type(text)
 
     def _signature(self, node: Node) -> None:
         """A declared (not defined) function: callbacks are often only declared in a header."""
@@ -768,7 +796,7 @@ class _Collector:
         compact = type_text.replace(" ", "")
         base = _last(compact.split("<")[0])
         templates = _template_arguments_text(compact)
-        message = ros_type(templates[0]) if templates else None
+        message = self.unit.message_type(templates[0]) if templates else None
         handle, rest = self._split_handle(arguments, function)
         if base in _ACTION_CLASSES and "actionlib" in compact and rest:
             role = _ACTION_CLASSES[base]
@@ -815,15 +843,15 @@ class _Collector:
         if value.images:
             self._image(value, method, topic, function, node)
         elif method == "advertise":
-            self.add(Role.PUBLISHES, value, topic, function, node, _first_type(templates))
+            self.add(Role.PUBLISHES, value, topic, function, node, self._first_type(templates))
         elif method == "subscribe":
-            type_name = _first_type(templates) or self._callback_type(arguments[1:])
+            type_name = self._first_type(templates) or self._callback_type(arguments[1:])
             self.add(Role.SUBSCRIBES, value, topic, function, node, type_name)
         elif method == "advertiseService":
-            type_name = _first_type(templates) or self._callback_type(arguments[1:])
+            type_name = self._first_type(templates) or self._callback_type(arguments[1:])
             self.add(Role.SERVICES, value, topic, function, node, type_name)
         elif method == "serviceClient":
-            self.add(Role.CLIENTS, value, topic, function, node, _first_type(templates))
+            self.add(Role.CLIENTS, value, topic, function, node, self._first_type(templates))
         elif method in _PARAM_READS:
             self._param(value, arguments, function, node, method == "param")
 
@@ -863,7 +891,7 @@ class _Collector:
         compact = type_text.replace(" ", "")
         if "message_filters" in compact:
             templates = _template_arguments_text(compact)
-            self.add(Role.SUBSCRIBES, handle, rest[0], function, at, _first_type(templates))
+            self.add(Role.SUBSCRIBES, handle, rest[0], function, at, self._first_type(templates))
         elif "SubscriberFilter" in compact:
             self.add(Role.SUBSCRIBES, handle, rest[0], function, at, _IMAGE)
 
@@ -882,6 +910,9 @@ class _Collector:
             )
         self.add(Role.PARAMS, handle, arguments[0], function, at, default=default)
 
+    def _first_type(self, templates: list[str]) -> str | None:
+        return self.unit.message_type(templates[0]) if templates else None
+
     def _callback_type(self, arguments: list[Node]) -> str | None:
         """The message type a callback takes: the first parameter of the function named."""
         for argument in arguments:
@@ -894,11 +925,11 @@ class _Collector:
                         declarator.child_by_field_name("parameters") if declarator else None
                     )
                     if parameters is not None and parameters.named_children:
-                        return ros_type(_parameter_type(parameters.named_children[0]))
+                        return self.unit.message_type(_parameter_type(parameters.named_children[0]))
                     continue
                 for signature in self.unit.signatures.get(_last(_text(node)), []):
                     if signature:
-                        return ros_type(signature[0])
+                        return self.unit.message_type(signature[0])
         return None
 
 
@@ -922,10 +953,6 @@ def _template_arguments_text(type_text: str) -> list[str]:
         depth -= char == ">"
         current += char
     return [*parts, current]
-
-
-def _first_type(templates: list[str]) -> str | None:
-    return ros_type(templates[0]) if templates else None
 
 
 def _default(node: Node | None, evaluator: _Evaluator, function: Function) -> Default | None:
