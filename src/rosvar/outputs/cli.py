@@ -467,6 +467,7 @@ EXAMPLES = {
         "      --set examples/example/launch/robot.launch:model=husky --finish"
     ),
     "serve": "rosvar serve examples ../shared/corpus/lizi --port 8080",
+    "interfaces": "rosvar interfaces ../shared/corpus/kobuki --json | jq '.interfaces[0]'",
 }
 
 
@@ -492,6 +493,59 @@ def _command(
         epilog=f"example:\n  {EXAMPLES[name]}\n\nAll commands and options: docs/cli.md",
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
+
+
+def cmd_interfaces(options: argparse.Namespace) -> int:
+    from rosvar.workspace.hints import load_hints
+    from rosvar.workspace.interfaces.catalogue import load_catalogue
+    from rosvar.workspace.interfaces.extraction import extract_interfaces
+    from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
+
+    roots = [os.path.abspath(path) for path in options.paths]
+    workspace = _workspace(options.paths, options.deps)
+    packages = [
+        package
+        for package in workspace.packages.values()
+        if any(os.path.commonpath([package.path, root]) in (package.path, root) for root in roots)
+    ]
+    interfaces = extract_interfaces(packages)
+    hints = load_hints(options.hints)
+    interfaces.diagnostics.extend(hints.diagnostics)
+    if options.catalogue:
+        add_catalogue(interfaces, load_catalogue())
+    apply_hints(interfaces, hints.nodes)
+    if options.json:
+        _print_json(interfaces.to_json())
+        return EXIT_OK
+    for node in interfaces.nodes:
+        print(f"{node.package} {node.executable} ({node.kind})")
+        for entry in node.entries:
+            detail = entry.type if entry.type is not None else f"default {entry.default}"
+            print(f"  {entry.role:<14} {entry.name:<40} {detail}  {entry.location}")
+    for diagnostic in interfaces.diagnostics:
+        print(diagnostic, file=sys.stderr)
+    return EXIT_OK
+
+
+def _add_interfaces(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    interfaces = _command(
+        commands,
+        "interfaces",
+        "topics, services, actions and parameters of every node and nodelet below PATH "
+        "(read from their C++ and Python sources)",
+    )
+    interfaces.add_argument("paths", nargs="+", metavar="PATH", help="package roots to read")
+    _deps_option(interfaces)
+    interfaces.add_argument("--json", action="store_true", help="machine-readable output")
+    interfaces.add_argument(
+        "--hints", metavar="FILE", help="YAML with interface entries (docs/hints.md, nodes:)"
+    )
+    interfaces.add_argument(
+        "--catalogue",
+        action="store_true",
+        help="also list the bundled third-party nodes no source below PATH defines",
+    )
+    interfaces.set_defaults(run=cmd_interfaces)
 
 
 def parser() -> argparse.ArgumentParser:
@@ -596,6 +650,7 @@ def parser() -> argparse.ArgumentParser:
     serve.add_argument("--env", action="append", default=[], metavar="NAME=VALUE", help=ENV_HELP)
     serve.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
     serve.set_defaults(run=cmd_serve)
+    _add_interfaces(commands)
     return top
 
 

@@ -1,6 +1,10 @@
 """The hints file: what static analysis cannot see, given by the user.
 
-YAML with three optional mappings (see docs/hints.md)::
+YAML with four optional mappings (see docs/hints.md); ``nodes`` gives node interfaces::
+
+    nodes:                  # pkg/executable (or a nodelet's pkg/Class) -> interface entries
+      my_pkg/driver_node:
+        publishes: [{name: scan, type: sensor_msgs/LaserScan, when: "$(arg laser)"}]
 
     executables:            # package -> extra executable names (values of node types)
       my_pkg: [driver_node]
@@ -13,13 +17,16 @@ YAML with three optional mappings (see docs/hints.md)::
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import yaml
 
 from rosvar.diagnostics import Diagnostic, Location, Severity
+from rosvar.workspace.interfaces.model import Entry, Origin, Role
 
-SECTIONS = ("executables", "args", "env")
+SECTIONS = ("executables", "args", "env", "nodes")
+NODE_KEYS = ("name", "type", "default", "when")
 
 
 @dataclass
@@ -27,6 +34,7 @@ class Hints:
     executables: dict[str, list[str]] = field(default_factory=dict)
     args: dict[str, list[str]] = field(default_factory=dict)
     env: dict[str, list[str]] = field(default_factory=dict)
+    nodes: dict[str, list[Entry]] = field(default_factory=dict)
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
 
@@ -68,6 +76,11 @@ def load_hints(path: str | None) -> Hints:
         if not isinstance(section, yaml.MappingNode):
             problem(f"section '{key}' must map names to lists of values", _line(section))
             continue
+        if key == "nodes":
+            for node_key, node in section.value:
+                name = str(_scalar_text(loader, node_key))
+                hints.nodes[name] = _node_entries(loader, path, name, node, problem)
+            continue
         target: dict[str, list[str]] = getattr(hints, key)
         for name_node, values in section.value:
             name = str(_scalar_text(loader, name_node))
@@ -93,3 +106,50 @@ def _scalar_text(loader: yaml.SafeLoader, node: yaml.Node) -> str | None:
     except yaml.YAMLError:  # e.g. a tag that the safe loader refuses
         return None
     return str(value).lower() if isinstance(value, bool) else str(value)
+
+
+def _node_entries(
+    loader: yaml.SafeLoader,
+    path: str,
+    node_name: str,
+    node: yaml.Node,
+    problem: Callable[[str, int], Hints],
+) -> list[Entry]:
+    """The entries of one ``nodes:`` item: role -> list of {name, type|default, when}."""
+    entries: list[Entry] = []
+    if not isinstance(node, yaml.MappingNode):
+        problem(f"node '{node_name}' must map roles to lists of entries", _line(node))
+        return entries
+    roles = {str(role) for role in Role}
+    for role_node, items in node.value:
+        role = _scalar_text(loader, role_node)
+        if role not in roles:
+            problem(f"unknown role '{role}' of node '{node_name}'", _line(role_node))
+            continue
+        for item in items.value if isinstance(items, yaml.SequenceNode) else [items]:
+            fields: dict[str, yaml.Node] = {}
+            if isinstance(item, yaml.MappingNode):
+                fields = {str(_scalar_text(loader, k)): v for k, v in item.value}
+            name = _scalar_text(loader, fields["name"]) if "name" in fields else None
+            unknown = set(fields) - set(NODE_KEYS)
+            if name is None or unknown:
+                problem(f"an entry of '{node_name}' needs a name and only {NODE_KEYS}", _line(item))
+                continue
+            value = {k: _scalar_text(loader, fields[k]) for k in NODE_KEYS[1:] if k in fields}
+            default: str | bool | int | float | None = None
+            if "default" in fields and isinstance(fields["default"], yaml.ScalarNode):
+                constructed = loader.construct_object(fields["default"])
+                if isinstance(constructed, bool | int | float | str):
+                    default = constructed
+            entries.append(
+                Entry(
+                    Role(role),
+                    name,
+                    Location(path, _line(item), 1),
+                    Origin.HINTS,
+                    type=value.get("type"),
+                    default=default,
+                    when=value.get("when"),
+                )
+            )
+    return entries

@@ -1,0 +1,131 @@
+"""Node interfaces: what one executable or nodelet class publishes, subscribes, serves, calls
+and reads, each use with the place that says so.
+
+Names are kept as the node resolves them against its own namespace (``x``, ``~x``, ``/x``):
+the graph built on top still has to apply the launch file's namespaces and remappings, which
+is where a name as written must stay apart from a resolved one. A part of a name that is not
+known statically is written ``{expression}`` (braces cannot occur in a ROS name) and the
+entry is marked not ``static``, so that it is never mistaken for a literal name.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+
+from rosvar.diagnostics import Diagnostic, Location
+
+
+class NodeKind(enum.StrEnum):
+    """How a launch file starts the code: a process, or a class loaded into a manager."""
+
+    NODE = "node"
+    NODELET = "nodelet"
+
+
+class Role(enum.StrEnum):
+    """What a node does with a name; the values are the JSON list names."""
+
+    PUBLISHES = "publishes"
+    SUBSCRIBES = "subscribes"
+    SERVICES = "services"
+    CLIENTS = "clients"
+    ACTION_SERVERS = "action_servers"
+    ACTION_CLIENTS = "action_clients"
+    PARAMS = "params"
+
+
+class Origin(enum.StrEnum):
+    """Where an entry comes from: the catalogue stands in for sources not in the workspace,
+    hints override both."""
+
+    SOURCE = "source"
+    CATALOGUE = "catalogue"
+    HINTS = "hints"
+
+
+@dataclass(frozen=True)
+class Expression:
+    """A value written in the source that is not a literal (kept as written)."""
+
+    text: str
+
+    def to_json(self) -> dict[str, str]:
+        return {"expression": self.text}
+
+
+Default = bool | int | float | str | Expression
+"""A parameter's default: a literal's value, or the expression that computes it."""
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One use of a name: ``type`` for topics, services and actions, ``default`` for params."""
+
+    role: Role
+    name: str
+    location: Location
+    origin: Origin = Origin.SOURCE
+    type: str | None = None
+    default: Default | None = None
+    static: bool = True
+    when: str | None = None  # a hint's presence condition, as written (launch args, params)
+
+    def to_json(self) -> dict[str, object]:
+        document: dict[str, object] = {"name": self.name}
+        if self.role is Role.PARAMS:
+            value = self.default
+            document["default"] = value.to_json() if isinstance(value, Expression) else value
+        else:
+            document["type"] = self.type
+        document["file"] = self.location.file
+        document["line"] = self.location.line
+        document["origin"] = str(self.origin)
+        if not self.static:
+            document["static"] = False
+        if self.when is not None:
+            document["when"] = self.when
+        return document
+
+
+@dataclass
+class NodeInterface:
+    """The interface of one launchable unit: ``executable`` is the class for a nodelet."""
+
+    package: str
+    executable: str
+    kind: NodeKind
+    entries: list[Entry] = field(default_factory=list)
+
+    def of(self, role: Role) -> list[Entry]:
+        return [entry for entry in self.entries if entry.role is role]
+
+    def to_json(self) -> dict[str, object]:
+        document: dict[str, object] = {
+            "package": self.package,
+            "executable": self.executable,
+            "kind": str(self.kind),
+        }
+        for role in Role:
+            document[str(role)] = [entry.to_json() for entry in self.of(role)]
+        return document
+
+
+@dataclass
+class Interfaces:
+    """Every interface found in a workspace, and what could not be decided."""
+
+    nodes: list[NodeInterface] = field(default_factory=list)
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    def find(self, package: str, executable: str) -> NodeInterface | None:
+        for node in self.nodes:
+            if node.package == package and node.executable == executable:
+                return node
+        return None
+
+    def to_json(self) -> dict[str, object]:
+        return {
+            "interfaces": [node.to_json() for node in self.nodes],
+            "diagnostics": [diagnostic.to_json() for diagnostic in self.diagnostics],
+        }

@@ -1,0 +1,211 @@
+"""Python extraction: the ``rospy`` and ``actionlib`` calls of a script, read with ``ast``.
+
+Calls are recognised through the script's imports (``import rospy as r``,
+``from rospy import Publisher``), names through string constants assigned once in the
+module, the function or ``self``; message types through ``from pkg.msg import T``.
+Everything a script calls is its interface: Python nodes are single files, so no
+reachability is needed.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass, field
+
+from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.workspace.interfaces import python2
+from rosvar.workspace.interfaces.model import Default, Entry, Expression, Role
+from rosvar.workspace.interfaces.reading import read_text
+from rosvar.workspace.interfaces.values import Text, action_type
+
+_CALLS: dict[str, tuple[Role, str]] = {
+    # callee → role, and the keyword naming the type argument (the second positional one)
+    "rospy.Publisher": (Role.PUBLISHES, "data_class"),
+    "rospy.Subscriber": (Role.SUBSCRIBES, "data_class"),
+    "rospy.Service": (Role.SERVICES, "service_class"),
+    "rospy.ServiceProxy": (Role.CLIENTS, "service_class"),
+    "actionlib.SimpleActionServer": (Role.ACTION_SERVERS, "ActionSpec"),
+    "actionlib.SimpleActionClient": (Role.ACTION_CLIENTS, "action_spec"),
+    "actionlib.ActionServer": (Role.ACTION_SERVERS, "ActionSpec"),
+    "actionlib.ActionClient": (Role.ACTION_CLIENTS, "ActionSpec"),
+    "rospy.get_param": (Role.PARAMS, "default"),
+}
+_MODULE_ALIASES = {
+    "actionlib.simple_action_server": "actionlib",
+    "actionlib.simple_action_client": "actionlib",
+}
+
+
+@dataclass
+class _Scope:
+    """Names a script binds: imports (to dotted paths) and single string assignments."""
+
+    imports: dict[str, str] = field(default_factory=dict)
+    strings: dict[str, list[ast.expr]] = field(default_factory=dict)
+
+
+def _dotted(node: ast.expr) -> str | None:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        base = _dotted(node.value)
+        return f"{base}.{node.attr}" if base is not None else None
+    return None
+
+
+def _binding_name(target: ast.expr) -> str | None:
+    if isinstance(target, ast.Name):
+        return target.id
+    if (
+        isinstance(target, ast.Attribute)
+        and isinstance(target.value, ast.Name)
+        and target.value.id == "self"
+    ):
+        return "self." + target.attr
+    return None
+
+
+def _scope(tree: ast.Module) -> _Scope:
+    scope = _Scope()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                scope.imports[alias.asname or alias.name.split(".")[0]] = (
+                    alias.name if alias.asname else alias.name.split(".")[0]
+                )
+        elif isinstance(node, ast.ImportFrom) and node.module:
+            for alias in node.names:
+                scope.imports[alias.asname or alias.name] = f"{node.module}.{alias.name}"
+        elif isinstance(node, ast.Assign):
+            for target in node.targets:
+                name = _binding_name(target)
+                if name is not None:
+                    scope.strings.setdefault(name, []).append(node.value)
+    return scope
+
+
+class _Reader:
+    def __init__(self, path: str, scope: _Scope, sink: DiagnosticSink) -> None:
+        self.path = path
+        self.scope = scope
+        self.sink = sink
+        self.active: set[str] = set()
+
+    def qualified(self, node: ast.expr) -> str | None:
+        dotted = _dotted(node)
+        if dotted is None:
+            return None
+        head, _, rest = dotted.partition(".")
+        full = self.scope.imports.get(head, head)
+        full = f"{full}.{rest}" if rest else full
+        for module, alias in _MODULE_ALIASES.items():
+            if full.startswith(module + "."):
+                full = alias + full[len(module) :]
+        return full
+
+    def text(self, node: ast.expr) -> Text:
+        if isinstance(node, ast.Constant) and isinstance(node.value, str):
+            return Text(node.value)
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+            return self.text(node.left) + self.text(node.right)
+        if isinstance(node, ast.JoinedStr):
+            result = Text("")
+            for part in node.values:
+                if isinstance(part, ast.FormattedValue):
+                    result = result + self.text(part.value)
+                else:
+                    result = result + self.text(part)
+            return result
+        name = _binding_name(node)
+        if name is not None and name not in self.active:
+            values = self.scope.strings.get(name, [])
+            if len(values) == 1:
+                self.active.add(name)
+                try:
+                    return self.text(values[0])
+                finally:
+                    self.active.discard(name)
+        return Text.unknown(ast.unparse(node))
+
+    def type_name(self, node: ast.expr | None, role: Role) -> str | None:
+        if node is None:
+            return None
+        full = self.qualified(node)
+        if full is None:
+            return None
+        parts = full.split(".")
+        if len(parts) >= 3 and parts[-2] in ("msg", "srv"):
+            name = f"{parts[-3]}/{parts[-1]}"
+        else:
+            name = parts[-1]
+        is_action = role in (Role.ACTION_SERVERS, Role.ACTION_CLIENTS)
+        return action_type(name) if is_action else name
+
+    def entry(self, call: ast.Call) -> Entry | None:
+        callee = self.qualified(call.func)
+        known = _CALLS.get(callee or "")
+        if known is None:
+            return None
+        role, keyword = known
+        keywords = {k.arg: k.value for k in call.keywords if k.arg}
+        name_node = (
+            call.args[0] if call.args else keywords.get("name") or keywords.get("param_name")
+        )
+        if name_node is None:
+            return None
+        second = call.args[1] if len(call.args) > 1 else keywords.get(keyword)
+        location = Location(self.path, call.lineno, call.col_offset + 1)
+        name = self.text(name_node)
+        if not name.static:
+            self.sink.warning(
+                "interface-symbolic-name",
+                f"{role} name not known statically: {name.value}",
+                location,
+            )
+        if role is Role.PARAMS:
+            return Entry(role, name.value, location, default=_default(second), static=name.static)
+        type_name = self.type_name(second, role)
+        if type_name is None:
+            self.sink.note(
+                "interface-unknown-type", f"{role} type not known: {name.value}", location
+            )
+        return Entry(role, name.value, location, type=type_name, static=name.static)
+
+
+def _default(node: ast.expr | None) -> Default | None:
+    if node is None:
+        return None
+    try:
+        value = ast.literal_eval(node)
+    except (ValueError, SyntaxError, TypeError):
+        return Expression(ast.unparse(node))
+    if isinstance(value, bool | int | float | str):
+        return value
+    return Expression(ast.unparse(node))
+
+
+def extract(path: str, sink: DiagnosticSink) -> list[Entry]:
+    """The interface of the Python script at ``path`` (empty when it cannot be parsed)."""
+    source = read_text(path)
+    if source is None:
+        return []
+    try:
+        tree, rewritten = python2.parse(source, path)
+    except (SyntaxError, ValueError) as error:
+        line = getattr(error, "lineno", None) or 1
+        sink.warning(
+            "interface-unparsable", f"cannot parse the script: {error}", Location(path, line)
+        )
+        return []
+    if rewritten:
+        sink.note(
+            "interface-python2",
+            f"read as Python 2: {rewritten} lines rewritten to parse",
+            Location(path),
+        )
+    reader = _Reader(path, _scope(tree), sink)
+    calls = sorted(
+        (node for node in ast.walk(tree) if isinstance(node, ast.Call)),
+        key=lambda node: (node.lineno, node.col_offset),
+    )
+    return [entry for call in calls if (entry := reader.entry(call)) is not None]

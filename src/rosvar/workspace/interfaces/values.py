@@ -1,0 +1,44 @@
+"""Values of names met while reading sources: static text, or text with unknown parts.
+
+Both extractors (C++ and Python) build names by concatenation and namespace joins; an
+unknown part is written ``{expression}`` so that the result is still readable and still
+tells the graph that it is not a literal.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from rosvar.ros.names import ns_join
+
+
+@dataclass(frozen=True)
+class Text:
+    """A string value; ``static`` is False when some part of it is not known."""
+
+    value: str
+    static: bool = True
+
+    @staticmethod
+    def unknown(expression: str) -> Text:
+        return Text("{" + " ".join(expression.split()) + "}", static=False)
+
+    def __add__(self, other: Text) -> Text:
+        return Text(self.value + other.value, self.static and other.static)
+
+    def within(self, namespace: Text) -> Text:
+        """This name as a node handle in ``namespace`` resolves it (``~``, ``/`` kept)."""
+        if self.static and self.value[:1] in ("/", "~"):
+            return self
+        if not self.static and self.value.startswith("{"):
+            if namespace.value in ("", "~"):
+                return Text(namespace.value + self.value, False)
+            return Text(namespace.value.rstrip("/") + "/" + self.value, False)
+        return Text(ns_join(namespace.value, self.value), self.static and namespace.static)
+
+
+def action_type(message: str) -> str:
+    """``pkg/MoveBaseAction`` names the action ``pkg/MoveBase`` (its goal, result, feedback)."""
+    return (
+        message[: -len("Action")] if message.endswith("Action") and message != "Action" else message
+    )

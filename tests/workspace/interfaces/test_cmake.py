@@ -1,0 +1,50 @@
+"""The CMake reader: targets with their sources, variables, globs, links, programs."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from rosvar.workspace.interfaces.cmake import TargetKind, commands, read_build
+
+CMAKE = """\
+cmake_minimum_required(VERSION 2.8.3)
+project(demo)
+set(SOURCES src/a.cpp "src/b.cpp")  # a comment (with parentheses)
+list(APPEND SOURCES src/c.cpp)
+add_library(${PROJECT_NAME}_core ${SOURCES})
+add_executable(demo_node src/main.cpp)
+target_link_libraries(demo_node ${PROJECT_NAME}_core ${catkin_LIBRARIES})
+add_subdirectory(nodelet)
+catkin_install_python(PROGRAMS scripts/tool.py
+  DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+include_directories(include ${catkin_INCLUDE_DIRS})
+"""
+SUB = """\
+file(GLOB NODELET_SOURCES RELATIVE ${CMAKE_CURRENT_SOURCE_DIR} *.cpp)
+add_library(demo_nodelet SHARED ${NODELET_SOURCES})
+"""
+
+
+def test_targets(tmp_path: Path) -> None:
+    (tmp_path / "CMakeLists.txt").write_text(CMAKE)
+    (tmp_path / "nodelet").mkdir()
+    (tmp_path / "nodelet" / "CMakeLists.txt").write_text(SUB)
+    for name in ("x.cpp", "y.cpp"):
+        (tmp_path / "nodelet" / name).write_text("")
+    build = read_build(str(tmp_path), "demo")
+    src = tmp_path / "src"
+    assert build.targets["demo_core"].sources == [str(src / n) for n in ("a.cpp", "b.cpp", "c.cpp")]
+    assert build.targets["demo_node"].kind is TargetKind.EXECUTABLE
+    assert build.sources("demo_node") == [
+        str(src / n) for n in ("main.cpp", "a.cpp", "b.cpp", "c.cpp")
+    ]
+    assert build.targets["demo_nodelet"].sources == [
+        str(tmp_path / "nodelet" / n) for n in ("x.cpp", "y.cpp")
+    ]
+    assert build.programs == [str(tmp_path / "scripts" / "tool.py")]
+    assert build.include_dirs == [str(tmp_path / "include")]
+
+
+def test_commands_quotes_and_comments() -> None:
+    text = 'set(A "x y" b) # set(B c)\n#[[ add_executable(no) ]]\nmessage(STATUS "(")\n'
+    assert list(commands(text)) == [("set", ["A", '"x y"', "b"]), ("message", ["STATUS", '"("'])]

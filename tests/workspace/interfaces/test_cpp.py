@@ -1,0 +1,160 @@
+"""C++ extraction: handles followed through constructors, members, parameters, constants."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.workspace.interfaces.cpp import Unit, extract, ros_type
+from rosvar.workspace.interfaces.model import Entry, Expression, Role
+
+NODE = """\
+#include "talker.h"
+const std::string TOPIC = "chatter";
+#define SERVICE "reset"
+
+void Talker::setup(ros::NodeHandle& n) {
+  sub_ = n.subscribe(TOPIC + "/in", 1, &Talker::onTwist, this);
+  n.param("rate", rate_, 10.0);
+}
+
+int main(int argc, char** argv) {
+  ros::NodeHandle nh("~");
+  ros::NodeHandle ns(nh, "ns");
+  ros::Publisher pub = nh.advertise<std_msgs::String>("out", 1);
+  Talker talker;
+  talker.setup(ns);
+  nh.param<std::string>("frame", frame, std::string("base_link"));
+  ros::param::get("/global", value);
+  image_transport::ImageTransport it(nh);
+  it.advertiseCamera("camera/image_raw", 1);
+  actionlib::SimpleActionClient<move_base_msgs::MoveBaseAction> ac("move_base", true);
+  ros::NodeHandle().advertiseService(SERVICE, &Talker::onReset, &talker);
+  nh.serviceClient<std_srvs::Empty>(name_);
+}
+
+void unused(ros::NodeHandle& nh) { nh.advertise<std_msgs::Empty>("never", 1); }
+"""
+HEADER = """\
+class Talker {
+ public:
+  void setup(ros::NodeHandle& n);
+  void onTwist(const geometry_msgs::Twist::ConstPtr& msg);
+  bool onReset(std_srvs::Trigger::Request& req, std_srvs::Trigger::Response& res);
+};
+"""
+
+NODELET = """\
+class Camera : public nodelet::Nodelet {
+  ros::NodeHandle nh_;
+  message_filters::Subscriber<sensor_msgs::Image> image_sub_;
+  boost::shared_ptr<actionlib::SimpleActionServer<control_msgs::FollowJointTrajectoryAction>> as_;
+  void onInit() {
+    nh_ = getPrivateNodeHandle();
+    image_sub_.subscribe(nh_, "image", 1);
+    as_.reset(new actionlib::SimpleActionServer<control_msgs::FollowJointTrajectoryAction>(
+        getNodeHandle(), "follow", false));
+  }
+};
+class Other : public nodelet::Nodelet {
+  void onInit() { getNodeHandle().advertise<std_msgs::Empty>("other", 1); }
+};
+"""
+
+
+def _extract(tmp_path: Path, files: dict[str, str], entry: str, owner: str | None = None):
+    for name, text in files.items():
+        (tmp_path / name).write_text(text)
+    sources = [str(tmp_path / name) for name in files if name.endswith(".cpp")]
+    sink = DiagnosticSink()
+    entries = extract(Unit.load(sources, []), entry, owner, sink, Location("CMakeLists.txt"))
+    return entries, sink.items
+
+
+def _summary(entries: list[Entry]) -> list[tuple[str, str, object, int]]:
+    return [
+        (str(e.role), e.name, e.default if e.role is Role.PARAMS else e.type, e.location.line)
+        for e in entries
+    ]
+
+
+def test_executable_interface(tmp_path: Path) -> None:
+    entries, diagnostics = _extract(tmp_path, {"talker.cpp": NODE, "talker.h": HEADER}, "main")
+    assert _summary(entries) == [
+        ("subscribes", "~ns/chatter/in", "geometry_msgs/Twist", 6),
+        ("params", "~ns/rate", 10.0, 7),
+        ("publishes", "~out", "std_msgs/String", 13),
+        ("params", "~frame", "base_link", 16),
+        ("params", "/global", None, 17),
+        ("publishes", "~camera/image_raw", "sensor_msgs/Image", 19),
+        ("publishes", "~camera/camera_info", "sensor_msgs/CameraInfo", 19),
+        ("action_clients", "move_base", "move_base_msgs/MoveBase", 20),
+        ("services", "reset", "std_srvs/Trigger", 21),
+        ("clients", "~{name_}", "std_srvs/Empty", 22),
+    ]
+    symbolic = [e for e in entries if not e.static]
+    assert [e.name for e in symbolic] == ["~{name_}"]
+    assert [(d.code, d.location.line) for d in diagnostics] == [("interface-symbolic-name", 22)]
+
+
+def test_nodelet_class_only(tmp_path: Path) -> None:
+    entries, _ = _extract(tmp_path, {"camera.cpp": NODELET}, "onInit", "Camera")
+    assert _summary(entries) == [
+        ("subscribes", "~image", "sensor_msgs/Image", 7),
+        ("action_servers", "follow", "control_msgs/FollowJointTrajectory", 8),
+    ]
+    other, _ = _extract(tmp_path, {"camera.cpp": NODELET}, "onInit", "Other")
+    assert _summary(other) == [("publishes", "other", "std_msgs/Empty", 13)]
+
+
+def test_parameter_bound_differently_stays_symbolic(tmp_path: Path) -> None:
+    source = """\
+void setup(ros::NodeHandle& n) { n.advertise<std_msgs::Empty>("x", 1); }
+int main() {
+  ros::NodeHandle a("~"), b;
+  setup(a);
+  setup(b);
+}
+"""
+    entries, diagnostics = _extract(tmp_path, {"n.cpp": source}, "main")
+    assert [(e.name, e.static) for e in entries] == [("{n}/x", False)]
+    assert [d.code for d in diagnostics] == ["interface-symbolic-name"]
+
+
+def test_missing_entry_reads_everything(tmp_path: Path) -> None:
+    source = 'void f(ros::NodeHandle& n) { n.getParam("p", x); }\n'
+    entries, diagnostics = _extract(tmp_path, {"f.cpp": source}, "main")
+    assert [e.name for e in entries] == ["{n}/p"]
+    assert "interface-no-entry" in [d.code for d in diagnostics]
+    assert entries[0].default is None
+
+
+def test_default_expression_kept_as_written(tmp_path: Path) -> None:
+    source = 'int main() { ros::NodeHandle nh; nh.param("cap", c, Battery::capacity); }\n'
+    entries, _ = _extract(tmp_path, {"m.cpp": source}, "main")
+    assert entries[0].default == Expression("Battery::capacity")
+
+
+def test_ros_type() -> None:
+    assert ros_type("const sensor_msgs::ImageConstPtr&") == "sensor_msgs/Image"
+    assert ros_type("boost::shared_ptr<const nav_msgs::Odometry>") == "nav_msgs/Odometry"
+    assert ros_type("std_srvs::Empty::Request &") == "std_srvs/Empty"
+    assert ros_type("int (*)(void)") is None
+
+
+def test_callback_type_through_typedef(tmp_path: Path) -> None:
+    source = """\
+typedef boost::shared_ptr<sensor_msgs::JointState const> StatePtr;
+using Command = std_msgs::Float64;
+void onState(const StatePtr& state) {}
+int main() {
+  ros::NodeHandle nh;
+  nh.subscribe("joint_states", 1, &onState);
+  nh.advertise<Command>("command", 1);
+}
+"""
+    entries, _ = _extract(tmp_path, {"t.cpp": source}, "main")
+    assert [(e.name, e.type) for e in entries] == [
+        ("joint_states", "sensor_msgs/JointState"),
+        ("command", "std_msgs/Float64"),
+    ]

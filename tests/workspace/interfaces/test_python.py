@@ -1,0 +1,76 @@
+"""Python extraction: rospy/actionlib calls through imports and string constants."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from rosvar.diagnostics import DiagnosticSink
+from rosvar.workspace.interfaces.model import Expression, Role
+from rosvar.workspace.interfaces.python import extract
+
+SCRIPT = """\
+import rospy as rp
+from geometry_msgs.msg import Twist
+import std_srvs.srv
+from actionlib import SimpleActionClient
+from move_base_msgs.msg import MoveBaseAction
+
+PREFIX = "robot"
+
+class Node:
+    def __init__(self):
+        self.topic = PREFIX + "/cmd_vel"
+        self.pub = rp.Publisher(self.topic, Twist, queue_size=1)
+        rp.Subscriber("~odom", data_class=Twist, callback=self.cb)
+        rp.Service("reset", std_srvs.srv.Empty, self.reset)
+        self.ac = SimpleActionClient("move_base", MoveBaseAction)
+        self.rate = rp.get_param("~rate", 10.0)
+        self.frame = rp.get_param("/frame")
+        self.other = rp.get_param("~other", [1, 2])
+        rp.ServiceProxy(rp.get_param("~service", "x"), std_srvs.srv.Trigger)
+"""
+
+
+def test_script_interface(tmp_path: Path) -> None:
+    path = tmp_path / "node.py"
+    path.write_text(SCRIPT)
+    sink = DiagnosticSink()
+    entries = extract(str(path), sink)
+    assert [
+        (str(e.role), e.name, e.default if e.role is Role.PARAMS else e.type, e.location.line)
+        for e in entries
+    ] == [
+        ("publishes", "robot/cmd_vel", "geometry_msgs/Twist", 12),
+        ("subscribes", "~odom", "geometry_msgs/Twist", 13),
+        ("services", "reset", "std_srvs/Empty", 14),
+        ("action_clients", "move_base", "move_base_msgs/MoveBase", 15),
+        ("params", "~rate", 10.0, 16),
+        ("params", "/frame", None, 17),
+        ("params", "~other", Expression("[1, 2]"), 18),
+        ("clients", "{rp.get_param('~service', 'x')}", "std_srvs/Trigger", 19),
+        ("params", "~service", "x", 19),
+    ]
+    assert [(d.code, d.location.line) for d in sink.items] == [("interface-symbolic-name", 19)]
+
+
+def test_python2_script(tmp_path: Path) -> None:
+    path = tmp_path / "old.py"
+    path.write_text(
+        'import rospy\nfrom std_msgs.msg import String\nprint "starting"\n'
+        "try:\n    pass\nexcept Exception, e:\n    print e\n"
+        'pub = rospy.Publisher("chatter", String)\n'
+    )
+    sink = DiagnosticSink()
+    entries = extract(str(path), sink)
+    assert [(e.name, e.type, e.location.line) for e in entries] == [
+        ("chatter", "std_msgs/String", 8)
+    ]
+    assert [d.code for d in sink.items] == ["interface-python2"]
+
+
+def test_unparsable_script_is_a_diagnostic(tmp_path: Path) -> None:
+    path = tmp_path / "broken.py"
+    path.write_text("def (:\n")
+    sink = DiagnosticSink()
+    assert extract(str(path), sink) == [] or sink.items
+    assert sink.items
