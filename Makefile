@@ -2,7 +2,8 @@
 #
 #   make demo    set everything up, analyse the bundled example workspace (examples/) and
 #                serve the web UI on it (Ctrl-C stops; DEMO_PATHS and DEMO_PORT override)
-#   make test    set everything up, then run ruff, mypy and the whole pytest suite
+#   make test    set everything up, then run ruff, mypy and the whole pytest suite (the
+#                browser tests in a process of their own, away from the analyses' memory)
 #   make bench   set everything up, then run the benchmarks
 #   make setup   only the set-up (idempotent; quick when already done)
 #
@@ -72,7 +73,8 @@ demo: setup
 test: setup
 	$(VPY) -m ruff check src tests bench tools docs/screenshot.py
 	$(VPY) -m mypy
-	$(VPY) -m pytest -q
+	$(VPY) -m pytest -q --ignore=tests/outputs/web
+	$(VPY) -m pytest -q tests/outputs/web
 
 bench: setup
 	$(VPY) bench/run.py
