@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 import yaml
 
 from rosvar.diagnostics import Diagnostic, Location, Severity
+from rosvar.workspace.bounded_yaml import check_limits
 
 SECTIONS = ("executables", "args", "env")
 
@@ -44,7 +45,9 @@ def load_hints(path: str | None) -> Hints:
 
     try:
         with open(path, encoding="utf-8") as handle:
-            loader = yaml.SafeLoader(handle.read())
+            text = handle.read()
+        check_limits(text)
+        loader = yaml.SafeLoader(text)
         try:
             root = loader.get_single_node()
         finally:

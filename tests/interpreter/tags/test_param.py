@@ -188,3 +188,12 @@ def test_exactly_one_value_source(ws: LaunchWorkspace) -> None:
     model = ws.model(file)
     assert [e.code for e in model.errors] == ["param-invalid"]
     assert model.errors[0].location.line == 2
+
+
+@pytest.mark.parametrize(
+    "value", ["&amp;a [*a]", "&amp;a {b: *a}", "a: b: c", "[[[[", "a: rad(1/0)"]
+)
+def test_hostile_yaml_value_is_an_error_event(ws: LaunchWorkspace, value: str) -> None:
+    file = ws.launch("hostile.launch", f'<param name="x" type="yaml" value="{value}"/>')
+    model = ws.model(file)
+    assert [e.code for e in model.errors] == ["param-invalid"]

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import yaml
-
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
 from rosvar.interpreter.model import Binary, DeferredValue, ParamDecl, Raw
@@ -22,10 +20,7 @@ def convert_value(value: str, type_: str) -> object:
     """roslaunch's ``convert_value``: ``auto`` guesses int, float, bool, then str."""
     type_ = type_.lower()
     if type_ == "yaml":
-        try:
-            return load_yaml(value)
-        except yaml.parser.ParserError as error:
-            raise ValueError(str(error)) from error
+        return load_yaml(value)  # YamlInvalid is a ValueError, as roslaunch's are
     return convert_scalar(value, type_)
 
 

@@ -6,12 +6,10 @@ import functools
 import os
 import stat
 
-import yaml
-
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
 from rosvar.interpreter.model import ParamDecl, Raw, YamlDecl
-from rosvar.interpreter.rosparam_yaml import load_yaml
+from rosvar.interpreter.rosparam_yaml import YamlInvalid, load_yaml
 from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.tags.common import bool_value
 from rosvar.logic.choice import Choice
@@ -39,7 +37,7 @@ def yaml_params(text: str, full_param: str, param: str, source: str) -> list[tup
     """What ``load_rosparam`` sets for a concrete YAML text (cached: callers must not mutate)."""
     try:
         data = _parsed_yaml(text)
-    except yaml.YAMLError as error:
+    except YamlInvalid as error:
         where = "YAML block" if not source else f"file {source}"
         raise ValueError(f"invalid YAML in {where}: {error}") from error
     if data is None:
