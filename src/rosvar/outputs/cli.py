@@ -52,15 +52,15 @@ def _print_json(document: object) -> None:
     sys.stdout.write(json.dumps(document, indent=indent, ensure_ascii=False) + "\n")
 
 
-def _workspace(paths: Sequence[str]) -> Workspace:
-    workspace = discover(paths)
+def _workspace(paths: Sequence[str], options: argparse.Namespace) -> Workspace:
+    workspace = discover(paths, allow_outside=options.allow_outside_workspace)
     for diagnostic in workspace.diagnostics:
         print(diagnostic, file=sys.stderr)
     return workspace
 
 
 def cmd_analyze(options: argparse.Namespace) -> int:
-    workspace = _workspace(options.paths)
+    workspace = _workspace(options.paths, options)
     if not workspace.launch_files:
         print("rosvar: no launch files found", file=sys.stderr)
         return EXIT_INPUT
@@ -95,7 +95,7 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         print(f"rosvar: launch file not found: {', '.join(missing)}", file=sys.stderr)
         return EXIT_INPUT
     # the launch files' own packages are known even when no PATH contains them
-    workspace = _workspace([*options.paths, *paths])
+    workspace = _workspace([*options.paths, *paths], options)
     files = _launch_files(options.launch, workspace)
     if files is None:
         return EXIT_INPUT
@@ -164,7 +164,7 @@ def _environment(items: Sequence[str]) -> dict[str, str] | None:
 
 
 def _analysis(options: argparse.Namespace, env: dict[str, str] | None = None) -> Analysis | None:
-    workspace = _workspace(options.paths)
+    workspace = _workspace(options.paths, options)
     if not workspace.launch_files:
         print("rosvar: no launch files found", file=sys.stderr)
         return None
@@ -380,6 +380,13 @@ def parser() -> argparse.ArgumentParser:
     serve.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
     serve.add_argument("--hints", metavar="FILE")
     serve.set_defaults(run=cmd_serve)
+    for command in (analyze, res, features, metrics, configure, serve):
+        command.add_argument(
+            "--allow-outside-workspace",
+            action="store_true",
+            help="read files (includes, textfile, rosparam) outside PATH, its packages and "
+            "ROS_PACKAGE_PATH (never /proc, /sys, /dev)",
+        )
     return top
 
 

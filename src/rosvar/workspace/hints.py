@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 import yaml
 
 from rosvar.diagnostics import Diagnostic, Location, Severity
+from rosvar.files import read_file
 from rosvar.workspace.bounded_yaml import check_limits
 
 SECTIONS = ("executables", "args", "env")
@@ -44,8 +45,7 @@ def load_hints(path: str | None) -> Hints:
         return hints
 
     try:
-        with open(path, encoding="utf-8") as handle:
-            text = handle.read()
+        text = read_file(path).decode("utf-8")
         check_limits(text)
         loader = yaml.SafeLoader(text)
         try:
@@ -53,7 +53,9 @@ def load_hints(path: str | None) -> Hints:
         finally:
             loader.dispose()
     except OSError as error:
-        return problem(f"cannot read hints file: {error.strerror}")
+        return problem(f"cannot read hints file: {error.strerror or error}")
+    except UnicodeDecodeError as error:
+        return problem(f"cannot read hints file: {error}")
     except yaml.YAMLError as invalid:
         mark = getattr(invalid, "problem_mark", None)
         return problem(f"invalid YAML: {invalid}", mark.line + 1 if mark else 1)

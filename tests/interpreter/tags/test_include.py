@@ -160,3 +160,18 @@ def test_including_twice_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
     ws.launch("sensor.launch", SENSOR)
     main = ws.launch("twice.launch", TWICE)
     ws.assert_agrees(main, [{}, {"second_ns": "rear"}, {"second_ns": "/"}])
+
+
+def test_include_outside_the_workspace_is_not_followed(ws: LaunchWorkspace) -> None:
+    outside = ws.root.parent / "evil.launch"
+    outside.write_text('<launch><param name="leak" value="1"/></launch>')
+    file = ws.launch(
+        "top.launch",
+        '<include file="$(find pkg)/../../evil.launch"/><include file="/proc/self/environ"/>',
+    )
+    model = ws.model(file)
+    assert [d.code for d in model.diagnostics] == ["file-outside-workspace"] * 2
+    assert model.params == [] and model.errors == []
+    assert [i.resolved for i in model.includes] == [False, False]
+    resolution = ws.resolve(file)
+    assert [e.code for e in resolution.errors] == ["include-unknown"]

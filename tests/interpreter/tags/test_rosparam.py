@@ -129,7 +129,7 @@ def test_rosparam_errors(ws: LaunchWorkspace) -> None:
         "scalar.launch": ("<rosparam>42</rosparam>", "rosparam-invalid"),
         "command.launch": ('<rosparam command="explode">a: 1</rosparam>', "rosparam-invalid"),
         "yaml.launch": ("<rosparam>a: [</rosparam>", "rosparam-invalid"),
-        "missing.launch": ('<rosparam file="/nonexistent/x.yaml"/>', "file-missing"),
+        "missing.launch": ('<rosparam file="$(find pkg)/nonexistent.yaml"/>', "file-missing"),
     }
     for name, (body, code) in cases.items():
         model = ws.model(ws.launch(name, body))

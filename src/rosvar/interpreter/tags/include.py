@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import cast
 
+from rosvar.files import FileRefused
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import (
     MAX_INCLUDE_DEPTH,
@@ -76,6 +77,14 @@ def _include(it: Interpretation, entity: Entity, scope: Scope, file: Raw, pass_a
     path = real_path(file)
     if path in it.stack:
         it.fail(it.space.true, "include-cycle", f"include cycle: {file} includes itself")
+        return
+    try:
+        it.workspace.confinement().check(file)
+    except FileRefused as refused:
+        it.warn(refused.code, f"included file {file} is not read: {refused.message}")
+        it.model.includes.append(
+            IncludeDecl(it.pc, entity.location, Choice.const(it.space, file), scope.ns, False)
+        )
         return
     if len(it.stack) >= MAX_INCLUDE_DEPTH:
         it.fail(
