@@ -56,11 +56,13 @@ class Workspace:
         self._confinement_key: tuple[int, int, int, bool] = (0, 0, 0, False)
 
     def confinement(self) -> Confinement:
-        """The directories the analysis may read files in (``file-outside-workspace``)."""
+        """The directories the analysis may read files in (``file-outside-workspace``): the
+        given ones (a given file's own), the packages, ROS_PACKAGE_PATH's."""
         packages = [*self.packages.values(), *self.shadowed]
         key = (len(self.roots), len(packages), len(self.dependency_roots), self.allow_outside)
         if self._confinement is None or self._confinement_key != key:
-            directories = [*self.roots, *self.dependency_roots, *(p.path for p in packages)]
+            given = [r if os.path.isdir(r) else os.path.dirname(r) for r in self.roots]
+            directories = [*given, *self.dependency_roots, *(p.path for p in packages)]
             self._confinement = Confinement.of(directories, self.allow_outside)
             self._confinement_key = key
         return self._confinement
