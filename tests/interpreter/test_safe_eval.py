@@ -866,3 +866,21 @@ def test_arithmetic_matches_python(left: float, op: str, right: float) -> None:
             evaluate(expr, ENV)
     else:
         assert evaluate(expr, ENV) == expected
+
+
+@pytest.mark.parametrize(
+    "expr",
+    [
+        "max([9999]*1000000, key=factorial)",
+        "sorted([9999]*100000, key=factorial)",
+        "min([9999]*100000, key=perm)",
+        "list(map(comb, [9999]*100000, [5000]*100000))",
+        "list(map(gcd, [3**9000]*100000, [2**9000]*100000))",
+    ],
+)
+def test_work_inside_callbacks_is_charged(expr: str) -> None:
+    assert "units of work" in refused(expr).message
+
+
+def test_big_integer_results_are_charged_but_small_ones_pass() -> None:
+    assert evaluate("max([99]*1000, key=factorial)", ENV) == "99"

@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 
 import pytest
 
+from rosvar.interpreter import substitution
 from rosvar.interpreter.model import DeferredValue, ParamDecl
 from rosvar.logic.terms import is_term
 
@@ -135,3 +136,60 @@ def test_commands_are_registered_in_roslaunchs_order_and_only_once() -> None:
     with pytest.raises(ValueError, match="registered twice"):
         command("env")(handler)
     assert FIRST_PASS["env"] is handler
+
+
+def _codes(model: object) -> list[str]:
+    return [d.code for d in model.diagnostics]  # type: ignore[attr-defined]
+
+
+@pytest.mark.parametrize("count", [12, 18, 40])
+def test_many_varying_args_in_one_attribute_become_an_unknown_value(
+    ws: LaunchWorkspace, count: int
+) -> None:
+    args = "".join(f'<arg name="a{i}" default="x"/>' for i in range(count))
+    text = "".join(f"$(arg a{i})" for i in range(count))
+    file = ws.launch("many.launch", f'{args}<param name="p" value="{text}"/>')
+    model = ws.model(file)
+    [param] = model.params
+    if 2**count <= substitution.MAX_COMBINATIONS:  # within the budget: computed exactly
+        assert _codes(model) == [] and len(param.value.branches) == 2**count
+        return
+    assert _codes(model) == ["value-too-complex"]
+    value = param.value.single()
+    assert isinstance(value, DeferredValue) and is_term(value.raw)
+    [error] = ws.resolve(file, {}).errors
+    assert error.code == "value-unknown" and "work limits" in str(error)
+
+
+@pytest.mark.parametrize("concat", ["$(arg a{p})$(arg a{p})", "x$(arg a{p})y"])
+def test_values_doubling_or_nesting_along_a_chain_are_bounded(
+    ws: LaunchWorkspace, concat: str
+) -> None:
+    lines = ['<arg name="a0" default="xy"/>']
+    lines += [f'<arg name="a{i}" default="{concat.format(p=i - 1)}"/>' for i in range(1, 160)]
+    lines.append('<param name="p" value="$(arg a159)"/>')
+    model = ws.model(ws.launch("chain.launch", "".join(lines)))
+    assert "value-too-complex" in _codes(model)
+    for _condition, leaf in model.params[0].value.branches:
+        shown = leaf.raw if isinstance(leaf, DeferredValue) else leaf
+        assert len(str(shown)) <= substitution.MAX_VALUE_SIZE
+
+
+def test_file_budget_bounds_many_attributes_each_within_the_limit(
+    ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(substitution, "MAX_FILE_COMBINATIONS", 100)
+    args = "".join(f'<arg name="a{i}" default="x"/>' for i in range(5))
+    text = "".join(f"$(arg a{i})" for i in range(5))  # 32 combinations each
+    params = "".join(f'<param name="p{i}" value="{text}{i}"/>' for i in range(5))
+    model = ws.model(ws.launch("budget.launch", args + params))
+    assert _codes(model).count("value-too-complex") == 2  # 3 x 32 fit in 100, not more
+
+
+def test_eval_over_many_varying_args_is_bounded(ws: LaunchWorkspace) -> None:
+    args = "".join(f'<arg name="a{i}" default="1"/>' for i in range(16))
+    expression = "+".join(f"arg('a{i}')" for i in range(16))
+    model = ws.model(
+        ws.launch("eval.launch", f'{args}<param name="p" value="$(eval {expression})"/>')
+    )
+    assert _codes(model) == ["value-too-complex"]

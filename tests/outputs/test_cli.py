@@ -554,3 +554,18 @@ def test_version_and_help_import_no_analysis() -> None:
     )
     done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
     assert done.stdout.strip().splitlines()[-1] == "[]"
+
+
+def test_allow_outside_workspace_option(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "secret.txt").write_text("hunter2")
+    package = tmp_path / "ws" / "pkg"
+    package.mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>pkg</name></package>")
+    (package / "x.launch").write_text(
+        f'<launch><param name="s" textfile="{tmp_path / "secret.txt"}"/></launch>'
+    )
+    assert main(["analyze", str(tmp_path / "ws"), "--json"]) == 0
+    confined = capsys.readouterr().out
+    assert "hunter2" not in confined and "file-outside-workspace" in confined
+    assert main(["analyze", str(tmp_path / "ws"), "--json", "--allow-outside-workspace"]) == 0
+    assert "hunter2" in capsys.readouterr().out

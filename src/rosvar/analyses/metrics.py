@@ -51,9 +51,9 @@ def command_line_args(root: Entity) -> set[str]:
     and not switched off by a literal ``if``/``unless``.
     """
     names: set[str] = set()
-
-    def visit(element: Entity) -> None:
-        for child in element.children:
+    pending = [root]  # a stack, not recursion: groups nest as deep as the parser allows
+    while pending:
+        for child in pending.pop().children:
             test_if, test_unless = child.get("if"), child.get("unless")
             if test_if is not None and test_if.strip().lower() not in TRUE_LITERALS:
                 continue
@@ -62,9 +62,7 @@ def command_line_args(root: Entity) -> set[str]:
             if child.tag == "arg" and child.get("value") is None and child.get("name"):
                 names.add(child.get("name") or "")
             elif child.tag == "group":
-                visit(child)
-
-    visit(root)
+                pending.append(child)
     return names
 
 

@@ -96,6 +96,7 @@ class _Restriction:
             if isinstance(other, EnvInput):
                 values[other] = env.get(other.name)
         self.concrete: dict[Input, str] = {k: v for k, v in values.items() if v is not None}
+        self.confinement = analysis.workspace.confinement()
         self.host = PackageTable(
             {name: package.path for name, package in analysis.workspace.packages.items()}
         )
@@ -221,7 +222,7 @@ def _restrict(
             if isinstance(value, DeferredValue):
                 concrete = r.evaluate(value.raw, param.location, f"param {name}")
                 try:
-                    value = param_value(value.kind, concrete, value.ptype)
+                    value = param_value(value.kind, concrete, value.ptype, r.confinement)
                 except ValueError as error:
                     raise ResolutionError("param-invalid", str(error), param.location) from None
             result.params[str(name)] = json_value(value)
@@ -233,7 +234,9 @@ def _restrict(
             body = r.evaluate(param.text, param.location, "<rosparam> body")
             scope_ns, command, ns, file, name = parts
             try:
-                pairs = load_rosparam(str(command), ns, file, name, body, str(scope_ns))
+                pairs = load_rosparam(
+                    str(command), ns, file, name, body, str(scope_ns), r.confinement
+                )
             except ValueError as error:
                 raise ResolutionError(
                     "rosparam-invalid", f"error loading <rosparam> tag: {error}", param.location

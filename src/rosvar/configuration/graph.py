@@ -22,6 +22,7 @@ from rosvar.analyses.resolve import ResolutionError, test_fields
 from rosvar.configuration.derivation import Presence
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
+from rosvar.files import Confinement
 from rosvar.interpreter.model import (
     DeferredValue,
     LaunchModel,
@@ -113,6 +114,7 @@ class VariationalGraph:
     ) -> None:
         """``progress``: told how many of the files are done, and of how many."""
         self.lowering = lowering
+        self.confinement = analysis.workspace.confinement()
         self.elements: list[Element] = []
         self.launched: dict[str, BDD] = _launched(model)
         self._topics: dict[tuple[str, str], _Topic] = {}
@@ -180,7 +182,7 @@ class VariationalGraph:
                         new_id(param.location),
                         model.file,
                         condition & branch,
-                        _param_renderer(name, value, param.location),
+                        _param_renderer(name, value, param.location, self.confinement),
                         _needs(name, value.raw if isinstance(value, DeferredValue) else value),
                     )
             else:
@@ -189,7 +191,7 @@ class VariationalGraph:
                     new_id(param.location),
                     model.file,
                     condition,
-                    _yaml_renderer(param),
+                    _yaml_renderer(param, self.confinement),
                     _needs(
                         param.scope_ns, param.command, param.ns, param.file, param.param, param.text
                     ),
@@ -390,13 +392,15 @@ def _present(
     return shown if presence == Presence.PRESENT else None
 
 
-def _param_renderer(name: object, value: object, location: Location) -> Render:
+def _param_renderer(
+    name: object, value: object, location: Location, confinement: Confinement
+) -> Render:
     def render(values: Values, _parts: Sequence[Shown]) -> list[Fields]:
         shown: object = value
         if isinstance(value, DeferredValue):
             concrete = values.text(value.raw) or ""
             try:
-                shown = json_value(param_value("value", concrete, value.ptype))
+                shown = json_value(param_value("value", concrete, value.ptype, confinement))
             except (ValueError, OSError):
                 shown = concrete
         elif is_term(value):
@@ -408,7 +412,7 @@ def _param_renderer(name: object, value: object, location: Location) -> Render:
     return render
 
 
-def _yaml_renderer(param: YamlDecl) -> Render:
+def _yaml_renderer(param: YamlDecl, confinement: Confinement) -> Render:
     raws = (param.scope_ns, param.command, param.ns, param.file, param.param, param.text)
 
     def render(values: Values, _parts: Sequence[Shown]) -> list[Fields]:
@@ -417,7 +421,9 @@ def _yaml_renderer(param: YamlDecl) -> Render:
         if not values.knows(raws):
             return symbolic
         try:
-            pairs = load_rosparam(str(command), ns, file, name, body or "", str(scope_ns))
+            pairs = load_rosparam(
+                str(command), ns, file, name, body or "", str(scope_ns), confinement
+            )
         except (ValueError, OSError):
             return symbolic
         return [{"name": key, "value": json_value(v), **_where(param.location)} for key, v in pairs]

@@ -45,12 +45,17 @@ class ArgFacts:
 
 
 def entry_declarations(root: Entity) -> Iterator[Entity]:
-    """``<arg>`` elements a command line reaches: under ``<launch>`` and ``<group>``s."""
-    for child in root.children:
-        if child.tag == "arg":
+    """``<arg>`` elements a command line reaches: under ``<launch>`` and ``<group>``s, in
+    document order (a stack, not recursion: groups may nest as deep as the parser allows)."""
+    pending = [iter(root.children)]
+    while pending:
+        child = next(pending[-1], None)
+        if child is None:
+            pending.pop()
+        elif child.tag == "arg":
             yield child
         elif child.tag == "group":
-            yield from entry_declarations(child)
+            pending.append(iter(child.children))
 
 
 def _passed_args(include: Entity, root: Entity) -> Iterator[tuple[str | None, str | None]]:

@@ -31,6 +31,12 @@ V = TypeVar("V")
 P = ParamSpec("P")
 TAGS: dict[str, Handler] = {}
 MAX_INCLUDE_DEPTH = 64
+MAX_INCLUDES = 4096
+"""Includes followed in one interpretation: a diamond (each file including the next twice)
+would otherwise walk 2^depth files."""
+MAX_NESTING = 128
+"""Elements walked inside one another, across includes: deeper ones are not interpreted
+(``nesting-too-deep``), so that the walk, which recurses, stays far from Python's limit."""
 
 TRUE_WORDS = ("true", "1")
 FALSE_WORDS = ("false", "0")
@@ -112,6 +118,8 @@ class Interpretation:
         self.default_machine: Choice[Raw | None] = Choice.const(space, None)
         self.anon_count: Choice[int] = Choice.const(space, 0)
         self.stack: list[str] = []
+        self.depth = 0
+        self.included = 0  # includes followed, up to MAX_INCLUDES
         self._location = Location(file)
 
     def close(self) -> None:
@@ -128,6 +136,9 @@ class Interpretation:
             f"package '{name}' is not in the workspace; $(find {name}) stays symbolic",
             self.location,
         )
+
+    def note_too_complex(self, message: str) -> None:
+        self.sink.warning("value-too-complex", message, self.location)
 
     def env_value(self, name: str) -> Choice[Raw | None]:
         input_ = EnvInput(name)
@@ -322,15 +333,29 @@ class Interpretation:
 
     # -- walking ------------------------------------------------------------------------
     def walk(self, children: Sequence[Entity], scope: Scope) -> None:
+        if not children:
+            return
+        if self.depth >= MAX_NESTING:
+            self.sink.error(
+                "nesting-too-deep",
+                f"elements nested more than {MAX_NESTING} levels deep (includes counted): "
+                "the inner ones are not interpreted",
+                children[0].location,
+            )
+            return
         saved = self._location
-        for child in children:
-            handler = TAGS.get(child.tag)
-            self._location = child.location
-            if handler is None:
-                self.warn("tag-unknown", f"unrecognized tag <{child.tag}>")
-            else:
-                handler(self, child, scope)
-        self._location = saved
+        self.depth += 1
+        try:
+            for child in children:
+                handler = TAGS.get(child.tag)
+                self._location = child.location
+                if handler is None:
+                    self.warn("tag-unknown", f"unrecognized tag <{child.tag}>")
+                else:
+                    handler(self, child, scope)
+        finally:
+            self.depth -= 1
+            self._location = saved
 
     def load(self, path: str) -> Entity | None:
         """Parse a launch file (cached); parse problems become errors at the current tag."""

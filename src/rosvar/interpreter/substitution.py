@@ -12,7 +12,7 @@ from __future__ import annotations
 import ast
 import functools
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
@@ -27,9 +27,20 @@ from rosvar.interpreter.safe_eval import (
 from rosvar.interpreter.scope import MISSING, Scope, _Missing
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.terms import Apply, Term, concat, is_term, register
+from rosvar.logic.terms import Apply, Hole, Term, TermError, concat, is_term, register
 
 Value = Raw | Fail
+
+MAX_COMBINATIONS = 4096
+"""Combinations of operand values one attribute may compute (each varying ``$(arg)`` of a
+text multiplies them: a few lines could otherwise ask for 2^N strings)."""
+MAX_FILE_COMBINATIONS = 1_000_000
+"""Combinations all the attributes of one interpretation may compute together."""
+MAX_VALUE_SIZE = 1_000_000
+"""Characters (a term's operands counted each time they occur) of one value; args that
+concatenate the previous one twice would otherwise double it at every line."""
+MAX_TERM_DEPTH = 100
+"""Nesting of a symbolic value; deeper ones would exhaust recursion when evaluated."""
 
 
 class SubstitutionError(Exception):
@@ -48,6 +59,8 @@ class Host(Protocol):
     def new_anon(self, scope: Scope, anon_id: str) -> Choice[Raw]: ...
 
     def note_unknown_package(self, name: str) -> None: ...
+
+    def note_too_complex(self, message: str) -> None: ...
 
 
 @functools.lru_cache(maxsize=65536)
@@ -284,6 +297,25 @@ class Substituter:
         # Values of texts that read args only (and packages), by text and the immutable
         # choices of the args read: a file's texts recur in its elements and its includes'.
         self._known: dict[tuple[object, ...], Choice[Value]] = {}
+        self.combinations = 0  # spent from MAX_FILE_COMBINATIONS
+
+    def _affordable(self, text: str, choices: Sequence[Choice[object]]) -> bool:
+        """Whether combining ``choices`` for ``text`` stays within the work limits (and,
+        if so, charge it); otherwise the caller makes ``text`` an unknown value."""
+        count = 1
+        for choice in choices:
+            count *= len(choice.branches)
+        if count <= 1:
+            return True
+        if count > MAX_COMBINATIONS:
+            reason = f"it has {count} combinations of values, over {MAX_COMBINATIONS}"
+        elif self.combinations + count > MAX_FILE_COMBINATIONS:
+            reason = f"the file's values need over {MAX_FILE_COMBINATIONS} combinations"
+        else:
+            self.combinations += count
+            return True
+        self.host.note_too_complex(f"{_short(text)} is not computed: {reason}")
+        return False
 
     def resolve(self, text: str | None, scope: Scope) -> Choice[Value] | None:
         if text is None:
@@ -354,6 +386,10 @@ class Substituter:
         if segments == ("", 0, ""):  # the whole text is one substitution: its value as is
             return values[0]
 
+        if not self._affordable(text, values):
+            return Choice.const(self.space, too_complex(text))
+        oversized: list[str] = []
+
         def join(leaves: list[Value]) -> Value:
             for leaf in leaves:
                 if isinstance(leaf, Fail):
@@ -362,9 +398,18 @@ class Substituter:
                 s if isinstance(s, str) else leaves[s]  # type: ignore[misc]
                 for s in segments
             ]
+            size, depth = _measure(parts)
+            if size > MAX_VALUE_SIZE or depth > MAX_TERM_DEPTH:
+                oversized.append(f"over {MAX_VALUE_SIZE} characters or {MAX_TERM_DEPTH} levels")
+                return too_complex(text)
             return concat(parts)
 
-        return combine(values, join)
+        joined = combine(values, join)
+        if oversized:
+            self.host.note_too_complex(
+                f"{_short(text)} is not computed: its value would be {oversized[0]}"
+            )
+        return joined
 
     def _command(self, body: str, scope: Scope) -> Choice[Value]:
         words = _split(body)
@@ -445,7 +490,50 @@ class Substituter:
         if not arg_choices and not env_choices:
             return Choice.const(space, run([]))
         choices: list[Choice[object]] = [*arg_choices, *env_choices]
+        if not self._affordable(f"$(eval {expression})", choices):
+            return Choice.const(space, too_complex(f"$(eval {expression})"))
         return combine(choices, run)
+
+
+def too_complex(text: str) -> Apply:
+    """The unknown value of ``text`` when computing it would go beyond the work limits: a
+    term that no configuration can evaluate (``resolve`` reports ``value-unknown``)."""
+    return Apply("too_complex", (text,), display=f"⟨{_short(text)}⟩")
+
+
+def _too_complex_term(_host: object, text: str) -> str:
+    raise TermError(f"{_short(text)} was not computed: over rosvar's work limits")
+
+
+def _short(text: str) -> str:
+    """``text`` for a message (attribute texts can be megabytes long)."""
+    return text if len(text) <= 120 else f"{text[:117]}..."
+
+
+register("too_complex", _too_complex_term)
+
+
+def _measure(parts: Sequence[object]) -> tuple[int, int]:
+    """Characters and nesting of a concatenation of ``parts`` (shared operands of terms
+    counted each time, as showing or evaluating the value would)."""
+    size, depth = 0, 0
+    for part in parts:
+        if isinstance(part, str):
+            size += len(part)
+        elif isinstance(part, Hole | Apply):
+            part_size, part_depth = _term_measure(part)
+            size += part_size
+            depth = max(depth, part_depth + 1)
+    return size, depth
+
+
+@functools.lru_cache(maxsize=65536)
+def _term_measure(term: Hole | Apply) -> tuple[int, int]:
+    """A term's :func:`_measure` (recursing at most :data:`MAX_TERM_DEPTH` levels: deeper
+    terms are never built)."""
+    if isinstance(term, Hole):
+        return len(str(term)), 0
+    return _measure([o for o in term.operands if not isinstance(o, tuple)])
 
 
 class _Undecidable(Exception):

@@ -71,12 +71,12 @@ def _print_json(document: object) -> None:
     sys.stdout.write(json.dumps(document, indent=indent, ensure_ascii=False) + "\n")
 
 
-def _workspace(paths: Sequence[str], deps: Sequence[str]) -> Workspace:
-    """The packages and launch files below ``paths``; those below ``deps`` (then the
+def _workspace(paths: Sequence[str], options: argparse.Namespace) -> Workspace:
+    """The packages and launch files below ``paths``; those below ``--deps`` (then the
     environment's ROS_PACKAGE_PATH) resolve ``$(find)`` but add no launch files."""
     from rosvar.workspace import discover
 
-    workspace = discover(paths, deps=deps)
+    workspace = discover(paths, deps=options.deps, allow_outside=options.allow_outside_workspace)
     for diagnostic in workspace.diagnostics:
         print(diagnostic, file=sys.stderr)
     return workspace
@@ -86,7 +86,7 @@ def cmd_analyze(options: argparse.Namespace) -> int:
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.outputs.describe import describe_model
 
-    workspace = _workspace(options.paths, options.deps)
+    workspace = _workspace(options.paths, options)
     if not workspace.launch_files:
         print("rosvar: no launch files found", file=sys.stderr)
         return EXIT_INPUT
@@ -125,7 +125,7 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         print(f"rosvar: launch file not found: {', '.join(missing)}", file=sys.stderr)
         return EXIT_INPUT
     # the launch files' own packages are known even when no PATH contains them
-    workspace = _workspace([*options.paths, *paths], options.deps)
+    workspace = _workspace([*options.paths, *paths], options)
     files = _launch_files(options.launch, workspace)
     if files is None:
         return EXIT_INPUT
@@ -234,7 +234,7 @@ def _analysis(
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace.hints import load_hints
 
-    workspace = _workspace(options.paths if paths is None else paths, options.deps)
+    workspace = _workspace(options.paths if paths is None else paths, options)
     if not workspace.launch_files:
         print("rosvar: no launch files found", file=sys.stderr)
         return None
@@ -471,7 +471,7 @@ EXAMPLES = {
 }
 
 
-def _deps_option(command: argparse.ArgumentParser) -> None:
+def _workspace_options(command: argparse.ArgumentParser) -> None:
     command.add_argument(
         "--deps",
         action="append",
@@ -479,6 +479,12 @@ def _deps_option(command: argparse.ArgumentParser) -> None:
         metavar="PATH",
         help="packages below PATH resolve $(find) and executables but add no launch files "
         "(e.g. /opt/ros/noetic/share; repeatable; ROS_PACKAGE_PATH is read after them)",
+    )
+    command.add_argument(
+        "--allow-outside-workspace",
+        action="store_true",
+        help="read files (includes, textfile, rosparam) outside PATH, its packages, --deps "
+        "and ROS_PACKAGE_PATH (never /proc, /sys, /dev)",
     )
 
 
@@ -502,7 +508,7 @@ def cmd_interfaces(options: argparse.Namespace) -> int:
     from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
 
     roots = [os.path.abspath(path) for path in options.paths]
-    workspace = _workspace(options.paths, options.deps)
+    workspace = _workspace(options.paths, options)
     packages = [
         package
         for package in workspace.packages.values()
@@ -535,7 +541,7 @@ def _add_interfaces(commands: argparse._SubParsersAction[argparse.ArgumentParser
         "(read from their C++ and Python sources)",
     )
     interfaces.add_argument("paths", nargs="+", metavar="PATH", help="package roots to read")
-    _deps_option(interfaces)
+    _workspace_options(interfaces)
     interfaces.add_argument("--json", action="store_true", help="machine-readable output")
     interfaces.add_argument(
         "--hints", metavar="FILE", help="YAML with interface entries (docs/hints.md, nodes:)"
@@ -560,7 +566,7 @@ def parser() -> argparse.ArgumentParser:
     commands = top.add_subparsers(dest="command", required=True, metavar="COMMAND")
     analyze = _command(commands, "analyze", "interpret every launch file below PATH")
     analyze.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
-    _deps_option(analyze)
+    _workspace_options(analyze)
     analyze.add_argument(
         "--json", action="store_true", help="the whole model as JSON (docs/json-schema.md)"
     )
@@ -572,7 +578,7 @@ def parser() -> argparse.ArgumentParser:
         metavar="PATH",
         help=PATHS_HELP + "; name:=value words (the args, as for roslaunch) may stand anywhere",
     )
-    _deps_option(res)
+    _workspace_options(res)
     res.add_argument(
         "--launch",
         action="append",
@@ -589,7 +595,7 @@ def parser() -> argparse.ArgumentParser:
     res.set_defaults(run=cmd_resolve)
     features = _command(commands, "features", "the feature model (paper Algorithm 1)")
     features.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
-    _deps_option(features)
+    _workspace_options(features)
     features.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
     features.add_argument(
         "--format",
@@ -601,7 +607,7 @@ def parser() -> argparse.ArgumentParser:
     features.set_defaults(run=cmd_features)
     metrics = _command(commands, "metrics", "the paper's Table I and II metrics")
     metrics.add_argument("paths", nargs="+", metavar="PATH", help="one system per PATH: a row each")
-    _deps_option(metrics)
+    _workspace_options(metrics)
     metrics.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
     metrics.add_argument(
         "--json", action="store_true", help="the metrics as JSON (keyed by PATH when several)"
@@ -611,7 +617,7 @@ def parser() -> argparse.ArgumentParser:
         commands, "configure", "one step of a configuration: the state after the given choices"
     )
     configure.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
-    _deps_option(configure)
+    _workspace_options(configure)
     for action, metavar, help_ in (
         (Action.SELECT, "FEATURE", "put a file, arg or value in the product (FILE, FILE:ARG, "
          "FILE:ARG=VALUE; FILE as a path or as 'rosvar features' prints it)"),
@@ -644,7 +650,7 @@ def parser() -> argparse.ArgumentParser:
     configure.set_defaults(run=cmd_configure)
     serve = _command(commands, "serve", "configure step by step in the browser")
     serve.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
-    _deps_option(serve)
+    _workspace_options(serve)
     serve.add_argument("--host", default="127.0.0.1", help="address to bind (default: loopback)")
     serve.add_argument("--port", type=int, default=8080, help="port (0: any free one)")
     serve.add_argument("--env", action="append", default=[], metavar="NAME=VALUE", help=ENV_HELP)

@@ -9,10 +9,12 @@ in CMakeLists.txt, and ``console_scripts`` in setup.py/setup.cfg.
 
 from __future__ import annotations
 
+import io
 import os
 import re
 from functools import lru_cache
 
+from rosvar.files import read_file
 from rosvar.workspace.packages import Package
 
 SCRIPT_FOLDERS = ("scripts", "nodes", "bin")
@@ -57,11 +59,13 @@ def _scan(path: str, name: str) -> frozenset[str]:
 
 
 def _read(path: str) -> str:
+    """A build file's text as ``open(path, errors="replace")`` reads it; "" if unreadable."""
     try:
-        with open(path, encoding="utf-8", errors="replace") as handle:
-            return handle.read()
+        data = read_file(path)
     except OSError:
         return ""
+    with io.TextIOWrapper(io.BytesIO(data), encoding="utf-8", errors="replace") as text:
+        return text.read()
 
 
 def _cmake(path: str, project: str) -> set[str]:

@@ -23,6 +23,8 @@ from dataclasses import dataclass, field
 import yaml
 
 from rosvar.diagnostics import Diagnostic, Location, Severity
+from rosvar.files import read_file
+from rosvar.workspace.bounded_yaml import check_limits
 from rosvar.workspace.interfaces.model import Entry, Origin, Role
 
 SECTIONS = ("executables", "args", "env", "nodes")
@@ -51,14 +53,17 @@ def load_hints(path: str | None) -> Hints:
         return hints
 
     try:
-        with open(path, encoding="utf-8") as handle:
-            loader = yaml.SafeLoader(handle.read())
+        text = read_file(path).decode("utf-8")
+        check_limits(text)
+        loader = yaml.SafeLoader(text)
         try:
             root = loader.get_single_node()
         finally:
             loader.dispose()
     except OSError as error:
-        return problem(f"cannot read hints file: {error.strerror}")
+        return problem(f"cannot read hints file: {error.strerror or error}")
+    except UnicodeDecodeError as error:
+        return problem(f"cannot read hints file: {error}")
     except yaml.YAMLError as invalid:
         mark = getattr(invalid, "problem_mark", None)
         return problem(f"invalid YAML: {invalid}", mark.line + 1 if mark else 1)

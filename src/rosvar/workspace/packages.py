@@ -13,6 +13,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from rosvar.diagnostics import Diagnostic, DiagnosticSink, Location
+from rosvar.files import Confinement, read_file
 from rosvar.frontends.ros1_xml.parser import is_launch_root, parse_xml_file
 from rosvar.workspace.paths import real_path
 
@@ -42,12 +43,29 @@ class Workspace:
     # Packages hidden by an earlier one of the same name: $(find) never returns them,
     # but files inside them still belong to them.
     shadowed: list[Package] = field(default_factory=list)
+    # ROS_PACKAGE_PATH's directories: with the roots and the packages, what may be read.
+    dependency_roots: list[str] = field(default_factory=list)
+    allow_outside: bool = False
 
     def __post_init__(self) -> None:
         # Packages by directory, rebuilt when packages are added (so that a hand-built
         # Workspace works too); not fields, since they are only a cache.
         self._index: dict[str, Package] = {}
         self._indexed = -1
+        self._confinement: Confinement | None = None
+        self._confinement_key: tuple[int, int, int, bool] = (0, 0, 0, False)
+
+    def confinement(self) -> Confinement:
+        """The directories the analysis may read files in (``file-outside-workspace``): the
+        given ones (a given file's own), the packages, ROS_PACKAGE_PATH's."""
+        packages = [*self.packages.values(), *self.shadowed]
+        key = (len(self.roots), len(packages), len(self.dependency_roots), self.allow_outside)
+        if self._confinement is None or self._confinement_key != key:
+            given = [r if os.path.isdir(r) else os.path.dirname(r) for r in self.roots]
+            directories = [*given, *self.dependency_roots, *(p.path for p in packages)]
+            self._confinement = Confinement.of(directories, self.allow_outside)
+            self._confinement_key = key
+        return self._confinement
 
     def find(self, name: str) -> str | None:
         """Directory of package ``name``; ``None`` leaves unknown packages to the caller."""
@@ -104,12 +122,11 @@ def _innermost(index: dict[str, Package], path: str) -> Package | None:
 
 def _read_executables(directory: str) -> frozenset[str] | None:
     try:
-        with open(
-            os.path.join(directory, EXECUTABLES_FILE), encoding="utf-8", errors="replace"
-        ) as handle:
-            return frozenset(line.strip() for line in handle if line.strip())
+        data = read_file(os.path.join(directory, EXECUTABLES_FILE))
     except OSError:
         return None
+    lines = data.decode("utf-8", errors="replace").splitlines()
+    return frozenset(line.strip() for line in lines if line.strip())
 
 
 class _Discovery:
@@ -229,6 +246,7 @@ def discover(
     *,
     deps: Sequence[str | os.PathLike[str]] = (),
     ros_package_path: str | None = None,
+    allow_outside: bool = False,
 ) -> Workspace:
     """Find packages and launch files below ``paths``, then packages below ``deps`` and on
     ROS_PACKAGE_PATH.
@@ -237,6 +255,8 @@ def discover(
     enclosing package registered). ``deps`` (a sourced ROS installation's ``share``, an
     underlay) and ``ros_package_path`` (default: the environment's) play the same part:
     their packages come after the roots', in that order, and contribute no launch files.
+    Files outside the roots, the packages, the deps and ROS_PACKAGE_PATH are not read
+    unless ``allow_outside``.
     """
     state = _Discovery()
     roots = [os.path.abspath(os.fspath(path)) for path in paths]
@@ -250,9 +270,11 @@ def discover(
         else:
             state.sink.error("path-missing", f"no such file or directory: {root}", Location(root))
 
+    dependency_roots = []
     for dep in deps:
         directory = os.path.abspath(os.path.expanduser(os.fspath(dep)))
         if os.path.isdir(directory):
+            dependency_roots.append(directory)
             state.crawl(directory, list_launch=False, inside_package=False)
         else:
             state.sink.error("path-missing", f"no such directory: {directory}", Location(directory))
@@ -263,6 +285,7 @@ def discover(
             continue
         directory = os.path.abspath(os.path.expanduser(entry))
         if os.path.isdir(directory):
+            dependency_roots.append(directory)
             state.crawl(directory, list_launch=False, inside_package=False)
 
     return Workspace(
@@ -271,4 +294,6 @@ def discover(
         launch_files=sorted(state.launch_files),
         diagnostics=state.sink.items,
         shadowed=state.shadowed,
+        dependency_roots=dependency_roots,
+        allow_outside=allow_outside,
     )

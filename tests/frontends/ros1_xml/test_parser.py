@@ -229,42 +229,6 @@ def test_too_large_is_refused_before_reading(
     assert "50" in result.diagnostics[0].message
 
 
-def _stat_says(monkeypatch: pytest.MonkeyPatch, path: Path, size: int) -> None:
-    """``os.stat`` reports ``size`` for ``path``: the file grew after it was looked at."""
-    real_stat = os.stat
-
-    def stat(name: str | os.PathLike[str], *args: object, **kwargs: object) -> os.stat_result:
-        info = real_stat(name, *args, **kwargs)  # type: ignore[arg-type]
-        if os.fspath(name) != str(path):
-            return info
-        fields = list(info)
-        fields[6] = size  # st_size
-        return os.stat_result(fields)
-
-    monkeypatch.setattr(parser.os, "stat", stat)
-
-
-def test_file_grown_after_stat_is_read_whole(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    path = tmp_path / "grown.launch"
-    path.write_bytes(b"<launch>\n <arg name='a'/>\n <arg name='b'/>\n</launch>")
-    _stat_says(monkeypatch, path, 10)
-    result = parse_launch_file(path)
-    assert result.root is not None
-    assert [child.get("name") for child in result.root.children] == ["a", "b"]
-
-
-def test_file_grown_past_the_limit_after_stat_is_refused(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    path = tmp_path / "grown.launch"
-    path.write_bytes(b"<launch>" + b" " * 100 + b"</launch>")
-    monkeypatch.setattr(parser, "MAX_FILE_BYTES", 50)
-    _stat_says(monkeypatch, path, 20)
-    assert only_error(parse_launch_file(path), "file-too-large") == f"{path}:1:1"
-
-
 def test_missing_file_is_unreadable(tmp_path: Path) -> None:
     result = parse_launch_file(tmp_path / "nope.launch")
     only_error(result, "file-unreadable")

@@ -6,7 +6,9 @@ from typing import TYPE_CHECKING
 
 import pytest
 
+from rosvar.interpreter import interpretation
 from rosvar.interpreter.model import LaunchModel, NodeDecl
+from rosvar.interpreter.tags import include as include_tag
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -160,3 +162,49 @@ def test_including_twice_agrees_with_roslaunch(ws: LaunchWorkspace) -> None:
     ws.launch("sensor.launch", SENSOR)
     main = ws.launch("twice.launch", TWICE)
     ws.assert_agrees(main, [{}, {"second_ns": "rear"}, {"second_ns": "/"}])
+
+
+def test_include_outside_the_workspace_is_not_followed(ws: LaunchWorkspace) -> None:
+    outside = ws.root.parent / "evil.launch"
+    outside.write_text('<launch><param name="leak" value="1"/></launch>')
+    file = ws.launch(
+        "top.launch",
+        '<include file="$(find pkg)/../../evil.launch"/><include file="/proc/self/environ"/>',
+    )
+    model = ws.model(file)
+    assert [d.code for d in model.diagnostics] == ["file-outside-workspace"] * 2
+    assert model.params == [] and model.errors == []
+    assert [i.resolved for i in model.includes] == [False, False]
+    resolution = ws.resolve(file)
+    assert [e.code for e in resolution.errors] == ["include-unknown"]
+
+
+def test_include_diamond_is_bounded(ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(interpretation, "MAX_INCLUDES", 100)
+    monkeypatch.setattr(include_tag, "MAX_INCLUDES", 100)
+    for level in range(20):  # each file includes the next twice: 2^20 walks unbounded
+        nxt = f"$(find pkg)/launch/d{level + 1}.launch"
+        ws.launch(f"d{level}.launch", f'<include file="{nxt}"/><include file="{nxt}"/>')
+    ws.launch("d20.launch", '<param name="leaf" value="1"/>')
+    model = ws.model(str(ws.root / "pkg" / "launch" / "d0.launch"))
+    assert "include-too-many" in [d.code for d in model.diagnostics]
+    assert sum(1 for include in model.includes if include.resolved) == 100
+
+
+@pytest.mark.parametrize(("groups", "includes"), [(998, 0), (120, 0), (10, 30), (0, 60)])
+def test_deep_nesting_is_a_diagnostic_not_a_recursion_error(
+    ws: LaunchWorkspace, groups: int, includes: int
+) -> None:
+    for level in range(includes):
+        inner = f'<include file="$(find pkg)/launch/n{level + 1}.launch"/>'
+        ws.launch(f"n{level}.launch", "<group>" * groups + inner + "</group>" * groups)
+    body = '<param name="x" value="$(eval 1+((((1)))))"/><rosparam param="y">[[[1]]]</rosparam>'
+    ws.launch(f"n{includes}.launch", "<group>" * groups + body + "</group>" * groups)
+    file = str(ws.root / "pkg" / "launch" / "n0.launch")
+    model = ws.model(file)
+    nested = (groups + 1) * (includes + 1)  # levels walked: each file's own plus its groups
+    deep = nested > interpretation.MAX_NESTING
+    assert ("nesting-too-deep" in [d.code for d in model.diagnostics]) == deep
+    assert bool(model.params) != deep
+    ws.resolve(file)
+    ws.analysis().all_models()

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import pytest
 
 from rosvar.interpreter.model import DeferredValue
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.workspace import discover
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -188,3 +191,70 @@ def test_exactly_one_value_source(ws: LaunchWorkspace) -> None:
     model = ws.model(file)
     assert [e.code for e in model.errors] == ["param-invalid"]
     assert model.errors[0].location.line == 2
+
+
+@pytest.mark.parametrize(
+    "value", ["&amp;a [*a]", "&amp;a {b: *a}", "a: b: c", "[[[[", "a: rad(1/0)"]
+)
+def test_hostile_yaml_value_is_an_error_event(ws: LaunchWorkspace, value: str) -> None:
+    file = ws.launch("hostile.launch", f'<param name="x" type="yaml" value="{value}"/>')
+    model = ws.model(file)
+    assert [e.code for e in model.errors] == ["param-invalid"]
+
+
+def _outside(ws: LaunchWorkspace) -> str:
+    secret = ws.root.parent / "secret.txt"
+    secret.write_text("password=hunter2\n")
+    return str(secret)
+
+
+@pytest.mark.parametrize("kind", ["textfile", "binfile"])
+def test_files_outside_the_workspace_are_not_read(ws: LaunchWorkspace, kind: str) -> None:
+    secret = _outside(ws)
+    ws.write("link.txt", "")
+    os.remove(ws.root / "pkg" / "link.txt")
+    os.symlink(secret, ws.root / "pkg" / "link.txt")
+    paths = [secret, "$(find pkg)/../../secret.txt", "$(find pkg)/link.txt", "/etc/passwd"]
+    body = "".join(f'<param name="p{i}" {kind}="{p}"/>' for i, p in enumerate(paths))
+    file = ws.launch("outside.launch", body)
+    model = ws.model(file)
+    assert model.errors == []
+    codes = [d.code for d in model.diagnostics]
+    assert codes == ["file-outside-workspace"] * len(paths)
+    shown = repr([p.value for p in model.params])
+    assert "hunter2" not in shown and "root:" not in shown
+    resolution = ws.resolve(file)
+    [error] = resolution.errors
+    assert error.code == "value-unknown" and "outside the workspace" in str(error)
+
+
+def test_allow_outside_reads_them_but_never_system_trees(tmp_path: Path) -> None:
+    secret = tmp_path / "secret.txt"
+    secret.write_text("visible")
+    package = tmp_path / "ws" / "pkg"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>pkg</name></package>")
+    launch = package / "launch" / "x.launch"
+    launch.write_text(
+        f'<launch><param name="a" textfile="{secret}"/>'
+        '<param name="b" textfile="/proc/self/environ"/></launch>'
+    )
+    workspace = discover([tmp_path / "ws"], ros_package_path="", allow_outside=True)
+    model = Analysis(workspace).model(str(launch))
+    values = {p.name.single(): p.value.single() for p in model.params}
+    assert values["/a"] == "visible"
+    assert "below /proc" in str([d.message for d in model.diagnostics])
+
+
+@pytest.mark.parametrize("target", ["/dev/zero", "/dev/urandom", "/proc/self/environ", "fifo"])
+def test_devices_and_fifos_are_never_read(ws: LaunchWorkspace, target: str) -> None:
+    if target == "fifo":
+        ws.package()
+        target = str(ws.root / "pkg" / "fifo")
+        os.mkfifo(target)
+    file = ws.launch(
+        "dev.launch", f'<param name="t" textfile="{target}"/><param name="b" binfile="{target}"/>'
+    )
+    model = ws.model(file)  # returns: nothing read, nothing waited for
+    found = [*(e.code for e in model.errors), *(d.code for d in model.diagnostics)]
+    assert len(found) == 2 and set(found) <= {"file-outside-workspace", "file-unreadable"}

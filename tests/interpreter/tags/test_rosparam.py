@@ -129,7 +129,7 @@ def test_rosparam_errors(ws: LaunchWorkspace) -> None:
         "scalar.launch": ("<rosparam>42</rosparam>", "rosparam-invalid"),
         "command.launch": ('<rosparam command="explode">a: 1</rosparam>', "rosparam-invalid"),
         "yaml.launch": ("<rosparam>a: [</rosparam>", "rosparam-invalid"),
-        "missing.launch": ('<rosparam file="/nonexistent/x.yaml"/>', "file-missing"),
+        "missing.launch": ('<rosparam file="$(find pkg)/nonexistent.yaml"/>', "file-missing"),
     }
     for name, (body, code) in cases.items():
         model = ws.model(ws.launch(name, body))
@@ -148,3 +148,24 @@ def test_rosparam_errors_agree_with_roslaunch(ws: LaunchWorkspace) -> None:
         "global.launch": '<rosparam param="/">5</rosparam>',
     }.items():
         ws.assert_agrees(ws.launch(name, body), [{}])
+
+
+@pytest.mark.parametrize(
+    "body",
+    ["&amp;a {b: *a}", "a: rad(1/0)", "a: b: c", "&amp;a [*a]"],
+)
+def test_hostile_yaml_is_an_error_event(ws: LaunchWorkspace, body: str) -> None:
+    file = ws.launch("hostile.launch", f"<rosparam>{body}</rosparam>")
+    model = ws.model(file)
+    assert [e.code for e in model.errors] == ["rosparam-invalid"]
+    assert not ws.resolve(file, {}).ok
+
+
+def test_alias_bomb_in_a_parameter_file_is_refused(ws: LaunchWorkspace) -> None:
+    lines = ["a0: &a0 [x, x, x, x, x, x, x, x, x, x]"]
+    lines += [f"a{i}: &a{i} [{', '.join([f'*a{i - 1}'] * 10)}]" for i in range(1, 9)]
+    ws.write("config/bomb.yaml", "\n".join(lines) + "\n")
+    file = ws.launch("bomb.launch", '<rosparam file="$(find pkg)/config/bomb.yaml"/>')
+    model = ws.model(file)
+    assert [e.code for e in model.errors] == ["rosparam-invalid"]
+    assert "expands to more than" in model.errors[0].message

@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import json
 import socket
+from concurrent.futures import ThreadPoolExecutor
 
 import pytest
 
 from outputs.web.live import Live
+from rosvar.outputs.web import server
 from rosvar.outputs.web.assets import load_assets
-from rosvar.outputs.web.server import MAX_BODY, is_loopback
+from rosvar.outputs.web.server import MAX_BODY, is_loopback, parse_json
 
 
 def test_page_and_assets_are_served(examples: Live) -> None:
@@ -116,3 +118,63 @@ def test_dropped_connections_are_not_logged_as_errors(
         except Exception:
             examples.server.handle_error(None, ("127.0.0.1", 1))
         assert ("Traceback" in capsys.readouterr().err) is logged
+
+
+JSON = {"Content-Type": "application/json"}
+
+
+@pytest.mark.parametrize(
+    "raw",
+    [
+        b"[" * 100_000 + b"]" * 100_000,
+        b'{"a": ' + b"[" * 40 + b"]" * 40 + b"}",
+        b'{"session": ' + b"9" * 60_000 + b"}",
+        b'{"session": 1.' + b"5" * 60_000 + b"}",
+        b'{"a": "\\"[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[", "b": '
+        + b"9" * 200
+        + b"}",
+    ],
+)
+def test_hostile_json_bodies_are_400s(examples: Live, raw: bytes) -> None:
+    if len(raw) > MAX_BODY:
+        raw = raw[:MAX_BODY]
+    reply = examples.call("POST", "/api/session", raw=raw, headers=JSON)
+    assert reply.status == 400
+    assert "error" in reply.json()
+    assert examples.call("GET", "/").status == 200  # the server goes on
+
+
+def test_brackets_inside_strings_are_not_nesting() -> None:
+    text = json.dumps({"a": "[" * 1000, "b": '\\"{' * 100})
+    assert parse_json(text.encode()) == json.loads(text)
+
+
+def test_state_changes_from_other_origins_are_refused(examples: Live) -> None:
+    port = examples.server.server_address[1]
+    for origin in ("http://evil.example", f"http://evil.example:{port}", "null"):
+        headers = {**JSON, "Origin": origin}
+        reply = examples.call("POST", "/api/session", raw=b"{}", headers=headers)
+        assert reply.status == 403, origin
+    own = {**JSON, "Origin": f"http://127.0.0.1:{port}", "Host": f"127.0.0.1:{port}"}
+    assert examples.call("POST", "/api/session", raw=b"{}", headers=own).status == 200
+    assert examples.call("POST", "/api/session", raw=b"{}", headers=JSON).status == 200
+
+
+def test_many_concurrent_connections_are_all_answered(examples: Live) -> None:
+    """More clients than worker threads at once: they wait in the listen queue, none is reset."""
+
+    def fetch(_index: int) -> int:
+        return examples.call("GET", "/").status
+
+    with ThreadPoolExecutor(64) as pool:
+        statuses = list(pool.map(fetch, range(200)))
+    assert statuses == [200] * 200
+    assert examples.server.request_queue_size >= 128
+
+
+def test_idle_connections_are_closed(examples: Live, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(server._Handler, "timeout", 0.5)
+    host, port = examples.server.server_address[:2]
+    with socket.create_connection((str(host), port), timeout=30) as connection:
+        connection.sendall(b"GET / HTTP/1.1\r\nHost: 127.0.0.1\r\n")  # never finished
+        assert connection.recv(65536) == b""  # closed by the server, not left waiting

@@ -13,17 +13,14 @@ from __future__ import annotations
 
 import os
 import re
-import stat
 from collections import OrderedDict
 from dataclasses import dataclass, field
 from typing import NoReturn
 from xml.parsers import expat
 
 from rosvar.diagnostics import Diagnostic, Location, Severity
+from rosvar.files import MAX_FILE_BYTES, FileCode, FileRefused, open_regular, read_file
 from rosvar.frontends.entity import Entity
-
-MAX_FILE_BYTES: int = 64 * 1024 * 1024
-"""Files larger than this are refused (``file-too-large``) without being read."""
 
 MAX_DEPTH: int = 1000
 """Deeper element nesting is refused (``xml-too-deep``). roslaunch itself fails at about
@@ -240,43 +237,21 @@ def parse_launch_bytes(data: bytes, filename: str) -> ParseResult:
     return ParseResult(launch, [*result.diagnostics, warning])
 
 
-def _read_bytes(
-    path: str | os.PathLike[str], info: os.stat_result | None = None
-) -> bytes | ParseResult:
-    """Read a whole regular file, refusing oversized ones before reading them (``info``:
-    what ``os.stat`` just said about it, when the caller asked)."""
+def _read_bytes(path: str | os.PathLike[str]) -> bytes | ParseResult:
+    """A whole regular file within the size limit (:func:`rosvar.files.read_file`)."""
     name = os.fspath(path)
     try:
-        if info is None:
-            info = os.stat(name)
-        if not stat.S_ISREG(info.st_mode):
-            return _error(
-                "file-unreadable", "cannot read file: not a regular file", Location(name, 1, 1)
-            )
-        if info.st_size > MAX_FILE_BYTES:
-            return _too_large(name, info.st_size)
-        with open(name, "rb") as handle:
-            # Asking for the size found (one byte more to see the end): ``read(n)`` allocates
-            # n bytes first, and allocating the limit for every file costs more than reading it.
-            data = handle.read(info.st_size + 1)
-            if len(data) > info.st_size:  # grew after stat: the rest, up to the limit
-                data += handle.read(MAX_FILE_BYTES + 1 - len(data))
+        return read_file(name, limit=MAX_FILE_BYTES)
+    except FileRefused as refused:
+        message = refused.message
+        if refused.code == FileCode.UNREADABLE:
+            message = f"cannot read file: {message}"
+        return _error(refused.code, message, Location(name, 1, 1))
     except ValueError as exc:  # e.g. an embedded NUL in the name
         return _error("file-unreadable", f"cannot read file: {exc}", Location(name, 1, 1))
     except OSError as failure:
         reason = failure.strerror or str(failure)
         return _error("file-unreadable", f"cannot read file: {reason}", Location(name, 1, 1))
-    if len(data) > MAX_FILE_BYTES:  # grew after stat
-        return _too_large(name, len(data))
-    return data
-
-
-def _too_large(name: str, size: int) -> ParseResult:
-    return _error(
-        "file-too-large",
-        f"file is {size} bytes, over the limit of {MAX_FILE_BYTES} bytes",
-        Location(name, 1, 1),
-    )
 
 
 def parse_xml_file(path: str | os.PathLike[str]) -> ParseResult:
@@ -287,14 +262,9 @@ def parse_xml_file(path: str | os.PathLike[str]) -> ParseResult:
     return parse_xml_bytes(data, os.fspath(path))
 
 
-def parse_launch_file(
-    path: str | os.PathLike[str], info: os.stat_result | None = None
-) -> ParseResult:
-    """Read and parse a roslaunch file; Locations use ``path`` as given. Never raises.
-
-    ``info`` is the file's ``os.stat``, when the caller has just taken it.
-    """
-    data = _read_bytes(path, info)
+def parse_launch_file(path: str | os.PathLike[str]) -> ParseResult:
+    """Read and parse a roslaunch file; Locations use ``path`` as given. Never raises."""
+    data = _read_bytes(path)
     if isinstance(data, ParseResult):
         return data
     return parse_launch_bytes(data, os.fspath(path))
@@ -320,7 +290,7 @@ def load_launch_file(path: str | os.PathLike[str]) -> ParseResult:
         return parse_launch_file(name)
     cached = _cache.get(key)
     if cached is None:
-        cached = parse_launch_file(name, info)
+        cached = parse_launch_file(name)
         if any(d.code == "file-unreadable" for d in cached.diagnostics):
             return cached  # permissions may change without touching mtime
         _cache[key] = cached
@@ -382,9 +352,7 @@ def is_launch_root(path: str | os.PathLike[str]) -> bool:
     parser.EntityDeclHandler = refuse
     parser.ExternalEntityRefHandler = refuse
     try:
-        if not stat.S_ISREG(os.stat(path).st_mode):
-            return False  # opening a FIFO would block
-        with open(path, "rb") as handle:
+        with open_regular(os.fspath(path)) as handle:
             chunk = handle.read(8192)
             if len(chunk) < 8192 and b"launch" not in chunk and b"\0" not in chunk:
                 return False  # whole file seen, no UTF-16: it cannot have a <launch> root

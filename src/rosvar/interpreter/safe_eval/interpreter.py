@@ -152,9 +152,12 @@ class _Interpreter:
             )
 
     def charge(self, result: object) -> None:
-        """Count the size of a produced string or container, bounding the total work."""
+        """Count the size of a produced string, container or big integer (in bytes),
+        bounding the total work."""
         if isinstance(result, (str, list, tuple, dict, set, frozenset)):
             self._charge_size(len(result))
+        elif type(result) is int:
+            self._charge_size(result.bit_length() >> 3)
 
     def _charge_size(self, size: int) -> None:
         self._work += size
@@ -257,7 +260,7 @@ class _Interpreter:
         if name == "prod":
             return repr(original), self._prod
         if name in ("factorial", "comb", "perm"):
-            return repr(original), self._combinatoric(original)
+            return repr(original), self._combinatoric(original, self._charge_size)
         return repr(original), original
 
     @staticmethod
@@ -303,7 +306,12 @@ class _Interpreter:
         return result
 
     @staticmethod
-    def _combinatoric(original: Callable[..., object]) -> Callable[..., object]:
+    def _combinatoric(
+        original: Callable[..., object], charge: Callable[[int], None]
+    ) -> Callable[..., object]:
+        """Bounded arguments, and the cost charged before computing: the bits of the result
+        (up to ``n log2 n``), so that a callback (``key=factorial``) cannot repeat it cheaply."""
+
         def guarded(*args: object, **kwargs: object) -> object:
             for value in (*args, *kwargs.values()):
                 if isinstance(value, int) and abs(value) > MAX_COMBINATORIC_ARGUMENT:
@@ -311,6 +319,10 @@ class _Interpreter:
                         f"{original.__name__}() arguments above {MAX_COMBINATORIC_ARGUMENT}"
                         " are not allowed"
                     )
+            largest = max(
+                (abs(v) for v in (*args, *kwargs.values()) if isinstance(v, int)), default=0
+            )
+            charge(largest * largest.bit_length())
             return original(*args, **kwargs)
 
         return guarded

@@ -4,9 +4,11 @@ from __future__ import annotations
 
 from typing import cast
 
+from rosvar.files import FileRefused
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import (
     MAX_INCLUDE_DEPTH,
+    MAX_INCLUDES,
     Interpretation,
     processed,
     split,
@@ -41,9 +43,7 @@ def handle_include(it: Interpretation, entity: Entity, scope: Scope) -> None:
 def _include(it: Interpretation, entity: Entity, scope: Scope, file: Raw, pass_all: bool) -> None:
     if not isinstance(file, str):
         it.warn("include-unknown", f"included file {file} is only known per configuration")
-        it.model.includes.append(
-            IncludeDecl(it.pc, entity.location, Choice.const(it.space, file), scope.ns, False)
-        )
+        _not_followed(it, entity, scope, file)
         return
     child = namespace_scope(it, "include", entity, scope, include_filename=file)
     if pass_all:
@@ -77,6 +77,17 @@ def _include(it: Interpretation, entity: Entity, scope: Scope, file: Raw, pass_a
     if path in it.stack:
         it.fail(it.space.true, "include-cycle", f"include cycle: {file} includes itself")
         return
+    try:
+        it.workspace.confinement().check(file)
+    except FileRefused as refused:
+        it.warn(refused.code, f"included file {file} is not read: {refused.message}")
+        _not_followed(it, entity, scope, file)
+        return
+    if it.included >= MAX_INCLUDES:
+        it.warn("include-too-many", f"more than {MAX_INCLUDES} includes: {file} is not followed")
+        _not_followed(it, entity, scope, file)
+        return
+    it.included += 1
     if len(it.stack) >= MAX_INCLUDE_DEPTH:
         it.fail(
             it.space.true, "include-too-deep", f"includes nested deeper than {MAX_INCLUDE_DEPTH}"
@@ -100,3 +111,10 @@ def _include(it: Interpretation, entity: Entity, scope: Scope, file: Raw, pass_a
             declared_here = cast(BDD, child.declared.get(name, it.space.false))
             unused = where & ~declared_here
             it.fail(unused, "include-arg-unused", f"unused args [{name}] for include of [{file}]")
+
+
+def _not_followed(it: Interpretation, entity: Entity, scope: Scope, file: Raw) -> None:
+    """Record an include that is not interpreted: ``resolve`` fails where it is active."""
+    it.model.includes.append(
+        IncludeDecl(it.pc, entity.location, Choice.const(it.space, file), scope.ns, False)
+    )

@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-import yaml
-
+from rosvar.files import Confinement, FileCode, FileRefused, read_file
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
 from rosvar.interpreter.model import Binary, DeferredValue, ParamDecl, Raw
@@ -12,6 +11,7 @@ from rosvar.interpreter.scope import PrivateParam, Scope
 from rosvar.interpreter.tags.rosparam import read_text
 from rosvar.interpreter.typed_values import convert_scalar
 from rosvar.logic.choice import Choice, Fail
+from rosvar.logic.terms import Apply, TermError, register
 from rosvar.ros import names
 
 ATTRIBUTES = ("name", "value", "type", "textfile", "binfile", "command")
@@ -22,23 +22,27 @@ def convert_value(value: str, type_: str) -> object:
     """roslaunch's ``convert_value``: ``auto`` guesses int, float, bool, then str."""
     type_ = type_.lower()
     if type_ == "yaml":
-        try:
-            return load_yaml(value)
-        except yaml.parser.ParserError as error:
-            raise ValueError(str(error)) from error
+        return load_yaml(value)  # YamlInvalid is a ValueError, as roslaunch's are
     return convert_scalar(value, type_)
 
 
-def param_value(kind: str, raw: str, ptype: str) -> object:
-    """``Loader.param_value`` for a concrete string; raises ValueError/OSError as roslaunch."""
+def param_value(kind: str, raw: str, ptype: str, confinement: Confinement) -> object:
+    """``Loader.param_value`` for a concrete string; raises ValueError/OSError as roslaunch
+    (and :class:`FileRefused` for a file rosvar's rules forbid reading)."""
     if kind == "value":
         return convert_value(raw.strip(), ptype)
     if kind == "textfile":  # read once while unchanged: every includer loads it again
-        return convert_value(read_text(raw), ptype)
+        return convert_value(read_text(raw, confinement), ptype)
     if kind == "binfile":
-        with open(raw, "rb") as handle:
-            return Binary(handle.read())
+        return Binary(read_file(raw, confinement))
     return convert_value(f"__command__({raw})", ptype)
+
+
+def _unread(_host: object, kind: str, path: str, reason: str) -> str:
+    raise TermError(f"{kind} {path} was not read: {reason}")
+
+
+register("unread", _unread)
 
 
 def _value_choice(it: Interpretation, kind: str, raw: Choice[Raw], ptype: str) -> Choice[object]:
@@ -52,7 +56,12 @@ def _value_choice(it: Interpretation, kind: str, raw: Choice[Raw], ptype: str) -
                 )
             )
         try:
-            return param_value(kind, leaf, ptype)
+            return param_value(kind, leaf, ptype, it.workspace.confinement())
+        except FileRefused as refused:
+            if refused.code != FileCode.OUTSIDE:
+                return Fail(f"Invalid <param> tag: {leaf}: {refused.message}", refused.code)
+            it.warn(refused.code, f"{kind} {leaf} is not read: {refused.message}")
+            return Apply("unread", (kind, leaf, refused.message), f"⟨{kind} {leaf}⟩")
         except (ValueError, OSError) as error:
             return Fail(f"Invalid <param> tag: {error}", "param-invalid")
 

@@ -3,15 +3,15 @@
 from __future__ import annotations
 
 import functools
+import io
 import os
 import stat
 
-import yaml
-
+from rosvar.files import Confinement, FileCode, FileRefused, read_file
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
 from rosvar.interpreter.model import ParamDecl, Raw, YamlDecl
-from rosvar.interpreter.rosparam_yaml import load_yaml
+from rosvar.interpreter.rosparam_yaml import YamlInvalid, load_yaml
 from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.tags.common import bool_value
 from rosvar.logic.choice import Choice
@@ -39,7 +39,7 @@ def yaml_params(text: str, full_param: str, param: str, source: str) -> list[tup
     """What ``load_rosparam`` sets for a concrete YAML text (cached: callers must not mutate)."""
     try:
         data = _parsed_yaml(text)
-    except yaml.YAMLError as error:
+    except YamlInvalid as error:
         where = "YAML block" if not source else f"file {source}"
         raise ValueError(f"invalid YAML in {where}: {error}") from error
     if data is None:
@@ -90,8 +90,11 @@ def _load(
                             )
 
 
-def read_text(path: str) -> str:
-    """A parameter file's text, cached while unchanged (many includes load the same files)."""
+def read_text(path: str, confinement: Confinement) -> str:
+    """A parameter file's text as ``open(path).read()`` gives it, through
+    :func:`rosvar.files.read_file`'s checks; cached while unchanged (many includes load
+    the same files). Raises ``OSError`` (:class:`FileRefused` included)."""
+    confinement.check(path)
     info = os.stat(path)
     return _read_text(path, info.st_mtime_ns, info.st_size)
 
@@ -108,8 +111,16 @@ def _regular_file(path: str) -> os.stat_result | None:
 
 @functools.lru_cache(maxsize=1024)
 def _read_text(path: str, _mtime: int, _size: int) -> str:
-    with open(path) as handle:
-        return handle.read()
+    with io.TextIOWrapper(io.BytesIO(read_file(path))) as text:  # open()'s decoding
+        return text.read()
+
+
+class FileNotRead(ValueError):
+    """``<rosparam file>`` names a file that rosvar's rules forbid reading."""
+
+    def __init__(self, refused: FileRefused) -> None:
+        super().__init__(refused.message)
+        self.code = refused.code
 
 
 class MissingFile(ValueError):
@@ -117,18 +128,29 @@ class MissingFile(ValueError):
 
 
 def load_rosparam(
-    command: str, ns: str | None, file: str | None, param: str | None, text: str, scope_ns: str
+    command: str,
+    ns: str | None,
+    file: str | None,
+    param: str | None,
+    text: str,
+    scope_ns: str,
+    confinement: Confinement,
 ) -> list[tuple[str, object]]:
     """``Loader.load_rosparam`` for concrete strings: the params set, or ValueError as roslaunch.
 
     ``text`` is the inline body (or, with ``subst_value``, the already substituted
-    file content, in which case ``file`` is None).
+    file content, in which case ``file`` is None). A file ``confinement`` forbids is a
+    :class:`FileNotRead`, whether it exists or not.
     """
     if command not in ("load", "dump", "delete"):
         raise ValueError("command must be 'load', 'dump', or 'delete'")
     info = None
     if file is not None:
         if command == "load":
+            try:
+                confinement.check(file)
+            except FileRefused as refused:
+                raise FileNotRead(refused) from None
             info = _regular_file(file)
             if info is None:
                 raise MissingFile(f"file does not exist [{file}]")
@@ -140,6 +162,8 @@ def load_rosparam(
     if file is not None and info is not None:
         try:
             text = _read_text(file, info.st_mtime_ns, info.st_size)
+        except FileRefused as refused:
+            raise FileNotRead(refused) from None
         except OSError as error:
             raise ValueError(str(error)) from None
     full = names.ns_join(scope_ns, param_name) if param_name else scope_ns
@@ -159,7 +183,10 @@ def _load_one(
     text: Raw = entity.text
     if substitute and isinstance(file, str) and command == "load":
         try:
-            text = read_text(file)
+            text = read_text(file, it.workspace.confinement())
+        except FileRefused as refused:
+            _not_read(it, file, refused.code, refused.message)
+            return
         except OSError as error:
             it.fail(it.space.true, "file-unreadable", f"error loading <rosparam> tag: {error}")
             return
@@ -206,7 +233,11 @@ def _emit(
             param if isinstance(param, str) else None,
             str(body),
             str(scope_ns),
+            it.workspace.confinement(),
         )
+    except FileNotRead as refused:
+        _not_read(it, str(file), refused.code, str(refused))
+        return
     except ValueError as error:
         code = "file-missing" if isinstance(error, MissingFile) else "rosparam-invalid"
         it.fail(it.space.true, code, f"error loading <rosparam> tag: {error}")
@@ -220,3 +251,13 @@ def _emit(
                 Choice.const(it.space, value),
             )
         )
+
+
+def _not_read(it: Interpretation, file: str, code: FileCode, message: str) -> None:
+    """A file rosvar refuses to read: outside the workspace, its parameters are unknown
+    (a warning, as for a file only known per configuration); otherwise roslaunch could
+    not load it either (an error event)."""
+    if code == FileCode.OUTSIDE:
+        it.warn(code, f"<rosparam> file {file} is not read: {message}")
+    else:
+        it.fail(it.space.true, code, f"error loading <rosparam> tag: {file}: {message}")

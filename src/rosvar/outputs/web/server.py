@@ -3,7 +3,11 @@
 Requests are checked before they reach the API: the ``Host`` header must name the loopback
 when the server is bound to it (a page elsewhere cannot reach the API through DNS
 rebinding), POST bodies must be JSON objects of bounded size with the JSON content type (a
-plain HTML form cannot post one), and every refusal is a 4xx answer ``{"error": message}``.
+plain HTML form cannot post one) whose ``Origin``, when a browser sends one, is this server
+(another page cannot change a session), and every refusal is a 4xx answer
+``{"error": message}``. Bodies are parsed within limits (nesting, number lengths), and
+connections are served by a bounded pool of threads, each connection with a timeout: a
+client holding connections open cannot make the server start threads without end.
 """
 
 from __future__ import annotations
@@ -11,6 +15,7 @@ from __future__ import annotations
 import ipaddress
 import json
 import sys
+from concurrent.futures import ThreadPoolExecutor
 from http import HTTPStatus
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from typing import Any
@@ -22,6 +27,15 @@ from rosvar.outputs.web.assets import Asset, load_assets
 from rosvar.outputs.web.sessions import DEFAULT_CAPACITY
 
 MAX_BODY = 64 * 1024
+MAX_JSON_DEPTH = 32
+"""Arrays and objects nested in a request body (the API's bodies nest two or three)."""
+MAX_NUMBER_CHARS = 100
+"""Characters of a number in a request body (Python's int() of a long one is quadratic)."""
+WORKERS = 16
+"""Threads serving connections; more connections wait in the listen queue."""
+LISTEN_BACKLOG = 128
+CONNECTION_TIMEOUT = 10.0
+"""Seconds a connection may stay silent (between or within requests) before it is closed."""
 API_PREFIX = "/api/"
 LOOPBACK_NAMES = ("localhost", "127.0.0.1", "[::1]")
 
@@ -47,16 +61,35 @@ def is_loopback(host: str) -> bool:
 
 
 class WebServer(ThreadingHTTPServer):
-    """One configurator's API and the app's files, on one address."""
+    """One configurator's API and the app's files, on one address; connections served by a
+    pool of :data:`WORKERS` threads."""
 
     daemon_threads = True
+    request_queue_size = LISTEN_BACKLOG
 
     def __init__(self, api: Api, host: str, port: int) -> None:
         self.api = api
         self.assets: dict[str, Asset] = load_assets()
         self.host = host
         self.loopback = is_loopback(host)
+        self._pool = ThreadPoolExecutor(WORKERS, thread_name_prefix="rosvar-http")
         super().__init__((host, port), _Handler)
+
+    def process_request(self, request: Any, client_address: Any) -> None:
+        """Hand the connection to the pool (``ThreadingMixIn`` starts a thread for each)."""
+        self._pool.submit(self.process_request_thread, request, client_address)
+
+    def server_close(self) -> None:
+        super().server_close()
+        self._pool.shutdown(wait=False, cancel_futures=True)
+
+    def allows_origin(self, origin: str | None, host: str | None) -> bool:
+        """A state-changing request from a browser comes from this server's own page: its
+        ``Origin`` names the host it addresses (clients other than browsers send none)."""
+        if origin is None:
+            return True
+        parts = urlsplit(origin)
+        return parts.scheme == "http" and host is not None and parts.netloc == host
 
     @property
     def url(self) -> str:
@@ -79,6 +112,49 @@ class WebServer(ThreadingHTTPServer):
         super().handle_error(request, client_address)  # type: ignore[arg-type]
 
 
+def parse_json(data: bytes) -> object:
+    """A request body as JSON within :data:`MAX_JSON_DEPTH` and :data:`MAX_NUMBER_CHARS`,
+    else :class:`ApiError` 400 (never an exception from the parser)."""
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as error:
+        raise ApiError(HTTPStatus.BAD_REQUEST, f"body is not JSON: {error}") from None
+    depth, inside, escaped = 0, False, False
+    for char in text:  # nesting counted outside strings, before the recursive parser runs
+        if inside:
+            if escaped:
+                escaped = False
+            elif char == "\\":
+                escaped = True
+            elif char == '"':
+                inside = False
+        elif char == '"':
+            inside = True
+        elif char in "[{":
+            depth += 1
+            if depth > MAX_JSON_DEPTH:
+                raise ApiError(HTTPStatus.BAD_REQUEST, f"body nested over {MAX_JSON_DEPTH} deep")
+        elif char in "]}":
+            depth -= 1
+    try:
+        return json.loads(text, parse_int=_number(int), parse_float=_number(float))
+    except (json.JSONDecodeError, _NumberTooLong) as error:
+        raise ApiError(HTTPStatus.BAD_REQUEST, f"body is not JSON: {error}") from None
+
+
+class _NumberTooLong(ValueError):
+    pass
+
+
+def _number(convert: type[int] | type[float]) -> Any:
+    def parse(text: str) -> int | float:
+        if len(text) > MAX_NUMBER_CHARS:
+            raise _NumberTooLong(f"a number over {MAX_NUMBER_CHARS} characters")
+        return convert(text)
+
+    return parse
+
+
 def make_server(
     configurator: Configurator,
     host: str = "127.0.0.1",
@@ -91,6 +167,7 @@ def make_server(
 
 class _Handler(BaseHTTPRequestHandler):
     server: WebServer
+    timeout = CONNECTION_TIMEOUT
     protocol_version = "HTTP/1.1"
     server_version = "rosvar"
     sys_version = ""
@@ -118,6 +195,10 @@ class _Handler(BaseHTTPRequestHandler):
         try:
             if not self.server.allows_host(self.headers.get("Host")):
                 raise ApiError(HTTPStatus.FORBIDDEN, "requests must address the loopback host")
+            if method != "GET" and not self.server.allows_origin(
+                self.headers.get("Origin"), self.headers.get("Host")
+            ):
+                raise ApiError(HTTPStatus.FORBIDDEN, "requests from other origins are refused")
             url = urlsplit(self.path)
             if url.path.startswith(API_PREFIX):
                 body = self._body() if method == "POST" else {}
@@ -155,9 +236,11 @@ class _Handler(BaseHTTPRequestHandler):
             self.close_connection = True  # the unread body must not be taken for a request
             raise ApiError(HTTPStatus.REQUEST_ENTITY_TOO_LARGE, f"body over {MAX_BODY} bytes")
         try:
-            body = json.loads(self.rfile.read(length) or b"{}")
-        except (UnicodeDecodeError, json.JSONDecodeError) as error:
-            raise ApiError(HTTPStatus.BAD_REQUEST, f"body is not JSON: {error}") from None
+            data = self.rfile.read(length)
+        except TimeoutError:
+            self.close_connection = True
+            raise ApiError(HTTPStatus.REQUEST_TIMEOUT, "body not received in time") from None
+        body = parse_json(data or b"{}")
         if not isinstance(body, dict):
             raise ApiError(HTTPStatus.BAD_REQUEST, "body must be a JSON object")
         return body

@@ -1,0 +1,121 @@
+"""Reading files named by untrusted input: the one way rosvar reads any file.
+
+Launch files come from repositories nobody vetted, and their paths (``textfile=``,
+``<rosparam file>``, ``<include>``) are theirs to choose: ``/dev/zero`` would be read
+forever, a FIFO would block, ``/etc/passwd`` or ``/proc/self/environ`` would end up in
+the output. So every read goes through :func:`read_file`: regular files only (opened
+without blocking, checked on the open descriptor), at most a size limit, never below
+``/proc``, ``/sys`` or ``/dev``, and, given a :class:`Confinement`, only inside the
+workspace. A refusal is a :class:`FileRefused`, an ``OSError`` as the failed ``open``
+would have been, so that every caller already reports it rather than stopping; its
+message does not name the file (callers place it).
+"""
+
+from __future__ import annotations
+
+import enum
+import os
+import stat
+from collections.abc import Iterable
+from dataclasses import dataclass
+from typing import BinaryIO
+
+MAX_FILE_BYTES = 64 * 1024 * 1024
+"""Largest file read (launch, parameter, text, binary, hints); larger ones are refused."""
+SYSTEM_TREES = ("/proc", "/sys", "/dev")
+"""Never read, whatever the options: they describe the machine running rosvar."""
+
+
+class FileCode(enum.StrEnum):
+    """Diagnostic codes of refused reads."""
+
+    UNREADABLE = "file-unreadable"
+    TOO_LARGE = "file-too-large"
+    OUTSIDE = "file-outside-workspace"
+
+
+class FileRefused(OSError):
+    """A read refused by rosvar's rules rather than by the operating system."""
+
+    def __init__(self, code: FileCode, message: str) -> None:
+        super().__init__(message)
+        self.code = code
+        self.message = message
+
+    def __str__(self) -> str:
+        return self.message
+
+
+@dataclass(frozen=True)
+class Confinement:
+    """The directories a workspace may read below (symlinks resolved), unless told otherwise."""
+
+    roots: tuple[str, ...]
+    allow_outside: bool = False
+
+    @staticmethod
+    def of(directories: Iterable[str], allow_outside: bool = False) -> Confinement:
+        real = {os.path.realpath(directory) for directory in directories}
+        return Confinement(tuple(sorted(real)), allow_outside)
+
+    def check(self, path: str) -> str:
+        """``path`` resolved (``..`` and symlinks), or :class:`FileRefused` if it is outside."""
+        real = os.path.realpath(path)
+        _check_system(real)
+        if not self.allow_outside and not any(_below(real, root) for root in self.roots):
+            raise FileRefused(
+                FileCode.OUTSIDE,
+                "outside the workspace (--allow-outside-workspace allows it)",
+            )
+        return real
+
+
+def _below(path: str, root: str) -> bool:
+    return path == root or path.startswith(root.rstrip(os.sep) + os.sep)
+
+
+def _check_system(real: str) -> None:
+    for tree in SYSTEM_TREES:
+        if _below(real, tree):
+            raise FileRefused(FileCode.OUTSIDE, f"below {tree}, which rosvar never reads")
+
+
+def read_file(
+    path: str, confinement: Confinement | None = None, limit: int = MAX_FILE_BYTES
+) -> bytes:
+    """The whole content of the regular file ``path``, at most ``limit`` bytes.
+
+    Raises ``OSError`` as ``open`` does (a missing file, a permission), or
+    :class:`FileRefused`: not a regular file, larger than ``limit``, a system tree, or
+    outside ``confinement``.
+    """
+    if confinement is not None:
+        confinement.check(path)
+    with open_regular(path) as handle:
+        info = os.fstat(handle.fileno())
+        if info.st_size > limit:
+            raise _too_large(info.st_size, limit)
+        # The size found, plus one byte to see the end: ``read(n)`` allocates n bytes first.
+        data = handle.read(info.st_size + 1)
+        if len(data) > info.st_size:  # grew since: the rest, up to the limit
+            data += handle.read(limit + 1 - len(data))
+    if len(data) > limit:
+        raise _too_large(len(data), limit)
+    return data
+
+
+def open_regular(path: str) -> BinaryIO:
+    """``path`` opened for reading if it is a regular file outside the system trees, else
+    :class:`FileRefused` (checked on the open descriptor: nothing can swap the file)."""
+    _check_system(os.path.realpath(path))
+    flags = os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0)
+    descriptor = os.open(path, flags)  # O_NONBLOCK: opening a FIFO must not wait
+    handle = os.fdopen(descriptor, "rb")
+    if not stat.S_ISREG(os.fstat(descriptor).st_mode):
+        handle.close()
+        raise FileRefused(FileCode.UNREADABLE, "not a regular file")
+    return handle
+
+
+def _too_large(size: int, limit: int) -> FileRefused:
+    return FileRefused(FileCode.TOO_LARGE, f"file is {size} bytes, over the limit of {limit} bytes")

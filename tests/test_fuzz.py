@@ -1,0 +1,43 @@
+"""A short seeded mutation-fuzzing campaign over corpus launch files (``bench/fuzz.py``).
+
+Every mutant must be analysed and resolved without an exception, within the time limit,
+and the campaign must not grow the process's peak memory much: hostile input becomes
+diagnostics, never a crash. The long campaign (100 000 mutants) is run off CI.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import resource
+import sys
+from pathlib import Path
+
+import pytest
+
+BENCH = Path(__file__).resolve().parent.parent / "bench" / "fuzz.py"
+_spec = importlib.util.spec_from_file_location("rosvar_bench_fuzz", BENCH)
+assert _spec is not None and _spec.loader is not None
+fuzz = importlib.util.module_from_spec(_spec)
+sys.modules[_spec.name] = fuzz
+_spec.loader.exec_module(fuzz)
+
+MUTANTS = 2000
+MEMORY_GROWTH_MB = 500
+
+
+@pytest.mark.skipif(not fuzz.CORPUS.is_dir(), reason="the corpus is not beside the repository")
+def test_mutants_of_corpus_files_never_break_rosvar() -> None:
+    before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    report = fuzz.campaign(MUTANTS, seed=16, time_limit=30.0)
+    assert report.mutants == MUTANTS
+    assert report.failures == [], report.failures[0][1]
+    assert report.peak_rss_mb - before < MEMORY_GROWTH_MB
+
+
+def test_the_hostile_snippets_are_spliced_in() -> None:
+    """The campaign's mutants do contain the inputs of issue 16 (else it could not fail)."""
+    rng = fuzz.random.Random(3)
+    mutants = [fuzz._splice_hostile("<launch>\n</launch>\n", rng) for _ in range(200)]
+    assert {snippet for snippet in fuzz.HOSTILE if any(snippet in m for m in mutants)} == set(
+        fuzz.HOSTILE
+    )
