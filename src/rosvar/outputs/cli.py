@@ -83,7 +83,7 @@ def _workspace(paths: Sequence[str], deps: Sequence[str]) -> Workspace:
 
 
 def cmd_analyze(options: argparse.Namespace) -> int:
-    from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.interpreter.workspace_models import Analysis, collector_paused
     from rosvar.outputs.describe import describe_model
 
     workspace = _workspace(options.paths, options.deps)
@@ -93,7 +93,9 @@ def cmd_analyze(options: argparse.Namespace) -> int:
     analysis = Analysis(workspace)
     models = analysis.all_models(_progress)
     if options.json:
-        _print_json({"files": [describe_model(m) for m in models]})
+        with collector_paused():  # the models' data, as the models
+            document = {"files": [describe_model(m) for m in models]}
+        _print_json(document)
         return EXIT_OK
     diagnostics = [d for m in models for d in m.diagnostics]
     print(f"{len(models)} launch files, {len(workspace.packages)} packages")
