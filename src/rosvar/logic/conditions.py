@@ -221,6 +221,10 @@ class ConditionSpace:
             self._facts_of.setdefault(name, []).append(constraint)
             self._fact_inputs.setdefault(name, set()).update(inputs)
 
+    def facts_of(self, name: str) -> Sequence[BDD]:
+        """The facts added with :meth:`constrain` that mention variable ``name``."""
+        return self._facts_of.get(name, ())
+
     def care(self, condition: BDD) -> BDD:
         """The facts that can matter for ``condition``: those over its variables.
 

@@ -8,11 +8,11 @@ hide and the inputs' domains: :class:`Printer` computes those once per set of va
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import cast
 
-from rosvar.logic.bdd import BDD, cofactors, restrict
+from rosvar.logic.bdd import BDD, Layout, cofactors, layout, restrict
 from rosvar.logic.conditions import PREDICATES, ConditionSpace, FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.inputs import OTHER, ArgInput, EnvInput, Input, Slot
 
@@ -40,6 +40,9 @@ class _Context:
     known_domains: Domains  # ``domains`` without the <other> slots of args
 
 
+Shape = tuple[object, ...]  # what a description depends on (``Printer._shape``)
+
+
 class Printer:
     """The readable form of the conditions of one space (``ConditionSpace.describe``)."""
 
@@ -47,6 +50,12 @@ class Printer:
         self.space = space
         self._contexts: dict[frozenset[object], _Context] = {}
         self._facts = space.facts()
+        self._by_shape: dict[Shape, str] = {}
+        self._variables: dict[str, tuple[int, int, Sequence[BDD]]] = {}  # see _variable
+        self._block_numbers: dict[object, int] = {}
+        self._block_objects: list[object] = []
+        self._shown_blocks: dict[tuple[object, bool], tuple[object, ...]] = {}
+        self._fact_layouts: dict[BDD, Layout] = {}
 
     def describe(self, condition: BDD, qualify: bool = False, known_only: bool = True) -> str:
         """A short readable formula, e.g. ``use_teleop=true ∧ ¬sim``, modulo validity.
@@ -55,7 +64,111 @@ class Printer:
         values analysis knows, which hides the rarely useful ``<other>`` refinements;
         a condition that this view would show as ``true`` but that fails for some
         other value is shown in full when that is short.
+
+        Conditions of the same shape read the same, and are described once: every file
+        that includes another conjoins the other's conditions with its own, over its own
+        inputs, so a workspace holds many copies of a few shapes.
         """
+        facts = self.space.facts()
+        if facts != self._facts:  # what was read of the facts is stale
+            self._contexts.clear()
+            self._variables.clear()
+            self._facts = facts
+        shape = self._shape(condition, qualify, known_only)
+        if shape is None:
+            return self._describe(condition, qualify, known_only)
+        text = self._by_shape.get(shape)
+        if text is None:
+            text = self._by_shape[shape] = self._describe(condition, qualify, known_only)
+        return text
+
+    def _shape(self, condition: BDD, qualify: bool, known_only: bool) -> Shape | None:
+        """What the description of ``condition`` depends on, the same for every condition
+        that reads the same; None when two of its inputs have the same name.
+
+        The description depends on the diagrams of the condition and of the facts over its
+        variables up to a renaming of the variables, the order of those variables and of the
+        other slots of their inputs (which the facts and the ``<other>`` slots bring in),
+        and what the printer shows of each variable: its input's kind, name and domain, its
+        predicate or its file. An input's slots are consecutive levels in domain order
+        (``ConditionSpace.declare_input``; predicates are inserted after the slots of the
+        inputs they read), so a variable is placed by its input's *block* and its place in
+        the block, and blocks are ranked by level. The facts, a set, are sorted.
+        """
+        nodes = layout(condition)
+        starts: dict[int, int] = {}
+        facts: dict[BDD, Layout] = {}
+        variables = self._variables
+        for name, level in zip(nodes.names, nodes.levels, strict=True):
+            found = variables.get(name) or self._variable(name)
+            starts[found[0]] = level - found[1]
+            for fact in found[2]:
+                if fact not in facts:
+                    facts[fact] = self._fact_layout(fact)
+        for fact_nodes in facts.values():
+            for name, level in zip(fact_nodes.names, fact_nodes.levels, strict=True):
+                found = variables.get(name) or self._variable(name)
+                starts[found[0]] = level - found[1]
+        order = sorted(starts, key=starts.__getitem__)
+        rank = {block: position for position, block in enumerate(order)}
+        shown = tuple(self._shown(self._block_objects[block], qualify) for block in order)
+        if len({text for text, *_rest in shown}) != len(shown):
+            return None
+
+        def encoded(nodes: Layout) -> Shape:
+            placed = []
+            for name in nodes.names:
+                block, index, _facts = variables[name]
+                placed.append((rank[block], index))
+            return (nodes.root, tuple(nodes.lows), tuple(nodes.highs), tuple(placed))
+
+        return (
+            qualify,
+            known_only,
+            encoded(nodes),
+            tuple(sorted({encoded(fact_nodes) for fact_nodes in facts.values()})),
+            shown,
+        )
+
+    def _variable(self, name: str) -> tuple[int, int, Sequence[BDD]]:
+        """Variable ``name``'s block (its input, or its own atom, by number), its place in the
+        block and its facts."""
+        space = self.space
+        atom = space.atom_of(name)
+        block: object = atom
+        index = 0
+        if isinstance(atom, SlotAtom):
+            block = atom.input
+            index = space.domain(atom.input).index(atom.slot)
+        number = self._block_numbers.setdefault(block, len(self._block_numbers))
+        if number == len(self._block_objects):
+            self._block_objects.append(block)
+        found = self._variables[name] = (number, index, tuple(space.facts_of(name)))
+        return found
+
+    def _fact_layout(self, fact: BDD) -> Layout:
+        found = self._fact_layouts.get(fact)
+        if found is None:
+            found = self._fact_layouts[fact] = layout(fact)
+        return found
+
+    def _shown(self, block: object, qualify: bool) -> tuple[object, ...]:
+        """What the printer reads of a block: its name, then what else it shows or uses."""
+        found = self._shown_blocks.get((block, qualify))
+        if found is not None:
+            return found
+        if isinstance(block, FileAtom):
+            found = (f"file {block.label}",)
+        elif isinstance(block, PredicateAtom):
+            found = (f"{block.test} {block.term}",)
+        else:
+            input_ = cast(Input, block)
+            file = input_.file if qualify and isinstance(input_, ArgInput) else ""
+            found = (str(input_), type(input_).__name__, file, self.space.domain(input_))
+        self._shown_blocks[block, qualify] = found
+        return found
+
+    def _describe(self, condition: BDD, qualify: bool, known_only: bool) -> str:
         space = self.space
         if condition == space.false:
             return "false"
@@ -79,12 +192,8 @@ class Printer:
 
     def _context(self, variables: frozenset[str]) -> _Context:
         """The context of conditions over ``variables``, computed once for all conditions
-        with the same facts (while the space's facts stay the same)."""
+        with the same facts (while the space's facts stay the same: ``describe``)."""
         space = self.space
-        facts = space.facts()
-        if facts != self._facts:
-            self._contexts.clear()
-            self._facts = facts
         key = space.care_key(variables)
         found = self._contexts.get(key)
         if found is not None:

@@ -51,16 +51,18 @@ class Apply:
 
     ``function`` names an entry of :data:`FUNCTIONS`; ``display`` is how people see it.
     Immutable, with slots, as :class:`Hole`. The hash is computed once: terms are
-    dictionary keys on hot paths and nest deeply.
+    dictionary keys on hot paths and nest deeply; so is the text, on first use: the
+    ``analyze`` JSON shows the same terms in every file that includes theirs.
     """
 
-    __slots__ = ("_hash", "display", "function", "operands")
+    __slots__ = ("_hash", "_text", "display", "function", "operands")
 
     def __init__(self, function: str, operands: tuple[Operand, ...], display: str = "") -> None:
         self.function = function
         self.operands = operands
         self.display = display
         self._hash = hash((function, operands, display))
+        self._text: str | None = None
 
     def __eq__(self, other: object) -> bool:
         return (
@@ -81,6 +83,11 @@ class Apply:
         )
 
     def __str__(self) -> str:
+        if self._text is None:
+            self._text = self._shown()
+        return self._text
+
+    def _shown(self) -> str:
         if self.display:
             return self.display
         shown = [o if isinstance(o, str | tuple) else str(o) for o in self.operands]

@@ -83,7 +83,7 @@ def _workspace(paths: Sequence[str], options: argparse.Namespace) -> Workspace:
 
 
 def cmd_analyze(options: argparse.Namespace) -> int:
-    from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.interpreter.workspace_models import Analysis, collector_paused
     from rosvar.outputs.describe import describe_model
 
     workspace = _workspace(options.paths, options)
@@ -93,7 +93,9 @@ def cmd_analyze(options: argparse.Namespace) -> int:
     analysis = Analysis(workspace)
     models = analysis.all_models(_progress)
     if options.json:
-        _print_json({"files": [describe_model(m) for m in models]})
+        with collector_paused():  # the models' data, as the models
+            document = {"files": [describe_model(m) for m in models]}
+        _print_json(document)
         return EXIT_OK
     diagnostics = [d for m in models for d in m.diagnostics]
     print(f"{len(models)} launch files, {len(workspace.packages)} packages")
@@ -661,6 +663,39 @@ def parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command of ``argv``; without ``argv`` the process is the command (the
+    ``rosvar`` script, ``python -m rosvar``) and ends with it, skipping the interpreter's
+    teardown: freeing a large analysis object by object and the modules' clean-up took
+    longer than printing its JSON. Callers in a process that lives on pass ``argv``.
+
+    Such a process also does without ``networkx``, which ``dd`` imports for graph exports
+    rosvar does not use (it took longer than the rest of ``dd``): ``dd`` copes with its
+    absence. Not in a process that lives on: there the different import order made pysat's
+    solvers outlive their module at its teardown, with a warning for each."""
+    if argv is None:
+        sys.modules.setdefault("networkx", None)  # type: ignore[arg-type]
+    try:
+        code = _main(argv)
+    except BaseException:
+        gc.collect()
+        raise
+    if argv is None:
+        _exit(code)
+    # free BDD nodes before their manager: CUDD complains when the interpreter tears
+    # modules down in an arbitrary order
+    gc.collect()
+    return code
+
+
+def _exit(code: int) -> None:
+    """End the process now, with what was written so far flushed (nothing else runs)."""
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(OSError, ValueError):
+            stream.flush()
+    os._exit(code)
+
+
+def _main(argv: Sequence[str] | None) -> int:
     top = parser()
     options, extra = top.parse_known_args(argv)
     mappings = [word for word in extra if ":=" in word]
@@ -690,7 +725,3 @@ def main(argv: Sequence[str] | None = None) -> int:
         # what needs the solver of a model listed but not solved
         print(f"rosvar: the feature model is too large to solve: {error}", file=sys.stderr)
         return EXIT_TOO_LARGE
-    finally:
-        # free BDD nodes before their manager: CUDD complains when the interpreter
-        # tears modules down in an arbitrary order
-        gc.collect()

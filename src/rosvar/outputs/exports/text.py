@@ -7,7 +7,6 @@ with the fewest non-default choices, so each finding says what to look at.
 
 from __future__ import annotations
 
-import os
 from collections import Counter
 
 from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
@@ -15,6 +14,7 @@ from rosvar.analyses.feature_model.operations import core_and_dead, count_config
 from rosvar.diagnostics import Location, Severity
 from rosvar.outputs.describe import count_text
 from rosvar.outputs.exports._common import Tree, Triggers, conflicts
+from rosvar.workspace.paths import real_path
 
 INDENT = "  "
 
@@ -25,7 +25,7 @@ def _plural(count: int, word: str) -> str:
 
 def _where(location: Location, tree: Tree) -> str:
     """``file-id:line:col`` (a launch file's id is shorter than its path)."""
-    file = tree.by_path.get(os.path.realpath(location.file), location.file)
+    file = tree.by_path.get(real_path(location.file), location.file)
     return f"{file}:{location.line}:{location.col}" if location.line > 0 else file
 
 
