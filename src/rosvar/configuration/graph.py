@@ -140,6 +140,8 @@ class VariationalGraph:
                 _needs(*raws),
                 nodes=nodes,
             )
+        self._topics.clear()
+        self._shadows.clear()  # only the build's products need them
 
     def by_kind(self, kind: str) -> Iterable[Element]:
         return (e for e in self.elements if e.kind == kind)
