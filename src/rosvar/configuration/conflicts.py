@@ -223,7 +223,7 @@ def _blocks(
     """
     solver = model.solver
     manager = solver.manager
-    large = {i for i, c in enumerate(solver.components) if c.formula.dag_size > REQUIRES_LIMIT}
+    large = {i for i, c in enumerate(solver.components) if c.larger_than(REQUIRES_LIMIT)}
     alone = {f.id: (frozenset(f.variable_names()), solver.file_tree(f)) for f in model.files}
     numbers = count()  # a block's key: merged blocks get a new one
     blocks = {next(numbers): (v, formula, {file}) for file, (v, formula) in alone.items()}

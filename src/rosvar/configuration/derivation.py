@@ -107,7 +107,6 @@ class Derivation:
         self.variables = list(solver.variables)
         self.position = {v: i for i, v in enumerate(self.variables)}
         self.components = solver.components
-        self.formulas = [c.formula for c in solver.components]
         self.members = [list(c.variables) for c in solver.components]
         self._masks = [sum(1 << self.position[v] for v in c.variables) for c in solver.components]
         self._blocks = [sum(1 << self.position[v] for v in f.variable_names()) for f in model.files]

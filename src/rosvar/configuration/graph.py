@@ -36,7 +36,7 @@ from rosvar.interpreter.tags.rosparam import load_rosparam
 from rosvar.interpreter.validation import node_values
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
-from rosvar.logic.choice import Choice, combine
+from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
@@ -118,11 +118,14 @@ class VariationalGraph:
         self.elements: list[Element] = []
         self.launched: dict[str, BDD] = _launched(model)
         self._topics: dict[tuple[str, str], _Topic] = {}
+        self._shadows: dict[BDD, BDD] = {}
         for done, file in enumerate(model.files):
             if progress is not None:
                 progress(done, len(model.files))
             self._add_model(
-                analysis.model(file.file), file_ids[file.file], self.launched[file.file]
+                analysis.model(file.file),
+                file_ids[file.file],
+                lowering.fix(self.launched[file.file]),
             )
         for (entry, name), (nodes, condition, raws) in sorted(self._topics.items()):
             if not entry:
@@ -139,6 +142,8 @@ class VariationalGraph:
                 _needs(*raws),
                 nodes=nodes,
             )
+        self._topics.clear()
+        self._shadows.clear()  # only the build's products need them
 
     def by_kind(self, kind: str) -> Iterable[Element]:
         return (e for e in self.elements if e.kind == kind)
@@ -146,7 +151,7 @@ class VariationalGraph:
     def _add(
         self,
         kind: str,
-        id_: str,
+        id_: str | Callable[[], str],
         entry: str,
         condition: BDD,
         render: Render,
@@ -154,16 +159,32 @@ class VariationalGraph:
         nodes: list[str] | None = None,
         parts: tuple[Part, ...] = (),
     ) -> Element | None:
-        fixed, bounds = self.lowering.lower(condition)
+        """The element, unless no configuration has it; ``id_`` (or made by it) is only
+        taken by an element added, so the variants of one place are numbered 1, 2, ..."""
+        fixed = self.lowering.fix(condition)
         if not self.lowering.satisfiable(fixed):
             return None  # e.g. two values of one arg: combinations no configuration has
         element = Element(
-            kind, id_, entry, fixed, bounds, render, frozenset(inputs), nodes or [], parts
+            kind,
+            id_ if isinstance(id_, str) else id_(),
+            entry,
+            fixed,
+            self.lowering.bounds(condition),
+            render,
+            frozenset(inputs),
+            nodes or [],
+            parts,
         )
         self.elements.append(element)
         return element
 
     def _add_model(self, model: LaunchModel, file_id: str, launched: BDD) -> None:
+        """The elements of an entry file's model; ``launched``: fixed (``Lowering.fix``).
+
+        Conditions are fixed factor by factor and then conjoined (fixing is a cofactor, which
+        distributes over ∧): the factors are few and shared (``launched`` is a large diagram
+        for a file included from many places), their conjunctions many and small."""
+        fix = self.lowering.fix
         counters: dict[str, int] = {}
 
         def new_id(location: Location) -> str:
@@ -171,24 +192,27 @@ class VariationalGraph:
             counters[key] = counters.get(key, 0) + 1
             return f"{key}#{counters[key]}"
 
+        def numbered(location: Location) -> Callable[[], str]:
+            return lambda: new_id(location)
+
         for node in model.nodes:
-            self._add_node(model, node, launched, new_id)
+            self._add_node(model, node, launched, numbered(node.location))
         for param in model.params:
-            condition = launched & param.condition
+            condition = launched & fix(param.condition)
             if isinstance(param, ParamDecl):
-                for branch, (name, value) in combine([param.name, param.value], tuple):
+                for variant, (name, value) in self._variants(condition, [param.name, param.value]):
                     self._add(
                         "param",
-                        new_id(param.location),
+                        numbered(param.location),
                         model.file,
-                        condition & branch,
+                        variant,
                         _param_renderer(name, value, param.location, self.confinement),
                         _needs(name, value.raw if isinstance(value, DeferredValue) else value),
                     )
             else:
                 self._add(
                     "param",
-                    new_id(param.location),
+                    numbered(param.location),
                     model.file,
                     condition,
                     _yaml_renderer(param, self.confinement),
@@ -202,9 +226,9 @@ class VariationalGraph:
                 message = f"cannot load included file {target}"
                 self._add(
                     "error",
-                    new_id(include.location),
+                    numbered(include.location),
                     model.file,
-                    launched & include.condition,
+                    launched & fix(include.condition),
                     _static(
                         {
                             "code": "include-unknown",
@@ -216,20 +240,22 @@ class VariationalGraph:
         for error in model.errors:
             self._add(
                 "error",
-                new_id(error.location),
+                numbered(error.location),
                 model.file,
-                launched & error.condition,
+                launched & fix(error.condition),
                 _static({"code": error.code, "message": error.message, **error.location.to_json()}),
             )
 
     def _add_node(
-        self, model: LaunchModel, node: NodeDecl, launched: BDD, new_id: Callable[[Location], str]
+        self, model: LaunchModel, node: NodeDecl, launched: BDD, new_id: Callable[[], str]
     ) -> None:
         keys = sorted(node.fields)
         fields: list[Choice[object]] = [node.fields[k] for k in keys]
-        for branch, values in combine(fields, tuple):
+        within = launched & self.lowering.fix(node.condition)
+        for condition, values in self._variants(within, fields):
+            if not self.lowering.satisfiable(self.lowering.fix(condition)):
+                continue  # before its parts are lowered
             raw = cast(dict[str, Raw | None], dict(zip(keys, values, strict=True)))
-            condition = launched & node.condition & branch
             parts: list[Part] = []
             remaps = self._parted(
                 condition, [(r.condition, r.source, r.target) for r in node.remaps], parts
@@ -237,7 +263,7 @@ class VariationalGraph:
             env = self._parted(condition, [(e.condition, e.name, e.value) for e in node.env], parts)
             element = self._add(
                 "test" if node.is_test else "node",
-                new_id(node.location),
+                new_id,
                 model.file,
                 condition,
                 _node_renderer(raw, remaps, env, node),
@@ -247,14 +273,55 @@ class VariationalGraph:
             if element is not None and not node.is_test:
                 self._topic_uses(element, raw, remaps)
 
+    def _variants(
+        self, within: BDD, fields: Sequence[Choice[object]]
+    ) -> list[tuple[BDD, tuple[object, ...]]]:
+        """``within`` (fixed) ∧ each combination of the fields' values, in ``combine``'s order, but
+        without the combinations the facts rule out (two values of one arg), dropped as
+        the product is formed: a node whose fields read several args makes a combination
+        per value of each, mostly impossible ones, which ``_add`` would lower one by one
+        only to refuse them (one gazebo node of empty_world.launch made 8,424).
+
+        Each partial combination carries a *shadow*: its condition conjoined with the facts
+        over the variables of its parts, FALSE as soon as the facts rule it out."""
+        false = within.bdd.false
+        varying = [index for index, field_ in enumerate(fields) if len(field_) != 1]
+        leaves: list[object] = [None] * len(fields)
+        for index, field_ in enumerate(fields):
+            if len(field_) == 1:
+                condition, leaves[index] = field_.branches[0]
+                within &= self.lowering.fix(condition)
+        partial = [(within, self._shadow(within), leaves)]
+        for index in varying:
+            grown = []
+            for condition, shadow, values in partial:
+                for branch, leaf in fields[index]:
+                    own = self.lowering.fix(branch)
+                    both = shadow & self._shadow(own)
+                    if both != false:
+                        chosen = list(values)
+                        chosen[index] = leaf
+                        grown.append((condition & own, both, chosen))
+            partial = grown
+        return [
+            (condition, tuple(values)) for condition, shadow, values in partial if shadow != false
+        ]
+
+    def _shadow(self, condition: BDD) -> BDD:
+        """``condition`` (fixed) ∧ the facts over its variables."""
+        found = self._shadows.get(condition)
+        if found is None:
+            found = self._shadows[condition] = condition & self.lowering.space.care(condition)
+        return found
+
     def _parted(
         self, condition: BDD, settings: list[tuple[BDD, Raw, Raw]], parts: list[Part]
     ) -> list[_Setting]:
-        """The settings a node variant of ``condition`` may have, each with the index of
+        """The settings a node variant of ``condition`` (fixed) may have, each with the index of
         its part in ``parts`` (added) or None when the variant always has it."""
         kept: list[_Setting] = []
         for own, first, second in settings:
-            both = condition & own
+            both = condition & self.lowering.fix(own)
             if both == condition:
                 kept.append((first, second, None))
                 continue

@@ -69,20 +69,41 @@ class Lowering:
                 self.open.add(name)
             else:
                 self.fixed[name] = truth[name]
-        self._cache: dict[BDD, tuple[BDD, Bounds]] = {}
+        self._fixed: dict[BDD, tuple[BDD, set[str]]] = {}  # condition → fixed, its support
+        self._bounds: dict[BDD, Bounds] = {}  # by fixed condition
         self._decided: dict[tuple[BDD, frozenset[tuple[Input, str]]], Bounds] = {}
         self._cares: dict[frozenset[str], BDD] = {}
         self._satisfiable: dict[BDD, bool] = {}
 
     def fix(self, condition: BDD) -> BDD:
         """``condition`` with the fixed atoms substituted (still in the analysis' manager)."""
-        return self.lower(condition)[0]
+        found = self._fixed.get(condition)
+        if found is None:
+            support = self.space.support(condition)
+            values = {n: self.fixed[n] for n in support if n in self.fixed}
+            fixed = self.space.cofactor(condition, values)
+            kept = support  # the support of ``fixed`` when nothing was fixed
+            if values:
+                kept = self.space.support(fixed)
+            found = self._fixed[condition] = (fixed, kept)
+            if fixed not in self._satisfiable:
+                self._satisfiable[fixed] = self._judge(fixed, kept)
+        return found[0]
 
     def bounds(self, condition: BDD) -> Bounds:
-        return self.lower(condition)[1]
+        """``condition`` fixed and copied into the solver's manager: only conditions found
+        satisfiable are, as a copy costs a walk of the diagram and new nodes."""
+        fixed = self.fix(condition)
+        found = self._bounds.get(fixed)
+        if found is None:
+            found = self._bounds[fixed] = self._copy(fixed, self._fixed[condition][1])
+        return found
+
+    def lower(self, condition: BDD) -> tuple[BDD, Bounds]:
+        return self.fix(condition), self.bounds(condition)
 
     def satisfiable(self, fixed: BDD) -> bool:
-        """``space.satisfiable`` of a lowered condition (``lower`` answers it on the way)."""
+        """``space.satisfiable`` of a lowered condition (``fix`` answers it on the way)."""
         found = self._satisfiable.get(fixed)
         if found is None:
             found = self._satisfiable[fixed] = self._judge(fixed, self.space.support(fixed))
@@ -96,21 +117,6 @@ class Lowering:
         if care is None:
             care = self._cares[key] = self.space.care_over(support)
         return bool((fixed & care) != self.space.false)
-
-    def lower(self, condition: BDD) -> tuple[BDD, Bounds]:
-        found = self._cache.get(condition)
-        if found is None:
-            support = self.space.support(condition)
-            values = {n: self.fixed[n] for n in support if n in self.fixed}
-            fixed = self.space.cofactor(condition, values)
-            kept = support  # the support of ``fixed`` when nothing was fixed
-            if values:
-                kept = self.space.support(fixed)
-            found = (fixed, self._copy(fixed, kept))
-            self._cache[condition] = found
-            if fixed not in self._satisfiable:
-                self._satisfiable[fixed] = self._judge(fixed, kept)
-        return found
 
     def decide(self, condition: BDD, typed: Mapping[Input, str]) -> Bounds:
         """Bounds once the open predicates whose terms the ``typed`` texts complete are decided."""

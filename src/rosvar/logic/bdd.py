@@ -258,15 +258,34 @@ def conjoin(manager: Manager, parts: Sequence[BDD]) -> BDD:
     variable instead made intermediate results many times the final one).
     """
 
+    result = manager.true
+    for part in _bottom_up(manager, parts):
+        result &= part
+    return result
+
+
+def conjoin_within(manager: Manager, parts: Sequence[BDD], nodes: int) -> BDD | None:
+    """``conjoin``, or None once the conjunction grows past ``nodes`` nodes (looked at every
+    ``SIZE_CHECKS`` parts): tells a diagram too large to use without building all of it."""
+    result = manager.true
+    for number, part in enumerate(_bottom_up(manager, parts), start=1):
+        result &= part
+        if number % SIZE_CHECKS == 0 and result.dag_size > nodes:
+            return None
+    return None if result.dag_size > nodes else result
+
+
+SIZE_CHECKS = 32
+
+
+def _bottom_up(manager: Manager, parts: Sequence[BDD]) -> list[BDD]:
+    """``parts`` by their top variable, deepest first (``conjoin``'s schedule)."""
     constants = (manager.true, manager.false)
 
     def top(part: BDD) -> int:
         return -1 if part in constants else int(part.level)  # the root is the top variable
 
-    result = manager.true
-    for part in sorted(parts, key=top, reverse=True):
-        result &= part
-    return result
+    return sorted(parts, key=top, reverse=True)
 
 
 # -- the nodes of a BDD as plain lists, read in CUDD's memory ------------------------------------

@@ -17,7 +17,16 @@ from rosvar.analyses.feature_model.exclusions import declaring, excluding, exclu
 from rosvar.analyses.feature_model.model import Constraint, FileFeature, ModelTooLarge, name_of
 from rosvar.analyses.feature_model.ordering import order
 from rosvar.logic import bdd
-from rosvar.logic.bdd import BDD, Manager, Weight, conjoin, new_manager, transfer, walked_support
+from rosvar.logic.bdd import (
+    BDD,
+    Manager,
+    Weight,
+    conjoin,
+    conjoin_within,
+    new_manager,
+    transfer,
+    walked_support,
+)
 from rosvar.logic.conditions import ConditionSpace, exactly_one, memory_estimate
 
 
@@ -88,6 +97,16 @@ class Component:
         with memory_bound(self.manager, self._workspace_files):
             trees = _arg_trees(self.manager, self._args)
             return conjoin(self.manager, [*trees, *self._constraints])
+
+    def larger_than(self, nodes: int) -> bool:
+        """``formula`` has more than ``nodes`` nodes: told while it is built, which stops
+        there (a large component's formula reaches millions of nodes, wanted only to be
+        left alone)."""
+        if "formula" in self.__dict__:
+            return bool(self.formula.dag_size > nodes)
+        with memory_bound(self.manager, self._workspace_files):
+            trees = _arg_trees(self.manager, self._args)
+            return conjoin_within(self.manager, [*trees, *self._constraints], nodes) is None
 
     def count(self, choices: Mapping[str, bool]) -> int:
         """Valid configurations of the component agreeing with ``choices``: a weighted count
