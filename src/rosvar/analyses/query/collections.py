@@ -137,7 +137,13 @@ def _full_name(parts: Sequence[object]) -> str | None:
 
 
 def _shown(value: object) -> str:
+    """A name for people: a term shows the inputs it awaits (``⟨robot⟩/map``)."""
     return value if isinstance(value, str) else f"{value}"
+
+
+def _template(parts: Sequence[object]) -> str:
+    namespace, name = (_shown(part) for part in parts)
+    return names.ns_join(namespace, name)
 
 
 def _nodes(analysis: Analysis, model: LaunchModel) -> Iterator[Element]:
@@ -150,8 +156,9 @@ def _node_elements(analysis: Analysis, model: LaunchModel) -> Iterator[tuple[Nod
     entry = analysis.label(model.file)
     for node in model.nodes:
         fields = node.fields
-        for condition, name in combine([fields["namespace"], fields["name"]], _full_name):
-            shown = name if name is not None else _shown(fields["name"].values())
+        for condition, parts in combine([fields["namespace"], fields["name"]], tuple):
+            name = _full_name(parts)
+            shown = name if name is not None else _template(parts)
             values: dict[str, Choice[object]] = {
                 "name": _const(space, name),
                 "namespace": _known(fields["namespace"]),

@@ -189,17 +189,17 @@ class _Evaluation:
         self.space = space
         self.branches = 0
         self._reads = {id(p): _read_attributes(p) for p in query.predicates}
-        self._known: dict[tuple[int, tuple[object, ...]], bool] = {}
+        self._known: dict[tuple[int, tuple[object, ...]], BDD] = {}
 
     def truth(self, predicate: Predicate, element: Queryable) -> BDD:
         """Where ``predicate`` holds for ``element`` (its presence aside)."""
         key = self._key(predicate, element)
-        if key is not None:
-            holds = self._known.get(key)
-            if holds is None:
-                holds = self._known[key] = self._truth(predicate, element) != self.space.false
-            return self.space.true if holds else self.space.false
-        return self._truth(predicate, element)
+        if key is None:
+            return self._truth(predicate, element)
+        known = self._known.get(key)
+        if known is None:
+            known = self._known[key] = self._truth(predicate, element)
+        return known
 
     def _key(
         self, predicate: Predicate, element: Queryable
