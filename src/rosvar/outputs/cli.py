@@ -582,7 +582,7 @@ def cmd_query(options: argparse.Namespace) -> int:
     except QueryError as error:
         print(f"rosvar: {error}\n  {expression}\n  {' ' * error.col}^", file=sys.stderr)
         return EXIT_USAGE
-    documents = [result.to_json(analysis.space) for result in results]
+    documents = [engine.to_json(result) for result in results]
     if options.json:
         _print_json({"query": expression, "results": documents})
         return EXIT_OK

@@ -15,7 +15,6 @@ from rosvar.analyses.query.evaluator import QueryEngine, Result
 from rosvar.analyses.query.parser import QueryError
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
-from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import ArgInput, Input
 from rosvar.workspace import discover
 
@@ -48,10 +47,11 @@ def slot(engine: QueryEngine, file: str, arg: str, value: str) -> BDD:
     return space.slot(ArgInput(file, arg), value)
 
 
-def satisfied(space: ConditionSpace, file: str, result: Result) -> bool:
+def satisfied(engine: QueryEngine, file: str, result: Result) -> bool:
     """The result's example configuration (as ``name:=value`` words) satisfies its condition."""
     values: dict[Input, str | None] = {}
-    for key, value in result.to_json(space)["example"].items():  # type: ignore[attr-defined]
+    space = engine.space
+    for key, value in engine.to_json(result)["example"].items():  # type: ignore[attr-defined]
         _file, name = key.split(":")
         special = value.startswith("<")
         values[ArgInput(file, name)] = (
@@ -69,10 +69,10 @@ def test_path_predicate_on_a_conditional_attribute(robot: tuple[QueryEngine, str
     found = by_name(engine.run("nodes[self.package == 'kobuki_node']"))
     assert list(found) == ["/base"]
     assert found["/base"].condition == slot(engine, file, "robot", "kobuki")
-    assert satisfied(engine.space, file, found["/base"])
+    assert satisfied(engine, file, found["/base"])
     husky = by_name(engine.run("nodes[self.package.startswith('husky')]"))["/base"]
     assert husky.condition == slot(engine, file, "robot", "husky")
-    assert satisfied(engine.space, file, husky)
+    assert satisfied(engine, file, husky)
 
 
 def test_presence_is_part_of_the_condition(robot: tuple[QueryEngine, str]) -> None:
@@ -85,7 +85,7 @@ def test_presence_is_part_of_the_condition(robot: tuple[QueryEngine, str]) -> No
         "/teleop": declared["teleop"],
     }
     assert found["/gazebo"].condition != engine.space.true
-    assert all(satisfied(engine.space, file, r) for r in found.values())
+    assert all(satisfied(engine, file, r) for r in found.values())
 
 
 def test_flwor_form_and_chained_predicates(robot: tuple[QueryEngine, str]) -> None:

@@ -122,6 +122,10 @@ def known(value: object) -> object:
 
 
 def _known(choice: Choice[object]) -> Choice[object]:
+    """``choice`` itself when all its values are known (the Choice shared by the elements of
+    one scope stays shared: queries remember results per Choice)."""
+    if all(type(value) is str or value is None for value in choice.values()):
+        return choice
     return choice.map(known)
 
 

@@ -69,17 +69,6 @@ class Result:
     element: Queryable
     condition: BDD
 
-    def to_json(self, space: ConditionSpace) -> dict[str, object]:
-        location = self.element.location
-        return {
-            "kind": str(self.element.kind),
-            "name": self.element.name,
-            "launch_file": self.element.file,
-            "condition": space.describe(self.condition),
-            "example": simplest_trigger(space, self.condition),
-            **({"file": location.file, "line": location.line} if location is not None else {}),
-        }
-
 
 class QueryEngine:
     """The elements of an analysis' entry files, listed once, and queries over them."""
@@ -92,6 +81,7 @@ class QueryEngine:
         ]
         self._elements: dict[str, list[Queryable]] = {}
         self._satisfiable: dict[BDD, bool] = {}
+        self._examples: dict[BDD, dict[str, str]] = {}
 
     def elements(self, collection: Collection) -> list[Queryable]:
         found = self._elements.get(collection.name)
@@ -129,9 +119,10 @@ class QueryEngine:
         restriction = self.restriction(args or {})
         evaluation = _Evaluation(self.space, query)
         results = []
-        false = self.space.false
+        false, true = self.space.false, self.space.true
         for element in self.elements(collection):
-            condition = element.presence & restriction[element.file]
+            restricted = restriction[element.file]
+            condition = element.presence if restricted is true else element.presence & restricted
             for predicate in query.predicates:
                 if condition == false:
                     break
@@ -139,6 +130,22 @@ class QueryEngine:
             if condition != false and self.satisfiable(condition):
                 results.append(Result(element, condition))
         return results
+
+    def to_json(self, result: Result) -> dict[str, object]:
+        """``result`` as ``--json`` shows it (docs/schema/query.schema.json)."""
+        element, condition = result.element, result.condition
+        example = self._examples.get(condition)
+        if example is None:
+            example = self._examples[condition] = simplest_trigger(self.space, condition)
+        location = element.location
+        return {
+            "kind": str(element.kind),
+            "name": element.name,
+            "launch_file": element.file,
+            "condition": self.space.describe(condition),
+            "example": dict(example),
+            **({"file": location.file, "line": location.line} if location is not None else {}),
+        }
 
     def satisfiable(self, condition: BDD) -> bool:
         known = self._satisfiable.get(condition)
@@ -189,7 +196,7 @@ class _Evaluation:
         self.space = space
         self.branches = 0
         self._reads = {id(p): _read_attributes(p) for p in query.predicates}
-        self._known: dict[tuple[int, tuple[object, ...]], BDD] = {}
+        self._known: dict[tuple[object, ...], BDD] = {}
 
     def truth(self, predicate: Predicate, element: Queryable) -> BDD:
         """Where ``predicate`` holds for ``element`` (its presence aside)."""
@@ -201,26 +208,28 @@ class _Evaluation:
             known = self._known[key] = self._truth(predicate, element)
         return known
 
-    def _key(
-        self, predicate: Predicate, element: Queryable
-    ) -> tuple[int, tuple[object, ...]] | None:
-        """The values the predicate reads, when each is one unconditional hashable value."""
+    def _key(self, predicate: Predicate, element: Queryable) -> tuple[object, ...] | None:
+        """What the predicate reads: an unconditional hashable value as itself (with its
+        type: ``1`` and ``True`` render differently), any other value as the identity of its
+        Choice (elements share the Choices of their scope, and outlive the query)."""
         reads = self._reads[id(predicate)]
         if reads is None:
             return None
-        values: list[object] = []
+        key: list[object] = [id(predicate)]
+        true = self.space.true
         for name in reads:
-            branches = element.attribute(name).branches
-            if len(branches) != 1 or branches[0][0] != self.space.true:
-                return None
-            value = branches[0][1]
-            values.append((type(value), value))
-        key = (id(predicate), tuple(values))
+            choice = element.attribute(name)
+            branches = choice.branches
+            if len(branches) == 1 and branches[0][0] == true:
+                value = branches[0][1]
+                key.append((type(value), value))
+            else:
+                key.append(id(choice))
         try:
-            hash(key)
+            hash(tuple(key))
         except TypeError:
             return None
-        return key
+        return tuple(key)
 
     def _truth(self, predicate: Predicate, element: Queryable) -> BDD:
         value = _Interpreter(self, predicate.variable, element).truth(predicate.body)
@@ -242,7 +251,7 @@ class _Interpreter:
         self.element = element
 
     def const(self, value: object) -> Choice[object]:
-        return Choice.of([(self.space.true, value)], self.space.false)
+        return Choice(((self.space.true, value),), self.space.false)
 
     def apply(
         self, operands: Sequence[Choice[object]], function: Callable[..., object]
@@ -255,18 +264,15 @@ class _Interpreter:
                 return self.const(function())
             except _ERRORS:
                 return self.const(FAILED)
+        true = self.space.true
+        if all(len(o.branches) == 1 and o.branches[0][0] == true for o in operands):
+            constant = self.call_on([o.branches[0][1] for o in operands], function)
+            return constant if isinstance(constant, Choice) else self.const(constant)
         out: list[tuple[BDD, object]] = []
         joint = combine(list(operands), tuple)
         self.evaluation.spend(len(joint))
         for condition, leaves in joint:
-            result: object
-            if any(leaf is FAILED for leaf in leaves):
-                result = FAILED
-            else:
-                try:
-                    result = function(*leaves)
-                except _ERRORS:
-                    result = FAILED
+            result = self.call_on(leaves, function)
             if isinstance(result, Choice):
                 for inner, value in result:
                     both = condition & inner
@@ -275,6 +281,16 @@ class _Interpreter:
             else:
                 out.append((condition, result))
         return Choice.of(out, false)
+
+    @staticmethod
+    def call_on(leaves: Sequence[object], function: Callable[..., object]) -> object:
+        """``function(*leaves)``, or FAILED where a leaf failed or Python would raise."""
+        if any(leaf is FAILED for leaf in leaves):
+            return FAILED
+        try:
+            return function(*leaves)
+        except _ERRORS:
+            return FAILED
 
     def truth(self, node: ast.expr) -> Choice[object]:
         """``node``'s value as True/False (a set is true where it is not empty, a failed
