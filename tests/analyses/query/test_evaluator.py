@@ -106,15 +106,20 @@ def test_len_of_a_conditional_set(robot: tuple[QueryEngine, str]) -> None:
     assert [r.element.name for r in engine.run("topics[self.remapped_by]")] == ["/cmd"]
 
 
-def test_counts_of_an_element_set(robot: tuple[QueryEngine, str]) -> None:
+def test_subsets_of_an_element_set(robot: tuple[QueryEngine, str]) -> None:
     engine, file = robot
     space = engine.space
     a, b = slot(engine, file, "robot", "kobuki"), slot(engine, file, "sim", "true")
-    nodes = engine.run("nodes")
-    counts = dict(
-        (n, c) for c, n in ElementSet(((a, nodes[0].element), (b, nodes[1].element))).counts(space)
-    )
-    assert counts == {0: ~a & ~b, 1: (a & ~b) | (~a & b), 2: a & b}
+    first, second = (r.element for r in engine.run("nodes")[:2])
+    subsets = ElementSet(((a, first), (b, second))).subsets(space, 4)
+    assert subsets is not None
+    assert {members: c for c, members in subsets} == {
+        (first, second): a & b,
+        (first,): a & ~b,
+        (second,): ~a & b,
+        (): ~a & ~b,
+    }
+    assert ElementSet(((a, first), (b, second))).subsets(space, 3) is None
 
 
 def test_params_args_and_launch_files(robot: tuple[QueryEngine, str]) -> None:
@@ -153,6 +158,8 @@ def test_arg_values_restrict_the_question(robot: tuple[QueryEngine, str]) -> Non
         ("nodes[self.name * 10 ** 9]", "operator Pow"),
         ("nodes[len(self.name, key=1)]", "positional arguments only"),
         ("nodes[os]", "unknown name 'os'"),
+        ("nodes[self]", "read attributes of the element"),
+        ("nodes[(1).real]", "attributes are read from self only"),
         ("nodes[self.pkg == 'x']", "no attribute 'pkg'"),
         ("robots[True]", "unknown collection 'robots'"),
         ("nodes[", "invalid Python expression"),

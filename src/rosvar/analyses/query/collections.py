@@ -6,8 +6,8 @@ model holds it, a presence condition and conditional attribute values
 (``nodes``, ``topics``...) with a provider that lists its elements in one entry file's model;
 another analysis (the communication graph) registers a better provider under the same name and
 queries pick it up unchanged. A set-valued attribute (a topic's publishers) is a
-:class:`ElementSet`: elements with the conditions under which they belong, so ``len()`` of it
-is a conditional count, not one number.
+:class:`ElementSet`: elements with the conditions under which they belong; a query sees, per
+condition, the tuple of members present, so ``len()`` of it is a conditional count.
 """
 
 from __future__ import annotations
@@ -80,16 +80,23 @@ class ElementSet:
     def __iter__(self) -> Iterator[tuple[BDD, Queryable]]:
         return iter(self.members)
 
-    def counts(self, space: ConditionSpace) -> Choice[int]:
-        """How many members there are, per condition (a member counted where it belongs)."""
-        exactly = [space.true]
-        for condition, _member in self.members:
-            grown = [space.false] * (len(exactly) + 1)
-            for count, holds in enumerate(exactly):
-                grown[count] |= holds & ~condition
-                grown[count + 1] |= holds & condition
-            exactly = grown
-        return Choice.of([(holds, count) for count, holds in enumerate(exactly)], space.false)
+    def subsets(self, space: ConditionSpace, limit: int) -> Choice[tuple[Queryable, ...]] | None:
+        """The members present, per condition (``len()`` of them is the conditional count);
+        None when more than ``limit`` distinct subsets are possible."""
+        partial: list[tuple[BDD, tuple[Queryable, ...]]] = [(space.true, ())]
+        for condition, member in self.members:
+            grown = []
+            for holds, present in partial:
+                for both, chosen in (
+                    (holds & condition, (*present, member)),
+                    (holds & ~condition, present),
+                ):
+                    if both != space.false:
+                        grown.append((both, chosen))
+            if len(grown) > limit:
+                return None
+            partial = grown
+        return Choice.of(partial, space.false)
 
 
 Provider = Callable[[Analysis, LaunchModel], Iterable[Queryable]]

@@ -1,15 +1,18 @@
 """Queries evaluated over the variational model: each result with the condition it holds under.
 
-A predicate is interpreted over conditional values: every sub-expression evaluates to a
-:class:`~rosvar.logic.choice.Choice`, operators apply branch by branch to the jointly possible
-combinations of their operands' branches, and a predicate holds where its value is true. So
-``self.package == 'kobuki_node'`` on a node whose package depends on an arg holds exactly for
-the values of the arg that give that package, and ``len(self.publishers) > 1`` holds where
-more than one of the conditional publishers is present.
+A predicate reads attributes of the element, each a :class:`~rosvar.logic.choice.Choice` of
+alternatives. It is evaluated once per jointly possible combination of the alternatives of the
+attributes it reads, as plain Python values, and holds under the disjunction of the conditions
+of the combinations where it is true. So ``self.package == 'kobuki_node'`` on a node whose
+package depends on an arg holds exactly for the values of the arg that give that package; a
+set-valued attribute (a topic's publishers) is, per condition, the tuple of members present,
+so ``len(self.publishers) > 1`` holds where more than one publisher is present.
 
-A branch that Python would fail on (``None.startswith``, ``'a' < 1``) or whose text analysis
-cannot know (an ``<other>`` arg value, None) does not satisfy the predicate; ``and``, ``or``
-and ``not`` give True or False. Resource guards refuse (:class:`QueryError`), never truncate.
+The predicate is compiled once into closures over the whitelisted syntax (nothing is passed to
+``eval``). A combination where Python would raise (``None.startswith``, ``'a' < 1``) does not
+satisfy the predicate; text analysis cannot know (an ``<other>`` arg value) is None. Resource
+guards refuse (:class:`QueryError`), never truncate. Elements that read the same values share
+the answer: it is computed once per query.
 """
 
 from __future__ import annotations
@@ -25,24 +28,18 @@ from rosvar.analyses.query.collections import COLLECTIONS, Collection, ElementSe
 from rosvar.analyses.query.parser import CONSTANTS, Predicate, Query, QueryError, parse
 from rosvar.interpreter.safe_eval.limits import MAX_SEQUENCE
 from rosvar.interpreter.safe_eval.names import _COMPARE_OPS
-from rosvar.interpreter.workspace_models import Analysis
+from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER
 
 MAX_BRANCHES: Final = 1_000_000
-"""Operand combinations one query may evaluate (over all elements)."""
-
-
-class _Failed:
-    """The value of a branch where Python would raise: never true, poisons what uses it."""
-
-    def __repr__(self) -> str:
-        return "<failed>"
-
-
-FAILED: Final = _Failed()
+"""Combinations of attribute values one query may evaluate (over all elements)."""
+MAX_SUBSETS: Final = 4096
+"""Distinct member subsets of one set-valued attribute a query may consider."""
+Compiled = Callable[[Mapping[str, object]], object]
+"""A predicate (or part of it) over the values of the attributes it reads."""
 _ERRORS: Final = (TypeError, ValueError, AttributeError, IndexError, KeyError, ArithmeticError)
 _BINARY: Final[Mapping[type[ast.operator], Callable[[Any, Any], Any]]] = {
     ast.Add: operator.add,
@@ -82,6 +79,7 @@ class QueryEngine:
         self._elements: dict[str, list[Queryable]] = {}
         self._satisfiable: dict[BDD, bool] = {}
         self._examples: dict[BDD, dict[str, str]] = {}
+        self._expanded: dict[int, Choice[object]] = {}  # by id of a Choice of the elements
 
     def elements(self, collection: Collection) -> list[Queryable]:
         found = self._elements.get(collection.name)
@@ -114,21 +112,25 @@ class QueryEngine:
         if collection is None:
             known = ", ".join(sorted(COLLECTIONS))
             raise QueryError(f"unknown collection '{query.collection}' (collections: {known})")
-        for predicate in query.predicates:
-            _check_attributes(predicate, collection)
         restriction = self.restriction(args or {})
-        evaluation = _Evaluation(self.space, query)
+        evaluation = _Evaluation(self.space, query, collection, self._expanded)
         results = []
         false, true = self.space.false, self.space.true
-        for element in self.elements(collection):
-            restricted = restriction[element.file]
-            condition = element.presence if restricted is true else element.presence & restricted
-            for predicate in query.predicates:
-                if condition == false:
-                    break
-                condition &= evaluation.truth(predicate, element)
-            if condition != false and self.satisfiable(condition):
-                results.append(Result(element, condition))
+        with collector_paused():  # the model's heap is large and forms no cycles
+            for element in self.elements(collection):
+                restricted = restriction[element.file]
+                condition = element.presence
+                if restricted is not true:
+                    condition &= restricted
+                for predicate in query.predicates:
+                    holds = evaluation.truth(predicate, element)
+                    if holds is false:
+                        break
+                    if holds is not true:
+                        condition &= holds
+                else:
+                    if condition != false and self.satisfiable(condition):
+                        results.append(Result(element, condition))
         return results
 
     def to_json(self, result: Result) -> dict[str, object]:
@@ -154,86 +156,96 @@ class QueryEngine:
         return known
 
 
-def _check_attributes(predicate: Predicate, collection: Collection) -> None:
-    """Attributes read from the element exist in its collection (before any evaluation)."""
-    for node in ast.walk(predicate.body):
-        if (
-            isinstance(node, ast.Attribute)
-            and isinstance(node.value, ast.Name)
-            and node.value.id == predicate.variable
-            and node.attr not in collection.attributes
-        ):
-            attributes = ", ".join(collection.attributes)
-            raise QueryError(
-                f"{collection.name} have no attribute '{node.attr}' (they have: {attributes})",
-                predicate.offset + node.col_offset,
-            )
-
-
-def _read_attributes(predicate: Predicate) -> tuple[str, ...] | None:
-    """The attributes the predicate reads, when that is all it uses the element for."""
-    read: list[str] = []
-    attribute_bases = set()
-    for node in ast.walk(predicate.body):
-        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
-            attribute_bases.add(id(node.value))
-            read.append(node.attr)
-    for node in ast.walk(predicate.body):
-        if (
-            isinstance(node, ast.Name)
-            and node.id == predicate.variable
-            and id(node) not in attribute_bases
-        ):
-            return None
-    return tuple(dict.fromkeys(read))
-
-
 class _Evaluation:
-    """One query's evaluation state: its work budget and the truth of predicates per
-    combination of constant attribute values (most elements share a few)."""
+    """One query's compiled predicates, work budget and answers per combination of values."""
 
-    def __init__(self, space: ConditionSpace, query: Query) -> None:
+    def __init__(
+        self,
+        space: ConditionSpace,
+        query: Query,
+        collection: Collection,
+        expanded: dict[int, Choice[object]],
+    ) -> None:
         self.space = space
+        self._expanded = expanded
         self.branches = 0
-        self._reads = {id(p): _read_attributes(p) for p in query.predicates}
+        self._compiled = {
+            id(p): (_read_attributes(p, collection), _compile(p.body)) for p in query.predicates
+        }
         self._known: dict[tuple[object, ...], BDD] = {}
 
     def truth(self, predicate: Predicate, element: Queryable) -> BDD:
         """Where ``predicate`` holds for ``element`` (its presence aside)."""
-        key = self._key(predicate, element)
-        if key is None:
-            return self._truth(predicate, element)
-        known = self._known.get(key)
-        if known is None:
-            known = self._known[key] = self._truth(predicate, element)
-        return known
-
-    def _key(self, predicate: Predicate, element: Queryable) -> tuple[object, ...] | None:
-        """What the predicate reads: an unconditional hashable value as itself (with its
-        type: ``1`` and ``True`` render differently), any other value as the identity of its
-        Choice (elements share the Choices of their scope, and outlive the query)."""
-        reads = self._reads[id(predicate)]
-        if reads is None:
-            return None
-        key: list[object] = [id(predicate)]
+        reads, function = self._compiled[id(predicate)]
+        choices = [element.attribute(name) for name in reads]
         true = self.space.true
-        for name in reads:
-            choice = element.attribute(name)
+        key: list[object] = [id(predicate)]
+        constant = True
+        for choice in choices:
             branches = choice.branches
-            if len(branches) == 1 and branches[0][0] == true:
+            if len(branches) == 1 and branches[0][0] is true:  # a constant: shares the true
                 value = branches[0][1]
                 key.append((type(value), value))
+                constant = constant and not isinstance(value, ElementSet)
             else:
-                key.append(id(choice))
+                key.append(id(choice))  # Choices are shared by the elements of a scope
+                constant = False
+        found = tuple(key)
         try:
-            hash(tuple(key))
-        except TypeError:
-            return None
-        return tuple(key)
+            known = self._known.get(found)
+        except TypeError:  # an unhashable value (a list param): not remembered
+            return self._truth(reads, function, choices, constant)
+        if known is None:
+            known = self._known[found] = self._truth(reads, function, choices, constant)
+        return known
 
-    def _truth(self, predicate: Predicate, element: Queryable) -> BDD:
-        value = _Interpreter(self, predicate.variable, element).truth(predicate.body)
-        return value.where(lambda leaf: leaf is True)
+    def _truth(
+        self,
+        reads: Sequence[str],
+        function: Compiled,
+        choices: list[Choice[object]],
+        constant: bool,
+    ) -> BDD:
+        space = self.space
+        if constant:
+            self.spend(1)
+            holds = _holds(
+                function, {n: c.branches[0][1] for n, c in zip(reads, choices, strict=True)}
+            )
+            return space.true if holds else space.false
+        expanded = [self.expanded(choice) for choice in choices]
+        combinations = combine(expanded, tuple) if expanded else Choice.const(space, ())
+        self.spend(len(combinations))
+        result = space.false
+        for condition, values in combinations:
+            if _holds(function, dict(zip(reads, values, strict=True))):
+                result |= condition
+        return result
+
+    def expanded(self, choice: Choice[object]) -> Choice[object]:
+        """``choice`` with each set of elements replaced by the tuples of members present
+        (remembered by the engine: elements and their values outlive a query)."""
+        if not any(isinstance(value, ElementSet) for value in choice.values()):
+            return choice
+        known = self._expanded.get(id(choice))
+        if known is None:
+            known = self._expanded[id(choice)] = self._expand(choice)
+        return known
+
+    def _expand(self, choice: Choice[object]) -> Choice[object]:
+        branches: list[tuple[BDD, object]] = []
+        for condition, value in choice:
+            if not isinstance(value, ElementSet):
+                branches.append((condition, value))
+                continue
+            subsets = value.subsets(self.space, MAX_SUBSETS)
+            if subsets is None:
+                raise QueryError(f"a set has more than {MAX_SUBSETS:,} possible member subsets")
+            for inner, members in subsets:
+                both = condition & inner
+                if both != self.space.false:
+                    branches.append((both, members))
+        return Choice.of(branches, self.space.false)
 
     def spend(self, branches: int) -> None:
         self.branches += branches
@@ -241,166 +253,125 @@ class _Evaluation:
             raise QueryError(f"the query evaluates more than {MAX_BRANCHES:,} value combinations")
 
 
-class _Interpreter:
-    """Evaluates one predicate for one element, over conditional values."""
-
-    def __init__(self, evaluation: _Evaluation, variable: str, element: Queryable) -> None:
-        self.evaluation = evaluation
-        self.space = evaluation.space
-        self.variable = variable
-        self.element = element
-
-    def const(self, value: object) -> Choice[object]:
-        return Choice(((self.space.true, value),), self.space.false)
-
-    def apply(
-        self, operands: Sequence[Choice[object]], function: Callable[..., object]
-    ) -> Choice[object]:
-        """``function`` on every jointly possible combination of the operands' branches; it
-        may return a Choice (a value that itself depends on the configuration)."""
-        false = self.space.false
-        if not operands:
-            try:
-                return self.const(function())
-            except _ERRORS:
-                return self.const(FAILED)
-        true = self.space.true
-        if all(len(o.branches) == 1 and o.branches[0][0] == true for o in operands):
-            constant = self.call_on([o.branches[0][1] for o in operands], function)
-            return constant if isinstance(constant, Choice) else self.const(constant)
-        out: list[tuple[BDD, object]] = []
-        joint = combine(list(operands), tuple)
-        self.evaluation.spend(len(joint))
-        for condition, leaves in joint:
-            result = self.call_on(leaves, function)
-            if isinstance(result, Choice):
-                for inner, value in result:
-                    both = condition & inner
-                    if both != false:
-                        out.append((both, value))
-            else:
-                out.append((condition, result))
-        return Choice.of(out, false)
-
-    @staticmethod
-    def call_on(leaves: Sequence[object], function: Callable[..., object]) -> object:
-        """``function(*leaves)``, or FAILED where a leaf failed or Python would raise."""
-        if any(leaf is FAILED for leaf in leaves):
-            return FAILED
-        try:
-            return function(*leaves)
-        except _ERRORS:
-            return FAILED
-
-    def truth(self, node: ast.expr) -> Choice[object]:
-        """``node``'s value as True/False (a set is true where it is not empty, a failed
-        branch false)."""
-        return self.apply([self.value(node).map(_defined)], self._bool)
-
-    def _bool(self, leaf: object) -> object:
-        if isinstance(leaf, ElementSet):
-            return leaf.counts(self.space).map(bool)
-        return bool(leaf)
-
-    def value(self, node: ast.expr) -> Choice[object]:
-        if isinstance(node, ast.Constant):
-            return self.const(node.value)
-        if isinstance(node, ast.Name):
-            return self.const(self.element if node.id == self.variable else CONSTANTS[node.id])
-        if isinstance(node, ast.Attribute):
-            return self.apply([self.value(node.value)], lambda leaf: _attribute(leaf, node.attr))
-        if isinstance(node, ast.Call):
-            return self.call(node)
-        if isinstance(node, ast.BoolOp):
-            conjunction = isinstance(node.op, ast.And)
-            operands = [self.truth(v) for v in node.values]
-            return self.apply(operands, lambda *v: all(v) if conjunction else any(v))
-        if isinstance(node, ast.UnaryOp):
-            if isinstance(node.op, ast.Not):
-                return self.apply([self.truth(node.operand)], operator.not_)
-            sign = operator.neg if isinstance(node.op, ast.USub) else operator.pos
-            return self.apply([self.value(node.operand)], lambda v: sign(_number(v)))
-        if isinstance(node, ast.BinOp):
-            function = _BINARY[type(node.op)]
-            return self.apply(
-                [self.value(node.left), self.value(node.right)],
-                lambda a, b: _bounded(function, a, b),
-            )
-        if isinstance(node, ast.Compare):
-            return self.compare(node)
-        if isinstance(node, ast.IfExp):
-            return self.apply(
-                [self.truth(node.test), self.value(node.body), self.value(node.orelse)],
-                lambda test, body, orelse: body if test else orelse,
-            )
-        if isinstance(node, (ast.Tuple, ast.List)):
-            build = tuple if isinstance(node, ast.Tuple) else list
-            return self.apply([self.value(e) for e in node.elts], lambda *v: build(v))
-        if isinstance(node, ast.Subscript):
-            return self.subscript(node)
-        raise QueryError(f"{type(node).__name__} expressions are not allowed")  # checked before
-
-    def compare(self, node: ast.Compare) -> Choice[object]:
-        operands = [self.value(o) for o in (node.left, *node.comparators)]
-        tests = [_COMPARE_OPS[type(op)] for op in node.ops]
-
-        def chained(*values: object) -> bool:
-            return all(bool(test(values[i], values[i + 1])) for i, test in enumerate(tests))
-
-        return self.apply(operands, chained)
-
-    def subscript(self, node: ast.Subscript) -> Choice[object]:
-        index = node.slice
-        if isinstance(index, ast.Slice):
-            parts = [
-                self.const(None) if p is None else self.value(p)
-                for p in (index.lower, index.upper, index.step)
-            ]
-            return self.apply(
-                [self.value(node.value), *parts], lambda v, *p: _sequence(v)[slice(*p)]
-            )
-        return self.apply([self.value(node.value), self.value(index)], lambda v, i: _sequence(v)[i])
-
-    def call(self, node: ast.Call) -> Choice[object]:
-        arguments = [self.value(a) for a in node.args]
-        function = node.func
-        if isinstance(function, ast.Attribute):
-            method = function.attr
-            return self.apply(
-                [self.value(function.value), *arguments],
-                lambda receiver, *a: getattr(str, method)(_text(receiver), *a),
-            )
-        assert isinstance(function, ast.Name)  # the parser allows nothing else
-        name = function.id
-        if name == "len":
-            return self.apply(arguments, self._len)
-        if name == "bool":
-            return self.apply(arguments, self._bool)
-        plain = _FUNCTIONS[name]
-        return self.apply(arguments, lambda *a: plain(*(_plain(v) for v in a)))
-
-    def _len(self, leaf: object) -> object:
-        if isinstance(leaf, ElementSet):
-            return leaf.counts(self.space)
-        return len(_sequence(leaf))
+def _holds(function: Compiled, values: Mapping[str, object]) -> bool:
+    try:
+        return bool(function(values))
+    except _ERRORS:
+        return False
 
 
-def _defined(leaf: object) -> object:
-    return False if leaf is FAILED else leaf
+def _read_attributes(predicate: Predicate, collection: Collection) -> tuple[str, ...]:
+    """The attributes the predicate reads, checked to exist before any evaluation."""
+    read: list[str] = []
+    for node in ast.walk(predicate.body):
+        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
+            if node.attr not in collection.attributes:
+                attributes = ", ".join(collection.attributes)
+                raise QueryError(
+                    f"{collection.name} have no attribute '{node.attr}' (they have: {attributes})",
+                    predicate.offset + node.col_offset,
+                )
+            read.append(node.attr)
+    return tuple(dict.fromkeys(read))
 
 
-def _attribute(leaf: object, name: str) -> object:
-    attribute = getattr(leaf, "attribute", None)
-    if isinstance(leaf, (str, int, float, list, tuple, dict, ElementSet)) or attribute is None:
-        raise AttributeError(name)
-    result: object = attribute(name)
-    return result
+def _compile(node: ast.expr) -> Compiled:
+    """Closures computing ``node`` from the attribute values (the parser checked it)."""
+    if isinstance(node, ast.Constant):
+        constant: object = node.value
+        return lambda values: constant
+    if isinstance(node, ast.Name):
+        named = CONSTANTS[node.id]
+        return lambda values: named
+    if isinstance(node, ast.Attribute):
+        attribute = node.attr
+        return lambda values: values[attribute]
+    if isinstance(node, ast.Call):
+        return _compile_call(node)
+    if isinstance(node, ast.BoolOp):
+        parts = [_compile(v) for v in node.values]
+        if isinstance(node.op, ast.And):
+            return lambda values: all(part(values) for part in parts)
+        return lambda values: any(part(values) for part in parts)
+    if isinstance(node, ast.UnaryOp):
+        operand = _compile(node.operand)
+        if isinstance(node.op, ast.Not):
+            return lambda values: not operand(values)
+        sign = operator.neg if isinstance(node.op, ast.USub) else operator.pos
+        return lambda values: sign(_number(operand(values)))
+    if isinstance(node, ast.BinOp):
+        function = _BINARY[type(node.op)]
+        left, right = _compile(node.left), _compile(node.right)
+        return lambda values: _bounded(function, left(values), right(values))
+    if isinstance(node, ast.Compare):
+        return _compile_compare(node)
+    if isinstance(node, ast.IfExp):
+        test, body, orelse = _compile(node.test), _compile(node.body), _compile(node.orelse)
+        return lambda values: body(values) if test(values) else orelse(values)
+    if isinstance(node, (ast.Tuple, ast.List)):
+        items = [_compile(e) for e in node.elts]
+        build = tuple if isinstance(node, ast.Tuple) else list
+        return lambda values: build(item(values) for item in items)
+    if isinstance(node, ast.Subscript):
+        return _compile_subscript(node)
+    raise QueryError(f"{type(node).__name__} expressions are not allowed")  # checked before
 
 
-def _plain(value: object) -> object:
-    if isinstance(value, ElementSet) or hasattr(value, "attribute"):
-        raise TypeError("an element is not a value")
-    return value
+def _compile_compare(node: ast.Compare) -> Compiled:
+    first = _compile(node.left)
+    rest = [
+        (_COMPARE_OPS[type(op)], _compile(c))
+        for op, c in zip(node.ops, node.comparators, strict=True)
+    ]
+
+    def compare(values: Mapping[str, object]) -> bool:
+        left = first(values)
+        for test, operand in rest:
+            right = operand(values)
+            if not test(left, right):
+                return False
+            left = right
+        return True
+
+    return compare
+
+
+def _compile_subscript(node: ast.Subscript) -> Compiled:
+    base = _compile(node.value)
+    index = node.slice
+    if isinstance(index, ast.Slice):
+        parts = [
+            _compile(p) if p is not None else None for p in (index.lower, index.upper, index.step)
+        ]
+
+        def sliced(values: Mapping[str, object]) -> object:
+            bounds: list[Any] = [None if p is None else p(values) for p in parts]
+            return operator.getitem(_sequence(base(values)), slice(*bounds))
+
+        return sliced
+    key = _compile(index)
+
+    def item(values: Mapping[str, object]) -> object:
+        sequence: Any = _sequence(base(values))
+        return sequence[key(values)]
+
+    return item
+
+
+def _compile_call(node: ast.Call) -> Compiled:
+    arguments = [_compile(a) for a in node.args]
+    function = node.func
+    if isinstance(function, ast.Attribute):
+        receiver = _compile(function.value)
+        method = getattr(str, function.attr)
+        return lambda values: method(_text(receiver(values)), *(a(values) for a in arguments))
+    assert isinstance(function, ast.Name)  # the parser allows nothing else
+    if function.id == "len":
+        return lambda values: len(_sequence(*(a(values) for a in arguments)))
+    if function.id == "bool":
+        return lambda values: bool(*(a(values) for a in arguments))
+    plain = _FUNCTIONS[function.id]
+    return lambda values: plain(*(a(values) for a in arguments))
 
 
 def _number(value: object) -> float | int:
@@ -424,7 +395,6 @@ def _sequence(value: object) -> str | list[object] | tuple[object, ...] | dict[o
 def _bounded(function: Callable[[Any, Any], Any], left: object, right: object) -> object:
     """Arithmetic on plain values; sequences built by ``+`` and ``*`` stay below the bound,
     and ``%`` is arithmetic only (string formatting could render anything)."""
-    left, right = _plain(left), _plain(right)
     if function is operator.mod and not isinstance(left, (int, float)):
         raise TypeError("% takes numbers")
     if function in (operator.add, operator.mul):

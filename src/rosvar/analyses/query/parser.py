@@ -134,11 +134,14 @@ class _Checker:
             if not isinstance(node.value, (str, int, float, bool, type(None))):
                 raise self.refuse("only str, number, bool and None literals", node)
         elif isinstance(node, ast.Name):
-            if node.id not in (self.variable, *CONSTANTS):
-                allowed = ", ".join([self.variable, *sorted(CONSTANTS)])
+            if node.id == self.variable:
+                raise self.refuse(f"read attributes of the element: {node.id}.ATTRIBUTE", node)
+            if node.id not in CONSTANTS:
+                allowed = ", ".join([f"{self.variable}.ATTRIBUTE", *sorted(CONSTANTS)])
                 raise self.refuse(f"unknown name '{node.id}' (names: {allowed})", node)
         elif isinstance(node, ast.Attribute):
-            self.visit(node.value)
+            if not (isinstance(node.value, ast.Name) and node.value.id == self.variable):
+                raise self.refuse(f"attributes are read from {self.variable} only", node)
         elif isinstance(node, ast.Call):
             self.visit_call(node)
         elif isinstance(node, ast.BoolOp):
