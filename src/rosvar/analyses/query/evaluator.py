@@ -38,6 +38,8 @@ MAX_BRANCHES: Final = 1_000_000
 """Combinations of attribute values one query may evaluate (over all elements)."""
 MAX_SUBSETS: Final = 4096
 """Distinct member subsets of one set-valued attribute a query may consider."""
+_Group = tuple[tuple[Choice[object], ...], list[tuple[int, Queryable]]]
+"""The values of the attributes a query reads, and the elements (with their index) having them."""
 Compiled = Callable[[Mapping[str, object]], object]
 """A predicate (or part of it) over the values of the attributes it reads."""
 _ERRORS: Final = (TypeError, ValueError, AttributeError, IndexError, KeyError, ArithmeticError)
@@ -80,6 +82,7 @@ class QueryEngine:
         self._satisfiable: dict[BDD, bool] = {}
         self._examples: dict[BDD, dict[str, str]] = {}
         self._expanded: dict[int, Choice[object]] = {}  # by id of a Choice of the elements
+        self._groups: dict[tuple[str, tuple[str, ...]], list[_Group]] = {}
 
     def elements(self, collection: Collection) -> list[Queryable]:
         found = self._elements.get(collection.name)
@@ -114,24 +117,58 @@ class QueryEngine:
             raise QueryError(f"unknown collection '{query.collection}' (collections: {known})")
         restriction = self.restriction(args or {})
         evaluation = _Evaluation(self.space, query, collection, self._expanded)
-        results = []
+        selected: list[tuple[int, Result]] = []
         false, true = self.space.false, self.space.true
         with collector_paused():  # the model's heap is large and forms no cycles
-            for element in self.elements(collection):
-                restricted = restriction[element.file]
-                condition = element.presence
-                if restricted is not true:
-                    condition &= restricted
-                for predicate in query.predicates:
-                    holds = evaluation.truth(predicate, element)
-                    if holds is false:
-                        break
+            for choices, members in self.groups(collection, evaluation.reads):
+                holds = evaluation.truth(choices)
+                if holds == false:
+                    continue
+                for index, element in members:
+                    condition = element.presence
+                    restricted = restriction[element.file]
+                    if restricted is not true:
+                        condition &= restricted
                     if holds is not true:
                         condition &= holds
-                else:
                     if condition != false and self.satisfiable(condition):
-                        results.append(Result(element, condition))
-        return results
+                        selected.append((index, Result(element, condition)))
+        selected.sort(key=lambda pair: pair[0])
+        return [result for _index, result in selected]
+
+    def groups(self, collection: Collection, reads: tuple[str, ...]) -> list[_Group]:
+        """The elements of ``collection`` grouped by the values of the attributes ``reads``
+        (remembered: queries reading the same attributes evaluate once per distinct values).
+
+        An unconditional hashable value is keyed by itself (with its type: ``1`` and ``True``
+        render differently), any other by the identity of its Choice: elements share the
+        Choices of their scope, and outlive the engine's queries."""
+        key = (collection.name, reads)
+        found = self._groups.get(key)
+        if found is not None:
+            return found
+        true = self.space.true
+        by_values: dict[object, _Group] = {}
+        for index, element in enumerate(self.elements(collection)):
+            choices = tuple(element.attribute(name) for name in reads)
+            parts: list[object] = []
+            for choice in choices:
+                branches = choice.branches
+                if len(branches) == 1 and branches[0][0] is true:  # constants share the true
+                    parts.append((type(branches[0][1]), branches[0][1]))
+                else:
+                    parts.append(id(choice))
+            values: object = tuple(parts)
+            try:
+                hash(values)
+            except TypeError:  # an unhashable value (a list param): a group of its own
+                values = ("element", index)
+            group = by_values.get(values)
+            if group is None:
+                group = by_values[values] = (choices, [])
+            group[1].append((index, element))
+        found = self._groups[key] = list(by_values.values())
+        return found
 
     def to_json(self, result: Result) -> dict[str, object]:
         """``result`` as ``--json`` shows it (docs/schema/query.schema.json)."""
@@ -169,35 +206,32 @@ class _Evaluation:
         self.space = space
         self._expanded = expanded
         self.branches = 0
-        self._compiled = {
-            id(p): (_read_attributes(p, collection), _compile(p.body)) for p in query.predicates
-        }
-        self._known: dict[tuple[object, ...], BDD] = {}
+        compiled = [(_read_attributes(p, collection), _compile(p.body)) for p in query.predicates]
+        self.reads = tuple(dict.fromkeys(name for reads, _f in compiled for name in reads))
+        self._predicates = [
+            (reads, tuple(self.reads.index(n) for n in reads), function)
+            for reads, function in compiled
+        ]
 
-    def truth(self, predicate: Predicate, element: Queryable) -> BDD:
-        """Where ``predicate`` holds for ``element`` (its presence aside)."""
-        reads, function = self._compiled[id(predicate)]
-        choices = [element.attribute(name) for name in reads]
-        true = self.space.true
-        key: list[object] = [id(predicate)]
-        constant = True
-        for choice in choices:
-            branches = choice.branches
-            if len(branches) == 1 and branches[0][0] is true:  # a constant: shares the true
-                value = branches[0][1]
-                key.append((type(value), value))
-                constant = constant and not isinstance(value, ElementSet)
-            else:
-                key.append(id(choice))  # Choices are shared by the elements of a scope
-                constant = False
-        found = tuple(key)
-        try:
-            known = self._known.get(found)
-        except TypeError:  # an unhashable value (a list param): not remembered
-            return self._truth(reads, function, choices, constant)
-        if known is None:
-            known = self._known[found] = self._truth(reads, function, choices, constant)
-        return known
+    def truth(self, choices: Sequence[Choice[object]]) -> BDD:
+        """Where all predicates hold for an element whose attributes ``reads`` have the
+        values ``choices`` (its presence aside)."""
+        true, false = self.space.true, self.space.false
+        holds = true
+        for reads, places, function in self._predicates:
+            mine = [choices[place] for place in places]
+            constant = all(
+                len(c.branches) == 1
+                and c.branches[0][0] is true
+                and not isinstance(c.branches[0][1], ElementSet)
+                for c in mine
+            )
+            part = self._truth(reads, function, mine, constant)
+            if part is false or part == false:
+                return false
+            if part is not true:
+                holds = part if holds is true else holds & part
+        return holds
 
     def _truth(
         self,
