@@ -159,6 +159,8 @@ def test_arg_values_restrict_the_question(robot: tuple[QueryEngine, str]) -> Non
         ("nodes[len(self.name, key=1)]", "positional arguments only"),
         ("nodes[os]", "unknown name 'os'"),
         ("nodes[self]", "read attributes of the element"),
+        ("nodes[" + "-" * 1500 + "1]", "nested more than 100 levels|cannot parse"),
+        ("nodes[" + "not " * 300 + "True]", "nested more than 100 levels"),
         ("nodes[(1).real]", "attributes are read from self only"),
         ("nodes[self.pkg == 'x']", "no attribute 'pkg'"),
         ("robots[True]", "unknown collection 'robots'"),

@@ -194,7 +194,7 @@ class QueryEngine:
 
 
 class _Evaluation:
-    """One query's compiled predicates, work budget and answers per combination of values."""
+    """One query's compiled predicates and work budget."""
 
     def __init__(
         self,
@@ -441,8 +441,3 @@ def _bounded(function: Callable[[Any, Any], Any], left: object, right: object) -
         if size > MAX_SEQUENCE:
             raise QueryError(f"the query builds a sequence longer than {MAX_SEQUENCE:,}")
     return function(left, right)
-
-
-def run_query(analysis: Analysis, text: str, args: Mapping[str, str] | None = None) -> list[Result]:
-    """The elements of every entry file of ``analysis`` that ``text`` selects."""
-    return QueryEngine(analysis).run(text, args)

@@ -36,6 +36,8 @@ BINARY_OPERATORS: Final = (ast.Add, ast.Sub, ast.Mult, ast.Div, ast.FloorDiv, as
 UNARY_OPERATORS: Final = (ast.Not, ast.USub, ast.UAdd)
 MAX_LENGTH: Final = 2000
 """Queries are typed by people: a longer text is refused rather than parsed."""
+MAX_DEPTH: Final = 100
+"""Nesting of a predicate's syntax tree: its compiled closures call each other that deep."""
 
 _FLWOR: Final = re.compile(
     r"\s*for\s+(?P<var>[A-Za-z_]\w*)\s+in\s+(?P<collection>[A-Za-z_]\w*)"
@@ -125,11 +127,19 @@ class _Checker:
     def __init__(self, variable: str, offset: int) -> None:
         self.variable = variable
         self.offset = offset
+        self.depth = 0
 
     def refuse(self, message: str, node: ast.AST) -> QueryError:
         return QueryError(message, self.offset + getattr(node, "col_offset", 0))
 
     def visit(self, node: ast.expr) -> None:
+        self.depth += 1
+        if self.depth > MAX_DEPTH:
+            raise self.refuse(f"the predicate is nested more than {MAX_DEPTH} levels deep", node)
+        self.check(node)
+        self.depth -= 1
+
+    def check(self, node: ast.expr) -> None:
         if isinstance(node, ast.Constant):
             if not isinstance(node.value, (str, int, float, bool, type(None))):
                 raise self.refuse("only str, number, bool and None literals", node)
