@@ -232,6 +232,7 @@ def _analysis(
     options: argparse.Namespace,
     env: dict[str, str] | None = None,
     paths: Sequence[str] | None = None,
+    args: Mapping[str, str] | None = None,
 ) -> Analysis | None:
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace.hints import load_hints
@@ -244,9 +245,12 @@ def _analysis(
     for diagnostic in hints.diagnostics:
         print(diagnostic, file=sys.stderr)
     env_values = {k: list(v) for k, v in hints.env.items()}
+    arg_values = {k: list(v) for k, v in hints.args.items()}
+    for name, value in (args or {}).items():  # given values split conditions, as in resolve
+        arg_values.setdefault(name, []).append(value)
     for name, value in (env or {}).items():  # given values split conditions, as in resolve
         env_values.setdefault(name, []).append(value)
-    return Analysis(workspace, hints.args, env_values, hints.executables)
+    return Analysis(workspace, arg_values, env_values, hints.executables)
 
 
 def _analysis_with_env(options: argparse.Namespace) -> tuple[Analysis, dict[str, str]] | int:
@@ -470,6 +474,10 @@ EXAMPLES = {
     ),
     "serve": "rosvar serve examples ../shared/corpus/lizi --port 8080",
     "interfaces": "rosvar interfaces ../shared/corpus/kobuki --json | jq '.interfaces[0]'",
+    "query": (
+        "rosvar query examples \"nodes[self.package == 'pkg']\" robot:=husky\n"
+        "  rosvar query examples 'for n in nodes where n.namespace == \"/\" return n' --json"
+    ),
 }
 
 
@@ -554,6 +562,65 @@ def _add_interfaces(commands: argparse._SubParsersAction[argparse.ArgumentParser
         help="also list the bundled third-party nodes no source below PATH defines",
     )
     interfaces.set_defaults(run=cmd_interfaces)
+
+
+MAPPING = r"[A-Za-z_~/][\w/~]*:="
+
+
+def cmd_query(options: argparse.Namespace) -> int:
+    import re
+
+    from rosvar.analyses.query.evaluator import QueryEngine
+    from rosvar.analyses.query.parser import QueryError
+
+    words = [*options.words, *options.mappings]
+    args = command_line_mappings([w for w in words if re.match(MAPPING, w)])
+    *paths, expression = [w for w in options.words if not re.match(MAPPING, w)] or [""]
+    if not paths:
+        print("rosvar: query needs PATH... and an expression", file=sys.stderr)
+        return EXIT_USAGE
+    analysis = _analysis(options, paths=paths, args=args)
+    if analysis is None:
+        return EXIT_INPUT
+    analysis.all_models(_progress)  # interpreted once, with the progress shown
+    engine = QueryEngine(analysis)
+    _warn_unknown_args(analysis, [m.file for m in engine.models], args)
+    try:
+        results = engine.run(expression, args)
+    except QueryError as error:
+        print(f"rosvar: {error}\n  {expression}\n  {' ' * error.col}^", file=sys.stderr)
+        return EXIT_USAGE
+    documents = [engine.to_json(result) for result in results]
+    if options.json:
+        _print_json({"query": expression, "results": documents})
+        return EXIT_OK
+    for document in documents:
+        example = document["example"]
+        given = " ".join(f"{k}:={v}" for k, v in example.items()) or "(defaults)"  # type: ignore[attr-defined]
+        print(f"{document['kind']} {document['name']}  [{document['launch_file']}]")
+        print(f"  when {document['condition']}; e.g. {given}")
+    print(f"{len(results)} result{'' if len(results) == 1 else 's'}")
+    return EXIT_OK
+
+
+def _add_query(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    query = _command(
+        commands,
+        "query",
+        "the elements a query selects, each with the condition under which it does "
+        "(docs/queries.md)",
+    )
+    query.add_argument(
+        "words",
+        nargs="+",
+        metavar="PATH... EXPR",
+        help=PATHS_HELP + "; then the query (COLLECTION[PREDICATE] or "
+        "for X in COLLECTION where PREDICATE return X); name:=value words restrict it",
+    )
+    _workspace_options(query)
+    query.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
+    query.add_argument("--json", action="store_true", help="the results as JSON")
+    query.set_defaults(run=cmd_query)
 
 
 def parser() -> argparse.ArgumentParser:
@@ -659,6 +726,7 @@ def parser() -> argparse.ArgumentParser:
     serve.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
     serve.set_defaults(run=cmd_serve)
     _add_interfaces(commands)
+    _add_query(commands)
     return top
 
 
@@ -699,7 +767,11 @@ def _main(argv: Sequence[str] | None) -> int:
     top = parser()
     options, extra = top.parse_known_args(argv)
     mappings = [word for word in extra if ":=" in word]
-    if len(mappings) != len(extra) or (mappings and options.command != "resolve"):
+    if options.command == "query":  # the expression may follow an option
+        options.words += [word for word in extra if word not in mappings]
+        extra = mappings
+    options.mappings = mappings
+    if len(mappings) != len(extra) or (mappings and options.command not in ("resolve", "query")):
         top.error(f"unrecognized arguments: {' '.join(w for w in extra if w not in mappings)}")
     if options.command == "resolve":
         # ROS habit: name:=value words may stand anywhere on the command line
