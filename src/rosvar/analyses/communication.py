@@ -17,7 +17,7 @@ must give exactly those.
 from __future__ import annotations
 
 import enum
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 
 from rosvar.diagnostics import Location
@@ -126,29 +126,36 @@ def model_edges(space: ConditionSpace, model: LaunchModel, interfaces: Interface
     return edges
 
 
-def node_edges(
-    space: ConditionSpace, file: str, node: NodeDecl, interfaces: Interfaces
-) -> list[Edge]:
-    """The edges of one ``<node>``: one per branch of its fields and per remap outcome."""
+def launched_units(
+    space: ConditionSpace, node: NodeDecl, interfaces: Interfaces
+) -> Iterator[tuple[BDD, LaunchedNode, NodeInterface, bool]]:
+    """Per branch of a ``<node>``'s fields: its condition, the node, the interface it runs
+    and whether every field is known statically (nodes without a known interface skipped)."""
     keys = ("pkg", "type", "namespace", "name", "args")
-    fields = combine([node.field(key) for key in keys], list)
-    edges = []
-    for condition, values in fields:
+    for condition, values in combine([node.field(key) for key in keys], list):
         condition &= node.condition
         if condition == space.false:
             continue
         package, type_, namespace, name, args = (_text(value) for value in values)
-        static = all(value is None or isinstance(value, str) for value in values)
-        base = LaunchedNode(package, type_, namespace, name, args, remaps=())
-        unit = base.unit()
+        launched = LaunchedNode(package, type_, namespace, name, args, remaps=())
+        unit = launched.unit()
         interface = None if unit is None else find_interface(interfaces, unit)
-        if interface is None:
-            continue
+        if interface is not None:
+            static = all(value is None or isinstance(value, str) for value in values)
+            yield condition, launched, interface, static
+
+
+def node_edges(
+    space: ConditionSpace, file: str, node: NodeDecl, interfaces: Interfaces
+) -> list[Edge]:
+    """The edges of one ``<node>``: one per branch of its fields and per remap outcome."""
+    edges = []
+    for condition, launched, interface, static in launched_units(space, node, interfaces):
         for entry in interface.entries:
             if entry.role not in CHANNEL:
                 continue
-            for when, name in _remapped(space, base, node.remaps, entry.name, condition):
-                edges.append(_edge(file, base, node, entry, name, when, static))
+            for when, name in _remapped(space, launched, node.remaps, entry.name, condition):
+                edges.append(_edge(file, launched, node, entry, name, when, static))
     return edges
 
 

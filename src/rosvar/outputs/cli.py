@@ -14,7 +14,7 @@ import gc
 import os
 import sys
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
@@ -30,6 +30,8 @@ if TYPE_CHECKING:
     from rosvar.configuration.engine import ConfigurationState, Progress
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace import Workspace
+    from rosvar.workspace.interfaces.model import Interfaces
+    from rosvar.workspace.packages import Package
 
 EXIT_OK, EXIT_FAILS, EXIT_USAGE, EXIT_INPUT, EXIT_TOO_LARGE = 0, 1, 2, 3, 4
 
@@ -172,7 +174,7 @@ def _relative(location: Location) -> Location:
 
 
 def _where(location: Location) -> str:
-    return str(_relative(location))
+    return str(location if "://" in location.file else _relative(location))
 
 
 def _warn_unknown_args(analysis: Analysis, files: Sequence[str], args: Mapping[str, str]) -> None:
@@ -468,6 +470,10 @@ EXAMPLES = {
     ),
     "serve": "rosvar serve examples ../shared/corpus/lizi --port 8080",
     "interfaces": "rosvar interfaces ../shared/corpus/kobuki --json | jq '.interfaces[0]'",
+    "check": (
+        "rosvar check ../shared/corpus/kobuki --deps ../shared/corpus/_external\n"
+        "  rosvar check examples --format sarif --fail-on warning > rosvar.sarif"
+    ),
 }
 
 
@@ -495,12 +501,24 @@ def _command(
     )
 
 
-def cmd_interfaces(options: argparse.Namespace) -> int:
+def _interfaces(packages: Iterable[Package], options: argparse.Namespace) -> Interfaces:
+    """The interfaces of ``packages``, the catalogue's when ``options.catalogue``, then
+    the hints' entries."""
     from rosvar.workspace.hints import load_hints
     from rosvar.workspace.interfaces.catalogue import load_catalogue
     from rosvar.workspace.interfaces.extraction import extract_interfaces
     from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
 
+    interfaces = extract_interfaces(packages)
+    hints = load_hints(getattr(options, "hints", None))
+    interfaces.diagnostics.extend(hints.diagnostics)
+    if getattr(options, "catalogue", True):
+        add_catalogue(interfaces, load_catalogue())
+    apply_hints(interfaces, hints.nodes)
+    return interfaces
+
+
+def cmd_interfaces(options: argparse.Namespace) -> int:
     roots = [os.path.abspath(path) for path in options.paths]
     workspace = _workspace(options.paths, options.deps)
     packages = [
@@ -508,12 +526,7 @@ def cmd_interfaces(options: argparse.Namespace) -> int:
         for package in workspace.packages.values()
         if any(os.path.commonpath([package.path, root]) in (package.path, root) for root in roots)
     ]
-    interfaces = extract_interfaces(packages)
-    hints = load_hints(options.hints)
-    interfaces.diagnostics.extend(hints.diagnostics)
-    if options.catalogue:
-        add_catalogue(interfaces, load_catalogue())
-    apply_hints(interfaces, hints.nodes)
+    interfaces = _interfaces(packages, options)
     if options.json:
         _print_json(interfaces.to_json())
         return EXIT_OK
@@ -546,6 +559,66 @@ def _add_interfaces(commands: argparse._SubParsersAction[argparse.ArgumentParser
         help="also list the bundled third-party nodes no source below PATH defines",
     )
     interfaces.set_defaults(run=cmd_interfaces)
+
+
+FAIL_LEVELS = {Severity.NOTE: 0, Severity.WARNING: 1, Severity.ERROR: 2}
+
+
+def cmd_check(options: argparse.Namespace) -> int:
+    from rosvar.analyses.checks import check_models
+    from rosvar.outputs.sarif import sarif
+
+    analysis = _analysis(options)
+    if analysis is None:
+        return EXIT_INPUT
+    interfaces = _interfaces(analysis.workspace.packages.values(), options)
+    models = analysis.all_models(_progress)
+    findings = check_models(analysis.space, models, interfaces)
+    if options.format == "sarif":
+        _print_json(sarif(findings, analysis.space))
+    elif options.format == "json":
+        _print_json({"findings": [f.to_json(analysis.space) for f in findings]})
+    else:
+        for finding in findings:
+            where, *related = finding.locations
+            document = finding.to_json(analysis.space)
+            example = ", ".join(f"{k}={v}" for k, v in document["example"].items())  # type: ignore[attr-defined]
+            print(f"{_where(where)}: {finding.severity.value}[{finding.check}]: {finding.message}")
+            when = document["condition"]
+            when = "in every configuration" if when == "true" else f"when {when}"
+            print(f"    {when}" + (f"; e.g. {example}" if example else ""))
+            for location in related:
+                print(f"    see {_where(location)}")
+        counts = {s: sum(1 for f in findings if f.severity is s) for s in Severity}
+        print(
+            f"{len(findings)} findings in {len(models)} launch files: "
+            + ", ".join(f"{counts[s]} {s.value}s" for s in Severity)
+        )
+    threshold = FAIL_LEVELS[Severity(options.fail_on)]
+    failing = any(FAIL_LEVELS[f.severity] >= threshold for f in findings)
+    return EXIT_FAILS if failing else EXIT_OK
+
+
+def _add_check(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    check = _command(
+        commands,
+        "check",
+        "problems of the communication graph and the parameters in any configuration, "
+        "each with its condition and an example (docs/checks.md)",
+    )
+    check.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
+    _deps_option(check)
+    check.add_argument("--hints", metavar="FILE", help=HINTS_HELP + "; nodes: interfaces")
+    check.add_argument(
+        "--format", choices=["text", "json", "sarif"], default="text", help="output format"
+    )
+    check.add_argument(
+        "--fail-on",
+        choices=[s.value for s in FAIL_LEVELS],
+        default=Severity.ERROR.value,
+        help="exit with 1 when a finding is at least this severe (default: error)",
+    )
+    check.set_defaults(run=cmd_check)
 
 
 def parser() -> argparse.ArgumentParser:
@@ -651,6 +724,7 @@ def parser() -> argparse.ArgumentParser:
     serve.add_argument("--hints", metavar="FILE", help=HINTS_HELP)
     serve.set_defaults(run=cmd_serve)
     _add_interfaces(commands)
+    _add_check(commands)
     return top
 
 
