@@ -14,18 +14,16 @@ from rosvar.workspace.interfaces.model import Interfaces
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
-
     from rosvar.interpreter.workspace_models import Analysis
 
+HEADER = "import rospy\nfrom std_msgs.msg import Int32, String\n"
 SOURCES = {
-    "talker.py": 'import rospy\nfrom std_msgs.msg import String\nrospy.Publisher("chatter", String)\n',
-    "listener.py": 'import rospy\nfrom std_msgs.msg import String\nrospy.Subscriber("chatter", String, None)\n',
-    "counter.py": 'import rospy\nfrom std_msgs.msg import Int32\nrospy.Publisher("/chatter", Int32)\n',
-    "reader.py": (
-        "import rospy\nfrom std_msgs.msg import String\n"
-        'rospy.get_param("~rate")\nrospy.get_param("~gain", 1.0)\n'
-        'rospy.Subscriber("~input", String, None)\n'
-    ),
+    "talker.py": HEADER + 'rospy.Publisher("chatter", String)\n',
+    "listener.py": HEADER + 'rospy.Subscriber("chatter", String, None)\n',
+    "counter.py": HEADER + 'rospy.Publisher("/chatter", Int32)\n',
+    "reader.py": HEADER
+    + 'rospy.get_param("~rate")\nrospy.get_param("~gain", 1.0)\n'
+    + 'rospy.Subscriber("~input", String, None)\n',
 }
 LAUNCH = """
   <arg name="two" default="false"/>
