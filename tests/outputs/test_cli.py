@@ -183,7 +183,10 @@ def test_resolve_json(workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[
             capsys, "resolve", str(workspace.root), *extra, "--launch", file, "--json"
         )
         document = json.loads(out)
-        assert set(document) == {"ok", "nodes", "tests", "params", "conflicts", "errors"}
+        assert set(document) == {
+            *("ok", "nodes", "tests", "params", "conflicts", "errors"),
+            *("topics", "services", "actions"),
+        }
         assert document["ok"] is ok and code == (EXIT_OK if ok else EXIT_FAILS)
         schema_check(document, "resolve.schema.json")
     assert document["errors"][0]["code"] == "bool-invalid"
@@ -554,3 +557,27 @@ def test_version_and_help_import_no_analysis() -> None:
     )
     done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
     assert done.stdout.strip().splitlines()[-1] == "[]"
+
+
+def test_resolve_shows_the_communication_graph(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    ws.write(
+        "scripts/talker.py",
+        'import rospy\nfrom std_msgs.msg import String\nrospy.Publisher("~chatter", String)\n',
+    )
+    file = ws.launch(
+        "talk.launch",
+        '<group ns="robot"><node pkg="pkg" type="talker.py" name="talker">'
+        '<remap from="~chatter" to="/out"/></node></group>',
+    )
+    code, out, _err = run(capsys, "resolve", str(ws.root), "--launch", file, "--json")
+    document = json.loads(out)
+    assert code == EXIT_OK
+    schema_check(document, "resolve.schema.json")
+    assert document["topics"] == [
+        {"name": "/out", "types": ["std_msgs/String"], "publishers": ["/robot/talker"],
+         "subscribers": []}
+    ]  # fmt: skip
+    _code, out, _err = run(capsys, "resolve", str(ws.root), "--launch", file)
+    assert "topic   /out [std_msgs/String]: /robot/talker → -" in out.splitlines()

@@ -118,6 +118,7 @@ def cmd_analyze(options: argparse.Namespace) -> int:
 
 
 def cmd_resolve(options: argparse.Namespace) -> int:
+    from rosvar.analyses.communication import JSON_SIDES, Channel, resolved_graph
     from rosvar.analyses.resolve import resolve
     from rosvar.interpreter.workspace_models import Analysis
 
@@ -145,6 +146,8 @@ def cmd_resolve(options: argparse.Namespace) -> int:
     _warn_unknown_args(analysis, files, args)
     result = resolve(analysis, files, args, env)
     document = result.to_json()
+    graph = resolved_graph(result.nodes, _interfaces(workspace.packages.values(), options))
+    document.update(graph)
     if options.json:
         _print_json(document)
     else:
@@ -152,6 +155,13 @@ def cmd_resolve(options: argparse.Namespace) -> int:
             print(f"node  {node['name']}  ({node['package']}/{node['type']})")
         for name, value in document["params"].items():  # type: ignore[attr-defined]
             print(f"param {name} = {value!r}")
+        for channel in Channel:
+            provided, used = JSON_SIDES[channel]
+            for element in graph[channel]:
+                types = ", ".join(element["types"])  # type: ignore[arg-type]
+                providers = ", ".join(element[provided]) or "-"  # type: ignore[arg-type]
+                users = ", ".join(element[used]) or "-"  # type: ignore[arg-type]
+                print(f"{channel[:-1]:<7} {element['name']} [{types}]: {providers} → {users}")
         for conflict in result.conflicts:
             where = ", ".join(_where(loc) for loc in conflict.locations)
             print(f"conflict: {conflict.kind} {conflict.name} at {where}")
@@ -657,7 +667,9 @@ def parser() -> argparse.ArgumentParser:
     )
     res.add_argument("--env", action="append", default=[], metavar="NAME=VALUE", help=ENV_HELP)
     res.add_argument(
-        "--json", action="store_true", help="nodes, params, conflicts and errors as JSON"
+        "--json",
+        action="store_true",
+        help="nodes, params, topics, services, actions, conflicts and errors as JSON",
     )
     res.set_defaults(run=cmd_resolve)
     features = _command(commands, "features", "the feature model (paper Algorithm 1)")
