@@ -3,12 +3,20 @@
 from __future__ import annotations
 
 import itertools
+from pathlib import Path
 from typing import TYPE_CHECKING
+
+import pytest
 
 from rosvar.analyses.communication import Edge, graph_json, model_edges, resolved_graph, restrict
 from rosvar.analyses.resolve import _Restriction, resolve
+from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.workspace import discover
+from rosvar.workspace.interfaces.catalogue import load_catalogue
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, Role
+from rosvar.workspace.interfaces.overrides import add_catalogue
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -84,3 +92,38 @@ def test_restricted_graph_equals_resolved_graph(ws: LaunchWorkspace) -> None:
         expected = resolved_graph(resolution.nodes, interfaces)
         assert graph_json(uses) == expected
         assert expected["topics"]  # the test can fail: the graph is not empty
+
+
+CORPUS = Path("/work/shared/corpus")
+MAX_CONFIGURATIONS = 12
+
+
+def _configurations(model: LaunchModel) -> list[dict[str, str]]:
+    """The defaults, then one arg at a time at each value analysis knows for it."""
+    found: list[dict[str, str]] = [{}]
+    for name in sorted(model.inputs):
+        found += [{name: slot} for slot in model.domains.get(name, ()) if isinstance(slot, str)]
+    return found[:MAX_CONFIGURATIONS]
+
+
+@pytest.mark.skipif(not CORPUS.is_dir(), reason="corpus not available")
+@pytest.mark.parametrize("system", ["kobuki", "husky"])
+def test_corpus_restriction_equals_resolution(system: str) -> None:
+    workspace = discover([CORPUS / system], deps=[CORPUS / "_external"], ros_package_path="")
+    analysis = Analysis(workspace)
+    packages = workspace.packages.values()
+    interfaces = extract_interfaces(packages)
+    add_catalogue(interfaces, load_catalogue())
+    compared = 0
+    for file in workspace.launch_files:
+        model = analysis.model(file)
+        edges = model_edges(analysis.space, model, interfaces)
+        for args in _configurations(model):
+            resolution = resolve(analysis, [file], args)
+            if resolution.errors:
+                continue
+            kept = restrict(edges, _Restriction(analysis, model, args, {}).holds)
+            uses = [(e.node, e.role, e.name, e.type) for e in kept]
+            assert graph_json(uses) == resolved_graph(resolution.nodes, interfaces), (file, args)
+            compared += bool(kept)
+    assert compared >= 10  # configurations with a graph were compared
