@@ -597,6 +597,8 @@ def cmd_check(options: argparse.Namespace) -> int:
             when = document["condition"]
             when = "in every configuration" if when == "true" else f"when {when}"
             print(f"    {when}" + (f"; e.g. {example}" if example else ""))
+            if finding.file != where.file:
+                print(f"    launched from {_shown(finding.file)}")
             for location in related:
                 print(f"    see {_where(location)}")
         counts = {s: sum(1 for f in findings if f.severity is s) for s in Severity}
