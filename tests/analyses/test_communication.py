@@ -8,7 +8,14 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from rosvar.analyses.communication import Edge, graph_json, model_edges, resolved_graph, restrict
+from rosvar.analyses.communication import (
+    Edge,
+    LaunchedNode,
+    graph_json,
+    model_edges,
+    resolved_graph,
+    restrict,
+)
 from rosvar.analyses.resolve import _Restriction, resolve
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
@@ -127,3 +134,29 @@ def test_corpus_restriction_equals_resolution(system: str) -> None:
             assert graph_json(uses) == resolved_graph(resolution.nodes, interfaces), (file, args)
             compared += bool(kept)
     assert compared >= 10  # configurations with a graph were compared
+
+
+@pytest.mark.parametrize(
+    ("namespace", "name", "written", "resolved"),
+    [
+        ("/", "n", "x", "/x"),
+        ("/a/", "n", "x", "/a/x"),
+        ("/a/", "n", "~x", "/a/n/x"),
+        ("/a/", "n", "/x", "/x"),
+        ("/a/", "n", "~x/y/", "/a/n/x/y"),
+    ],
+)
+def test_names_resolve_as_the_node_does(
+    namespace: str, name: str, written: str, resolved: str
+) -> None:
+    assert LaunchedNode("p", "t", namespace, name, "", ()).resolve(written) == resolved
+
+
+def test_a_nodelet_runs_its_class() -> None:
+    def unit(args: str) -> tuple[str, str] | None:
+        return LaunchedNode("nodelet", "nodelet", "/", "n", args, ()).unit()
+
+    assert unit("load kobuki_node/KobukiNodelet manager") == ("", "kobuki_node/KobukiNodelet")
+    assert unit("standalone pkg/Class") == ("", "pkg/Class")
+    assert unit("manager") is None
+    assert LaunchedNode("pkg", "exe", "/", "n", "", ()).unit() == ("pkg", "exe")

@@ -16,7 +16,6 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 from rosvar.analyses.communication import (
-    CHANNEL,
     SIDES,
     Channel,
     Edge,
@@ -332,6 +331,3 @@ def _param_reads(
         for condition, launched, interface, static in launched_units(space, node, interfaces)
         if static
     ]
-
-
-__all__ = ["CHANNEL", "Check", "Finding", "check_model", "check_models"]

@@ -45,9 +45,7 @@ CHANNEL: dict[Role, Channel] = {
     Role.ACTION_SERVERS: Channel.ACTIONS,
     Role.ACTION_CLIENTS: Channel.ACTIONS,
 }
-PROVIDERS = (Role.PUBLISHES, Role.SERVICES, Role.ACTION_SERVERS)
-"""The role that feeds a name: the other role of its channel uses it."""
-SIDES: dict[Channel, tuple[Role, Role]] = {
+SIDES: dict[Channel, tuple[Role, Role]] = {  # the role feeding a name, the role using it
     Channel.TOPICS: (Role.PUBLISHES, Role.SUBSCRIBES),
     Channel.SERVICES: (Role.SERVICES, Role.CLIENTS),
     Channel.ACTIONS: (Role.ACTION_SERVERS, Role.ACTION_CLIENTS),
@@ -203,12 +201,6 @@ def _remapped(
     if remaining != space.false:
         outcomes.append((remaining, resolved))
     return outcomes
-
-
-def edges_of(
-    space: ConditionSpace, models: Iterable[LaunchModel], interfaces: Interfaces
-) -> list[Edge]:
-    return [edge for model in models for edge in model_edges(space, model, interfaces)]
 
 
 # -- one configuration ---------------------------------------------------------------------
