@@ -21,7 +21,7 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 
 from rosvar.diagnostics import Location
-from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw, Remap
+from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import combine
 from rosvar.logic.conditions import ConditionSpace
@@ -148,11 +148,12 @@ def node_edges(
 ) -> list[Edge]:
     """The edges of one ``<node>``: one per branch of its fields and per remap outcome."""
     edges = []
+    remaps = [(remap.condition, remap.source, remap.target) for remap in node.remaps]
     for condition, launched, interface, static in launched_units(space, node, interfaces):
         for entry in interface.entries:
             if entry.role not in CHANNEL:
                 continue
-            for when, name in _remapped(space, launched, node.remaps, entry.name, condition):
+            for when, name in remapped(launched, remaps, entry.name, condition):
                 edges.append(_edge(file, launched, node, entry, name, when, static))
     return edges
 
@@ -183,22 +184,24 @@ def _text(value: Raw | None) -> str:
     return "" if value is None else value if isinstance(value, str) else "{" + str(value) + "}"
 
 
-def _remapped(
-    space: ConditionSpace, node: LaunchedNode, remaps: Sequence[Remap], name: str, when: BDD
+def remapped(
+    node: LaunchedNode, remaps: Sequence[tuple[BDD, Raw, Raw]], name: str, when: BDD
 ) -> list[tuple[BDD, str]]:
-    """The names ``name`` becomes, each with its condition: the last remap that holds of
-    those whose source resolves to it wins, else the name stays."""
+    """The names ``name`` becomes under ``when``, each with its condition: the last remap
+    (condition, from, to) that holds of those whose source resolves to it wins, else the
+    name stays."""
     resolved = node.resolve(name)
     outcomes: list[tuple[BDD, str]] = []
+    false = when.bdd.false
     remaining = when
-    for remap in reversed(remaps):
-        if node.resolve(_text(remap.source)) != resolved:
+    for condition, source, target in reversed(remaps):
+        if node.resolve(_text(source)) != resolved:
             continue
-        taken = remaining & remap.condition
-        if taken != space.false:
-            outcomes.append((taken, node.resolve(_text(remap.target))))
-        remaining &= ~remap.condition
-    if remaining != space.false:
+        taken = remaining & condition
+        if taken != false:
+            outcomes.append((taken, node.resolve(_text(target))))
+        remaining &= ~condition
+    if remaining != false:
         outcomes.append((remaining, resolved))
     return outcomes
 

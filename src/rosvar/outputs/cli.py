@@ -334,7 +334,10 @@ def cmd_configure(options: argparse.Namespace) -> int:
     try:
         choices = [UserChoice.parse(action, text) for action, text in options.choices]
         model = extract(analysis, progress=_progress, products=True)
-        configurator = Configurator(analysis, model, env, progress=_building(tty_only=True))
+        interfaces = _interfaces(analysis.workspace.packages.values(), options)
+        configurator = Configurator(
+            analysis, model, env, progress=_building(tty_only=True), interfaces=interfaces
+        )
         if options.finish:
             choices += configurator.completion(choices)
         state = configurator.state(choices)
@@ -442,7 +445,10 @@ def cmd_serve(options: argparse.Namespace) -> int:
     files = len(analysis.workspace.launch_files)
     print(f"rosvar: analysing {files} launch files ...", file=sys.stderr, flush=True)
     model = extract(analysis, progress=_progress, products=True)
-    configurator = Configurator(analysis, model, env, progress=_building(tty_only=False))
+    interfaces = _interfaces(analysis.workspace.packages.values(), options)
+    configurator = Configurator(
+        analysis, model, env, progress=_building(tty_only=False), interfaces=interfaces
+    )
     try:
         server = make_server(configurator, options.host, options.port)
     except OSError as error:
