@@ -11,17 +11,22 @@ from typing import TYPE_CHECKING, Any
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.choices import UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
+from rosvar.workspace.interfaces.extraction import extract_interfaces
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
 
 
-def configurator(ws: LaunchWorkspace, env: Mapping[str, str] | None = None) -> Configurator:
-    """Feature ids read ``a.launch``, ``a.launch:x``, ``a.launch:x=1``."""
+def configurator(
+    ws: LaunchWorkspace, env: Mapping[str, str] | None = None, interfaces: bool = False
+) -> Configurator:
+    """Feature ids read ``a.launch``, ``a.launch:x``, ``a.launch:x=1``; with ``interfaces``,
+    the nodes' topics read from the workspace's sources."""
     analysis = ws.analysis()
     model = extract(analysis, products=True)
     spelling = {os.path.realpath(f.file): os.path.basename(f.file) for f in model.files}
-    return Configurator(analysis, model, env, spelling)
+    found = extract_interfaces(analysis.workspace.packages.values()) if interfaces else None
+    return Configurator(analysis, model, env, spelling, interfaces=found)
 
 
 def choices(*words: str) -> list[UserChoice]:

@@ -10,7 +10,14 @@ from typing import TYPE_CHECKING, Any
 
 import pytest
 
-from configuration.helpers import canonical, configurator, product, random_product, run
+from configuration.helpers import (
+    canonical,
+    choices,
+    configurator,
+    product,
+    random_product,
+    run,
+)
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.resolve import resolve
 from rosvar.configuration.command import given
@@ -46,6 +53,32 @@ def test_a_node_named_after_an_arg_has_one_variant_per_value(ws: LaunchWorkspace
         "/kobuki": "absent",
         "/r2": "present",  # the typed text fills the term
     }
+
+
+def test_interfaces_wire_nodes_to_their_topics_edge_by_edge(ws: LaunchWorkspace) -> None:
+    ws.write(
+        "scripts/talker.py",
+        'import rospy\nfrom std_msgs.msg import String\nrospy.Publisher("chatter", String)\n',
+    )
+    ws.launch(
+        "a.launch",
+        '  <arg name="relay" default="false"/>\n'
+        '  <node pkg="pkg" type="talker.py" name="talker">'
+        '<remap from="chatter" to="/relayed" if="$(arg relay)"/></node>',
+    )
+    engine = configurator(ws, interfaces=True)
+    state = engine.state(choices("select a.launch"))
+    topics = {t["name"]: t for t in state.graph.topics}
+    [node] = state.graph.nodes
+    [edge] = topics["/chatter"]["publishers"]
+    assert edge == {"node": node["id"], "presence": "undetermined", "condition": "¬relay"}
+    assert topics["/chatter"]["types"] == ["std_msgs/String"]
+    assert topics["/chatter"]["subscribers"] == [] and topics["/chatter"]["nodes"] == [node["id"]]
+    relayed = engine.state(choices("select a.launch", "set a.launch:relay=true")).graph.topics
+    shown = {t["name"]: (t["presence"], t["publishers"]) for t in relayed}
+    assert shown["/chatter"] == ("absent", [])
+    assert shown["/relayed"] == ("present", [{"node": node["id"], "presence": "present",
+                                              "condition": None}])  # fmt: skip
 
 
 def test_conditional_remaps_on_independent_args_are_parts_not_variants(

@@ -183,7 +183,10 @@ def test_resolve_json(workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[
             capsys, "resolve", str(workspace.root), *extra, "--launch", file, "--json"
         )
         document = json.loads(out)
-        assert set(document) == {"ok", "nodes", "tests", "params", "conflicts", "errors"}
+        assert set(document) == {
+            *("ok", "nodes", "tests", "params", "conflicts", "errors"),
+            *("topics", "services", "actions"),
+        }
         assert document["ok"] is ok and code == (EXIT_OK if ok else EXIT_FAILS)
         schema_check(document, "resolve.schema.json")
     assert document["errors"][0]["code"] == "bool-invalid"
@@ -569,3 +572,27 @@ def test_allow_outside_workspace_option(tmp_path: Path, capsys: pytest.CaptureFi
     assert "hunter2" not in confined and "file-outside-workspace" in confined
     assert main(["analyze", str(tmp_path / "ws"), "--json", "--allow-outside-workspace"]) == 0
     assert "hunter2" in capsys.readouterr().out
+
+
+def test_resolve_shows_the_communication_graph(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    ws.write(
+        "scripts/talker.py",
+        'import rospy\nfrom std_msgs.msg import String\nrospy.Publisher("~chatter", String)\n',
+    )
+    file = ws.launch(
+        "talk.launch",
+        '<group ns="robot"><node pkg="pkg" type="talker.py" name="talker">'
+        '<remap from="~chatter" to="/out"/></node></group>',
+    )
+    code, out, _err = run(capsys, "resolve", str(ws.root), "--launch", file, "--json")
+    document = json.loads(out)
+    assert code == EXIT_OK
+    schema_check(document, "resolve.schema.json")
+    assert document["topics"] == [
+        {"name": "/out", "types": ["std_msgs/String"], "publishers": ["/robot/talker"],
+         "subscribers": []}
+    ]  # fmt: skip
+    _code, out, _err = run(capsys, "resolve", str(ws.root), "--launch", file)
+    assert "topic   /out [std_msgs/String]: /robot/talker → -" in out.splitlines()

@@ -71,7 +71,7 @@ def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
     found: list[Occurrence] = []
     for node in model.nodes:
         if not node.is_test and own(node.location.file):
-            found.extend(_node_occurrences(model, node))
+            found.extend(node_occurrences(model, node))
     for param in model.params:
         if not isinstance(param, ParamDecl) or not own(param.location.file):
             continue
@@ -87,7 +87,7 @@ def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
     return [replace(o, anonymous=True) if anon.search(o.name) else o for o in found]
 
 
-def _node_occurrences(model: LaunchModel, node: NodeDecl) -> Iterator[Occurrence]:
+def node_occurrences(model: LaunchModel, node: NodeDecl) -> Iterator[Occurrence]:
     full = combine([node.fields["namespace"], node.fields["name"]], _node_name)
     for condition, name in full:
         if name is not None:
@@ -107,7 +107,7 @@ def repeated_inclusions(model: LaunchModel) -> list[Clash]:
     for node in model.nodes:
         if node.is_test or own(node.location.file):
             continue
-        for occurrence in _node_occurrences(model, node):
+        for occurrence in node_occurrences(model, node):
             earlier = seen[(occurrence.name, occurrence.location)]
             for first in earlier:
                 both = first.condition & occurrence.condition

@@ -28,6 +28,7 @@ from rosvar.configuration.view import Graph, Views
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.inputs import OTHER, UNSET
+from rosvar.workspace.interfaces.model import Interfaces
 
 Progress = Callable[[str, int, int], None]
 """Told what the engine builds while it is built: a phase, and how far it is (done, total)."""
@@ -150,12 +151,14 @@ class Configurator:
         env: Mapping[str, str] | None = None,
         spelling: Mapping[str, str] | None = None,
         progress: Progress | None = None,
+        interfaces: Interfaces | None = None,
     ) -> None:
         """``model`` from ``extract(analysis, products=True)``; ``progress``: told how far
-        the build is (a large workspace takes a while)."""
+        the build is (a large workspace takes a while); ``interfaces`` wire the nodes to
+        their topics."""
         if not model.products:
             raise ValueError("the configurator needs extract(..., products=True)")
-        self._build(analysis, model, env, spelling, progress or _silent)
+        self._build(analysis, model, env, spelling, progress or _silent, interfaces)
 
     @collector_paused()  # a long-lived heap: left young, the collector rescanned it each step
     def _build(
@@ -165,6 +168,7 @@ class Configurator:
         env: Mapping[str, str] | None,
         spelling: Mapping[str, str] | None,
         progress: Progress,
+        interfaces: Interfaces | None,
     ) -> None:
         self.analysis = analysis
         self.model = model
@@ -179,6 +183,7 @@ class Configurator:
             self.lowering,
             file_ids,
             lambda done, total: progress("graph of files", done, total),
+            interfaces,
         )
         progress("conflicts", 0, 1)
         self.conflicts = Conflicts(model, self.lowering, file_ids)

@@ -16,6 +16,7 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import cast
 
+from rosvar.analyses.communication import LaunchedNode, find_interface, remapped
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.resolve import ResolutionError, test_fields
@@ -40,6 +41,7 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
+from rosvar.workspace.interfaces.model import Interfaces, Role
 
 Fields = dict[str, object]
 Shown = tuple[str, str | None]
@@ -111,14 +113,18 @@ class VariationalGraph:
         lowering: Lowering,
         file_ids: Mapping[str, str],
         progress: Callable[[int, int], None] | None = None,
+        interfaces: Interfaces | None = None,
     ) -> None:
-        """``progress``: told how many of the files are done, and of how many."""
+        """``progress``: told how many of the files are done, and of how many;
+        ``interfaces``: the nodes' own topics (else topics come from remaps only)."""
         self.lowering = lowering
         self.confinement = analysis.workspace.confinement()
         self.elements: list[Element] = []
         self.launched: dict[str, BDD] = _launched(model)
+        self.interfaces = interfaces
         self._topics: dict[tuple[str, str], _Topic] = {}
         self._shadows: dict[BDD, BDD] = {}
+        self._edges: dict[str, list[_Edge]] = {}  # a static topic name → its nodes' uses
         for done, file in enumerate(model.files):
             if progress is not None:
                 progress(done, len(model.files))
@@ -129,9 +135,12 @@ class VariationalGraph:
             )
         for (entry, name), (nodes, condition, raws) in sorted(self._topics.items()):
             if not entry:
-                self._add(
-                    "topic", f"topic:{name}", "", condition, _static({"name": name}), nodes=nodes
+                edges = self._edges.get(name, [])
+                render = (
+                    _static({"name": name}) if interfaces is None else _edges_renderer(name, edges)
                 )
+                parts = tuple(Part(when, bounds) for _n, _r, _t, when, bounds in edges)
+                self._add("topic", f"topic:{name}", "", condition, render, nodes=nodes, parts=parts)
                 continue
             self._add(
                 "topic",
@@ -272,6 +281,8 @@ class VariationalGraph:
             )
             if element is not None and not node.is_test:
                 self._topic_uses(element, raw, remaps)
+                if self.interfaces is not None:
+                    self._interface_uses(element, raw, node, condition)
 
     def _variants(
         self, within: BDD, fields: Sequence[Choice[object]]
@@ -346,6 +357,38 @@ class VariationalGraph:
             nodes.append(element.id)
             self._topics[key] = (nodes, condition | used, raws)
 
+    def _interface_uses(
+        self, element: Element, raw: Mapping[str, Raw | None], node: NodeDecl, condition: BDD
+    ) -> None:
+        """The topics the node variant publishes and subscribes to by its interface, each
+        use an edge of its topic (judged as a part of it); names known statically only."""
+        assert self.interfaces is not None
+        keys = ("pkg", "type", "namespace", "name", "args")
+        texts = [raw.get(key) for key in keys]
+        if not all(text is None or isinstance(text, str) for text in texts):
+            return
+        package, type_, namespace, name, args = (str(text or "") for text in texts)
+        launched = LaunchedNode(package, type_, namespace, name, args, ())
+        unit = launched.unit()
+        interface = None if unit is None else find_interface(self.interfaces, unit)
+        if interface is None:
+            return
+        remaps = [(remap.condition, remap.source, remap.target) for remap in node.remaps]
+        for entry in interface.entries:
+            if entry.role not in (Role.PUBLISHES, Role.SUBSCRIBES) or not entry.static:
+                continue
+            for when, topic in remapped(launched, remaps, entry.name, condition):
+                fixed, bounds = self.lowering.lower(when)
+                if "{" in topic or not self.lowering.satisfiable(fixed):
+                    continue
+                self._edges.setdefault(topic, []).append(
+                    (element.id, entry.role, entry.type, fixed, bounds)
+                )
+                nodes, used, raws = self._topics.get(("", topic), ([], fixed.bdd.false, None))
+                if element.id not in nodes:
+                    nodes.append(element.id)
+                self._topics[("", topic)] = (nodes, used | fixed, raws or (None, None, topic))
+
 
 def _launched(model: FeatureModel) -> dict[str, BDD]:
     """File → "selected and not included by a selected file that includes it there"."""
@@ -371,6 +414,33 @@ def _topic_name(values: Values, namespace: Raw | None, name: Raw | None, target:
     if names.is_private(topic):
         return names.ns_join(names.ns_join(space, values.text(name) or "") + "/", topic[1:])
     return names.ns_join(space, topic)
+
+
+_Edge = tuple[str, Role, str | None, BDD, Bounds]
+"""A node variant's use of a topic: its id, publishes or subscribes, the message type, and
+the condition of the use (analysis manager, fixed) with its bounds."""
+
+
+def _edges_renderer(name: str, edges: Sequence[_Edge]) -> Render:
+    """A topic with its types and its publishers and subscribers that are not absent, each
+    with its presence and condition (the topic's parts, in the order of ``edges``)."""
+    types = sorted({type_ for _id, _role, type_, _c, _b in edges if type_ is not None})
+
+    def render(_values: Values, parts: Sequence[Shown]) -> list[Fields]:
+        sides: dict[Role, list[Fields]] = {Role.PUBLISHES: [], Role.SUBSCRIBES: []}
+        for (node, role, _type, _c, _b), (presence, condition) in zip(edges, parts, strict=True):
+            if presence != Presence.ABSENT:
+                sides[role].append({"node": node, "presence": presence, "condition": condition})
+        return [
+            {
+                "name": name,
+                "types": types,
+                "publishers": sides[Role.PUBLISHES],
+                "subscribers": sides[Role.SUBSCRIBES],
+            }
+        ]
+
+    return render
 
 
 def _topic_renderer(raws: tuple[Raw | None, Raw | None, Raw]) -> Render:

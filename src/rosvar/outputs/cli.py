@@ -14,7 +14,7 @@ import gc
 import os
 import sys
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
@@ -30,6 +30,8 @@ if TYPE_CHECKING:
     from rosvar.configuration.engine import ConfigurationState, Progress
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace import Workspace
+    from rosvar.workspace.interfaces.model import Interfaces
+    from rosvar.workspace.packages import Package
 
 EXIT_OK, EXIT_FAILS, EXIT_USAGE, EXIT_INPUT, EXIT_TOO_LARGE = 0, 1, 2, 3, 4
 
@@ -118,6 +120,7 @@ def cmd_analyze(options: argparse.Namespace) -> int:
 
 
 def cmd_resolve(options: argparse.Namespace) -> int:
+    from rosvar.analyses.communication import JSON_SIDES, Channel, resolved_graph
     from rosvar.analyses.resolve import resolve
     from rosvar.interpreter.workspace_models import Analysis
 
@@ -145,6 +148,8 @@ def cmd_resolve(options: argparse.Namespace) -> int:
     _warn_unknown_args(analysis, files, args)
     result = resolve(analysis, files, args, env)
     document = result.to_json()
+    graph = resolved_graph(result.nodes, _interfaces(workspace.packages.values(), options))
+    document.update(graph)
     if options.json:
         _print_json(document)
     else:
@@ -152,6 +157,13 @@ def cmd_resolve(options: argparse.Namespace) -> int:
             print(f"node  {node['name']}  ({node['package']}/{node['type']})")
         for name, value in document["params"].items():  # type: ignore[attr-defined]
             print(f"param {name} = {value!r}")
+        for channel in Channel:
+            provided, used = JSON_SIDES[channel]
+            for element in graph[channel]:
+                types = ", ".join(element["types"])  # type: ignore[arg-type]
+                providers = ", ".join(element[provided]) or "-"  # type: ignore[arg-type]
+                users = ", ".join(element[used]) or "-"  # type: ignore[arg-type]
+                print(f"{channel[:-1]:<7} {element['name']} [{types}]: {providers} → {users}")
         for conflict in result.conflicts:
             where = ", ".join(_where(loc) for loc in conflict.locations)
             print(f"conflict: {conflict.kind} {conflict.name} at {where}")
@@ -174,7 +186,7 @@ def _relative(location: Location) -> Location:
 
 
 def _where(location: Location) -> str:
-    return str(_relative(location))
+    return str(location if "://" in location.file else _relative(location))
 
 
 def _warn_unknown_args(analysis: Analysis, files: Sequence[str], args: Mapping[str, str]) -> None:
@@ -328,7 +340,10 @@ def cmd_configure(options: argparse.Namespace) -> int:
     try:
         choices = [UserChoice.parse(action, text) for action, text in options.choices]
         model = extract(analysis, progress=_progress, products=True)
-        configurator = Configurator(analysis, model, env, progress=_building(tty_only=True))
+        interfaces = _interfaces(analysis.workspace.packages.values(), options)
+        configurator = Configurator(
+            analysis, model, env, progress=_building(tty_only=True), interfaces=interfaces
+        )
         if options.finish:
             choices += configurator.completion(choices)
         state = configurator.state(choices)
@@ -436,7 +451,10 @@ def cmd_serve(options: argparse.Namespace) -> int:
     files = len(analysis.workspace.launch_files)
     print(f"rosvar: analysing {files} launch files ...", file=sys.stderr, flush=True)
     model = extract(analysis, progress=_progress, products=True)
-    configurator = Configurator(analysis, model, env, progress=_building(tty_only=False))
+    interfaces = _interfaces(analysis.workspace.packages.values(), options)
+    configurator = Configurator(
+        analysis, model, env, progress=_building(tty_only=False), interfaces=interfaces
+    )
     try:
         server = make_server(configurator, options.host, options.port)
     except OSError as error:
@@ -478,6 +496,10 @@ EXAMPLES = {
         "rosvar query examples \"nodes[self.package == 'pkg']\" robot:=husky\n"
         "  rosvar query examples 'for n in nodes where n.namespace == \"/\" return n' --json"
     ),
+    "check": (
+        "rosvar check ../shared/corpus/kobuki --deps ../shared/corpus/_external\n"
+        "  rosvar check examples --format sarif --fail-on warning > rosvar.sarif"
+    ),
 }
 
 
@@ -511,12 +533,24 @@ def _command(
     )
 
 
-def cmd_interfaces(options: argparse.Namespace) -> int:
+def _interfaces(packages: Iterable[Package], options: argparse.Namespace) -> Interfaces:
+    """The interfaces of ``packages``, the catalogue's when ``options.catalogue``, then
+    the hints' entries."""
     from rosvar.workspace.hints import load_hints
     from rosvar.workspace.interfaces.catalogue import load_catalogue
     from rosvar.workspace.interfaces.extraction import extract_interfaces
     from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
 
+    interfaces = extract_interfaces(packages)
+    hints = load_hints(getattr(options, "hints", None))
+    interfaces.diagnostics.extend(hints.diagnostics)
+    if getattr(options, "catalogue", True):
+        add_catalogue(interfaces, load_catalogue())
+    apply_hints(interfaces, hints.nodes)
+    return interfaces
+
+
+def cmd_interfaces(options: argparse.Namespace) -> int:
     roots = [os.path.abspath(path) for path in options.paths]
     workspace = _workspace(options.paths, options)
     packages = [
@@ -524,12 +558,7 @@ def cmd_interfaces(options: argparse.Namespace) -> int:
         for package in workspace.packages.values()
         if any(os.path.commonpath([package.path, root]) in (package.path, root) for root in roots)
     ]
-    interfaces = extract_interfaces(packages)
-    hints = load_hints(options.hints)
-    interfaces.diagnostics.extend(hints.diagnostics)
-    if options.catalogue:
-        add_catalogue(interfaces, load_catalogue())
-    apply_hints(interfaces, hints.nodes)
+    interfaces = _interfaces(packages, options)
     if options.json:
         _print_json(interfaces.to_json())
         return EXIT_OK
@@ -623,6 +652,68 @@ def _add_query(commands: argparse._SubParsersAction[argparse.ArgumentParser]) ->
     query.set_defaults(run=cmd_query)
 
 
+FAIL_LEVELS = {Severity.NOTE: 0, Severity.WARNING: 1, Severity.ERROR: 2}
+
+
+def cmd_check(options: argparse.Namespace) -> int:
+    from rosvar.analyses.checks import check_models
+    from rosvar.outputs.sarif import sarif
+
+    analysis = _analysis(options)
+    if analysis is None:
+        return EXIT_INPUT
+    interfaces = _interfaces(analysis.workspace.packages.values(), options)
+    models = analysis.all_models(_progress)
+    findings = check_models(analysis.space, models, interfaces, analysis.workspace.confinement())
+    if options.format == "sarif":
+        _print_json(sarif(findings, analysis.space))
+    elif options.format == "json":
+        _print_json({"findings": [f.to_json(analysis.space) for f in findings]})
+    else:
+        for finding in findings:
+            where, *related = finding.locations
+            document = finding.to_json(analysis.space)
+            example = ", ".join(f"{k}={v}" for k, v in document["example"].items())  # type: ignore[attr-defined]
+            print(f"{_where(where)}: {finding.severity.value}[{finding.check}]: {finding.message}")
+            when = document["condition"]
+            when = "in every configuration" if when == "true" else f"when {when}"
+            print(f"    {when}" + (f"; e.g. {example}" if example else ""))
+            if finding.file != where.file:
+                print(f"    launched from {_shown(finding.file)}")
+            for location in related:
+                print(f"    see {_where(location)}")
+        counts = {s: sum(1 for f in findings if f.severity is s) for s in Severity}
+        print(
+            f"{len(findings)} findings in {len(models)} launch files: "
+            + ", ".join(f"{counts[s]} {s.value}s" for s in Severity)
+        )
+    threshold = FAIL_LEVELS[Severity(options.fail_on)]
+    failing = any(FAIL_LEVELS[f.severity] >= threshold for f in findings)
+    return EXIT_FAILS if failing else EXIT_OK
+
+
+def _add_check(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    check = _command(
+        commands,
+        "check",
+        "problems of the communication graph and the parameters in any configuration, "
+        "each with its condition and an example (docs/checks.md)",
+    )
+    check.add_argument("paths", nargs="+", metavar="PATH", help=PATHS_HELP)
+    _workspace_options(check)
+    check.add_argument("--hints", metavar="FILE", help=HINTS_HELP + "; nodes: interfaces")
+    check.add_argument(
+        "--format", choices=["text", "json", "sarif"], default="text", help="output format"
+    )
+    check.add_argument(
+        "--fail-on",
+        choices=[s.value for s in FAIL_LEVELS],
+        default=Severity.ERROR.value,
+        help="exit with 1 when a finding is at least this severe (default: error)",
+    )
+    check.set_defaults(run=cmd_check)
+
+
 def parser() -> argparse.ArgumentParser:
     top = argparse.ArgumentParser(
         prog="rosvar",
@@ -659,7 +750,9 @@ def parser() -> argparse.ArgumentParser:
     )
     res.add_argument("--env", action="append", default=[], metavar="NAME=VALUE", help=ENV_HELP)
     res.add_argument(
-        "--json", action="store_true", help="nodes, params, conflicts and errors as JSON"
+        "--json",
+        action="store_true",
+        help="nodes, params, topics, services, actions, conflicts and errors as JSON",
     )
     res.set_defaults(run=cmd_resolve)
     features = _command(commands, "features", "the feature model (paper Algorithm 1)")
@@ -727,6 +820,7 @@ def parser() -> argparse.ArgumentParser:
     serve.set_defaults(run=cmd_serve)
     _add_interfaces(commands)
     _add_query(commands)
+    _add_check(commands)
     return top
 
 

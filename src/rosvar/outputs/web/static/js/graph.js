@@ -382,9 +382,13 @@ export class GraphView {
       wanted.push({ group: "nodes", classes: topic.presence, data: { id, kind: "topic", label: topic.name, owner: topic.id, element: { kind: "topic", ...topic } } });
       unitOf.set(topic.id, id);
       searchNames.set(id, [String(topic.name).toLowerCase()]);
+      // a unit whose nodes only subscribe (by their interfaces) reads from the topic
+      const reading = new Set((topic.subscribers || []).map((edge) => unitOf.get(edge.node)));
+      const writing = new Set((topic.publishers || []).map((edge) => unitOf.get(edge.node)));
       for (const unit of new Set(topic.nodes.map((nodeId) => unitOf.get(nodeId)).filter(Boolean))) {
+        const reads = reading.has(unit) && !writing.has(unit);
         wanted.push({ group: "edges", classes: topic.presence === "undetermined" ? "undetermined" : "",
-                      data: { id: `e:${topic.id}:${unit}`, owner: topic.id, source: unit, target: id } });
+                      data: { id: `e:${topic.id}:${unit}`, owner: topic.id, source: reads ? id : unit, target: reads ? unit : id } });
       }
     }
     if (this.options.params) this.paramUnits(state, wanted, drawnNodes, unitOf, opened);

@@ -1,0 +1,347 @@
+"""Checks of the communication graph and the parameters, for all configurations at once.
+
+Each finding holds a presence condition over its entry file's args, computed on the
+variational model: "two publishers" is the disjunction, over pairs of different nodes
+publishing one resolved name, of both edges' conditions; "nobody publishes" is a
+subscription's condition and the negation of every publication's of that name. No
+configuration is enumerated; an example configuration is read off the condition
+(:func:`simplest_trigger`).
+"""
+
+from __future__ import annotations
+
+import enum
+from collections import defaultdict
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+from rosvar.analyses.communication import (
+    SIDES,
+    Channel,
+    Edge,
+    launched_units,
+    model_edges,
+)
+from rosvar.analyses.conflicts import Occurrence, clashes, node_occurrences
+from rosvar.analyses.feature_model.operations import simplest_trigger
+from rosvar.diagnostics import Location, Severity
+from rosvar.files import Confinement
+from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, YamlDecl
+from rosvar.interpreter.tags.rosparam import load_rosparam
+from rosvar.logic.bdd import BDD
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.ros import names
+from rosvar.workspace.interfaces.model import Interfaces, Role
+from rosvar.workspace.paths import real_path
+
+
+class Check(enum.StrEnum):
+    """What a finding is about; the values are the rule ids of the JSON and SARIF output."""
+
+    MULTIPLE_PROVIDERS = "multiple-providers"
+    NO_PROVIDER = "no-provider"
+    NO_SUBSCRIBER = "no-subscriber"
+    TYPE_MISMATCH = "type-mismatch"
+    NODE_NAME_CLASH = "node-name-clash"
+    PARAM_UNSET = "param-unset"
+    SYMBOLIC_NAME = "symbolic-name"
+
+
+DESCRIPTIONS: dict[Check, str] = {
+    Check.MULTIPLE_PROVIDERS: "several nodes publish one topic, or serve one service or action",
+    Check.NO_PROVIDER: "a node subscribes to a topic (or calls a service, an action) that no "
+    "launched node provides",
+    Check.NO_SUBSCRIBER: "a node publishes a topic no launched node subscribes to",
+    Check.TYPE_MISMATCH: "the nodes using one name disagree on its message or service type",
+    Check.NODE_NAME_CLASH: "two nodes get one name: roslaunch refuses to start",
+    Check.PARAM_UNSET: "a node reads a parameter without a default that no launch file sets",
+    Check.SYMBOLIC_NAME: "a name could not be resolved statically: the checks skip it",
+}
+
+PROVIDED = {Channel.TOPICS: "publish", Channel.SERVICES: "serve", Channel.ACTIONS: "serve"}
+USED = {Channel.TOPICS: "subscribes to", Channel.SERVICES: "calls", Channel.ACTIONS: "calls"}
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One problem of the entry ``file``, present when ``condition`` holds and the file
+    loads (roslaunch does not fail on it)."""
+
+    check: Check
+    severity: Severity
+    name: str
+    message: str
+    file: str
+    condition: BDD
+    locations: tuple[Location, ...]  # the first is where the problem is reported
+
+    def to_json(self, space: ConditionSpace) -> dict[str, object]:
+        return {
+            "check": str(self.check),
+            "severity": self.severity.value,
+            "name": self.name,
+            "message": self.message,
+            "file": self.file,
+            "condition": space.describe(self.condition),
+            "example": simplest_trigger(space, self.condition),
+            "locations": [location.to_json() for location in self.locations],
+        }
+
+
+def check_models(
+    space: ConditionSpace,
+    models: Sequence[LaunchModel],
+    interfaces: Interfaces,
+    confinement: Confinement,
+) -> list[Finding]:
+    """The findings of every entry file; one found again through a file including another
+    (same check, name and places) is reported once, for the file that is included."""
+    found: dict[tuple[object, ...], Finding] = {}
+    included = _included(models)
+    ordered = sorted(models, key=lambda m: real_path(m.file) not in included)
+    for model in ordered:
+        for finding in check_model(space, model, interfaces, confinement):
+            key = (finding.check, finding.name, finding.locations)
+            found.setdefault(key, finding)
+    return sorted(found.values(), key=lambda f: (f.locations[0], f.check, f.name))
+
+
+def _included(models: Iterable[LaunchModel]) -> set[str]:
+    return {
+        real_path(file)
+        for model in models
+        for include in model.includes
+        for _, file in include.file
+        if isinstance(file, str)
+    }
+
+
+def check_model(
+    space: ConditionSpace, model: LaunchModel, interfaces: Interfaces, confinement: Confinement
+) -> list[Finding]:
+    """The findings of one entry file (where it loads: a failing launch has no graph);
+    ``confinement``: where the files its ``<rosparam>`` loads may be read."""
+    edges = model_edges(space, model, interfaces)
+    checker = _Checker(space, model, model.loads, confinement)
+    checker.graph(edges)
+    checker.node_names()
+    checker.params(interfaces)
+    return checker.findings
+
+
+class _Checker:
+    def __init__(
+        self, space: ConditionSpace, model: LaunchModel, loads: BDD, confinement: Confinement
+    ) -> None:
+        self.confinement = confinement
+        self.space = space
+        self.model = model
+        self.loads = loads
+        self.findings: list[Finding] = []
+
+    def add(
+        self,
+        check: Check,
+        severity: Severity,
+        name: str,
+        message: str,
+        condition: BDD,
+        locations: Iterable[Location],
+    ) -> None:
+        # kept without the file's loading condition: that one spells out every env value
+        # that makes some `if` invalid, which would drown the finding's own reason
+        if self.space.satisfiable(condition & self.loads):
+            self.findings.append(
+                Finding(
+                    check, severity, name, message, self.model.file, condition, tuple(locations)
+                )
+            )
+
+    def any(self, conditions: Iterable[BDD]) -> BDD:
+        result = self.space.false
+        for condition in conditions:
+            result |= condition
+        return result
+
+    def graph(self, edges: Sequence[Edge]) -> None:
+        by_name: dict[tuple[Channel, str], list[Edge]] = defaultdict(list)
+        for edge in edges:
+            if edge.static:
+                by_name[(edge.channel, edge.name)].append(edge)
+            else:
+                self.add(
+                    Check.SYMBOLIC_NAME,
+                    Severity.NOTE,
+                    edge.name,
+                    f"{edge.node} {edge.role}: '{edge.name}' is not known statically",
+                    edge.condition,
+                    (edge.launch, edge.source),
+                )
+        for (channel, name), named in sorted(by_name.items()):
+            provide, use = SIDES[channel]
+            providers = [e for e in named if e.role is provide]
+            users = [e for e in named if e.role is use]
+            self.providers(channel, name, providers)
+            self.unmatched(channel, name, providers, users)
+            self.types(name, named)
+
+    def providers(self, channel: Channel, name: str, providers: Sequence[Edge]) -> None:
+        """At least two different nodes provide ``name``: a running count over the nodes."""
+        per_node: dict[tuple[str, Location], BDD] = defaultdict(lambda: self.space.false)
+        for edge in providers:
+            per_node[(edge.node, edge.launch)] |= edge.condition
+        if len(per_node) < 2:
+            return
+        one = two = self.space.false
+        for condition in per_node.values():
+            two |= one & condition
+            one |= condition
+        nodes = sorted({node for node, _ in per_node})
+        severity = Severity.NOTE if channel is Channel.TOPICS else Severity.WARNING
+        self.add(
+            Check.MULTIPLE_PROVIDERS,
+            severity,
+            name,
+            f"{len(nodes)} nodes {PROVIDED[channel]} {name}: {', '.join(nodes)}",
+            two,
+            sorted({e.launch for e in providers}),
+        )
+
+    def unmatched(
+        self, channel: Channel, name: str, providers: Sequence[Edge], users: Sequence[Edge]
+    ) -> None:
+        provided = self.any(e.condition for e in providers)
+        used = self.any(e.condition for e in users)
+        for edge in users:
+            self.add(
+                Check.NO_PROVIDER,
+                Severity.WARNING,
+                name,
+                f"{edge.node} {USED[channel]} {name}, which no launched node provides",
+                edge.condition & ~provided,
+                (edge.launch, edge.source),
+            )
+        if channel is not Channel.TOPICS:
+            return
+        for edge in providers:
+            self.add(
+                Check.NO_SUBSCRIBER,
+                Severity.NOTE,
+                name,
+                f"{edge.node} publishes {name}, which no launched node subscribes to",
+                edge.condition & ~used,
+                (edge.launch, edge.source),
+            )
+
+    def types(self, name: str, named: Sequence[Edge]) -> None:
+        by_type: dict[str, list[Edge]] = defaultdict(list)
+        for edge in named:
+            if edge.type is not None:
+                by_type[edge.type].append(edge)
+        kinds = sorted(by_type)
+        for i, first in enumerate(kinds):
+            for second in kinds[i + 1 :]:
+                a, b = by_type[first], by_type[second]
+                both = self.any(e.condition for e in a) & self.any(e.condition for e in b)
+                self.add(
+                    Check.TYPE_MISMATCH,
+                    Severity.ERROR,
+                    name,
+                    f"{name} is {first} for {_nodes(a)} but {second} for {_nodes(b)}",
+                    both,
+                    (a[0].launch, a[0].source, b[0].launch, b[0].source),
+                )
+
+    def node_names(self) -> None:
+        buckets: dict[tuple[str, str], list[Occurrence]] = defaultdict(list)
+        for node in self.model.nodes:
+            if not node.is_test:
+                for occurrence in node_occurrences(self.model, node):
+                    buckets[("node", occurrence.name)].append(occurrence)
+        for clash in clashes(buckets):
+            self.add(
+                Check.NODE_NAME_CLASH,
+                Severity.ERROR,
+                clash.name,
+                f"two nodes are named {clash.name}",
+                clash.condition,
+                (clash.second.location, clash.first.location),
+            )
+
+    def params(self, interfaces: Interfaces) -> None:
+        """Reads without a default of names no ``<param>``/``<rosparam>`` sets (nor a
+        namespace around them, nor one inside them)."""
+        setters = self.setters()
+        for node in self.model.nodes:
+            if node.is_test:
+                continue
+            for edge_node, condition, reads in _param_reads(self.space, node, interfaces):
+                for name, entry_location in reads:
+                    set_here = self.any(c for set_name, c in setters if _covers(set_name, name))
+                    self.add(
+                        Check.PARAM_UNSET,
+                        Severity.WARNING,
+                        name,
+                        f"{edge_node} reads {name}, which has no default and no launch file sets",
+                        condition & ~set_here,
+                        (node.location, entry_location),
+                    )
+
+    def setters(self) -> list[tuple[str, BDD]]:
+        found: list[tuple[str, BDD]] = []
+        for param in self.model.params:
+            if isinstance(param, ParamDecl):
+                found.extend(
+                    (name, param.condition & c) for c, name in param.name if isinstance(name, str)
+                )
+            else:
+                found.extend(
+                    (name, param.condition) for name in _yaml_names(param, self.confinement)
+                )
+        return found
+
+
+def _nodes(edges: Sequence[Edge]) -> str:
+    return ", ".join(sorted({e.node for e in edges}))
+
+
+def _covers(set_name: str, read: str) -> bool:
+    return set_name == read or read.startswith(set_name + "/") or set_name.startswith(read + "/")
+
+
+def _yaml_names(param: YamlDecl, confinement: Confinement) -> list[str]:
+    """The names a ``<rosparam>`` sets, when all its parts are known; else the namespace it
+    loads into, which then counts as setting everything below it."""
+    parts = [param.scope_ns, param.command, param.ns, param.file, param.param, param.text]
+    known = [part for part in parts if part is None or isinstance(part, str)]
+    if len(known) == len(parts):
+        scope_ns, command, ns, file, name, text = known
+        try:
+            pairs = load_rosparam(
+                str(command), ns, file, name, str(text), str(scope_ns), confinement
+            )
+        except ValueError:
+            return []
+        return [names.canonicalize_name(key) for key, _ in pairs]
+    scope = param.scope_ns if isinstance(param.scope_ns, str) else names.SEP
+    return [names.canonicalize_name(scope)]
+
+
+def _param_reads(
+    space: ConditionSpace, node: NodeDecl, interfaces: Interfaces
+) -> list[tuple[str, BDD, list[tuple[str, Location]]]]:
+    """Per branch of a node's fields: its name, condition and the params it reads without
+    a default (nodes and names known statically only)."""
+    return [
+        (
+            launched.full_name,
+            condition,
+            [
+                (launched.resolve(e.name), e.location)
+                for e in interface.of(Role.PARAMS)
+                if e.default is None and e.static
+            ],
+        )
+        for condition, launched, interface, static in launched_units(space, node, interfaces)
+        if static
+    ]

@@ -1,0 +1,266 @@
+"""The communication graph: which launched node publishes, subscribes, serves or calls which
+name, in every configuration at once.
+
+A launched node is matched to its interface by (package, executable), a nodelet loaded with
+``args="load pkg/Class manager"`` by its class. Each name of the interface is resolved as the
+node does at run time (roscpp ``names::resolve``, rospy alike): ``/x`` is global, ``~x`` lies
+under the node's own name, ``x`` under its namespace; then the node's remappings (whose two
+sides are resolved the same way) replace it. Every field of ``<node>`` may vary between
+configurations, and each remap has its own condition: each use of a name becomes *edges*,
+one per resolved name, each with the condition under which the node has it.
+
+The same resolution, fed with one configuration's concrete node (:func:`resolved_graph`),
+gives ``rosvar resolve`` its topics: restricting the variational edges to a configuration
+must give exactly those.
+"""
+
+from __future__ import annotations
+
+import enum
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from dataclasses import dataclass
+
+from rosvar.diagnostics import Location
+from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
+from rosvar.logic.bdd import BDD
+from rosvar.logic.choice import combine
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.ros import names
+from rosvar.workspace.interfaces.model import Entry, Interfaces, NodeInterface, Role
+
+
+class Channel(enum.StrEnum):
+    """What kind of name an edge is on; the values are the JSON list names."""
+
+    TOPICS = "topics"
+    SERVICES = "services"
+    ACTIONS = "actions"
+
+
+CHANNEL: dict[Role, Channel] = {
+    Role.PUBLISHES: Channel.TOPICS,
+    Role.SUBSCRIBES: Channel.TOPICS,
+    Role.SERVICES: Channel.SERVICES,
+    Role.CLIENTS: Channel.SERVICES,
+    Role.ACTION_SERVERS: Channel.ACTIONS,
+    Role.ACTION_CLIENTS: Channel.ACTIONS,
+}
+SIDES: dict[Channel, tuple[Role, Role]] = {  # the role feeding a name, the role using it
+    Channel.TOPICS: (Role.PUBLISHES, Role.SUBSCRIBES),
+    Channel.SERVICES: (Role.SERVICES, Role.CLIENTS),
+    Channel.ACTIONS: (Role.ACTION_SERVERS, Role.ACTION_CLIENTS),
+}
+JSON_SIDES: dict[Channel, tuple[str, str]] = {
+    Channel.TOPICS: ("publishers", "subscribers"),
+    Channel.SERVICES: ("servers", "clients"),
+    Channel.ACTIONS: ("servers", "clients"),
+}
+
+
+@dataclass(frozen=True)
+class LaunchedNode:
+    """A ``<node>`` as one configuration (or one branch of its fields) has it."""
+
+    package: str
+    type: str
+    namespace: str
+    name: str
+    args: str
+    remaps: Sequence[tuple[str, str]]  # in order: a later remap of one name wins
+
+    @property
+    def full_name(self) -> str:
+        return names.ns_join(self.namespace, self.name)
+
+    def unit(self) -> tuple[str, str] | None:
+        """The (package, executable) whose interface this node runs; a loaded nodelet's
+        class, with an empty package (a class is named ``pkg/Class`` already)."""
+        words = self.args.split()
+        if self.package == "nodelet" and self.type == "nodelet":
+            if len(words) >= 2 and words[0] in ("load", "standalone"):
+                return "", words[1]
+            return None  # a manager: its interface is what it loads
+        return self.package, self.type
+
+    def resolve(self, name: str) -> str:
+        """``name`` (as the source writes it) as the node resolves it, before remapping."""
+        if names.is_private(name):
+            return names.canonicalize_name(self.full_name + names.SEP + name[1:])
+        return names.canonicalize_name(names.ns_join(self.namespace or names.SEP, name))
+
+
+@dataclass(frozen=True)
+class Edge:
+    """One use of a resolved name by one node, under ``condition``."""
+
+    file: str  # the entry launch file
+    node: str  # the node's resolved name
+    role: Role
+    name: str
+    type: str | None
+    condition: BDD
+    launch: Location  # the <node>
+    source: Location  # the use in the node's source
+    static: bool  # False: a part of the name is not known statically
+
+    @property
+    def channel(self) -> Channel:
+        return CHANNEL[self.role]
+
+
+def find_interface(interfaces: Interfaces, unit: tuple[str, str]) -> NodeInterface | None:
+    package, executable = unit
+    if package:
+        return interfaces.find(package, executable)
+    return next((n for n in interfaces.nodes if n.executable == executable), None)
+
+
+def model_edges(space: ConditionSpace, model: LaunchModel, interfaces: Interfaces) -> list[Edge]:
+    """Every edge the nodes of ``model`` can have (tests excluded: they run apart)."""
+    edges: list[Edge] = []
+    for node in model.nodes:
+        if not node.is_test:
+            edges.extend(node_edges(space, model.file, node, interfaces))
+    return edges
+
+
+def launched_units(
+    space: ConditionSpace, node: NodeDecl, interfaces: Interfaces
+) -> Iterator[tuple[BDD, LaunchedNode, NodeInterface, bool]]:
+    """Per branch of a ``<node>``'s fields: its condition, the node, the interface it runs
+    and whether every field is known statically (nodes without a known interface skipped)."""
+    keys = ("pkg", "type", "namespace", "name", "args")
+    for condition, values in combine([node.field(key) for key in keys], list):
+        condition &= node.condition
+        if condition == space.false:
+            continue
+        package, type_, namespace, name, args = (_text(value) for value in values)
+        launched = LaunchedNode(package, type_, namespace, name, args, remaps=())
+        unit = launched.unit()
+        interface = None if unit is None else find_interface(interfaces, unit)
+        if interface is not None:
+            static = all(value is None or isinstance(value, str) for value in values)
+            yield condition, launched, interface, static
+
+
+def node_edges(
+    space: ConditionSpace, file: str, node: NodeDecl, interfaces: Interfaces
+) -> list[Edge]:
+    """The edges of one ``<node>``: one per branch of its fields and per remap outcome."""
+    edges = []
+    remaps = [(remap.condition, remap.source, remap.target) for remap in node.remaps]
+    for condition, launched, interface, static in launched_units(space, node, interfaces):
+        for entry in interface.entries:
+            if entry.role not in CHANNEL:
+                continue
+            for when, name in remapped(launched, remaps, entry.name, condition):
+                edges.append(_edge(file, launched, node, entry, name, when, static))
+    return edges
+
+
+def _edge(
+    file: str,
+    node: LaunchedNode,
+    decl: NodeDecl,
+    entry: Entry,
+    name: str,
+    condition: BDD,
+    static: bool,
+) -> Edge:
+    return Edge(
+        file,
+        node.full_name,
+        entry.role,
+        name,
+        entry.type,
+        condition,
+        decl.location,
+        entry.location,
+        static and entry.static and "{" not in name,
+    )
+
+
+def _text(value: Raw | None) -> str:
+    return "" if value is None else value if isinstance(value, str) else "{" + str(value) + "}"
+
+
+def remapped(
+    node: LaunchedNode, remaps: Sequence[tuple[BDD, Raw, Raw]], name: str, when: BDD
+) -> list[tuple[BDD, str]]:
+    """The names ``name`` becomes under ``when``, each with its condition: the last remap
+    (condition, from, to) that holds of those whose source resolves to it wins, else the
+    name stays."""
+    resolved = node.resolve(name)
+    outcomes: list[tuple[BDD, str]] = []
+    false = when.bdd.false
+    remaining = when
+    for condition, source, target in reversed(remaps):
+        if node.resolve(_text(source)) != resolved:
+            continue
+        taken = remaining & condition
+        if taken != false:
+            outcomes.append((taken, node.resolve(_text(target))))
+        remaining &= ~condition
+    if remaining != false:
+        outcomes.append((remaining, resolved))
+    return outcomes
+
+
+# -- one configuration ---------------------------------------------------------------------
+
+
+def restrict(edges: Iterable[Edge], holds: Callable[[BDD], bool]) -> list[Edge]:
+    """The edges of one configuration (``holds`` decides a condition in it)."""
+    return [edge for edge in edges if holds(edge.condition)]
+
+
+def resolved_graph(
+    nodes: Iterable[Mapping[str, object]], interfaces: Interfaces
+) -> dict[str, list[dict[str, object]]]:
+    """``topics``, ``services`` and ``actions`` of resolved nodes (``rosvar resolve``'s)."""
+    uses: list[tuple[str, Role, str, str | None]] = []
+    for node in nodes:
+        remaps = node.get("remaps") or []
+        assert isinstance(remaps, list)
+        launched = LaunchedNode(
+            str(node.get("package") or ""),
+            str(node.get("type") or ""),
+            str(node.get("namespace") or ""),
+            str(node["name"]).rsplit(names.SEP, 1)[-1],
+            str(node.get("args") or ""),
+            [(str(a), str(b)) for a, b in remaps],
+        )
+        unit = launched.unit()
+        interface = None if unit is None else find_interface(interfaces, unit)
+        if interface is None:
+            continue
+        table = {launched.resolve(a): launched.resolve(b) for a, b in launched.remaps}
+        for entry in interface.entries:
+            if entry.role in CHANNEL:
+                resolved = launched.resolve(entry.name)
+                name = table.get(resolved, resolved)
+                uses.append((launched.full_name, entry.role, name, entry.type))
+    return graph_json(uses)
+
+
+def graph_json(
+    uses: Iterable[tuple[str, Role, str, str | None]],
+) -> dict[str, list[dict[str, object]]]:
+    """Uses (node, role, name, type) grouped by channel and name, sorted."""
+    document: dict[str, list[dict[str, object]]] = {}
+    for channel in Channel:
+        provide, use = SIDES[channel]
+        provided, used = JSON_SIDES[channel]
+        grouped: dict[str, tuple[set[str], set[str], set[str]]] = {}
+        for node, role, name, type_ in uses:
+            if role not in (provide, use):
+                continue
+            types, providers, users = grouped.setdefault(name, (set(), set(), set()))
+            if type_ is not None:
+                types.add(type_)
+            (providers if role is provide else users).add(node)
+        document[str(channel)] = [
+            {"name": name, "types": sorted(t), provided: sorted(p), used: sorted(u)}
+            for name, (t, p, u) in sorted(grouped.items())
+        ]
+    return document

@@ -1,0 +1,108 @@
+"""The checks on a small workspace: each finding's condition against the configurations
+that ``resolve`` enumerates (the checks never enumerate them)."""
+
+from __future__ import annotations
+
+import itertools
+from typing import TYPE_CHECKING
+
+from rosvar.analyses.checks import Check, check_model, check_models
+from rosvar.analyses.communication import resolved_graph
+from rosvar.analyses.resolve import _Restriction, resolve
+from rosvar.workspace.interfaces.extraction import extract_interfaces
+from rosvar.workspace.interfaces.model import Interfaces
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+    from rosvar.interpreter.workspace_models import Analysis
+
+HEADER = "import rospy\nfrom std_msgs.msg import Int32, String\n"
+SOURCES = {
+    "talker.py": HEADER + 'rospy.Publisher("chatter", String)\n',
+    "listener.py": HEADER + 'rospy.Subscriber("chatter", String, None)\n',
+    "counter.py": HEADER + 'rospy.Publisher("/chatter", Int32)\n',
+    "reader.py": HEADER
+    + 'rospy.get_param("~rate")\nrospy.get_param("~gain", 1.0)\n'
+    + 'rospy.Subscriber("~input", String, None)\n',
+}
+LAUNCH = """
+  <arg name="two" default="false"/>
+  <arg name="listen" default="true"/>
+  <arg name="wrong" default="false"/>
+  <node pkg="pkg" type="talker.py" name="talker"/>
+  <node pkg="pkg" type="talker.py" name="talker2" if="$(arg two)">
+    <remap from="chatter" to="reader/input" if="$(arg listen)"/>
+  </node>
+  <node pkg="pkg" type="listener.py" name="listener" if="$(arg listen)"/>
+  <node pkg="pkg" type="counter.py" name="counter" if="$(arg wrong)"/>
+  <node pkg="pkg" type="reader.py" name="reader">
+    <param name="rate" value="1" if="$(arg two)"/>
+  </node>
+  <node pkg="pkg" type="listener.py" name="listener" if="$(arg two)"/>
+"""
+ARGS = ("two", "listen", "wrong")
+
+
+def _setup(ws: LaunchWorkspace) -> tuple[Analysis, str, Interfaces]:
+    for name, text in SOURCES.items():
+        ws.write(f"scripts/{name}", text)
+    file = ws.launch("system.launch", LAUNCH)
+    analysis = ws.analysis()
+    return analysis, file, extract_interfaces(analysis.workspace.packages.values())
+
+
+def _expected(
+    analysis: Analysis, file: str, interfaces: Interfaces, args: dict[str, str]
+) -> set[tuple[Check, str]]:
+    """The findings of one configuration, from its resolution."""
+    resolution = resolve(analysis, [file], args)
+    graph = resolved_graph(resolution.nodes, interfaces)
+    found = set()
+    for topic in graph["topics"]:
+        name = str(topic["name"])
+        if len(topic["publishers"]) >= 2:  # type: ignore[arg-type]
+            found.add((Check.MULTIPLE_PROVIDERS, name))
+        if len(topic["types"]) >= 2:  # type: ignore[arg-type]
+            found.add((Check.TYPE_MISMATCH, name))
+        if not topic["subscribers"]:
+            found.add((Check.NO_SUBSCRIBER, name))
+        if not topic["publishers"]:
+            found.add((Check.NO_PROVIDER, name))
+    if "/reader/rate" not in resolution.params:
+        found.add((Check.PARAM_UNSET, "/reader/rate"))
+    found |= {(Check.NODE_NAME_CLASH, c.name) for c in resolution.conflicts}
+    return found
+
+
+def test_conditions_agree_with_every_configuration(ws: LaunchWorkspace) -> None:
+    analysis, file, interfaces = _setup(ws)
+    model = analysis.model(file)
+    findings = check_model(analysis.space, model, interfaces)
+    kinds = {f.check for f in findings}
+    assert kinds == set(Check) - {Check.SYMBOLIC_NAME}  # every check has a case here
+    for values in itertools.product(["true", "false"], repeat=len(ARGS)):
+        args = dict(zip(ARGS, values, strict=True))
+        holds = _Restriction(analysis, model, args, {}).holds
+        found = {(f.check, f.name) for f in findings if holds(f.condition)}
+        assert found == _expected(analysis, file, interfaces, args), args
+
+
+def test_findings_are_readable(ws: LaunchWorkspace) -> None:
+    analysis, file, interfaces = _setup(ws)
+    findings = check_models(
+        analysis.space, [analysis.model(file)], interfaces, analysis.workspace.confinement()
+    )
+    [mismatch] = [f for f in findings if f.check is Check.TYPE_MISMATCH]
+    document = mismatch.to_json(analysis.space)
+    assert document["condition"] == "wrong"
+    assert document["example"] == {"system.launch:wrong": "true"}
+    assert document["severity"] == "error"
+    assert "std_msgs/Int32" in str(document["message"])
+    lines = {location.line for location in mismatch.locations}
+    assert lines == {3, 6, 11}  # the publishers: their source line and their <node>s
+    [unset] = [f for f in findings if f.check is Check.PARAM_UNSET]
+    assert analysis.space.describe(unset.condition) == "¬two"
+    assert not any(f.name == "/reader/gain" for f in findings)  # it has a default
+    [unfed] = [f for f in findings if f.check is Check.NO_PROVIDER]
+    assert unfed.name == "/reader/input"
+    assert analysis.space.describe(unfed.condition) in ("¬listen ∨ ¬two", "¬two ∨ ¬listen")

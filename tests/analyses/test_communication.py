@@ -1,0 +1,162 @@
+"""The communication graph: edges with conditions, and agreement with ``resolve``."""
+
+from __future__ import annotations
+
+import itertools
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import pytest
+
+from rosvar.analyses.communication import (
+    Edge,
+    LaunchedNode,
+    graph_json,
+    model_edges,
+    resolved_graph,
+    restrict,
+)
+from rosvar.analyses.resolve import _Restriction, resolve
+from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.workspace import discover
+from rosvar.workspace.interfaces.catalogue import load_catalogue
+from rosvar.workspace.interfaces.extraction import extract_interfaces
+from rosvar.workspace.interfaces.model import Interfaces, Role
+from rosvar.workspace.interfaces.overrides import add_catalogue
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+    from rosvar.interpreter.workspace_models import Analysis
+
+TALKER = """\
+import rospy
+from std_msgs.msg import String
+rospy.Publisher("chatter", String, queue_size=1)
+rospy.Subscriber("~control", String, None)
+rospy.Service("/reset", None, None)
+"""
+LISTENER = """\
+import rospy
+from std_msgs.msg import String
+rospy.Subscriber("chatter", String, None)
+"""
+LAUNCH = """
+  <arg name="robot" default="r0"/>
+  <arg name="relay" default="false"/>
+  <arg name="second" default="false"/>
+  <group ns="$(arg robot)">
+    <node pkg="pkg" type="talker.py" name="talker">
+      <remap from="chatter" to="/relayed" if="$(arg relay)"/>
+    </node>
+  </group>
+  <node pkg="pkg" type="listener.py" name="listener"/>
+  <node pkg="pkg" type="talker.py" name="talker2" if="$(arg second)"/>
+"""
+
+
+def _setup(ws: LaunchWorkspace) -> tuple[Analysis, str, Interfaces, list[Edge]]:
+    ws.write("scripts/talker.py", TALKER)
+    ws.write("scripts/listener.py", LISTENER)
+    file = ws.launch("demo.launch", LAUNCH)
+    analysis = ws.analysis(extra_values={"robot": ["r1"]})  # a known value: its own slot
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    return analysis, file, interfaces, model_edges(analysis.space, analysis.model(file), interfaces)
+
+
+def test_edges_carry_conditions(ws: LaunchWorkspace) -> None:
+    analysis, _file, _interfaces, edges = _setup(ws)
+    space = analysis.space
+    published = {
+        (e.node, e.name, space.describe(e.condition)) for e in edges if e.role is Role.PUBLISHES
+    }
+    names = {(node, name) for node, name, _ in published}
+    assert ("/r0/talker", "/r0/chatter") in names and ("/r0/talker", "/relayed") in names
+    assert ("/talker2", "/chatter") in names
+    assert ("/r1/talker", "/r1/chatter") in names
+    [(_, _, when)] = [p for p in published if p[1] == "/relayed" and p[0] == "/r0/talker"]
+    assert "relay" in when
+    private = {e.name for e in edges if e.role is Role.SUBSCRIBES and e.node == "/r0/talker"}
+    assert private == {"/r0/talker/control"}
+    assert all(e.type == "std_msgs/String" for e in edges if e.role is not Role.SERVICES)
+
+
+def test_restricted_graph_equals_resolved_graph(ws: LaunchWorkspace) -> None:
+    """Differential: per configuration, the variational edges that hold are the graph of
+    the nodes ``resolve`` gives."""
+    analysis, file, interfaces, edges = _setup(ws)
+    model = analysis.model(file)
+    for robot, relay, second in itertools.product(
+        ["r0", "r1"], ["true", "false"], ["true", "false"]
+    ):
+        args = {"robot": robot, "relay": relay, "second": second}
+        resolution = resolve(analysis, [file], args)
+        assert resolution.ok
+        restriction = _Restriction(analysis, model, args, {})
+        kept = restrict(edges, restriction.holds)
+        assert all(e.static for e in kept)
+        uses = [(e.node, e.role, e.name, e.type) for e in kept]
+        expected = resolved_graph(resolution.nodes, interfaces)
+        assert graph_json(uses) == expected
+        assert expected["topics"]  # the test can fail: the graph is not empty
+
+
+CORPUS = Path("/work/shared/corpus")
+MAX_CONFIGURATIONS = 12
+
+
+def _configurations(model: LaunchModel) -> list[dict[str, str]]:
+    """The defaults, then one arg at a time at each value analysis knows for it."""
+    found: list[dict[str, str]] = [{}]
+    for name in sorted(model.inputs):
+        found += [{name: slot} for slot in model.domains.get(name, ()) if isinstance(slot, str)]
+    return found[:MAX_CONFIGURATIONS]
+
+
+@pytest.mark.skipif(not CORPUS.is_dir(), reason="corpus not available")
+@pytest.mark.parametrize("system", ["kobuki", "husky"])
+def test_corpus_restriction_equals_resolution(system: str) -> None:
+    workspace = discover([CORPUS / system], deps=[CORPUS / "_external"], ros_package_path="")
+    analysis = Analysis(workspace)
+    packages = workspace.packages.values()
+    interfaces = extract_interfaces(packages)
+    add_catalogue(interfaces, load_catalogue())
+    compared = 0
+    for file in workspace.launch_files:
+        model = analysis.model(file)
+        edges = model_edges(analysis.space, model, interfaces)
+        for args in _configurations(model):
+            resolution = resolve(analysis, [file], args)
+            if resolution.errors:
+                continue
+            kept = restrict(edges, _Restriction(analysis, model, args, {}).holds)
+            uses = [(e.node, e.role, e.name, e.type) for e in kept]
+            assert graph_json(uses) == resolved_graph(resolution.nodes, interfaces), (file, args)
+            compared += bool(kept)
+    assert compared >= 10  # configurations with a graph were compared
+
+
+@pytest.mark.parametrize(
+    ("namespace", "name", "written", "resolved"),
+    [
+        ("/", "n", "x", "/x"),
+        ("/a/", "n", "x", "/a/x"),
+        ("/a/", "n", "~x", "/a/n/x"),
+        ("/a/", "n", "/x", "/x"),
+        ("/a/", "n", "~x/y/", "/a/n/x/y"),
+    ],
+)
+def test_names_resolve_as_the_node_does(
+    namespace: str, name: str, written: str, resolved: str
+) -> None:
+    assert LaunchedNode("p", "t", namespace, name, "", ()).resolve(written) == resolved
+
+
+def test_a_nodelet_runs_its_class() -> None:
+    def unit(args: str) -> tuple[str, str] | None:
+        return LaunchedNode("nodelet", "nodelet", "/", "n", args, ()).unit()
+
+    assert unit("load kobuki_node/KobukiNodelet manager") == ("", "kobuki_node/KobukiNodelet")
+    assert unit("standalone pkg/Class") == ("", "pkg/Class")
+    assert unit("manager") is None
+    assert LaunchedNode("pkg", "exe", "/", "n", "", ()).unit() == ("pkg", "exe")
