@@ -77,7 +77,7 @@ def _expected(
 def test_conditions_agree_with_every_configuration(ws: LaunchWorkspace) -> None:
     analysis, file, interfaces = _setup(ws)
     model = analysis.model(file)
-    findings = check_model(analysis.space, model, interfaces)
+    findings = check_model(analysis.space, model, interfaces, analysis.workspace.confinement())
     kinds = {f.check for f in findings}
     assert kinds == set(Check) - {Check.SYMBOLIC_NAME}  # every check has a case here
     for values in itertools.product(["true", "false"], repeat=len(ARGS)):
