@@ -16,8 +16,8 @@ from dataclasses import dataclass
 from enum import StrEnum
 from itertools import count
 
-from rosvar.analyses.conflicts import Clash
-from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.conflicts import Clash, DeclarationKind
+from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.lowering import Lowering
 from rosvar.logic.bdd import BDD, and_exists, conjoin, walked_support
@@ -88,7 +88,7 @@ class Conflicts:
         block_of = {v: n for n, (variables, _formula) in enumerate(blocks) for v in variables}
         groups: dict[tuple[str, str], list[Clash]] = {}
         for clash in model.clashes:
-            if clash.first.file != clash.second.file or clash.kind == "node":
+            if clash.first.file != clash.second.file or clash.kind == DeclarationKind.NODE:
                 key = tuple(sorted(clash.files))
                 groups.setdefault(key, []).append(clash)  # type: ignore[arg-type]
         features = {f.file: f for f in model.files}
@@ -230,7 +230,7 @@ def _blocks(
     block_of = {v: n for n, (variables, _formula, _files) in blocks.items() for v in variables}
     left_out: set[str] = set()  # variables of the files whose requires are left out
     for constraint, formula in zip(model.constraints, solver.constraints, strict=True):
-        if constraint.kind != "requires" or component_of[constraint.files[0]] in large:
+        if constraint.kind != ConstraintKind.REQUIRES or component_of[constraint.files[0]] in large:
             continue
         support = walked_support(formula)
         if support & left_out:

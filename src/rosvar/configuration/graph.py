@@ -14,9 +14,10 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from enum import StrEnum
 from typing import cast
 
-from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.resolve import ResolutionError, test_fields
 from rosvar.configuration.derivation import Presence
@@ -27,6 +28,7 @@ from rosvar.interpreter.model import (
     LaunchModel,
     NodeDecl,
     ParamDecl,
+    ParamSource,
     Raw,
     YamlDecl,
 )
@@ -68,6 +70,13 @@ class Values:
             return str(raw)
 
 
+class PartKind(StrEnum):
+    """What a node's part sets: a remap or an environment variable."""
+
+    REMAP = "remap"
+    ENV = "env"
+
+
 @dataclass(frozen=True)
 class Part:
     """A remap or environment setting that only some configurations of its node have.
@@ -81,11 +90,21 @@ class Part:
     bounds: Bounds  # solver manager
 
 
+class ElementKind(StrEnum):
+    """What an element of the graph is; each kind is a list of the shown graph."""
+
+    NODE = "node"
+    TEST = "test"
+    PARAM = "param"
+    TOPIC = "topic"
+    ERROR = "error"
+
+
 @dataclass
 class Element:
     """One variant of a node, param, topic or error, with its presence condition."""
 
-    kind: str  # "node", "test", "param", "topic", "error"
+    kind: ElementKind
     id: str
     entry: str  # the entry launch file (path) whose model holds it
     condition: BDD  # analysis manager, fixed atoms substituted
@@ -125,11 +144,16 @@ class VariationalGraph:
         for (entry, name), (nodes, condition, raws) in sorted(self._topics.items()):
             if not entry:
                 self._add(
-                    "topic", f"topic:{name}", "", condition, _static({"name": name}), nodes=nodes
+                    ElementKind.TOPIC,
+                    f"topic:{name}",
+                    "",
+                    condition,
+                    _static({"name": name}),
+                    nodes=nodes,
                 )
                 continue
             self._add(
-                "topic",
+                ElementKind.TOPIC,
                 f"topic:{file_ids[entry]}|{name}",
                 entry,
                 condition,
@@ -138,12 +162,9 @@ class VariationalGraph:
                 nodes=nodes,
             )
 
-    def by_kind(self, kind: str) -> Iterable[Element]:
-        return (e for e in self.elements if e.kind == kind)
-
     def _add(
         self,
-        kind: str,
+        kind: ElementKind,
         id_: str,
         entry: str,
         condition: BDD,
@@ -176,7 +197,7 @@ class VariationalGraph:
             if isinstance(param, ParamDecl):
                 for branch, (name, value) in combine([param.name, param.value], tuple):
                     self._add(
-                        "param",
+                        ElementKind.PARAM,
                         new_id(param.location),
                         model.file,
                         condition & branch,
@@ -185,7 +206,7 @@ class VariationalGraph:
                     )
             else:
                 self._add(
-                    "param",
+                    ElementKind.PARAM,
                     new_id(param.location),
                     model.file,
                     condition,
@@ -199,7 +220,7 @@ class VariationalGraph:
                 target = Values({}, None).text(include.file.values()[0]) if include.file else ""
                 message = f"cannot load included file {target}"
                 self._add(
-                    "error",
+                    ElementKind.ERROR,
                     new_id(include.location),
                     model.file,
                     launched & include.condition,
@@ -213,7 +234,7 @@ class VariationalGraph:
                 )
         for error in model.errors:
             self._add(
-                "error",
+                ElementKind.ERROR,
                 new_id(error.location),
                 model.file,
                 launched & error.condition,
@@ -234,7 +255,7 @@ class VariationalGraph:
             )
             env = self._parted(condition, [(e.condition, e.name, e.value) for e in node.env], parts)
             element = self._add(
-                "test" if node.is_test else "node",
+                ElementKind.TEST if node.is_test else ElementKind.NODE,
                 new_id(node.location),
                 model.file,
                 condition,
@@ -283,7 +304,7 @@ def _launched(model: FeatureModel) -> dict[str, BDD]:
     by_id = {f.id: f for f in model.files}
     launched = {f.file: f.variable for f in model.files}
     for constraint in model.constraints:
-        if constraint.kind != "requires":
+        if constraint.kind != ConstraintKind.REQUIRES:
             continue
         source, target = (by_id[i] for i in constraint.files)
         launched[target.file] &= ~(source.variable & constraint.condition)
@@ -340,14 +361,14 @@ def _node_renderer(
         undetermined: list[Fields] = []
         mapping: dict[str, str] = {}
         for remap in remaps:
-            pair = _present("remap", remap, values, parts, undetermined)
+            pair = _present(PartKind.REMAP, remap, values, parts, undetermined)
             if pair is not None:
                 key = pair[0] or ""
                 mapping.pop(key, None)
                 mapping[key] = pair[1] or ""
         settings = []
         for setting in env:
-            pair = _present("env", setting, values, parts, undetermined)
+            pair = _present(PartKind.ENV, setting, values, parts, undetermined)
             if pair is not None:
                 settings.append(list(pair))
         namespace = text.get("namespace") or "/"
@@ -378,7 +399,11 @@ def _node_renderer(
 
 
 def _present(
-    kind: str, setting: _Setting, values: Values, parts: Sequence[Shown], undetermined: list[Fields]
+    kind: PartKind,
+    setting: _Setting,
+    values: Values,
+    parts: Sequence[Shown],
+    undetermined: list[Fields],
 ) -> tuple[str | None, str | None] | None:
     """A setting's strings where the step has it, else None; an undetermined one is added to
     ``undetermined`` with its condition."""
@@ -396,7 +421,7 @@ def _param_renderer(name: object, value: object, location: Location) -> Render:
         if isinstance(value, DeferredValue):
             concrete = values.text(value.raw) or ""
             try:
-                shown = json_value(param_value("value", concrete, value.ptype))
+                shown = json_value(param_value(ParamSource.VALUE, concrete, value.ptype))
             except (ValueError, OSError):
                 shown = concrete
         elif is_term(value):

@@ -338,12 +338,13 @@ def cmd_configure(options: argparse.Namespace) -> int:
 
 def _print_state(state: ConfigurationState) -> None:
     """The summary of a configuration step, for people."""
+    from rosvar.analyses.feature_model.model import FeatureKind
     from rosvar.configuration.derivation import Presence
     from rosvar.configuration.engine import Selection
     from rosvar.outputs.describe import count_text
 
     features = state.features.values()
-    files = [(k, f) for k, f in state.features.items() if f.kind == "file"]
+    files = [(k, f) for k, f in state.features.items() if f.kind == FeatureKind.FILE]
     print(
         f"{len(state.features) - state.unselected} of {len(state.features)} features decided, "
         f"{state.unselected} unselected; {count_text(state.configurations)} valid configurations"
@@ -378,7 +379,7 @@ def _print_state(state: ConfigurationState) -> None:
     open_args = [
         k
         for k, f in state.features.items()
-        if f.kind == "arg"
+        if f.kind == FeatureKind.ARG
         and f.state == Selection.SELECTED
         and any(v.parent == k and v.state == Selection.UNSELECTED for v in features)
     ]
