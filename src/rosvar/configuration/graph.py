@@ -83,8 +83,8 @@ class Part:
 
     Judged at each step like an element (its condition includes its node's), not
     multiplied into the node's variants: conditional remaps on independent args make a
-    variant per combination (44 of them on one node of armadillo's rtabmap.launch,
-    billions of variants), while a part costs one more condition to judge."""
+    variant per combination, exponentially many in the remaps, while a part costs one more
+    condition to judge."""
 
     condition: BDD  # analysis manager, fixed atoms substituted
     bounds: Bounds  # solver manager

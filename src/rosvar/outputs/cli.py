@@ -392,8 +392,8 @@ SHOWN_NAMES = 3
 
 
 def _clashing(names: Sequence[str]) -> str:
-    """``node /x, param /x/a and 41 params``: the nodes and a few params (a clash of two
-    moveit configurations lists hundreds of params; --json has them all)."""
+    """``node /x, param /x/a and 41 params``: the nodes and a few params (two configurations
+    of one robot share most of their params; --json has them all)."""
     nodes = [n for n in names if n.startswith("node ")]
     params = [n for n in names if not n.startswith("node ")]
     shown = nodes + params[: max(0, SHOWN_NAMES - len(nodes))]
