@@ -2,7 +2,12 @@
 
 Exit codes: 0 success; 1 the analysed launch configuration fails (errors or
 conflicts, ``resolve``) or a choice was refused (``configure``); 2 usage error;
-3 nothing to analyse (no launch file found, a ``--launch`` file missing).
+3 nothing to analyse (no launch file found, a ``--launch`` file missing); 4 the feature
+model is too large to solve and the command needs its solver.
+
+One module, past the usual length: it is the whole command-line surface — each command's
+options, help, examples, printing and exit code, read and changed together — and each
+command stays a short function that imports its analyses only when it runs.
 """
 
 from __future__ import annotations
