@@ -7,7 +7,13 @@ import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from rosvar.analyses.conflicts import Occurrence, clashes, declared_occurrences, index
+from rosvar.analyses.conflicts import (
+    DeclarationKind,
+    Occurrence,
+    clashes,
+    declared_occurrences,
+    index,
+)
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.resolve import resolve
 from rosvar.diagnostics import Location
@@ -32,7 +38,7 @@ class Counted:
 def occurrences(space: ConditionSpace, names: list[str], calls: list[int]) -> list[Occurrence]:
     return [
         Occurrence(
-            "node",
+            DeclarationKind.NODE,
             name,
             f"/f{i}.launch",
             Location(f"/f{i}.launch", 1, 1),

@@ -9,6 +9,7 @@ import pytest
 
 from rosvar.analyses.feature_model.counting import CountedDiagram
 from rosvar.analyses.feature_model.extraction import extract
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.derivation import Derivation, Presence, PresenceVerdict
 from rosvar.configuration.lowering import Bounds
 from rosvar.logic.bdd import BDD
@@ -27,12 +28,17 @@ FILES = {
 }
 
 
-def test_decisions_agree_with_the_built_formula(ws: LaunchWorkspace) -> None:
+def derived(ws: LaunchWorkspace) -> tuple[FeatureModel, Derivation]:
+    """The model of ``FILES`` and its derivation."""
     for name, body in FILES.items():
         ws.launch(name, body)
     model = extract(ws.analysis())
+    return model, Derivation(model)
+
+
+def test_decisions_agree_with_the_built_formula(ws: LaunchWorkspace) -> None:
+    model, derivation = derived(ws)
     solver = model.solver
-    derivation = Derivation(model)
     manager, formula = solver.manager, solver.formula
     rng = random.Random(3)
     for _ in range(30):
@@ -73,10 +79,7 @@ def test_decisions_agree_with_the_built_formula(ws: LaunchWorkspace) -> None:
 def test_prepared_counts_are_those_of_every_component(
     ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    for name, body in FILES.items():
-        ws.launch(name, body)
-    model = extract(ws.analysis())
-    derivation = Derivation(model)
+    model, derivation = derived(ws)
     prepared: list[CountedDiagram] = []
     monkeypatch.setattr(CountedDiagram, "prepare", lambda diagram: prepared.append(diagram))
     derivation.prepare_counts()
@@ -89,11 +92,8 @@ def test_witnesses_of_conjunctions_are_valid_configurations(ws: LaunchWorkspace)
     """Variants' conditions are conjunctions of a file and arg values: their examples are
     mostly made from earlier ones without the solver (``_mutated``), and each must still be
     a valid configuration that shows its verdict."""
-    for name, body in FILES.items():
-        ws.launch(name, body)
-    model = extract(ws.analysis())
+    model, derivation = derived(ws)
     solver = model.solver
-    derivation = Derivation(model)
     manager, formula = solver.manager, solver.formula
     position = derivation.position
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections import defaultdict
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
+from enum import StrEnum
 
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, anon_pattern
@@ -22,11 +23,18 @@ from rosvar.ros import names
 from rosvar.workspace.paths import real_path
 
 
+class DeclarationKind(StrEnum):
+    """What a clashing name names: nodes and parameters live in separate name spaces."""
+
+    NODE = "node"
+    PARAM = "param"
+
+
 @dataclass(frozen=True)
 class Occurrence:
     """A declaration in ``file`` naming ``name`` when ``condition`` (over ``file``'s args) holds."""
 
-    kind: str  # "node" or "param"
+    kind: DeclarationKind
     name: str
     file: str
     location: Location
@@ -38,7 +46,7 @@ class Occurrence:
 class Clash:
     """Two different declarations with one name; ``condition`` is when both are present."""
 
-    kind: str
+    kind: DeclarationKind
     name: str
     first: Occurrence
     second: Occurrence
@@ -79,7 +87,11 @@ def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
             if isinstance(param_name, str):
                 found.append(
                     Occurrence(
-                        "param", param_name, model.file, param.location, param.condition & condition
+                        DeclarationKind.PARAM,
+                        param_name,
+                        model.file,
+                        param.location,
+                        param.condition & condition,
                     )
                 )
     if anon is None:
@@ -91,7 +103,9 @@ def node_occurrences(model: LaunchModel, node: NodeDecl) -> Iterator[Occurrence]
     full = combine([node.fields["namespace"], node.fields["name"]], _node_name)
     for condition, name in full:
         if name is not None:
-            yield Occurrence("node", name, model.file, node.location, node.condition & condition)
+            yield Occurrence(
+                DeclarationKind.NODE, name, model.file, node.location, node.condition & condition
+            )
 
 
 def repeated_inclusions(model: LaunchModel) -> list[Clash]:
@@ -112,7 +126,9 @@ def repeated_inclusions(model: LaunchModel) -> list[Clash]:
             for first in earlier:
                 both = first.condition & occurrence.condition
                 if both != both.bdd.false:
-                    found.append(Clash("node", occurrence.name, first, occurrence, both))
+                    found.append(
+                        Clash(DeclarationKind.NODE, occurrence.name, first, occurrence, both)
+                    )
             earlier.append(occurrence)
     return found
 
@@ -136,7 +152,7 @@ def index(models: Iterable[LaunchModel]) -> dict[tuple[str, str], list[Occurrenc
 def clashes(buckets: Mapping[tuple[str, str], Sequence[Occurrence]]) -> list[Clash]:
     """Every pair of distinct declarations sharing a bucket and possibly present together."""
     found: list[Clash] = []
-    for (kind, name), occurrences in buckets.items():
+    for (_, name), occurrences in buckets.items():
         if len(occurrences) < 2:
             continue
         for i, first in enumerate(occurrences):
@@ -147,5 +163,5 @@ def clashes(buckets: Mapping[tuple[str, str], Sequence[Occurrence]]) -> list[Cla
                     continue
                 both = first.condition & second.condition
                 if both != both.bdd.false:
-                    found.append(Clash(kind, name, first, second, both))
+                    found.append(Clash(first.kind, name, first, second, both))
     return found

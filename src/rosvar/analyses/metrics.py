@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import asdict, dataclass
 
-from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import load_launch_file
 from rosvar.interpreter.workspace_models import Analysis
@@ -70,7 +70,7 @@ def compute(analysis: Analysis, model: FeatureModel) -> Metrics:
     files = [f.file for f in model.files]
     in_conflict: dict[str, list[bool]] = {}
     for constraint in model.constraints:
-        if constraint.kind != "excludes":
+        if constraint.kind != ConstraintKind.EXCLUDES:
             continue
         for file_id in constraint.files:
             in_conflict.setdefault(file_id, []).append(constraint.unconditional)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from enum import StrEnum
 
 from rosvar.analyses.json_values import json_value
 from rosvar.diagnostics import Location
@@ -36,11 +37,17 @@ class ResolutionError(Exception):
         self.location = location
 
 
+class ConflictKind(StrEnum):
+    """Why roslaunch cannot have two elements together."""
+
+    NODE_NAME = "node-name"  # two nodes with one full name
+
+
 @dataclass
 class Conflict:
     """Two elements of one configuration that roslaunch cannot both have."""
 
-    kind: str
+    kind: ConflictKind
     name: str
     locations: list[Location]
 
@@ -209,7 +216,9 @@ def _restrict(
             continue
         full = str(entry["name"])
         if full in seen:
-            result.conflicts.append(Conflict("node-name", full, [seen[full], node.location]))
+            result.conflicts.append(
+                Conflict(ConflictKind.NODE_NAME, full, [seen[full], node.location])
+            )
         else:
             seen[full] = node.location
         result.nodes.append(entry)

@@ -11,12 +11,15 @@ import difflib
 import os
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
-from typing import Literal
 
-from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.model import (
+    ArgFeature,
+    FeatureKind,
+    FeatureModel,
+    FileFeature,
+    ValueFeature,
+)
 from rosvar.configuration.choices import ChoiceError
-
-Kind = Literal["file", "arg", "value"]
 
 
 @dataclass(frozen=True)
@@ -24,7 +27,7 @@ class Feature:
     """One feature; ``variable`` is its solver variable (an arg shares its file's)."""
 
     id: str
-    kind: Kind
+    kind: FeatureKind
     file: str
     arg: str | None
     value: str | None
@@ -64,15 +67,17 @@ class Catalog:
             self.files.append(FileEntry(file_id, file.file, file, variable))
             self._by_path[os.path.realpath(file.file)] = file_id
             self._by_path[file.id] = file_id  # as ``rosvar features`` prints it
-            self._add(Feature(file_id, "file", file_id, None, None, None, variable))
+            self._add(Feature(file_id, FeatureKind.FILE, file_id, None, None, None, variable))
             for arg in file.args:
                 arg_id = f"{file_id}:{arg.name}"
-                self._add(Feature(arg_id, "arg", file_id, arg.name, None, file_id, variable))
+                self._add(
+                    Feature(arg_id, FeatureKind.ARG, file_id, arg.name, None, file_id, variable)
+                )
                 values = []
                 for value in arg.values:
                     entry = Feature(
                         f"{arg_id}={value.value}",
-                        "value",
+                        FeatureKind.VALUE,
                         file_id,
                         arg.name,
                         value.value,
@@ -85,7 +90,7 @@ class Catalog:
 
     def _add(self, feature: Feature) -> None:
         self.features[feature.id] = feature
-        if feature.kind != "arg":
+        if feature.kind != FeatureKind.ARG:
             self.by_variable[feature.variable] = feature
 
     def __iter__(self) -> Iterator[Feature]:

@@ -16,8 +16,8 @@ from dataclasses import dataclass
 from enum import StrEnum
 from itertools import count
 
-from rosvar.analyses.conflicts import Clash
-from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.conflicts import Clash, DeclarationKind
+from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.lowering import Lowering
 from rosvar.logic.bdd import BDD, and_exists, conjoin, walked_support
@@ -25,8 +25,9 @@ from rosvar.logic.bdd import BDD, and_exists, conjoin, walked_support
 REQUIRES_LIMIT = 100_000
 """Nodes of a component's formula above which its requires are left out of clash judgements."""
 BLOCK_LIMIT = 20_000
-"""Nodes of a block's ``tree ∧ requires`` above which its requires are left out (the corpus's
-largest block has 2,886 nodes; a generated system of 100 files linked by includes, 127,000)."""
+"""Nodes of a block's ``tree ∧ requires`` above which its requires are left out: the corpus's
+blocks stay far below it, while files linked by includes make the diagram grow with their
+number, and every clash of those files would be conjoined with it (docs/configure.md)."""
 
 
 class Certainty(StrEnum):
@@ -88,7 +89,7 @@ class Conflicts:
         block_of = {v: n for n, (variables, _formula) in enumerate(blocks) for v in variables}
         groups: dict[tuple[str, str], list[Clash]] = {}
         for clash in model.clashes:
-            if clash.first.file != clash.second.file or clash.kind == "node":
+            if clash.first.file != clash.second.file or clash.kind == DeclarationKind.NODE:
                 key = tuple(sorted(clash.files))
                 groups.setdefault(key, []).append(clash)  # type: ignore[arg-type]
         features = {f.file: f for f in model.files}
@@ -187,9 +188,9 @@ class Conflicts:
 
         Asked as ``∃ pair.variables. within ∧ (u ∧ cube)`` (CUDD's and-abstract), which
         stops at the first path to TRUE and builds none of the conjunction's nodes: the
-        blocks' diagram reaches 20,000 nodes (``BLOCK_LIMIT``), and conjoining it with the
-        clash at build and with the choices at each step made as many new nodes each time
-        (most of the engine's construction and of a step on generated workspaces)."""
+        blocks' diagram may reach ``BLOCK_LIMIT`` nodes, and conjoining it with the clash at
+        build and with the choices at each step made as many new nodes each time, which
+        dominated the engine's construction and its steps on large workspaces."""
         cube = decisions.cubes[pair.component]  # its literals outside the blocks change nothing
         found = and_exists(pair.within, u & cube, pair.variables)
         return bool(found != self.manager.false)
@@ -230,7 +231,7 @@ def _blocks(
     block_of = {v: n for n, (variables, _formula, _files) in blocks.items() for v in variables}
     left_out: set[str] = set()  # variables of the files whose requires are left out
     for constraint, formula in zip(model.constraints, solver.constraints, strict=True):
-        if constraint.kind != "requires" or component_of[constraint.files[0]] in large:
+        if constraint.kind != ConstraintKind.REQUIRES or component_of[constraint.files[0]] in large:
             continue
         support = walked_support(formula)
         if support & left_out:

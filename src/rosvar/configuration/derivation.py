@@ -21,6 +21,11 @@ witness that agrees) and only looks at the variables still open in the literal's
 component. Repairs also carry most undetermined verdicts from one step to the next
 without a question to the solver. The BDDs of the components are only restricted to
 count configurations.
+
+One module, past the usual length: witnesses, repairs and questions are one algorithm over
+one state (each component's witnesses as bit masks), and each part is only correct with
+what the others keep true of it (a cover that shows every open variable, repairs that stay
+valid configurations).
 """
 
 from __future__ import annotations

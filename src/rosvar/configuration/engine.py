@@ -14,7 +14,7 @@ from dataclasses import dataclass, field, replace
 from enum import StrEnum
 from functools import cached_property
 
-from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.feature_model.model import FeatureKind, FeatureModel
 from rosvar.analyses.feature_model.operations import explain
 from rosvar.configuration.catalog import Catalog, Feature
 from rosvar.configuration.choices import Action, ChoiceError, Refusal, UserChoice
@@ -55,7 +55,7 @@ class FeatureState:
     """One feature's state; the engine hands out one object per feature and state, so
     states share them and an unchanged feature is the same object (and JSON dict)."""
 
-    kind: str
+    kind: FeatureKind
     file: str
     arg: str | None
     value: str | None
@@ -292,7 +292,9 @@ class Configurator:
                 return added
             # values of the files in the product first, then files (deselecting one may
             # force values elsewhere), then values of files chosen since
-            open_.sort(key=lambda f: 1 if f.kind == "file" else 0 if self._in(f, state) else 2)
+            open_.sort(
+                key=lambda f: 1 if f.kind == FeatureKind.FILE else 0 if self._in(f, state) else 2
+            )
             added.append(self._default_choice(open_[0], state))
 
     @staticmethod
@@ -300,9 +302,9 @@ class Configurator:
         return state.features[feature.file].state == Selection.SELECTED
 
     def _default_choice(self, feature: Feature, state: ConfigurationState) -> UserChoice:
-        if feature.kind == "file":
+        if feature.kind == FeatureKind.FILE:
             return UserChoice(Action.DESELECT, feature.id)
-        arg = feature.id if feature.kind == "arg" else str(feature.parent)
+        arg = feature.id if feature.kind == FeatureKind.ARG else str(feature.parent)
         values = self.catalog.values_of(arg)
         possible = [f for f, _v in values if state.features[f.id].state != Selection.DESELECTED]
         defaults = [f for f, v in values if v.default and f in possible]
@@ -314,7 +316,7 @@ class Configurator:
             return _Effective(
                 choice, frozenset({feature.id}), feature.variable, choice.action == Action.SELECT
             )
-        if feature.kind != "arg" or choice.value is None:
+        if feature.kind != FeatureKind.ARG or choice.value is None:
             raise ChoiceError(f"set expects FILE:ARG=VALUE, got {choice.feature!r}")
         values = self.catalog.values_of(feature.id)
         for entry, value in values:

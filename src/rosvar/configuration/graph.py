@@ -14,10 +14,11 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from enum import StrEnum
 from typing import cast
 
 from rosvar.analyses.communication import LaunchedNode, find_interface, remapped
-from rosvar.analyses.feature_model.model import FeatureModel
+from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.resolve import ResolutionError, test_fields
 from rosvar.configuration.derivation import Presence
@@ -29,6 +30,7 @@ from rosvar.interpreter.model import (
     LaunchModel,
     NodeDecl,
     ParamDecl,
+    ParamSource,
     Raw,
     YamlDecl,
 )
@@ -71,24 +73,41 @@ class Values:
             return str(raw)
 
 
+class PartKind(StrEnum):
+    """What a node's part sets: a remap or an environment variable."""
+
+    REMAP = "remap"
+    ENV = "env"
+
+
 @dataclass(frozen=True)
 class Part:
     """A remap or environment setting that only some configurations of its node have.
 
     Judged at each step like an element (its condition includes its node's), not
     multiplied into the node's variants: conditional remaps on independent args make a
-    variant per combination (44 of them on one node of armadillo's rtabmap.launch,
-    billions of variants), while a part costs one more condition to judge."""
+    variant per combination, exponentially many in the remaps, while a part costs one more
+    condition to judge."""
 
     condition: BDD  # analysis manager, fixed atoms substituted
     bounds: Bounds  # solver manager
+
+
+class ElementKind(StrEnum):
+    """What an element of the graph is; each kind is a list of the shown graph."""
+
+    NODE = "node"
+    TEST = "test"
+    PARAM = "param"
+    TOPIC = "topic"
+    ERROR = "error"
 
 
 @dataclass
 class Element:
     """One variant of a node, param, topic or error, with its presence condition."""
 
-    kind: str  # "node", "test", "param", "topic", "error"
+    kind: ElementKind
     id: str
     entry: str  # the entry launch file (path) whose model holds it
     condition: BDD  # analysis manager, fixed atoms substituted
@@ -140,10 +159,18 @@ class VariationalGraph:
                     _static({"name": name}) if interfaces is None else _edges_renderer(name, edges)
                 )
                 parts = tuple(Part(when, bounds) for _n, _r, _t, when, bounds in edges)
-                self._add("topic", f"topic:{name}", "", condition, render, nodes=nodes, parts=parts)
+                self._add(
+                    ElementKind.TOPIC,
+                    f"topic:{name}",
+                    "",
+                    condition,
+                    render,
+                    nodes=nodes,
+                    parts=parts,
+                )
                 continue
             self._add(
-                "topic",
+                ElementKind.TOPIC,
                 f"topic:{file_ids[entry]}|{name}",
                 entry,
                 condition,
@@ -154,12 +181,9 @@ class VariationalGraph:
         self._topics.clear()
         self._shadows.clear()  # only the build's products need them
 
-    def by_kind(self, kind: str) -> Iterable[Element]:
-        return (e for e in self.elements if e.kind == kind)
-
     def _add(
         self,
-        kind: str,
+        kind: ElementKind,
         id_: str | Callable[[], str],
         entry: str,
         condition: BDD,
@@ -211,7 +235,7 @@ class VariationalGraph:
             if isinstance(param, ParamDecl):
                 for variant, (name, value) in self._variants(condition, [param.name, param.value]):
                     self._add(
-                        "param",
+                        ElementKind.PARAM,
                         numbered(param.location),
                         model.file,
                         variant,
@@ -220,7 +244,7 @@ class VariationalGraph:
                     )
             else:
                 self._add(
-                    "param",
+                    ElementKind.PARAM,
                     numbered(param.location),
                     model.file,
                     condition,
@@ -234,7 +258,7 @@ class VariationalGraph:
                 target = Values({}, None).text(include.file.values()[0]) if include.file else ""
                 message = f"cannot load included file {target}"
                 self._add(
-                    "error",
+                    ElementKind.ERROR,
                     numbered(include.location),
                     model.file,
                     launched & fix(include.condition),
@@ -248,7 +272,7 @@ class VariationalGraph:
                 )
         for error in model.errors:
             self._add(
-                "error",
+                ElementKind.ERROR,
                 numbered(error.location),
                 model.file,
                 launched & fix(error.condition),
@@ -271,7 +295,7 @@ class VariationalGraph:
             )
             env = self._parted(condition, [(e.condition, e.name, e.value) for e in node.env], parts)
             element = self._add(
-                "test" if node.is_test else "node",
+                ElementKind.TEST if node.is_test else ElementKind.NODE,
                 new_id,
                 model.file,
                 condition,
@@ -395,7 +419,7 @@ def _launched(model: FeatureModel) -> dict[str, BDD]:
     by_id = {f.id: f for f in model.files}
     launched = {f.file: f.variable for f in model.files}
     for constraint in model.constraints:
-        if constraint.kind != "requires":
+        if constraint.kind != ConstraintKind.REQUIRES:
             continue
         source, target = (by_id[i] for i in constraint.files)
         launched[target.file] &= ~(source.variable & constraint.condition)
@@ -479,14 +503,14 @@ def _node_renderer(
         undetermined: list[Fields] = []
         mapping: dict[str, str] = {}
         for remap in remaps:
-            pair = _present("remap", remap, values, parts, undetermined)
+            pair = _present(PartKind.REMAP, remap, values, parts, undetermined)
             if pair is not None:
                 key = pair[0] or ""
                 mapping.pop(key, None)
                 mapping[key] = pair[1] or ""
         settings = []
         for setting in env:
-            pair = _present("env", setting, values, parts, undetermined)
+            pair = _present(PartKind.ENV, setting, values, parts, undetermined)
             if pair is not None:
                 settings.append(list(pair))
         namespace = text.get("namespace") or "/"
@@ -517,7 +541,11 @@ def _node_renderer(
 
 
 def _present(
-    kind: str, setting: _Setting, values: Values, parts: Sequence[Shown], undetermined: list[Fields]
+    kind: PartKind,
+    setting: _Setting,
+    values: Values,
+    parts: Sequence[Shown],
+    undetermined: list[Fields],
 ) -> tuple[str | None, str | None] | None:
     """A setting's strings where the step has it, else None; an undetermined one is added to
     ``undetermined`` with its condition."""
@@ -537,7 +565,9 @@ def _param_renderer(
         if isinstance(value, DeferredValue):
             concrete = values.text(value.raw) or ""
             try:
-                shown = json_value(param_value("value", concrete, value.ptype, confinement))
+                shown = json_value(
+                    param_value(ParamSource.VALUE, concrete, value.ptype, confinement)
+                )
             except (ValueError, OSError):
                 shown = concrete
         elif is_term(value):

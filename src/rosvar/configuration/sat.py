@@ -1,11 +1,11 @@
 """The feature model as clauses of an incremental SAT solver: valid configurations on demand.
 
 The engine asks "is there a valid configuration under the user literals where ``g`` holds?"
-thousands of times, and an answer "yes" is worth most with an example: a new witness, which
+again and again, and an answer "yes" is worth most with an example: a new witness, which
 settles many other questions. A BDD answers the first part only after restricting the
-component's formula by the literals (a diagram of 10⁵ nodes on Husky), while an
-incremental SAT solver takes the user literals as *assumptions* and returns a model in a
-tenth of a millisecond, whatever was asked before.
+component's formula by the literals (a new diagram per question, as large as the formula),
+while an incremental SAT solver takes the user literals as *assumptions*: it builds nothing
+per question and keeps what it learnt, whatever was asked before.
 
 Every variable the solver assigns costs time in every call, so the clauses are kept over
 the feature variables alone where they can be: the feature tree is split into one part per
@@ -36,7 +36,8 @@ from rosvar.logic.bdd import (
 
 BACKEND = "glucose4"
 """The solver pysat drives: it follows preferred phases (CaDiCaL 1.9.5 through pysat does
-not), which makes a model show many suspects open at once; the fastest of those on Husky."""
+not), which makes a model show many suspects open at once; of those that do, the fastest on
+the corpus (docs/performance.md)."""
 PATHS = 256
 """Paths to FALSE up to which a diagram becomes clauses of its own; else Tseitin's."""
 
@@ -52,8 +53,8 @@ class Sat:
     on in the solver's order, so a model shifted by ``offset`` is a configuration's bits.
 
     The engine keeps one per component (``per_component``): a question about one
-    component then assigns its variables only, not the whole workspace's (on 2,000
-    generated files, 17,000 variables per call, and as many calls as files).
+    component then assigns its variables only, not the whole workspace's: the engine asks
+    about every file, so one solver for all would make its construction quadratic.
     """
 
     def __init__(self, manager: Manager, variables: Sequence[str], offset: int, parts: list[BDD]):

@@ -16,7 +16,7 @@ from itertools import accumulate, chain
 from rosvar.configuration.catalog import Catalog, FileEntry
 from rosvar.configuration.conflicts import Conflicts, ConflictState
 from rosvar.configuration.derivation import Decisions, Derivation, Presence
-from rosvar.configuration.graph import Element, Fields, Shown, Values, VariationalGraph
+from rosvar.configuration.graph import Element, ElementKind, Fields, Shown, Values, VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.presence import Judged, Judgement, Presences, Typed
@@ -98,7 +98,7 @@ class Views:
         self._paths = {entry.path: entry for entry in catalog.files}
         self._files = {entry.id: entry for entry in catalog.files}
         self._reading: dict[str, list[int]] = {}  # value variable or arg id → elements
-        self._of_kind: dict[str, list[int]] = {}
+        self._of_kind: dict[ElementKind, list[int]] = {}
         for index, element in enumerate(graph.elements):
             self._of_kind.setdefault(element.kind, []).append(index)
             if not element.inputs:
@@ -177,7 +177,7 @@ class Views:
             entries = list(before.entries)
             again = self._rerendered(decisions, texts, before, presences)
         values: dict[str, Values] = {}
-        moved: dict[str, list[int]] = {}  # per kind: the elements rendered anew
+        moved: dict[ElementKind, list[int]] = {}  # per kind: the elements rendered anew
         for index in again:  # in graph order: a topic comes after its nodes
             element = self.graph.elements[index]
             judged = presences.verdicts[self.presences.of_element[index]]
@@ -190,7 +190,7 @@ class Views:
                 if entries[n] and entries[n][0]["presence"] != Presence.ABSENT
             )
             found = self._element_entries(
-                element, judged, parts, values, users if element.kind == "topic" else ()
+                element, judged, parts, values, users if element.kind == ElementKind.TOPIC else ()
             )
             if found is not entries[index]:
                 moved.setdefault(element.kind, []).append(index)
@@ -200,7 +200,10 @@ class Views:
         return View(decisions, texts, typed, presences, entries, starts, conflicts, graph)
 
     def _lists(
-        self, entries: list[list[Fields]], before: View | None, moved: Mapping[str, list[int]]
+        self,
+        entries: list[list[Fields]],
+        before: View | None,
+        moved: Mapping[ElementKind, list[int]],
     ) -> tuple[dict[str, list[Fields]], list[int]]:
         """Each kind's list of entries, and where each element's start in it. A kind whose
         elements rendered anew kept their number of entries is the earlier list with those
@@ -248,7 +251,7 @@ class Views:
             if texts.get(arg) != before.texts.get(arg):
                 again.update(self._reading.get(arg, ()))
         for index in list(again):
-            if self.graph.elements[index].kind != "topic":
+            if self.graph.elements[index].kind != ElementKind.TOPIC:
                 again.update(self._users.get(index, ()))
         return sorted(again)
 
@@ -285,7 +288,7 @@ class Views:
         state that shows them (a session's later clicks, and other sessions, meet them
         again)."""
         presence, condition = judged.shown
-        if presence == Presence.ABSENT and element.kind == "error":
+        if presence == Presence.ABSENT and element.kind == ElementKind.ERROR:
             return []
         given = values[element.entry] if presence != Presence.ABSENT and element.inputs else None
         strings = frozenset((i, given.concrete.get(i)) for i in element.inputs) if given else None
@@ -293,7 +296,7 @@ class Views:
         entries = self._entries.get(key)
         if entries is None:
             shown = self._fields(element, given, strings, parts)
-            extra: Fields = {"nodes": list(users)} if element.kind == "topic" else {}
+            extra: Fields = {"nodes": list(users)} if element.kind == ElementKind.TOPIC else {}
             entries = self._entries[key] = [
                 {
                     **fields,

@@ -16,7 +16,7 @@ from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import Snapshot
 from rosvar.interpreter.lifted import apply, lift
-from rosvar.interpreter.model import Decision, ErrorEvent, LaunchModel, Raw
+from rosvar.interpreter.model import Decision, ErrorEvent, Guard, LaunchModel, Raw
 from rosvar.interpreter.scope import MISSING, ArgValue, Scope
 from rosvar.interpreter.substitution import Substituter
 from rosvar.logic.bdd import BDD
@@ -308,7 +308,7 @@ class Interpretation:
             )
             return self.space.false
         text = if_text if if_text is not None else unless_text
-        label = "if" if if_text is not None else "unless"
+        label = Guard.IF if if_text is not None else Guard.UNLESS
         value = self.resolve(text, scope, f"<{entity.tag}> attribute '{label}'")
         assert value is not None
         true = self.truth(value, f"<{entity.tag}> attribute '{label}'")

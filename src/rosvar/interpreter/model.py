@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 from collections.abc import Collection
 from dataclasses import dataclass, field
+from enum import StrEnum
 
 from rosvar.diagnostics import Diagnostic, Location
 from rosvar.logic.bdd import BDD
@@ -25,13 +26,22 @@ Raw = str | Term
 """An attribute's string after substitution: concrete, or a term awaiting inputs."""
 
 
+class ParamSource(StrEnum):
+    """The ``<param>`` attribute that gives its value."""
+
+    VALUE = "value"
+    TEXTFILE = "textfile"
+    BINFILE = "binfile"
+    COMMAND = "command"  # its text is wrapped, never run
+
+
 @dataclass(frozen=True)
 class DeferredValue:
     """A ``<param>`` value whose string is a term: converted with ``ptype`` once known."""
 
     raw: Term
     ptype: str
-    kind: str = "value"  # or "command": its text is wrapped, never run
+    kind: ParamSource = ParamSource.VALUE  # or COMMAND: a file to read must be known at once
 
 
 @dataclass(frozen=True)
@@ -125,13 +135,20 @@ class IncludeDecl:
     resolved: bool
 
 
+class Guard(StrEnum):
+    """The attribute of a conditional tag."""
+
+    IF = "if"
+    UNLESS = "unless"
+
+
 @dataclass(slots=True)
 class Decision:
     """An ``if``/``unless`` roslaunch evaluated (on path ``condition``): true where ``outcome``."""
 
     condition: BDD
     location: Location
-    kind: str
+    kind: Guard
     outcome: BDD
 
 

@@ -1,7 +1,7 @@
 """The one door to ``dd`` and the CUDD library it wraps.
 
 Every other module uses BDDs through their operators (``& | ~``, ``==``) and ``dd``'s public
-methods (``var``, ``let``, ``dag_size``, …); whatever reaches further — creating a manager,
+methods (``var``, ``ite``, ``dag_size``, …); whatever reaches further — creating a manager,
 bounding its memory, CUDD's restrict and and-abstract, and every walk over the nodes
 (complement marks, children, levels) — is here, once: cofactors, supports, evaluation under
 an assignment, copies between managers, conjunction by levels, and the reading of a BDD's

@@ -2,7 +2,12 @@
 
 Exit codes: 0 success; 1 the analysed launch configuration fails (errors or
 conflicts, ``resolve``) or a choice was refused (``configure``); 2 usage error;
-3 nothing to analyse (no launch file found, a ``--launch`` file missing).
+3 nothing to analyse (no launch file found, a ``--launch`` file missing); 4 the feature
+model is too large to solve and the command needs its solver.
+
+One module, past the usual length: it is the whole command-line surface — each command's
+options, help, examples, printing and exit code, read and changed together — and each
+command stays a short function that imports its analyses only when it runs.
 """
 
 from __future__ import annotations
@@ -359,12 +364,13 @@ def cmd_configure(options: argparse.Namespace) -> int:
 
 def _print_state(state: ConfigurationState) -> None:
     """The summary of a configuration step, for people."""
+    from rosvar.analyses.feature_model.model import FeatureKind
     from rosvar.configuration.derivation import Presence
     from rosvar.configuration.engine import Selection
     from rosvar.outputs.describe import count_text
 
     features = state.features.values()
-    files = [(k, f) for k, f in state.features.items() if f.kind == "file"]
+    files = [(k, f) for k, f in state.features.items() if f.kind == FeatureKind.FILE]
     print(
         f"{len(state.features) - state.unselected} of {len(state.features)} features decided, "
         f"{state.unselected} unselected; {count_text(state.configurations)} valid configurations"
@@ -399,7 +405,7 @@ def _print_state(state: ConfigurationState) -> None:
     open_args = [
         k
         for k, f in state.features.items()
-        if f.kind == "arg"
+        if f.kind == FeatureKind.ARG
         and f.state == Selection.SELECTED
         and any(v.parent == k and v.state == Selection.UNSELECTED for v in features)
     ]
@@ -412,8 +418,8 @@ SHOWN_NAMES = 3
 
 
 def _clashing(names: Sequence[str]) -> str:
-    """``node /x, param /x/a and 41 params``: the nodes and a few params (a clash of two
-    moveit configurations lists hundreds of params; --json has them all)."""
+    """``node /x, param /x/a and 41 params``: the nodes and a few params (two configurations
+    of one robot share most of their params; --json has them all)."""
     nodes = [n for n in names if n.startswith("node ")]
     params = [n for n in names if not n.startswith("node ")]
     shown = nodes + params[: max(0, SHOWN_NAMES - len(nodes))]

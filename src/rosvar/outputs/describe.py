@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from rosvar.analyses.json_values import json_value
-from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
+from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl, ParamSource
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import OTHER, UNSET, Slot
 from rosvar.logic.terms import Apply, Hole
@@ -30,7 +30,7 @@ def _values(choice: Choice[object], model: LaunchModel) -> object:
 
 def _leaf(leaf: object) -> object:
     if isinstance(leaf, DeferredValue):
-        return f"__command__({leaf.raw})" if leaf.kind == "command" else str(leaf.raw)
+        return f"__command__({leaf.raw})" if leaf.kind == ParamSource.COMMAND else str(leaf.raw)
     if isinstance(leaf, Hole | Apply):
         return str(leaf)
     return json_value(leaf)

@@ -13,6 +13,7 @@ from rosvar.analyses.conflicts import Occurrence, index
 from rosvar.analyses.feature_model.model import (
     ArgFeature,
     Constraint,
+    ConstraintKind,
     FeatureModel,
     FileFeature,
     ModelTooLarge,
@@ -191,7 +192,7 @@ def extract(
                 unset = _given_by_include(space, target_feature) if products else space.true
                 requires.append(
                     Constraint(
-                        "requires",
+                        ConstraintKind.REQUIRES,
                         (source.id, target_feature.id),
                         ~(source.variable & when) | (target_feature.variable & unset),
                         when,

@@ -11,10 +11,17 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from enum import StrEnum
 from functools import cached_property
 from typing import TYPE_CHECKING
 
-from rosvar.analyses.conflicts import Clash, Occurrence, clashes, repeated_inclusions
+from rosvar.analyses.conflicts import (
+    Clash,
+    DeclarationKind,
+    Occurrence,
+    clashes,
+    repeated_inclusions,
+)
 from rosvar.diagnostics import Diagnostic, Location
 from rosvar.interpreter.model import LaunchModel
 from rosvar.logic.bdd import BDD
@@ -23,6 +30,14 @@ from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
 
 if TYPE_CHECKING:
     from rosvar.analyses.feature_model.solver import Solver
+
+
+class FeatureKind(StrEnum):
+    """A feature's level in the tree: a launch file, one of its args, one of an arg's values."""
+
+    FILE = "file"
+    ARG = "arg"
+    VALUE = "value"
 
 
 @dataclass
@@ -59,11 +74,18 @@ class FileFeature:
         return [name_of(self.variable)] + [name_of(v.variable) for a in self.args for v in a.values]
 
 
+class ConstraintKind(StrEnum):
+    """What a cross-tree constraint says: an include needs its file, clashing files exclude."""
+
+    REQUIRES = "requires"
+    EXCLUDES = "excludes"
+
+
 @dataclass
 class Constraint:
     """A cross-tree constraint: ``formula`` must hold; ``text`` says why, for people."""
 
-    kind: str  # "requires", "excludes", "loads"
+    kind: ConstraintKind
     files: tuple[str, ...]
     formula: BDD
     condition: BDD  # when it bites (include condition, clash condition)
@@ -113,7 +135,11 @@ class FeatureModel:
     @cached_property
     def internal(self) -> list[Clash]:
         """Clashes inside one file: two of its nodes, or one file included twice."""
-        found = [c for c in self.clashes if c.first.file == c.second.file and c.kind == "node"]
+        found = [
+            c
+            for c in self.clashes
+            if c.first.file == c.second.file and c.kind == DeclarationKind.NODE
+        ]
         return found + [c for model in self.launch_models for c in repeated_inclusions(model)]
 
     @cached_property
@@ -163,7 +189,7 @@ def _excludes(
         names = sorted({f"{c.kind} {c.name}" for c in pair_clashes})
         constraints.append(
             Constraint(
-                "excludes",
+                ConstraintKind.EXCLUDES,
                 (a.id, b.id),
                 ~(a.variable & b.variable & condition),
                 condition,

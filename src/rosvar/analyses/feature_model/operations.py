@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass
+from enum import StrEnum
 
 from rosvar.analyses.feature_model.model import FeatureModel, name_of, value_text
 from rosvar.analyses.feature_model.solver import Solver
@@ -24,10 +25,17 @@ def count_configurations(model: FeatureModel) -> int | None:
     return model.solver.count()
 
 
+class VerdictKind(StrEnum):
+    """Whether a feature is in every valid configuration (core) or in none (dead)."""
+
+    CORE = "core"
+    DEAD = "dead"
+
+
 @dataclass
 class FeatureVerdict:
     feature: str
-    kind: str  # "core" or "dead"
+    kind: VerdictKind
     because: list[str]
 
 
@@ -50,17 +58,21 @@ def core_and_dead(model: FeatureModel) -> list[FeatureVerdict]:
         dead_file = True not in values_of(variable)
         if dead_file:
             because = explain(model, variable)
-            verdicts.append(FeatureVerdict(file.id, "dead", because))
+            verdicts.append(FeatureVerdict(file.id, VerdictKind.DEAD, because))
         elif False not in values_of(variable):
-            verdicts.append(FeatureVerdict(file.id, "core", explain(model, ~variable)))
+            verdicts.append(FeatureVerdict(file.id, VerdictKind.CORE, explain(model, ~variable)))
         for value in (v for arg in file.args for v in arg.values):
             variable = solver.var(value.variable)
             if dead_file:
-                verdicts.append(FeatureVerdict(value.id, "dead", because))
+                verdicts.append(FeatureVerdict(value.id, VerdictKind.DEAD, because))
             elif True not in values_of(variable):
-                verdicts.append(FeatureVerdict(value.id, "dead", explain(model, variable)))
+                verdicts.append(
+                    FeatureVerdict(value.id, VerdictKind.DEAD, explain(model, variable))
+                )
             elif False not in values_of(variable):
-                verdicts.append(FeatureVerdict(value.id, "core", explain(model, ~variable)))
+                verdicts.append(
+                    FeatureVerdict(value.id, VerdictKind.CORE, explain(model, ~variable))
+                )
     return verdicts
 
 

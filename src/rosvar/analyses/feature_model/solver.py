@@ -21,6 +21,7 @@ from rosvar.logic.bdd import (
     BDD,
     Manager,
     Weight,
+    cofactor,
     conjoin,
     conjoin_within,
     new_manager,
@@ -209,16 +210,13 @@ class Solver:
     def restrict(self, choices: Mapping[str, bool]) -> list[BDD]:
         """Each component's formula under ``choices`` (variable name → value).
 
-        Each component gets only its own choices: ``dd``'s ``let`` costs as much as
-        the cube it is given, and untouched components are returned as they are.
+        Each component gets only its own choices: a cofactor costs as much as the cube
+        it is given, and untouched components are returned as they are.
         """
         own: list[dict[str, bool]] = [{} for _ in self.components]
         for name, value in choices.items():
             own[self.component_of[name]][name] = value
-        return [
-            self.manager.let(mine, c.formula) if mine else c.formula
-            for c, mine in zip(self.components, own, strict=True)
-        ]
+        return [cofactor(c.formula, mine) for c, mine in zip(self.components, own, strict=True)]
 
     def count(self, choices: Mapping[str, bool] | None = None) -> int:
         """Valid configurations (agreeing with ``choices``), exactly: the product of the

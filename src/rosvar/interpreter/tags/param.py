@@ -5,7 +5,7 @@ from __future__ import annotations
 from rosvar.files import Confinement, FileCode, FileRefused, read_file
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
-from rosvar.interpreter.model import Binary, DeferredValue, ParamDecl, Raw
+from rosvar.interpreter.model import Binary, DeferredValue, ParamDecl, ParamSource, Raw
 from rosvar.interpreter.rosparam_yaml import load_yaml
 from rosvar.interpreter.scope import PrivateParam, Scope
 from rosvar.interpreter.tags.rosparam import read_text
@@ -15,7 +15,6 @@ from rosvar.logic.terms import Apply, TermError, register
 from rosvar.ros import names
 
 ATTRIBUTES = ("name", "value", "type", "textfile", "binfile", "command")
-SOURCES = ("value", "textfile", "binfile", "command")
 
 
 def convert_value(value: str, type_: str) -> object:
@@ -26,14 +25,14 @@ def convert_value(value: str, type_: str) -> object:
     return convert_scalar(value, type_)
 
 
-def param_value(kind: str, raw: str, ptype: str, confinement: Confinement) -> object:
+def param_value(kind: ParamSource, raw: str, ptype: str, confinement: Confinement) -> object:
     """``Loader.param_value`` for a concrete string; raises ValueError/OSError as roslaunch
     (and :class:`FileRefused` for a file rosvar's rules forbid reading)."""
-    if kind == "value":
+    if kind == ParamSource.VALUE:
         return convert_value(raw.strip(), ptype)
-    if kind == "textfile":  # read once while unchanged: every includer loads it again
+    if kind == ParamSource.TEXTFILE:  # read once while unchanged: every includer loads it again
         return convert_value(read_text(raw, confinement), ptype)
-    if kind == "binfile":
+    if kind == ParamSource.BINFILE:
         return Binary(read_file(raw, confinement))
     return convert_value(f"__command__({raw})", ptype)
 
@@ -45,12 +44,14 @@ def _unread(_host: object, kind: str, path: str, reason: str) -> str:
 register("unread", _unread)
 
 
-def _value_choice(it: Interpretation, kind: str, raw: Choice[Raw], ptype: str) -> Choice[object]:
+def _value_choice(
+    it: Interpretation, kind: ParamSource, raw: Choice[Raw], ptype: str
+) -> Choice[object]:
     def convert(leaf: Raw) -> object:
         if not isinstance(leaf, str):
             return (
                 DeferredValue(leaf, ptype, kind)
-                if kind in ("value", "command")
+                if kind in (ParamSource.VALUE, ParamSource.COMMAND)
                 else Fail(
                     f"{kind} path {leaf} is only known per configuration", "param-unknown-file"
                 )
@@ -88,7 +89,7 @@ def handle_param(it: Interpretation, entity: Entity, scope: Scope, force_local: 
     it.check_attributes(entity, ATTRIBUTES)
     ptype = (entity.get("type") or "auto").lower().strip()
     attributes = entity.attributes
-    present = [(k, it.attr(entity, k, scope)) for k in SOURCES if k in attributes]
+    present = [(k, it.attr(entity, k, scope)) for k in ParamSource if k in attributes]
     if len(present) != 1:
         it.fail(
             it.space.true,

@@ -10,7 +10,13 @@ import os
 from dataclasses import dataclass
 
 from rosvar.analyses.conflicts import Clash
-from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.model import (
+    ArgFeature,
+    FeatureKind,
+    FeatureModel,
+    FileFeature,
+    ValueFeature,
+)
 from rosvar.analyses.feature_model.operations import simplest_trigger
 from rosvar.logic.bdd import BDD
 
@@ -35,7 +41,7 @@ def system_name(model: FeatureModel) -> str:
 class Entry:
     """One feature of the tree, in depth-first order, with what every format shows of it."""
 
-    kind: str  # "file", "arg" or "value"
+    kind: FeatureKind
     id: str  # the feature's id, made unique if another feature has the same one
     parent: str | None  # ``None``: a child of the root
     depth: int
@@ -69,16 +75,16 @@ class Tree:
         self.files: dict[str, str] = {}  # a file's id in the model → its (unique) feature id
         for file in model.files:
             file_id = unique(file.id)
-            self.entries.append(Entry("file", file_id, None, 1, file))
+            self.entries.append(Entry(FeatureKind.FILE, file_id, None, 1, file))
             self.by_variable[str(file.variable.var)] = file_id
             self.by_path.setdefault(os.path.realpath(file.file), file_id)
             self.files.setdefault(file.id, file_id)
             for arg in file.args:
                 arg_id = unique(arg.id)
-                self.entries.append(Entry("arg", arg_id, file_id, 2, arg))
+                self.entries.append(Entry(FeatureKind.ARG, arg_id, file_id, 2, arg))
                 for value in arg.values:
                     value_id = unique(value.id)
-                    self.entries.append(Entry("value", value_id, arg_id, 3, value))
+                    self.entries.append(Entry(FeatureKind.VALUE, value_id, arg_id, 3, value))
                     self.by_variable[str(value.variable.var)] = value_id
         self.root = unique(system_name(model))
         self.children: dict[str | None, list[Entry]] = {}

@@ -14,7 +14,7 @@ from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 
 from rosvar.analyses.feature_model.model import FeatureModel, FileFeature
-from rosvar.logic.bdd import BDD
+from rosvar.logic.bdd import BDD, cofactors
 from rosvar.outputs.exports._common import Tree
 
 
@@ -92,8 +92,8 @@ class _Covers:
             yield {}
             return
         name = str(u.var)
-        for value in (False, True):
-            for path in self.paths(self.manager.let({name: value}, u)):
+        for value, child in zip((False, True), cofactors(u), strict=True):
+            for path in self.paths(child):
                 yield {name: value, **path}
 
     def _positive_value(self, cube: dict[str, bool]) -> dict[str, bool]:

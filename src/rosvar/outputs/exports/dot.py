@@ -9,7 +9,13 @@ its condition when it has one.
 
 from __future__ import annotations
 
-from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.model import (
+    ArgFeature,
+    ConstraintKind,
+    FeatureModel,
+    FileFeature,
+    ValueFeature,
+)
 from rosvar.outputs.exports._common import Tree
 
 
@@ -58,7 +64,7 @@ def write(model: FeatureModel) -> str:
         style = {"style": "dashed", "constraint": "false", "tooltip": constraint.text}
         if label:
             style["label"] = label
-        if constraint.kind == "excludes":
+        if constraint.kind == ConstraintKind.EXCLUDES:
             style.update(color="red", fontcolor="red", dir="both")
         else:
             style.update(color="blue", fontcolor="blue")

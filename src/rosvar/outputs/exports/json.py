@@ -11,7 +11,11 @@ import json
 from typing import Any
 
 from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
-from rosvar.analyses.feature_model.operations import core_and_dead, count_configurations
+from rosvar.analyses.feature_model.operations import (
+    VerdictKind,
+    core_and_dead,
+    count_configurations,
+)
 from rosvar.outputs.exports._common import Tree, Triggers, conflicts
 from rosvar.outputs.exports._formula import LOGIC_OPERATORS, exported, render
 
@@ -45,7 +49,7 @@ def document(model: FeatureModel) -> dict[str, Any]:
         if model.solved
         else {}
     )
-    verdicts: dict[str, list[dict[str, Any]] | None] = dict.fromkeys(("core", "dead"))
+    verdicts: dict[VerdictKind, list[dict[str, Any]] | None] = dict.fromkeys(VerdictKind)
     if model.solved:  # unknown (null) for a model too large to solve
         found = core_and_dead(model)
         for kind in verdicts:
@@ -70,8 +74,8 @@ def document(model: FeatureModel) -> dict[str, Any]:
         ],
         "configurations": count_configurations(model),
         "diagnostics": [d.to_json() for d in model.diagnostics],
-        "core": verdicts["core"],
-        "dead": verdicts["dead"],
+        "core": verdicts[VerdictKind.CORE],
+        "dead": verdicts[VerdictKind.DEAD],
         "conflicts": [
             {
                 "kind": clash.kind,

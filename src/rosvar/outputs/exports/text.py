@@ -9,7 +9,14 @@ from __future__ import annotations
 
 from collections import Counter
 
-from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.model import (
+    ArgFeature,
+    ConstraintKind,
+    FeatureKind,
+    FeatureModel,
+    FileFeature,
+    ValueFeature,
+)
 from rosvar.analyses.feature_model.operations import core_and_dead, count_configurations
 from rosvar.diagnostics import Location, Severity
 from rosvar.outputs.describe import count_text
@@ -30,9 +37,9 @@ def _where(location: Location, tree: Tree) -> str:
 
 
 def _summary(model: FeatureModel, tree: Tree, configurations: int | None) -> list[str]:
-    files = [e for e in tree.entries if e.kind == "file"]
-    args = [e for e in tree.entries if e.kind == "arg"]
-    values = [e for e in tree.entries if e.kind == "value"]
+    files = [e for e in tree.entries if e.kind == FeatureKind.FILE]
+    args = [e for e in tree.entries if e.kind == FeatureKind.ARG]
+    values = [e for e in tree.entries if e.kind == FeatureKind.VALUE]
     kinds = Counter(c.kind for c in model.constraints)
     conditional = Counter(c.kind for c in model.constraints if not c.unconditional)
     by_kind = ", ".join(
@@ -74,7 +81,7 @@ def _constraints(model: FeatureModel, tree: Tree) -> list[str]:
     describe = model.space.describe
     for constraint in model.constraints:
         a, b = (tree.files[f] for f in constraint.files)
-        arrow = "→" if constraint.kind == "requires" else "⊗"
+        arrow = "→" if constraint.kind == ConstraintKind.REQUIRES else "⊗"
         when = "always" if constraint.unconditional else f"when {describe(constraint.condition)}"
         lines.append(f"{INDENT}{constraint.kind} {a} {arrow} {b}, {when}")
         lines.append(f"{INDENT * 2}{constraint.text}")

@@ -8,7 +8,7 @@ itself, so that the names remain distinct and decode back with ``urllib.parse.un
 
 from __future__ import annotations
 
-from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, ValueFeature
+from rosvar.analyses.feature_model.model import ArgFeature, FeatureKind, FeatureModel, ValueFeature
 from rosvar.outputs.exports._common import Tree
 from rosvar.outputs.exports._formula import exported, render
 
@@ -32,7 +32,7 @@ def write(model: FeatureModel) -> str:
         "features",
         f"{INDENT}{name(names, tree.root)} {{abstract}}",
     ]
-    files = [e for e in tree.entries if e.kind == "file"]
+    files = [e for e in tree.entries if e.kind == FeatureKind.FILE]
     if files:
         lines.append(INDENT * 2 + "optional")
     for entry in tree.entries:

@@ -15,6 +15,7 @@ import threading
 from collections.abc import Callable, Mapping
 from http import HTTPStatus
 
+from rosvar.analyses.feature_model.model import FeatureKind
 from rosvar.configuration.choices import Action, ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.session import Session
@@ -67,7 +68,7 @@ def defaults(configurator: Configurator) -> dict[str, str]:
     """
     catalog = configurator.catalog
     found: dict[str, str] = {}
-    for arg in (feature for feature in catalog if feature.kind == "arg"):
+    for arg in (feature for feature in catalog if feature.kind == FeatureKind.ARG):
         default = next((f.id for f, value in catalog.values_of(arg.id) if value.default), None)
         if default is not None:
             found[arg.id] = default
@@ -180,7 +181,7 @@ class Api:
             if body.get("value") is not None:
                 raise ApiError(HTTPStatus.BAD_REQUEST, f"{text!r} takes no value")
             return UserChoice(action, feature)
-        if kind != "arg":
+        if kind != FeatureKind.ARG:
             raise ApiError(HTTPStatus.BAD_REQUEST, "'set' needs an arg feature (FILE:ARG)")
         return UserChoice(action, feature, _text(body, "value"))
 
