@@ -2,9 +2,12 @@
 
 A clash is judged on the feature tree and the *requires* constraints only (the exclude
 constraints say the clash must not happen, so they would hide it): ``S = tree ∧ requires
-∧ user literals``. It is gone when no configuration of ``S`` has both files and the clash
+∧ decided literals``. It is gone when no configuration of ``S`` has both files and the clash
 condition, certain when every configuration of ``S`` with both files has it, and possible
-otherwise, with its condition simplified under the choices. What a user is shown
+otherwise, with its condition simplified under the decided values. The decided literals
+(the choices and what the solver derived from them) are what the user sees of the
+product: a clash the choices still allowed but the solver ruled out (two files both in,
+and the value that made them clash derived away) is gone. What a user is shown
 (:meth:`Conflicts.shown`) is about the product: no clash of a file out of it, and none certain
 before both files are in.
 """
@@ -138,11 +141,12 @@ class Conflicts:
         describe: Callable[[BDD, Mapping[str, bool]], str],
         before: tuple[Decisions, Sequence[ConflictState | None]] | None = None,
     ) -> list[ConflictState | None]:
-        """Each pair's state (None: gone), judged again only where a user literal on its
-        blocks differs from ``before`` (an earlier step and its answer).
+        """Each pair's state (None: gone), judged again only where a decided variable of
+        its blocks differs from ``before`` (an earlier step and its answer).
 
-        When ``before``'s literals are among these (a session's next click), they only
-        remove configurations: a clash gone stays gone, and a certain one is certain or gone.
+        When ``before``'s decided literals are among these (a session's next click), they
+        only remove configurations: a clash gone stays gone, and a certain one is certain or
+        gone.
         """
         if before is None:
             again: Iterable[int] = range(len(self.pairs))
@@ -150,15 +154,19 @@ class Conflicts:
             more = False
         else:
             earlier, answer = before
-            changed = decisions.literals.items() ^ earlier.literals.items()
+            changed = decisions.decided.items() ^ earlier.decided.items()
             again = sorted({n for v, _ in changed for n in self._reading.get(v, ())})
             found = list(answer)
-            more = earlier.literals.items() <= decisions.literals.items()
+            more = earlier.decided.items() <= decisions.decided.items()
+        cubes: dict[frozenset[str], BDD] = {}  # pairs judged on the same blocks share one
         for number in again:
             was, pair = found[number], self.pairs[number]
+            cube = cubes.get(pair.variables)
+            if cube is None:
+                cube = cubes[pair.variables] = self._decided(pair, decisions)
             if not more or (was is not None and was.status != Certainty.CERTAIN):
-                found[number] = self._status(pair, decisions, describe)
-            elif was is not None and not self._meets(pair.possible, pair, decisions):
+                found[number] = self._status(pair, decisions, cube, describe)
+            elif was is not None and not self._meets(pair.possible, pair, cube):
                 found[number] = None
         return found
 
@@ -181,16 +189,22 @@ class Conflicts:
             shown.append(state)
         return shown
 
-    def _meets(self, u: BDD, pair: Clashing, decisions: Decisions) -> bool:
+    def _decided(self, pair: Clashing, decisions: Decisions) -> BDD:
+        """The decided literals of the pair's blocks and the user literals of its component
+        (those outside the blocks change nothing), conjoined."""
+        decided = decisions.decided
+        values = {v: decided[v] for v in pair.variables if v in decided}
+        return decisions.cubes[pair.component] & self.manager.cube(values)
+
+    def _meets(self, u: BDD, pair: Clashing, cube: BDD) -> bool:
         """Some configuration of the pair's blocks and ``u`` (its ``possible`` or
-        ``escapes``) has the user literals.
+        ``escapes``) has the literals of ``cube`` (``_decided``).
 
         Asked as ``∃ pair.variables. within ∧ (u ∧ cube)`` (CUDD's and-abstract), which
         stops at the first path to TRUE and builds none of the conjunction's nodes: the
         blocks' diagram reaches 20,000 nodes (``BLOCK_LIMIT``), and conjoining it with the
         clash at build and with the choices at each step made as many new nodes each time
         (most of the engine's construction and of a step on generated workspaces)."""
-        cube = decisions.cubes[pair.component]  # its literals outside the blocks change nothing
         found = and_exists(pair.within, u & cube, pair.variables)
         return bool(found != self.manager.false)
 
@@ -198,13 +212,15 @@ class Conflicts:
         self,
         pair: Clashing,
         decisions: Decisions,
+        cube: BDD,
         describe: Callable[[BDD, Mapping[str, bool]], str],
     ) -> ConflictState | None:
-        if not self._meets(pair.possible, pair, decisions):
+        if not self._meets(pair.possible, pair, cube):
             return None
-        if not self._meets(pair.escapes, pair, decisions):
+        if not self._meets(pair.escapes, pair, cube):
             return ConflictState(pair.files, pair.names, Certainty.CERTAIN, None)
-        literals = {v: b for v, b in decisions.literals.items() if v in pair.variables}
+        decided = decisions.decided
+        literals = {v: decided[v] for v in pair.variables if v in decided}
         return ConflictState(
             pair.files, pair.names, Certainty.POSSIBLE, describe(pair.condition, literals)
         )
