@@ -7,8 +7,9 @@ and, after a while, finishes with defaults as ``--finish`` does. At every step:
 * no placeholder (``⟨``, ``<default:``, ``<other>``, ``$(``) in the command, nor in the name,
   namespace or remapped topic of a present element once no ``<other>`` value waits for a text;
 * every conflict shown is about the product as the solver sees it, checked by a SAT solver of
-  its own over ``tree ∧ requires ∧`` the decided features: a certain one holds in every such
-  configuration with both files, a possible one in some; none has a deselected file;
+  its own over ``tree ∧ requires ∧`` the decided features (and the typed texts): a certain one
+  holds in every such configuration with both files, a possible one in some; none has a
+  deselected file, and a complete product none between two files;
 * a complete product has a command, or says what is open (an ``<other>`` value's text);
 
 and a complete product's graph is ``rosvar resolve`` of its command.
@@ -31,7 +32,7 @@ from rosvar.configuration.engine import ConfigurationState, Configurator, Select
 from rosvar.configuration.sat import Sat
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
-from rosvar.logic.inputs import OTHER, UNSET
+from rosvar.logic.inputs import OTHER, UNSET, Input
 from rosvar.workspace import discover
 
 CORPUS = Path(__file__).resolve().parents[3] / "shared" / "corpus"
@@ -61,6 +62,8 @@ def test_random_walks_show_no_placeholder_no_false_conflict_and_end_in_a_command
             assert_no_placeholder(state)
             conflicts += oracle.check(state)
         assert state.complete and not state.untyped
+        # one configuration is left, and the solver never lets two files of it clash
+        assert [c for c in state.conflicts if c.files[0] != c.files[1]] == []
         launched = [f for f in engine.catalog.files if state.features[f.id].state == "selected"]
         assert state.command is not None or not launched, "a complete product without command"
         same_as_resolve(analysis, state)
@@ -137,7 +140,7 @@ class ClashOracle:
         trees = [part for file in model.files for part in solver.arg_trees(file)]
         self.sat = Sat(solver.manager, solver.variables, 0, [*requires, *trees])
         by_path = {entry.path: entry for entry in engine.catalog.files}
-        self.clashes: dict[tuple[str, str], tuple[BDD, BDD]] = {}  # files → (may, must)
+        self.clashes: dict[tuple[str, str], BDD] = {}  # files → condition
         grouped: dict[tuple[str, str], BDD] = {}
         for clash in model.clashes:
             if clash.first.file == clash.second.file and clash.kind != "node":
@@ -145,9 +148,7 @@ class ClashOracle:
             key = tuple(sorted(by_path[f].id for f in clash.files))
             assert len(key) == 2
             grouped[key] = grouped.get(key, model.space.false) | clash.condition
-        for key, condition in grouped.items():
-            _fixed, bounds = engine.lowering.lower(condition)
-            self.clashes[key] = (bounds.may, bounds.must)
+        self.clashes = grouped
 
     def check(self, state: ConfigurationState) -> int:
         """Checks every conflict ``state`` shows; returns how many."""
@@ -163,10 +164,26 @@ class ClashOracle:
             both = manager.true
             for file in files:
                 both &= manager.var(file.variable)
-            may, must = self.clashes[tuple(sorted(conflict.files))]  # type: ignore[index]
+            condition = self.clashes[tuple(sorted(conflict.files))]  # type: ignore[index]
+            bounds = self.engine.lowering.decide(condition, self.typed(state))
+            may, must = bounds.may, bounds.must
             if conflict.status == Certainty.CERTAIN:
                 assert all(state.features[f.id].state == Selection.SELECTED for f in files)
                 assert self.sat.model(decided, both & ~must) is None, conflict
             else:
                 assert self.sat.model(decided, both & may) is not None, conflict
         return len(state.conflicts)
+
+    def typed(self, state: ConfigurationState) -> dict[Input, str]:
+        """The texts of the args at ``<other>``: their last ``set`` (the value it went to)."""
+        texts: dict[Input, str] = {}
+        for choice in state.choices:
+            if choice.action == Action.SET and choice.value is not None:
+                arg, values = self.engine.catalog.args[choice.feature]
+                [other] = [f for f, v in values if v.slot is OTHER] or [None]
+                known = {v.value for _f, v in values if v.slot is not OTHER}
+                if other is not None and choice.value not in known:
+                    texts[arg.input] = choice.value
+                else:
+                    texts.pop(arg.input, None)
+        return texts

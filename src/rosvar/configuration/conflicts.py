@@ -23,6 +23,7 @@ from rosvar.analyses.conflicts import Clash
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.lowering import Lowering
+from rosvar.configuration.presence import Typed
 from rosvar.logic.bdd import BDD, and_exists, conjoin, walked_support
 
 REQUIRES_LIMIT = 100_000
@@ -44,6 +45,7 @@ class Clashing:
     """Two files (the same one twice for a clash inside a file) and where they clash."""
 
     files: tuple[str, str]  # spelled ids
+    paths: tuple[str, str]  # the files' paths (their typed texts' keys)
     names: tuple[str, ...]
     file_variables: tuple[str, str]
     component: int
@@ -52,6 +54,8 @@ class Clashing:
     possible: BDD  # both files ∧ the clash may happen (the blocks not conjoined)
     escapes: BDD  # both files ∧ the clash may not happen
     condition: BDD  # analysis manager, fixed atoms substituted
+    both: BDD
+    open: bool  # the clash depends on texts typed for <other> values
 
 
 @dataclass(frozen=True)
@@ -96,6 +100,7 @@ class Conflicts:
                 groups.setdefault(key, []).append(clash)  # type: ignore[arg-type]
         features = {f.file: f for f in model.files}
         space = lowering.space
+        self.lowering = lowering
         self.pairs: list[Clashing] = []
         self._reading: dict[str, list[int]] = {}  # variable → the pairs whose blocks hold it
         members = [set(c.variables) for c in solver.components]
@@ -124,6 +129,7 @@ class Conflicts:
             self.pairs.append(
                 Clashing(
                     (file_ids[first], file_ids[second]),
+                    (first, second),
                     tuple(sorted({f"{c.kind} {c.name}" for c in clashes})),
                     (str(pair[0].var), str(pair[1].var)),
                     component_of[a.id],
@@ -132,32 +138,39 @@ class Conflicts:
                     both & bounds.may,
                     both & ~bounds.must,
                     fixed,
+                    both,
+                    not bounds.exact,
                 )
             )
 
     def judge(
         self,
         decisions: Decisions,
+        typed: Typed,
         describe: Callable[[BDD, Mapping[str, bool]], str],
-        before: tuple[Decisions, Sequence[ConflictState | None]] | None = None,
+        before: tuple[Decisions, Typed, Sequence[ConflictState | None]] | None = None,
     ) -> list[ConflictState | None]:
         """Each pair's state (None: gone), judged again only where a decided variable of
-        its blocks differs from ``before`` (an earlier step and its answer).
+        its blocks differs from ``before`` (an earlier step, its texts and its answer), or,
+        for a clash on ``<other>`` values, where the texts typed changed.
 
-        When ``before``'s decided literals are among these (a session's next click), they
-        only remove configurations: a clash gone stays gone, and a certain one is certain or
-        gone.
+        When ``before``'s decided literals are among these (a session's next click) and the
+        texts are the same, they only remove configurations: a clash gone stays gone, and a
+        certain one is certain or gone.
         """
         if before is None:
             again: Iterable[int] = range(len(self.pairs))
             found: list[ConflictState | None] = [None] * len(self.pairs)
             more = False
         else:
-            earlier, answer = before
+            earlier, texts, answer = before
             changed = decisions.decided.items() ^ earlier.decided.items()
-            again = sorted({n for v, _ in changed for n in self._reading.get(v, ())})
+            numbers = {n for v, _ in changed for n in self._reading.get(v, ())}
+            if texts != typed:
+                numbers.update(n for n, pair in enumerate(self.pairs) if pair.open)
+            again = sorted(numbers)
             found = list(answer)
-            more = earlier.decided.items() <= decisions.decided.items()
+            more = texts == typed and earlier.decided.items() <= decisions.decided.items()
         cubes: dict[frozenset[str], BDD] = {}  # pairs judged on the same blocks share one
         for number in again:
             was, pair = found[number], self.pairs[number]
@@ -165,10 +178,21 @@ class Conflicts:
             if cube is None:
                 cube = cubes[pair.variables] = self._decided(pair, decisions)
             if not more or (was is not None and was.status != Certainty.CERTAIN):
-                found[number] = self._status(pair, decisions, cube, describe)
-            elif was is not None and not self._meets(pair.possible, pair, cube):
+                found[number] = self._status(pair, decisions, cube, typed, describe)
+            elif was is not None and not self._meets(self._bounds(pair, typed)[0], pair, cube):
                 found[number] = None
         return found
+
+    def _bounds(self, pair: Clashing, typed: Typed) -> tuple[BDD, BDD]:
+        """The pair's ``possible`` and ``escapes``, decided by the texts typed for its files'
+        ``<other>`` values (a text that cannot clash rules the clash out)."""
+        if not pair.open:
+            return pair.possible, pair.escapes
+        texts = {i: t for path in pair.paths for i, t in typed.get(path, {}).items()}
+        if not texts:
+            return pair.possible, pair.escapes
+        bounds = self.lowering.decide(pair.condition, texts)
+        return pair.both & bounds.may, pair.both & ~bounds.must
 
     def shown(
         self, found: Sequence[ConflictState | None], decisions: Decisions
@@ -213,11 +237,13 @@ class Conflicts:
         pair: Clashing,
         decisions: Decisions,
         cube: BDD,
+        typed: Typed,
         describe: Callable[[BDD, Mapping[str, bool]], str],
     ) -> ConflictState | None:
-        if not self._meets(pair.possible, pair, cube):
+        possible, escapes = self._bounds(pair, typed)
+        if not self._meets(possible, pair, cube):
             return None
-        if not self._meets(pair.escapes, pair, cube):
+        if not self._meets(escapes, pair, cube):
             return ConflictState(pair.files, pair.names, Certainty.CERTAIN, None)
         decided = decisions.decided
         literals = {v: decided[v] for v in pair.variables if v in decided}
