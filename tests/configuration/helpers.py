@@ -5,12 +5,17 @@ from __future__ import annotations
 import json
 import os
 import random
+import re
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from rosvar.analyses.feature_model.extraction import extract
+from rosvar.analyses.resolve import resolve
 from rosvar.configuration.choices import UserChoice
+from rosvar.configuration.command import given
 from rosvar.configuration.engine import ConfigurationState, Configurator
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.ros import names
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 
 if TYPE_CHECKING:
@@ -80,6 +85,7 @@ def random_product(engine: Configurator, rng: random.Random) -> ConfigurationSta
 
 
 PRESENCE_FIELDS = ("presence", "condition", "id")
+ANON = re.compile(r"_anon\d+(?!\w)")  # the interpreter's names for ``$(anon base)``
 
 
 def product(state: ConfigurationState, members: Sequence[str] | None = None) -> dict[str, Any]:
@@ -100,17 +106,73 @@ def product(state: ConfigurationState, members: Sequence[str] | None = None) -> 
 
     nodes = bare(state.graph.nodes)
     errors = bare(state.graph.errors)
-    names = [str(n["name"]) for n in nodes]
-    twice = sorted({name for name in names if names.count(name) > 1})
+    entries: dict[str, set[str]] = {}  # name → the entry files whose models have it
+    twice: set[str] = set()
+    for node in (n for n in state.graph.nodes if n["presence"] == "present" and mine(n)):
+        name, entry = str(node["name"]), str(node["id"]).split("|")[0]
+        files = entries.setdefault(name, set())
+        # $(anon) names of different files on one command line are different for roslaunch
+        if entry in files or (files and not ANON.search(name)):
+            twice.add(name)
+        files.add(entry)
     return {
         "ok": not errors and not twice,
         "nodes": nodes,
         "tests": bare(state.graph.tests),
         "params": {p["name"]: p["value"] for p in bare(state.graph.params)},
         "errors": errors,
-        "conflicts": [{"kind": "node-name", "name": name} for name in twice],
+        "conflicts": [{"kind": "node-name", "name": name} for name in sorted(twice)],
     }
 
 
 def canonical(entries: Sequence[Mapping[str, Any]]) -> list[str]:
     return sorted(json.dumps(e, sort_keys=True) for e in entries)
+
+
+def same_as_resolve(analysis: Analysis, state: ConfigurationState) -> int:
+    """A complete product's graph against ``rosvar resolve`` of its command lines: both must
+    agree on whether each command line loads, and one that loads must give the graph's
+    present nodes, tests, params and topics. Returns how many command lines loaded."""
+    compared = 0
+    topics: set[str] | None = set() if state.commands else None  # None: not compared
+    for members in state.commands:
+        resolution = anon_free(
+            resolve(analysis, [m.path for m in members], given(members)).to_json()
+        )
+        ours = anon_free(product(state, [m.spelled for m in members]))
+        assert ours["ok"] == resolution["ok"], state.command
+        if not resolution["ok"]:
+            topics = None
+            continue
+        assert canonical(ours["nodes"]) == canonical(resolution["nodes"]), state.command
+        assert canonical(ours["tests"]) == canonical(resolution["tests"]), state.command
+        assert ours["params"] == resolution["params"], state.command
+        if topics is not None:
+            topics |= {
+                _topic(node, target)
+                for node in resolution["nodes"]
+                for _source, target in node["remaps"]
+            }
+        compared += 1
+    # an entry's id is its element's, or the element's with /N for its variant N
+    present = {
+        re.sub(r"/\d+$", "", n["id"]) for n in state.graph.nodes if n["presence"] == "present"
+    }
+    shown = [t for t in state.graph.topics if t["presence"] == "present"]
+    assert all(set(t["nodes"]) <= present for t in shown), state.command
+    if topics is not None:
+        assert {anon_free(t["name"]) for t in shown} == topics, state.command
+    return compared
+
+
+def anon_free(document: Any) -> Any:
+    """``document`` with the numbers of ``$(anon)`` names dropped: the engine numbers them per
+    file, ``rosvar resolve`` and the oracle per command line (roslaunch draws random ones)."""
+    return json.loads(ANON.sub("_anon", json.dumps(document)))
+
+
+def _topic(node: Mapping[str, Any], target: str) -> str:
+    """The topic a resolved node remaps to (as roslaunch resolves a remap's target)."""
+    if target.startswith("~"):
+        return names.ns_join(str(node["name"]) + "/", target[1:])
+    return names.ns_join(str(node["namespace"]), target)

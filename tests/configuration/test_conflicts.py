@@ -55,7 +55,7 @@ def test_a_block_over_the_limit_goes_back_to_one_block_per_file(
     engine = configurator(workspace)  # the clash is still judged, on the tree alone
     [conflict] = run(engine).conflicts
     assert conflict.files == ("camera.launch", "other_camera.launch")
-    judged_all = engine.conflicts.judge(engine.derivation.initial, engine.views.describe)
+    judged_all = engine.conflicts.judge(engine.derivation.initial, {}, engine.views.describe)
     [judged] = filter(None, judged_all)
     assert judged.status == "certain"  # given both files; shown possible while they are open
     assert conflict.status == "possible"
@@ -78,9 +78,24 @@ def test_the_satisfiability_tests_agree_with_the_conjunctions(ws: LaunchWorkspac
         for variable in rng.sample(variables, rng.randint(0, 4)):
             decisions = derivation.add(decisions, variable, rng.random() < 0.5) or decisions
         for pair in judged.pairs:
-            cube = decisions.cubes[pair.component]
+            cube = judged._decided(pair, decisions)
             for u in (pair.possible, pair.escapes):
                 expected = (pair.within & u & cube) != false
-                assert judged._meets(u, pair, decisions) == expected
+                assert judged._meets(u, pair, cube) == expected
                 outcomes.append(expected)
     assert len(outcomes) >= 80 and set(outcomes) == {True, False}
+
+
+def test_a_typed_text_that_cannot_clash_rules_the_clash_out(ws: LaunchWorkspace) -> None:
+    """A clash on an ``<other>`` value is judged on the text typed for it: one that makes no
+    clash left a ⚠ on a finished product (Husky's demo.launch, ``use_gui:=typed3``)."""
+    ws.launch(
+        "a.launch",
+        '  <arg name="on" default="false"/>\n'
+        '  <node pkg="p" type="t" name="n" if="$(eval on == \'yes\' or on == \'true\')"/>',
+    )
+    ws.launch("b.launch", '  <node pkg="p" type="t" name="n"/>')
+    engine = configurator(ws)
+    [open_] = run(engine, "select a.launch:on=<other>").conflicts
+    assert open_.status == "possible"
+    assert run(engine, "set a.launch:on=no").conflicts == []

@@ -180,14 +180,21 @@ def test_conflict_certain_possible_gone(ws: LaunchWorkspace) -> None:
         "possible",
         "on",
     )
+    # with b.launch in, on=true would clash and is derived out: a typed value could still
     [conflict] = run(engine, "select b.launch").conflicts
-    assert (conflict.status, conflict.condition) == ("possible", "on")
+    assert (conflict.status, conflict.condition) == ("possible", "only for other values")
     assert run(engine, "set a.launch:on=false").conflicts == []
     assert run(engine, "deselect b.launch").conflicts == []
     # certain once both files are there, but the solver deselects b.launch then: a clash
     # with a file out of the product is not shown (the README's control.xml and teleop_only)
     assert states(run(engine, "set a.launch:on=true"))["b.launch"] == "deselected*"
     assert run(engine, "set a.launch:on=true").conflicts == []
+    # both files in: on=true is derived out, and the clash is judged on what is left (a
+    # typed value), not on the choices alone ("on", a value the product can no longer take:
+    # a red ⚠ that stayed on finished products)
+    both = run(engine, "select b.launch", "select a.launch")
+    assert states(both)["a.launch:on=true"] == "deselected*"
+    assert [c.condition for c in both.conflicts] == ["only for other values"]
 
 
 def test_a_certain_clash_is_certain_only_once_its_files_are_in(ws: LaunchWorkspace) -> None:
@@ -217,3 +224,24 @@ def test_configurations_are_counted_exactly_beyond_a_double(ws: LaunchWorkspace)
     [value] = [v for v in arg.values if v.slot == "true"]
     assert chosen == model.solver.count({model.solver.var(value.variable).var: True})
     assert 0 < chosen < everything
+
+
+def test_an_arg_roslaunch_stops_without_is_asked_for_and_an_unused_one_left_off(
+    ws: LaunchWorkspace,
+) -> None:
+    """A required arg the graph does not show (a node's ``output``) made complete products
+    without a command and nothing to type; one never used needs no value at all."""
+    ws.launch(
+        "a.launch",
+        '  <arg name="unused"/>\n  <arg name="out"/>\n'
+        '  <node pkg="p" type="t" name="n" output="$(arg out)"/>',
+    )
+    engine = configurator(ws)
+    assert [f.id for f in engine.catalog if f.kind == "arg"] == ["a.launch:out"]
+    chosen = choices("select a.launch")
+    finished = engine.state(chosen + engine.completion(chosen))
+    assert finished.complete and finished.command is None
+    assert finished.untyped == ["a.launch:out"]
+    typed = run(engine, "select a.launch", "set a.launch:out=screen")
+    assert typed.complete and typed.command == "roslaunch pkg a.launch out:=screen"
+    assert typed.graph.errors == []  # absent: not listed

@@ -2,9 +2,12 @@
 
 A clash is judged on the feature tree and the *requires* constraints only (the exclude
 constraints say the clash must not happen, so they would hide it): ``S = tree ∧ requires
-∧ user literals``. It is gone when no configuration of ``S`` has both files and the clash
+∧ decided literals``. It is gone when no configuration of ``S`` has both files and the clash
 condition, certain when every configuration of ``S`` with both files has it, and possible
-otherwise, with its condition simplified under the choices. What a user is shown
+otherwise, with its condition simplified under the decided values. The decided literals
+(the choices and what the solver derived from them) are what the user sees of the
+product: a clash the choices still allowed but the solver ruled out (two files both in,
+and the value that made them clash derived away) is gone. What a user is shown
 (:meth:`Conflicts.shown`) is about the product: no clash of a file out of it, and none certain
 before both files are in.
 """
@@ -20,6 +23,7 @@ from rosvar.analyses.conflicts import Clash, DeclarationKind
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.lowering import Lowering
+from rosvar.configuration.presence import Typed
 from rosvar.logic.bdd import BDD, and_exists, conjoin, walked_support
 
 REQUIRES_LIMIT = 100_000
@@ -42,6 +46,7 @@ class Clashing:
     """Two files (the same one twice for a clash inside a file) and where they clash."""
 
     files: tuple[str, str]  # spelled ids
+    paths: tuple[str, str]  # the files' paths (their typed texts' keys)
     names: tuple[str, ...]
     file_variables: tuple[str, str]
     component: int
@@ -50,6 +55,8 @@ class Clashing:
     possible: BDD  # both files ∧ the clash may happen (the blocks not conjoined)
     escapes: BDD  # both files ∧ the clash may not happen
     condition: BDD  # analysis manager, fixed atoms substituted
+    both: BDD
+    open: bool  # the clash depends on texts typed for <other> values
 
 
 @dataclass(frozen=True)
@@ -94,6 +101,7 @@ class Conflicts:
                 groups.setdefault(key, []).append(clash)  # type: ignore[arg-type]
         features = {f.file: f for f in model.files}
         space = lowering.space
+        self.lowering = lowering
         self.pairs: list[Clashing] = []
         self._reading: dict[str, list[int]] = {}  # variable → the pairs whose blocks hold it
         members = [set(c.variables) for c in solver.components]
@@ -122,6 +130,7 @@ class Conflicts:
             self.pairs.append(
                 Clashing(
                     (file_ids[first], file_ids[second]),
+                    (first, second),
                     tuple(sorted({f"{c.kind} {c.name}" for c in clashes})),
                     (str(pair[0].var), str(pair[1].var)),
                     component_of[a.id],
@@ -130,38 +139,61 @@ class Conflicts:
                     both & bounds.may,
                     both & ~bounds.must,
                     fixed,
+                    both,
+                    not bounds.exact,
                 )
             )
 
     def judge(
         self,
         decisions: Decisions,
+        typed: Typed,
         describe: Callable[[BDD, Mapping[str, bool]], str],
-        before: tuple[Decisions, Sequence[ConflictState | None]] | None = None,
+        before: tuple[Decisions, Typed, Sequence[ConflictState | None]] | None = None,
     ) -> list[ConflictState | None]:
-        """Each pair's state (None: gone), judged again only where a user literal on its
-        blocks differs from ``before`` (an earlier step and its answer).
+        """Each pair's state (None: gone), judged again only where a decided variable of
+        its blocks differs from ``before`` (an earlier step, its texts and its answer), or,
+        for a clash on ``<other>`` values, where the texts typed changed.
 
-        When ``before``'s literals are among these (a session's next click), they only
-        remove configurations: a clash gone stays gone, and a certain one is certain or gone.
+        When ``before``'s decided literals are among these (a session's next click) and the
+        texts are the same, they only remove configurations: a clash gone stays gone, and a
+        certain one is certain or gone.
         """
         if before is None:
             again: Iterable[int] = range(len(self.pairs))
             found: list[ConflictState | None] = [None] * len(self.pairs)
             more = False
         else:
-            earlier, answer = before
-            changed = decisions.literals.items() ^ earlier.literals.items()
-            again = sorted({n for v, _ in changed for n in self._reading.get(v, ())})
+            earlier, texts, answer = before
+            changed = decisions.decided.items() ^ earlier.decided.items()
+            numbers = {n for v, _ in changed for n in self._reading.get(v, ())}
+            if texts != typed:
+                numbers.update(n for n, pair in enumerate(self.pairs) if pair.open)
+            again = sorted(numbers)
             found = list(answer)
-            more = earlier.literals.items() <= decisions.literals.items()
+            more = texts == typed and earlier.decided.items() <= decisions.decided.items()
+        cubes: dict[frozenset[str], BDD] = {}  # pairs judged on the same blocks share one
         for number in again:
             was, pair = found[number], self.pairs[number]
+            cube = cubes.get(pair.variables)
+            if cube is None:
+                cube = cubes[pair.variables] = self._decided(pair, decisions)
             if not more or (was is not None and was.status != Certainty.CERTAIN):
-                found[number] = self._status(pair, decisions, describe)
-            elif was is not None and not self._meets(pair.possible, pair, decisions):
+                found[number] = self._status(pair, decisions, cube, typed, describe)
+            elif was is not None and not self._meets(self._bounds(pair, typed)[0], pair, cube):
                 found[number] = None
         return found
+
+    def _bounds(self, pair: Clashing, typed: Typed) -> tuple[BDD, BDD]:
+        """The pair's ``possible`` and ``escapes``, decided by the texts typed for its files'
+        ``<other>`` values (a text that cannot clash rules the clash out)."""
+        if not pair.open:
+            return pair.possible, pair.escapes
+        texts = {i: t for path in pair.paths for i, t in typed.get(path, {}).items()}
+        if not texts:
+            return pair.possible, pair.escapes
+        bounds = self.lowering.decide(pair.condition, texts)
+        return pair.both & bounds.may, pair.both & ~bounds.must
 
     def shown(
         self, found: Sequence[ConflictState | None], decisions: Decisions
@@ -182,16 +214,22 @@ class Conflicts:
             shown.append(state)
         return shown
 
-    def _meets(self, u: BDD, pair: Clashing, decisions: Decisions) -> bool:
+    def _decided(self, pair: Clashing, decisions: Decisions) -> BDD:
+        """The decided literals of the pair's blocks and the user literals of its component
+        (those outside the blocks change nothing), conjoined."""
+        decided = decisions.decided
+        values = {v: decided[v] for v in pair.variables if v in decided}
+        return decisions.cubes[pair.component] & self.manager.cube(values)
+
+    def _meets(self, u: BDD, pair: Clashing, cube: BDD) -> bool:
         """Some configuration of the pair's blocks and ``u`` (its ``possible`` or
-        ``escapes``) has the user literals.
+        ``escapes``) has the literals of ``cube`` (``_decided``).
 
         Asked as ``∃ pair.variables. within ∧ (u ∧ cube)`` (CUDD's and-abstract), which
         stops at the first path to TRUE and builds none of the conjunction's nodes: the
         blocks' diagram may reach ``BLOCK_LIMIT`` nodes, and conjoining it with the clash at
         build and with the choices at each step made as many new nodes each time, which
         dominated the engine's construction and its steps on large workspaces."""
-        cube = decisions.cubes[pair.component]  # its literals outside the blocks change nothing
         found = and_exists(pair.within, u & cube, pair.variables)
         return bool(found != self.manager.false)
 
@@ -199,13 +237,17 @@ class Conflicts:
         self,
         pair: Clashing,
         decisions: Decisions,
+        cube: BDD,
+        typed: Typed,
         describe: Callable[[BDD, Mapping[str, bool]], str],
     ) -> ConflictState | None:
-        if not self._meets(pair.possible, pair, decisions):
+        possible, escapes = self._bounds(pair, typed)
+        if not self._meets(possible, pair, cube):
             return None
-        if not self._meets(pair.escapes, pair, decisions):
+        if not self._meets(escapes, pair, cube):
             return ConflictState(pair.files, pair.names, Certainty.CERTAIN, None)
-        literals = {v: b for v, b in decisions.literals.items() if v in pair.variables}
+        decided = decisions.decided
+        literals = {v: decided[v] for v in pair.variables if v in decided}
         return ConflictState(
             pair.files, pair.names, Certainty.POSSIBLE, describe(pair.condition, literals)
         )

@@ -25,7 +25,6 @@ from rosvar.configuration.graph import VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.view import Graph, Views
-from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.inputs import OTHER, UNSET
 from rosvar.workspace.interfaces.model import Interfaces
@@ -446,13 +445,8 @@ class Configurator:
             for name in model.inputs:
                 default = model.unset_defaults.get(name)
                 arg = features.get(name)
-                if arg is None:
+                if arg is None:  # an arg the file never needs set: left off the command
                     reads[name] = default
-                    if default is None and _required(model, name):
-                        literals = [s for s in model.domains.get(name, ()) if isinstance(s, str)]
-                        if not literals:
-                            return None
-                        given[name] = reads[name] = literals[0]
                     continue
                 text = self.views.arg_text(entry, name, decisions, texts)
                 chosen = self.catalog.chosen(f"{entry.id}:{name}", decisions.decided)
@@ -478,14 +472,6 @@ def _texts(effective: Iterable[_Effective]) -> dict[str, str]:
 
 class _Refused(Exception):
     """A choice the model cannot take, whatever was chosen before."""
-
-
-def _required(model: LaunchModel, name: str) -> bool:
-    """``name`` is an arg of the command line without a default: roslaunch insists on it."""
-    return any(
-        a.name == name and a.input is not None and a.default is None and a.value is None
-        for a in model.args
-    )
 
 
 def _show(choice: UserChoice) -> str:

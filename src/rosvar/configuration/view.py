@@ -164,7 +164,7 @@ class Views:
         typed = self._typed(texts)
         if before is None:
             presences = self.presences.judge(decisions, typed, self.describe)
-            conflicts = self.conflicts.judge(decisions, self.describe)
+            conflicts = self.conflicts.judge(decisions, typed, self.describe)
             entries: list[list[Fields]] = [[] for _ in self.graph.elements]
             again: Iterable[int] = range(len(self.graph.elements))
         else:
@@ -172,7 +172,7 @@ class Views:
                 decisions, typed, self.describe, (before.decisions, before.typed, before.presences)
             )
             conflicts = self.conflicts.judge(
-                decisions, self.describe, (before.decisions, before.conflicts)
+                decisions, typed, self.describe, (before.decisions, before.typed, before.conflicts)
             )
             entries = list(before.entries)
             again = self._rerendered(decisions, texts, before, presences)

@@ -198,8 +198,10 @@ class App:
         self.assert_draws(server)
         assert self.warned_files() == {f for c in server["conflicts"] for f in c["files"]}
         command = self.page.locator("#command").inner_text()
-        if server["complete"]:
+        if server["complete"] and server["command"]:
             assert command == server["command"]
+        elif server["complete"] and server["untyped"]:  # says what the command waits for
+            assert command.startswith("Type a value of your own for ")
         assert self.page.locator("#features-left").inner_text() == f"{server['unselected']:,}"
         return server
 

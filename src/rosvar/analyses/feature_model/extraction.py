@@ -93,6 +93,21 @@ def graph_inputs(model: LaunchModel) -> set[ArgInput]:
     return {i for i in inputs | terms | predicate_inputs if i.file == model.file}
 
 
+def error_inputs(model: LaunchModel) -> set[ArgInput]:
+    """Args on which roslaunch stopping depends (an arg used where the graph does not show
+    it, as a node's ``output``, must still be set): a product's command must be able to
+    give them, though the paper's AFFECTSCG leaves them out."""
+    space = model.space
+    return {
+        atom.input
+        for error in model.errors
+        for atom in (space.atom_of(name) for name in space.support(error.condition))
+        if isinstance(atom, SlotAtom)
+        and isinstance(atom.input, ArgInput)
+        and atom.input.file == model.file
+    }
+
+
 def _given_by_include(space: ConditionSpace, target: FileFeature) -> BDD:
     """The included file's args at their defaults (as when not given on the command line;
     ``<default: …>`` where the default is a substitution): a file loaded by an include takes
@@ -143,7 +158,7 @@ def extract(
     for model in models:
         label = analysis.label(model.file)
         feature = FileFeature(label, model.file, space.file_atom(model.file, label))
-        affecting = graph_inputs(model)
+        affecting = graph_inputs(model) | (error_inputs(model) if products else set())
         declared = {a.name: a for a in model.args if a.input is not None}
         fixed = _set_by_value(model)
         for name, input_ in model.inputs.items():

@@ -49,8 +49,7 @@ export class Bar {
     e.finish.disabled = state.complete;
     const command = state.complete && state.command !== null;
     e.command.classList.toggle("pending", !command);
-    e.command.textContent = command ? state.command
-      : `Choose features until none is left (${readableCount(state.unselected)} to go); the roslaunch command appears here.`;
+    e.command.textContent = command ? state.command : pendingText(state);
     e.copy.disabled = !command;
     e.copy.textContent = "Copy";
     const refused = state.refused ?? [];
@@ -103,4 +102,20 @@ export class Bar {
     }
     this.elements.copy.textContent = "Copied ✓";
   }
+}
+
+// What the command still waits for: open features, the text of an <other> value (a complete
+// product can lack one), or a file to launch.
+function pendingText(state) {
+  if (!state.complete) {
+    return `Choose features until none is left (${readableCount(state.unselected)} to go); the roslaunch command appears here.`;
+  }
+  const untyped = state.untyped ?? [];
+  if (!untyped.length) return "Nothing to launch: no launch file is selected.";
+  const named = untyped.slice(0, 3).map((id) => {
+    const arg = state.features[id];
+    return arg ? `${arg.arg} of ${shortPath(arg.file)}` : shortenPaths(id);
+  });
+  const more = untyped.length > 3 ? ` and ${untyped.length - 3} more` : "";
+  return `Type a value of your own for ${named.join(", ")}${more}; the roslaunch command appears then.`;
 }

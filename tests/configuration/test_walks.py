@@ -1,0 +1,189 @@
+"""Random walks to complete products on Husky and Lizi (issue 15's acceptance criterion).
+
+A walk clicks as a user would — selects and deselects files and values, sets args to known
+values, to their substituted default (``<default: $(…)>``) and to typed ``<other>`` texts —
+and, after a while, finishes with defaults as ``--finish`` does. At every step:
+
+* no placeholder (``⟨``, ``<default:``, ``<other>``, ``$(``) in the command, nor in the name,
+  namespace or remapped topic of a present element once no ``<other>`` value waits for a text;
+* every conflict shown is about the product as the solver sees it, checked by a SAT solver of
+  its own over ``tree ∧ requires ∧`` the decided features (and the typed texts): a certain one
+  holds in every such configuration with both files, a possible one in some; none has a
+  deselected file, and a complete product none between two files;
+* a complete product has a command, or says what is open (an ``<other>`` value's text);
+
+and a complete product's graph is ``rosvar resolve`` of its command.
+"""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from configuration.helpers import same_as_resolve
+from rosvar.analyses.feature_model.extraction import extract
+from rosvar.configuration.choices import Action, UserChoice
+from rosvar.configuration.conflicts import Certainty
+from rosvar.configuration.engine import ConfigurationState, Configurator, Selection
+from rosvar.configuration.sat import Sat
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.logic.bdd import BDD
+from rosvar.logic.inputs import OTHER, UNSET, Input
+from rosvar.workspace import discover
+
+CORPUS = Path(__file__).resolve().parents[3] / "shared" / "corpus"
+PLACEHOLDERS = ("⟨", "<default:", "<other>", "$(")
+WALKS = 3
+CLICKS = 20  # random choices before finishing with defaults
+
+
+@pytest.fixture(scope="module", params=["husky", "lizi"])
+def system(request: pytest.FixtureRequest) -> tuple[Analysis, Configurator]:
+    root = CORPUS / request.param
+    if not root.is_dir() or not (CORPUS / "_external").is_dir():
+        pytest.skip(f"corpus not found at {CORPUS}")
+    analysis = Analysis(discover([root], deps=[CORPUS / "_external"]))
+    return analysis, Configurator(analysis, extract(analysis, products=True))
+
+
+def test_random_walks_show_no_placeholder_no_false_conflict_and_end_in_a_command(
+    system: tuple[Analysis, Configurator],
+) -> None:
+    analysis, engine = system
+    oracle = ClashOracle(engine)
+    rng = random.Random(f"walks:{analysis.workspace.roots}")
+    conflicts = 0
+    for _ in range(WALKS):
+        for state in walk(engine, rng):
+            assert_no_placeholder(state)
+            conflicts += oracle.check(state)
+        assert state.complete and not state.untyped
+        # one configuration is left, and the solver never lets two files of it clash
+        assert [c for c in state.conflicts if c.files[0] != c.files[1]] == []
+        launched = [f for f in engine.catalog.files if state.features[f.id].state == "selected"]
+        assert state.command is not None or not launched, "a complete product without command"
+        same_as_resolve(analysis, state)
+    assert conflicts > 0  # the oracle had something to check
+
+
+def walk(engine: Configurator, rng: random.Random) -> Iterator[ConfigurationState]:
+    """The states of one walk, the last one complete with every ``<other>`` value typed."""
+    chosen: list[UserChoice] = []
+    for _ in range(CLICKS):
+        state = engine.state(chosen)
+        yield state
+        if state.complete:
+            break
+        chosen.append(click(engine, state, rng))
+    chosen += engine.completion(chosen)
+    while True:
+        state = engine.state(chosen)
+        yield state
+        if not state.untyped:
+            return
+        chosen.append(UserChoice(Action.SET, state.untyped[0], f"typed{rng.randint(0, 9)}"))
+
+
+def click(engine: Configurator, state: ConfigurationState, rng: random.Random) -> UserChoice:
+    """One random choice on an open feature (a text for an untyped ``<other>`` first)."""
+    if state.untyped:
+        return UserChoice(Action.SET, state.untyped[0], f"typed{rng.randint(0, 9)}")
+    open_ = [f for f in engine.catalog if state.features[f.id].state == Selection.UNSELECTED]
+    feature = rng.choice(open_)
+    if feature.kind == "file":
+        return UserChoice(Action.SELECT if rng.random() < 0.3 else Action.DESELECT, feature.id)
+    if feature.kind == "value":
+        return UserChoice(Action.SELECT if rng.random() < 0.7 else Action.DESELECT, feature.id)
+    values = [
+        v
+        for f, v in engine.catalog.values_of(feature.id)
+        if state.features[f.id].state != Selection.DESELECTED
+    ]
+    value = rng.choice(values)
+    if value.slot is OTHER:
+        return UserChoice(Action.SET, feature.id, f"typed{rng.randint(0, 9)}")
+    text = value.value if value.slot is UNSET else str(value.slot)  # <default: …> by its text
+    return UserChoice(Action.SET, feature.id, text)
+
+
+def assert_no_placeholder(state: ConfigurationState) -> None:
+    if state.command is not None:
+        assert not any(p in state.command for p in PLACEHOLDERS), state.command
+    if state.untyped:
+        return  # an <other> value without its text yet is shown as ⟨arg⟩
+    texts: list[Any] = []
+    for node in [*state.graph.nodes, *state.graph.tests]:
+        if node["presence"] == "present":
+            texts += [node["name"], node["namespace"], *(t for _s, t in node["remaps"])]
+    texts += [p["name"] for p in state.graph.params if p["presence"] == "present"]
+    texts += [t["name"] for t in state.graph.topics if t["presence"] == "present"]
+    shown = [t for t in texts if any(p in str(t) for p in PLACEHOLDERS)]
+    assert shown == [], f"placeholders after {[str(c) for c in state.choices]}"
+
+
+class ClashOracle:
+    """Judges shown conflicts on its own: a SAT solver over the feature tree and the
+    *requires* constraints, with the decided features as assumptions."""
+
+    def __init__(self, engine: Configurator) -> None:
+        model, solver = engine.model, engine.model.solver
+        self.engine = engine
+        requires = [
+            formula
+            for constraint, formula in zip(model.constraints, solver.constraints, strict=True)
+            if constraint.kind == "requires"
+        ]
+        trees = [part for file in model.files for part in solver.arg_trees(file)]
+        self.sat = Sat(solver.manager, solver.variables, 0, [*requires, *trees])
+        by_path = {entry.path: entry for entry in engine.catalog.files}
+        self.clashes: dict[tuple[str, str], BDD] = {}  # files → condition
+        grouped: dict[tuple[str, str], BDD] = {}
+        for clash in model.clashes:
+            if clash.first.file == clash.second.file and clash.kind != "node":
+                continue  # the engine's conflicts: between files, or two nodes of one file
+            key = tuple(sorted(by_path[f].id for f in clash.files))
+            assert len(key) == 2
+            grouped[key] = grouped.get(key, model.space.false) | clash.condition
+        self.clashes = grouped
+
+    def check(self, state: ConfigurationState) -> int:
+        """Checks every conflict ``state`` shows; returns how many."""
+        catalog, manager = self.engine.catalog, self.sat.manager
+        decided = [
+            self.sat.atom(f.variable, s.state == Selection.SELECTED)
+            for f in catalog
+            if f.kind != "arg" and (s := state.features[f.id]).state != Selection.UNSELECTED
+        ]
+        for conflict in state.conflicts:
+            files = [catalog.features[f] for f in conflict.files]
+            assert all(state.features[f.id].state != Selection.DESELECTED for f in files)
+            both = manager.true
+            for file in files:
+                both &= manager.var(file.variable)
+            condition = self.clashes[tuple(sorted(conflict.files))]  # type: ignore[index]
+            bounds = self.engine.lowering.decide(condition, self.typed(state))
+            may, must = bounds.may, bounds.must
+            if conflict.status == Certainty.CERTAIN:
+                assert all(state.features[f.id].state == Selection.SELECTED for f in files)
+                assert self.sat.model(decided, both & ~must) is None, conflict
+            else:
+                assert self.sat.model(decided, both & may) is not None, conflict
+        return len(state.conflicts)
+
+    def typed(self, state: ConfigurationState) -> dict[Input, str]:
+        """The texts of the args at ``<other>``: their last ``set`` (the value it went to)."""
+        texts: dict[Input, str] = {}
+        for choice in state.choices:
+            if choice.action == Action.SET and choice.value is not None:
+                arg, values = self.engine.catalog.args[choice.feature]
+                [other] = [f for f, v in values if v.slot is OTHER] or [None]
+                known = {v.value for _f, v in values if v.slot is not OTHER}
+                if other is not None and choice.value not in known:
+                    texts[arg.input] = choice.value
+                else:
+                    texts.pop(arg.input, None)
+        return texts
