@@ -45,10 +45,10 @@ def _unavailable(reason: str) -> None:
     pytest.skip(reason)
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture
 def browser() -> Iterator[Any]:
-    """One headless Chromium per test module: a browser kept for the whole session grew
-    until its renderer crashed late in the suite."""
+    """A fresh headless Chromium per test: a browser kept across tests crashed its renderer
+    now and then late in a run on a loaded machine ("Target crashed")."""
     try:
         from playwright.sync_api import sync_playwright
     except ImportError:

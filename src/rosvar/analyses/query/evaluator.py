@@ -27,7 +27,7 @@ from rosvar.analyses.feature_model.operations import simplest_trigger
 from rosvar.analyses.query.collections import COLLECTIONS, Collection, ElementSet, Queryable
 from rosvar.analyses.query.parser import CONSTANTS, Predicate, Query, QueryError, parse
 from rosvar.interpreter.safe_eval.limits import MAX_SEQUENCE
-from rosvar.interpreter.safe_eval.names import _COMPARE_OPS
+from rosvar.interpreter.safe_eval.names import _BIN_OPS, _COMPARE_OPS
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
@@ -43,13 +43,9 @@ _Group = tuple[tuple[Choice[object], ...], list[tuple[int, Queryable]]]
 Compiled = Callable[[Mapping[str, object]], object]
 """A predicate (or part of it) over the values of the attributes it reads."""
 _ERRORS: Final = (TypeError, ValueError, AttributeError, IndexError, KeyError, ArithmeticError)
+# $(eval)'s arithmetic without ``**`` (a query has no use for powers, and they are costly)
 _BINARY: Final[Mapping[type[ast.operator], Callable[[Any, Any], Any]]] = {
-    ast.Add: operator.add,
-    ast.Sub: operator.sub,
-    ast.Mult: operator.mul,
-    ast.Div: operator.truediv,
-    ast.FloorDiv: operator.floordiv,
-    ast.Mod: operator.mod,
+    op: function for op, function in _BIN_OPS.items() if op is not ast.Pow
 }
 _FUNCTIONS: Final[Mapping[str, Callable[..., object]]] = {
     "str": str,
