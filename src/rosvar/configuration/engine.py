@@ -88,13 +88,18 @@ class ConfigurationState:
     refused: list[Refusal]
     features: dict[str, FeatureState]
     conflicts: list[ConflictState]
-    graph: Graph
+    grapher: Callable[[], Graph] = field(repr=False)  # judged and rendered on first use
     complete: bool
     command: str | None
     counter: Callable[[], int] = field(repr=False)  # counting can cost more than the step
     unselected: int
     commands: list[list[Launch]] = field(default_factory=list)  # files sharing a command line
     untyped: list[str] = field(default_factory=list)  # args at <other> still without a text
+
+    @cached_property
+    def graph(self) -> Graph:
+        """The graph's elements with their presence (judged on first use)."""
+        return self.grapher()
 
     @cached_property
     def configurations(self) -> int:
@@ -389,7 +394,7 @@ class Configurator:
             refused=list(replay.refused),
             features=features,
             conflicts=self.conflicts.shown(view.conflicts, decisions),
-            graph=view.graph,
+            grapher=lambda: self.views.rendering(view).graph,
             complete=complete,
             command=command,
             counter=lambda: self.derivation.count(decisions),

@@ -54,17 +54,37 @@ class Graph:
 
 
 @dataclass(frozen=True)
-class View:
-    """What one list of literals shows, kept to derive longer lists' views."""
+class Rendering:
+    """A view's presences and the graph entries they show, kept to render longer lists'."""
 
-    decisions: Decisions
-    texts: Mapping[str, str]  # arg id → its <other> text
-    typed: Typed
     presences: Judgement
     entries: list[list[Fields]]  # per element of the graph
     starts: list[int]  # per element: where its entries start in its kind's list
-    conflicts: list[ConflictState | None]  # per pair of ``Conflicts``; None: gone
     graph: Graph
+
+
+class View:
+    """What one list of literals shows, kept to derive longer lists' views.
+
+    The conflicts are judged with the view; the presences of the graph's elements and
+    their entries only when the graph is first asked for (``Views.rendering``): a server is
+    ready, and ``configure`` prints its summary, without judging and describing every
+    element of a large workspace up front."""
+
+    def __init__(
+        self,
+        decisions: Decisions,
+        texts: Mapping[str, str],
+        typed: Typed,
+        conflicts: list[ConflictState | None],
+        before: View | None,
+    ) -> None:
+        self.decisions = decisions
+        self.texts = texts  # arg id → its <other> text
+        self.typed = typed
+        self.conflicts = conflicts  # per pair of ``Conflicts``; None: gone
+        self.before = before  # until rendered: the view its rendering is derived from
+        self.rendering: Rendering | None = None  # set by ``Views.rendering``
 
 
 class Views:
@@ -160,22 +180,50 @@ class Views:
         return str(value.slot)
 
     def _derive(self, decisions: Decisions, texts: Mapping[str, str], before: View | None) -> View:
-        """The view from ``before`` (an earlier list of the same literals, or none)."""
+        """The view from ``before`` (an earlier list of the same literals, or none): its
+        conflicts judged, its graph left to ``render``."""
         typed = self._typed(texts)
         if before is None:
-            presences = self.presences.judge(decisions, typed, self.describe)
             conflicts = self.conflicts.judge(decisions, typed, self.describe)
-            entries: list[list[Fields]] = [[] for _ in self.graph.elements]
-            again: Iterable[int] = range(len(self.graph.elements))
         else:
-            presences = self.presences.judge(
-                decisions, typed, self.describe, (before.decisions, before.typed, before.presences)
-            )
             conflicts = self.conflicts.judge(
                 decisions, typed, self.describe, (before.decisions, before.typed, before.conflicts)
             )
-            entries = list(before.entries)
-            again = self._rerendered(decisions, texts, before, presences)
+        return View(decisions, texts, typed, conflicts, before)
+
+    def rendering(self, view: View) -> Rendering:
+        """``view``'s presences and entries, judged and rendered on first use with those of
+        the earlier views it is derived from that are not yet (oldest first: each from the
+        one before, which is then let go)."""
+        pending = []
+        later: View | None = view
+        while later is not None and later.rendering is None:
+            pending.append(later)
+            later = later.before
+        for later in reversed(pending):
+            later.rendering = self._rendering_of(later, later.before)
+            later.before = None
+        assert view.rendering is not None
+        return view.rendering
+
+    def _rendering_of(self, view: View, before: View | None) -> Rendering:
+        """``view``'s presences and entries, from those of ``before`` (rendered) if any."""
+        decisions, texts, typed = view.decisions, view.texts, view.typed
+        if before is None:
+            earlier = None
+            presences = self.presences.judge(decisions, typed, self.describe)
+            entries: list[list[Fields]] = [[] for _ in self.graph.elements]
+            again: Iterable[int] = range(len(self.graph.elements))
+        else:
+            earlier = self.rendering(before)
+            presences = self.presences.judge(
+                decisions,
+                typed,
+                self.describe,
+                (before.decisions, before.typed, earlier.presences),
+            )
+            entries = list(earlier.entries)
+            again = self._rerendered(decisions, texts, before, earlier, presences)
         values: dict[str, Values] = {}
         moved: dict[ElementKind, list[int]] = {}  # per kind: the elements rendered anew
         for index in again:  # in graph order: a topic comes after its nodes
@@ -195,14 +243,14 @@ class Views:
             if found is not entries[index]:
                 moved.setdefault(element.kind, []).append(index)
             entries[index] = found
-        lists, starts = self._lists(entries, before, moved)
+        lists, starts = self._lists(entries, earlier, moved)
         graph = Graph(**{f"{kind}s": listed for kind, listed in lists.items()})
-        return View(decisions, texts, typed, presences, entries, starts, conflicts, graph)
+        return Rendering(presences, entries, starts, graph)
 
     def _lists(
         self,
         entries: list[list[Fields]],
-        before: View | None,
+        before: Rendering | None,
         moved: Mapping[ElementKind, list[int]],
     ) -> tuple[dict[str, list[Fields]], list[int]]:
         """Each kind's list of entries, and where each element's start in it. A kind whose
@@ -235,14 +283,15 @@ class Views:
         decisions: Decisions,
         texts: Mapping[str, str],
         before: View,
+        earlier: Rendering,
         presences: Judgement,
     ) -> list[int]:
         """Elements whose verdict or read strings differ from ``before`` (and the topics of
         nodes among them, whose lists of nodes may change), in graph order."""
         again: set[int] = set()
         for condition in presences.judged:
-            judged, earlier = presences.verdicts[condition], before.presences.verdicts[condition]
-            if judged is not earlier and judged.shown != earlier.shown:
+            judged, was = presences.verdicts[condition], earlier.presences.verdicts[condition]
+            if judged is not was and judged.shown != was.shown:
                 again.update(self._elements_of[condition])
         changed = decisions.decided.items() ^ before.decisions.decided.items()
         for variable, _value in changed:
