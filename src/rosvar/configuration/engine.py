@@ -24,7 +24,7 @@ from rosvar.configuration.derivation import Decisions, Derivation, Presence
 from rosvar.configuration.graph import VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
-from rosvar.configuration.view import Graph, Views
+from rosvar.configuration.view import Graph, Summary, Views
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.inputs import OTHER, UNSET
 from rosvar.workspace.interfaces.model import Interfaces
@@ -89,6 +89,7 @@ class ConfigurationState:
     features: dict[str, FeatureState]
     conflicts: list[ConflictState]
     grapher: Callable[[], Graph] = field(repr=False)  # judged and rendered on first use
+    summarizer: Callable[[], Summary] = field(repr=False)  # judged on first use
     complete: bool
     command: str | None
     counter: Callable[[], int] = field(repr=False)  # counting can cost more than the step
@@ -100,6 +101,11 @@ class ConfigurationState:
     def graph(self) -> Graph:
         """The graph's elements with their presence (judged on first use)."""
         return self.grapher()
+
+    @cached_property
+    def summary(self) -> Summary:
+        """The graph in numbers, judged on first use without describing conditions."""
+        return self.summarizer()
 
     @cached_property
     def configurations(self) -> int:
@@ -395,6 +401,7 @@ class Configurator:
             features=features,
             conflicts=self.conflicts.shown(view.conflicts, decisions),
             grapher=lambda: self.views.rendering(view).graph,
+            summarizer=lambda: self.views.summary(view),
             complete=complete,
             command=command,
             counter=lambda: self.derivation.count(decisions),
