@@ -11,7 +11,7 @@ that the user may type later — from below (``must``: for every text) and from 
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass
 
 from rosvar.analyses.feature_model.model import FeatureModel
@@ -21,6 +21,9 @@ from rosvar.logic.bdd import BDD, transfer
 from rosvar.logic.conditions import PredicateAtom, SlotAtom, decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import term_inputs
+
+
+_NONE: frozenset[str] = frozenset()
 
 
 @dataclass(frozen=True)
@@ -69,10 +72,11 @@ class Lowering:
                 self.open.add(name)
             else:
                 self.fixed[name] = truth[name]
-        self._fixed: dict[BDD, tuple[BDD, set[str]]] = {}  # condition → fixed, its support
+        # condition → fixed, and the open atoms of its support (most have none: one set)
+        self._fixed: dict[BDD, tuple[BDD, frozenset[str]]] = {}
         self._bounds: dict[BDD, Bounds] = {}  # by fixed condition
         self._decided: dict[tuple[BDD, frozenset[tuple[Input, str]]], Bounds] = {}
-        self._cares: dict[frozenset[str], BDD] = {}
+        self._cares: dict[frozenset[object], BDD] = {}  # by ``care_key``
         self._satisfiable: dict[BDD, bool] = {}
 
     def fix(self, condition: BDD) -> BDD:
@@ -85,7 +89,7 @@ class Lowering:
             kept = support  # the support of ``fixed`` when nothing was fixed
             if values:
                 kept = self.space.support(fixed)
-            found = self._fixed[condition] = (fixed, kept)
+            found = self._fixed[condition] = (fixed, frozenset(kept & self.open) or _NONE)
             if fixed not in self._satisfiable:
                 self._satisfiable[fixed] = self._judge(fixed, kept)
         return found[0]
@@ -112,7 +116,7 @@ class Lowering:
     def _judge(self, fixed: BDD, support: set[str]) -> bool:
         """Satisfiability with the facts that matter conjoined once per support: the
         variants of one element share theirs."""
-        key = frozenset(support)
+        key = self.space.care_key(support)  # far fewer than supports
         care = self._cares.get(key)
         if care is None:
             care = self._cares[key] = self.space.care_over(support)
@@ -132,13 +136,12 @@ class Lowering:
                 if term_inputs(atom.term) <= concrete.keys():
                     values[name] = decide_predicate(atom, concrete, self.host)
             decided = self.space.cofactor(fixed, values)
-            found = self._copy(decided, self.space.support(decided))
+            found = self._copy(decided, self.space.support(decided) & self.open)
             self._decided[key] = found
         return found
 
-    def _copy(self, fixed: BDD, support: set[str]) -> Bounds:
-        """In the solver's manager: ``∀ open. fixed`` and ``∃ open. fixed`` (``support``:
-        that of ``fixed``)."""
-        open_ = support & self.open
+    def _copy(self, fixed: BDD, open_: Collection[str]) -> Bounds:
+        """In the solver's manager: ``∀ open. fixed`` and ``∃ open. fixed`` (``open_``: the
+        open atoms of its support)."""
         may = transfer(fixed, self.manager, open_)
         return Bounds(~transfer(~fixed, self.manager, open_) if open_ else may, may)
