@@ -11,7 +11,7 @@ that the user may type later — from below (``must``: for every text) and from 
 
 from __future__ import annotations
 
-from collections.abc import Collection, Mapping
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 
 from rosvar.analyses.feature_model.model import FeatureModel
@@ -22,8 +22,10 @@ from rosvar.logic.conditions import PredicateAtom, SlotAtom, decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import term_inputs
 
-
 _NONE: frozenset[str] = frozenset()
+COPIES = 100_000
+"""Copied diagram nodes kept per set of open atoms (``_copy``): the conditions of one
+file's elements share most of their nodes (its ``launched``), other files' few."""
 
 
 @dataclass(frozen=True)
@@ -78,6 +80,7 @@ class Lowering:
         self._decided: dict[tuple[BDD, frozenset[tuple[Input, str]]], Bounds] = {}
         self._cares: dict[frozenset[object], BDD] = {}  # by ``care_key``
         self._satisfiable: dict[BDD, bool] = {}
+        self._copies: dict[frozenset[str], dict[BDD, BDD]] = {}  # by open atoms hidden
 
     def fix(self, condition: BDD) -> BDD:
         """``condition`` with the fixed atoms substituted (still in the analysis' manager)."""
@@ -102,6 +105,34 @@ class Lowering:
         if found is None:
             found = self._bounds[fixed] = self._copy(fixed, self._fixed[condition][1])
         return found
+
+    def conjunction(self, factors: Sequence[BDD]) -> BDD:
+        """The conjunction of fixed ``factors`` (itself fixed: fixing is a cofactor, which
+        distributes over ∧), with its bounds conjoined from the factors' in the solver's
+        manager when no two factors share an open atom (∀ distributes over ∧, and ∃ over
+        a conjunction of functions of disjoint variables).
+
+        An element's condition is its file's ``launched`` ∧ its own ∧ the branches of its
+        fields: each factor is copied once, where a copy of each conjunction walked the
+        large ``launched`` of a file included from many places again for each element."""
+        fixed = factors[0]
+        for factor in factors[1:]:
+            fixed &= factor
+        if fixed in self._bounds:
+            return fixed
+        for factor in factors:
+            self.fix(factor)  # the factor itself: remembered with its open atoms
+        opens = [self._fixed[factor][1] for factor in factors]
+        union = frozenset().union(*opens)
+        if fixed not in self._fixed:
+            self._fixed[fixed] = (fixed, union or _NONE)
+        if sum(map(len, opens)) == len(union):
+            bounds = [self.bounds(factor) for factor in factors]
+            must, may = bounds[0].must, bounds[0].may
+            for each in bounds[1:]:
+                must, may = must & each.must, may & each.may
+            self._bounds[fixed] = Bounds(must, may)
+        return fixed
 
     def lower(self, condition: BDD) -> tuple[BDD, Bounds]:
         return self.fix(condition), self.bounds(condition)
@@ -143,5 +174,8 @@ class Lowering:
     def _copy(self, fixed: BDD, open_: Collection[str]) -> Bounds:
         """In the solver's manager: ``∀ open. fixed`` and ``∃ open. fixed`` (``open_``: the
         open atoms of its support)."""
-        may = transfer(fixed, self.manager, open_)
-        return Bounds(~transfer(~fixed, self.manager, open_) if open_ else may, may)
+        copies = self._copies.get(frozenset(open_))
+        if copies is None or len(copies) > COPIES:
+            copies = self._copies[frozenset(open_)] = {}
+        may = transfer(fixed, self.manager, open_, copies)
+        return Bounds(~transfer(~fixed, self.manager, open_, copies) if open_ else may, may)

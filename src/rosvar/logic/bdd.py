@@ -222,7 +222,9 @@ def _check_layout(manager: Manager, at: int, words: memoryview) -> None:
         raise RuntimeError("dd's CUDD lays its nodes out otherwise than rosvar reads them")
 
 
-def transfer(u: BDD, target: Manager, hidden: Collection[str] = ()) -> BDD:
+def transfer(
+    u: BDD, target: Manager, hidden: Collection[str] = (), copies: dict[BDD, BDD] | None = None
+) -> BDD:
     """``∃ hidden. u`` rebuilt in ``target``, which declares the rest of its support, in time
     linear in the size of ``u``.
 
@@ -235,9 +237,16 @@ def transfer(u: BDD, target: Manager, hidden: Collection[str] = ()) -> BDD:
     variable becomes the disjunction of its cofactors' copies, which no longer depend on
     it. Quantification does not commute with negation, so a complemented edge is its own
     function here, with its own cofactors.
+
+    ``copies`` (from the same manager to ``target``, with the same ``hidden``) is kept
+    from call to call by callers that copy many diagrams sharing parts: each part is
+    then copied once.
     """
     source = u.bdd
-    copies: dict[BDD, BDD] = {source.true: target.true, source.false: target.false}
+    if copies is None:
+        copies = {}
+    copies.setdefault(source.true, target.true)
+    copies.setdefault(source.false, target.false)
     for function in children_first(u, cofactors, copies):
         low, high = cofactors(function)
         name = function.var
