@@ -24,8 +24,9 @@ from rosvar.logic.terms import term_inputs
 
 _NONE: frozenset[str] = frozenset()
 COPIES = 100_000
-"""Copied diagram nodes kept per set of open atoms (``_copy``): the conditions of one
-file's elements share most of their nodes (its ``launched``), other files' few."""
+"""Copied diagram nodes kept for the last set of open atoms hidden (``_copy``): the
+conditions copied one after the other, of one file's elements, share most of their nodes
+(its ``launched``), other files' few."""
 
 
 @dataclass(frozen=True)
@@ -80,7 +81,7 @@ class Lowering:
         self._decided: dict[tuple[BDD, frozenset[tuple[Input, str]]], Bounds] = {}
         self._cares: dict[frozenset[object], BDD] = {}  # by ``care_key``
         self._satisfiable: dict[BDD, bool] = {}
-        self._copies: dict[frozenset[str], dict[BDD, BDD]] = {}  # by open atoms hidden
+        self._copies: dict[frozenset[str], dict[BDD, BDD]] = {}  # the last open atoms hidden
 
     def fix(self, condition: BDD) -> BDD:
         """``condition`` with the fixed atoms substituted (still in the analysis' manager)."""
@@ -174,8 +175,10 @@ class Lowering:
     def _copy(self, fixed: BDD, open_: Collection[str]) -> Bounds:
         """In the solver's manager: ``∀ open. fixed`` and ``∃ open. fixed`` (``open_``: the
         open atoms of its support)."""
-        copies = self._copies.get(frozenset(open_))
+        hidden = frozenset(open_)
+        copies = self._copies.get(hidden)
         if copies is None or len(copies) > COPIES:
-            copies = self._copies[frozenset(open_)] = {}
+            self._copies = {hidden: {}}  # the last set's only: the next condition's is alike
+            copies = self._copies[hidden]
         may = transfer(fixed, self.manager, open_, copies)
         return Bounds(~transfer(~fixed, self.manager, open_, copies) if open_ else may, may)
