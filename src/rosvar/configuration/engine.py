@@ -201,6 +201,7 @@ class Configurator:
             entry.path: self.lowering.bounds(self.graph.launched[entry.path])
             for entry in self.catalog.files
         }
+        self.lowering.built()
         cached = max(MIN_CACHED_STEPS, CACHED_FEATURES // max(1, len(self.catalog.features)))
         progress("presence of elements", 0, len(self.graph.elements))
         self.views = Views(

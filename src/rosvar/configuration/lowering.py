@@ -135,6 +135,16 @@ class Lowering:
             self._bounds[fixed] = Bounds(must, may)
         return fixed
 
+    def built(self) -> None:
+        """Let the build's caches go: after it, conditions are lowered again only for
+        typed texts (``decide``), and the caches held every condition of the graph in
+        both managers, and the copies' nodes."""
+        self._fixed.clear()
+        self._bounds.clear()
+        self._cares.clear()
+        self._satisfiable.clear()
+        self._copies.clear()
+
     def lower(self, condition: BDD) -> tuple[BDD, Bounds]:
         return self.fix(condition), self.bounds(condition)
 
