@@ -191,7 +191,7 @@ class Views:
 
     def _derive(self, decisions: Decisions, texts: Mapping[str, str], before: View | None) -> View:
         """The view from ``before`` (an earlier list of the same literals, or none): its
-        conflicts judged, its graph left to ``render``."""
+        conflicts judged, its graph left to ``judgement`` and ``rendering``."""
         typed = self._typed(texts)
         if before is None:
             conflicts = self.conflicts.judge(decisions, typed, self.describe)
@@ -249,9 +249,9 @@ class Views:
             if presence == Presence.ABSENT and element.kind == ElementKind.ERROR:
                 continue
             given = self._given(element, presence, values, view.decisions, view.texts)
-            if element.kind == ElementKind.ERROR:
-                shown = self._element_entries(element, judged, (), given, ())
-                errors.extend(shown if presence == Presence.PRESENT else ())
+            if presence == Presence.PRESENT and element.kind == ElementKind.ERROR:
+                shown = self._element_entries(element, judged, (), given, ())  # none described
+                errors.extend(shown)
             else:
                 parts = self.presences.of_parts[index]
                 shown = element.fields(
