@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import itertools
 from typing import TYPE_CHECKING
 
 from rosvar.analyses.feature_model.extraction import extract
-from rosvar.configuration.lowering import Lowering
+from rosvar.configuration.lowering import Bounds, Lowering
+from rosvar.logic.bdd import transfer
 from rosvar.logic.conditions import BDD
 from rosvar.logic.inputs import ArgInput
 
@@ -52,3 +54,37 @@ def test_a_predicate_on_an_other_text_is_open_until_the_text_is_typed(
     for decided in (starts, other):  # within the bounds before the text was typed
         assert decided.may & ~bounds.may == lowering.manager.false
         assert bounds.must & ~decided.must == lowering.manager.false
+
+
+FACTORS = """
+  <arg name="robot" default="kobuki"/>
+  <arg name="arm" default="none"/>
+  <node pkg="p" type="t" name="a" if="$(eval arg('robot').startswith('s'))"/>
+  <node pkg="p" type="t" name="b" if="$(eval arg('arm').startswith('g'))"/>
+  <node pkg="p" type="t" name="c" unless="$(eval arg('robot').startswith('s'))"/>
+  <node pkg="p" type="t" name="d" if="$(eval arg('robot') == 'kobuki')"/>
+  <node pkg="p" type="t" name="e" if="$(optenv USE_CAM false)"/>
+"""
+
+
+def test_a_conjunction_of_factors_lowers_as_the_whole_conjunction(ws: LaunchWorkspace) -> None:
+    """Factors sharing an open atom (a and c) or not (a and b), exact ones (d, e): the
+    conjunction and its bounds are those of the conjunction lowered whole, without the
+    copies kept between conditions."""
+    path = ws.launch("a.launch", FACTORS)
+    analysis = ws.analysis()
+    model = extract(analysis)
+    conditions = [node.condition for node in analysis.model(path).nodes]
+    space, manager = analysis.space, model.solver.manager
+    opened = 0
+    for first, second in itertools.combinations(conditions, 2):
+        lowering = Lowering(analysis, model, {})
+        conjoined = lowering.conjunction([lowering.fix(first), lowering.fix(second)])
+        whole = Lowering(analysis, model, {}).fix(first & second)
+        assert conjoined == whole
+        hidden = space.support(whole) & lowering.open
+        may = transfer(whole, manager, hidden)
+        must = ~transfer(~whole, manager, hidden)
+        assert lowering.bounds(conjoined) == Bounds(must, may)
+        opened += must != may
+    assert opened  # some pairs are open: both bounds are checked

@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+from collections import Counter
 from typing import TYPE_CHECKING
 
 from configuration.helpers import configurator, run
+from rosvar.configuration.derivation import Presence
+from rosvar.configuration.graph import ElementKind
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -40,3 +43,47 @@ def test_entries_a_step_does_not_reach_stay_the_same_objects(ws: LaunchWorkspace
     renamed = {(x["name"], x["presence"], y["presence"]) for x, y in pairs if x is not y}
     assert renamed  # the robot's variants changed presence
     assert all(old != new for _name, old, new in renamed)
+
+
+C = """
+  <arg name="cam" default="true"/>
+  <rosparam>{gains: {p: 1, i: 2}, rate: 10}</rosparam>
+  <node pkg="p" type="t" name="cam" if="$(arg cam)">
+    <remap from="image" to="raw" if="$(arg cam)"/>
+  </node>
+  <include file="$(find nowhere)/x.launch"/>
+"""
+
+
+def test_a_view_not_shown_before_is_derived_as_one_computed_afresh(ws: LaunchWorkspace) -> None:
+    ws.launch("a.launch", A)
+    ws.launch("b.launch", B)
+    engine = configurator(ws)
+    for n in range(1, len(STEPS)):  # states whose graph nobody asks for
+        run(engine, *STEPS[:n]).summary  # noqa: B018 (judged, not rendered)
+    last = run(engine, *STEPS)
+    assert last.graph.to_json() == run(configurator(ws), *STEPS).graph.to_json()
+
+
+def test_a_summary_counts_the_entries_the_graph_shows(ws: LaunchWorkspace) -> None:
+    """A YAML load shows an entry per key, an error only while not absent."""
+    ws.launch("a.launch", A)
+    ws.launch("c.launch", C)
+    engine = configurator(ws)
+    steps = ("select c.launch", "set c.launch:cam=false", "select a.launch")
+    errors = 0
+    for n in range(len(steps) + 1):
+        state = run(engine, *steps[:n])
+        summary = state.summary  # before the graph: judged without it
+        graph = state.graph
+        for kind, entries in (
+            (ElementKind.NODE, graph.nodes),
+            (ElementKind.PARAM, graph.params),
+            (ElementKind.TOPIC, graph.topics),
+            (ElementKind.ERROR, graph.errors),
+        ):
+            counted = Counter(entry["presence"] for entry in entries)
+            assert summary.counts[kind] == {p: counted[p] for p in Presence}
+        assert summary.errors == [e for e in graph.errors if e["presence"] == Presence.PRESENT]
+        errors += len(summary.errors)
+    assert errors and summary.counts[ElementKind.PARAM][Presence.PRESENT] == 3

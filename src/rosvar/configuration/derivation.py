@@ -34,7 +34,6 @@ from collections import deque
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from enum import StrEnum
-from itertools import chain
 
 from rosvar.analyses.feature_model.model import FeatureModel, FileFeature, name_of
 from rosvar.configuration.lowering import Bounds
@@ -480,13 +479,16 @@ class Derivation:
         """
         without = within = None
         if component is not None:
-            examples = (
+            examples = [
                 w for w in self._examples.get(component, ()) if decisions.valid(component, w)
-            )
-            candidates = list(chain(decisions.witnesses[component], examples))
+            ]
+            candidates = [*decisions.witnesses[component], *examples]
+            # the newest examples first: made for the conditions judged just before (the
+            # variants of one element), they hold for the next more often than the others
+            ordered = [*reversed(examples), *decisions.witnesses[component]]
             exact = must == may  # the usual case: one walk down the diagram answers both
             mask, bits = self._implied(may)  # a witness without these has no ``may``
-            for witness in candidates:
+            for witness in ordered:
                 if witness & mask != bits:
                     holds = False
                 elif exact:

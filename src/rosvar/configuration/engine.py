@@ -24,7 +24,7 @@ from rosvar.configuration.derivation import Decisions, Derivation, Presence
 from rosvar.configuration.graph import VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
-from rosvar.configuration.view import Graph, Views
+from rosvar.configuration.view import Graph, Summary, Views
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.inputs import OTHER, UNSET
 from rosvar.workspace.interfaces.model import Interfaces
@@ -88,13 +88,24 @@ class ConfigurationState:
     refused: list[Refusal]
     features: dict[str, FeatureState]
     conflicts: list[ConflictState]
-    graph: Graph
+    grapher: Callable[[], Graph] = field(repr=False)  # judged and rendered on first use
+    summarizer: Callable[[], Summary] = field(repr=False)  # judged on first use
     complete: bool
     command: str | None
     counter: Callable[[], int] = field(repr=False)  # counting can cost more than the step
     unselected: int
     commands: list[list[Launch]] = field(default_factory=list)  # files sharing a command line
     untyped: list[str] = field(default_factory=list)  # args at <other> still without a text
+
+    @cached_property
+    def graph(self) -> Graph:
+        """The graph's elements with their presence (judged on first use)."""
+        return self.grapher()
+
+    @cached_property
+    def summary(self) -> Summary:
+        """The graph in numbers, judged on first use without describing conditions."""
+        return self.summarizer()
 
     @cached_property
     def configurations(self) -> int:
@@ -190,6 +201,7 @@ class Configurator:
             entry.path: self.lowering.bounds(self.graph.launched[entry.path])
             for entry in self.catalog.files
         }
+        self.lowering.built()
         cached = max(MIN_CACHED_STEPS, CACHED_FEATURES // max(1, len(self.catalog.features)))
         progress("presence of elements", 0, len(self.graph.elements))
         self.views = Views(
@@ -389,7 +401,8 @@ class Configurator:
             refused=list(replay.refused),
             features=features,
             conflicts=self.conflicts.shown(view.conflicts, decisions),
-            graph=view.graph,
+            grapher=lambda: self.views.rendering(view).graph,
+            summarizer=lambda: self.views.summary(view),
             complete=complete,
             command=command,
             counter=lambda: self.derivation.count(decisions),

@@ -217,7 +217,7 @@ class VariationalGraph:
         Conditions are fixed factor by factor and then conjoined (fixing is a cofactor, which
         distributes over ∧): the factors are few and shared (``launched`` is a large diagram
         for a file included from many places), their conjunctions many and small."""
-        fix = self.lowering.fix
+        fix, conjunction = self.lowering.fix, self.lowering.conjunction
         counters: dict[str, int] = {}
 
         def new_id(location: Location) -> str:
@@ -231,9 +231,9 @@ class VariationalGraph:
         for node in model.nodes:
             self._add_node(model, node, launched, numbered(node.location))
         for param in model.params:
-            condition = launched & fix(param.condition)
+            factors = (launched, fix(param.condition))
             if isinstance(param, ParamDecl):
-                for variant, (name, value) in self._variants(condition, [param.name, param.value]):
+                for variant, (name, value) in self._variants(factors, [param.name, param.value]):
                     self._add(
                         ElementKind.PARAM,
                         numbered(param.location),
@@ -247,7 +247,7 @@ class VariationalGraph:
                     ElementKind.PARAM,
                     numbered(param.location),
                     model.file,
-                    condition,
+                    conjunction(factors),
                     _yaml_renderer(param, self.confinement),
                     _needs(
                         param.scope_ns, param.command, param.ns, param.file, param.param, param.text
@@ -261,7 +261,7 @@ class VariationalGraph:
                     ElementKind.ERROR,
                     numbered(include.location),
                     model.file,
-                    launched & fix(include.condition),
+                    conjunction((launched, fix(include.condition))),
                     _static(
                         {
                             "code": "include-unknown",
@@ -275,7 +275,7 @@ class VariationalGraph:
                 ElementKind.ERROR,
                 numbered(error.location),
                 model.file,
-                launched & fix(error.condition),
+                conjunction((launched, fix(error.condition))),
                 _static({"code": error.code, "message": error.message, **error.location.to_json()}),
             )
 
@@ -284,7 +284,7 @@ class VariationalGraph:
     ) -> None:
         keys = sorted(node.fields)
         fields: list[Choice[object]] = [node.fields[k] for k in keys]
-        within = launched & self.lowering.fix(node.condition)
+        within = (launched, self.lowering.fix(node.condition))
         for condition, values in self._variants(within, fields):
             if not self.lowering.satisfiable(self.lowering.fix(condition)):
                 continue  # before its parts are lowered
@@ -309,37 +309,44 @@ class VariationalGraph:
                     self._interface_uses(element, raw, node, condition)
 
     def _variants(
-        self, within: BDD, fields: Sequence[Choice[object]]
+        self, within: Sequence[BDD], fields: Sequence[Choice[object]]
     ) -> list[tuple[BDD, tuple[object, ...]]]:
-        """``within`` (fixed) ∧ each combination of the fields' values, in ``combine``'s order, but
-        without the combinations the facts rule out (two values of one arg), dropped as
-        the product is formed: a node whose fields read several args makes a combination
-        per value of each, mostly impossible ones, which ``_add`` would lower one by one
-        only to refuse them (one gazebo node of empty_world.launch made 8,424).
+        """The conjunction of the fixed factors ``within`` ∧ each combination of the fields'
+        values, in ``combine``'s order, but without the combinations the facts rule out (two
+        values of one arg), dropped as the product is formed: a node whose fields read
+        several args makes a combination per value of each, mostly impossible ones, which
+        ``_add`` would lower one by one only to refuse them (one gazebo node of
+        empty_world.launch made 8,424). Each condition is conjoined from its factors
+        (``Lowering.conjunction``).
 
         Each partial combination carries a *shadow*: its condition conjoined with the facts
         over the variables of its parts, FALSE as soon as the facts rule it out."""
-        false = within.bdd.false
+        lowering = self.lowering
+        false = lowering.space.false
         varying = [index for index, field_ in enumerate(fields) if len(field_) != 1]
         leaves: list[object] = [None] * len(fields)
+        factors = list(within)
         for index, field_ in enumerate(fields):
             if len(field_) == 1:
                 condition, leaves[index] = field_.branches[0]
-                within &= self.lowering.fix(condition)
-        partial = [(within, self._shadow(within), leaves)]
+                factors.append(lowering.fix(condition))
+        start = lowering.conjunction(factors)
+        partial = [(tuple(factors), self._shadow(start), leaves)]
         for index in varying:
             grown = []
-            for condition, shadow, values in partial:
+            for conjoined, shadow, values in partial:
                 for branch, leaf in fields[index]:
-                    own = self.lowering.fix(branch)
+                    own = lowering.fix(branch)
                     both = shadow & self._shadow(own)
                     if both != false:
                         chosen = list(values)
                         chosen[index] = leaf
-                        grown.append((condition & own, both, chosen))
+                        grown.append(((*conjoined, own), both, chosen))
             partial = grown
         return [
-            (condition, tuple(values)) for condition, shadow, values in partial if shadow != false
+            (lowering.conjunction(conjoined), tuple(values))
+            for conjoined, shadow, values in partial
+            if shadow != false
         ]
 
     def _shadow(self, condition: BDD) -> BDD:
@@ -356,7 +363,7 @@ class VariationalGraph:
         its part in ``parts`` (added) or None when the variant always has it."""
         kept: list[_Setting] = []
         for own, first, second in settings:
-            both = condition & self.lowering.fix(own)
+            both = self.lowering.conjunction((condition, self.lowering.fix(own)))
             if both == condition:
                 kept.append((first, second, None))
                 continue

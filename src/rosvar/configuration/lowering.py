@@ -11,7 +11,7 @@ that the user may type later — from below (``must``: for every text) and from 
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 
 from rosvar.analyses.feature_model.model import FeatureModel
@@ -21,6 +21,12 @@ from rosvar.logic.bdd import BDD, transfer
 from rosvar.logic.conditions import PredicateAtom, SlotAtom, decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import term_inputs
+
+_NONE: frozenset[str] = frozenset()
+COPIES = 100_000
+"""Copied diagram nodes kept for the last set of open atoms hidden (``_copy``): the
+conditions copied one after the other, of one file's elements, share most of their nodes
+(its ``launched``), other files' few."""
 
 
 @dataclass(frozen=True)
@@ -69,11 +75,13 @@ class Lowering:
                 self.open.add(name)
             else:
                 self.fixed[name] = truth[name]
-        self._fixed: dict[BDD, tuple[BDD, set[str]]] = {}  # condition → fixed, its support
+        # condition → fixed, and the open atoms of its support (most have none: one set)
+        self._fixed: dict[BDD, tuple[BDD, frozenset[str]]] = {}
         self._bounds: dict[BDD, Bounds] = {}  # by fixed condition
         self._decided: dict[tuple[BDD, frozenset[tuple[Input, str]]], Bounds] = {}
-        self._cares: dict[frozenset[str], BDD] = {}
+        self._cares: dict[frozenset[object], BDD] = {}  # by ``care_key``
         self._satisfiable: dict[BDD, bool] = {}
+        self._copies: dict[frozenset[str], dict[BDD, BDD]] = {}  # the last open atoms hidden
 
     def fix(self, condition: BDD) -> BDD:
         """``condition`` with the fixed atoms substituted (still in the analysis' manager)."""
@@ -85,7 +93,7 @@ class Lowering:
             kept = support  # the support of ``fixed`` when nothing was fixed
             if values:
                 kept = self.space.support(fixed)
-            found = self._fixed[condition] = (fixed, kept)
+            found = self._fixed[condition] = (fixed, frozenset(kept & self.open) or _NONE)
             if fixed not in self._satisfiable:
                 self._satisfiable[fixed] = self._judge(fixed, kept)
         return found[0]
@@ -98,6 +106,44 @@ class Lowering:
         if found is None:
             found = self._bounds[fixed] = self._copy(fixed, self._fixed[condition][1])
         return found
+
+    def conjunction(self, factors: Sequence[BDD]) -> BDD:
+        """The conjunction of fixed ``factors`` (itself fixed: fixing is a cofactor, which
+        distributes over ∧), with its bounds conjoined from the factors' in the solver's
+        manager when no two factors share an open atom (∀ distributes over ∧, and ∃ over
+        a conjunction of functions of disjoint variables).
+
+        An element's condition is its file's ``launched`` ∧ its own ∧ the branches of its
+        fields: each factor is copied once, where a copy of each conjunction walked the
+        large ``launched`` of a file included from many places again for each element."""
+        fixed = factors[0]
+        for factor in factors[1:]:
+            fixed &= factor
+        if fixed in self._bounds:
+            return fixed
+        for factor in factors:
+            self.fix(factor)  # the factor itself: remembered with its open atoms
+        opens = [self._fixed[factor][1] for factor in factors]
+        union = frozenset().union(*opens)
+        if fixed not in self._fixed:
+            self._fixed[fixed] = (fixed, union or _NONE)
+        if sum(map(len, opens)) == len(union):
+            bounds = [self.bounds(factor) for factor in factors]
+            must, may = bounds[0].must, bounds[0].may
+            for each in bounds[1:]:
+                must, may = must & each.must, may & each.may
+            self._bounds[fixed] = Bounds(must, may)
+        return fixed
+
+    def built(self) -> None:
+        """Let the build's caches go: after it, conditions are lowered again only for
+        typed texts (``decide``), and the caches held every condition of the graph in
+        both managers, and the copies' nodes."""
+        self._fixed.clear()
+        self._bounds.clear()
+        self._cares.clear()
+        self._satisfiable.clear()
+        self._copies.clear()
 
     def lower(self, condition: BDD) -> tuple[BDD, Bounds]:
         return self.fix(condition), self.bounds(condition)
@@ -112,7 +158,7 @@ class Lowering:
     def _judge(self, fixed: BDD, support: set[str]) -> bool:
         """Satisfiability with the facts that matter conjoined once per support: the
         variants of one element share theirs."""
-        key = frozenset(support)
+        key = self.space.care_key(support)  # far fewer than supports
         care = self._cares.get(key)
         if care is None:
             care = self._cares[key] = self.space.care_over(support)
@@ -132,13 +178,17 @@ class Lowering:
                 if term_inputs(atom.term) <= concrete.keys():
                     values[name] = decide_predicate(atom, concrete, self.host)
             decided = self.space.cofactor(fixed, values)
-            found = self._copy(decided, self.space.support(decided))
+            found = self._copy(decided, self.space.support(decided) & self.open)
             self._decided[key] = found
         return found
 
-    def _copy(self, fixed: BDD, support: set[str]) -> Bounds:
-        """In the solver's manager: ``∀ open. fixed`` and ``∃ open. fixed`` (``support``:
-        that of ``fixed``)."""
-        open_ = support & self.open
-        may = transfer(fixed, self.manager, open_)
-        return Bounds(~transfer(~fixed, self.manager, open_) if open_ else may, may)
+    def _copy(self, fixed: BDD, open_: Collection[str]) -> Bounds:
+        """In the solver's manager: ``∀ open. fixed`` and ``∃ open. fixed`` (``open_``: the
+        open atoms of its support)."""
+        hidden = frozenset(open_)
+        copies = self._copies.get(hidden)
+        if copies is None or len(copies) > COPIES:
+            self._copies = {hidden: {}}  # the last set's only: the next condition's is alike
+            copies = self._copies[hidden]
+        may = transfer(fixed, self.manager, open_, copies)
+        return Bounds(~transfer(~fixed, self.manager, open_, copies) if open_ else may, may)

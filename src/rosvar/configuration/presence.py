@@ -15,7 +15,8 @@ repaired to without changing its support (``Judgement.held``).
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from functools import cached_property
 
 from rosvar.configuration.derivation import Decisions, Derivation, Presence, PresenceVerdict
 from rosvar.configuration.graph import Element
@@ -40,10 +41,21 @@ class Condition:
 
 @dataclass(frozen=True)
 class Judged:
-    """A condition's verdict at one step, and the condition simplified for people."""
+    """A condition's verdict at one step, and the condition simplified for people.
+
+    The description is made when first shown: a view's summary (how many elements are
+    present) needs the verdicts only, and describing is the larger part of judging."""
 
     verdict: PresenceVerdict
-    description: str | None  # None once present or absent
+    condition: BDD  # analysis manager: what ``describe`` simplifies
+    describe: Describe = field(compare=False)
+
+    @cached_property
+    def description(self) -> str | None:
+        """None once present or absent."""
+        if self.verdict.presence != Presence.UNDETERMINED:
+            return None
+        return self.describe(self.condition, self.verdict.values)
 
     @property
     def shown(self) -> tuple[str, str | None]:
@@ -252,15 +264,12 @@ class Presences:
         bounds = [
             (self._bounds(index, typed), hint) for index, hint in zip(indices, hints, strict=True)
         ]
-        judged = []
-        for index, verdict in zip(
-            indices, self.derivation.presences(bounds, decisions), strict=True
-        ):
-            description = None
-            if verdict.presence == Presence.UNDETERMINED:
-                description = describe(self.conditions[index].condition, verdict.values)
-            judged.append(Judged(verdict, description))
-        return judged
+        return [
+            Judged(verdict, self.conditions[index].condition, describe)
+            for index, verdict in zip(
+                indices, self.derivation.presences(bounds, decisions), strict=True
+            )
+        ]
 
 
 def _hint(answer: Judgement, index: int) -> PresenceVerdict:

@@ -54,17 +54,46 @@ class Graph:
 
 
 @dataclass(frozen=True)
-class View:
-    """What one list of literals shows, kept to derive longer lists' views."""
+class Rendering:
+    """The graph entries a view's presences show, kept to render longer lists'."""
 
-    decisions: Decisions
-    texts: Mapping[str, str]  # arg id → its <other> text
-    typed: Typed
-    presences: Judgement
     entries: list[list[Fields]]  # per element of the graph
     starts: list[int]  # per element: where its entries start in its kind's list
-    conflicts: list[ConflictState | None]  # per pair of ``Conflicts``; None: gone
     graph: Graph
+
+
+class View:
+    """What one list of literals shows, kept to derive longer lists' views.
+
+    The conflicts are judged with the view; the presences of the graph's elements when
+    first asked for (``Views.judgement``), and their entries, which describe the conditions
+    of undetermined ones, when the graph is (``Views.rendering``): a server is ready
+    without judging every element of a large workspace up front, and ``configure``
+    prints its summary without describing them."""
+
+    def __init__(
+        self,
+        decisions: Decisions,
+        texts: Mapping[str, str],
+        typed: Typed,
+        conflicts: list[ConflictState | None],
+        before: View | None,
+    ) -> None:
+        self.decisions = decisions
+        self.texts = texts  # arg id → its <other> text
+        self.typed = typed
+        self.conflicts = conflicts  # per pair of ``Conflicts``; None: gone
+        self.before = before  # until rendered: the view it is judged and rendered from
+        self.presences: Judgement | None = None  # set by ``Views.judgement``
+        self.rendering: Rendering | None = None  # set by ``Views.rendering``
+
+
+@dataclass(frozen=True)
+class Summary:
+    """What a view shows in numbers, made without describing any condition."""
+
+    counts: Mapping[ElementKind, Mapping[Presence, int]]  # entries by kind and presence
+    errors: list[Fields]  # the errors present: where roslaunch stops
 
 
 class Views:
@@ -118,6 +147,7 @@ class Views:
                 self._users.setdefault(index_of[node], []).append(index)
         self._rendered: dict[tuple[str, Strings | None, tuple[Shown, ...]], list[Fields]] = {}
         self._entries: dict[_Entry, list[Fields]] = {}
+        self._symbolic = Values(lowering.concrete, lowering.host)  # no arg's string known
         self.initial = self._derive(derivation.initial, {}, None)
         self._views: PrefixCache[tuple[str, bool, str | None], View] = PrefixCache(
             self.initial, cached
@@ -160,49 +190,132 @@ class Views:
         return str(value.slot)
 
     def _derive(self, decisions: Decisions, texts: Mapping[str, str], before: View | None) -> View:
-        """The view from ``before`` (an earlier list of the same literals, or none)."""
+        """The view from ``before`` (an earlier list of the same literals, or none): its
+        conflicts judged, its graph left to ``judgement`` and ``rendering``."""
         typed = self._typed(texts)
         if before is None:
-            presences = self.presences.judge(decisions, typed, self.describe)
             conflicts = self.conflicts.judge(decisions, typed, self.describe)
-            entries: list[list[Fields]] = [[] for _ in self.graph.elements]
-            again: Iterable[int] = range(len(self.graph.elements))
         else:
-            presences = self.presences.judge(
-                decisions, typed, self.describe, (before.decisions, before.typed, before.presences)
-            )
             conflicts = self.conflicts.judge(
                 decisions, typed, self.describe, (before.decisions, before.typed, before.conflicts)
             )
-            entries = list(before.entries)
-            again = self._rerendered(decisions, texts, before, presences)
+        return View(decisions, texts, typed, conflicts, before)
+
+    def judgement(self, view: View) -> Judgement:
+        """``view``'s presences, judged on first use with those of the earlier views it is
+        derived from that are not yet (oldest first: each from the one before)."""
+        pending = []
+        later: View | None = view
+        while later is not None and later.presences is None:
+            pending.append(later)
+            later = later.before
+        for later in reversed(pending):
+            before = later.before
+            earlier = None
+            if before is not None:
+                assert before.presences is not None
+                earlier = (before.decisions, before.typed, before.presences)
+            later.presences = self.presences.judge(
+                later.decisions, later.typed, self.describe, earlier
+            )
+        assert view.presences is not None
+        return view.presences
+
+    def rendering(self, view: View) -> Rendering:
+        """``view``'s entries, rendered on first use with those of the earlier views it is
+        derived from that are not yet (oldest first: each from the one before, which is
+        then let go)."""
+        pending = []
+        later: View | None = view
+        while later is not None and later.rendering is None:
+            pending.append(later)
+            later = later.before
+        for later in reversed(pending):
+            later.rendering = self._rendering_of(later, later.before)
+            later.before = None
+        assert view.rendering is not None
+        return view.rendering
+
+    def summary(self, view: View) -> Summary:
+        """How many entries of each kind ``view`` shows with each presence (a part's
+        presence does not change how many), and its errors present."""
+        verdicts = self.judgement(view).verdicts
+        counts = {kind: dict.fromkeys(Presence, 0) for kind in ElementKind}
+        errors: list[Fields] = []
+        values: dict[str, Values] = {}
+        for index, element in enumerate(self.graph.elements):
+            judged = verdicts[self.presences.of_element[index]]
+            presence = judged.verdict.presence
+            if presence == Presence.ABSENT and element.kind == ElementKind.ERROR:
+                continue
+            given = self._given(element, presence, values, view.decisions, view.texts)
+            if presence == Presence.PRESENT and element.kind == ElementKind.ERROR:
+                shown = self._element_entries(element, judged, (), given, ())  # none described
+                errors.extend(shown)
+            else:
+                parts = self.presences.of_parts[index]
+                shown = element.fields(
+                    given or self._symbolic, [(verdicts[c].verdict.presence, None) for c in parts]
+                )
+            counts[element.kind][presence] += len(shown)
+        return Summary(counts, errors)
+
+    def _given(
+        self,
+        element: Element,
+        presence: Presence,
+        values: dict[str, Values],
+        decisions: Decisions,
+        texts: Mapping[str, str],
+    ) -> Values | None:
+        """The concrete strings ``element`` is shown with (None: symbolic), made once per
+        file into ``values``."""
+        if presence == Presence.ABSENT or not element.inputs:
+            return None
+        found = values.get(element.entry)
+        if found is None:
+            found = values[element.entry] = self._values(element.entry, decisions, texts)
+        return found
+
+    def _rendering_of(self, view: View, before: View | None) -> Rendering:
+        """``view``'s entries, from those of ``before`` (rendered) if any."""
+        decisions, texts = view.decisions, view.texts
+        presences = self.judgement(view)
+        if before is None:
+            earlier = None
+            entries: list[list[Fields]] = [[] for _ in self.graph.elements]
+            again: Iterable[int] = range(len(self.graph.elements))
+        else:
+            earlier = before.rendering
+            assert earlier is not None and before.presences is not None
+            entries = list(earlier.entries)
+            again = self._rerendered(decisions, texts, before, before.presences, presences)
         values: dict[str, Values] = {}
         moved: dict[ElementKind, list[int]] = {}  # per kind: the elements rendered anew
         for index in again:  # in graph order: a topic comes after its nodes
             element = self.graph.elements[index]
             judged = presences.verdicts[self.presences.of_element[index]]
-            if element.entry not in values and element.inputs:
-                values[element.entry] = self._values(element.entry, decisions, texts)
             parts = tuple(presences.verdicts[c].shown for c in self.presences.of_parts[index])
             users = tuple(
                 self.graph.elements[n].id
                 for n in self._users.get(index, ())
                 if entries[n] and entries[n][0]["presence"] != Presence.ABSENT
             )
+            given = self._given(element, judged.verdict.presence, values, decisions, texts)
             found = self._element_entries(
-                element, judged, parts, values, users if element.kind == ElementKind.TOPIC else ()
+                element, judged, parts, given, users if element.kind == ElementKind.TOPIC else ()
             )
             if found is not entries[index]:
                 moved.setdefault(element.kind, []).append(index)
             entries[index] = found
-        lists, starts = self._lists(entries, before, moved)
+        lists, starts = self._lists(entries, earlier, moved)
         graph = Graph(**{f"{kind}s": listed for kind, listed in lists.items()})
-        return View(decisions, texts, typed, presences, entries, starts, conflicts, graph)
+        return Rendering(entries, starts, graph)
 
     def _lists(
         self,
         entries: list[list[Fields]],
-        before: View | None,
+        before: Rendering | None,
         moved: Mapping[ElementKind, list[int]],
     ) -> tuple[dict[str, list[Fields]], list[int]]:
         """Each kind's list of entries, and where each element's start in it. A kind whose
@@ -235,14 +348,15 @@ class Views:
         decisions: Decisions,
         texts: Mapping[str, str],
         before: View,
+        earlier: Judgement,
         presences: Judgement,
     ) -> list[int]:
         """Elements whose verdict or read strings differ from ``before`` (and the topics of
         nodes among them, whose lists of nodes may change), in graph order."""
         again: set[int] = set()
         for condition in presences.judged:
-            judged, earlier = presences.verdicts[condition], before.presences.verdicts[condition]
-            if judged is not earlier and judged.shown != earlier.shown:
+            judged, was = presences.verdicts[condition], earlier.verdicts[condition]
+            if judged is not was and judged.shown != was.shown:
                 again.update(self._elements_of[condition])
         changed = decisions.decided.items() ^ before.decisions.decided.items()
         for variable, _value in changed:
@@ -278,11 +392,12 @@ class Views:
         element: Element,
         judged: Judged,
         parts: tuple[Shown, ...],
-        values: Mapping[str, Values],
+        given: Values | None,
         users: tuple[str, ...],
     ) -> list[Fields]:
-        """The element's graph entries: none for an absent error, else one per variant
-        (a topic's with ``users``, its node variants not absent).
+        """The element's graph entries with the strings ``given`` (``_given``): none for an
+        absent error, else one per variant (a topic's with ``users``, its node variants not
+        absent).
 
         Made once per verdict and strings its terms read: the same entries serve every
         state that shows them (a session's later clicks, and other sessions, meet them
@@ -290,7 +405,6 @@ class Views:
         presence, condition = judged.shown
         if presence == Presence.ABSENT and element.kind == ElementKind.ERROR:
             return []
-        given = values[element.entry] if presence != Presence.ABSENT and element.inputs else None
         strings = frozenset((i, given.concrete.get(i)) for i in element.inputs) if given else None
         key = (element.id, presence, condition, strings, parts, users)
         entries = self._entries.get(key)
@@ -322,7 +436,6 @@ class Views:
         key = (element.id, strings, parts)
         found = self._rendered.get(key)
         if found is None:
-            values = given or Values(self.lowering.concrete, self.lowering.host)
-            found = element.fields(values, parts)
+            found = element.fields(given or self._symbolic, parts)
             self._rendered[key] = found
         return found

@@ -141,20 +141,28 @@ def children_first(
 
 def walked_support(u: BDD) -> set[str]:
     """The variables ``u`` depends on, found by visiting its nodes: linear in ``u``'s size,
-    where ``dd``'s ``support`` walks every variable of its manager in Python."""
-    names: set[str] = set()
-    seen: set[int] = set()
-    stack = [u]
+    where ``dd``'s ``support`` walks every variable of its manager in Python. The nodes
+    are read in CUDD's memory, as ``layout`` reads them: a ``dd`` wrapper per child cost
+    several times the walk."""
+    manager = u.bdd
+    words = _memory()
+    true = int(manager.true) - 2
+    seen = {true}
+    indices: set[int] = set()
+    stack = [(int(u) - 2) & ~1]
     while stack:
         node = stack.pop()
-        name = node.var
-        if name is None or int(node) in seen:
+        if node in seen:
             continue
-        seen.add(int(node))
-        names.add(name)
-        stack.append(node.low)
-        stack.append(node.high)
-    return names
+        seen.add(node)
+        at = node >> 3
+        indices.add(words[at] & 0xFFFFFFFF)
+        stack.append(words[at + 2])  # then: never complemented
+        stack.append(words[at + 3] & ~1)
+    if len(seen) > 1 and not _LAYOUT_CHECKED:
+        _check_layout(manager, ((int(u) - 2) & ~1) >> 3, words)
+    name_of = manager._var_with_index
+    return {name_of[index] for index in indices}
 
 
 class Layout(NamedTuple):
@@ -209,8 +217,12 @@ def layout(u: BDD) -> Layout:
     )
 
 
+_LAYOUT_CHECKED = False  # once one node passed: the layout is CUDD's, the same for all
+
+
 def _check_layout(manager: Manager, at: int, words: memoryview) -> None:
     """Check the layout ``layout`` reads on one of its nodes (``_indices`` explains it)."""
+    global _LAYOUT_CHECKED
     name = manager._var_with_index[words[at] & 0xFFFFFFFF]
     true = int(manager.true) - 2
     node = (int(manager.var(name)) - 2) >> 3
@@ -220,9 +232,12 @@ def _check_layout(manager: Manager, at: int, words: memoryview) -> None:
         true ^ 1,
     ):
         raise RuntimeError("dd's CUDD lays its nodes out otherwise than rosvar reads them")
+    _LAYOUT_CHECKED = True
 
 
-def transfer(u: BDD, target: Manager, hidden: Collection[str] = ()) -> BDD:
+def transfer(
+    u: BDD, target: Manager, hidden: Collection[str] = (), copies: dict[BDD, BDD] | None = None
+) -> BDD:
     """``∃ hidden. u`` rebuilt in ``target``, which declares the rest of its support, in time
     linear in the size of ``u``.
 
@@ -235,9 +250,16 @@ def transfer(u: BDD, target: Manager, hidden: Collection[str] = ()) -> BDD:
     variable becomes the disjunction of its cofactors' copies, which no longer depend on
     it. Quantification does not commute with negation, so a complemented edge is its own
     function here, with its own cofactors.
+
+    ``copies`` (from the same manager to ``target``, with the same ``hidden``) is kept
+    from call to call by callers that copy many diagrams sharing parts: each part is
+    then copied once.
     """
     source = u.bdd
-    copies: dict[BDD, BDD] = {source.true: target.true, source.false: target.false}
+    if copies is None:
+        copies = {}
+    copies.setdefault(source.true, target.true)
+    copies.setdefault(source.false, target.false)
     for function in children_first(u, cofactors, copies):
         low, high = cofactors(function)
         name = function.var

@@ -367,6 +367,7 @@ def _print_state(state: ConfigurationState) -> None:
     from rosvar.analyses.feature_model.model import FeatureKind
     from rosvar.configuration.derivation import Presence
     from rosvar.configuration.engine import Selection
+    from rosvar.configuration.graph import ElementKind
     from rosvar.outputs.describe import count_text
 
     features = state.features.values()
@@ -379,16 +380,15 @@ def _print_state(state: ConfigurationState) -> None:
         print(f"refused: {refusal.reason}")
     chosen = [k for k, f in files if f.state == Selection.SELECTED]
     print(f"selected files: {', '.join(chosen) if chosen else 'none'}")
-    graph = state.graph
-    for kind, elements in (("nodes", graph.nodes), ("params", graph.params)):
-        counts = {p: sum(1 for e in elements if e["presence"] == p) for p in Presence}
+    summary = state.summary  # the graph in numbers: no condition described
+    for kind, element in (("nodes", ElementKind.NODE), ("params", ElementKind.PARAM)):
+        counts = summary.counts[element]
         print(
             f"{kind}: {counts[Presence.PRESENT]} present, "
             f"{counts[Presence.UNDETERMINED]} undetermined"
         )
-    for error in graph.errors:
-        if error["presence"] == Presence.PRESENT:
-            print(f"error: {error['file']}:{error['line']}: {error['message']}")
+    for error in summary.errors:
+        print(f"error: {error['file']}:{error['line']}: {error['message']}")
     for conflict in state.conflicts:
         when = f", when {conflict.condition}" if conflict.condition else ""
         print(
