@@ -191,7 +191,7 @@ def layout(u: BDD) -> Layout:
         found.append(at)
         stack.append(words[at + 2])  # then: never complemented
         stack.append(words[at + 3] & ~1)
-    if found:
+    if found and not _layout_checked:
         _check_layout(manager, found[0], words)
     lows = []
     for at in found:
@@ -209,8 +209,13 @@ def layout(u: BDD) -> Layout:
     )
 
 
+_layout_checked = False  # the layout is the library's, the same for every manager
+
+
 def _check_layout(manager: Manager, at: int, words: memoryview) -> None:
-    """Check the layout ``layout`` reads on one of its nodes (``_indices`` explains it)."""
+    """Check the layout ``layout`` reads on one of its nodes (``_indices`` explains it),
+    once per process: describing a workspace reads thousands of small diagrams."""
+    global _layout_checked
     name = manager._var_with_index[words[at] & 0xFFFFFFFF]
     true = int(manager.true) - 2
     node = (int(manager.var(name)) - 2) >> 3
@@ -220,6 +225,7 @@ def _check_layout(manager: Manager, at: int, words: memoryview) -> None:
         true ^ 1,
     ):
         raise RuntimeError("dd's CUDD lays its nodes out otherwise than rosvar reads them")
+    _layout_checked = True
 
 
 def transfer(u: BDD, target: Manager, hidden: Collection[str] = ()) -> BDD:
