@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import cast
+from typing import NamedTuple, cast
 
-from rosvar.logic.bdd import BDD, Layout, cofactors, layout, restrict
+from rosvar.logic.bdd import BDD, cofactors, layout, restrict
 from rosvar.logic.conditions import PREDICATES, ConditionSpace, FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.inputs import OTHER, ArgInput, EnvInput, Input, Slot
 
@@ -43,6 +43,15 @@ class _Context:
 Shape = tuple[object, ...]  # what a description depends on (``Printer._shape``)
 
 
+class _FactShape(NamedTuple):
+    """A fact's diagram up to renaming, its variables' (block, place in the block), and
+    where each block starts (``Printer._shape``)."""
+
+    diagram: tuple[int, tuple[int, ...], tuple[int, ...]]
+    places: tuple[tuple[int, int], ...]
+    starts: dict[int, int]
+
+
 class Printer:
     """The readable form of the conditions of one space (``ConditionSpace.describe``)."""
 
@@ -55,7 +64,7 @@ class Printer:
         self._block_numbers: dict[object, int] = {}
         self._block_objects: list[object] = []
         self._shown_blocks: dict[tuple[object, bool], tuple[object, ...]] = {}
-        self._fact_layouts: dict[BDD, Layout] = {}
+        self._fact_shapes: dict[BDD, _FactShape] = {}
 
     def describe(self, condition: BDD, qualify: bool = False, known_only: bool = True) -> str:
         """A short readable formula, e.g. ``use_teleop=true ∧ ¬sim``, modulo validity.
@@ -97,36 +106,34 @@ class Printer:
         """
         nodes = layout(condition)
         starts: dict[int, int] = {}
-        facts: dict[BDD, Layout] = {}
+        facts: dict[BDD, _FactShape] = {}
         variables = self._variables
         for name, level in zip(nodes.names, nodes.levels, strict=True):
             found = variables.get(name) or self._variable(name)
             starts[found[0]] = level - found[1]
             for fact in found[2]:
                 if fact not in facts:
-                    facts[fact] = self._fact_layout(fact)
-        for fact_nodes in facts.values():
-            for name, level in zip(fact_nodes.names, fact_nodes.levels, strict=True):
-                found = variables.get(name) or self._variable(name)
-                starts[found[0]] = level - found[1]
+                    facts[fact] = self._fact_shapes.get(fact) or self._fact_shape(fact)
+        for fact_shape in facts.values():
+            starts.update(fact_shape.starts)
         order = sorted(starts, key=starts.__getitem__)
         rank = {block: position for position, block in enumerate(order)}
         shown = tuple(self._shown(self._block_objects[block], qualify) for block in order)
         if len({text for text, *_rest in shown}) != len(shown):
             return None
-
-        def encoded(nodes: Layout) -> Shape:
-            placed = []
-            for name in nodes.names:
-                block, index, _facts = variables[name]
-                placed.append((rank[block], index))
-            return (nodes.root, tuple(nodes.lows), tuple(nodes.highs), tuple(placed))
-
+        placed = tuple((rank[variables[name][0]], variables[name][1]) for name in nodes.names)
         return (
             qualify,
             known_only,
-            encoded(nodes),
-            tuple(sorted({encoded(fact_nodes) for fact_nodes in facts.values()})),
+            (nodes.root, tuple(nodes.lows), tuple(nodes.highs), placed),
+            tuple(
+                sorted(
+                    {
+                        (*f.diagram, tuple((rank[block], index) for block, index in f.places))
+                        for f in facts.values()
+                    }
+                )
+            ),
             shown,
         )
 
@@ -146,10 +153,18 @@ class Printer:
         found = self._variables[name] = (number, index, tuple(space.facts_of(name)))
         return found
 
-    def _fact_layout(self, fact: BDD) -> Layout:
-        found = self._fact_layouts.get(fact)
-        if found is None:
-            found = self._fact_layouts[fact] = layout(fact)
+    def _fact_shape(self, fact: BDD) -> _FactShape:
+        """What ``_shape`` reads of a fact, the same for every condition it is a fact of."""
+        nodes = layout(fact)
+        places = []
+        starts = {}
+        for name, level in zip(nodes.names, nodes.levels, strict=True):
+            block, index, _facts = self._variables.get(name) or self._variable(name)
+            places.append((block, index))
+            starts[block] = level - index
+        found = self._fact_shapes[fact] = _FactShape(
+            (nodes.root, tuple(nodes.lows), tuple(nodes.highs)), tuple(places), starts
+        )
         return found
 
     def _shown(self, block: object, qualify: bool) -> tuple[object, ...]:

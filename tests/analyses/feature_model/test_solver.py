@@ -209,6 +209,24 @@ def test_a_model_linking_too_many_files_is_listed_not_solved(
     assert extract(ws.analysis()).solved
 
 
+def test_a_model_whose_order_too_many_constraints_cross_is_listed_not_solved(
+    ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The widest cut of the solver's order is told before any diagram is built; a model
+    at the budget is solved, one constraint above it is not."""
+    monkeypatch.setattr(solving, "CUT_BUDGET", 0)
+    model = clique_and_loner(ws)
+    assert not model.solved and count_configurations(model) is None
+    with pytest.raises(ModelTooLarge, match="cross one point") as raised:
+        core_and_dead(model)
+    crossing = int(str(raised.value).split()[0])
+    assert crossing >= 1
+    monkeypatch.setattr(solving, "CUT_BUDGET", crossing - 1)
+    assert not extract(ws.analysis()).solved
+    monkeypatch.setattr(solving, "CUT_BUDGET", crossing)
+    assert extract(ws.analysis()).solved
+
+
 def test_the_memory_bound_grows_with_the_files(monkeypatch: pytest.MonkeyPatch) -> None:
     manager = dd.cudd.BDD()
     monkeypatch.setattr(solving, "MEMORY_BUDGET", 1 << 20)

@@ -245,15 +245,19 @@ def extract(
     return feature_model
 
 
-LINK_BUDGET = 20_000
-LINKS_PER_FILE = 50
+LINK_BUDGET = 2_000
+LINKS_PER_FILE = 25
 """Most pairs of files sharing a declared name before the solver is not attempted:
 ``LINK_BUDGET + LINKS_PER_FILE × files``.
 
 The pairs are what ordering the variables and listing the ``excludes`` constraints cost,
 quadratic where many files redeclare a name; workspaces that link this many files
-through their clashes also have BDDs far beyond the memory budget. Real systems link a
-few files per file, so a workspace of many systems gets a budget that grows with it.
+through their clashes also have BDDs far beyond the memory budget, and reach it only
+after minutes. Real systems link a few files per file (the corpus at most 4, generated
+workspaces shaped like it 12), so a workspace of many systems gets a budget that grows
+with it; where every file shares names with a hundred others (the uniform shape, whose
+files at one position in every package declare the same names) the constraints form a
+grid whose diagram outgrows any budget (docs/performance.md, session 10).
 """
 
 

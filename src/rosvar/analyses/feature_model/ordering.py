@@ -84,3 +84,23 @@ def _force(files: list[str], neighbours: Mapping[str, set[str]]) -> list[str]:
             (files, length, 0) if length < shortest else (best, shortest, stale + 1)
         )
     return best
+
+
+def widest_cut(
+    order: Sequence[str], features: Sequence[FileFeature], links: Iterable[Sequence[str]]
+) -> int:
+    """The most links (pairs of feature ids) crossing one point of ``order`` (variable names,
+    a file's variable first in its block): the width a diagram in that order may need
+    there is exponential in it, each pending constraint doubling it at worst."""
+    level = {name: position for position, name in enumerate(order)}
+    start = {f.id: level[f.variable_names()[0]] for f in features}
+    change = [0] * (len(order) + 1)
+    for a, b in links:
+        first, last = sorted((start[a], start[b]))
+        change[first] += 1
+        change[last] -= 1
+    widest = crossing = 0
+    for delta in change:
+        crossing += delta
+        widest = max(widest, crossing)
+    return widest

@@ -15,7 +15,7 @@ from rosvar.analyses.conflicts import Occurrence
 from rosvar.analyses.feature_model.counting import CountedDiagram
 from rosvar.analyses.feature_model.exclusions import declaring, excluding, exclusions
 from rosvar.analyses.feature_model.model import Constraint, FileFeature, ModelTooLarge, name_of
-from rosvar.analyses.feature_model.ordering import order
+from rosvar.analyses.feature_model.ordering import order, widest_cut
 from rosvar.logic import bdd
 from rosvar.logic.bdd import (
     BDD,
@@ -234,6 +234,15 @@ helps within one component's conjunction; grown with the whole workspace it only
 page faults and cache misses, at the same hit rate (docs/performance.md)."""
 
 
+CUT_BUDGET = 300
+"""Most constraints between files crossing one point of the solver's order (``widest_cut``)
+before the solver is not attempted. The corpus and the generated workspaces shaped like it
+stay below 110, whatever their size (systems side by side are ordered apart); workspaces
+whose files each clash with dozens of others cross it at a hundred files, and their
+diagrams outgrow the memory budget only after many seconds (docs/performance.md, session
+10)."""
+
+
 def build(
     space: ConditionSpace,
     features: Sequence[FileFeature],
@@ -254,7 +263,14 @@ def build(
     files = {f.file: f for f in features}
     declared = declaring(space, files, buckets)
     linking = [(files[a].id, files[b].id) for a, b in excluding(declared)]
-    keep = order(features, [*(c.files for c in requires), *linking])
+    links = [*(c.files for c in requires), *linking]
+    keep = order(features, links)
+    crossing = widest_cut(keep, features, links)
+    if crossing > CUT_BUDGET:
+        raise ModelTooLarge(
+            f"{crossing:,} constraints between files cross one point of the solver's "
+            f"variable order (budget {CUT_BUDGET:,})"
+        )
     kept = set(keep)
     manager = new_manager(memory_estimate(len(features)), SOLVER_CACHE)
     manager.declare(*keep)  # a fresh manager in the chosen order (reordering in place is slow)
