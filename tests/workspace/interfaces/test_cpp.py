@@ -158,3 +158,36 @@ int main() {
         ("joint_states", "sensor_msgs/JointState"),
         ("command", "std_msgs/Float64"),
     ]
+
+
+GMAPPING = """\
+#include "slam.h"
+Slam::Slam() : private_nh_("~") { init(); }
+Slam::Slam(ros::NodeHandle& nh, ros::NodeHandle& pnh) : node_(nh), private_nh_(pnh) { init(); }
+void Slam::init() { private_nh_.getParam("throttle_scans", throttle_); }
+int main(int argc, char** argv) { Slam gn; return 0; }
+class SlamNodelet : public nodelet::Nodelet {
+  void onInit() { slam_.reset(new Slam(getNodeHandle(), getPrivateNodeHandle())); }
+};
+"""
+GMAPPING_HEADER = """\
+class Slam {
+ public:
+  Slam();
+  Slam(ros::NodeHandle& nh, ros::NodeHandle& pnh);
+  void init();
+  ros::NodeHandle node_;
+  ros::NodeHandle private_nh_;
+};
+"""
+
+
+def test_member_initialiser_of_the_constructor_called(tmp_path: Path) -> None:
+    """slam_gmapping: the class is declared in a header read after the constructors, and
+    only the constructor that the node (``Slam gn;``) or the nodelet (``new Slam(nh, pnh)``)
+    calls initialises the handle."""
+    files = {"slam.cpp": GMAPPING, "slam.h": GMAPPING_HEADER}
+    for entry, owner in (("main", None), ("onInit", "SlamNodelet")):
+        entries, diagnostics = _extract(tmp_path, files, entry, owner)
+        assert [(e.name, e.static) for e in entries] == [("~throttle_scans", True)], entry
+        assert diagnostics == []

@@ -210,9 +210,13 @@ class _Variable:
 
 @dataclass
 class _Write:
+    """A member's value: an assignment or in-class initialiser (``value``), or a member
+    initialiser's constructor ``arguments`` (the member's type is looked up when evaluated:
+    the class may be declared in a header indexed later)."""
+
     function: Function | None
     value: Node | None = None
-    construct: tuple[str, list[Node]] | None = None
+    arguments: list[Node] | None = None
 
 
 @dataclass
@@ -329,10 +333,7 @@ class Unit:
         for initializer in function.nodes("field_initializer"):
             name_node = initializer.named_children[0]
             self.writes.setdefault(_text(name_node), []).append(
-                _Write(
-                    function,
-                    construct=(self.fields.get(_text(name_node), ""), _arguments(initializer)),
-                )
+                _Write(function, arguments=_arguments(initializer))
             )
 
     def _field(self, node: Node) -> None:
@@ -484,9 +485,9 @@ class _Evaluator:
             yield _CallSite(name, caller, _arguments(node), name)
         else:
             for _, variable in _declared(node):
-                if variable.arguments is not None:
+                if variable.arguments is not None or variable.init is None:
                     name = _last(variable.type.split("<")[0])
-                    yield _CallSite(name, caller, variable.arguments, name)
+                    yield _CallSite(name, caller, variable.arguments or [], name)
 
     def _type_of(self, node: Node, function: Function) -> str | None:
         """The declared type of a receiver variable, when the unit declares it."""
@@ -701,17 +702,20 @@ class _Evaluator:
 
     def _field_value(self, name: str) -> Value:
         values: set[Value] = set()
+        type_text = self.unit.fields.get(name, "")
         for write in self.unit.writes.get(name, []):
-            if write.construct is not None:
-                values.add(self.construct(*write.construct, write.function))
+            if not self._constructed(write.function):
+                continue
+            if write.arguments is not None:
+                values.add(self.construct(type_text, write.arguments, write.function))
             elif write.value is not None:
                 values.add(self.evaluate(write.value, write.function))
         for function, node in self._member_writes().get(name, []):
-            values.add(self.evaluate(node, function))
+            if self._constructed(function):
+                values.add(self.evaluate(node, function))
         values.discard(None)
         if len(values) == 1:
             return values.pop()
-        type_text = self.unit.fields.get(name, "")
         if not values and "NodeHandle" in type_text:
             return Handle(Text(""))
         if values or "NodeHandle" in type_text:
@@ -719,6 +723,16 @@ class _Evaluator:
                 Handle(Text.unknown(name)) if any(isinstance(v, Handle) for v in values) else None
             )
         return None
+
+    def _constructed(self, function: Function | None) -> bool:
+        """Whether a member write in ``function`` happens: not in a constructor overload that
+        the reached code never calls with its number of arguments (``SlamGMapping gn;`` runs
+        the default constructor, not the nodelet's ``SlamGMapping(nh, pnh)``). A class no
+        reached code constructs (the nodelet's own) keeps every constructor."""
+        if function is None or function.name != function.owner:
+            return True
+        sites = self.calls.get(function.name, [])
+        return not sites or any(len(s.arguments) == len(function.parameters) for s in sites)
 
     def _constant(self, name: str) -> Value:
         node = self.unit.constants.get(name)
