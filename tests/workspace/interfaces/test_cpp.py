@@ -191,3 +191,51 @@ def test_member_initialiser_of_the_constructor_called(tmp_path: Path) -> None:
         entries, diagnostics = _extract(tmp_path, files, entry, owner)
         assert [(e.name, e.static) for e in entries] == [("~throttle_scans", True)], entry
         assert diagnostics == []
+
+
+def test_action_server_through_typedef(tmp_path: Path) -> None:
+    """move_base: ``typedef actionlib::SimpleActionServer<...> MoveBaseActionServer``."""
+    source = """\
+typedef actionlib::SimpleActionServer<move_base_msgs::MoveBaseAction> MoveBaseActionServer;
+int main(int argc, char** argv) {
+  MoveBaseActionServer* as = new MoveBaseActionServer(ros::NodeHandle(), "move_base", false);
+}
+"""
+    entries, _ = _extract(tmp_path, {"m.cpp": source}, "main")
+    assert [(e.role, e.name, e.type) for e in entries] == [
+        (Role.ACTION_SERVERS, "move_base", "move_base_msgs/MoveBase")
+    ]
+
+
+def test_handles_through_pointers_resets_and_aliased_constructors(tmp_path: Path) -> None:
+    """Patterns of image_pipeline (``it_.reset(new ImageTransport(nh))``), teleop_twist_joy
+    (``Teleop t(&nh, &pnh)``), robot_localization (``typedef Filter<Ekf> RosEkf``, a default
+    argument) and move_base (a pointer member initialised to ``NULL``)."""
+    source = """\
+template<class T> class Filter {
+ public:
+  Filter(ros::NodeHandle nh, ros::NodeHandle* pnh, int depth = 1);
+  ros::NodeHandle nh_;
+  boost::shared_ptr<image_transport::ImageTransport> it_;
+  actionlib::SimpleActionServer<move_base_msgs::MoveBaseAction>* as_;
+};
+typedef Filter<Ekf> RosEkf;
+template<class T> Filter<T>::Filter(ros::NodeHandle nh, ros::NodeHandle* pnh, int depth)
+    : nh_(nh), as_(NULL) {
+  it_.reset(new image_transport::ImageTransport(nh_));
+  it_->advertise("image", 1);
+  pnh->advertise<std_msgs::Empty>("private", 1);
+  nh_.subscribe<nav_msgs::Odometry>("odom", 1, &Filter::odom, this);
+}
+int main(int argc, char** argv) {
+  ros::NodeHandle nh("ns"), pnh("~");
+  RosEkf ekf(nh, &pnh);
+}
+"""
+    entries, diagnostics = _extract(tmp_path, {"f.cpp": source}, "main")
+    assert sorted((str(e.role), e.name) for e in entries) == [
+        ("publishes", "ns/image"),
+        ("publishes", "~private"),
+        ("subscribes", "ns/odom"),
+    ]
+    assert diagnostics == []

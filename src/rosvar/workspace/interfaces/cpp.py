@@ -44,6 +44,7 @@ _SMART_POINTERS = re.compile(
 )
 _IMAGE = "sensor_msgs/Image"
 _CAMERA_INFO = "sensor_msgs/CameraInfo"
+_NULLS = frozenset({"NULL", "nullptr", "0"})
 
 
 @dataclass(frozen=True)
@@ -66,6 +67,7 @@ class Function:
     parameters: list[tuple[str, str]]
     node: Node
     file: str
+    required: int = 0  # the parameters without a default value
     _kinds: dict[str, list[Node]] | None = field(default=None, repr=False)
 
     def nodes(self, *types: str) -> list[Node]:
@@ -230,6 +232,9 @@ class Unit:
     fields: dict[str, str] = field(default_factory=dict)
     writes: dict[str, list[_Write]] = field(default_factory=dict)
     constants: dict[str, Node] = field(default_factory=dict)
+    required: dict[tuple[str, int], int] = field(default_factory=dict)
+    """Declared functions by (name, number of parameters): how many lack a default value
+    (defaults are written in the declaration, not in the definition)."""
 
     @staticmethod
     def load(sources: Sequence[str], include_dirs: Sequence[str]) -> Unit:
@@ -285,14 +290,18 @@ class Unit:
         if aliased is not None and name is not None:
             self.aliases[_text(name)] = _text(aliased)
 
-    def message_type(self, text: str) -> str | None:
-        """The ROS type of C++ type ``text``, through the unit's type aliases."""
+    def unaliased(self, text: str) -> str:
+        """C++ type ``text`` through the unit's type aliases."""
         for _ in range(8):  # an alias of an alias; a cycle stops here
             bare = re.sub(r"\b(const|typename)\b|[&*\s]", "", text)
             if bare not in self.aliases:
                 break
             text = self.aliases[bare]
-        return ros_type(text)
+        return text
+
+    def message_type(self, text: str) -> str | None:
+        """The ROS type of C++ type ``text``, through the unit's type aliases."""
+        return ros_type(self.unaliased(text))
 
     def _signature(self, node: Node) -> None:
         """A declared (not defined) function: callbacks are often only declared in a header."""
@@ -302,7 +311,11 @@ class Unit:
         if target is None or parameters is None:
             return
         types = [_parameter_type(p) for p in parameters.named_children]
-        self.signatures.setdefault(_last(_text(target).replace(" ", "")), []).append(types)
+        name = _last(_text(target).replace(" ", ""))
+        self.signatures.setdefault(name, []).append(types)
+        required = sum(p.type == "parameter_declaration" for p in parameters.named_children)
+        key = (name, len(types))
+        self.required[key] = min(required, self.required.get(key, required))
 
     def _function(self, node: Node, path: str) -> None:
         declarator = _function_declarator(node)
@@ -318,8 +331,10 @@ class Unit:
         else:
             owner = _enclosing_class(node)
         parameters = []
+        required = 0
         parameter_list = declarator.child_by_field_name("parameters")
         for parameter in parameter_list.named_children if parameter_list is not None else []:
+            required += parameter.type == "parameter_declaration"
             type_node = parameter.child_by_field_name("type")
             name_node = parameter.child_by_field_name("declarator")
             name = _declarator_name(name_node) if name_node is not None else None
@@ -327,7 +342,7 @@ class Unit:
             if type_node is not None and name_node is not None:
                 type_text = _text(parameter)[: name_node.start_byte - parameter.start_byte]
             parameters.append((type_text, name or ""))
-        function = Function(_last(qualified), owner, parameters, node, path)
+        function = Function(_last(qualified), owner, parameters, node, path, required=required)
         self.functions.setdefault(function.name, []).append(function)
         self.signatures.setdefault(function.name, []).append([t for t, _ in parameters])
         for initializer in function.nodes("field_initializer"):
@@ -364,6 +379,10 @@ class Unit:
                     continue  # the function's own name and parameters
                 name = _text(node)
                 pending.extend(self.functions.get(name, ()))
+                if name in self.aliases:  # RosEkf ekf(...) runs RosFilter<Ekf>'s constructor
+                    pending.extend(
+                        self.functions.get(_last(self.unaliased(name).split("<")[0]), ())
+                    )
                 if name in self.fields:  # a member's constructor runs with its owner's
                     for word in re.findall(r"\w+", self.fields[name]):
                         pending.extend(f for f in self.functions.get(word, ()) if f.owner == word)
@@ -478,7 +497,7 @@ class _Evaluator:
         elif node.type == "new_expression":
             type_node = node.child_by_field_name("type")
             if type_node is not None:
-                name = _last(_text(type_node).split("<")[0])
+                name = _last(self.unit.unaliased(_text(type_node)).split("<")[0])
                 yield _CallSite(name, caller, _arguments(node), name)
         elif node.type == "field_initializer":
             name = _last(self.unit.fields.get(_text(node.named_children[0]), "").split("<")[0])
@@ -486,7 +505,7 @@ class _Evaluator:
         else:
             for _, variable in _declared(node):
                 if variable.arguments is not None or variable.init is None:
-                    name = _last(variable.type.split("<")[0])
+                    name = _last(self.unit.unaliased(variable.type).split("<")[0])
                     yield _CallSite(name, caller, variable.arguments or [], name)
 
     def _type_of(self, node: Node, function: Function) -> str | None:
@@ -511,9 +530,13 @@ class _Evaluator:
         if key not in self.locals:
             scope: dict[str, _Variable] = {}
             assignments: dict[str, list[Node]] = {}
-            for node in function.nodes("declaration", "assignment_expression"):
+            for node in function.nodes("declaration", "assignment_expression", "call_expression"):
                 if node.type == "declaration":
                     scope.update(_declared(node))
+                elif node.type == "call_expression":
+                    reset = _reset(node)
+                    if reset is not None:
+                        assignments.setdefault(reset[0], []).append(reset[1])
                 else:
                     left, right = (
                         node.child_by_field_name("left"),
@@ -589,6 +612,13 @@ class _Evaluator:
                 return self._field(_text(member))
         if kind == "call_expression":
             return self._call_value(node, function)
+        if kind == "pointer_expression":  # &nh, *nh: the same handle
+            argument = node.child_by_field_name("argument")
+            return self.evaluate(argument, function) if argument is not None else None
+        if kind == "new_expression":
+            type_node = node.child_by_field_name("type")
+            if type_node is not None:
+                return self.construct(_text(type_node), _arguments(node), function)
         return None
 
     def _concatenate(self, parts: list[Node], function: Function | None) -> Value:
@@ -732,7 +762,10 @@ class _Evaluator:
         if function is None or function.name != function.owner:
             return True
         sites = self.calls.get(function.name, [])
-        return not sites or any(len(s.arguments) == len(function.parameters) for s in sites)
+        count = len(function.parameters)
+        required = min(function.required, self.unit.required.get((function.name, count), count))
+        arities = range(required, count + 1)
+        return not sites or any(len(s.arguments) in arities for s in sites)
 
     def _constant(self, name: str) -> Value:
         node = self.unit.constants.get(name)
@@ -807,7 +840,9 @@ class _Collector:
     def _construction(
         self, type_text: str, arguments: list[Node], function: Function, at: Node
     ) -> None:
-        compact = type_text.replace(" ", "")
+        if len(arguments) == 1 and _text(arguments[0]) in _NULLS:
+            return  # a pointer member initialised to null constructs nothing
+        compact = self.unit.unaliased(type_text).replace(" ", "")
         base = _last(compact.split("<")[0])
         templates = _template_arguments_text(compact)
         message = self.unit.message_type(templates[0]) if templates else None
@@ -945,6 +980,25 @@ class _Collector:
                     if signature:
                         return self.unit.message_type(signature[0])
         return None
+
+
+def _reset(call: Node) -> tuple[str, Node] | None:
+    """``x.reset(value)`` or ``this->x.reset(value)`` (a smart pointer): an assignment of
+    ``value`` to ``x`` (``this->x``), as the evaluator's assignments are keyed."""
+    callee = call.child_by_field_name("function")
+    arguments = _arguments(call)
+    if callee is None or callee.type != "field_expression" or len(arguments) != 1:
+        return None
+    method, target = callee.child_by_field_name("field"), callee.child_by_field_name("argument")
+    if method is None or target is None or _text(method) != "reset":
+        return None
+    if target.type == "identifier":
+        return _text(target), arguments[0]
+    if target.type == "field_expression":
+        inner, member = target.child_by_field_name("argument"), target.child_by_field_name("field")
+        if inner is not None and inner.type == "this" and member is not None:
+            return "this->" + _text(member), arguments[0]
+    return None
 
 
 def _parameter_type(parameter: Node) -> str:
