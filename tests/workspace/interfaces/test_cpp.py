@@ -239,3 +239,21 @@ int main(int argc, char** argv) {
         ("subscribes", "ns/odom"),
     ]
     assert diagnostics == []
+
+
+def test_nodelets_of_one_library_sharing_method_names(tmp_path: Path) -> None:
+    """image_proc: every nodelet class has its own ``connectCb``; an unqualified call or
+    ``&Class::connectCb`` inside a method means that class's."""
+    source = """\
+class Rectify : public nodelet::Nodelet {
+  void onInit() { cb_ = boost::bind(&Rectify::connectCb, this); connectCb(); }
+  void connectCb() { getNodeHandle().subscribe<sensor_msgs::Image>("image_mono", 1); }
+};
+class Resize : public nodelet::Nodelet {
+  void onInit() { connectCb(); }
+  void connectCb() { getNodeHandle().subscribe<sensor_msgs::Image>("image", 1); }
+};
+"""
+    for owner, topic in (("Rectify", "image_mono"), ("Resize", "image")):
+        entries, _ = _extract(tmp_path, {"n.cpp": source}, "onInit", owner)
+        assert [e.name for e in entries] == [topic]

@@ -378,7 +378,7 @@ class Unit:
                 if node.start_byte < start:
                     continue  # the function's own name and parameters
                 name = _text(node)
-                pending.extend(self.functions.get(name, ()))
+                pending.extend(self._named(node, name, function.owner))
                 if name in self.aliases:  # RosEkf ekf(...) runs RosFilter<Ekf>'s constructor
                     pending.extend(
                         self.functions.get(_last(self.unaliased(name).split("<")[0]), ())
@@ -387,6 +387,22 @@ class Unit:
                     for word in re.findall(r"\w+", self.fields[name]):
                         pending.extend(f for f in self.functions.get(word, ()) if f.owner == word)
         return list(reached.values())
+
+    def _named(self, node: Node, name: str, owner: str | None) -> list[Function]:
+        """The functions ``name`` may call, by C++'s lookup: ``Class::name`` is Class's; an
+        unqualified name (or ``this->name``) inside a method is its class's own, when the
+        class has one of that name (several nodelets of one library share ``connectCb``)."""
+        candidates = self.functions.get(name, [])
+        parent = node.parent
+        scope = parent.child_by_field_name("scope") if parent is not None else None
+        if parent is not None and parent.type == "qualified_identifier" and scope is not None:
+            owner = _last(_text(scope).split("<")[0])
+        elif parent is not None and parent.type == "field_expression":
+            target = parent.child_by_field_name("argument")
+            if target is None or target.type != "this":
+                return candidates
+        own = [function for function in candidates if function.owner == owner]
+        return own if owner is not None and own else candidates
 
 
 def _parts(function: Function) -> list[Node]:
