@@ -135,6 +135,7 @@ JSP = Review(
 TF2_LISTENER = "a tf2_ros::TransformListener"
 GAZEBO_INTERFACE = "gazebo_ros/src/gazebo_ros/gazebo_interface.py"
 SPAWN_MODEL = "gazebo_ros/scripts/spawn_model"
+RELAY = "tools/topic_tools/src/relay.cpp"
 REVIEW: dict[tuple[str, str], Review] = {
     ("robot_state_publisher", "robot_state_publisher"): RSP,
     ("robot_state_publisher", "state_publisher"): RSP,
@@ -232,6 +233,41 @@ REVIEW: dict[tuple[str, str], Review] = {
             ],
         },
     ),
+    ("topic_tools", "relay"): Review(
+        "the topics are the command line's (relay IN_TOPIC [OUT_TOPIC]), of any type; "
+        "dropped a publisher reached by name in ShapeShifter::advertise",
+        add={
+            "subscribes": [
+                {**_entry("{argv[1]}", None, RELAY, 58), "static": False},
+            ],
+            "publishes": [
+                {**_entry("{argv[2]}", None, RELAY, 99), "static": False},
+            ],
+        },
+        drop={"publishes": ["{nh}/{opts}"]},
+    ),
+    ("diagnostic_aggregator", "aggregator_node"): Review(
+        "dropped the analyzers' parameters: each analyzer (a plugin) reads them below "
+        "~analyzers/NAME/, named by the analyzers the launch file configures",
+        drop={
+            "params": [
+                f"{{n}}/{name}"
+                for name in (
+                    "path",
+                    "find_and_remove_prefix",
+                    "remove_prefix",
+                    "startswith",
+                    "name",
+                    "contains",
+                    "expected",
+                    "regex",
+                    "timeout",
+                    "num_items",
+                    "discard_stale",
+                )
+            ]
+        },
+    ),
 }
 REVIEW[("joint_state_publisher_gui", "joint_state_publisher_gui")] = JSP
 
@@ -249,7 +285,8 @@ def _reviewed(document: Item, review: Review, checkout: str) -> None:
         for name in names:  # "name@line" when one name has several entries
             match = [e for e in entries if name in (e["name"], f"{e['name']}@{e['line']}")]
             assert match, (document["executable"], role, name)
-            entries.remove(match[0] if "@" in name else match[-1])
+            for entry in match:
+                entries.remove(entry)
     for role, added in review.add.items():
         entries = document[role]
         assert isinstance(entries, list)

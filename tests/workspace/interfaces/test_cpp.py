@@ -209,18 +209,22 @@ int main(int argc, char** argv) {
 
 def test_handles_through_pointers_resets_and_aliased_constructors(tmp_path: Path) -> None:
     """Patterns of image_pipeline (``it_.reset(new ImageTransport(nh))``), teleop_twist_joy
-    (``Teleop t(&nh, &pnh)``), robot_localization (``typedef Filter<Ekf> RosEkf``, a default
-    argument) and move_base (a pointer member initialised to ``NULL``)."""
+    (``Teleop t(&nh, &pnh)``), robot_localization (``typedef Filter<Ekf> RosEkf``, a
+    delegating constructor, a default argument) and move_base (a pointer member initialised
+    to ``NULL``)."""
     source = """\
 template<class T> class Filter {
  public:
-  Filter(ros::NodeHandle nh, ros::NodeHandle* pnh, int depth = 1);
+  Filter(ros::NodeHandle nh, ros::NodeHandle* pnh);
+  Filter(ros::NodeHandle nh, ros::NodeHandle* pnh, int depth, int more = 0);
   ros::NodeHandle nh_;
   boost::shared_ptr<image_transport::ImageTransport> it_;
   actionlib::SimpleActionServer<move_base_msgs::MoveBaseAction>* as_;
 };
 typedef Filter<Ekf> RosEkf;
-template<class T> Filter<T>::Filter(ros::NodeHandle nh, ros::NodeHandle* pnh, int depth)
+template<class T> Filter<T>::Filter(ros::NodeHandle nh, ros::NodeHandle* pnh)
+    : Filter<T>::Filter(nh, pnh, 1) {}
+template<class T> Filter<T>::Filter(ros::NodeHandle nh, ros::NodeHandle* pnh, int depth, int more)
     : nh_(nh), as_(NULL) {
   it_.reset(new image_transport::ImageTransport(nh_));
   it_->advertise("image", 1);
@@ -229,7 +233,7 @@ template<class T> Filter<T>::Filter(ros::NodeHandle nh, ros::NodeHandle* pnh, in
 }
 int main(int argc, char** argv) {
   ros::NodeHandle nh("ns"), pnh("~");
-  RosEkf ekf(nh, &pnh);
+  ns::RosEkf ekf(nh, &pnh);
 }
 """
     entries, diagnostics = _extract(tmp_path, {"f.cpp": source}, "main")
@@ -257,3 +261,24 @@ class Resize : public nodelet::Nodelet {
     for owner, topic in (("Rectify", "image_mono"), ("Resize", "image")):
         entries, _ = _extract(tmp_path, {"n.cpp": source}, "onInit", owner)
         assert [e.name for e in entries] == [topic]
+
+
+def test_names_resolved_by_the_node(tmp_path: Path) -> None:
+    """image_transport's republish (``nh.resolveName("in")``) and imu_filter_madgwick
+    (``ros::names::resolve("imu") + "/data"``): the name as the node would use it."""
+    source = """\
+int main(int argc, char** argv) {
+  ros::NodeHandle nh, pnh("~");
+  std::string in_topic = nh.resolveName("in");
+  nh.subscribe<sensor_msgs::Image>(in_topic, 1);
+  pnh.advertise<sensor_msgs::Imu>(pnh.resolveName("out"), 1);
+  nh.advertise<sensor_msgs::Imu>(ros::names::resolve("imu") + "/data", 1);
+}
+"""
+    entries, diagnostics = _extract(tmp_path, {"r.cpp": source}, "main")
+    assert sorted((str(e.role), e.name) for e in entries) == [
+        ("publishes", "imu/data"),
+        ("publishes", "~out"),
+        ("subscribes", "in"),
+    ]
+    assert diagnostics == []

@@ -294,6 +294,8 @@ class Unit:
         """C++ type ``text`` through the unit's type aliases."""
         for _ in range(8):  # an alias of an alias; a cycle stops here
             bare = re.sub(r"\b(const|typename)\b|[&*\s]", "", text)
+            if bare not in self.aliases and "<" not in bare:
+                bare = _last(bare)  # RobotLocalization::RosEkf: namespaces are not indexed
             if bare not in self.aliases:
                 break
             text = self.aliases[bare]
@@ -516,7 +518,9 @@ class _Evaluator:
                 name = _last(self.unit.unaliased(_text(type_node)).split("<")[0])
                 yield _CallSite(name, caller, _arguments(node), name)
         elif node.type == "field_initializer":
-            name = _last(self.unit.fields.get(_text(node.named_children[0]), "").split("<")[0])
+            # a member's constructor, or a base class's or a delegated one (RosFilter(...))
+            written = _text(node.named_children[0])
+            name = _last(self.unit.fields.get(written, written).split("<")[0])
             yield _CallSite(name, caller, _arguments(node), name)
         else:
             for _, variable in _declared(node):
@@ -657,14 +661,26 @@ class _Evaluator:
                 return self.evaluate(receiver, function)
             if receiver is not None and receiver.type == "this":
                 return self._handle_getter(name)
+            if name == "resolveName" and receiver is not None and len(arguments) == 1:
+                handle, value = (
+                    self.evaluate(receiver, function),
+                    self._name(arguments[0], function),
+                )
+                return value.within(handle.namespace) if isinstance(handle, Handle) else None
             return None
         name = _text(callee).replace(" ", "")
         getter = self._handle_getter(_last(name))
         if getter is not None:
             return getter
+        if name == "ros::names::resolve" and len(arguments) == 1:
+            return self._name(arguments[0], function)  # resolved like a relative use
         if _last(name) == "string" and len(arguments) == 1:
             return self.evaluate(arguments[0], function)
         return self.construct(name, arguments, function)
+
+    def _name(self, node: Node, function: Function | None) -> Text:
+        value = self.evaluate(node, function)
+        return value if isinstance(value, Text) else Text.unknown(_text(node))
 
     @staticmethod
     def _handle_getter(name: str) -> Value:
