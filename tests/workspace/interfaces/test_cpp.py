@@ -282,3 +282,25 @@ int main(int argc, char** argv) {
         ("subscribes", "in"),
     ]
     assert diagnostics == []
+
+
+def test_variables_written_by_parameter_reads(tmp_path: Path) -> None:
+    """robot_localization: ``std::string path = ""; nh.searchParam("tf_prefix", path);
+    nh.getParam(path, prefix)`` reads a parameter whose name is only known at run time; a
+    topic initialised and then read from a parameter is the parameter's."""
+    source = """\
+int main(int argc, char** argv) {
+  ros::NodeHandle nh("~");
+  std::string path = "", topic = "scan", fixed = "odom";
+  if (nh.searchParam("tf_prefix", path)) { nh.getParam(path, prefix); }
+  nh.param("topic", topic, topic);
+  nh.subscribe<sensor_msgs::LaserScan>(topic, 1);
+  nh.subscribe<nav_msgs::Odometry>(fixed, 1);
+}
+"""
+    entries, _ = _extract(tmp_path, {"p.cpp": source}, "main")
+    assert [(e.name, e.static) for e in entries if e.role is not Role.PARAMS] == [
+        ("~{topic}", False),
+        ("~odom", True),
+    ]
+    assert [e.name for e in entries if e.role is Role.PARAMS] == ["~{path}", "~topic"]

@@ -557,6 +557,8 @@ class _Evaluator:
                     reset = _reset(node)
                     if reset is not None:
                         assignments.setdefault(reset[0], []).append(reset[1])
+                    for written in _out_arguments(node):  # a value no evaluation knows
+                        assignments.setdefault(written, []).append(node)
                 else:
                     left, right = (
                         node.child_by_field_name("left"),
@@ -728,11 +730,10 @@ class _Evaluator:
     def _local(self, name: str, variable: _Variable, function: Function) -> Value:
         if variable.arguments is not None:
             return self.construct(variable.type, variable.arguments, function)
+        written = self.assignments[id(function)].get(name, [])
         if variable.init is not None:
-            return self.evaluate(variable.init, function)
-        values = {
-            self.evaluate(node, function) for node in self.assignments[id(function)].get(name, [])
-        }
+            written = [variable.init, *written]  # a later write wins or disagrees
+        values = {self.evaluate(node, function) for node in written}
         if len(values) == 1:
             return values.pop()
         if "NodeHandle" in variable.type and not values:
@@ -1012,6 +1013,20 @@ class _Collector:
                     if signature:
                         return self.unit.message_type(signature[0])
         return None
+
+
+def _out_arguments(call: Node) -> list[str]:
+    """The local variables a ROS call writes through a reference: ``searchParam(key, out)``,
+    ``getParam(name, out)``, ``param(name, out, default)`` (a value read from a parameter)."""
+    callee = call.child_by_field_name("function")
+    method = callee.child_by_field_name("field") if callee is not None else None
+    arguments = _arguments(call)
+    if method is None or len(arguments) < 2 or arguments[1].type != "identifier":
+        return []
+    name = _text(method).split("<")[0]
+    if name in ("searchParam", "getParam", "getParamCached") or len(arguments) == 3:
+        return [_text(arguments[1])] if name in ("searchParam", *_PARAM_READS) else []
+    return []  # param(name, default) returns the value
 
 
 def _reset(call: Node) -> tuple[str, Node] | None:
