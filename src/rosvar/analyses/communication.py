@@ -110,9 +110,7 @@ class Edge:
 
 def find_interface(interfaces: Interfaces, unit: tuple[str, str]) -> NodeInterface | None:
     package, executable = unit
-    if package:
-        return interfaces.find(package, executable)
-    return next((n for n in interfaces.nodes if n.executable == executable), None)
+    return interfaces.find(package or None, executable)
 
 
 def model_edges(space: ConditionSpace, model: LaunchModel, interfaces: Interfaces) -> list[Edge]:

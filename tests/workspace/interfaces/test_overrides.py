@@ -6,6 +6,7 @@ from pathlib import Path
 
 from rosvar.diagnostics import Location
 from rosvar.workspace.hints import load_hints
+from rosvar.workspace.interfaces.catalogue import Catalogue
 from rosvar.workspace.interfaces.model import (
     Entry,
     Interfaces,
@@ -90,12 +91,30 @@ def test_catalogue_fills_only_missing_nodes() -> None:
     entry = Entry(Role.PUBLISHES, "map", Location("map_server.cpp", 9), Origin.CATALOGUE)
     add_catalogue(
         interfaces,
-        [
-            NodeInterface("amcl", "amcl", NodeKind.NODE),
-            NodeInterface("map_server", "map_server", NodeKind.NODE, [entry]),
-        ],
+        Catalogue(
+            [
+                _item("amcl", []),
+                _item("map_server", [{"name": "map", "type": None, "file": "m.cpp", "line": 9}]),
+            ]
+        ),
     )
-    assert [(n.package, len(n.entries)) for n in interfaces.nodes] == [
+    assert [(n.package, len(n.entries)) for n in interfaces.listed()] == [
         ("amcl", 1),
         ("map_server", 1),
     ]
+    found = interfaces.find("map_server", "map_server")
+    assert found is not None and found.entries[0].name == entry.name
+    assert found.entries[0].location.file == "https://github.com/o/r/blob/c/m.cpp"
+
+
+def _item(package: str, publishes: list[dict[str, object]]) -> dict[str, object]:
+    roles = {str(role): [] for role in Role}
+    return {
+        "package": package,
+        "executable": package,
+        "kind": "node",
+        "repository": "o/r",
+        "commit": "c",
+        **roles,
+        "publishes": publishes,
+    }
