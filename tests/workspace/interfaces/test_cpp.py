@@ -304,3 +304,27 @@ int main(int argc, char** argv) {
         ("~odom", True),
     ]
     assert [e.name for e in entries if e.role is Role.PARAMS] == ["~{path}", "~topic"]
+
+
+def test_a_tested_read_has_the_code_as_default(tmp_path: Path) -> None:
+    """slam_gmapping: ``if(!private_nh_.getParam("throttle_scans", t)) t = 1;`` handles an
+    unset parameter; a read whose result is dropped, or whose unset branch fails, does not."""
+    source = """\
+int main(int argc, char** argv) {
+  ros::NodeHandle nh("~");
+  if (!nh.getParam("throttle_scans", throttle)) throttle = 1;
+  bool ok = nh.getParam("frame", frame) && nh.getParam("rate", rate);
+  nh.getParam("port", port);
+  if (!nh.getParam("device", device)) { ROS_ERROR_STREAM("no device"); }
+  if (nh.getParam("baud", baud)) { use(baud); } else { return false; }
+}
+"""
+    entries, _ = _extract(tmp_path, {"g.cpp": source}, "main")
+    assert [(e.name, e.default) for e in entries] == [
+        ("~throttle_scans", Expression('!nh.getParam("throttle_scans", throttle)')),
+        ("~frame", Expression('nh.getParam("frame", frame) && nh.getParam("rate", rate)')),
+        ("~rate", Expression('nh.getParam("frame", frame) && nh.getParam("rate", rate)')),
+        ("~port", None),
+        ("~device", None),  # kobuki_node: required, the unset branch fails
+        ("~baud", None),
+    ]

@@ -45,6 +45,8 @@ _SMART_POINTERS = re.compile(
 _IMAGE = "sensor_msgs/Image"
 _CAMERA_INFO = "sensor_msgs/CameraInfo"
 _NULLS = frozenset({"NULL", "nullptr", "0"})
+_TESTING = frozenset({"unary_expression", "parenthesized_expression", "binary_expression"})
+_FAILING = ("ROS_ERROR", "ROS_FATAL", "exit", "abort", "ros::shutdown")
 
 
 @dataclass(frozen=True)
@@ -990,6 +992,8 @@ class _Collector:
             default = _default(
                 arguments[-1] if len(arguments) >= 2 else None, self.evaluator, function
             )
+        elif (test := _test_of(at)) is not None:
+            default = Expression(_text(test))  # the code decides what an unset one means
         self.add(Role.PARAMS, handle, arguments[0], function, at, default=default)
 
     def _first_type(self, templates: list[str]) -> str | None:
@@ -1068,6 +1072,33 @@ def _template_arguments_text(type_text: str) -> list[str]:
         depth -= char == ">"
         current += char
     return [*parts, current]
+
+
+def _test_of(call: Node) -> Node | None:
+    """The expression that tests ``call``'s result (``!nh.getParam(...)`` in an ``if``): the
+    code handles an unset parameter. None when the result is dropped (the variable silently
+    keeps its value) or when the branch taken when unset fails (returns, throws, logs an
+    error): the parameter is required."""
+    node, negated = call, False
+    while node.parent is not None and node.parent.type in _TESTING:
+        node = node.parent
+        negated ^= node.type == "unary_expression" and _text(node).startswith("!")
+    parent = node.parent
+    if parent is None or parent.type in ("expression_statement", "compound_statement"):
+        return None
+    statement = parent.parent if parent.type == "condition_clause" else None
+    if statement is not None and statement.type == "if_statement":
+        unset = statement.child_by_field_name("consequence" if negated else "alternative")
+        if unset is not None and any(_fails(n) for n in _walk_all(unset)):
+            return None
+    return node
+
+
+def _fails(node: Node) -> bool:
+    if node.type in ("return_statement", "throw_statement"):
+        return True
+    callee = node.child_by_field_name("function") if node.type == "call_expression" else None
+    return callee is not None and _text(callee).startswith(_FAILING)
 
 
 def _default(node: Node | None, evaluator: _Evaluator, function: Function) -> Default | None:
