@@ -61,6 +61,9 @@ SOURCES: list[tuple[str, str, list[str]]] = [
 
 SKIPPED = [":(exclude,glob)**/test/**", ":(exclude,glob)**/*.bag"]
 """Tests are no launched nodes; large files may be absent from a mirror."""
+BOUNDARY_TOPICS = frozenset({"/tf", "/tf_static"})
+"""Published for tf's listeners: nearly every node and rviz hold one, modelled only where
+reviewed; a publication of these is a boundary use in every node."""
 TEST_EXECUTABLE = re.compile(r"(^|[_-])(r?test|unittest)|^test|_test$|(^|_)test_")
 """Test programs built outside ``test/`` (``tf2_ros_test_listener``, ``gmapping-rtest``)."""
 
@@ -81,11 +84,14 @@ Item = dict[str, object]
 class Review:
     """What reading a node's sources by hand changed: ``note`` says what and why (it is
     written to the catalogue), ``add`` holds entries the extractor cannot see, each with the
-    file and line that make it, ``drop`` the names (per role) it took wrongly."""
+    file and line that make it, ``drop`` the names (per role) it took wrongly, ``boundary``
+    the names (per role) meant for something outside the launched nodes (people and their
+    tools, diagnostics monitors; see BOUNDARY_TOPICS for tf)."""
 
     note: str
     add: dict[str, list[Item]] = field(default_factory=dict)
     drop: dict[str, list[str]] = field(default_factory=dict)
+    boundary: dict[str, list[str]] = field(default_factory=dict)
 
 
 def _entry(name: str, kind: str | None, file: str, line: int) -> Item:
@@ -154,10 +160,16 @@ REVIEW: dict[tuple[str, str], Review] = {
             "clients": [_entry("static_map", "nav_msgs/GetMap", "amcl/src/amcl_node.cpp", 850)],
         },
         drop={"publishes": ["base_scan", "/tf"], "subscribes": ["initialpose@666"]},
+        boundary={"subscribes": ["initialpose"], "publishes": ["particlecloud"]},
     ),
     ("move_base", "move_base"): Review(
         f"added /tf and /tf_static ({TF2_LISTENER}); the costmaps' and planners' plugins "
-        "(loaded at run time) are not read",
+        "(loaded at run time) are not read; move_base_simple/goal is rviz's 2D Nav Goal, "
+        "~current_goal, goal and recovery_status are for people",
+        boundary={
+            "subscribes": ["move_base_simple/goal"],
+            "publishes": ["~current_goal", "move_base/goal", "move_base/recovery_status"],
+        },
         add={
             "subscribes": [
                 _entry("/tf", TF, "move_base/src/move_base_node.cpp", 36),
@@ -248,7 +260,13 @@ REVIEW: dict[tuple[str, str], Review] = {
     ),
     ("diagnostic_aggregator", "aggregator_node"): Review(
         "dropped the analyzers' parameters: each analyzer (a plugin) reads them below "
-        "~analyzers/NAME/, named by the analyzers the launch file configures",
+        "~analyzers/NAME/, named by the analyzers the launch file configures; /diagnostics "
+        "comes from drivers' diagnostic_updater (not extracted), its outputs are for "
+        "monitors (rqt_robot_monitor)",
+        boundary={
+            "subscribes": ["/diagnostics"],
+            "publishes": ["/diagnostics_agg", "/diagnostics_toplevel_state"],
+        },
         drop={
             "params": [
                 f"{{n}}/{name}"
@@ -270,6 +288,34 @@ REVIEW: dict[tuple[str, str], Review] = {
     ),
 }
 REVIEW[("joint_state_publisher_gui", "joint_state_publisher_gui")] = JSP
+for _key, _review in {
+    ("joy", "joy_node"): Review(
+        "joy/set_feedback (force feedback) is an optional input",
+        boundary={"subscribes": ["joy/set_feedback"]},
+    ),
+    ("hector_mapping", "hector_mapping"): Review(
+        "initialpose is rviz's 2D Pose Estimate; the markers and debug info are for people",
+        boundary={
+            "subscribes": ["initialpose"],
+            "publishes": [
+                "hector_debug_info",
+                "visualization_marker",
+                "visualization_marker_array",
+            ],
+        },
+    ),
+    ("gmapping", "slam_gmapping"): Review(
+        REVIEW[("gmapping", "slam_gmapping")].note + "; entropy is for people",
+        add=REVIEW[("gmapping", "slam_gmapping")].add,
+        boundary={"publishes": ["~entropy"]},
+    ),
+}.items():
+    REVIEW[_key] = _review
+for _filter in ("ekf_localization_node", "ukf_localization_node"):
+    REVIEW[("robot_localization", _filter)] = Review(
+        "set_pose (topic) is for people and tools resetting the filter",
+        boundary={"subscribes": ["set_pose"]},
+    )
 
 
 def _git(directory: str, *arguments: str) -> bytes:
@@ -291,6 +337,14 @@ def _reviewed(document: Item, review: Review, checkout: str) -> None:
         entries = document[role]
         assert isinstance(entries, list)
         entries.extend({**e, "file": os.path.join(checkout, str(e["file"]))} for e in added)
+    for role, names in review.boundary.items():
+        entries = document[role]
+        assert isinstance(entries, list)
+        for name in names:
+            match = [e for e in entries if e["name"] == name]
+            assert match, (document["executable"], role, name)
+            for entry in match:
+                entry["boundary"] = True
     document["review"] = review.note
 
 
@@ -324,6 +378,8 @@ def build(mirrors: str) -> dict[str, object]:
                     for entry in entries:
                         entry["file"] = os.path.relpath(entry["file"], checkout)
                         entry.pop("origin", None)
+                        if role == "publishes" and entry["name"] in BOUNDARY_TOPICS:
+                            entry["boundary"] = True
                 nodes.append(document)
     return {"catalogue": nodes}
 

@@ -4,13 +4,15 @@ that ``resolve`` enumerates (the checks never enumerate them)."""
 from __future__ import annotations
 
 import itertools
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from rosvar.analyses.checks import Check, check_model, check_models
 from rosvar.analyses.communication import resolved_graph
 from rosvar.analyses.resolve import _Restriction, resolve
+from rosvar.diagnostics import Severity
 from rosvar.workspace.interfaces.extraction import extract_interfaces
-from rosvar.workspace.interfaces.model import Interfaces
+from rosvar.workspace.interfaces.model import Interfaces, Role
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -106,3 +108,23 @@ def test_findings_are_readable(ws: LaunchWorkspace) -> None:
     [unfed] = [f for f in findings if f.check is Check.NO_PROVIDER]
     assert unfed.name == "/reader/input"
     assert analysis.space.describe(unfed.condition) in ("¬listen ∨ ¬two", "¬two ∨ ¬listen")
+
+
+def test_boundary_uses_are_not_missing_partners(ws: LaunchWorkspace) -> None:
+    """An input meant for people or tools (amcl's initialpose) without a provider is a note,
+    not a warning; an output meant for them (/tf) without a subscriber is no finding."""
+    analysis, file, interfaces = _setup(ws)
+    reader = interfaces.find("pkg", "reader.py")
+    talker = interfaces.find("pkg", "talker.py")
+    assert reader is not None and talker is not None
+    reader.entries = [
+        replace(e, boundary=True) if e.role is Role.SUBSCRIBES else e for e in reader.entries
+    ]
+    talker.entries = [replace(e, boundary=True) for e in talker.entries]
+    findings = check_model(
+        analysis.space, analysis.model(file), interfaces, analysis.workspace.confinement()
+    )
+    [unfed] = [f for f in findings if f.check is Check.NO_PROVIDER]
+    assert (unfed.name, unfed.severity) == ("/reader/input", Severity.NOTE)
+    unheard = {f.message.split()[0] for f in findings if f.check is Check.NO_SUBSCRIBER}
+    assert unheard == {"/counter"}  # the talkers' publications are boundary ones

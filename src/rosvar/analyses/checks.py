@@ -212,10 +212,10 @@ class _Checker:
     ) -> None:
         provided = self.any(e.condition for e in providers)
         used = self.any(e.condition for e in users)
-        for edge in users:
+        for edge in users:  # a boundary input may come from a person or a tool: a note
             self.add(
                 Check.NO_PROVIDER,
-                Severity.WARNING,
+                Severity.NOTE if edge.boundary else Severity.WARNING,
                 name,
                 f"{edge.node} {USED[channel]} {name}, which no launched node provides",
                 edge.condition & ~provided,
@@ -224,6 +224,8 @@ class _Checker:
         if channel is not Channel.TOPICS:
             return
         for edge in providers:
+            if edge.boundary:
+                continue  # its consumers are outside the launch files by design
             self.add(
                 Check.NO_SUBSCRIBER,
                 Severity.NOTE,

@@ -102,6 +102,7 @@ class Edge:
     launch: Location  # the <node>
     source: Location  # the use in the node's source
     static: bool  # False: a part of the name is not known statically
+    boundary: bool = False  # meant for something outside the launched nodes (Entry.boundary)
 
     @property
     def channel(self) -> Channel:
@@ -175,6 +176,7 @@ def _edge(
         decl.location,
         entry.location,
         static and entry.static and "{" not in name,
+        entry.boundary,
     )
 
 

@@ -76,6 +76,7 @@ def _node(item: dict[str, Any]) -> NodeInterface:
                     type=entry.get("type"),
                     default=_default(entry.get("default")),
                     static=entry.get("static", True),
+                    boundary=entry.get("boundary", False),
                 )
             )
     return NodeInterface(item["package"], item["executable"], NodeKind(item["kind"]), entries)

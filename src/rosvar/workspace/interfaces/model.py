@@ -71,6 +71,9 @@ class Entry:
     default: Default | None = None
     static: bool = True
     when: str | None = None  # a hint's presence condition, as written (launch args, params)
+    boundary: bool = False
+    """Meant for something outside the launched nodes: people and their tools (rviz's goal
+    and pose tools, a joystick's feedback), tf's listeners, diagnostics monitors."""
 
     def to_json(self) -> dict[str, object]:
         document: dict[str, object] = {"name": self.name}
@@ -86,6 +89,8 @@ class Entry:
             document["static"] = False
         if self.when is not None:
             document["when"] = self.when
+        if self.boundary:
+            document["boundary"] = True
         return document
 
 
