@@ -128,3 +128,18 @@ def test_boundary_uses_are_not_missing_partners(ws: LaunchWorkspace) -> None:
     assert (unfed.name, unfed.severity) == ("/reader/input", Severity.NOTE)
     unheard = {f.message.split()[0] for f in findings if f.check is Check.NO_SUBSCRIBER}
     assert unheard == {"/counter"}  # the talkers' publications are boundary ones
+
+
+def test_one_node_with_two_types_is_no_mismatch(ws: LaunchWorkspace) -> None:
+    """robot_localization subscribes cmd_vel as Twist or TwistStamped (its stamped_control):
+    alternative code paths of one node, not two nodes disagreeing."""
+    analysis, file, interfaces = _setup(ws)
+    counter = interfaces.find("pkg", "counter.py")
+    assert counter is not None
+    counter.entries = [*counter.entries, replace(counter.entries[0], type="std_msgs/Int64")]
+    findings = check_model(
+        analysis.space, analysis.model(file), interfaces, analysis.workspace.confinement()
+    )
+    mismatches = {f.message for f in findings if f.check is Check.TYPE_MISMATCH}
+    assert len(mismatches) == 2  # Int32 and Int64 each against the talkers' String
+    assert not any("Int32" in m and "Int64" in m for m in mismatches)
