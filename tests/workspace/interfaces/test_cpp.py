@@ -328,3 +328,47 @@ int main(int argc, char** argv) {
         ("~device", None),  # kobuki_node: required, the unset branch fails
         ("~baud", None),
     ]
+
+
+def test_defaults_of_guarded_and_initialised_reads(tmp_path: Path) -> None:
+    """topic_tools' relay (``bool unreliable = false; pnh.getParam("unreliable",
+    unreliable);``) and robot_localization (``if (nh.hasParam("x")) nh.getParam("x", v);``)."""
+    source = """\
+int main(int argc, char** argv) {
+  ros::NodeHandle pnh("~");
+  bool unreliable = false;
+  pnh.getParam("unreliable", unreliable);
+  XmlRpc::XmlRpcValue config;
+  if (pnh.hasParam("process_noise_covariance")) {
+    pnh.getParam("process_noise_covariance", config);
+  }
+}
+"""
+    entries, _ = _extract(tmp_path, {"d.cpp": source}, "main")
+    assert [(e.name, e.default) for e in entries] == [
+        ("~unreliable", False),
+        ("~process_noise_covariance", Expression('(pnh.hasParam("process_noise_covariance"))')),
+    ]
+
+
+def test_controller_manager_services(tmp_path: Path) -> None:
+    """husky_base: ``controller_manager::ControllerManager cm(&husky, nh)`` serves what
+    ``controller_manager/spawner`` calls; lizi_hw omits the handle."""
+    source = """\
+int main(int argc, char** argv) {
+  ros::NodeHandle nh, private_nh("~");
+  controller_manager::ControllerManager cm(&husky, nh);
+  controller_manager::ControllerManager other(&lizi);
+}
+"""
+    entries, _ = _extract(tmp_path, {"c.cpp": source}, "main")
+    services = [(e.name, e.type) for e in entries if e.role is Role.SERVICES]
+    assert len(services) == 12
+    assert services[2] == (
+        "controller_manager/load_controller",
+        "controller_manager_msgs/LoadController",
+    )
+    assert (
+        "controller_manager/reload_controller_libraries",
+        "controller_manager_msgs/ReloadControllerLibraries",
+    ) in services[6:]

@@ -45,6 +45,18 @@ _SMART_POINTERS = re.compile(
 _IMAGE = "sensor_msgs/Image"
 _CAMERA_INFO = "sensor_msgs/CameraInfo"
 _NULLS = frozenset({"NULL", "nullptr", "0"})
+_CONTROLLER_MANAGER_SERVICES = tuple(
+    (service, "controller_manager_msgs/" + service.title().replace("_", ""))
+    for service in (
+        "list_controllers",
+        "list_controller_types",
+        "load_controller",
+        "unload_controller",
+        "switch_controller",
+        "reload_controller_libraries",
+    )
+)
+"""What ros_control's ControllerManager serves (its constructor, controller_manager.cpp)."""
 _TESTING = frozenset({"unary_expression", "parenthesized_expression", "binary_expression"})
 _FAILING = ("ROS_ERROR", "ROS_FATAL", "exit", "abort", "ros::shutdown")
 
@@ -729,6 +741,10 @@ class _Evaluator:
             return self._field(name)
         return self._constant(name)
 
+    def local(self, name: str, function: Function) -> _Variable | None:
+        """The declaration of local variable ``name`` of ``function``."""
+        return self._scope(function).get(name)
+
     def _local(self, name: str, variable: _Variable, function: Function) -> Value:
         if variable.arguments is not None:
             return self.construct(variable.type, variable.arguments, function)
@@ -887,6 +903,21 @@ class _Collector:
             self.add(role, handle, rest[0], function, at, action_type(message) if message else None)
         elif base == "Subscriber" and "message_filters" in compact and handle is not None and rest:
             self.add(Role.SUBSCRIBES, handle, rest[0], function, at, message)
+        elif base == "ControllerManager" and arguments:
+            self._controller_manager(arguments[1:], function, at)
+
+    def _controller_manager(self, arguments: list[Node], function: Function, at: Node) -> None:
+        """``controller_manager::ControllerManager cm(&hw, nh)`` serves its services below
+        ``controller_manager`` in ``nh``'s namespace (``ros::NodeHandle()`` by default)."""
+        handle = self.evaluator.evaluate(arguments[0], function) if arguments else Handle(Text(""))
+        if not isinstance(handle, Handle):
+            handle = Handle(Text.unknown(_text(arguments[0])))
+        location = Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1)
+        for service, kind in _CONTROLLER_MANAGER_SERVICES:
+            name = Text("controller_manager/" + service).within(handle.namespace)
+            self.entries.append(
+                Entry(Role.SERVICES, name.value, location, type=kind, static=name.static)
+            )
 
     def _split_handle(
         self, arguments: list[Node], function: Function
@@ -994,6 +1025,12 @@ class _Collector:
             )
         elif (test := _test_of(at)) is not None:
             default = Expression(_text(test))  # the code decides what an unset one means
+        elif (guard := _guard_of(at, arguments[0])) is not None:
+            default = Expression(_text(guard))  # read only when set: if (nh.hasParam(x))
+        elif len(arguments) >= 2 and arguments[1].type == "identifier":
+            variable = self.evaluator.local(_text(arguments[1]), function)
+            if variable is not None and variable.init is not None:  # bool lazy = false;
+                default = _default(variable.init, self.evaluator, function)
         self.add(Role.PARAMS, handle, arguments[0], function, at, default=default)
 
     def _first_type(self, templates: list[str]) -> str | None:
@@ -1092,6 +1129,20 @@ def _test_of(call: Node) -> Node | None:
         if unset is not None and any(_fails(n) for n in _walk_all(unset)):
             return None
     return node
+
+
+def _guard_of(call: Node, name: Node) -> Node | None:
+    """The condition of an enclosing ``if`` that asks whether parameter ``name`` is set
+    (``if (nh.hasParam("x")) nh.getParam("x", v);``)."""
+    node = call.parent
+    while node is not None and node.type != "function_definition":
+        if node.type == "if_statement":
+            condition = node.child_by_field_name("condition")
+            text = _text(condition) if condition is not None else ""
+            if "hasParam(" + _text(name) in text.replace(" ", ""):
+                return condition
+        node = node.parent
+    return None
 
 
 def _fails(node: Node) -> bool:
