@@ -288,6 +288,38 @@ REVIEW: dict[tuple[str, str], Review] = {
     ),
 }
 REVIEW[("joint_state_publisher_gui", "joint_state_publisher_gui")] = JSP
+API_PLUGIN = "gazebo_ros/src/gazebo_ros_api_plugin.cpp"
+GAZEBO = [
+    ("gazebo_ros/SpawnModel", "spawn_sdf_model", 281),
+    ("gazebo_ros/SpawnModel", "spawn_urdf_model", 290),
+    ("gazebo_msgs/DeleteModel", "delete_model", 299),
+    ("gazebo_msgs/SetModelConfiguration", "set_model_configuration", 454),
+    ("std_srvs/Empty", "pause_physics", 498),
+    ("std_srvs/Empty", "unpause_physics", 507),
+]
+EXTRA: dict[tuple[str, str, str], Review] = {
+    # (repository, package, executable): nodes the extractor cannot find at all, by hand
+    ("ros-simulation/gazebo_ros_pkgs", "gazebo_ros", "gzserver"): Review(
+        "a shell script that runs Gazebo with gazebo_ros_api_plugin (a Gazebo plugin, no "
+        "node source); the plugin creates its services through AdvertiseServiceOptions, "
+        "which the extractor does not read: those spawn_model uses and the model states, "
+        "in the node's namespace (~: the launch file names it gazebo); the model plugins of "
+        "a robot's URDF (gazebo_ros_control, sensors) are not included",
+        add={
+            "services": [
+                _entry("~" + name, kind.replace("gazebo_ros/", "gazebo_msgs/"), API_PLUGIN, line)
+                for kind, name, line in GAZEBO
+            ],
+            "publishes": [
+                _entry("/clock", "rosgraph_msgs/Clock", API_PLUGIN, 208),
+                _entry("~link_states", "gazebo_msgs/LinkStates", API_PLUGIN, 400),
+                _entry("~model_states", "gazebo_msgs/ModelStates", API_PLUGIN, 409),
+            ],
+        },
+        # /clock is read by every node under use_sim_time (inside roscpp/rospy)
+        boundary={"publishes": ["/clock", "~link_states", "~model_states"]},
+    ),
+}
 for _key, _review in {
     ("joy", "joy_node"): Review(
         "joy/set_feedback (force feedback) is an optional input",
@@ -353,6 +385,13 @@ def build(mirrors: str) -> dict[str, object]:
     for repository, branch, folders in SOURCES:
         directory = os.path.join(mirrors, repository.replace("/", "+"), "repo")
         commit = _git(directory, "rev-parse", branch).decode().strip()
+        for (source, package, executable), review in EXTRA.items():
+            if source == repository:
+                extra: Item = {"package": package, "executable": executable, "kind": "node"}
+                extra.update({role: [] for role in ROLES})
+                _reviewed(extra, review, "")
+                extra.update(repository=repository, commit=commit)
+                nodes.append(extra)
         with tempfile.TemporaryDirectory() as checkout:
             paths = [folder for folder in folders if folder] or ["."]
             archive = _git(directory, "archive", "--format=tar", commit, *paths, *SKIPPED)

@@ -334,10 +334,12 @@ def test_defaults_of_guarded_and_initialised_reads(tmp_path: Path) -> None:
     """topic_tools' relay (``bool unreliable = false; pnh.getParam("unreliable",
     unreliable);``) and robot_localization (``if (nh.hasParam("x")) nh.getParam("x", v);``)."""
     source = """\
+bool g_lazy = false;
 int main(int argc, char** argv) {
   ros::NodeHandle pnh("~");
   bool unreliable = false;
   pnh.getParam("unreliable", unreliable);
+  pnh.getParam("lazy", g_lazy);
   XmlRpc::XmlRpcValue config;
   if (pnh.hasParam("process_noise_covariance")) {
     pnh.getParam("process_noise_covariance", config);
@@ -347,6 +349,7 @@ int main(int argc, char** argv) {
     entries, _ = _extract(tmp_path, {"d.cpp": source}, "main")
     assert [(e.name, e.default) for e in entries] == [
         ("~unreliable", False),
+        ("~lazy", False),
         ("~process_noise_covariance", Expression('(pnh.hasParam("process_noise_covariance"))')),
     ]
 

@@ -1028,9 +1028,11 @@ class _Collector:
         elif (guard := _guard_of(at, arguments[0])) is not None:
             default = Expression(_text(guard))  # read only when set: if (nh.hasParam(x))
         elif len(arguments) >= 2 and arguments[1].type == "identifier":
-            variable = self.evaluator.local(_text(arguments[1]), function)
-            if variable is not None and variable.init is not None:  # bool lazy = false;
-                default = _default(variable.init, self.evaluator, function)
+            written = _text(arguments[1])
+            variable = self.evaluator.local(written, function)  # bool unreliable = false;
+            init = self.unit.constants.get(written) if variable is None else variable.init
+            if init is not None:
+                default = _default(init, self.evaluator, function)
         self.add(Role.PARAMS, handle, arguments[0], function, at, default=default)
 
     def _first_type(self, templates: list[str]) -> str | None:
