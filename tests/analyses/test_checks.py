@@ -143,3 +143,22 @@ def test_one_node_with_two_types_is_no_mismatch(ws: LaunchWorkspace) -> None:
     mismatches = {f.message for f in findings if f.check is Check.TYPE_MISMATCH}
     assert len(mismatches) == 2  # Int32 and Int64 each against the talkers' String
     assert not any("Int32" in m and "Int64" in m for m in mismatches)
+
+
+def test_a_partner_in_another_launch_file_makes_a_note(ws: LaunchWorkspace) -> None:
+    """kobuki's safety_controller.launch subscribes to the bumper events that minimal.launch
+    (the base) publishes: launch files started together; the finding says which."""
+    analysis, file, interfaces = _setup(ws)
+    other = ws.launch(
+        "base.launch",
+        '<node pkg="pkg" type="talker.py" name="feeder">'
+        '<remap from="chatter" to="/reader/input"/></node>',
+    )
+    analysis = ws.analysis()
+    models = [analysis.model(file), analysis.model(other)]
+    findings = check_models(analysis.space, models, interfaces, analysis.workspace.confinement())
+    [unfed] = [f for f in findings if f.check is Check.NO_PROVIDER]
+    assert (unfed.name, unfed.severity) == ("/reader/input", Severity.NOTE)
+    assert unfed.message.endswith("which no launched node provides here (base.launch does)")
+    alone = check_models(analysis.space, models[:1], interfaces, analysis.workspace.confinement())
+    assert [f.severity for f in alone if f.check is Check.NO_PROVIDER] == [Severity.WARNING]
