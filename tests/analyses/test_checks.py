@@ -132,7 +132,7 @@ def test_boundary_uses_are_not_missing_partners(ws: LaunchWorkspace) -> None:
 
 def test_one_node_with_two_types_is_no_mismatch(ws: LaunchWorkspace) -> None:
     """robot_localization subscribes cmd_vel as Twist or TwistStamped (its stamped_control):
-    alternative code paths of one node, not two nodes disagreeing."""
+    alternative code paths of one node, which agrees with a node using either type."""
     analysis, file, interfaces = _setup(ws)
     counter = interfaces.find("pkg", "counter.py")
     assert counter is not None
@@ -143,6 +143,11 @@ def test_one_node_with_two_types_is_no_mismatch(ws: LaunchWorkspace) -> None:
     mismatches = {f.message for f in findings if f.check is Check.TYPE_MISMATCH}
     assert len(mismatches) == 2  # Int32 and Int64 each against the talkers' String
     assert not any("Int32" in m and "Int64" in m for m in mismatches)
+    counter.entries = [*counter.entries, replace(counter.entries[0], type="std_msgs/String")]
+    findings = check_model(
+        analysis.space, analysis.model(file), interfaces, analysis.workspace.confinement()
+    )
+    assert not any(f.check is Check.TYPE_MISMATCH for f in findings)  # it shares String
 
 
 def test_a_partner_in_another_launch_file_makes_a_note(ws: LaunchWorkspace) -> None:

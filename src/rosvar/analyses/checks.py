@@ -275,15 +275,23 @@ class _Checker:
 
     def types(self, name: str, named: Sequence[Edge]) -> None:
         by_type: dict[str, list[Edge]] = defaultdict(list)
+        types_of: dict[str, set[str]] = defaultdict(set)
         for edge in named:
             if edge.type is not None:
                 by_type[edge.type].append(edge)
+                types_of[edge.node].add(edge.type)
         kinds = sorted(by_type)
         for i, first in enumerate(kinds):
             for second in kinds[i + 1 :]:
                 a, b = by_type[first], by_type[second]
-                # one node's two types are alternative code paths (ekf's stamped_control)
-                both = self.any(x.condition & y.condition for x in a for y in b if x.node != y.node)
+                # one node's several types are alternative code paths (robot_localization's
+                # stamped_control): two nodes disagree when they share none
+                both = self.any(
+                    x.condition & y.condition
+                    for x in a
+                    for y in b
+                    if not types_of[x.node] & types_of[y.node]
+                )
                 self.add(
                     Check.TYPE_MISMATCH,
                     Severity.ERROR,
