@@ -26,7 +26,7 @@ nodes:
     params:
       - {name: ~rate, default: 20}
   demo/Camera:
-    subscribes: [{name: image, type: sensor_msgs/Image}]
+    subscribes: [{name: image, type: sensor_msgs/Image, boundary: true}]
   other/new_node:
     clients: [{name: reset, type: std_srvs/Empty}]
   demo/bad:
@@ -68,10 +68,13 @@ def test_hints_override_and_add(tmp_path: Path) -> None:
         ("params", "~rate", None, Origin.HINTS),
     ]
     assert driver.entries[1].when == "$(arg laser)"
+    assert not driver.entries[1].boundary
     assert driver.entries[1].location == Location(str(path), 4, 1)
     assert driver.of(Role.PARAMS)[0].default == 20
     camera = interfaces.find("demo", "demo/Camera")
-    assert camera is not None and [e.name for e in camera.entries] == ["image"]
+    assert camera is not None and [(e.name, e.boundary) for e in camera.entries] == [
+        ("image", True)
+    ]
     created = interfaces.find("other", "new_node")
     assert created is not None and created.kind is NodeKind.NODE
     assert created.to_json()["clients"] == [
