@@ -57,6 +57,8 @@ SOURCES: list[tuple[str, str, list[str]]] = [
     ("ros-perception/imu_pipeline", "noetic-devel", ["imu_transformer"]),
     ("tu-darmstadt-ros-pkg/hector_slam", "melodic-devel", ["hector_mapping"]),
     ("ros-visualization/interactive_marker_twist_server", "kinetic-devel", [""]),
+    ("ros-drivers/openni2_camera", "ros1", ["openni2_camera"]),
+    ("ros-drivers/openni_camera", "ros1", ["openni_camera"]),
 ]
 
 SKIPPED = [":(exclude,glob)**/test/**", ":(exclude,glob)**/*.bag"]

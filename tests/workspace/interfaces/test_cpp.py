@@ -375,3 +375,16 @@ int main(int argc, char** argv) {
         "controller_manager/reload_controller_libraries",
         "controller_manager_msgs/ReloadControllerLibraries",
     ) in services[6:]
+
+
+def test_service_type_from_a_request_typedef(tmp_path: Path) -> None:
+    """openni2_camera: ``getSerialCb(openni2_camera::GetSerialRequest& req, ...)``."""
+    source = """\
+bool getSerialCb(openni2_camera::GetSerialRequest& req, openni2_camera::GetSerialResponse& res);
+int main(int argc, char** argv) {
+  ros::NodeHandle nh;
+  nh.advertiseService("get_serial", &getSerialCb);
+}
+"""
+    entries, _ = _extract(tmp_path, {"s.cpp": source}, "main")
+    assert [(e.name, e.type) for e in entries] == [("get_serial", "openni2_camera/GetSerial")]

@@ -964,6 +964,8 @@ class _Collector:
             self.add(Role.SUBSCRIBES, value, topic, function, node, type_name)
         elif method == "advertiseService":
             type_name = self._first_type(templates) or self._callback_type(arguments[1:])
+            if type_name is not None:  # a callback takes Srv::Request& or SrvRequest&
+                type_name = type_name.removesuffix("Request")
             self.add(Role.SERVICES, value, topic, function, node, type_name)
         elif method == "serviceClient":
             self.add(Role.CLIENTS, value, topic, function, node, self._first_type(templates))
