@@ -77,6 +77,7 @@ def _node(item: dict[str, Any]) -> NodeInterface:
                     default=_default(entry.get("default")),
                     static=entry.get("static", True),
                     boundary=entry.get("boundary", False),
+                    beside=entry.get("beside"),
                 )
             )
     return NodeInterface(item["package"], item["executable"], NodeKind(item["kind"]), entries)

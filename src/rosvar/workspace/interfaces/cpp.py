@@ -977,6 +977,7 @@ class _Collector:
         if method not in ("advertise", "subscribe", "advertiseCamera", "subscribeCamera"):
             return
         self.add(role, handle, name, function, at, _IMAGE)
+        image = self.entries[-1].name
         if method.endswith("Camera"):
             value = self.evaluator.evaluate(name, function)
             if isinstance(value, Text) and value.static:
@@ -989,7 +990,14 @@ class _Collector:
                 location = Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1)
                 resolved = Text(info).within(handle.namespace)
                 self.entries.append(
-                    Entry(role, resolved.value, location, type=_CAMERA_INFO, static=resolved.static)
+                    Entry(
+                        role,
+                        resolved.value,
+                        location,
+                        type=_CAMERA_INFO,
+                        static=resolved.static,
+                        beside=image,
+                    )
                 )
 
     def _filter_subscribe(

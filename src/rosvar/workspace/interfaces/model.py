@@ -74,6 +74,9 @@ class Entry:
     boundary: bool = False
     """Meant for something outside the launched nodes: people and their tools (rviz's goal
     and pose tools, a joystick's feedback), tf's listeners, diagnostics monitors."""
+    beside: str | None = None
+    """image_transport's camera info: named after the image topic ``beside`` (as the node
+    writes it) once that is remapped, so the graph derives this name, not ``name``."""
 
     def to_json(self) -> dict[str, object]:
         document: dict[str, object] = {"name": self.name}
@@ -91,6 +94,8 @@ class Entry:
             document["when"] = self.when
         if self.boundary:
             document["boundary"] = True
+        if self.beside is not None:
+            document["beside"] = self.beside
         return document
 
 
