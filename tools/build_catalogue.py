@@ -3,8 +3,9 @@
 Runs rosvar's own extractor on public sources: each repository below is expected as a
 mirror (``/work/.mirror/OWNER+NAME/repo``, a bare git directory as the ``fetch`` tool leaves
 it, or any clone given with ``--mirrors``); the named branch is exported to a temporary folder
-(nothing fetched is kept or committed), its packages are extracted, and every entry's file
-becomes a permanent URL at the exported commit. Review the result by hand before committing:
+(nothing fetched is kept or committed; tests are left out), its packages are extracted, the
+review by hand below is applied, and every node records its repository and commit, every
+entry its file and line there. Review the result by hand before committing:
 
     python tools/build_catalogue.py > src/rosvar/workspace/interfaces/catalogue/ros1.json
 """
@@ -14,21 +15,61 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
+from dataclasses import dataclass, field
 
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 
 SOURCES: list[tuple[str, str, list[str]]] = [
-    # repository, ROS 1 branch, folders holding the packages ("" = the repository's root)
-    ("ros/robot_state_publisher", "noetic-devel", [""]),
+    # repository, ROS 1 branch (melodic's where there is one: the corpus's systems are
+    # melodic), folders holding the packages ("" = the repository's root): every package a
+    # launch file of the corpus (its four systems and _external) starts a node of, most
+    # launched first, whose sources the corpus does not hold
+    ("ros/robot_state_publisher", "melodic-devel", [""]),
+    (
+        "ros/joint_state_publisher",
+        "kinetic-devel",
+        ["joint_state_publisher", "joint_state_publisher_gui"],
+    ),
+    ("ros-simulation/gazebo_ros_pkgs", "melodic-devel", ["gazebo_ros"]),
+    ("ros-planning/navigation", "melodic-devel", ["amcl", "map_server", "move_base"]),
+    ("ros-perception/slam_gmapping", "melodic-devel", ["gmapping"]),
     ("ros-drivers/joystick_drivers", "melodic-devel", ["joy"]),
+    ("ros/diagnostics", "noetic-devel", ["diagnostic_aggregator"]),
+    ("ros/geometry", "melodic-devel", ["tf"]),
+    ("ros/geometry2", "melodic-devel", ["tf2_ros"]),
+    ("ros/ros_comm", "melodic-devel", ["tools/topic_tools"]),
+    ("ros-controls/ros_control", "melodic-devel", ["controller_manager"]),
+    ("ros-perception/image_pipeline", "melodic", ["image_proc", "depth_image_proc"]),
+    ("ros-perception/image_common", "noetic-devel", ["image_transport"]),
+    ("ros-planning/robot_pose_ekf", "master", [""]),
+    ("ros-perception/depthimage_to_laserscan", "melodic-devel", [""]),
+    ("ros-perception/pointcloud_to_laserscan", "lunar-devel", [""]),
+    ("cra-ros-pkg/robot_localization", "melodic-devel", [""]),
+    ("ros-teleop/twist_mux", "melodic-devel", [""]),
+    ("ros-teleop/teleop_twist_joy", "melodic-devel", [""]),
+    ("ros-drivers/urg_node", "melodic-devel", [""]),
+    ("CCNYRoboticsLab/imu_tools", "melodic", ["imu_filter_madgwick"]),
+    ("ros-perception/imu_pipeline", "noetic-devel", ["imu_transformer"]),
+    ("tu-darmstadt-ros-pkg/hector_slam", "melodic-devel", ["hector_mapping"]),
+    ("ros-visualization/interactive_marker_twist_server", "kinetic-devel", [""]),
+    ("ros-drivers/openni2_camera", "ros1", ["openni2_camera"]),
+    ("ros-drivers/openni_camera", "ros1", ["openni_camera"]),
 ]
 
+SKIPPED = [":(exclude,glob)**/test/**", ":(exclude,glob)**/*.bag"]
+"""Tests are no launched nodes; large files may be absent from a mirror."""
+BOUNDARY_TOPICS = frozenset({"/tf", "/tf_static"})
+"""Published for tf's listeners: nearly every node and rviz hold one, modelled only where
+reviewed; a publication of these is a boundary use in every node."""
+TEST_EXECUTABLE = re.compile(r"(^|[_-])(r?test|unittest)|^test|_test$|(^|_)test_")
+"""Test programs built outside ``test/`` (``tf2_ros_test_listener``, ``gmapping-rtest``)."""
 
-REVIEWED_ROLES = (
+ROLES = (
     "publishes",
     "subscribes",
     "services",
@@ -37,34 +78,278 @@ REVIEWED_ROLES = (
     "action_clients",
     "params",
 )
-REVIEW: dict[tuple[str, str], dict[str, list[dict[str, object]]]] = {
-    # Found by reading the sources, for what the extractor cannot see (tf broadcasters,
-    # urdf's initParam); each with the line that does it.
-    ("robot_state_publisher", "robot_state_publisher"): {
+
+Item = dict[str, object]
+
+
+@dataclass(frozen=True)
+class Review:
+    """What reading a node's sources by hand changed: ``note`` says what and why (it is
+    written to the catalogue), ``add`` holds entries the extractor cannot see, each with the
+    file and line that make it, ``drop`` the names (per role) it took wrongly, ``boundary``
+    the names (per role) meant for something outside the launched nodes (people and their
+    tools, diagnostics monitors; see BOUNDARY_TOPICS for tf)."""
+
+    note: str
+    add: dict[str, list[Item]] = field(default_factory=dict)
+    drop: dict[str, list[str]] = field(default_factory=dict)
+    boundary: dict[str, list[str]] = field(default_factory=dict)
+
+
+def _entry(name: str, kind: str | None, file: str, line: int) -> Item:
+    return {"name": name, "type": kind, "file": file, "line": line}
+
+
+def _param(name: str, default: object, file: str, line: int) -> Item:
+    return {"name": name, "default": default, "file": file, "line": line}
+
+
+TF = "tf2_msgs/TFMessage"
+RSP = Review(
+    "added /tf and /tf_static (tf2_ros broadcasters) and robot_description "
+    "(urdf::Model::initParam)",
+    add={
         "publishes": [
-            {
-                "name": "/tf",
-                "type": "tf2_msgs/TFMessage",
-                "file": "src/robot_state_publisher.cpp",
-                "line": 141,
-            },
-            {
-                "name": "/tf_static",
-                "type": "tf2_msgs/TFMessage",
-                "file": "src/robot_state_publisher.cpp",
-                "line": 163,
-            },
+            _entry("/tf", TF, "src/robot_state_publisher.cpp", 102),
+            _entry("/tf_static", TF, "src/robot_state_publisher.cpp", 124),
+        ],
+        "params": [_param("robot_description", None, "src/joint_state_listener_node.cpp", 64)],
+    },
+)
+JSP_MODULE = "joint_state_publisher/src/joint_state_publisher/__init__.py"
+JSP = Review(
+    "the script imports its package's module, which the extractor does not read; entries "
+    "from that module by hand: each parameter is read as ~name, else name (its get_param)",
+    add={
+        "publishes": [_entry("joint_states", "sensor_msgs/JointState", JSP_MODULE, 175)],
+        "subscribes": [
+            {**_entry("{source}", "sensor_msgs/JointState", JSP_MODULE, 173), "static": False}
         ],
         "params": [
-            {
-                "name": "robot_description",
-                "default": None,
-                "file": "src/robot_state_publisher_node.cpp",
-                "line": 58,
-            },
+            _param("robot_description", None, JSP_MODULE, 143),
+            _param("~dependent_joints", {"expression": "{}"}, JSP_MODULE, 149),
+            _param("~use_mimic_tags", True, JSP_MODULE, 150),
+            _param("~use_smallest_joint_limits", True, JSP_MODULE, 151),
+            _param("~zeros", {"expression": "None"}, JSP_MODULE, 153),
+            _param("~publish_default_positions", True, JSP_MODULE, 155),
+            _param("~publish_default_velocities", False, JSP_MODULE, 156),
+            _param("~publish_default_efforts", False, JSP_MODULE, 157),
+            _param("~source_list", {"expression": "[]"}, JSP_MODULE, 170),
+            _param("~rate", 10, JSP_MODULE, 211),
+            _param("~delta", 0.0, JSP_MODULE, 214),
         ],
     },
+)
+TF2_LISTENER = "a tf2_ros::TransformListener"
+GAZEBO_INTERFACE = "gazebo_ros/src/gazebo_ros/gazebo_interface.py"
+SPAWN_MODEL = "gazebo_ros/scripts/spawn_model"
+RELAY = "tools/topic_tools/src/relay.cpp"
+REVIEW: dict[tuple[str, str], Review] = {
+    ("robot_state_publisher", "robot_state_publisher"): RSP,
+    ("robot_state_publisher", "state_publisher"): RSP,
+    ("joint_state_publisher", "joint_state_publisher"): JSP,
+    ("amcl", "amcl"): Review(
+        "dropped base_scan and /tf publishers and the second initialpose subscriber (only "
+        "when replaying a bag given on the command line); added /tf (tf2_ros broadcaster), "
+        f"/tf and /tf_static ({TF2_LISTENER}) and the static_map client "
+        "(ros::service::call, used when ~use_map_topic is false)",
+        add={
+            "publishes": [_entry("/tf", TF, "amcl/src/amcl_node.cpp", 1475)],
+            "subscribes": [
+                _entry("/tf", TF, "amcl/src/amcl_node.cpp", 471),
+                _entry("/tf_static", TF, "amcl/src/amcl_node.cpp", 471),
+            ],
+            "clients": [_entry("static_map", "nav_msgs/GetMap", "amcl/src/amcl_node.cpp", 850)],
+        },
+        drop={"publishes": ["base_scan", "/tf"], "subscribes": ["initialpose@666"]},
+        boundary={"subscribes": ["initialpose"], "publishes": ["particlecloud"]},
+    ),
+    ("move_base", "move_base"): Review(
+        f"added /tf and /tf_static ({TF2_LISTENER}); the costmaps' and planners' plugins "
+        "(loaded at run time) are not read; move_base_simple/goal is rviz's 2D Nav Goal, "
+        "~current_goal, goal and recovery_status are for people",
+        boundary={
+            "subscribes": ["move_base_simple/goal"],
+            "publishes": ["~current_goal", "move_base/goal", "move_base/recovery_status"],
+        },
+        add={
+            "subscribes": [
+                _entry("/tf", TF, "move_base/src/move_base_node.cpp", 36),
+                _entry("/tf_static", TF, "move_base/src/move_base_node.cpp", 36),
+            ]
+        },
+    ),
+    ("gmapping", "slam_gmapping"): Review(
+        "added /tf (tf::TransformBroadcaster) and its tf::TransformListener's /tf, /tf_static",
+        add={
+            "publishes": [_entry("/tf", TF, "gmapping/src/slam_gmapping.cpp", 802)],
+            "subscribes": [
+                _entry("/tf", TF, "gmapping/src/slam_gmapping.h", 70),
+                _entry("/tf_static", TF, "gmapping/src/slam_gmapping.h", 70),
+            ],
+        },
+    ),
+    ("tf", "static_transform_publisher"): Review(
+        "added /tf (tf::TransformBroadcaster)",
+        add={"publishes": [_entry("/tf", TF, "tf/src/static_transform_publisher.cpp", 57)]},
+    ),
+    ("tf2_ros", "static_transform_publisher"): Review(
+        "dropped /tf, /tf_static and ~tf2_frames: the library's TransformListener and Buffer "
+        "are reached by name only, the program uses neither",
+        drop={"subscribes": ["/tf", "/tf_static"], "services": ["~tf2_frames"]},
+    ),
+    ("controller_manager", "spawner"): Review(
+        "the controller manager's services, as named without --namespace",
+        add={
+            "clients": [
+                _entry(
+                    f"controller_manager/{verb}_controller",
+                    f"controller_manager_msgs/{verb.capitalize()}Controller",
+                    "controller_manager/scripts/spawner",
+                    line,
+                )
+                for verb, line in (("load", 115), ("unload", 116), ("switch", 117))
+            ]
+        },
+        drop={
+            "clients": [
+                "{load_controller_service}",
+                "{unload_controller_service}",
+                "{switch_controller_service}",
+            ]
+        },
+    ),
+    ("gazebo_ros", "spawn_model"): Review(
+        "Gazebo's services and topics as named with the default -gazebo_namespace /gazebo; "
+        "the model is read from the parameter that -param names",
+        add={
+            "subscribes": [
+                _entry("/gazebo/model_states", "gazebo_msgs/ModelStates", SPAWN_MODEL, 102)
+            ],
+            "clients": [
+                _entry("/gazebo/spawn_sdf_model", "gazebo_msgs/SpawnModel", GAZEBO_INTERFACE, 18),
+                _entry("/gazebo/spawn_urdf_model", "gazebo_msgs/SpawnModel", GAZEBO_INTERFACE, 30),
+                _entry(
+                    "/gazebo/set_model_configuration",
+                    "gazebo_msgs/SetModelConfiguration",
+                    GAZEBO_INTERFACE,
+                    44,
+                ),
+                _entry("/gazebo/unpause_physics", "std_srvs/Empty", SPAWN_MODEL, 210),
+                _entry("/gazebo/delete_model", "gazebo_msgs/DeleteModel", SPAWN_MODEL, 230),
+            ],
+        },
+        drop={
+            "subscribes": ["{'%s/model_states' % self.args.gazebo_namespace}"],
+            "clients": [
+                "{'%s/unpause_physics' % self.args.gazebo_namespace}",
+                "{'%s/delete_model' % self.args.gazebo_namespace}",
+            ],
+        },
+    ),
+    ("topic_tools", "relay"): Review(
+        "the topics are the command line's (relay IN_TOPIC [OUT_TOPIC]), of any type; "
+        "dropped a publisher reached by name in ShapeShifter::advertise",
+        add={
+            "subscribes": [
+                {**_entry("{argv[1]}", None, RELAY, 58), "static": False},
+            ],
+            "publishes": [
+                {**_entry("{argv[2]}", None, RELAY, 99), "static": False},
+            ],
+        },
+        drop={"publishes": ["{nh}/{opts}"]},
+    ),
+    ("diagnostic_aggregator", "aggregator_node"): Review(
+        "dropped the analyzers' parameters: each analyzer (a plugin) reads them below "
+        "~analyzers/NAME/, named by the analyzers the launch file configures; /diagnostics "
+        "comes from drivers' diagnostic_updater (not extracted), its outputs are for "
+        "monitors (rqt_robot_monitor)",
+        boundary={
+            "subscribes": ["/diagnostics"],
+            "publishes": ["/diagnostics_agg", "/diagnostics_toplevel_state"],
+        },
+        drop={
+            "params": [
+                f"{{n}}/{name}"
+                for name in (
+                    "path",
+                    "find_and_remove_prefix",
+                    "remove_prefix",
+                    "startswith",
+                    "name",
+                    "contains",
+                    "expected",
+                    "regex",
+                    "timeout",
+                    "num_items",
+                    "discard_stale",
+                )
+            ]
+        },
+    ),
 }
+REVIEW[("joint_state_publisher_gui", "joint_state_publisher_gui")] = JSP
+API_PLUGIN = "gazebo_ros/src/gazebo_ros_api_plugin.cpp"
+GAZEBO = [
+    ("gazebo_ros/SpawnModel", "spawn_sdf_model", 281),
+    ("gazebo_ros/SpawnModel", "spawn_urdf_model", 290),
+    ("gazebo_msgs/DeleteModel", "delete_model", 299),
+    ("gazebo_msgs/SetModelConfiguration", "set_model_configuration", 454),
+    ("std_srvs/Empty", "pause_physics", 498),
+    ("std_srvs/Empty", "unpause_physics", 507),
+]
+EXTRA: dict[tuple[str, str, str], Review] = {
+    # (repository, package, executable): nodes the extractor cannot find at all, by hand
+    ("ros-simulation/gazebo_ros_pkgs", "gazebo_ros", "gzserver"): Review(
+        "a shell script that runs Gazebo with gazebo_ros_api_plugin (a Gazebo plugin, no "
+        "node source); the plugin creates its services through AdvertiseServiceOptions, "
+        "which the extractor does not read: those spawn_model uses and the model states, "
+        "in the node's namespace (~: the launch file names it gazebo); the model plugins of "
+        "a robot's URDF (gazebo_ros_control, sensors) are not included",
+        add={
+            "services": [
+                _entry("~" + name, kind.replace("gazebo_ros/", "gazebo_msgs/"), API_PLUGIN, line)
+                for kind, name, line in GAZEBO
+            ],
+            "publishes": [
+                _entry("/clock", "rosgraph_msgs/Clock", API_PLUGIN, 208),
+                _entry("~link_states", "gazebo_msgs/LinkStates", API_PLUGIN, 400),
+                _entry("~model_states", "gazebo_msgs/ModelStates", API_PLUGIN, 409),
+            ],
+        },
+        # /clock is read by every node under use_sim_time (inside roscpp/rospy)
+        boundary={"publishes": ["/clock", "~link_states", "~model_states"]},
+    ),
+}
+for _key, _review in {
+    ("joy", "joy_node"): Review(
+        "joy/set_feedback (force feedback) is an optional input",
+        boundary={"subscribes": ["joy/set_feedback"]},
+    ),
+    ("hector_mapping", "hector_mapping"): Review(
+        "initialpose is rviz's 2D Pose Estimate; the markers and debug info are for people",
+        boundary={
+            "subscribes": ["initialpose"],
+            "publishes": [
+                "hector_debug_info",
+                "visualization_marker",
+                "visualization_marker_array",
+            ],
+        },
+    ),
+    ("gmapping", "slam_gmapping"): Review(
+        REVIEW[("gmapping", "slam_gmapping")].note + "; entropy is for people",
+        add=REVIEW[("gmapping", "slam_gmapping")].add,
+        boundary={"publishes": ["~entropy"]},
+    ),
+}.items():
+    REVIEW[_key] = _review
+for _filter in ("ekf_localization_node", "ukf_localization_node"):
+    REVIEW[("robot_localization", _filter)] = Review(
+        "set_pose (topic) is for people and tools resetting the filter",
+        boundary={"subscribes": ["set_pose"]},
+    )
 
 
 def _git(directory: str, *arguments: str) -> bytes:
@@ -73,13 +358,45 @@ def _git(directory: str, *arguments: str) -> bytes:
     ).stdout
 
 
+def _reviewed(document: Item, review: Review, checkout: str) -> None:
+    for role, names in review.drop.items():
+        entries = document[role]
+        assert isinstance(entries, list)
+        for name in names:  # "name@line" when one name has several entries
+            match = [e for e in entries if name in (e["name"], f"{e['name']}@{e['line']}")]
+            assert match, (document["executable"], role, name)
+            for entry in match:
+                entries.remove(entry)
+    for role, added in review.add.items():
+        entries = document[role]
+        assert isinstance(entries, list)
+        entries.extend({**e, "file": os.path.join(checkout, str(e["file"]))} for e in added)
+    for role, names in review.boundary.items():
+        entries = document[role]
+        assert isinstance(entries, list)
+        for name in names:
+            match = [e for e in entries if e["name"] == name]
+            assert match, (document["executable"], role, name)
+            for entry in match:
+                entry["boundary"] = True
+    document["review"] = review.note
+
+
 def build(mirrors: str) -> dict[str, object]:
-    nodes: list[dict[str, object]] = []
+    nodes: list[Item] = []
     for repository, branch, folders in SOURCES:
         directory = os.path.join(mirrors, repository.replace("/", "+"), "repo")
         commit = _git(directory, "rev-parse", branch).decode().strip()
+        for (source, package, executable), review in EXTRA.items():
+            if source == repository:
+                extra: Item = {"package": package, "executable": executable, "kind": "node"}
+                extra.update({role: [] for role in ROLES})
+                _reviewed(extra, review, "")
+                extra.update(repository=repository, commit=commit)
+                nodes.append(extra)
         with tempfile.TemporaryDirectory() as checkout:
-            archive = _git(directory, "archive", "--format=tar", commit, *[f for f in folders if f])
+            paths = [folder for folder in folders if folder] or ["."]
+            archive = _git(directory, "archive", "--format=tar", commit, *paths, *SKIPPED)
             subprocess.run(["tar", "-x", "-C", checkout], input=archive, check=True)
             roots = [os.path.join(checkout, folder) for folder in folders]
             packages = discover(roots, ros_package_path="").packages.values()
@@ -87,23 +404,23 @@ def build(mirrors: str) -> dict[str, object]:
             for diagnostic in interfaces.diagnostics:
                 print(f"{repository}: {diagnostic}", file=sys.stderr)
             for node in interfaces.nodes:
+                unreviewed = (node.package, node.executable) not in REVIEW
+                if unreviewed and (TEST_EXECUTABLE.search(node.executable) or not node.entries):
+                    continue
                 document = node.to_json()
-                for role, entries in REVIEW.get((node.package, node.executable), {}).items():
-                    added = document[role]
-                    assert isinstance(added, list)
-                    added.extend(
-                        {**e, "file": os.path.join(checkout, str(e["file"]))} for e in entries
-                    )
-                document["repository"] = f"https://github.com/{repository}"
+                review = REVIEW.get((node.package, node.executable))
+                if review is not None:
+                    _reviewed(document, review, checkout)
+                document["repository"] = repository
                 document["commit"] = commit
-                for key, value in document.items():
-                    if key in REVIEWED_ROLES and isinstance(value, list):
-                        for entry in value:
-                            relative = os.path.relpath(entry["file"], checkout)
-                            entry["file"] = (
-                                f"https://github.com/{repository}/blob/{commit}/{relative}"
-                            )
-                            entry["origin"] = "catalogue"
+                for role in ROLES:
+                    entries = document[role]
+                    assert isinstance(entries, list)
+                    for entry in entries:
+                        entry["file"] = os.path.relpath(entry["file"], checkout)
+                        entry.pop("origin", None)
+                        if role == "publishes" and entry["name"] in BOUNDARY_TOPICS:
+                            entry["boundary"] = True
                 nodes.append(document)
     return {"catalogue": nodes}
 

@@ -4,13 +4,15 @@ that ``resolve`` enumerates (the checks never enumerate them)."""
 from __future__ import annotations
 
 import itertools
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from rosvar.analyses.checks import Check, check_model, check_models
 from rosvar.analyses.communication import resolved_graph
 from rosvar.analyses.resolve import _Restriction, resolve
+from rosvar.diagnostics import Severity
 from rosvar.workspace.interfaces.extraction import extract_interfaces
-from rosvar.workspace.interfaces.model import Interfaces
+from rosvar.workspace.interfaces.model import Interfaces, Role
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -106,3 +108,62 @@ def test_findings_are_readable(ws: LaunchWorkspace) -> None:
     [unfed] = [f for f in findings if f.check is Check.NO_PROVIDER]
     assert unfed.name == "/reader/input"
     assert analysis.space.describe(unfed.condition) in ("¬listen ∨ ¬two", "¬two ∨ ¬listen")
+
+
+def test_boundary_uses_are_not_missing_partners(ws: LaunchWorkspace) -> None:
+    """An input meant for people or tools (amcl's initialpose) without a provider is a note,
+    not a warning; an output meant for them (/tf) without a subscriber is no finding."""
+    analysis, file, interfaces = _setup(ws)
+    reader = interfaces.find("pkg", "reader.py")
+    talker = interfaces.find("pkg", "talker.py")
+    assert reader is not None and talker is not None
+    reader.entries = [
+        replace(e, boundary=True) if e.role is Role.SUBSCRIBES else e for e in reader.entries
+    ]
+    talker.entries = [replace(e, boundary=True) for e in talker.entries]
+    findings = check_model(
+        analysis.space, analysis.model(file), interfaces, analysis.workspace.confinement()
+    )
+    [unfed] = [f for f in findings if f.check is Check.NO_PROVIDER]
+    assert (unfed.name, unfed.severity) == ("/reader/input", Severity.NOTE)
+    unheard = {f.message.split()[0] for f in findings if f.check is Check.NO_SUBSCRIBER}
+    assert unheard == {"/counter"}  # the talkers' publications are boundary ones
+
+
+def test_one_node_with_two_types_is_no_mismatch(ws: LaunchWorkspace) -> None:
+    """robot_localization subscribes cmd_vel as Twist or TwistStamped (its stamped_control):
+    alternative code paths of one node, which agrees with a node using either type."""
+    analysis, file, interfaces = _setup(ws)
+    counter = interfaces.find("pkg", "counter.py")
+    assert counter is not None
+    counter.entries = [*counter.entries, replace(counter.entries[0], type="std_msgs/Int64")]
+    findings = check_model(
+        analysis.space, analysis.model(file), interfaces, analysis.workspace.confinement()
+    )
+    mismatches = {f.message for f in findings if f.check is Check.TYPE_MISMATCH}
+    assert len(mismatches) == 2  # Int32 and Int64 each against the talkers' String
+    assert not any("Int32" in m and "Int64" in m for m in mismatches)
+    counter.entries = [*counter.entries, replace(counter.entries[0], type="std_msgs/String")]
+    findings = check_model(
+        analysis.space, analysis.model(file), interfaces, analysis.workspace.confinement()
+    )
+    assert not any(f.check is Check.TYPE_MISMATCH for f in findings)  # it shares String
+
+
+def test_a_partner_in_another_launch_file_makes_a_note(ws: LaunchWorkspace) -> None:
+    """kobuki's safety_controller.launch subscribes to the bumper events that minimal.launch
+    (the base) publishes: launch files started together; the finding says which."""
+    analysis, file, interfaces = _setup(ws)
+    other = ws.launch(
+        "base.launch",
+        '<node pkg="pkg" type="talker.py" name="feeder">'
+        '<remap from="chatter" to="/reader/input"/></node>',
+    )
+    analysis = ws.analysis()
+    models = [analysis.model(file), analysis.model(other)]
+    findings = check_models(analysis.space, models, interfaces, analysis.workspace.confinement())
+    [unfed] = [f for f in findings if f.check is Check.NO_PROVIDER]
+    assert (unfed.name, unfed.severity) == ("/reader/input", Severity.NOTE)
+    assert unfed.message.endswith("which no launched node provides here (base.launch does)")
+    alone = check_models(analysis.space, models[:1], interfaces, analysis.workspace.confinement())
+    assert [f.severity for f in alone if f.check is Check.NO_PROVIDER] == [Severity.WARNING]

@@ -22,7 +22,7 @@ from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.catalogue import load_catalogue
 from rosvar.workspace.interfaces.extraction import extract_interfaces
-from rosvar.workspace.interfaces.model import Interfaces, Role
+from rosvar.workspace.interfaces.model import Entry, Interfaces, Role
 from rosvar.workspace.interfaces.overrides import add_catalogue
 
 if TYPE_CHECKING:
@@ -160,3 +160,40 @@ def test_a_nodelet_runs_its_class() -> None:
     assert unit("standalone pkg/Class") == ("", "pkg/Class")
     assert unit("manager") is None
     assert LaunchedNode("pkg", "exe", "/", "n", "", ()).unit() == ("pkg", "exe")
+
+
+def test_camera_info_lies_beside_the_remapped_image(ws: LaunchWorkspace) -> None:
+    """image_transport derives a camera's info topic from its image topic once remapped:
+    rgbd_launch remaps a rectify nodelet's ``image_mono`` to ``rgb/image_raw``, so it reads
+    ``rgb/camera_info``, not ``camera_info``."""
+    ws.write("scripts/talker.py", TALKER)
+    file = ws.launch(
+        "camera.launch",
+        '<arg name="relay" default="false"/>'
+        '<node pkg="pkg" type="talker.py" name="rectify">'
+        '<remap from="image_mono" to="/camera/rgb/image_raw" if="$(arg relay)"/></node>',
+    )
+    analysis = ws.analysis()
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    talker = interfaces.find("pkg", "talker.py")
+    assert talker is not None
+    where = talker.entries[0].location
+    talker.entries = [
+        Entry(Role.SUBSCRIBES, "image_mono", where, type="sensor_msgs/Image"),
+        Entry(
+            Role.SUBSCRIBES,
+            "camera_info",
+            where,
+            type="sensor_msgs/CameraInfo",
+            beside="image_mono",
+        ),
+    ]
+    model = analysis.model(file)
+    edges = model_edges(analysis.space, model, interfaces)
+    info = {(e.name, analysis.space.describe(e.condition)) for e in edges if "Info" in str(e.type)}
+    assert {name for name, _ in info} == {"/camera/rgb/camera_info", "/camera_info"}
+    for relay in ("true", "false"):
+        resolution = resolve(analysis, [file], {"relay": relay})
+        kept = restrict(edges, _Restriction(analysis, model, {"relay": relay}, {}).holds)
+        uses = [(e.node, e.role, e.name, e.type) for e in kept]
+        assert graph_json(uses) == resolved_graph(resolution.nodes, interfaces)

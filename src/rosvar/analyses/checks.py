@@ -11,6 +11,7 @@ configuration is enumerated; an example configuration is read off the condition
 from __future__ import annotations
 
 import enum
+import os
 from collections import defaultdict
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
@@ -99,8 +100,16 @@ def check_models(
     found: dict[tuple[object, ...], Finding] = {}
     included = _included(models)
     ordered = sorted(models, key=lambda m: real_path(m.file) not in included)
+    edges = {model.file: model_edges(space, model, interfaces) for model in ordered}
+    partners: Partners = defaultdict(set)
+    for file, found_edges in edges.items():
+        for edge in found_edges:
+            if edge.static:
+                partners[(edge.role, edge.name)].add(file)
     for model in ordered:
-        for finding in check_model(space, model, interfaces, confinement):
+        for finding in check_model(
+            space, model, interfaces, confinement, edges[model.file], partners
+        ):
             key = (finding.check, finding.name, finding.locations)
             found.setdefault(key, finding)
     return sorted(found.values(), key=lambda f: (f.locations[0], f.check, f.name))
@@ -116,13 +125,24 @@ def _included(models: Iterable[LaunchModel]) -> set[str]:
     }
 
 
+Partners = defaultdict[tuple[Role, str], set[str]]
+"""The entry files whose nodes use a resolved name in a role (an edge in some configuration)."""
+
+
 def check_model(
-    space: ConditionSpace, model: LaunchModel, interfaces: Interfaces, confinement: Confinement
+    space: ConditionSpace,
+    model: LaunchModel,
+    interfaces: Interfaces,
+    confinement: Confinement,
+    edges: Sequence[Edge] | None = None,
+    partners: Partners | None = None,
 ) -> list[Finding]:
     """The findings of one entry file (where it loads: a failing launch has no graph);
-    ``confinement``: where the files its ``<rosparam>`` loads may be read."""
-    edges = model_edges(space, model, interfaces)
-    checker = _Checker(space, model, model.loads, confinement)
+    ``confinement``: where the files its ``<rosparam>`` loads may be read; ``partners``:
+    the uses of the workspace's other entry files (a missing partner there is a note)."""
+    if edges is None:
+        edges = model_edges(space, model, interfaces)
+    checker = _Checker(space, model, model.loads, confinement, partners or defaultdict(set))
     checker.graph(edges)
     checker.node_names()
     checker.params(interfaces)
@@ -131,8 +151,14 @@ def check_model(
 
 class _Checker:
     def __init__(
-        self, space: ConditionSpace, model: LaunchModel, loads: BDD, confinement: Confinement
+        self,
+        space: ConditionSpace,
+        model: LaunchModel,
+        loads: BDD,
+        confinement: Confinement,
+        partners: Partners,
     ) -> None:
+        self.partners = partners
         self.confinement = confinement
         self.space = space
         self.model = model
@@ -212,37 +238,60 @@ class _Checker:
     ) -> None:
         provided = self.any(e.condition for e in providers)
         used = self.any(e.condition for e in users)
-        for edge in users:
+        provide, use = SIDES[channel]
+        elsewhere = self._elsewhere(provide, name)
+        for edge in users:  # from a person, a tool or another launch file: a note
             self.add(
                 Check.NO_PROVIDER,
-                Severity.WARNING,
+                Severity.NOTE if edge.boundary or elsewhere else Severity.WARNING,
                 name,
-                f"{edge.node} {USED[channel]} {name}, which no launched node provides",
+                f"{edge.node} {USED[channel]} {name}, which no launched node provides" + elsewhere,
                 edge.condition & ~provided,
                 (edge.launch, edge.source),
             )
         if channel is not Channel.TOPICS:
             return
         for edge in providers:
+            if edge.boundary:
+                continue  # its consumers are outside the launch files by design
             self.add(
                 Check.NO_SUBSCRIBER,
                 Severity.NOTE,
                 name,
-                f"{edge.node} publishes {name}, which no launched node subscribes to",
+                f"{edge.node} publishes {name}, which no launched node subscribes to"
+                + self._elsewhere(use, name),
                 edge.condition & ~used,
                 (edge.launch, edge.source),
             )
 
+    def _elsewhere(self, role: Role, name: str) -> str:
+        """Where other entry files of the workspace use ``name`` in ``role``: launch files
+        meant to run together (a robot's base and an app started beside it)."""
+        files = sorted(self.partners[(role, name)] - {self.model.file})
+        if not files:
+            return ""
+        more = f" and {len(files) - 1} more" if len(files) > 1 else ""
+        return f" here ({os.path.basename(files[0])}{more} does)"
+
     def types(self, name: str, named: Sequence[Edge]) -> None:
         by_type: dict[str, list[Edge]] = defaultdict(list)
+        types_of: dict[str, set[str]] = defaultdict(set)
         for edge in named:
             if edge.type is not None:
                 by_type[edge.type].append(edge)
+                types_of[edge.node].add(edge.type)
         kinds = sorted(by_type)
         for i, first in enumerate(kinds):
             for second in kinds[i + 1 :]:
                 a, b = by_type[first], by_type[second]
-                both = self.any(e.condition for e in a) & self.any(e.condition for e in b)
+                # one node's several types are alternative code paths (robot_localization's
+                # stamped_control): two nodes disagree when they share none
+                both = self.any(
+                    x.condition & y.condition
+                    for x in a
+                    for y in b
+                    if not types_of[x.node] & types_of[y.node]
+                )
                 self.add(
                     Check.TYPE_MISMATCH,
                     Severity.ERROR,

@@ -102,6 +102,7 @@ class Edge:
     launch: Location  # the <node>
     source: Location  # the use in the node's source
     static: bool  # False: a part of the name is not known statically
+    boundary: bool = False  # meant for something outside the launched nodes (Entry.boundary)
 
     @property
     def channel(self) -> Channel:
@@ -110,9 +111,7 @@ class Edge:
 
 def find_interface(interfaces: Interfaces, unit: tuple[str, str]) -> NodeInterface | None:
     package, executable = unit
-    if package:
-        return interfaces.find(package, executable)
-    return next((n for n in interfaces.nodes if n.executable == executable), None)
+    return interfaces.find(package or None, executable)
 
 
 def model_edges(space: ConditionSpace, model: LaunchModel, interfaces: Interfaces) -> list[Edge]:
@@ -153,9 +152,23 @@ def node_edges(
         for entry in interface.entries:
             if entry.role not in CHANNEL:
                 continue
-            for when, name in remapped(launched, remaps, entry.name, condition):
+            for when, name in entry_names(launched, remaps, entry, condition):
                 edges.append(_edge(file, launched, node, entry, name, when, static))
     return edges
+
+
+def entry_names(
+    node: LaunchedNode, remaps: Sequence[tuple[BDD, Raw, Raw]], entry: Entry, when: BDD
+) -> list[tuple[BDD, str]]:
+    """The names ``entry`` uses under ``when``, each with its condition (:func:`remapped`);
+    image_transport's camera info lies beside its image topic as remapped."""
+    if entry.beside is None:
+        return remapped(node, remaps, entry.name, when)
+    return [(c, _beside(image)) for c, image in remapped(node, remaps, entry.beside, when)]
+
+
+def _beside(image: str) -> str:
+    return names.ns_join(image.rsplit(names.SEP, 1)[0] or names.SEP, "camera_info")
 
 
 def _edge(
@@ -177,6 +190,7 @@ def _edge(
         decl.location,
         entry.location,
         static and entry.static and "{" not in name,
+        entry.boundary,
     )
 
 
@@ -237,8 +251,9 @@ def resolved_graph(
         table = {launched.resolve(a): launched.resolve(b) for a, b in launched.remaps}
         for entry in interface.entries:
             if entry.role in CHANNEL:
-                resolved = launched.resolve(entry.name)
+                resolved = launched.resolve(entry.beside or entry.name)
                 name = table.get(resolved, resolved)
+                name = name if entry.beside is None else _beside(name)
                 uses.append((launched.full_name, entry.role, name, entry.type))
     return graph_json(uses)
 

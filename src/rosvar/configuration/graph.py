@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import cast
 
-from rosvar.analyses.communication import LaunchedNode, find_interface, remapped
+from rosvar.analyses.communication import LaunchedNode, entry_names, find_interface
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.resolve import ResolutionError, test_fields
@@ -408,7 +408,7 @@ class VariationalGraph:
         for entry in interface.entries:
             if entry.role not in (Role.PUBLISHES, Role.SUBSCRIBES) or not entry.static:
                 continue
-            for when, topic in remapped(launched, remaps, entry.name, condition):
+            for when, topic in entry_names(launched, remaps, entry, condition):
                 fixed, bounds = self.lowering.lower(when)
                 if "{" in topic or not self.lowering.satisfiable(fixed):
                     continue

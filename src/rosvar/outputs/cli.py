@@ -568,7 +568,7 @@ def cmd_interfaces(options: argparse.Namespace) -> int:
     if options.json:
         _print_json(interfaces.to_json())
         return EXIT_OK
-    for node in interfaces.nodes:
+    for node in interfaces.listed():
         print(f"{node.package} {node.executable} ({node.kind})")
         for entry in node.entries:
             detail = entry.type if entry.type is not None else f"default {entry.default}"

@@ -28,7 +28,7 @@ from rosvar.workspace.bounded_yaml import check_limits
 from rosvar.workspace.interfaces.model import Entry, Origin, Role
 
 SECTIONS = ("executables", "args", "env", "nodes")
-NODE_KEYS = ("name", "type", "default", "when")
+NODE_KEYS = ("name", "type", "default", "when", "boundary")
 
 
 @dataclass
@@ -120,7 +120,8 @@ def _node_entries(
     node: yaml.Node,
     problem: Callable[[str, int], Hints],
 ) -> list[Entry]:
-    """The entries of one ``nodes:`` item: role -> list of {name, type|default, when}."""
+    """The entries of one ``nodes:`` item: role -> list of {name, type|default, when,
+    boundary}."""
     entries: list[Entry] = []
     if not isinstance(node, yaml.MappingNode):
         problem(f"node '{node_name}' must map roles to lists of entries", _line(node))
@@ -155,6 +156,7 @@ def _node_entries(
                     type=value.get("type"),
                     default=default,
                     when=value.get("when"),
+                    boundary=value.get("boundary") == "true",
                 )
             )
     return entries

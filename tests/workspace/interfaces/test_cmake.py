@@ -48,3 +48,19 @@ def test_targets(tmp_path: Path) -> None:
 def test_commands_quotes_and_comments() -> None:
     text = 'set(A "x y" b) # set(B c)\n#[[ add_executable(no) ]]\nmessage(STATUS "(")\n'
     assert list(commands(text)) == [("set", ["A", '"x y"', "b"]), ("message", ["STATUS", '"("'])]
+
+
+def test_output_name_and_source_without_suffix(tmp_path: Path) -> None:
+    """move_base's ``move_base_node`` is installed as ``move_base``; interactive_marker_twist_server
+    names its source ``src/marker_server``."""
+    (tmp_path / "CMakeLists.txt").write_text(
+        "add_executable(demo_node src/main)\n"
+        "add_executable(other src/main.cpp)\n"
+        'set_target_properties(demo_node PROPERTIES OUTPUT_NAME demo PREFIX "")\n'
+    )
+    (tmp_path / "src").mkdir()
+    (tmp_path / "src" / "main.cpp").write_text("")
+    build = read_build(str(tmp_path), "demo")
+    assert build.targets["demo_node"].sources == [str(tmp_path / "src" / "main.cpp")]
+    assert build.targets["demo_node"].installed_name == "demo"
+    assert build.targets["other"].installed_name == "other"

@@ -158,3 +158,233 @@ int main() {
         ("joint_states", "sensor_msgs/JointState"),
         ("command", "std_msgs/Float64"),
     ]
+
+
+GMAPPING = """\
+#include "slam.h"
+Slam::Slam() : private_nh_("~") { init(); }
+Slam::Slam(ros::NodeHandle& nh, ros::NodeHandle& pnh) : node_(nh), private_nh_(pnh) { init(); }
+void Slam::init() { private_nh_.getParam("throttle_scans", throttle_); }
+int main(int argc, char** argv) { Slam gn; return 0; }
+class SlamNodelet : public nodelet::Nodelet {
+  void onInit() { slam_.reset(new Slam(getNodeHandle(), getPrivateNodeHandle())); }
+};
+"""
+GMAPPING_HEADER = """\
+class Slam {
+ public:
+  Slam();
+  Slam(ros::NodeHandle& nh, ros::NodeHandle& pnh);
+  void init();
+  ros::NodeHandle node_;
+  ros::NodeHandle private_nh_;
+};
+"""
+
+
+def test_member_initialiser_of_the_constructor_called(tmp_path: Path) -> None:
+    """slam_gmapping: the class is declared in a header read after the constructors, and
+    only the constructor that the node (``Slam gn;``) or the nodelet (``new Slam(nh, pnh)``)
+    calls initialises the handle."""
+    files = {"slam.cpp": GMAPPING, "slam.h": GMAPPING_HEADER}
+    for entry, owner in (("main", None), ("onInit", "SlamNodelet")):
+        entries, diagnostics = _extract(tmp_path, files, entry, owner)
+        assert [(e.name, e.static) for e in entries] == [("~throttle_scans", True)], entry
+        assert diagnostics == []
+
+
+def test_action_server_through_typedef(tmp_path: Path) -> None:
+    """move_base: ``typedef actionlib::SimpleActionServer<...> MoveBaseActionServer``."""
+    source = """\
+typedef actionlib::SimpleActionServer<move_base_msgs::MoveBaseAction> MoveBaseActionServer;
+int main(int argc, char** argv) {
+  MoveBaseActionServer* as = new MoveBaseActionServer(ros::NodeHandle(), "move_base", false);
+}
+"""
+    entries, _ = _extract(tmp_path, {"m.cpp": source}, "main")
+    assert [(e.role, e.name, e.type) for e in entries] == [
+        (Role.ACTION_SERVERS, "move_base", "move_base_msgs/MoveBase")
+    ]
+
+
+def test_handles_through_pointers_resets_and_aliased_constructors(tmp_path: Path) -> None:
+    """Patterns of image_pipeline (``it_.reset(new ImageTransport(nh))``), teleop_twist_joy
+    (``Teleop t(&nh, &pnh)``), robot_localization (``typedef Filter<Ekf> RosEkf``, a
+    delegating constructor, a default argument) and move_base (a pointer member initialised
+    to ``NULL``)."""
+    source = """\
+template<class T> class Filter {
+ public:
+  Filter(ros::NodeHandle nh, ros::NodeHandle* pnh);
+  Filter(ros::NodeHandle nh, ros::NodeHandle* pnh, int depth, int more = 0);
+  ros::NodeHandle nh_;
+  boost::shared_ptr<image_transport::ImageTransport> it_;
+  actionlib::SimpleActionServer<move_base_msgs::MoveBaseAction>* as_;
+};
+typedef Filter<Ekf> RosEkf;
+template<class T> Filter<T>::Filter(ros::NodeHandle nh, ros::NodeHandle* pnh)
+    : Filter<T>::Filter(nh, pnh, 1) {}
+template<class T> Filter<T>::Filter(ros::NodeHandle nh, ros::NodeHandle* pnh, int depth, int more)
+    : nh_(nh), as_(NULL) {
+  it_.reset(new image_transport::ImageTransport(nh_));
+  it_->advertise("image", 1);
+  pnh->advertise<std_msgs::Empty>("private", 1);
+  nh_.subscribe<nav_msgs::Odometry>("odom", 1, &Filter::odom, this);
+}
+int main(int argc, char** argv) {
+  ros::NodeHandle nh("ns"), pnh("~");
+  ns::RosEkf ekf(nh, &pnh);
+}
+"""
+    entries, diagnostics = _extract(tmp_path, {"f.cpp": source}, "main")
+    assert sorted((str(e.role), e.name) for e in entries) == [
+        ("publishes", "ns/image"),
+        ("publishes", "~private"),
+        ("subscribes", "ns/odom"),
+    ]
+    assert diagnostics == []
+
+
+def test_nodelets_of_one_library_sharing_method_names(tmp_path: Path) -> None:
+    """image_proc: every nodelet class has its own ``connectCb``; an unqualified call or
+    ``&Class::connectCb`` inside a method means that class's."""
+    source = """\
+class Rectify : public nodelet::Nodelet {
+  void onInit() { cb_ = boost::bind(&Rectify::connectCb, this); connectCb(); }
+  void connectCb() { getNodeHandle().subscribe<sensor_msgs::Image>("image_mono", 1); }
+};
+class Resize : public nodelet::Nodelet {
+  void onInit() { connectCb(); }
+  void connectCb() { getNodeHandle().subscribe<sensor_msgs::Image>("image", 1); }
+};
+"""
+    for owner, topic in (("Rectify", "image_mono"), ("Resize", "image")):
+        entries, _ = _extract(tmp_path, {"n.cpp": source}, "onInit", owner)
+        assert [e.name for e in entries] == [topic]
+
+
+def test_names_resolved_by_the_node(tmp_path: Path) -> None:
+    """image_transport's republish (``nh.resolveName("in")``) and imu_filter_madgwick
+    (``ros::names::resolve("imu") + "/data"``): the name as the node would use it."""
+    source = """\
+int main(int argc, char** argv) {
+  ros::NodeHandle nh, pnh("~");
+  std::string in_topic = nh.resolveName("in");
+  nh.subscribe<sensor_msgs::Image>(in_topic, 1);
+  pnh.advertise<sensor_msgs::Imu>(pnh.resolveName("out"), 1);
+  nh.advertise<sensor_msgs::Imu>(ros::names::resolve("imu") + "/data", 1);
+}
+"""
+    entries, diagnostics = _extract(tmp_path, {"r.cpp": source}, "main")
+    assert sorted((str(e.role), e.name) for e in entries) == [
+        ("publishes", "imu/data"),
+        ("publishes", "~out"),
+        ("subscribes", "in"),
+    ]
+    assert diagnostics == []
+
+
+def test_variables_written_by_parameter_reads(tmp_path: Path) -> None:
+    """robot_localization: ``std::string path = ""; nh.searchParam("tf_prefix", path);
+    nh.getParam(path, prefix)`` reads a parameter whose name is only known at run time; a
+    topic initialised and then read from a parameter is the parameter's."""
+    source = """\
+int main(int argc, char** argv) {
+  ros::NodeHandle nh("~");
+  std::string path = "", topic = "scan", fixed = "odom";
+  if (nh.searchParam("tf_prefix", path)) { nh.getParam(path, prefix); }
+  nh.param("topic", topic, topic);
+  nh.subscribe<sensor_msgs::LaserScan>(topic, 1);
+  nh.subscribe<nav_msgs::Odometry>(fixed, 1);
+}
+"""
+    entries, _ = _extract(tmp_path, {"p.cpp": source}, "main")
+    assert [(e.name, e.static) for e in entries if e.role is not Role.PARAMS] == [
+        ("~{topic}", False),
+        ("~odom", True),
+    ]
+    assert [e.name for e in entries if e.role is Role.PARAMS] == ["~{path}", "~topic"]
+
+
+def test_a_tested_read_has_the_code_as_default(tmp_path: Path) -> None:
+    """slam_gmapping: ``if(!private_nh_.getParam("throttle_scans", t)) t = 1;`` handles an
+    unset parameter; a read whose result is dropped, or whose unset branch fails, does not."""
+    source = """\
+int main(int argc, char** argv) {
+  ros::NodeHandle nh("~");
+  if (!nh.getParam("throttle_scans", throttle)) throttle = 1;
+  bool ok = nh.getParam("frame", frame) && nh.getParam("rate", rate);
+  nh.getParam("port", port);
+  if (!nh.getParam("device", device)) { ROS_ERROR_STREAM("no device"); }
+  if (nh.getParam("baud", baud)) { use(baud); } else { return false; }
+}
+"""
+    entries, _ = _extract(tmp_path, {"g.cpp": source}, "main")
+    assert [(e.name, e.default) for e in entries] == [
+        ("~throttle_scans", Expression('!nh.getParam("throttle_scans", throttle)')),
+        ("~frame", Expression('nh.getParam("frame", frame) && nh.getParam("rate", rate)')),
+        ("~rate", Expression('nh.getParam("frame", frame) && nh.getParam("rate", rate)')),
+        ("~port", None),
+        ("~device", None),  # kobuki_node: required, the unset branch fails
+        ("~baud", None),
+    ]
+
+
+def test_defaults_of_guarded_and_initialised_reads(tmp_path: Path) -> None:
+    """topic_tools' relay (``bool unreliable = false; pnh.getParam("unreliable",
+    unreliable);``) and robot_localization (``if (nh.hasParam("x")) nh.getParam("x", v);``)."""
+    source = """\
+bool g_lazy = false;
+int main(int argc, char** argv) {
+  ros::NodeHandle pnh("~");
+  bool unreliable = false;
+  pnh.getParam("unreliable", unreliable);
+  pnh.getParam("lazy", g_lazy);
+  XmlRpc::XmlRpcValue config;
+  if (pnh.hasParam("process_noise_covariance")) {
+    pnh.getParam("process_noise_covariance", config);
+  }
+}
+"""
+    entries, _ = _extract(tmp_path, {"d.cpp": source}, "main")
+    assert [(e.name, e.default) for e in entries] == [
+        ("~unreliable", False),
+        ("~lazy", False),
+        ("~process_noise_covariance", Expression('(pnh.hasParam("process_noise_covariance"))')),
+    ]
+
+
+def test_controller_manager_services(tmp_path: Path) -> None:
+    """husky_base: ``controller_manager::ControllerManager cm(&husky, nh)`` serves what
+    ``controller_manager/spawner`` calls; lizi_hw omits the handle."""
+    source = """\
+int main(int argc, char** argv) {
+  ros::NodeHandle nh, private_nh("~");
+  controller_manager::ControllerManager cm(&husky, nh);
+  controller_manager::ControllerManager other(&lizi);
+}
+"""
+    entries, _ = _extract(tmp_path, {"c.cpp": source}, "main")
+    services = [(e.name, e.type) for e in entries if e.role is Role.SERVICES]
+    assert len(services) == 12
+    assert services[2] == (
+        "controller_manager/load_controller",
+        "controller_manager_msgs/LoadController",
+    )
+    assert (
+        "controller_manager/reload_controller_libraries",
+        "controller_manager_msgs/ReloadControllerLibraries",
+    ) in services[6:]
+
+
+def test_service_type_from_a_request_typedef(tmp_path: Path) -> None:
+    """openni2_camera: ``getSerialCb(openni2_camera::GetSerialRequest& req, ...)``."""
+    source = """\
+bool getSerialCb(openni2_camera::GetSerialRequest& req, openni2_camera::GetSerialResponse& res);
+int main(int argc, char** argv) {
+  ros::NodeHandle nh;
+  nh.advertiseService("get_serial", &getSerialCb);
+}
+"""
+    entries, _ = _extract(tmp_path, {"s.cpp": source}, "main")
+    assert [(e.name, e.type) for e in entries] == [("get_serial", "openni2_camera/GetSerial")]

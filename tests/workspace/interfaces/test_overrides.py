@@ -6,6 +6,7 @@ from pathlib import Path
 
 from rosvar.diagnostics import Location
 from rosvar.workspace.hints import load_hints
+from rosvar.workspace.interfaces.catalogue import Catalogue
 from rosvar.workspace.interfaces.model import (
     Entry,
     Interfaces,
@@ -25,7 +26,7 @@ nodes:
     params:
       - {name: ~rate, default: 20}
   demo/Camera:
-    subscribes: [{name: image, type: sensor_msgs/Image}]
+    subscribes: [{name: image, type: sensor_msgs/Image, boundary: true}]
   other/new_node:
     clients: [{name: reset, type: std_srvs/Empty}]
   demo/bad:
@@ -67,10 +68,13 @@ def test_hints_override_and_add(tmp_path: Path) -> None:
         ("params", "~rate", None, Origin.HINTS),
     ]
     assert driver.entries[1].when == "$(arg laser)"
+    assert not driver.entries[1].boundary
     assert driver.entries[1].location == Location(str(path), 4, 1)
     assert driver.of(Role.PARAMS)[0].default == 20
     camera = interfaces.find("demo", "demo/Camera")
-    assert camera is not None and [e.name for e in camera.entries] == ["image"]
+    assert camera is not None and [(e.name, e.boundary) for e in camera.entries] == [
+        ("image", True)
+    ]
     created = interfaces.find("other", "new_node")
     assert created is not None and created.kind is NodeKind.NODE
     assert created.to_json()["clients"] == [
@@ -90,12 +94,30 @@ def test_catalogue_fills_only_missing_nodes() -> None:
     entry = Entry(Role.PUBLISHES, "map", Location("map_server.cpp", 9), Origin.CATALOGUE)
     add_catalogue(
         interfaces,
-        [
-            NodeInterface("amcl", "amcl", NodeKind.NODE),
-            NodeInterface("map_server", "map_server", NodeKind.NODE, [entry]),
-        ],
+        Catalogue(
+            [
+                _item("amcl", []),
+                _item("map_server", [{"name": "map", "type": None, "file": "m.cpp", "line": 9}]),
+            ]
+        ),
     )
-    assert [(n.package, len(n.entries)) for n in interfaces.nodes] == [
+    assert [(n.package, len(n.entries)) for n in interfaces.listed()] == [
         ("amcl", 1),
         ("map_server", 1),
     ]
+    found = interfaces.find("map_server", "map_server")
+    assert found is not None and found.entries[0].name == entry.name
+    assert found.entries[0].location.file == "https://github.com/o/r/blob/c/m.cpp"
+
+
+def _item(package: str, publishes: list[dict[str, object]]) -> dict[str, object]:
+    roles = {str(role): [] for role in Role}
+    return {
+        "package": package,
+        "executable": package,
+        "kind": "node",
+        "repository": "o/r",
+        "commit": "c",
+        **roles,
+        "publishes": publishes,
+    }

@@ -3,7 +3,8 @@
 Only what decides targets and their sources is read: ``set``/``list(APPEND)`` variables and
 ``${VAR}`` expansion, ``file(GLOB)``, ``add_subdirectory``, ``add_executable``/``add_library``,
 ``target_link_libraries`` (a library of the same package brings its sources along),
-``include_directories`` and the ``PROGRAMS`` of ``catkin_install_python``/``install``.
+``include_directories``, a target's ``OUTPUT_NAME`` (the name ``rosrun`` and launch files use)
+and the ``PROGRAMS`` of ``catkin_install_python``/``install``.
 Conditions (``if``) are not evaluated: every branch's targets are kept, since any of them may
 be the one built.
 """
@@ -29,6 +30,8 @@ _LINK_KEYWORDS = frozenset({"PUBLIC", "PRIVATE", "INTERFACE", "debug", "optimize
 _INSTALL_KEYWORDS = frozenset(
     {"DESTINATION", "PERMISSIONS", "CONFIGURATIONS", "COMPONENT", "RENAME", "OPTIONAL"}
 )
+_SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".c", ".h", ".hpp", ".hh", ".hxx")
+"""What CMake appends to a source named without its suffix (``add_executable(x src/x)``)."""
 
 
 class TargetKind(enum.StrEnum):
@@ -44,6 +47,12 @@ class Target:
     kind: TargetKind
     sources: list[str]
     links: list[str] = field(default_factory=list)
+    output_name: str | None = None
+
+    @property
+    def installed_name(self) -> str:
+        """The file name the target builds: ``OUTPUT_NAME`` when set."""
+        return self.output_name or self.name
 
 
 @dataclass
@@ -189,11 +198,7 @@ class _Reader:
             if _SKIPPED_LIBRARIES & set(words[1:2]):
                 return
             kind = TargetKind.EXECUTABLE if name == "add_executable" else TargetKind.LIBRARY
-            sources = [
-                os.path.normpath(os.path.join(directory, w))
-                for w in words[1:]
-                if w not in _TARGET_OPTIONS
-            ]
+            sources = [_source(directory, w) for w in words[1:] if w not in _TARGET_OPTIONS]
             self.build.targets.setdefault(words[0], Target(words[0], kind, [])).sources.extend(
                 sources
             )
@@ -201,6 +206,13 @@ class _Reader:
             target = self.build.targets.get(words[0])
             if target is not None:
                 target.links.extend(w for w in words[1:] if w not in _LINK_KEYWORDS)
+        elif name == "set_target_properties" and "PROPERTIES" in words:
+            split = words.index("PROPERTIES")
+            properties = dict(zip(words[split + 1 :: 2], words[split + 2 :: 2], strict=False))
+            for word in words[:split]:
+                target = self.build.targets.get(word)
+                if target is not None and "OUTPUT_NAME" in properties:
+                    target.output_name = properties["OUTPUT_NAME"]
         elif name == "include_directories":
             for word in words:
                 if word not in ("BEFORE", "AFTER", "SYSTEM"):
@@ -228,6 +240,13 @@ class _Reader:
             for match in sorted(matches):
                 found.append(os.path.relpath(match, relative) if relative else match)
         return found
+
+
+def _source(directory: str, word: str) -> str:
+    path = os.path.normpath(os.path.join(directory, word))
+    if os.path.isfile(path):
+        return path
+    return next((path + s for s in _SOURCE_SUFFIXES if os.path.isfile(path + s)), path)
 
 
 def read_build(package_dir: str, package_name: str) -> Build:

@@ -44,6 +44,21 @@ _SMART_POINTERS = re.compile(
 )
 _IMAGE = "sensor_msgs/Image"
 _CAMERA_INFO = "sensor_msgs/CameraInfo"
+_NULLS = frozenset({"NULL", "nullptr", "0"})
+_CONTROLLER_MANAGER_SERVICES = tuple(
+    (service, "controller_manager_msgs/" + service.title().replace("_", ""))
+    for service in (
+        "list_controllers",
+        "list_controller_types",
+        "load_controller",
+        "unload_controller",
+        "switch_controller",
+        "reload_controller_libraries",
+    )
+)
+"""What ros_control's ControllerManager serves (its constructor, controller_manager.cpp)."""
+_TESTING = frozenset({"unary_expression", "parenthesized_expression", "binary_expression"})
+_FAILING = ("ROS_ERROR", "ROS_FATAL", "exit", "abort", "ros::shutdown")
 
 
 @dataclass(frozen=True)
@@ -66,6 +81,7 @@ class Function:
     parameters: list[tuple[str, str]]
     node: Node
     file: str
+    required: int = 0  # the parameters without a default value
     _kinds: dict[str, list[Node]] | None = field(default=None, repr=False)
 
     def nodes(self, *types: str) -> list[Node]:
@@ -210,9 +226,13 @@ class _Variable:
 
 @dataclass
 class _Write:
+    """A member's value: an assignment or in-class initialiser (``value``), or a member
+    initialiser's constructor ``arguments`` (the member's type is looked up when evaluated:
+    the class may be declared in a header indexed later)."""
+
     function: Function | None
     value: Node | None = None
-    construct: tuple[str, list[Node]] | None = None
+    arguments: list[Node] | None = None
 
 
 @dataclass
@@ -226,6 +246,9 @@ class Unit:
     fields: dict[str, str] = field(default_factory=dict)
     writes: dict[str, list[_Write]] = field(default_factory=dict)
     constants: dict[str, Node] = field(default_factory=dict)
+    required: dict[tuple[str, int], int] = field(default_factory=dict)
+    """Declared functions by (name, number of parameters): how many lack a default value
+    (defaults are written in the declaration, not in the definition)."""
 
     @staticmethod
     def load(sources: Sequence[str], include_dirs: Sequence[str]) -> Unit:
@@ -281,14 +304,20 @@ class Unit:
         if aliased is not None and name is not None:
             self.aliases[_text(name)] = _text(aliased)
 
-    def message_type(self, text: str) -> str | None:
-        """The ROS type of C++ type ``text``, through the unit's type aliases."""
+    def unaliased(self, text: str) -> str:
+        """C++ type ``text`` through the unit's type aliases."""
         for _ in range(8):  # an alias of an alias; a cycle stops here
             bare = re.sub(r"\b(const|typename)\b|[&*\s]", "", text)
+            if bare not in self.aliases and "<" not in bare:
+                bare = _last(bare)  # RobotLocalization::RosEkf: namespaces are not indexed
             if bare not in self.aliases:
                 break
             text = self.aliases[bare]
-        return ros_type(text)
+        return text
+
+    def message_type(self, text: str) -> str | None:
+        """The ROS type of C++ type ``text``, through the unit's type aliases."""
+        return ros_type(self.unaliased(text))
 
     def _signature(self, node: Node) -> None:
         """A declared (not defined) function: callbacks are often only declared in a header."""
@@ -298,7 +327,11 @@ class Unit:
         if target is None or parameters is None:
             return
         types = [_parameter_type(p) for p in parameters.named_children]
-        self.signatures.setdefault(_last(_text(target).replace(" ", "")), []).append(types)
+        name = _last(_text(target).replace(" ", ""))
+        self.signatures.setdefault(name, []).append(types)
+        required = sum(p.type == "parameter_declaration" for p in parameters.named_children)
+        key = (name, len(types))
+        self.required[key] = min(required, self.required.get(key, required))
 
     def _function(self, node: Node, path: str) -> None:
         declarator = _function_declarator(node)
@@ -314,8 +347,10 @@ class Unit:
         else:
             owner = _enclosing_class(node)
         parameters = []
+        required = 0
         parameter_list = declarator.child_by_field_name("parameters")
         for parameter in parameter_list.named_children if parameter_list is not None else []:
+            required += parameter.type == "parameter_declaration"
             type_node = parameter.child_by_field_name("type")
             name_node = parameter.child_by_field_name("declarator")
             name = _declarator_name(name_node) if name_node is not None else None
@@ -323,16 +358,13 @@ class Unit:
             if type_node is not None and name_node is not None:
                 type_text = _text(parameter)[: name_node.start_byte - parameter.start_byte]
             parameters.append((type_text, name or ""))
-        function = Function(_last(qualified), owner, parameters, node, path)
+        function = Function(_last(qualified), owner, parameters, node, path, required=required)
         self.functions.setdefault(function.name, []).append(function)
         self.signatures.setdefault(function.name, []).append([t for t, _ in parameters])
         for initializer in function.nodes("field_initializer"):
             name_node = initializer.named_children[0]
             self.writes.setdefault(_text(name_node), []).append(
-                _Write(
-                    function,
-                    construct=(self.fields.get(_text(name_node), ""), _arguments(initializer)),
-                )
+                _Write(function, arguments=_arguments(initializer))
             )
 
     def _field(self, node: Node) -> None:
@@ -362,11 +394,31 @@ class Unit:
                 if node.start_byte < start:
                     continue  # the function's own name and parameters
                 name = _text(node)
-                pending.extend(self.functions.get(name, ()))
+                pending.extend(self._named(node, name, function.owner))
+                if name in self.aliases:  # RosEkf ekf(...) runs RosFilter<Ekf>'s constructor
+                    pending.extend(
+                        self.functions.get(_last(self.unaliased(name).split("<")[0]), ())
+                    )
                 if name in self.fields:  # a member's constructor runs with its owner's
                     for word in re.findall(r"\w+", self.fields[name]):
                         pending.extend(f for f in self.functions.get(word, ()) if f.owner == word)
         return list(reached.values())
+
+    def _named(self, node: Node, name: str, owner: str | None) -> list[Function]:
+        """The functions ``name`` may call, by C++'s lookup: ``Class::name`` is Class's; an
+        unqualified name (or ``this->name``) inside a method is its class's own, when the
+        class has one of that name (several nodelets of one library share ``connectCb``)."""
+        candidates = self.functions.get(name, [])
+        parent = node.parent
+        scope = parent.child_by_field_name("scope") if parent is not None else None
+        if parent is not None and parent.type == "qualified_identifier" and scope is not None:
+            owner = _last(_text(scope).split("<")[0])
+        elif parent is not None and parent.type == "field_expression":
+            target = parent.child_by_field_name("argument")
+            if target is None or target.type != "this":
+                return candidates
+        own = [function for function in candidates if function.owner == owner]
+        return own if owner is not None and own else candidates
 
 
 def _parts(function: Function) -> list[Node]:
@@ -477,16 +529,18 @@ class _Evaluator:
         elif node.type == "new_expression":
             type_node = node.child_by_field_name("type")
             if type_node is not None:
-                name = _last(_text(type_node).split("<")[0])
+                name = _last(self.unit.unaliased(_text(type_node)).split("<")[0])
                 yield _CallSite(name, caller, _arguments(node), name)
         elif node.type == "field_initializer":
-            name = _last(self.unit.fields.get(_text(node.named_children[0]), "").split("<")[0])
+            # a member's constructor, or a base class's or a delegated one (RosFilter(...))
+            written = _text(node.named_children[0])
+            name = _last(self.unit.fields.get(written, written).split("<")[0])
             yield _CallSite(name, caller, _arguments(node), name)
         else:
             for _, variable in _declared(node):
-                if variable.arguments is not None:
-                    name = _last(variable.type.split("<")[0])
-                    yield _CallSite(name, caller, variable.arguments, name)
+                if variable.arguments is not None or variable.init is None:
+                    name = _last(self.unit.unaliased(variable.type).split("<")[0])
+                    yield _CallSite(name, caller, variable.arguments or [], name)
 
     def _type_of(self, node: Node, function: Function) -> str | None:
         """The declared type of a receiver variable, when the unit declares it."""
@@ -510,9 +564,15 @@ class _Evaluator:
         if key not in self.locals:
             scope: dict[str, _Variable] = {}
             assignments: dict[str, list[Node]] = {}
-            for node in function.nodes("declaration", "assignment_expression"):
+            for node in function.nodes("declaration", "assignment_expression", "call_expression"):
                 if node.type == "declaration":
                     scope.update(_declared(node))
+                elif node.type == "call_expression":
+                    reset = _reset(node)
+                    if reset is not None:
+                        assignments.setdefault(reset[0], []).append(reset[1])
+                    for written in _out_arguments(node):  # a value no evaluation knows
+                        assignments.setdefault(written, []).append(node)
                 else:
                     left, right = (
                         node.child_by_field_name("left"),
@@ -588,6 +648,13 @@ class _Evaluator:
                 return self._field(_text(member))
         if kind == "call_expression":
             return self._call_value(node, function)
+        if kind == "pointer_expression":  # &nh, *nh: the same handle
+            argument = node.child_by_field_name("argument")
+            return self.evaluate(argument, function) if argument is not None else None
+        if kind == "new_expression":
+            type_node = node.child_by_field_name("type")
+            if type_node is not None:
+                return self.construct(_text(type_node), _arguments(node), function)
         return None
 
     def _concatenate(self, parts: list[Node], function: Function | None) -> Value:
@@ -610,14 +677,26 @@ class _Evaluator:
                 return self.evaluate(receiver, function)
             if receiver is not None and receiver.type == "this":
                 return self._handle_getter(name)
+            if name == "resolveName" and receiver is not None and len(arguments) == 1:
+                handle, value = (
+                    self.evaluate(receiver, function),
+                    self._name(arguments[0], function),
+                )
+                return value.within(handle.namespace) if isinstance(handle, Handle) else None
             return None
         name = _text(callee).replace(" ", "")
         getter = self._handle_getter(_last(name))
         if getter is not None:
             return getter
+        if name == "ros::names::resolve" and len(arguments) == 1:
+            return self._name(arguments[0], function)  # resolved like a relative use
         if _last(name) == "string" and len(arguments) == 1:
             return self.evaluate(arguments[0], function)
         return self.construct(name, arguments, function)
+
+    def _name(self, node: Node, function: Function | None) -> Text:
+        value = self.evaluate(node, function)
+        return value if isinstance(value, Text) else Text.unknown(_text(node))
 
     @staticmethod
     def _handle_getter(name: str) -> Value:
@@ -662,14 +741,17 @@ class _Evaluator:
             return self._field(name)
         return self._constant(name)
 
+    def local(self, name: str, function: Function) -> _Variable | None:
+        """The declaration of local variable ``name`` of ``function``."""
+        return self._scope(function).get(name)
+
     def _local(self, name: str, variable: _Variable, function: Function) -> Value:
         if variable.arguments is not None:
             return self.construct(variable.type, variable.arguments, function)
+        written = self.assignments[id(function)].get(name, [])
         if variable.init is not None:
-            return self.evaluate(variable.init, function)
-        values = {
-            self.evaluate(node, function) for node in self.assignments[id(function)].get(name, [])
-        }
+            written = [variable.init, *written]  # a later write wins or disagrees
+        values = {self.evaluate(node, function) for node in written}
         if len(values) == 1:
             return values.pop()
         if "NodeHandle" in variable.type and not values:
@@ -701,17 +783,20 @@ class _Evaluator:
 
     def _field_value(self, name: str) -> Value:
         values: set[Value] = set()
+        type_text = self.unit.fields.get(name, "")
         for write in self.unit.writes.get(name, []):
-            if write.construct is not None:
-                values.add(self.construct(*write.construct, write.function))
+            if not self._constructed(write.function):
+                continue
+            if write.arguments is not None:
+                values.add(self.construct(type_text, write.arguments, write.function))
             elif write.value is not None:
                 values.add(self.evaluate(write.value, write.function))
         for function, node in self._member_writes().get(name, []):
-            values.add(self.evaluate(node, function))
+            if self._constructed(function):
+                values.add(self.evaluate(node, function))
         values.discard(None)
         if len(values) == 1:
             return values.pop()
-        type_text = self.unit.fields.get(name, "")
         if not values and "NodeHandle" in type_text:
             return Handle(Text(""))
         if values or "NodeHandle" in type_text:
@@ -719,6 +804,19 @@ class _Evaluator:
                 Handle(Text.unknown(name)) if any(isinstance(v, Handle) for v in values) else None
             )
         return None
+
+    def _constructed(self, function: Function | None) -> bool:
+        """Whether a member write in ``function`` happens: not in a constructor overload that
+        the reached code never calls with its number of arguments (``SlamGMapping gn;`` runs
+        the default constructor, not the nodelet's ``SlamGMapping(nh, pnh)``). A class no
+        reached code constructs (the nodelet's own) keeps every constructor."""
+        if function is None or function.name != function.owner:
+            return True
+        sites = self.calls.get(function.name, [])
+        count = len(function.parameters)
+        required = min(function.required, self.unit.required.get((function.name, count), count))
+        arities = range(required, count + 1)
+        return not sites or any(len(s.arguments) in arities for s in sites)
 
     def _constant(self, name: str) -> Value:
         node = self.unit.constants.get(name)
@@ -793,7 +891,9 @@ class _Collector:
     def _construction(
         self, type_text: str, arguments: list[Node], function: Function, at: Node
     ) -> None:
-        compact = type_text.replace(" ", "")
+        if len(arguments) == 1 and _text(arguments[0]) in _NULLS:
+            return  # a pointer member initialised to null constructs nothing
+        compact = self.unit.unaliased(type_text).replace(" ", "")
         base = _last(compact.split("<")[0])
         templates = _template_arguments_text(compact)
         message = self.unit.message_type(templates[0]) if templates else None
@@ -803,6 +903,21 @@ class _Collector:
             self.add(role, handle, rest[0], function, at, action_type(message) if message else None)
         elif base == "Subscriber" and "message_filters" in compact and handle is not None and rest:
             self.add(Role.SUBSCRIBES, handle, rest[0], function, at, message)
+        elif base == "ControllerManager" and arguments:
+            self._controller_manager(arguments[1:], function, at)
+
+    def _controller_manager(self, arguments: list[Node], function: Function, at: Node) -> None:
+        """``controller_manager::ControllerManager cm(&hw, nh)`` serves its services below
+        ``controller_manager`` in ``nh``'s namespace (``ros::NodeHandle()`` by default)."""
+        handle = self.evaluator.evaluate(arguments[0], function) if arguments else Handle(Text(""))
+        if not isinstance(handle, Handle):
+            handle = Handle(Text.unknown(_text(arguments[0])))
+        location = Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1)
+        for service, kind in _CONTROLLER_MANAGER_SERVICES:
+            name = Text("controller_manager/" + service).within(handle.namespace)
+            self.entries.append(
+                Entry(Role.SERVICES, name.value, location, type=kind, static=name.static)
+            )
 
     def _split_handle(
         self, arguments: list[Node], function: Function
@@ -849,6 +964,8 @@ class _Collector:
             self.add(Role.SUBSCRIBES, value, topic, function, node, type_name)
         elif method == "advertiseService":
             type_name = self._first_type(templates) or self._callback_type(arguments[1:])
+            if type_name is not None:  # a callback takes Srv::Request& or SrvRequest&
+                type_name = type_name.removesuffix("Request")
             self.add(Role.SERVICES, value, topic, function, node, type_name)
         elif method == "serviceClient":
             self.add(Role.CLIENTS, value, topic, function, node, self._first_type(templates))
@@ -860,6 +977,7 @@ class _Collector:
         if method not in ("advertise", "subscribe", "advertiseCamera", "subscribeCamera"):
             return
         self.add(role, handle, name, function, at, _IMAGE)
+        image = self.entries[-1].name
         if method.endswith("Camera"):
             value = self.evaluator.evaluate(name, function)
             if isinstance(value, Text) and value.static:
@@ -872,7 +990,14 @@ class _Collector:
                 location = Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1)
                 resolved = Text(info).within(handle.namespace)
                 self.entries.append(
-                    Entry(role, resolved.value, location, type=_CAMERA_INFO, static=resolved.static)
+                    Entry(
+                        role,
+                        resolved.value,
+                        location,
+                        type=_CAMERA_INFO,
+                        static=resolved.static,
+                        beside=image,
+                    )
                 )
 
     def _filter_subscribe(
@@ -908,6 +1033,16 @@ class _Collector:
             default = _default(
                 arguments[-1] if len(arguments) >= 2 else None, self.evaluator, function
             )
+        elif (test := _test_of(at)) is not None:
+            default = Expression(_text(test))  # the code decides what an unset one means
+        elif (guard := _guard_of(at, arguments[0])) is not None:
+            default = Expression(_text(guard))  # read only when set: if (nh.hasParam(x))
+        elif len(arguments) >= 2 and arguments[1].type == "identifier":
+            written = _text(arguments[1])
+            variable = self.evaluator.local(written, function)  # bool unreliable = false;
+            init = self.unit.constants.get(written) if variable is None else variable.init
+            if init is not None:
+                default = _default(init, self.evaluator, function)
         self.add(Role.PARAMS, handle, arguments[0], function, at, default=default)
 
     def _first_type(self, templates: list[str]) -> str | None:
@@ -933,6 +1068,39 @@ class _Collector:
         return None
 
 
+def _out_arguments(call: Node) -> list[str]:
+    """The local variables a ROS call writes through a reference: ``searchParam(key, out)``,
+    ``getParam(name, out)``, ``param(name, out, default)`` (a value read from a parameter)."""
+    callee = call.child_by_field_name("function")
+    method = callee.child_by_field_name("field") if callee is not None else None
+    arguments = _arguments(call)
+    if method is None or len(arguments) < 2 or arguments[1].type != "identifier":
+        return []
+    name = _text(method).split("<")[0]
+    if name in ("searchParam", "getParam", "getParamCached") or len(arguments) == 3:
+        return [_text(arguments[1])] if name in ("searchParam", *_PARAM_READS) else []
+    return []  # param(name, default) returns the value
+
+
+def _reset(call: Node) -> tuple[str, Node] | None:
+    """``x.reset(value)`` or ``this->x.reset(value)`` (a smart pointer): an assignment of
+    ``value`` to ``x`` (``this->x``), as the evaluator's assignments are keyed."""
+    callee = call.child_by_field_name("function")
+    arguments = _arguments(call)
+    if callee is None or callee.type != "field_expression" or len(arguments) != 1:
+        return None
+    method, target = callee.child_by_field_name("field"), callee.child_by_field_name("argument")
+    if method is None or target is None or _text(method) != "reset":
+        return None
+    if target.type == "identifier":
+        return _text(target), arguments[0]
+    if target.type == "field_expression":
+        inner, member = target.child_by_field_name("argument"), target.child_by_field_name("field")
+        if inner is not None and inner.type == "this" and member is not None:
+            return "this->" + _text(member), arguments[0]
+    return None
+
+
 def _parameter_type(parameter: Node) -> str:
     declarator = parameter.child_by_field_name("declarator")
     text = _text(parameter)
@@ -953,6 +1121,47 @@ def _template_arguments_text(type_text: str) -> list[str]:
         depth -= char == ">"
         current += char
     return [*parts, current]
+
+
+def _test_of(call: Node) -> Node | None:
+    """The expression that tests ``call``'s result (``!nh.getParam(...)`` in an ``if``): the
+    code handles an unset parameter. None when the result is dropped (the variable silently
+    keeps its value) or when the branch taken when unset fails (returns, throws, logs an
+    error): the parameter is required."""
+    node, negated = call, False
+    while node.parent is not None and node.parent.type in _TESTING:
+        node = node.parent
+        negated ^= node.type == "unary_expression" and _text(node).startswith("!")
+    parent = node.parent
+    if parent is None or parent.type in ("expression_statement", "compound_statement"):
+        return None
+    statement = parent.parent if parent.type == "condition_clause" else None
+    if statement is not None and statement.type == "if_statement":
+        unset = statement.child_by_field_name("consequence" if negated else "alternative")
+        if unset is not None and any(_fails(n) for n in _walk_all(unset)):
+            return None
+    return node
+
+
+def _guard_of(call: Node, name: Node) -> Node | None:
+    """The condition of an enclosing ``if`` that asks whether parameter ``name`` is set
+    (``if (nh.hasParam("x")) nh.getParam("x", v);``)."""
+    node = call.parent
+    while node is not None and node.type != "function_definition":
+        if node.type == "if_statement":
+            condition = node.child_by_field_name("condition")
+            text = _text(condition) if condition is not None else ""
+            if "hasParam(" + _text(name) in text.replace(" ", ""):
+                return condition
+        node = node.parent
+    return None
+
+
+def _fails(node: Node) -> bool:
+    if node.type in ("return_statement", "throw_statement"):
+        return True
+    callee = node.child_by_field_name("function") if node.type == "call_expression" else None
+    return callee is not None and _text(callee).startswith(_FAILING)
 
 
 def _default(node: Node | None, evaluator: _Evaluator, function: Function) -> Default | None:

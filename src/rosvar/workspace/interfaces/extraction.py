@@ -32,7 +32,7 @@ def extract_package(package: Package, sink: DiagnosticSink) -> list[NodeInterfac
             continue
         unit = cpp.Unit.load(_cpp_sources(build.sources(target.name)), include_dirs)
         entries = cpp.extract(unit, "main", None, sink, where)
-        nodes.append(NodeInterface(package.name, target.name, NodeKind.NODE, entries))
+        nodes.append(NodeInterface(package.name, target.installed_name, NodeKind.NODE, entries))
     for nodelet in nodelet_classes(package.path, sink):
         if nodelet.library not in build.targets:
             sink.warning(

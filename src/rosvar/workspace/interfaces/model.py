@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import enum
 from dataclasses import dataclass, field
+from typing import Protocol
 
 from rosvar.diagnostics import Diagnostic, Location
 
@@ -70,6 +71,12 @@ class Entry:
     default: Default | None = None
     static: bool = True
     when: str | None = None  # a hint's presence condition, as written (launch args, params)
+    boundary: bool = False
+    """Meant for something outside the launched nodes: people and their tools (rviz's goal
+    and pose tools, a joystick's feedback), tf's listeners, diagnostics monitors."""
+    beside: str | None = None
+    """image_transport's camera info: named after the image topic ``beside`` (as the node
+    writes it) once that is remapped, so the graph derives this name, not ``name``."""
 
     def to_json(self) -> dict[str, object]:
         document: dict[str, object] = {"name": self.name}
@@ -85,6 +92,10 @@ class Entry:
             document["static"] = False
         if self.when is not None:
             document["when"] = self.when
+        if self.boundary:
+            document["boundary"] = True
+        if self.beside is not None:
+            document["beside"] = self.beside
         return document
 
 
@@ -111,21 +122,41 @@ class NodeInterface:
         return document
 
 
+class Fallback(Protocol):
+    """Nodes that stand in for those no source defines (the catalogue), looked up by name and
+    never changed: a hint on one of them changes a copy."""
+
+    def find(self, package: str | None, executable: str) -> NodeInterface | None: ...
+
+    def nodes(self) -> list[NodeInterface]: ...
+
+
 @dataclass
 class Interfaces:
-    """Every interface found in a workspace, and what could not be decided."""
+    """Every interface found in a workspace, and what could not be decided; ``fallback``
+    answers for the nodes ``nodes`` lacks, when they are looked up."""
 
     nodes: list[NodeInterface] = field(default_factory=list)
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    fallback: Fallback | None = None
 
-    def find(self, package: str, executable: str) -> NodeInterface | None:
+    def find(self, package: str | None, executable: str) -> NodeInterface | None:
+        """The node ``executable`` of ``package`` (of any package when None: a nodelet
+        class ``pkg/Class`` says its own)."""
         for node in self.nodes:
-            if node.package == package and node.executable == executable:
+            if package in (None, node.package) and node.executable == executable:
                 return node
-        return None
+        return None if self.fallback is None else self.fallback.find(package, executable)
+
+    def listed(self) -> list[NodeInterface]:
+        """``nodes`` and every node of the fallback they lack, in (package, executable) order."""
+        known = {(node.package, node.executable) for node in self.nodes}
+        extra = [] if self.fallback is None else self.fallback.nodes()
+        found = self.nodes + [n for n in extra if (n.package, n.executable) not in known]
+        return sorted(found, key=lambda node: (node.package, node.executable))
 
     def to_json(self) -> dict[str, object]:
         return {
-            "interfaces": [node.to_json() for node in self.nodes],
+            "interfaces": [node.to_json() for node in self.listed()],
             "diagnostics": [diagnostic.to_json() for diagnostic in self.diagnostics],
         }

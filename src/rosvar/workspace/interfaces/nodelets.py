@@ -2,19 +2,23 @@
 
 ``package.xml`` names the plugin description (``<export><nodelet plugin="${prefix}/x.xml"/>``);
 that file maps each class (``pkg/Class``, what ``load pkg/Class manager`` asks for) to its
-C++ type and the library that holds it (``lib/libNAME`` is target ``NAME``).
+C++ type and the library that holds it (``lib/libNAME`` is target ``NAME``). Like pluginlib,
+a file may hold several ``<library>`` elements without a common root.
 """
 
 from __future__ import annotations
 
 import os
+import re
 from dataclasses import dataclass
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
-from rosvar.frontends.ros1_xml.parser import parse_xml_file
+from rosvar.frontends.ros1_xml.parser import ParseResult, parse_xml_bytes, parse_xml_file
+from rosvar.workspace.interfaces.reading import read_source
 
 PREFIX = "${prefix}"
+_DECLARATION = re.compile(rb"\s*<\?xml[^>]*\?>")
 
 
 @dataclass(frozen=True)
@@ -49,7 +53,7 @@ def nodelet_classes(package_dir: str, sink: DiagnosticSink) -> list[NodeletClass
     """Every nodelet class exported by the package at ``package_dir``."""
     found = []
     for path in plugin_files(package_dir):
-        result = parse_xml_file(path)
+        result = _parse_plugins(path)
         if result.root is None:
             sink.warning(
                 "nodelet-plugins-unreadable", "cannot read the nodelet plugins", Location(path)
@@ -66,3 +70,17 @@ def nodelet_classes(package_dir: str, sink: DiagnosticSink) -> list[NodeletClass
                 if name and type_name:
                     found.append(NodeletClass(name, type_name, target, entity.location))
     return found
+
+
+def _parse_plugins(path: str) -> ParseResult:
+    """The plugin file's tree; several top-level ``<library>`` elements are put under one
+    root on their own lines, so that line numbers stay."""
+    result = parse_xml_file(path)
+    data = read_source(path)
+    if result.root is not None or data is None:
+        return result
+    declaration = _DECLARATION.match(data)
+    head = declaration.end() if declaration else 0
+    wrapped = data[:head] + b"<class_libraries>" + data[head:] + b"</class_libraries>"
+    again = parse_xml_bytes(wrapped, path)
+    return again if again.root is not None else result
