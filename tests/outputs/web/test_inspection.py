@@ -9,6 +9,7 @@ import pytest
 
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
+from outputs.web.test_app import App
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -96,3 +97,53 @@ def test_checks_follow_the_choices(small: Live) -> None:
     small.post("/api/choose", {"session": session, "action": "select", "feature": feature})
     after = small.post("/api/checks", {"session": session})
     assert "/chatter" not in {f["name"] for f in after["findings"]}
+
+
+# -- the page ------------------------------------------------------------------------------------
+def red_units(app: App) -> list[str]:
+    return sorted(app.page.evaluate("window.rosvar.graph.cy.nodes('.queried').map((n) => n.id())"))
+
+
+def drawn(app: App, entry: str) -> str:
+    unit: str = app.page.evaluate("(id) => window.rosvar.graph.drawing()[id]", entry)
+    return unit
+
+
+def test_the_query_box_marks_its_results_and_follows_the_choices(page: Any, small: Live) -> None:
+    app = App(page, small)
+    box = page.locator("#query")
+    box.fill("nodes[self.name == '/listener']")
+    box.press("Enter")
+    page.wait_for_selector("#query-results li.result")
+    assert page.locator("#query-status").text_content() == "1 result"
+    assert "when listen" in page.locator("#query-results li").first.text_content()
+    [listener] = [n["id"] for n in app.state["graph"]["nodes"] if n["name"] == "/listener"]
+    assert red_units(app) == [drawn(app, listener)]
+    app.choose("a.launch", "select")
+    app.wait_for_layout()
+    assert red_units(app) == ["n:" + listener]  # the file's nodes are drawn one by one
+    answered = page.locator("body").get_attribute("data-query")
+    app.choose("a.launch:listen=false", "select")
+    page.wait_for_selector(f'body:not([data-query="{answered}"])')
+    assert page.locator("#query-status").text_content() == "0 results"
+    assert red_units(app) == [] and page.locator("#query-results").is_hidden()
+
+
+def test_the_checks_panel_lists_findings_and_marks_a_clicked_one(page: Any, small: Live) -> None:
+    app = App(page, small)
+    page.wait_for_selector("body[data-checks]")
+    page.locator("#checks-toggle").click()
+    finding = page.locator("#checks-list li", has_text="no launched node subscribes to")
+    assert "note" in finding.text_content() and "when ¬listen" in finding.text_content()
+    assert red_units(app) == []
+    finding.click()
+    [talker] = [n["id"] for n in app.state["graph"]["nodes"] if n["name"] == "/talker"]
+    assert drawn(app, talker) in red_units(app) and "t:topic:/chatter" in red_units(app)
+    answered = page.locator("body").get_attribute("data-checks")
+    app.choose("a.launch", "select")
+    page.wait_for_selector(f'body:not([data-checks="{answered}"])')
+    assert finding.get_attribute("class") == "finding note chosen"  # kept across steps
+    answered = page.locator("body").get_attribute("data-checks")
+    app.choose("a.launch:listen=true", "select")
+    page.wait_for_selector(f'body:not([data-checks="{answered}"])')
+    assert finding.count() == 0 and red_units(app) == []

@@ -52,6 +52,7 @@ const STYLE = [
   { selector: ".undetermined", style: { "border-style": "dashed", "line-style": "dashed", "background-opacity": 0.7 } },
   { selector: "node.conflict", style: { "border-color": "#b42318", "border-width": 4, color: "#b42318" } },
   { selector: "node.match", style: { "border-color": "#2f6fdb", "border-width": 4 } },
+  { selector: "node.queried", style: { "border-color": "#d7191c", "border-width": 5, color: "#d7191c", "font-weight": "bold" } },
   { selector: ":selected", style: { "overlay-color": "#2f6fdb", "overlay-opacity": 0.18, "overlay-padding": 5 } },
   { selector: ".faded", style: { opacity: 0.15 } },
   { selector: ".hidden", style: { display: "none" } },
@@ -172,6 +173,7 @@ export class GraphView {
     this.pages = new Map(); // group key → members shown
     this.focused = null; // unit id whose neighbourhood alone is shown
     this.needle = "";
+    this.marked = new Map(); // who marks (a query, a finding) → graph entry ids drawn in red
     this.state = null;
     this.units = new Map(); // unit id → {names: lowercased member names} for the search
     this.unitOf = new Map(); // graph entry id → the unit that draws it
@@ -624,10 +626,32 @@ export class GraphView {
     this.fit();
   }
 
+  // Draws the units of the graph entries `ids` in red, for `source` (each source replaces
+  // its own marks); with `fit`, the view moves to them.
+  highlight(source, ids, fit = false) {
+    this.marked.set(source, new Set(ids));
+    this.applyVisibility();
+    const marked = this.cy.nodes(".queried");
+    if (fit && marked.nonempty()) {
+      const positions = new Map(marked.map((node) => [node.id(), { ...node.position() }]));
+      this.cy.animate(this.viewportFor(positions, [...positions.keys()]), { duration: ANIMATION_MS });
+    }
+  }
+
+  // The units drawing the marked graph entries (a box, when it holds one).
+  markedUnits() {
+    const units = new Set();
+    for (const ids of this.marked.values()) {
+      for (const id of ids) if (this.unitOf.has(id)) units.add(this.unitOf.get(id));
+    }
+    return units;
+  }
+
   applyVisibility() {
     const cy = this.cy;
     cy.batch(() => {
-      cy.elements().removeClass("hidden faded match");
+      cy.elements().removeClass("hidden faded match queried");
+      for (const unit of this.markedUnits()) cy.getElementById(unit).addClass("queried");
       if (this.focused) {
         const centre = cy.getElementById(this.focused);
         cy.elements().difference(centre.closedNeighborhood()).addClass("hidden");
