@@ -25,7 +25,9 @@ function span(className, text) {
 // "when CONDITION; e.g. FILE:ARG=VALUE ..." of a result or a finding.
 function when({ presence, condition, example }) {
   const given = Object.entries(example).map(([key, value]) => `${key}=${value}`).join(" ");
-  const text = presence === "present" ? "in every configuration left" : `when ${condition}`;
+  // undetermined by the choices of files alone: the element's own condition always holds
+  const text = presence === "present" ? "in every configuration left"
+    : condition === "true" ? "when its launch file is launched" : `when ${condition}`;
   return span("when", `${text}${given && presence !== "present" ? `; e.g. ${given}` : ""}`);
 }
 
