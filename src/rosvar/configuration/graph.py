@@ -29,6 +29,7 @@ from rosvar.analyses.communication import (
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.resolve import ResolutionError, test_fields
+from rosvar.analyses.when import when_condition
 from rosvar.configuration.derivation import Presence
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
@@ -155,6 +156,7 @@ class VariationalGraph:
         """``progress``: told how many of the files are done, and of how many;
         ``interfaces``: the nodes' own topics (else topics come from remaps only)."""
         self.lowering = lowering
+        self.space = analysis.space
         self.confinement = analysis.workspace.confinement()
         self.elements: list[Element] = []
         self.launched: dict[str, BDD] = _launched(model)
@@ -436,7 +438,10 @@ class VariationalGraph:
             channel = CHANNEL.get(entry.role)
             if channel is None or not entry.static:
                 continue
-            for when, resolved in remapped(launched, remaps, entry.name, condition):
+            used = condition
+            if entry.when is not None:
+                used &= self.lowering.fix(when_condition(self.space, node, entry.when))
+            for when, resolved in remapped(launched, remaps, entry.name, used):
                 fixed, bounds = self.lowering.lower(when)
                 if "{" in resolved or not self.lowering.satisfiable(fixed):
                     continue
