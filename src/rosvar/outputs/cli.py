@@ -614,6 +614,7 @@ MAPPING = r"[A-Za-z_~/][\w/~]*:="
 def cmd_query(options: argparse.Namespace) -> int:
     import re
 
+    from rosvar.analyses.query.channels import channel_collections
     from rosvar.analyses.query.evaluator import QueryEngine
     from rosvar.analyses.query.parser import QueryError
 
@@ -627,7 +628,8 @@ def cmd_query(options: argparse.Namespace) -> int:
     if analysis is None:
         return EXIT_INPUT
     analysis.all_models(_progress)  # interpreted once, with the progress shown
-    engine = QueryEngine(analysis)
+    interfaces = _interfaces(analysis.workspace.packages.values(), options)
+    engine = QueryEngine(analysis, collections=channel_collections(interfaces))
     _warn_unknown_args(analysis, [m.file for m in engine.models], args)
     try:
         results = engine.run(expression, args)

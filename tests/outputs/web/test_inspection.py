@@ -59,6 +59,10 @@ def test_a_query_is_judged_under_the_tabs_choices(small: Live) -> None:
     assert result["ids"] == [listener]
     [topic] = ask(small, session, "topics[self.name.startswith('/he')]")
     assert topic["name"] == "/heard" and topic["ids"] == ["topic:/heard"]
+    [heard] = ask(small, session, "topics[len(self.subscribers) > 0]")  # the interfaces'
+    assert (heard["name"], heard["condition"], heard["ids"]) == (
+        "/chatter", "listen", ["topic:/chatter"],
+    )  # fmt: skip
     feature = "a.launch:listen=false"
     small.post("/api/choose", {"session": session, "action": "select", "feature": "a.launch"})
     small.post("/api/choose", {"session": session, "action": "select", "feature": feature})

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 from rosvar.analyses.checks import Finding, check_model
 from rosvar.analyses.feature_model.operations import simplest_trigger
+from rosvar.analyses.query.channels import KINDS, channel_collections
 from rosvar.analyses.query.collections import Kind
 from rosvar.analyses.query.evaluator import QueryEngine
 from rosvar.configuration.derivation import Decisions, Presence
@@ -26,6 +27,8 @@ from rosvar.logic.bdd import BDD
 from rosvar.workspace.interfaces.model import Interfaces
 
 Reply = dict[str, object]
+NAMED = frozenset(KINDS.values())
+"""Kinds of query results that are graph entries by their name alone."""
 _Place = tuple[str, str, int]
 """Where a graph entry is declared: its entry file's id, the declaring file and line."""
 
@@ -58,7 +61,11 @@ class Inspector:
         """The elements ``text`` selects in the configurations ``state`` leaves; raises
         :class:`~rosvar.analyses.query.parser.QueryError` for a query it refuses."""
         if self._engine is None:
-            self._engine = QueryEngine(self._configurator.analysis, list(self._entries))
+            interfaces = self._configurator.graph.interfaces
+            collections = None if interfaces is None else channel_collections(interfaces)
+            self._engine = QueryEngine(
+                self._configurator.analysis, list(self._entries), collections
+            )
         decisions = self._configurator.decisions(state.choices)
         places = _Places(state.graph)
         results = []
@@ -75,7 +82,7 @@ class Inspector:
                 place = (file_id, location.file, location.line)
                 ids = places.declared(Kind(element.kind), place, element.name)
             else:
-                ids = places.named(element.name) if element.kind == Kind.TOPIC else []
+                ids = places.named(element.name) if element.kind in NAMED else []
             results.append(
                 {
                     "kind": str(element.kind),
