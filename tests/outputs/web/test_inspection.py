@@ -103,6 +103,22 @@ def test_checks_follow_the_choices(small: Live) -> None:
     assert "/chatter" not in {f["name"] for f in after["findings"]}
 
 
+def test_a_finding_reached_from_two_entry_files_is_shown_from_the_launched_one(
+    ws: LaunchWorkspace,
+) -> None:
+    small_workspace(ws)
+    ws.launch("b.launch", '  <node pkg="pkg" type="talker.py" name="talker"/>')
+    for name in ("a2.launch", "z.launch"):
+        ws.launch(name, '  <include file="$(find pkg)/launch/b.launch"/>')
+    with running(configurator(ws, interfaces=True)) as live:
+        session = live.open()["session"]
+        live.post("/api/choose", {"session": session, "action": "select", "feature": "z.launch"})
+        findings = live.post("/api/checks", {"session": session})["findings"]
+    [unheard] = [f for f in findings if f["name"] == "/chatter" and "b.launch" in str(f)]
+    assert (unheard["launch_file"], unheard["presence"]) == ("pkg/launch/z.launch", "present")
+    assert findings[0] is unheard  # a note, but the only one present
+
+
 # -- the page ------------------------------------------------------------------------------------
 def red_units(app: App) -> list[str]:
     return sorted(app.page.evaluate("window.rosvar.graph.cy.nodes('.queried').map((n) => n.id())"))

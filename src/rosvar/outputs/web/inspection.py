@@ -97,22 +97,24 @@ class Inspector:
 
     def checks(self, state: ConfigurationState) -> Reply:
         """The findings of ``rosvar check`` not absent from the configurations ``state``
-        leaves, the worst first; one reached from several entry files is listed once."""
+        leaves, the worst first; one reached from several entry files is listed once (from
+        an entry file where it is present, if there is one)."""
         decisions = self._configurator.decisions(state.choices)
         places = _Places(state.graph)
         shown: dict[tuple[object, ...], Reply] = {}
         for finding in self.findings():
             key = (finding.check, finding.name, finding.locations)
-            if key in shown:
+            earlier = shown.get(key)
+            if earlier is not None and earlier["presence"] == Presence.PRESENT:
                 continue
             judged = self.judge(finding.file, finding.condition, decisions)
-            if judged is None:
+            if judged is None or (earlier is not None and judged.presence != Presence.PRESENT):
                 continue
             file_id = self._entries[finding.file].id
             first = finding.locations[0]
             ids = [
                 *places.declared(Kind.NODE, (file_id, first.file, first.line), None),
-                *places.named(finding.name),
+                *places.named(finding.name, nodes=True),
             ]
             shown[key] = {
                 "check": str(finding.check),
@@ -125,7 +127,10 @@ class Inspector:
                 "ids": list(dict.fromkeys(ids)),
             }
         order = {severity.value: rank for rank, severity in enumerate(Severity)}
-        findings = sorted(shown.values(), key=lambda f: order[str(f["severity"])])
+        findings = sorted(  # the worst, and those present, first
+            shown.values(),
+            key=lambda f: (order[str(f["severity"])], f["presence"] != Presence.PRESENT),
+        )
         counts = {s.value: sum(f["severity"] == s.value for f in findings) for s in Severity}
         return {"findings": findings, "counts": counts}
 
@@ -167,7 +172,7 @@ class _Places:
 
     def __init__(self, graph: Graph) -> None:
         self._declared: dict[tuple[Kind, *_Place], list[tuple[str, str]]] = {}
-        self._named: dict[str, list[str]] = {}
+        self._named: dict[tuple[bool, str], list[str]] = {}  # (a node?, name) → ids
         lists: Sequence[tuple[Kind | None, Iterable[Mapping[str, object]]]] = (
             (Kind.NODE, graph.nodes),
             (Kind.NODE, graph.tests),
@@ -185,7 +190,7 @@ class _Places:
                     file_id = id_.split("|", 1)[0]
                     place = (kind, file_id, str(entry["filename"]), int(str(entry["line"])))
                     self._declared.setdefault(place, []).append((name, id_))
-                self._named.setdefault(name, []).append(id_)
+                self._named.setdefault((kind is not None, name), []).append(id_)
 
     def declared(self, kind: Kind, place: _Place, name: str | None) -> list[str]:
         """Ids of the entries of ``kind`` declared at ``place`` (named ``name``, unless None
@@ -195,6 +200,10 @@ class _Places:
             return [id_ for _name, id_ in found]
         return [id_ for shown, id_ in found if shown == name]
 
-    def named(self, name: str) -> list[str]:
-        """Ids of the entries of any kind named ``name``."""
-        return list(self._named.get(name, []))
+    def named(self, name: str, nodes: bool = False) -> list[str]:
+        """Ids of the topics, services and actions named ``name`` (and, with ``nodes``, of
+        the nodes and params)."""
+        return [
+            *self._named.get((False, name), []),
+            *(self._named.get((True, name), []) if nodes else []),
+        ]

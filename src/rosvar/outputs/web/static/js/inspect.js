@@ -125,7 +125,7 @@ export class ChecksPanel {
                        span("check", finding.check), span("message", finding.message),
                        when(finding), place(first.file, first.line));
       row.dataset.key = keyOf(finding);
-      row.title = `launched by ${finding.launch_file}`;
+      row.title = `${finding.message}\nlaunched by ${finding.launch_file}`;
       if (row.dataset.key === this.chosen) { row.classList.add("chosen"); chosen = finding; }
       row.addEventListener("click", () => this.choose(row, finding));
       return row;
