@@ -16,14 +16,16 @@ if TYPE_CHECKING:
 
 
 def small_workspace(ws: LaunchWorkspace) -> None:
-    """A talker always, a listener when ``listen`` (its topic then has a subscriber)."""
+    """A talker always, a listener when ``listen`` (its topic then has a subscriber, its
+    service a client)."""
+    header = "import rospy\nfrom std_msgs.msg import String\nfrom std_srvs.srv import Empty\n"
     ws.write(
         "scripts/talker.py",
-        'import rospy\nfrom std_msgs.msg import String\nrospy.Publisher("chatter", String)\n',
+        f'{header}rospy.Publisher("chatter", String)\nrospy.Service("reset", Empty, None)\n',
     )
     ws.write(
         "scripts/listener.py",
-        'import rospy\nfrom std_msgs.msg import String\nrospy.Subscriber("chatter", String)\n',
+        f'{header}rospy.Subscriber("chatter", String)\nrospy.ServiceProxy("/reset", Empty)\n',
     )
     ws.launch(
         "a.launch",
@@ -142,6 +144,14 @@ def test_the_query_box_marks_its_results_and_follows_the_choices(page: Any, smal
     app.choose("a.launch", "select")
     app.wait_for_layout()
     assert red_units(app) == ["n:" + listener]  # the file's nodes are drawn one by one
+    # the service is drawn too, requests going from its client to its server
+    [talker] = [n["id"] for n in app.state["graph"]["nodes"] if n["name"] == "/talker"]
+    edges = page.evaluate(
+        """window.rosvar.graph.cy.edges('[kind = "service"]')
+             .map((e) => [e.source().id(), e.target().id()])"""
+    )
+    service = "s:service:/reset"
+    assert sorted(edges) == [["n:" + listener, service], [service, "n:" + talker]]
     answered = page.locator("body").get_attribute("data-query")
     app.choose("a.launch:listen=false", "select")
     page.wait_for_selector(f'body:not([data-query="{answered}"])')

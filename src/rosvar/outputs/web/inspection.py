@@ -114,7 +114,7 @@ class Inspector:
             first = finding.locations[0]
             ids = [
                 *places.declared(Kind.NODE, (file_id, first.file, first.line), None),
-                *places.named(finding.name, nodes=True),
+                *places.named(finding.name, file_id),
             ]
             shown[key] = {
                 "check": str(finding.check),
@@ -172,7 +172,7 @@ class _Places:
 
     def __init__(self, graph: Graph) -> None:
         self._declared: dict[tuple[Kind, *_Place], list[tuple[str, str]]] = {}
-        self._named: dict[tuple[bool, str], list[str]] = {}  # (a node?, name) → ids
+        self._named: dict[tuple[str, str], list[str]] = {}  # (entry file id or "", name) → ids
         lists: Sequence[tuple[Kind | None, Iterable[Mapping[str, object]]]] = (
             (Kind.NODE, graph.nodes),
             (Kind.NODE, graph.tests),
@@ -186,11 +186,12 @@ class _Places:
                 if entry["presence"] == Presence.ABSENT:
                     continue
                 id_, name = str(entry["id"]), str(entry["name"])
+                file_id = ""  # names of topics, services and actions are the workspace's
                 if kind is not None:
                     file_id = id_.split("|", 1)[0]
                     place = (kind, file_id, str(entry["filename"]), int(str(entry["line"])))
                     self._declared.setdefault(place, []).append((name, id_))
-                self._named.setdefault((kind is not None, name), []).append(id_)
+                self._named.setdefault((file_id, name), []).append(id_)
 
     def declared(self, kind: Kind, place: _Place, name: str | None) -> list[str]:
         """Ids of the entries of ``kind`` declared at ``place`` (named ``name``, unless None
@@ -200,10 +201,10 @@ class _Places:
             return [id_ for _name, id_ in found]
         return [id_ for shown, id_ in found if shown == name]
 
-    def named(self, name: str, nodes: bool = False) -> list[str]:
-        """Ids of the topics, services and actions named ``name`` (and, with ``nodes``, of
-        the nodes and params)."""
+    def named(self, name: str, file_id: str | None = None) -> list[str]:
+        """Ids of the topics, services and actions named ``name`` (and, with ``file_id``, of
+        the nodes and params of that entry file)."""
         return [
-            *self._named.get((False, name), []),
-            *(self._named.get((True, name), []) if nodes else []),
+            *self._named.get(("", name), []),
+            *(self._named.get((file_id, name), []) if file_id else []),
         ]

@@ -401,7 +401,9 @@ export class GraphView {
         const feeders = new Set((named[feeding] || []).map((edge) => unitOf.get(edge.node)));
         for (const unit of new Set(named.nodes.map((nodeId) => unitOf.get(nodeId)).filter(Boolean))) {
           const uses = users.has(unit) && !feeders.has(unit);
-          const [source, target] = (kind === "topic") === uses ? [id, unit] : [unit, id];
+          // a topic flows to its users, a request from a client to the service's server
+          const towardsUnit = kind === "topic" ? uses : !uses;
+          const [source, target] = towardsUnit ? [id, unit] : [unit, id];
           wanted.push({ group: "edges", classes: named.presence === "undetermined" ? "undetermined" : "",
                         data: { id: `e:${named.id}:${unit}`, kind, owner: named.id, source, target } });
         }
