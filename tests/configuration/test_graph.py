@@ -76,6 +76,46 @@ def test_interfaces_wire_nodes_to_their_topics_edge_by_edge(ws: LaunchWorkspace)
                                               "condition": None}])  # fmt: skip
 
 
+def test_services_and_actions_have_servers_and_clients_edge_by_edge(ws: LaunchWorkspace) -> None:
+    ws.write(
+        "scripts/server.py",
+        "import rospy\nimport actionlib\nfrom std_srvs.srv import Empty\n"
+        'rospy.Service("reset", Empty, None)\n'
+        'actionlib.SimpleActionServer("move", MoveAction)\n',
+    )
+    ws.write(
+        "scripts/client.py",
+        'import rospy\nfrom std_srvs.srv import Empty\nrospy.ServiceProxy("/ns/reset", Empty)\n',
+    )
+    ws.launch(
+        "a.launch",
+        '  <arg name="call" default="true"/>\n'
+        '  <node pkg="pkg" type="server.py" name="server" ns="ns"/>\n'
+        '  <node pkg="pkg" type="client.py" name="client" if="$(arg call)"/>',
+    )
+    engine = configurator(ws, interfaces=True)
+    state = engine.state(choices("select a.launch"))
+    ids = {n["name"]: n["id"] for n in state.graph.nodes}
+    [service] = state.graph.services
+    assert service["name"] == "/ns/reset" and service["types"] == ["std_srvs/Empty"]
+    assert service["servers"] == [{"node": ids["/ns/server"], "presence": "present",
+                                   "condition": None}]  # fmt: skip
+    assert service["clients"] == [{"node": ids["/client"], "presence": "undetermined",
+                                   "condition": "call"}]  # fmt: skip
+    assert sorted(service["nodes"]) == sorted(ids.values())
+    [action] = state.graph.actions
+    assert (action["name"], action["servers"][0]["node"], action["clients"]) == (
+        "/ns/move", ids["/ns/server"], [],
+    )  # fmt: skip
+    assert not [t for t in state.graph.topics if t["name"] in ("/ns/reset", "/ns/move")]
+    alone = engine.state(choices("select a.launch", "set a.launch:call=false")).graph.services
+    assert [(s["presence"], s["clients"], s["nodes"]) for s in alone] == [
+        ("present", [], [ids["/ns/server"]])
+    ]
+    schema = json.loads((REPO / "docs" / "schema" / "configure.schema.json").read_text())
+    pytest.importorskip("jsonschema").validate(state.to_json(), schema)
+
+
 def test_conditional_remaps_on_independent_args_are_parts_not_variants(
     ws: LaunchWorkspace,
 ) -> None:

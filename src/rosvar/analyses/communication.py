@@ -20,6 +20,7 @@ import enum
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 
+from rosvar.analyses.when import when_condition
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.logic.bdd import BDD
@@ -145,14 +146,18 @@ def launched_units(
 def node_edges(
     space: ConditionSpace, file: str, node: NodeDecl, interfaces: Interfaces
 ) -> list[Edge]:
-    """The edges of one ``<node>``: one per branch of its fields and per remap outcome."""
+    """The edges of one ``<node>``: one per branch of its fields and per remap outcome (a
+    hinted entry's only where its ``when:`` holds)."""
     edges = []
     remaps = [(remap.condition, remap.source, remap.target) for remap in node.remaps]
     for condition, launched, interface, static in launched_units(space, node, interfaces):
         for entry in interface.entries:
             if entry.role not in CHANNEL:
                 continue
-            for when, name in entry_names(launched, remaps, entry, condition):
+            used = condition
+            if entry.when is not None:
+                used &= when_condition(space, node, entry.when)
+            for when, name in entry_names(launched, remaps, entry, used):
                 edges.append(_edge(file, launched, node, entry, name, when, static))
     return edges
 

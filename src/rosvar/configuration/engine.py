@@ -263,6 +263,10 @@ class Configurator:
         with collector_paused():
             return self._answer(self._replay(tuple(choices)))
 
+    def decisions(self, choices: Sequence[UserChoice]) -> Decisions:
+        """The solver's view after ``choices``, to judge other conditions under them."""
+        return self._replay(tuple(choices)).decisions
+
     def _replay(self, choices: tuple[UserChoice, ...]) -> _Replay:
         """The replay of ``choices``, from the longest prefix replayed before."""
         length, replay = self._replays.longest(choices)

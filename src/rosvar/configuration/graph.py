@@ -17,10 +17,19 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import cast
 
-from rosvar.analyses.communication import LaunchedNode, entry_names, find_interface
+from rosvar.analyses.communication import (
+    CHANNEL,
+    JSON_SIDES,
+    SIDES,
+    Channel,
+    LaunchedNode,
+    entry_names,
+    find_interface,
+)
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.resolve import ResolutionError, test_fields
+from rosvar.analyses.when import when_condition
 from rosvar.configuration.derivation import Presence
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
@@ -100,7 +109,17 @@ class ElementKind(StrEnum):
     TEST = "test"
     PARAM = "param"
     TOPIC = "topic"
+    SERVICE = "service"
+    ACTION = "action"
     ERROR = "error"
+
+
+NAMED: dict[Channel, ElementKind] = {
+    Channel.TOPICS: ElementKind.TOPIC,
+    Channel.SERVICES: ElementKind.SERVICE,
+    Channel.ACTIONS: ElementKind.ACTION,
+}
+"""The element kind of each channel's names: those with ``nodes`` using them."""
 
 
 @dataclass
@@ -114,7 +133,7 @@ class Element:
     bounds: Bounds  # solver manager
     render: Render  # fields for one set of concrete values (several for a YAML load)
     inputs: frozenset[Input] = frozenset()  # inputs its fields still need
-    nodes: list[str] = field(default_factory=list)  # topics: the node variants using it
+    nodes: list[str] = field(default_factory=list)  # names: the node variants using it
     parts: tuple[Part, ...] = ()  # nodes: their conditional remaps and environment settings
 
     def fields(self, values: Values, parts: Sequence[Shown]) -> list[Fields]:
@@ -137,13 +156,15 @@ class VariationalGraph:
         """``progress``: told how many of the files are done, and of how many;
         ``interfaces``: the nodes' own topics (else topics come from remaps only)."""
         self.lowering = lowering
+        self.space = analysis.space
         self.confinement = analysis.workspace.confinement()
         self.elements: list[Element] = []
         self.launched: dict[str, BDD] = _launched(model)
         self.interfaces = interfaces
         self._topics: dict[tuple[str, str], _Topic] = {}
         self._shadows: dict[BDD, BDD] = {}
-        self._edges: dict[str, list[_Edge]] = {}  # a static topic name → its nodes' uses
+        self._edges: dict[tuple[Channel, str], list[_Edge]] = {}  # a static name → its uses
+        self._served: dict[tuple[Channel, str], tuple[list[str], BDD]] = {}  # services, actions
         for done, file in enumerate(model.files):
             if progress is not None:
                 progress(done, len(model.files))
@@ -154,9 +175,11 @@ class VariationalGraph:
             )
         for (entry, name), (nodes, condition, raws) in sorted(self._topics.items()):
             if not entry:
-                edges = self._edges.get(name, [])
+                edges = self._edges.get((Channel.TOPICS, name), [])
                 render = (
-                    _static({"name": name}) if interfaces is None else _edges_renderer(name, edges)
+                    _static({"name": name})
+                    if interfaces is None
+                    else _edges_renderer(Channel.TOPICS, name, edges)
                 )
                 parts = tuple(Part(when, bounds) for _n, _r, _t, when, bounds in edges)
                 self._add(
@@ -178,7 +201,19 @@ class VariationalGraph:
                 _needs(*raws),
                 nodes=nodes,
             )
+        for (channel, name), (nodes, condition) in sorted(self._served.items()):
+            edges = self._edges[channel, name]
+            self._add(
+                NAMED[channel],
+                f"{NAMED[channel]}:{name}",
+                "",
+                condition,
+                _edges_renderer(channel, name, edges),
+                nodes=nodes,
+                parts=tuple(Part(when, bounds) for _n, _r, _t, when, bounds in edges),
+            )
         self._topics.clear()
+        self._served.clear()
         self._shadows.clear()  # only the build's products need them
 
     def _add(
@@ -391,8 +426,9 @@ class VariationalGraph:
     def _interface_uses(
         self, element: Element, raw: Mapping[str, Raw | None], node: NodeDecl, condition: BDD
     ) -> None:
-        """The topics the node variant publishes and subscribes to by its interface, each
-        use an edge of its topic (judged as a part of it); names known statically only."""
+        """The names the node variant publishes, subscribes to, serves or calls by its
+        interface, each use an edge of its topic, service or action (judged as a part of
+        it); names known statically only."""
         assert self.interfaces is not None
         keys = ("pkg", "type", "namespace", "name", "args")
         texts = [raw.get(key) for key in keys]
@@ -406,19 +442,33 @@ class VariationalGraph:
             return
         remaps = [(remap.condition, remap.source, remap.target) for remap in node.remaps]
         for entry in interface.entries:
-            if entry.role not in (Role.PUBLISHES, Role.SUBSCRIBES) or not entry.static:
+            channel = CHANNEL.get(entry.role)
+            if channel is None or not entry.static:
                 continue
-            for when, topic in entry_names(launched, remaps, entry, condition):
+            used = condition
+            if entry.when is not None:
+                used &= self.lowering.fix(when_condition(self.space, node, entry.when))
+            for when, resolved in entry_names(launched, remaps, entry, used):
                 fixed, bounds = self.lowering.lower(when)
-                if "{" in topic or not self.lowering.satisfiable(fixed):
+                if "{" in resolved or not self.lowering.satisfiable(fixed):
                     continue
-                self._edges.setdefault(topic, []).append(
+                self._edges.setdefault((channel, resolved), []).append(
                     (element.id, entry.role, entry.type, fixed, bounds)
                 )
-                nodes, used, raws = self._topics.get(("", topic), ([], fixed.bdd.false, None))
+                if channel == Channel.TOPICS:
+                    nodes, used, raws = self._topics.get(
+                        ("", resolved), ([], fixed.bdd.false, None)
+                    )
+                    self._topics[("", resolved)] = (
+                        nodes,
+                        used | fixed,
+                        raws or (None, None, resolved),
+                    )
+                else:
+                    nodes, used = self._served.get((channel, resolved), ([], fixed.bdd.false))
+                    self._served[channel, resolved] = (nodes, used | fixed)
                 if element.id not in nodes:
                     nodes.append(element.id)
-                self._topics[("", topic)] = (nodes, used | fixed, raws or (None, None, topic))
 
 
 def _launched(model: FeatureModel) -> dict[str, BDD]:
@@ -448,28 +498,24 @@ def _topic_name(values: Values, namespace: Raw | None, name: Raw | None, target:
 
 
 _Edge = tuple[str, Role, str | None, BDD, Bounds]
-"""A node variant's use of a topic: its id, publishes or subscribes, the message type, and
+"""A node variant's use of a name: its id, its role (publishes, serves...), the type, and
 the condition of the use (analysis manager, fixed) with its bounds."""
 
 
-def _edges_renderer(name: str, edges: Sequence[_Edge]) -> Render:
-    """A topic with its types and its publishers and subscribers that are not absent, each
-    with its presence and condition (the topic's parts, in the order of ``edges``)."""
+def _edges_renderer(channel: Channel, name: str, edges: Sequence[_Edge]) -> Render:
+    """A topic (service, action) with its types and its publishers and subscribers (servers
+    and clients) that are not absent, each with its presence and condition (the name's
+    parts, in the order of ``edges``)."""
     types = sorted({type_ for _id, _role, type_, _c, _b in edges if type_ is not None})
+    roles = SIDES[channel]
+    lists = JSON_SIDES[channel]
 
     def render(_values: Values, parts: Sequence[Shown]) -> list[Fields]:
-        sides: dict[Role, list[Fields]] = {Role.PUBLISHES: [], Role.SUBSCRIBES: []}
+        sides: dict[Role, list[Fields]] = {role: [] for role in roles}
         for (node, role, _type, _c, _b), (presence, condition) in zip(edges, parts, strict=True):
             if presence != Presence.ABSENT:
                 sides[role].append({"node": node, "presence": presence, "condition": condition})
-        return [
-            {
-                "name": name,
-                "types": types,
-                "publishers": sides[Role.PUBLISHES],
-                "subscribers": sides[Role.SUBSCRIBES],
-            }
-        ]
+        return [{"name": name, "types": types, **{lists[i]: sides[roles[i]] for i in (0, 1)}}]
 
     return render
 

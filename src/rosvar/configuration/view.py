@@ -16,7 +16,15 @@ from itertools import accumulate, chain
 from rosvar.configuration.catalog import Catalog, FileEntry
 from rosvar.configuration.conflicts import Conflicts, ConflictState
 from rosvar.configuration.derivation import Decisions, Derivation, Presence
-from rosvar.configuration.graph import Element, ElementKind, Fields, Shown, Values, VariationalGraph
+from rosvar.configuration.graph import (
+    NAMED,
+    Element,
+    ElementKind,
+    Fields,
+    Shown,
+    Values,
+    VariationalGraph,
+)
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.presence import Judged, Judgement, Presences, Typed
@@ -32,6 +40,9 @@ _Entry = tuple[str, str, str | None, Strings | None, tuple[Shown, ...], tuple[st
 """An element shown: its id, presence, condition, the strings it was rendered with, its
 parts as shown and (a topic) the node variants using it that are not absent."""
 
+_USED = frozenset(NAMED.values())
+"""Kinds of elements that list the node variants using them."""
+
 
 @dataclass
 class Graph:
@@ -41,6 +52,8 @@ class Graph:
     tests: list[Fields] = field(default_factory=list)
     params: list[Fields] = field(default_factory=list)
     topics: list[Fields] = field(default_factory=list)
+    services: list[Fields] = field(default_factory=list)
+    actions: list[Fields] = field(default_factory=list)
     errors: list[Fields] = field(default_factory=list)
 
     def to_json(self) -> dict[str, object]:
@@ -49,6 +62,8 @@ class Graph:
             "tests": self.tests,
             "params": self.params,
             "topics": self.topics,
+            "services": self.services,
+            "actions": self.actions,
             "errors": self.errors,
         }
 
@@ -303,7 +318,7 @@ class Views:
             )
             given = self._given(element, judged.verdict.presence, values, decisions, texts)
             found = self._element_entries(
-                element, judged, parts, given, users if element.kind == ElementKind.TOPIC else ()
+                element, judged, parts, given, users if element.kind in _USED else ()
             )
             if found is not entries[index]:
                 moved.setdefault(element.kind, []).append(index)
@@ -365,7 +380,7 @@ class Views:
             if texts.get(arg) != before.texts.get(arg):
                 again.update(self._reading.get(arg, ()))
         for index in list(again):
-            if self.graph.elements[index].kind != ElementKind.TOPIC:
+            if self.graph.elements[index].kind not in _USED:
                 again.update(self._users.get(index, ()))
         return sorted(again)
 
@@ -410,7 +425,7 @@ class Views:
         entries = self._entries.get(key)
         if entries is None:
             shown = self._fields(element, given, strings, parts)
-            extra: Fields = {"nodes": list(users)} if element.kind == ElementKind.TOPIC else {}
+            extra: Fields = {"nodes": list(users)} if element.kind in _USED else {}
             entries = self._entries[key] = [
                 {
                     **fields,

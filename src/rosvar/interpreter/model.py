@@ -11,7 +11,7 @@ Element classes have slots: a large workspace's models hold millions of them.
 from __future__ import annotations
 
 import re
-from collections.abc import Collection
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
 from enum import StrEnum
 
@@ -76,6 +76,9 @@ class NodeDecl:
     fields: dict[str, Choice[Raw | None]]
     remaps: list[Remap]
     env: list[EnvSetting]
+    # the args its scope sees (undefined ones as a non-text leaf), for conditions written
+    # outside the launch files about the node: a hinted interface entry's ``when:``
+    args: Mapping[str, Choice[object]] = field(default_factory=dict)
 
     def field(self, key: str) -> Choice[Raw | None]:
         return self.fields[key]

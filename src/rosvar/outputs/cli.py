@@ -35,6 +35,7 @@ if TYPE_CHECKING:
     from rosvar.configuration.engine import ConfigurationState, Progress
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace import Workspace
+    from rosvar.workspace.hints import Hints
     from rosvar.workspace.interfaces.model import Interfaces
     from rosvar.workspace.packages import Package
 
@@ -252,13 +253,12 @@ def _analysis(
     args: Mapping[str, str] | None = None,
 ) -> Analysis | None:
     from rosvar.interpreter.workspace_models import Analysis
-    from rosvar.workspace.hints import load_hints
 
     workspace = _workspace(options.paths if paths is None else paths, options)
     if not workspace.launch_files:
         print("rosvar: no launch files found", file=sys.stderr)
         return None
-    hints = load_hints(getattr(options, "hints", None))
+    hints = _hints(options)
     for diagnostic in hints.diagnostics:
         print(diagnostic, file=sys.stderr)
     env_values = {k: list(v) for k, v in hints.env.items()}
@@ -539,16 +539,25 @@ def _command(
     )
 
 
+def _hints(options: argparse.Namespace) -> Hints:
+    """The hints file of ``options`` (if any), with a diagnostic per refused ``when:``."""
+    from rosvar.analyses.when import refusals
+    from rosvar.workspace.hints import load_hints
+
+    hints = load_hints(getattr(options, "hints", None))
+    hints.diagnostics.extend(refusals(hints.nodes))
+    return hints
+
+
 def _interfaces(packages: Iterable[Package], options: argparse.Namespace) -> Interfaces:
     """The interfaces of ``packages``, the catalogue's when ``options.catalogue``, then
     the hints' entries."""
-    from rosvar.workspace.hints import load_hints
     from rosvar.workspace.interfaces.catalogue import load_catalogue
     from rosvar.workspace.interfaces.extraction import extract_interfaces
     from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
 
     interfaces = extract_interfaces(packages)
-    hints = load_hints(getattr(options, "hints", None))
+    hints = _hints(options)
     interfaces.diagnostics.extend(hints.diagnostics)
     if getattr(options, "catalogue", True):
         add_catalogue(interfaces, load_catalogue())
@@ -605,6 +614,7 @@ MAPPING = r"[A-Za-z_~/][\w/~]*:="
 def cmd_query(options: argparse.Namespace) -> int:
     import re
 
+    from rosvar.analyses.query.channels import channel_collections
     from rosvar.analyses.query.evaluator import QueryEngine
     from rosvar.analyses.query.parser import QueryError
 
@@ -618,7 +628,8 @@ def cmd_query(options: argparse.Namespace) -> int:
     if analysis is None:
         return EXIT_INPUT
     analysis.all_models(_progress)  # interpreted once, with the progress shown
-    engine = QueryEngine(analysis)
+    interfaces = _interfaces(analysis.workspace.packages.values(), options)
+    engine = QueryEngine(analysis, collections=channel_collections(interfaces))
     _warn_unknown_args(analysis, [m.file for m in engine.models], args)
     try:
         results = engine.run(expression, args)

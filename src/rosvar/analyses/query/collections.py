@@ -30,6 +30,8 @@ class Kind(StrEnum):
     NODE = "node"
     PARAM = "param"
     TOPIC = "topic"
+    SERVICE = "service"
+    ACTION = "action"
     LAUNCH_FILE = "launch_file"
     ARG = "arg"
 
@@ -158,10 +160,10 @@ def _template(parts: Sequence[object]) -> str:
 
 
 def _nodes(analysis: Analysis, model: LaunchModel) -> Iterator[Element]:
-    return (element for _node, element in _node_elements(analysis, model))
+    return (element for _node, element in node_elements(analysis, model))
 
 
-def _node_elements(analysis: Analysis, model: LaunchModel) -> Iterator[tuple[NodeDecl, Element]]:
+def node_elements(analysis: Analysis, model: LaunchModel) -> Iterator[tuple[NodeDecl, Element]]:
     """One element per node declaration and resolved name (a name that varies splits it)."""
     space = analysis.space
     entry = analysis.label(model.file)
@@ -205,14 +207,14 @@ def _param_value(value: object) -> object:
     return None if isinstance(value, (DeferredValue, Binary)) else known(value)
 
 
-def _topics(analysis: Analysis, model: LaunchModel) -> list[Element]:
+def remapped_topics(analysis: Analysis, model: LaunchModel) -> list[Element]:
     """Topics named by ``<remap>``s of nodes (resolved in the node's namespace); without a
     communication graph their publishers and subscribers are empty sets."""
     space = analysis.space
     entry = analysis.label(model.file)
     remapped: dict[str, list[tuple[BDD, Queryable]]] = {}
     located: dict[str, Location] = {}
-    for declaration, node in _node_elements(analysis, model):
+    for declaration, node in node_elements(analysis, model):
         for remap in declaration.remaps:
             target = Choice.of([(remap.condition, remap.target)], space.false)
             for condition, name in combine([node.attribute("namespace"), target], _full_name):
@@ -280,7 +282,7 @@ for _collection in (
     Collection("params", ("name", "value", "launch_file", "file"), _params,
                "parameters set by <param> and concrete <rosparam>"),
     Collection("topics", ("name", "publishers", "subscribers", "remapped_by", "launch_file"),
-               _topics, "topics named by remaps (publishers/subscribers: the communication graph)"),
+               remapped_topics, "topics named by remaps (users: query/channels.py)"),
     Collection("launch_files", ("name", "path", "nodes", "params", "args", "loads"),
                _launch_files, "entry launch files"),
     Collection("args", ("name", "default", "doc", "launch_file"), _args,

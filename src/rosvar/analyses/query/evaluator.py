@@ -68,8 +68,16 @@ class Result:
 class QueryEngine:
     """The elements of an analysis' entry files, listed once, and queries over them."""
 
-    def __init__(self, analysis: Analysis, files: Sequence[str] | None = None) -> None:
+    def __init__(
+        self,
+        analysis: Analysis,
+        files: Sequence[str] | None = None,
+        collections: Mapping[str, Collection] | None = None,
+    ) -> None:
+        """``collections``: providers that replace the registered ones of their names (the
+        communication graph's topics, services and actions)."""
         self.analysis = analysis
+        self.collections = {**COLLECTIONS, **(collections or {})}
         self.space = analysis.space
         self.models = [
             analysis.model(f) for f in (analysis.workspace.launch_files if files is None else files)
@@ -107,9 +115,9 @@ class QueryEngine:
     def run(self, text: str, args: Mapping[str, str] | None = None) -> list[Result]:
         """The elements ``text`` selects (``name:=value`` ``args`` restrict the question)."""
         query = parse(text)
-        collection = COLLECTIONS.get(query.collection)
+        collection = self.collections.get(query.collection)
         if collection is None:
-            known = ", ".join(sorted(COLLECTIONS))
+            known = ", ".join(sorted(self.collections))
             raise QueryError(f"unknown collection '{query.collection}' (collections: {known})")
         restriction = self.restriction(args or {})
         evaluation = _Evaluation(self.space, query, collection, self._expanded)

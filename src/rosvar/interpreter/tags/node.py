@@ -153,5 +153,6 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
             fields=fields,
             remaps=remaps,
             env=[EnvSetting(e.condition, e.name, e.value) for e in env],
+            args=child.args,
         )
     )

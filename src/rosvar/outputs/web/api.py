@@ -16,9 +16,11 @@ from collections.abc import Callable, Mapping
 from http import HTTPStatus
 
 from rosvar.analyses.feature_model.model import FeatureKind
+from rosvar.analyses.query.parser import QueryError
 from rosvar.configuration.choices import Action, ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.session import Session
+from rosvar.outputs.web.inspection import Inspector
 from rosvar.outputs.web.sessions import DEFAULT_CAPACITY, SessionStore, Tab
 
 MAX_TEXT = 4096
@@ -30,12 +32,14 @@ Reply = dict[str, object]
 
 
 class ApiError(Exception):
-    """A request the API refuses: ``status`` is a 4xx code, ``message`` says why."""
+    """A request the API refuses: ``status`` is a 4xx code, ``message`` says why, ``extra``
+    fields of the answer say where (a query's error position)."""
 
-    def __init__(self, status: HTTPStatus, message: str) -> None:
+    def __init__(self, status: HTTPStatus, message: str, **extra: object) -> None:
         super().__init__(message)
         self.status = status
         self.message = message
+        self.extra = extra
 
 
 def _text(fields: Mapping[str, object], name: str) -> str:
@@ -97,7 +101,10 @@ class Api:
             ("POST", "/api/choose"): self._choose,
             ("POST", "/api/finish"): self._finish,
             **{("POST", f"/api/{name}"): self._stepper(step) for name, step in steps.items()},
+            ("POST", "/api/query"): self._query,
+            ("POST", "/api/checks"): self._checks,
         }
+        self._inspector = Inspector(configurator)
 
     def handle(self, method: str, path: str, query: Query, body: Body) -> Reply:
         route = self.routes.get((method, path))
@@ -158,6 +165,23 @@ class Api:
             return self._reply(key, tab, step(tab.session), known)
 
         return route
+
+    def _query(self, query: Query, body: Body) -> Reply:
+        """The elements a query selects under the tab's choices (docs/web.md)."""
+        _only(query, set())
+        _only(body, {"session", "expression"})
+        _key, tab = self._session(body)
+        try:
+            return self._inspector.query(_text(body, "expression"), tab.session.current())
+        except QueryError as error:
+            raise ApiError(HTTPStatus.BAD_REQUEST, str(error), position=error.col) from None
+
+    def _checks(self, query: Query, body: Body) -> Reply:
+        """The findings of ``rosvar check`` under the tab's choices."""
+        _only(query, set())
+        _only(body, {"session"})
+        _key, tab = self._session(body)
+        return self._inspector.checks(tab.session.current())
 
     # -- checks ------------------------------------------------------------------------------
     def _session(self, fields: Mapping[str, object]) -> tuple[str, Tab]:

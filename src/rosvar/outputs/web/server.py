@@ -15,6 +15,7 @@ from __future__ import annotations
 import ipaddress
 import json
 import sys
+from collections.abc import Mapping
 from concurrent.futures import ThreadPoolExecutor
 from http import HTTPStatus
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
@@ -211,7 +212,7 @@ class _Handler(BaseHTTPRequestHandler):
             else:
                 raise ApiError(HTTPStatus.NOT_FOUND, f"not found: {url.path}")
         except ApiError as error:
-            self._error(error.status, error.message)
+            self._error(error.status, error.message, error.extra)
 
     @staticmethod
     def _query(text: str) -> dict[str, str]:
@@ -263,5 +264,7 @@ class _Handler(BaseHTTPRequestHandler):
     def _send_asset(self, asset: Asset) -> None:
         self._send(HTTPStatus.OK, asset.body, asset.content_type, "no-cache")
 
-    def _error(self, status: HTTPStatus, message: str) -> None:
-        self._send_json(status, {"error": message})
+    def _error(
+        self, status: HTTPStatus, message: str, extra: Mapping[str, object] | None = None
+    ) -> None:
+        self._send_json(status, {"error": message, **(extra or {})})

@@ -8,6 +8,7 @@ import { ApiError, Client } from "./api.js";
 import { Bar } from "./bar.js";
 import { DetailsPanel } from "./details.js";
 import { GraphView } from "./graph.js";
+import { ChecksPanel, QueryBox } from "./inspect.js";
 import { FeatureTree } from "./tree.js";
 
 const $ = (id) => document.getElementById(id);
@@ -44,19 +45,25 @@ const details = new DetailsPanel($("details"), $("details-body"), $("details-clo
   unselect: () => graph.cy.$(":selected").unselect(),
 });
 
+const session = () => client.session;
+const query = new QueryBox({ input: $("query"), status: $("query-status"), list: $("query-results") }, session, graph);
+const checks = new ChecksPanel({ toggle: $("checks-toggle"), count: $("checks-count"), panel: $("checks"), list: $("checks-list") }, session, graph);
+
 // changes: what changed since the state rendered before (delta.js touched), null for all.
 function render(next, changes = null) {
   state = next;
   tree.update(state, changes?.features ?? null);
   graph.update(state, changes);
   bar.update(state);
+  query.update().catch((error) => bar.say(`Query: ${error.message}`, true));
+  checks.update().catch((error) => bar.say(`Checks: ${error.message}`, true));
   // body[data-step] counts rendered states: tests (and curious users) can wait for the next one
   document.body.dataset.step = String(Number(document.body.dataset.step ?? 0) + 1);
 }
 
 function showCounts() {
   const counts = graph.counts();
-  $("graph-counts").textContent = `${counts.nodes} nodes · ${counts.topics} topics`
+  $("graph-counts").textContent = `${counts.nodes} nodes · ${counts.topics} topics · ${counts.services} services/actions`
     + (graph.options.params ? ` · ${counts.params} params` : "") + ` · ${counts.undetermined} undetermined`
     + ` · drawn as ${counts.drawn}`;
 }
@@ -125,6 +132,6 @@ async function start() {
 }
 
 // A handle for the browser console and the end-to-end tests.
-window.rosvar = { graph, tree, act, details, get state() { return state; } };
+window.rosvar = { graph, tree, act, details, query, checks, get state() { return state; } };
 
 start();

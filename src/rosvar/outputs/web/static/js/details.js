@@ -10,6 +10,7 @@ import { shortPath, entryFile } from "./names.js";
 const SHOWN_APART = new Set(["id", "kind", "name", "presence", "condition", "filename", "line", "col",
                              "nodes", "group", "groupName"]);
 const PAGE = 50; // params listed at a time
+const EDGES = new Set(["publishers", "subscribers", "servers", "clients"]);
 
 // A node's remaps and env settings whose own condition is still open.
 function undetermined(settings) {
@@ -131,12 +132,17 @@ export class DetailsPanel {
         table.append(row("variant", `${at} of ${twins.length}; they differ in ${differences(twins).join(", ") || "their conditions"}`));
       }
     }
+    const names = new Map(state.graph.nodes.map((node) => [node.id, node.name]));
     if (element.nodes) {
-      const names = new Map(state.graph.nodes.map((node) => [node.id, node.name]));
       table.append(row("nodes", [...new Set(element.nodes.map((id) => names.get(id) ?? id))].join(", ") || "—"));
     }
     for (const [key, value] of Object.entries(element)) {
-      if (!SHOWN_APART.has(key) && key !== "unitId") table.append(row(key, cell(value, key)));
+      if (SHOWN_APART.has(key) || key === "unitId") continue;
+      // a name's publishers, subscribers, servers or clients: nodes, each when it uses it
+      const edges = EDGES.has(key) && Array.isArray(value);
+      table.append(row(key, edges ? value.map((edge) => `${names.get(edge.node) ?? edge.node}`
+        + (edge.condition ? ` (when ${edge.condition})` : "")).join(", ") || "—"
+        : key === "types" && Array.isArray(value) ? value.join(", ") || "—" : cell(value, key)));
     }
     const name = clashName(element.kind, element.name);
     const clashes = state.conflicts.filter((conflict) => conflict.names.includes(name));

@@ -35,6 +35,9 @@ const STYLE = [
   { selector: 'node[kind = "node"]', style: { shape: "ellipse", "background-color": "#fff", width: 26, height: 26 } },
   { selector: 'node[kind = "test"]', style: { shape: "ellipse", "background-color": "#fff", "border-style": "double", "border-width": 4, width: 26, height: 26 } },
   { selector: 'node[kind = "topic"]', style: { shape: "round-rectangle", "background-color": "#8ecae6", width: 24, height: 14 } },
+  { selector: 'node[kind = "service"]', style: { shape: "diamond", "background-color": "#b5e48c", width: 22, height: 22 } },
+  { selector: 'node[kind = "action"]', style: { shape: "hexagon", "background-color": "#cdb4db", width: 26, height: 18 } },
+  { selector: 'edge[kind = "service"], edge[kind = "action"]', style: { "target-arrow-shape": "triangle", "target-arrow-color": "#9aa3b5", "arrow-scale": 0.8 } },
   { selector: 'node[kind = "params"]', style: { shape: "tag", "background-color": "#ffd166", width: 22, height: 14, "font-size": 11 } },
   // boxes carry their label inside, sized to it
   { selector: 'node[kind = "group"], node[kind = "variants"], node[kind = "more"]', style: {
@@ -49,12 +52,18 @@ const STYLE = [
   { selector: ".undetermined", style: { "border-style": "dashed", "line-style": "dashed", "background-opacity": 0.7 } },
   { selector: "node.conflict", style: { "border-color": "#b42318", "border-width": 4, color: "#b42318" } },
   { selector: "node.match", style: { "border-color": "#2f6fdb", "border-width": 4 } },
+  { selector: "node.queried", style: { "border-color": "#d7191c", "border-width": 5, color: "#d7191c", "font-weight": "bold" } },
   { selector: ":selected", style: { "overlay-color": "#2f6fdb", "overlay-opacity": 0.18, "overlay-padding": 5 } },
   { selector: ".faded", style: { opacity: 0.15 } },
   { selector: ".hidden", style: { display: "none" } },
 ];
 
-const PREFIX = { node: "n:", test: "n:", topic: "t:", params: "p:", group: "g:", variants: "v:", more: "m:" };
+const PREFIX = { node: "n:", test: "n:", topic: "t:", service: "s:", action: "a:", params: "p:", group: "g:", variants: "v:", more: "m:" };
+
+// The kinds of names nodes are wired to, their lists in the graph, and the sides of their
+// edges (the list feeding the name, the list using it).
+const CHANNELS = [["topic", "topics"], ["service", "services"], ["action", "actions"]];
+const SIDES = { topic: ["publishers", "subscribers"], service: ["servers", "clients"], action: ["servers", "clients"] };
 
 export const GROUPINGS = {
   package: "package, then launch file",
@@ -164,6 +173,7 @@ export class GraphView {
     this.pages = new Map(); // group key → members shown
     this.focused = null; // unit id whose neighbourhood alone is shown
     this.needle = "";
+    this.marked = new Map(); // who marks (a query, a finding) → graph entry ids drawn in red
     this.state = null;
     this.units = new Map(); // unit id → {names: lowercased member names} for the search
     this.unitOf = new Map(); // graph entry id → the unit that draws it
@@ -376,19 +386,27 @@ export class GraphView {
     };
     emit(root);
 
-    // topics: one by one, wired to whatever unit draws each of their nodes
-    for (const topic of state.graph.topics.filter((t) => t.presence !== "absent")) {
-      const id = PREFIX.topic + topic.id;
-      wanted.push({ group: "nodes", classes: topic.presence, data: { id, kind: "topic", label: topic.name, owner: topic.id, element: { kind: "topic", ...topic } } });
-      unitOf.set(topic.id, id);
-      searchNames.set(id, [String(topic.name).toLowerCase()]);
-      // a unit whose nodes only subscribe (by their interfaces) reads from the topic
-      const reading = new Set((topic.subscribers || []).map((edge) => unitOf.get(edge.node)));
-      const writing = new Set((topic.publishers || []).map((edge) => unitOf.get(edge.node)));
-      for (const unit of new Set(topic.nodes.map((nodeId) => unitOf.get(nodeId)).filter(Boolean))) {
-        const reads = reading.has(unit) && !writing.has(unit);
-        wanted.push({ group: "edges", classes: topic.presence === "undetermined" ? "undetermined" : "",
-                      data: { id: `e:${topic.id}:${unit}`, owner: topic.id, source: reads ? id : unit, target: reads ? unit : id } });
+    // topics, services and actions: one by one, wired to whatever unit draws each of their
+    // nodes; an edge points the way data goes (publisher → topic → subscriber, client →
+    // service → server)
+    for (const [kind, list] of CHANNELS.map(([k, name]) => [k, state.graph[name] ?? []])) {
+      const [feeding, using] = SIDES[kind];
+      for (const named of list.filter((t) => t.presence !== "absent")) {
+        const id = PREFIX[kind] + named.id;
+        wanted.push({ group: "nodes", classes: named.presence, data: { id, kind, label: named.name, owner: named.id, element: { kind, ...named } } });
+        unitOf.set(named.id, id);
+        searchNames.set(id, [String(named.name).toLowerCase()]);
+        // a unit whose nodes only use the name (by their interfaces) is at its far end
+        const users = new Set((named[using] || []).map((edge) => unitOf.get(edge.node)));
+        const feeders = new Set((named[feeding] || []).map((edge) => unitOf.get(edge.node)));
+        for (const unit of new Set(named.nodes.map((nodeId) => unitOf.get(nodeId)).filter(Boolean))) {
+          const uses = users.has(unit) && !feeders.has(unit);
+          // a topic flows to its users, a request from a client to the service's server
+          const towardsUnit = kind === "topic" ? uses : !uses;
+          const [source, target] = towardsUnit ? [id, unit] : [unit, id];
+          wanted.push({ group: "edges", classes: named.presence === "undetermined" ? "undetermined" : "",
+                        data: { id: `e:${named.id}:${unit}`, kind, owner: named.id, source, target } });
+        }
       }
     }
     if (this.options.params) this.paramUnits(state, wanted, drawnNodes, unitOf, opened);
@@ -530,7 +548,7 @@ export class GraphView {
   grid(nodes, left, top, wide = false) {
     if (nodes.empty()) return top;
     const cy = this.cy;
-    const rank = { node: 0, test: 0, params: 1, variants: 2, group: 3, more: 4, topic: 5 };
+    const rank = { node: 0, test: 0, params: 1, variants: 2, group: 3, more: 4, topic: 5, service: 5, action: 5 };
     const order = nodes.sort((a, b) => (rank[a.data("kind")] - rank[b.data("kind")])
       || String(a.data("label")).localeCompare(String(b.data("label"))));
     const aspect = cy.width() / Math.max(1, cy.height());
@@ -610,10 +628,32 @@ export class GraphView {
     this.fit();
   }
 
+  // Draws the units of the graph entries `ids` in red, for `source` (each source replaces
+  // its own marks); with `fit`, the view moves to them.
+  highlight(source, ids, fit = false) {
+    this.marked.set(source, new Set(ids));
+    this.applyVisibility();
+    const marked = this.cy.nodes(".queried");
+    if (fit && marked.nonempty()) {
+      const positions = new Map(marked.map((node) => [node.id(), { ...node.position() }]));
+      this.cy.animate(this.viewportFor(positions, [...positions.keys()]), { duration: ANIMATION_MS });
+    }
+  }
+
+  // The units drawing the marked graph entries (a box, when it holds one).
+  markedUnits() {
+    const units = new Set();
+    for (const ids of this.marked.values()) {
+      for (const id of ids) if (this.unitOf.has(id)) units.add(this.unitOf.get(id));
+    }
+    return units;
+  }
+
   applyVisibility() {
     const cy = this.cy;
     cy.batch(() => {
-      cy.elements().removeClass("hidden faded match");
+      cy.elements().removeClass("hidden faded match queried");
+      for (const unit of this.markedUnits()) cy.getElementById(unit).addClass("queried");
       if (this.focused) {
         const centre = cy.getElementById(this.focused);
         cy.elements().difference(centre.closedNeighborhood()).addClass("hidden");
@@ -642,8 +682,9 @@ export class GraphView {
       if (item.presence === "undetermined") entries.undetermined += 1;
     }
     entries.topic = this.state.graph.topics.filter(shown).length;
+    entries.service = [...(this.state.graph.services ?? []), ...(this.state.graph.actions ?? [])].filter(shown).length;
     entries.param = this.options.params ? this.state.graph.params.filter(shown).length : 0;
-    return { nodes: entries.node, topics: entries.topic, params: entries.param,
+    return { nodes: entries.node, topics: entries.topic, services: entries.service, params: entries.param,
              undetermined: entries.undetermined, drawn: this.cy.nodes().length };
   }
 }

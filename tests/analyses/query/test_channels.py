@@ -1,0 +1,67 @@
+"""Topics, services and actions of the communication graph in queries."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from rosvar.analyses.query.channels import channel_collections
+from rosvar.analyses.query.evaluator import QueryEngine
+from rosvar.workspace.interfaces.extraction import extract_interfaces
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+TALKER = """\
+import rospy
+from std_msgs.msg import String
+from std_srvs.srv import Empty
+rospy.Publisher("chatter", String)
+rospy.Service("reset", Empty, None)
+"""
+LISTENER = """\
+import rospy
+from std_msgs.msg import String
+from std_srvs.srv import Empty
+rospy.Subscriber("chatter", String)
+rospy.ServiceProxy("reset", Empty)
+"""
+LAUNCH = """\
+  <arg name="second" default="false"/>
+  <node pkg="pkg" type="talker.py" name="one"/>
+  <node pkg="pkg" type="talker.py" name="two" if="$(arg second)"/>
+  <node pkg="pkg" type="listener.py" name="listener"><remap from="chatter" to="/in"/></node>
+"""
+
+
+def _engine(ws: LaunchWorkspace) -> QueryEngine:
+    ws.write("scripts/talker.py", TALKER)
+    ws.write("scripts/listener.py", LISTENER)
+    ws.launch("a.launch", LAUNCH)
+    analysis = ws.analysis()
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    return QueryEngine(analysis, collections=channel_collections(interfaces))
+
+
+def _answers(engine: QueryEngine, text: str) -> dict[str, str]:
+    return {r.element.name: engine.space.describe(r.condition) for r in engine.run(text)}
+
+
+def test_publishers_are_the_nodes_using_a_topic_with_their_conditions(ws: LaunchWorkspace) -> None:
+    engine = _engine(ws)
+    assert _answers(engine, "topics[len(self.publishers) > 1]") == {"/chatter": "second"}
+    assert _answers(engine, "topics[len(self.subscribers) == 0]") == {"/chatter": "true"}
+    # the listener's remap names /in: a topic with a subscriber and a remap, no publisher
+    assert _answers(engine, "topics[not self.publishers]") == {"/in": "true"}
+    assert _answers(engine, "topics[len(self.remapped_by) == 1]") == {"/in": "true"}
+    assert _answers(engine, "topics[self.types == ('std_msgs/String',)]") == {
+        "/chatter": "true",
+        "/in": "true",
+    }
+
+
+def test_services_and_actions_have_servers_and_clients(ws: LaunchWorkspace) -> None:
+    engine = _engine(ws)
+    assert _answers(engine, "services[len(self.servers) == 2]") == {"/reset": "second"}
+    [result] = engine.run("for s in services where len(s.clients) == 1 return s")
+    assert engine.to_json(result)["kind"] == "service"
+    assert _answers(engine, "actions") == {}

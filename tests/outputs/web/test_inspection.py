@@ -1,0 +1,179 @@
+"""Queries and checks in the web API: answered under a tab's choices, with graph entry ids."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import TYPE_CHECKING, Any
+
+import pytest
+
+from configuration.helpers import configurator
+from outputs.web.live import Live, running
+from outputs.web.test_app import App
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+
+def small_workspace(ws: LaunchWorkspace) -> None:
+    """A talker always, a listener when ``listen`` (its topic then has a subscriber, its
+    service a client)."""
+    header = "import rospy\nfrom std_msgs.msg import String\nfrom std_srvs.srv import Empty\n"
+    ws.write(
+        "scripts/talker.py",
+        f'{header}rospy.Publisher("chatter", String)\nrospy.Service("reset", Empty, None)\n',
+    )
+    ws.write(
+        "scripts/listener.py",
+        f'{header}rospy.Subscriber("chatter", String)\nrospy.ServiceProxy("/reset", Empty)\n',
+    )
+    ws.launch(
+        "a.launch",
+        '  <arg name="listen" default="true"/>\n'
+        '  <node pkg="pkg" type="talker.py" name="talker"/>\n'
+        '  <node pkg="pkg" type="listener.py" name="listener" if="$(arg listen)">'
+        '<remap from="other" to="/heard"/></node>',
+    )
+
+
+@pytest.fixture
+def small(ws: LaunchWorkspace) -> Iterator[Live]:
+    small_workspace(ws)
+    with running(configurator(ws, interfaces=True)) as live:
+        yield live
+
+
+def ask(live: Live, session: str, expression: str) -> list[dict[str, Any]]:
+    answer = live.post("/api/query", {"session": session, "expression": expression})
+    assert answer["query"] == expression
+    results: list[dict[str, Any]] = answer["results"]
+    return results
+
+
+def test_a_query_is_judged_under_the_tabs_choices(small: Live) -> None:
+    session = small.open()["session"]
+    [result] = ask(small, session, "nodes[self.name == '/listener']")
+    assert (result["kind"], result["launch_file"]) == ("node", "pkg/launch/a.launch")
+    assert (result["presence"], result["condition"]) == ("undetermined", "listen")
+    assert result["line"] == 4 and result["file"].endswith("a.launch")
+    state = small.call("GET", f"/api/state?session={session}").json()
+    [listener] = [n["id"] for n in state["graph"]["nodes"] if n["name"] == "/listener"]
+    assert result["ids"] == [listener]
+    [topic] = ask(small, session, "topics[self.name.startswith('/he')]")
+    assert topic["name"] == "/heard" and topic["ids"] == ["topic:/heard"]
+    [heard] = ask(small, session, "topics[len(self.subscribers) > 0]")  # the interfaces'
+    assert (heard["name"], heard["condition"], heard["ids"]) == (
+        "/chatter", "listen", ["topic:/chatter"],
+    )  # fmt: skip
+    feature = "a.launch:listen=false"
+    small.post("/api/choose", {"session": session, "action": "select", "feature": "a.launch"})
+    small.post("/api/choose", {"session": session, "action": "select", "feature": feature})
+    assert ask(small, session, "nodes[self.name == '/listener']") == []
+    [talker] = ask(small, session, "for n in nodes where n.name != '/listener' return n")
+    assert (talker["name"], talker["presence"], talker["condition"]) == ("/talker", "present", None)
+
+
+def test_a_query_the_parser_refuses_is_a_400_with_its_position(small: Live) -> None:
+    session = small.open()["session"]
+    reply = small.call("POST", "/api/query", {"session": session, "expression": "nodes[open(1)]"})
+    assert reply.status == 400
+    assert reply.json()["position"] == 6 and "functions" in reply.json()["error"]
+    unknown = small.call("POST", "/api/query", {"session": "nope", "expression": "nodes"})
+    assert unknown.status == 404
+    extra = small.call("POST", "/api/query", {"session": session, "expression": "x", "y": 1})
+    assert extra.status == 400
+
+
+def test_checks_follow_the_choices(small: Live) -> None:
+    session = small.open()["session"]
+    answer = small.post("/api/checks", {"session": session})
+    [unheard] = [f for f in answer["findings"] if f["check"] == "no-subscriber"]
+    assert (unheard["name"], unheard["severity"]) == ("/chatter", "note")
+    assert (unheard["presence"], unheard["condition"]) == ("undetermined", "¬listen")
+    assert unheard["example"] == {"a.launch:listen": "false"}
+    assert unheard["locations"][0]["line"] == 3 and unheard["launch_file"] == "pkg/launch/a.launch"
+    state = small.call("GET", f"/api/state?session={session}").json()
+    [talker] = [n["id"] for n in state["graph"]["nodes"] if n["name"] == "/talker"]
+    assert talker in unheard["ids"] and "topic:/chatter" in unheard["ids"]
+    assert answer["counts"]["note"] == len(
+        [f for f in answer["findings"] if f["severity"] == "note"]
+    )
+    small.post("/api/choose", {"session": session, "action": "select", "feature": "a.launch"})
+    feature = "a.launch:listen=true"
+    small.post("/api/choose", {"session": session, "action": "select", "feature": feature})
+    after = small.post("/api/checks", {"session": session})
+    assert "/chatter" not in {f["name"] for f in after["findings"]}
+
+
+def test_a_finding_reached_from_two_entry_files_is_shown_from_the_launched_one(
+    ws: LaunchWorkspace,
+) -> None:
+    small_workspace(ws)
+    ws.launch("b.launch", '  <node pkg="pkg" type="talker.py" name="talker"/>')
+    for name in ("a2.launch", "z.launch"):
+        ws.launch(name, '  <include file="$(find pkg)/launch/b.launch"/>')
+    with running(configurator(ws, interfaces=True)) as live:
+        session = live.open()["session"]
+        live.post("/api/choose", {"session": session, "action": "select", "feature": "z.launch"})
+        findings = live.post("/api/checks", {"session": session})["findings"]
+    [unheard] = [f for f in findings if f["name"] == "/chatter" and "b.launch" in str(f)]
+    assert (unheard["launch_file"], unheard["presence"]) == ("pkg/launch/z.launch", "present")
+    assert findings[0] is unheard  # a note, but the only one present
+
+
+# -- the page ------------------------------------------------------------------------------------
+def red_units(app: App) -> list[str]:
+    return sorted(app.page.evaluate("window.rosvar.graph.cy.nodes('.queried').map((n) => n.id())"))
+
+
+def drawn(app: App, entry: str) -> str:
+    unit: str = app.page.evaluate("(id) => window.rosvar.graph.drawing()[id]", entry)
+    return unit
+
+
+def test_the_query_box_marks_its_results_and_follows_the_choices(page: Any, small: Live) -> None:
+    app = App(page, small)
+    box = page.locator("#query")
+    box.fill("nodes[self.name == '/listener']")
+    box.press("Enter")
+    page.wait_for_selector("#query-results li.result")
+    assert page.locator("#query-status").text_content() == "1 result"
+    assert "when listen" in page.locator("#query-results li").first.text_content()
+    [listener] = [n["id"] for n in app.state["graph"]["nodes"] if n["name"] == "/listener"]
+    assert red_units(app) == [drawn(app, listener)]
+    app.choose("a.launch", "select")
+    app.wait_for_layout()
+    assert red_units(app) == ["n:" + listener]  # the file's nodes are drawn one by one
+    # the service is drawn too, requests going from its client to its server
+    [talker] = [n["id"] for n in app.state["graph"]["nodes"] if n["name"] == "/talker"]
+    edges = page.evaluate(
+        """window.rosvar.graph.cy.edges('[kind = "service"]')
+             .map((e) => [e.source().id(), e.target().id()])"""
+    )
+    service = "s:service:/reset"
+    assert sorted(edges) == [["n:" + listener, service], [service, "n:" + talker]]
+    answered = page.locator("body").get_attribute("data-query")
+    app.choose("a.launch:listen=false", "select")
+    page.wait_for_selector(f'body:not([data-query="{answered}"])')
+    assert page.locator("#query-status").text_content() == "0 results"
+    assert red_units(app) == [] and page.locator("#query-results").is_hidden()
+
+
+def test_the_checks_panel_lists_findings_and_marks_a_clicked_one(page: Any, small: Live) -> None:
+    app = App(page, small)
+    page.wait_for_selector("body[data-checks]")
+    page.locator("#checks-toggle").click()
+    finding = page.locator("#checks-list li", has_text="no launched node subscribes to")
+    assert "note" in finding.text_content() and "when ¬listen" in finding.text_content()
+    assert red_units(app) == []
+    finding.click()
+    [talker] = [n["id"] for n in app.state["graph"]["nodes"] if n["name"] == "/talker"]
+    assert drawn(app, talker) in red_units(app) and "t:topic:/chatter" in red_units(app)
+    answered = page.locator("body").get_attribute("data-checks")
+    app.choose("a.launch", "select")
+    page.wait_for_selector(f'body:not([data-checks="{answered}"])')
+    assert finding.get_attribute("class") == "finding note chosen"  # kept across steps
+    answered = page.locator("body").get_attribute("data-checks")
+    app.choose("a.launch:listen=true", "select")
+    page.wait_for_selector(f'body:not([data-checks="{answered}"])')
+    assert finding.count() == 0 and red_units(app) == []
