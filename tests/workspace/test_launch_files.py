@@ -13,7 +13,10 @@ ROS1, ROS2 = RosVersion.ROS1, RosVersion.ROS2
 XML, YAML, PYTHON = LaunchFormat.XML, LaunchFormat.YAML, LaunchFormat.PYTHON
 LAUNCH_XML = "<launch>\n  <arg name='a' default='1'/>\n</launch>\n"
 LAUNCH_YAML = "launch:\n- arg:\n    name: a\n"
-LAUNCH_PY = "from launch import LaunchDescription\n\ndef generate_launch_description():\n    return LaunchDescription([])\n"
+LAUNCH_PY = (
+    "from launch import LaunchDescription\n\n"
+    "def generate_launch_description():\n    return LaunchDescription([])\n"
+)
 HELPER_PY = "def helper():\n    return 1\n"
 TEST_PY = "def generate_test_description():\n    pass\n"
 PARAMS_YAML = "node:\n  ros__parameters:\n    rate: 10\n"

@@ -10,7 +10,7 @@ from rosvar.workspace.ros_version import RosVersion, build_tool_version, majorit
 
 
 def manifest(body: str) -> Entity:
-    text = f"<package format=\"3\"><name>p</name>{body}</package>"
+    text = f'<package format="3"><name>p</name>{body}</package>'
     root = parse_xml_bytes(text.encode(), "package.xml").root
     assert root is not None
     return root

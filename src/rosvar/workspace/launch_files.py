@@ -104,7 +104,6 @@ def launch_format(directory: str, name: str, version: RosVersion) -> LaunchForma
     return None
 
 
-
 # ``ros2 launch`` picks the frontend by extension; anything else is tried as XML.
 _EXTENSIONS = {".py": LaunchFormat.PYTHON, ".yaml": LaunchFormat.YAML, ".yml": LaunchFormat.YAML}
 

@@ -54,9 +54,9 @@ def test_ament_targets_and_components(tmp_path: Path) -> None:
     (tmp_path / "CMakeLists.txt").write_text(
         "project(cam)\n"
         "ament_auto_add_library(cam_component SHARED src/component.cpp src/util.cpp)\n"
-        "rclcpp_components_register_node(cam_component PLUGIN \"cam::Node\" EXECUTABLE cam_node)\n"
+        'rclcpp_components_register_node(cam_component PLUGIN "cam::Node" EXECUTABLE cam_node)\n'
         "ament_auto_add_executable(tool src/tool.cpp NO_TARGET_LINK_LIBRARIES)\n"
-        "rclcpp_components_register_node(cam_component PLUGIN \"cam::Other\")\n"
+        'rclcpp_components_register_node(cam_component PLUGIN "cam::Other")\n'
     )
     build = read_build(str(tmp_path), "cam")
     kinds = {name: target.kind for name, target in build.targets.items()}
@@ -73,7 +73,8 @@ def test_ament_targets_and_components(tmp_path: Path) -> None:
 
 def test_target_named_with_an_unknown_variable_is_vague(tmp_path: Path) -> None:
     (tmp_path / "CMakeLists.txt").write_text(
-        "project(p)\nset(KNOWN k)\nadd_executable(${KNOWN}_a a.cpp)\nadd_executable(${OTHER}_b b.cpp)\n"
+        "project(p)\nset(KNOWN k)\n"
+        "add_executable(${KNOWN}_a a.cpp)\nadd_executable(${OTHER}_b b.cpp)\n"
     )
     build = read_build(str(tmp_path), "p")
     assert set(build.targets) == {"k_a", "_b"}

@@ -215,13 +215,13 @@ class _Reader:
                 for w in words[1:]
                 if w not in _TARGET_OPTIONS and w not in _AUTO_OPTIONS
             ]
-            target = Target(words[0], TARGET_COMMANDS[name], [])
-            self.build.targets.setdefault(words[0], target).sources.extend(sources)
+            declared = Target(words[0], TARGET_COMMANDS[name], [])
+            self.build.targets.setdefault(words[0], declared).sources.extend(sources)
         elif name == COMPONENT_COMMAND and "EXECUTABLE" in words[1:-1]:
             # The executable runs the component library's plugin: its sources are the library's.
             executable = words[words.index("EXECUTABLE", 1) + 1]
-            target = Target(executable, TargetKind.EXECUTABLE, [], links=[words[0]])
-            self.build.targets.setdefault(executable, target)
+            component = Target(executable, TargetKind.EXECUTABLE, [], links=[words[0]])
+            self.build.targets.setdefault(executable, component)
         elif name == "target_link_libraries" and words:
             target = self.build.targets.get(words[0])
             if target is not None:
