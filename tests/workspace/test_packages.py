@@ -440,7 +440,7 @@ def test_mixed_workspace_is_refused_explicitly(tmp_path: Path) -> None:
     (diagnostic,) = workspace.diagnostics
     assert diagnostic.code == "workspace-mixed"
     assert diagnostic.severity == Severity.ERROR
-    assert "(old)" in diagnostic.message and "ROS2" in diagnostic.message
+    assert "(old)" in diagnostic.message and "read as ROS 2" in diagnostic.message
     assert diagnostic.location.file == str(old / "package.xml")
     names = sorted(os.path.basename(path) for path in workspace.launch_files)
     assert names == ["loose.launch.xml", "one.launch.xml", "two.launch.xml"]

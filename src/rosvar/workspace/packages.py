@@ -296,7 +296,7 @@ class _Discovery:
         more = f" and {len(others) - 5} more" if len(others) > 5 else ""
         self.sink.error(
             "workspace-mixed",
-            f"the workspace mixes ROS 1 and ROS 2 packages; it is read as {version.name} "
+            f"the workspace mixes ROS 1 and ROS 2 packages; it is read as {version.label} "
             f"(most of its packages), and the launch files of the other packages ({names}"
             f"{more}) are left out",
             Location(os.path.join(others[0].path, PACKAGE_FILE)),

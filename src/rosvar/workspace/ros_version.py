@@ -19,6 +19,11 @@ class RosVersion(StrEnum):
     ROS1 = "ros1"
     ROS2 = "ros2"
 
+    @property
+    def label(self) -> str:
+        """The name people write: ``ROS 1``."""
+        return f"ROS {self.value.removeprefix('ros')}"
+
 
 # Build tools by name; a prefix entry (ending in "_") covers the tool's variants
 # (ament_cmake_auto, ament_cmake_python, ...).
