@@ -428,6 +428,24 @@ def test_version_without_telling_packages(
     assert len(workspace.launch_files) == listed
 
 
+@pytest.mark.parametrize(
+    ("name", "expected"),
+    [
+        ("robot.launch.py", RosVersion.ROS2),
+        ("robot.yaml", RosVersion.ROS2),
+        ("robot.xml", RosVersion.ROS1),  # roslaunch reads any name given to it
+        ("robot.launch.xml", RosVersion.ROS1),
+    ],
+)
+def test_version_of_a_given_file_without_package(
+    tmp_path: Path, name: str, expected: RosVersion
+) -> None:
+    path = write(tmp_path / name, LAUNCH_PY)
+    workspace = discover([path], ros_package_path="", ament_prefix_path="")
+    assert workspace.ros_version == expected
+    assert workspace.launch_files == [str(path)]
+
+
 def test_mixed_workspace_is_refused_explicitly(tmp_path: Path) -> None:
     for name in ("one", "two"):
         package = make_package(tmp_path / name, manifest=ament_manifest(name))

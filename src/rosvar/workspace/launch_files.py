@@ -39,13 +39,18 @@ class LaunchFormat(StrEnum):
 
 @dataclass(frozen=True)
 class _Rule:
-    """Files named ``suffix`` (only in a ``launch/`` folder when ``in_launch_folder``) are
+    """Files named ``*SUFFIX`` (only in a ``launch/`` folder when ``in_launch_folder``) are
     launch files of ``format`` if ``confirm`` accepts them (None: the name suffices)."""
 
     format: LaunchFormat
-    suffix: str
+    suffixes: tuple[str, ...]
     in_launch_folder: bool = False
     confirm: Callable[[str], bool] | None = None
+
+    def names(self, directory: str, name: str) -> bool:
+        """Whether the rule is about this file (its confirmation aside)."""
+        in_folder = os.path.basename(directory) == LAUNCH_FOLDER
+        return name.endswith(self.suffixes) and (in_folder or not self.in_launch_folder)
 
 
 def _has_yaml_launch_root(path: str) -> bool:
@@ -62,34 +67,23 @@ def _defines_launch_description(path: str) -> bool:
         return False
 
 
-# The first rule whose name pattern matches decides; its confirmation may still refuse.
+# The first rule that names a file decides; its confirmation may still refuse.
 RULES: dict[RosVersion, tuple[_Rule, ...]] = {
     RosVersion.ROS1: (
-        _Rule(LaunchFormat.XML, ".launch"),
-        _Rule(LaunchFormat.XML, ".launch.xml"),
-        _Rule(LaunchFormat.XML, ".xml", confirm=is_launch_root),
+        _Rule(LaunchFormat.XML, (".launch", ".launch.xml")),
+        _Rule(LaunchFormat.XML, (".xml",), confirm=is_launch_root),
     ),
     RosVersion.ROS2: (
-        _Rule(LaunchFormat.XML, ".launch.xml"),
-        _Rule(LaunchFormat.YAML, ".launch.yaml"),
-        _Rule(LaunchFormat.YAML, ".launch.yml"),
-        _Rule(LaunchFormat.PYTHON, ".py", confirm=_defines_launch_description),
-        _Rule(LaunchFormat.XML, ".xml", in_launch_folder=True, confirm=is_launch_root),
-        _Rule(LaunchFormat.YAML, ".yaml", in_launch_folder=True, confirm=_has_yaml_launch_root),
-        _Rule(LaunchFormat.YAML, ".yml", in_launch_folder=True, confirm=_has_yaml_launch_root),
+        _Rule(LaunchFormat.XML, (".launch.xml",)),
+        _Rule(LaunchFormat.YAML, (".launch.yaml", ".launch.yml")),
+        _Rule(
+            LaunchFormat.PYTHON, (".launch.py", "_launch.py"), confirm=_defines_launch_description
+        ),
+        _Rule(LaunchFormat.PYTHON, (".py",), True, _defines_launch_description),
+        _Rule(LaunchFormat.XML, (".xml",), True, is_launch_root),
+        _Rule(LaunchFormat.YAML, (".yaml", ".yml"), True, _has_yaml_launch_root),
     ),
 }
-# Python launch files are named so (``*.launch.py``, ``*_launch.py``) or sit in ``launch/``.
-_PYTHON_NAMES = (".launch.py", "_launch.py")
-
-
-def _name_matches(rule: _Rule, directory: str, name: str) -> bool:
-    if not name.endswith(rule.suffix):
-        return False
-    in_folder = os.path.basename(directory) == LAUNCH_FOLDER
-    if rule.format == LaunchFormat.PYTHON:
-        return in_folder or name.endswith(_PYTHON_NAMES)
-    return in_folder or not rule.in_launch_folder
 
 
 def launch_format(directory: str, name: str, version: RosVersion) -> LaunchFormat | None:
@@ -97,7 +91,7 @@ def launch_format(directory: str, name: str, version: RosVersion) -> LaunchForma
     if name.startswith(".") or name == PACKAGE_FILE:
         return None  # editor backups, lock files, manifests
     for rule in RULES[version]:
-        if _name_matches(rule, directory, name):
+        if rule.names(directory, name):
             if rule.confirm is None or rule.confirm(os.path.join(directory, name)):
                 return rule.format
             return None

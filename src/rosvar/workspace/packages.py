@@ -168,9 +168,7 @@ class _Discovery:
         self.package_dirs: set[str] = set()
         # Launch files as each ROS would see them: which one applies is known at the end.
         self.launch_files: dict[RosVersion, set[str]] = {version: set() for version in RosVersion}
-        # The packages below the user's paths, whose build tools decide the workspace's ROS.
-        self.own: list[Package] = []
-        self.listing = False
+        self.given: set[str] = set()  # files given as paths: launch files of either ROS
 
     def add_package(self, directory: str) -> None:
         real = real_path(directory)
@@ -180,8 +178,6 @@ class _Discovery:
         manifest = os.path.join(directory, PACKAGE_FILE)
         name, version = self._read_manifest(manifest, directory)
         package = Package(name, directory, _read_executables(directory), version)
-        if self.listing:
-            self.own.append(package)
         first = self.packages.get(name)
         if first is None:
             self.packages[name] = package
@@ -277,19 +273,21 @@ class _Discovery:
                 self.add_package(os.path.join(share, name))
         return share
 
-    def ros_version(self) -> RosVersion:
-        """The packages' ROS; without packages that tell, the launch files' kinds."""
-        own = [package.ros_version for package in self.own if package.ros_version is not None]
-        decided = majority(own)
+    def ros_version(self, own: list[Package]) -> RosVersion:
+        """The ROS of ``own`` packages; without packages that tell, the launch files' kinds."""
+        decided = majority(p.ros_version for p in own if p.ros_version is not None)
         if decided is not None:
             return decided
         ros1, ros2 = self.launch_files[RosVersion.ROS1], self.launch_files[RosVersion.ROS2]
-        return RosVersion.ROS2 if ros2 - ros1 and not ros1 - ros2 else RosVersion.ROS1
+        # A given file votes by its extension: roslaunch reads only XML.
+        given_ros2 = {p for p in self.given if format_of(p, RosVersion.ROS2) != LaunchFormat.XML}
+        ros2_only = (ros2 - ros1) | given_ros2
+        return RosVersion.ROS2 if ros2_only and not ros1 - ros2 else RosVersion.ROS1
 
-    def refuse_mixed(self, version: RosVersion) -> set[str]:
-        """Report packages of the other ROS (an error: a workspace is one or the other);
-        their directories, whose launch files are left out."""
-        others = [p for p in self.own if p.ros_version not in (None, version)]
+    def refuse_mixed(self, own: list[Package], version: RosVersion) -> set[str]:
+        """Report ``own`` packages of the other ROS (an error: a workspace is one or the
+        other); their directories, whose launch files are left out."""
+        others = [p for p in own if p.ros_version not in (None, version)]
         if not others:
             return set()
         names = ", ".join(sorted(p.name for p in others)[:5])
@@ -324,7 +322,6 @@ def discover(
     """
     state = _Discovery()
     roots = [os.path.abspath(os.fspath(path)) for path in paths]
-    state.listing = True
     for root in roots:
         if os.path.isdir(root):
             inside = state.enclosing_package(root)
@@ -332,10 +329,11 @@ def discover(
         elif os.path.exists(root):
             for found in state.launch_files.values():
                 found.add(root)
+            state.given.add(root)
             state.enclosing_package(os.path.dirname(root))
         else:
             state.sink.error("path-missing", f"no such file or directory: {root}", Location(root))
-    state.listing = False
+    own = [*state.packages.values(), *state.shadowed]  # the user's: they decide the ROS
 
     dependency_roots = []
     for dep in deps:
@@ -362,8 +360,8 @@ def discover(
             if share is not None:
                 dependency_roots.append(share)
 
-    version = state.ros_version()
-    left_out = state.refuse_mixed(version)
+    version = state.ros_version(own)
+    left_out = state.refuse_mixed(own, version)
     workspace = Workspace(
         roots=roots,
         packages=state.packages,
