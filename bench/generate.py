@@ -33,14 +33,25 @@ itself conditional) and one ``<include>`` passing args. Includes chain the files
 in runs of ``UNIFORM_CHAIN`` and the last of a run includes the package's last file, the one
 file without an include, so chains stay short whatever the size.
 
+The *ros2* shape (:func:`generate_ros2`, ``--shape ros2``) is the ROS 2 workspace of issue 19:
+120 XML launch files with 1,500 args (12-13 per file: booleans, strings, numbers, ``<choice>``
+lists, a few required, defaults from other args and ``$(env)``) in ament_cmake packages of 10
+(``package.xml`` format 3, ``CMakeLists.txt`` with the executables, ``config/params.yaml``),
+with ``<let>``, ``<group>`` + ``<push-ros-namespace>``, ``<set_remap>``, ``<node>`` with
+params (inline and ``from=``) and remaps, ``if``/``unless``, and ``<include>`` of
+``$(find-pkg-share)`` paths with args. A file of level L (``index % 8``) includes one file of
+level L-1 and sometimes one further down, so the deepest include trees are 8 files deep, as
+in the largest public ROS 2 launch trees.
+
 Run as a script to write a workspace:
-``python bench/generate.py DIR N [--seed S] [--shape corpus|uniform]``.
+``python bench/generate.py DIR N [--seed S] [--shape corpus|uniform|ros2]``.
 """
 
 from __future__ import annotations
 
 import argparse
 import random
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -400,7 +411,288 @@ def generate_uniform(root: Path, n_files: int, seed: int = 0) -> list[Path]:
     return written
 
 
-SHAPES = {"corpus": generate_workspace, "uniform": generate_uniform}
+ROS2_FILES = 120  # the issue's size: the largest public ROS 2 launch trees
+ROS2_ARGS_PER_FILE = 12.5  # 1,500 args in 120 files
+ROS2_FILES_PER_PACKAGE = 10
+ROS2_PACKAGES_PER_SYSTEM = 3
+ROS2_MAX_LEVEL = 7  # include chains of up to 8 files
+ROS2_SECOND_INCLUDE_RATE = 0.4  # a second, shallower include: trees, not only chains
+ROS2_REQUIRED_RATE = 0.05
+ROS2_BOOLS = (
+    "use_sim_time", "use_rviz", "use_lidar", "use_camera", "use_imu", "use_gps",
+    "use_teleop", "use_nav", "use_slam", "use_composition", "use_respawn", "use_diagnostics",
+)  # fmt: skip
+ROS2_STRINGS = (
+    ("namespace", "robot"), ("robot_name", "rover"), ("base_frame", "base_link"),
+    ("odom_frame", "odom"), ("map_frame", "map"), ("scan_topic", "scan"),
+    ("cmd_vel_topic", "cmd_vel"), ("log_level", "info"), ("serial_port", "/dev/ttyUSB0"),
+    ("world_frame", "world"),
+)  # fmt: skip
+ROS2_NUMBERS = (("rate", "10.0"), ("timeout", "0.5"), ("max_speed", "1.0"), ("queue", "10"))
+ROS2_CHOICES = (
+    ("mode", ("fast", "balanced", "accurate")),
+    ("robot_model", ("a200", "j100", "w200")),
+    ("lidar_model", ("vlp16", "ouster", "hokuyo")),
+    ("controller", ("diff_drive", "ackermann")),
+)
+ROS2_STEMS = (
+    "bringup", "robot", "drivers", "sensors", "lidar", "camera", "localization",
+    "navigation", "control", "teleop",
+)  # fmt: skip
+
+
+@dataclass(frozen=True)
+class _Ros2Arg:
+    name: str
+    default: str | None  # None: the includer (or the command line) must give it
+    values: tuple[str, ...]  # what an includer may pass: ``choices``, booleans, others
+    choices: bool = False
+
+
+@dataclass(frozen=True)
+class _Ros2Plan:
+    index: int
+    package: str
+    name: str
+    level: int
+    args: tuple[_Ros2Arg, ...]
+
+    @property
+    def share_path(self) -> str:
+        return f"$(find-pkg-share {self.package})/launch/{self.name}"
+
+
+def _ros2_package(number: int) -> str:
+    return f"ros2_pkg_{number:03d}"
+
+
+def _ros2_args(rng: random.Random, count: int) -> tuple[_Ros2Arg, ...]:
+    pool: list[_Ros2Arg] = [_Ros2Arg(name, rng.choice(("true", "false")), ("true", "false"))
+                            for name in ROS2_BOOLS]  # fmt: skip
+    pool += [_Ros2Arg(name, value, (f"{value}_a", f"{value}_b")) for name, value in ROS2_STRINGS]
+    pool += [_Ros2Arg(name, value, ("1", "20")) for name, value in ROS2_NUMBERS]
+    pool += [_Ros2Arg(name, values[0], values, True) for name, values in ROS2_CHOICES]
+    chosen = rng.sample(pool, count)
+    # namespace first when present: other defaults may refer to it
+    chosen.sort(key=lambda arg: arg.name != "namespace")
+    args = []
+    for arg in chosen:
+        default = arg.default
+        if rng.random() < ROS2_REQUIRED_RATE:
+            default = None
+        elif arg.name == "map_frame" and chosen[0].name == "namespace":
+            default = "$(var namespace)/map"  # a default built from another arg
+        elif arg.name == "log_level":
+            default = "$(env ROS_LOG_LEVEL info)"
+        args.append(_Ros2Arg(arg.name, default, arg.values, arg.choices))
+    return tuple(args)
+
+
+def _ros2_plan(n_files: int, seed: int) -> list[_Ros2Plan]:
+    total_args = round(n_files * ROS2_ARGS_PER_FILE)
+    base, extra = divmod(total_args, n_files)
+    plans = []
+    for index in range(n_files):
+        rng = random.Random(f"ros2-plan:{seed}:{index}")
+        number, position = divmod(index, ROS2_FILES_PER_PACKAGE)
+        name = f"{ROS2_STEMS[position % len(ROS2_STEMS)]}_{position:02d}.launch.xml"
+        level = index % (ROS2_MAX_LEVEL + 1)
+        args = _ros2_args(rng, base + (index < extra))
+        plans.append(_Ros2Plan(index, _ros2_package(number), name, level, args))
+    return plans
+
+
+def _ros2_includes(plans: list[_Ros2Plan], plan: _Ros2Plan, rng: random.Random) -> list[_Ros2Plan]:
+    """One file a level down (so a level-L file roots an include tree L+1 deep), sometimes
+    one more further down; from this package or the previous one of its system."""
+    if plan.level == 0:
+        return []
+    number = plan.index // ROS2_FILES_PER_PACKAGE
+    first = number - number % ROS2_PACKAGES_PER_SYSTEM
+    packages_total = (len(plans) + ROS2_FILES_PER_PACKAGE - 1) // ROS2_FILES_PER_PACKAGE
+    in_system = min(ROS2_PACKAGES_PER_SYSTEM, packages_total - first)
+    previous = first + (number - first - 1) % in_system
+    candidates = [
+        other
+        for package in dict.fromkeys((number, previous))
+        for other in plans[
+            package * ROS2_FILES_PER_PACKAGE : (package + 1) * ROS2_FILES_PER_PACKAGE
+        ]
+    ]
+    below = [other for other in candidates if other.level == plan.level - 1]
+    chosen = [rng.choice(below)]
+    further = [other for other in candidates if other.level < plan.level - 1]
+    if further and rng.random() < ROS2_SECOND_INCLUDE_RATE:
+        chosen.append(rng.choice(further))
+    return chosen
+
+
+def _ros2_condition(rng: random.Random, bools: list[_Ros2Arg], rate: float) -> str:
+    if not bools or rng.random() >= rate:
+        return ""
+    return f' {rng.choice(("if", "if", "unless"))}="$(var {rng.choice(bools).name})"'
+
+
+def _ros2_value(rng: random.Random, args: dict[str, _Ros2Arg], wanted: str, fallback: str) -> str:
+    return f"$(var {wanted})" if wanted in args else fallback
+
+
+def _ros2_node(out: _Writer, rng: random.Random, depth: int, plan: _Ros2Plan, number: int) -> None:
+    args = {arg.name: arg for arg in plan.args}
+    bools = [arg for arg in plan.args if arg.values == ("true", "false")]
+    executable = rng.choice(EXECUTABLES)
+    name = f"{executable}_{number}"
+    if "robot_name" in args and rng.random() < 0.4:
+        name = f"$(var robot_name)_{name}"
+    condition = _ros2_condition(rng, bools, 0.4)
+    out.add(depth, f'<node pkg="{plan.package}" exec="{executable}" name="{name}" '
+                   f'output="screen"{condition}>')  # fmt: skip
+    sim_time = _ros2_value(rng, args, "use_sim_time", "false")
+    out.add(depth + 1, f'<param name="use_sim_time" value="{sim_time}"/>')
+    frame = _ros2_value(rng, args, "base_frame", "base_link")
+    out.add(depth + 1, f'<param name="frame_id" value="$(var frame_prefix){frame}"/>')
+    rate = _ros2_value(rng, args, "rate", str(rng.randint(1, 50)))
+    out.add(depth + 1, f'<param name="rate" value="{rate}"/>')
+    if rng.random() < 0.5:
+        out.add(depth + 1, f'<param from="$(find-pkg-share {plan.package})/config/params.yaml"/>')
+    scan = _ros2_value(rng, args, "scan_topic", "scan")
+    out.add(depth + 1, f'<remap from="scan" to="{scan}"/>')
+    if rng.random() < 0.5:
+        out.add(
+            depth + 1,
+            f'<remap from="cmd_vel" to="{_ros2_value(rng, args, "cmd_vel_topic", "cmd_vel")}"/>',
+        )
+    out.add(depth, "</node>")
+
+
+def _ros2_include(out: _Writer, rng: random.Random, plan: _Ros2Plan, target: _Ros2Plan) -> None:
+    bools = [arg for arg in plan.args if arg.values == ("true", "false")]
+    own = {arg.name for arg in plan.args}
+    out.add(1, f'<include file="{target.share_path}"{_ros2_condition(rng, bools, 0.35)}>')
+    for arg in target.args:
+        if arg.default is not None and rng.random() < 0.4:
+            continue  # the included file's default stays
+        if arg.name in own and rng.random() < 0.7:
+            value = f"$(var {arg.name})"
+        else:
+            value = rng.choice(arg.values)
+        out.add(2, f'<arg name="{arg.name}" value="{value}"/>')
+    out.add(1, "</include>")
+
+
+def _ros2_launch(plans: list[_Ros2Plan], plan: _Ros2Plan, seed: int) -> str:
+    rng = random.Random(f"ros2-file:{seed}:{plan.index}")
+    args = {arg.name: arg for arg in plan.args}
+    bools = [arg for arg in plan.args if arg.values == ("true", "false")]
+    out = _Writer()
+    out.add(0, '<?xml version="1.0"?>')
+    out.add(0, f"<!-- Synthetic ROS 2 launch file (bench/generate.py), level {plan.level}. -->")
+    out.add(0, "<launch>")
+    for arg in plan.args:
+        default = "" if arg.default is None else f' default="{arg.default}"'
+        described = f' description="{arg.name.replace("_", " ")}"'
+        if arg.choices:
+            out.add(1, f'<arg name="{arg.name}"{default}{described}>')
+            for value in arg.values:
+                out.add(2, f'<choice value="{value}"/>')
+            out.add(1, "</arg>")
+        else:
+            out.add(1, f'<arg name="{arg.name}"{default}{described}/>')
+    prefix = _ros2_value(rng, args, "robot_name", "robot")
+    out.add(1, f'<let name="frame_prefix" value="{prefix}_"/>')
+    for target in _ros2_includes(plans, plan, rng):
+        out.add(0, "")
+        _ros2_include(out, rng, plan, target)
+    number = 0
+    for _ in range(rng.randint(1, 2)):
+        out.add(0, "")
+        out.add(1, f"<group{_ros2_condition(rng, bools, 0.5)}>")
+        namespace = _ros2_value(rng, args, "namespace", f"ns_{plan.index % 9}")
+        out.add(2, f'<push-ros-namespace namespace="{namespace}"/>')
+        if rng.random() < 0.3:
+            out.add(2, f'<set_remap from="tf" to="/{namespace}/tf"/>')
+        for _ in range(rng.randint(1, 2)):
+            _ros2_node(out, rng, 2, plan, number)
+            number += 1
+        out.add(1, "</group>")
+    if rng.random() < 0.5:
+        out.add(0, "")
+        _ros2_node(out, rng, 1, plan, number)
+    out.add(0, "</launch>")
+    return "\n".join(out.lines) + "\n"
+
+
+def _ros2_package_xml(name: str, depends: list[str]) -> str:
+    lines = [
+        '<?xml version="1.0"?>',
+        '<package format="3">',
+        f"  <name>{name}</name>",
+        "  <version>0.0.1</version>",
+        f"  <description>Synthetic ROS 2 package {name} for rosvar benchmarks.</description>",
+        '  <maintainer email="bench@example.com">bench</maintainer>',
+        "  <license>Apache-2.0</license>",
+        "  <buildtool_depend>ament_cmake</buildtool_depend>",
+        "  <depend>rclcpp</depend>",
+        *(f"  <exec_depend>{depend}</exec_depend>" for depend in depends),
+        "  <export>",
+        "    <build_type>ament_cmake</build_type>",
+        "  </export>",
+        "</package>",
+    ]
+    return "\n".join(lines) + "\n"
+
+
+def _ros2_cmake(name: str) -> str:
+    targets = " ".join(EXECUTABLES)
+    lines = [
+        "cmake_minimum_required(VERSION 3.8)",
+        f"project({name})",
+        "find_package(ament_cmake REQUIRED)",
+        "find_package(rclcpp REQUIRED)",
+        *(f"add_executable({exe} src/{exe}.cpp)" for exe in EXECUTABLES),
+        f"install(TARGETS {targets} DESTINATION lib/${{PROJECT_NAME}})",
+        "install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})",
+        "ament_package()",
+    ]
+    return "\n".join(lines) + "\n"
+
+
+_ROS2_PARAMS_YAML = """\
+/**:
+  ros__parameters:
+    max_velocity: 1.0
+    controller_frequency: 20.0
+    sensors: [front_lidar, imu]
+"""
+
+
+def generate_ros2(root: Path, n_files: int = ROS2_FILES, seed: int = 0) -> list[Path]:
+    """Write a colcon workspace's ``src`` of ``n_files`` ROS 2 XML launch files below
+    ``root``; returns their paths."""
+    plans = _ros2_plan(n_files, seed)
+    texts = {plan.index: _ros2_launch(plans, plan, seed) for plan in plans}
+    written: list[Path] = []
+    for number in range((n_files + ROS2_FILES_PER_PACKAGE - 1) // ROS2_FILES_PER_PACKAGE):
+        name = _ros2_package(number)
+        package = root / name
+        (package / "launch").mkdir(parents=True, exist_ok=True)
+        (package / "config").mkdir(exist_ok=True)
+        mine = plans[number * ROS2_FILES_PER_PACKAGE : (number + 1) * ROS2_FILES_PER_PACKAGE]
+        depends = sorted(
+            {p for plan in mine for p in re.findall(r"find-pkg-share (\w+)", texts[plan.index])}
+            - {name}
+        )
+        (package / "package.xml").write_text(_ros2_package_xml(name, depends), encoding="utf-8")
+        (package / "CMakeLists.txt").write_text(_ros2_cmake(name), encoding="utf-8")
+        (package / "config" / "params.yaml").write_text(_ROS2_PARAMS_YAML, encoding="utf-8")
+    for plan in plans:
+        path = root / plan.package / "launch" / plan.name
+        path.write_text(texts[plan.index], encoding="utf-8")
+        written.append(path)
+    return written
+
+
+SHAPES = {"corpus": generate_workspace, "uniform": generate_uniform, "ros2": generate_ros2}
 
 
 def main() -> None:

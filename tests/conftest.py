@@ -28,6 +28,9 @@ if str(TESTS) not in sys.path:
     sys.path.insert(0, str(TESTS))
 
 from differential.harness import compare  # noqa: E402
+
+# Third-party launch files (``tests/data/ros2``): data, although some are named ``test_*.py``.
+collect_ignore = ["data"]
 from oracle.client import shared_oracle  # noqa: E402
 
 PACKAGE_XML = """<?xml version="1.0"?>

@@ -67,6 +67,25 @@ BUILD_FILES = {
         "install(PROGRAMS tools/c.sh DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n",
         {"drv_node", "upper_case", "a.py", "b", "c.sh"},
     ),
+    "ament_cmake": (
+        "CMakeLists.txt",
+        "cmake_minimum_required(VERSION 3.8)\nproject(drv)\nfind_package(ament_cmake REQUIRED)\n"
+        "add_library(drv_component SHARED src/component.cpp)\n"
+        "rclcpp_components_register_node(drv_component\n"
+        '  PLUGIN "drv::Driver"\n  EXECUTABLE driver_node)\n'
+        'rclcpp_components_register_nodes(drv_component "drv::Other")\n'
+        "install(TARGETS drv_component DESTINATION lib/${PROJECT_NAME})\nament_package()\n",
+        {"driver_node"},
+    ),
+    "ament_cmake_auto": (
+        "CMakeLists.txt",
+        "project(drv)\nfind_package(ament_cmake_auto REQUIRED)\n"
+        "ament_auto_find_build_dependencies()\n"
+        "ament_auto_add_library(${PROJECT_NAME}_lib SHARED src/lib.cpp)\n"
+        "ament_auto_add_executable(${PROJECT_NAME}_node src/main.cpp)\n"
+        "ament_auto_add_executable(globbed DIRECTORY src/globbed)\nament_auto_package()\n",
+        {"drv_node", "globbed"},
+    ),
     "setup.py over lines": (
         "setup.py",
         "from setuptools import setup\n"

@@ -9,6 +9,8 @@ import pytest
 
 from rosvar.diagnostics import Severity
 from rosvar.workspace import Package, Workspace, discover
+from rosvar.workspace.launch_files import LaunchFormat
+from rosvar.workspace.ros_version import RosVersion
 
 CORPUS = Path(__file__).resolve().parents[2] / ".." / "shared" / "corpus"
 LAUNCH = "<launch>\n  <arg name='a'/>\n</launch>\n"
@@ -343,3 +345,189 @@ def test_corpus_husky_with_external_as_deps() -> None:
     assert workspace.find("gazebo_ros") is not None
     alone = discover([corpus / "husky"], ros_package_path="")
     assert workspace.launch_files == alone.launch_files
+
+
+def ament_manifest(name: str, build_type: str = "ament_cmake") -> str:
+    return (
+        f'<?xml version="1.0"?>\n<package format="3">\n  <name>{name}</name>\n'
+        f"  <buildtool_depend>{build_type}</buildtool_depend>\n"
+        f"  <export><build_type>{build_type}</build_type></export>\n</package>\n"
+    )
+
+
+CATKIN_MANIFEST = (
+    '<package format="2"><name>{}</name><buildtool_depend>catkin</buildtool_depend></package>'
+)
+LAUNCH_PY = "def generate_launch_description():\n    return None\n"
+
+
+def test_ros2_workspace(tmp_path: Path) -> None:
+    src = tmp_path / "ws" / "src"
+    bringup = make_package(src / "bringup", manifest=ament_manifest("bringup"))
+    tools = make_package(src / "tools", manifest=ament_manifest("tools", "ament_python"))
+    write(bringup / "launch" / "robot.launch.py", LAUNCH_PY)
+    write(bringup / "launch" / "sim.launch.xml")
+    write(bringup / "launch" / "legacy.launch")  # a ROS 1 leftover: not a ROS 2 entry point
+    write(bringup / "launch" / "utils.py", "X = 1\n")
+    write(tools / "tools" / "teleop_launch.py", LAUNCH_PY)
+    write(tools / "launch" / "teleop.yaml", "launch:\n- arg: {name: a}\n")
+    write(src / "ignored" / "COLCON_IGNORE", "")
+    make_package(src / "ignored" / "pkg", manifest=ament_manifest("ignored_pkg"))
+    workspace = discover([src], ros_package_path="", ament_prefix_path="")
+    assert workspace.ros_version == RosVersion.ROS2
+    assert set(workspace.packages) == {"bringup", "tools"}
+    assert workspace.packages["tools"].ros_version == RosVersion.ROS2
+    relative = [os.path.relpath(path, src) for path in workspace.launch_files]
+    assert relative == [
+        "bringup/launch/robot.launch.py",
+        "bringup/launch/sim.launch.xml",
+        "tools/launch/teleop.yaml",
+        "tools/tools/teleop_launch.py",
+    ]
+    assert [workspace.launch_format(path) for path in workspace.launch_files] == [
+        LaunchFormat.PYTHON,
+        LaunchFormat.XML,
+        LaunchFormat.YAML,
+        LaunchFormat.PYTHON,
+    ]
+    assert workspace.diagnostics == []
+    # From source, a package's share folder is its own: colcon installs launch/ and config/.
+    assert workspace.find_share("bringup") == str(bringup)
+    assert workspace.find_prefix("bringup") is None
+
+
+def test_ros1_workspace_keeps_roslaunch_rules(tmp_path: Path) -> None:
+    pkg = make_package(tmp_path / "pkg", manifest=CATKIN_MANIFEST.format("pkg"))
+    write(pkg / "launch" / "a.launch")
+    write(pkg / "launch" / "b.launch.py", LAUNCH_PY)
+    workspace = discover([tmp_path], ros_package_path="", ament_prefix_path="")
+    assert workspace.ros_version == RosVersion.ROS1
+    assert workspace.packages["pkg"].ros_version == RosVersion.ROS1
+    assert workspace.launch_files == [str(pkg / "launch" / "a.launch")]
+    assert workspace.launch_format(workspace.launch_files[0]) == LaunchFormat.XML
+
+
+@pytest.mark.parametrize(
+    ("files", "expected", "listed"),
+    [
+        (["a.launch.py"], RosVersion.ROS2, 1),
+        (["a.launch.yaml", "b.launch.xml"], RosVersion.ROS2, 2),
+        (["a.launch.py", "b.launch"], RosVersion.ROS1, 1),  # a ROS 1 file: not ROS 2
+        (["b.launch.xml"], RosVersion.ROS1, 1),
+        ([], RosVersion.ROS1, 0),
+    ],
+)
+def test_version_without_telling_packages(
+    tmp_path: Path, files: list[str], expected: RosVersion, listed: int
+) -> None:
+    make_package(tmp_path / "plain", "plain")  # format 2, no build tool
+    for name in files:
+        write(tmp_path / "plain" / "launch" / name, LAUNCH_PY if name.endswith(".py") else LAUNCH)
+    workspace = discover([tmp_path], ros_package_path="", ament_prefix_path="")
+    assert workspace.ros_version == expected
+    assert len(workspace.launch_files) == listed
+
+
+@pytest.mark.parametrize(
+    ("name", "expected"),
+    [
+        ("robot.launch.py", RosVersion.ROS2),
+        ("robot.yaml", RosVersion.ROS2),
+        ("robot.xml", RosVersion.ROS1),  # roslaunch reads any name given to it
+        ("robot.launch.xml", RosVersion.ROS1),
+    ],
+)
+def test_version_of_a_given_file_without_package(
+    tmp_path: Path, name: str, expected: RosVersion
+) -> None:
+    path = write(tmp_path / name, LAUNCH_PY)
+    workspace = discover([path], ros_package_path="", ament_prefix_path="")
+    assert workspace.ros_version == expected
+    assert workspace.launch_files == [str(path)]
+
+
+def test_mixed_workspace_is_refused_explicitly(tmp_path: Path) -> None:
+    for name in ("one", "two"):
+        package = make_package(tmp_path / name, manifest=ament_manifest(name))
+        write(package / "launch" / f"{name}.launch.xml")
+    old = make_package(tmp_path / "old", manifest=CATKIN_MANIFEST.format("old"))
+    write(old / "launch" / "old.launch.xml")
+    write(tmp_path / "loose.launch.xml")  # in no package: kept
+    workspace = discover([tmp_path], ros_package_path="", ament_prefix_path="")
+    assert workspace.ros_version == RosVersion.ROS2
+    (diagnostic,) = workspace.diagnostics
+    assert diagnostic.code == "workspace-mixed"
+    assert diagnostic.severity == Severity.ERROR
+    assert "(old)" in diagnostic.message and "read as ROS 2" in diagnostic.message
+    assert diagnostic.location.file == str(old / "package.xml")
+    names = sorted(os.path.basename(path) for path in workspace.launch_files)
+    assert names == ["loose.launch.xml", "one.launch.xml", "two.launch.xml"]
+    assert "old" in workspace.packages  # still a package: $(find-pkg-share old) resolves
+
+
+def test_ament_prefix_path(tmp_path: Path) -> None:
+    underlay = tmp_path / "opt" / "ros" / "jazzy"
+    nav = make_package(underlay / "share" / "nav2_bringup", manifest=ament_manifest("nav2_bringup"))
+    write(nav / "launch" / "nav.launch.py", LAUNCH_PY)
+    (underlay / "share" / "ament_index" / "resource_index").mkdir(parents=True)  # no package
+    overlay = tmp_path / "ws" / "install" / "mine"
+    make_package(overlay / "share" / "mine", manifest=ament_manifest("mine"))
+    own = make_package(tmp_path / "ws" / "src" / "app", manifest=ament_manifest("app"))
+    write(own / "launch" / "app.launch.py", LAUNCH_PY)
+    prefixes = os.pathsep.join([str(overlay), str(underlay), str(tmp_path / "missing")])
+    workspace = discover([own], ros_package_path="", ament_prefix_path=prefixes)
+    assert set(workspace.packages) == {"app", "mine", "nav2_bringup"}
+    assert workspace.launch_files == [str(own / "launch" / "app.launch.py")]
+    assert workspace.dependency_roots == [str(overlay / "share"), str(underlay / "share")]
+    assert workspace.find_share("nav2_bringup") == str(nav)
+    assert workspace.find_prefix("nav2_bringup") == str(underlay)
+    assert workspace.find_prefix("mine") == str(overlay)
+    assert workspace.find_prefix("unknown") is None
+    assert workspace.confinement().check(str(nav / "launch" / "nav.launch.py"))
+
+
+def test_ament_prefix_path_from_the_environment(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    make_package(tmp_path / "prefix" / "share" / "dep", manifest=ament_manifest("dep"))
+    monkeypatch.setenv("AMENT_PREFIX_PATH", str(tmp_path / "prefix"))
+    workspace = discover([], ros_package_path="")
+    assert set(workspace.packages) == {"dep"}
+
+
+ROS2_DATA = Path(__file__).resolve().parents[1] / "data" / "ros2"
+# repository folder: packages, Python launch files, XML launch files (tests/data/ros2/README.md)
+ROS2_REPOSITORIES = {
+    "husky": (10, 10, 0),
+    "clearpath_common": (11, 12, 0),
+    "ros2_control_demos": (20, 48, 5),
+    "slam_toolbox": (1, 6, 0),
+    "realsense-ros": (3, 9, 0),
+    "moveit2_tutorials": (1, 24, 0),
+}
+
+
+@pytest.mark.parametrize(("repository", "counts"), ROS2_REPOSITORIES.items())
+def test_real_ros2_repositories(repository: str, counts: tuple[int, int, int]) -> None:
+    workspace = discover([ROS2_DATA / repository], ros_package_path="", ament_prefix_path="")
+    assert workspace.ros_version == RosVersion.ROS2
+    assert workspace.diagnostics == []
+    formats = [workspace.launch_format(path) for path in workspace.launch_files]
+    found = (
+        len(workspace.packages),
+        formats.count(LaunchFormat.PYTHON),
+        formats.count(LaunchFormat.XML),
+    )
+    assert found == counts
+    assert all(package.ros_version == RosVersion.ROS2 for package in workspace.packages.values())
+
+
+def test_real_ros2_repositories_together() -> None:
+    """All six as one colcon workspace: every launch file of each, and the ROS 1 leftovers
+    (Husky's and MoveIt's ``*.launch``) still left out."""
+    workspace = discover([ROS2_DATA], ros_package_path="", ament_prefix_path="")
+    assert workspace.ros_version == RosVersion.ROS2
+    assert len(workspace.launch_files) == sum(p + x for _, p, x in ROS2_REPOSITORIES.values())
+    assert not [path for path in workspace.launch_files if path.endswith(".launch")]
+    assert workspace.diagnostics == []  # no package name is shared between the repositories
+    assert workspace.find_share("husky_control") == str(ROS2_DATA / "husky" / "husky_control")

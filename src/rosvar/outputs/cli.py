@@ -81,7 +81,8 @@ def _print_json(document: object) -> None:
 
 def _workspace(paths: Sequence[str], options: argparse.Namespace) -> Workspace:
     """The packages and launch files below ``paths``; those below ``--deps`` (then the
-    environment's ROS_PACKAGE_PATH) resolve ``$(find)`` but add no launch files."""
+    environment's ROS_PACKAGE_PATH and AMENT_PREFIX_PATH) resolve ``$(find)`` but add no
+    launch files."""
     from rosvar.workspace import discover
 
     workspace = discover(paths, deps=options.deps, allow_outside=options.allow_outside_workspace)
@@ -475,7 +476,7 @@ def cmd_serve(options: argparse.Namespace) -> int:
 
 PATHS_HELP = (
     "folders to search for ROS packages and launch files (a workspace, a system's folder); "
-    "packages on ROS_PACKAGE_PATH are found too"
+    "packages on ROS_PACKAGE_PATH and AMENT_PREFIX_PATH are found too"
 )
 ENV_HELP = (
     "an environment variable of the configuration (repeatable); variables not given are "
@@ -516,13 +517,14 @@ def _workspace_options(command: argparse.ArgumentParser) -> None:
         default=[],
         metavar="PATH",
         help="packages below PATH resolve $(find) and executables but add no launch files "
-        "(e.g. /opt/ros/noetic/share; repeatable; ROS_PACKAGE_PATH is read after them)",
+        "(e.g. /opt/ros/noetic/share; repeatable; ROS_PACKAGE_PATH, then AMENT_PREFIX_PATH, "
+        "are read after them)",
     )
     command.add_argument(
         "--allow-outside-workspace",
         action="store_true",
-        help="read files (includes, textfile, rosparam) outside PATH, its packages, --deps "
-        "and ROS_PACKAGE_PATH (never /proc, /sys, /dev)",
+        help="read files (includes, textfile, rosparam) outside PATH, its packages, --deps, "
+        "ROS_PACKAGE_PATH and AMENT_PREFIX_PATH (never /proc, /sys, /dev)",
     )
 
 

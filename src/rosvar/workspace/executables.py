@@ -3,8 +3,9 @@
 roslaunch finds a node's executable among the files its package installs; with
 no build here, the candidates are read from what the sources declare: a
 ``.executables`` list (as in the corpus), executable files and scripts in
-``scripts/``, ``nodes/``, ``bin/``, ``add_executable``/``catkin_install_python``
-in CMakeLists.txt, and ``console_scripts`` in setup.py/setup.cfg.
+``scripts/``, ``nodes/``, ``bin/``, the executable targets and installed programs of
+CMakeLists.txt (catkin's and ament's, read by :mod:`rosvar.workspace.interfaces.cmake`), and
+``console_scripts`` in setup.py/setup.cfg (ament_python's entry points).
 """
 
 from __future__ import annotations
@@ -15,14 +16,11 @@ import re
 from functools import lru_cache
 
 from rosvar.files import read_file
+from rosvar.workspace.interfaces.cmake import TargetKind, read_build
 from rosvar.workspace.packages import Package
 
 SCRIPT_FOLDERS = ("scripts", "nodes", "bin")
 _SKIP_SUFFIXES = (".png", ".jpg", ".dae", ".stl", ".STL", ".pgm", ".em", ".in")
-_ADD_EXECUTABLE = re.compile(r"add_executable\s*\(\s*([^\s)]+)", re.IGNORECASE)
-_INSTALL_PROGRAMS = re.compile(
-    r"(?:catkin_install_python|install)\s*\(\s*PROGRAMS\s+([^)]*)\)", re.IGNORECASE
-)
 _CONSOLE_SCRIPT = re.compile(r"([\w.-]+)\s*=\s*[\w.]+:\w+")
 
 
@@ -52,7 +50,7 @@ def _scan(path: str, name: str) -> frozenset[str]:
                 continue
             if os.access(full, os.X_OK) and os.path.isfile(full):
                 found.add(file)
-    found |= _cmake(os.path.join(path, "CMakeLists.txt"), name)
+    found |= _cmake(path, name)
     for setup in ("setup.py", "setup.cfg"):
         found |= _console_scripts(os.path.join(path, setup))
     return frozenset(found)
@@ -69,14 +67,13 @@ def _read(path: str) -> str:
 
 
 def _cmake(path: str, project: str) -> set[str]:
-    text = _read(path).replace("${PROJECT_NAME}", project)
-    names = {m.group(1) for m in _ADD_EXECUTABLE.finditer(text)}
-    for match in _INSTALL_PROGRAMS.finditer(text):
-        for word in match.group(1).split():
-            if word.isupper():  # DESTINATION and other keywords
-                break
-            names.add(os.path.basename(word))
-    return {n for n in names if "$" not in n}
+    build = read_build(path, project)
+    names = {
+        t.name
+        for t in build.targets.values()
+        if t.kind == TargetKind.EXECUTABLE and t.name not in build.vague_names
+    }
+    return names | {os.path.basename(program) for program in build.programs}
 
 
 def _console_scripts(path: str) -> set[str]:

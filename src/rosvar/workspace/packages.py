@@ -4,6 +4,10 @@
 the crawl follows rospkg's rules (a ``package.xml`` makes a directory a package and
 ends the search for packages below it; ``CATKIN_IGNORE`` and hidden directories are
 skipped) while still listing the launch files that live inside packages.
+
+A workspace is ROS 1 or ROS 2 (:mod:`rosvar.workspace.ros_version`): its packages' build
+tools decide, and with them which files are launch files (:mod:`rosvar.workspace.launch_files`).
+ROS 2's installed packages are found through ``AMENT_PREFIX_PATH`` (``<prefix>/share/<pkg>``).
 """
 
 from __future__ import annotations
@@ -14,22 +18,25 @@ from dataclasses import dataclass, field
 
 from rosvar.diagnostics import Diagnostic, DiagnosticSink, Location
 from rosvar.files import Confinement, read_file
-from rosvar.frontends.ros1_xml.parser import is_launch_root, parse_xml_file
+from rosvar.frontends.ros1_xml.parser import parse_xml_file
+from rosvar.workspace.launch_files import PACKAGE_FILE, LaunchFormat, format_of, launch_format
 from rosvar.workspace.paths import real_path
+from rosvar.workspace.ros_version import RosVersion, majority, package_version
 
-PACKAGE_FILE = "package.xml"
 EXECUTABLES_FILE = ".executables"
-IGNORE_MARKERS = ("CATKIN_IGNORE", "rospack_nosubdirs")
-LAUNCH_SUFFIXES = (".launch", ".launch.xml")
+IGNORE_MARKERS = ("CATKIN_IGNORE", "rospack_nosubdirs", "COLCON_IGNORE", "AMENT_IGNORE")
+SHARE_FOLDER = "share"
 
 
 @dataclass(frozen=True)
 class Package:
-    """A ROS package: its name (from ``package.xml``), directory and known executables."""
+    """A ROS package: its name (from ``package.xml``), directory, known executables and the
+    ROS its build tool belongs to (None: it names neither catkin nor ament)."""
 
     name: str
     path: str
     executables: frozenset[str] | None
+    ros_version: RosVersion | None = None
 
 
 @dataclass
@@ -46,6 +53,7 @@ class Workspace:
     # ROS_PACKAGE_PATH's directories: with the roots and the packages, what may be read.
     dependency_roots: list[str] = field(default_factory=list)
     allow_outside: bool = False
+    ros_version: RosVersion = RosVersion.ROS1
 
     def __post_init__(self) -> None:
         # Packages by directory, rebuilt when packages are added (so that a hand-built
@@ -71,6 +79,27 @@ class Workspace:
         """Directory of package ``name``; ``None`` leaves unknown packages to the caller."""
         package = self.packages.get(name)
         return package.path if package is not None else None
+
+    def find_share(self, name: str) -> str | None:
+        """ROS 2's share directory of package ``name`` (``$(find-pkg-share)``): the
+        installed ``<prefix>/share/<pkg>``, or for a source package its own folder, which
+        holds what ``colcon build`` installs there (launch files, parameter files)."""
+        return self.find(name)
+
+    def find_prefix(self, name: str) -> str | None:
+        """ROS 2's install prefix of package ``name`` (``$(find-pkg-prefix)``); None for an
+        unknown package or a source package, which has no install space yet."""
+        directory = self.find(name)
+        if directory is None:
+            return None
+        share = os.path.dirname(directory)
+        if os.path.basename(share) != SHARE_FOLDER or os.path.basename(directory) != name:
+            return None
+        return os.path.dirname(share)
+
+    def launch_format(self, path: str) -> LaunchFormat:
+        """The frontend that reads launch file ``path`` in this workspace's ROS."""
+        return format_of(path, self.ros_version)
 
     def package_of(self, path: str | os.PathLike[str]) -> Package | None:
         """The innermost package whose directory contains ``path`` (symlinks resolved last)."""
@@ -137,7 +166,9 @@ class _Discovery:
         self.packages: dict[str, Package] = {}
         self.shadowed: list[Package] = []
         self.package_dirs: set[str] = set()
-        self.launch_files: set[str] = set()
+        # Launch files as each ROS would see them: which one applies is known at the end.
+        self.launch_files: dict[RosVersion, set[str]] = {version: set() for version in RosVersion}
+        self.given: set[str] = set()  # files given as paths: launch files of either ROS
 
     def add_package(self, directory: str) -> None:
         real = real_path(directory)
@@ -145,8 +176,8 @@ class _Discovery:
             return  # reached twice (overlapping roots, or a root also on ROS_PACKAGE_PATH)
         self.package_dirs.add(real)
         manifest = os.path.join(directory, PACKAGE_FILE)
-        name = self._package_name(manifest, directory)
-        package = Package(name, directory, _read_executables(directory))
+        name, version = self._read_manifest(manifest, directory)
+        package = Package(name, directory, _read_executables(directory), version)
         first = self.packages.get(name)
         if first is None:
             self.packages[name] = package
@@ -158,7 +189,8 @@ class _Discovery:
             Location(manifest),
         )
 
-    def _package_name(self, manifest: str, directory: str) -> str:
+    def _read_manifest(self, manifest: str, directory: str) -> tuple[str, RosVersion | None]:
+        """The package's name and ROS; a broken manifest gives the folder's name."""
         fallback = os.path.basename(directory)
         result = parse_xml_file(manifest)
         root = result.root
@@ -174,7 +206,7 @@ class _Discovery:
                 if child.tag == "name":
                     name = child.text.strip(" \n\r\t")
                     if name:
-                        return name
+                        return name, package_version(root)
                     problem, location = "<name> is empty", child.location
                     break
             else:
@@ -184,7 +216,7 @@ class _Discovery:
             f"cannot read the package name ({problem}); using the directory name '{fallback}'",
             location,
         )
-        return fallback
+        return fallback, None
 
     def enclosing_package(self, directory: str) -> bool:
         """Register the package holding ``directory`` (itself included), if any."""
@@ -225,20 +257,49 @@ class _Discovery:
                 in_package.update(os.path.join(dirpath, name) for name in dirnames)
             if list_launch:
                 for name in filenames:
-                    if _looks_like_launch(dirpath, name):
-                        self.launch_files.add(os.path.join(dirpath, name))
+                    for version, found in self.launch_files.items():
+                        if launch_format(dirpath, name, version) is not None:
+                            found.add(os.path.join(dirpath, name))
 
+    def add_prefix(self, prefix: str) -> str | None:
+        """Register the packages installed in ament prefix ``prefix``; its share folder."""
+        share = os.path.join(prefix, SHARE_FOLDER)
+        try:
+            names = sorted(os.listdir(share))
+        except OSError:
+            return None
+        for name in names:
+            if os.path.isfile(os.path.join(share, name, PACKAGE_FILE)):
+                self.add_package(os.path.join(share, name))
+        return share
 
-def _looks_like_launch(directory: str, name: str) -> bool:
-    if name.startswith("."):
-        return False  # editor backups and lock files
-    if name.endswith(LAUNCH_SUFFIXES):
-        return True
-    return (
-        name.endswith(".xml")
-        and name != PACKAGE_FILE
-        and is_launch_root(os.path.join(directory, name))
-    )
+    def ros_version(self, own: list[Package]) -> RosVersion:
+        """The ROS of ``own`` packages; without packages that tell, the launch files' kinds."""
+        decided = majority(p.ros_version for p in own if p.ros_version is not None)
+        if decided is not None:
+            return decided
+        ros1, ros2 = self.launch_files[RosVersion.ROS1], self.launch_files[RosVersion.ROS2]
+        # A given file votes by its extension: roslaunch reads only XML.
+        given_ros2 = {p for p in self.given if format_of(p, RosVersion.ROS2) != LaunchFormat.XML}
+        ros2_only = (ros2 - ros1) | given_ros2
+        return RosVersion.ROS2 if ros2_only and not ros1 - ros2 else RosVersion.ROS1
+
+    def refuse_mixed(self, own: list[Package], version: RosVersion) -> set[str]:
+        """Report ``own`` packages of the other ROS (an error: a workspace is one or the
+        other); their directories, whose launch files are left out."""
+        others = [p for p in own if p.ros_version not in (None, version)]
+        if not others:
+            return set()
+        names = ", ".join(sorted(p.name for p in others)[:5])
+        more = f" and {len(others) - 5} more" if len(others) > 5 else ""
+        self.sink.error(
+            "workspace-mixed",
+            f"the workspace mixes ROS 1 and ROS 2 packages; it is read as {version.label} "
+            f"(most of its packages), and the launch files of the other packages ({names}"
+            f"{more}) are left out",
+            Location(os.path.join(others[0].path, PACKAGE_FILE)),
+        )
+        return {p.path for p in others}
 
 
 def discover(
@@ -246,17 +307,18 @@ def discover(
     *,
     deps: Sequence[str | os.PathLike[str]] = (),
     ros_package_path: str | None = None,
+    ament_prefix_path: str | None = None,
     allow_outside: bool = False,
 ) -> Workspace:
-    """Find packages and launch files below ``paths``, then packages below ``deps`` and on
-    ROS_PACKAGE_PATH.
+    """Find packages and launch files below ``paths``, then packages below ``deps``, on
+    ROS_PACKAGE_PATH and in AMENT_PREFIX_PATH's prefixes.
 
     A path may be a directory or a single launch file (listed as given, with its
     enclosing package registered). ``deps`` (a sourced ROS installation's ``share``, an
-    underlay) and ``ros_package_path`` (default: the environment's) play the same part:
-    their packages come after the roots', in that order, and contribute no launch files.
-    Files outside the roots, the packages, the deps and ROS_PACKAGE_PATH are not read
-    unless ``allow_outside``.
+    underlay), ``ros_package_path`` and ``ament_prefix_path`` (default: the environment's)
+    play the same part: their packages come after the roots', in that order, and
+    contribute no launch files. Files outside the roots, the packages, the deps and those
+    paths are not read unless ``allow_outside``.
     """
     state = _Discovery()
     roots = [os.path.abspath(os.fspath(path)) for path in paths]
@@ -265,10 +327,13 @@ def discover(
             inside = state.enclosing_package(root)
             state.crawl(root, list_launch=True, inside_package=inside)
         elif os.path.exists(root):
-            state.launch_files.add(root)
+            for found in state.launch_files.values():
+                found.add(root)
+            state.given.add(root)
             state.enclosing_package(os.path.dirname(root))
         else:
             state.sink.error("path-missing", f"no such file or directory: {root}", Location(root))
+    own = [*state.packages.values(), *state.shadowed]  # the user's: they decide the ROS
 
     dependency_roots = []
     for dep in deps:
@@ -287,13 +352,30 @@ def discover(
         if os.path.isdir(directory):
             dependency_roots.append(directory)
             state.crawl(directory, list_launch=False, inside_package=False)
+    if ament_prefix_path is None:
+        ament_prefix_path = os.environ.get("AMENT_PREFIX_PATH", "")
+    for entry in ament_prefix_path.split(os.pathsep):
+        if entry.strip():
+            share = state.add_prefix(os.path.abspath(os.path.expanduser(entry)))
+            if share is not None:
+                dependency_roots.append(share)
 
-    return Workspace(
+    version = state.ros_version(own)
+    left_out = state.refuse_mixed(own, version)
+    workspace = Workspace(
         roots=roots,
         packages=state.packages,
-        launch_files=sorted(state.launch_files),
+        launch_files=sorted(state.launch_files[version]),
         diagnostics=state.sink.items,
         shadowed=state.shadowed,
         dependency_roots=dependency_roots,
         allow_outside=allow_outside,
+        ros_version=version,
     )
+    if left_out:
+        workspace.launch_files = [
+            path
+            for path in workspace.launch_files
+            if (owner := workspace.package_of(path)) is None or owner.path not in left_out
+        ]
+    return workspace

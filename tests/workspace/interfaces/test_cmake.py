@@ -64,3 +64,34 @@ def test_output_name_and_source_without_suffix(tmp_path: Path) -> None:
     assert build.targets["demo_node"].sources == [str(tmp_path / "src" / "main.cpp")]
     assert build.targets["demo_node"].installed_name == "demo"
     assert build.targets["other"].installed_name == "other"
+
+
+def test_ament_targets_and_components(tmp_path: Path) -> None:
+    (tmp_path / "CMakeLists.txt").write_text(
+        "project(cam)\n"
+        "ament_auto_add_library(cam_component SHARED src/component.cpp src/util.cpp)\n"
+        'rclcpp_components_register_node(cam_component PLUGIN "cam::Node" EXECUTABLE cam_node)\n'
+        "ament_auto_add_executable(tool src/tool.cpp NO_TARGET_LINK_LIBRARIES)\n"
+        'rclcpp_components_register_node(cam_component PLUGIN "cam::Other")\n'
+    )
+    build = read_build(str(tmp_path), "cam")
+    kinds = {name: target.kind for name, target in build.targets.items()}
+    assert kinds == {
+        "cam_component": TargetKind.LIBRARY,
+        "cam_node": TargetKind.EXECUTABLE,
+        "tool": TargetKind.EXECUTABLE,
+    }
+    # The component's executable runs the library's code.
+    src = tmp_path / "src"
+    assert build.sources("cam_node") == [str(src / "component.cpp"), str(src / "util.cpp")]
+    assert build.sources("tool") == [str(src / "tool.cpp")]
+
+
+def test_target_named_with_an_unknown_variable_is_vague(tmp_path: Path) -> None:
+    (tmp_path / "CMakeLists.txt").write_text(
+        "project(p)\nset(KNOWN k)\n"
+        "add_executable(${KNOWN}_a a.cpp)\nadd_executable(${OTHER}_b b.cpp)\n"
+    )
+    build = read_build(str(tmp_path), "p")
+    assert set(build.targets) == {"k_a", "_b"}
+    assert build.vague_names == {"_b"}

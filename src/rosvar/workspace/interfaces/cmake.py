@@ -4,7 +4,9 @@ Only what decides targets and their sources is read: ``set``/``list(APPEND)`` va
 ``${VAR}`` expansion, ``file(GLOB)``, ``add_subdirectory``, ``add_executable``/``add_library``,
 ``target_link_libraries`` (a library of the same package brings its sources along),
 ``include_directories``, a target's ``OUTPUT_NAME`` (the name ``rosrun`` and launch files use)
-and the ``PROGRAMS`` of ``catkin_install_python``/``install``.
+and the ``PROGRAMS`` of ``catkin_install_python``/``install``; for ament packages also
+``ament_auto_add_executable``/``ament_auto_add_library`` and the executable
+``rclcpp_components_register_node(... EXECUTABLE name)`` makes of a component.
 Conditions (``if``) are not evaluated: every branch's targets are kept, since any of them may
 be the one built.
 """
@@ -26,6 +28,8 @@ _TARGET_OPTIONS = frozenset(
     {"WIN32", "MACOSX_BUNDLE", "EXCLUDE_FROM_ALL", "STATIC", "SHARED", "MODULE", "OBJECT"}
 )
 _SKIPPED_LIBRARIES = frozenset({"IMPORTED", "ALIAS", "INTERFACE"})
+# ament_cmake_auto's keywords; its targets' sources may also come from a DIRECTORY glob.
+_AUTO_OPTIONS = frozenset({"DIRECTORY", "NO_TARGET_LINK_LIBRARIES", "NO_TARGET_LINK_DEPENDENCIES"})
 _LINK_KEYWORDS = frozenset({"PUBLIC", "PRIVATE", "INTERFACE", "debug", "optimized", "general"})
 _INSTALL_KEYWORDS = frozenset(
     {"DESTINATION", "PERMISSIONS", "CONFIGURATIONS", "COMPONENT", "RENAME", "OPTIONAL"}
@@ -37,6 +41,16 @@ _SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".c", ".h", ".hpp", ".hh", ".
 class TargetKind(enum.StrEnum):
     EXECUTABLE = "executable"
     LIBRARY = "library"
+
+
+# The commands that declare a target, and the kind they declare.
+TARGET_COMMANDS: dict[str, TargetKind] = {
+    "add_executable": TargetKind.EXECUTABLE,
+    "add_library": TargetKind.LIBRARY,
+    "ament_auto_add_executable": TargetKind.EXECUTABLE,
+    "ament_auto_add_library": TargetKind.LIBRARY,
+}
+COMPONENT_COMMAND = "rclcpp_components_register_node"
 
 
 @dataclass
@@ -62,6 +76,9 @@ class Build:
     targets: dict[str, Target] = field(default_factory=dict)
     programs: list[str] = field(default_factory=list)
     include_dirs: list[str] = field(default_factory=list)
+    # Targets named with a variable this reader does not know (set by a parent project, a
+    # toolchain): their names here are guesses, not executables to offer.
+    vague_names: set[str] = field(default_factory=set)
 
     def sources(self, name: str) -> list[str]:
         """The sources of target ``name`` and of the package's libraries it links."""
@@ -161,6 +178,9 @@ class _Reader:
             return [value]
         return [part for part in value.split(";") if part]
 
+    def unknown_variable(self, word: str) -> bool:
+        return any(name not in self.variables for name in _VARIABLE.findall(word))
+
     def read(self, directory: str) -> None:
         path = os.path.join(directory, CMAKE_FILE)
         real = os.path.realpath(path)
@@ -176,6 +196,8 @@ class _Reader:
         for name, raw in commands(text):
             words = [part for word in raw for part in self.expand(word)]
             self.command(name, words, directory)
+            if name in TARGET_COMMANDS and words and self.unknown_variable(raw[0]):
+                self.build.vague_names.add(words[0])
         self.variables["CMAKE_CURRENT_SOURCE_DIR"] = saved
         self.variables["CMAKE_CURRENT_LIST_DIR"] = saved
 
@@ -194,14 +216,21 @@ class _Reader:
             self.variables[words[1]] = ";".join(self.glob(words, directory))
         elif name == "add_subdirectory" and words:
             self.read(os.path.normpath(os.path.join(directory, words[0])))
-        elif name in ("add_executable", "add_library") and words:
+        elif name in TARGET_COMMANDS and words:
             if _SKIPPED_LIBRARIES & set(words[1:2]):
                 return
-            kind = TargetKind.EXECUTABLE if name == "add_executable" else TargetKind.LIBRARY
-            sources = [_source(directory, w) for w in words[1:] if w not in _TARGET_OPTIONS]
-            self.build.targets.setdefault(words[0], Target(words[0], kind, [])).sources.extend(
-                sources
-            )
+            sources = [
+                _source(directory, w)
+                for w in words[1:]
+                if w not in _TARGET_OPTIONS and w not in _AUTO_OPTIONS
+            ]
+            declared = Target(words[0], TARGET_COMMANDS[name], [])
+            self.build.targets.setdefault(words[0], declared).sources.extend(sources)
+        elif name == COMPONENT_COMMAND and "EXECUTABLE" in words[1:-1]:
+            # The executable runs the component library's plugin: its sources are the library's.
+            executable = words[words.index("EXECUTABLE", 1) + 1]
+            component = Target(executable, TargetKind.EXECUTABLE, [], links=[words[0]])
+            self.build.targets.setdefault(executable, component)
         elif name == "target_link_libraries" and words:
             target = self.build.targets.get(words[0])
             if target is not None:

@@ -1,0 +1,103 @@
+"""The ROS 2 benchmark workspace of ``bench/generate.py --shape ros2`` has the issue's size
+and shape, and is a consistent ROS 2 workspace (what rosvar measures must be loadable)."""
+
+from __future__ import annotations
+
+import importlib.util
+import re
+import sys
+from functools import cache
+from pathlib import Path
+
+import pytest
+
+from rosvar.frontends.entity import Entity
+from rosvar.frontends.ros1_xml.parser import parse_xml_file
+from rosvar.workspace import discover
+from rosvar.workspace.executables import executables
+from rosvar.workspace.launch_files import LaunchFormat
+from rosvar.workspace.ros_version import RosVersion
+
+BENCH = Path(__file__).resolve().parent.parent / "bench" / "generate.py"
+_spec = importlib.util.spec_from_file_location("rosvar_bench_generate", BENCH)
+assert _spec is not None and _spec.loader is not None
+generate = importlib.util.module_from_spec(_spec)
+sys.modules[_spec.name] = generate
+_spec.loader.exec_module(generate)
+
+_VAR = re.compile(r"\$\(var (\w+)\)")
+_SHARE = re.compile(r"\$\(find-pkg-share (\w+)\)")
+
+
+@pytest.fixture(scope="module")
+def ros2_workspace(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    root = tmp_path_factory.mktemp("ros2") / "src"
+    generate.SHAPES["ros2"](root, generate.ROS2_FILES)
+    return root
+
+
+def _walk(entity: Entity) -> list[Entity]:
+    return [entity, *(e for child in entity.children for e in _walk(child))]
+
+
+@cache
+def _root(path: str) -> Entity:
+    root = parse_xml_file(path).root
+    assert root is not None and root.tag == "launch"
+    return root
+
+
+def test_size_and_kind(ros2_workspace: Path) -> None:
+    workspace = discover([ros2_workspace], ros_package_path="", ament_prefix_path="")
+    assert workspace.ros_version == RosVersion.ROS2
+    assert workspace.diagnostics == []
+    assert len(workspace.launch_files) == 120
+    assert {workspace.launch_format(path) for path in workspace.launch_files} == {LaunchFormat.XML}
+    args = [e for path in workspace.launch_files for e in _root(path).children if e.tag == "arg"]
+    assert len(args) == 1500
+    assert len(workspace.packages) == 12
+    for package in workspace.packages.values():  # from CMakeLists.txt, as colcon builds them
+        assert executables(package) == set(generate.EXECUTABLES)
+
+
+def _included(root: Path, include: Entity) -> str:
+    """The file an include names (it must exist), checking it is given its required args."""
+    text = include.attributes["file"]
+    package = _SHARE.search(text)
+    assert package is not None
+    target = root / package.group(1) / text.split(")/", 1)[1]
+    assert target.is_file()
+    passed = {arg.get("name") for arg in include.children}
+    declared = [arg for arg in _root(str(target)).children if arg.tag == "arg"]
+    assert {arg.get("name") for arg in declared if not arg.has("default")} <= passed
+    return str(target)
+
+
+def test_consistent_and_deep(ros2_workspace: Path) -> None:
+    """Every ``$(var)`` is declared before use, every include names an existing file and
+    passes the included file's required args, and include trees reach 8 files."""
+    files = sorted(ros2_workspace.glob("*/launch/*.launch.xml"))
+    includes: dict[str, list[str]] = {}
+    for path in files:
+        declared: set[str] = set()
+        includes[str(path)] = []
+        for child in _root(str(path)).children:  # args and lets are declared at the top
+            for entity in _walk(child):
+                used = _VAR.findall(" ".join(entity.attributes.values()))
+                assert set(used) <= declared, (path, entity.tag)
+                if entity.tag == "include":
+                    includes[str(path)].append(_included(ros2_workspace, entity))
+            if child.tag in ("arg", "let"):
+                declared.add(child.attributes["name"])
+
+    @cache
+    def depth(path: str) -> int:
+        return 1 + max((depth(target) for target in includes[path]), default=0)
+
+    assert max(depth(path) for path in includes) == generate.ROS2_MAX_LEVEL + 1
+
+
+def test_deterministic(tmp_path: Path) -> None:
+    first = generate.generate_ros2(tmp_path / "a", 30, seed=3)
+    second = generate.generate_ros2(tmp_path / "b", 30, seed=3)
+    assert [p.read_text() for p in first] == [p.read_text() for p in second]
