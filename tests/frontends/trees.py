@@ -1,0 +1,48 @@
+"""Entity trees compared across formats: everything but locations (and XML's layout text)."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+from rosvar.frontends.entity import Entity
+from rosvar.frontends.ros1_xml.parser import parse_xml_bytes
+
+SHARED = Path(__file__).resolve().parents[3] / "shared"
+ORACLE = Path(os.environ.get("ROSVAR_ROS2_ORACLE", SHARED / "ros2-oracle"))
+"""The ROS 2 oracle's folder (its example package holds one launch in all three formats)."""
+
+
+def demo_launch(name: str) -> Path:
+    """A launch file of the oracle's ``demo_pkg``; the test is skipped without the oracle."""
+    path = ORACLE / "examples" / "pkgs" / "demo_pkg" / "launch" / name
+    if not path.is_file():
+        pytest.skip(f"no ROS 2 oracle at {ORACLE}")
+    return path
+
+
+Shape = tuple[str, dict[str, str], frozenset[str], str, list["Shape"]]
+
+
+def shape(entity: Entity, rewrite: tuple[tuple[str, str], ...] = ()) -> Shape:
+    """Tag, attributes, typed attributes, non-blank text and children's shapes; ``rewrite``
+    replaces texts in attribute values (where two files say the same thing differently)."""
+    attributes = dict(entity.attributes)
+    for old, new in rewrite:
+        attributes = {name: value.replace(old, new) for name, value in attributes.items()}
+    return (
+        entity.tag,
+        attributes,
+        entity.typed,
+        entity.text.strip(),
+        [shape(child, rewrite) for child in entity.children],
+    )
+
+
+def xml_shape(source: str) -> Shape:
+    """The shape of an inline XML launch file, which must parse cleanly."""
+    result = parse_xml_bytes(source.encode(), "expected.xml")
+    assert result.root is not None, result.diagnostics
+    return shape(result.root)
