@@ -14,7 +14,8 @@ from __future__ import annotations
 
 import yaml
 
-TypedValue = bool | int | float | None | list["TypedValue"]
+Scalar = bool | int | float | str | None
+TypedValue = bool | int | float | None | list[Scalar]
 """What a typed attribute may hold: YAML scalars other than strings, and lists of scalars."""
 
 _Dumper: type[yaml.SafeDumper] = getattr(yaml, "CSafeDumper", yaml.SafeDumper)
