@@ -26,18 +26,21 @@ def demo_launch(name: str) -> Path:
 Shape = tuple[str, dict[str, str], frozenset[str], str, list["Shape"]]
 
 
-def shape(entity: Entity, rewrite: tuple[tuple[str, str], ...] = ()) -> Shape:
-    """Tag, attributes, typed attributes, non-blank text and children's shapes; ``rewrite``
-    replaces texts in attribute values (where two files say the same thing differently)."""
+def shape(
+    entity: Entity, rewrite: tuple[tuple[str, str], ...] = (), typed: bool = True
+) -> Shape:
+    """Tag, attributes, typed attributes (unless ``typed`` is false: as XML, which has
+    none), non-blank text and children's shapes; ``rewrite`` replaces texts in attribute
+    values (where two files say the same thing differently)."""
     attributes = dict(entity.attributes)
     for old, new in rewrite:
         attributes = {name: value.replace(old, new) for name, value in attributes.items()}
     return (
         entity.tag,
         attributes,
-        entity.typed,
+        entity.typed if typed else frozenset(),
         entity.text.strip(),
-        [shape(child, rewrite) for child in entity.children],
+        [shape(child, rewrite, typed) for child in entity.children],
     )
 
 

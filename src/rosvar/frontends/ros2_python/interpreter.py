@@ -13,6 +13,7 @@ depth bound the work whatever the file does.
 from __future__ import annotations
 
 import ast
+import builtins
 import operator
 from collections.abc import Callable, Iterator
 from typing import Any
@@ -97,11 +98,11 @@ def _constant(value: Value) -> bool:
 
 def truth(value: Value) -> bool | None:
     """Python's truth of ``value``; ``None`` when it is not known statically."""
-    if isinstance(value, Unknown):
+    if isinstance(value, Unknown | Module):  # a Module may be any value of another module
         return None
-    if isinstance(value, _SCALARS | list | tuple | dict):
+    if isinstance(value, (*_SCALARS, list, tuple, dict)):
         return bool(value)
-    return True  # launch objects, texts with substitutions, modules: never empty
+    return True  # launch objects and texts with substitutions are never empty
 
 
 class Interpreter:
@@ -249,7 +250,7 @@ class Interpreter:
     def _if(self, node: ast.If, scope: Scope) -> None:
         test = truth(self.expr(node.test, scope))
         if test is None:
-            self.not_followed("'if' on a value not known statically: neither branch", node)
+            self.not_followed("an 'if' on a value not known statically (neither branch)", node)
         else:
             self.block(node.body if test else node.orelse, scope)
 
@@ -339,8 +340,8 @@ class Interpreter:
         found, value = scope.lookup(node.id)
         if found:
             return value
-        if node.id in BUILTINS:
-            return Module(node.id)
+        if node.id in BUILTINS or hasattr(builtins, node.id):
+            return Module(node.id)  # a call of a builtin not in BUILTINS is reported as such
         return self.not_followed(f"name '{node.id}'", node)
 
     def _joined_str(self, node: ast.JoinedStr, scope: Scope) -> Value:
