@@ -8,6 +8,11 @@ which the same coercion reads back as the same value, so the entity equals the o
 equivalent XML file; its attribute name goes into ``Entity.typed``, so the interpreter can
 still tell ``value: 10`` from ``value: "10"`` where ROS 2 does (launch_yaml refuses a typed
 value where it wants a string, and never coerces a string).
+
+The one place XML coerces what YAML and Python keep as a string is a parameter's value: a
+literal string there (``value: "10"``, ``{'txt': '10'}``) stays a string, which XML writes
+``<param value="10" type="str"/>``; both frontends add that ``type`` where YAML rules would
+read the text as another value (:func:`reads_as_other_value`).
 """
 
 from __future__ import annotations
@@ -23,5 +28,13 @@ _Dumper: type[yaml.SafeDumper] = getattr(yaml, "CSafeDumper", yaml.SafeDumper)
 
 def typed_text(value: TypedValue | str) -> str:
     """The canonical YAML text of ``value`` (a list may hold strings, quoted when needed)."""
-    text = yaml.dump(value, Dumper=_Dumper, default_flow_style=True, width=1 << 30)
+    text = yaml.dump(
+        value, Dumper=_Dumper, default_flow_style=True, width=1 << 30, allow_unicode=True
+    )
     return text.removesuffix("\n...\n").rstrip("\n")
+
+
+def reads_as_other_value(literal: str) -> bool:
+    """Whether ROS 2's YAML coercion would turn the literal string ``literal`` into another
+    value (``"10"``, ``"true"``, ``" x"``); the empty string is kept as it is."""
+    return literal != "" and "$(" not in literal and typed_text(literal) != literal

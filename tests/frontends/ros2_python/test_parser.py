@@ -124,14 +124,14 @@ def generate_launch_description():
     node = group.children[0]
     assert (group.attributes, group.typed) == ({"scoped": "false"}, {"scoped"})
     assert node.typed == {"respawn"} and node.attributes["respawn"] == "true"
-    values = [(p.attributes["value"], p.typed) for p in node.children]
+    values = [(p.attributes["value"], p.typed, p.get("type")) for p in node.children]
     assert values == [
-        ("10", {"value"}),
-        ("0.5", {"value"}),
-        ("false", {"value"}),
-        ("10", frozenset()),
-        ("[1, 2]", {"value"}),
-        ("[a, '1']", {"value"}),
+        ("10", {"value"}, None),
+        ("0.5", {"value"}, None),
+        ("false", {"value"}, None),
+        ("10", frozenset(), "str"),  # a string, as XML says with type="str"
+        ("[1, 2]", {"value"}, None),
+        ("[a, '1']", {"value"}, None),
     ]
 
 

@@ -85,15 +85,15 @@ def test_typed_values_are_canonical_yaml_text_and_marked() -> None:
     assert result.root is not None
     node = result.root.children[0]
     assert node.attributes["respawn"] == "true" and node.typed == {"respawn"}
-    values = [(p.attributes["value"], p.typed) for p in node.children]
+    values = [(p.attributes["value"], p.typed, p.get("type")) for p in node.children]
     assert values == [
-        ("10", {"value"}),
-        ("0.5", {"value"}),
-        ("true", {"value"}),
-        ("10", frozenset()),
-        ("[1, 2]", {"value"}),
-        ("[a, '1']", {"value"}),
-        ("null", {"value"}),
+        ("10", {"value"}, None),
+        ("0.5", {"value"}, None),
+        ("true", {"value"}, None),
+        ("10", frozenset(), "str"),  # a string, as XML says with type="str"
+        ("[1, 2]", {"value"}, None),
+        ("[a, '1']", {"value"}, None),
+        ("null", {"value"}, None),
     ]
 
 

@@ -26,7 +26,7 @@ from rosvar.frontends.ros2_python.values import (
     Unknown,
     Value,
 )
-from rosvar.frontends.typed_text import Scalar, typed_text
+from rosvar.frontends.typed_text import Scalar, reads_as_other_value, typed_text
 
 
 class Slot(enum.StrEnum):
@@ -233,6 +233,8 @@ def _named_parameters(call: Call, parent: Entity, tag: str, values: dict[Key, Va
             child.typed = child.typed | {"value"}
         else:
             set_attribute(call, child, "value", value)
+            if isinstance(value, str) and reads_as_other_value(value):
+                child.attributes["type"] = "str"  # a literal stays a string, unlike XML's
 
 
 def _write_pairs(call: Call, entity: Entity, param: Param, value: Value) -> None:

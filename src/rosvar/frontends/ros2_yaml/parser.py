@@ -6,7 +6,8 @@ attributes, except that ``children:`` lists the children and a list of mappings 
 [{...}]``, ``remap``, ``arg``, ``env``, ``choice``, ``composable_node``...) gives one child
 entity tagged with the key per mapping, exactly where launch_xml finds nested elements of
 that tag. Children come in document order, so the tree is the one the equivalent XML file
-gives. Strings stay raw; other scalars and lists of scalars are typed values
+gives. Strings stay raw; other scalars and lists of scalars are typed values, and a
+parameter's string value that XML would coerce gets ``type="str"``
 (:mod:`rosvar.frontends.typed_text`). Locations are those of each entity's key (the
 attributes of list items: the item's first key). The text goes through
 :func:`~rosvar.workspace.bounded_yaml.check_limits` before anything is built; every problem
@@ -24,8 +25,11 @@ from yaml.nodes import MappingNode, Node, ScalarNode, SequenceNode
 from rosvar.diagnostics import Diagnostic, DiagnosticSink, Location, Severity
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import ParseResult, read_bytes
-from rosvar.frontends.typed_text import typed_text
+from rosvar.frontends.typed_text import reads_as_other_value, typed_text
 from rosvar.workspace.bounded_yaml import YamlLimitError, check_limits
+
+PARAM_TAG = "param"
+"""The one entity whose ``value`` XML coerces by YAML rules (see ``typed_text``)."""
 
 CHILDREN_KEY = "children"
 """The key launch_yaml reads an entity's children from when its body is a mapping."""
@@ -104,6 +108,15 @@ class _Reader:
                     typed.add(name)
         if typed:
             entity.typed = frozenset(typed)
+        value = entity.attributes.get("value")
+        if (
+            entity.tag == PARAM_TAG
+            and value is not None
+            and "value" not in typed
+            and "type" not in entity.attributes
+            and reads_as_other_value(value)
+        ):
+            entity.attributes["type"] = "str"  # a YAML string stays a string, unlike XML's
 
     def nested(self, tag: str, items: SequenceNode) -> list[Entity]:
         nested: list[Entity] = []
