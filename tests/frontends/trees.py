@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
+from xml.sax.saxutils import quoteattr
 
 import pytest
 
@@ -49,3 +50,13 @@ def xml_shape(source: str) -> Shape:
     result = parse_xml_bytes(source.encode(), "expected.xml")
     assert result.root is not None, result.diagnostics
     return shape(result.root)
+
+
+def to_xml(entity: Entity, depth: int = 0) -> str:
+    """The XML launch file of a tree (for running the equivalent XML through the oracle)."""
+    attributes = "".join(f" {name}={quoteattr(value)}" for name, value in entity.attributes.items())
+    indent = " " * depth
+    if not entity.children:
+        return f"{indent}<{entity.tag}{attributes}/>\n"
+    inner = "".join(to_xml(child, depth + 2) for child in entity.children)
+    return f"{indent}<{entity.tag}{attributes}>\n{inner}{indent}</{entity.tag}>\n"

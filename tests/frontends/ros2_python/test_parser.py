@@ -386,3 +386,55 @@ def test_demo_package_python_equals_its_xml() -> None:
         expected = xml_shape(demo_launch(f"{name}.launch.xml").read_text())
         # the Python files include the Python version of sub: only the suffix differs
         assert shape(result.root, ((".launch.py", ".launch.xml"),)) == expected
+
+
+def test_paths_environment_and_parameter_descriptions() -> None:
+    tree, diagnostics = read(
+        """
+from launch.substitutions import Command, FindExecutable
+from launch_ros.descriptions import ParameterFile, ParameterValue
+
+def generate_launch_description():
+    here = os.path.dirname(__file__)
+    home, robot = os.environ['HOME'], os.environ.get('ROBOT', 'r1')
+    description = Command([FindExecutable(name='xacro'), ' ', here, '/robot.xacro'])
+    names = []
+    for name in ['a', 'skip', 'b', 'stop', 'never']:
+        if name == 'skip':
+            continue
+        if name == 'stop':
+            break
+        names.append(name)
+    try:
+        extra = {'x': 1}
+    except ImportError:
+        extra = {}
+    return LaunchDescription([
+        Node(package='demo', executable='robot', name=robot, on_exit=None,
+             parameters=[ParameterFile(os.path.join(here, 'p.yaml'), allow_substs=True),
+                         {'robot_description': ParameterValue(description, value_type=str),
+                          'home': home, 'names': names, **extra}]),
+        Node(package='demo'),
+    ])
+""",
+        IMPORTS,
+    )
+    assert tree == xml_shape(
+        """<launch>
+  <node pkg="demo" exec="robot" name="$(env ROBOT r1)">
+    <param from="$(dirname)/p.yaml" allow_substs="true"/>
+    <param name="robot_description" value="$(command '$(find-exec xacro) $(dirname)/robot.xacro')"
+           type="str"/>
+    <param name="home" value="$(env HOME)"/>
+    <param name="names" value="[a, b]"/>
+    <param name="x" value="1"/>
+  </node>
+  <node pkg="demo"/>
+</launch>"""
+    )
+    assert [(d.severity.value, d.message) for d in diagnostics] == [
+        (
+            "note",
+            "launch_ros.actions.Node() argument 'on_exit' has no XML equivalent; not analysed",
+        ),
+    ]
