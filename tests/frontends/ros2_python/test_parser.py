@@ -438,3 +438,29 @@ def generate_launch_description():
             "launch_ros.actions.Node() argument 'on_exit' has no XML equivalent; not analysed",
         ),
     ]
+
+
+def test_path_operators_format_and_perform() -> None:
+    tree, diagnostics = read(
+        """
+from launch.substitutions import PathSubstitution
+
+def generate_launch_description():
+    config = PathSubstitution(FindPackageShare('demo')) / 'config' / 'p.yaml'
+    name = '{}_{robot}'.format('driver', robot=LaunchConfiguration('robot'))
+    mode = LaunchConfiguration('mode').perform(None)
+    return LaunchDescription([
+        Node(package='demo', executable='{0}{0}'.format('x'), name=name, namespace=mode,
+             parameters=[config]),
+    ])
+""",
+        IMPORTS,
+    )
+    assert diagnostics == []
+    assert tree == xml_shape(
+        """<launch>
+  <node pkg="demo" exec="xx" name="driver_$(var robot)" namespace="$(var mode)">
+    <param from="$(find-pkg-share demo)/config/p.yaml"/>
+  </node>
+</launch>"""
+    )

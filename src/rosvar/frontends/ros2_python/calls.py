@@ -160,6 +160,11 @@ def _all_any(call: Call) -> Value:
     return Text.of(Sub(name, tuple(call.text(arg) for arg in call.args)))
 
 
+@_register("launch", "PathSubstitution")
+def _path(call: Call) -> Value:
+    return call.text(call.arg(0, "path"))
+
+
 @_register("launch", "TextSubstitution")
 def _text(call: Call) -> Value:
     return call.text(call.arg(0, "text"))

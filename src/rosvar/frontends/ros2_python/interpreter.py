@@ -15,13 +15,21 @@ from __future__ import annotations
 import ast
 import builtins
 import operator
+import string
 from collections.abc import Callable, Iterator
 from typing import Any
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros2_python import actions as _actions
-from rosvar.frontends.ros2_python.calls import CALLS, NOT_FOLLOWED, REASONS, Call, key
+from rosvar.frontends.ros2_python.calls import (
+    CALLS,
+    NOT_FOLLOWED,
+    REASONS,
+    Call,
+    join_path,
+    key,
+)
 from rosvar.frontends.ros2_python.text import Sub, Text
 from rosvar.frontends.ros2_python.values import (
     Description,
@@ -382,6 +390,9 @@ class Interpreter:
             return right
         if isinstance(op, ast.Add) and (isinstance(left, Text) or isinstance(right, Text)):
             return self.concatenate([left, right], node)
+        if isinstance(op, ast.Div) and isinstance(left, Text) and isinstance(right, str | Text):
+            return join_path(left, Text.of(right))  # PathSubstitution(...) / 'config'
+
         function = _BINARY.get(type(op))
         if function is not None and _constant(left) and _constant(right):
             if isinstance(op, ast.Mult) and (
@@ -651,6 +662,8 @@ class Interpreter:
             return self._dict_method(receiver, name, args, node)
         if isinstance(receiver, list | tuple) and name == "copy":
             return list(receiver)
+        if isinstance(receiver, Text) and name == "perform":
+            return receiver  # the value at launch time, which the text stands for
         if isinstance(receiver, str) and name in _STR_METHODS:
             return self._str_method(receiver, name, args, kwargs, node)
         return self.not_followed(f"method {name}() of a {type(receiver).__name__}", node)
@@ -672,6 +685,31 @@ class Interpreter:
             return None
         return self.not_followed(f"method {name}() of a dict", node)
 
+    def _format(self, template: str, args: list[Value], kwargs: dict[str, Value],
+                node: ast.AST) -> Value:
+        """``str.format`` with plain fields (``{}``, ``{0}``, ``{name}``), no format specs."""
+        parts: list[Value] = []
+        automatic = 0
+        try:
+            fields = list(string.Formatter().parse(template))
+        except ValueError as error:
+            return self.not_followed(f"str.format() that fails ({error})", node)
+        for literal, field, spec, conversion in fields:
+            parts.append(literal)
+            if field is None:
+                continue
+            if spec or conversion:
+                return self.not_followed("str.format() with a format", node)
+            if field == "":
+                field, automatic = str(automatic), automatic + 1
+            if field.isdigit() and int(field) < len(args):
+                parts.append(self.stringify(args[int(field)], node))
+            elif field in kwargs:
+                parts.append(self.stringify(kwargs[field], node))
+            else:
+                return self.not_followed(f"str.format() field {{{field}}}", node)
+        return self.concatenate(parts, node)
+
     def _str_method(self, receiver: str, name: str, args: list[Value],
                     kwargs: dict[str, Value], node: ast.AST) -> Value:
         if name == "join" and len(args) == 1:
@@ -683,7 +721,7 @@ class Interpreter:
                 parts.extend([receiver, item] if index else [item])
             return self.concatenate(parts, node)
         if name == "format":
-            return self.not_followed("str.format()", node)
+            return self._format(receiver, args, kwargs, node)
         if all(_constant(arg) for arg in args) and not kwargs:
             try:
                 result: Value = getattr(receiver, name)(*args)
