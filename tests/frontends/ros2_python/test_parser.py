@@ -3,6 +3,7 @@ equivalent, typed values keep their types, and what cannot be followed is report
 
 from __future__ import annotations
 
+import random
 from pathlib import Path
 
 from frontends.trees import Shape, demo_launch, shape, xml_shape
@@ -464,3 +465,25 @@ def generate_launch_description():
   </node>
 </launch>"""
     )
+
+
+def test_mutants_of_a_launch_file_never_raise() -> None:
+    """Seeded mutations (lines dropped, duplicated, swapped, cut) read without an exception."""
+    source = (demo_launch("top.launch.py").read_text() + IMPORTS).splitlines()
+    rng = random.Random(19)
+    for _ in range(300):
+        lines = list(source)
+        for _ in range(rng.randint(1, 4)):
+            at = rng.randrange(len(lines))
+            mutation = rng.choice(("drop", "duplicate", "swap", "cut"))
+            if mutation == "drop":
+                del lines[at]
+            elif mutation == "duplicate":
+                lines.insert(at, lines[rng.randrange(len(lines))])
+            elif mutation == "swap":
+                other = rng.randrange(len(lines))
+                lines[at], lines[other] = lines[other], lines[at]
+            else:
+                lines[at] = lines[at][: rng.randrange(len(lines[at]) + 1)]
+        result = parse_python_launch_bytes("\n".join(lines).encode(), "m.py")
+        assert result.root is not None or result.diagnostics

@@ -3,6 +3,7 @@ locations, and every refusal as a diagnostic."""
 
 from __future__ import annotations
 
+import random
 from pathlib import Path
 
 from frontends.trees import demo_launch, shape, xml_shape
@@ -173,3 +174,25 @@ def test_demo_package_yaml_equals_its_xml() -> None:
             ("\"'$(var robot)' == 'robot2'\"", "'\\'$(var robot)\\' == \\'robot2\\''"),
         )
         assert shape(yaml_tree, rewrite) == expected
+
+
+def test_mutants_of_a_launch_file_never_raise() -> None:
+    """Seeded mutations (lines dropped, duplicated, cut, re-indented) read without an
+    exception."""
+    source = demo_launch("sub.launch.yaml").read_text().splitlines()
+    rng = random.Random(19)
+    for _ in range(300):
+        lines = list(source)
+        for _ in range(rng.randint(1, 4)):
+            at = rng.randrange(len(lines))
+            mutation = rng.choice(("drop", "duplicate", "cut", "indent"))
+            if mutation == "drop":
+                del lines[at]
+            elif mutation == "duplicate":
+                lines.insert(at, lines[rng.randrange(len(lines))])
+            elif mutation == "cut":
+                lines[at] = lines[at][: rng.randrange(len(lines[at]) + 1)]
+            else:
+                lines[at] = " " * rng.randrange(8) + lines[at].lstrip()
+        result = parse_yaml_launch_bytes("\n".join(lines).encode(), "m.yaml")
+        assert result.root is not None or result.diagnostics

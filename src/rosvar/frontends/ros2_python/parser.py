@@ -37,7 +37,8 @@ def parse_python_launch_bytes(data: bytes, filename: str) -> ParseResult:
         sink.error("python-syntax", f"invalid Python: {error.msg}", where)
         return ParseResult(None, sink.items)
     except (ValueError, RecursionError, MemoryError) as error:
-        sink.error("python-syntax", f"invalid Python: {error or 'too deeply nested'}", start)
+        reason = str(error) or "nested too deeply"
+        sink.error("python-syntax", f"invalid Python: {reason}", start)
         return ParseResult(None, sink.items)
     interpreter = Interpreter(filename, text, sink)
     try:
