@@ -123,13 +123,13 @@ def test_repeated_keys_and_merge_keys_read_as_a_dict() -> None:
 
 def test_structure_errors_are_diagnostics_and_the_rest_is_kept() -> None:
     tree, codes = parse(
-        "launch:\n- node: just-a-string\n- {a: 1, b: 2}\n- 7\n"
+        "launch:\n- node: just-a-string\n- {a: 1, b: 2}\n- 7\n- group:\n"
         "- node: {pkg: p, param: {name: x}}\n- node: {pkg: q, when: 2024-01-01}\n"
         "- arg: {name: kept}\n"
     )
-    assert codes == ["yaml-launch-structure"] * 5
+    assert codes == ["yaml-launch-structure"] * 6
     assert tree == xml_shape(
-        '<launch><node/><node pkg="p"/><node pkg="q"/><arg name="kept"/></launch>'
+        '<launch><node/><group/><node pkg="p"/><node pkg="q"/><arg name="kept"/></launch>'
     )
 
 

@@ -39,11 +39,12 @@ class Slot(enum.StrEnum):
     NAMED_VALUES = "named-values"  # a dict or (name, value) pairs: <env name value>...
     VALUES = "values"  # a list: <choice value>
     ACTIONS = "actions"  # actions as children
-    SOURCE = "source"  # the included file
 
 
 @dataclass(frozen=True, slots=True)
 class Param:
+    """One constructor argument: its Python name, its XML attribute or child tag, and how."""
+
     python: str
     xml: str
     slot: Slot = Slot.ATTRIBUTE
@@ -104,7 +105,7 @@ ACTIONS: dict[tuple[str, str], ActionSpec] = {
     ("launch", "IncludeLaunchDescription"): ActionSpec(
         "include",
         (
-            Param("launch_description_source", "file", Slot.SOURCE),
+            Param("launch_description_source", "file"),  # a source or a path, as text
             Param("launch_arguments", "arg", Slot.NAMED_VALUES),
         ),
     ),
@@ -266,10 +267,6 @@ def _write_actions(call: Call, entity: Entity, param: Param, value: Value) -> No
     add_actions(call, entity, value)
 
 
-def _write_source(call: Call, entity: Entity, param: Param, value: Value) -> None:
-    set_attribute(call, entity, param.xml, value)
-
-
 WRITERS: dict[Slot, Callable[[Call, Entity, Param, Value], None]] = {
     Slot.ATTRIBUTE: _write_attribute,
     Slot.COMMAND_LINE: _write_command_line,
@@ -278,7 +275,6 @@ WRITERS: dict[Slot, Callable[[Call, Entity, Param, Value], None]] = {
     Slot.NAMED_VALUES: _write_named_values,
     Slot.VALUES: _write_values,
     Slot.ACTIONS: _write_actions,
-    Slot.SOURCE: _write_source,
 }
 
 

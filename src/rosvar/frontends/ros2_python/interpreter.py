@@ -21,7 +21,7 @@ from typing import Any
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
-from rosvar.frontends.ros2_python import actions as _actions
+from rosvar.frontends.ros2_python.actions import add_actions
 from rosvar.frontends.ros2_python.calls import (
     CALLS,
     NOT_FOLLOWED,
@@ -647,7 +647,7 @@ class Interpreter:
         receiver, name = method.receiver, method.name
         if isinstance(receiver, Description) and name in ("add_action", "add_entity") and args:
             call = Call(f"LaunchDescription.{name}", args, kwargs, self.location(node), self.sink)
-            _actions.add_actions(call, receiver.root, [args[0]])
+            add_actions(call, receiver.root, [args[0]])
             return None
         if isinstance(receiver, list) and name in ("append", "extend", "insert") and args:
             if name == "append":

@@ -59,8 +59,7 @@ class _Reader:
             entity.children = self.children(tag, body)
         elif isinstance(body, MappingNode):
             self.body(entity, body)
-        elif not (isinstance(body, ScalarNode) and body.tag != _STR_TAG and not body.value):
-            # An empty body (``- group:``) is an entity without attributes, as in launch_yaml.
+        else:  # launch_yaml fails on any scalar body, an empty one (``- group:``) included
             self.structure(f"<{tag}> must be a mapping or a list, not a scalar", body)
         return entity
 
