@@ -487,3 +487,20 @@ def test_mutants_of_a_launch_file_never_raise() -> None:
                 lines[at] = lines[at][: rng.randrange(len(lines[at]) + 1)]
         result = parse_python_launch_bytes("\n".join(lines).encode(), "m.py")
         assert result.root is not None or result.diagnostics
+
+
+def test_values_stay_within_the_size_limits() -> None:
+    """Doubling strings, lists, texts and integers is cut off, not computed."""
+    for body in [
+        "s = 'x'\n    for i in range(60):\n        s = s + s",
+        "s = 'x'\n    for i in range(60):\n        s = f'{s}{s}'",
+        "s = LaunchConfiguration('x')\n    for i in range(60):\n        s = s + s",
+        "l = [1]\n    for i in range(60):\n        l.extend(l)",
+        "n = 3\n    for i in range(60):\n        n = n * n",
+        "s = 'a' * 100000\n    s = s.replace('a', s)",
+        "s = 'a' * 100000\n    s = ''.join([s] * 100000)",
+    ]:
+        source = f"def generate_launch_description():\n    {body}\n    return LaunchDescription()\n"
+        tree, diagnostics = read(source, IMPORTS)
+        assert tree == xml_shape("<launch/>"), body
+        assert codes(diagnostics) == ["python-not-followed"], body

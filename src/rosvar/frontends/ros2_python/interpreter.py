@@ -47,7 +47,9 @@ MAX_STEPS = 500_000
 MAX_CALL_DEPTH = 40
 """Nested calls of the file's own functions (recursion) before a call stays unknown."""
 MAX_LENGTH = 100_000
-"""Longest list or string built by ``*`` or ``range``."""
+"""Longest string, text or list the reading builds (``*``, ``+``, ``join``, ``range``...)."""
+MAX_INT_BITS = 4096
+"""Largest integer the reading computes: repeated squaring must not exhaust memory."""
 
 MODULE_NAME = "__launch__"
 """``__name__`` while the file is read: launch imports it as a module, not as ``__main__``."""
@@ -102,6 +104,17 @@ def _constant(value: Value) -> bool:
     if isinstance(value, list | tuple):
         return all(_constant(item) for item in value)
     return isinstance(value, _SCALARS)
+
+
+def size(value: Value) -> int:
+    """The length of a string, text or sequence, the bytes of an integer; 1 otherwise."""
+    if isinstance(value, str | list | tuple):
+        return len(value)
+    if isinstance(value, Text):
+        return sum(len(part) if isinstance(part, str) else 1 for part in value.parts)
+    if isinstance(value, int) and not isinstance(value, bool):
+        return value.bit_length() // 8
+    return 1
 
 
 def truth(value: Value) -> bool | None:
@@ -372,6 +385,8 @@ class Interpreter:
         return self.not_followed(f"str() of a {type(value).__name__}", node)
 
     def concatenate(self, parts: list[Value], node: ast.AST) -> Value:
+        if sum(size(part) for part in parts) > MAX_LENGTH:
+            return self.not_followed(f"a string longer than {MAX_LENGTH}", node)
         if all(isinstance(part, str) for part in parts):
             return "".join(str(part) for part in parts)
         texts: list[str | Text] = []
@@ -395,12 +410,8 @@ class Interpreter:
 
         function = _BINARY.get(type(op))
         if function is not None and _constant(left) and _constant(right):
-            if isinstance(op, ast.Mult) and (
-                isinstance(left, str | list | tuple) or isinstance(right, str | list | tuple)
-            ):
-                count = right if isinstance(right, int) else left
-                if not isinstance(count, int) or count > MAX_LENGTH:
-                    return self.not_followed("a long repetition", node)
+            if self._too_large(op, left, right):
+                return self.not_followed("a value too large to compute", node)
             if isinstance(op, ast.Mod) and isinstance(left, str):
                 return self.not_followed("'%' formatting", node)
             try:
@@ -408,11 +419,26 @@ class Interpreter:
             except (TypeError, ValueError, ArithmeticError) as error:
                 return self.not_followed(f"an operation that fails ({error})", node)
             return result
+        if isinstance(op, ast.Add) and size(left) + size(right) > MAX_LENGTH:
+            return self.not_followed(f"a list longer than {MAX_LENGTH}", node)
         if isinstance(op, ast.Add) and isinstance(left, list) and isinstance(right, list):
             return left + right
         if isinstance(op, ast.Add) and isinstance(left, tuple) and isinstance(right, tuple):
             return left + right
         return self.not_followed(f"operator {type(op).__name__}", node)
+
+    @staticmethod
+    def _too_large(op: ast.operator, left: Value, right: Value) -> bool:
+        """Whether an operation on constants would build a result over the limits."""
+        if isinstance(op, ast.Mult):
+            if isinstance(left, int) and isinstance(right, int):
+                return left.bit_length() + right.bit_length() > MAX_INT_BITS
+            count = right if isinstance(right, int) else left
+            sequence = left if count is right else right
+            return not isinstance(count, int) or size(sequence) * max(count, 0) > MAX_LENGTH
+        if isinstance(op, ast.Add):
+            return size(left) + size(right) > max(MAX_LENGTH, MAX_INT_BITS)
+        return False
 
     def _bin_op(self, node: ast.BinOp, scope: Scope) -> Value:
         return self.binary(node.op, self.expr(node.left, scope), self.expr(node.right, scope), node)
@@ -656,6 +682,8 @@ class Interpreter:
                 receiver.insert(args[0], args[1])
             else:
                 items = self.iterate(args[0], node)
+                if items is not None and len(receiver) + len(items) > MAX_LENGTH:
+                    return self.not_followed(f"a list longer than {MAX_LENGTH}", node)
                 receiver.extend(items if items is not None else [Unknown("*unknown")])
             return None
         if isinstance(receiver, dict):
@@ -722,6 +750,8 @@ class Interpreter:
             return self.concatenate(parts, node)
         if name == "format":
             return self._format(receiver, args, kwargs, node)
+        if size(receiver) * max([1, *(size(arg) for arg in args)]) > MAX_LENGTH:
+            return self.not_followed(f"str.{name}() of long strings", node)
         if all(_constant(arg) for arg in args) and not kwargs:
             try:
                 result: Value = getattr(receiver, name)(*args)
