@@ -2,7 +2,8 @@
 
 A frontend turns a file into a tree of :class:`Entity` objects and nothing else;
 the interpreter gives them meaning. Attribute values stay raw strings here
-(substitutions such as ``$(arg x)`` are not touched).
+(substitutions such as ``$(arg x)`` are not touched); the typed values of YAML and
+Python launch files are text too, marked in ``Entity.typed``.
 """
 
 from __future__ import annotations
@@ -24,6 +25,9 @@ class Entity:
     location: Location
     children: list[Entity] = field(default_factory=list)
     text: str = ""
+    typed: frozenset[str] = frozenset()
+    """Attributes written as typed values in YAML or Python, not as strings
+    (:mod:`rosvar.frontends.typed_text`); XML has none."""
 
     def get(self, name: str) -> str | None:
         return self.attributes.get(name)

@@ -237,8 +237,9 @@ def parse_launch_bytes(data: bytes, filename: str) -> ParseResult:
     return ParseResult(launch, [*result.diagnostics, warning])
 
 
-def _read_bytes(path: str | os.PathLike[str]) -> bytes | ParseResult:
-    """A whole regular file within the size limit (:func:`rosvar.files.read_file`)."""
+def read_bytes(path: str | os.PathLike[str]) -> bytes | ParseResult:
+    """A whole regular file within the size limit (:func:`rosvar.files.read_file`), or the
+    refusal as a :class:`ParseResult`; shared by every frontend."""
     name = os.fspath(path)
     try:
         return read_file(name, limit=MAX_FILE_BYTES)
@@ -256,7 +257,7 @@ def _read_bytes(path: str | os.PathLike[str]) -> bytes | ParseResult:
 
 def parse_xml_file(path: str | os.PathLike[str]) -> ParseResult:
     """Read and safely parse any XML file (e.g. ``package.xml``); never raises."""
-    data = _read_bytes(path)
+    data = read_bytes(path)
     if isinstance(data, ParseResult):
         return data
     return parse_xml_bytes(data, os.fspath(path))
@@ -264,7 +265,7 @@ def parse_xml_file(path: str | os.PathLike[str]) -> ParseResult:
 
 def parse_launch_file(path: str | os.PathLike[str]) -> ParseResult:
     """Read and parse a roslaunch file; Locations use ``path`` as given. Never raises."""
-    data = _read_bytes(path)
+    data = read_bytes(path)
     if isinstance(data, ParseResult):
         return data
     return parse_launch_bytes(data, os.fspath(path))

@@ -1,0 +1,1 @@
+"""frontends/ros2_python: ROS 2 Python launch files, read statically."""

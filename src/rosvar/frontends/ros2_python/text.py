@@ -1,0 +1,82 @@
+"""Texts with substitutions, written as the XML and YAML frontends write them.
+
+A Python launch file builds values from strings and substitution objects
+(``['/', LaunchConfiguration('ns')]``); the entity tree holds them as the text the
+equivalent XML attribute holds (``/$(var ns)``), in launch's substitution grammar: literal
+text escapes ``\\`` and ``$(`` with a backslash, an argument that is not a plain word is
+single-quoted with ``'`` and ``\\`` escaped (``$(eval '\\'$(var r)\\' == \\'r2\\'')``).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+UNKNOWN = "rosvar-unknown"
+"""The substitution standing for a value the static reading cannot follow; its argument
+says what it was (``$(rosvar-unknown 'call read_config()')``). No launch file has it."""
+
+_PLAIN_ARGUMENT = re.compile(r"[^\s'\"\\$()]+")
+
+
+@dataclass(frozen=True, slots=True)
+class Sub:
+    """One substitution: ``$(name arg...)``."""
+
+    name: str
+    args: tuple[Text, ...] = ()
+
+    def syntax(self) -> str:
+        return "$(" + self.name + "".join(" " + argument(arg) for arg in self.args) + ")"
+
+
+@dataclass(frozen=True, slots=True)
+class Text:
+    """Literal strings and substitutions, concatenated; adjacent literals are merged."""
+
+    parts: tuple[str | Sub, ...]
+
+    @staticmethod
+    def of(*items: str | Sub | Text) -> Text:
+        parts: list[str | Sub] = []
+        for item in items:
+            for part in item.parts if isinstance(item, Text) else (item,):
+                if isinstance(part, str) and parts and isinstance(parts[-1], str):
+                    parts[-1] += part
+                elif part != "":
+                    parts.append(part)
+        return Text(tuple(parts))
+
+    def literal(self) -> str | None:
+        """The text when it holds no substitution."""
+        if all(isinstance(part, str) for part in self.parts):
+            return "".join(str(part) for part in self.parts)
+        return None
+
+
+def unknown(what: str) -> Sub:
+    return Sub(UNKNOWN, (Text.of(what),))
+
+
+def render(text: Text) -> str:
+    """The attribute text of ``text``."""
+    return "".join(
+        part.syntax() if isinstance(part, Sub) else _escape(part, "") for part in text.parts
+    )
+
+
+def argument(text: Text) -> str:
+    """``text`` as one argument of a substitution: bare when it is a plain word."""
+    if text.parts and all(
+        isinstance(part, Sub) or _PLAIN_ARGUMENT.fullmatch(part) for part in text.parts
+    ):
+        return render(text)
+    quoted = "".join(
+        part.syntax() if isinstance(part, Sub) else _escape(part, "'") for part in text.parts
+    )
+    return f"'{quoted}'"
+
+
+def _escape(literal: str, quote: str) -> str:
+    escaped = literal.replace("\\", "\\\\").replace("$(", "\\$(")
+    return escaped.replace(quote, "\\" + quote) if quote else escaped

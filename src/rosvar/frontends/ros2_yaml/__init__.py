@@ -1,0 +1,1 @@
+"""frontends/ros2_yaml: ROS 2 YAML launch files."""
