@@ -15,6 +15,7 @@ from typing import Any, Concatenate, ParamSpec, TypeVar
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import Snapshot
+from rosvar.interpreter.dialect import Dialect, Handler, RosVersion
 from rosvar.interpreter.lifted import apply, lift
 from rosvar.interpreter.model import Decision, ErrorEvent, Guard, LaunchModel, Raw
 from rosvar.interpreter.scope import MISSING, ArgValue, Scope
@@ -26,10 +27,10 @@ from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
 from rosvar.logic.terms import Hole
 from rosvar.workspace import Workspace
 
-Handler = Callable[["Interpretation", Entity, Scope], None]
 V = TypeVar("V")
 P = ParamSpec("P")
-TAGS: dict[str, Handler] = {}
+ROS1 = Dialect(RosVersion.ROS1, Substituter)
+TAGS = ROS1.tags
 MAX_INCLUDE_DEPTH = 64
 MAX_INCLUDES = 4096
 """Includes followed in one interpretation: a diamond (each file including the next twice)
@@ -42,16 +43,8 @@ TRUE_WORDS = ("true", "1")
 FALSE_WORDS = ("false", "0")
 
 
-def tag(name: str) -> Callable[[Handler], Handler]:
-    """Register the handler of ``<name>`` (extension by registry, not if-chains)."""
-
-    def register(handler: Handler) -> Handler:
-        if name in TAGS:  # a second handler would silently replace the first
-            raise ValueError(f"tag <{name}> is registered twice")
-        TAGS[name] = handler
-        return handler
-
-    return register
+tag = ROS1.tag
+"""Register a ROS 1 tag handler."""
 
 
 def processed(
@@ -102,7 +95,9 @@ class Interpretation:
         env_domains: Callable[[str], tuple[Slot, ...]],
         file: str,
         files: Snapshot | None = None,
+        dialect: Dialect | None = None,
     ) -> None:
+        self.dialect = dialect or ROS1
         self.workspace = workspace
         self.files = files or Snapshot()
         self.space = space
@@ -112,7 +107,7 @@ class Interpretation:
         self.pc: BDD = space.true
         # A cycle (broken by ``close``): left to the garbage collector, it could free BDD
         # nodes after their manager, which CUDD reports as an error.
-        self.substituter = Substituter(self)
+        self.substituter = self.dialect.substituter(self)
         inputs: dict[str, ArgInput] = {}
         self.model = LaunchModel(file=file, space=space, inputs=inputs, domains={})
         self.default_machine: Choice[Raw | None] = Choice.const(space, None)
@@ -344,10 +339,11 @@ class Interpretation:
             )
             return
         saved = self._location
+        tags = self.dialect.tags
         self.depth += 1
         try:
             for child in children:
-                handler = TAGS.get(child.tag)
+                handler = tags.get(child.tag)
                 self._location = child.location
                 if handler is None:
                     self.warn("tag-unknown", f"unrecognized tag <{child.tag}>")

@@ -76,9 +76,21 @@ class NodeDecl:
     fields: dict[str, Choice[Raw | None]]
     remaps: list[Remap]
     env: list[EnvSetting]
+    parameters: list[NodeParameter] = field(default_factory=list)  # ROS 2: in order
 
     def field(self, key: str) -> Choice[Raw | None]:
         return self.fields[key]
+
+
+@dataclass(slots=True)
+class NodeParameter:
+    """A ROS 2 node's parameter (``name`` and ``value``) or parameter file (``file``), in the
+    order launch_ros passes them: later ones override earlier ones."""
+
+    condition: BDD
+    name: Raw | None
+    value: Raw | None
+    file: Raw | None = None
 
 
 @dataclass(slots=True)

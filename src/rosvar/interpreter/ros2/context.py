@@ -1,0 +1,68 @@
+"""The variational counterpart of ros2/launch's ``LaunchContext``.
+
+Unlike roslaunch's scopes, launch configurations are global: an ``<include>`` does
+not scope them (an ``<arg>`` or ``<let>`` of an included file leaks to the includer);
+only a scoped ``<group>`` pushes a copy and pops it. The pushed namespace, global
+remaps and global params live in launch configurations too, so they follow the
+same rule.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from rosvar.interpreter.model import Raw
+from rosvar.logic.bdd import BDD
+from rosvar.logic.choice import Choice
+
+Configuration = Choice[Raw | None]
+"""A launch configuration's value per configuration; None where it is not set."""
+
+
+@dataclass(slots=True)
+class GlobalParam:
+    """A ``<set_parameter>``: prepended to the parameters of later nodes."""
+
+    condition: BDD
+    name: Raw
+    value: Raw
+
+
+@dataclass(slots=True)
+class GlobalRemap:
+    """A ``<set_remap>``: prepended to the remappings of later nodes."""
+
+    condition: BDD
+    source: Raw
+    target: Raw
+
+
+@dataclass(slots=True)
+class Context:
+    """Launch configurations and the ROS-specific state kept beside them."""
+
+    filename: str
+    configurations: dict[str, Configuration] = field(default_factory=dict)
+    namespace: Choice[Raw | None] | None = None
+    remaps: list[GlobalRemap] = field(default_factory=list)
+    params: list[GlobalParam] = field(default_factory=list)
+    env: dict[str, Choice[Raw | None]] = field(default_factory=dict)
+
+    def scoped(self) -> Context:
+        """A copy for a scoped group (``PushLaunchConfigurations``)."""
+        return Context(
+            self.filename,
+            dict(self.configurations),
+            self.namespace,
+            list(self.remaps),
+            list(self.params),
+            dict(self.env),
+        )
+
+    def restore(self, saved: Context) -> None:
+        """``PopLaunchConfigurations``: back to ``saved``'s state."""
+        self.configurations = saved.configurations
+        self.namespace = saved.namespace
+        self.remaps = saved.remaps
+        self.params = saved.params
+        self.env = saved.env
