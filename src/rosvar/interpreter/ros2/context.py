@@ -4,7 +4,7 @@ Unlike roslaunch's scopes, launch configurations are global: an ``<include>`` do
 not scope them (an ``<arg>`` or ``<let>`` of an included file leaks to the includer);
 only a scoped ``<group>`` pushes a copy and pops it. The pushed namespace, global
 remaps and global params live in launch configurations too, so they follow the
-same rule.
+same rule (with a twist, see :meth:`Context.scoped`).
 """
 
 from __future__ import annotations
@@ -44,18 +44,23 @@ class Context:
     filename: str
     configurations: dict[str, Configuration] = field(default_factory=dict)
     namespace: Choice[Raw | None] | None = None
-    remaps: list[GlobalRemap] = field(default_factory=list)
-    params: list[GlobalParam] = field(default_factory=list)
+    remaps: list[GlobalRemap] | None = None
+    params: list[GlobalParam] | None = None
     env: dict[str, Choice[Raw | None]] = field(default_factory=dict)
 
     def scoped(self) -> Context:
-        """A copy for a scoped group (``PushLaunchConfigurations``)."""
+        """A copy for a scoped group (``PushLaunchConfigurations``).
+
+        The copy is shallow, as launch's: ``<set_remap>`` and ``<set_parameter>`` append
+        to the lists in place, so inside a group they reach past it when the list existed
+        before the group (and not when the group made it).
+        """
         return Context(
             self.filename,
             dict(self.configurations),
             self.namespace,
-            list(self.remaps),
-            list(self.params),
+            self.remaps,
+            self.params,
             dict(self.env),
         )
 

@@ -13,6 +13,7 @@ from rosvar.interpreter.ros2.context import Context
 from rosvar.interpreter.ros2.dialect import ROS2
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.inputs import UNSET
 from rosvar.workspace import Workspace
 
 
@@ -32,7 +33,7 @@ def interpret(
         workspace,
         space,
         lambda _file, _name: (),
-        lambda _name: (),
+        lambda _name: (UNSET,),  # a variable not given is not set (a clean environment)
         file,
         Snapshot(registry.load),
         ROS2,

@@ -44,8 +44,8 @@ def group(it: Interpretation, entity: Entity, context: Context) -> None:
             if is_forwarding is not True:
                 context.configurations = {}
                 context.namespace = None
-                context.remaps = []
-                context.params = []
+                context.remaps = None
+                context.params = None
             _keep(it, keeps, saved, context)
             try:
                 it.walk(body, context)

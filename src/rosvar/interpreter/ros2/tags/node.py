@@ -28,8 +28,8 @@ def node(it: Interpretation, entity: Entity, context: Context) -> None:
         value = it.attr(entity, key, context)
         fields[key] = Choice.const(it.space, None) if value is None else value.map(_some)
     fields["ros_namespace"] = context.namespace or Choice.const(it.space, None)
-    remaps = [Remap(r.condition, r.source, r.target) for r in context.remaps]
-    parameters = [NodeParameter(p.condition, p.name, p.value) for p in context.params]
+    remaps = [Remap(r.condition, r.source, r.target) for r in context.remaps or ()]
+    parameters = [NodeParameter(p.condition, p.name, p.value) for p in context.params or ()]
     env: list[EnvSetting] = []
     for child in entity.children:
         with it.at(child), it.under(it.condition_of(child, context)) as live:

@@ -1,5 +1,6 @@
 """Actions that change what later nodes get: ``<set_remap>``, ``<set_parameter>``,
-``<set_env>``, ``<unset_env>``. They live in launch configurations, so groups scope them."""
+``<set_env>``, ``<unset_env>``. They live in launch configurations (the environment in its
+own stack), so scoped groups confine them, up to the shared lists of :meth:`Context.scoped`."""
 
 from __future__ import annotations
 
@@ -18,6 +19,8 @@ def set_remap(it: Interpretation, entity: Entity, context: Context) -> None:
     source, target = it.required(entity, "from", context), it.required(entity, "to", context)
     if source is None or target is None:
         return
+    if context.remaps is None:
+        context.remaps = []
     for condition, (s, t) in split(it, combine([source, target], tuple)):
         context.remaps.append(GlobalRemap(it.pc & condition, s, t))
 
@@ -28,6 +31,8 @@ def set_parameter(it: Interpretation, entity: Entity, context: Context) -> None:
     name, value = it.required(entity, "name", context), it.required(entity, "value", context)
     if name is None or value is None:
         return
+    if context.params is None:
+        context.params = []
     for condition, (n, v) in split(it, combine([name, value], tuple)):
         context.params.append(GlobalParam(it.pc & condition, n, v))
 
