@@ -15,9 +15,10 @@ from typing import Any, Concatenate, ParamSpec, TypeVar
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import Snapshot
-from rosvar.interpreter.dialect import Dialect, Handler, RosVersion
+from rosvar.interpreter.dialect import Dialect, RosVersion
 from rosvar.interpreter.lifted import apply, lift
 from rosvar.interpreter.model import Decision, ErrorEvent, Guard, LaunchModel, Raw
+from rosvar.interpreter.ros2.context import Context
 from rosvar.interpreter.scope import MISSING, ArgValue, Scope
 from rosvar.interpreter.substitution import Substituter
 from rosvar.logic.bdd import BDD
@@ -29,6 +30,9 @@ from rosvar.workspace import Workspace
 
 V = TypeVar("V")
 P = ParamSpec("P")
+S = TypeVar("S", Scope, Context)
+AnyScope = Scope | Context
+"""What a dialect's handlers carry along the walk: roslaunch's scope or ros2's context."""
 ROS1 = Dialect(RosVersion.ROS1, Substituter)
 TAGS = ROS1.tags
 MAX_INCLUDE_DEPTH = 64
@@ -48,8 +52,8 @@ tag = ROS1.tag
 
 
 def processed(
-    body: Callable[Concatenate[Interpretation, Entity, Scope, P], None],
-) -> Callable[Concatenate[Interpretation, Entity, Scope, P], None]:
+    body: Callable[Concatenate[Interpretation, Entity, S, P], None],
+) -> Callable[Concatenate[Interpretation, Entity, S, P], None]:
     """roslaunch's ``ifunless_test``, which every tag handler starts with: ``body`` runs
     where the tag's ``if``/``unless`` lets it, on the path narrowed to there.
 
@@ -58,7 +62,7 @@ def processed(
     """
 
     def guarded(
-        it: Interpretation, entity: Entity, scope: Scope, /, *args: P.args, **kwargs: P.kwargs
+        it: Interpretation, entity: Entity, scope: S, /, *args: P.args, **kwargs: P.kwargs
     ) -> None:
         attributes = entity.attributes
         if "if" not in attributes and "unless" not in attributes:
@@ -240,13 +244,13 @@ class Interpretation:
             return Choice.empty(self.space)
         return Choice.const(self.space, value)
 
-    def resolve(self, text: str | None, scope: Scope, context: str = "") -> Choice[Raw] | None:
+    def resolve(self, text: str | None, scope: AnyScope, context: str = "") -> Choice[Raw] | None:
         if text is not None and "$" not in text:  # most texts are literal: nothing can fail
             return Choice.const(self.space, text)
         value = self.substituter.resolve(text, scope)
         return None if value is None else self.strip(value, context)
 
-    def attr(self, entity: Entity, name: str, scope: Scope) -> Choice[Raw] | None:
+    def attr(self, entity: Entity, name: str, scope: AnyScope) -> Choice[Raw] | None:
         text = entity.attributes.get(name)
         if text is None:  # most optional attributes are absent: no message to format
             return None
@@ -254,7 +258,7 @@ class Interpretation:
             return Choice.const(self.space, text)
         return self.resolve(text, scope, f"<{entity.tag}> attribute '{name}'")
 
-    def required(self, entity: Entity, name: str, scope: Scope) -> Choice[Raw] | None:
+    def required(self, entity: Entity, name: str, scope: AnyScope) -> Choice[Raw] | None:
         value = self.attr(entity, name, scope)  # None exactly when the attribute is absent
         if value is None:
             self.fail(
@@ -289,7 +293,7 @@ class Interpretation:
             self.fail(invalid, "bool-invalid", f"{label}: value is not a 'bool' type")
         return true
 
-    def condition_of(self, entity: Entity, scope: Scope) -> BDD:
+    def condition_of(self, entity: Entity, scope: AnyScope) -> BDD:
         """``ifunless_test``: where the tag is processed."""
         attributes = entity.attributes
         if "if" not in attributes and "unless" not in attributes:  # most tags
@@ -327,7 +331,7 @@ class Interpretation:
         return invalid
 
     # -- walking ------------------------------------------------------------------------
-    def walk(self, children: Sequence[Entity], scope: Scope) -> None:
+    def walk(self, children: Sequence[Entity], scope: AnyScope) -> None:
         if not children:
             return
         if self.depth >= MAX_NESTING:

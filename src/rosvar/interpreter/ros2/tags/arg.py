@@ -12,7 +12,7 @@ from rosvar.interpreter.interpretation import Interpretation, processed
 from rosvar.interpreter.model import ArgDecl, Raw
 from rosvar.interpreter.ros2.context import Context
 from rosvar.interpreter.ros2.dialect import tag
-from rosvar.interpreter.ros2.tags.common import assign
+from rosvar.interpreter.ros2.tags.common import assign, optional
 from rosvar.logic.choice import Choice
 
 
@@ -31,7 +31,7 @@ def arg(it: Interpretation, entity: Entity, context: Context) -> None:
     else:
         with it.under(unset) as live:
             if live:
-                context.configurations[name] = assign(it, old, default.map(_optional))
+                context.configurations[name] = assign(it, old, optional(default))
     value = context.configurations.get(name)
     choices = entity.get("choices")
     if choices is not None and value is not None:
@@ -48,10 +48,6 @@ def arg(it: Interpretation, entity: Entity, context: Context) -> None:
     )
 
 
-def _optional(leaf: Raw) -> Raw | None:
-    return leaf
-
-
 @tag("let")
 @processed
 def let(it: Interpretation, entity: Entity, context: Context) -> None:
@@ -66,5 +62,5 @@ def let(it: Interpretation, entity: Entity, context: Context) -> None:
         with it.under(condition) as live:
             if live:
                 old = context.configurations.get(key)
-                new: Choice[Raw | None] = value.map(_optional)
+                new: Choice[Raw | None] = optional(value)
                 context.configurations[key] = assign(it, old, new)

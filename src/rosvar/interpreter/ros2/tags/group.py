@@ -12,10 +12,9 @@ from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.ros2.context import Context
 from rosvar.interpreter.ros2.dialect import tag
-from rosvar.interpreter.ros2.tags.common import assign
+from rosvar.interpreter.ros2.tags.common import assign, optional
 from rosvar.interpreter.tags.common import bool_value
-from rosvar.logic.choice import Choice, combine
-from rosvar.logic.choice import Fail
+from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace
 
 
@@ -59,7 +58,7 @@ def _keep(it: Interpretation, keeps: list[Entity], source: Context, target: Cont
         name, value = keep.get("name"), it.attr(keep, "value", source)
         if name and value is not None:
             target.configurations[name] = assign(
-                it, target.configurations.get(name), value.map(lambda leaf: leaf)
+                it, target.configurations.get(name), optional(value)
             )
 
 
@@ -71,8 +70,10 @@ def push_ros_namespace(it: Interpretation, entity: Entity, context: Context) -> 
     if pushed is None:
         return
     base = context.namespace or Choice.const(it.space, None)
-    combined = it.strip(combine([base, pushed], _push), "<push-ros-namespace>")
-    context.namespace = assign(it, context.namespace, combined.map(lambda leaf: leaf))
+    combined: Choice[Raw] = it.strip(
+        combine([base, optional(pushed)], _push), "<push-ros-namespace>"
+    )
+    context.namespace = assign(it, context.namespace, optional(combined))
 
 
 def _push(leaves: list[Raw | None]) -> Raw | Fail:

@@ -19,7 +19,7 @@ from rosvar.interpreter.interpretation import (
 from rosvar.interpreter.model import IncludeDecl, Raw
 from rosvar.interpreter.ros2.context import Context
 from rosvar.interpreter.ros2.dialect import tag
-from rosvar.interpreter.ros2.tags.common import assign
+from rosvar.interpreter.ros2.tags.common import assign, optional
 from rosvar.logic.choice import Choice
 from rosvar.workspace.paths import real_path
 
@@ -41,7 +41,7 @@ def include(it: Interpretation, entity: Entity, context: Context) -> None:
                 passed.append((name, value))
     for name, value in passed:
         context.configurations[name] = assign(
-            it, context.configurations.get(name), value.map(lambda leaf: leaf)
+            it, context.configurations.get(name), optional(value)
         )
     for condition, file in split(it, files):
         with it.under(condition):

@@ -13,6 +13,7 @@ from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import EnvSetting, NodeDecl, NodeParameter, Raw, Remap
 from rosvar.interpreter.ros2.context import Context
 from rosvar.interpreter.ros2.dialect import tag
+from rosvar.interpreter.ros2.tags.common import optional
 from rosvar.logic.choice import Choice, combine
 
 FIELDS = ("pkg", "exec", "name", "namespace", "args", "ros_args", "launch-prefix", "output")
@@ -26,7 +27,7 @@ def node(it: Interpretation, entity: Entity, context: Context) -> None:
     fields: dict[str, Choice[Raw | None]] = {}
     for key in (*FIELDS, "cmd"):
         value = it.attr(entity, key, context)
-        fields[key] = Choice.const(it.space, None) if value is None else value.map(_some)
+        fields[key] = Choice.const(it.space, None) if value is None else optional(value)
     fields["ros_namespace"] = context.namespace or Choice.const(it.space, None)
     remaps = [Remap(r.condition, r.source, r.target) for r in context.remaps or ()]
     parameters = [NodeParameter(p.condition, p.name, p.value) for p in context.params or ()]
@@ -47,10 +48,6 @@ def node(it: Interpretation, entity: Entity, context: Context) -> None:
         NodeDecl(it.pc, entity.location, context.filename, False, fields, remaps, env,
                  parameters)
     )
-
-
-def _some(leaf: Raw) -> Raw | None:
-    return leaf
 
 
 def _remap(it: Interpretation, entity: Entity, context: Context, out: list[Remap]) -> None:

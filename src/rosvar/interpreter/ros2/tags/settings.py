@@ -9,7 +9,7 @@ from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.ros2.context import Context, GlobalParam, GlobalRemap
 from rosvar.interpreter.ros2.dialect import tag
-from rosvar.interpreter.ros2.tags.common import assign
+from rosvar.interpreter.ros2.tags.common import assign, optional
 from rosvar.logic.choice import Choice, combine
 
 
@@ -42,7 +42,7 @@ def set_parameter(it: Interpretation, entity: Entity, context: Context) -> None:
 def set_env(it: Interpretation, entity: Entity, context: Context) -> None:
     name, value = entity.get("name"), it.required(entity, "value", context)
     if name and value is not None:
-        context.env[name] = assign(it, _current(it, context, name), value.map(lambda v: v))
+        context.env[name] = assign(it, _current(it, context, name), optional(value))
 
 
 @tag("unset_env")
