@@ -42,9 +42,12 @@ def run_oracle(
     arguments: Mapping[str, str],
     package_paths: Sequence[str | os.PathLike[str]],
     env: Mapping[str, str] | None = None,
+    strict: bool = True,
 ) -> dict[str, Any]:
-    """The oracle's canonical JSON for ``ros2 launch file name:=value ...`` (strict mode)."""
-    command = [str(oracle_python()), str(ORACLE / "oracle.py"), "--strict", os.fspath(file)]
+    """The oracle's canonical JSON for ``ros2 launch file name:=value ...``; not ``strict``,
+    packages outside ``package_paths`` are placeholders (for nodes of uninstalled packages)."""
+    command = [str(oracle_python()), str(ORACLE / "oracle.py"), os.fspath(file)]
+    command += ["--strict"] if strict else []
     command += [f"{name}:={value}" for name, value in arguments.items()]
     for path in package_paths:
         command += ["--package-path", os.fspath(path)]

@@ -3,6 +3,7 @@ ros2/launch (the oracle), for sampled launch arguments."""
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
@@ -156,8 +157,6 @@ def _rosvar_nodes(package: Path, arguments: dict[str, str]) -> tuple[bool, list[
     keys = ("package", "executable", "name", "namespace", "remappings", "parameters",
             "arguments")
     nodes = [{key: node[key] for key in keys} for node in result.nodes]
-    import json
-
     return result.ok, sorted(nodes, key=lambda n: json.dumps(n, sort_keys=True))
 
 

@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+import os
+import re
 from collections.abc import Mapping
 
+from rosvar.files import FileRefused, read_file
 from rosvar.frontends import registry
 from rosvar.frontends.ros1_xml.parser import Snapshot
 from rosvar.interpreter.interpretation import Interpretation
@@ -57,3 +60,34 @@ def interpret(
         return it.model
     finally:
         it.close()
+
+
+ROS2_SUFFIXES = (".launch.py", ".launch.yaml")
+ROS2_MARKERS = re.compile(rb"""\$\((var|find-pkg-share|find-pkg-prefix) |<node\b[^>]*\bexec=|<let\b""")
+"""Texts no ROS 1 launch file has: ROS 2's substitutions, ``exec=`` on a node, ``<let>``."""
+
+
+def is_ros2_launch(file: str) -> bool:
+    """Whether ``file`` is a ROS 2 launch file: a Python or YAML launch file, a file built
+    by ament (per the nearest ``package.xml`` above it) or one using ROS 2-only syntax.
+    A minimal hook until the workspace knows its ROS version."""
+    if file.endswith(ROS2_SUFFIXES):
+        return True
+    try:
+        if ROS2_MARKERS.search(read_file(file)):
+            return True
+    except (FileRefused, OSError):
+        return False
+    folder = os.path.dirname(os.path.abspath(file))
+    while True:
+        manifest = os.path.join(folder, "package.xml")
+        if os.path.isfile(manifest):
+            try:
+                text = read_file(manifest)
+            except (FileRefused, OSError):
+                return False
+            return re.search(rb"<build_type>\s*ament_", text) is not None
+        parent = os.path.dirname(folder)
+        if parent == folder:
+            return False
+        folder = parent
