@@ -130,6 +130,16 @@ CASES: dict[str, Case] = {
           </launch>"""},
         [{}, {"k": "5"}],
     ),
+    "errors-required-choices-truthiness": (
+        {"main.launch.xml": """<launch>
+            <arg name="need"/>
+            <arg name="mode" default="a"><choice value="a"/><choice value="b"/></arg>
+            <arg name="flag" default="true"/>
+            <node pkg="pkg" exec="x" name="x_$(var need)_$(var mode)" if="$(var flag)"/>
+          </launch>"""},
+        [{}, {"need": "1"}, {"need": "1", "mode": "c"}, {"need": "1", "flag": "yes"},
+         {"need": "1", "mode": "b", "flag": "TRUE"}],
+    ),
     "env-set-unset": (
         {"main.launch.xml": """<launch>
             <set_env name="R" value="set"/>

@@ -2,7 +2,7 @@
 
 Both write the global launch configurations: an ``<arg>``'s ``default`` applies only where
 no value is set yet (given on the command line or by an including file), and a value
-outside ``choices`` is an error.
+outside its ``<choice value=...>`` children is an error.
 """
 
 from __future__ import annotations
@@ -33,9 +33,8 @@ def arg(it: Interpretation, entity: Entity, context: Context) -> None:
             if live:
                 context.configurations[name] = assign(it, old, optional(default))
     value = context.configurations.get(name)
-    choices = entity.get("choices")
-    if choices is not None and value is not None:
-        allowed = [c.strip() for c in choices.split("|")]
+    allowed = [c.get("value") or "" for c in entity.children if c.tag == "choice"]
+    if allowed and value is not None:
         bad = value.where(lambda leaf: isinstance(leaf, str) and leaf not in allowed)
         it.fail(
             bad,
