@@ -63,7 +63,6 @@ def run_oracle(
 
 def canonical_nodes(result: Mapping[str, Any]) -> list[dict[str, Any]]:
     """The compared fields of the oracle's nodes, in a stable order."""
-    keys = ("package", "executable", "name", "namespace", "remappings", "parameters",
-            "arguments")
+    keys = ("package", "executable", "name", "namespace", "remappings", "parameters", "arguments")
     nodes = [{key: node.get(key) for key in keys} for node in result.get("nodes", [])]
     return sorted(nodes, key=lambda n: json.dumps(n, sort_keys=True))

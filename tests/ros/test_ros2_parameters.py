@@ -11,8 +11,9 @@ def test_wildcards() -> None:
 
 
 def test_later_sources_override_and_patterns_keep_first_appearance() -> None:
-    entries = file_entries({"/n": {"ros__parameters": {"p": 1, "g": {"x": 2}}},
-                            "/**": {"ros__parameters": {"p": 0}}})
+    entries = file_entries(
+        {"/n": {"ros__parameters": {"p": 1, "g": {"x": 2}}}, "/**": {"ros__parameters": {"p": 0}}}
+    )
     assert entries == [("/n", {"p": 1, "g.x": 2}), ("/**", {"p": 0})]
     # /n comes first in the table, so /** (applied after it) wins for p
     assert effective("/n", [Source(entries=tuple(entries))]) == {"p": 0, "g.x": 2}
@@ -21,4 +22,10 @@ def test_later_sources_override_and_patterns_keep_first_appearance() -> None:
 
 def test_typed_values() -> None:
     assert [typed(t) for t in ("7", "1.5", "true", "[1, 2]", "a: b", "")] == [
-        7, 1.5, True, [1, 2], "a: b", ""]
+        7,
+        1.5,
+        True,
+        [1, 2],
+        "a: b",
+        "",
+    ]

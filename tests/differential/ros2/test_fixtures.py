@@ -26,18 +26,22 @@ Case = tuple[dict[str, str], list[dict[str, str]]]
 
 CASES: dict[str, Case] = {
     "arg-default-and-given": (
-        {"main.launch.xml": """<launch>
+        {
+            "main.launch.xml": """<launch>
             <arg name="n" default="talker"/>
             <node pkg="pkg" exec="talker" name="$(var n)"/>
-          </launch>"""},
+          </launch>"""
+        },
         [{}, {"n": "other"}],
     ),
     "if-unless-truthiness": (
-        {"main.launch.xml": """<launch>
+        {
+            "main.launch.xml": """<launch>
             <arg name="on" default="true"/>
             <node pkg="pkg" exec="a" name="a" if="$(var on)"/>
             <node pkg="pkg" exec="b" name="b" unless="$(var on)"/>
-          </launch>"""},
+          </launch>"""
+        },
         [{}, {"on": "False"}, {"on": "1"}, {"on": "0"}],
     ),
     "include-args-leak-to-includer": (
@@ -55,16 +59,19 @@ CASES: dict[str, Case] = {
         [{}, {"x": "cli"}],
     ),
     "scoped-group-confines-let": (
-        {"main.launch.xml": """<launch>
+        {
+            "main.launch.xml": """<launch>
             <let name="v" value="outer"/>
             <group><let name="v" value="inner"/><node pkg="pkg" exec="a" name="$(var v)"/></group>
             <group scoped="false"><push-ros-namespace namespace="ns"/></group>
             <node pkg="pkg" exec="b" name="$(var v)"/>
-          </launch>"""},
+          </launch>"""
+        },
         [{}],
     ),
     "namespaces-pushed-and-absolute": (
-        {"main.launch.xml": """<launch>
+        {
+            "main.launch.xml": """<launch>
             <group>
               <push-ros-namespace namespace="robot"/>
               <push-ros-namespace namespace="arm"/>
@@ -73,28 +80,33 @@ CASES: dict[str, Case] = {
               <node pkg="pkg" exec="c" name="c" namespace="/abs"/>
             </group>
             <node pkg="pkg" exec="d" name="d"/>
-          </launch>"""},
+          </launch>"""
+        },
         [{}],
     ),
     "remaps-global-then-own": (
-        {"main.launch.xml": """<launch>
+        {
+            "main.launch.xml": """<launch>
             <group><set_remap from="z" to="w"/></group>
             <set_remap from="a" to="b"/>
             <group><set_remap from="c" to="d"/>
               <node pkg="pkg" exec="x" name="x"><remap from="e" to="f"/></node></group>
             <node pkg="pkg" exec="y" name="y"/>
-          </launch>"""},
+          </launch>"""
+        },
         [{}],
     ),
     "global-params-shared-list-through-groups": (
-        {"main.launch.xml": """<launch>
+        {
+            "main.launch.xml": """<launch>
             <group><set_parameter name="first" value="1"/></group>
             <node pkg="pkg" exec="x" name="x"/>
             <set_parameter name="a" value="1"/>
             <group><set_parameter name="b" value="2"/></group>
             <group forwarding="false"><node pkg="pkg" exec="z" name="z"/></group>
             <node pkg="pkg" exec="y" name="y"/>
-          </launch>"""},
+          </launch>"""
+        },
         [{}],
     ),
     "parameters-typed-files-nested-global": (
@@ -122,31 +134,42 @@ CASES: dict[str, Case] = {
         [{}, {"rate": "20"}],
     ),
     "eval-and-substitution-quoting": (
-        {"main.launch.xml": """<launch>
+        {
+            "main.launch.xml": """<launch>
             <arg name="k" default="2"/>
             <node pkg="pkg" exec="x" name="n$(eval '$(var k) * 3')"
                   if="$(eval '\\'$(var k)\\' == \\'2\\'')"/>
             <node pkg="pkg" exec="y" name="y" args="--a 'b c' $(var k)"/>
-          </launch>"""},
+          </launch>"""
+        },
         [{}, {"k": "5"}],
     ),
     "errors-required-choices-truthiness": (
-        {"main.launch.xml": """<launch>
+        {
+            "main.launch.xml": """<launch>
             <arg name="need"/>
             <arg name="mode" default="a"><choice value="a"/><choice value="b"/></arg>
             <arg name="flag" default="true"/>
             <node pkg="pkg" exec="x" name="x_$(var need)_$(var mode)" if="$(var flag)"/>
-          </launch>"""},
-        [{}, {"need": "1"}, {"need": "1", "mode": "c"}, {"need": "1", "flag": "yes"},
-         {"need": "1", "mode": "b", "flag": "TRUE"}],
+          </launch>"""
+        },
+        [
+            {},
+            {"need": "1"},
+            {"need": "1", "mode": "c"},
+            {"need": "1", "flag": "yes"},
+            {"need": "1", "mode": "b", "flag": "TRUE"},
+        ],
     ),
     "env-set-unset": (
-        {"main.launch.xml": """<launch>
+        {
+            "main.launch.xml": """<launch>
             <set_env name="R" value="set"/>
             <node pkg="pkg" exec="x" name="$(env R)_$(env NOPE fallback)"/>
             <unset_env name="R"/>
             <node pkg="pkg" exec="y" name="y_$(env R dflt)"/>
-          </launch>"""},
+          </launch>"""
+        },
         [{}],
     ),
 }
@@ -164,8 +187,7 @@ def _workspace(tmp_path: Path, files: dict[str, str]) -> Path:
 def _rosvar_nodes(package: Path, arguments: dict[str, str]) -> tuple[bool, list[dict[str, object]]]:
     workspace = discover([str(package.parent)])
     result = resolve_ros2(workspace, str(package / "main.launch.xml"), arguments)
-    keys = ("package", "executable", "name", "namespace", "remappings", "parameters",
-            "arguments")
+    keys = ("package", "executable", "name", "namespace", "remappings", "parameters", "arguments")
     nodes = [{key: node[key] for key in keys} for node in result.nodes]
     return result.ok, sorted(nodes, key=lambda n: json.dumps(n, sort_keys=True))
 

@@ -54,16 +54,20 @@ def restrict(model: LaunchModel) -> Ros2Resolution:
     for error in model.errors:
         if error.condition == true:
             result.errors.append(
-                {"code": error.code, "message": error.message,
-                 "location": error.location.to_json()}
+                {"code": error.code, "message": error.message, "location": error.location.to_json()}
             )
     for decl in model.nodes:
         if decl.condition == true:
             try:
                 result.nodes.append(_node(decl))
             except ValueError as error:
-                result.errors.append({"code": "node-invalid", "message": str(error),
-                                      "location": decl.location.to_json()})
+                result.errors.append(
+                    {
+                        "code": "node-invalid",
+                        "message": str(error),
+                        "location": decl.location.to_json(),
+                    }
+                )
     return result
 
 
@@ -77,8 +81,9 @@ def _text(decl: NodeDecl, key: str) -> str | None:
 def _node(decl: NodeDecl) -> dict[str, object]:
     true = decl.condition.bdd.true
     name = _text(decl, "name")
-    namespace = make_absolute(prefix_namespace(_text(decl, "ros_namespace"),
-                                               _text(decl, "namespace")))
+    namespace = make_absolute(
+        prefix_namespace(_text(decl, "ros_namespace"), _text(decl, "namespace"))
+    )
     fqn = None
     if name is not None:
         fqn = (namespace or "").rstrip("/") + "/" + name

@@ -63,7 +63,7 @@ def interpret(
 
 
 ROS2_SUFFIXES = (".launch.py", ".launch.yaml")
-ROS2_MARKERS = re.compile(rb"""\$\((var|find-pkg-share|find-pkg-prefix) |<node\b[^>]*\bexec=|<let\b""")
+ROS2_MARKERS = re.compile(rb"\$\((var|find-pkg-share|find-pkg-prefix) |<node\b[^>]*\bexec=|<let\b")
 """Texts no ROS 1 launch file has: ROS 2's substitutions, ``exec=`` on a node, ``<let>``."""
 
 

@@ -193,9 +193,11 @@ def _var(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Valu
     if value is None:
         return _fail(host, f"launch configuration '{name}' does not exist", "var-undefined")
     return value.map(
-        lambda leaf: Fail(f"launch configuration '{name}' does not exist", "var-undefined")
-        if leaf is None
-        else leaf
+        lambda leaf: (
+            Fail(f"launch configuration '{name}' does not exist", "var-undefined")
+            if leaf is None
+            else leaf
+        )
     )
 
 

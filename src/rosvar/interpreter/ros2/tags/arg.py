@@ -42,8 +42,15 @@ def arg(it: Interpretation, entity: Entity, context: Context) -> None:
             f"argument '{name}' must be one of {allowed}",
         )
     it.model.args.append(
-        ArgDecl(name, entity.location, it.pc, entity.get("default"), None,
-                entity.get("description"), it.model.inputs.get(name))
+        ArgDecl(
+            name,
+            entity.location,
+            it.pc,
+            entity.get("default"),
+            None,
+            entity.get("description"),
+            it.model.inputs.get(name),
+        )
     )
 
 

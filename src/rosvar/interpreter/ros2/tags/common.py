@@ -7,9 +7,9 @@ from rosvar.interpreter.model import Raw
 from rosvar.logic.choice import Choice, ite
 
 
-def assign(it: Interpretation, old: Choice[Raw | None] | None, new: Choice[Raw | None]) -> Choice[
-    Raw | None
-]:
+def assign(
+    it: Interpretation, old: Choice[Raw | None] | None, new: Choice[Raw | None]
+) -> Choice[Raw | None]:
     """``new`` on the current path, ``old`` (None where absent) elsewhere."""
     before = old if old is not None else Choice.const(it.space, None)
     if it.pc == it.space.true:

@@ -29,9 +29,7 @@ def group(it: Interpretation, entity: Entity, context: Context) -> None:
     keeps = [child for child in entity.children if child.tag == "keep"]
     scoped = _flag(it, entity, "scoped", context)
     forwarding = _flag(it, entity, "forwarding", context)
-    for condition, (is_scoped, is_forwarding) in split(
-        it, combine([scoped, forwarding], tuple)
-    ):
+    for condition, (is_scoped, is_forwarding) in split(it, combine([scoped, forwarding], tuple)):
         with it.under(condition) as live:
             if not live:
                 continue

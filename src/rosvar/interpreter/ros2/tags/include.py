@@ -40,9 +40,7 @@ def include(it: Interpretation, entity: Entity, context: Context) -> None:
             if name and value is not None:
                 passed.append((name, value))
     for name, value in passed:
-        context.configurations[name] = assign(
-            it, context.configurations.get(name), optional(value)
-        )
+        context.configurations[name] = assign(it, context.configurations.get(name), optional(value))
     for condition, file in split(it, files):
         with it.under(condition):
             _include(it, entity, context, file)
@@ -68,8 +66,9 @@ def _include(it: Interpretation, entity: Entity, context: Context, file: Raw) ->
         return
     it.included += 1
     root = it.load(file)
-    it.model.includes.append(IncludeDecl(it.pc, entity.location, Choice.const(it.space, file),
-                                         ns, root is not None))
+    it.model.includes.append(
+        IncludeDecl(it.pc, entity.location, Choice.const(it.space, file), ns, root is not None)
+    )
     if root is None:
         return
     it.stack.append(path)

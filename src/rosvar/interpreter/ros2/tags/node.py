@@ -45,8 +45,7 @@ def node(it: Interpretation, entity: Entity, context: Context) -> None:
             else:
                 it.warn("tag-unknown", f"unrecognized '{child.tag}' tag in <{entity.tag}> tag")
     it.model.nodes.append(
-        NodeDecl(it.pc, entity.location, context.filename, False, fields, remaps, env,
-                 parameters)
+        NodeDecl(it.pc, entity.location, context.filename, False, fields, remaps, env, parameters)
     )
 
 
@@ -80,8 +79,11 @@ def _param(
     nested = [child for child in entity.children if child.tag == "param"]
     value = it.attr(entity, "value", context)
     if nested and value is not None:
-        it.fail(it.space.true, "param-invalid",
-                "nested parameters and value attributes are mutually exclusive")
+        it.fail(
+            it.space.true,
+            "param-invalid",
+            "nested parameters and value attributes are mutually exclusive",
+        )
         return
     for condition, key in split(it, name):
         with it.under(condition):
@@ -91,8 +93,11 @@ def _param(
                 for child in nested:
                     _param(it, child, context, f"{prefix}{key}.", out)
             elif value is None:
-                it.fail(it.space.true, "param-invalid",
-                        "either a value attribute or nested params are needed")
+                it.fail(
+                    it.space.true,
+                    "param-invalid",
+                    "either a value attribute or nested params are needed",
+                )
             else:
                 for v_condition, leaf in split(it, value):
                     out.append(NodeParameter(it.pc & v_condition, prefix + key, leaf))

@@ -50,9 +50,7 @@ def set_env(it: Interpretation, entity: Entity, context: Context) -> None:
 def unset_env(it: Interpretation, entity: Entity, context: Context) -> None:
     name = entity.get("name")
     if name:
-        context.env[name] = assign(
-            it, _current(it, context, name), Choice.const(it.space, None)
-        )
+        context.env[name] = assign(it, _current(it, context, name), Choice.const(it.space, None))
 
 
 def _current(it: Interpretation, context: Context, name: str) -> Choice[Raw | None]:
