@@ -161,6 +161,24 @@ CASES: dict[str, Case] = {
             {"need": "1", "mode": "b", "flag": "TRUE"},
         ],
     ),
+    "unexpected-attribute-fails-even-where-never-entered": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="on" default="false"/>
+            <node pkg="pkg" exec="x" name="x"/>
+            <group if="$(var on)"><node pkg="pkg" exec="y" name="y" bogus="1"/></group>
+          </launch>"""
+        },
+        [{}, {"on": "true"}],
+    ),
+    "unknown-tag-fails": (
+        {
+            "main.launch.xml": """<launch>
+            <node pkg="pkg" exec="x" name="x"/><frobnicate/>
+          </launch>"""
+        },
+        [{}],
+    ),
     "env-set-unset": (
         {
             "main.launch.xml": """<launch>

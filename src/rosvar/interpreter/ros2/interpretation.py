@@ -11,6 +11,7 @@ from rosvar.frontends import registry
 from rosvar.frontends.ros1_xml.parser import Snapshot
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.ros2 import schema
 from rosvar.interpreter.ros2 import tags as _tags  # noqa: F401 - registers the handlers
 from rosvar.interpreter.ros2.context import Context
 from rosvar.interpreter.ros2.dialect import ROS2
@@ -50,6 +51,7 @@ def interpret(
         it.stack.append(file)
         root = it.load(file)
         if root is not None:
+            schema.check(it, root)
             with it.at(root):
                 it.walk(root.children, context)
         failing = space.false

@@ -17,6 +17,7 @@ from rosvar.interpreter.interpretation import (
     split,
 )
 from rosvar.interpreter.model import IncludeDecl, Raw
+from rosvar.interpreter.ros2 import schema
 from rosvar.interpreter.ros2.context import Context
 from rosvar.interpreter.ros2.dialect import tag
 from rosvar.interpreter.ros2.tags.common import assign, optional
@@ -71,6 +72,7 @@ def _include(it: Interpretation, entity: Entity, context: Context, file: Raw) ->
     )
     if root is None:
         return
+    schema.check(it, root)
     it.stack.append(path)
     filename, context.filename = context.filename, file
     try:
