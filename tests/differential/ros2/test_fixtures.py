@@ -179,6 +179,22 @@ CASES: dict[str, Case] = {
         },
         [{}],
     ),
+    "timers-run-in-the-final-context": (
+        {
+            "main.launch.xml": """<launch>
+            <let name="x" value="before"/>
+            <group>
+              <push-ros-namespace namespace="g"/>
+              <timer period="1.5"><node pkg="pkg" exec="a" name="a_$(var x)"/>
+                <timer period="1"><node pkg="pkg" exec="c" name="c"/></timer></timer>
+              <node pkg="pkg" exec="d" name="d"/>
+            </group>
+            <let name="x" value="after"/>
+            <timer period="2"><node pkg="pkg" exec="b" name="b_$(var x)"/></timer>
+          </launch>"""
+        },
+        [{}],
+    ),
     "env-set-unset": (
         {
             "main.launch.xml": """<launch>

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from rosvar.frontends.entity import Entity
 from rosvar.interpreter.model import Raw
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
@@ -38,6 +39,16 @@ class GlobalRemap:
 
 
 @dataclass(slots=True)
+class Timer:
+    """A ``<timer>``'s actions, run at ``time`` in the context as it is then."""
+
+    time: float
+    sequence: int
+    condition: BDD
+    actions: list[Entity]
+
+
+@dataclass(slots=True)
 class Context:
     """Launch configurations and the ROS-specific state kept beside them."""
 
@@ -47,6 +58,8 @@ class Context:
     remaps: list[GlobalRemap] | None = None
     params: list[GlobalParam] | None = None
     env: dict[str, Choice[Raw | None]] = field(default_factory=dict)
+    timers: list[Timer] = field(default_factory=list)  # pending, shared by every copy
+    now: float = 0.0  # the virtual time of the actions being visited
 
     def scoped(self) -> Context:
         """A copy for a scoped group (``PushLaunchConfigurations``).
@@ -62,6 +75,8 @@ class Context:
             self.remaps,
             self.params,
             dict(self.env),
+            self.timers,
+            self.now,
         )
 
     def restore(self, saved: Context) -> None:

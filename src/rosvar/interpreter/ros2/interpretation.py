@@ -15,6 +15,7 @@ from rosvar.interpreter.ros2 import schema
 from rosvar.interpreter.ros2 import tags as _tags  # noqa: F401 - registers the handlers
 from rosvar.interpreter.ros2.context import Context
 from rosvar.interpreter.ros2.dialect import ROS2
+from rosvar.interpreter.ros2.tags.timer import fire
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import UNSET
@@ -54,6 +55,7 @@ def interpret(
             schema.check(it, root)
             with it.at(root):
                 it.walk(root.children, context)
+                fire(it, context)
         failing = space.false
         for error in it.model.errors:
             failing |= error.condition

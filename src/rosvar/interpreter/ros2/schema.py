@@ -24,6 +24,7 @@ ATTRIBUTES: dict[str, frozenset[str]] = {
     "include": frozenset({"file", "arg"}),
     "group": frozenset({"scoped", "forwarding", "keep"}),
     "keep": frozenset({"name", "value"}),
+    "timer": frozenset({"period"}),
     "push-ros-namespace": frozenset({"namespace"}),
     "push_ros_namespace": frozenset({"namespace"}),
     "set_remap": frozenset({"from", "to"}),
@@ -39,7 +40,7 @@ ATTRIBUTES: dict[str, frozenset[str]] = {
     "env": frozenset({"name", "value"}),
 }
 ALWAYS = frozenset({"if", "unless"})
-CONTAINERS = frozenset({"group", "launch"})
+CONTAINERS = frozenset({"group", "launch", "timer"})
 
 
 def check(it: Interpretation, root: Entity) -> None:

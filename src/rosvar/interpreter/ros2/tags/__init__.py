@@ -6,4 +6,5 @@ from rosvar.interpreter.ros2.tags import (  # noqa: F401 - imported for registra
     include,
     node,
     settings,
+    timer,
 )
