@@ -11,7 +11,6 @@ from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.ros2.context import Context, Timer
 from rosvar.interpreter.ros2.dialect import tag
 
-
 CREATED = itertools.count()
 """Creation order of timers, which breaks ties between equal times."""
 
