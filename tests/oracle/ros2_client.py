@@ -21,6 +21,12 @@ REPOSITORY = Path(__file__).resolve().parents[2]
 ORACLE = REPOSITORY.parent / "shared" / "ros2-oracle"
 VENV = REPOSITORY / ".oracle-ros2-venv"
 
+KEYS = (
+    "kind", "package", "executable", "plugin", "container", "name", "namespace", "remappings",
+    "parameters", "arguments",
+)  # fmt: skip
+"""The fields of a node compared with rosvar's."""
+
 requires_ros2_oracle = [
     pytest.mark.oracle,
     pytest.mark.skipif(not ORACLE.is_dir(), reason=f"the ROS 2 oracle {ORACLE} is absent"),
@@ -62,7 +68,19 @@ def run_oracle(
 
 
 def canonical_nodes(result: Mapping[str, Any]) -> list[dict[str, Any]]:
-    """The compared fields of the oracle's nodes, in a stable order."""
-    keys = ("package", "executable", "name", "namespace", "remappings", "parameters", "arguments")
+    """The compared fields (:data:`KEYS`) of the oracle's nodes, in a stable order; the same
+    function makes rosvar's comparable (a ``nodes`` list of dicts as well)."""
+    keys = (
+        "kind",
+        "package",
+        "executable",
+        "plugin",
+        "container",
+        "name",
+        "namespace",
+        "remappings",
+        "parameters",
+        "arguments",
+    )
     nodes = [{key: node.get(key) for key in keys} for node in result.get("nodes", [])]
     return sorted(nodes, key=lambda n: json.dumps(n, sort_keys=True))

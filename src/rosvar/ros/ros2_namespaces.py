@@ -22,3 +22,9 @@ def make_absolute(ns: str | None) -> str | None:
     if ns is None:
         return None
     return ns if ns.startswith("/") else "/" + ns
+
+
+def full_name(pushed: str | None, namespace: str | None, name: str) -> str:
+    """A node's fully qualified name from the pushed namespace, its own and its name."""
+    absolute = make_absolute(prefix_namespace(pushed, namespace))
+    return (absolute or "").rstrip("/") + "/" + name

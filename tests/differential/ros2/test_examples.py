@@ -4,7 +4,6 @@ oracle, for every combination of its launch arguments."""
 from __future__ import annotations
 
 import itertools
-import json
 
 import pytest
 
@@ -16,7 +15,18 @@ from rosvar.workspace import discover
 pytestmark = requires_ros2_oracle
 
 PACKAGES = ORACLE / "examples" / "pkgs"
-KEYS = ("package", "executable", "name", "namespace", "remappings", "parameters", "arguments")
+KEYS = (
+    "kind",
+    "package",
+    "executable",
+    "plugin",
+    "container",
+    "name",
+    "namespace",
+    "remappings",
+    "parameters",
+    "arguments",
+)
 SAMPLES = [
     {"sim": sim, "second": second}
     for sim, second in itertools.product(("true", "false"), ("true", "false"))
@@ -33,5 +43,4 @@ def test_example_matches_the_oracle(suffix: str, arguments: dict[str, str]) -> N
     assert expected["ok"] and not expected["unresolved_includes"]
     result = resolve_ros2(discover([str(PACKAGES)]), str(file), arguments)
     assert result.ok, result.errors
-    nodes = [{key: node[key] for key in KEYS} for node in result.nodes]
-    assert sorted(nodes, key=lambda n: json.dumps(n, sort_keys=True)) == canonical_nodes(expected)
+    assert canonical_nodes(result.to_json()) == canonical_nodes(expected)

@@ -18,7 +18,7 @@ from rosvar.files import FileRefused, read_file
 from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.interpreter.ros2.interpretation import interpret
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace
+from rosvar.ros.ros2_namespaces import full_name, make_absolute, prefix_namespace
 from rosvar.ros.ros2_parameters import ALL_NODES, Source, effective, file_entries, typed
 from rosvar.workspace import Workspace
 
@@ -86,7 +86,7 @@ def _node(decl: NodeDecl) -> dict[str, object]:
     )
     fqn = None
     if name is not None:
-        fqn = (namespace or "").rstrip("/") + "/" + name
+        fqn = full_name(_text(decl, "ros_namespace"), _text(decl, "namespace"), name)
     sources: list[Source] = []
     for param in decl.parameters:
         if param.condition != true:
@@ -99,6 +99,7 @@ def _node(decl: NodeDecl) -> dict[str, object]:
             sources.append(Source(entries=((ALL_NODES, {str(param.name): value}),)))
     args = _text(decl, "args")
     return {
+        "kind": _text(decl, "kind"),
         "package": _text(decl, "pkg"),
         "executable": _text(decl, "exec") or _text(decl, "cmd"),
         "name": name,
@@ -106,7 +107,9 @@ def _node(decl: NodeDecl) -> dict[str, object]:
         "fqn": fqn,
         "remappings": [[r.source, r.target] for r in decl.remaps if r.condition == true],
         "parameters": effective(fqn, sources),
-        "arguments": shlex.split(args) if args else [],
+        "arguments": None if decl.field("plugin").single() else shlex.split(args or ""),
+        "plugin": _text(decl, "plugin"),
+        "container": _text(decl, "container"),
     }
 
 

@@ -35,6 +35,13 @@ ATTRIBUTES: dict[str, frozenset[str]] = {
     | {"pkg", "exec", "name", "namespace", "args", "ros_args", "exec_name", "node-name"}
     | {"param", "remap"},
     "executable": PROCESS | {"cmd", "name", "args"},
+    "node_container": PROCESS
+    | {"pkg", "exec", "name", "namespace", "args", "ros_args", "exec_name", "node-name"}
+    | {"param", "remap", "composable_node"},
+    "load_composable_node": frozenset({"target", "composable_node"}),
+    "composable_node": frozenset({"pkg", "plugin", "name", "namespace", "param", "remap"})
+    | {"extra_arg"},
+    "extra_arg": frozenset({"name", "value"}),
     "param": frozenset({"name", "value", "type", "from", "allow_substs", "param", "sep"}),
     "remap": frozenset({"from", "to"}),
     "env": frozenset({"name", "value"}),

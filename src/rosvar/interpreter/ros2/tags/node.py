@@ -1,5 +1,6 @@
-"""``<node>`` (launch_ros's ``Node``) and ``<executable>`` with their ``param``, ``remap``
-and ``env`` children.
+"""``<node>`` (launch_ros's ``Node``), ``<executable>``, ``<node_container>`` and
+``<load_composable_node>`` with their ``composable_node``, ``param``, ``remap`` and ``env``
+children. Composable nodes get the context's remaps and parameters as nodes do.
 
 A node gets the pushed namespace (``ros_namespace``) and, before its own, the global
 remaps and parameters of the context; nested ``<param>`` groups make dotted names.
@@ -8,31 +9,104 @@ Name composition and parameter files are left to resolution, which sees one conf
 
 from __future__ import annotations
 
+from enum import StrEnum
+
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import EnvSetting, NodeDecl, NodeParameter, Raw, Remap
 from rosvar.interpreter.ros2.context import Context
 from rosvar.interpreter.ros2.dialect import tag
 from rosvar.interpreter.ros2.tags.common import optional
-from rosvar.logic.choice import Choice, combine
+from rosvar.logic.choice import Choice, Fail, combine
+from rosvar.ros.ros2_namespaces import full_name
 
-FIELDS = ("pkg", "exec", "name", "namespace", "args", "ros_args", "launch-prefix", "output")
+FIELDS = (
+    "pkg", "exec", "cmd", "plugin", "name", "namespace", "args", "ros_args", "launch-prefix",
+    "output",
+)  # fmt: skip
+
+
+class ProcessKind(StrEnum):
+    """What a declaration starts (the oracle's ``kind``)."""
+
+    NODE = "node"
+    EXECUTABLE = "executable"
+    CONTAINER = "container"
+    COMPOSABLE_NODE = "composable_node"
+
+
+KINDS = {
+    "node": ProcessKind.NODE,
+    "executable": ProcessKind.EXECUTABLE,
+    "node_container": ProcessKind.CONTAINER,
+}
+REQUIRED = {"node": "exec", "executable": "cmd", "node_container": "exec"}
+NESTED = ("composable_node", "extra_arg")  # handled by their parent, not as settings
 
 
 @tag("node")
 @tag("executable")
+@tag("node_container")
 @processed
 def node(it: Interpretation, entity: Entity, context: Context) -> None:
-    it.required(entity, "exec" if entity.tag == "node" else "cmd", context)
+    it.required(entity, REQUIRED[entity.tag], context)
+    fields = _declare(it, entity, context, KINDS[entity.tag], None)
+    container = it.strip(
+        combine([fields["ros_namespace"], fields["namespace"], fields["name"]], _full_name),
+        "<node_container> name",
+    )
+    _composables(it, entity, context, container)
+
+
+@tag("load_composable_node")
+@processed
+def load_composable_node(it: Interpretation, entity: Entity, context: Context) -> None:
+    target = it.required(entity, "target", context)
+    if target is not None:
+        _composables(it, entity, context, optional(target))
+
+
+def _composables(
+    it: Interpretation, entity: Entity, context: Context, container: Choice[Raw | None]
+) -> None:
+    for child in entity.children:
+        if child.tag == "composable_node":
+            with it.at(child), it.under(it.condition_of(child, context)) as live:
+                if live:
+                    _declare(it, child, context, ProcessKind.COMPOSABLE_NODE, container)
+
+
+def _full_name(leaves: list[Raw | None]) -> Raw | Fail | None:
+    ros_namespace, namespace, name = leaves
+    if name is None:
+        return None
+    if not all(leaf is None or isinstance(leaf, str) for leaf in leaves):
+        return Fail("a container's name is not known", "value-unknown")
+    return full_name(ros_namespace, namespace, name)  # type: ignore[arg-type]
+
+
+def _declare(
+    it: Interpretation,
+    entity: Entity,
+    context: Context,
+    kind: ProcessKind,
+    container: Choice[Raw | None] | None,
+) -> dict[str, Choice[Raw | None]]:
+    """Record one process or composable node with the context's remaps and parameters."""
+    none: Choice[Raw | None] = Choice.const(it.space, None)
     fields: dict[str, Choice[Raw | None]] = {}
-    for key in (*FIELDS, "cmd"):
+    for key in FIELDS:
         value = it.attr(entity, key, context)
-        fields[key] = Choice.const(it.space, None) if value is None else optional(value)
-    fields["ros_namespace"] = context.namespace or Choice.const(it.space, None)
+        fields[key] = none if value is None else optional(value)
+    fields["ros_namespace"] = context.namespace or none
+    fields["kind"] = Choice.const(it.space, kind)
+    fields["container"] = container or none
     remaps = [Remap(r.condition, r.source, r.target) for r in context.remaps or ()]
     parameters = [NodeParameter(p.condition, p.name, p.value) for p in context.params or ()]
     env: list[EnvSetting] = []
     for child in entity.children:
+        if child.tag in NESTED:
+            continue
         with it.at(child), it.under(it.condition_of(child, context)) as live:
             if not live:
                 continue
@@ -42,11 +116,10 @@ def node(it: Interpretation, entity: Entity, context: Context) -> None:
                 _param(it, child, context, "", parameters)
             elif child.tag == "env":
                 _env(it, child, context, env)
-            else:
-                it.warn("tag-unknown", f"unrecognized '{child.tag}' tag in <{entity.tag}> tag")
     it.model.nodes.append(
         NodeDecl(it.pc, entity.location, context.filename, False, fields, remaps, env, parameters)
     )
+    return fields
 
 
 def _remap(it: Interpretation, entity: Entity, context: Context, out: list[Remap]) -> None:
