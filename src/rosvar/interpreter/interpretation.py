@@ -156,7 +156,7 @@ class Interpretation:
                 branches.append((atom, slot))
         return Choice.of(branches)
 
-    def new_anon(self, scope: Scope, anon_id: str) -> Choice[Raw]:
+    def new_anon(self, scope: AnyScope, anon_id: str) -> Choice[Raw]:
         pc = self.pc
         current = self.anon_count
         # roslaunch's anonymous_name() screens '.', '-' and ':' out of names; the

@@ -86,3 +86,12 @@ class Context:
         self.remaps = saved.remaps
         self.params = saved.params
         self.env = saved.env
+
+
+def optional(value: Choice[Raw]) -> Choice[Raw | None]:
+    """A value as a possibly-unset one (a configuration's or the namespace's type)."""
+    return value.map(_same)
+
+
+def _same(leaf: Raw) -> Raw | None:
+    return leaf

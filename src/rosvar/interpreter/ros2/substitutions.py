@@ -15,9 +15,9 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from rosvar.interpreter.model import Raw
-from rosvar.interpreter.ros2.context import Context
+from rosvar.interpreter.ros2.context import Context, optional
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
-from rosvar.logic.choice import Choice, Fail, combine
+from rosvar.logic.choice import Choice, Fail, combine, ite
 
 if TYPE_CHECKING:
     from rosvar.interpreter.interpretation import Interpretation
@@ -266,3 +266,25 @@ def _eval(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Val
 
 def _no_arg(name: str) -> str:
     raise KeyError(name)  # ROS 2 expressions read launch configurations only through $(var)
+
+
+@substitution("anon")
+def _anon(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """One name per id, kept as the launch configuration ``anon<id>`` (so groups scope it);
+    a counter stands for launch's host, pid and random part, as for ROS 1."""
+    if len(args) != 1 or not isinstance(args[0], str):
+        return _fail(host, "$(anon) takes one argument", "substitution-invalid")
+    key = "anon" + args[0]
+    old = context.configurations.get(key)
+    unset = host.space.true if old is None else old.where(lambda leaf: leaf is None)
+    if unset != host.space.false:
+        with host.under(unset) as live:
+            if live:
+                fresh = optional(host.new_anon(context, args[0]))
+                before = old if old is not None else Choice.const(host.space, None)
+                context.configurations[key] = ite(host.space, host.pc, fresh, before)
+    return context.configurations[key].map(_present)
+
+
+def _present(leaf: Raw | None) -> Value:
+    return Fail("anonymous name not set", "value-unknown") if leaf is None else leaf

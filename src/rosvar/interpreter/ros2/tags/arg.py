@@ -10,9 +10,9 @@ from __future__ import annotations
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed
 from rosvar.interpreter.model import ArgDecl, Raw
-from rosvar.interpreter.ros2.context import Context
+from rosvar.interpreter.ros2.context import Context, optional
 from rosvar.interpreter.ros2.dialect import tag
-from rosvar.interpreter.ros2.tags.common import assign, optional
+from rosvar.interpreter.ros2.tags.common import assign
 from rosvar.logic.choice import Choice
 
 

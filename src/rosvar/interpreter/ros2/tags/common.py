@@ -15,12 +15,3 @@ def assign(
     if it.pc == it.space.true:
         return new
     return ite(it.space, it.pc, new, before)
-
-
-def optional(value: Choice[Raw]) -> Choice[Raw | None]:
-    """A value as a possibly-unset one (a configuration's or the namespace's type)."""
-    return value.map(_same)
-
-
-def _same(leaf: Raw) -> Raw | None:
-    return leaf

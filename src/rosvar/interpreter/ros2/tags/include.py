@@ -18,9 +18,9 @@ from rosvar.interpreter.interpretation import (
 )
 from rosvar.interpreter.model import IncludeDecl, Raw
 from rosvar.interpreter.ros2 import schema
-from rosvar.interpreter.ros2.context import Context
+from rosvar.interpreter.ros2.context import Context, optional
 from rosvar.interpreter.ros2.dialect import tag
-from rosvar.interpreter.ros2.tags.common import assign, optional
+from rosvar.interpreter.ros2.tags.common import assign
 from rosvar.logic.choice import Choice
 from rosvar.workspace.paths import real_path
 

@@ -14,9 +14,8 @@ from enum import StrEnum
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import EnvSetting, NodeDecl, NodeParameter, Raw, Remap
-from rosvar.interpreter.ros2.context import Context
+from rosvar.interpreter.ros2.context import Context, optional
 from rosvar.interpreter.ros2.dialect import tag
-from rosvar.interpreter.ros2.tags.common import optional
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.ros.ros2_namespaces import full_name
 

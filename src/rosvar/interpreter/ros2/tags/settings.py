@@ -7,9 +7,9 @@ from __future__ import annotations
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import Raw
-from rosvar.interpreter.ros2.context import Context, GlobalParam, GlobalRemap
+from rosvar.interpreter.ros2.context import Context, GlobalParam, GlobalRemap, optional
 from rosvar.interpreter.ros2.dialect import tag
-from rosvar.interpreter.ros2.tags.common import assign, optional
+from rosvar.interpreter.ros2.tags.common import assign
 from rosvar.logic.choice import Choice, combine
 
 
