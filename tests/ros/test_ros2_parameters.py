@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pytest
+
 from rosvar.ros.ros2_parameters import Source, effective, file_entries, matches, typed
 
 
@@ -21,11 +23,11 @@ def test_later_sources_override_and_patterns_keep_first_appearance() -> None:
 
 
 def test_typed_values() -> None:
-    assert [typed(t) for t in ("7", "1.5", "true", "[1, 2]", "a: b", "")] == [
-        7,
-        1.5,
-        True,
-        [1, 2],
-        "a: b",
-        "",
-    ]
+    assert [typed(t) for t in ("7", "1.5", "true", "[1, 2]", "", "a b")] == [
+        7, 1.5, True, [1, 2], "", "a b"]  # fmt: skip
+
+
+@pytest.mark.parametrize("text", ["~", "a: b", "[a, 1]"])
+def test_values_no_parameter_holds(text: str) -> None:
+    with pytest.raises(ValueError):
+        typed(text)

@@ -13,12 +13,21 @@ ALL_NODES = "/**"
 
 
 def typed(text: str) -> object:
-    """A parameter value string as ROS 2 reads it: YAML scalars and lists, else the text."""
+    """A parameter value string as ROS 2 reads it: YAML scalars and lists, else the text.
+
+    Raises ``ValueError`` for what a parameter cannot hold: a null, a map, a list mixing types.
+    """
+    if not text:
+        return text
     try:
         value = yaml.safe_load(text)
     except yaml.YAMLError:
         return text
-    return text if value is None or isinstance(value, dict) else value
+    if value is None or isinstance(value, dict):
+        raise ValueError(f"'{text}' can not be converted to a parameter value")
+    if isinstance(value, list) and len({type(item) for item in value}) > 1:
+        raise ValueError("The result is a non-uniform list")
+    return value
 
 
 def flatten(values: Mapping[object, object], prefix: str = "") -> dict[str, object]:

@@ -212,6 +212,20 @@ CASES: dict[str, Case] = {
         },
         [{}],
     ),
+    "parameter-value-typing": (
+        {
+            "main.launch.xml": """<launch>
+            <node pkg="pkg" exec="x" name="x">
+              <param name="a" value="[1, 2]"/><param name="b" value="1,2"/>
+              <param name="c" value="yes"/><param name="d" value="1e3"/>
+              <param name="e" value="0x10"/><param name="f" value="'7'"/>
+              <param name="g" value="$(var g)"/><param name="h" value=""/>
+              <param name="j" value="True"/>
+            </node>
+          </launch>"""
+        },
+        [{"g": "[a, b]"}, {"g": "[a, 1]"}, {"g": "[1, 2.5]"}, {"g": "~"}, {"g": "a: b"}],
+    ),
     "env-set-unset": (
         {
             "main.launch.xml": """<launch>
