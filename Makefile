@@ -36,9 +36,18 @@ APT_ENV := env DEBIAN_FRONTEND=noninteractive
 SUDO := $(shell if [ "$$(id -u)" != 0 ] && command -v sudo >/dev/null 2>&1; then echo sudo; fi)
 
 .DEFAULT_GOAL := setup
-.PHONY: setup system-packages demo test bench
+.PHONY: ros2-oracle setup system-packages demo test bench
 
-setup: system-packages $(STAMP)
+# The ROS 2 launch oracle (the real ros2/launch, for the ROS 2 differential tests), when
+# ../shared/ros2-oracle is beside the repository; its setup.sh is idempotent.
+ROS2_ORACLE      := ../shared/ros2-oracle
+ROS2_ORACLE_VENV := .oracle-ros2-venv
+
+setup: system-packages $(STAMP) ros2-oracle
+
+ros2-oracle:
+	@if [ -d $(ROS2_ORACLE) ]; then $(ROS2_ORACLE)/setup.sh $(ROS2_ORACLE_VENV); \
+	else echo "No $(ROS2_ORACLE): the ROS 2 differential tests will be skipped"; fi
 
 system-packages:
 	@missing=""; \

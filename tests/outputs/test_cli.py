@@ -145,6 +145,28 @@ def test_resolve_ok(workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[st
     assert "warning" not in _err
 
 
+def test_resolve_a_ros2_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    package = tmp_path / "p"
+    package.mkdir()
+    (package / "package.xml").write_text(
+        "<package format='3'><name>p</name>"
+        "<export><build_type>ament_cmake</build_type></export></package>"
+    )
+    (package / "a.launch.xml").write_text(
+        """<launch><arg name="ns" default="r"/>
+        <node pkg="p" exec="e" name="n" namespace="$(var ns)"><param name="k" value="1"/></node>
+        </launch>"""
+    )
+    code, out, _err = run(capsys, "resolve", str(tmp_path), "--launch", "p", "a.launch.xml")
+    assert code == EXIT_OK
+    assert out.splitlines() == ["node  /r/n  (p/e)", "  param k = 1"]
+    code, out, _err = run(
+        capsys, "resolve", "--launch", str(package / "a.launch.xml"), "ns:=/s", "--json"
+    )
+    [node] = json.loads(out)["nodes"]
+    assert (node["fqn"], node["parameters"]) == ("/s/n", {"k": 1})
+
+
 def test_resolve_warns_of_an_arg_no_file_reads(
     workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
 ) -> None:

@@ -15,8 +15,10 @@ from typing import Any, Concatenate, ParamSpec, TypeVar
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import Snapshot
+from rosvar.interpreter.dialect import Dialect, RosVersion
 from rosvar.interpreter.lifted import apply, lift
 from rosvar.interpreter.model import Decision, ErrorEvent, Guard, LaunchModel, Raw
+from rosvar.interpreter.ros2.context import Context
 from rosvar.interpreter.scope import MISSING, ArgValue, Scope
 from rosvar.interpreter.substitution import Substituter
 from rosvar.logic.bdd import BDD
@@ -26,10 +28,13 @@ from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
 from rosvar.logic.terms import Hole
 from rosvar.workspace import Workspace
 
-Handler = Callable[["Interpretation", Entity, Scope], None]
 V = TypeVar("V")
 P = ParamSpec("P")
-TAGS: dict[str, Handler] = {}
+S = TypeVar("S", Scope, Context)
+AnyScope = Scope | Context
+"""What a dialect's handlers carry along the walk: roslaunch's scope or ros2's context."""
+ROS1 = Dialect(RosVersion.ROS1, Substituter)
+TAGS = ROS1.tags
 MAX_INCLUDE_DEPTH = 64
 MAX_INCLUDES = 4096
 """Includes followed in one interpretation: a diamond (each file including the next twice)
@@ -42,21 +47,13 @@ TRUE_WORDS = ("true", "1")
 FALSE_WORDS = ("false", "0")
 
 
-def tag(name: str) -> Callable[[Handler], Handler]:
-    """Register the handler of ``<name>`` (extension by registry, not if-chains)."""
-
-    def register(handler: Handler) -> Handler:
-        if name in TAGS:  # a second handler would silently replace the first
-            raise ValueError(f"tag <{name}> is registered twice")
-        TAGS[name] = handler
-        return handler
-
-    return register
+tag = ROS1.tag
+"""Register a ROS 1 tag handler."""
 
 
 def processed(
-    body: Callable[Concatenate[Interpretation, Entity, Scope, P], None],
-) -> Callable[Concatenate[Interpretation, Entity, Scope, P], None]:
+    body: Callable[Concatenate[Interpretation, Entity, S, P], None],
+) -> Callable[Concatenate[Interpretation, Entity, S, P], None]:
     """roslaunch's ``ifunless_test``, which every tag handler starts with: ``body`` runs
     where the tag's ``if``/``unless`` lets it, on the path narrowed to there.
 
@@ -65,7 +62,7 @@ def processed(
     """
 
     def guarded(
-        it: Interpretation, entity: Entity, scope: Scope, /, *args: P.args, **kwargs: P.kwargs
+        it: Interpretation, entity: Entity, scope: S, /, *args: P.args, **kwargs: P.kwargs
     ) -> None:
         attributes = entity.attributes
         if "if" not in attributes and "unless" not in attributes:
@@ -102,7 +99,9 @@ class Interpretation:
         env_domains: Callable[[str], tuple[Slot, ...]],
         file: str,
         files: Snapshot | None = None,
+        dialect: Dialect | None = None,
     ) -> None:
+        self.dialect = dialect or ROS1
         self.workspace = workspace
         self.files = files or Snapshot()
         self.space = space
@@ -112,7 +111,7 @@ class Interpretation:
         self.pc: BDD = space.true
         # A cycle (broken by ``close``): left to the garbage collector, it could free BDD
         # nodes after their manager, which CUDD reports as an error.
-        self.substituter = Substituter(self)
+        self.substituter = self.dialect.substituter(self)
         inputs: dict[str, ArgInput] = {}
         self.model = LaunchModel(file=file, space=space, inputs=inputs, domains={})
         self.default_machine: Choice[Raw | None] = Choice.const(space, None)
@@ -157,7 +156,7 @@ class Interpretation:
                 branches.append((atom, slot))
         return Choice.of(branches)
 
-    def new_anon(self, scope: Scope, anon_id: str) -> Choice[Raw]:
+    def new_anon(self, scope: AnyScope, anon_id: str) -> Choice[Raw]:
         pc = self.pc
         current = self.anon_count
         # roslaunch's anonymous_name() screens '.', '-' and ':' out of names; the
@@ -245,13 +244,13 @@ class Interpretation:
             return Choice.empty(self.space)
         return Choice.const(self.space, value)
 
-    def resolve(self, text: str | None, scope: Scope, context: str = "") -> Choice[Raw] | None:
+    def resolve(self, text: str | None, scope: AnyScope, context: str = "") -> Choice[Raw] | None:
         if text is not None and "$" not in text:  # most texts are literal: nothing can fail
             return Choice.const(self.space, text)
         value = self.substituter.resolve(text, scope)
         return None if value is None else self.strip(value, context)
 
-    def attr(self, entity: Entity, name: str, scope: Scope) -> Choice[Raw] | None:
+    def attr(self, entity: Entity, name: str, scope: AnyScope) -> Choice[Raw] | None:
         text = entity.attributes.get(name)
         if text is None:  # most optional attributes are absent: no message to format
             return None
@@ -259,7 +258,7 @@ class Interpretation:
             return Choice.const(self.space, text)
         return self.resolve(text, scope, f"<{entity.tag}> attribute '{name}'")
 
-    def required(self, entity: Entity, name: str, scope: Scope) -> Choice[Raw] | None:
+    def required(self, entity: Entity, name: str, scope: AnyScope) -> Choice[Raw] | None:
         value = self.attr(entity, name, scope)  # None exactly when the attribute is absent
         if value is None:
             self.fail(
@@ -294,7 +293,7 @@ class Interpretation:
             self.fail(invalid, "bool-invalid", f"{label}: value is not a 'bool' type")
         return true
 
-    def condition_of(self, entity: Entity, scope: Scope) -> BDD:
+    def condition_of(self, entity: Entity, scope: AnyScope) -> BDD:
         """``ifunless_test``: where the tag is processed."""
         attributes = entity.attributes
         if "if" not in attributes and "unless" not in attributes:  # most tags
@@ -332,7 +331,7 @@ class Interpretation:
         return invalid
 
     # -- walking ------------------------------------------------------------------------
-    def walk(self, children: Sequence[Entity], scope: Scope) -> None:
+    def walk(self, children: Sequence[Entity], scope: AnyScope) -> None:
         if not children:
             return
         if self.depth >= MAX_NESTING:
@@ -344,10 +343,11 @@ class Interpretation:
             )
             return
         saved = self._location
+        tags = self.dialect.tags
         self.depth += 1
         try:
             for child in children:
-                handler = TAGS.get(child.tag)
+                handler = tags.get(child.tag)
                 self._location = child.location
                 if handler is None:
                     self.warn("tag-unknown", f"unrecognized tag <{child.tag}>")

@@ -79,9 +79,21 @@ class NodeDecl:
     # the args its scope sees (undefined ones as a non-text leaf), for conditions written
     # outside the launch files about the node: a hinted interface entry's ``when:``
     args: Mapping[str, Choice[object]] = field(default_factory=dict)
+    parameters: list[NodeParameter] = field(default_factory=list)  # ROS 2: in order
 
     def field(self, key: str) -> Choice[Raw | None]:
         return self.fields[key]
+
+
+@dataclass(slots=True)
+class NodeParameter:
+    """A ROS 2 node's parameter (``name`` and ``value``) or parameter file (``file``), in the
+    order launch_ros passes them: later ones override earlier ones."""
+
+    condition: BDD
+    name: Raw | None
+    value: Raw | None
+    file: Raw | None = None
 
 
 @dataclass(slots=True)

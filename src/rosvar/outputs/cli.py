@@ -129,6 +129,7 @@ def cmd_analyze(options: argparse.Namespace) -> int:
 def cmd_resolve(options: argparse.Namespace) -> int:
     from rosvar.analyses.communication import JSON_SIDES, Channel, resolved_graph
     from rosvar.analyses.resolve import resolve
+    from rosvar.interpreter.ros2.interpretation import is_ros2_launch
     from rosvar.interpreter.workspace_models import Analysis
 
     paths = [os.path.abspath(words[0]) for words in options.launch if len(words) == 1]
@@ -145,6 +146,8 @@ def cmd_resolve(options: argparse.Namespace) -> int:
     if env is None:
         return EXIT_USAGE
     args = command_line_mappings(options.args)
+    if len(files) == 1 and is_ros2_launch(files[0]):
+        return _resolve_ros2(workspace, files[0], args, env, options.json)
     # The given values become known slots: conditions split on them instead of
     # leaving them to <other> terms (the semantics does not change).
     analysis = Analysis(
@@ -176,6 +179,27 @@ def cmd_resolve(options: argparse.Namespace) -> int:
             print(f"conflict: {conflict.kind} {conflict.name} at {where}")
         for error in result.errors:
             print(f"error: {_where(error.location)}: {error.message}")
+    return EXIT_OK if result.ok else EXIT_FAILS
+
+
+def _resolve_ros2(
+    workspace: Workspace, file: str, args: dict[str, str], env: dict[str, str], as_json: bool
+) -> int:
+    """``ros2 launch FILE name:=value``: the nodes it starts (in the ROS 2 oracle's shape)."""
+    from rosvar.analyses.ros2.resolve import resolve_ros2
+
+    result = resolve_ros2(workspace, file, args, env)
+    if as_json:
+        _print_json(result.to_json())
+    else:
+        for node in result.nodes:
+            print(f"node  {node['fqn'] or node['name']}  ({node['package']}/{node['executable']})")
+            for name, value in node["parameters"].items():  # type: ignore[attr-defined]
+                print(f"  param {name} = {value!r}")
+            for source, target in node["remappings"]:  # type: ignore[attr-defined]
+                print(f"  remap {source} -> {target}")
+        for error in result.errors:
+            print(f"error: {error['message']}")
     return EXIT_OK if result.ok else EXIT_FAILS
 
 

@@ -14,6 +14,7 @@ from __future__ import annotations
 import os
 import re
 from collections import OrderedDict
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import NoReturn
 from xml.parsers import expat
@@ -314,15 +315,16 @@ class Snapshot:
     than the rest of the lookup. The results are shared: read-only, diagnostics included.
     """
 
-    __slots__ = ("_loaded",)
+    __slots__ = ("_loaded", "_loader")
 
-    def __init__(self) -> None:
+    def __init__(self, loader: Callable[[str], ParseResult] | None = None) -> None:
         self._loaded: dict[str, ParseResult] = {}
+        self._loader = loader or load_launch_file  # ROS 2 passes the frontend registry's
 
     def load(self, path: str) -> ParseResult:
         result = self._loaded.get(path)
         if result is None:
-            result = self._loaded[path] = load_launch_file(path)
+            result = self._loaded[path] = self._loader(path)
         return result
 
 

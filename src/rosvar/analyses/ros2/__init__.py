@@ -1,0 +1,1 @@
+"""Analyses of ROS 2 launch models."""

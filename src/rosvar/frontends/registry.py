@@ -1,0 +1,38 @@
+"""Frontends by file suffix: every format is a thin adapter producing :class:`Entity` trees.
+
+The XML parser serves both ROS 1 and ROS 2 files; the YAML and Python frontends register
+their suffixes from their own modules (extension by registry).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable
+
+from rosvar.frontends.ros1_xml.parser import ParseResult, load_launch_file
+
+Loader = Callable[[str], ParseResult]
+FRONTENDS: dict[str, Loader] = {}
+
+
+def frontend(*suffixes: str) -> Callable[[Loader], Loader]:
+    """Register ``loader`` for files whose names end with one of ``suffixes``."""
+
+    def register(loader: Loader) -> Loader:
+        for suffix in suffixes:
+            if suffix in FRONTENDS:
+                raise ValueError(f"suffix {suffix} has two frontends")
+            FRONTENDS[suffix] = loader
+        return loader
+
+    return register
+
+
+frontend(".launch.xml", ".xml", ".launch")(load_launch_file)
+
+
+def load(path: str | os.PathLike[str]) -> ParseResult:
+    """Parse ``path`` with the frontend of its longest registered suffix (XML otherwise)."""
+    name = os.fspath(path)
+    best = max((s for s in FRONTENDS if name.endswith(s)), key=len, default=None)
+    return (FRONTENDS[best] if best is not None else load_launch_file)(name)

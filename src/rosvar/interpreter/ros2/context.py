@@ -1,0 +1,97 @@
+"""The variational counterpart of ros2/launch's ``LaunchContext``.
+
+Unlike roslaunch's scopes, launch configurations are global: an ``<include>`` does
+not scope them (an ``<arg>`` or ``<let>`` of an included file leaks to the includer);
+only a scoped ``<group>`` pushes a copy and pops it. The pushed namespace, global
+remaps and global params live in launch configurations too, so they follow the
+same rule (with a twist, see :meth:`Context.scoped`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from rosvar.frontends.entity import Entity
+from rosvar.interpreter.model import Raw
+from rosvar.logic.bdd import BDD
+from rosvar.logic.choice import Choice
+
+Configuration = Choice[Raw | None]
+"""A launch configuration's value per configuration; None where it is not set."""
+
+
+@dataclass(slots=True)
+class GlobalParam:
+    """A ``<set_parameter>``: prepended to the parameters of later nodes."""
+
+    condition: BDD
+    name: Raw
+    value: Raw
+
+
+@dataclass(slots=True)
+class GlobalRemap:
+    """A ``<set_remap>``: prepended to the remappings of later nodes."""
+
+    condition: BDD
+    source: Raw
+    target: Raw
+
+
+@dataclass(slots=True)
+class Timer:
+    """A ``<timer>``'s actions, run at ``time`` in the context as it is then."""
+
+    time: float
+    sequence: int
+    condition: BDD
+    actions: list[Entity]
+
+
+@dataclass(slots=True)
+class Context:
+    """Launch configurations and the ROS-specific state kept beside them."""
+
+    filename: str
+    configurations: dict[str, Configuration] = field(default_factory=dict)
+    namespace: Choice[Raw | None] | None = None
+    remaps: list[GlobalRemap] | None = None
+    params: list[GlobalParam] | None = None
+    env: dict[str, Choice[Raw | None]] = field(default_factory=dict)
+    timers: list[Timer] = field(default_factory=list)  # pending, shared by every copy
+    now: float = 0.0  # the virtual time of the actions being visited
+
+    def scoped(self) -> Context:
+        """A copy for a scoped group (``PushLaunchConfigurations``).
+
+        The copy is shallow, as launch's: ``<set_remap>`` and ``<set_parameter>`` append
+        to the lists in place, so inside a group they reach past it when the list existed
+        before the group (and not when the group made it).
+        """
+        return Context(
+            self.filename,
+            dict(self.configurations),
+            self.namespace,
+            self.remaps,
+            self.params,
+            dict(self.env),
+            self.timers,
+            self.now,
+        )
+
+    def restore(self, saved: Context) -> None:
+        """``PopLaunchConfigurations``: back to ``saved``'s state."""
+        self.configurations = saved.configurations
+        self.namespace = saved.namespace
+        self.remaps = saved.remaps
+        self.params = saved.params
+        self.env = saved.env
+
+
+def optional(value: Choice[Raw]) -> Choice[Raw | None]:
+    """A value as a possibly-unset one (a configuration's or the namespace's type)."""
+    return value.map(_same)
+
+
+def _same(leaf: Raw) -> Raw | None:
+    return leaf

@@ -1,0 +1,10 @@
+"""Handlers of ROS 2's launch actions, one module per concept; importing registers them."""
+
+from rosvar.interpreter.ros2.tags import (  # noqa: F401 - imported for registration
+    arg,
+    group,
+    include,
+    node,
+    settings,
+    timer,
+)

@@ -1,0 +1,86 @@
+"""Client of the ROS 2 launch oracle (``../shared/ros2-oracle``), for differential tests.
+
+The oracle runs the real ros2/launch in its own virtual environment (``make setup`` builds
+it at ``.oracle-ros2-venv``; this module builds it too when missing), one process per
+launch, in a clean environment. Tests skip only when the oracle folder itself is absent.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+import os
+import subprocess
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+REPOSITORY = Path(__file__).resolve().parents[2]
+ORACLE = REPOSITORY.parent / "shared" / "ros2-oracle"
+VENV = REPOSITORY / ".oracle-ros2-venv"
+
+KEYS = (
+    "kind", "package", "executable", "plugin", "container", "name", "namespace", "remappings",
+    "parameters", "arguments",
+)  # fmt: skip
+"""The fields of a node compared with rosvar's."""
+
+requires_ros2_oracle = [
+    pytest.mark.oracle,
+    pytest.mark.skipif(not ORACLE.is_dir(), reason=f"the ROS 2 oracle {ORACLE} is absent"),
+]
+
+
+@functools.lru_cache(maxsize=1)
+def oracle_python() -> Path:
+    """The oracle venv's interpreter, set up on first use (idempotent, as ``make setup``)."""
+    python = VENV / "bin" / "python"
+    subprocess.run(
+        [str(ORACLE / "setup.sh"), str(VENV)], check=True, capture_output=True, timeout=600
+    )
+    return python
+
+
+def run_oracle(
+    file: str | os.PathLike[str],
+    arguments: Mapping[str, str],
+    package_paths: Sequence[str | os.PathLike[str]],
+    env: Mapping[str, str] | None = None,
+    strict: bool = True,
+) -> dict[str, Any]:
+    """The oracle's canonical JSON for ``ros2 launch file name:=value ...``; not ``strict``,
+    packages outside ``package_paths`` are placeholders (for nodes of uninstalled packages)."""
+    command = [str(oracle_python()), str(ORACLE / "oracle.py"), os.fspath(file)]
+    command += ["--strict"] if strict else []
+    command += [f"{name}:={value}" for name, value in arguments.items()]
+    for path in package_paths:
+        command += ["--package-path", os.fspath(path)]
+    for name, value in (env or {}).items():
+        command += ["--env", f"{name}={value}"]
+    clean = {"PATH": "/usr/bin:/bin", "HOME": str(VENV), "PYTHONDONTWRITEBYTECODE": "1"}
+    done = subprocess.run(command, capture_output=True, text=True, env=clean, timeout=120)
+    if not done.stdout.strip():
+        raise RuntimeError(f"the ROS 2 oracle failed: {done.stderr[-2000:]}")
+    result: dict[str, Any] = json.loads(done.stdout)
+    return result
+
+
+def canonical_nodes(result: Mapping[str, Any]) -> list[dict[str, Any]]:
+    """The compared fields (:data:`KEYS`) of the oracle's nodes, in a stable order; the same
+    function makes rosvar's comparable (a ``nodes`` list of dicts as well)."""
+    keys = (
+        "kind",
+        "package",
+        "executable",
+        "plugin",
+        "container",
+        "name",
+        "namespace",
+        "remappings",
+        "parameters",
+        "arguments",
+    )
+    nodes = [{key: node.get(key) for key in keys} for node in result.get("nodes", [])]
+    return sorted(nodes, key=lambda n: json.dumps(n, sort_keys=True))
