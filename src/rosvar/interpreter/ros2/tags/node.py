@@ -116,7 +116,16 @@ def _declare(
             elif child.tag == "env":
                 _env(it, child, context, env)
     it.model.nodes.append(
-        NodeDecl(it.pc, entity.location, context.filename, False, fields, remaps, env, parameters)
+        NodeDecl(
+            it.pc,
+            entity.location,
+            context.filename,
+            False,
+            fields,
+            remaps,
+            env,
+            parameters=parameters,
+        )
     )
     return fields
 
