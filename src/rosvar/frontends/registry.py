@@ -1,7 +1,7 @@
 """Frontends by file suffix: every format is a thin adapter producing :class:`Entity` trees.
 
-The XML parser serves both ROS 1 and ROS 2 files; the YAML and Python frontends register
-their suffixes from their own modules (extension by registry).
+The XML parser serves both ROS 1 and ROS 2 files; YAML and Python are ROS 2's own formats,
+read into the same trees as the XML (the interpreter never knows which format it walks).
 """
 
 from __future__ import annotations
@@ -10,6 +10,8 @@ import os
 from collections.abc import Callable
 
 from rosvar.frontends.ros1_xml.parser import ParseResult, load_launch_file
+from rosvar.frontends.ros2_python.parser import parse_python_launch_file
+from rosvar.frontends.ros2_yaml.parser import parse_yaml_launch_file
 
 Loader = Callable[[str], ParseResult]
 FRONTENDS: dict[str, Loader] = {}
@@ -29,6 +31,8 @@ def frontend(*suffixes: str) -> Callable[[Loader], Loader]:
 
 
 frontend(".launch.xml", ".xml", ".launch")(load_launch_file)
+frontend(".launch.yaml", ".launch.yml", ".yaml", ".yml")(parse_yaml_launch_file)
+frontend(".launch.py", ".py")(parse_python_launch_file)
 
 
 def load(path: str | os.PathLike[str]) -> ParseResult:
