@@ -21,6 +21,7 @@ from rosvar.logic.bdd import BDD, transfer
 from rosvar.logic.conditions import PredicateAtom, SlotAtom, decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import term_inputs
+from rosvar.memo import Memo
 
 
 @dataclass(frozen=True)
@@ -71,7 +72,7 @@ class Lowering:
                 self.fixed[name] = truth[name]
         self._fixed: dict[BDD, tuple[BDD, set[str]]] = {}  # condition → fixed, its support
         self._bounds: dict[BDD, Bounds] = {}  # by fixed condition
-        self._decided: dict[tuple[BDD, frozenset[tuple[Input, str]]], Bounds] = {}
+        self._decided: Memo[tuple[BDD, frozenset[tuple[Input, str]]], Bounds] = Memo()
         self._cares: dict[frozenset[str], BDD] = {}
         self._satisfiable: dict[BDD, bool] = {}
 

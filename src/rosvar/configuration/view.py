@@ -23,6 +23,7 @@ from rosvar.configuration.presence import Judged, Judgement, Presences, Typed
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.inputs import OTHER, UNSET, Input
+from rosvar.memo import Memo
 
 Key = tuple[tuple[str, bool, str | None], ...]
 """A list of literals: variable, value and the ``<other>`` text it gives, if any."""
@@ -86,8 +87,8 @@ class Views:
         self.graph = graph
         self.lowering = lowering
         self.conflicts = conflicts
-        self._described: dict[tuple[BDD, frozenset[tuple[str, bool]]], str] = {}
-        self._simplified: dict[BDD, str] = {}  # a condition cofactored → its description
+        self._described: Memo[tuple[BDD, frozenset[tuple[str, bool]]], str] = Memo()
+        self._simplified: Memo[BDD, str] = Memo()  # a condition cofactored → its description
         self.presences = Presences(graph.elements, derivation, lowering)
         self._elements_of: list[list[int]] = [[] for _ in self.presences.conditions]
         for index, condition in enumerate(self.presences.of_element):
@@ -116,8 +117,8 @@ class Views:
             for node in element.nodes:
                 self._users.setdefault(index, []).append(index_of[node])
                 self._users.setdefault(index_of[node], []).append(index)
-        self._rendered: dict[tuple[str, Strings | None, tuple[Shown, ...]], list[Fields]] = {}
-        self._entries: dict[_Entry, list[Fields]] = {}
+        self._rendered: Memo[tuple[str, Strings | None, tuple[Shown, ...]], list[Fields]] = Memo()
+        self._entries: Memo[_Entry, list[Fields]] = Memo()
         self.initial = self._derive(derivation.initial, {}, None)
         self._views: PrefixCache[tuple[str, bool, str | None], View] = PrefixCache(
             self.initial, cached
