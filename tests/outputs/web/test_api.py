@@ -246,8 +246,9 @@ def test_memory_stays_bounded_over_many_distinct_clicks(monkeypatch: pytest.Monk
         tracemalloc.stop()
     steps = engine_module.MIN_CACHED_STEPS
     assert api.sessions == 2
-    assert all(len(found) <= 40 for found in memo.memos())
-    assert sum(len(found) == 40 for found in memo.memos()) >= 3  # the bound was reached
+    ours = [found for found in memo.memos() if found.capacity == 40]  # other engines' too
+    assert all(len(found) <= 40 for found in ours)
+    assert sum(len(found) == 40 for found in ours) >= 3  # the bound was reached
     for cache in (engine._steps, engine._replays, engine.views._views):
         assert len(cache._items) <= steps
     assert [len(manager) for manager in managers] <= nodes
