@@ -69,6 +69,18 @@ def test_summaries_count_the_whole_graph(examples: Live, grouping: Grouping) -> 
         for kind in ("nodes", "params"):
             found[(key, kind + " present")], found[(key, kind)] = group[kind]
     assert +found == +expected
+    files = {k for k, f in whole["features"].items() if f["state"] == "selected"}
+    for key, group in groups.items():
+        launched = [
+            e
+            for kind in ("nodes", "tests")
+            for e in whole["graph"][kind]
+            if e["presence"] != "absent"
+            and e["id"].split("|")[0] in files
+            and key_of(labels(grouping, e)).startswith(key)
+        ]
+        assert group["selected"] == len(launched)
+    assert any(group["selected"] for group in groups.values())
     present = [e for e in whole["graph"]["errors"] if e["presence"] == "present"]
     assert compact["graph"]["errors"] == present
 
@@ -100,6 +112,14 @@ def test_members_by_page_are_the_groups_entries(examples: Live) -> None:
             "/api/group", {"session": session, "group": group["id"], "kind": "params"}
         )
         assert len(params["members"]) == min(PAGE["params"], group["params"][1])
+        topics = examples.post(
+            "/api/group", {"session": session, "group": group["id"], "kind": "topics"}
+        )
+        assert len(topics["members"]) == min(PAGE["topics"], group["topics"][1])
+        drawn = {e["id"]: key_of(labels(Grouping.FILE, e)) for e in whole["graph"]["nodes"]}
+        for topic in topics["members"]:
+            assert topic["groups"] == [drawn[node] for node in topic["nodes"]]
+            assert group["id"] in topic["groups"]
 
 
 def test_feature_tree_from_the_catalog_and_the_state_string(examples: Live) -> None:

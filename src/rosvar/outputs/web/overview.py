@@ -124,15 +124,19 @@ class _Group:
         default_factory=lambda: {kind: [0, 0] for kind in MemberKind}
     )
     conflict: bool = False
+    selected: int = 0  # nodes of selected files under it: the page opens such a group
     names: set[str] = field(default_factory=set)  # its own nodes' names, for the search
 
 
 def summaries(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str, object]]:
     """One summary per group (every level, parents first): label, parent, the present and
     possible (not absent) nodes, params and topics under it, whether one of its nodes is in
-    a conflict, and its own nodes' names."""
+    a conflict, how many of its nodes the selected files launch, and its own nodes' names.
+    ``document`` is whole (its features by id)."""
     graph = document["graph"]
     clashing = {name for conflict in document["conflicts"] for name in conflict["names"]}
+    features = document["features"]
+    selected = {key for key, f in features.items() if f["state"] == Selection.SELECTED}
     groups: dict[str, _Group] = {}
 
     def chain(entry: Entry) -> list[_Group]:
@@ -155,9 +159,11 @@ def summaries(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str,
         under = node_groups[str(entry["id"])] = chain(entry)
         count(MemberKind.NODES, entry, under)
         under[-1].names.add(str(entry["name"]))
-        if clash_name(kind, entry["name"]) in clashing:
-            for group in under:
-                group.conflict = True
+        clash = clash_name(kind, entry["name"]) in clashing
+        chosen = entry_file(str(entry["id"])) in selected
+        for group in under:
+            group.conflict |= clash
+            group.selected += chosen
     for entry in _possible(graph.get("params", ())):
         count(MemberKind.PARAMS, entry, chain(entry))
     for entry in _possible(graph.get("topics", ())):
@@ -170,6 +176,7 @@ def summaries(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str,
             "parent": group.parent,
             **{kind.value: group.counts[kind] for kind in MemberKind},
             "conflict": group.conflict,
+            "selected": group.selected,
             "names": sorted(group.names),
         }
         for key, group in sorted(groups.items())
@@ -182,7 +189,8 @@ def members(
     """A page of a group's members, sorted by name: whole graph entries. Nodes and params
     are its own (not its subgroups'); a page of nodes holds ``PAGE["nodes"]`` names with all
     their variants. Topics are those of the nodes under it at any level, as its summary
-    counts them."""
+    counts them, each with the ``groups`` of its ``nodes`` (the group's own may be drawn
+    closed)."""
     graph = document["graph"]
     if kind == MemberKind.NODES:
         own = [(k, e) for k, e in _nodes(graph) if key_of(labels(grouping, e)) == group]
@@ -201,18 +209,18 @@ def members(
                 if key_of(labels(grouping, e)) == group
             ]
         else:
-            nodes = {
-                str(e["id"])
-                for _k, e in _nodes(graph)
-                if _under(key_of(labels(grouping, e)), group)
-            }
+            keys = {str(e["id"]): key_of(labels(grouping, e)) for _k, e in _nodes(graph)}
             found = [
                 e
                 for e in _possible(graph.get("topics", ()))
-                if not nodes.isdisjoint(e.get("nodes", ()))
+                if any(_under(keys.get(node, ""), group) for node in e.get("nodes", ()))
             ]
         found.sort(key=lambda e: (str(e.get("name")), str(e["id"])))
-        listed = [dict(e) for e in found[page * PAGE[kind] : (page + 1) * PAGE[kind]]]
+        shown = found[page * PAGE[kind] : (page + 1) * PAGE[kind]]
+        if kind == MemberKind.TOPICS:  # where the page draws the nodes it links the topic to
+            listed = [{**e, "groups": [keys.get(n) for n in e.get("nodes", ())]} for e in shown]
+        else:
+            listed = [dict(e) for e in shown]
         total = len(found)
     pages = max(1, -(-total // PAGE[kind]))
     return {"group": group, "kind": kind, "page": page, "pages": pages, "members": listed}
