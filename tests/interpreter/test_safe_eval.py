@@ -753,7 +753,7 @@ def test_resource_guards_allow_reasonable_work(expr: str, expected: str) -> None
     ],
 )
 def test_nesting_beyond_the_limit_is_refused_before_parsing(expr: str) -> None:
-    with pytest.raises(EvalRefused, match=f"nested over {MAX_NESTING} levels deep"):
+    with pytest.raises(EvalRefused, match=f"nested more than {MAX_NESTING} levels deep"):
         evaluate(expr, ENV)
 
 

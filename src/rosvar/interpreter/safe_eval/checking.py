@@ -74,7 +74,9 @@ def _parse(expr: str) -> tuple[ast.Expression, _Source]:
     text = expr.lstrip(" \t")
     source = _Source(text, len(expr) - len(text))
     if nesting(text) > MAX_NESTING:
-        raise EvalRefused(f"expression is nested over {MAX_NESTING} levels deep", source.prefix)
+        raise EvalRefused(
+            f"expression is nested more than {MAX_NESTING} levels deep", source.prefix
+        )
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # invalid escapes etc. are not our diagnostics
