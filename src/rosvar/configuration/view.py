@@ -33,6 +33,17 @@ _Entry = tuple[str, str, str | None, Strings | None, tuple[Shown, ...], tuple[st
 """An element shown: its id, presence, condition, the strings it was rendered with, its
 parts as shown and (a topic) the node variants using it that are not absent."""
 
+VIEW_SHARE = 4
+"""A view holds the entries rendered anew at its step: thousands when a typed value changes
+the strings of a file's params (MBs on Husky). So a quarter as many views are kept as the
+engine's other answers per list of choices, at least ``MIN_VIEWS``; a view forgotten is
+derived again from the longest earlier one kept."""
+MIN_VIEWS = 16
+RENDERINGS = 2
+"""Renderings of entries remembered per element of the graph (at least ``MIN_RENDERINGS``):
+a step meets again those of the states around it, and no more are worth their memory."""
+MIN_RENDERINGS = 1_000
+
 
 @dataclass
 class Graph:
@@ -81,7 +92,8 @@ class Views:
         conflicts: Conflicts,
         cached: int,
     ) -> None:
-        """``cached``: how many views to keep (``engine.CACHED_FEATURES``)."""
+        """``cached``: how many answers per list of choices the engine keeps
+        (``engine.CACHED_FEATURES``); views keep a share of it."""
         self.analysis = analysis
         self.catalog = catalog
         self.graph = graph
@@ -117,11 +129,14 @@ class Views:
             for node in element.nodes:
                 self._users.setdefault(index, []).append(index_of[node])
                 self._users.setdefault(index_of[node], []).append(index)
-        self._rendered: Memo[tuple[str, Strings | None, tuple[Shown, ...]], list[Fields]] = Memo()
-        self._entries: Memo[_Entry, list[Fields]] = Memo()
+        renderings = max(MIN_RENDERINGS, RENDERINGS * len(graph.elements))
+        self._rendered: Memo[tuple[str, Strings | None, tuple[Shown, ...]], list[Fields]] = Memo(
+            renderings
+        )
+        self._entries: Memo[_Entry, list[Fields]] = Memo(renderings)
         self.initial = self._derive(derivation.initial, {}, None)
         self._views: PrefixCache[tuple[str, bool, str | None], View] = PrefixCache(
-            self.initial, cached
+            self.initial, max(MIN_VIEWS, cached // VIEW_SHARE)
         )
 
     def view(self, key: Key, decisions: Decisions, texts: Mapping[str, str]) -> View:
