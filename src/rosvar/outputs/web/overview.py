@@ -204,23 +204,19 @@ def members(
     else:
         if kind == MemberKind.PARAMS:
             found = [
-                e
+                {**e}
                 for e in _possible(graph.get("params", ()))
                 if key_of(labels(grouping, e)) == group
             ]
-        else:
+        else:  # with its nodes' groups: where the page draws the nodes it links it to
             keys = {str(e["id"]): key_of(labels(grouping, e)) for _k, e in _nodes(graph)}
             found = [
-                e
+                {**e, "groups": [keys.get(node) for node in e.get("nodes", ())]}
                 for e in _possible(graph.get("topics", ()))
                 if any(_under(keys.get(node, ""), group) for node in e.get("nodes", ()))
             ]
         found.sort(key=lambda e: (str(e.get("name")), str(e["id"])))
-        shown = found[page * PAGE[kind] : (page + 1) * PAGE[kind]]
-        if kind == MemberKind.TOPICS:  # where the page draws the nodes it links the topic to
-            listed = [{**e, "groups": [keys.get(n) for n in e.get("nodes", ())]} for e in shown]
-        else:
-            listed = [dict(e) for e in shown]
+        listed = found[page * PAGE[kind] : (page + 1) * PAGE[kind]]
         total = len(found)
     pages = max(1, -(-total // PAGE[kind]))
     return {"group": group, "kind": kind, "page": page, "pages": pages, "members": listed}
