@@ -15,6 +15,7 @@ from typing import NamedTuple, cast
 from rosvar.logic.bdd import BDD, cofactors, layout, restrict
 from rosvar.logic.conditions import PREDICATES, ConditionSpace, FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.inputs import OTHER, ArgInput, EnvInput, Input, Slot
+from rosvar.memo import Memo
 
 BOOLEAN_WORDS = ("true", "false")
 MAX_FULL = 200  # longer formulas over <other> values help nobody
@@ -59,7 +60,7 @@ class Printer:
         self.space = space
         self._contexts: dict[frozenset[object], _Context] = {}
         self._facts = space.facts()
-        self._by_shape: dict[Shape, str] = {}
+        self._by_shape: Memo[Shape, str] = Memo()
         self._variables: dict[str, tuple[int, int, Sequence[BDD]]] = {}  # see _variable
         self._block_numbers: dict[object, int] = {}
         self._block_objects: list[object] = []

@@ -199,3 +199,57 @@ def test_a_new_api_prepares_the_counts(
     assert not any("_residues" in vars(diagram) for diagram in diagrams)
     Api(examples_engine)
     assert all("_residues" in vars(diagram) for diagram in diagrams)
+
+
+def test_memory_stays_bounded_over_many_distinct_clicks(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Issue 16: every click types a text never seen before, sessions come and go; the
+    engine's memos and per-step caches stay within their bounds, no BDD node is kept for
+    evicted entries, and the traced heap stops growing once the bounds are reached."""
+    import gc
+    import tracemalloc
+
+    from outputs.web.live import REPO, configurator
+    from rosvar import memo
+    from rosvar.configuration import engine as engine_module
+
+    monkeypatch.setattr(memo, "CAPACITY", 40)
+    monkeypatch.setattr(engine_module, "CACHED_FEATURES", 1)  # MIN_CACHED_STEPS steps
+    engine = configurator([REPO / "examples"])
+    api = Api(engine, capacity=2)
+    args = list(engine.catalog.args)
+    managers = (engine.derivation.manager, engine.analysis.space.bdd)
+
+    def click(number: int) -> None:
+        nonlocal session
+        if number % 20 == 0:
+            session = api.handle("POST", "/api/session", {}, {})["session"]
+        feature = args[number % len(args)]
+        body = {"session": session, "action": "set", "feature": feature, "value": f"v{number}"}
+        api.handle("POST", "/api/choose", {}, body)
+
+    session = ""
+    for number in range(300):  # past every bound
+        click(number)
+    gc.collect()
+    nodes = [len(manager) for manager in managers]
+    tracemalloc.start()
+    try:  # the first round replaces what was allocated before tracing (untraced when freed)
+        for number in range(300, 600):
+            click(number)
+        gc.collect()
+        before = tracemalloc.get_traced_memory()[0]
+        for number in range(600, 900):
+            click(number)
+        gc.collect()
+        grown = tracemalloc.get_traced_memory()[0] - before
+    finally:
+        tracemalloc.stop()
+    steps = engine_module.MIN_CACHED_STEPS
+    assert api.sessions == 2
+    ours = [found for found in memo.memos() if found.capacity == 40]  # other engines' too
+    assert all(len(found) <= 40 for found in ours)
+    assert sum(len(found) == 40 for found in ours) >= 3  # the bound was reached
+    for cache in (engine._steps, engine._replays, engine.views._views):
+        assert len(cache._items) <= steps
+    assert [len(manager) for manager in managers] <= nodes
+    assert grown < 1_000_000  # unbounded, the memos alone held 4 MB more per 300 clicks
