@@ -30,6 +30,7 @@ from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.presence import Judged, Judgement, Presences, Typed
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, Input
 from rosvar.memo import Memo
 
@@ -123,6 +124,31 @@ class Summary:
     errors: list[Fields]  # the errors present: where roslaunch stops
 
 
+class Descriptions:
+    """Conditions simplified for people, remembered.
+
+    Apart from :class:`Views` because every verdict keeps ``describe`` until it is shown: a
+    bound method of the views would make each view a reference cycle, which leaves the
+    solver's diagrams to the cycle collector, and that may free CUDD's manager before them."""
+
+    def __init__(self, space: ConditionSpace) -> None:
+        self.space = space
+        self._described: Memo[tuple[BDD, frozenset[tuple[str, bool]]], str] = Memo()
+        self._simplified: Memo[BDD, str] = Memo()  # a condition cofactored → its description
+
+    def describe(self, condition: BDD, values: Mapping[str, bool]) -> str:
+        """``condition`` simplified under ``values`` (decided variables)."""
+        key = (condition, frozenset(values.items()))
+        text = self._described.get(key)
+        if text is None:
+            restricted = self.space.cofactor(condition, values)
+            text = self._simplified.get(restricted)  # other values often leave the same
+            if text is None:
+                text = self._simplified[restricted] = self.space.describe(restricted)
+            self._described[key] = text
+        return text
+
+
 class Views:
     """Every list of literals' view, each derived from the longest earlier list's."""
 
@@ -143,8 +169,7 @@ class Views:
         self.graph = graph
         self.lowering = lowering
         self.conflicts = conflicts
-        self._described: Memo[tuple[BDD, frozenset[tuple[str, bool]]], str] = Memo()
-        self._simplified: Memo[BDD, str] = Memo()  # a condition cofactored → its description
+        self.describe = Descriptions(analysis.space).describe
         self.presences = Presences(graph.elements, derivation, lowering)
         self._elements_of: list[list[int]] = [[] for _ in self.presences.conditions]
         for index, condition in enumerate(self.presences.of_element):
@@ -192,19 +217,6 @@ class Views:
         view = self._derive(decisions, texts, before)
         self._views.put(key, view)
         return view
-
-    def describe(self, condition: BDD, values: Mapping[str, bool]) -> str:
-        """``condition`` simplified under ``values`` (decided variables), for people."""
-        key = (condition, frozenset(values.items()))
-        text = self._described.get(key)
-        if text is None:
-            space = self.analysis.space
-            restricted = space.cofactor(condition, values)
-            text = self._simplified.get(restricted)  # other values often leave the same
-            if text is None:
-                text = self._simplified[restricted] = space.describe(restricted)
-            self._described[key] = text
-        return text
 
     def arg_text(
         self, entry: FileEntry, name: str, decisions: Decisions, texts: Mapping[str, str]
