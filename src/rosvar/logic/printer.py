@@ -8,6 +8,7 @@ hide and the inputs' domains: :class:`Printer` computes those once per set of va
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import NamedTuple, cast
@@ -57,7 +58,9 @@ class Printer:
     """The readable form of the conditions of one space (``ConditionSpace.describe``)."""
 
     def __init__(self, space: ConditionSpace) -> None:
-        self.space = space
+        # the space owns its printer: a strong reference back would make a cycle, and the
+        # cycle collector may free CUDD's manager before the diagrams in it
+        self.space = weakref.proxy(space)
         self._contexts: dict[frozenset[object], _Context] = {}
         self._facts = space.facts()
         self._by_shape: Memo[Shape, str] = Memo()

@@ -11,6 +11,7 @@ server answers each connection in its own thread.
 
 from __future__ import annotations
 
+import functools
 import threading
 from collections.abc import Callable, Mapping
 from functools import cached_property
@@ -112,33 +113,16 @@ class Api:
         configurator.derivation.prepare_counts()
         self._kinds = {key: feature.kind for key, feature in features.items()}
         self._defaults = defaults(configurator)
-        steps: dict[str, Callable[[Session], ConfigurationState]] = {
-            "undo": Session.undo,
-            "redo": Session.redo,
-            "reset": Session.reset,
-        }
-        self.routes: dict[tuple[str, str], Callable[[Query, Body], Reply]] = {
-            ("POST", "/api/session"): self._open,
-            ("GET", "/api/state"): self._state,
-            ("POST", "/api/choose"): self._choose,
-            ("POST", "/api/finish"): self._finish,
-            ("GET", "/api/catalog"): self._catalog,
-            ("POST", "/api/grouping"): self._grouping,
-            ("POST", "/api/group"): self._group,
-            **{("POST", f"/api/{name}"): self._stepper(step) for name, step in steps.items()},
-            ("POST", "/api/query"): self._query,
-            ("POST", "/api/checks"): self._checks,
-        }
         self._inspector = Inspector(configurator)
 
     def handle(self, method: str, path: str, query: Query, body: Body) -> Reply:
-        route = self.routes.get((method, path))
+        route = ROUTES.get((method, path))
         if route is None:
-            if any(known == path for _, known in self.routes):
+            if any(known == path for _, known in ROUTES):
                 raise ApiError(HTTPStatus.METHOD_NOT_ALLOWED, f"{method} not allowed on {path}")
             raise ApiError(HTTPStatus.NOT_FOUND, f"no such API: {path}")
         with self._lock:
-            return route(query, body)
+            return route(self, query, body)
 
     @property
     def sessions(self) -> int:
@@ -212,17 +196,14 @@ class Api:
             state = tab.session.apply(choice)
         return self._reply(key, tab, state, known)
 
-    def _stepper(
-        self, step: Callable[[Session], ConfigurationState]
-    ) -> Callable[[Query, Body], Reply]:
-        def route(query: Query, body: Body) -> Reply:
-            _only(query, set())
-            _only(body, {"session", "version"})
-            key, tab = self._session(body)
-            known = _version(body)
-            return self._reply(key, tab, step(tab.session), known)
-
-        return route
+    def _step(
+        self, query: Query, body: Body, step: Callable[[Session], ConfigurationState]
+    ) -> Reply:
+        _only(query, set())
+        _only(body, {"session", "version"})
+        key, tab = self._session(body)
+        known = _version(body)
+        return self._reply(key, tab, step(tab.session), known)
 
     def _query(self, query: Query, body: Body) -> Reply:
         """The elements a query selects under the tab's choices (docs/web.md)."""
@@ -278,3 +259,23 @@ class Api:
             del document["defaults"]
             document = compact(document, tab.grouping)
         return {"session": key, **tab.answer(document, known)}
+
+
+Route = Callable[[Api, Query, Body], Reply]
+ROUTES: dict[tuple[str, str], Route] = {
+    ("POST", "/api/session"): Api._open,
+    ("GET", "/api/state"): Api._state,
+    ("POST", "/api/choose"): Api._choose,
+    ("POST", "/api/finish"): Api._finish,
+    ("GET", "/api/catalog"): Api._catalog,
+    ("POST", "/api/grouping"): Api._grouping,
+    ("POST", "/api/group"): Api._group,
+    ("POST", "/api/undo"): functools.partial(Api._step, step=Session.undo),
+    ("POST", "/api/redo"): functools.partial(Api._step, step=Session.redo),
+    ("POST", "/api/reset"): functools.partial(Api._step, step=Session.reset),
+    ("POST", "/api/query"): Api._query,
+    ("POST", "/api/checks"): Api._checks,
+}
+"""The route table: functions of the API, not its bound methods, which would make every
+:class:`Api` a reference cycle (freed by the cycle collector, CUDD's manager before the
+engine's diagrams)."""
