@@ -54,9 +54,9 @@ class CountedDiagram:
     the deepest of them and rescales the first count's values of the nodes below: the
     configuration engine counts this way after every click. Only a recount of fewer than
     ``VECTOR_FROM`` nodes is done so, the others run in numpy (``_Residues``); so only the
-    first values of the nodes such a recount visits, and of their children, are kept. The
-    others (Husky's main component: 246,000 values of 2,200 bits, 75 MB) are let go as soon
-    as their parents have been counted.
+    first values of the nodes such a recount visits, and of their children, are kept: the
+    others, most of a large diagram's and each as long as the total weight, are let go as
+    soon as their parents have been counted.
     """
 
     def __init__(self, manager: Manager, formula: BDD, weights: Mapping[str, Weight]) -> None:
@@ -87,8 +87,7 @@ class CountedDiagram:
             self._values = _evaluated(
                 self._levels, self._lows, self._highs, self._weights, self._total, kept
             )
-        self.first = self._value(self._values, self._total)
-        """The count under the weights the diagram was read with."""
+        self.first = self._value(self._values, self._total)  # under the weights read with
 
     def __len__(self) -> int:
         """Nodes, the constant included."""
