@@ -369,15 +369,16 @@ class _Residues:
                 inverse[off + on] = [pow(off + on, -1, m) for m in taken]
         p = np.asarray(taken, dtype=np.int64)
         everything = np.asarray([total % m for m in taken], dtype=np.int64)
-        values = np.empty((self.size, len(taken)), dtype=np.int64)
+        # residues below 2^31 are kept in half the memory, widened level by level to compute
+        values = np.empty((self.size, len(taken)), dtype=np.int32)
         values[0] = everything
         for level in self.levels:
             off, on = weight_at[level.level]
-            d_low = values[level.lows]
+            d_low = values[level.lows].astype(np.int64)
             if level.negated is not None:
                 flipped = everything - d_low
                 d_low = np.where(level.negated[:, None], flipped + (flipped < 0) * p, d_low)
-            d_high = values[level.highs]
+            d_high = values[level.highs].astype(np.int64)
             if off == on:  # (d_low + d_high) / 2 modulo odd primes: add p to make it even
                 both = d_low + d_high
                 both = (both + (both & 1) * p) >> 1
@@ -391,7 +392,7 @@ class _Residues:
                 mixed = (weights[:, 0] * d_low % p + weights[:, 1] * d_high % p) % p
                 values[level.places] = mixed * np.asarray(inverse[off + on], dtype=np.int64) % p
         root = self.root
-        residues = values[~root if root < 0 else root]
+        residues = values[~root if root < 0 else root].astype(np.int64)
         if root < 0:
             residues = (everything - residues) % p
         return _restored(residues.tolist(), taken, product)
