@@ -215,3 +215,10 @@ def test_values_below_a_quick_recount_are_let_go_and_counted_anew(
     for name in names:
         weights = {**first, name: (rng.randint(0, 3), rng.randint(0, 4))}
         assert diagram.count(weights) == enumerated(manager, formula, weights)
+
+
+def test_combine_weighs_the_children() -> None:
+    assert counting.combine((1, 1), 4, 6) == 5
+    assert counting.combine((0, 3), 4, 6) == 6
+    assert counting.combine((2, 0), 4, 6) == 4
+    assert counting.combine((1, 3), 4, 8) == 7
