@@ -80,7 +80,7 @@ class CountedDiagram:
                 for place in range(1, len(self._levels))
                 if self._levels[place] <= self._kept_down_to
             ]  # children before parents, as all places
-            kept = {0, self._root if self._root >= 0 else ~self._root, *self._top}
+            kept = {self._root if self._root >= 0 else ~self._root, *self._top}
             for place in self._top:
                 low = self._lows[place]
                 kept.update((~low if low < 0 else low, self._highs[place]))
