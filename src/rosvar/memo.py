@@ -19,10 +19,11 @@ from typing import TypeVar
 Key = TypeVar("Key")
 Value = TypeVar("Value")
 
-CAPACITY = 100_000
+CAPACITY = 20_000
 """Entries a memo keeps unless told otherwise: enough that a session's working set (one
-workspace's conditions and entries under a few dozen choices) stays, and a few hundred bytes
-each at most, so a few tens of MB per memo at worst."""
+workspace's conditions and entries under a few dozen choices) stays; an entry with the
+diagrams it keeps alive takes about 2 KB, so a few tens of MB for all memos at worst
+(docs/performance.md, "Server memory")."""
 
 _ALL: weakref.WeakValueDictionary[int, Memo[object, object]] = weakref.WeakValueDictionary()
 
