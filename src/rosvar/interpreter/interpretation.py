@@ -19,7 +19,7 @@ from rosvar.interpreter.dialect import Dialect, RosVersion
 from rosvar.interpreter.lifted import apply, lift
 from rosvar.interpreter.model import Decision, ErrorEvent, Guard, LaunchModel, Raw
 from rosvar.interpreter.ros2.context import Context
-from rosvar.interpreter.scope import MISSING, ArgValue, Scope
+from rosvar.interpreter.scope import MISSING, Scope
 from rosvar.interpreter.substitution import Substituter
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
@@ -170,16 +170,19 @@ class Interpretation:
         return names
 
     # -- inputs --------------------------------------------------------------------------
-    def entry_args(self, file: str, names: Sequence[str]) -> dict[str, ArgValue]:
-        """Command-line args of the entry file as choices over their input slots."""
-        args: dict[str, ArgValue] = {}
+    def entry_args(
+        self, file: str, names: Sequence[str], unset: object = MISSING
+    ) -> dict[str, Choice[Any]]:
+        """Command-line args of the entry file as choices over their input slots, ``unset``
+        where one is not given (the dialect's way of saying so)."""
+        args: dict[str, Choice[Any]] = {}
         for name in names:
             input_ = ArgInput(file, name)
             domain = self._domains(file, name)
             self.space.declare_input(input_, domain)
             self.model.inputs[name] = input_
             self.model.domains[name] = domain
-            args[name] = self._input_value(input_, MISSING)
+            args[name] = self._input_value(input_, unset)
         return args
 
     # -- conditions and errors -------------------------------------------------------------

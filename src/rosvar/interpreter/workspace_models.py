@@ -7,17 +7,24 @@ import os
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 
+from rosvar.frontends import registry
 from rosvar.frontends.ros1_xml.parser import Snapshot
 from rosvar.interpreter import tags  # noqa: F401 - registers the tag handlers
+from rosvar.interpreter.dialect import Dialect
 from rosvar.interpreter.domains import DomainTable, entry_declarations
-from rosvar.interpreter.interpretation import Interpretation
+from rosvar.interpreter.interpretation import ROS1, Interpretation
 from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.ros2 import interpretation as ros2
+from rosvar.interpreter.ros2.dialect import ROS2
 from rosvar.interpreter.scope import Scope
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros.names import settable
 from rosvar.workspace import Workspace
 from rosvar.workspace.paths import real_path
+from rosvar.workspace.ros_version import RosVersion
+
+DIALECTS: dict[RosVersion, Dialect] = {RosVersion.ROS1: ROS1, RosVersion.ROS2: ROS2}
 
 Progress = Callable[[int, int, str], None]
 
@@ -34,7 +41,8 @@ class Analysis:
     ) -> None:
         self.workspace = workspace
         self.space = ConditionSpace(len(workspace.launch_files))
-        self.files = Snapshot()
+        self.dialect = DIALECTS[workspace.ros_version]
+        self.files = Snapshot(registry.load if self.dialect is ROS2 else None)
         self.domains = DomainTable(
             workspace, extra_values, env_values, extra_executables, files=self.files
         )
@@ -88,6 +96,7 @@ class Analysis:
             self.domains.env_domain,
             file,
             self.files,
+            self.dialect,
         )
         try:
             return self._run(it, file)
@@ -97,6 +106,10 @@ class Analysis:
     def _run(self, it: Interpretation, file: str) -> LaunchModel:
         it.stack.append(real_path(file))
         root = it.load(file)
+        if self.dialect is ROS2:
+            if root is not None:
+                ros2.walk_entry(it, root, ros2.entry_context(it, file, root))
+            return self._defaults(ros2.finish(it), file)
         model = it.model
         if root is not None:
             deprecated = root.get("deprecated")
@@ -113,16 +126,20 @@ class Analysis:
             scope = Scope(ns=Choice.const(self.space, "/"), filename=file, args=args)
             with it.at(root):
                 it.walk(root.children, scope)
-        for name in model.inputs:
-            default = self.domains.unset_default(file, name)
-            if default is not None:
-                model.unset_defaults[name] = default
         failing = self.space.false
         for error in model.errors:
             failing |= error.condition
         model.loads = ~failing
         model.anon_count = it.anon_count
         model.diagnostics = it.sink.items
+        return self._defaults(model, file)
+
+    def _defaults(self, model: LaunchModel, file: str) -> LaunchModel:
+        """Record what leaving each arg out amounts to, where it is one literal."""
+        for name in model.inputs:
+            default = self.domains.unset_default(file, name)
+            if default is not None:
+                model.unset_defaults[name] = default
         return model
 
 

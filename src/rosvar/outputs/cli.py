@@ -28,6 +28,7 @@ from rosvar.configuration.choices import Action
 from rosvar.diagnostics import Location, Severity
 from rosvar.outputs.exports import FORMATS
 from rosvar.ros.names import command_line_mappings
+from rosvar.workspace.ros_version import RosVersion
 
 # Each command imports what it needs when it runs: `dd` (and CUDD), the interpreter, numpy
 # and the web server are not what `--version`, `--help` or another command pays for.
@@ -129,7 +130,6 @@ def cmd_analyze(options: argparse.Namespace) -> int:
 def cmd_resolve(options: argparse.Namespace) -> int:
     from rosvar.analyses.communication import JSON_SIDES, Channel, resolved_graph
     from rosvar.analyses.resolve import resolve
-    from rosvar.interpreter.ros2.interpretation import is_ros2_launch
     from rosvar.interpreter.workspace_models import Analysis
 
     paths = [os.path.abspath(words[0]) for words in options.launch if len(words) == 1]
@@ -146,7 +146,7 @@ def cmd_resolve(options: argparse.Namespace) -> int:
     if env is None:
         return EXIT_USAGE
     args = command_line_mappings(options.args)
-    if len(files) == 1 and is_ros2_launch(files[0]):
+    if len(files) == 1 and workspace.ros_version is RosVersion.ROS2:
         return _resolve_ros2(workspace, files[0], args, env, options.json)
     # The given values become known slots: conditions split on them instead of
     # leaving them to <other> terms (the semantics does not change).
