@@ -72,16 +72,18 @@ class View(Protocol):
 
 
 class Constant:
-    """The view of a model interpreted with fixed arguments: every condition is constant."""
+    """The view of a model interpreted with fixed arguments: values are constants, and the
+    only inputs, the environment variables read, are not set."""
 
     def __init__(self, space: ConditionSpace) -> None:
-        self.true = space.true
+        self.space = space
+        self.assignment = space.assignment({})
 
     def holds(self, condition: BDD) -> bool:
-        return bool(condition == self.true)
+        return self.space.evaluate(condition, self.assignment)
 
     def pick(self, choice: Choice[object], location: Location, what: str) -> object:
-        value = choice.single()
+        value = next((leaf for condition, leaf in choice if self.holds(condition)), None)
         if value is not None and not isinstance(value, str):
             raise ValueError(f"{what} is not known")
         return value
