@@ -121,6 +121,16 @@ class Interpretation:
         self.included = 0  # includes followed, up to MAX_INCLUDES
         self._location = Location(file)
 
+    def finish(self) -> LaunchModel:
+        """The model, loading wherever no error is raised, with what the walk gathered."""
+        failing = self.space.false
+        for error in self.model.errors:
+            failing |= error.condition
+        self.model.loads = ~failing
+        self.model.anon_count = self.anon_count
+        self.model.diagnostics = self.sink.items
+        return self.model
+
     def close(self) -> None:
         """Drop the substituter: reference counting then frees this run's BDDs."""
         del self.substituter

@@ -6,9 +6,11 @@ import gc
 import os
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
+from dataclasses import dataclass
 
 from rosvar.frontends import registry
-from rosvar.frontends.ros1_xml.parser import Snapshot
+from rosvar.frontends.entity import Entity
+from rosvar.frontends.ros1_xml.parser import ParseResult, Snapshot
 from rosvar.interpreter import tags  # noqa: F401 - registers the tag handlers
 from rosvar.interpreter.dialect import Dialect
 from rosvar.interpreter.domains import DomainTable, entry_declarations
@@ -23,8 +25,6 @@ from rosvar.ros.names import settable
 from rosvar.workspace import Workspace
 from rosvar.workspace.paths import real_path
 from rosvar.workspace.ros_version import RosVersion
-
-DIALECTS: dict[RosVersion, Dialect] = {RosVersion.ROS1: ROS1, RosVersion.ROS2: ROS2}
 
 Progress = Callable[[int, int, str], None]
 
@@ -41,8 +41,8 @@ class Analysis:
     ) -> None:
         self.workspace = workspace
         self.space = ConditionSpace(len(workspace.launch_files))
-        self.dialect = DIALECTS[workspace.ros_version]
-        self.files = Snapshot(registry.load if self.dialect is ROS2 else None)
+        self.reading = READINGS[workspace.ros_version]
+        self.files = Snapshot(self.reading.loader)
         self.domains = DomainTable(
             workspace, extra_values, env_values, extra_executables, files=self.files
         )
@@ -96,7 +96,7 @@ class Analysis:
             self.domains.env_domain,
             file,
             self.files,
-            self.dialect,
+            self.reading.dialect,
         )
         try:
             return self._run(it, file)
@@ -106,41 +106,50 @@ class Analysis:
     def _run(self, it: Interpretation, file: str) -> LaunchModel:
         it.stack.append(real_path(file))
         root = it.load(file)
-        if self.dialect is ROS2:
-            if root is not None:
-                ros2.walk_entry(it, root, ros2.entry_context(it, file, root))
-            return self._defaults(ros2.finish(it), file)
-        model = it.model
         if root is not None:
-            deprecated = root.get("deprecated")
-            if deprecated:
-                it.sink.note("launch-deprecated", f"DEPRECATED: {deprecated}", root.location)
-            names = list(
-                dict.fromkeys(
-                    d.get("name") or ""
-                    for d in entry_declarations(root)
-                    if settable(d.get("name") or "")
-                )
-            )
-            args = it.entry_args(file, names)
-            scope = Scope(ns=Choice.const(self.space, "/"), filename=file, args=args)
-            with it.at(root):
-                it.walk(root.children, scope)
-        failing = self.space.false
-        for error in model.errors:
-            failing |= error.condition
-        model.loads = ~failing
-        model.anon_count = it.anon_count
-        model.diagnostics = it.sink.items
-        return self._defaults(model, file)
-
-    def _defaults(self, model: LaunchModel, file: str) -> LaunchModel:
-        """Record what leaving each arg out amounts to, where it is one literal."""
-        for name in model.inputs:
+            self.reading.walk(it, file, root)
+        model = it.finish()
+        for name in model.inputs:  # what leaving each arg out amounts to, if one literal
             default = self.domains.unset_default(file, name)
             if default is not None:
                 model.unset_defaults[name] = default
         return model
+
+
+def _walk_ros1(it: Interpretation, file: str, root: Entity) -> None:
+    """roslaunch: the file's args are the command line's, in a scope at ``/``."""
+    deprecated = root.get("deprecated")
+    if deprecated:
+        it.sink.note("launch-deprecated", f"DEPRECATED: {deprecated}", root.location)
+    names = list(
+        dict.fromkeys(
+            d.get("name") or "" for d in entry_declarations(root) if settable(d.get("name") or "")
+        )
+    )
+    args = it.entry_args(file, names)
+    scope = Scope(ns=Choice.const(it.space, "/"), filename=file, args=args)
+    with it.at(root):
+        it.walk(root.children, scope)
+
+
+def _walk_ros2(it: Interpretation, file: str, root: Entity) -> None:
+    """``ros2 launch``: the declared launch arguments are the command line's."""
+    ros2.walk_entry(it, root, ros2.entry_context(it, file, root))
+
+
+@dataclass(frozen=True)
+class Reading:
+    """How one ROS reads an entry file: its dialect, its frontends, its entry walk."""
+
+    dialect: Dialect
+    loader: Callable[[str], ParseResult] | None  # None: roslaunch's XML parser
+    walk: Callable[[Interpretation, str, Entity], None]
+
+
+READINGS: dict[RosVersion, Reading] = {
+    RosVersion.ROS1: Reading(ROS1, None, _walk_ros1),
+    RosVersion.ROS2: Reading(ROS2, registry.load, _walk_ros2),
+}
 
 
 @contextmanager

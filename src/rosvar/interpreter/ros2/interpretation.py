@@ -52,7 +52,7 @@ def interpret(
             }
             context.env = {name: Choice.const(space, value) for name, value in env.items()}
             walk_entry(it, root, context)
-        return finish(it)
+        return it.finish()
     finally:
         it.close()
 
@@ -77,13 +77,3 @@ def entry_context(it: Interpretation, file: str, root: Entity) -> Context:
     context = Context(file)
     context.configurations = it.entry_args(file, names, None)
     return context
-
-
-def finish(it: Interpretation) -> LaunchModel:
-    """The model, loading where no error is raised."""
-    failing = it.space.false
-    for error in it.model.errors:
-        failing |= error.condition
-    it.model.loads = ~failing
-    it.model.diagnostics = it.sink.items
-    return it.model
