@@ -168,6 +168,19 @@ CASES: dict[str, tuple[dict[str, str | bytes], str, str, int, int]] = {
         2,
         3,
     ),
+    "eval nested too deep": (
+        {
+            "bad.launch": '<launch>\n  <param name="p" value="$(eval '
+            + "(" * 5000
+            + "1"
+            + ")" * 5000
+            + ')"/>\n</launch>\n'
+        },
+        "bad.launch",
+        "eval-refused",
+        2,
+        3,
+    ),
     "eval reading a file": (
         {
             "bad.launch": '<launch>\n  <param name="p" '

@@ -11,6 +11,7 @@ import json
 import operator
 import random
 import subprocess
+import sys
 from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
@@ -21,6 +22,7 @@ from hypothesis import strategies as st
 
 from rosvar.interpreter.safe_eval import (
     MAX_ITERATIONS,
+    MAX_NESTING,
     EvalEnvironment,
     EvalFailed,
     EvalRefused,
@@ -735,6 +737,43 @@ def test_resource_guards_refuse(expr: str) -> None:
 )
 def test_resource_guards_allow_reasonable_work(expr: str, expected: str) -> None:
     assert evaluate(expr, ENV) == expected
+
+
+@pytest.mark.parametrize(
+    "expr",
+    [
+        "(" * 5000 + "1" + ")" * 5000,
+        "[" * 5000 + "]" * 5000,
+        "{" * 5000 + "}" * 5000,
+        "-" * 50000 + "1",
+        "not " * 5000 + "1",
+        "+".join(["1"] * 50000),
+        "a" + ".b" * 5000,
+        "(" * MAX_NESTING + "-1" + ")" * MAX_NESTING,
+    ],
+)
+def test_nesting_beyond_the_limit_is_refused_before_parsing(expr: str) -> None:
+    with pytest.raises(EvalRefused, match=f"nested more than {MAX_NESTING} levels deep"):
+        evaluate(expr, ENV)
+
+
+@pytest.mark.parametrize(
+    ("expr", "expected"),
+    [
+        ("-" * MAX_NESTING + "1", "1"),
+        ("[" * MAX_NESTING + "]" * MAX_NESTING, "[" * MAX_NESTING + "]" * MAX_NESTING),
+        ("+".join(["1"] * MAX_NESTING), str(MAX_NESTING)),
+        ("[" + ", ".join(["1 + 1"] * 1000) + "][999]", "2"),  # siblings do not nest
+    ],
+)
+def test_nesting_at_the_limit_evaluates_deep_in_a_stack(expr: str, expected: str) -> None:
+    """The limit leaves room below Python's recursion limit for a caller already deep in
+    nested includes."""
+
+    def nested(levels: int) -> str:
+        return evaluate(expr, ENV) if levels == 0 else nested(levels - 1)
+
+    assert nested(sys.getrecursionlimit() // 2) == expected
 
 
 def test_large_int_to_str_fails_like_python() -> None:

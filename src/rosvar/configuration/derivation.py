@@ -39,6 +39,7 @@ from rosvar.analyses.feature_model.model import FeatureModel, FileFeature, name_
 from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.sat import Sat
 from rosvar.logic.bdd import BDD, children_first, cofactor, cofactors, evaluate, walked_support
+from rosvar.memo import Memo
 
 SOURCES = 4  # witnesses tried as the source of a repair
 REPAIRED_FILES = 8  # files a repair may copy: beyond, the solver is the cheaper way
@@ -132,17 +133,17 @@ class Derivation:
                 reads = sum(1 << at for at in support)
                 for file in files:
                     self._crossing[file].append((constraint, reads, files))
-        self._necessary: dict[BDD, tuple[int, int]] = {}
+        self._necessary: Memo[BDD, tuple[int, int]] = Memo()
         self._reads: dict[frozenset[int], int] = {}  # files → what their constraints read
         self._broke: dict[tuple[frozenset[int], int], frozenset[int]] = {}
         self._repairs: dict[tuple[int, BDD], int | None] = {}
         self._block_of: dict[frozenset[int], int] = {}  # files → their variables' positions
         self.component_of = solver.component_of
-        self._supports: dict[BDD, frozenset[str]] = {}
-        self._masks_of: dict[BDD, int] = {}
-        self._restricted: dict[object, tuple[Presence | None, BDD, BDD, frozenset[int]]] = {}
-        self._judged: dict[tuple[BDD, BDD, BDD], tuple[Presence, tuple[int, int] | None]] = {}
-        self._counts: dict[tuple[int, BDD], int] = {}
+        self._supports: Memo[BDD, frozenset[str]] = Memo()
+        self._masks_of: Memo[BDD, int] = Memo()
+        self._restricted: Memo[object, tuple[Presence | None, BDD, BDD, frozenset[int]]] = Memo()
+        self._judged: Memo[tuple[BDD, BDD, BDD], tuple[Presence, tuple[int, int] | None]] = Memo()
+        self._counts: Memo[tuple[int, BDD], int] = Memo()
         components = range(len(self.members))
         self._examples: dict[int, deque[int]] = {}  # per component: its solver's models
         firsts = [sat.model([]) for sat in self.sats]

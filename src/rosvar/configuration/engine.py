@@ -34,9 +34,10 @@ Progress = Callable[[str, int, int], None]
 
 CACHED_FEATURES = 1_000_000
 """Views, replays and solver answers are kept per list of choices (a session's history and
-then some), each holding a state of every feature: as many as make this many feature states
-in all, at least ``MIN_CACHED_STEPS``. A fixed count of steps would hold memory in
-proportion to the workspace's size, without bound on large ones."""
+then some), each holding a state of every feature and an entry of every graph element: as
+many as make this many feature states and entries in all, at least ``MIN_CACHED_STEPS``. A
+fixed count of steps would hold memory in proportion to the workspace's size, without bound
+on large ones."""
 MIN_CACHED_STEPS = 64
 EXACT_INTEGER = 2**53  # larger counts go to JSON as strings
 
@@ -202,7 +203,8 @@ class Configurator:
             for entry in self.catalog.files
         }
         self.lowering.built()
-        cached = max(MIN_CACHED_STEPS, CACHED_FEATURES // max(1, len(self.catalog.features)))
+        held = len(self.catalog.features) + len(self.graph.elements)  # per step
+        cached = max(MIN_CACHED_STEPS, CACHED_FEATURES // max(1, held))
         progress("presence of elements", 0, len(self.graph.elements))
         self.views = Views(
             analysis,

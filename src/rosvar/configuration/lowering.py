@@ -21,6 +21,7 @@ from rosvar.logic.bdd import BDD, transfer
 from rosvar.logic.conditions import PredicateAtom, SlotAtom, decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import term_inputs
+from rosvar.memo import Memo
 
 _NONE: frozenset[str] = frozenset()
 COPIES = 100_000
@@ -78,7 +79,7 @@ class Lowering:
         # condition → fixed, and the open atoms of its support (most have none: one set)
         self._fixed: dict[BDD, tuple[BDD, frozenset[str]]] = {}
         self._bounds: dict[BDD, Bounds] = {}  # by fixed condition
-        self._decided: dict[tuple[BDD, frozenset[tuple[Input, str]]], Bounds] = {}
+        self._decided: Memo[tuple[BDD, frozenset[tuple[Input, str]]], Bounds] = Memo()
         self._cares: dict[frozenset[object], BDD] = {}  # by ``care_key``
         self._satisfiable: dict[BDD, bool] = {}
         self._copies: dict[frozenset[str], dict[BDD, BDD]] = {}  # the last open atoms hidden

@@ -30,7 +30,9 @@ from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.presence import Judged, Judgement, Presences, Typed
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, Input
+from rosvar.memo import Memo
 
 Key = tuple[tuple[str, bool, str | None], ...]
 """A list of literals: variable, value and the ``<other>`` text it gives, if any."""
@@ -42,6 +44,17 @@ parts as shown and (a topic) the node variants using it that are not absent."""
 
 _USED = frozenset(NAMED.values())
 """Kinds of elements that list the node variants using them."""
+
+VIEW_SHARE = 4
+"""A view holds the entries rendered anew at its step: thousands when a typed value changes
+the strings of a file's params (MBs on Husky). So a quarter as many views are kept as the
+engine's other answers per list of choices, at least ``MIN_VIEWS``; a view forgotten is
+derived again from the longest earlier one kept."""
+MIN_VIEWS = 16
+RENDERINGS = 2
+"""Renderings of entries remembered per element of the graph (at least ``MIN_RENDERINGS``):
+a step meets again those of the states around it, and no more are worth their memory."""
+MIN_RENDERINGS = 1_000
 
 
 @dataclass
@@ -111,6 +124,31 @@ class Summary:
     errors: list[Fields]  # the errors present: where roslaunch stops
 
 
+class Descriptions:
+    """Conditions simplified for people, remembered.
+
+    Apart from :class:`Views` because every verdict keeps ``describe`` until it is shown: a
+    bound method of the views would make each view a reference cycle, which leaves the
+    solver's diagrams to the cycle collector, and that may free CUDD's manager before them."""
+
+    def __init__(self, space: ConditionSpace) -> None:
+        self.space = space
+        self._described: Memo[tuple[BDD, frozenset[tuple[str, bool]]], str] = Memo()
+        self._simplified: Memo[BDD, str] = Memo()  # a condition cofactored → its description
+
+    def describe(self, condition: BDD, values: Mapping[str, bool]) -> str:
+        """``condition`` simplified under ``values`` (decided variables)."""
+        key = (condition, frozenset(values.items()))
+        text = self._described.get(key)
+        if text is None:
+            restricted = self.space.cofactor(condition, values)
+            text = self._simplified.get(restricted)  # other values often leave the same
+            if text is None:
+                text = self._simplified[restricted] = self.space.describe(restricted)
+            self._described[key] = text
+        return text
+
+
 class Views:
     """Every list of literals' view, each derived from the longest earlier list's."""
 
@@ -124,14 +162,14 @@ class Views:
         conflicts: Conflicts,
         cached: int,
     ) -> None:
-        """``cached``: how many views to keep (``engine.CACHED_FEATURES``)."""
+        """``cached``: how many answers per list of choices the engine keeps
+        (``engine.CACHED_FEATURES``); views keep a share of it."""
         self.analysis = analysis
         self.catalog = catalog
         self.graph = graph
         self.lowering = lowering
         self.conflicts = conflicts
-        self._described: dict[tuple[BDD, frozenset[tuple[str, bool]]], str] = {}
-        self._simplified: dict[BDD, str] = {}  # a condition cofactored → its description
+        self.describe = Descriptions(analysis.space).describe
         self.presences = Presences(graph.elements, derivation, lowering)
         self._elements_of: list[list[int]] = [[] for _ in self.presences.conditions]
         for index, condition in enumerate(self.presences.of_element):
@@ -160,12 +198,15 @@ class Views:
             for node in element.nodes:
                 self._users.setdefault(index, []).append(index_of[node])
                 self._users.setdefault(index_of[node], []).append(index)
-        self._rendered: dict[tuple[str, Strings | None, tuple[Shown, ...]], list[Fields]] = {}
-        self._entries: dict[_Entry, list[Fields]] = {}
+        renderings = max(MIN_RENDERINGS, RENDERINGS * len(graph.elements))
+        self._rendered: Memo[tuple[str, Strings | None, tuple[Shown, ...]], list[Fields]] = Memo(
+            renderings
+        )
+        self._entries: Memo[_Entry, list[Fields]] = Memo(renderings)
         self._symbolic = Values(lowering.concrete, lowering.host)  # no arg's string known
         self.initial = self._derive(derivation.initial, {}, None)
         self._views: PrefixCache[tuple[str, bool, str | None], View] = PrefixCache(
-            self.initial, cached
+            self.initial, max(MIN_VIEWS, cached // VIEW_SHARE)
         )
 
     def view(self, key: Key, decisions: Decisions, texts: Mapping[str, str]) -> View:
@@ -176,19 +217,6 @@ class Views:
         view = self._derive(decisions, texts, before)
         self._views.put(key, view)
         return view
-
-    def describe(self, condition: BDD, values: Mapping[str, bool]) -> str:
-        """``condition`` simplified under ``values`` (decided variables), for people."""
-        key = (condition, frozenset(values.items()))
-        text = self._described.get(key)
-        if text is None:
-            space = self.analysis.space
-            restricted = space.cofactor(condition, values)
-            text = self._simplified.get(restricted)  # other values often leave the same
-            if text is None:
-                text = self._simplified[restricted] = space.describe(restricted)
-            self._described[key] = text
-        return text
 
     def arg_text(
         self, entry: FileEntry, name: str, decisions: Decisions, texts: Mapping[str, str]

@@ -5,7 +5,7 @@ methods (``var``, ``ite``, ``dag_size``, …); whatever reaches further — crea
 bounding its memory, CUDD's restrict and and-abstract, and every walk over the nodes
 (complement marks, children, levels) — is here, once: cofactors, supports, evaluation under
 an assignment, copies between managers, conjunction by levels, and the reading of a BDD's
-nodes for an exact weighted count and for the values each variable can take.
+nodes for an exact weighted count (``read``) and for the values each variable can take.
 
 ``read`` takes the nodes out of CUDD's memory, in the layout of the CUDD build that ``dd``
 0.6.0 ships (CUDD 3.0.0), which ``dd`` does not promise to keep: ``pyproject.toml`` pins that
@@ -315,36 +315,17 @@ def _bottom_up(manager: Manager, parts: Sequence[BDD]) -> list[BDD]:
 
 class Nodes(NamedTuple):
     """A BDD's nodes, children first after the constant TRUE (place 0): each one's level, low
-    and high child (places; a complemented edge as ``~place``) and value ``D`` (``read``);
-    and the root's place (complemented likewise)."""
+    and high child (places; a complemented edge as ``~place``); and the root's place
+    (complemented likewise). The level of TRUE is the manager's number of variables."""
 
     levels: list[int]
     lows: list[int]
     highs: list[int]
-    values: list[int]
     root: int
 
 
-def combine(weight: Weight, d_low: int, d_high: int) -> int:
-    """``D`` of a node at a level of ``weight`` from its children's (``read``)."""
-    off, on = weight
-    if off == on:  # most variables: a shift, not a long division
-        return (d_low + d_high) >> 1
-    if not off:
-        return d_high
-    if not on:
-        return d_low
-    return (off * d_low + on * d_high) // (off + on)
-
-
-def read(manager: Manager, u: BDD, weight_at: Mapping[int, Weight], total: int) -> Nodes:
-    """The nodes of ``u``, with the values ``D`` of a count weighted by ``weight_at`` (by
-    level; it covers ``u``'s support, and ``total`` is the product of its weights' sums).
-
-    ``D(v) = c(v) · P(r)`` for a node ``v`` at level ``r``, where ``c(v)`` is its weighted
-    count over the weighted levels from ``r`` on and ``P(r)`` the total weight of those
-    above: an edge skipping levels then needs no correction, a complemented edge is
-    ``total − D``, and the count is ``D`` of the root (``combine``).
+def read(manager: Manager, u: BDD, levels: Collection[int]) -> Nodes:
+    """The nodes of ``u``, whose support lies within ``levels``.
 
     The nodes are read in CUDD's memory (``_memory``, layout checked by ``_indices``),
     not through ``dd``'s wrappers: a wrapper per child (a Python object, a reference
@@ -354,22 +335,19 @@ def read(manager: Manager, u: BDD, weight_at: Mapping[int, Weight], total: int) 
     CUDD marks a complemented edge in the pointer's lowest bit (``then`` edges never
     are).
     """
-    weight_of = {
-        index: (level, *weight_at[level]) for index, level in _indices(manager, weight_at).items()
-    }
-    reader = _Reader(weight_of, total, int(manager.true) - 2, len(manager.vars))
+    reader = _Reader(_indices(manager, levels), int(manager.true) - 2, len(manager.vars))
     pointer = int(u) - 2
     negated = pointer & 1
     root = reader.found.get(pointer ^ negated)
     if root is None:
         limit = sys.getrecursionlimit()
-        sys.setrecursionlimit(limit + len(weight_at))
+        sys.setrecursionlimit(limit + len(levels))
         try:
             root = reader.visit(pointer ^ negated)
         finally:
             sys.setrecursionlimit(limit)
     root = ~root if negated else root
-    return Nodes(reader.levels, reader.lows, reader.highs, reader.values, root)
+    return Nodes(reader.levels, reader.lows, reader.highs, root)
 
 
 @cache
@@ -383,15 +361,15 @@ def _memory() -> memoryview:
     return memoryview(everything).cast("B").cast("Q")
 
 
-def _indices(manager: Manager, weight_at: Mapping[int, Weight]) -> dict[int, int]:
-    """CUDD's index of each weighted level's variable, read off its node ``x ? TRUE :
-    FALSE``, which also checks the layout ``read`` relies on: a CUDD node is its
-    variable's index (32 bits, then the reference count's), the next node in its
-    hash chain, then its ``then`` and ``else`` children (64-bit pointers)."""
+def _indices(manager: Manager, levels: Iterable[int]) -> dict[int, int]:
+    """CUDD's index of each level's variable, read off its node ``x ? TRUE : FALSE``, which
+    also checks the layout ``read`` relies on: a CUDD node is its variable's index (32 bits,
+    then the reference count's), the next node in its hash chain, then its ``then`` and
+    ``else`` children (64-bit pointers)."""
     words = _memory()
     true = int(manager.true) - 2
     found = {}
-    for level in weight_at:
+    for level in levels:
         node = (int(manager.var(manager.var_at_level(level))) - 2) >> 3
         if (words[node + 2], words[node + 3]) != (true, true ^ 1):
             raise RuntimeError("dd's CUDD lays its nodes out otherwise than rosvar reads them")
@@ -404,21 +382,18 @@ class _Reader:
     recursive closure keeps them in a cycle only the collector frees, the manager
     included."""
 
-    __slots__ = ("found", "highs", "levels", "lows", "total", "values", "weight_of", "words")
+    __slots__ = ("found", "highs", "level_of", "levels", "lows", "words")
 
-    def __init__(
-        self, weight_of: dict[int, tuple[int, int, int]], total: int, true: int, bottom: int
-    ) -> None:
+    def __init__(self, level_of: dict[int, int], true: int, bottom: int) -> None:
         self.words = _memory()
-        self.weight_of = weight_of  # a variable's index → its level and weight
-        self.total = total
+        self.level_of = level_of  # a variable's index → its level
         self.found = {true: 0}  # regular node's address → its place
-        self.levels, self.lows, self.highs, self.values = [bottom], [0], [0], [total]
+        self.levels, self.lows, self.highs = [bottom], [0], [0]
 
     def visit(self, node: int) -> int:
         """Place the node at address ``node`` after its children. Recursive, since a stack
         kept by hand was slower (the depth is at most the number of variables)."""
-        words, found, values = self.words, self.found, self.values
+        words, found = self.words, self.found
         at = node >> 3
         low, high = words[at + 3], words[at + 2]
         negated = low & 1
@@ -430,19 +405,8 @@ class _Reader:
         high_place = found.get(high)
         if high_place is None:
             high_place = self.visit(high)
-        level, off, on = self.weight_of[words[at] & 0xFFFFFFFF]
-        d_low = self.total - values[low_place] if negated else values[low_place]
-        d_high = values[high_place]
-        if off == on:  # as in ``combine``, inlined: a call per node costs
-            values.append((d_low + d_high) >> 1)
-        elif not off:
-            values.append(d_high)
-        elif not on:
-            values.append(d_low)
-        else:
-            values.append((off * d_low + on * d_high) // (off + on))
         found[node] = place = len(self.levels)
-        self.levels.append(level)
+        self.levels.append(self.level_of[words[at] & 0xFFFFFFFF])
         self.lows.append(~low_place if negated else low_place)
         self.highs.append(high_place)
         return place

@@ -17,6 +17,7 @@ from rosvar.logic.bdd import BDD, cofactor, evaluate, new_manager, walked_suppor
 from rosvar.logic.inputs import OTHER, UNSET, Input, Slot
 from rosvar.logic.terms import Term, term_inputs
 from rosvar.logic.terms import evaluate as evaluate_term
+from rosvar.memo import Memo
 
 if TYPE_CHECKING:
     from rosvar.logic.printer import Printer
@@ -116,7 +117,7 @@ class ConditionSpace:
         self._input_constraints: dict[Input, BDD] = {}
         self._facts_of: dict[str, list[BDD]] = {}
         self._fact_inputs: dict[str, set[Input]] = {}  # the inputs of the facts of a variable
-        self._described: dict[tuple[BDD, bool, bool, int], str] = {}
+        self._described: Memo[tuple[BDD, bool, bool, int], str] = Memo()
         self._printer: Printer | None = None
         # Choice.const's constants of this space, by text: choices are immutable, and the
         # same literal is met again in every file that includes the one it is written in.

@@ -8,6 +8,7 @@ hide and the inputs' domains: :class:`Printer` computes those once per set of va
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import NamedTuple, cast
@@ -15,6 +16,7 @@ from typing import NamedTuple, cast
 from rosvar.logic.bdd import BDD, cofactors, layout, restrict
 from rosvar.logic.conditions import PREDICATES, ConditionSpace, FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.inputs import OTHER, ArgInput, EnvInput, Input, Slot
+from rosvar.memo import Memo
 
 BOOLEAN_WORDS = ("true", "false")
 MAX_FULL = 200  # longer formulas over <other> values help nobody
@@ -56,10 +58,12 @@ class Printer:
     """The readable form of the conditions of one space (``ConditionSpace.describe``)."""
 
     def __init__(self, space: ConditionSpace) -> None:
-        self.space = space
+        # the space owns its printer: a strong reference back would make a cycle, and the
+        # cycle collector may free CUDD's manager before the diagrams in it
+        self.space = weakref.proxy(space)
         self._contexts: dict[frozenset[object], _Context] = {}
         self._facts = space.facts()
-        self._by_shape: dict[Shape, str] = {}
+        self._by_shape: Memo[Shape, str] = Memo()
         self._variables: dict[str, tuple[int, int, Sequence[BDD]]] = {}  # see _variable
         self._block_numbers: dict[object, int] = {}
         self._block_objects: list[object] = []

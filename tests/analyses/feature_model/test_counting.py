@@ -188,3 +188,37 @@ def test_a_prepared_diagram_recounts_with_what_it_built(monkeypatch: pytest.Monk
     chosen = {**weights, names[-1]: (0, 1)}
     assert diagram.count(chosen) == enumerated(manager, formula, chosen)
     assert vars(diagram)["_residues"] is built
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_values_below_a_quick_recount_are_let_go_and_counted_anew(
+    seed: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Only the first values a quick recount reads are kept; a recount in Python that
+    reaches below them (numpy kept away) counts the whole diagram again, exactly."""
+    rng = random.Random(seed)
+    manager = dd.cudd.BDD()
+    names = [f"x{i}" for i in range(10)]
+    manager.declare(*names)
+    formula = manager.false  # a disjunction of cubes: a diagram of some size
+    for _ in range(6):
+        cube = manager.true
+        for name in rng.sample(names, 3):
+            cube &= manager.var(name) if rng.random() < 0.5 else ~manager.var(name)
+        formula |= cube
+    first = {name: (rng.randint(1, 3), rng.randint(1, 4)) for name in names}
+    monkeypatch.setattr(counting, "VECTOR_FROM", 4)
+    diagram = CountedDiagram(manager, formula, first)
+    assert diagram.first == enumerated(manager, formula, first)
+    assert len(diagram._values) < len(diagram)
+    monkeypatch.setattr(counting, "VECTOR_FROM", 10**9)
+    for name in names:
+        weights = {**first, name: (rng.randint(0, 3), rng.randint(0, 4))}
+        assert diagram.count(weights) == enumerated(manager, formula, weights)
+
+
+def test_combine_weighs_the_children() -> None:
+    assert counting.combine((1, 1), 4, 6) == 5
+    assert counting.combine((0, 3), 4, 6) == 6
+    assert counting.combine((2, 0), 4, 6) == 4
+    assert counting.combine((1, 3), 4, 8) == 7

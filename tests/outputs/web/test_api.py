@@ -225,3 +225,59 @@ def test_a_ros2_workspace_is_served_with_its_ros2_launch_command(tmp_path: Path)
         )
         done = live.post("/api/choose", {**body, "feature": value})
     assert done["command"] == "ros2 launch pkg main.launch.xml robot:=b"
+
+
+def test_memory_stays_bounded_over_many_distinct_clicks(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Issue 16: every click types a text never seen before, sessions come and go; the
+    engine's memos and per-step caches stay within their bounds, no BDD node is kept for
+    evicted entries, and the traced heap stops growing once the bounds are reached."""
+    import gc
+    import tracemalloc
+
+    from outputs.web.live import REPO, configurator
+    from rosvar import memo
+    from rosvar.configuration import engine as engine_module
+
+    monkeypatch.setattr(memo, "CAPACITY", 40)
+    monkeypatch.setattr(engine_module, "CACHED_FEATURES", 1)  # MIN_CACHED_STEPS steps
+    engine = configurator([REPO / "examples"])
+    api = Api(engine, capacity=2)
+    args = list(engine.catalog.args)
+    managers = (engine.derivation.manager, engine.analysis.space.bdd)
+
+    def click(number: int) -> None:
+        nonlocal session
+        if number % 20 == 0:
+            session = api.handle("POST", "/api/session", {}, {})["session"]
+        feature = args[number % len(args)]
+        body = {"session": session, "action": "set", "feature": feature, "value": f"v{number}"}
+        api.handle("POST", "/api/choose", {}, body)
+
+    session = ""
+    for number in range(300):  # past every bound
+        click(number)
+    tracemalloc.start()
+    try:  # the first round replaces what was allocated before tracing (untraced when freed)
+        for number in range(300, 600):
+            click(number)
+        gc.collect()
+        before = tracemalloc.get_traced_memory()[0]
+        nodes = [len(manager) for manager in managers]  # memos lowered lazily are warm by now
+        for number in range(600, 900):
+            click(number)
+        gc.collect()
+        grown = tracemalloc.get_traced_memory()[0] - before
+    finally:
+        tracemalloc.stop()
+    steps = engine_module.MIN_CACHED_STEPS
+    assert api.sessions == 2
+    ours = [found for found in memo.memos() if found.capacity == 40]  # other engines' too
+    assert all(len(found) <= 40 for found in ours)
+    assert sum(len(found) == 40 for found in ours) >= 3  # the bound was reached
+    for cache in (engine._steps, engine._replays, engine.views._views):
+        assert len(cache._items) <= steps
+    assert all(len(manager) <= count for manager, count in zip(managers, nodes, strict=True)), (
+        [len(manager) for manager in managers],
+        nodes,
+    )
+    assert grown < 1_000_000  # unbounded, the memos alone held 4 MB more per 300 clicks

@@ -20,13 +20,14 @@ to exceed a bound of the count, so the residues determine it.
 from __future__ import annotations
 
 import os
-from collections.abc import Mapping, Sequence
+from array import array
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cache, cached_property
 from typing import TYPE_CHECKING, TypeAlias
 
 from rosvar.interpreter.workspace_models import collector_paused
-from rosvar.logic.bdd import BDD, Manager, Weight, combine, read, taken
+from rosvar.logic.bdd import BDD, Manager, Weight, read, taken
 
 if TYPE_CHECKING:
     import numpy as np
@@ -47,12 +48,15 @@ class CountedDiagram:
     + w₁·D(high)) / (w₀ + w₁)``), a complemented edge is ``T − D`` (``T``: the total
     weight of all variables), and the count is ``D(root)``.
 
-    The first count reads the nodes in CUDD's memory (``bdd.read``) and keeps them as
-    plain lists with their values ``D``.
+    The nodes are read out of CUDD's memory (``bdd.read``) once, as plain lists.
     ``D(u) / T`` depends only on the weights of ``u``'s level and those below, so a
     later count whose weights differ on some levels recomputes only the nodes down to
     the deepest of them and rescales the first count's values of the nodes below: the
-    configuration engine counts this way after every click.
+    configuration engine counts this way after every click. Only a recount of fewer than
+    ``VECTOR_FROM`` nodes is done so, the others run in numpy (``_Residues``); so only the
+    first values of the nodes such a recount visits, and of their children, are kept: the
+    others, most of a large diagram's and each as long as the total weight, are let go as
+    soon as their parents have been counted.
     """
 
     def __init__(self, manager: Manager, formula: BDD, weights: Mapping[str, Weight]) -> None:
@@ -64,18 +68,30 @@ class CountedDiagram:
         if self._total == 0:
             raise ValueError("the first weights of a diagram must not be zero")
         with collector_paused():  # its lists are young: the collector would rescan them
-            self._levels, self._lows, self._highs, self._values, self._root = read(
-                manager, formula, self._weights, self._total
+            self._levels, self._lows, self._highs, self._root = read(
+                manager, formula, self._weights
             )
+            above = self._above
+            self._kept_down_to = max(
+                (level for level in above if above[level] < VECTOR_FROM), default=-1
+            )
+            self._top = [
+                place
+                for place in range(1, len(self._levels))
+                if self._levels[place] <= self._kept_down_to
+            ]  # children before parents, as all places
+            kept = {self._root if self._root >= 0 else ~self._root, *self._top}
+            for place in self._top:
+                low = self._lows[place]
+                kept.update((~low if low < 0 else low, self._highs[place]))
+            self._values = _evaluated(
+                self._levels, self._lows, self._highs, self._weights, self._total, kept
+            )
+        self.first = self._value(self._values, self._total)  # under the weights read with
 
     def __len__(self) -> int:
         """Nodes, the constant included."""
         return len(self._levels)
-
-    @property
-    def first(self) -> int:
-        """The count under the weights the diagram was read with."""
-        return self._value(self._values, self._total)
 
     def count(self, weights: Mapping[str, Weight]) -> int:
         """Σ over the assignments of the variables satisfying the formula of their weight
@@ -87,10 +103,6 @@ class CountedDiagram:
         changed = [level for level, weight in weight_at.items() if self._weights[level] != weight]
         if not changed:
             return self.first
-        times = over = 1  # T / T of the first count: the weights differ on ``changed`` only
-        for level in changed:
-            times *= sum(weight_at[level])
-            over *= sum(self._weights[level])
         deepest = max(changed)
         if self._above[deepest] >= VECTOR_FROM:
             dominated = all(
@@ -100,10 +112,18 @@ class CountedDiagram:
             found = self._residues.count(weight_at, total, self.first if dominated else total)
             if found is not None:
                 return found
+        if deepest > self._kept_down_to:  # the values below were let go: count them anew
+            root = self._root if self._root >= 0 else ~self._root
+            values = _evaluated(self._levels, self._lows, self._highs, weight_at, total, {root})
+            return self._value(values, total)
+        times = over = 1  # T / T of the first count: the weights differ on ``changed`` only
+        for level in changed:
+            times *= sum(weight_at[level])
+            over *= sum(self._weights[level])
         old = self._values
-        values = list(old)
+        values = {}
         levels, lows, highs = self._levels, self._lows, self._highs
-        for place in range(1, len(levels)):
+        for place in self._top:
             level = levels[place]
             if level > deepest:
                 continue
@@ -150,11 +170,68 @@ class CountedDiagram:
         formula (``bdd.taken``)."""
         return taken(self._levels, self._lows, self._highs, self._root, self._level_of)
 
-    def _value(self, values: list[int], total: int, times: int = 1, over: int = 1) -> int:
+    def _value(self, values: Mapping[int, int], total: int, times: int = 1, over: int = 1) -> int:
         root = self._root
         if root < 0:
             return total - values[~root] * times // over
         return values[root] * times // over
+
+
+def combine(weight: Weight, d_low: int, d_high: int) -> int:
+    """``D`` of a node at a level of ``weight`` from its children's."""
+    off, on = weight
+    if off == on:  # most variables: a shift, not a long division
+        return (d_low + d_high) >> 1
+    if not off:
+        return d_high
+    if not on:
+        return d_low
+    return (off * d_low + on * d_high) // (off + on)
+
+
+def _evaluated(
+    levels: list[int],
+    lows: list[int],
+    highs: list[int],
+    weight_at: Mapping[int, Weight],
+    total: int,
+    kept: Collection[int],
+) -> dict[int, int]:
+    """The values ``D`` under ``weight_at`` (``total``: their total weight) of the places
+    ``kept``. Each other value is dropped once its last parent has been counted: live at
+    once are only those of the nodes whose parents are partly counted."""
+    size = len(levels)
+    last = array("q", bytes(8 * size))  # a place → its last parent's place
+    for place in range(1, size):
+        low = lows[place]
+        last[~low if low < 0 else low] = place
+        last[highs[place]] = place
+    for place in kept:
+        last[place] = size  # never dropped
+    values = [0] * size  # a dropped value is 0 again
+    values[0] = total
+    for place in range(1, size):
+        low, high = lows[place], highs[place]
+        negated = low < 0
+        if negated:
+            low = ~low
+        d_low, d_high = values[low], values[high]
+        off, on = weight_at[levels[place]]
+        if negated:
+            d_low = total - d_low
+        if off == on:  # as in ``combine``, inlined: a call per node costs
+            values[place] = (d_low + d_high) >> 1
+        elif not off:
+            values[place] = d_high
+        elif not on:
+            values[place] = d_low
+        else:
+            values[place] = (off * d_low + on * d_high) // (off + on)
+        if last[low] == place:
+            values[low] = 0
+        if last[high] == place:
+            values[high] = 0
+    return {place: values[place] for place in kept}
 
 
 def _by_level(level_of: Mapping[str, int], weights: Mapping[str, Weight]) -> dict[int, Weight]:
@@ -292,15 +369,16 @@ class _Residues:
                 inverse[off + on] = [pow(off + on, -1, m) for m in taken]
         p = np.asarray(taken, dtype=np.int64)
         everything = np.asarray([total % m for m in taken], dtype=np.int64)
-        values = np.empty((self.size, len(taken)), dtype=np.int64)
+        # residues below 2^31 are kept in half the memory, widened level by level to compute
+        values = np.empty((self.size, len(taken)), dtype=np.int32)
         values[0] = everything
         for level in self.levels:
             off, on = weight_at[level.level]
-            d_low = values[level.lows]
+            d_low = values[level.lows].astype(np.int64)
             if level.negated is not None:
                 flipped = everything - d_low
                 d_low = np.where(level.negated[:, None], flipped + (flipped < 0) * p, d_low)
-            d_high = values[level.highs]
+            d_high = values[level.highs].astype(np.int64)
             if off == on:  # (d_low + d_high) / 2 modulo odd primes: add p to make it even
                 both = d_low + d_high
                 both = (both + (both & 1) * p) >> 1
@@ -314,7 +392,7 @@ class _Residues:
                 mixed = (weights[:, 0] * d_low % p + weights[:, 1] * d_high % p) % p
                 values[level.places] = mixed * np.asarray(inverse[off + on], dtype=np.int64) % p
         root = self.root
-        residues = values[~root if root < 0 else root]
+        residues = values[~root if root < 0 else root].astype(np.int64)
         if root < 0:
             residues = (everything - residues) % p
         return _restored(residues.tolist(), taken, product)

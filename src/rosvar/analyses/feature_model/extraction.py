@@ -240,8 +240,9 @@ def extract(
     )
     try:
         _check_links(buckets, len(features))
+        cross_tree = feature_model.cross_tree
         feature_model.solution = build(
-            space, features, requires, buckets, lambda: feature_model.constraints
+            space, features, requires, buckets, lambda: cross_tree.constraints
         )
     except ModelTooLarge as too_large:
         # kept without its traceback, whose frames hold the half-built BDDs

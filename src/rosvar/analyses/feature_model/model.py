@@ -98,6 +98,34 @@ class ModelTooLarge(Exception):
     """The solver's BDDs would outgrow their budget: the model is listed, not solved."""
 
 
+class CrossTree:
+    """The cross-tree constraints, the pairwise ones built on first use.
+
+    Apart from :class:`FeatureModel` because the solver translates them when asked: a
+    reference from the solver back to the model holding it would make a cycle, and the
+    cycle collector may free CUDD's manager before the diagrams of the cycle."""
+
+    def __init__(
+        self,
+        space: ConditionSpace,
+        files: Sequence[FileFeature],
+        requires: list[Constraint],
+        declarations: Mapping[tuple[str, str], list[Occurrence]],
+    ) -> None:
+        self.space = space
+        self.files = files
+        self.requires = requires
+        self.declarations = declarations
+
+    @cached_property
+    def clashes(self) -> list[Clash]:
+        return clashes(self.declarations)
+
+    @cached_property
+    def constraints(self) -> list[Constraint]:
+        return self.requires + _excludes(self.space, self.files, self.clashes)
+
+
 @dataclass
 class FeatureModel:
     """The feature tree and its cross-tree constraints, with the solver that answers on them.
@@ -116,6 +144,7 @@ class FeatureModel:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     products: bool = False  # built for the configuration engine (``extract``'s ``products``)
     solution: Solver | ModelTooLarge = field(init=False)
+    cross_tree: CrossTree = field(init=False)
 
     @property
     def solved(self) -> bool:
@@ -128,9 +157,12 @@ class FeatureModel:
             raise ModelTooLarge(*self.solution.args)
         return self.solution
 
-    @cached_property
+    def __post_init__(self) -> None:
+        self.cross_tree = CrossTree(self.space, self.files, self.requires, self.declarations)
+
+    @property
     def clashes(self) -> list[Clash]:
-        return clashes(self.declarations)
+        return self.cross_tree.clashes
 
     @cached_property
     def internal(self) -> list[Clash]:
@@ -142,9 +174,9 @@ class FeatureModel:
         ]
         return found + [c for model in self.launch_models for c in repeated_inclusions(model)]
 
-    @cached_property
+    @property
     def constraints(self) -> list[Constraint]:
-        return self.requires + _excludes(self.space, self.files, self.clashes)
+        return self.cross_tree.constraints
 
     def feature_ids(self) -> list[str]:
         ids: list[str] = []

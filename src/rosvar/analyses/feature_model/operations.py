@@ -169,29 +169,7 @@ def simplest_trigger(space: ConditionSpace, condition: BDD) -> dict[str, str]:
         target &= space.input_constraint(input_)
     if target == space.false:
         return {}
-    memo: dict[BDD, tuple[float, dict[str, bool]]] = {}
-
-    def cheapest(u: BDD) -> tuple[float, dict[str, bool]]:
-        if u == space.true:
-            return 0.0, {}
-        if u == space.false:
-            return float("inf"), {}
-        if u in memo:
-            return memo[u]
-        var = u.var
-        low, high = cofactors(u)
-        low_cost, low_path = cheapest(low)
-        high_cost, high_path = cheapest(high)
-        high_cost += _cost(space, var)
-        best = (
-            (low_cost, {var: False, **low_path})
-            if low_cost <= high_cost
-            else (high_cost, {var: True, **high_path})
-        )
-        memo[u] = best
-        return best
-
-    _cost_total, path = cheapest(target)
+    _cost_total, path = _cheapest(space, target, {})
     chosen: dict[str, str] = {}
     for name, value in path.items():
         atom = space.atom_of(name)
@@ -206,6 +184,32 @@ def simplest_trigger(space: ConditionSpace, condition: BDD) -> dict[str, str]:
         elif value and isinstance(atom, FileAtom):
             chosen[atom.label] = "selected"
     return chosen
+
+
+Path = tuple[float, dict[str, bool]]
+
+
+def _cheapest(space: ConditionSpace, u: BDD, memo: dict[BDD, Path]) -> Path:
+    """The cheapest path to TRUE below ``u`` and its cost (a function of the module, not a
+    closure: a recursive closure is a reference cycle, which kept the memo's diagrams)."""
+    if u == space.true:
+        return 0.0, {}
+    if u == space.false:
+        return float("inf"), {}
+    if u in memo:
+        return memo[u]
+    var = u.var
+    low, high = cofactors(u)
+    low_cost, low_path = _cheapest(space, low, memo)
+    high_cost, high_path = _cheapest(space, high, memo)
+    high_cost += _cost(space, var)
+    best = (
+        (low_cost, {var: False, **low_path})
+        if low_cost <= high_cost
+        else (high_cost, {var: True, **high_path})
+    )
+    memo[u] = best
+    return best
 
 
 def _short(file: str) -> str:

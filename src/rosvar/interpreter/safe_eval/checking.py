@@ -10,6 +10,7 @@ import warnings
 from typing import Final, NoReturn, cast
 
 from rosvar.interpreter.safe_eval.errors import EvalRefused
+from rosvar.interpreter.safe_eval.limits import MAX_NESTING, nesting
 from rosvar.interpreter.safe_eval.names import (
     _BIN_OPS,
     _BOOL_NAMES,
@@ -72,6 +73,10 @@ def _parse(expr: str) -> tuple[ast.Expression, _Source]:
         raise EvalRefused(_DUNDER_MESSAGE, dunder)
     text = expr.lstrip(" \t")
     source = _Source(text, len(expr) - len(text))
+    if nesting(text) > MAX_NESTING:
+        raise EvalRefused(
+            f"expression is nested more than {MAX_NESTING} levels deep", source.prefix
+        )
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # invalid escapes etc. are not our diagnostics

@@ -4,9 +4,11 @@ expressions built to exhaust memory or time, and the size estimates that check t
 from __future__ import annotations
 
 import ast
+import io
 import itertools
 import re
 import string
+import tokenize
 from collections.abc import Iterable, Mapping, Sequence
 from typing import Final, cast
 
@@ -28,6 +30,42 @@ MAX_ITERATIONS: Final = 100_000
 MAX_COMBINATORIC_ARGUMENT: Final = 10_000
 #: ``round(int, ndigits)`` computes ``10 ** -ndigits``; refused above this magnitude.
 MAX_ROUND_DIGITS: Final = 10_000
+#: Levels of nesting (brackets, and operators that nest in one another) of an expression,
+#: well below Python's recursion limit: parsing, checking and interpreting all recurse on it,
+#: and an evaluation may already run deep in nested includes.
+MAX_NESTING: Final = 100
+
+_FLAT: Final = frozenset({",", ":"})  # separate siblings: nothing after them nests in before
+_OPENING: Final = frozenset({"(", "[", "{"})
+_CLOSING: Final = frozenset({")", "]", "}"})
+_WORD_OPERATORS: Final = frozenset({"not", "and", "or", "if", "else", "in", "is", "for", "lambda"})
+
+
+def nesting(text: str) -> int:
+    """An upper bound of how deep the expression's syntax tree is, from its tokens (never
+    recursing): brackets, plus at each bracket level the operators since its last comma,
+    each of which may nest the rest of the level one level deeper. 0 when the text does not
+    tokenize (the parser then says why)."""
+    levels = [0]  # per open bracket: the operators seen since its last separator
+    operators = depth = 0  # operators: the sum of ``levels``
+    try:
+        for token in tokenize.generate_tokens(io.StringIO(text).readline):
+            if token.type == tokenize.OP and token.string in _OPENING:
+                levels.append(0)
+            elif token.type == tokenize.OP and token.string in _CLOSING:
+                operators -= levels.pop() if len(levels) > 1 else 0
+            elif token.type == tokenize.OP and token.string in _FLAT:
+                operators -= levels[-1]
+                levels[-1] = 0
+            elif token.type == tokenize.OP or (
+                token.type == tokenize.NAME and token.string in _WORD_OPERATORS
+            ):
+                levels[-1] += 1
+                operators += 1
+            depth = max(depth, len(levels) - 1 + operators)
+    except (tokenize.TokenError, SyntaxError):
+        return 0
+    return depth
 
 
 class FunctionValue:

@@ -11,9 +11,12 @@ server answers each connection in its own thread.
 
 from __future__ import annotations
 
+import functools
 import threading
 from collections.abc import Callable, Mapping
+from functools import cached_property
 from http import HTTPStatus
+from typing import TypeVar
 
 from rosvar.analyses.feature_model.model import FeatureKind
 from rosvar.analyses.query.parser import QueryError
@@ -21,10 +24,14 @@ from rosvar.configuration.choices import Action, ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.session import Session
 from rosvar.outputs.web.inspection import Inspector
+from rosvar.outputs.web.overview import Grouping, MemberKind, catalog, compact, members
 from rosvar.outputs.web.sessions import DEFAULT_CAPACITY, SessionStore, Tab
 
 MAX_TEXT = 4096
 """Longest accepted string field (feature ids and typed values are far shorter)."""
+
+MAX_PAGE = 100_000
+StrEnumT = TypeVar("StrEnumT", Grouping, MemberKind)
 
 Body = Mapping[str, object]
 Query = Mapping[str, str]
@@ -59,6 +66,22 @@ def _version(fields: Mapping[str, object]) -> int | None:
     raise ApiError(HTTPStatus.BAD_REQUEST, "field 'version' must be an integer")
 
 
+def _choice_of(fields: Mapping[str, object], name: str, kinds: type[StrEnumT]) -> StrEnumT:
+    text = _text(fields, name)
+    try:
+        return kinds(text)
+    except ValueError:
+        known = ", ".join(kinds)
+        raise ApiError(HTTPStatus.BAD_REQUEST, f"field {name!r} must be one of {known}") from None
+
+
+def _page(fields: Mapping[str, object]) -> int:
+    value = fields.get("page", 0)
+    if isinstance(value, int) and not isinstance(value, bool) and 0 <= value <= MAX_PAGE:
+        return value
+    raise ApiError(HTTPStatus.BAD_REQUEST, f"field 'page' must be an integer in 0..{MAX_PAGE}")
+
+
 def _only(fields: Mapping[str, object], allowed: set[str]) -> None:
     unknown = sorted(set(fields) - allowed)
     if unknown:
@@ -90,30 +113,16 @@ class Api:
         configurator.derivation.prepare_counts()
         self._kinds = {key: feature.kind for key, feature in features.items()}
         self._defaults = defaults(configurator)
-        steps: dict[str, Callable[[Session], ConfigurationState]] = {
-            "undo": Session.undo,
-            "redo": Session.redo,
-            "reset": Session.reset,
-        }
-        self.routes: dict[tuple[str, str], Callable[[Query, Body], Reply]] = {
-            ("POST", "/api/session"): self._open,
-            ("GET", "/api/state"): self._state,
-            ("POST", "/api/choose"): self._choose,
-            ("POST", "/api/finish"): self._finish,
-            **{("POST", f"/api/{name}"): self._stepper(step) for name, step in steps.items()},
-            ("POST", "/api/query"): self._query,
-            ("POST", "/api/checks"): self._checks,
-        }
         self._inspector = Inspector(configurator)
 
     def handle(self, method: str, path: str, query: Query, body: Body) -> Reply:
-        route = self.routes.get((method, path))
+        route = ROUTES.get((method, path))
         if route is None:
-            if any(known == path for _, known in self.routes):
+            if any(known == path for _, known in ROUTES):
                 raise ApiError(HTTPStatus.METHOD_NOT_ALLOWED, f"{method} not allowed on {path}")
             raise ApiError(HTTPStatus.NOT_FOUND, f"no such API: {path}")
         with self._lock:
-            return route(query, body)
+            return route(self, query, body)
 
     @property
     def sessions(self) -> int:
@@ -121,10 +130,43 @@ class Api:
 
     # -- routes ------------------------------------------------------------------------------
     def _open(self, query: Query, body: Body) -> Reply:
+        """A new session; ``{"overview": GROUPING}`` asks for states in overview mode."""
         _only(query, set())
-        _only(body, set())
+        _only(body, {"overview"})
+        grouping = None if body.get("overview") is None else _choice_of(body, "overview", Grouping)
         key, tab = self._store.create()
+        tab.grouping = grouping
         return self._reply(key, tab, tab.session.current(), None)
+
+    def _catalog(self, query: Query, body: Body) -> Reply:
+        """The feature tree's fixed part, for sessions in overview mode."""
+        _only(query, set())
+        return {"features": self._rows}
+
+    @cached_property
+    def _rows(self) -> list[list[object]]:
+        return catalog(self._configurator)
+
+    def _grouping(self, query: Query, body: Body) -> Reply:
+        """The state grouped another way (the session goes to overview mode)."""
+        _only(query, set())
+        _only(body, {"session", "version", "grouping"})
+        key, tab = self._session(body)
+        known = _version(body)
+        tab.grouping = _choice_of(body, "grouping", Grouping)
+        return self._reply(key, tab, tab.session.current(), known)
+
+    def _group(self, query: Query, body: Body) -> Reply:
+        """A page of one group's members in the session's current state."""
+        _only(query, set())
+        _only(body, {"session", "group", "kind", "page"})
+        _key, tab = self._session(body)
+        if tab.grouping is None:
+            raise ApiError(HTTPStatus.BAD_REQUEST, "the session is not in overview mode")
+        group = _text(body, "group")
+        kind = MemberKind.NODES if "kind" not in body else _choice_of(body, "kind", MemberKind)
+        document = tab.session.current().to_json()
+        return members(document, tab.grouping, group, kind, _page(body))
 
     def _state(self, query: Query, body: Body) -> Reply:
         _only(query, {"session"})
@@ -154,17 +196,14 @@ class Api:
             state = tab.session.apply(choice)
         return self._reply(key, tab, state, known)
 
-    def _stepper(
-        self, step: Callable[[Session], ConfigurationState]
-    ) -> Callable[[Query, Body], Reply]:
-        def route(query: Query, body: Body) -> Reply:
-            _only(query, set())
-            _only(body, {"session", "version"})
-            key, tab = self._session(body)
-            known = _version(body)
-            return self._reply(key, tab, step(tab.session), known)
-
-        return route
+    def _step(
+        self, query: Query, body: Body, step: Callable[[Session], ConfigurationState]
+    ) -> Reply:
+        _only(query, set())
+        _only(body, {"session", "version"})
+        key, tab = self._session(body)
+        known = _version(body)
+        return self._reply(key, tab, step(tab.session), known)
 
     def _query(self, query: Query, body: Body) -> Reply:
         """The elements a query selects under the tab's choices (docs/web.md)."""
@@ -216,4 +255,27 @@ class Api:
             "can_undo": tab.session.can_undo,
             "can_redo": tab.session.can_redo,
         }
+        if tab.grouping is not None:  # the catalog has the defaults
+            del document["defaults"]
+            document = compact(document, tab.grouping)
         return {"session": key, **tab.answer(document, known)}
+
+
+Route = Callable[[Api, Query, Body], Reply]
+ROUTES: dict[tuple[str, str], Route] = {
+    ("POST", "/api/session"): Api._open,
+    ("GET", "/api/state"): Api._state,
+    ("POST", "/api/choose"): Api._choose,
+    ("POST", "/api/finish"): Api._finish,
+    ("GET", "/api/catalog"): Api._catalog,
+    ("POST", "/api/grouping"): Api._grouping,
+    ("POST", "/api/group"): Api._group,
+    ("POST", "/api/undo"): functools.partial(Api._step, step=Session.undo),
+    ("POST", "/api/redo"): functools.partial(Api._step, step=Session.redo),
+    ("POST", "/api/reset"): functools.partial(Api._step, step=Session.reset),
+    ("POST", "/api/query"): Api._query,
+    ("POST", "/api/checks"): Api._checks,
+}
+"""The route table: functions of the API, not its bound methods, which would make every
+:class:`Api` a reference cycle (freed by the cycle collector, CUDD's manager before the
+engine's diagrams)."""

@@ -8,7 +8,8 @@ rest by equality; nothing is serialised to compare it.
 
 A delta is a document of the same shape, read field by field:
 
-* ``features``: only the features whose entry changed (the set of ids never changes);
+* ``features``: only the features whose entry changed (the set of ids never changes); in
+  overview mode a string (one character per feature), sent whole when it changed;
 * ``graph``: per list that changed, ``{"removed": [ids], "added": [[index, entry], ...],
   "changed": [[index, fields], ...]}``: entries gone; entries new, inserted at their place
   in the new list in order (entries keep their relative order from one state to the next,
@@ -41,7 +42,7 @@ def diff(before: Document, after: Document) -> Document:
     """The fields of ``after`` that differ from ``before`` (see the module's description)."""
     delta: Document = {}
     for key, value in after.items():
-        if key == KEYED:
+        if key == KEYED and isinstance(value, Mapping):
             old = before[key]
             delta[key] = {k: v for k, v in value.items() if not _same(old.get(k), v)}
         elif key == LISTS:
@@ -66,7 +67,7 @@ def patch(document: Document, delta: Document) -> Document:
         raise ValueError(f"delta against version {delta[BASE]}, not {document.get('version')}")
     result = dict(document)
     for key, value in delta.items():
-        if key == KEYED:
+        if key == KEYED and isinstance(value, Mapping):
             result[key] = {**document[key], **value}
         elif key == LISTS:
             result[key] = dict(document[key])

@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from rosvar.configuration.engine import Configurator
 from rosvar.configuration.session import Session
 from rosvar.outputs.web.delta import BASE, Document, diff
+from rosvar.outputs.web.overview import Grouping
 
 DEFAULT_CAPACITY = 64
 KEPT_DOCUMENTS = 2
@@ -26,9 +27,11 @@ KEPT_DOCUMENTS = 2
 
 @dataclass
 class Tab:
-    """A tab's session and the documents last sent for it, by version."""
+    """A tab's session and the documents last sent for it, by version; ``grouping``: its
+    states go in overview mode, grouped so (:mod:`rosvar.outputs.web.overview`)."""
 
     session: Session
+    grouping: Grouping | None = None
     version: int = 0
     sent: OrderedDict[int, Document] = field(default_factory=OrderedDict)
 

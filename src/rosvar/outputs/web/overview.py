@@ -1,0 +1,291 @@
+"""The graph as the page draws it, grouped on the server: summaries first, members on demand.
+
+A large workspace's whole graph is tens of MB of JSON (Husky with its dependencies' launch
+files as features: 25,000 entries, 18 MB), far more than a page should load to draw a few
+dozen boxes. So a session in *overview* mode is sent, instead of the graph's entries, one
+summary per group of the chosen grouping (package then launch file, launch file, or
+namespace: the page's own groups) with its counts, and a group's members are fetched when
+the user opens it, a page at a time. The feature tree goes compactly too: its fixed part
+(ids, kinds, parents) once, from :func:`catalog`, and each state's selections as one
+character per feature.
+
+Everything here reads the state document (``ConfigurationState.to_json``), so what is
+summarised is exactly what the whole document would carry.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from enum import StrEnum
+from functools import lru_cache
+from typing import Any
+
+from rosvar.configuration.engine import Configurator, Selection
+
+Entry = Mapping[str, Any]
+SEPARATOR = "\u0001"  # between the labels of a group's key (never in a path or a ROS name)
+PAGE = {"nodes": 24, "params": 50, "topics": 50}
+"""Members sent per page: for nodes, names (all the variants of a name come together)."""
+LABELS_KEPT = 65_536  # names and files whose groups are remembered (every state files them all)
+ABSENT = "absent"
+PRESENT = "present"
+
+
+class Grouping(StrEnum):
+    """How the graph's elements are grouped: the page's *group by*."""
+
+    PACKAGE = "package"
+    FILE = "file"
+    NAMESPACE = "namespace"
+
+
+class MemberKind(StrEnum):
+    """The members of a group that can be fetched."""
+
+    NODES = "nodes"
+    PARAMS = "params"
+    TOPICS = "topics"
+
+
+# -- names (the page's names.js) ---------------------------------------------------------------
+def entry_file(element_id: str) -> str:
+    """The launch file whose model holds a graph entry: its id starts with it (``FILE|...``)."""
+    cut = element_id.find("|")
+    return element_id[:cut] if cut > 0 else ""
+
+
+def package_of(path: str) -> str:
+    """The ROS package of a launch file: the directory above ``launch/``, else the parent."""
+    parts = path.split("/")
+    launch = _last(parts, "launch")
+    if launch > 0:
+        return parts[launch - 1]
+    return parts[-2] if len(parts) > 1 else "."
+
+
+def short_path(path: str) -> str:
+    """``pkg/sub/file.launch``, as people name a launch file."""
+    parts = path.split("/")
+    launch = _last(parts, "launch")
+    if launch > 0:
+        return "/".join([parts[launch - 1], *parts[launch + 1 :]])
+    return "/".join(parts[-2:])
+
+
+def namespace_path(name: str) -> list[str]:
+    """``/a/b/c`` → ``["/a/", "/a/b/"]``; a name in the root namespace → ``["/"]``."""
+    cut = name.rfind("/")
+    if cut <= 0:
+        return ["/"]
+    namespace = name[: cut + 1]
+    return [namespace[: at + 1] for at, char in enumerate(namespace) if char == "/" and at > 0]
+
+
+def _last(parts: Sequence[str], item: str) -> int:
+    return max((index for index, part in enumerate(parts) if part == item), default=-1)
+
+
+def labels(grouping: Grouping, entry: Entry) -> tuple[str, ...]:
+    """The labels of the groups an entry is filed under, outermost first."""
+    if grouping == Grouping.NAMESPACE:
+        return _namespaces(str(entry.get("name", "")))
+    return _files(grouping, entry_file(str(entry["id"])))
+
+
+@lru_cache(maxsize=LABELS_KEPT)
+def _namespaces(name: str) -> tuple[str, ...]:
+    return tuple(namespace_path(name))
+
+
+@lru_cache(maxsize=LABELS_KEPT)
+def _files(grouping: Grouping, file: str) -> tuple[str, ...]:
+    if grouping == Grouping.FILE:
+        return (short_path(file),)
+    return (package_of(file), short_path(file))
+
+
+def key_of(path: Iterable[str]) -> str:
+    """A group's id: its labels, each after a separator (the root group's is ``""``)."""
+    return "".join(SEPARATOR + label for label in path)
+
+
+def clash_name(kind: str, name: object) -> str:
+    """How a conflict names an element: test nodes clash as nodes."""
+    return f"{'node' if kind == 'test' else kind} {name}"
+
+
+# -- summaries ---------------------------------------------------------------------------------
+@dataclass
+class _Group:
+    label: str
+    parent: str
+    counts: dict[str, list[int]] = field(
+        default_factory=lambda: {kind: [0, 0] for kind in MemberKind}
+    )
+    conflict: bool = False
+    selected: int = 0  # nodes of selected files under it: the page opens such a group
+    names: set[str] = field(default_factory=set)  # its own nodes' names, for the search
+
+
+def summaries(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str, object]]:
+    """One summary per group (every level, parents first): label, parent, the present and
+    possible (not absent) nodes, params and topics under it, whether one of its nodes is in
+    a conflict, how many of its nodes the selected files launch, and its own nodes' names.
+    ``document`` is whole (its features by id)."""
+    graph = document["graph"]
+    clashing = {name for conflict in document["conflicts"] for name in conflict["names"]}
+    features = document["features"]
+    selected = {key for key, f in features.items() if f["state"] == Selection.SELECTED}
+    groups: dict[str, _Group] = {}
+
+    def chain(entry: Entry) -> list[_Group]:
+        found, key = [], ""
+        for label in labels(grouping, entry):
+            parent, key = key, key + SEPARATOR + label
+            if key not in groups:
+                groups[key] = _Group(label, parent)
+            found.append(groups[key])
+        return found
+
+    def count(kind: MemberKind, entry: Entry, under: Iterable[_Group]) -> None:
+        for group in under:
+            counts = group.counts[kind]
+            counts[0] += entry["presence"] == PRESENT
+            counts[1] += 1
+
+    node_groups: dict[str, list[_Group]] = {}
+    for kind, entry in _nodes(graph):
+        under = node_groups[str(entry["id"])] = chain(entry)
+        count(MemberKind.NODES, entry, under)
+        under[-1].names.add(str(entry["name"]))
+        clash = clash_name(kind, entry["name"]) in clashing
+        chosen = entry_file(str(entry["id"])) in selected
+        for group in under:
+            group.conflict |= clash
+            group.selected += chosen
+    for entry in _possible(graph.get("params", ())):
+        count(MemberKind.PARAMS, entry, chain(entry))
+    for entry in _possible(graph.get("topics", ())):
+        reached = {id(g): g for n in entry.get("nodes", ()) for g in node_groups.get(n, ())}
+        count(MemberKind.TOPICS, entry, reached.values())
+    return [
+        {
+            "id": key,
+            "label": group.label,
+            "parent": group.parent,
+            **{kind.value: group.counts[kind] for kind in MemberKind},
+            "conflict": group.conflict,
+            "selected": group.selected,
+            "names": sorted(group.names),
+        }
+        for key, group in sorted(groups.items())
+    ]
+
+
+def members(
+    document: Mapping[str, Any], grouping: Grouping, group: str, kind: MemberKind, page: int
+) -> dict[str, object]:
+    """A page of a group's members, sorted by name: whole graph entries. Nodes and params
+    are its own (not its subgroups'); a page of nodes holds ``PAGE["nodes"]`` names with all
+    their variants. Topics are those of the nodes under it at any level, as its summary
+    counts them, each with the ``groups`` of its ``nodes`` (the group's own may be drawn
+    closed)."""
+    graph = document["graph"]
+    if kind == MemberKind.NODES:
+        own = [(k, e) for k, e in _nodes(graph) if key_of(labels(grouping, e)) == group]
+        by_name: dict[str, list[dict[str, object]]] = {}
+        for node_kind, entry in own:
+            by_name.setdefault(str(entry["name"]), []).append({**entry, "kind": node_kind})
+        names = sorted(by_name)
+        chosen = names[page * PAGE[kind] : (page + 1) * PAGE[kind]]
+        listed = [entry for name in chosen for entry in by_name[name]]
+        total = len(names)
+    else:
+        if kind == MemberKind.PARAMS:
+            found = [
+                {**e}
+                for e in _possible(graph.get("params", ()))
+                if key_of(labels(grouping, e)) == group
+            ]
+        else:  # with its nodes' groups: where the page draws the nodes it links it to
+            keys = {str(e["id"]): key_of(labels(grouping, e)) for _k, e in _nodes(graph)}
+            found = [
+                {**e, "groups": [keys.get(node) for node in e.get("nodes", ())]}
+                for e in _possible(graph.get("topics", ()))
+                if any(_under(keys.get(node, ""), group) for node in e.get("nodes", ()))
+            ]
+        found.sort(key=lambda e: (str(e.get("name")), str(e["id"])))
+        listed = found[page * PAGE[kind] : (page + 1) * PAGE[kind]]
+        total = len(found)
+    pages = max(1, -(-total // PAGE[kind]))
+    return {"group": group, "kind": kind, "page": page, "pages": pages, "members": listed}
+
+
+def _under(key: str, group: str) -> bool:
+    return key == group or key.startswith(group + SEPARATOR)
+
+
+def _possible(entries: Iterable[Entry]) -> Iterator[Entry]:
+    return (entry for entry in entries if entry["presence"] != ABSENT)
+
+
+def _nodes(graph: Mapping[str, Any]) -> Iterator[tuple[str, Entry]]:
+    for kind, listed in (("node", graph.get("nodes", ())), ("test", graph.get("tests", ()))):
+        for entry in _possible(listed):
+            yield kind, entry
+
+
+# -- the feature tree --------------------------------------------------------------------------
+SELECTIONS = {
+    (Selection.UNSELECTED, False): "u",
+    (Selection.SELECTED, False): "s",
+    (Selection.DESELECTED, False): "d",
+    (Selection.SELECTED, True): "S",
+    (Selection.DESELECTED, True): "D",
+}
+"""A feature's state in one character: chosen by the user lower case, derived upper case."""
+
+
+def catalog(configurator: Configurator) -> list[list[object]]:
+    """The feature tree's fixed part, in tree order: ``[id, kind, file, arg, value, parent,
+    default]`` per feature: ``file`` on a file's row only (the others are their file's),
+    ``parent`` the row of its parent (-1: none), ``default`` whether it is its arg's default
+    value."""
+    features = configurator.state([]).features
+    row = {key: number for number, key in enumerate(features)}
+    defaults = {
+        entry.id
+        for arg in configurator.catalog.args
+        for entry, value in configurator.catalog.values_of(arg)
+        if value.default
+    }
+    return [
+        [
+            key,
+            f.kind,
+            f.file if f.parent is None else None,
+            f.arg,
+            f.value,
+            row[f.parent] if f.parent is not None else -1,
+            key in defaults,
+        ]
+        for key, f in features.items()
+    ]
+
+
+def compact(document: Mapping[str, Any], grouping: Grouping) -> dict[str, Any]:
+    """``document`` in overview mode: the features' states as one string (in the order of
+    :func:`catalog`), the graph as group summaries and the errors roslaunch stops on."""
+    graph = document["graph"]
+    return {
+        **document,
+        "features": "".join(
+            SELECTIONS[(f["state"], f["derived"])] for f in document["features"].values()
+        ),
+        "graph": {
+            "groups": summaries(document, grouping),
+            "errors": [e for e in graph.get("errors", ()) if e["presence"] == PRESENT],
+        },
+        "grouping": grouping,
+    }
