@@ -132,8 +132,10 @@ def main() -> int:
     yaml_ms = median_ms(parse_yaml_launch_bytes, yaml_source.encode(), arguments.runs)
     verdict = "PASS" if python_ms <= TARGET_MS else "FAIL"
     lines = source.count("\n")
-    print(f"python  {lines:5d} lines  {entities:4d} actions  median {python_ms:7.2f} ms"
-          f"  target <= {TARGET_MS:.0f} ms  {verdict}")
+    print(
+        f"python  {lines:5d} lines  {entities:4d} actions  median {python_ms:7.2f} ms"
+        f"  target <= {TARGET_MS:.0f} ms  {verdict}"
+    )
     print(f"yaml    {yaml_source.count(chr(10)):5d} lines  median {yaml_ms:7.2f} ms")
     return 0
 

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 from rosvar.analyses.checks import Check, check_model, check_models
 from rosvar.analyses.communication import resolved_graph
-from rosvar.analyses.resolve import _Restriction, resolve
+from rosvar.analyses.resolve import Restriction, resolve
 from rosvar.diagnostics import Severity
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, Role
@@ -84,7 +84,7 @@ def test_conditions_agree_with_every_configuration(ws: LaunchWorkspace) -> None:
     assert kinds == set(Check) - {Check.SYMBOLIC_NAME}  # every check has a case here
     for values in itertools.product(["true", "false"], repeat=len(ARGS)):
         args = dict(zip(ARGS, values, strict=True))
-        holds = _Restriction(analysis, model, args, {}).holds
+        holds = Restriction(analysis, model, args, {}).holds
         found = {(f.check, f.name) for f in findings if holds(f.condition)}
         assert found == _expected(analysis, file, interfaces, args), args
 

@@ -16,7 +16,7 @@ from rosvar.analyses.communication import (
     resolved_graph,
     restrict,
 )
-from rosvar.analyses.resolve import _Restriction, resolve
+from rosvar.analyses.resolve import Restriction, resolve
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
@@ -92,7 +92,7 @@ def test_restricted_graph_equals_resolved_graph(ws: LaunchWorkspace) -> None:
         args = {"robot": robot, "relay": relay, "second": second}
         resolution = resolve(analysis, [file], args)
         assert resolution.ok
-        restriction = _Restriction(analysis, model, args, {})
+        restriction = Restriction(analysis, model, args, {})
         kept = restrict(edges, restriction.holds)
         assert all(e.static for e in kept)
         uses = [(e.node, e.role, e.name, e.type) for e in kept]
@@ -129,7 +129,7 @@ def test_corpus_restriction_equals_resolution(system: str) -> None:
             resolution = resolve(analysis, [file], args)
             if resolution.errors:
                 continue
-            kept = restrict(edges, _Restriction(analysis, model, args, {}).holds)
+            kept = restrict(edges, Restriction(analysis, model, args, {}).holds)
             uses = [(e.node, e.role, e.name, e.type) for e in kept]
             assert graph_json(uses) == resolved_graph(resolution.nodes, interfaces), (file, args)
             compared += bool(kept)
@@ -194,6 +194,6 @@ def test_camera_info_lies_beside_the_remapped_image(ws: LaunchWorkspace) -> None
     assert {name for name, _ in info} == {"/camera/rgb/camera_info", "/camera_info"}
     for relay in ("true", "false"):
         resolution = resolve(analysis, [file], {"relay": relay})
-        kept = restrict(edges, _Restriction(analysis, model, {"relay": relay}, {}).holds)
+        kept = restrict(edges, Restriction(analysis, model, {"relay": relay}, {}).holds)
         uses = [(e.node, e.role, e.name, e.type) for e in kept]
         assert graph_json(uses) == resolved_graph(resolution.nodes, interfaces)

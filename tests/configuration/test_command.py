@@ -8,6 +8,7 @@ from configuration.helpers import canonical, choices, configurator, product, run
 from rosvar.analyses.resolve import resolve
 from rosvar.configuration.command import Launch, given, group
 from rosvar.configuration.engine import ConfigurationState
+from rosvar.workspace.ros_version import RosVersion
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -22,8 +23,12 @@ def test_files_share_a_command_while_they_read_the_same_values() -> None:
     b = launch("b", {}, {"robot": "husky"})  # its default is what a gives
     c = launch("c", {}, {"robot": "kobuki"})  # would read robot:=husky instead of its default
     d = launch("d", {"sim": "true"}, {})  # a reads sim
-    assert [[m.spelled for m in g] for g in group([a, b, c, d])] == [["a", "b"], ["c", "d"]]
-    assert group([]) == []
+    shared = group([a, b, c, d], RosVersion.ROS1)
+    assert [[m.spelled for m in g] for g in shared] == [["a", "b"], ["c", "d"]]
+    assert group([], RosVersion.ROS1) == []
+    # ros2 launch takes one file
+    apart = group([a, b], RosVersion.ROS2)
+    assert [[m.spelled for m in g] for g in apart] == [["a"], ["b"]]
 
 
 def test_engine_commands(ws: LaunchWorkspace) -> None:

@@ -145,9 +145,22 @@ CONFIGURATIONS = ([], ["mode:=real", "use_extra:=true"], ["ns:=zz"], ["mode:=bad
 
 def oracle(launch: Path, package_path: Path, arguments: list[str]) -> dict[str, Any]:
     completed = subprocess.run(
-        [str(ORACLE_PYTHON), str(ORACLE / "oracle.py"), str(launch), *arguments,
-         "--package-path", str(package_path), "--strict", "--env", "W_ENV=from_env"],
-        capture_output=True, text=True, timeout=120, check=False, env={"PATH": "/usr/bin:/bin"},
+        [
+            str(ORACLE_PYTHON),
+            str(ORACLE / "oracle.py"),
+            str(launch),
+            *arguments,
+            "--package-path",
+            str(package_path),
+            "--strict",
+            "--env",
+            "W_ENV=from_env",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+        env={"PATH": "/usr/bin:/bin"},
     )
     result: dict[str, Any] = json.loads(completed.stdout)
     return result

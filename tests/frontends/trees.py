@@ -27,9 +27,7 @@ def demo_launch(name: str) -> Path:
 Shape = tuple[str, dict[str, str], frozenset[str], str, list["Shape"]]
 
 
-def shape(
-    entity: Entity, rewrite: tuple[tuple[str, str], ...] = (), typed: bool = True
-) -> Shape:
+def shape(entity: Entity, rewrite: tuple[tuple[str, str], ...] = (), typed: bool = True) -> Shape:
     """Tag, attributes, typed attributes (unless ``typed`` is false: as XML, which has
     none), non-blank text and children's shapes; ``rewrite`` replaces texts in attribute
     values (where two files say the same thing differently)."""

@@ -6,7 +6,7 @@ import pytest
 
 from rosvar.interpreter.interpretation import ROS1
 from rosvar.interpreter.ros2.dialect import ROS2
-from rosvar.interpreter.ros2.interpretation import is_ros2_launch  # noqa: F401 - registers
+from rosvar.interpreter.ros2.interpretation import interpret  # noqa: F401 - registers
 
 
 def test_each_dialect_has_its_own_tags() -> None:

@@ -167,6 +167,31 @@ def test_resolve_a_ros2_file(tmp_path: Path, capsys: pytest.CaptureFixture[str])
     assert (node["fqn"], node["parameters"]) == ("/s/n", {"k": 1})
 
 
+def test_query_and_check_on_a_ros2_workspace(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A ROS 2 node's executable is its ``exec``; the ROS 1 catalogue does not apply."""
+    package = tmp_path / "p"
+    package.mkdir()
+    (package / "package.xml").write_text(
+        "<package format='3'><name>p</name>"
+        "<export><build_type>ament_cmake</build_type></export></package>"
+    )
+    (package / "a.launch.xml").write_text(
+        """<launch><arg name="joy" default="true"/>
+        <node pkg="joy" exec="joy_node" name="joy" if="$(var joy)"/></launch>"""
+    )
+    code, out, _err = run(
+        capsys, "query", str(tmp_path), "nodes[self.type == 'joy_node']", "--json"
+    )
+    assert code == EXIT_OK
+    [result] = json.loads(out)["results"]
+    assert result["name"] == "/joy" and result["example"] == {"a.launch.xml:joy": "true"}
+    code, out, _err = run(capsys, "check", str(tmp_path), "--format", "json")
+    assert code == EXIT_OK
+    assert json.loads(out)["findings"] == []  # joy's ROS 1 interface is not ROS 2's
+
+
 def test_resolve_warns_of_an_arg_no_file_reads(
     workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
 ) -> None:

@@ -84,7 +84,7 @@ class Resolution:
         }
 
 
-class _Restriction:
+class Restriction:
     """One model under one configuration."""
 
     def __init__(
@@ -163,7 +163,7 @@ def resolve(
     anon_offset = 0
     for file in files:
         model = analysis.model(file)
-        restriction = _Restriction(analysis, model, args, env or {})
+        restriction = Restriction(analysis, model, args, env or {})
         restriction.shift_anon(anon_offset)
         try:
             _restrict(restriction, model, result, seen_nodes)
@@ -196,7 +196,7 @@ def resolve(
 
 
 def _restrict(
-    r: _Restriction, model: LaunchModel, result: Resolution, seen: dict[str, Location]
+    r: Restriction, model: LaunchModel, result: Resolution, seen: dict[str, Location]
 ) -> None:
     for event in model.errors:
         if r.holds(event.condition):
@@ -254,7 +254,7 @@ def _restrict(
                 result.params[key] = json_value(value)
 
 
-def _node(r: _Restriction, node: object) -> dict[str, object]:
+def _node(r: Restriction, node: object) -> dict[str, object]:
     from rosvar.interpreter.model import NodeDecl
 
     assert isinstance(node, NodeDecl)

@@ -399,8 +399,8 @@ class Configurator:
         features, unselected = self._features(decided, chosen)
         complete = len(decided) == len(self.derivation.variables)
         launches = self._launches(decisions, texts) if complete else None
-        commands = group(launches or [])
         workspace = self.analysis.workspace
+        commands = group(launches or [], workspace.ros_version)
         command = "\n".join(command_line(g, workspace) for g in commands) if launches else None
         return ConfigurationState(
             choices=list(replay.accepted),

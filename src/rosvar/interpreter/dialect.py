@@ -9,23 +9,18 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from enum import StrEnum
 from typing import TYPE_CHECKING, Any
 
 from rosvar.frontends.entity import Entity
+from rosvar.workspace.ros_version import RosVersion
+
+__all__ = ["Dialect", "Handler", "RosVersion"]
 
 if TYPE_CHECKING:
     from rosvar.interpreter.interpretation import Interpretation
 
 Handler = Callable[["Interpretation", Entity, Any], None]
 """A tag handler: the walk, the element, and the dialect's scope (context) type."""
-
-
-class RosVersion(StrEnum):
-    """The ROS generation whose launch semantics apply."""
-
-    ROS1 = "ros1"
-    ROS2 = "ros2"
 
 
 @dataclass

@@ -23,8 +23,13 @@ from rosvar.logic.inputs import OTHER, UNSET, Slot
 from rosvar.workspace import Workspace
 from rosvar.workspace.executables import executables
 from rosvar.workspace.paths import real_path
+from rosvar.workspace.ros_version import RosVersion
 
-_WHOLE_ARG = re.compile(r"\s*\$\(arg\s+([^\s)]+)\s*\)\s*")
+_WHOLE_ARG = {
+    RosVersion.ROS1: re.compile(r"\s*\$\(arg\s+([^\s)]+)\s*\)\s*"),
+    RosVersion.ROS2: re.compile(r"\s*\$\(var\s+([^\s)]+)\s*\)\s*"),
+}
+"""An ``if``/``unless`` testing one arg: ``$(arg x)`` in ROS 1, ``$(var x)`` in ROS 2."""
 _FIND = re.compile(r"\$\(find\s+([^\s)]+)\s*\)")
 _ONE_ARG = re.compile(r"([^$]*)\$\(arg\s+([^\s)]+)\s*\)([^$]*)")
 PARAM_TYPES = ("str", "string", "int", "double", "bool", "boolean", "yaml", "auto")
@@ -82,7 +87,7 @@ def _walk(entity: Entity) -> Iterator[Entity]:
         stack.extend(reversed(element.children))
 
 
-def file_facts(root: Entity) -> dict[str, ArgFacts]:
+def file_facts(root: Entity, version: RosVersion = RosVersion.ROS1) -> dict[str, ArgFacts]:
     facts: dict[str, ArgFacts] = defaultdict(ArgFacts)
     for decl in entry_declarations(root):
         name = decl.get("name")
@@ -97,13 +102,15 @@ def file_facts(root: Entity) -> dict[str, ArgFacts]:
         entry.defaults.append(default)
         if default is not None and "$" not in default:
             entry.literals.add(default)
+        # a ROS 2 argument's <choice value=...>: the values it accepts
+        entry.literals.update(c.get("value") or "" for c in decl.children if c.tag == "choice")
     for element in _walk(root):
         _patterns(element, facts)
         for attribute in ("if", "unless"):
             text = element.get(attribute)
             if text is None:
                 continue
-            match = _WHOLE_ARG.fullmatch(text)
+            match = _WHOLE_ARG[version].fullmatch(text)
             if match and match.group(1) in facts:
                 facts[match.group(1)].tested = True
         for text in element.attributes.values():
@@ -135,7 +142,7 @@ def _patterns(element: Entity, facts: dict[str, ArgFacts]) -> None:
                 (prefix_match.group(0) + match.group(1), match.group(3))
             )
     elif element.tag == "param":
-        match = _WHOLE_ARG.fullmatch(element.get("type") or "")
+        match = _WHOLE_ARG[RosVersion.ROS1].fullmatch(element.get("type") or "")
         if match and match.group(1) in facts:
             facts[match.group(1)].param_type = True
 
@@ -171,7 +178,8 @@ class DomainTable:
     def facts(self, file: str) -> dict[str, ArgFacts]:
         if file not in self._facts:
             root = self._files.load(file).root
-            self._facts[file] = file_facts(root) if root is not None else {}
+            version = self.workspace.ros_version
+            self._facts[file] = file_facts(root, version) if root is not None else {}
         return self._facts[file]
 
     def unset_default(self, file: str, name: str) -> str | None:
@@ -269,7 +277,7 @@ class DomainTable:
                         continue
                     if "$" not in value:
                         index[target][name].add(value)
-                    elif forwarded := _WHOLE_ARG.fullmatch(value):
+                    elif forwarded := _WHOLE_ARG[self.workspace.ros_version].fullmatch(value):
                         source = f"{real_path(launch_file)}\x00{forwarded.group(1)}"
                         self._forwards.setdefault(source, []).append((target, name))
         return index

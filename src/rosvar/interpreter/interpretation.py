@@ -19,7 +19,7 @@ from rosvar.interpreter.dialect import Dialect, RosVersion
 from rosvar.interpreter.lifted import apply, lift
 from rosvar.interpreter.model import Decision, ErrorEvent, Guard, LaunchModel, Raw
 from rosvar.interpreter.ros2.context import Context
-from rosvar.interpreter.scope import MISSING, ArgValue, Scope
+from rosvar.interpreter.scope import MISSING, Scope
 from rosvar.interpreter.substitution import Substituter
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
@@ -121,6 +121,16 @@ class Interpretation:
         self.included = 0  # includes followed, up to MAX_INCLUDES
         self._location = Location(file)
 
+    def finish(self) -> LaunchModel:
+        """The model, loading wherever no error is raised, with what the walk gathered."""
+        failing = self.space.false
+        for error in self.model.errors:
+            failing |= error.condition
+        self.model.loads = ~failing
+        self.model.anon_count = self.anon_count
+        self.model.diagnostics = self.sink.items
+        return self.model
+
     def close(self) -> None:
         """Drop the substituter: reference counting then frees this run's BDDs."""
         del self.substituter
@@ -170,16 +180,19 @@ class Interpretation:
         return names
 
     # -- inputs --------------------------------------------------------------------------
-    def entry_args(self, file: str, names: Sequence[str]) -> dict[str, ArgValue]:
-        """Command-line args of the entry file as choices over their input slots."""
-        args: dict[str, ArgValue] = {}
+    def entry_args(
+        self, file: str, names: Sequence[str], unset: object = MISSING
+    ) -> dict[str, Choice[Any]]:
+        """Command-line args of the entry file as choices over their input slots, ``unset``
+        where one is not given (the dialect's way of saying so)."""
+        args: dict[str, Choice[Any]] = {}
         for name in names:
             input_ = ArgInput(file, name)
             domain = self._domains(file, name)
             self.space.declare_input(input_, domain)
             self.model.inputs[name] = input_
             self.model.domains[name] = domain
-            args[name] = self._input_value(input_, MISSING)
+            args[name] = self._input_value(input_, unset)
         return args
 
     # -- conditions and errors -------------------------------------------------------------

@@ -6,18 +6,25 @@ import gc
 import os
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
+from dataclasses import dataclass
 
-from rosvar.frontends.ros1_xml.parser import Snapshot
+from rosvar.frontends import registry
+from rosvar.frontends.entity import Entity
+from rosvar.frontends.ros1_xml.parser import ParseResult, Snapshot
 from rosvar.interpreter import tags  # noqa: F401 - registers the tag handlers
+from rosvar.interpreter.dialect import Dialect
 from rosvar.interpreter.domains import DomainTable, entry_declarations
-from rosvar.interpreter.interpretation import Interpretation
+from rosvar.interpreter.interpretation import ROS1, Interpretation
 from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.ros2 import interpretation as ros2
+from rosvar.interpreter.ros2.dialect import ROS2
 from rosvar.interpreter.scope import Scope
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros.names import settable
 from rosvar.workspace import Workspace
 from rosvar.workspace.paths import real_path
+from rosvar.workspace.ros_version import RosVersion
 
 Progress = Callable[[int, int, str], None]
 
@@ -34,7 +41,8 @@ class Analysis:
     ) -> None:
         self.workspace = workspace
         self.space = ConditionSpace(len(workspace.launch_files))
-        self.files = Snapshot()
+        self.reading = READINGS[workspace.ros_version]
+        self.files = Snapshot(self.reading.loader)
         self.domains = DomainTable(
             workspace, extra_values, env_values, extra_executables, files=self.files
         )
@@ -88,6 +96,7 @@ class Analysis:
             self.domains.env_domain,
             file,
             self.files,
+            self.reading.dialect,
         )
         try:
             return self._run(it, file)
@@ -97,33 +106,50 @@ class Analysis:
     def _run(self, it: Interpretation, file: str) -> LaunchModel:
         it.stack.append(real_path(file))
         root = it.load(file)
-        model = it.model
         if root is not None:
-            deprecated = root.get("deprecated")
-            if deprecated:
-                it.sink.note("launch-deprecated", f"DEPRECATED: {deprecated}", root.location)
-            names = list(
-                dict.fromkeys(
-                    d.get("name") or ""
-                    for d in entry_declarations(root)
-                    if settable(d.get("name") or "")
-                )
-            )
-            args = it.entry_args(file, names)
-            scope = Scope(ns=Choice.const(self.space, "/"), filename=file, args=args)
-            with it.at(root):
-                it.walk(root.children, scope)
-        for name in model.inputs:
+            self.reading.walk(it, file, root)
+        model = it.finish()
+        for name in model.inputs:  # what leaving each arg out amounts to, if one literal
             default = self.domains.unset_default(file, name)
             if default is not None:
                 model.unset_defaults[name] = default
-        failing = self.space.false
-        for error in model.errors:
-            failing |= error.condition
-        model.loads = ~failing
-        model.anon_count = it.anon_count
-        model.diagnostics = it.sink.items
         return model
+
+
+def _walk_ros1(it: Interpretation, file: str, root: Entity) -> None:
+    """roslaunch: the file's args are the command line's, in a scope at ``/``."""
+    deprecated = root.get("deprecated")
+    if deprecated:
+        it.sink.note("launch-deprecated", f"DEPRECATED: {deprecated}", root.location)
+    names = list(
+        dict.fromkeys(
+            d.get("name") or "" for d in entry_declarations(root) if settable(d.get("name") or "")
+        )
+    )
+    args = it.entry_args(file, names)
+    scope = Scope(ns=Choice.const(it.space, "/"), filename=file, args=args)
+    with it.at(root):
+        it.walk(root.children, scope)
+
+
+def _walk_ros2(it: Interpretation, file: str, root: Entity) -> None:
+    """``ros2 launch``: the declared launch arguments are the command line's."""
+    ros2.walk_entry(it, root, ros2.entry_context(it, file, root))
+
+
+@dataclass(frozen=True)
+class Reading:
+    """How one ROS reads an entry file: its dialect, its frontends, its entry walk."""
+
+    dialect: Dialect
+    loader: Callable[[str], ParseResult] | None  # None: roslaunch's XML parser
+    walk: Callable[[Interpretation, str, Entity], None]
+
+
+READINGS: dict[RosVersion, Reading] = {
+    RosVersion.ROS1: Reading(ROS1, None, _walk_ros1),
+    RosVersion.ROS2: Reading(ROS2, registry.load, _walk_ros2),
+}
 
 
 @contextmanager

@@ -28,6 +28,7 @@ from rosvar.configuration.choices import Action
 from rosvar.diagnostics import Location, Severity
 from rosvar.outputs.exports import FORMATS
 from rosvar.ros.names import command_line_mappings
+from rosvar.workspace.ros_version import RosVersion
 
 # Each command imports what it needs when it runs: `dd` (and CUDD), the interpreter, numpy
 # and the web server are not what `--version`, `--help` or another command pays for.
@@ -129,7 +130,6 @@ def cmd_analyze(options: argparse.Namespace) -> int:
 def cmd_resolve(options: argparse.Namespace) -> int:
     from rosvar.analyses.communication import JSON_SIDES, Channel, resolved_graph
     from rosvar.analyses.resolve import resolve
-    from rosvar.interpreter.ros2.interpretation import is_ros2_launch
     from rosvar.interpreter.workspace_models import Analysis
 
     paths = [os.path.abspath(words[0]) for words in options.launch if len(words) == 1]
@@ -146,7 +146,7 @@ def cmd_resolve(options: argparse.Namespace) -> int:
     if env is None:
         return EXIT_USAGE
     args = command_line_mappings(options.args)
-    if len(files) == 1 and is_ros2_launch(files[0]):
+    if len(files) == 1 and workspace.ros_version is RosVersion.ROS2:
         return _resolve_ros2(workspace, files[0], args, env, options.json)
     # The given values become known slots: conditions split on them instead of
     # leaving them to <other> terms (the semantics does not change).
@@ -158,7 +158,7 @@ def cmd_resolve(options: argparse.Namespace) -> int:
     _warn_unknown_args(analysis, files, args)
     result = resolve(analysis, files, args, env)
     document = result.to_json()
-    graph = resolved_graph(result.nodes, _interfaces(workspace.packages.values(), options))
+    graph = resolved_graph(result.nodes, _interfaces(workspace, options))
     document.update(graph)
     if options.json:
         _print_json(document)
@@ -370,7 +370,7 @@ def cmd_configure(options: argparse.Namespace) -> int:
     try:
         choices = [UserChoice.parse(action, text) for action, text in options.choices]
         model = extract(analysis, progress=_progress, products=True)
-        interfaces = _interfaces(analysis.workspace.packages.values(), options)
+        interfaces = _interfaces(analysis.workspace, options)
         configurator = Configurator(
             analysis, model, env, progress=_building(tty_only=True), interfaces=interfaces
         )
@@ -482,7 +482,7 @@ def cmd_serve(options: argparse.Namespace) -> int:
     files = len(analysis.workspace.launch_files)
     print(f"rosvar: analysing {files} launch files ...", file=sys.stderr, flush=True)
     model = extract(analysis, progress=_progress, products=True)
-    interfaces = _interfaces(analysis.workspace.packages.values(), options)
+    interfaces = _interfaces(analysis.workspace, options)
     configurator = Configurator(
         analysis, model, env, progress=_building(tty_only=False), interfaces=interfaces
     )
@@ -575,17 +575,20 @@ def _hints(options: argparse.Namespace) -> Hints:
     return hints
 
 
-def _interfaces(packages: Iterable[Package], options: argparse.Namespace) -> Interfaces:
-    """The interfaces of ``packages``, the catalogue's when ``options.catalogue``, then
-    the hints' entries."""
+def _interfaces(
+    workspace: Workspace, options: argparse.Namespace, packages: Iterable[Package] | None = None
+) -> Interfaces:
+    """The interfaces of ``packages`` (the workspace's), the catalogue's when
+    ``options.catalogue`` and the workspace is ROS 1 (the catalogue's nodes are ROS 1
+    builds), then the hints' entries."""
     from rosvar.workspace.interfaces.catalogue import load_catalogue
     from rosvar.workspace.interfaces.extraction import extract_interfaces
     from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
 
-    interfaces = extract_interfaces(packages)
+    interfaces = extract_interfaces(workspace.packages.values() if packages is None else packages)
     hints = _hints(options)
     interfaces.diagnostics.extend(hints.diagnostics)
-    if getattr(options, "catalogue", True):
+    if getattr(options, "catalogue", True) and workspace.ros_version == RosVersion.ROS1:
         add_catalogue(interfaces, load_catalogue())
     apply_hints(interfaces, hints.nodes)
     return interfaces
@@ -599,7 +602,7 @@ def cmd_interfaces(options: argparse.Namespace) -> int:
         for package in workspace.packages.values()
         if any(os.path.commonpath([package.path, root]) in (package.path, root) for root in roots)
     ]
-    interfaces = _interfaces(packages, options)
+    interfaces = _interfaces(workspace, options, packages)
     if options.json:
         _print_json(interfaces.to_json())
         return EXIT_OK
@@ -654,7 +657,7 @@ def cmd_query(options: argparse.Namespace) -> int:
     if analysis is None:
         return EXIT_INPUT
     analysis.all_models(_progress)  # interpreted once, with the progress shown
-    interfaces = _interfaces(analysis.workspace.packages.values(), options)
+    interfaces = _interfaces(analysis.workspace, options)
     engine = QueryEngine(analysis, collections=channel_collections(interfaces))
     _warn_unknown_args(analysis, [m.file for m in engine.models], args)
     try:
@@ -705,7 +708,7 @@ def cmd_check(options: argparse.Namespace) -> int:
     analysis = _analysis(options)
     if analysis is None:
         return EXIT_INPUT
-    interfaces = _interfaces(analysis.workspace.packages.values(), options)
+    interfaces = _interfaces(analysis.workspace, options)
     models = analysis.all_models(_progress)
     findings = check_models(analysis.space, models, interfaces, analysis.workspace.confinement())
     if options.format == "sarif":

@@ -226,6 +226,17 @@ CASES: dict[str, Case] = {
         },
         [{"g": "[a, b]"}, {"g": "[a, 1]"}, {"g": "[1, 2.5]"}, {"g": "~"}, {"g": "a: b"}],
     ),
+    "parameter-file-named-by-an-unset-environment-variable": (
+        {
+            "main.launch.xml": """<launch>
+            <node pkg="pkg" exec="a" name="a">
+              <param from="$(dirname)/p_$(env JOY logitech).yaml"/>
+            </node>
+          </launch>""",
+            "p_logitech.yaml": "/**:\n  ros__parameters:\n    x: 1\n",
+        },
+        [{}],
+    ),
     "env-set-unset": (
         {
             "main.launch.xml": """<launch>

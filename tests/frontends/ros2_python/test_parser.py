@@ -21,7 +21,6 @@ def codes(diagnostics: list[Diagnostic]) -> list[str]:
     return [diagnostic.code for diagnostic in diagnostics]
 
 
-
 IMPORTS = """\
 import os
 from ament_index_python.packages import get_package_share_directory

@@ -149,8 +149,7 @@ def test_malformed_documents_are_refused() -> None:
 
 def test_alias_bombs_and_deep_nesting_are_refused_before_construction() -> None:
     bomb = "a: &a [x, x, x, x, x, x, x, x, x, x]\n" + "".join(
-        f"{chr(98 + i)}: &{chr(98 + i)} [{', '.join(['*' + chr(97 + i)] * 10)}]\n"
-        for i in range(6)
+        f"{chr(98 + i)}: &{chr(98 + i)} [{', '.join(['*' + chr(97 + i)] * 10)}]\n" for i in range(6)
     )
     assert parse("launch:\n- arg: {name: x}\n" + bomb) == (None, ["yaml-limit"])
     assert parse("launch: " + "[" * 200 + "]" * 200) == (None, ["yaml-limit"])

@@ -2,11 +2,12 @@
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 import pytest
 
-from outputs.web.live import Live, running
+from outputs.web.live import Live, configurator, running
 from rosvar.analyses.feature_model import counting
 from rosvar.configuration.engine import Configurator
 from rosvar.outputs.web.api import MAX_TEXT, Api
@@ -199,6 +200,31 @@ def test_a_new_api_prepares_the_counts(
     assert not any("_residues" in vars(diagram) for diagram in diagrams)
     Api(examples_engine)
     assert all("_residues" in vars(diagram) for diagram in diagrams)
+
+
+def test_a_ros2_workspace_is_served_with_its_ros2_launch_command(tmp_path: Path) -> None:
+    package = tmp_path / "pkg"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="3"><name>pkg</name>'
+        "<export><build_type>ament_cmake</build_type></export></package>"
+    )
+    (package / "launch" / "main.launch.xml").write_text(
+        '<launch><arg name="robot" default="a"><choice value="a"/><choice value="b"/></arg>'
+        '<node pkg="pkg" exec="e" name="$(var robot)"/></launch>'
+    )
+    with running(configurator([tmp_path])) as live:
+        reply = live.open()
+        file = first_of(reply, "file")
+        body = {"session": reply["session"], "action": "select", "feature": file}
+        after = live.post("/api/choose", body)
+        value = next(
+            key
+            for key, f in after["features"].items()
+            if f["kind"] == "value" and f.get("value") == "b"
+        )
+        done = live.post("/api/choose", {**body, "feature": value})
+    assert done["command"] == "ros2 launch pkg main.launch.xml robot:=b"
 
 
 def test_memory_stays_bounded_over_many_distinct_clicks(monkeypatch: pytest.MonkeyPatch) -> None:

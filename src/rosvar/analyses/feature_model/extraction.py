@@ -39,6 +39,13 @@ def _term_inputs(value: Operand) -> set[ArgInput]:
 _TERMS = (Hole, Apply)  # a union type written inline is built anew at every call
 
 
+GRAPH_FIELDS = (
+    *("name", "namespace", "pkg", "type", "args", "machine"),
+    *("exec", "plugin", "container"),
+)
+"""A node's fields that shape the graph: ROS 1's, then those only a ROS 2 node has."""
+
+
 def graph_inputs(model: LaunchModel) -> set[ArgInput]:
     """Args whose value changes a node, param or remap (AFFECTSCG), read off the BDD supports.
 
@@ -55,9 +62,15 @@ def graph_inputs(model: LaunchModel) -> set[ArgInput]:
     choices: dict[int, Choice[object]] = {}  # and choices (one per literal, shared): by id
     for node in model.nodes:
         conditions.add(node.condition)
-        for key in ("name", "namespace", "pkg", "type", "args", "machine"):
-            field_value = node.fields[key]
-            choices[id(field_value)] = field_value
+        for key in GRAPH_FIELDS:
+            field_value = node.fields.get(key)
+            if field_value is not None:
+                choices[id(field_value)] = field_value
+        for parameter in node.parameters:  # a ROS 2 node's own parameters
+            conditions.add(parameter.condition)
+            for raw in (parameter.name, parameter.value, parameter.file):
+                if isinstance(raw, _TERMS):
+                    terms.update(_term_inputs(raw))
         for remap in node.remaps:
             conditions.add(remap.condition)
             for raw in (remap.source, remap.target):

@@ -144,6 +144,7 @@ def _const(space: ConditionSpace, value: object) -> Choice[object]:
 
 def _full_name(parts: Sequence[object]) -> str | None:
     namespace, name = parts
+    namespace = "/" if namespace is None else namespace  # a ROS 2 node without `namespace`
     if isinstance(namespace, str) and isinstance(name, str):
         return names.ns_join(namespace, name)
     return None
@@ -155,7 +156,7 @@ def _shown(value: object) -> str:
 
 
 def _template(parts: Sequence[object]) -> str:
-    namespace, name = (_shown(part) for part in parts)
+    namespace, name = (_shown("/" if part is None else part) for part in parts)
     return names.ns_join(namespace, name)
 
 

@@ -11,12 +11,18 @@ import os
 import shlex
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import Protocol
 
 import yaml
 
+from rosvar.analyses.resolve import ResolutionError, Restriction
+from rosvar.diagnostics import Location
 from rosvar.files import FileRefused, read_file
 from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.interpreter.ros2.interpretation import interpret
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.logic.bdd import BDD
+from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros.ros2_namespaces import full_name, make_absolute, prefix_namespace
 from rosvar.ros.ros2_parameters import ALL_NODES, Source, effective, file_entries, typed
@@ -44,23 +50,63 @@ def resolve_ros2(
 ) -> Ros2Resolution:
     space = ConditionSpace()
     model = interpret(workspace, space, file, arguments, env or {})
-    return restrict(model)
+    return restrict(model, Constant(space))
 
 
-def restrict(model: LaunchModel) -> Ros2Resolution:
-    """The present nodes and errors of a model whose conditions are all constant."""
-    true = model.space.true
+def resolve_variational(
+    analysis: Analysis, file: str, arguments: Mapping[str, str], env: Mapping[str, str]
+) -> Ros2Resolution:
+    """The same, read off the file's model over every command line (``analysis.model``)."""
+    model = analysis.model(file)
+    return restrict(model, Restriction(analysis, model, arguments, env))
+
+
+class View(Protocol):
+    """One configuration of a model: which conditions hold, what values are."""
+
+    def holds(self, condition: BDD) -> bool: ...
+
+    def pick(self, choice: Choice[object], location: Location, what: str) -> object: ...
+
+    def evaluate(self, value: Raw, location: Location, what: str) -> str: ...
+
+
+class Constant:
+    """The view of a model interpreted with fixed arguments: values are constants, and the
+    only inputs, the environment variables read, are not set."""
+
+    def __init__(self, space: ConditionSpace) -> None:
+        self.space = space
+        self.assignment = space.assignment({})
+
+    def holds(self, condition: BDD) -> bool:
+        return self.space.evaluate(condition, self.assignment)
+
+    def pick(self, choice: Choice[object], location: Location, what: str) -> object:
+        value = next((leaf for condition, leaf in choice if self.holds(condition)), None)
+        if value is not None and not isinstance(value, str):
+            raise ValueError(f"{what} is not known")
+        return value
+
+    def evaluate(self, value: Raw, location: Location, what: str) -> str:
+        if not isinstance(value, str):
+            raise ValueError(f"{what} is not known")
+        return value
+
+
+def restrict(model: LaunchModel, view: View) -> Ros2Resolution:
+    """The present nodes and errors of ``model`` in the configuration ``view`` shows."""
     result = Ros2Resolution()
     for error in model.errors:
-        if error.condition == true:
+        if view.holds(error.condition):
             result.errors.append(
                 {"code": error.code, "message": error.message, "location": error.location.to_json()}
             )
     for decl in model.nodes:
-        if decl.condition == true:
+        if view.holds(decl.condition):
             try:
-                result.nodes.append(_node(decl))
-            except ValueError as error:
+                result.nodes.append(_node(decl, view))
+            except (ValueError, ResolutionError) as error:
                 result.errors.append(
                     {
                         "code": "node-invalid",
@@ -71,45 +117,48 @@ def restrict(model: LaunchModel) -> Ros2Resolution:
     return result
 
 
-def _text(decl: NodeDecl, key: str) -> str | None:
-    value: Raw | None = decl.field(key).single()
-    if value is not None and not isinstance(value, str):
-        raise ValueError(f"<node> attribute '{key}' is not known")
-    return value
+def _node(decl: NodeDecl, view: View) -> dict[str, object]:
+    def text(key: str) -> str | None:
+        value = view.pick(decl.field(key), decl.location, f"<node> attribute '{key}'")
+        return None if value is None else str(value)
 
+    def known(value: Raw, what: str) -> str:
+        return view.evaluate(value, decl.location, what)
 
-def _node(decl: NodeDecl) -> dict[str, object]:
-    true = decl.condition.bdd.true
-    name = _text(decl, "name")
-    namespace = make_absolute(
-        prefix_namespace(_text(decl, "ros_namespace"), _text(decl, "namespace"))
-    )
+    name = text("name")
+    namespace = make_absolute(prefix_namespace(text("ros_namespace"), text("namespace")))
     fqn = None
     if name is not None:
-        fqn = full_name(_text(decl, "ros_namespace"), _text(decl, "namespace"), name)
+        fqn = full_name(text("ros_namespace"), text("namespace"), name)
     sources: list[Source] = []
     for param in decl.parameters:
-        if param.condition != true:
+        if not view.holds(param.condition):
             continue
         if param.file is not None:
-            sources.append(Source(entries=tuple(_file(str(param.file)))))
+            sources.append(Source(entries=tuple(_file(known(param.file, "parameter file")))))
         elif param.name is not None and param.value is not None:
             # global (-p) and inline (a generated file) parameters both apply to /**
-            value = typed(str(param.value))
-            sources.append(Source(entries=((ALL_NODES, {str(param.name): value}),)))
-    args = _text(decl, "args")
+            value = typed(known(param.value, "parameter value"))
+            entry = {known(param.name, "parameter name"): value}
+            sources.append(Source(entries=((ALL_NODES, entry),)))
+    args = text("args")
+    remaps = [
+        [known(r.source, "remapping"), known(r.target, "remapping")]
+        for r in decl.remaps
+        if view.holds(r.condition)
+    ]
     return {
-        "kind": _text(decl, "kind"),
-        "package": _text(decl, "pkg"),
-        "executable": _text(decl, "exec") or _text(decl, "cmd"),
+        "kind": text("kind"),
+        "package": text("pkg"),
+        "executable": text("exec") or text("cmd"),
         "name": name,
         "namespace": namespace,
         "fqn": fqn,
-        "remappings": [[r.source, r.target] for r in decl.remaps if r.condition == true],
+        "remappings": remaps,
         "parameters": effective(fqn, sources),
-        "arguments": None if decl.field("plugin").single() else shlex.split(args or ""),
-        "plugin": _text(decl, "plugin"),
-        "container": _text(decl, "container"),
+        "arguments": None if text("plugin") else shlex.split(args or ""),
+        "plugin": text("plugin"),
+        "container": text("container"),
     }
 
 

@@ -65,8 +65,17 @@ def _attributes(*names: str) -> tuple[Param, ...]:
 
 _PROCESS = (
     *_attributes(
-        "name", "cwd", "output", "respawn", "respawn_delay", "respawn_max_retries",
-        "prefix:launch-prefix", "emulate_tty", "shell", "sigterm_timeout", "sigkill_timeout",
+        "name",
+        "cwd",
+        "output",
+        "respawn",
+        "respawn_delay",
+        "respawn_max_retries",
+        "prefix:launch-prefix",
+        "emulate_tty",
+        "shell",
+        "sigterm_timeout",
+        "sigkill_timeout",
     ),
     Param("additional_env", "env", Slot.NAMED_VALUES),
 )
@@ -124,8 +133,11 @@ ACTIONS: dict[tuple[str, str], ActionSpec] = {
     ("launch", "Shutdown"): ActionSpec("shutdown", _attributes("reason")),
     ("launch", "TimerAction"): ActionSpec(
         "timer",
-        (*_attributes("period"), Param("actions", "", Slot.ACTIONS),
-         *_attributes("cancel_on_shutdown")),
+        (
+            *_attributes("period"),
+            Param("actions", "", Slot.ACTIONS),
+            *_attributes("cancel_on_shutdown"),
+        ),
     ),
     ("launch_ros", "RosTimer"): ActionSpec(
         "ros_timer", (*_attributes("period"), Param("actions", "", Slot.ACTIONS))

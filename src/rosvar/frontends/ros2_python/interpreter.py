@@ -95,8 +95,19 @@ _COMPARE: dict[type[ast.cmpop], Callable[[Any, Any], Any]] = {
     ast.IsNot: operator.is_not,
 }
 _STR_METHODS = frozenset(
-    {"join", "replace", "strip", "lstrip", "rstrip", "lower", "upper", "startswith",
-     "endswith", "split", "format"}
+    {
+        "join",
+        "replace",
+        "strip",
+        "lstrip",
+        "rstrip",
+        "lower",
+        "upper",
+        "startswith",
+        "endswith",
+        "split",
+        "format",
+    }
 )
 
 
@@ -236,8 +247,10 @@ class Interpreter:
             if isinstance(container, dict) and isinstance(index, Key):
                 container[index] = value
                 return
-            if isinstance(container, list) and isinstance(index, int) and (
-                -len(container) <= index < len(container)
+            if (
+                isinstance(container, list)
+                and isinstance(index, int)
+                and (-len(container) <= index < len(container))
             ):
                 container[index] = value
                 return
@@ -303,7 +316,8 @@ class Interpreter:
         positional = [*arguments.posonlyargs, *arguments.args]
         defaults: dict[str, Value] = {}
         for argument, default in zip(
-            positional[len(positional) - len(arguments.defaults) :], arguments.defaults,
+            positional[len(positional) - len(arguments.defaults) :],
+            arguments.defaults,
             strict=True,
         ):
             defaults[argument.arg] = self.expr(default, scope)
@@ -610,8 +624,9 @@ class Interpreter:
                 self.not_followed("'**' of a value that is not a known dict", keyword)
         return self.invoke(callee, args, kwargs, node)
 
-    def invoke(self, callee: Value, args: list[Value], kwargs: dict[str, Value],
-               node: ast.AST) -> Value:
+    def invoke(
+        self, callee: Value, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
         if isinstance(callee, Unknown):
             return callee
         if isinstance(callee, Function):
@@ -630,8 +645,9 @@ class Interpreter:
             return self.not_followed(reason or f"call to {callee.qualified}()", node)
         return self.not_followed(f"call of a {type(callee).__name__}", node)
 
-    def call_function(self, function: Function, args: list[Value], kwargs: dict[str, Value],
-                      node: ast.AST) -> Value:
+    def call_function(
+        self, function: Function, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
         if self.depth >= MAX_CALL_DEPTH:
             return self.not_followed(f"recursion of {function.node.name}()", node)
         arguments = function.node.args
@@ -668,8 +684,9 @@ class Interpreter:
             self.depth -= 1
         return None
 
-    def call_method(self, method: Method, args: list[Value], kwargs: dict[str, Value],
-                    node: ast.AST) -> Value:
+    def call_method(
+        self, method: Method, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
         receiver, name = method.receiver, method.name
         if isinstance(receiver, Description) and name in ("add_action", "add_entity") and args:
             call = Call(f"LaunchDescription.{name}", args, kwargs, self.location(node), self.sink)
@@ -696,8 +713,9 @@ class Interpreter:
             return self._str_method(receiver, name, args, kwargs, node)
         return self.not_followed(f"method {name}() of a {type(receiver).__name__}", node)
 
-    def _dict_method(self, receiver: dict[Key, Value], name: str, args: list[Value],
-                     node: ast.AST) -> Value:
+    def _dict_method(
+        self, receiver: dict[Key, Value], name: str, args: list[Value], node: ast.AST
+    ) -> Value:
         if name == "items":
             return [(name_, value) for name_, value in receiver.items()]
         if name == "keys":
@@ -713,8 +731,9 @@ class Interpreter:
             return None
         return self.not_followed(f"method {name}() of a dict", node)
 
-    def _format(self, template: str, args: list[Value], kwargs: dict[str, Value],
-                node: ast.AST) -> Value:
+    def _format(
+        self, template: str, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
         """``str.format`` with plain fields (``{}``, ``{0}``, ``{name}``), no format specs."""
         parts: list[Value] = []
         automatic = 0
@@ -738,8 +757,9 @@ class Interpreter:
                 return self.not_followed(f"str.format() field {{{field}}}", node)
         return self.concatenate(parts, node)
 
-    def _str_method(self, receiver: str, name: str, args: list[Value],
-                    kwargs: dict[str, Value], node: ast.AST) -> Value:
+    def _str_method(
+        self, receiver: str, name: str, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
         if name == "join" and len(args) == 1:
             items = self.iterate(args[0], node)
             if items is None:
@@ -761,14 +781,16 @@ class Interpreter:
         return self.not_followed(f"str.{name}() of values not known statically", node)
 
 
-def _str(interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value],
-         node: ast.AST) -> Value:
+def _str(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
     return interpreter.stringify(args[0], node) if len(args) == 1 else ""
 
 
 def _convert(kind: type[int] | type[float] | type[bool]) -> Builtin:
-    def convert(interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value],
-                node: ast.AST) -> Value:
+    def convert(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
         if len(args) == 1 and isinstance(args[0], str | int | float | bool):
             try:
                 return kind(args[0])
@@ -781,15 +803,17 @@ def _convert(kind: type[int] | type[float] | type[bool]) -> Builtin:
     return convert
 
 
-def _len(interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value],
-         node: ast.AST) -> Value:
+def _len(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
     if len(args) == 1 and isinstance(args[0], str | list | tuple | dict):
         return len(args[0])
     return interpreter.not_followed("len() of a value not known statically", node)
 
 
-def _range(interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value],
-           node: ast.AST) -> Value:
+def _range(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
     if 1 <= len(args) <= 3 and all(isinstance(arg, int) for arg in args):
         numbers = range(*(int(arg) for arg in args if isinstance(arg, int)))
         if len(numbers) <= MAX_LENGTH:
@@ -798,8 +822,9 @@ def _range(interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value]
 
 
 def _collection(kind: type[list[Value]] | type[tuple[Value, ...]]) -> Builtin:
-    def collect(interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value],
-                node: ast.AST) -> Value:
+    def collect(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
         if not args:
             return kind()
         items = interpreter.iterate(args[0], node)
@@ -808,8 +833,9 @@ def _collection(kind: type[list[Value]] | type[tuple[Value, ...]]) -> Builtin:
     return collect
 
 
-def _dict_builtin(interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value],
-                  node: ast.AST) -> Value:
+def _dict_builtin(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
     result: dict[Key, Value] = dict(args[0]) if args and isinstance(args[0], dict) else {}
     if args and not isinstance(args[0], dict):
         return interpreter.not_followed("dict() of a value that is not a dict", node)
@@ -817,22 +843,25 @@ def _dict_builtin(interpreter: Interpreter, args: list[Value], kwargs: dict[str,
     return result
 
 
-def _enumerate(interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value],
-               node: ast.AST) -> Value:
+def _enumerate(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
     items = interpreter.iterate(args[0], node) if args else None
     return Unknown("enumerate()") if items is None else [(i, v) for i, v in enumerate(items)]
 
 
-def _zip(interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value],
-         node: ast.AST) -> Value:
+def _zip(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
     columns = [interpreter.iterate(arg, node) for arg in args]
     if any(column is None for column in columns):
         return Unknown("zip()")
     return [tuple(row) for row in zip(*(column or [] for column in columns), strict=False)]
 
 
-def _print(interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value],
-           node: ast.AST) -> Value:
+def _print(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
     return None
 
 

@@ -94,8 +94,10 @@ class _Reader:
         for name, value in fields.items():
             if name == CHILDREN_KEY and isinstance(value, SequenceNode):
                 entity.children.extend(self.children(entity.tag, value))
-            elif isinstance(value, SequenceNode) and value.value and (
-                isinstance(value.value[0], MappingNode)
+            elif (
+                isinstance(value, SequenceNode)
+                and value.value
+                and (isinstance(value.value[0], MappingNode))
             ):
                 entity.children.extend(self.nested(name, value))
             elif isinstance(value, ScalarNode) and value.tag == _STR_TAG:
@@ -121,8 +123,9 @@ class _Reader:
         nested: list[Entity] = []
         for item in items.value:
             if isinstance(item, MappingNode):
-                entity = Entity(tag, {}, _location(item.value[0][0] if item.value else item,
-                                                   self.filename))
+                entity = Entity(
+                    tag, {}, _location(item.value[0][0] if item.value else item, self.filename)
+                )
                 self.body(entity, item)
                 nested.append(entity)
             else:

@@ -1,14 +1,13 @@
-"""Interpret one ROS 2 entry launch file with given launch arguments."""
+"""Interpret one ROS 2 entry launch file: with given launch arguments, or over all of them."""
 
 from __future__ import annotations
 
-import os
-import re
 from collections.abc import Mapping
 
-from rosvar.files import FileRefused, read_file
 from rosvar.frontends import registry
+from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import Snapshot
+from rosvar.interpreter.domains import entry_declarations
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.ros2 import schema
@@ -44,54 +43,37 @@ def interpret(
         ROS2,
     )
     try:
-        context = Context(file)
-        context.configurations = {
-            name: Choice.const(space, value) for name, value in arguments.items()
-        }
-        context.env = {name: Choice.const(space, value) for name, value in env.items()}
         it.stack.append(file)
         root = it.load(file)
         if root is not None:
-            schema.check(it, root)
-            with it.at(root):
-                it.walk(root.children, context)
-                fire(it, context)
-        failing = space.false
-        for error in it.model.errors:
-            failing |= error.condition
-        it.model.loads = ~failing
-        it.model.diagnostics = it.sink.items
-        return it.model
+            context = Context(file)
+            context.configurations = {
+                name: Choice.const(space, value) for name, value in arguments.items()
+            }
+            context.env = {name: Choice.const(space, value) for name, value in env.items()}
+            walk_entry(it, root, context)
+        return it.finish()
     finally:
         it.close()
 
 
-ROS2_SUFFIXES = (".launch.py", ".launch.yaml")
-ROS2_MARKERS = re.compile(rb"\$\((var|find-pkg-share|find-pkg-prefix) |<node\b[^>]*\bexec=|<let\b")
-"""Texts no ROS 1 launch file has: ROS 2's substitutions, ``exec=`` on a node, ``<let>``."""
+def walk_entry(it: Interpretation, root: Entity, context: Context) -> None:
+    """Run the entry file's actions, then its timers, in ``context`` (the command line's
+    launch configurations)."""
+    schema.check(it, root)
+    with it.at(root):
+        it.walk(root.children, context)
+        fire(it, context)
 
 
-def is_ros2_launch(file: str) -> bool:
-    """Whether ``file`` is a ROS 2 launch file: a Python or YAML launch file, a file built
-    by ament (per the nearest ``package.xml`` above it) or one using ROS 2-only syntax.
-    A minimal hook until the workspace knows its ROS version."""
-    if file.endswith(ROS2_SUFFIXES):
-        return True
-    try:
-        if ROS2_MARKERS.search(read_file(file)):
-            return True
-    except (FileRefused, OSError):
-        return False
-    folder = os.path.dirname(os.path.abspath(file))
-    while True:
-        manifest = os.path.join(folder, "package.xml")
-        if os.path.isfile(manifest):
-            try:
-                text = read_file(manifest)
-            except (FileRefused, OSError):
-                return False
-            return re.search(rb"<build_type>\s*ament_", text) is not None
-        parent = os.path.dirname(folder)
-        if parent == folder:
-            return False
-        folder = parent
+def entry_context(it: Interpretation, file: str, root: Entity) -> Context:
+    """The context of ``ros2 launch file ...`` over every command line: each launch argument
+    the file declares is an input, not set where it is not given."""
+    names = list(
+        dict.fromkeys(
+            name for d in entry_declarations(root) if (name := d.get("name")) and "$" not in name
+        )
+    )
+    context = Context(file)
+    context.configurations = it.entry_args(file, names, None)
+    return context

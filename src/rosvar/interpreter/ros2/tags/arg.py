@@ -41,6 +41,8 @@ def arg(it: Interpretation, entity: Entity, context: Context) -> None:
             "arg-choice",
             f"argument '{name}' must be one of {allowed}",
         )
+    if len(it.stack) > 1:  # an included file's: not one of the command line's inputs
+        return
     it.model.args.append(
         ArgDecl(
             name,

@@ -97,6 +97,7 @@ def _declare(
     for key in FIELDS:
         value = it.attr(entity, key, context)
         fields[key] = none if value is None else optional(value)
+    fields["type"] = fields["exec"]  # the model's name for the executable (ROS 1's attribute)
     fields["ros_namespace"] = context.namespace or none
     fields["kind"] = Choice.const(it.space, kind)
     fields["container"] = container or none

@@ -1,0 +1,51 @@
+"""ROS 2 command lines: ``ros2 launch PKG FILE name:=value``, checked with ros2/launch."""
+
+from __future__ import annotations
+
+import json
+import shlex
+from pathlib import Path
+
+import pytest
+
+from oracle.ros2_client import requires_ros2_oracle, run_oracle
+from rosvar.outputs.cli import main
+
+pytestmark = requires_ros2_oracle
+
+
+ROS2_MANIFEST = """<package format="3"><name>pkg</name>
+<export><build_type>ament_cmake</build_type></export></package>"""
+ROS2_LAUNCH = """<launch>
+  <arg name="on" default="true"/>
+  <arg name="mode" default="fast"><choice value="fast"/><choice value="slow"/></arg>
+  <node pkg="pkg" exec="a" name="a_$(var mode)" if="$(var on)"/>
+  <node pkg="pkg" exec="b" name="b_$(var mode)" unless="$(var on)"/>
+</launch>"""
+
+
+def ros2_workspace(root: Path) -> Path:
+    package = root / "pkg"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text(ROS2_MANIFEST)
+    file = package / "launch" / "main.launch.xml"
+    file.write_text(ROS2_LAUNCH)
+    return file
+
+
+@pytest.mark.parametrize("on", ["true", "false"])
+def test_a_ros2_product_is_a_ros2_launch_command_the_oracle_loads(
+    on: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    file = ros2_workspace(tmp_path)
+    feature = "pkg/launch/main.launch.xml"
+    words = ["configure", str(tmp_path), "--select", feature, "--set", f"{feature}:on={on}"]
+    assert main([*words, "--set", f"{feature}:mode=slow", "--finish", "--json"]) == 0
+    state = json.loads(capsys.readouterr().out)
+    program, launch, package, name, *arguments = shlex.split(state["command"])
+    assert (program, launch, package, name) == ("ros2", "launch", "pkg", "main.launch.xml")
+    given = dict(word.split(":=", 1) for word in arguments)
+    expected = run_oracle(file, given, [tmp_path])
+    assert expected["ok"]
+    present = {n["name"] for n in state["graph"]["nodes"] if n["presence"] == "present"}
+    assert present == {n["fqn"] for n in expected["nodes"]} == {f"/{'ab'[on == 'false']}_slow"}
