@@ -59,9 +59,6 @@ SINGLE_RUN_FROM = 2_000  # workloads this large are timed once: one run is minut
 GENERATED_SIZES = (100, 400, 2_000, 10_000)
 GENERATED_PREFIXES = {"corpus": "gen", "uniform": "uni", "ros2": "ros2"}
 ROS2_FILES = 120  # bench/generate.py's ROS 2 workspace: 1,500 args, include trees 8 deep
-# The module that gives rosvar ROS 2 launch semantics (issue 19); until it exists the ROS 2
-# workload is listed as pending instead of measuring the ROS 1 interpreter on ROS 2 files.
-ROS2_INTERPRETER = "rosvar.interpreter.ros2"
 QUICK_SIZES = (100, 400)
 UNIFORM_SIZES = (400, 2_000)  # the issue's shape: 5 args, 5 conditional nodes, group, include
 GROWTH_KEY = "analyze_cpu_ms"  # CPU time: robust to other load on a shared machine
@@ -86,8 +83,6 @@ class Workload:
     package_path: str = ""
     size: int = 0  # nominal launch-file count (generated workloads); orders a family
     repeats: int = REPEATS
-    # Why the workload cannot be measured yet (a row with that note), or None.
-    pending: Callable[[], str | None] = lambda: None
 
 
 WORKLOADS: dict[str, Workload] = {}
@@ -133,14 +128,8 @@ for _size in UNIFORM_SIZES:
     register_workload(_generated(_size, "uniform"))
 
 
-def _ros2_pending() -> str | None:
-    if importlib.util.find_spec(ROS2_INTERPRETER) is None:
-        return f"pending: no ROS 2 analysis in rosvar yet ({ROS2_INTERPRETER})"
-    return None
-
-
 # One size, measured in every run like a corpus system (size 0: not one of --sizes).
-register_workload(replace(_generated(ROS2_FILES, "ros2"), size=0, pending=_ros2_pending))
+register_workload(replace(_generated(ROS2_FILES, "ros2"), size=0))
 
 
 # -- measurements inside the isolated process (run.py --one) -------------------------------
@@ -642,6 +631,11 @@ COMMANDS: list[Command] = [
         lambda _scratch: [*_rosvar_command(), "features", str(CORPUS / "husky"), str(EXTERNAL)],
         wall_s=2.0,
     ),
+    Command(
+        f"rosvar analyze ros2-{ROS2_FILES}",
+        _rosvar("analyze", workload=f"ros2-{ROS2_FILES}"),
+        wall_s=2.0,
+    ),
     Command("harosvar uni-400 (the paper's prototype)", _harosvar),
 ]
 
@@ -1115,8 +1109,7 @@ def write_doc(
         "stay within a system), 2–5 args, conditional nodes, groups and includes, parameter "
         "names shared within a package, inline `<rosparam>` YAML, include depth ≤ 4. "
         f"`ros2-{ROS2_FILES}` is `bench/generate.py --shape ros2`: a ROS 2 workspace of "
-        f"{ROS2_FILES} XML launch files with 1,500 args and include trees 8 deep, pending "
-        "until rosvar analyses ROS 2.",
+        f"{ROS2_FILES} XML launch files with 1,500 args and include trees 8 deep.",
         "- *in-process*: discover + `Analysis` + `all_models()` — what `rosvar analyze` does "
         "before printing — in a fresh subprocess (`bench/run.py --one`), parser cache "
         f"cleared and a new `Analysis` each run; median of {REPEATS} runs "
@@ -1204,10 +1197,6 @@ def run_all(options: argparse.Namespace) -> None:
             outcome = Outcome(workload)
             outcomes.append(outcome)
             print(f"{workload.name} ...", file=sys.stderr, flush=True)
-            why = workload.pending()
-            if why is not None:
-                outcome.notes.append(why)
-                continue
             roots: list[str] | None = None
             for name, measure in DRIVER_MEASUREMENTS.items():
                 key = (workload.family, name)
