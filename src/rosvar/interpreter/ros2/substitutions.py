@@ -18,6 +18,7 @@ from rosvar.interpreter.model import Raw
 from rosvar.interpreter.ros2.context import Context, optional
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
 from rosvar.logic.choice import Choice, Fail, combine, ite
+from rosvar.logic.terms import concat
 
 if TYPE_CHECKING:
     from rosvar.interpreter.interpretation import Interpretation
@@ -251,7 +252,14 @@ def _filename(host: Interpretation, context: Context, args: list[Raw]) -> Choice
 
 @substitution("command")
 def _command(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
-    return _fail(host, "$(command) is never run by rosvar", "command-not-run")
+    """Never run: the value is the text a dry run shows, ``$(command TEXT)`` (as the oracle
+    records it), so the launch around it is analysed; a warning says it is not known."""
+    if not 1 <= len(args) <= 2:
+        return _fail(
+            host, "$(command) takes a command and an optional on_stderr", "command-invalid"
+        )
+    host.warn("command-not-run", "$(command) is never run by rosvar: its output is not known")
+    return Choice.const(host.space, concat(["$(command ", args[0], ")"]))
 
 
 @substitution("eval")
