@@ -118,6 +118,7 @@ class ConditionSpace:
         self._facts_of: dict[str, list[BDD]] = {}
         self._fact_inputs: dict[str, set[Input]] = {}  # the inputs of the facts of a variable
         self._described: Memo[tuple[BDD, bool, bool, int], str] = Memo()
+        self._satisfiable: Memo[tuple[BDD, int], bool] = Memo()  # by condition and facts
         self._printer: Printer | None = None
         # Choice.const's constants of this space, by text: choices are immutable, and the
         # same literal is met again in every file that includes the one it is written in.
@@ -286,7 +287,16 @@ class ConditionSpace:
 
     # -- questions ---------------------------------------------------------------------
     def satisfiable(self, condition: BDD) -> bool:
-        return bool((condition & self.care(condition)) != self.false)
+        """Remembered: the checks ask again for the conditions their findings share."""
+        if condition == self.false:
+            return False
+        if condition == self.true:
+            return True
+        key = (condition, len(self._constraints))
+        found = self._satisfiable.get(key)
+        if found is None:
+            found = self._satisfiable[key] = bool((condition & self.care(condition)) != self.false)
+        return found
 
     def valid_implies(self, condition: BDD) -> bool:
         """True when every valid configuration satisfies ``condition``."""
