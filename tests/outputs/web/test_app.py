@@ -115,8 +115,12 @@ class App:
         ))  # fmt: skip
 
     def click_graph_element(self, element_id: str, double: bool = False) -> None:
-        """A real mouse click where the element is drawn on the canvas."""
+        """A real mouse click where the element is drawn on the canvas (once it is drawn:
+        centring the view on an element that is gone puts NaN into the pan)."""
         self.wait_for_layout()
+        self.page.wait_for_function(
+            "(id) => window.rosvar.graph.cy.getElementById(id).length > 0", arg=element_id
+        )
         self.page.evaluate(
             "(id) => window.rosvar.graph.cy.center(window.rosvar.graph.cy.getElementById(id))",
             element_id,
@@ -316,7 +320,9 @@ def test_clicking_a_graph_element_shows_its_details(page: Any, examples: Live) -
     robot = file_named(app.state, "robot.launch")
     app.choose(robot, "select")  # a step does not bring the closed details back
     assert details.is_hidden()
-    app.click_graph_element(unit["id"])
+    app.wait_for_layout()
+    again = next(u for u in app.units("node") if u["element"]["id"] == node["id"])
+    app.click_graph_element(again["id"])
     assert details.is_visible()
 
 
