@@ -19,6 +19,7 @@ import string
 from collections.abc import Callable, Iterator
 from typing import Any
 
+from rosvar.arithmetic import ARITHMETIC
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros2_python.actions import add_actions
@@ -74,14 +75,6 @@ class OutOfBudget(Exception):
 
 
 _SCALARS = (str, int, float, bool, type(None))
-_BINARY: dict[type[ast.operator], Callable[[Any, Any], Any]] = {
-    ast.Add: operator.add,
-    ast.Sub: operator.sub,
-    ast.Mult: operator.mul,
-    ast.Div: operator.truediv,
-    ast.FloorDiv: operator.floordiv,
-    ast.Mod: operator.mod,
-}
 _COMPARE: dict[type[ast.cmpop], Callable[[Any, Any], Any]] = {
     ast.Eq: operator.eq,
     ast.NotEq: operator.ne,
@@ -422,7 +415,7 @@ class Interpreter:
         if isinstance(op, ast.Div) and isinstance(left, Text) and isinstance(right, str | Text):
             return join_path(left, Text.of(right))  # PathSubstitution(...) / 'config'
 
-        function = _BINARY.get(type(op))
+        function = ARITHMETIC.get(type(op))
         if function is not None and _constant(left) and _constant(right):
             if self._too_large(op, left, right):
                 return self.not_followed("a value too large to compute", node)

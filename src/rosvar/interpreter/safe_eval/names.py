@@ -11,6 +11,8 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Final
 
+from rosvar.arithmetic import ARITHMETIC
+
 
 @dataclass(frozen=True)
 class EvalEnvironment:
@@ -63,12 +65,7 @@ _CONVERSION_FUNCTIONS: Final = frozenset({"str", "int", "float"})
 _CASE_METHODS: Final = frozenset({"lower", "upper", "strip", "lstrip", "rstrip"})
 
 _BIN_OPS: Final[Mapping[type[ast.operator], Callable[[Any, Any], Any]]] = {
-    ast.Add: operator.add,
-    ast.Sub: operator.sub,
-    ast.Mult: operator.mul,
-    ast.Div: operator.truediv,
-    ast.FloorDiv: operator.floordiv,
-    ast.Mod: operator.mod,
+    **ARITHMETIC,
     ast.Pow: operator.pow,
     ast.LShift: operator.lshift,
     ast.RShift: operator.rshift,
