@@ -519,6 +519,18 @@ def test_analyze_marks_a_cut_path(ws: LaunchWorkspace, capsys: pytest.CaptureFix
     assert shown.startswith("…") and os.path.relpath(path).endswith(shown[1:])
 
 
+def test_analyze_reports_a_shared_file_s_problem_once(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    shared = ws.launch("shared.launch", "  <bogus/>")
+    for name in ("a.launch", "b.launch"):
+        ws.launch(name, '  <include file="$(find pkg)/launch/shared.launch"/>')
+    _code, out, _err = run(capsys, "analyze", str(ws.root))
+    shown = [line for line in out.splitlines() if "[tag-unknown]" in line]
+    assert len(shown) == 1 and shared in shown[0]
+    assert "\n1 diagnostics (0 errors)" in out
+
+
 def test_configure_summarises_a_clash_of_many_params(
     ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
 ) -> None:

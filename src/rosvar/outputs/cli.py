@@ -107,7 +107,8 @@ def cmd_analyze(options: argparse.Namespace) -> int:
             document = {"files": [describe_model(m) for m in models]}
         _print_json(document)
         return EXIT_OK
-    diagnostics = [d for m in models for d in m.diagnostics]
+    # a file included by several entry files reports its problems once per entry file: once here
+    diagnostics = list(dict.fromkeys(d for m in models for d in m.diagnostics))
     print(f"{len(models)} launch files, {len(workspace.packages)} packages")
     print(f"{'file':<60} {'args':>5} {'nodes':>6} {'params':>7} {'errors':>7}")
     for model in models:
