@@ -25,6 +25,7 @@ from rosvar.analyses.communication import (
     LaunchedNode,
     entry_names,
     find_interface,
+    node_fields,
 )
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
@@ -430,16 +431,15 @@ class VariationalGraph:
         interface, each use an edge of its topic, service or action (judged as a part of
         it); names known statically only."""
         assert self.interfaces is not None
-        keys = ("pkg", "type", "namespace", "name", "args")
-        texts = [raw.get(key) for key in keys]
-        if not all(text is None or isinstance(text, str) for text in texts):
+        fields = {key: raw.get(key) for key in node_fields(node)}
+        if not all(text is None or isinstance(text, str) for text in fields.values()):
             return
-        package, type_, namespace, name, args = (str(text or "") for text in texts)
-        launched = LaunchedNode(package, type_, namespace, name, args, ())
+        launched = LaunchedNode.of(fields)
         unit = launched.unit()
         interface = None if unit is None else find_interface(self.interfaces, unit)
         if interface is None:
             return
+        launched = launched.named(interface)
         remaps = [(remap.condition, remap.source, remap.target) for remap in node.remaps]
         for entry in interface.entries:
             channel = CHANNEL.get(entry.role)
