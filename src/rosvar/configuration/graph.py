@@ -53,6 +53,7 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
+from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
 Fields = dict[str, object]
@@ -413,9 +414,12 @@ class VariationalGraph:
         self, element: Element, raw: Mapping[str, Raw | None], remaps: list[_Setting]
     ) -> None:
         symbolic = Values({}, None)
+        namespace, pushed = raw.get("namespace"), raw.get("ros_namespace")
+        if isinstance(pushed, str) and (namespace is None or isinstance(namespace, str)):
+            namespace = make_absolute(prefix_namespace(pushed, namespace))  # ROS 2's pushed
         for _source, target, part in remaps:
             used = element.condition if part is None else element.parts[part].condition
-            raws = (raw.get("namespace"), raw.get("name"), target)
+            raws = (namespace, raw.get("name"), target)
             topic = _topic_name(symbolic, *raws)
             # a name that reads args is the entry file's own: another file's ⟨scan⟩ is
             # another arg, and its string is known only with that file's choices

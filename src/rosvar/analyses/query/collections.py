@@ -157,7 +157,7 @@ def _full_name(parts: Sequence[object]) -> str | None:
         pushed, namespace, name = parts
         return full_name(pushed or None, namespace or None, name)  # type: ignore[arg-type]
     namespace, name = parts
-    return names.ns_join(namespace, name)  # type: ignore[arg-type]  # ROS 1: always set
+    return names.ns_join("/" if namespace is None else namespace, name)  # type: ignore[arg-type]
 
 
 def _namespace(parts: Sequence[object]) -> object:
