@@ -30,6 +30,7 @@ from rosvar.outputs.cli import (
     main,
     parser,
 )
+from workspace.interfaces.ros2_packages import MANIFEST, write_ros2_packages
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -643,3 +644,51 @@ def test_resolve_shows_the_communication_graph(
     ]  # fmt: skip
     _code, out, _err = run(capsys, "resolve", str(ws.root), "--launch", file)
     assert "topic   /out [std_msgs/String]: /robot/talker → -" in out.splitlines()
+
+
+def test_ros2_communication_graph_in_resolve_and_configure(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """ROS 2 nodes' interfaces give ``resolve`` its topics, services and actions, and the
+    configuration graph the same names (and the targets of remaps, as for ROS 1)."""
+    write_ros2_packages(tmp_path)
+    bringup = tmp_path / "demo_bringup"
+    bringup.mkdir()
+    (bringup / "package.xml").write_text(MANIFEST.format(name="demo_bringup", build="ament_cmake"))
+    (bringup / "demo.launch.xml").write_text(
+        """<launch><arg name="ns" default="r1"/>
+        <push_ros_namespace namespace="$(var ns)"/>
+        <node pkg="demo_cpp" exec="talker"><remap from="/reset" to="/robot_reset"/></node>
+        <node pkg="demo_py" exec="listener" namespace="/"/></launch>"""
+    )
+    launch = ("--launch", "demo_bringup", "demo.launch.xml")
+    code, out, _err = run(capsys, "resolve", str(tmp_path), *launch, "--json")
+    assert code == EXIT_OK
+    document = json.loads(out)
+    topics = {t["name"]: (t["publishers"], t["subscribers"]) for t in document["topics"]}
+    assert topics == {
+        "/chatter": ([], ["/listener"]),
+        "/listener/echo": (["/listener"], []),
+        "/r1/chatter": (["/r1/talker"], []),
+        "/r1/talker/control": ([], ["/r1/talker"]),
+    }
+    assert [(s["name"], s["clients"]) for s in document["services"]] == [
+        ("/reset", []),
+        ("/robot_reset", ["/r1/talker"]),
+    ]
+    assert [a["name"] for a in document["actions"]] == ["/fibonacci", "/r1/fibonacci"]
+    code, out, _err = run(
+        capsys,
+        "configure",
+        str(tmp_path),
+        "--select",
+        "demo_bringup/demo.launch.xml",
+        "--finish",
+        "--json",
+    )
+    assert code == EXIT_OK
+    graph = json.loads(out)["graph"]
+    configured = {t["name"] for t in graph["topics"] if t["presence"] == "present"}
+    assert configured - set(topics) == {"/robot_reset"}  # a remap's target
+    assert set(topics) <= configured
+    assert {s["name"] for s in graph["services"]} == {"/reset", "/robot_reset"}

@@ -415,8 +415,11 @@ class VariationalGraph:
     ) -> None:
         symbolic = Values({}, None)
         namespace, pushed = raw.get("namespace"), raw.get("ros_namespace")
-        if isinstance(pushed, str) and (namespace is None or isinstance(namespace, str)):
-            namespace = make_absolute(prefix_namespace(pushed, namespace))  # ROS 2's pushed
+        if "ros_namespace" in raw and all(
+            v is None or isinstance(v, str) for v in (namespace, pushed)
+        ):
+            # ROS 2: the pushed namespace and the node's, combined and absolute
+            namespace = make_absolute(prefix_namespace(pushed, namespace)) or names.SEP  # type: ignore[arg-type]
         for _source, target, part in remaps:
             used = element.condition if part is None else element.parts[part].condition
             raws = (namespace, raw.get("name"), target)
