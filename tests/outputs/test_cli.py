@@ -692,3 +692,30 @@ def test_ros2_communication_graph_in_resolve_and_configure(
     assert configured - set(topics) == {"/robot_reset"}  # a remap's target
     assert set(topics) <= configured
     assert {s["name"] for s in graph["services"]} == {"/reset", "/robot_reset"}
+
+
+def test_ros2_hints_give_interfaces(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """A ROS 2 node no source defines gets its interface from the hints' ``nodes:``, as in
+    ROS 1, a component by its class."""
+    package = tmp_path / "p"
+    package.mkdir()
+    (package / "package.xml").write_text(MANIFEST.format(name="p", build="ament_cmake"))
+    (package / "a.launch.xml").write_text(
+        """<launch><push_ros_namespace namespace="r1"/>
+        <node pkg="joy" exec="joy_node" name="joy"><remap from="joy" to="/joy_in"/></node>
+        <node_container pkg="rclcpp_components" exec="component_container" name="c">
+          <composable_node pkg="teleop" plugin="teleop::Joy" name="teleop"/>
+        </node_container></launch>"""
+    )
+    hints = tmp_path / "hints.yaml"
+    hints.write_text(
+        "nodes:\n"
+        "  joy/joy_node:\n"
+        "    publishes: [{name: joy, type: sensor_msgs/msg/Joy}]\n"
+        "  teleop/teleop::Joy:\n"
+        "    subscribes: [{name: /joy_in, type: sensor_msgs/msg/Joy}]\n"
+    )
+    query = "topics[len(self.publishers) == 1 and len(self.subscribers) == 1]"
+    code, out, _err = run(capsys, "query", str(tmp_path), query, "--json", "--hints", str(hints))
+    assert code == EXIT_OK
+    assert [result["name"] for result in json.loads(out)["results"]] == ["/joy_in"]
