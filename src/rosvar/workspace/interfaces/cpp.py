@@ -930,7 +930,7 @@ class _Collector:
                     self._construction(_text(type_node), _arguments(node), function, node)
             elif node.type == "field_initializer":
                 name = _text(node.named_children[0])
-                if name in ("Node", "rclcpp::Node"):  # the base class: the node's name
+                if _last(name) in ("Node", "LifecycleNode"):  # the base class: the node's name
                     self._node_name(_arguments(node), function)
                 self._construction(self.unit.fields.get(name, ""), _arguments(node), function, node)
             else:
