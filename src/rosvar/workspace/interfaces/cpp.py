@@ -1045,11 +1045,9 @@ class _Collector:
         declaration or read); whether ``method`` is one."""
         if not arguments:
             return False
-        templates = _template_arguments(callee)
         if method in _RCLCPP_CALLS:
-            self.add(
-                _RCLCPP_CALLS[method], None, arguments[0], function, at, self._first_type(templates)
-            )
+            message = self._first_type(_template_arguments(callee))
+            self.add(_RCLCPP_CALLS[method], None, arguments[0], function, at, message)
         elif method == _RCLCPP_DECLARE:
             default = (
                 _default(arguments[1], self.evaluator, function) if len(arguments) > 1 else None
