@@ -9,6 +9,8 @@ from typing import TYPE_CHECKING
 import pytest
 
 from rosvar.analyses.communication import (
+    JSON_SIDES,
+    Channel,
     Edge,
     LaunchedNode,
     graph_json,
@@ -17,6 +19,7 @@ from rosvar.analyses.communication import (
     restrict,
 )
 from rosvar.analyses.resolve import Restriction, resolve
+from rosvar.analyses.ros2.resolve import resolve_ros2
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
@@ -24,6 +27,7 @@ from rosvar.workspace.interfaces.catalogue import load_catalogue
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Entry, Interfaces, Role
 from rosvar.workspace.interfaces.overrides import add_catalogue
+from workspace.interfaces.ros2_packages import MANIFEST, write_ros2_packages
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -197,3 +201,125 @@ def test_camera_info_lies_beside_the_remapped_image(ws: LaunchWorkspace) -> None
         kept = restrict(edges, Restriction(analysis, model, {"relay": relay}, {}).holds)
         uses = [(e.node, e.role, e.name, e.type) for e in kept]
         assert graph_json(uses) == resolved_graph(resolution.nodes, interfaces)
+
+
+ROS2_LAUNCH = """\
+<launch>
+  <arg name="robot" default="r1"/>
+  <arg name="relay" default="false"/>
+  <set_remap from="/reset" to="/robot_reset"/>
+  <group>
+    <push_ros_namespace namespace="$(var robot)"/>
+    <node pkg="demo_cpp" exec="talker" namespace="arm">
+      <remap from="chatter" to="/relayed" if="$(var relay)"/>
+    </node>
+    <node pkg="demo_py" exec="listener" name="ear"/>
+  </group>
+  <node_container pkg="rclcpp_components" exec="component_container" name="box" namespace="cam">
+    <composable_node pkg="demo_cpp" plugin="demo_cpp::Camera" name="front" namespace="cam">
+      <remap from="image_raw" to="image"/>
+    </composable_node>
+  </node_container>
+  <node pkg="demo_cpp" exec="talker" name="second">
+    <remap from="/reset" to="/second_reset"/>
+  </node>
+</launch>
+"""
+
+
+def _ros2_setup(tmp_path: Path) -> tuple[Analysis, str, Interfaces, list[Edge]]:
+    write_ros2_packages(tmp_path)
+    launch = tmp_path / "demo_bringup"
+    launch.mkdir()
+    (launch / "package.xml").write_text(MANIFEST.format(name="demo_bringup", build="ament_cmake"))
+    (launch / "demo.launch.xml").write_text(ROS2_LAUNCH)
+    analysis = Analysis(discover([tmp_path]), extra_values={"robot": ["r2"]})
+    file = str(launch / "demo.launch.xml")
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    return analysis, file, interfaces, model_edges(analysis.space, analysis.model(file), interfaces)
+
+
+def test_ros2_graph_is_the_interfaces_resolved(tmp_path: Path) -> None:
+    """ROS 2's names: the pushed namespace and the node's combined, the code's node name
+    where the launch file gives none, ``~/x`` below the node, the first matching remap
+    (the global ``set_remap`` before the node's own), a composable node's plugin."""
+    analysis, file, interfaces, _edges = _ros2_setup(tmp_path)
+    nodes = resolve_ros2(analysis.workspace, file, {}).nodes
+    graph = resolved_graph(nodes, interfaces)
+    pairs = {
+        str(channel): {
+            e["name"]: tuple(e[side] for side in JSON_SIDES[channel]) for e in graph[channel]
+        }
+        for channel in Channel
+    }
+    talker, ear, front, second = "/r1/arm/talker", "/r1/ear", "/cam/front", "/second"
+    assert pairs == {
+        "topics": {
+            "/r1/arm/chatter": ([talker], []),
+            "/r1/arm/talker/control": ([], [talker]),
+            "/r1/chatter": ([], [ear]),
+            "/r1/ear/echo": ([ear], []),
+            "/cam/image": ([front], []),
+            "/cam/camera_info": ([front], []),
+            "/cam/mask": ([], [front]),
+            "/chatter": ([second], []),
+            "/second/control": ([], [second]),
+        },
+        "services": {
+            "/robot_reset": ([], [talker, second]),
+            "/r1/reset": ([ear], []),
+            "/cam/enable": ([front], []),
+        },
+        "actions": {
+            "/r1/arm/fibonacci": ([talker], []),
+            "/fibonacci": ([second], [ear]),
+        },
+    }
+
+
+def test_ros2_restricted_graph_equals_resolved_graph(tmp_path: Path) -> None:
+    """Differential, as for ROS 1: the variational edges of a configuration are the graph of
+    the nodes ``ros2 launch`` would start (``rosvar resolve``'s)."""
+    analysis, file, interfaces, edges = _ros2_setup(tmp_path)
+    model = analysis.model(file)
+    for robot, relay in itertools.product(["r1", "r2"], ["true", "false"]):
+        args = {"robot": robot, "relay": relay}
+        resolution = resolve_ros2(analysis.workspace, file, args)
+        assert resolution.ok
+        kept = restrict(edges, Restriction(analysis, model, args, {}).holds)
+        assert all(e.static for e in kept)
+        uses = [(e.node, e.role, e.name, e.type) for e in kept]
+        expected = resolved_graph(resolution.nodes, interfaces)
+        assert graph_json(uses) == expected
+        assert any(t["name"] == f"/{robot}/chatter" for t in expected["topics"])
+        relayed = any(t["name"] == "/relayed" for t in expected["topics"])
+        assert relayed == (relay == "true")
+
+
+@pytest.mark.parametrize(
+    ("namespace", "name", "written", "resolved"),
+    [
+        ("/", "n", "x", "/x"),
+        ("/a", "n", "x", "/a/x"),
+        ("/a", "n", "~/x", "/a/n/x"),
+        ("/a", "n", "~", "/a/n"),
+        ("/a", "n", "/x", "/x"),
+    ],
+)
+def test_ros2_names_resolve_as_rcl_does(
+    namespace: str, name: str, written: str, resolved: str
+) -> None:
+    node = LaunchedNode("p", "t", namespace, name, "", (), ros2=True)
+    assert node.resolve(written) == resolved
+
+
+def test_ros2_namespaces_compose() -> None:
+    def node(pushed: str | None, namespace: str | None) -> LaunchedNode:
+        fields = {"pkg": "p", "type": "t", "name": "n", "ros_namespace": pushed}
+        return LaunchedNode.of({**fields, "namespace": namespace})
+
+    assert node(None, None).full_name == "/n"
+    assert node("/r1", None).full_name == "/r1/n"
+    assert node("/r1", "arm").full_name == "/r1/arm/n"
+    assert node("/r1", "/arm").full_name == "/arm/n"
+    assert node(None, "arm/").full_name == "/arm/n"

@@ -30,6 +30,7 @@ from rosvar.outputs.cli import (
     main,
     parser,
 )
+from workspace.interfaces.ros2_packages import MANIFEST, write_ros2_packages
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -655,3 +656,78 @@ def test_resolve_shows_the_communication_graph(
     ]  # fmt: skip
     _code, out, _err = run(capsys, "resolve", str(ws.root), "--launch", file)
     assert "topic   /out [std_msgs/String]: /robot/talker → -" in out.splitlines()
+
+
+def test_ros2_communication_graph_in_resolve_and_configure(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """ROS 2 nodes' interfaces give ``resolve`` its topics, services and actions, and the
+    configuration graph the same names (and the targets of remaps, as for ROS 1)."""
+    write_ros2_packages(tmp_path)
+    bringup = tmp_path / "demo_bringup"
+    bringup.mkdir()
+    (bringup / "package.xml").write_text(MANIFEST.format(name="demo_bringup", build="ament_cmake"))
+    (bringup / "demo.launch.xml").write_text(
+        """<launch><arg name="ns" default="r1"/>
+        <push_ros_namespace namespace="$(var ns)"/>
+        <node pkg="demo_cpp" exec="talker"><remap from="/reset" to="/robot_reset"/></node>
+        <node pkg="demo_py" exec="listener" namespace="/"/></launch>"""
+    )
+    launch = ("--launch", "demo_bringup", "demo.launch.xml")
+    code, out, _err = run(capsys, "resolve", str(tmp_path), *launch, "--json")
+    assert code == EXIT_OK
+    document = json.loads(out)
+    topics = {t["name"]: (t["publishers"], t["subscribers"]) for t in document["topics"]}
+    assert topics == {
+        "/chatter": ([], ["/listener"]),
+        "/listener/echo": (["/listener"], []),
+        "/r1/chatter": (["/r1/talker"], []),
+        "/r1/talker/control": ([], ["/r1/talker"]),
+    }
+    assert [(s["name"], s["clients"]) for s in document["services"]] == [
+        ("/reset", []),
+        ("/robot_reset", ["/r1/talker"]),
+    ]
+    assert [a["name"] for a in document["actions"]] == ["/fibonacci", "/r1/fibonacci"]
+    code, out, _err = run(
+        capsys,
+        "configure",
+        str(tmp_path),
+        "--select",
+        "demo_bringup/demo.launch.xml",
+        "--finish",
+        "--json",
+    )
+    assert code == EXIT_OK
+    graph = json.loads(out)["graph"]
+    configured = {t["name"] for t in graph["topics"] if t["presence"] == "present"}
+    assert configured - set(topics) == {"/robot_reset"}  # a remap's target
+    assert set(topics) <= configured
+    assert {s["name"] for s in graph["services"]} == {"/reset", "/robot_reset"}
+
+
+def test_ros2_hints_give_interfaces(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """A ROS 2 node no source defines gets its interface from the hints' ``nodes:``, as in
+    ROS 1, a component by its class."""
+    package = tmp_path / "p"
+    package.mkdir()
+    (package / "package.xml").write_text(MANIFEST.format(name="p", build="ament_cmake"))
+    (package / "a.launch.xml").write_text(
+        """<launch><push_ros_namespace namespace="r1"/>
+        <node pkg="joy" exec="joy_node" name="joy"><remap from="joy" to="/joy_in"/></node>
+        <node_container pkg="rclcpp_components" exec="component_container" name="c">
+          <composable_node pkg="teleop" plugin="teleop::Joy" name="teleop"/>
+        </node_container></launch>"""
+    )
+    hints = tmp_path / "hints.yaml"
+    hints.write_text(
+        "nodes:\n"
+        "  joy/joy_node:\n"
+        "    publishes: [{name: joy, type: sensor_msgs/msg/Joy}]\n"
+        "  teleop/teleop::Joy:\n"
+        "    subscribes: [{name: /joy_in, type: sensor_msgs/msg/Joy}]\n"
+    )
+    query = "topics[len(self.publishers) == 1 and len(self.subscribers) == 1]"
+    code, out, _err = run(capsys, "query", str(tmp_path), query, "--json", "--hints", str(hints))
+    assert code == EXIT_OK
+    assert [result["name"] for result in json.loads(out)["results"]] == ["/joy_in"]

@@ -392,5 +392,5 @@ def _param_reads(
             ],
         )
         for condition, launched, interface, static in launched_units(space, node, interfaces)
-        if static
+        if static and not launched.ros2  # ROS 2's parameters are the node's own, not global
     ]

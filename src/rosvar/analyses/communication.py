@@ -2,10 +2,13 @@
 name, in every configuration at once.
 
 A launched node is matched to its interface by (package, executable), a nodelet loaded with
-``args="load pkg/Class manager"`` by its class. Each name of the interface is resolved as the
-node does at run time (roscpp ``names::resolve``, rospy alike): ``/x`` is global, ``~x`` lies
-under the node's own name, ``x`` under its namespace; then the node's remappings (whose two
-sides are resolved the same way) replace it. Every field of ``<node>`` may vary between
+``args="load pkg/Class manager"`` by its class, a ROS 2 composable node by its ``plugin``.
+Each name of the interface is resolved as the node does at run time (roscpp
+``names::resolve``, rospy alike): ``/x`` is global, ``~x`` lies under the node's own name,
+``x`` under its namespace; then the node's remappings (whose two sides are resolved the same
+way) replace it: the last one of a name in ROS 1, the first in ROS 2 (rcl), where the pushed
+namespaces and the global remaps (``<set_remap>``, before the node's own) count too and
+``~/x`` is the private name. Every field of ``<node>`` may vary between
 configurations, and each remap has its own condition: each use of a name becomes *edges*,
 one per resolved name, each with the condition under which the node has it.
 
@@ -18,7 +21,8 @@ from __future__ import annotations
 
 import enum
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from typing import TypeVar
 
 from rosvar.analyses.when import when_condition
 from rosvar.diagnostics import Location
@@ -27,7 +31,10 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
+from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace
 from rosvar.workspace.interfaces.model import Entry, Interfaces, NodeInterface, Role
+
+_R = TypeVar("_R")
 
 
 class Channel(enum.StrEnum):
@@ -58,24 +65,61 @@ JSON_SIDES: dict[Channel, tuple[str, str]] = {
 }
 
 
+FIELDS = ("pkg", "type", "namespace", "name", "args")
+"""The fields of a ``<node>`` that say what runs where (:meth:`LaunchedNode.of`)."""
+ROS2_FIELDS = (*FIELDS, "ros_namespace", "plugin")
+"""ROS 2's: the namespace pushed around the node, a composable node's class."""
+
+
+def node_fields(node: NodeDecl) -> tuple[str, ...]:
+    """The fields :meth:`LaunchedNode.of` reads of ``node`` (a ROS 2 declaration carries the
+    pushed namespace)."""
+    return ROS2_FIELDS if "ros_namespace" in node.fields else FIELDS
+
+
 @dataclass(frozen=True)
 class LaunchedNode:
     """A ``<node>`` as one configuration (or one branch of its fields) has it."""
 
     package: str
     type: str
-    namespace: str
-    name: str
+    namespace: str  # ROS 2: the pushed and the node's own, combined and absolute
+    name: str  # ROS 2: empty when the launch file gives none (the code's, :meth:`named`)
     args: str
-    remaps: Sequence[tuple[str, str]]  # in order: a later remap of one name wins
+    remaps: Sequence[tuple[str, str]]  # in order: a later remap of one name wins (ROS 2: first)
+    plugin: str = ""  # a ROS 2 composable node's class
+    ros2: bool = False
+
+    @staticmethod
+    def of(fields: Mapping[str, object], remaps: Sequence[tuple[str, str]] = ()) -> LaunchedNode:
+        """The node of field values (those of :func:`node_fields`; absent ones None)."""
+        package, type_, namespace, name, args = (_text(fields.get(key)) for key in FIELDS)
+        if "ros_namespace" not in fields:
+            return LaunchedNode(package, type_, namespace, name, args, remaps)
+        pushed = _text(fields.get("ros_namespace")) or None
+        combined = make_absolute(prefix_namespace(pushed, namespace or None)) or names.SEP
+        plugin = _text(fields.get("plugin"))
+        return LaunchedNode(package, type_, combined, name, args, remaps, plugin, ros2=True)
+
+    def named(self, interface: NodeInterface) -> LaunchedNode:
+        """ROS 2: without a launch ``name``, the node has the one its code gives it
+        (``{executable}`` when the code does not say statically)."""
+        if not self.ros2 or self.name:
+            return self
+        return replace(self, name=interface.node_name or "{" + interface.executable + "}")
 
     @property
     def full_name(self) -> str:
+        if self.ros2:
+            return self.namespace.rstrip(names.SEP) + names.SEP + self.name
         return names.ns_join(self.namespace, self.name)
 
     def unit(self) -> tuple[str, str] | None:
         """The (package, executable) whose interface this node runs; a loaded nodelet's
-        class, with an empty package (a class is named ``pkg/Class`` already)."""
+        class, with an empty package (a class is named ``pkg/Class`` already); a ROS 2
+        composable node's class."""
+        if self.ros2:
+            return self.package, self.plugin or self.type
         words = self.args.split()
         if self.package == "nodelet" and self.type == "nodelet":
             if len(words) >= 2 and words[0] in ("load", "standalone"):
@@ -85,9 +129,13 @@ class LaunchedNode:
 
     def resolve(self, name: str) -> str:
         """``name`` (as the source writes it) as the node resolves it, before remapping."""
-        if names.is_private(name):
+        if names.is_private(name):  # ROS 2 writes it ~/x
             return names.canonicalize_name(self.full_name + names.SEP + name[1:])
         return names.canonicalize_name(names.ns_join(self.namespace or names.SEP, name))
+
+    def remap_order(self, remaps: Sequence[_R]) -> Iterable[_R]:
+        """``remaps`` in the order they are tried: the first that matches wins."""
+        return remaps if self.ros2 else reversed(remaps)
 
 
 @dataclass(frozen=True)
@@ -129,18 +177,17 @@ def launched_units(
 ) -> Iterator[tuple[BDD, LaunchedNode, NodeInterface, bool]]:
     """Per branch of a ``<node>``'s fields: its condition, the node, the interface it runs
     and whether every field is known statically (nodes without a known interface skipped)."""
-    keys = ("pkg", "type", "namespace", "name", "args")
+    keys = node_fields(node)
     for condition, values in combine([node.field(key) for key in keys], list):
         condition &= node.condition
         if condition == space.false:
             continue
-        package, type_, namespace, name, args = (_text(value) for value in values)
-        launched = LaunchedNode(package, type_, namespace, name, args, remaps=())
+        launched = LaunchedNode.of(dict(zip(keys, values, strict=True)))
         unit = launched.unit()
         interface = None if unit is None else find_interface(interfaces, unit)
         if interface is not None:
             static = all(value is None or isinstance(value, str) for value in values)
-            yield condition, launched, interface, static
+            yield condition, launched.named(interface), interface, static
 
 
 def node_edges(
@@ -199,7 +246,7 @@ def _edge(
     )
 
 
-def _text(value: Raw | None) -> str:
+def _text(value: object) -> str:
     return "" if value is None else value if isinstance(value, str) else "{" + str(value) + "}"
 
 
@@ -207,13 +254,13 @@ def remapped(
     node: LaunchedNode, remaps: Sequence[tuple[BDD, Raw, Raw]], name: str, when: BDD
 ) -> list[tuple[BDD, str]]:
     """The names ``name`` becomes under ``when``, each with its condition: the last remap
-    (condition, from, to) that holds of those whose source resolves to it wins, else the
-    name stays."""
+    (condition, from, to) that holds of those whose source resolves to it wins (ROS 2: the
+    first), else the name stays."""
     resolved = node.resolve(name)
     outcomes: list[tuple[BDD, str]] = []
     false = when.bdd.false
     remaining = when
-    for condition, source, target in reversed(remaps):
+    for condition, source, target in node.remap_order(remaps):
         if node.resolve(_text(source)) != resolved:
             continue
         taken = remaining & condition
@@ -236,24 +283,19 @@ def restrict(edges: Iterable[Edge], holds: Callable[[BDD], bool]) -> list[Edge]:
 def resolved_graph(
     nodes: Iterable[Mapping[str, object]], interfaces: Interfaces
 ) -> dict[str, list[dict[str, object]]]:
-    """``topics``, ``services`` and ``actions`` of resolved nodes (``rosvar resolve``'s)."""
+    """``topics``, ``services`` and ``actions`` of resolved nodes (``rosvar resolve``'s, ROS
+    1's or ROS 2's nodes)."""
     uses: list[tuple[str, Role, str, str | None]] = []
     for node in nodes:
-        remaps = node.get("remaps") or []
-        assert isinstance(remaps, list)
-        launched = LaunchedNode(
-            str(node.get("package") or ""),
-            str(node.get("type") or ""),
-            str(node.get("namespace") or ""),
-            str(node["name"]).rsplit(names.SEP, 1)[-1],
-            str(node.get("args") or ""),
-            [(str(a), str(b)) for a, b in remaps],
-        )
+        launched = _resolved_node(node)
         unit = launched.unit()
         interface = None if unit is None else find_interface(interfaces, unit)
         if interface is None:
             continue
-        table = {launched.resolve(a): launched.resolve(b) for a, b in launched.remaps}
+        launched = launched.named(interface)
+        table: dict[str, str] = {}
+        for a, b in launched.remap_order(launched.remaps):
+            table.setdefault(launched.resolve(a), launched.resolve(b))
         for entry in interface.entries:
             if entry.role in CHANNEL:
                 resolved = launched.resolve(entry.beside or entry.name)
@@ -261,6 +303,32 @@ def resolved_graph(
                 name = name if entry.beside is None else _beside(name)
                 uses.append((launched.full_name, entry.role, name, entry.type))
     return graph_json(uses)
+
+
+def _resolved_node(node: Mapping[str, object]) -> LaunchedNode:
+    """A node of ``rosvar resolve`` (ROS 2's carry their ``executable``, their namespace
+    already composed)."""
+    if "executable" not in node:
+        remaps = node.get("remaps") or []
+        assert isinstance(remaps, list)
+        fields = {
+            "pkg": node.get("package"),
+            "type": node.get("type"),
+            "namespace": node.get("namespace"),
+            "name": str(node["name"]).rsplit(names.SEP, 1)[-1],
+            "args": node.get("args"),
+        }
+        return LaunchedNode.of(fields, [(str(a), str(b)) for a, b in remaps])
+    remaps = node.get("remappings") or []
+    assert isinstance(remaps, list)
+    fields = {
+        "pkg": node.get("package"),
+        "type": node.get("executable"),
+        "ros_namespace": node.get("namespace"),
+        "name": node.get("name"),
+        "plugin": node.get("plugin"),
+    }
+    return LaunchedNode.of(fields, [(str(a), str(b)) for a, b in remaps])
 
 
 def graph_json(

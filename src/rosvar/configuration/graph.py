@@ -25,6 +25,7 @@ from rosvar.analyses.communication import (
     LaunchedNode,
     entry_names,
     find_interface,
+    node_fields,
 )
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
@@ -52,6 +53,7 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
+from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
 Fields = dict[str, object]
@@ -412,9 +414,15 @@ class VariationalGraph:
         self, element: Element, raw: Mapping[str, Raw | None], remaps: list[_Setting]
     ) -> None:
         symbolic = Values({}, None)
+        namespace, pushed = raw.get("namespace"), raw.get("ros_namespace")
+        if "ros_namespace" in raw and all(
+            v is None or isinstance(v, str) for v in (namespace, pushed)
+        ):
+            # ROS 2: the pushed namespace and the node's, combined and absolute
+            namespace = make_absolute(prefix_namespace(pushed, namespace)) or names.SEP  # type: ignore[arg-type]
         for _source, target, part in remaps:
             used = element.condition if part is None else element.parts[part].condition
-            raws = (raw.get("namespace"), raw.get("name"), target)
+            raws = (namespace, raw.get("name"), target)
             topic = _topic_name(symbolic, *raws)
             # a name that reads args is the entry file's own: another file's ⟨scan⟩ is
             # another arg, and its string is known only with that file's choices
@@ -430,16 +438,15 @@ class VariationalGraph:
         interface, each use an edge of its topic, service or action (judged as a part of
         it); names known statically only."""
         assert self.interfaces is not None
-        keys = ("pkg", "type", "namespace", "name", "args")
-        texts = [raw.get(key) for key in keys]
-        if not all(text is None or isinstance(text, str) for text in texts):
+        fields = {key: raw.get(key) for key in node_fields(node)}
+        if not all(text is None or isinstance(text, str) for text in fields.values()):
             return
-        package, type_, namespace, name, args = (str(text or "") for text in texts)
-        launched = LaunchedNode(package, type_, namespace, name, args, ())
+        launched = LaunchedNode.of(fields)
         unit = launched.unit()
         interface = None if unit is None else find_interface(self.interfaces, unit)
         if interface is None:
             return
+        launched = launched.named(interface)
         remaps = [(remap.condition, remap.source, remap.target) for remap in node.remaps]
         for entry in interface.entries:
             channel = CHANNEL.get(entry.role)

@@ -129,7 +129,7 @@ def cmd_analyze(options: argparse.Namespace) -> int:
 
 
 def cmd_resolve(options: argparse.Namespace) -> int:
-    from rosvar.analyses.communication import JSON_SIDES, Channel, resolved_graph
+    from rosvar.analyses.communication import resolved_graph
     from rosvar.analyses.resolve import resolve
     from rosvar.interpreter.workspace_models import Analysis
 
@@ -148,7 +148,7 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         return EXIT_USAGE
     args = command_line_mappings(options.args)
     if len(files) == 1 and workspace.ros_version is RosVersion.ROS2:
-        return _resolve_ros2(workspace, files[0], args, env, options.json)
+        return _resolve_ros2(workspace, files[0], args, env, options)
     # The given values become known slots: conditions split on them instead of
     # leaving them to <other> terms (the semantics does not change).
     analysis = Analysis(
@@ -168,13 +168,7 @@ def cmd_resolve(options: argparse.Namespace) -> int:
             print(f"node  {node['name']}  ({node['package']}/{node['type']})")
         for name, value in document["params"].items():  # type: ignore[attr-defined]
             print(f"param {name} = {value!r}")
-        for channel in Channel:
-            provided, used = JSON_SIDES[channel]
-            for element in graph[channel]:
-                types = ", ".join(element["types"])  # type: ignore[arg-type]
-                providers = ", ".join(element[provided]) or "-"  # type: ignore[arg-type]
-                users = ", ".join(element[used]) or "-"  # type: ignore[arg-type]
-                print(f"{channel[:-1]:<7} {element['name']} [{types}]: {providers} → {users}")
+        _print_graph(graph)
         for conflict in result.conflicts:
             where = ", ".join(_where(loc) for loc in conflict.locations)
             print(f"conflict: {conflict.kind} {conflict.name} at {where}")
@@ -183,15 +177,34 @@ def cmd_resolve(options: argparse.Namespace) -> int:
     return EXIT_OK if result.ok else EXIT_FAILS
 
 
+def _print_graph(graph: dict[str, list[dict[str, object]]]) -> None:
+    from rosvar.analyses.communication import JSON_SIDES, Channel
+
+    for channel in Channel:
+        provided, used = JSON_SIDES[channel]
+        for element in graph[channel]:
+            types = ", ".join(element["types"])  # type: ignore[arg-type]
+            providers = ", ".join(element[provided]) or "-"  # type: ignore[arg-type]
+            users = ", ".join(element[used]) or "-"  # type: ignore[arg-type]
+            print(f"{channel[:-1]:<7} {element['name']} [{types}]: {providers} → {users}")
+
+
 def _resolve_ros2(
-    workspace: Workspace, file: str, args: dict[str, str], env: dict[str, str], as_json: bool
+    workspace: Workspace,
+    file: str,
+    args: dict[str, str],
+    env: dict[str, str],
+    options: argparse.Namespace,
 ) -> int:
-    """``ros2 launch FILE name:=value``: the nodes it starts (in the ROS 2 oracle's shape)."""
+    """``ros2 launch FILE name:=value``: the nodes it starts (in the ROS 2 oracle's shape),
+    and the topics, services and actions their interfaces give."""
+    from rosvar.analyses.communication import resolved_graph
     from rosvar.analyses.ros2.resolve import resolve_ros2
 
     result = resolve_ros2(workspace, file, args, env)
-    if as_json:
-        _print_json(result.to_json())
+    graph = resolved_graph(result.nodes, _interfaces(workspace, options))
+    if options.json:
+        _print_json({**result.to_json(), **graph})
     else:
         for node in result.nodes:
             print(f"node  {node['fqn'] or node['name']}  ({node['package']}/{node['executable']})")
@@ -199,6 +212,7 @@ def _resolve_ros2(
                 print(f"  param {name} = {value!r}")
             for source, target in node["remappings"]:  # type: ignore[attr-defined]
                 print(f"  remap {source} -> {target}")
+        _print_graph(graph)
         for error in result.errors:
             print(f"error: {error['message']}")
     return EXIT_OK if result.ok else EXIT_FAILS

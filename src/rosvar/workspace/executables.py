@@ -21,7 +21,7 @@ from rosvar.workspace.packages import Package
 
 SCRIPT_FOLDERS = ("scripts", "nodes", "bin")
 _SKIP_SUFFIXES = (".png", ".jpg", ".dae", ".stl", ".STL", ".pgm", ".em", ".in")
-_CONSOLE_SCRIPT = re.compile(r"([\w.-]+)\s*=\s*[\w.]+:\w+")
+_CONSOLE_SCRIPT = re.compile(r"([\w.-]+)\s*=\s*([\w.]+):\w+")
 
 
 def executables(package: Package) -> frozenset[str]:
@@ -51,8 +51,7 @@ def _scan(path: str, name: str) -> frozenset[str]:
             if os.access(full, os.X_OK) and os.path.isfile(full):
                 found.add(file)
     found |= _cmake(path, name)
-    for setup in ("setup.py", "setup.cfg"):
-        found |= _console_scripts(os.path.join(path, setup))
+    found |= console_scripts(path).keys()
     return frozenset(found)
 
 
@@ -76,8 +75,12 @@ def _cmake(path: str, project: str) -> set[str]:
     return names | {os.path.basename(program) for program in build.programs}
 
 
-def _console_scripts(path: str) -> set[str]:
-    text = _read(path)
-    if "console_scripts" not in text:
-        return set()
-    return {m.group(1) for m in _CONSOLE_SCRIPT.finditer(text.split("console_scripts", 1)[1])}
+def console_scripts(package_dir: str) -> dict[str, str]:
+    """The ``console_scripts`` entry points of setup.py and setup.cfg: name → module."""
+    found: dict[str, str] = {}
+    for setup in ("setup.py", "setup.cfg"):
+        text = _read(os.path.join(package_dir, setup))
+        if "console_scripts" in text:
+            for match in _CONSOLE_SCRIPT.finditer(text.split("console_scripts", 1)[1]):
+                found.setdefault(match.group(1), match.group(2))
+    return found

@@ -2,11 +2,15 @@
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from rosvar.analyses.query.channels import channel_collections
 from rosvar.analyses.query.evaluator import QueryEngine
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
+from workspace.interfaces.ros2_packages import MANIFEST, write_ros2_packages
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -65,3 +69,28 @@ def test_services_and_actions_have_servers_and_clients(ws: LaunchWorkspace) -> N
     [result] = engine.run("for s in services where len(s.clients) == 1 return s")
     assert engine.to_json(result)["kind"] == "service"
     assert _answers(engine, "actions") == {}
+
+
+def test_ros2_nodes_and_their_topics(tmp_path: Path) -> None:
+    """A ROS 2 node's name composes the pushed namespace with its own; one the launch file
+    does not name (its code does) is still each of its topics' publisher."""
+    write_ros2_packages(tmp_path)
+    bringup = tmp_path / "demo_bringup"
+    bringup.mkdir()
+    (bringup / "package.xml").write_text(MANIFEST.format(name="demo_bringup", build="ament_cmake"))
+    (bringup / "a.launch.xml").write_text(
+        """<launch><arg name="ns" default="r1"/>
+        <group><push_ros_namespace namespace="$(var ns)"/>
+          <node pkg="demo_cpp" exec="talker" namespace="arm"/>
+          <node pkg="demo_py" exec="listener" name="ear"/></group>
+        <node pkg="demo_py" exec="listener" name="top"/></launch>"""
+    )
+    analysis = Analysis(discover([tmp_path]))
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    engine = QueryEngine(analysis, collections=channel_collections(interfaces))
+    assert _answers(engine, "nodes[self.namespace == '/r1']") == {"/r1/ear": "ns=r1"}
+    assert _answers(engine, "nodes[self.name == '/top']") == {"/top": "true"}
+    [talker] = engine.run("topics[self.name == '/r1/arm/chatter']")
+    [(_when, publisher)] = talker.element.attribute("publishers").values()[0].members
+    assert publisher.attribute("namespace").values() == ["/r1/arm"]
+    assert _answers(engine, "topics[self.name == '/r1/chatter']") == {"/r1/chatter": "ns=r1"}

@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from rosvar.diagnostics import DiagnosticSink, Location
-from rosvar.workspace.interfaces.cpp import Unit, extract, ros_type
+from rosvar.workspace.interfaces.cpp import Unit, extract, extract_node, ros_type
 from rosvar.workspace.interfaces.model import Entry, Expression, Role
 
 NODE = """\
@@ -388,3 +388,53 @@ int main(int argc, char** argv) {
 """
     entries, _ = _extract(tmp_path, {"s.cpp": source}, "main")
     assert [(e.name, e.type) for e in entries] == [("get_serial", "openni2_camera/GetSerial")]
+
+
+def test_ros2_types() -> None:
+    assert ros_type("std_msgs::msg::String::SharedPtr") == "std_msgs/msg/String"
+    assert ros_type("const std::shared_ptr<std_srvs::srv::Trigger::Request>") == (
+        "std_srvs/srv/Trigger"
+    )
+    assert ros_type("nav2_msgs::action::NavigateToPose") == "nav2_msgs/action/NavigateToPose"
+
+
+def test_rclcpp_node_built_in_main(tmp_path: Path) -> None:
+    """A plain ``rclcpp::Node`` built in ``main``: its name, its methods through the
+    pointer, the older action API (the node's four interfaces), an image transport on it."""
+    source = """\
+int main(int argc, char** argv) {
+  auto node = rclcpp::Node::make_shared("driver");
+  auto pub = node->create_publisher<sensor_msgs::msg::Imu>("imu/data", rclcpp::SensorDataQoS());
+  double hz = node->get_parameter_or("hz", hz, 50.0);
+  auto client = rclcpp_action::create_client<nav2_msgs::action::NavigateToPose>(
+      node->get_node_base_interface(), node->get_node_graph_interface(),
+      node->get_node_logging_interface(), node->get_node_waitables_interface(), "navigate");
+  image_transport::ImageTransport it(node);
+  auto sub = it.subscribe("camera/image", 1, callback);
+}
+"""
+    sink = DiagnosticSink()
+    (tmp_path / "m.cpp").write_text(source)
+    found = extract_node(Unit.load([str(tmp_path / "m.cpp")], []), "main", None, sink, Location(""))
+    assert found.node_name == "driver"
+    assert _summary(found.entries) == [
+        ("publishes", "imu/data", "sensor_msgs/msg/Imu", 3),
+        ("action_clients", "navigate", "nav2_msgs/action/NavigateToPose", 5),
+        ("subscribes", "camera/image", "sensor_msgs/msg/Image", 9),
+        ("params", "hz", 50.0, 4),  # reads of undeclared parameters come last
+    ]
+
+
+def test_two_rclcpp_nodes_leave_the_name_open(tmp_path: Path) -> None:
+    source = """\
+int main() {
+  auto a = std::make_shared<rclcpp::Node>("a");
+  rclcpp::Node b("b");
+  b.create_publisher<std_msgs::msg::Empty>("~/x", 1);
+}
+"""
+    sink = DiagnosticSink()
+    (tmp_path / "m.cpp").write_text(source)
+    found = extract_node(Unit.load([str(tmp_path / "m.cpp")], []), "main", None, sink, Location(""))
+    assert found.node_name is None
+    assert [(e.name, e.type) for e in found.entries] == [("~/x", "std_msgs/msg/Empty")]

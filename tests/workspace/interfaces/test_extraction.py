@@ -10,7 +10,8 @@ import pytest
 from rosvar.outputs.cli import EXIT_OK, main
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
-from rosvar.workspace.interfaces.model import Interfaces, NodeKind, Role
+from rosvar.workspace.interfaces.model import Interfaces, NodeInterface, NodeKind, Role
+from workspace.interfaces.ros2_packages import write_ros2_packages
 
 CORPUS = Path("/work/shared/corpus")
 SCHEMA = Path(__file__).resolve().parents[3] / "docs" / "schema" / "interfaces.schema.json"
@@ -106,3 +107,65 @@ def test_cli_json_matches_schema(capsys: pytest.CaptureFixture[str]) -> None:
     symbolic = [e for n in document["interfaces"] for r in ("action_servers",) for e in n[r]]
     assert any(e.get("static") is False for e in symbolic)  # {name_}_action: the nodelet's name
     assert any(d["code"] == "interface-symbolic-name" for d in document["diagnostics"])
+
+
+def _summary(node: NodeInterface) -> list[tuple[str, str, object, int]]:
+    """Each entry as (role, name, type or default, line)."""
+    return [
+        (str(e.role), e.name, e.default if e.role is Role.PARAMS else e.type, e.location.line)
+        for e in node.entries
+    ]
+
+
+def test_ros2_packages(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """rclcpp and rclpy nodes, a component and the executable registered from it, each with
+    the name its code gives the node."""
+    write_ros2_packages(tmp_path)
+    interfaces = extract_interfaces(discover([tmp_path]).packages.values())
+    found = {(n.package, n.executable, n.kind, n.node_name): _summary(n) for n in interfaces.nodes}
+    camera = [
+        ("publishes", "image_raw", "sensor_msgs/msg/Image", 5),
+        ("publishes", "camera_info", "sensor_msgs/msg/CameraInfo", 5),
+        ("services", "enable", "std_srvs/srv/SetBool", 6),
+        ("subscribes", "mask", "sensor_msgs/msg/Image", 8),
+    ]
+    assert found == {
+        ("demo_cpp", "camera", NodeKind.NODE, "camera"): camera,
+        ("demo_cpp", "demo_cpp::Camera", NodeKind.COMPONENT, "camera"): camera,
+        ("demo_cpp", "talker", NodeKind.NODE, "talker"): [
+            ("publishes", "chatter", "std_msgs/msg/String", 8),
+            ("subscribes", "~/control", "std_msgs/msg/String", 9),
+            ("params", "rate", 2.5, 11),
+            ("action_servers", "fibonacci", "action_tutorials_interfaces/action/Fibonacci", 14),
+            ("clients", "/reset", "std_srvs/srv/Trigger", 19),
+            ("params", "frame", None, 13),  # read, never declared
+        ],
+        ("demo_py", "listener", NodeKind.NODE, "listener"): [
+            ("subscribes", "chatter", "std_msgs/msg/String", 14),
+            ("publishes", "~/echo", "std_msgs/msg/String", 15),
+            ("services", "reset", "std_srvs/srv/Trigger", 16),
+            ("action_clients", "/fibonacci", "action_tutorials_interfaces/action/Fibonacci", 17),
+            ("params", "gain", 0.5, 18),
+        ],
+    }
+    assert interfaces.diagnostics == []
+    jsonschema = pytest.importorskip("jsonschema")
+    assert main(["interfaces", str(tmp_path), "--json"]) == EXIT_OK
+    document = json.loads(capsys.readouterr().out)
+    jsonschema.validate(document, json.loads(SCHEMA.read_text()))
+    assert {n["executable"]: n.get("node_name") for n in document["interfaces"]} == {
+        "camera": "camera",
+        "demo_cpp::Camera": "camera",
+        "talker": "talker",
+        "listener": "listener",
+    }
+
+
+def test_a_ros1_node_has_no_name_of_its_own(tmp_path: Path) -> None:
+    """roslaunch always names a node: the code's ``init_node`` name is not the node's."""
+    write_ros2_packages(tmp_path)
+    manifest = tmp_path / "demo_cpp" / "package.xml"
+    manifest.write_text(manifest.read_text().replace("ament_cmake", "catkin"))
+    (tmp_path / "demo_py").rename(tmp_path.parent / "elsewhere")
+    interfaces = extract_interfaces(discover([tmp_path]).packages.values())
+    assert {n.executable: n.node_name for n in interfaces.nodes} == {"camera": None, "talker": None}

@@ -6,7 +6,7 @@ from pathlib import Path
 
 from rosvar.diagnostics import DiagnosticSink
 from rosvar.workspace.interfaces.model import Expression, Role
-from rosvar.workspace.interfaces.python import extract
+from rosvar.workspace.interfaces.python import extract, extract_node
 
 SCRIPT = """\
 import rospy as rp
@@ -74,3 +74,30 @@ def test_unparsable_script_is_a_diagnostic(tmp_path: Path) -> None:
     sink = DiagnosticSink()
     assert extract(str(path), sink) == [] or sink.items
     assert sink.items
+
+
+def test_rclpy_node_by_keywords(tmp_path: Path) -> None:
+    """rclpy calls with keyword arguments, on a node that is not ``self``."""
+    path = tmp_path / "node.py"
+    path.write_text(
+        "import rclpy\n"
+        "import rclpy.action\n"
+        "import geometry_msgs.msg\n"
+        "node = rclpy.create_node('teleop')\n"
+        "node.create_publisher(msg_type=geometry_msgs.msg.Twist, topic='cmd_vel', qos_profile=1)\n"
+        "node.create_client(srv_name='~/reset', srv_type=None)\n"
+        "rclpy.action.ActionServer(node, action_type=None, action_name='dock')\n"
+        "node.declare_parameter(name='speed', value=[1, 2])\n"
+    )
+    sink = DiagnosticSink()
+    found = extract_node(str(path), sink)
+    assert found.node_name == "teleop"
+    assert [
+        (str(e.role), e.name, e.default if e.role is Role.PARAMS else e.type) for e in found.entries
+    ] == [
+        ("publishes", "cmd_vel", "geometry_msgs/msg/Twist"),
+        ("clients", "~/reset", None),
+        ("action_servers", "dock", None),
+        ("params", "speed", Expression("[1, 2]")),
+    ]
+    assert [d.code for d in sink.items] == ["interface-unknown-type"] * 2

@@ -55,7 +55,12 @@ def _provider(
     def elements(analysis: Analysis, model: LaunchModel) -> list[Element]:
         space = analysis.space
         entry = analysis.label(model.file)
-        nodes = {(decl.location, node.name): node for decl, node in node_elements(analysis, model)}
+        nodes: dict[tuple[Location, str | None], Element] = {}
+        for decl, node in node_elements(analysis, model):
+            nodes[decl.location, node.name] = node
+            if decl.field("name").values() == [None]:
+                # a ROS 2 node the launch file does not name: its code does (the edge's)
+                nodes[decl.location, None] = node
         named: dict[str, list[Edge]] = {}
         for edge in model_edges(space, model, interfaces):
             if edge.static and edge.channel == channel:
@@ -70,9 +75,9 @@ def _provider(
             presence = space.false
             for edge in edges:
                 presence |= edge.condition
-                node = nodes.get((edge.launch, edge.node))
-                if node is not None:
-                    sides[SIDES[channel].index(edge.role)].append((edge.condition, node))
+                user = nodes.get((edge.launch, edge.node)) or nodes.get((edge.launch, None))
+                if user is not None:
+                    sides[SIDES[channel].index(edge.role)].append((edge.condition, user))
             location: Location | None = edges[0].launch if edges else None
             values: dict[str, Choice[object]] = {
                 "name": Choice.const(space, name),

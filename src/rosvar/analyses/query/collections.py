@@ -24,6 +24,7 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
+from rosvar.ros.ros2_namespaces import full_name, make_absolute, prefix_namespace
 
 
 class Kind(StrEnum):
@@ -142,12 +143,29 @@ def _const(space: ConditionSpace, value: object) -> Choice[object]:
     return Choice.const(space, value)
 
 
+def _name_fields(node: NodeDecl) -> tuple[str, ...]:
+    """The fields a node's name is made of: a ROS 2 node's pushed namespace comes first."""
+    if "ros_namespace" in node.fields:
+        return ("ros_namespace", "namespace", "name")
+    return ("namespace", "name")
+
+
 def _full_name(parts: Sequence[object]) -> str | None:
+    if not all(part is None or isinstance(part, str) for part in parts) or parts[-1] is None:
+        return None
+    if len(parts) == 3:  # ROS 2: launch_ros composes the pushed and the node's namespace
+        pushed, namespace, name = parts
+        return full_name(pushed or None, namespace or None, name)  # type: ignore[arg-type]
     namespace, name = parts
-    namespace = "/" if namespace is None else namespace  # a ROS 2 node without `namespace`
-    if isinstance(namespace, str) and isinstance(name, str):
-        return names.ns_join(namespace, name)
-    return None
+    return names.ns_join("/" if namespace is None else namespace, name)  # type: ignore[arg-type]
+
+
+def _namespace(parts: Sequence[object]) -> object:
+    """A ROS 2 node's namespace: the pushed one and its own, combined and absolute."""
+    pushed, namespace = parts
+    if not all(part is None or isinstance(part, str) for part in parts):
+        return None
+    return make_absolute(prefix_namespace(pushed or None, namespace or None)) or "/"  # type: ignore[arg-type]
 
 
 def _shown(value: object) -> str:
@@ -156,6 +174,9 @@ def _shown(value: object) -> str:
 
 
 def _template(parts: Sequence[object]) -> str:
+    if len(parts) == 3:  # ROS 2: what is known of the pushed and the node's namespace
+        *namespaces, name = (_shown("" if part is None else part) for part in parts)
+        return names.ns_join("/" + "/".join(p.strip("/") for p in namespaces if p), name)
     namespace, name = (_shown("/" if part is None else part) for part in parts)
     return names.ns_join(namespace, name)
 
@@ -170,12 +191,16 @@ def node_elements(analysis: Analysis, model: LaunchModel) -> Iterator[tuple[Node
     entry = analysis.label(model.file)
     for node in model.nodes:
         fields = node.fields
-        for condition, parts in combine([fields["namespace"], fields["name"]], tuple):
+        keys = _name_fields(node)
+        namespace = _known(fields["namespace"])
+        if len(keys) == 3:
+            namespace = combine([fields["ros_namespace"], fields["namespace"]], _namespace)
+        for condition, parts in combine([fields[key] for key in keys], tuple):
             name = _full_name(parts)
             shown = name if name is not None else _template(parts)
             values: dict[str, Choice[object]] = {
                 "name": _const(space, name),
-                "namespace": _known(fields["namespace"]),
+                "namespace": namespace,
                 "package": _known(fields["pkg"]),
                 "type": _known(fields["type"]),
                 "test": _const(space, node.is_test),

@@ -62,6 +62,7 @@ class Target:
     sources: list[str]
     links: list[str] = field(default_factory=list)
     output_name: str | None = None
+    plugin: str | None = None  # a component's executable runs this class (``ns::Class``)
 
     @property
     def installed_name(self) -> str:
@@ -229,7 +230,12 @@ class _Reader:
         elif name == COMPONENT_COMMAND and "EXECUTABLE" in words[1:-1]:
             # The executable runs the component library's plugin: its sources are the library's.
             executable = words[words.index("EXECUTABLE", 1) + 1]
-            component = Target(executable, TargetKind.EXECUTABLE, [], links=[words[0]])
+            plugin = (
+                words[words.index("PLUGIN") + 1].strip('"') if "PLUGIN" in words[1:-1] else None
+            )
+            component = Target(
+                executable, TargetKind.EXECUTABLE, [], links=[words[0]], plugin=plugin
+            )
             self.build.targets.setdefault(executable, component)
         elif name == "target_link_libraries" and words:
             target = self.build.targets.get(words[0])

@@ -21,7 +21,7 @@ import tree_sitter_cpp
 from tree_sitter import Language, Node, Parser
 
 from rosvar.diagnostics import DiagnosticSink, Location
-from rosvar.workspace.interfaces.model import Default, Entry, Expression, Role
+from rosvar.workspace.interfaces.model import Default, Entry, Expression, Extracted, Role
 from rosvar.workspace.interfaces.reading import read_source
 from rosvar.workspace.interfaces.values import Text, action_type
 
@@ -44,6 +44,31 @@ _SMART_POINTERS = re.compile(
 )
 _IMAGE = "sensor_msgs/Image"
 _CAMERA_INFO = "sensor_msgs/CameraInfo"
+_RCLCPP_CALLS = {
+    "create_publisher": Role.PUBLISHES,
+    "create_subscription": Role.SUBSCRIBES,
+    "create_service": Role.SERVICES,
+    "create_client": Role.CLIENTS,
+}
+"""rclcpp's ``Node`` methods: called on the node (``this->``, ``node->``, a member pointer,
+``shared_from_this()``) or unqualified in a class derived from it. A ROS 2 node has one
+namespace, so the receiver need not be followed."""
+_RCLCPP_FREE_CALLS = {
+    # free function → role and the index of the name argument (the node comes first)
+    "rclcpp_action::create_server": Role.ACTION_SERVERS,
+    "rclcpp_action::create_client": Role.ACTION_CLIENTS,
+    "image_transport::create_publisher": Role.PUBLISHES,
+    "image_transport::create_subscription": Role.SUBSCRIBES,
+    "image_transport::create_camera_publisher": Role.PUBLISHES,
+    "image_transport::create_camera_subscription": Role.SUBSCRIBES,
+}
+_RCLCPP_DECLARE = "declare_parameter"
+_RCLCPP_READS = frozenset({"get_parameter", "get_parameter_or"})
+_RCLCPP_NODE = re.compile(r"^rclcpp::Node(?:::make_shared)?$|make_shared<rclcpp::Node>$")
+"""An rclcpp node built here (``rclcpp::Node::make_shared("name")``): its first argument
+is the node's name."""
+_ROS2_IMAGE = "sensor_msgs/msg/Image"
+_ROS2_CAMERA_INFO = "sensor_msgs/msg/CameraInfo"
 _NULLS = frozenset({"NULL", "nullptr", "0"})
 _CONTROLLER_MANAGER_SERVICES = tuple(
     (service, "controller_manager_msgs/" + service.title().replace("_", ""))
@@ -63,10 +88,12 @@ _FAILING = ("ROS_ERROR", "ROS_FATAL", "exit", "abort", "ros::shutdown")
 
 @dataclass(frozen=True)
 class Handle:
-    """A ``NodeHandle`` (or an ``ImageTransport`` built on one, when ``images``)."""
+    """A ``NodeHandle`` (or an ``ImageTransport`` built on one, when ``images``); an rclcpp
+    node (``rclcpp``) has no namespace of its own."""
 
     namespace: Text
     images: bool = False
+    rclcpp: bool = False
 
 
 Value = Text | Handle | None
@@ -172,12 +199,17 @@ def ros_type(text: str) -> str | None:
     while smart:
         text = smart.group(1) or smart.group(2)
         smart = _SMART_POINTERS.match(text)
-    text = re.sub(r"::(ConstPtr|Ptr|Request|Response)$", "", text)
+    text = re.sub(
+        r"::(ConstPtr|Ptr|ConstSharedPtr|SharedPtr|UniquePtr|Request|Response)$", "", text
+    )
     text = re.sub(r"(?<=\w)(ConstPtr|Ptr)$", "", text)
     text = text.lstrip(":")
     if not text or not re.fullmatch(r"[A-Za-z_][\w:]*", text):
         return None
-    return "/".join(text.split("::")[-2:])
+    parts = text.split("::")
+    if len(parts) >= 3 and parts[-2] in ("msg", "srv", "action"):
+        return "/".join(parts[-3:])  # ROS 2: std_msgs::msg::String is std_msgs/msg/String
+    return "/".join(parts[-2:])
 
 
 def _template_arguments(node: Node) -> list[str]:
@@ -476,14 +508,21 @@ def _declared(node: Node) -> Iterator[tuple[str, _Variable]]:
             parameters = declarator.child_by_field_name("parameters")
             if name_node is None or parameters is None:
                 continue
-            arguments = [
-                p.named_children[0] for p in parameters.named_children if len(p.named_children) == 1
-            ]
+            arguments = [_vexing_argument(p) for p in parameters.named_children]
             yield _text(name_node), _Variable(type_text, arguments=arguments)
         else:
             name = _declarator_name(declarator)
             if name is not None:
                 yield name, _Variable(type_text)
+
+
+def _vexing_argument(parameter: Node) -> Node:
+    """A constructor argument read as a parameter: ``nh`` (a type), or a call without
+    arguments (``shared_from_this()``, a type and an abstract function declarator), re-read
+    as the expression it is."""
+    if len(parameter.named_children) == 1:
+        return parameter.named_children[0]
+    return _PARSER.parse((_text(parameter) + ";").encode()).root_node
 
 
 @dataclass
@@ -704,10 +743,15 @@ class _Evaluator:
             return Handle(Text("~"))
         if name in _PUBLIC_HANDLES:
             return Handle(Text(""))
+        if name == "shared_from_this":  # an rclcpp node's pointer to itself
+            return Handle(Text(""), rclcpp=True)
         return None
 
     def construct(self, type_text: str, arguments: list[Node], function: Function | None) -> Value:
-        """The value of a ``NodeHandle`` or ``ImageTransport`` built from ``arguments``."""
+        """The value of a ``NodeHandle``, rclcpp node or ``ImageTransport`` built from
+        ``arguments``."""
+        if _RCLCPP_NODE.search(type_text.replace(" ", "")):
+            return Handle(Text(""), rclcpp=True)
         type_name = _last(type_text.replace(" ", "").split("<")[0])
         if type_name == "NodeHandle":
             values = [self.evaluate(argument, function) for argument in arguments]
@@ -724,7 +768,7 @@ class _Evaluator:
         if type_name == "ImageTransport" and arguments:
             base = self.evaluate(arguments[0], function)
             if isinstance(base, Handle):
-                return Handle(base.namespace, images=True)
+                return Handle(base.namespace, images=True, rclcpp=base.rclcpp)
             return Handle(Text.unknown(_text(arguments[0])), images=True)
         return None
 
@@ -831,6 +875,10 @@ class _Collector:
     evaluator: _Evaluator
     sink: DiagnosticSink
     entries: list[Entry] = field(default_factory=list)
+    reads: list[Entry] = field(default_factory=list)
+    """rclcpp's parameter reads: kept where no declaration names the parameter."""
+    node_names: list[Text] = field(default_factory=list)
+    """The names rclcpp nodes are built with (``Node("talker")``)."""
 
     def add(
         self,
@@ -882,6 +930,8 @@ class _Collector:
                     self._construction(_text(type_node), _arguments(node), function, node)
             elif node.type == "field_initializer":
                 name = _text(node.named_children[0])
+                if _last(name) in ("Node", "LifecycleNode"):  # the base class: the node's name
+                    self._node_name(_arguments(node), function)
                 self._construction(self.unit.fields.get(name, ""), _arguments(node), function, node)
             else:
                 for _, variable in _declared(node):
@@ -894,6 +944,9 @@ class _Collector:
         if len(arguments) == 1 and _text(arguments[0]) in _NULLS:
             return  # a pointer member initialised to null constructs nothing
         compact = self.unit.unaliased(type_text).replace(" ", "")
+        if _RCLCPP_NODE.search(compact):
+            self._node_name(arguments, function)
+            return
         base = _last(compact.split("<")[0])
         templates = _template_arguments_text(compact)
         message = self.unit.message_type(templates[0]) if templates else None
@@ -905,6 +958,10 @@ class _Collector:
             self.add(Role.SUBSCRIBES, handle, rest[0], function, at, message)
         elif base == "ControllerManager" and arguments:
             self._controller_manager(arguments[1:], function, at)
+
+    def _node_name(self, arguments: list[Node], function: Function) -> None:
+        if arguments:
+            self.node_names.append(self.evaluator._name(arguments[0], function))
 
     def _controller_manager(self, arguments: list[Node], function: Function, at: Node) -> None:
         """``controller_manager::ControllerManager cm(&hw, nh)`` serves its services below
@@ -935,9 +992,16 @@ class _Collector:
         arguments = _arguments(node)
         if callee.type != "field_expression":
             name = _text(callee).replace(" ", "")
+            bare = name.split("<")[0]
             if name in _FREE_PARAM_READS and arguments:
                 self._param(None, arguments, function, node, name.endswith("param"))
-            elif _last(name.split("<")[0]) in ("make_shared", "make_unique"):
+            elif bare in _RCLCPP_FREE_CALLS:
+                self._rclcpp_free(bare, _template_arguments(callee), arguments, function, node)
+            elif "::" not in bare and self._rclcpp(bare, callee, arguments, function, node):
+                pass  # a method of the rclcpp node the function belongs to
+            elif _RCLCPP_NODE.search(name):
+                self._node_name(arguments, function)
+            elif _last(bare) in ("make_shared", "make_unique"):
                 templates = _template_arguments(callee)
                 if templates:
                     self._construction(templates[0], arguments, function, node)
@@ -947,6 +1011,8 @@ class _Collector:
         if receiver is None or method_node is None:
             return
         method = _text(method_node).split("<")[0].strip()
+        if self._rclcpp(method, method_node, arguments, function, node):
+            return
         templates = _template_arguments(method_node)
         value = self.evaluator.evaluate(receiver, function)
         if not isinstance(value, Handle):
@@ -972,13 +1038,64 @@ class _Collector:
         elif method in _PARAM_READS:
             self._param(value, arguments, function, node, method == "param")
 
+    def _rclcpp(
+        self, method: str, callee: Node, arguments: list[Node], function: Function, at: Node
+    ) -> bool:
+        """An rclcpp ``Node`` method (``create_publisher<T>("name", qos)``, a parameter's
+        declaration or read); whether ``method`` is one."""
+        if not arguments:
+            return False
+        if method in _RCLCPP_CALLS:
+            message = self._first_type(_template_arguments(callee))
+            self.add(_RCLCPP_CALLS[method], None, arguments[0], function, at, message)
+        elif method == _RCLCPP_DECLARE:
+            default = (
+                _default(arguments[1], self.evaluator, function) if len(arguments) > 1 else None
+            )
+            self.add(Role.PARAMS, None, arguments[0], function, at, default=default)
+        elif method in _RCLCPP_READS:
+            given = arguments[2] if method == "get_parameter_or" and len(arguments) > 2 else None
+            default = _default(given, self.evaluator, function)
+            self.add(Role.PARAMS, None, arguments[0], function, at, default=default)
+            self.reads.append(self.entries.pop())
+        else:
+            return False
+        return True
+
+    def _rclcpp_free(
+        self, name: str, templates: list[str], arguments: list[Node], function: Function, at: Node
+    ) -> None:
+        """``rclcpp_action::create_server<A>(node, "name", ...)`` and image_transport's
+        functions: the node comes first (or, in the older form, its four interfaces)."""
+        index = 4 if arguments and "node_base" in _text(arguments[0]).lower() else 1
+        if index >= len(arguments):
+            return
+        role = _RCLCPP_FREE_CALLS[name]
+        if name.startswith("image_transport::"):
+            camera = "camera" in name
+            self._images(
+                role, Handle(Text(""), rclcpp=True), arguments[index], function, at, camera
+            )
+        else:
+            message = self._first_type(templates)
+            self.add(role, None, arguments[index], function, at, message and action_type(message))
+
     def _image(self, handle: Handle, method: str, name: Node, function: Function, at: Node) -> None:
         role = Role.PUBLISHES if method.startswith("advertise") else Role.SUBSCRIBES
         if method not in ("advertise", "subscribe", "advertiseCamera", "subscribeCamera"):
             return
-        self.add(role, handle, name, function, at, _IMAGE)
+        self._images(role, handle, name, function, at, method.endswith("Camera"))
+
+    def _images(
+        self, role: Role, handle: Handle, name: Node, function: Function, at: Node, camera: bool
+    ) -> None:
+        """An image topic, and with a ``camera`` the camera info beside it."""
+        image_type, info_type = (
+            (_ROS2_IMAGE, _ROS2_CAMERA_INFO) if handle.rclcpp else (_IMAGE, _CAMERA_INFO)
+        )
+        self.add(role, handle, name, function, at, image_type)
         image = self.entries[-1].name
-        if method.endswith("Camera"):
+        if camera:
             value = self.evaluator.evaluate(name, function)
             if isinstance(value, Text) and value.static:
                 # image_transport: the camera info lives beside the image topic
@@ -994,7 +1111,7 @@ class _Collector:
                         role,
                         resolved.value,
                         location,
-                        type=_CAMERA_INFO,
+                        type=info_type,
                         static=resolved.static,
                         beside=image,
                     )
@@ -1189,6 +1306,13 @@ def extract(
     unit: Unit, entry: str, owner: str | None, sink: DiagnosticSink, where: Location
 ) -> list[Entry]:
     """The interface of the code reachable from function ``entry`` (of class ``owner``)."""
+    return extract_node(unit, entry, owner, sink, where).entries
+
+
+def extract_node(
+    unit: Unit, entry: str, owner: str | None, sink: DiagnosticSink, where: Location
+) -> Extracted:
+    """:func:`extract`, with the node's own name (ROS 2)."""
     starts = [f for f in unit.functions.get(entry, []) if owner is None or f.owner == owner]
     if owner is not None:
         starts += unit.functions.get(owner, [])  # the nodelet's constructor runs first
@@ -1205,4 +1329,8 @@ def extract(
     collector = _Collector(unit, evaluator, sink)
     for function in sorted(reached, key=lambda f: (f.file, f.node.start_byte)):
         collector.scan(function)
-    return collector.entries
+    declared = {e.name for e in collector.entries if e.role is Role.PARAMS}
+    reads = [read for read in collector.reads if read.name not in declared]
+    names = {name.value for name in collector.node_names if name.static}
+    node_name = names.pop() if len(names) == 1 else None
+    return Extracted(collector.entries + reads, node_name)

@@ -2,37 +2,61 @@
 
 Per package: each ``add_executable`` target is a node (entry ``main``), each exported nodelet
 class is a nodelet (entry ``Class::onInit`` in its library's sources), each installed or
-``scripts/``-style Python file is a node. Hints and the catalogue are applied afterwards
+``scripts/``-style Python file is a node. A ROS 2 package adds its components (a library's
+class registered with ``RCLCPP_COMPONENTS_REGISTER_NODE``, entry its constructor; the
+executable ``rclcpp_components_register_node`` makes of one runs the same) and its
+``console_scripts`` (the module the entry point names), and each node the name its code
+gives it. Hints and the catalogue are applied afterwards
 (:mod:`rosvar.workspace.interfaces.overrides`).
 """
 
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Iterable
 
 from rosvar.diagnostics import DiagnosticSink, Location
-from rosvar.workspace.executables import SCRIPT_FOLDERS
+from rosvar.workspace.executables import SCRIPT_FOLDERS, console_scripts
 from rosvar.workspace.interfaces import cpp, python
 from rosvar.workspace.interfaces.cmake import CMAKE_FILE, Build, TargetKind, read_build
-from rosvar.workspace.interfaces.model import Interfaces, NodeInterface, NodeKind
+from rosvar.workspace.interfaces.model import Extracted, Interfaces, NodeInterface, NodeKind
 from rosvar.workspace.interfaces.nodelets import nodelet_classes
-from rosvar.workspace.interfaces.reading import read_source
+from rosvar.workspace.interfaces.reading import read_source, read_text
 from rosvar.workspace.packages import Package
+from rosvar.workspace.ros_version import RosVersion
+
+_COMPONENT = re.compile(r"RCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)")
 
 
 def extract_package(package: Package, sink: DiagnosticSink) -> list[NodeInterface]:
     """The nodes and nodelets of one package, in a stable order."""
     build = read_build(package.path, package.name)
     include_dirs = [*build.include_dirs, os.path.join(package.path, "include")]
+    ros2 = package.ros_version is RosVersion.ROS2
     nodes: list[NodeInterface] = []
     where = Location(os.path.join(package.path, CMAKE_FILE))
+
+    def node(executable: str, kind: NodeKind, found: Extracted) -> None:
+        name = found.node_name if ros2 else None
+        nodes.append(NodeInterface(package.name, executable, kind, found.entries, name))
+
     for target in build.targets.values():
-        if target.kind is not TargetKind.EXECUTABLE:
-            continue
-        unit = cpp.Unit.load(_cpp_sources(build.sources(target.name)), include_dirs)
-        entries = cpp.extract(unit, "main", None, sink, where)
-        nodes.append(NodeInterface(package.name, target.installed_name, NodeKind.NODE, entries))
+        if target.kind is TargetKind.EXECUTABLE:
+            unit = cpp.Unit.load(_cpp_sources(build.sources(target.name)), include_dirs)
+            entry, owner = ("main", None) if target.plugin is None else _constructor(target.plugin)
+            node(
+                target.installed_name,
+                NodeKind.NODE,
+                cpp.extract_node(unit, entry, owner, sink, where),
+            )
+        elif ros2:
+            plugins = _components(target.sources)
+            sources = _cpp_sources(build.sources(target.name)) if plugins else []
+            unit = cpp.Unit.load(sources, include_dirs)
+            for plugin in plugins:
+                found = cpp.extract_node(unit, *_constructor(plugin), sink, where)
+                node(plugin, NodeKind.COMPONENT, found)
     for nodelet in nodelet_classes(package.path, sink):
         if nodelet.library not in build.targets:
             sink.warning(
@@ -47,9 +71,47 @@ def extract_package(package: Package, sink: DiagnosticSink) -> list[NodeInterfac
         entries = cpp.extract(unit, "onInit", owner, sink, nodelet.location)
         nodes.append(NodeInterface(package.name, nodelet.name, NodeKind.NODELET, entries))
     for script in _python_scripts(package.path, build):
-        entries = python.extract(script, sink)
-        nodes.append(NodeInterface(package.name, os.path.basename(script), NodeKind.NODE, entries))
+        node(os.path.basename(script), NodeKind.NODE, python.extract_node(script, sink))
+    for executable, module in console_scripts(package.path).items():
+        path = _module_file(package.path, module)
+        if path is None:
+            sink.warning(
+                "interface-no-module",
+                f"console script {executable}: no module {module} in the package",
+                Location(os.path.join(package.path, "setup.py")),
+            )
+            continue
+        node(executable, NodeKind.NODE, python.extract_node(path, sink))
     return sorted(nodes, key=lambda node: node.executable)
+
+
+def _constructor(plugin: str) -> tuple[str, str]:
+    """The entry point of a component class ``ns::Class``: its constructor."""
+    name = plugin.rsplit("::", 1)[-1]
+    return name, name
+
+
+def _components(sources: list[str]) -> list[str]:
+    """The classes a library's sources register as components, as launch files name them."""
+    found: list[str] = []
+    for source in sources:
+        text = read_text(source) or ""
+        for match in _COMPONENT.finditer(text):
+            plugin = match.group(1).lstrip(":")
+            if plugin not in found:
+                found.append(plugin)
+    return found
+
+
+def _module_file(package_dir: str, module: str) -> str | None:
+    """The file of Python module ``module`` (dotted) in an ament_python package."""
+    relative = module.replace(".", os.sep)
+    for root in (package_dir, os.path.join(package_dir, "src")):
+        for candidate in (relative + ".py", os.path.join(relative, "__init__.py")):
+            path = os.path.join(root, candidate)
+            if os.path.isfile(path):
+                return path
+    return None
 
 
 def extract_interfaces(packages: Iterable[Package]) -> Interfaces:

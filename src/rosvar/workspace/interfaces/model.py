@@ -22,6 +22,7 @@ class NodeKind(enum.StrEnum):
 
     NODE = "node"
     NODELET = "nodelet"
+    COMPONENT = "component"  # ROS 2: a class a container loads (``plugin``)
 
 
 class Role(enum.StrEnum):
@@ -99,14 +100,26 @@ class Entry:
         return document
 
 
+@dataclass(frozen=True)
+class Extracted:
+    """What one entry point's code does, and the name a ROS 2 node built there gives itself
+    (None when none, or several, are known statically)."""
+
+    entries: list[Entry]
+    node_name: str | None = None
+
+
 @dataclass
 class NodeInterface:
-    """The interface of one launchable unit: ``executable`` is the class for a nodelet."""
+    """The interface of one launchable unit: ``executable`` is the class for a nodelet
+    (``pkg/Class``) or a ROS 2 component (``ns::Class``, as a launch file's ``plugin``)."""
 
     package: str
     executable: str
     kind: NodeKind
     entries: list[Entry] = field(default_factory=list)
+    node_name: str | None = None
+    """ROS 2: the name the code gives the node, which a launch file's ``name`` overrides."""
 
     def of(self, role: Role) -> list[Entry]:
         return [entry for entry in self.entries if entry.role is role]
@@ -117,6 +130,8 @@ class NodeInterface:
             "executable": self.executable,
             "kind": str(self.kind),
         }
+        if self.node_name is not None:
+            document["node_name"] = self.node_name
         for role in Role:
             document[str(role)] = [entry.to_json() for entry in self.of(role)]
         return document

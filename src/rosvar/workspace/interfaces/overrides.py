@@ -33,6 +33,8 @@ def apply_hints(interfaces: Interfaces, hints: Mapping[str, list[Entry]]) -> Non
         if node is None:  # a copy of the fallback's node, or a new one
             known = interfaces.find(package, executable)
             kind = NodeKind.NODELET if executable == key else NodeKind.NODE
+            if "::" in executable:  # a ROS 2 component's class
+                kind = NodeKind.COMPONENT
             node = NodeInterface(package, executable, kind)
             if known is not None:
                 node = NodeInterface(package, executable, known.kind, list(known.entries))

@@ -1,10 +1,12 @@
-"""Python extraction: the ``rospy`` and ``actionlib`` calls of a script, read with ``ast``.
+"""Python extraction: the ``rospy`` and ``actionlib`` calls of a script, and the ``rclpy``
+calls of a ROS 2 module, read with ``ast``.
 
 Calls are recognised through the script's imports (``import rospy as r``,
 ``from rospy import Publisher``), names through string constants assigned once in the
 module, the function or ``self``; message types through ``from pkg.msg import T``.
-Everything a script calls is its interface: Python nodes are single files, so no
-reachability is needed.
+rclpy's ``Node`` methods (``self.create_publisher(T, "name", qos)``) are recognised by name
+on any receiver: a ROS 2 node has one namespace. Everything a script calls is its interface:
+Python nodes are single files, so no reachability is needed.
 """
 
 from __future__ import annotations
@@ -14,7 +16,7 @@ from dataclasses import dataclass, field
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.workspace.interfaces import python2
-from rosvar.workspace.interfaces.model import Default, Entry, Expression, Role
+from rosvar.workspace.interfaces.model import Default, Entry, Expression, Extracted, Role
 from rosvar.workspace.interfaces.reading import read_text
 from rosvar.workspace.interfaces.values import Text, action_type
 
@@ -30,6 +32,22 @@ _CALLS: dict[str, tuple[Role, str]] = {
     "actionlib.ActionClient": (Role.ACTION_CLIENTS, "ActionSpec"),
     "rospy.get_param": (Role.PARAMS, "default"),
 }
+_RCLPY_METHODS: dict[str, tuple[Role, int]] = {
+    # Node method → role, and the position of the name (the type comes first)
+    "create_publisher": (Role.PUBLISHES, 1),
+    "create_subscription": (Role.SUBSCRIBES, 1),
+    "create_service": (Role.SERVICES, 1),
+    "create_client": (Role.CLIENTS, 1),
+    "declare_parameter": (Role.PARAMS, 0),
+}
+_RCLPY_ACTIONS = {  # constructor → role; (node, type, name, ...)
+    "rclpy.action.ActionServer": Role.ACTION_SERVERS,
+    "rclpy.action.ActionClient": Role.ACTION_CLIENTS,
+    "rclpy.action.server.ActionServer": Role.ACTION_SERVERS,
+    "rclpy.action.client.ActionClient": Role.ACTION_CLIENTS,
+}
+_RCLPY_NODES = frozenset({"rclpy.node.Node", "rclpy.create_node"})
+"""Calls that build an rclpy node: the first argument is its name."""
 _MODULE_ALIASES = {
     "actionlib.simple_action_server": "actionlib",
     "actionlib.simple_action_client": "actionlib",
@@ -127,33 +145,85 @@ class _Reader:
                     self.active.discard(name)
         return Text.unknown(ast.unparse(node))
 
-    def type_name(self, node: ast.expr | None, role: Role) -> str | None:
+    def type_name(self, node: ast.expr | None, role: Role, ros2: bool = False) -> str | None:
+        """The ROS type a class names (ROS 2's with its ``msg``/``srv``/``action`` part)."""
         if node is None:
             return None
         full = self.qualified(node)
         if full is None:
             return None
         parts = full.split(".")
-        if len(parts) >= 3 and parts[-2] in ("msg", "srv"):
-            name = f"{parts[-3]}/{parts[-1]}"
+        if len(parts) >= 3 and parts[-2] in ("msg", "srv", "action"):
+            name = "/".join(parts[-3:] if ros2 else [parts[-3], parts[-1]])
         else:
             name = parts[-1]
         is_action = role in (Role.ACTION_SERVERS, Role.ACTION_CLIENTS)
         return action_type(name) if is_action else name
 
+    def node_name(self, call: ast.Call) -> Text | None:
+        """The name an rclpy node is built with: ``Node("talker")``,
+        ``super().__init__("talker")`` in a class derived from it, ``rclpy.create_node``."""
+        callee = self.qualified(call.func)
+        is_super = (
+            isinstance(call.func, ast.Attribute)
+            and call.func.attr == "__init__"
+            and isinstance(call.func.value, ast.Call)
+            and _dotted(call.func.value.func) == "super"
+        )
+        if callee not in _RCLPY_NODES and not is_super:
+            return None
+        keywords = {k.arg: k.value for k in call.keywords if k.arg}
+        name = call.args[0] if call.args else keywords.get("node_name")
+        return None if name is None else self.text(name)
+
     def entry(self, call: ast.Call) -> Entry | None:
         callee = self.qualified(call.func)
         known = _CALLS.get(callee or "")
-        if known is None:
-            return None
-        role, keyword = known
         keywords = {k.arg: k.value for k in call.keywords if k.arg}
+        if known is None:
+            return self.rclpy_entry(call, callee, keywords)
+        role, keyword = known
         name_node = (
             call.args[0] if call.args else keywords.get("name") or keywords.get("param_name")
         )
+        second = call.args[1] if len(call.args) > 1 else keywords.get(keyword)
+        return self.make(call, role, name_node, second)
+
+    def rclpy_entry(
+        self, call: ast.Call, callee: str | None, keywords: dict[str, ast.expr]
+    ) -> Entry | None:
+        """``node.create_publisher(T, "name", qos)`` and the like, ``ActionServer(node, T,
+        "name", ...)``, ``node.declare_parameter("name", default)``."""
+        arguments = call.args
+        if callee in _RCLPY_ACTIONS:
+            role = _RCLPY_ACTIONS[callee]
+            name = arguments[2] if len(arguments) > 2 else keywords.get("action_name")
+            kind = arguments[1] if len(arguments) > 1 else keywords.get("action_type")
+            return self.make(call, role, name, kind, ros2=True)
+        if not isinstance(call.func, ast.Attribute) or call.func.attr not in _RCLPY_METHODS:
+            return None
+        role, position = _RCLPY_METHODS[call.func.attr]
+        if role is Role.PARAMS:
+            name = arguments[0] if arguments else keywords.get("name")
+            value = arguments[1] if len(arguments) > 1 else keywords.get("value")
+            return self.make(call, role, name, value, ros2=True)
+        name_keyword = "topic" if role in (Role.PUBLISHES, Role.SUBSCRIBES) else "srv_name"
+        type_keyword = "msg_type" if role in (Role.PUBLISHES, Role.SUBSCRIBES) else "srv_type"
+        name = arguments[position] if len(arguments) > position else keywords.get(name_keyword)
+        kind = arguments[0] if arguments else keywords.get(type_keyword)
+        return self.make(call, role, name, kind, ros2=True)
+
+    def make(
+        self,
+        call: ast.Call,
+        role: Role,
+        name_node: ast.expr | None,
+        second: ast.expr | None,
+        ros2: bool = False,
+    ) -> Entry | None:
+        """The entry of ``call``: ``second`` is the type, or a parameter's default."""
         if name_node is None:
             return None
-        second = call.args[1] if len(call.args) > 1 else keywords.get(keyword)
         location = Location(self.path, call.lineno, call.col_offset + 1)
         name = self.text(name_node)
         if not name.static:
@@ -164,7 +234,7 @@ class _Reader:
             )
         if role is Role.PARAMS:
             return Entry(role, name.value, location, default=_default(second), static=name.static)
-        type_name = self.type_name(second, role)
+        type_name = self.type_name(second, role, ros2)
         if type_name is None:
             self.sink.note(
                 "interface-unknown-type", f"{role} type not known: {name.value}", location
@@ -186,9 +256,14 @@ def _default(node: ast.expr | None) -> Default | None:
 
 def extract(path: str, sink: DiagnosticSink) -> list[Entry]:
     """The interface of the Python script at ``path`` (empty when it cannot be parsed)."""
+    return extract_node(path, sink).entries
+
+
+def extract_node(path: str, sink: DiagnosticSink) -> Extracted:
+    """:func:`extract`, with the name an rclpy node gives itself (ROS 2)."""
     source = read_text(path)
     if source is None:
-        return []
+        return Extracted([])
     try:
         tree, rewritten = python2.parse(source, path)
     except (SyntaxError, ValueError) as error:
@@ -196,7 +271,7 @@ def extract(path: str, sink: DiagnosticSink) -> list[Entry]:
         sink.warning(
             "interface-unparsable", f"cannot parse the script: {error}", Location(path, line)
         )
-        return []
+        return Extracted([])
     if rewritten:
         sink.note(
             "interface-python2",
@@ -208,4 +283,6 @@ def extract(path: str, sink: DiagnosticSink) -> list[Entry]:
         (node for node in ast.walk(tree) if isinstance(node, ast.Call)),
         key=lambda node: (node.lineno, node.col_offset),
     )
-    return [entry for call in calls if (entry := reader.entry(call)) is not None]
+    names = {n.value for call in calls if (n := reader.node_name(call)) is not None and n.static}
+    entries = [entry for call in calls if (entry := reader.entry(call)) is not None]
+    return Extracted(entries, names.pop() if len(names) == 1 else None)
