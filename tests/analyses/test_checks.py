@@ -58,7 +58,7 @@ def _expected(
 ) -> set[tuple[Check, str]]:
     """The findings of one configuration, from its resolution."""
     resolution = resolve(analysis, [file], args)
-    graph = resolved_graph(resolution.nodes, interfaces)
+    graph = resolved_graph(resolution, interfaces)
     found = set()
     for topic in graph["topics"]:
         name = str(topic["name"])

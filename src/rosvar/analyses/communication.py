@@ -20,14 +20,16 @@ import enum
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 
-from rosvar.analyses.when import when_condition
+from rosvar.analyses.param_values import ParamValues, param_default
+from rosvar.analyses.resolve import Resolution
+from rosvar.analyses.when import ParamLookup, concrete_holds, when_condition
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.logic.bdd import BDD
-from rosvar.logic.choice import combine
+from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
-from rosvar.workspace.interfaces.model import Entry, Interfaces, NodeInterface, Role
+from rosvar.workspace.interfaces.model import Default, Entry, Interfaces, NodeInterface, Role
 
 
 class Channel(enum.StrEnum):
@@ -118,9 +120,10 @@ def find_interface(interfaces: Interfaces, unit: tuple[str, str]) -> NodeInterfa
 def model_edges(space: ConditionSpace, model: LaunchModel, interfaces: Interfaces) -> list[Edge]:
     """Every edge the nodes of ``model`` can have (tests excluded: they run apart)."""
     edges: list[Edge] = []
+    params = ParamValues(space, [(space.true, model)])
     for node in model.nodes:
         if not node.is_test:
-            edges.extend(node_edges(space, model.file, node, interfaces))
+            edges.extend(node_edges(space, model.file, node, interfaces, params))
     return edges
 
 
@@ -144,10 +147,10 @@ def launched_units(
 
 
 def node_edges(
-    space: ConditionSpace, file: str, node: NodeDecl, interfaces: Interfaces
+    space: ConditionSpace, file: str, node: NodeDecl, interfaces: Interfaces, params: ParamValues
 ) -> list[Edge]:
     """The edges of one ``<node>``: one per branch of its fields and per remap outcome (a
-    hinted entry's only where its ``when:`` holds)."""
+    hinted entry's only where its ``when:`` holds, its parameters' values from ``params``)."""
     edges = []
     remaps = [(remap.condition, remap.source, remap.target) for remap in node.remaps]
     for condition, launched, interface, static in launched_units(space, node, interfaces):
@@ -156,10 +159,34 @@ def node_edges(
                 continue
             used = condition
             if entry.when is not None:
-                used &= when_condition(space, node, entry.when)
+                lookup = param_lookup(params, launched, interface)
+                used &= when_condition(space, node, entry.when, lookup).condition
             for when, name in entry_names(launched, remaps, entry, used):
                 edges.append(_edge(file, launched, node, entry, name, when, static))
     return edges
+
+
+def param_lookup(
+    params: ParamValues, launched: LaunchedNode, interface: NodeInterface
+) -> ParamLookup:
+    """The values of ``launched``'s parameters by their names as written, resolved as the
+    node resolves them: what the launched files set, else the default its source reads."""
+    defaults = _defaults(launched, interface)
+
+    def lookup(name: str) -> Choice[object]:
+        resolved = launched.resolve(name)
+        return params.values(resolved, defaults.get(resolved))
+
+    return lookup
+
+
+def _defaults(launched: LaunchedNode, interface: NodeInterface) -> dict[str, Default]:
+    """The defaults the node's source gives its parameters, by resolved name."""
+    defaults: dict[str, Default] = {}
+    for entry in interface.of(Role.PARAMS):
+        if entry.static and entry.default is not None:
+            defaults.setdefault(launched.resolve(entry.name), entry.default)
+    return defaults
 
 
 def entry_names(
@@ -234,11 +261,12 @@ def restrict(edges: Iterable[Edge], holds: Callable[[BDD], bool]) -> list[Edge]:
 
 
 def resolved_graph(
-    nodes: Iterable[Mapping[str, object]], interfaces: Interfaces
+    resolution: Resolution, interfaces: Interfaces
 ) -> dict[str, list[dict[str, object]]]:
-    """``topics``, ``services`` and ``actions`` of resolved nodes (``rosvar resolve``'s)."""
+    """``topics``, ``services`` and ``actions`` of resolved nodes (``rosvar resolve``'s); a
+    hinted entry's where its ``when:`` holds with the node's args and parameters."""
     uses: list[tuple[str, Role, str, str | None]] = []
-    for node in nodes:
+    for node, scope in zip(resolution.nodes, resolution.scopes, strict=True):
         remaps = node.get("remaps") or []
         assert isinstance(remaps, list)
         launched = LaunchedNode(
@@ -255,12 +283,33 @@ def resolved_graph(
             continue
         table = {launched.resolve(a): launched.resolve(b) for a, b in launched.remaps}
         for entry in interface.entries:
-            if entry.role in CHANNEL:
-                resolved = launched.resolve(entry.beside or entry.name)
-                name = table.get(resolved, resolved)
-                name = name if entry.beside is None else _beside(name)
-                uses.append((launched.full_name, entry.role, name, entry.type))
+            if entry.role not in CHANNEL:
+                continue
+            if entry.when is not None:
+                value = _param_value(resolution.params, launched, interface)
+                if not concrete_holds(entry.when, scope, value):
+                    continue
+            resolved = launched.resolve(entry.beside or entry.name)
+            name = table.get(resolved, resolved)
+            name = name if entry.beside is None else _beside(name)
+            uses.append((launched.full_name, entry.role, name, entry.type))
     return graph_json(uses)
+
+
+def _param_value(
+    params: Mapping[str, object], launched: LaunchedNode, interface: NodeInterface
+) -> Callable[[str], object]:
+    """A parameter of ``launched`` by its name as written: the value the launched files
+    set, else its default (as :func:`param_lookup` gives every value)."""
+    defaults = _defaults(launched, interface)
+
+    def value(name: str) -> object:
+        resolved = launched.resolve(name)
+        if resolved in params:
+            return params[resolved]
+        return param_default(defaults.get(resolved))
+
+    return value
 
 
 def graph_json(

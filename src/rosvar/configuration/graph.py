@@ -25,9 +25,11 @@ from rosvar.analyses.communication import (
     LaunchedNode,
     entry_names,
     find_interface,
+    param_lookup,
 )
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
+from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.resolve import ResolutionError, test_fields
 from rosvar.analyses.when import when_condition
 from rosvar.configuration.derivation import Presence
@@ -165,6 +167,9 @@ class VariationalGraph:
         self._shadows: dict[BDD, BDD] = {}
         self._edges: dict[tuple[Channel, str], list[_Edge]] = {}  # a static name → its uses
         self._served: dict[tuple[Channel, str], tuple[list[str], BDD]] = {}  # services, actions
+        self.params = ParamValues(  # the nodes' parameters, for hints' when:
+            self.space, ((self.launched[f.file], analysis.model(f.file)) for f in model.files)
+        )
         for done, file in enumerate(model.files):
             if progress is not None:
                 progress(done, len(model.files))
@@ -447,7 +452,10 @@ class VariationalGraph:
                 continue
             used = condition
             if entry.when is not None:
-                used &= self.lowering.fix(when_condition(self.space, node, entry.when))
+                lookup = param_lookup(self.params, launched, interface)
+                used &= self.lowering.fix(
+                    when_condition(self.space, node, entry.when, lookup).condition
+                )
             for when, resolved in entry_names(launched, remaps, entry, used):
                 fixed, bounds = self.lowering.lower(when)
                 if "{" in resolved or not self.lowering.satisfiable(fixed):
