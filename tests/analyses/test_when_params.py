@@ -8,11 +8,13 @@ from typing import TYPE_CHECKING
 import pytest
 
 from configuration.helpers import choices
+from rosvar.analyses.checks import Check, check_model
 from rosvar.analyses.communication import Edge, graph_json, model_edges, resolved_graph, restrict
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.resolve import Restriction, resolve
 from rosvar.analyses.when import params_read, refusal, refusals
 from rosvar.configuration.engine import Configurator
+from rosvar.diagnostics import Severity
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER
@@ -203,3 +205,18 @@ def test_the_interface_default_is_the_value_nobody_sets(ws: LaunchWorkspace) -> 
     assert driver is not None
     [default] = [e.default for e in driver.of(Role.PARAMS) if e.name == "~use_imu"]
     assert default is True
+
+
+def test_check_notes_where_a_value_is_unknown(ws: LaunchWorkspace) -> None:
+    analysis, model, _file, interfaces = _setup(ws)
+    space = analysis.space
+    findings = check_model(space, model, interfaces, analysis.workspace.confinement())
+    unknown = {f.name: f for f in findings if f.check is Check.WHEN_UNKNOWN}
+    assert set(unknown) == {"debug", "fused"}  # imu: its typed text is decided once typed
+    assert unknown["debug"].condition == space.true
+    assert "/debug_mode: no launch file sets it and the node gives no default" in (
+        unknown["debug"].message
+    )
+    rate = space.slot(model.inputs["rate"], OTHER)
+    assert _same(space, unknown["fused"].condition, rate)  # the typed rate: not known
+    assert unknown["fused"].severity is Severity.NOTE
