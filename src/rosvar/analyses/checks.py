@@ -20,14 +20,14 @@ from rosvar.analyses.communication import (
     SIDES,
     Channel,
     Edge,
+    entry_when,
     launched_units,
     model_edges,
-    param_lookup,
 )
 from rosvar.analyses.conflicts import Occurrence, clashes, node_occurrences
 from rosvar.analyses.feature_model.operations import simplest_trigger
 from rosvar.analyses.param_values import ParamValues
-from rosvar.analyses.when import params_read, when_condition
+from rosvar.analyses.when import params_read
 from rosvar.diagnostics import Location, Severity
 from rosvar.files import Confinement
 from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, YamlDecl
@@ -356,8 +356,7 @@ class _Checker:
                 for entry in interface.entries:
                     if entry.when is None or not params_read(entry.when):
                         continue
-                    lookup = param_lookup(values, launched, interface)
-                    when = when_condition(self.space, node, entry.when, lookup)
+                    when = entry_when(values, node, launched, interface, entry.when)
                     self.add(
                         Check.WHEN_UNKNOWN,
                         Severity.NOTE,

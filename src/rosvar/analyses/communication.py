@@ -20,9 +20,9 @@ import enum
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 
-from rosvar.analyses.param_values import ParamValues, param_default
+from rosvar.analyses.param_values import ROS2_PARAMETERS, ParamValues, param_default
 from rosvar.analyses.resolve import Resolution
-from rosvar.analyses.when import ParamLookup, concrete_holds, when_condition
+from rosvar.analyses.when import When, concrete_holds, when_condition
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.logic.bdd import BDD
@@ -159,25 +159,28 @@ def node_edges(
                 continue
             used = condition
             if entry.when is not None:
-                lookup = param_lookup(params, launched, interface)
-                used &= when_condition(space, node, entry.when, lookup).condition
+                used &= entry_when(params, node, launched, interface, entry.when).condition
             for when, name in entry_names(launched, remaps, entry, used):
                 edges.append(_edge(file, launched, node, entry, name, when, static))
     return edges
 
 
-def param_lookup(
-    params: ParamValues, launched: LaunchedNode, interface: NodeInterface
-) -> ParamLookup:
-    """The values of ``launched``'s parameters by their names as written, resolved as the
-    node resolves them: what the launched files set, else the default its source reads."""
+def entry_when(
+    params: ParamValues, node: NodeDecl, launched: LaunchedNode, interface: NodeInterface, text: str
+) -> When:
+    """Where the ``when:`` ``text`` of an entry of ``interface`` holds for ``node`` launched as
+    ``launched`` (one branch of its fields): over the args of its scope and the values of its
+    parameters, resolved as the node resolves their names: what the launched files set, else
+    the default its source reads."""
     defaults = _defaults(launched, interface)
 
     def lookup(name: str) -> Choice[object]:
+        if node.parameters:  # ROS 2: the node's own parameters, not the server's
+            return Choice.const(params.space, ROS2_PARAMETERS)
         resolved = launched.resolve(name)
         return params.values(resolved, defaults.get(resolved))
 
-    return lookup
+    return when_condition(params.space, node, text, lookup)
 
 
 def _defaults(launched: LaunchedNode, interface: NodeInterface) -> dict[str, Default]:
@@ -300,7 +303,7 @@ def _param_value(
     params: Mapping[str, object], launched: LaunchedNode, interface: NodeInterface
 ) -> Callable[[str], object]:
     """A parameter of ``launched`` by its name as written: the value the launched files
-    set, else its default (as :func:`param_lookup` gives every value)."""
+    set, else its default (as :func:`entry_when` gives every value)."""
     defaults = _defaults(launched, interface)
 
     def value(name: str) -> object:

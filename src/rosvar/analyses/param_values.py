@@ -39,6 +39,7 @@ class Unknown:
 
 
 UNSET = Unknown("no launch file sets it and the node gives no default")
+ROS2_PARAMETERS = Unknown("a ROS 2 node's own parameters are not read")
 
 
 @dataclass(frozen=True)
@@ -61,22 +62,30 @@ class ParamValues:
         self.space = space
         self._launched = launched
         self._read: list[_Setting] | None = None
+        self._by_name: dict[str, list[int]] = {}  # indices into the settings, in order
+        self._below: list[int] = []  # the settings that may set anything below a namespace
 
     def _settings(self) -> list[_Setting]:
         if self._read is not None:
             return self._read
-        self._read = []
+        found: list[_Setting] = []
+        self._read = found
         for condition, model in self._launched:
             for param in model.params:
                 within = condition & param.condition
                 if isinstance(param, ParamDecl):
-                    self._add_param(self._read, within, param)
+                    self._add_param(found, within, param)
                 elif within != self.space.false:
                     scope = param.scope_ns if isinstance(param.scope_ns, str) else names.SEP
                     unknown = Unknown(f"a <rosparam> at {param.location} may set it")
                     value = Choice.const(self.space, unknown)
-                    self._read.append(_Setting(within, _canonical(scope), value, True))
-        return self._read
+                    found.append(_Setting(within, _canonical(scope), value, True))
+        for index, setting in enumerate(found):
+            if setting.below:
+                self._below.append(index)
+            else:
+                self._by_name.setdefault(setting.name, []).append(index)
+        return found
 
     def _add_param(self, found: list[_Setting], within: BDD, param: ParamDecl) -> None:
         """Its names known statically only (a name that is a term is not matched)."""
@@ -90,14 +99,12 @@ class ParamValues:
         """The values of the resolved ``name``: the last setting that holds wins, else the
         node's ``default`` (else :data:`UNSET`)."""
         name = _canonical(name)
+        settings = self._settings()
+        below = [i for i in self._below if name.startswith(settings[i].name.rstrip("/") + "/")]
         branches: list[tuple[BDD, object]] = []
         remaining = self.space.true
-        for setting in reversed(self._settings()):
-            matches = setting.name == name or (
-                setting.below and name.startswith(setting.name.rstrip(names.SEP) + names.SEP)
-            )
-            if not matches:
-                continue
+        for index in sorted(self._by_name.get(name, []) + below, reverse=True):
+            setting = settings[index]
             taken = remaining & setting.condition
             if taken != self.space.false:
                 branches.extend((taken & c, v) for c, v in setting.value)

@@ -24,14 +24,13 @@ from rosvar.analyses.communication import (
     Channel,
     LaunchedNode,
     entry_names,
+    entry_when,
     find_interface,
-    param_lookup,
 )
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.resolve import ResolutionError, test_fields
-from rosvar.analyses.when import when_condition
 from rosvar.configuration.derivation import Presence
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
@@ -452,10 +451,8 @@ class VariationalGraph:
                 continue
             used = condition
             if entry.when is not None:
-                lookup = param_lookup(self.params, launched, interface)
-                used &= self.lowering.fix(
-                    when_condition(self.space, node, entry.when, lookup).condition
-                )
+                when = entry_when(self.params, node, launched, interface, entry.when)
+                used &= self.lowering.fix(when.condition)
             for when, resolved in entry_names(launched, remaps, entry, used):
                 fixed, bounds = self.lowering.lower(when)
                 if "{" in resolved or not self.lowering.satisfiable(fixed):
