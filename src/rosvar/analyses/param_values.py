@@ -20,7 +20,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 from rosvar.analyses.json_values import json_value
-from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
+from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl, YamlDecl
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
@@ -76,10 +76,9 @@ class ParamValues:
                 if isinstance(param, ParamDecl):
                     self._add_param(found, within, param)
                 elif within != self.space.false:
-                    scope = param.scope_ns if isinstance(param.scope_ns, str) else names.SEP
                     unknown = Unknown(f"a <rosparam> at {param.location} may set it")
                     value = Choice.const(self.space, unknown)
-                    found.append(_Setting(within, _canonical(scope), value, True))
+                    found.append(_Setting(within, _loaded_below(param), value, True))
         for index, setting in enumerate(found):
             if setting.below:
                 self._below.append(index)
@@ -112,6 +111,17 @@ class ParamValues:
         if remaining != self.space.false:
             branches.append((remaining, param_default(default)))
         return Choice.of(branches, self.space.false)
+
+
+def _loaded_below(param: YamlDecl) -> str:
+    """The namespace a ``<rosparam>`` known only per configuration loads into: its scope's,
+    narrowed by its ``ns`` and ``param`` where they are known."""
+    scope = param.scope_ns if isinstance(param.scope_ns, str) else names.SEP
+    for part in (param.ns, param.param):
+        if not isinstance(part, str) or names.is_private(part) or names.is_private(scope):
+            break
+        scope = names.ns_join(names.make_global_ns(scope), part)
+    return _canonical(scope)
 
 
 def _canonical(name: str) -> str:
