@@ -9,8 +9,17 @@ import pytest
 
 from configuration.helpers import choices
 from rosvar.analyses.checks import Check, check_model
-from rosvar.analyses.communication import Edge, graph_json, model_edges, resolved_graph, restrict
+from rosvar.analyses.communication import (
+    Edge,
+    entry_when,
+    graph_json,
+    launched_units,
+    model_edges,
+    resolved_graph,
+    restrict,
+)
 from rosvar.analyses.feature_model.extraction import extract
+from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.resolve import Restriction, resolve
 from rosvar.analyses.when import params_read, refusal, refusals
 from rosvar.configuration.engine import Configurator
@@ -220,3 +229,23 @@ def test_check_notes_where_a_value_is_unknown(ws: LaunchWorkspace) -> None:
     rate = space.slot(model.inputs["rate"], OTHER)
     assert _same(space, unknown["fused"].condition, rate)  # the typed rate: not known
     assert unknown["fused"].severity is Severity.NOTE
+
+
+def test_names_resolve_as_the_node_resolves_them(ws: LaunchWorkspace) -> None:
+    """``~rate``, ``driver/rate`` (in the node's namespace /robot) and ``/robot/driver/rate``
+    are one parameter; ``rate`` is another (/robot/rate), which nobody sets."""
+    analysis, model, _file, interfaces = _setup(ws)
+    [node] = model.nodes
+    [(_condition, launched, interface, _static)] = launched_units(analysis.space, node, interfaces)
+    values = ParamValues(analysis.space, [(analysis.space.true, model)])
+
+    def when(text: str) -> BDD:
+        return entry_when(values, node, launched, interface, text).condition
+
+    fast = when("param('~rate') > 15")
+    assert fast not in (analysis.space.true, analysis.space.false)
+    assert when("param('driver/rate') > 15") == fast
+    assert when("param('/robot/driver/rate') > 15") == fast
+    assert entry_when(values, node, launched, interface, "param('rate') > 15").reasons == (
+        "rate: no launch file sets it and the node gives no default",
+    )
