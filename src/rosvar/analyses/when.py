@@ -50,7 +50,7 @@ _ARG = re.compile(r"\$\(arg\s+([^\s()]+)\s*\)")
 _EVAL = re.compile(r"\$\(eval\s+(.*)\)", re.DOTALL)
 _TRUE = ("true", "1")
 _ALONE = re.compile(r"\s*(?:\w+|arg\((['\"])\w+\1\))\s*")
-_ALONE_PARAM = re.compile(r"\s*param\((['\"])[^'\"]+\1\)\s*")  # one parameter's truth
+_ALONE_PARAM = re.compile(r"\s*param\((['\"])[^'\"]+\1\)\s*")
 _PARAM = "param"
 ParamLookup = Callable[[str], Choice[object]]
 """The values of a node's parameter, by its name as the ``when:`` writes it."""
@@ -185,7 +185,7 @@ def when_condition(space: ConditionSpace, node: NodeDecl, text: str, params: Par
     holds = unknown = space.false
     reasons: list[str] = []
     alone = _ALONE.fullmatch(source) is not None  # the expression is one arg's truth
-    alone_param = template.tree is not None and _ALONE_PARAM.fullmatch(source) is not None
+    alone_param = _ALONE_PARAM.fullmatch(source) is not None  # one parameter's truth
     for condition, leaves in combine(values, tuple):
         texts = dict(zip(names_, leaves[: len(names_)], strict=True))
         read_params = leaves[len(names_) :]
