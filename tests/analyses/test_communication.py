@@ -100,7 +100,9 @@ def test_restricted_graph_equals_resolved_graph(ws: LaunchWorkspace) -> None:
         kept = restrict(edges, restriction.holds)
         assert all(e.static for e in kept)
         uses = [(e.node, e.role, e.name, e.type) for e in kept]
-        expected = resolved_graph(resolution.nodes, interfaces)
+        expected = resolved_graph(
+            resolution.nodes, interfaces, resolution.scopes, resolution.params
+        )
         assert graph_json(uses) == expected
         assert expected["topics"]  # the test can fail: the graph is not empty
 
@@ -135,7 +137,9 @@ def test_corpus_restriction_equals_resolution(system: str) -> None:
                 continue
             kept = restrict(edges, Restriction(analysis, model, args, {}).holds)
             uses = [(e.node, e.role, e.name, e.type) for e in kept]
-            assert graph_json(uses) == resolved_graph(resolution.nodes, interfaces), (file, args)
+            assert graph_json(uses) == resolved_graph(
+                resolution.nodes, interfaces, resolution.scopes, resolution.params
+            ), (file, args)
             compared += bool(kept)
     assert compared >= 10  # configurations with a graph were compared
 
@@ -200,7 +204,9 @@ def test_camera_info_lies_beside_the_remapped_image(ws: LaunchWorkspace) -> None
         resolution = resolve(analysis, [file], {"relay": relay})
         kept = restrict(edges, Restriction(analysis, model, {"relay": relay}, {}).holds)
         uses = [(e.node, e.role, e.name, e.type) for e in kept]
-        assert graph_json(uses) == resolved_graph(resolution.nodes, interfaces)
+        assert graph_json(uses) == resolved_graph(
+            resolution.nodes, interfaces, resolution.scopes, resolution.params
+        )
 
 
 ROS2_LAUNCH = """\

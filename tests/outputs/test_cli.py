@@ -731,3 +731,35 @@ def test_ros2_hints_give_interfaces(tmp_path: Path, capsys: pytest.CaptureFixtur
     code, out, _err = run(capsys, "query", str(tmp_path), query, "--json", "--hints", str(hints))
     assert code == EXIT_OK
     assert [result["name"] for result in json.loads(out)["results"]] == ["/joy_in"]
+
+
+def test_resolve_reads_the_hints_when(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A hinted entry is in ``resolve``'s graph only where its ``when:`` holds with the
+    node's parameters (set here, else the source's default)."""
+    ws.write(
+        "scripts/talker.py",
+        "import rospy\nfrom std_msgs.msg import String\n"
+        'rospy.get_param("~loud", False)\nrospy.Publisher("chatter", String)\n',
+    )
+    hints = ws.write(
+        "hints.yaml",
+        "nodes:\n  pkg/talker.py:\n    publishes:\n"
+        "      - {name: chatter, type: std_msgs/String, when: \"param('~loud')\"}\n",
+    )
+    file = ws.launch(
+        "talk.launch",
+        '<arg name="loud" default=""/><node pkg="pkg" type="talker.py" name="talker">'
+        '<param name="loud" value="$(arg loud)" type="bool" unless="$(eval loud == \'\')"/>'
+        "</node>",
+    )
+    topics = {}
+    for loud in ("true", "false", ""):
+        argv = ["resolve", str(ws.root), "--launch", file, "--hints", hints, "--json"]
+        code, out, _err = run(capsys, *argv, f"loud:={loud}")
+        assert code == EXIT_OK
+        topics[loud] = [topic["name"] for topic in json.loads(out)["topics"]]
+    assert topics == {"true": ["/chatter"], "false": [], "": []}  # unset: the default, false
+    _code, out, _err = run(capsys, "resolve", str(ws.root), "--launch", file, "loud:=true")
+    assert "/chatter" in out  # without hints: the source's publisher

@@ -20,11 +20,14 @@ from rosvar.analyses.communication import (
     SIDES,
     Channel,
     Edge,
+    entry_when,
     launched_units,
     model_edges,
 )
 from rosvar.analyses.conflicts import Occurrence, clashes, node_occurrences
 from rosvar.analyses.feature_model.operations import simplest_trigger
+from rosvar.analyses.param_values import ParamValues
+from rosvar.analyses.when import params_read
 from rosvar.diagnostics import Location, Severity
 from rosvar.files import Confinement
 from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, YamlDecl
@@ -46,6 +49,7 @@ class Check(enum.StrEnum):
     NODE_NAME_CLASH = "node-name-clash"
     PARAM_UNSET = "param-unset"
     SYMBOLIC_NAME = "symbolic-name"
+    WHEN_UNKNOWN = "when-unknown"
 
 
 DESCRIPTIONS: dict[Check, str] = {
@@ -57,6 +61,8 @@ DESCRIPTIONS: dict[Check, str] = {
     Check.NODE_NAME_CLASH: "two nodes get one name: roslaunch refuses to start",
     Check.PARAM_UNSET: "a node reads a parameter without a default that no launch file sets",
     Check.SYMBOLIC_NAME: "a name could not be resolved statically: the checks skip it",
+    Check.WHEN_UNKNOWN: "a hinted entry's when: reads a parameter whose value is not known: "
+    "the entry is kept there",
 }
 
 PROVIDED = {Channel.TOPICS: "publish", Channel.SERVICES: "serve", Channel.ACTIONS: "serve"}
@@ -146,6 +152,7 @@ def check_model(
     checker.graph(edges)
     checker.node_names()
     checker.params(interfaces)
+    checker.whens(interfaces)
     return checker.findings
 
 
@@ -334,6 +341,30 @@ class _Checker:
                         f"{edge_node} reads {name}, which has no default and no launch file sets",
                         condition & ~set_here,
                         (node.location, entry_location),
+                    )
+
+    def whens(self, interfaces: Interfaces) -> None:
+        """Hinted entries kept where their ``when:`` reads a parameter whose value analysis
+        cannot know (unset without a default, a typed text, an unknown ``<rosparam>``)."""
+        values = ParamValues(self.space, [(self.space.true, self.model)])
+        for node in self.model.nodes:
+            if node.is_test:
+                continue
+            for condition, launched, interface, _static in launched_units(
+                self.space, node, interfaces
+            ):
+                for entry in interface.entries:
+                    if entry.when is None or not params_read(entry.when):
+                        continue
+                    when = entry_when(values, node, launched, interface, entry.when)
+                    self.add(
+                        Check.WHEN_UNKNOWN,
+                        Severity.NOTE,
+                        entry.name,
+                        f"{launched.full_name} {entry.role} {entry.name} when {entry.when}, "
+                        f"but {'; '.join(when.reasons)}: kept",
+                        condition & when.unknown,
+                        (node.location, entry.location),
                     )
 
     def setters(self) -> list[tuple[str, BDD]]:

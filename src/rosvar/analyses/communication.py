@@ -24,15 +24,16 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import TypeVar
 
-from rosvar.analyses.when import when_condition
+from rosvar.analyses.param_values import ROS2_PARAMETERS, ParamValues, param_default
+from rosvar.analyses.when import When, concrete_holds, when_condition
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.logic.bdd import BDD
-from rosvar.logic.choice import combine
+from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
 from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace
-from rosvar.workspace.interfaces.model import Entry, Interfaces, NodeInterface, Role
+from rosvar.workspace.interfaces.model import Default, Entry, Interfaces, NodeInterface, Role
 
 _R = TypeVar("_R")
 
@@ -166,9 +167,10 @@ def find_interface(interfaces: Interfaces, unit: tuple[str, str]) -> NodeInterfa
 def model_edges(space: ConditionSpace, model: LaunchModel, interfaces: Interfaces) -> list[Edge]:
     """Every edge the nodes of ``model`` can have (tests excluded: they run apart)."""
     edges: list[Edge] = []
+    params = ParamValues(space, [(space.true, model)])
     for node in model.nodes:
         if not node.is_test:
-            edges.extend(node_edges(space, model.file, node, interfaces))
+            edges.extend(node_edges(space, model.file, node, interfaces, params))
     return edges
 
 
@@ -191,10 +193,10 @@ def launched_units(
 
 
 def node_edges(
-    space: ConditionSpace, file: str, node: NodeDecl, interfaces: Interfaces
+    space: ConditionSpace, file: str, node: NodeDecl, interfaces: Interfaces, params: ParamValues
 ) -> list[Edge]:
     """The edges of one ``<node>``: one per branch of its fields and per remap outcome (a
-    hinted entry's only where its ``when:`` holds)."""
+    hinted entry's only where its ``when:`` holds, its parameters' values from ``params``)."""
     edges = []
     remaps = [(remap.condition, remap.source, remap.target) for remap in node.remaps]
     for condition, launched, interface, static in launched_units(space, node, interfaces):
@@ -203,10 +205,37 @@ def node_edges(
                 continue
             used = condition
             if entry.when is not None:
-                used &= when_condition(space, node, entry.when)
+                used &= entry_when(params, node, launched, interface, entry.when).condition
             for when, name in entry_names(launched, remaps, entry, used):
                 edges.append(_edge(file, launched, node, entry, name, when, static))
     return edges
+
+
+def entry_when(
+    params: ParamValues, node: NodeDecl, launched: LaunchedNode, interface: NodeInterface, text: str
+) -> When:
+    """Where the ``when:`` ``text`` of an entry of ``interface`` holds for ``node`` launched as
+    ``launched`` (one branch of its fields): over the args of its scope and the values of its
+    parameters, resolved as the node resolves their names: what the launched files set, else
+    the default its source reads."""
+    defaults = _defaults(launched, interface)
+
+    def lookup(name: str) -> Choice[object]:
+        if node.parameters:  # ROS 2: the node's own parameters, not the server's
+            return Choice.const(params.space, ROS2_PARAMETERS)
+        resolved = launched.resolve(name)
+        return params.values(resolved, defaults.get(resolved))
+
+    return when_condition(params.space, node, text, lookup)
+
+
+def _defaults(launched: LaunchedNode, interface: NodeInterface) -> dict[str, Default]:
+    """The defaults the node's source gives its parameters, by resolved name."""
+    defaults: dict[str, Default] = {}
+    for entry in interface.of(Role.PARAMS):
+        if entry.static and entry.default is not None:
+            defaults.setdefault(launched.resolve(entry.name), entry.default)
+    return defaults
 
 
 def entry_names(
@@ -281,12 +310,18 @@ def restrict(edges: Iterable[Edge], holds: Callable[[BDD], bool]) -> list[Edge]:
 
 
 def resolved_graph(
-    nodes: Iterable[Mapping[str, object]], interfaces: Interfaces
+    nodes: Sequence[Mapping[str, object]],
+    interfaces: Interfaces,
+    scopes: Sequence[Mapping[str, str]] | None = None,
+    params: Mapping[str, object] | None = None,
 ) -> dict[str, list[dict[str, object]]]:
     """``topics``, ``services`` and ``actions`` of resolved nodes (``rosvar resolve``'s, ROS
-    1's or ROS 2's nodes)."""
+    1's or ROS 2's); a hinted entry's where its ``when:`` holds with the node's args
+    (``scopes``, one per node) and ROS 1's parameter server (``params``). Without them (ROS 2,
+    whose nodes keep their own parameters) a ``when:`` is not known, and the entry is kept as
+    the variational graph keeps it."""
     uses: list[tuple[str, Role, str, str | None]] = []
-    for node in nodes:
+    for index, node in enumerate(nodes):
         launched = _resolved_node(node)
         unit = launched.unit()
         interface = None if unit is None else find_interface(interfaces, unit)
@@ -297,11 +332,16 @@ def resolved_graph(
         for a, b in launched.remap_order(launched.remaps):
             table.setdefault(launched.resolve(a), launched.resolve(b))
         for entry in interface.entries:
-            if entry.role in CHANNEL:
-                resolved = launched.resolve(entry.beside or entry.name)
-                name = table.get(resolved, resolved)
-                name = name if entry.beside is None else _beside(name)
-                uses.append((launched.full_name, entry.role, name, entry.type))
+            if entry.role not in CHANNEL:
+                continue
+            if entry.when is not None and scopes is not None and params is not None:
+                value = _param_value(params, launched, interface)
+                if not concrete_holds(entry.when, scopes[index], value):
+                    continue
+            resolved = launched.resolve(entry.beside or entry.name)
+            name = table.get(resolved, resolved)
+            name = name if entry.beside is None else _beside(name)
+            uses.append((launched.full_name, entry.role, name, entry.type))
     return graph_json(uses)
 
 
@@ -329,6 +369,22 @@ def _resolved_node(node: Mapping[str, object]) -> LaunchedNode:
         "plugin": node.get("plugin"),
     }
     return LaunchedNode.of(fields, [(str(a), str(b)) for a, b in remaps])
+
+
+def _param_value(
+    params: Mapping[str, object], launched: LaunchedNode, interface: NodeInterface
+) -> Callable[[str], object]:
+    """A parameter of ``launched`` by its name as written: the value the launched files
+    set, else its default (as :func:`entry_when` gives every value)."""
+    defaults = _defaults(launched, interface)
+
+    def value(name: str) -> object:
+        resolved = launched.resolve(name)
+        if resolved in params:
+            return params[resolved]
+        return param_default(defaults.get(resolved))
+
+    return value
 
 
 def graph_json(

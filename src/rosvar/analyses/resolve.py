@@ -9,13 +9,20 @@ locations.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
 
 from rosvar.analyses.json_values import json_value
 from rosvar.diagnostics import Location
-from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl, Raw, anon_pattern
+from rosvar.interpreter.model import (
+    DeferredValue,
+    LaunchModel,
+    NodeDecl,
+    ParamDecl,
+    Raw,
+    anon_pattern,
+)
 from rosvar.interpreter.substitution import PackageTable
 from rosvar.interpreter.tags.param import param_value
 from rosvar.interpreter.tags.rosparam import load_rosparam
@@ -66,6 +73,8 @@ class Resolution:
     params: dict[str, object] = field(default_factory=dict)
     conflicts: list[Conflict] = field(default_factory=list)
     errors: list[ResolutionError] = field(default_factory=list)
+    scopes: list[Mapping[str, str]] = field(default_factory=list)
+    """Per node, the texts of the args its scope sees (for a hint's ``when:``)."""
 
     @property
     def ok(self) -> bool:
@@ -222,6 +231,7 @@ def _restrict(
         else:
             seen[full] = node.location
         result.nodes.append(entry)
+        result.scopes.append(_Scope(r, node))
     for param in model.params:
         if not r.holds(param.condition):
             continue
@@ -254,9 +264,32 @@ def _restrict(
                 result.params[key] = json_value(value)
 
 
-def _node(r: Restriction, node: object) -> dict[str, object]:
-    from rosvar.interpreter.model import NodeDecl
+class _Scope(Mapping[str, str]):
+    """The args a node's scope sees, each picked when read: a node sees every arg of its
+    file, and a hint reads one or two."""
 
+    def __init__(self, r: Restriction, node: NodeDecl) -> None:
+        self._r = r
+        self._node = node
+
+    def __getitem__(self, name: str) -> str:
+        choice = self._node.args[name]
+        try:
+            text = self._r.pick(choice, self._node.location, f"arg {name}")
+        except ResolutionError:
+            raise KeyError(name) from None
+        if not isinstance(text, str):
+            raise KeyError(name)  # undefined there
+        return text
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._node.args)
+
+    def __len__(self) -> int:
+        return len(self._node.args)
+
+
+def _node(r: Restriction, node: object) -> dict[str, object]:
     assert isinstance(node, NodeDecl)
     location = node.location
     raw = {k: r.raw(v, location, f"<node> {k}") for k, v in node.fields.items()}

@@ -24,13 +24,14 @@ from rosvar.analyses.communication import (
     Channel,
     LaunchedNode,
     entry_names,
+    entry_when,
     find_interface,
     node_fields,
 )
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
+from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.resolve import ResolutionError, test_fields
-from rosvar.analyses.when import when_condition
 from rosvar.configuration.derivation import Presence
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
@@ -167,6 +168,9 @@ class VariationalGraph:
         self._shadows: dict[BDD, BDD] = {}
         self._edges: dict[tuple[Channel, str], list[_Edge]] = {}  # a static name → its uses
         self._served: dict[tuple[Channel, str], tuple[list[str], BDD]] = {}  # services, actions
+        self.params = ParamValues(  # the nodes' parameters, for hints' when:
+            self.space, ((self.launched[f.file], analysis.model(f.file)) for f in model.files)
+        )
         for done, file in enumerate(model.files):
             if progress is not None:
                 progress(done, len(model.files))
@@ -454,7 +458,8 @@ class VariationalGraph:
                 continue
             used = condition
             if entry.when is not None:
-                used &= self.lowering.fix(when_condition(self.space, node, entry.when))
+                when = entry_when(self.params, node, launched, interface, entry.when)
+                used &= self.lowering.fix(when.condition)
             for when, resolved in entry_names(launched, remaps, entry, used):
                 fixed, bounds = self.lowering.lower(when)
                 if "{" in resolved or not self.lowering.satisfiable(fixed):

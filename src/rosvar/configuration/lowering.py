@@ -11,14 +11,15 @@ that the user may type later — from below (``must``: for every text) and from 
 
 from __future__ import annotations
 
-from collections.abc import Collection, Mapping, Sequence
+import functools
+from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass
 
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.interpreter.substitution import PackageTable
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD, transfer
-from rosvar.logic.conditions import PredicateAtom, SlotAtom, decide_predicate
+from rosvar.logic.conditions import Atom, PredicateAtom, SlotAtom, decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import term_inputs
 from rosvar.memo import Memo
@@ -66,16 +67,11 @@ class Lowering:
         truth = space.assignment({i: self.concrete.get(i) for i in space.inputs()}, self.host)
         self.fixed: dict[str, bool] = {}
         self.open: set[str] = set()
+        self._solver_variables = solver_variables
         for atom in space.atoms():
             name = space.variable_name(atom)
-            if name in solver_variables:
-                continue
-            if isinstance(atom, SlotAtom) and atom.input in self.feature_inputs:
-                self.fixed[name] = False  # a selected arg holds one of its feature values
-            elif isinstance(atom, PredicateAtom) and term_inputs(atom.term) & self.feature_inputs:
-                self.open.add(name)
-            else:
-                self.fixed[name] = truth[name]
+            if name not in solver_variables:
+                self._classify(name, atom, functools.partial(truth.__getitem__, name))
         # condition → fixed, and the open atoms of its support (most have none: one set)
         self._fixed: dict[BDD, tuple[BDD, frozenset[str]]] = {}
         self._bounds: dict[BDD, Bounds] = {}  # by fixed condition
@@ -84,11 +80,28 @@ class Lowering:
         self._satisfiable: dict[BDD, bool] = {}
         self._copies: dict[frozenset[str], dict[BDD, BDD]] = {}  # the last open atoms hidden
 
+    def _classify(self, name: str, atom: Atom, truth: Callable[[], bool]) -> None:
+        """Fix ``atom`` (to ``truth()``), or keep it open: a predicate on a feature arg."""
+        if isinstance(atom, SlotAtom) and atom.input in self.feature_inputs:
+            self.fixed[name] = False  # a selected arg holds one of its feature values
+        elif isinstance(atom, PredicateAtom) and term_inputs(atom.term) & self.feature_inputs:
+            self.open.add(name)
+        else:
+            self.fixed[name] = truth()
+
     def fix(self, condition: BDD) -> BDD:
-        """``condition`` with the fixed atoms substituted (still in the analysis' manager)."""
+        """``condition`` with the fixed atoms substituted (still in the analysis' manager).
+
+        A predicate made after this lowering (a hint's ``when:`` on a typed text, built
+        with the graph) is classified when first met."""
         found = self._fixed.get(condition)
         if found is None:
             support = self.space.support(condition)
+            for name in support - self.fixed.keys() - self.open - self._solver_variables:
+                atom = self.space.atom_of(name)
+                assert isinstance(atom, PredicateAtom)
+                decided = functools.partial(decide_predicate, atom, self.concrete, self.host)
+                self._classify(name, atom, decided)
             values = {n: self.fixed[n] for n in support if n in self.fixed}
             fixed = self.space.cofactor(condition, values)
             kept = support  # the support of ``fixed`` when nothing was fixed

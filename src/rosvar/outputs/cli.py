@@ -159,7 +159,11 @@ def cmd_resolve(options: argparse.Namespace) -> int:
     _warn_unknown_args(analysis, files, args)
     result = resolve(analysis, files, args, env)
     document = result.to_json()
-    graph = resolved_graph(result.nodes, _interfaces(workspace, options))
+    interfaces = _interfaces(workspace, options)
+    for diagnostic in interfaces.diagnostics:
+        if diagnostic.code == "hints-invalid":
+            print(diagnostic, file=sys.stderr)
+    graph = resolved_graph(result.nodes, interfaces, result.scopes, result.params)
     document.update(graph)
     if options.json:
         _print_json(document)
@@ -810,6 +814,9 @@ def parser() -> argparse.ArgumentParser:
         "repeatable: several files share one command line",
     )
     res.add_argument("--env", action="append", default=[], metavar="NAME=VALUE", help=ENV_HELP)
+    res.add_argument(
+        "--hints", metavar="FILE", help="YAML with interface entries (docs/hints.md, nodes:)"
+    )
     res.add_argument(
         "--json",
         action="store_true",
