@@ -10,6 +10,7 @@ import pytest
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
 from outputs.web.test_app import App
+from rosvar.outputs.web.overview import key_of
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -71,6 +72,33 @@ def test_a_query_is_judged_under_the_tabs_choices(small: Live) -> None:
     assert ask(small, session, "nodes[self.name == '/listener']") == []
     [talker] = ask(small, session, "for n in nodes where n.name != '/listener' return n")
     assert (talker["name"], talker["presence"], talker["condition"]) == ("/talker", "present", None)
+
+
+def test_in_overview_mode_results_name_the_groups_of_their_entries(small: Live) -> None:
+    """A tab in overview mode does not hold the entries: it opens the group of a result."""
+    session = small.post("/api/session", {"overview": "file"})["session"]
+    [node] = ask(small, session, "nodes[self.name == '/listener']")
+    assert node["groups"] == [key_of(["a.launch"])]
+    [topic] = ask(small, session, "topics[self.name == '/chatter']")
+    assert topic["groups"] == [None]  # drawn one by one
+    findings = small.post("/api/checks", {"session": session})["findings"]
+    for finding in findings:
+        assert len(finding["groups"]) == len(finding["ids"])
+        for id_, group in zip(finding["ids"], finding["groups"], strict=True):
+            assert group == (None if id_.startswith(("topic:", "service:")) else node["groups"][0])
+    assert "groups" not in ask(small, small.open()["session"], "nodes")[0]
+
+
+def test_services_are_summarised_and_listed_like_topics(small: Live) -> None:
+    tab = small.post("/api/session", {"overview": "file"})
+    [group] = tab["graph"]["groups"]
+    assert group["services"] == [0, 1] and group["topics"] == [0, 2] and group["files"] == 1
+    answer = small.post(
+        "/api/group", {"session": tab["session"], "group": group["id"], "kind": "services"}
+    )
+    [service] = answer["members"]
+    assert service["name"] == "/reset" and service["groups"] == [group["id"]] * 2
+    assert sorted(service["names"]) == ["/listener", "/talker"]
 
 
 def test_a_query_the_parser_refuses_is_a_400_with_its_position(small: Live) -> None:

@@ -211,7 +211,8 @@ class Api:
         _only(body, {"session", "expression"})
         _key, tab = self._session(body)
         try:
-            return self._inspector.query(_text(body, "expression"), tab.session.current())
+            expression = _text(body, "expression")
+            return self._inspector.query(expression, tab.session.current(), tab.grouping)
         except QueryError as error:
             raise ApiError(HTTPStatus.BAD_REQUEST, str(error), position=error.col) from None
 
@@ -220,7 +221,7 @@ class Api:
         _only(query, set())
         _only(body, {"session"})
         _key, tab = self._session(body)
-        return self._inspector.checks(tab.session.current())
+        return self._inspector.checks(tab.session.current(), tab.grouping)
 
     # -- checks ------------------------------------------------------------------------------
     def _session(self, fields: Mapping[str, object]) -> tuple[str, Tab]:
