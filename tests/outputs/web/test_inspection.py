@@ -154,8 +154,9 @@ def red_units(app: App) -> list[str]:
     return sorted(app.page.evaluate("window.rosvar.graph.cy.nodes('.queried').map((n) => n.id())"))
 
 
-def drawn(app: App, entry: str) -> str:
-    unit: str = app.page.evaluate("(id) => window.rosvar.graph.drawing()[id]", entry)
+def drawn(app: App, entry: str) -> str | None:
+    [node] = [n for n in app.whole["graph"]["nodes"] if n["id"] == entry]
+    [unit] = app.drawers([node])
     return unit
 
 
@@ -167,13 +168,13 @@ def test_the_query_box_marks_its_results_and_follows_the_choices(page: Any, smal
     page.wait_for_selector("#query-results li.result")
     assert page.locator("#query-status").text_content() == "1 result"
     assert "when listen" in page.locator("#query-results li").first.text_content()
-    [listener] = [n["id"] for n in app.state["graph"]["nodes"] if n["name"] == "/listener"]
+    [listener] = [n["id"] for n in app.whole["graph"]["nodes"] if n["name"] == "/listener"]
     assert red_units(app) == [drawn(app, listener)]
     app.choose("a.launch", "select")
     app.wait_for_layout()
     assert red_units(app) == ["n:" + listener]  # the file's nodes are drawn one by one
     # the service is drawn too, requests going from its client to its server
-    [talker] = [n["id"] for n in app.state["graph"]["nodes"] if n["name"] == "/talker"]
+    [talker] = [n["id"] for n in app.whole["graph"]["nodes"] if n["name"] == "/talker"]
     edges = page.evaluate(
         """window.rosvar.graph.cy.edges('[kind = "service"]')
              .map((e) => [e.source().id(), e.target().id()])"""
@@ -195,7 +196,7 @@ def test_the_checks_panel_lists_findings_and_marks_a_clicked_one(page: Any, smal
     assert "note" in finding.text_content() and "when ¬listen" in finding.text_content()
     assert red_units(app) == []
     finding.click()
-    [talker] = [n["id"] for n in app.state["graph"]["nodes"] if n["name"] == "/talker"]
+    [talker] = [n["id"] for n in app.whole["graph"]["nodes"] if n["name"] == "/talker"]
     assert drawn(app, talker) in red_units(app) and "t:topic:/chatter" in red_units(app)
     answered = page.locator("body").get_attribute("data-checks")
     app.choose("a.launch", "select")
