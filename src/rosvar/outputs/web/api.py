@@ -88,20 +88,6 @@ def _only(fields: Mapping[str, object], allowed: set[str]) -> None:
         raise ApiError(HTTPStatus.BAD_REQUEST, f"unknown field(s): {', '.join(unknown)}")
 
 
-def defaults(configurator: Configurator) -> dict[str, str]:
-    """Arg feature id → the id of its default value's feature, for the tree to mark.
-
-    The engine's state names features, not defaults; its catalog knows them.
-    """
-    catalog = configurator.catalog
-    found: dict[str, str] = {}
-    for arg in (feature for feature in catalog if feature.kind == FeatureKind.ARG):
-        default = next((f.id for f, value in catalog.values_of(arg.id) if value.default), None)
-        if default is not None:
-            found[arg.id] = default
-    return found
-
-
 class Api:
     """Sessions of one :class:`Configurator`, reached through the route table."""
 
@@ -112,7 +98,6 @@ class Api:
         features = configurator.state([]).features  # the ids never change: known once
         configurator.derivation.prepare_counts()
         self._kinds = {key: feature.kind for key, feature in features.items()}
-        self._defaults = defaults(configurator)
         self._inspector = Inspector(configurator)
 
     def handle(self, method: str, path: str, query: Query, body: Body) -> Reply:
@@ -252,12 +237,10 @@ class Api:
     def _reply(self, key: str, tab: Tab, state: ConfigurationState, known: int | None) -> Reply:
         document = {
             **state.to_json(),
-            "defaults": self._defaults,  # the same object every time: never in a delta
             "can_undo": tab.session.can_undo,
             "can_redo": tab.session.can_redo,
         }
-        if tab.grouping is not None:  # the catalog has the defaults
-            del document["defaults"]
+        if tab.grouping is not None:
             document = compact(document, tab.grouping)
         return {"session": key, **tab.answer(document, known)}
 
