@@ -9,10 +9,15 @@ from __future__ import annotations
 
 import json
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
+from urllib.parse import urlsplit
 
-from outputs.web.live import Live
+from configuration.helpers import configurator
+from outputs.web.live import Live, running
 from rosvar.outputs.web.overview import SEPARATOR, Grouping, key_of, labels
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
 
 MARKS = {"selected": ("✓", "(✓)"), "deselected": ("✗", "(✗)"), "unselected": ("·", "·")}
 OTHER = "<other>"
@@ -383,6 +388,75 @@ def test_graph_navigation(page: Any, examples: Live) -> None:
     app.wait_for_visible(lambda count: f"{count} >= {total}")
 
 
+Answer = tuple[str, dict[str, Any], int]
+
+
+def record_answers(page: Any) -> list[Answer]:
+    """The API answers the page receives from now on: path, request body, size in bytes."""
+    answers: list[Answer] = []
+
+    def answered(response: Any) -> None:
+        path = urlsplit(response.url).path
+        if path.startswith("/api/"):
+            body = response.request.post_data_json or {}
+            answers.append((path, body, int(response.headers["content-length"])))
+
+    page.on("response", answered)
+    return answers
+
+
+def opened_groups(answers: list[Answer]) -> set[str]:
+    """The groups whose nodes the page fetched."""
+    return {body["group"] for path, body, _ in answers if path == "/api/group"
+            and body["kind"] == "nodes"}  # fmt: skip
+
+
+def many_elements(ws: LaunchWorkspace, files: int = 24, nodes: int = 30, params: int = 8) -> None:
+    """``files`` launch files of ``nodes`` nodes with ``params`` params each."""
+    for file in range(files):
+        body = "\n".join(
+            f'  <node pkg="pkg" type="t" name="n{node}" ns="/f{file}">'
+            + "".join(f'<param name="p{param}" value="{param}"/>' for param in range(params))
+            + "</node>"
+            for node in range(nodes)
+        )
+        ws.launch(f"f{file:02}.launch", body)
+
+
+def test_the_pages_answers_stay_small_and_members_come_when_a_group_opens(
+    page: Any, ws: LaunchWorkspace
+) -> None:
+    many_elements(ws)
+    with running(configurator(ws)) as live:
+        whole = len(live.call("POST", "/api/session", {}).body)
+        answers = record_answers(page)
+        app = App(page, live)
+        app.wait_for_layout()
+        assert opened_groups(answers) == set() and app.units("node") == []
+        (package,) = app.units("group")
+        app.click_graph_element(package["id"], double=True)  # a box per file, no member
+        app.wait_for_layout()
+        assert opened_groups(answers) == set() and len(app.units("group")) == 24
+        box = next(u for u in app.units("group") if "f03.launch" in u["label"])
+        del answers[:]
+        app.click_graph_element(box["id"], double=True)
+        app.wait_for_layout()
+        assert opened_groups(answers) == {box["element"]["key"]}
+        names = sorted(f"/f3/n{node}" for node in range(30))
+        assert sorted(u["element"]["name"] for u in app.units("node")) == names[:24]  # a page
+        assert [u["label"] for u in app.units("more")] == ["+6 more"]
+        del answers[:]
+        app.choose(file_named(app.state, "f05.launch"), "select")  # opens its group
+        app.wait_for_layout()
+        chosen = next(key for key in opened_groups(answers) if "f05" in key)
+        assert opened_groups(answers) == {box["element"]["key"], chosen}  # fetched again
+        page.check("#show-params")
+        app.wait_for_layout()
+        app.assert_shows_server_state()
+    sizes = [size for _, _, size in answers]
+    assert len(sizes) > 5 and max(sizes) < whole / 50
+
+
 def test_complete_product_gives_the_command(page: Any, examples: Live) -> None:
     app = App(page, examples)
     robot = file_named(app.state, "robot.launch")
@@ -606,6 +680,28 @@ def test_husky_counts_defaults_and_refusals_read_well(page: Any, husky: Live) ->
     assert notice.bounding_box()["height"] <= 0.4 * 900
     page.click("#notice-close")
     assert notice.is_hidden()
+
+
+MAX_ANSWER = 2_000_000  # bytes: issue 17
+
+
+def test_husky_the_page_is_sent_no_answer_over_2_mb(page: Any, husky: Live) -> None:
+    """Husky with its dependencies (``rosvar serve husky --deps _external``): its whole
+    state is over the bound, no answer the page receives is."""
+    assert len(husky.call("POST", "/api/session", {}).body) > MAX_ANSWER
+    answers = record_answers(page)
+    app = App(page, husky)
+    app.choose(husky_file(app, "husky_playpen.launch"), "select")
+    gazebo = next(u for u in app.units("group") if "husky_bringup" in u["label"])
+    app.click_graph_element(gazebo["id"], double=True)
+    page.check("#show-params")
+    app.wait_for_layout()
+    app.wait_for_update(lambda: page.select_option("#group-by", "namespace"))
+    app.wait_for_layout()
+    app.assert_shows_server_state()
+    paths = {path for path, _, _ in answers}
+    assert {"/api/catalog", "/api/session", "/api/choose", "/api/grouping", "/api/group"} <= paths
+    assert max(size for _, _, size in answers) < MAX_ANSWER
 
 
 def test_husky_double_click_is_one_choice(page: Any, husky: Live) -> None:
