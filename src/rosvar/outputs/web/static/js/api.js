@@ -11,7 +11,7 @@
 // them already holds its id, and opens a fresh session if so: two tabs never share choices.
 
 import { Catalog } from "./catalog.js";
-import { patch, touched } from "./delta.js";
+import { patch } from "./delta.js";
 
 const KEY = "rosvar.session";
 const CHANNEL = "rosvar.sessions";
@@ -94,7 +94,7 @@ export class Client {
   }
 
   // {state, changes}: the state after an answer, its features read through the catalog, and
-  // what it changed (null: everything; else {features: Set of ids, fields: Set of names}).
+  // what it changed (null: everything, for a whole state; else {features: Set of ids}).
   async receive(answer) {
     const held = patch(this.held, answer);
     if (held === null) return this.whole(answer.session); // out of step: ask for all of it
@@ -102,8 +102,7 @@ export class Client {
     this.session = held.session;
     sessionStorage.setItem(KEY, held.session);
     const { features, changed } = this.catalog.read(held.features);
-    const fields = touched(answer);
-    const changes = fields === null || changed === null ? null : { features: changed, fields };
+    const changes = "base" in answer && changed !== null ? { features: changed } : null;
     return { state: { ...held, features }, changes };
   }
 

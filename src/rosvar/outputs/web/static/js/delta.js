@@ -32,10 +32,3 @@ function patchList(entries, change) {
   for (const [index, fields] of change.changed) result[index] = { ...result[index], ...fields };
   return result;
 }
-
-// The fields an answer changed, for views that update only that: null (everything) for a
-// whole state, else a Set of field names.
-export function touched(answer) {
-  if (!("base" in answer)) return null;
-  return new Set(Object.keys(answer).filter((key) => key !== "base" && key !== "version"));
-}
