@@ -54,7 +54,7 @@ CHANNELS = (MemberKind.TOPICS, MemberKind.SERVICES, MemberKind.ACTIONS)
 """The names nodes are wired to: counted and listed under the groups of their nodes."""
 
 
-# -- names (the page's names.js) ---------------------------------------------------------------
+# -- names (files spelled as the page's names.js spells them) ------------------------------------
 def entry_file(element_id: str) -> str:
     """The launch file whose model holds a graph entry: its id starts with it (``FILE|...``)."""
     cut = element_id.find("|")
