@@ -80,6 +80,18 @@ class Live:
     def open(self) -> Any:
         return self.post("/api/session", {})
 
+    def whole(self, session: str) -> dict[str, Any]:
+        """A tab's current state whole, every graph entry with it (what a session not in
+        overview mode is sent): what the page, which fetches only what it draws, must
+        account for. Read in-process, under the API's lock."""
+        api = self.server.api
+        with api._lock:
+            tab = api._store.get(session)
+            assert tab is not None, "no such session"
+            document = tab.session.current().to_json()
+        whole: dict[str, Any] = json.loads(json.dumps(document))
+        return whole
+
 
 def configurator(paths: list[Path], package_path: str = "") -> Configurator:
     analysis = Analysis(discover([str(p) for p in paths], ros_package_path=package_path))

@@ -55,10 +55,10 @@ def test_a_tab_naming_its_version_gets_only_what_changed(examples: Live) -> None
         assert (field in after) == (whole[field] != reply[field]), field
 
 
-def test_the_state_names_each_args_default_value(examples: Live) -> None:
-    reply = examples.open()
-    defaults = reply["defaults"]
-    features = reply["features"]
+def test_the_catalog_marks_each_args_default_value(examples: Live) -> None:
+    features = examples.open()["features"]
+    rows = examples.call("GET", "/api/catalog").json()["features"]
+    defaults = {rows[row[5]][0]: row[0] for row in rows if row[6]}
     # robot.launch: <arg name="model" default="kobuki"/>; control.xml: use_teleop default true
     robot = next(
         k for k, f in features.items() if k.endswith("robot.launch") and f["kind"] == "file"
@@ -66,9 +66,7 @@ def test_the_state_names_each_args_default_value(examples: Live) -> None:
     assert defaults[f"{robot}:model"] == f"{robot}:model=kobuki"
     assert all(features[arg]["kind"] == "arg" for arg in defaults)
     assert all(features[value]["parent"] == arg for arg, value in defaults.items())
-    body = {"session": reply["session"], "version": reply["version"]}
-    after = examples.post("/api/choose", {**body, "action": "select", "feature": robot})
-    assert "defaults" not in after  # the same in every state: never in a delta
+    assert all(features[value]["value"] != "<other>" for value in defaults.values())
 
 
 def test_two_sessions_never_see_each_others_choices(examples: Live) -> None:

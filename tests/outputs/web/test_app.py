@@ -9,9 +9,15 @@ from __future__ import annotations
 
 import json
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
+from urllib.parse import urlsplit
 
-from outputs.web.live import Live
+from configuration.helpers import configurator
+from outputs.web.live import Live, running
+from rosvar.outputs.web.overview import SEPARATOR, Grouping, key_of, labels
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
 
 MARKS = {"selected": ("✓", "(✓)"), "deselected": ("✗", "(✗)"), "unselected": ("·", "·")}
 OTHER = "<other>"
@@ -45,10 +51,35 @@ class App:
         return str(self.page.evaluate("sessionStorage.getItem('rosvar.session')"))
 
     def server_state(self) -> dict[str, Any]:
+        """The state the server holds for the page's session, as it sends it (overview mode)."""
         reply = self.live.call("GET", f"/api/state?session={self.session}")
         assert reply.status == 200
         answer: dict[str, Any] = reply.json()
         return answer
+
+    @property
+    def whole(self) -> dict[str, Any]:
+        """The session's state with every graph entry (the page fetches what it draws)."""
+        return self.live.whole(self.session)
+
+    def drawers(self, entries: list[dict[str, Any]]) -> list[str | None]:
+        """The unit drawing each node or param: itself, else (not fetched) the "+N more" box
+        of its group or the closed box it is in, as the page resolves it."""
+        drawing: dict[str, str] = self.page.evaluate("window.rosvar.graph.drawing()")
+        units = set(self.page.evaluate("window.rosvar.graph.cy.nodes().map((n) => n.id())"))
+        grouping = Grouping(self.page.evaluate("window.rosvar.state.grouping"))
+        found: list[str | None] = []
+        for entry in entries:
+            if entry["id"] in drawing:
+                found.append(drawing[entry["id"]])
+                continue
+            key = key_of(labels(grouping, entry))
+            boxes = [f"m:{key}"] + [
+                "g:" + SEPARATOR.join(key.split(SEPARATOR)[:depth])
+                for depth in range(key.count(SEPARATOR) + 1, 1, -1)
+            ]
+            found.append(next((box for box in boxes if box in units), None))
+        return found
 
     def marks(self) -> dict[str, str]:
         """Feature id → the mark the tree shows."""
@@ -58,10 +89,10 @@ class App:
         ))  # fmt: skip
 
     def assert_draws(self, server: dict[str, Any]) -> None:
-        """Every element that may be present is drawn, alone or in a box of the overview;
-        an element drawn alone shows its presence and whether it is in a conflict."""
+        """Every element that may be present in the whole state ``server`` is drawn, alone
+        or in a box of the overview; an element drawn alone shows its presence and whether
+        it is in a conflict."""
         self.wait_for_layout()
-        drawing: dict[str, str] = self.page.evaluate("window.rosvar.graph.drawing()")
         units: dict[str, list[Any]] = self.page.evaluate(
             """() => Object.fromEntries(window.rosvar.graph.cy.nodes().map((n) =>
                  [n.id(), [n.hasClass('undetermined'), n.hasClass('conflict')]]))"""
@@ -69,10 +100,11 @@ class App:
         clashing = {name for c in server["conflicts"] for name in c["names"]}
         prefix = {"nodes": "n:", "tests": "n:", "topics": "t:"}
         for kind, mark in prefix.items():
-            for entry in server["graph"].get(kind, []):
-                unit = drawing.get(entry["id"])
+            entries = server["graph"].get(kind, [])
+            for entry, unit in zip(entries, self.drawers(entries), strict=True):
                 if entry["presence"] == "absent":
-                    assert unit is None, f"absent {entry['name']} is drawn"
+                    alone = unit is not None and unit.startswith(mark)
+                    assert not alone, f"absent {entry['name']} is drawn"
                     continue
                 assert unit in units, f"{entry['name']} is not drawn"
                 if unit == mark + entry["id"]:  # drawn alone
@@ -122,7 +154,7 @@ class App:
             "(id) => window.rosvar.graph.cy.getElementById(id).length > 0", arg=element_id
         )
         self.page.evaluate(
-            "(id) => window.rosvar.graph.cy.center(window.rosvar.graph.cy.getElementById(id))",
+            "(id) => { window.rosvar.graph.cy.center(window.rosvar.graph.cy.getElementById(id)); }",
             element_id,
         )
         where = self.page.evaluate(
@@ -193,10 +225,18 @@ class App:
 
     # -- checks --------------------------------------------------------------------------------
     def assert_shows_server_state(self) -> dict[str, Any]:
-        """The page shows exactly the state the server holds for its session."""
-        server = self.server_state()
-        # the page builds its state from deltas; a refusal is in the answer only
-        assert {**self.state, "version": 0, "refused": []} == {**server, "version": 0}
+        """The page shows exactly the state the server holds for its session; returns it
+        whole (every graph entry, the features by id)."""
+        sent, server = self.server_state(), self.whole
+        # the page builds its state from deltas, its features from the catalog; a refusal
+        # is in the answer only
+        shown = self.state
+        assert {**shown, "version": 0, "refused": [], "features": ""} == {
+            **sent,
+            "version": 0,
+            "features": "",
+        }
+        assert shown["features"] == server["features"]
         expected = {k: MARKS[f["state"]][f["derived"]] for k, f in server["features"].items()}
         assert self.marks() == expected
         self.assert_draws(server)
@@ -333,13 +373,12 @@ def test_graph_navigation(page: Any, examples: Live) -> None:
     page.check("#show-params")
     app.wait_for_layout()
     bundles = app.units("params")
-    params = [p for p in app.state["graph"]["params"] if p["presence"] != "absent"]
-    drawing = page.evaluate("window.rosvar.graph.drawing()")
-    assert bundles and all(p["id"] in drawing for p in params)
+    params = [p for p in app.whole["graph"]["params"] if p["presence"] != "absent"]
+    assert bundles and all(app.drawers(params))
     page.fill("#graph-search", "controller")
     matches = page.evaluate("window.rosvar.graph.cy.nodes('.match').map((n) => n.id())")
-    named = {drawing[n["id"]] for n in app.state["graph"]["nodes"] if "controller" in n["name"]
-             and n["presence"] != "absent"}  # fmt: skip
+    named = set(app.drawers([n for n in app.whole["graph"]["nodes"] if "controller" in n["name"]
+                             and n["presence"] != "absent"]))  # fmt: skip
     assert matches and set(matches) == named
     page.evaluate("() => { window.rosvar.graph.cy.nodes('.match')[0].select(); }")
     page.click("#focus")
@@ -347,6 +386,75 @@ def test_graph_navigation(page: Any, examples: Live) -> None:
     app.wait_for_visible(lambda count: f"{count} < {drawn}")
     page.click("#show-all")
     app.wait_for_visible(lambda count: f"{count} >= {total}")
+
+
+Answer = tuple[str, dict[str, Any], int]
+
+
+def record_answers(page: Any) -> list[Answer]:
+    """The API answers the page receives from now on: path, request body, size in bytes."""
+    answers: list[Answer] = []
+
+    def answered(response: Any) -> None:
+        path = urlsplit(response.url).path
+        if path.startswith("/api/"):
+            body = response.request.post_data_json or {}
+            answers.append((path, body, int(response.headers["content-length"])))
+
+    page.on("response", answered)
+    return answers
+
+
+def opened_groups(answers: list[Answer]) -> set[str]:
+    """The groups whose nodes the page fetched."""
+    return {body["group"] for path, body, _ in answers if path == "/api/group"
+            and body["kind"] == "nodes"}  # fmt: skip
+
+
+def many_elements(ws: LaunchWorkspace, files: int = 24, nodes: int = 30, params: int = 8) -> None:
+    """``files`` launch files of ``nodes`` nodes with ``params`` params each."""
+    for file in range(files):
+        body = "\n".join(
+            f'  <node pkg="pkg" type="t" name="n{node}" ns="/f{file}">'
+            + "".join(f'<param name="p{param}" value="{param}"/>' for param in range(params))
+            + "</node>"
+            for node in range(nodes)
+        )
+        ws.launch(f"f{file:02}.launch", body)
+
+
+def test_the_pages_answers_stay_small_and_members_come_when_a_group_opens(
+    page: Any, ws: LaunchWorkspace
+) -> None:
+    many_elements(ws)
+    with running(configurator(ws)) as live:
+        whole = len(live.call("POST", "/api/session", {}).body)
+        answers = record_answers(page)
+        app = App(page, live)
+        app.wait_for_layout()
+        assert opened_groups(answers) == set() and app.units("node") == []
+        (package,) = app.units("group")
+        app.click_graph_element(package["id"], double=True)  # a box per file, no member
+        app.wait_for_layout()
+        assert opened_groups(answers) == set() and len(app.units("group")) == 24
+        box = next(u for u in app.units("group") if "f03.launch" in u["label"])
+        del answers[:]
+        app.click_graph_element(box["id"], double=True)
+        app.wait_for_layout()
+        assert opened_groups(answers) == {box["element"]["key"]}
+        names = sorted(f"/f3/n{node}" for node in range(30))
+        assert sorted(u["element"]["name"] for u in app.units("node")) == names[:24]  # a page
+        assert [u["label"] for u in app.units("more")] == ["+6 more"]
+        del answers[:]
+        app.choose(file_named(app.state, "f05.launch"), "select")  # opens its group
+        app.wait_for_layout()
+        chosen = next(key for key in opened_groups(answers) if "f05" in key)
+        assert opened_groups(answers) == {box["element"]["key"], chosen}  # fetched again
+        page.check("#show-params")
+        app.wait_for_layout()
+        app.assert_shows_server_state()
+    sizes = [size for _, _, size in answers]
+    assert len(sizes) > 5 and max(sizes) < whole / 50
 
 
 def test_complete_product_gives_the_command(page: Any, examples: Live) -> None:
@@ -419,9 +527,10 @@ def test_husky_clicks_update_the_page_in_place(page: Any, husky: Live) -> None:
     start = app.state
     value = next(k for k, f in start["features"].items() if f["kind"] == "value"
                  and f["state"] == "unselected" and not f["value"].startswith("<"))  # fmt: skip
+    whole = len(app.live.call("GET", f"/api/state?session={app.session}").body)
     with page.expect_response("**/api/choose") as answer:
         app.choose(value, "select")
-    assert len(answer.value.body()) < len(json.dumps(start)) / 10  # a delta, not the state
+    assert len(answer.value.body()) < whole / 10  # a delta, not the state
     assert app.assert_shows_server_state()["features"][value]["state"] == "selected"
     app.wait_for_update(lambda: page.click("#undo"))
     assert app.marks()[value] == "·"
@@ -457,7 +566,7 @@ def overlapping(app: App) -> list[tuple[str, str]]:
 def test_husky_overview_aggregates_and_opens_the_selected_files(page: Any, husky: Live) -> None:
     app = App(page, husky)
     app.assert_shows_server_state()
-    assert drawn(app) <= MAX_DRAWN < len(app.state["graph"]["nodes"])
+    assert drawn(app) <= MAX_DRAWN < len(app.whole["graph"]["nodes"])
     assert page.evaluate("window.rosvar.graph.cy.zoom()") >= LEGIBLE_ZOOM
     assert overlapping(app) == []
     assert app.units("node") == []  # nothing selected: every node is in a box
@@ -514,10 +623,9 @@ def test_husky_params_and_namespaces_stay_bounded(page: Any, husky: Live) -> Non
     app.choose(husky_file(app, "husky_playpen.launch"), "select")
     page.check("#show-params")
     app.wait_for_layout()
-    params = [p for p in app.state["graph"]["params"] if p["presence"] != "absent"]
+    params = [p for p in app.whole["graph"]["params"] if p["presence"] != "absent"]
     bundles = app.units("params")
-    drawing = page.evaluate("window.rosvar.graph.drawing()")
-    assert len(params) > MAX_DRAWN and all(p["id"] in drawing for p in params)
+    assert len(params) > MAX_DRAWN and all(app.drawers(params))
     assert drawn(app) <= MAX_DRAWN
     assert any("params" in u["label"] for u in app.units("group"))  # counted on closed boxes
     largest = max(bundles, key=lambda b: len(b["element"]["params"]))
@@ -547,8 +655,9 @@ def test_husky_counts_defaults_and_refusals_read_well(page: Any, husky: Live) ->
     assert "× 10" in shown.inner_text() and len(shown.inner_text()) < 16
     assert shown.get_attribute("title").replace(",", "").find(exact) >= 0
     # defaults: badged; an unevaluated default reads whole, without the <default: ...> wrapper
-    port = next(a for a in server["defaults"] if a.endswith("base.launch:port"))
-    default = server["defaults"][port]
+    rows = app.live.call("GET", "/api/catalog").json()["features"]
+    port = next(row[0] for row in rows if row[0].endswith("base.launch:port"))
+    default = next(row[0] for row in rows if row[6] and rows[row[5]][0] == port)
     app.reveal(default)
     value = app.own_row(default)
     assert value.locator(".default-badge").is_visible()
@@ -557,8 +666,8 @@ def test_husky_counts_defaults_and_refusals_read_well(page: Any, husky: Live) ->
     assert value.locator(".name").evaluate("(e) => e.scrollWidth <= e.clientWidth + 1")
     assert "default: $(optenv HUSKY_PORT /dev/prolific)" in app.own_row(port).inner_text()
     # a refusal: a readable, bounded notice that pushes nothing down, closed with its ×
-    um6 = file_named(server, "um6_config/um6.launch")
-    um7 = file_named(server, "um7_config/um7.launch")
+    um6 = file_named(app.state, "um6_config/um6.launch")
+    um7 = file_named(app.state, "um7_config/um7.launch")
     app.choose(um6, "select")
     top = page.locator("main").bounding_box()["y"]
     app.choose(um7, "select")
@@ -571,6 +680,28 @@ def test_husky_counts_defaults_and_refusals_read_well(page: Any, husky: Live) ->
     assert notice.bounding_box()["height"] <= 0.4 * 900
     page.click("#notice-close")
     assert notice.is_hidden()
+
+
+MAX_ANSWER = 2_000_000  # bytes: issue 17
+
+
+def test_husky_the_page_is_sent_no_answer_over_2_mb(page: Any, husky: Live) -> None:
+    """Husky with its dependencies (``rosvar serve husky --deps _external``): its whole
+    state is over the bound, no answer the page receives is."""
+    assert len(husky.call("POST", "/api/session", {}).body) > MAX_ANSWER
+    answers = record_answers(page)
+    app = App(page, husky)
+    app.choose(husky_file(app, "husky_playpen.launch"), "select")
+    gazebo = next(u for u in app.units("group") if "husky_bringup" in u["label"])
+    app.click_graph_element(gazebo["id"], double=True)
+    page.check("#show-params")
+    app.wait_for_layout()
+    app.wait_for_update(lambda: page.select_option("#group-by", "namespace"))
+    app.wait_for_layout()
+    app.assert_shows_server_state()
+    paths = {path for path, _, _ in answers}
+    assert {"/api/catalog", "/api/session", "/api/choose", "/api/grouping", "/api/group"} <= paths
+    assert max(size for _, _, size in answers) < MAX_ANSWER
 
 
 def test_husky_double_click_is_one_choice(page: Any, husky: Live) -> None:

@@ -10,6 +10,7 @@ import pytest
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
 from outputs.web.test_app import App
+from rosvar.outputs.web.overview import key_of
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -73,6 +74,33 @@ def test_a_query_is_judged_under_the_tabs_choices(small: Live) -> None:
     assert (talker["name"], talker["presence"], talker["condition"]) == ("/talker", "present", None)
 
 
+def test_in_overview_mode_results_name_the_groups_of_their_entries(small: Live) -> None:
+    """A tab in overview mode does not hold the entries: it opens the group of a result."""
+    session = small.post("/api/session", {"overview": "file"})["session"]
+    [node] = ask(small, session, "nodes[self.name == '/listener']")
+    assert node["groups"] == [key_of(["a.launch"])]
+    [topic] = ask(small, session, "topics[self.name == '/chatter']")
+    assert topic["groups"] == [None]  # drawn one by one
+    findings = small.post("/api/checks", {"session": session})["findings"]
+    for finding in findings:
+        assert len(finding["groups"]) == len(finding["ids"])
+        for id_, group in zip(finding["ids"], finding["groups"], strict=True):
+            assert group == (None if id_.startswith(("topic:", "service:")) else node["groups"][0])
+    assert "groups" not in ask(small, small.open()["session"], "nodes")[0]
+
+
+def test_services_are_summarised_and_listed_like_topics(small: Live) -> None:
+    tab = small.post("/api/session", {"overview": "file"})
+    [group] = tab["graph"]["groups"]
+    assert group["services"] == [0, 1] and group["topics"] == [0, 2] and group["files"] == 1
+    answer = small.post(
+        "/api/group", {"session": tab["session"], "group": group["id"], "kind": "services"}
+    )
+    [service] = answer["members"]
+    assert service["name"] == "/reset" and service["groups"] == [group["id"]] * 2
+    assert sorted(service["names"]) == ["/listener", "/talker"]
+
+
 def test_a_query_the_parser_refuses_is_a_400_with_its_position(small: Live) -> None:
     session = small.open()["session"]
     reply = small.call("POST", "/api/query", {"session": session, "expression": "nodes[open(1)]"})
@@ -126,8 +154,9 @@ def red_units(app: App) -> list[str]:
     return sorted(app.page.evaluate("window.rosvar.graph.cy.nodes('.queried').map((n) => n.id())"))
 
 
-def drawn(app: App, entry: str) -> str:
-    unit: str = app.page.evaluate("(id) => window.rosvar.graph.drawing()[id]", entry)
+def drawn(app: App, entry: str) -> str | None:
+    [node] = [n for n in app.whole["graph"]["nodes"] if n["id"] == entry]
+    [unit] = app.drawers([node])
     return unit
 
 
@@ -139,13 +168,13 @@ def test_the_query_box_marks_its_results_and_follows_the_choices(page: Any, smal
     page.wait_for_selector("#query-results li.result")
     assert page.locator("#query-status").text_content() == "1 result"
     assert "when listen" in page.locator("#query-results li").first.text_content()
-    [listener] = [n["id"] for n in app.state["graph"]["nodes"] if n["name"] == "/listener"]
+    [listener] = [n["id"] for n in app.whole["graph"]["nodes"] if n["name"] == "/listener"]
     assert red_units(app) == [drawn(app, listener)]
     app.choose("a.launch", "select")
     app.wait_for_layout()
     assert red_units(app) == ["n:" + listener]  # the file's nodes are drawn one by one
     # the service is drawn too, requests going from its client to its server
-    [talker] = [n["id"] for n in app.state["graph"]["nodes"] if n["name"] == "/talker"]
+    [talker] = [n["id"] for n in app.whole["graph"]["nodes"] if n["name"] == "/talker"]
     edges = page.evaluate(
         """window.rosvar.graph.cy.edges('[kind = "service"]')
              .map((e) => [e.source().id(), e.target().id()])"""
@@ -167,7 +196,7 @@ def test_the_checks_panel_lists_findings_and_marks_a_clicked_one(page: Any, smal
     assert "note" in finding.text_content() and "when ¬listen" in finding.text_content()
     assert red_units(app) == []
     finding.click()
-    [talker] = [n["id"] for n in app.state["graph"]["nodes"] if n["name"] == "/talker"]
+    [talker] = [n["id"] for n in app.whole["graph"]["nodes"] if n["name"] == "/talker"]
     assert drawn(app, talker) in red_units(app) and "t:topic:/chatter" in red_units(app)
     answered = page.locator("body").get_attribute("data-checks")
     app.choose("a.launch", "select")

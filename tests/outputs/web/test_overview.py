@@ -10,6 +10,7 @@ from typing import Any
 import pytest
 
 from outputs.web.live import Live
+from rosvar.configuration.engine import Configurator
 from rosvar.outputs.web.delta import patch
 from rosvar.outputs.web.overview import (
     PAGE,
@@ -50,7 +51,7 @@ def _pair(live: Live, grouping: str) -> tuple[dict[str, Any], dict[str, Any]]:
 @pytest.mark.parametrize("grouping", list(Grouping))
 def test_summaries_count_the_whole_graph(examples: Live, grouping: Grouping) -> None:
     whole, compact = _pair(examples, grouping)
-    assert compact["grouping"] == grouping and "defaults" not in compact
+    assert compact["grouping"] == grouping
     groups = {group["id"]: group for group in compact["graph"]["groups"]}
     expected: Counter[tuple[str, str]] = Counter()
     for kind in ("nodes", "tests", "params"):
@@ -122,7 +123,9 @@ def test_members_by_page_are_the_groups_entries(examples: Live) -> None:
             assert group["id"] in topic["groups"]
 
 
-def test_feature_tree_from_the_catalog_and_the_state_string(examples: Live) -> None:
+def test_feature_tree_from_the_catalog_and_the_state_string(
+    examples: Live, examples_engine: Configurator
+) -> None:
     whole, compact = _pair(examples, "package")
     rows = examples.call("GET", "/api/catalog").json()["features"]
     assert len(compact["features"]) == len(rows) == len(whole["features"])
@@ -139,7 +142,8 @@ def test_feature_tree_from_the_catalog_and_the_state_string(examples: Live) -> N
             feature[field] for field in ("kind", "file", "arg", "value")
         )
         assert codes[code] == (feature["state"], feature["derived"])
-        assert default == (whole["defaults"].get(feature["parent"]) == key)
+        values = examples_engine.catalog.values_of(feature["parent"]) if kind == "value" else []
+        assert default == any(entry.id == key and value.default for entry, value in values)
 
 
 def test_deltas_in_overview_mode_patch_to_the_whole_state(examples: Live) -> None:

@@ -88,20 +88,6 @@ def _only(fields: Mapping[str, object], allowed: set[str]) -> None:
         raise ApiError(HTTPStatus.BAD_REQUEST, f"unknown field(s): {', '.join(unknown)}")
 
 
-def defaults(configurator: Configurator) -> dict[str, str]:
-    """Arg feature id → the id of its default value's feature, for the tree to mark.
-
-    The engine's state names features, not defaults; its catalog knows them.
-    """
-    catalog = configurator.catalog
-    found: dict[str, str] = {}
-    for arg in (feature for feature in catalog if feature.kind == FeatureKind.ARG):
-        default = next((f.id for f, value in catalog.values_of(arg.id) if value.default), None)
-        if default is not None:
-            found[arg.id] = default
-    return found
-
-
 class Api:
     """Sessions of one :class:`Configurator`, reached through the route table."""
 
@@ -112,7 +98,6 @@ class Api:
         features = configurator.state([]).features  # the ids never change: known once
         configurator.derivation.prepare_counts()
         self._kinds = {key: feature.kind for key, feature in features.items()}
-        self._defaults = defaults(configurator)
         self._inspector = Inspector(configurator)
 
     def handle(self, method: str, path: str, query: Query, body: Body) -> Reply:
@@ -211,7 +196,8 @@ class Api:
         _only(body, {"session", "expression"})
         _key, tab = self._session(body)
         try:
-            return self._inspector.query(_text(body, "expression"), tab.session.current())
+            expression = _text(body, "expression")
+            return self._inspector.query(expression, tab.session.current(), tab.grouping)
         except QueryError as error:
             raise ApiError(HTTPStatus.BAD_REQUEST, str(error), position=error.col) from None
 
@@ -220,7 +206,7 @@ class Api:
         _only(query, set())
         _only(body, {"session"})
         _key, tab = self._session(body)
-        return self._inspector.checks(tab.session.current())
+        return self._inspector.checks(tab.session.current(), tab.grouping)
 
     # -- checks ------------------------------------------------------------------------------
     def _session(self, fields: Mapping[str, object]) -> tuple[str, Tab]:
@@ -251,12 +237,10 @@ class Api:
     def _reply(self, key: str, tab: Tab, state: ConfigurationState, known: int | None) -> Reply:
         document = {
             **state.to_json(),
-            "defaults": self._defaults,  # the same object every time: never in a delta
             "can_undo": tab.session.can_undo,
             "can_redo": tab.session.can_redo,
         }
-        if tab.grouping is not None:  # the catalog has the defaults
-            del document["defaults"]
+        if tab.grouping is not None:
             document = compact(document, tab.grouping)
         return {"session": key, **tab.answer(document, known)}
 

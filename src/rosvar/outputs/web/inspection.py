@@ -6,7 +6,8 @@ a result is listed unless it is absent from all of them (its condition and its e
 launched), with its condition simplified by what the choices decided, an example among the
 configurations left, and the ids of the graph entries it is about (the page draws them in
 red). The elements and the findings are listed once, on the first question; each answer only
-judges their conditions, as the graph's are judged at each step.
+judges their conditions, as the graph's are judged at each step. A tab in overview mode is
+told the group of each of these entries too: it may not hold them, but it draws their group.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.view import Graph
 from rosvar.diagnostics import Severity
 from rosvar.logic.bdd import BDD
+from rosvar.outputs.web.overview import Grouping, key_of, labels
 from rosvar.workspace.interfaces.model import Interfaces
 
 Reply = dict[str, object]
@@ -57,8 +59,9 @@ class Inspector:
         self._engine: QueryEngine | None = None
         self._findings: list[Finding] | None = None
 
-    def query(self, text: str, state: ConfigurationState) -> Reply:
-        """The elements ``text`` selects in the configurations ``state`` leaves; raises
+    def query(self, text: str, state: ConfigurationState, grouping: Grouping | None) -> Reply:
+        """The elements ``text`` selects in the configurations ``state`` leaves (with
+        ``grouping``, each with the ``groups`` of its ``ids``); raises
         :class:`~rosvar.analyses.query.parser.QueryError` for a query it refuses."""
         if self._engine is None:
             interfaces = self._configurator.graph.interfaces
@@ -67,7 +70,7 @@ class Inspector:
                 self._configurator.analysis, list(self._entries), collections
             )
         decisions = self._configurator.decisions(state.choices)
-        places = _Places(state.graph)
+        places = _Places(state.graph, grouping)
         results = []
         for result in self._engine.run(text):
             element = result.element
@@ -90,17 +93,18 @@ class Inspector:
                     "launch_file": element.file,
                     **judged.to_json(),
                     **where,
-                    "ids": ids,
+                    **places.identify(ids),
                 }
             )
         return {"query": text, "results": results}
 
-    def checks(self, state: ConfigurationState) -> Reply:
+    def checks(self, state: ConfigurationState, grouping: Grouping | None) -> Reply:
         """The findings of ``rosvar check`` not absent from the configurations ``state``
         leaves, the worst first; one reached from several entry files is listed once (from
-        an entry file where it is present, if there is one)."""
+        an entry file where it is present, if there is one). With ``grouping``, each has the
+        ``groups`` of its ``ids``."""
         decisions = self._configurator.decisions(state.choices)
-        places = _Places(state.graph)
+        places = _Places(state.graph, grouping)
         shown: dict[tuple[object, ...], Reply] = {}
         for finding in self.findings():
             key = (finding.check, finding.name, finding.locations)
@@ -124,7 +128,7 @@ class Inspector:
                 "launch_file": self._configurator.analysis.label(finding.file),
                 **judged.to_json(),
                 "locations": [location.to_json() for location in finding.locations],
-                "ids": list(dict.fromkeys(ids)),
+                **places.identify(list(dict.fromkeys(ids))),
             }
         order = {severity.value: rank for rank, severity in enumerate(Severity)}
         findings = sorted(  # the worst, and those present, first
@@ -168,11 +172,14 @@ class Inspector:
 
 
 class _Places:
-    """The entries of one state's graph by where they are declared and by name."""
+    """The entries of one state's graph by where they are declared and by name, and (with
+    a grouping) the group of each node and param."""
 
-    def __init__(self, graph: Graph) -> None:
+    def __init__(self, graph: Graph, grouping: Grouping | None) -> None:
         self._declared: dict[tuple[Kind, *_Place], list[tuple[str, str]]] = {}
         self._named: dict[tuple[str, str], list[str]] = {}  # (entry file id or "", name) → ids
+        self._grouping = grouping
+        self._groups: dict[str, str] = {}
         lists: Sequence[tuple[Kind | None, Iterable[Mapping[str, object]]]] = (
             (Kind.NODE, graph.nodes),
             (Kind.NODE, graph.tests),
@@ -191,6 +198,8 @@ class _Places:
                     file_id = id_.split("|", 1)[0]
                     place = (kind, file_id, str(entry["filename"]), int(str(entry["line"])))
                     self._declared.setdefault(place, []).append((name, id_))
+                    if grouping is not None:
+                        self._groups[id_] = key_of(labels(grouping, entry))
                 self._named.setdefault((file_id, name), []).append(id_)
 
     def declared(self, kind: Kind, place: _Place, name: str | None) -> list[str]:
@@ -200,6 +209,13 @@ class _Places:
         if name is None or "⟨" in name:
             return [id_ for _name, id_ in found]
         return [id_ for shown, id_ in found if shown == name]
+
+    def identify(self, ids: list[str]) -> Reply:
+        """``ids``, and in overview mode their ``groups`` (None: a topic, service or action,
+        which the page draws one by one)."""
+        if self._grouping is None:
+            return {"ids": ids}
+        return {"ids": ids, "groups": [self._groups.get(id_) for id_ in ids]}
 
     def named(self, name: str, file_id: str | None = None) -> list[str]:
         """Ids of the topics, services and actions named ``name`` (and, with ``file_id``, of

@@ -25,7 +25,7 @@ from rosvar.configuration.engine import Configurator, Selection
 
 Entry = Mapping[str, Any]
 SEPARATOR = "\u0001"  # between the labels of a group's key (never in a path or a ROS name)
-PAGE = {"nodes": 24, "params": 50, "topics": 50}
+PAGE = {"nodes": 24, "params": 50, "topics": 50, "services": 50, "actions": 50}
 """Members sent per page: for nodes, names (all the variants of a name come together)."""
 LABELS_KEPT = 65_536  # names and files whose groups are remembered (every state files them all)
 ABSENT = "absent"
@@ -46,9 +46,15 @@ class MemberKind(StrEnum):
     NODES = "nodes"
     PARAMS = "params"
     TOPICS = "topics"
+    SERVICES = "services"
+    ACTIONS = "actions"
 
 
-# -- names (the page's names.js) ---------------------------------------------------------------
+CHANNELS = (MemberKind.TOPICS, MemberKind.SERVICES, MemberKind.ACTIONS)
+"""The names nodes are wired to: counted and listed under the groups of their nodes."""
+
+
+# -- names (files spelled as the page's names.js spells them) ------------------------------------
 def entry_file(element_id: str) -> str:
     """The launch file whose model holds a graph entry: its id starts with it (``FILE|...``)."""
     cut = element_id.find("|")
@@ -125,13 +131,15 @@ class _Group:
     )
     conflict: bool = False
     selected: int = 0  # nodes of selected files under it: the page opens such a group
+    files: set[str] = field(default_factory=set)  # entry files of the nodes under it
     names: set[str] = field(default_factory=set)  # its own nodes' names, for the search
 
 
 def summaries(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str, object]]:
     """One summary per group (every level, parents first): label, parent, the present and
-    possible (not absent) nodes, params and topics under it, whether one of its nodes is in
-    a conflict, how many of its nodes the selected files launch, and its own nodes' names.
+    possible (not absent) nodes, params, topics, services and actions under it, whether one
+    of its nodes is in a conflict, how many of its nodes the selected files launch, from how
+    many entry files its nodes are, and its own nodes' names.
     ``document`` is whole (its features by id)."""
     graph = document["graph"]
     clashing = {name for conflict in document["conflicts"] for name in conflict["names"]}
@@ -160,15 +168,18 @@ def summaries(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str,
         count(MemberKind.NODES, entry, under)
         under[-1].names.add(str(entry["name"]))
         clash = clash_name(kind, entry["name"]) in clashing
-        chosen = entry_file(str(entry["id"])) in selected
+        file = entry_file(str(entry["id"]))
+        chosen = file in selected
         for group in under:
             group.conflict |= clash
             group.selected += chosen
+            group.files.add(file)
     for entry in _possible(graph.get("params", ())):
         count(MemberKind.PARAMS, entry, chain(entry))
-    for entry in _possible(graph.get("topics", ())):
-        reached = {id(g): g for n in entry.get("nodes", ()) for g in node_groups.get(n, ())}
-        count(MemberKind.TOPICS, entry, reached.values())
+    for kind in CHANNELS:
+        for entry in _possible(graph.get(kind, ())):
+            reached = {id(g): g for n in entry.get("nodes", ()) for g in node_groups.get(n, ())}
+            count(kind, entry, reached.values())
     return [
         {
             "id": key,
@@ -177,6 +188,7 @@ def summaries(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str,
             **{kind.value: group.counts[kind] for kind in MemberKind},
             "conflict": group.conflict,
             "selected": group.selected,
+            "files": len(group.files),
             "names": sorted(group.names),
         }
         for key, group in sorted(groups.items())
@@ -188,9 +200,9 @@ def members(
 ) -> dict[str, object]:
     """A page of a group's members, sorted by name: whole graph entries. Nodes and params
     are its own (not its subgroups'); a page of nodes holds ``PAGE["nodes"]`` names with all
-    their variants. Topics are those of the nodes under it at any level, as its summary
-    counts them, each with the ``groups`` of its ``nodes`` (the group's own may be drawn
-    closed)."""
+    their variants. Topics, services and actions are those of the nodes under it at any
+    level, as its summary counts them, each with the ``groups`` and the ``names`` of its
+    ``nodes`` (the page draws them linked to whatever draws the nodes, a closed box too)."""
     graph = document["graph"]
     if kind == MemberKind.NODES:
         own = [(k, e) for k, e in _nodes(graph) if key_of(labels(grouping, e)) == group]
@@ -208,11 +220,16 @@ def members(
                 for e in _possible(graph.get("params", ()))
                 if key_of(labels(grouping, e)) == group
             ]
-        else:  # with its nodes' groups: where the page draws the nodes it links it to
-            keys = {str(e["id"]): key_of(labels(grouping, e)) for _k, e in _nodes(graph)}
+        else:  # with its nodes' groups and names: what draws them, and how they read
+            nodes = {str(e["id"]): e for _k, e in _nodes(graph)}
+            keys = {node: key_of(labels(grouping, e)) for node, e in nodes.items()}
             found = [
-                {**e, "groups": [keys.get(node) for node in e.get("nodes", ())]}
-                for e in _possible(graph.get("topics", ()))
+                {
+                    **e,
+                    "groups": [keys.get(node) for node in e.get("nodes", ())],
+                    "names": [nodes[n]["name"] if n in nodes else None for n in e.get("nodes", ())],
+                }
+                for e in _possible(graph.get(kind, ()))
                 if any(_under(keys.get(node, ""), group) for node in e.get("nodes", ()))
             ]
         found.sort(key=lambda e: (str(e.get("name")), str(e["id"])))

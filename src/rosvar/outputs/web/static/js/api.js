@@ -1,13 +1,17 @@
 // The server's JSON API, with one configuration session per browser tab.
 //
-// The client holds the tab's state and sends its version with every step: the server then
-// answers with what changed only (delta.js), which the client applies.
+// The session is in overview mode (docs/web.md): its states carry the features as one
+// character each (read through the catalog, fetched once) and the graph as group summaries;
+// the graph view fetches a group's members when it draws them. The client holds the tab's
+// state and sends its version with every step: the server then answers with what changed
+// only (delta.js), which the client applies.
 //
 // The session id lives in sessionStorage, which belongs to one tab. A duplicated tab starts
 // with a copy of it, so at start-up a tab asks the others (BroadcastChannel) whether one of
 // them already holds its id, and opens a fresh session if so: two tabs never share choices.
 
-import { patch, touched } from "./delta.js";
+import { Catalog } from "./catalog.js";
+import { patch } from "./delta.js";
 
 const KEY = "rosvar.session";
 const CHANNEL = "rosvar.sessions";
@@ -50,9 +54,12 @@ function claimedElsewhere(channel, id) {
 }
 
 export class Client {
-  constructor() {
+  // grouping(): the grouping the page draws (its "group by").
+  constructor(grouping) {
+    this.grouping = grouping;
     this.session = null;
-    this.state = null;
+    this.held = null; // the last state received, as sent (its features a string)
+    this.catalog = null;
     this.channel = "BroadcastChannel" in window ? new BroadcastChannel(CHANNEL) : null;
     if (this.channel) {
       this.channel.addEventListener("message", (event) => {
@@ -65,6 +72,7 @@ export class Client {
 
   // The tab's state: its own session if the server still has it, else a new one.
   async start() {
+    this.catalog = new Catalog((await request("GET", "/api/catalog")).features);
     const known = sessionStorage.getItem(KEY);
     if (known && !(this.channel && await claimedElsewhere(this.channel, known))) {
       try {
@@ -77,21 +85,25 @@ export class Client {
   }
 
   async open() {
-    return this.receive(await request("POST", "/api/session", {}));
+    return this.receive(await request("POST", "/api/session", { overview: this.grouping() }));
   }
 
+  // The session's state whole, in overview mode under the page's grouping.
   async whole(session) {
-    return this.receive(await request("GET", `/api/state?session=${encodeURIComponent(session)}`));
+    return this.receive(await request("POST", "/api/grouping", { session, grouping: this.grouping() }));
   }
 
-  // {state, changes}: the state after an answer, and what it changed (null: everything).
+  // {state, changes}: the state after an answer, its features read through the catalog, and
+  // what it changed (null: everything, for a whole state; else {features: Set of ids}).
   async receive(answer) {
-    const state = patch(this.state, answer);
-    if (state === null) return this.whole(answer.session); // out of step: ask for all of it
-    this.state = state;
-    this.session = state.session;
-    sessionStorage.setItem(KEY, state.session);
-    return { state, changes: touched(answer, state) };
+    const held = patch(this.held, answer);
+    if (held === null) return this.whole(answer.session); // out of step: ask for all of it
+    this.held = held;
+    this.session = held.session;
+    sessionStorage.setItem(KEY, held.session);
+    const { features, changed } = this.catalog.read(held.features);
+    const changes = "base" in answer && changed !== null ? { features: changed } : null;
+    return { state: { ...held, features }, changes };
   }
 
   choose(action, feature, value) {
@@ -104,9 +116,16 @@ export class Client {
   redo() { return this.post("/api/redo", {}); }
   reset() { return this.post("/api/reset", {}); }
   finish() { return this.post("/api/finish", {}); }
+  regroup() { return this.post("/api/grouping", { grouping: this.grouping() }); }
+
+  // A page of a group's members in the session's current state (kind: nodes, params,
+  // topics, services or actions).
+  members(group, kind, page) {
+    return request("POST", "/api/group", { session: this.session, group, kind, page });
+  }
 
   async post(path, fields) {
-    const version = this.state?.version;
+    const version = this.held?.version;
     return this.receive(await request("POST", path, { session: this.session, version, ...fields }));
   }
 }

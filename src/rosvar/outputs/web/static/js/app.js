@@ -1,8 +1,8 @@
 // Wires the page: every user action goes to the server, and every state it answers updates
-// the tree, the graph, the details and the bar at once (the tree and the graph only where
-// the answer says something changed). A choice made while the previous one is still being
-// answered is ignored (a double click is one choice); the steps the page makes itself run
-// one after another.
+// the tree, the graph (with the members of its open groups fetched again), the details and
+// the bar at once (the tree only where the answer says something changed). A choice made
+// while the previous one is still being answered is ignored (a double click is one choice);
+// the steps the page makes itself run one after another.
 
 import { ApiError, Client } from "./api.js";
 import { Bar } from "./bar.js";
@@ -13,7 +13,7 @@ import { FeatureTree } from "./tree.js";
 
 const $ = (id) => document.getElementById(id);
 
-const client = new Client();
+const client = new Client(() => $("group-by").value);
 let state = null;
 let queue = Promise.resolve();
 
@@ -34,7 +34,7 @@ const bar = new Bar(
 const tree = new FeatureTree($("tree"), $("conflict-popup"), (action, feature, value) => {
   choose(() => client.choose(action, feature, value));
 });
-const graph = new GraphView($("graph"), (element, byUser) => {
+const graph = new GraphView($("graph"), (group, kind, page) => client.members(group, kind, page), (element, byUser) => {
   // a new selection opens the details; a step only refreshes them if they are open
   if (byUser || details.shown !== null) details.show(element, state);
   $("focus").disabled = !element;
@@ -49,12 +49,12 @@ const session = () => client.session;
 const query = new QueryBox({ input: $("query"), status: $("query-status"), list: $("query-results") }, session, graph);
 const checks = new ChecksPanel({ toggle: $("checks-toggle"), count: $("checks-count"), panel: $("checks"), list: $("checks-list") }, session, graph);
 
-// changes: what changed since the state rendered before (delta.js touched), null for all.
-function render(next, changes = null) {
+// changes: what changed since the state rendered before (Client.receive), null for all.
+async function render(next, changes = null) {
   state = next;
   tree.update(state, changes?.features ?? null);
-  graph.update(state, changes);
   bar.update(state);
+  await graph.update(state);
   query.update().catch((error) => bar.say(`Query: ${error.message}`, true));
   checks.update().catch((error) => bar.say(`Checks: ${error.message}`, true));
   // body[data-step] counts rendered states: tests (and curious users) can wait for the next one
@@ -84,10 +84,10 @@ function act(call) {
     bar.dismiss();
     try {
       const answer = await call();
-      render(answer.state, answer.changes);
+      await render(answer.state, answer.changes);
     } catch (error) {
       if (error instanceof ApiError && error.status === 404) {
-        render((await client.open()).state); // the server forgot this tab's session
+        await render((await client.open()).state); // the server forgot this tab's session
         bar.say("Your session had expired: started over.", true);
       } else {
         bar.say(`Error: ${error.message}`, true);
@@ -107,7 +107,7 @@ function wireToolbars() {
   $("graph-search").addEventListener("input", (event) => graph.search(event.target.value));
   $("graph-search").addEventListener("keydown", (event) => { if (event.key === "Enter") graph.fit(); });
   $("show-params").addEventListener("change", (event) => { graph.setOption("params", event.target.checked); });
-  $("group-by").addEventListener("change", (event) => { graph.setOption("grouping", event.target.value); });
+  $("group-by").addEventListener("change", () => act(() => client.regroup()));
   $("overview").addEventListener("click", () => graph.overview());
   $("fit").addEventListener("click", () => graph.fit());
   $("focus").addEventListener("click", () => { $("show-all").disabled = !graph.focusSelected(); });
@@ -124,8 +124,8 @@ async function start() {
   wireToolbars();
   try {
     const { state: first } = await client.start();
-    tree.build(first.features, first.defaults);
-    render(first);
+    tree.build(first.features, client.catalog.defaults);
+    await render(first);
   } catch (error) {
     bar.say(`Cannot reach the rosvar server: ${error.message}`, true);
   }

@@ -4,11 +4,11 @@
 // page at a time). Closing the panel unselects the element: it opens again on the next
 // click on the graph, not on the next step.
 
-import { clashName, differences } from "./graph.js";
+import { clashName } from "./graph.js";
 import { shortPath, entryFile } from "./names.js";
 
 const SHOWN_APART = new Set(["id", "kind", "name", "presence", "condition", "filename", "line", "col",
-                             "nodes", "group", "groupName"]);
+                             "nodes", "names", "groups", "group", "groupName", "variant"]);
 const PAGE = 50; // params listed at a time
 const EDGES = new Set(["publishers", "subscribers", "servers", "clients"]);
 
@@ -79,7 +79,7 @@ export class DetailsPanel {
     const extra = [];
     if (element.kind === "group") {
       title.textContent = element.name;
-      table.append(row("holds", `${element.total.toLocaleString("en")} nodes (${element.present.toLocaleString("en")} present) from ${element.files} launch file${element.files === 1 ? "" : "s"}`));
+      table.append(row("holds", `${element.total.toLocaleString("en")} nodes (${element.present.toLocaleString("en")} present) from ${element.files.toLocaleString("en")} launch file${element.files === 1 ? "" : "s"}`));
       extra.push(button("Open this group", () => this.actions.open(element.unitId), "primary"));
     } else if (element.kind === "variants") {
       title.textContent = `${element.total} variants of ${element.name}`;
@@ -124,15 +124,12 @@ export class DetailsPanel {
     if (element.filename) table.append(row("declared at", `${element.filename}:${element.line}`));
     const entry = entryFile(element.id);
     if (entry) table.append(row("launched by", shortPath(entry)));
-    if (element.kind === "node" || element.kind === "test") {
-      const list = element.kind === "node" ? state.graph.nodes : state.graph.tests ?? [];
-      const twins = list.filter((n) => n.name === element.name && n.presence !== "absent");
-      if (twins.length > 1) {
-        const at = twins.findIndex((n) => n.id === element.id) + 1;
-        table.append(row("variant", `${at} of ${twins.length}; they differ in ${differences(twins).join(", ") || "their conditions"}`));
-      }
+    if (element.variant) {
+      const { at, of, differ } = element.variant;
+      table.append(row("variant", `${at} of ${of}; they differ in ${differ.join(", ") || "their conditions"}`));
     }
-    const names = new Map(state.graph.nodes.map((node) => [node.id, node.name]));
+    // a topic's, service's or action's nodes come with their names
+    const names = new Map((element.nodes ?? []).map((id, at) => [id, element.names?.[at]]));
     if (element.nodes) {
       table.append(row("nodes", [...new Set(element.nodes.map((id) => names.get(id) ?? id))].join(", ") || "—"));
     }

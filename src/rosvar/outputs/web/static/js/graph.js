@@ -1,5 +1,5 @@
-// The computation graph: ROS nodes (and test nodes), the topics they are wired to and (on
-// request) params, drawn with Cytoscape.js.
+// The computation graph: ROS nodes (and test nodes), the topics, services and actions they
+// are wired to and (on request) params, drawn with Cytoscape.js.
 //
 // A large workspace has thousands of graph entries (Husky: 985 nodes, 7,500 params), far more
 // than a readable drawing holds, so the view aggregates: entries are grouped (by package then
@@ -7,13 +7,15 @@
 // counts until it is expanded, entries of one name within a group (variants) fold into one
 // box, an expanded group shows a page of its members at a time, and params are never drawn
 // one by one (a node's params are one tag, listed in the details). Groups holding elements of
-// the selected launch files open by themselves: those come first.
+// the selected launch files open by themselves: those come first. The state carries the
+// groups' summaries only (the server groups, docs/web.md "Overview mode"): the members of
+// the groups drawn open, and the topics, services and actions, are fetched for each state.
 //
 // Graph ids are stable across steps. When the drawn units appear or go the layout runs again
 // and every unit moves to its new place in an animation (new units grow from the box they
 // came out of); otherwise a step only restyles the units (present/undetermined, conflicts).
 
-import { baseName, entryFile, namespacePath, packageOf, packageOfPath, shortPath } from "./names.js";
+import { baseName, entryFile, shortPath } from "./names.js";
 
 cytoscape.use(cytoscapeDagre);
 
@@ -65,12 +67,6 @@ const PREFIX = { node: "n:", test: "n:", topic: "t:", service: "s:", action: "a:
 const CHANNELS = [["topic", "topics"], ["service", "services"], ["action", "actions"]];
 const SIDES = { topic: ["publishers", "subscribers"], service: ["servers", "clients"], action: ["servers", "clients"] };
 
-export const GROUPINGS = {
-  package: "package, then launch file",
-  file: "launch file",
-  namespace: "namespace",
-};
-
 // Every "kind name" (e.g. "node /controller") that takes part in a conflict of the state.
 function conflictNames(conflicts) {
   const names = new Set();
@@ -101,7 +97,7 @@ function widthFor(label) {
 // The fields on which variants of one name differ, for telling them apart.
 const SAME_FOR_VARIANTS = new Set(["id", "presence", "condition", "col", "kind"]);
 
-export function differences(variants) {
+function differences(variants) {
   const keys = new Set(variants.flatMap((v) => Object.keys(v)));
   const differ = [];
   for (const key of keys) {
@@ -139,47 +135,80 @@ function variantHint(variant, differ, variants) {
   return `${key}: ${from ? "…" : ""}${shown}${from + 34 < text.length ? "…" : ""}`;
 }
 
-// A group of the overview: members (graph entries) and subgroups, by key.
+// A group of the overview, from its summary (the server's, docs/web.md "Overview mode"):
+// its subgroups that hold nodes, those that hold only params (never drawn: their params go
+// with it), and the members fetched for it when it is drawn open.
 class Group {
-  constructor(key, label, parent) {
+  constructor(key, label, parent, summary) {
     this.key = key;
     this.label = label;
     this.parent = parent;
-    this.children = new Map();
-    this.members = [];
-    this.total = 0; // entries under it, all levels
-    this.present = 0;
-    this.conflict = false;
-    this.files = new Set(); // entry files of its members
-    this.params = 0;
+    this.summary = summary;
+    this.children = new Map(); // key → subgroup holding nodes
+    this.bare = []; // subgroups holding params only
+    this.members = []; // [kind, entry] of its own nodes, as fetched
+    this.params = []; // its own params and its bare subgroups', as fetched
   }
 
-  child(key, label) {
-    if (!this.children.has(key)) this.children.set(key, new Group(key, label, this));
-    return this.children.get(key);
+  count(kind, at = 1) {
+    if (this.summary) return this.summary[kind][at];
+    return [...this.children.values(), ...this.bare].reduce((sum, c) => sum + c.count(kind, at), 0);
+  }
+
+  // Entries of a kind that are its own, not in a subgroup.
+  own(kind) {
+    const inside = [...this.children.values(), ...this.bare].reduce((sum, c) => sum + c.count(kind), 0);
+    return this.count(kind) - inside;
+  }
+
+  // Its own names and its subgroups', for the search.
+  names() {
+    return [...(this.summary?.names ?? []), ...[...this.children.values()].flatMap((c) => c.names())];
   }
 }
 
+// The groups of a state's summaries (parents come first), under a root.
+function groupTree(summaries) {
+  const root = new Group("", "", null, null);
+  const groups = new Map([["", root]]);
+  for (const summary of summaries) {
+    const parent = groups.get(summary.parent);
+    const group = new Group(summary.id, summary.label, parent, summary);
+    groups.set(summary.id, group);
+    if (summary.nodes[1] > 0) parent.children.set(summary.id, group);
+    else parent.bare.push(group);
+  }
+  return root;
+}
+
 export class GraphView {
+  // members(group, kind, page) fetches a page of a group's members (the API's /api/group).
   // onSelect(element | null, byUser) is called with the selected unit's description
   // whenever the selection (byUser: true) or the selected unit's data (false) changes.
   // onDrawn() is called after every redraw.
-  constructor(container, onSelect, onDrawn = () => {}) {
+  constructor(container, members, onSelect, onDrawn = () => {}) {
     this.container = container;
     this.cy = cytoscape({ container, style: STYLE, minZoom: 0.05, maxZoom: 4, boxSelectionEnabled: false });
-    this.options = { params: false, grouping: "package" };
+    this.options = { params: false };
     this.expanded = new Set(); // group keys the user opened
     this.collapsed = new Set(); // group keys the user closed (even if they would open themselves)
     this.pages = new Map(); // group key → members shown
     this.focused = null; // unit id whose neighbourhood alone is shown
     this.needle = "";
-    this.marked = new Map(); // who marks (a query, a finding) → graph entry ids drawn in red
+    this.marked = new Map(); // who marks (a query, a finding) → [graph entry id, its group key]
     this.state = null;
+    this.members = members;
+    this.fetched = new Map(); // "group kind page" → the answer's promise, for the state drawn
+    this.channels = { topic: [], service: [], action: [] }; // every one, as fetched
     this.units = new Map(); // unit id → {names: lowercased member names} for the search
     this.unitOf = new Map(); // graph entry id → the unit that draws it
+    this.boxOf = () => undefined; // group key → the unit that draws its members unfetched
     this.onSelect = onSelect;
     this.onDrawn = onDrawn;
+    this.queue = Promise.resolve();
+    this.pending = 0; // draws asked for and not done
     this.layoutRuns = 0;
+    this.layoutsDone = 0;
     this.container.dataset.layout = "done";
     this.cy.on("select unselect", () => this.onSelect(this.selectedElement(), true));
     this.cy.on("dbltap", "node", (event) => this.open(event.target.id()));
@@ -191,32 +220,36 @@ export class GraphView {
     return { ...selected[0].data("element"), unitId: selected[0].id() };
   }
 
-  // changes: what changed since the last update (delta.js touched), null for everything.
-  update(state, changes = null) {
+  // A new state: its groups drawn, the members of the open ones fetched again.
+  update(state) {
+    if (this.state && state.grouping !== this.state.grouping) {
+      this.expanded.clear(); // other groups: back to the overview
+      this.collapsed.clear();
+      this.pages.clear();
+      this.focused = null;
+    }
+    if (state.version !== this.state?.version) this.fetched.clear();
     this.state = state;
-    const relevant = changes === null || changes.graph.size || changes.features.size
-      || changes.fields.has("conflicts");
-    if (relevant) this.render();
+    return this.redraw();
   }
 
   setOption(name, value) {
     this.options[name] = value;
-    if (name === "grouping") this.overview();
-    else this.render();
+    return this.redraw();
   }
 
   // Opens a group or a variants box (or shows more of a group), by unit id.
   open(unitId) {
     const element = this.cy.getElementById(unitId).data("element");
-    if (!element) return;
+    if (!element) return this.queue;
     if (element.kind === "more") this.pages.set(element.group, (this.pages.get(element.group) ?? PAGE) + PAGE);
     else if (element.kind === "group" || element.kind === "variants") {
       this.collapsed.delete(element.key);
       this.expanded.add(element.key);
       this.origin = this.cy.getElementById(unitId).position();
-    } else return;
+    } else return this.queue;
     this.cy.$(":selected").unselect();
-    this.render();
+    return this.redraw();
   }
 
   // Closes the group a unit is drawn in (it is drawn as one box again).
@@ -224,7 +257,7 @@ export class GraphView {
     this.expanded.delete(groupKey);
     for (const key of [...this.expanded]) if (key.startsWith(`${groupKey}\u0001`)) this.expanded.delete(key);
     this.collapsed.add(groupKey);
-    this.render();
+    return this.redraw();
   }
 
   // Back to the overview: every group closed but those of the selected files.
@@ -233,54 +266,101 @@ export class GraphView {
     this.collapsed.clear();
     this.pages.clear();
     this.focused = null;
-    this.render();
+    return this.redraw();
   }
 
-  // -- grouping -------------------------------------------------------------------------------
-  // The path of group labels an entry files under.
-  path(kind, item) {
-    const file = entryFile(item.id);
-    if (this.options.grouping === "namespace") return namespacePath(item.name);
-    if (this.options.grouping === "file") return [shortPath(file)];
-    const feature = this.state.features[file];
-    return [feature ? packageOf(feature) : packageOfPath(file), shortPath(file)];
+  // Draws the state again once the members it needs are fetched; draws run one after another.
+  // (#graph[data-layout] is "running" until the last is drawn and laid out).
+  redraw() {
+    this.container.dataset.layout = "running";
+    this.pending += 1;
+    this.queue = this.queue.catch(() => {}).then(() => this.draw()).finally(() => {
+      this.pending -= 1;
+      if (!this.pending && this.layoutsDone === this.layoutRuns) this.container.dataset.layout = "done";
+    });
+    return this.queue;
   }
 
-  tree(state, clashing) {
-    const root = new Group("", "", null);
-    const visible = (item) => item.presence !== "absent";
-    const nodes = [["node", state.graph.nodes], ["test", state.graph.tests ?? []]];
-    for (const [kind, list] of nodes) {
-      for (const item of list.filter(visible)) {
-        let group = root;
-        for (const label of this.path(kind, item)) group = group.child(`${group.key}\u0001${label}`, label);
-        group.members.push([kind, item]);
-        const conflict = clashing.has(clashName(kind, item.name));
-        for (let g = group; g; g = g.parent) {
-          g.total += 1;
-          if (item.presence === "present") g.present += 1;
-          g.conflict ||= conflict;
-          g.files.add(entryFile(item.id));
-        }
-      }
-    }
-    return root;
+  async draw() {
+    if (!this.state) return;
+    const root = groupTree(this.state.graph.groups);
+    await this.fetch(root);
+    this.render(root);
   }
 
-  // Whether a group is drawn opened: the user said so, or it holds elements of selected files.
-  isOpen(group, selectedFiles) {
+  // -- members --------------------------------------------------------------------------------
+  // Whether a group is drawn opened: the user said so, or it holds nodes of selected files.
+  isOpen(group) {
     if (this.expanded.has(group.key)) return true;
     if (this.collapsed.has(group.key)) return false;
-    for (const file of group.files) if (selectedFiles.has(file)) return true;
-    return false;
+    return group.summary.selected > 0;
+  }
+
+  // A group with one subgroup and nothing else opens with it: no click for nothing.
+  opensWith(group) {
+    return group.children.size === 1 && group.own("nodes") === 0;
+  }
+
+  // The groups drawn open, outermost first.
+  opened(root) {
+    const found = [];
+    const walk = (group) => {
+      for (const child of group.children.values()) {
+        if (this.opensWith(child) || this.isOpen(child)) { found.push(child); walk(child); }
+      }
+    };
+    walk(root);
+    return found;
+  }
+
+  // A page of a group's members in the state drawn, fetched once.
+  page(group, kind, page) {
+    const key = `${group} ${kind} ${page}`;
+    if (!this.fetched.has(key)) {
+      const answer = this.members(group, kind, page);
+      answer.catch(() => this.fetched.delete(key));
+      this.fetched.set(key, answer);
+    }
+    return this.fetched.get(key);
+  }
+
+  // The members of a group's first `most` pages (every page by default).
+  async pagesOf(group, kind, most = Infinity) {
+    const first = await this.page(group, kind, 0);
+    const rest = [];
+    for (let page = 1; page < Math.min(first.pages, most); page += 1) rest.push(this.page(group, kind, page));
+    return [first, ...await Promise.all(rest)].flatMap((answer) => answer.members);
+  }
+
+  // Fetches what the drawing needs: the nodes (and params) of the open groups, every
+  // topic, service and action.
+  async fetch(root) {
+    const jobs = [];
+    // a group's own params and those of its subgroups holding no node
+    const params = (into, group = into) => {
+      if (group.own("params") > 0) jobs.push(this.pagesOf(group.key, "params").then((found) => into.params.push(...found)));
+      for (const bare of group.bare) params(into, bare);
+    };
+    for (const group of this.opened(root)) {
+      if (group.own("nodes") > 0) {
+        const pages = Math.ceil((this.pages.get(group.key) ?? PAGE) / PAGE);
+        jobs.push(this.pagesOf(group.key, "nodes", pages).then((found) => {
+          group.members = found.map((entry) => [entry.kind, entry]);
+        }));
+      }
+      if (this.options.params) params(group);
+    }
+    if (this.options.params) params(root);
+    for (const [kind, list] of CHANNELS) {
+      this.channels[kind] = [];
+      if (root.count(list) > 0) jobs.push(this.pagesOf("", list).then((found) => { this.channels[kind] = found; }));
+    }
+    await Promise.all(jobs);
   }
 
   // -- units ----------------------------------------------------------------------------------
-  plan(state) {
+  plan(state, root) {
     const clashing = conflictNames(state.conflicts);
-    const selectedFiles = new Set(Object.entries(state.features)
-      .filter(([, f]) => f.kind === "file" && f.state === "selected").map(([id]) => id));
-    const root = this.tree(state, clashing);
     const wanted = [];
     const unitOf = new Map();
     const searchNames = new Map();
@@ -289,39 +369,34 @@ export class GraphView {
     const presenceClass = (present, total) => (present === total ? "present" : "undetermined");
     const addGroupUnit = (group) => {
       const id = PREFIX.group + group.key;
-      const counts = [plural(group.total, "node")];
-      const label = `${group.conflict ? "⚠ " : ""}${fitted(group.label)}\n${counts.join(" · ")}`;
-      const element = { kind: "group", key: group.key, name: group.label, total: group.total,
-                        present: group.present, files: group.files.size };
-      wanted.push({ group: "nodes", classes: [presenceClass(group.present, group.total), group.conflict ? "conflict" : ""].join(" "),
-                    data: { id, kind: "group", label, width: widthFor(label), element, owner: group.key } });
-      const names = [];
-      const collect = (g) => {
-        for (const [, item] of g.members) { unitOf.set(item.id, id); names.push(String(item.name).toLowerCase()); }
-        for (const c of g.children.values()) collect(c);
-      };
-      collect(group);
-      searchNames.set(id, names);
+      const total = group.count("nodes");
+      const present = group.count("nodes", 0);
+      const label = `${group.summary.conflict ? "⚠ " : ""}${fitted(group.label)}\n${plural(total, "node")}`;
+      const element = { kind: "group", key: group.key, name: group.label, total, present, files: group.summary.files };
+      wanted.push({ group: "nodes", classes: [presenceClass(present, total), group.summary.conflict ? "conflict" : ""].join(" "),
+                    data: { id, kind: "group", label, width: widthFor(label), element, owner: group.key, params: group.count("params") } });
+      searchNames.set(id, group.names().map((name) => String(name).toLowerCase()));
       return id;
     };
-    const addNode = (kind, item, hint, group) => {
+    const addNode = (kind, item, hint, group, variant = null) => {
       const id = PREFIX[kind] + item.id;
       const clash = clashing.has(clashName(kind, item.name));
       const label = `${clash ? "⚠ " : ""}${item.name}${hint ? `\n${hint}` : ""}`;
       wanted.push({ group: "nodes", classes: [item.presence, clash ? "conflict" : ""].join(" "),
-                    data: { id, kind, label, owner: item.id, element: { kind, ...item, group: group.key, groupName: group.label } } });
+                    data: { id, kind, label, owner: item.id, element: { kind, ...item, group: group.key, groupName: group.label, variant } } });
       unitOf.set(item.id, id);
       searchNames.set(id, [String(item.name).toLowerCase()]);
       if (!drawnNodes.has(item.name)) drawnNodes.set(item.name, []);
       drawnNodes.get(item.name).push(id);
     };
-    const addMore = (group, hidden) => {
+    // the members of a group not drawn: `hidden` those fetched, `names` all their names
+    const addMore = (group, count, hidden, names) => {
       const id = PREFIX.more + group.key;
       wanted.push({ group: "nodes", classes: "",
-                    data: { id, kind: "more", label: `+${hidden.length} more`, width: widthFor(`+${hidden.length} more`),
-                            element: { kind: "more", group: group.key, name: group.label, hidden: hidden.length } } });
+                    data: { id, kind: "more", label: `+${count} more`, width: widthFor(`+${count} more`),
+                            element: { kind: "more", group: group.key, name: group.label, hidden: count } } });
       for (const [, item] of hidden) unitOf.set(item.id, id);
-      searchNames.set(id, hidden.map(([, item]) => String(item.name).toLowerCase()));
+      searchNames.set(id, names.map((name) => String(name).toLowerCase()));
     };
     const emitMembers = (group) => {
       const byName = new Map();
@@ -339,45 +414,43 @@ export class GraphView {
         shown += 1;
         const key = `${group.key}\u0001=${name}`;
         if (twins.length === 1) { addNode(twins[0][0], twins[0][1], "", group); continue; }
-        const differ = differences(twins.map(([, item]) => item));
+        const items = twins.map(([, item]) => item);
+        const differ = differences(items);
         if (this.expanded.has(key)) {
-          const variants = { key, label: name, members: twins };
-          const items = twins.map(([, item]) => item);
+          const variants = { key, label: name };
           const page = this.pages.get(key) ?? PAGE;
           const seen = new Map(); // hint → times used: equal hints get a number
           twins.slice(0, page).forEach(([kind, item], index) => {
             let hint = variantHint(item, differ, items);
             if (seen.has(hint) || !hint) hint = `${hint} (${index + 1} of ${twins.length})`.trim();
             seen.set(hint, true);
-            addNode(kind, item, hint, variants);
+            addNode(kind, item, hint, variants, { at: index + 1, of: twins.length, differ });
           });
-          if (twins.length > page) addMore(variants, twins.slice(page));
+          if (twins.length > page) addMore(variants, twins.length - page, twins.slice(page), [name]);
           continue;
         }
-        const variants = new Group(key, name, group);
-        for (const [, item] of twins) {
-          variants.members.push(["node", item]);
-          variants.total += 1;
-          if (item.presence === "present") variants.present += 1;
-          variants.conflict ||= clashing.has(clashName("node", item.name));
-        }
+        const present = items.filter((item) => item.presence === "present").length;
+        const conflict = items.some((item) => clashing.has(clashName("node", item.name)));
         const id = PREFIX.variants + key;
-        const label = `${variants.conflict ? "⚠ " : ""}${fitted(name)}\n${twins.length} variants`;
-        wanted.push({ group: "nodes", classes: [presenceClass(variants.present, variants.total), variants.conflict ? "conflict" : ""].join(" "),
+        const label = `${conflict ? "⚠ " : ""}${fitted(name)}\n${twins.length} variants`;
+        wanted.push({ group: "nodes", classes: [presenceClass(present, twins.length), conflict ? "conflict" : ""].join(" "),
                       data: { id, kind: "variants", label, width: widthFor(label), owner: key,
-                              element: { kind: "variants", key, name, total: twins.length, present: variants.present, differ } } });
-        for (const [, item] of twins) unitOf.set(item.id, id);
+                              element: { kind: "variants", key, name, total: twins.length, present, differ } } });
+        for (const item of items) unitOf.set(item.id, id);
         searchNames.set(id, [String(name).toLowerCase()]);
       }
-      if (hidden.length) addMore(group, hidden);
+      const unfetched = group.own("nodes") - group.members.length;
+      if (hidden.length || unfetched > 0) {
+        const drawnNames = new Set(names.slice(0, limit));
+        const rest = (group.summary?.names ?? []).filter((name) => !drawnNames.has(name));
+        addMore(group, hidden.length + unfetched, hidden, rest);
+      }
     };
-    const opened = new Map(); // key → label of the groups drawn open
+    const opened = new Map(); // key → the groups drawn open
     const emit = (group) => {
       for (const child of [...group.children.values()].sort((a, b) => a.label.localeCompare(b.label))) {
-        // a group with one subgroup and nothing else opens with it: no click for nothing
-        const lone = child.children.size === 1 && child.members.length === 0;
-        if (lone || this.isOpen(child, selectedFiles)) {
-          opened.set(child.key, child.label);
+        if (this.opensWith(child) || this.isOpen(child)) {
+          opened.set(child.key, child);
           emit(child);
         }
         else addGroupUnit(child);
@@ -386,20 +459,34 @@ export class GraphView {
     };
     emit(root);
 
+    // the unit drawing the members of a group that are not fetched: its "+N more" box, or
+    // the closed box it is in
+    const drawn = new Set(wanted.map((item) => item.data.id));
+    const boxOf = (key) => {
+      if (key === null || key === undefined) return undefined;
+      if (drawn.has(PREFIX.more + key)) return PREFIX.more + key;
+      for (let at = key; at; at = at.slice(0, at.lastIndexOf("\u0001"))) {
+        if (drawn.has(PREFIX.group + at)) return PREFIX.group + at;
+      }
+      return undefined;
+    };
+
     // topics, services and actions: one by one, wired to whatever unit draws each of their
     // nodes; an edge points the way data goes (publisher → topic → subscriber, client →
     // service → server)
-    for (const [kind, list] of CHANNELS.map(([k, name]) => [k, state.graph[name] ?? []])) {
+    for (const [kind] of CHANNELS) {
       const [feeding, using] = SIDES[kind];
-      for (const named of list.filter((t) => t.presence !== "absent")) {
+      for (const named of this.channels[kind]) {
         const id = PREFIX[kind] + named.id;
         wanted.push({ group: "nodes", classes: named.presence, data: { id, kind, label: named.name, owner: named.id, element: { kind, ...named } } });
         unitOf.set(named.id, id);
         searchNames.set(id, [String(named.name).toLowerCase()]);
+        const drawer = (node, at) => unitOf.get(node) ?? boxOf(named.groups[at]);
+        const where = new Map(named.nodes.map((node, at) => [node, drawer(node, at)]));
         // a unit whose nodes only use the name (by their interfaces) is at its far end
-        const users = new Set((named[using] || []).map((edge) => unitOf.get(edge.node)));
-        const feeders = new Set((named[feeding] || []).map((edge) => unitOf.get(edge.node)));
-        for (const unit of new Set(named.nodes.map((nodeId) => unitOf.get(nodeId)).filter(Boolean))) {
+        const users = new Set((named[using] || []).map((edge) => where.get(edge.node)));
+        const feeders = new Set((named[feeding] || []).map((edge) => where.get(edge.node)));
+        for (const unit of new Set([...where.values()].filter(Boolean))) {
           const uses = users.has(unit) && !feeders.has(unit);
           // a topic flows to its users, a request from a client to the service's server
           const towardsUnit = kind === "topic" ? uses : !uses;
@@ -409,50 +496,33 @@ export class GraphView {
         }
       }
     }
-    if (this.options.params) this.paramUnits(state, wanted, drawnNodes, unitOf, opened);
-    return { wanted, unitOf, searchNames };
+    if (this.options.params) this.paramUnits(root, wanted, drawnNodes, unitOf, opened);
+    return { wanted, unitOf, searchNames, boxOf };
   }
 
   // Params as bundles: a node's own params (/ns/node/x) hang on it as one tag; the others
-  // are counted on the unit that draws their launch file's or namespace's group.
-  paramUnits(state, wanted, drawnNodes, unitOf, opened) {
+  // of an open group are one tag; a closed group's box counts those under it.
+  paramUnits(root, wanted, drawnNodes, unitOf, opened) {
     const bundles = new Map(); // unit id → {name: where they are, params}
-    const boxes = new Map(wanted.filter((w) => w.data.kind === "group").map((item) => [item.data.id, { item, params: 0 }]));
     const put = (unit, name, param) => {
       if (!bundles.has(unit)) bundles.set(unit, { name, params: [] });
       bundles.get(unit).params.push(param);
     };
-    for (const param of state.graph.params) {
-      if (param.presence === "absent") continue;
-      let owner = null;
-      let name = String(param.name);
-      while (!owner && name.lastIndexOf("/") > 0) {
-        name = name.slice(0, name.lastIndexOf("/"));
-        const units = drawnNodes.get(name);
-        if (units) owner = units.find((unit) => entryFile(unit.slice(PREFIX.node.length)) === entryFile(param.id)) ?? units[0];
+    for (const group of [root, ...opened.values()]) {
+      for (const param of group.params) {
+        let owner = null;
+        let name = String(param.name);
+        while (!owner && name.lastIndexOf("/") > 0) {
+          name = name.slice(0, name.lastIndexOf("/"));
+          const units = drawnNodes.get(name);
+          if (units) owner = units.find((unit) => entryFile(unit.slice(PREFIX.node.length)) === entryFile(param.id)) ?? units[0];
+        }
+        if (owner) put(owner, name, param);
+        else put(`loose:${group.key}`, group.key ? group.label : "the workspace", param);
       }
-      if (owner) {
-        put(owner, name, param);
-        continue;
-      }
-      // the box of a closed group counts them; the deepest open group gets one bundle
-      let key = "";
-      let box = null;
-      let open = ["", "the workspace"];
-      for (const label of this.path("param", param)) {
-        key = `${key}\u0001${label}`;
-        box = boxes.get(PREFIX.group + key);
-        if (box) break;
-        if (opened.has(key)) open = [key, opened.get(key)];
-      }
-      if (box) {
-        box.params += 1;
-        unitOf.set(param.id, box.item.data.id);
-      } else put(`loose:${open[0]}`, open[1], param);
     }
-    for (const { item, params } of boxes.values()) {
-      if (!params) continue;
-      item.data.label += ` · ${plural(params, "param")}`;
+    for (const item of wanted.filter((w) => w.data.kind === "group" && w.data.params)) {
+      item.data.label += ` · ${plural(item.data.params, "param")}`;
       item.data.width = widthFor(item.data.label);
     }
     for (const [owner, { name: where, params }] of bundles) {
@@ -468,10 +538,10 @@ export class GraphView {
   }
 
   // -- drawing --------------------------------------------------------------------------------
-  render() {
-    if (!this.state) return;
-    const { wanted: list, unitOf, searchNames } = this.plan(this.state);
+  render(root) {
+    const { wanted: list, unitOf, searchNames, boxOf } = this.plan(this.state, root);
     this.unitOf = unitOf;
+    this.boxOf = boxOf;
     this.units = searchNames;
     const wanted = new Map(list.map((item) => [item.data.id, item]));
     const cy = this.cy;
@@ -537,7 +607,10 @@ export class GraphView {
     const runs = ++this.layoutRuns;
     this.container.dataset.layout = "running";
     const viewport = this.viewportFor(target);
-    const finish = () => { if (runs === this.layoutRuns) this.container.dataset.layout = "done"; };
+    const finish = () => {
+      this.layoutsDone = runs;
+      if (runs === this.layoutRuns && !this.pending) this.container.dataset.layout = "done";
+    };
     for (const node of cy.nodes()) node.animate({ position: target.get(node.id()) }, { duration: ANIMATION_MS });
     cy.animate({ ...viewport }, { duration: ANIMATION_MS, complete: finish });
   }
@@ -630,8 +703,9 @@ export class GraphView {
 
   // Draws the units of the graph entries `ids` in red, for `source` (each source replaces
   // its own marks); with `fit`, the view moves to them.
-  highlight(source, ids, fit = false) {
-    this.marked.set(source, new Set(ids));
+  // (`groups`: the group key of each id, for those the page has not fetched).
+  highlight(source, ids, groups, fit = false) {
+    this.marked.set(source, ids.map((id, at) => [id, groups[at]]));
     this.applyVisibility();
     const marked = this.cy.nodes(".queried");
     if (fit && marked.nonempty()) {
@@ -643,8 +717,11 @@ export class GraphView {
   // The units drawing the marked graph entries (a box, when it holds one).
   markedUnits() {
     const units = new Set();
-    for (const ids of this.marked.values()) {
-      for (const id of ids) if (this.unitOf.has(id)) units.add(this.unitOf.get(id));
+    for (const marks of this.marked.values()) {
+      for (const [id, group] of marks) {
+        const unit = this.unitOf.get(id) ?? this.boxOf(group);
+        if (unit) units.add(unit);
+      }
     }
     return units;
   }
@@ -672,19 +749,15 @@ export class GraphView {
     return Object.fromEntries(this.unitOf);
   }
 
-  // What the graph shows, in graph entries (a box counts what it holds).
+  // What the graph shows, in graph entries (a box counts what it holds): every one that
+  // is not absent.
   counts() {
-    const entries = { node: 0, topic: 0, param: 0, undetermined: 0 };
-    if (!this.state) return { ...entries, drawn: 0 };
-    const shown = (item) => item.presence !== "absent" && this.unitOf.has(item.id);
-    for (const item of [...this.state.graph.nodes, ...(this.state.graph.tests ?? [])].filter(shown)) {
-      entries.node += 1;
-      if (item.presence === "undetermined") entries.undetermined += 1;
-    }
-    entries.topic = this.state.graph.topics.filter(shown).length;
-    entries.service = [...(this.state.graph.services ?? []), ...(this.state.graph.actions ?? [])].filter(shown).length;
-    entries.param = this.options.params ? this.state.graph.params.filter(shown).length : 0;
-    return { nodes: entries.node, topics: entries.topic, services: entries.service, params: entries.param,
-             undetermined: entries.undetermined, drawn: this.cy.nodes().length };
+    if (!this.state) return { nodes: 0, topics: 0, services: 0, params: 0, undetermined: 0, drawn: 0 };
+    const root = groupTree(this.state.graph.groups);
+    const nodes = root.count("nodes");
+    return { nodes, topics: this.channels.topic.length,
+             services: this.channels.service.length + this.channels.action.length,
+             params: this.options.params ? root.count("params") : 0,
+             undetermined: nodes - root.count("nodes", 0), drawn: this.cy.nodes().length };
   }
 }

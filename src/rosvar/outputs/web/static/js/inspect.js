@@ -1,7 +1,8 @@
 // The query box and the checks panel: questions about the graph answered by the server under
 // the tab's current choices (POST /api/query, POST /api/checks), asked again after every
 // step. The graph entries an answer concerns are drawn in red: a query's results, or the
-// finding the user clicked.
+// finding the user clicked (each id with its group: the box drawing it when it is not
+// fetched).
 
 import { ApiError, request } from "./api.js";
 import { shortPath } from "./names.js";
@@ -90,10 +91,10 @@ export class QueryBox {
       const row = item("result", span("kind", result.kind), span("name", result.name),
                        span("file", shortPath(result.launch_file)), when(result),
                        place(result.file, result.line));
-      row.addEventListener("click", () => this.graph.highlight("query", result.ids, true));
+      row.addEventListener("click", () => this.graph.highlight("query", result.ids, result.groups, true));
       return row;
     }));
-    this.graph.highlight("query", results.flatMap((result) => result.ids));
+    this.graph.highlight("query", results.flatMap((result) => result.ids), results.flatMap((result) => result.groups));
   }
 }
 
@@ -131,7 +132,7 @@ export class ChecksPanel {
       return row;
     }));
     if (this.chosen && !chosen) this.chosen = null;
-    this.graph.highlight("check", chosen ? chosen.ids : []);
+    this.graph.highlight("check", chosen ? chosen.ids : [], chosen ? chosen.groups : []);
     document.body.dataset.checks = String(Number(document.body.dataset.checks ?? 0) + 1);
   }
 
@@ -141,6 +142,6 @@ export class ChecksPanel {
     for (const other of this.list.querySelectorAll(".chosen")) other.classList.remove("chosen");
     this.chosen = again ? null : row.dataset.key;
     if (!again) row.classList.add("chosen");
-    this.graph.highlight("check", again ? [] : finding.ids, !again);
+    this.graph.highlight("check", again ? [] : finding.ids, again ? [] : finding.groups, !again);
   }
 }

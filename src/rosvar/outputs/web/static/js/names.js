@@ -39,21 +39,6 @@ export function baseName(path) {
   return text.slice(text.lastIndexOf("/") + 1);
 }
 
-// The namespace of a ROS name ("/a/b/c" → "/a/b/"), "/" for a global name.
-export function namespaceOf(name) {
-  const cut = String(name).lastIndexOf("/");
-  return cut > 0 ? String(name).slice(0, cut + 1) : "/";
-}
-
-// "/a/b/c" → ["/a/", "/a/b/"]; a name in the root namespace → ["/"].
-export function namespacePath(name) {
-  const ns = namespaceOf(name);
-  if (ns === "/") return ["/"];
-  const path = [];
-  for (let at = ns.indexOf("/", 1); at > 0; at = ns.indexOf("/", at + 1)) path.push(ns.slice(0, at + 1));
-  return path;
-}
-
 // 87925366…0 → "≈ 8.8 × 10⁷⁶": counts too long to read are rounded (the exact one on hover).
 const SUPERSCRIPT = "⁰¹²³⁴⁵⁶⁷⁸⁹";
 export const EXACT_DIGITS = 9;
