@@ -427,8 +427,7 @@ def taken(
     One pass over the lists from the root down (``read`` lists children first), marking
     whether each node is reached as itself, as its complement or both: every function
     but FALSE is satisfiable, so the polarity only tells whether an edge to the constant
-    is one to FALSE. A walk over (node, polarity) pairs with a stack and a set of those
-    seen took twice as long."""
+    is one to FALSE: no stack, and no set of the (node, polarity) pairs seen."""
     if not level_of:
         return {}
     top = min(level_of.values())

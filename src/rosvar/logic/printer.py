@@ -23,6 +23,8 @@ MAX_FULL = 200  # longer formulas over <other> values help nobody
 MAX_CUBES = 256  # beyond this many disjuncts a formula is no longer readable
 FULL_CUBES = MAX_FULL // 4  # a disjunct takes at least 4 characters (" ∨ " and a name)
 TRUE_FOR_KNOWN = "true for every known value"
+AND = "∧"
+OR = " ∨ "
 
 Domains = Mapping[Input, tuple[Slot, ...]]
 
@@ -203,10 +205,11 @@ class Printer:
             return "only for other values"
         if (known_care & ~known) == space.false and (care & ~condition) != space.false:
             try:  # the full formula, if it is short: a long one is not worth computing
-                full = self._formula(condition, care, qualify, context.domains, FULL_CUBES)
+                return self._formula(
+                    condition, care, qualify, context.domains, FULL_CUBES, MAX_FULL
+                )
             except _TooComplex:
                 return TRUE_FOR_KNOWN
-            return full if len(full) <= MAX_FULL else TRUE_FOR_KNOWN
         return self._formula(known, known_care, qualify, context.known_domains)
 
     def _context(self, variables: frozenset[str]) -> _Context:
@@ -247,9 +250,12 @@ class Printer:
         qualify: bool,
         domains: Domains,
         budget: int | None = None,
+        longest: int | None = None,
     ) -> str:
         """``condition`` modulo ``care`` as a disjunction of cubes; with a ``budget`` of cubes,
-        :class:`_TooComplex` past it, else a summary past :data:`MAX_CUBES`."""
+        :class:`_TooComplex` past it, else a summary past :data:`MAX_CUBES`; with ``longest``,
+        :class:`_TooComplex` as soon as the cubes rendered so far make the text longer (the
+        rest is not rendered)."""
         space = self.space
         if (care & ~condition) == space.false:
             return "true"
@@ -262,10 +268,18 @@ class Printer:
             names = sorted({str(i) for i in _inputs_of(space, support)})
             shown = ", ".join(names[:6]) + (", …" if len(names) > 6 else "")
             return f"a condition over {len(names)} inputs ({shown})"
-        rendered = [_render_cube(space, cube, qualify, domains) for cube in cubes]
+        rendered = []
+        length = -len(OR)  # of the text below: each disjunct, parenthesised if a conjunction
+        for cube in cubes:
+            text = _render_cube(space, cube, qualify, domains)
+            rendered.append(text)
+            if longest is not None:
+                length += len(text) + len(OR) + (2 if len(cubes) > 1 and AND in text else 0)
+                if length > longest:
+                    raise _TooComplex
         if len(rendered) == 1:
             return rendered[0]
-        return " ∨ ".join(f"({r})" if "∧" in r else r for r in sorted(rendered))
+        return OR.join(f"({r})" if AND in r else r for r in sorted(rendered))
 
 
 def _inputs_of(space: ConditionSpace, variables: Iterable[str]) -> set[Input]:
@@ -374,7 +388,7 @@ def _render_cube(
             assert isinstance(value, frozenset)
             input_ = cast(Input, key)
             parts.append(_render_slots(input_, value, domains[input_], qualify))
-    return " ∧ ".join(parts)
+    return f" {AND} ".join(parts)
 
 
 def _sort_key(key: object) -> tuple[int, str, str]:
