@@ -52,7 +52,8 @@ class _FactShape(NamedTuple):
     where each block starts (``Printer._shape``)."""
 
     diagram: tuple[int, tuple[int, ...], tuple[int, ...]]
-    places: tuple[tuple[int, int], ...]
+    blocks: tuple[int, ...]  # of its variables, node by node
+    indices: tuple[int, ...]  # their places in their blocks
     starts: dict[int, int]
 
 
@@ -69,7 +70,10 @@ class Printer:
         self._variables: dict[str, tuple[int, int, Sequence[BDD]]] = {}  # see _variable
         self._block_numbers: dict[object, int] = {}
         self._block_objects: list[object] = []
-        self._shown_blocks: dict[tuple[object, bool], tuple[object, ...]] = {}
+        self._shown_numbered: dict[bool, list[tuple[object, ...] | None]] = {
+            False: [],
+            True: [],
+        }  # ``_shown_of``
         self._fact_shapes: dict[BDD, _FactShape] = {}
 
     def describe(self, condition: BDD, qualify: bool = False, known_only: bool = True) -> str:
@@ -114,20 +118,24 @@ class Printer:
         starts: dict[int, int] = {}
         facts: dict[BDD, _FactShape] = {}
         variables = self._variables
+        fact_shapes = self._fact_shapes
+        placements = []
         for name, level in zip(nodes.names, nodes.levels, strict=True):
             found = variables.get(name) or self._variable(name)
+            placements.append(found)
             starts[found[0]] = level - found[1]
             for fact in found[2]:
                 if fact not in facts:
-                    facts[fact] = self._fact_shapes.get(fact) or self._fact_shape(fact)
+                    facts[fact] = fact_shapes.get(fact) or self._fact_shape(fact)
         for fact_shape in facts.values():
             starts.update(fact_shape.starts)
         order = sorted(starts, key=starts.__getitem__)
         rank = {block: position for position, block in enumerate(order)}
-        shown = tuple(self._shown(self._block_objects[block], qualify) for block in order)
+        shown = self._shown_of(order, qualify)
         if len({text for text, *_rest in shown}) != len(shown):
             return None
-        placed = tuple((rank[variables[name][0]], variables[name][1]) for name in nodes.names)
+        ranked = rank.__getitem__
+        placed = tuple((ranked(block), index) for block, index, _facts in placements)
         return (
             qualify,
             known_only,
@@ -135,7 +143,7 @@ class Printer:
             tuple(
                 sorted(
                     {
-                        (*f.diagram, tuple((rank[block], index) for block, index in f.places))
+                        (*f.diagram, tuple(zip(map(ranked, f.blocks), f.indices, strict=True)))
                         for f in facts.values()
                     }
                 )
@@ -162,32 +170,45 @@ class Printer:
     def _fact_shape(self, fact: BDD) -> _FactShape:
         """What ``_shape`` reads of a fact, the same for every condition it is a fact of."""
         nodes = layout(fact)
-        places = []
+        blocks = []
+        indices = []
         starts = {}
         for name, level in zip(nodes.names, nodes.levels, strict=True):
             block, index, _facts = self._variables.get(name) or self._variable(name)
-            places.append((block, index))
+            blocks.append(block)
+            indices.append(index)
             starts[block] = level - index
         found = self._fact_shapes[fact] = _FactShape(
-            (nodes.root, tuple(nodes.lows), tuple(nodes.highs)), tuple(places), starts
+            (nodes.root, tuple(nodes.lows), tuple(nodes.highs)),
+            tuple(blocks),
+            tuple(indices),
+            starts,
         )
         return found
 
+    def _shown_of(self, blocks: Sequence[int], qualify: bool) -> tuple[tuple[object, ...], ...]:
+        """``_shown`` of each of ``blocks``, remembered by block number (an input's hash
+        is computed in Python, and this runs for every block of every condition)."""
+        known = self._shown_numbered[qualify]
+        if len(known) < len(self._block_objects):
+            known.extend([None] * (len(self._block_objects) - len(known)))
+        shown = []
+        for block in blocks:
+            found = known[block]
+            if found is None:
+                found = known[block] = self._shown(self._block_objects[block], qualify)
+            shown.append(found)
+        return tuple(shown)
+
     def _shown(self, block: object, qualify: bool) -> tuple[object, ...]:
         """What the printer reads of a block: its name, then what else it shows or uses."""
-        found = self._shown_blocks.get((block, qualify))
-        if found is not None:
-            return found
         if isinstance(block, FileAtom):
-            found = (f"file {block.label}",)
-        elif isinstance(block, PredicateAtom):
-            found = (f"{block.test} {block.term}",)
-        else:
-            input_ = cast(Input, block)
-            file = input_.file if qualify and isinstance(input_, ArgInput) else ""
-            found = (str(input_), type(input_).__name__, file, self.space.domain(input_))
-        self._shown_blocks[block, qualify] = found
-        return found
+            return (f"file {block.label}",)
+        if isinstance(block, PredicateAtom):
+            return (f"{block.test} {block.term}",)
+        input_ = cast(Input, block)
+        file = input_.file if qualify and isinstance(input_, ArgInput) else ""
+        return (str(input_), type(input_).__name__, file, self.space.domain(input_))
 
     def _describe(self, condition: BDD, qualify: bool, known_only: bool) -> str:
         space = self.space
