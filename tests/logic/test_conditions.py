@@ -89,6 +89,20 @@ def test_satisfiable_and_valid_implies_respect_validity() -> None:
     assert space.valid_implies(~(a & b))
 
 
+def test_a_fact_added_again_changes_nothing() -> None:
+    """Every ``if`` testing the same value adds the same fact: the facts, and what is
+    remembered under them, stay as they were."""
+    space = make_space()
+    fact = ~(space.slot(MODEL, "a") & space.slot(SIM, "true"))
+    space.constrain(fact)
+    facts, valid = space.facts(), space.valid
+    name = sorted(space.support(fact))[0]
+    space.constrain(fact)
+    assert (space.facts(), space.valid) == (facts, valid)
+    assert list(space.facts_of(name)) == [fact]
+    assert not space.satisfiable(~fact)
+
+
 # -- assignments --------------------------------------------------------------------------------
 def _holding(space: ConditionSpace, assignment: dict[str, bool], input_: Input) -> list[Slot]:
     return [s for s in space.domain(input_) if space.evaluate(space.slot(input_, s), assignment)]

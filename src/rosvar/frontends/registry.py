@@ -10,7 +10,6 @@ import os
 from collections.abc import Callable
 
 from rosvar.frontends.ros1_xml.parser import ParseResult, load_launch_file
-from rosvar.frontends.ros2_python.parser import parse_python_launch_file
 from rosvar.frontends.ros2_yaml.parser import parse_yaml_launch_file
 
 Loader = Callable[[str], ParseResult]
@@ -32,7 +31,15 @@ def frontend(*suffixes: str) -> Callable[[Loader], Loader]:
 
 frontend(".launch.xml", ".xml", ".launch")(load_launch_file)
 frontend(".launch.yaml", ".launch.yml", ".yaml", ".yml")(parse_yaml_launch_file)
-frontend(".launch.py", ".py")(parse_python_launch_file)
+
+
+@frontend(".launch.py", ".py")
+def _python_launch_file(path: str) -> ParseResult:
+    """ROS 2's Python frontend, imported on first use: its abstract interpreter is most of
+    the frontends' import time, which a workspace without Python launch files never needs."""
+    from rosvar.frontends.ros2_python.parser import parse_python_launch_file
+
+    return parse_python_launch_file(path)
 
 
 def load(path: str | os.PathLike[str]) -> ParseResult:

@@ -422,42 +422,52 @@ def taken(
     """For each variable of ``level_of`` (``read``'s levels, covering the diagram's support),
     the values it takes in some assignment satisfying the diagram ``levels, lows, highs,
     root`` (as ``read`` gives it): those of the edges from its nodes to anything but
-    FALSE, and both where a path to TRUE skips its level. One pass over the lists."""
+    FALSE, and both where a path to TRUE skips its level.
+
+    One pass over the lists from the root down (``read`` lists children first), marking
+    whether each node is reached as itself, as its complement or both: every function
+    but FALSE is satisfiable, so the polarity only tells whether an edge to the constant
+    is one to FALSE: no stack, and no set of the (node, polarity) pairs seen."""
     if not level_of:
         return {}
     top = min(level_of.values())
     bottom = max(level_of.values()) + 1
-    falses: set[int] = set()  # levels with an edge of that value to a satisfiable child
-    trues: set[int] = set()
-    free = [0] * (bottom - top + 1)  # difference array over the levels some edge skips
     if root == ~0:  # FALSE: nothing satisfies it
         return {name: set() for name in level_of}
+    falses = [False] * (bottom - top)  # levels with an edge of that value to a satisfiable child
+    trues = [False] * (bottom - top)
+    free = [0] * (bottom - top + 1)  # difference array over the levels some edge skips
+    reached = bytearray(len(levels))  # per place: 1 reached as itself, 2 as its complement
+    place = ~root if root < 0 else root
+    reached[place] = 2 if root < 0 else 1
     free[0] += 1  # the levels above the root are free
-    free[(levels[root if root >= 0 else ~root] if root else bottom) - top] -= 1
-    seen: set[int] = set()
-    stack = [root]  # functions: a place, or ``~place`` for the negated node
-    while stack:
-        function = stack.pop()
-        if function in seen or function == 0:
+    free[(levels[place] if place else bottom) - top] -= 1
+    for place in range(len(levels) - 1, 0, -1):
+        polarity = reached[place]
+        if not polarity:
             continue
-        seen.add(function)
-        flipped = function < 0
-        place = ~function if flipped else function
-        here = levels[place]
+        here = levels[place] - top
         low, high = lows[place], highs[place]
-        if flipped:
-            low, high = ~low, ~high
-        for taking, child in ((falses, low), (trues, high)):
-            if child == ~0:  # FALSE
-                continue
-            taking.add(here)
-            free[here + 1 - top] += 1
-            free[(levels[child if child >= 0 else ~child] if child else bottom) - top] -= 1
-            stack.append(child)
+        if high or polarity & 1:  # a then edge is never complemented: FALSE only as ~TRUE
+            trues[here] = True
+            free[here + 1] += 1
+            free[(levels[high] if high else bottom) - top] -= 1
+            reached[high] |= polarity
+        if low < 0:
+            low, polarity = ~low, (polarity & 1) << 1 | polarity >> 1
+        if low or polarity & 1:
+            falses[here] = True
+            free[here + 1] += 1
+            free[(levels[low] if low else bottom) - top] -= 1
+            reached[low] |= polarity
     values: dict[int, set[bool]] = {}
     running = 0
     for level in range(top, bottom):
         running += free[level - top]
-        values[level] = {False, True} if running > 0 else set()
-        values[level].update(v for v, found in ((False, falses), (True, trues)) if level in found)
+        found = {False, True} if running > 0 else set()
+        if falses[level - top]:
+            found.add(False)
+        if trues[level - top]:
+            found.add(True)
+        values[level] = found
     return {name: values[level] for name, level in level_of.items()}

@@ -106,6 +106,7 @@ class ConditionSpace:
         self.true: BDD = self.bdd.true
         self.false: BDD = self.bdd.false
         self._constraints: list[BDD] = []
+        self._constrained: set[BDD] = set()  # the facts of ``constrain``, each added once
         self._valid: BDD = self.bdd.true
         self._valid_count = 0
         self._atoms: list[Atom] = []
@@ -215,7 +216,13 @@ class ConditionSpace:
         return walked_support(u)
 
     def constrain(self, constraint: BDD) -> None:
-        """Add a fact every configuration satisfies (e.g. two predicates exclude each other)."""
+        """Add a fact every configuration satisfies (e.g. two predicates exclude each other).
+
+        A fact added again changes nothing: every ``if`` testing the same value adds the
+        same one, and a new fact makes what was remembered under the facts stale."""
+        if constraint in self._constrained:
+            return
+        self._constrained.add(constraint)
         self._constraints.append(constraint)
         names = self.support(constraint)
         inputs = {a.input for a in map(self._atom_of.__getitem__, names) if isinstance(a, SlotAtom)}

@@ -23,6 +23,8 @@ MAX_FULL = 200  # longer formulas over <other> values help nobody
 MAX_CUBES = 256  # beyond this many disjuncts a formula is no longer readable
 FULL_CUBES = MAX_FULL // 4  # a disjunct takes at least 4 characters (" ∨ " and a name)
 TRUE_FOR_KNOWN = "true for every known value"
+AND = "∧"
+OR = " ∨ "
 
 Domains = Mapping[Input, tuple[Slot, ...]]
 
@@ -50,7 +52,8 @@ class _FactShape(NamedTuple):
     where each block starts (``Printer._shape``)."""
 
     diagram: tuple[int, tuple[int, ...], tuple[int, ...]]
-    places: tuple[tuple[int, int], ...]
+    blocks: tuple[int, ...]  # of its variables, node by node
+    indices: tuple[int, ...]  # their places in their blocks
     starts: dict[int, int]
 
 
@@ -67,7 +70,10 @@ class Printer:
         self._variables: dict[str, tuple[int, int, Sequence[BDD]]] = {}  # see _variable
         self._block_numbers: dict[object, int] = {}
         self._block_objects: list[object] = []
-        self._shown_blocks: dict[tuple[object, bool], tuple[object, ...]] = {}
+        self._shown_numbered: dict[bool, list[tuple[object, ...] | None]] = {
+            False: [],
+            True: [],
+        }  # ``_shown_of``
         self._fact_shapes: dict[BDD, _FactShape] = {}
 
     def describe(self, condition: BDD, qualify: bool = False, known_only: bool = True) -> str:
@@ -112,20 +118,24 @@ class Printer:
         starts: dict[int, int] = {}
         facts: dict[BDD, _FactShape] = {}
         variables = self._variables
+        fact_shapes = self._fact_shapes
+        placements = []
         for name, level in zip(nodes.names, nodes.levels, strict=True):
             found = variables.get(name) or self._variable(name)
+            placements.append(found)
             starts[found[0]] = level - found[1]
             for fact in found[2]:
                 if fact not in facts:
-                    facts[fact] = self._fact_shapes.get(fact) or self._fact_shape(fact)
+                    facts[fact] = fact_shapes.get(fact) or self._fact_shape(fact)
         for fact_shape in facts.values():
             starts.update(fact_shape.starts)
         order = sorted(starts, key=starts.__getitem__)
         rank = {block: position for position, block in enumerate(order)}
-        shown = tuple(self._shown(self._block_objects[block], qualify) for block in order)
+        shown = self._shown_of(order, qualify)
         if len({text for text, *_rest in shown}) != len(shown):
             return None
-        placed = tuple((rank[variables[name][0]], variables[name][1]) for name in nodes.names)
+        ranked = rank.__getitem__
+        placed = tuple((ranked(block), index) for block, index, _facts in placements)
         return (
             qualify,
             known_only,
@@ -133,7 +143,7 @@ class Printer:
             tuple(
                 sorted(
                     {
-                        (*f.diagram, tuple((rank[block], index) for block, index in f.places))
+                        (*f.diagram, tuple(zip(map(ranked, f.blocks), f.indices, strict=True)))
                         for f in facts.values()
                     }
                 )
@@ -160,32 +170,45 @@ class Printer:
     def _fact_shape(self, fact: BDD) -> _FactShape:
         """What ``_shape`` reads of a fact, the same for every condition it is a fact of."""
         nodes = layout(fact)
-        places = []
+        blocks = []
+        indices = []
         starts = {}
         for name, level in zip(nodes.names, nodes.levels, strict=True):
             block, index, _facts = self._variables.get(name) or self._variable(name)
-            places.append((block, index))
+            blocks.append(block)
+            indices.append(index)
             starts[block] = level - index
         found = self._fact_shapes[fact] = _FactShape(
-            (nodes.root, tuple(nodes.lows), tuple(nodes.highs)), tuple(places), starts
+            (nodes.root, tuple(nodes.lows), tuple(nodes.highs)),
+            tuple(blocks),
+            tuple(indices),
+            starts,
         )
         return found
 
+    def _shown_of(self, blocks: Sequence[int], qualify: bool) -> tuple[tuple[object, ...], ...]:
+        """``_shown`` of each of ``blocks``, remembered by block number (an input's hash
+        is computed in Python, and this runs for every block of every condition)."""
+        known = self._shown_numbered[qualify]
+        if len(known) < len(self._block_objects):
+            known.extend([None] * (len(self._block_objects) - len(known)))
+        shown = []
+        for block in blocks:
+            found = known[block]
+            if found is None:
+                found = known[block] = self._shown(self._block_objects[block], qualify)
+            shown.append(found)
+        return tuple(shown)
+
     def _shown(self, block: object, qualify: bool) -> tuple[object, ...]:
         """What the printer reads of a block: its name, then what else it shows or uses."""
-        found = self._shown_blocks.get((block, qualify))
-        if found is not None:
-            return found
         if isinstance(block, FileAtom):
-            found = (f"file {block.label}",)
-        elif isinstance(block, PredicateAtom):
-            found = (f"{block.test} {block.term}",)
-        else:
-            input_ = cast(Input, block)
-            file = input_.file if qualify and isinstance(input_, ArgInput) else ""
-            found = (str(input_), type(input_).__name__, file, self.space.domain(input_))
-        self._shown_blocks[block, qualify] = found
-        return found
+            return (f"file {block.label}",)
+        if isinstance(block, PredicateAtom):
+            return (f"{block.test} {block.term}",)
+        input_ = cast(Input, block)
+        file = input_.file if qualify and isinstance(input_, ArgInput) else ""
+        return (str(input_), type(input_).__name__, file, self.space.domain(input_))
 
     def _describe(self, condition: BDD, qualify: bool, known_only: bool) -> str:
         space = self.space
@@ -203,10 +226,11 @@ class Printer:
             return "only for other values"
         if (known_care & ~known) == space.false and (care & ~condition) != space.false:
             try:  # the full formula, if it is short: a long one is not worth computing
-                full = self._formula(condition, care, qualify, context.domains, FULL_CUBES)
+                return self._formula(
+                    condition, care, qualify, context.domains, FULL_CUBES, MAX_FULL
+                )
             except _TooComplex:
                 return TRUE_FOR_KNOWN
-            return full if len(full) <= MAX_FULL else TRUE_FOR_KNOWN
         return self._formula(known, known_care, qualify, context.known_domains)
 
     def _context(self, variables: frozenset[str]) -> _Context:
@@ -247,9 +271,12 @@ class Printer:
         qualify: bool,
         domains: Domains,
         budget: int | None = None,
+        longest: int | None = None,
     ) -> str:
         """``condition`` modulo ``care`` as a disjunction of cubes; with a ``budget`` of cubes,
-        :class:`_TooComplex` past it, else a summary past :data:`MAX_CUBES`."""
+        :class:`_TooComplex` past it, else a summary past :data:`MAX_CUBES`; with ``longest``,
+        :class:`_TooComplex` as soon as the cubes rendered so far make the text longer (the
+        rest is not rendered)."""
         space = self.space
         if (care & ~condition) == space.false:
             return "true"
@@ -262,10 +289,18 @@ class Printer:
             names = sorted({str(i) for i in _inputs_of(space, support)})
             shown = ", ".join(names[:6]) + (", …" if len(names) > 6 else "")
             return f"a condition over {len(names)} inputs ({shown})"
-        rendered = [_render_cube(space, cube, qualify, domains) for cube in cubes]
+        rendered = []
+        length = -len(OR)  # of the text below: each disjunct, parenthesised if a conjunction
+        for cube in cubes:
+            text = _render_cube(space, cube, qualify, domains)
+            rendered.append(text)
+            if longest is not None:
+                length += len(text) + len(OR) + (2 if len(cubes) > 1 and AND in text else 0)
+                if length > longest:
+                    raise _TooComplex
         if len(rendered) == 1:
             return rendered[0]
-        return " ∨ ".join(f"({r})" if "∧" in r else r for r in sorted(rendered))
+        return OR.join(f"({r})" if AND in r else r for r in sorted(rendered))
 
 
 def _inputs_of(space: ConditionSpace, variables: Iterable[str]) -> set[Input]:
@@ -374,7 +409,7 @@ def _render_cube(
             assert isinstance(value, frozenset)
             input_ = cast(Input, key)
             parts.append(_render_slots(input_, value, domains[input_], qualify))
-    return " ∧ ".join(parts)
+    return f" {AND} ".join(parts)
 
 
 def _sort_key(key: object) -> tuple[int, str, str]:

@@ -586,11 +586,13 @@ def _command(
 
 def _hints(options: argparse.Namespace) -> Hints:
     """The hints file of ``options`` (if any), with a diagnostic per refused ``when:``."""
-    from rosvar.analyses.when import refusals
     from rosvar.workspace.hints import load_hints
 
     hints = load_hints(getattr(options, "hints", None))
-    hints.diagnostics.extend(refusals(hints.nodes))
+    if hints.nodes:  # the checks of ``when:`` import the interfaces' model: only if needed
+        from rosvar.analyses.when import refusals
+
+        hints.diagnostics.extend(refusals(hints.nodes))
     return hints
 
 
