@@ -1,8 +1,11 @@
 """ROS 2 fixtures, one per corner of the semantics: rosvar's resolution against the real
-ros2/launch (the oracle), for sampled launch arguments."""
+ros2/launch (the oracle), for sampled launch arguments. A fixture's entry is ``main.launch.xml``
+and, where the construct exists there, the same launch as ``main.launch.yaml`` and
+``main.launch.py``; each is compared."""
 
 from __future__ import annotations
 
+import itertools
 from pathlib import Path
 
 import pytest
@@ -248,7 +251,117 @@ CASES: dict[str, Case] = {
         },
         [{}],
     ),
+    "find-exec-not-searched": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="tool" default="rosvar_no_such_tool"/>
+            <node pkg="pkg" exec="x" name="x" args="$(find-exec $(var tool)) --flag">
+              <param name="description" value="$(command '$(find-exec xacro) robot.xacro')"/>
+            </node>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- arg: {name: tool, default: rosvar_no_such_tool}
+- node:
+    pkg: pkg
+    exec: x
+    name: x
+    args: $(find-exec $(var tool)) --flag
+    param:
+    - {name: description, value: "$(command '$(find-exec xacro) robot.xacro')"}
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import Command, FindExecutable, LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    tool = FindExecutable(name=LaunchConfiguration('tool'))
+    description = Command([FindExecutable(name='xacro'), ' robot.xacro'])
+    return LaunchDescription([
+        DeclareLaunchArgument('tool', default_value='rosvar_no_such_tool'),
+        Node(package='pkg', executable='x', name='x', arguments=[tool, '--flag'],
+             parameters=[{'description': description}]),
+    ])
+""",
+        },
+        [{}, {"tool": "other_missing_tool"}],
+    ),
+    "command-lines-split-before-substitution": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="v" default="a b"/>
+            <executable cmd="ls -l $(var v) x$(var v)y 'c d'" name="lister"/>
+            <node pkg="pkg" exec="n" name="n" args="--ros-args -r a:=b -- $(var v) plain"
+                  ros_args="-p q:=1 -r __ns:=/other -r c:=d --log-level debug"/>
+            <node pkg="pkg" exec="m" name="m"
+                  ros_args="-r __node:=renamed --params-file $(dirname)/p.yaml"/>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- arg: {name: v, default: a b}
+- executable: {cmd: "ls -l $(var v) x$(var v)y 'c d'", name: lister}
+- node:
+    {pkg: pkg, exec: n, name: n, args: "--ros-args -r a:=b -- $(var v) plain",
+     ros_args: "-p q:=1 -r __ns:=/other -r c:=d --log-level debug"}
+- node: {pkg: pkg, exec: m, name: m, ros_args: "-r __node:=renamed --params-file $(dirname)/p.yaml"}
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, ExecuteProcess
+from launch.substitutions import LaunchConfiguration, PathJoinSubstitution, ThisLaunchFileDir
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    v = LaunchConfiguration('v')
+    return LaunchDescription([
+        DeclareLaunchArgument('v', default_value='a b'),
+        ExecuteProcess(cmd=['ls', '-l', v, ['x', v, 'y'], 'c d'], name='lister'),
+        Node(package='pkg', executable='n', name='n',
+             arguments=['--ros-args', '-r', 'a:=b', '--', v, 'plain'],
+             ros_arguments=['-p', 'q:=1', '-r', '__ns:=/other', '-r', 'c:=d',
+                            '--log-level', 'debug']),
+        Node(package='pkg', executable='m', name='m',
+             ros_arguments=['-r', '__node:=renamed', '--params-file',
+                            PathJoinSubstitution([ThisLaunchFileDir(), 'p.yaml'])]),
+    ])
+""",
+            "p.yaml": "/**:\n  ros__parameters: {k: 3}\n/renamed:\n  ros__parameters: {r: 1}\n",
+        },
+        [{}, {"v": "one"}],
+    ),
+    "lifecycle-node-python-only": (
+        {
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import LifecycleNode
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('on', default_value='true'),
+        LifecycleNode(package='pkg', executable='lc', name='lc', namespace='ns',
+                      parameters=[{'rate': 5}], remappings=[('a', 'b')],
+                      condition=IfCondition(LaunchConfiguration('on'))),
+    ])
+""",
+            "main.launch.xml": """<launch>
+            <lifecycle_node pkg="pkg" exec="lc" name="lc" namespace="ns"/>
+          </launch>""",
+        },
+        [{}, {"on": "false"}],
+    ),
 }
+
+
+LENIENT = frozenset({"find-exec-not-searched"})
+"""Fixtures the oracle loads leniently: ``$(find-exec)`` of a program not on its ``PATH``."""
+
+
+def entries(package: Path) -> list[Path]:
+    """The fixture's launch written in each format it has."""
+    return sorted(package.glob("main.launch.*"))
 
 
 def _workspace(tmp_path: Path, files: dict[str, str]) -> Path:
@@ -264,10 +377,12 @@ def _workspace(tmp_path: Path, files: dict[str, str]) -> Path:
 def test_fixture_matches_the_oracle(case: str, tmp_path: Path) -> None:
     files, samples = CASES[case]
     package = _workspace(tmp_path, files)
-    for arguments in samples:
-        expected = run_oracle(package / "main.launch.xml", arguments, [package.parent])
-        workspace = discover([str(package.parent)])
-        result = resolve_ros2(workspace, str(package / "main.launch.xml"), arguments)
-        assert result.ok == expected["ok"], (arguments, expected.get("error"), result.errors)
+    workspace = discover([str(package.parent)])
+    for main, arguments in itertools.product(entries(package), samples):
+        strict = case not in LENIENT
+        expected = run_oracle(main, arguments, [package.parent], strict=strict)
+        result = resolve_ros2(workspace, str(main), arguments)
+        assert result.ok == expected["ok"], (main.name, arguments, expected.get("error"))
         if result.ok:
-            assert canonical_nodes(result.to_json()) == canonical_nodes(expected), arguments
+            nodes = canonical_nodes(result.to_json())
+            assert nodes == canonical_nodes(expected), (main.name, arguments)

@@ -17,7 +17,7 @@ from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.inputs import OTHER, UNSET
 from rosvar.workspace import discover
 
-from .test_fixtures import CASES, _workspace
+from .test_fixtures import CASES, LENIENT, _workspace, entries
 
 pytestmark = requires_ros2_oracle
 
@@ -61,9 +61,9 @@ def test_fixture_restricted_matches_the_oracle(case: str, tmp_path: Path) -> Non
         for name, value in sample.items():
             values.setdefault(name, []).append(value)
     analysis = Analysis(discover([str(package.parent)]), extra_values=values)
-    main = str(package / "main.launch.xml")
-    for arguments in configurations(analysis, main, given):
-        check(analysis, Path(main), arguments, package.parent, strict=True)
+    for main in entries(package):
+        for arguments in configurations(analysis, str(main), given):
+            check(analysis, main, arguments, package.parent, strict=case not in LENIENT)
 
 
 @pytest.mark.parametrize("suffix", [".launch.xml", ".launch.yaml", ".launch.py"])

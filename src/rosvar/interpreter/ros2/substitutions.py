@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import functools
 import os
+import shlex
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -111,6 +112,44 @@ def parse(text: str) -> Template:
     return _Parser(text).template()
 
 
+def command_line(text: str) -> list[Template]:
+    """``text`` as a command line's arguments, split as launch's ``_parse_cmdline`` does:
+    literal text at whitespace (``shlex``), substitution values never (``$(var x)`` is one
+    argument whatever its value). Raises :class:`SubstitutionSyntaxError`, also for an
+    unclosed quote in the literal text."""
+    arguments: list[Template] = []
+    current: list[str | Call] = []
+
+    def close() -> None:
+        nonlocal current
+        arguments.append(tuple(current))
+        current = []
+
+    for part in parse(text):
+        if not isinstance(part, str):
+            current.append(part)
+            continue
+        try:
+            tokens = shlex.split(part)
+        except ValueError as error:
+            raise SubstitutionSyntaxError(f"{error} in [{text}]") from None
+        if not tokens:  # only whitespace: it separates two substitutions
+            close()
+            continue
+        if part[0].isspace() and current:
+            close()
+        current.append(tokens[0])
+        if len(tokens) > 1:
+            close()
+            arguments.extend((token,) for token in tokens[1:-1])
+            current.append(tokens[-1])
+        if part[-1].isspace():
+            close()
+    if current:
+        close()
+    return arguments
+
+
 Handler = Callable[["Interpretation", Context, list[Raw]], Choice[Value]]
 SUBSTITUTIONS: dict[str, Handler] = {}
 
@@ -147,6 +186,17 @@ class Ros2Substituter:
             return Choice.const(self.space, "")
         return combine(parts, _concatenate)
 
+    def command_line(self, text: str, context: Context) -> Choice[Value]:
+        """A command line's arguments (:func:`command_line`), each resolved, as one
+        ``shlex``-quoted text that :func:`shlex.split` gives back."""
+        try:
+            arguments = command_line(text)
+        except SubstitutionSyntaxError as error:
+            return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+        if not arguments:
+            return Choice.const(self.space, "")
+        return combine([self.template(a, context) for a in arguments], _quote)
+
     def _part(self, part: str | Call, context: Context) -> Choice[Value]:
         if isinstance(part, str):
             return Choice.const(self.space, part)
@@ -179,6 +229,15 @@ def _concatenate(leaves: Sequence[Value]) -> Value:
     if all(isinstance(leaf, str) for leaf in leaves):
         return "".join(leaves)  # type: ignore[arg-type]
     return Fail("a value depends on an input rosvar does not know", "value-unknown")
+
+
+def _quote(leaves: Sequence[Value]) -> Value:
+    words: list[Raw] = []
+    for leaf in leaves:
+        if isinstance(leaf, Fail):
+            return leaf
+        words += [" ", shlex.quote(leaf) if isinstance(leaf, str) else leaf]
+    return concat(words[1:])  # a term (an unknown value) stays unquoted
 
 
 def _fail(host: Interpretation, message: str, code: str) -> Choice[Value]:
@@ -260,6 +319,20 @@ def _command(host: Interpretation, context: Context, args: list[Raw]) -> Choice[
         )
     host.warn("command-not-run", "$(command) is never run by rosvar: its output is not known")
     return Choice.const(host.space, concat(["$(command ", args[0], ")"]))
+
+
+@substitution("find-exec")
+def _find_exec(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """The executable's path on the host's ``PATH``, which rosvar does not search (the
+    PATH of the machine that launches is not the analysing one's): the value stays the
+    text ``$(find-exec NAME)``, and a warning says so."""
+    if len(args) != 1:
+        return _fail(host, "$(find-exec) takes one argument", "substitution-invalid")
+    host.warn(
+        "find-exec-host",
+        "$(find-exec) is the path of an executable on the launching host's PATH: not searched",
+    )
+    return Choice.const(host.space, concat(["$(find-exec ", args[0], ")"]))
 
 
 @substitution("eval")
