@@ -27,6 +27,8 @@ from rosvar.workspace.paths import real_path
 from rosvar.workspace.ros_version import RosVersion
 
 Progress = Callable[[int, int, str], None]
+MAX_PASSES = 4
+"""ROS 2: interpretations of one entry file at most, each knowing more undeclared args."""
 
 
 class Analysis:
@@ -89,6 +91,17 @@ class Analysis:
         # The file's feature variable goes first so that it sits next to its args in
         # the BDD variable order (the feature model pairs them).
         self.space.file_atom(file, self.label(file))
+        undeclared: dict[str, str] = {}
+        for _ in range(MAX_PASSES):
+            model = self._interpret_with(file, undeclared)
+            if set(model.settable) <= set(undeclared):
+                break
+            # ROS 2: the command line also sets args that included files declare; they
+            # are inputs too, which the next pass knows from the start
+            undeclared = {**model.settable, **undeclared}
+        return model
+
+    def _interpret_with(self, file: str, undeclared: Mapping[str, str]) -> LaunchModel:
         it = Interpretation(
             self.workspace,
             self.space,
@@ -99,15 +112,15 @@ class Analysis:
             self.reading.dialect,
         )
         try:
-            return self._run(it, file)
+            return self._run(it, file, undeclared)
         finally:
             it.close()
 
-    def _run(self, it: Interpretation, file: str) -> LaunchModel:
+    def _run(self, it: Interpretation, file: str, undeclared: Mapping[str, str]) -> LaunchModel:
         it.stack.append(real_path(file))
         root = it.load(file)
         if root is not None:
-            self.reading.walk(it, file, root)
+            self.reading.walk(it, file, root, undeclared)
         model = it.finish()
         for name in model.inputs:  # what leaving each arg out amounts to, if one literal
             default = self.domains.unset_default(file, name)
@@ -116,7 +129,7 @@ class Analysis:
         return model
 
 
-def _walk_ros1(it: Interpretation, file: str, root: Entity) -> None:
+def _walk_ros1(it: Interpretation, file: str, root: Entity, _undeclared: Mapping[str, str]) -> None:
     """roslaunch: the file's args are the command line's, in a scope at ``/``."""
     deprecated = root.get("deprecated")
     if deprecated:
@@ -132,9 +145,10 @@ def _walk_ros1(it: Interpretation, file: str, root: Entity) -> None:
         it.walk(root.children, scope)
 
 
-def _walk_ros2(it: Interpretation, file: str, root: Entity) -> None:
-    """``ros2 launch``: the declared launch arguments are the command line's."""
-    ros2.walk_entry(it, root, ros2.entry_context(it, file, root))
+def _walk_ros2(it: Interpretation, file: str, root: Entity, undeclared: Mapping[str, str]) -> None:
+    """``ros2 launch``: the declared launch arguments are the command line's, and the
+    ``undeclared`` ones included files declare."""
+    ros2.walk_entry(it, root, ros2.entry_context(it, file, root, undeclared))
 
 
 @dataclass(frozen=True)
@@ -143,7 +157,7 @@ class Reading:
 
     dialect: Dialect
     loader: Callable[[str], ParseResult] | None  # None: roslaunch's XML parser
-    walk: Callable[[Interpretation, str, Entity], None]
+    walk: Callable[[Interpretation, str, Entity, Mapping[str, str]], None]
 
 
 READINGS: dict[RosVersion, Reading] = {

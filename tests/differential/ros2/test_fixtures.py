@@ -352,6 +352,34 @@ def generate_launch_description():
         },
         [{}, {"on": "false"}],
     ),
+    "undeclared-arguments-reach-included-files": (
+        {
+            "main.launch.xml": """<launch>
+                <include file="$(dirname)/sub.launch.xml"/>
+                <node pkg="pkg" exec="a" name="a_$(var mode)"/>
+              </launch>""",
+            "sub.launch.xml": """<launch>
+                <arg name="mode" default="sim"/>
+                <arg name="on" default="true"/>
+                <group if="$(var on)"><arg name="robot" default="r1"/></group>
+                <node pkg="pkg" exec="b" name="b_$(var robot r0)" if="$(var on)"/>
+              </launch>""",
+            "main.launch.yaml": """launch:
+- include: {file: $(dirname)/sub.launch.yaml}
+- node: {pkg: pkg, exec: a, name: a_$(var mode)}
+""",
+            "sub.launch.yaml": """launch:
+- arg: {name: mode, default: sim}
+- arg: {name: "on", default: "true"}
+- group:
+    if: $(var on)
+    children:
+    - arg: {name: robot, default: r1}
+- node: {pkg: pkg, exec: b, name: b_$(var robot r0), if: $(var on)}
+""",
+        },
+        [{}, {"mode": "real"}, {"robot": "r2", "on": "false"}, {"robot": "r2"}],
+    ),
 }
 
 

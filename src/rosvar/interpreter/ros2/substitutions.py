@@ -246,19 +246,18 @@ def _fail(host: Interpretation, message: str, code: str) -> Choice[Value]:
 
 @substitution("var")
 def _var(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
-    if len(args) != 1 or not isinstance(args[0], str):
-        return _fail(host, "$(var) takes one argument", "substitution-invalid")
+    if not 1 <= len(args) <= 2 or not isinstance(args[0], str):
+        return _fail(host, "$(var) takes a name and an optional default", "substitution-invalid")
     name = args[0]
+    missing: Value = (
+        args[1]
+        if len(args) == 2
+        else Fail(f"launch configuration '{name}' does not exist", "var-undefined")
+    )
     value = context.configurations.get(name)
     if value is None:
-        return _fail(host, f"launch configuration '{name}' does not exist", "var-undefined")
-    return value.map(
-        lambda leaf: (
-            Fail(f"launch configuration '{name}' does not exist", "var-undefined")
-            if leaf is None
-            else leaf
-        )
-    )
+        return Choice.const(host.space, missing)
+    return value.map(lambda leaf: missing if leaf is None else leaf)
 
 
 @substitution("env")

@@ -41,8 +41,13 @@ def arg(it: Interpretation, entity: Entity, context: Context) -> None:
             "arg-choice",
             f"argument '{name}' must be one of {allowed}",
         )
-    if len(it.stack) > 1:  # an included file's: not one of the command line's inputs
-        return
+    if len(it.stack) > 1:  # an included file's: an input if the entry file does not declare it
+        if name not in it.model.inputs:
+            if unset != it.space.false and "$" not in name:
+                it.model.settable.setdefault(name, context.filename)
+            return
+        if name not in it.model.settable or any(arg.name == name for arg in it.model.args):
+            return
     it.model.args.append(
         ArgDecl(
             name,
