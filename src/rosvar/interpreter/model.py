@@ -94,6 +94,8 @@ class NodeParameter:
     name: Raw | None
     value: Raw | None
     file: Raw | None = None
+    globally: bool = False
+    """Set for every later node (``<set_parameter>``, ``<set_parameters_from_file>``)."""
 
 
 @dataclass(slots=True)

@@ -380,6 +380,169 @@ def generate_launch_description():
         },
         [{}, {"mode": "real"}, {"robot": "r2", "on": "false"}, {"robot": "r2"}],
     ),
+    "append-env-after-before-or-alone": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="sep" default="+"/>
+            <set_env name="P" value="base"/>
+            <append_env name="P" value="end"/>
+            <append_env name="P" value="start" prepend="true"/>
+            <append_env name="Q" value="only" separator=";"/>
+            <append_env name="P" value="x" separator="$(var sep)"/>
+            <node pkg="pkg" exec="a" name="a" args="$(env P) $(env Q)"/>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- arg: {name: sep, default: +}
+- set_env: {name: P, value: base}
+- append_env: {name: P, value: end}
+- append_env: {name: P, value: start, prepend: true}
+- append_env: {name: Q, value: only, separator: ;}
+- append_env: {name: P, value: x, separator: $(var sep)}
+- node: {pkg: pkg, exec: a, name: a, args: $(env P) $(env Q)}
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import (AppendEnvironmentVariable, DeclareLaunchArgument,
+                            SetEnvironmentVariable)
+from launch.substitutions import EnvironmentVariable, LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('sep', default_value='+'),
+        SetEnvironmentVariable('P', 'base'),
+        AppendEnvironmentVariable('P', 'end'),
+        AppendEnvironmentVariable('P', 'start', prepend=True),
+        AppendEnvironmentVariable('Q', 'only', separator=';'),
+        AppendEnvironmentVariable('P', 'x', separator=LaunchConfiguration('sep')),
+        Node(package='pkg', executable='a', name='a',
+             arguments=[EnvironmentVariable('P'), EnvironmentVariable('Q')]),
+    ])
+""",
+        },
+        [{}, {"sep": "-"}],
+    ),
+    "reset-forgets-configurations-namespace-remaps-parameters": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="a" default="1"/>
+            <arg name="r" default="false"/>
+            <let name="b" value="2"/>
+            <push-ros-namespace namespace="ns"/>
+            <set_remap from="x" to="y"/>
+            <set_parameter name="g" value="1"/>
+            <node pkg="pkg" exec="n1" name="before_$(var a)_$(var b)"/>
+            <group>
+              <reset><keep name="c" value="$(var a)"/></reset>
+              <node pkg="pkg" exec="n2" name="in_$(var c)_$(var b nob)"/>
+            </group>
+            <node pkg="pkg" exec="n3" name="after_$(var a)"/>
+            <reset if="$(var r)"/>
+            <node pkg="pkg" exec="n4" name="last_$(var a none)"/>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- arg: {name: a, default: "1"}
+- arg: {name: r, default: "false"}
+- let: {name: b, value: "2"}
+- push-ros-namespace: {namespace: ns}
+- set_remap: {from: x, to: y}
+- set_parameter: {name: g, value: "1"}
+- node: {pkg: pkg, exec: n1, name: before_$(var a)_$(var b)}
+- group:
+  - reset: {keep: [{name: c, value: $(var a)}]}
+  - node: {pkg: pkg, exec: n2, name: in_$(var c)_$(var b nob)}
+- node: {pkg: pkg, exec: n3, name: after_$(var a)}
+- reset: {if: $(var r)}
+- node: {pkg: pkg, exec: n4, name: last_$(var a none)}
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import (DeclareLaunchArgument, GroupAction, ResetLaunchConfigurations,
+                            SetLaunchConfiguration)
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration as V
+from launch_ros.actions import Node, PushRosNamespace, SetParameter, SetRemap
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('a', default_value='1'),
+        DeclareLaunchArgument('r', default_value='false'),
+        SetLaunchConfiguration('b', '2'),
+        PushRosNamespace('ns'),
+        SetRemap(src='x', dst='y'),
+        SetParameter(name='g', value='1'),
+        Node(package='pkg', executable='n1', name=['before_', V('a'), '_', V('b')]),
+        GroupAction([
+            ResetLaunchConfigurations(launch_configurations={'c': V('a')}),
+            Node(package='pkg', executable='n2', name=['in_', V('c'), '_', V('b', default='nob')]),
+        ]),
+        Node(package='pkg', executable='n3', name=['after_', V('a')]),
+        ResetLaunchConfigurations(condition=IfCondition(V('r'))),
+        Node(package='pkg', executable='n4', name=['last_', V('a', default='none')]),
+    ])
+""",
+        },
+        [{}, {"r": "true"}, {"a": "5", "r": "true"}],
+    ),
+    "set-parameters-from-file-global-and-missing-files": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="m" default="x"/>
+            <arg name="f" default="g"/>
+            <arg name="use" default="false"/>
+            <group>
+              <set_parameters_from_file filename="$(dirname)/g.yaml"/>
+              <node pkg="pkg" exec="a" name="a">
+                <param name="own" value="1"/><param from="$(dirname)/missing_$(var m).yaml"/>
+              </node>
+            </group>
+            <node pkg="pkg" exec="b" name="b"/>
+            <set_parameters_from_file filename="$(dirname)/$(var f).yaml" if="$(var use)"/>
+            <node pkg="pkg" exec="c" name="c"/>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- arg: {name: m, default: x}
+- arg: {name: f, default: g}
+- arg: {name: use, default: "false"}
+- group:
+  - set_parameters_from_file: {filename: $(dirname)/g.yaml}
+  - node:
+      pkg: pkg
+      exec: a
+      name: a
+      param: [{name: own, value: 1}, {from: $(dirname)/missing_$(var m).yaml}]
+- node: {pkg: pkg, exec: b, name: b}
+- set_parameters_from_file: {filename: $(dirname)/$(var f).yaml, if: $(var use)}
+- node: {pkg: pkg, exec: c, name: c}
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration as V, ThisLaunchFileDir
+from launch_ros.actions import Node, SetParametersFromFile
+
+
+def generate_launch_description():
+    here = ThisLaunchFileDir()
+    return LaunchDescription([
+        DeclareLaunchArgument('m', default_value='x'),
+        DeclareLaunchArgument('f', default_value='g'),
+        DeclareLaunchArgument('use', default_value='false'),
+        GroupAction([
+            SetParametersFromFile([here, '/g.yaml']),
+            Node(package='pkg', executable='a', name='a',
+                 parameters=[{'own': 1}, [here, '/missing_', V('m'), '.yaml']]),
+        ]),
+        Node(package='pkg', executable='b', name='b'),
+        SetParametersFromFile([here, '/', V('f'), '.yaml'], condition=IfCondition(V('use'))),
+        Node(package='pkg', executable='c', name='c'),
+    ])
+""",
+            "g.yaml": "/**:\n  ros__parameters: {shared: 1, own: 0}\n"
+            "/a:\n  ros__parameters: {only_a: true}\n",
+        },
+        [{}, {"use": "true"}, {"use": "true", "f": "nope"}],
+    ),
 }
 
 

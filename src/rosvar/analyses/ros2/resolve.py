@@ -35,13 +35,19 @@ from rosvar.workspace import Workspace
 class Ros2Resolution:
     nodes: list[dict[str, object]] = field(default_factory=list)
     errors: list[dict[str, object]] = field(default_factory=list)
+    warnings: list[dict[str, object]] = field(default_factory=list)
 
     @property
     def ok(self) -> bool:
         return not self.errors
 
     def to_json(self) -> dict[str, object]:
-        return {"ok": self.ok, "nodes": self.nodes, "errors": self.errors}
+        return {
+            "ok": self.ok,
+            "nodes": self.nodes,
+            "errors": self.errors,
+            "warnings": self.warnings,
+        }
 
 
 def resolve_ros2(
@@ -107,7 +113,7 @@ def restrict(model: LaunchModel, view: View) -> Ros2Resolution:
     for decl in model.nodes:
         if view.holds(decl.condition):
             try:
-                result.nodes.append(_node(decl, view))
+                result.nodes.append(_node(decl, view, result.warnings))
             except (ValueError, ResolutionError) as error:
                 result.errors.append(
                     {
@@ -119,7 +125,7 @@ def restrict(model: LaunchModel, view: View) -> Ros2Resolution:
     return result
 
 
-def _node(decl: NodeDecl, view: View) -> dict[str, object]:
+def _node(decl: NodeDecl, view: View, warnings: list[dict[str, object]]) -> dict[str, object]:
     def text(key: str) -> str | None:
         value = view.pick(decl.field(key), decl.location, f"<node> attribute '{key}'")
         return None if value is None else str(value)
@@ -153,7 +159,24 @@ def _node(decl: NodeDecl, view: View) -> dict[str, object]:
         if not view.holds(param.condition):
             continue
         if param.file is not None:
-            sources.append(Source(entries=tuple(_file(known(param.file, "parameter file")))))
+            path = known(param.file, "parameter file")
+            if param.globally:  # launch_ros asserts that a global parameter file exists
+                path = os.path.abspath(path)
+                if not os.path.isfile(path):
+                    raise ValueError(
+                        f"parameter file {path} of <set_parameters_from_file> is missing"
+                    )
+            elif kind != ProcessKind.COMPOSABLE_NODE and not os.path.isfile(path):
+                # launch_ros leaves a node's missing file out, with a warning
+                warnings.append(
+                    {
+                        "code": "parameter-file-missing",
+                        "message": f"Parameter file path is not a file: {path}",
+                        "location": decl.location.to_json(),
+                    }
+                )
+                continue
+            sources.append(Source(entries=tuple(_file(path))))
         elif param.name is not None and param.value is not None:
             # global (-p) and inline (a generated file) parameters both apply to /**
             value = typed(known(param.value, "parameter value"))

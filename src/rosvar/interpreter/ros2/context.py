@@ -22,11 +22,13 @@ Configuration = Choice[Raw | None]
 
 @dataclass(slots=True)
 class GlobalParam:
-    """A ``<set_parameter>``: prepended to the parameters of later nodes."""
+    """A ``<set_parameter>`` (``name``, ``value``) or ``<set_parameters_from_file>``
+    (``file``): prepended to the parameters of later nodes."""
 
     condition: BDD
-    name: Raw
-    value: Raw
+    name: Raw | None
+    value: Raw | None
+    file: Raw | None = None
 
 
 @dataclass(slots=True)
@@ -78,6 +80,13 @@ class Context:
             self.timers,
             self.now,
         )
+
+    def reset(self) -> None:
+        """``<reset>``: no launch configuration left, nor what launch_ros keeps in them."""
+        self.configurations = {}
+        self.namespace = None
+        self.remaps = None
+        self.params = None
 
     def restore(self, saved: Context) -> None:
         """``PopLaunchConfigurations``: back to ``saved``'s state."""

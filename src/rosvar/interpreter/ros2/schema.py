@@ -33,6 +33,9 @@ ATTRIBUTES: dict[str, frozenset[str]] = {
     "set_parameter": frozenset({"name", "value"}),
     "set_env": frozenset({"name", "value"}),
     "unset_env": frozenset({"name"}),
+    "append_env": frozenset({"name", "value", "prepend", "separator"}),
+    "reset": frozenset({"keep"}),
+    "set_parameters_from_file": frozenset({"filename"}),
     "node": PROCESS
     | {"pkg", "exec", "name", "namespace", "args", "ros_args", "exec_name", "node-name"}
     | {"param", "remap"},

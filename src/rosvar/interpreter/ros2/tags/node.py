@@ -112,7 +112,10 @@ def _declare(
     fields["kind"] = Choice.const(it.space, kind)
     fields["container"] = container or none
     remaps = [Remap(r.condition, r.source, r.target) for r in context.remaps or ()]
-    parameters = [NodeParameter(p.condition, p.name, p.value) for p in context.params or ()]
+    parameters = [
+        NodeParameter(p.condition, p.name, p.value, p.file, globally=True)
+        for p in context.params or ()
+    ]
     env: list[EnvSetting] = []
     for child in entity.children:
         if child.tag in NESTED:
