@@ -543,6 +543,51 @@ def generate_launch_description():
         },
         [{}, {"use": "true"}, {"use": "true", "f": "nope"}],
     ),
+    "python-path-join-of-values": (
+        {
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration as V, PathJoinSubstitution
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('dir', default_value='/etc/robot/'),
+        DeclareLaunchArgument('ns', default_value=''),
+        Node(package='pkg', executable='a', name='a',
+             parameters=[{'p': PathJoinSubstitution([V('dir'), 'x.yaml'])}],
+             remappings=[('a', PathJoinSubstitution(['/', V('ns'), 'b']))]),
+    ])
+""",
+        },
+        [{}, {"dir": "/opt", "ns": "r1"}, {"ns": "/abs"}],
+    ),
+    "actions-that-start-nothing": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="a" default="1"/>
+            <log message="a is $(var a)"/>
+            <set_ros_log_dir new_log_dir="/tmp/rosvar-log"/>
+            <node pkg="pkg" exec="x" name="x_$(var a)"/>
+          </launch>""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, LogInfo
+from launch.substitutions import LaunchConfiguration as V
+from launch_ros.actions import Node, SetROSLogDir
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('a', default_value='1'),
+        LogInfo(msg=['a is ', V('a')]),
+        SetROSLogDir(new_log_dir='/tmp/rosvar-log'),
+        Node(package='pkg', executable='x', name=['x_', V('a')]),
+    ])
+""",
+        },
+        [{}, {"a": "2"}],
+    ),
 }
 
 

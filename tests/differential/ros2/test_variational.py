@@ -77,14 +77,34 @@ def test_example_restricted_matches_the_oracle(suffix: str) -> None:
 
 
 AGREEING = [  # real files the oracle loads whose nodes rosvar gives (docs/known-differences.md)
+    "clearpath_common/clearpath_control/launch/localization.launch.py",
+    "clearpath_common/clearpath_control/launch/teleop_joy.launch.py",
+    "clearpath_common/clearpath_manipulators_description/launch/description.launch.py",
+    "clearpath_common/clearpath_platform_description/launch/description.launch.py",
+    "husky/husky_base/launch/base.launch.py",
     "husky/husky_bringup/launch/accessories.launch.py",
     "husky/husky_control/launch/control.launch.py",
     "husky/husky_control/launch/teleop_base.launch.py",
     "husky/husky_control/launch/teleop_joy.launch.py",
+    "husky/husky_gazebo/launch/gazebo.launch.py",
+    "husky/husky_gazebo/launch/husky_playpen.launch.py",
     "husky/husky_viz/launch/view_robot_launch.py",
-    "slam_toolbox/launch/merge_maps_kinematic_launch.py",
     "moveit2_tutorials/doc/examples/planning_scene_ros_api/launch/"
     "planning_scene_ros_api_tutorial.launch.py",
+    "ros2_control_demos/example_17/bringup/launch/rrbot.launch.xml",
+    "ros2_control_demos/example_17/bringup/launch/test_forward_position_controller.launch.xml",
+    "ros2_control_demos/example_17/bringup/launch/test_joint_trajectory_controller.launch.xml",
+    "ros2_control_demos/example_17/description/launch/view_robot.launch.xml",
+    "ros2_control_demos/example_2/bringup/launch/diffbot.launch.xml",
+    "ros2_control_demos/example_3/bringup/launch/rrbot_system_multi_interface.launch.py",
+    "ros2_control_demos/example_7/bringup/launch/send_trajectory.launch.py",
+    "ros2_control_demos/example_7/description/launch/view_r6bot.launch.py",
+    "slam_toolbox/launch/lifelong_launch.py",
+    "slam_toolbox/launch/localization_launch.py",
+    "slam_toolbox/launch/merge_maps_kinematic_launch.py",
+    "slam_toolbox/launch/offline_launch.py",
+    "slam_toolbox/launch/online_async_launch.py",
+    "slam_toolbox/launch/online_sync_launch.py",
 ]
 
 

@@ -36,6 +36,9 @@ ATTRIBUTES: dict[str, frozenset[str]] = {
     "append_env": frozenset({"name", "value", "prepend", "separator"}),
     "reset": frozenset({"keep"}),
     "set_parameters_from_file": frozenset({"filename"}),
+    "log": frozenset({"message"}),
+    "set_use_sim_time": frozenset({"value"}),
+    "set_ros_log_dir": frozenset({"new_log_dir"}),
     "node": PROCESS
     | {"pkg", "exec", "name", "namespace", "args", "ros_args", "exec_name", "node-name"}
     | {"param", "remap"},

@@ -10,16 +10,18 @@ from __future__ import annotations
 
 import functools
 import os
+import posixpath
 import shlex
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from rosvar.frontends.ros2_python.text import PATH_JOIN, UNKNOWN
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.ros2.context import Context, optional
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
 from rosvar.logic.choice import Choice, Fail, combine, ite
-from rosvar.logic.terms import concat
+from rosvar.logic.terms import Apply, TermError, concat, register
 
 if TYPE_CHECKING:
     from rosvar.interpreter.interpretation import Interpretation
@@ -226,9 +228,7 @@ def _concatenate(leaves: Sequence[Value]) -> Value:
     for leaf in leaves:
         if isinstance(leaf, Fail):
             return leaf
-    if all(isinstance(leaf, str) for leaf in leaves):
-        return "".join(leaves)  # type: ignore[arg-type]
-    return Fail("a value depends on an input rosvar does not know", "value-unknown")
+    return concat(list(leaves))  # type: ignore[arg-type]  # no Fail left: texts and terms
 
 
 def _quote(leaves: Sequence[Value]) -> Value:
@@ -332,6 +332,32 @@ def _find_exec(host: Interpretation, context: Context, args: list[Raw]) -> Choic
         "$(find-exec) is the path of an executable on the launching host's PATH: not searched",
     )
     return Choice.const(host.space, concat(["$(find-exec ", args[0], ")"]))
+
+
+@substitution(PATH_JOIN)
+def _path_join(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """``PathJoinSubstitution`` (the Python frontend's): ``os.path.join`` of the values."""
+    if all(isinstance(arg, str) for arg in args):
+        return Choice.const(host.space, posixpath.join(*args))  # type: ignore[arg-type]
+    parts: list[Raw] = []
+    for arg in args:  # an unknown value: joined as if relative, with no trailing '/'
+        parts += ["/", arg]
+    return Choice.const(host.space, concat(parts[1:]))
+
+
+@substitution(UNKNOWN)
+def _unknown(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """A value the Python frontend did not follow (it reported it): unknown, failing only
+    where its text is needed, as an argument's value outside its domain."""
+    what = args[0] if args and isinstance(args[0], str) else "value"
+    return Choice.const(host.space, Apply(UNKNOWN, (what,), f"$({UNKNOWN} {what})"))
+
+
+def _not_followed(_host: object, what: str) -> str:
+    raise TermError(f"{what} is not followed by rosvar")
+
+
+register(UNKNOWN, _not_followed)
 
 
 @substitution("eval")
