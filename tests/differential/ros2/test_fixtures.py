@@ -355,6 +355,7 @@ def generate_launch_description():
     "undeclared-arguments-reach-included-files": (
         {
             "main.launch.xml": """<launch>
+                <node pkg="pkg" exec="p" name="pre_$(var mode early)"/>
                 <include file="$(dirname)/sub.launch.xml"/>
                 <node pkg="pkg" exec="a" name="a_$(var mode)"/>
               </launch>""",
@@ -365,6 +366,7 @@ def generate_launch_description():
                 <node pkg="pkg" exec="b" name="b_$(var robot r0)" if="$(var on)"/>
               </launch>""",
             "main.launch.yaml": """launch:
+- node: {pkg: pkg, exec: p, name: pre_$(var mode early)}
 - include: {file: $(dirname)/sub.launch.yaml}
 - node: {pkg: pkg, exec: a, name: a_$(var mode)}
 """,

@@ -62,6 +62,10 @@ class Context:
     env: dict[str, Choice[Raw | None]] = field(default_factory=dict)
     timers: list[Timer] = field(default_factory=list)  # pending, shared by every copy
     now: float = 0.0  # the virtual time of the actions being visited
+    open_command_line: bool = False
+    """Over every command line (the variational model): any ``name:=value`` may be given."""
+    unset_reads: set[str] = field(default_factory=set)  # shared by every copy
+    """Launch configurations ``$(var)`` read where they were not set."""
 
     def scoped(self) -> Context:
         """A copy for a scoped group (``PushLaunchConfigurations``).
@@ -79,6 +83,8 @@ class Context:
             dict(self.env),
             self.timers,
             self.now,
+            self.open_command_line,
+            self.unset_reads,
         )
 
     def reset(self) -> None:

@@ -256,7 +256,10 @@ def _var(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Valu
     )
     value = context.configurations.get(name)
     if value is None:
+        context.unset_reads.add(name)
         return Choice.const(host.space, missing)
+    if any(leaf is None for _condition, leaf in value.branches):
+        context.unset_reads.add(name)
     return value.map(lambda leaf: missing if leaf is None else leaf)
 
 
