@@ -10,6 +10,7 @@ from __future__ import annotations
 import functools
 import json
 import os
+import re
 import subprocess
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -23,9 +24,10 @@ VENV = REPOSITORY / ".oracle-ros2-venv"
 
 KEYS = (
     "kind", "package", "executable", "plugin", "container", "name", "namespace", "remappings",
-    "parameters", "arguments",
+    "parameters", "arguments", "cmd",
 )  # fmt: skip
-"""The fields of a node compared with rosvar's."""
+"""The fields of a node compared with rosvar's; ``cmd`` only for a process (``<executable>``),
+whose other fields are None (a node's holds the install path the oracle makes up)."""
 
 requires_ros2_oracle = [
     pytest.mark.oracle,
@@ -67,20 +69,19 @@ def run_oracle(
     return result
 
 
+MISSING_EXECUTABLE = re.compile(r"/__missing_exec__/([^\s\\\"'/]+)")
+"""The oracle's stand-in for ``$(find-exec NAME)`` not on its clean ``PATH``."""
+
+
 def canonical_nodes(result: Mapping[str, Any]) -> list[dict[str, Any]]:
     """The compared fields (:data:`KEYS`) of the oracle's nodes, in a stable order; the same
-    function makes rosvar's comparable (a ``nodes`` list of dicts as well)."""
-    keys = (
-        "kind",
-        "package",
-        "executable",
-        "plugin",
-        "container",
-        "name",
-        "namespace",
-        "remappings",
-        "parameters",
-        "arguments",
-    )
-    nodes = [{key: node.get(key) for key in keys} for node in result.get("nodes", [])]
-    return sorted(nodes, key=lambda n: json.dumps(n, sort_keys=True))
+    function makes rosvar's comparable (a ``nodes`` list of dicts as well). An executable
+    the oracle did not find on its ``PATH`` reads as rosvar's ``$(find-exec NAME)``, which
+    leaves the host's ``PATH`` to the host."""
+    nodes = [
+        {key: node.get(key) if key != "cmd" or node.get("kind") == "process" else None
+         for key in KEYS}
+        for node in result.get("nodes", [])
+    ]  # fmt: skip
+    text = MISSING_EXECUTABLE.sub(r"$(find-exec \1)", json.dumps(nodes))
+    return sorted(json.loads(text), key=lambda n: json.dumps(n, sort_keys=True))

@@ -9,7 +9,7 @@ the functions registered in :data:`TAGS` (see :mod:`rosvar.interpreter.tags`).
 from __future__ import annotations
 
 import functools
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any, Concatenate, ParamSpec, TypeVar
 
 from rosvar.diagnostics import DiagnosticSink, Location
@@ -181,14 +181,23 @@ class Interpretation:
 
     # -- inputs --------------------------------------------------------------------------
     def entry_args(
-        self, file: str, names: Sequence[str], unset: object = MISSING
+        self,
+        file: str,
+        names: Sequence[str],
+        unset: object = MISSING,
+        declared_in: Mapping[str, str] | None = None,
     ) -> dict[str, Choice[Any]]:
         """Command-line args of the entry file as choices over their input slots, ``unset``
-        where one is not given (the dialect's way of saying so)."""
+        where one is not given (the dialect's way of saying so). An arg ``declared_in``
+        another file (ROS 2: an included file's) takes that file's values, and can be left
+        out whatever its default there."""
         args: dict[str, Choice[Any]] = {}
         for name in names:
             input_ = ArgInput(file, name)
-            domain = self._domains(file, name)
+            elsewhere = (declared_in or {}).get(name)
+            domain = self._domains(elsewhere or file, name)
+            if elsewhere is not None and UNSET not in domain:
+                domain = (*[s for s in domain if s is not OTHER], UNSET, OTHER)
             self.space.declare_input(input_, domain)
             self.model.inputs[name] = input_
             self.model.domains[name] = domain

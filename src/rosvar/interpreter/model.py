@@ -94,6 +94,8 @@ class NodeParameter:
     name: Raw | None
     value: Raw | None
     file: Raw | None = None
+    globally: bool = False
+    """Set for every later node (``<set_parameter>``, ``<set_parameters_from_file>``)."""
 
 
 @dataclass(slots=True)
@@ -209,6 +211,9 @@ class LaunchModel:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     files: list[str] = field(default_factory=list)
     unset_defaults: dict[str, str] = field(default_factory=dict)
+    settable: dict[str, str] = field(default_factory=dict)
+    """ROS 2: launch arguments the entry file does not declare that an included file declares
+    where nothing set them yet, so the command line can (name -> the declaring file)."""
     anon_ids: set[str] = field(default_factory=set)  # bases of the $(anon) names generated
     anon_count: Choice[int] | None = None  # how many, per configuration
     loads: BDD = None  # configurations in which roslaunch loads the file without error

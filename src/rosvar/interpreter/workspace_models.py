@@ -27,6 +27,9 @@ from rosvar.workspace.paths import real_path
 from rosvar.workspace.ros_version import RosVersion
 
 Progress = Callable[[int, int, str], None]
+MAX_PASSES = 4
+"""ROS 2: interpretations of one entry file at most, each knowing more undeclared args from
+the start (one, unless an included file's arg is read before it is declared)."""
 
 
 class Analysis:
@@ -89,6 +92,19 @@ class Analysis:
         # The file's feature variable goes first so that it sits next to its args in
         # the BDD variable order (the feature model pairs them).
         self.space.file_atom(file, self.label(file))
+        undeclared: dict[str, str] = {}
+        for _ in range(MAX_PASSES):
+            model, late = self._interpret_with(file, undeclared)
+            if not late:
+                break
+            # ROS 2: args included files declare are inputs from their declaration; one read
+            # before it needs them from the start, as the command line sets them
+            undeclared |= {name: model.settable[name] for name in late}
+        return model
+
+    def _interpret_with(
+        self, file: str, undeclared: Mapping[str, str]
+    ) -> tuple[LaunchModel, set[str]]:
         it = Interpretation(
             self.workspace,
             self.space,
@@ -99,24 +115,30 @@ class Analysis:
             self.reading.dialect,
         )
         try:
-            return self._run(it, file)
+            return self._run(it, file, undeclared)
         finally:
             it.close()
 
-    def _run(self, it: Interpretation, file: str) -> LaunchModel:
+    def _run(
+        self, it: Interpretation, file: str, undeclared: Mapping[str, str]
+    ) -> tuple[LaunchModel, set[str]]:
+        """The model, and the args to know from the start in another interpretation."""
         it.stack.append(real_path(file))
         root = it.load(file)
+        late: set[str] = set()
         if root is not None:
-            self.reading.walk(it, file, root)
+            late = self.reading.walk(it, file, root, undeclared)
         model = it.finish()
         for name in model.inputs:  # what leaving each arg out amounts to, if one literal
             default = self.domains.unset_default(file, name)
             if default is not None:
                 model.unset_defaults[name] = default
-        return model
+        return model, late
 
 
-def _walk_ros1(it: Interpretation, file: str, root: Entity) -> None:
+def _walk_ros1(
+    it: Interpretation, file: str, root: Entity, _undeclared: Mapping[str, str]
+) -> set[str]:
     """roslaunch: the file's args are the command line's, in a scope at ``/``."""
     deprecated = root.get("deprecated")
     if deprecated:
@@ -130,11 +152,18 @@ def _walk_ros1(it: Interpretation, file: str, root: Entity) -> None:
     scope = Scope(ns=Choice.const(it.space, "/"), filename=file, args=args)
     with it.at(root):
         it.walk(root.children, scope)
+    return set()
 
 
-def _walk_ros2(it: Interpretation, file: str, root: Entity) -> None:
-    """``ros2 launch``: the declared launch arguments are the command line's."""
-    ros2.walk_entry(it, root, ros2.entry_context(it, file, root))
+def _walk_ros2(
+    it: Interpretation, file: str, root: Entity, undeclared: Mapping[str, str]
+) -> set[str]:
+    """``ros2 launch``: the declared launch arguments are the command line's, and the
+    ``undeclared`` ones included files declare; the included files' args read where they
+    were not set (before their declaration, or outside its group) are returned."""
+    context = ros2.entry_context(it, file, root, undeclared)
+    ros2.walk_entry(it, root, context)
+    return {n for n in it.model.settable if n in context.unset_reads and n not in undeclared}
 
 
 @dataclass(frozen=True)
@@ -143,7 +172,7 @@ class Reading:
 
     dialect: Dialect
     loader: Callable[[str], ParseResult] | None  # None: roslaunch's XML parser
-    walk: Callable[[Interpretation, str, Entity], None]
+    walk: Callable[[Interpretation, str, Entity, Mapping[str, str]], set[str]]
 
 
 READINGS: dict[RosVersion, Reading] = {

@@ -1,8 +1,11 @@
 """ROS 2 fixtures, one per corner of the semantics: rosvar's resolution against the real
-ros2/launch (the oracle), for sampled launch arguments."""
+ros2/launch (the oracle), for sampled launch arguments. A fixture's entry is ``main.launch.xml``
+and, where the construct exists there, the same launch as ``main.launch.yaml`` and
+``main.launch.py``; each is compared."""
 
 from __future__ import annotations
 
+import itertools
 from pathlib import Path
 
 import pytest
@@ -248,7 +251,355 @@ CASES: dict[str, Case] = {
         },
         [{}],
     ),
+    "find-exec-not-searched": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="tool" default="rosvar_no_such_tool"/>
+            <node pkg="pkg" exec="x" name="x" args="$(find-exec $(var tool)) --flag">
+              <param name="description" value="$(command '$(find-exec xacro) robot.xacro')"/>
+            </node>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- arg: {name: tool, default: rosvar_no_such_tool}
+- node:
+    pkg: pkg
+    exec: x
+    name: x
+    args: $(find-exec $(var tool)) --flag
+    param:
+    - {name: description, value: "$(command '$(find-exec xacro) robot.xacro')"}
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import Command, FindExecutable, LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    tool = FindExecutable(name=LaunchConfiguration('tool'))
+    description = Command([FindExecutable(name='xacro'), ' robot.xacro'])
+    return LaunchDescription([
+        DeclareLaunchArgument('tool', default_value='rosvar_no_such_tool'),
+        Node(package='pkg', executable='x', name='x', arguments=[tool, '--flag'],
+             parameters=[{'description': description}]),
+    ])
+""",
+        },
+        [{}, {"tool": "other_missing_tool"}],
+    ),
+    "command-lines-split-before-substitution": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="v" default="a b"/>
+            <executable cmd="ls -l $(var v) x$(var v)y 'c d'" name="lister"/>
+            <node pkg="pkg" exec="n" name="n" args="--ros-args -r a:=b -- $(var v) plain"
+                  ros_args="-p q:=1 -r __ns:=/other -r c:=d --log-level debug"/>
+            <node pkg="pkg" exec="m" name="m"
+                  ros_args="-r __node:=renamed --params-file $(dirname)/p.yaml"/>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- arg: {name: v, default: a b}
+- executable: {cmd: "ls -l $(var v) x$(var v)y 'c d'", name: lister}
+- node:
+    {pkg: pkg, exec: n, name: n, args: "--ros-args -r a:=b -- $(var v) plain",
+     ros_args: "-p q:=1 -r __ns:=/other -r c:=d --log-level debug"}
+- node: {pkg: pkg, exec: m, name: m, ros_args: "-r __node:=renamed --params-file $(dirname)/p.yaml"}
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, ExecuteProcess
+from launch.substitutions import LaunchConfiguration, PathJoinSubstitution, ThisLaunchFileDir
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    v = LaunchConfiguration('v')
+    return LaunchDescription([
+        DeclareLaunchArgument('v', default_value='a b'),
+        ExecuteProcess(cmd=['ls', '-l', v, ['x', v, 'y'], 'c d'], name='lister'),
+        Node(package='pkg', executable='n', name='n',
+             arguments=['--ros-args', '-r', 'a:=b', '--', v, 'plain'],
+             ros_arguments=['-p', 'q:=1', '-r', '__ns:=/other', '-r', 'c:=d',
+                            '--log-level', 'debug']),
+        Node(package='pkg', executable='m', name='m',
+             ros_arguments=['-r', '__node:=renamed', '--params-file',
+                            PathJoinSubstitution([ThisLaunchFileDir(), 'p.yaml'])]),
+    ])
+""",
+            "p.yaml": "/**:\n  ros__parameters: {k: 3}\n/renamed:\n  ros__parameters: {r: 1}\n",
+        },
+        [{}, {"v": "one"}],
+    ),
+    "lifecycle-node-python-only": (
+        {
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import LifecycleNode
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('on', default_value='true'),
+        LifecycleNode(package='pkg', executable='lc', name='lc', namespace='ns',
+                      parameters=[{'rate': 5}], remappings=[('a', 'b')],
+                      condition=IfCondition(LaunchConfiguration('on'))),
+    ])
+""",
+            "main.launch.xml": """<launch>
+            <lifecycle_node pkg="pkg" exec="lc" name="lc" namespace="ns"/>
+          </launch>""",
+        },
+        [{}, {"on": "false"}],
+    ),
+    "undeclared-arguments-reach-included-files": (
+        {
+            "main.launch.xml": """<launch>
+                <node pkg="pkg" exec="p" name="pre_$(var mode early)"/>
+                <include file="$(dirname)/sub.launch.xml"/>
+                <node pkg="pkg" exec="a" name="a_$(var mode)"/>
+              </launch>""",
+            "sub.launch.xml": """<launch>
+                <arg name="mode" default="sim"/>
+                <arg name="on" default="true"/>
+                <group if="$(var on)"><arg name="robot" default="r1"/></group>
+                <node pkg="pkg" exec="b" name="b_$(var robot r0)" if="$(var on)"/>
+              </launch>""",
+            "main.launch.yaml": """launch:
+- node: {pkg: pkg, exec: p, name: pre_$(var mode early)}
+- include: {file: $(dirname)/sub.launch.yaml}
+- node: {pkg: pkg, exec: a, name: a_$(var mode)}
+""",
+            "sub.launch.yaml": """launch:
+- arg: {name: mode, default: sim}
+- arg: {name: "on", default: "true"}
+- group:
+    if: $(var on)
+    children:
+    - arg: {name: robot, default: r1}
+- node: {pkg: pkg, exec: b, name: b_$(var robot r0), if: $(var on)}
+""",
+        },
+        [{}, {"mode": "real"}, {"robot": "r2", "on": "false"}, {"robot": "r2"}],
+    ),
+    "append-env-after-before-or-alone": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="sep" default="+"/>
+            <set_env name="P" value="base"/>
+            <append_env name="P" value="end"/>
+            <append_env name="P" value="start" prepend="true"/>
+            <append_env name="Q" value="only" separator=";"/>
+            <append_env name="P" value="x" separator="$(var sep)"/>
+            <node pkg="pkg" exec="a" name="a" args="$(env P) $(env Q)"/>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- arg: {name: sep, default: +}
+- set_env: {name: P, value: base}
+- append_env: {name: P, value: end}
+- append_env: {name: P, value: start, prepend: true}
+- append_env: {name: Q, value: only, separator: ;}
+- append_env: {name: P, value: x, separator: $(var sep)}
+- node: {pkg: pkg, exec: a, name: a, args: $(env P) $(env Q)}
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import (AppendEnvironmentVariable, DeclareLaunchArgument,
+                            SetEnvironmentVariable)
+from launch.substitutions import EnvironmentVariable, LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('sep', default_value='+'),
+        SetEnvironmentVariable('P', 'base'),
+        AppendEnvironmentVariable('P', 'end'),
+        AppendEnvironmentVariable('P', 'start', prepend=True),
+        AppendEnvironmentVariable('Q', 'only', separator=';'),
+        AppendEnvironmentVariable('P', 'x', separator=LaunchConfiguration('sep')),
+        Node(package='pkg', executable='a', name='a',
+             arguments=[EnvironmentVariable('P'), EnvironmentVariable('Q')]),
+    ])
+""",
+        },
+        [{}, {"sep": "-"}],
+    ),
+    "reset-forgets-configurations-namespace-remaps-parameters": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="a" default="1"/>
+            <arg name="r" default="false"/>
+            <let name="b" value="2"/>
+            <push-ros-namespace namespace="ns"/>
+            <set_remap from="x" to="y"/>
+            <set_parameter name="g" value="1"/>
+            <node pkg="pkg" exec="n1" name="before_$(var a)_$(var b)"/>
+            <group>
+              <reset><keep name="c" value="$(var a)"/></reset>
+              <node pkg="pkg" exec="n2" name="in_$(var c)_$(var b nob)"/>
+            </group>
+            <node pkg="pkg" exec="n3" name="after_$(var a)"/>
+            <reset if="$(var r)"/>
+            <node pkg="pkg" exec="n4" name="last_$(var a none)"/>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- arg: {name: a, default: "1"}
+- arg: {name: r, default: "false"}
+- let: {name: b, value: "2"}
+- push-ros-namespace: {namespace: ns}
+- set_remap: {from: x, to: y}
+- set_parameter: {name: g, value: "1"}
+- node: {pkg: pkg, exec: n1, name: before_$(var a)_$(var b)}
+- group:
+  - reset: {keep: [{name: c, value: $(var a)}]}
+  - node: {pkg: pkg, exec: n2, name: in_$(var c)_$(var b nob)}
+- node: {pkg: pkg, exec: n3, name: after_$(var a)}
+- reset: {if: $(var r)}
+- node: {pkg: pkg, exec: n4, name: last_$(var a none)}
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import (DeclareLaunchArgument, GroupAction, ResetLaunchConfigurations,
+                            SetLaunchConfiguration)
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration as V
+from launch_ros.actions import Node, PushRosNamespace, SetParameter, SetRemap
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('a', default_value='1'),
+        DeclareLaunchArgument('r', default_value='false'),
+        SetLaunchConfiguration('b', '2'),
+        PushRosNamespace('ns'),
+        SetRemap(src='x', dst='y'),
+        SetParameter(name='g', value='1'),
+        Node(package='pkg', executable='n1', name=['before_', V('a'), '_', V('b')]),
+        GroupAction([
+            ResetLaunchConfigurations(launch_configurations={'c': V('a')}),
+            Node(package='pkg', executable='n2', name=['in_', V('c'), '_', V('b', default='nob')]),
+        ]),
+        Node(package='pkg', executable='n3', name=['after_', V('a')]),
+        ResetLaunchConfigurations(condition=IfCondition(V('r'))),
+        Node(package='pkg', executable='n4', name=['last_', V('a', default='none')]),
+    ])
+""",
+        },
+        [{}, {"r": "true"}, {"a": "5", "r": "true"}],
+    ),
+    "set-parameters-from-file-global-and-missing-files": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="m" default="x"/>
+            <arg name="f" default="g"/>
+            <arg name="use" default="false"/>
+            <group>
+              <set_parameters_from_file filename="$(dirname)/g.yaml"/>
+              <node pkg="pkg" exec="a" name="a">
+                <param name="own" value="1"/><param from="$(dirname)/missing_$(var m).yaml"/>
+              </node>
+            </group>
+            <node pkg="pkg" exec="b" name="b"/>
+            <set_parameters_from_file filename="$(dirname)/$(var f).yaml" if="$(var use)"/>
+            <node pkg="pkg" exec="c" name="c"/>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- arg: {name: m, default: x}
+- arg: {name: f, default: g}
+- arg: {name: use, default: "false"}
+- group:
+  - set_parameters_from_file: {filename: $(dirname)/g.yaml}
+  - node:
+      pkg: pkg
+      exec: a
+      name: a
+      param: [{name: own, value: 1}, {from: $(dirname)/missing_$(var m).yaml}]
+- node: {pkg: pkg, exec: b, name: b}
+- set_parameters_from_file: {filename: $(dirname)/$(var f).yaml, if: $(var use)}
+- node: {pkg: pkg, exec: c, name: c}
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration as V, ThisLaunchFileDir
+from launch_ros.actions import Node, SetParametersFromFile
+
+
+def generate_launch_description():
+    here = ThisLaunchFileDir()
+    return LaunchDescription([
+        DeclareLaunchArgument('m', default_value='x'),
+        DeclareLaunchArgument('f', default_value='g'),
+        DeclareLaunchArgument('use', default_value='false'),
+        GroupAction([
+            SetParametersFromFile([here, '/g.yaml']),
+            Node(package='pkg', executable='a', name='a',
+                 parameters=[{'own': 1}, [here, '/missing_', V('m'), '.yaml']]),
+        ]),
+        Node(package='pkg', executable='b', name='b'),
+        SetParametersFromFile([here, '/', V('f'), '.yaml'], condition=IfCondition(V('use'))),
+        Node(package='pkg', executable='c', name='c'),
+    ])
+""",
+            "g.yaml": "/**:\n  ros__parameters: {shared: 1, own: 0}\n"
+            "/a:\n  ros__parameters: {only_a: true}\n",
+        },
+        [{}, {"use": "true"}, {"use": "true", "f": "nope"}],
+    ),
+    "python-path-join-of-values": (
+        {
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration as V, PathJoinSubstitution
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('dir', default_value='/etc/robot/'),
+        DeclareLaunchArgument('ns', default_value=''),
+        Node(package='pkg', executable='a', name='a',
+             parameters=[{'p': PathJoinSubstitution([V('dir'), 'x.yaml'])}],
+             remappings=[('a', PathJoinSubstitution(['/', V('ns'), 'b']))]),
+    ])
+""",
+        },
+        [{}, {"dir": "/opt", "ns": "r1"}, {"ns": "/abs"}],
+    ),
+    "actions-that-start-nothing": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="a" default="1"/>
+            <log message="a is $(var a)"/>
+            <set_ros_log_dir new_log_dir="/tmp/rosvar-log"/>
+            <node pkg="pkg" exec="x" name="x_$(var a)"/>
+          </launch>""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, LogInfo
+from launch.substitutions import LaunchConfiguration as V
+from launch_ros.actions import Node, SetROSLogDir
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('a', default_value='1'),
+        LogInfo(msg=['a is ', V('a')]),
+        SetROSLogDir(new_log_dir='/tmp/rosvar-log'),
+        Node(package='pkg', executable='x', name=['x_', V('a')]),
+    ])
+""",
+        },
+        [{}, {"a": "2"}],
+    ),
 }
+
+
+LENIENT = frozenset({"find-exec-not-searched"})
+"""Fixtures the oracle loads leniently: ``$(find-exec)`` of a program not on its ``PATH``."""
+
+
+def entries(package: Path) -> list[Path]:
+    """The fixture's launch written in each format it has."""
+    return sorted(package.glob("main.launch.*"))
 
 
 def _workspace(tmp_path: Path, files: dict[str, str]) -> Path:
@@ -264,10 +615,12 @@ def _workspace(tmp_path: Path, files: dict[str, str]) -> Path:
 def test_fixture_matches_the_oracle(case: str, tmp_path: Path) -> None:
     files, samples = CASES[case]
     package = _workspace(tmp_path, files)
-    for arguments in samples:
-        expected = run_oracle(package / "main.launch.xml", arguments, [package.parent])
-        workspace = discover([str(package.parent)])
-        result = resolve_ros2(workspace, str(package / "main.launch.xml"), arguments)
-        assert result.ok == expected["ok"], (arguments, expected.get("error"), result.errors)
+    workspace = discover([str(package.parent)])
+    for main, arguments in itertools.product(entries(package), samples):
+        strict = case not in LENIENT
+        expected = run_oracle(main, arguments, [package.parent], strict=strict)
+        result = resolve_ros2(workspace, str(main), arguments)
+        assert result.ok == expected["ok"], (main.name, arguments, expected.get("error"))
         if result.ok:
-            assert canonical_nodes(result.to_json()) == canonical_nodes(expected), arguments
+            nodes = canonical_nodes(result.to_json())
+            assert nodes == canonical_nodes(expected), (main.name, arguments)

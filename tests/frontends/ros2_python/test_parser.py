@@ -103,6 +103,31 @@ def generate_launch_description():
     )
 
 
+def test_a_path_join_is_text_where_its_boundaries_are_known() -> None:
+    tree, diagnostics = read(
+        """
+def generate_launch_description():
+    d = LaunchConfiguration('d')
+    return LaunchDescription([
+        SetEnvironmentVariable('A', PathJoinSubstitution([FindPackageShare('p'), 'c', 'x.yaml'])),
+        SetEnvironmentVariable('B', PathJoinSubstitution(['/etc/', d, 'x.yaml'])),
+        SetEnvironmentVariable('C', PathJoinSubstitution([d, FindPackageShare('p')])),
+        SetEnvironmentVariable('D', os.path.join(d, 'x')),
+    ])
+""",
+        IMPORTS,
+    )
+    assert diagnostics == []
+    assert tree == xml_shape(
+        """<launch>
+  <set_env name="A" value="$(find-pkg-share p)/c/x.yaml"/>
+  <set_env name="B" value="$(rosvar-path-join $(rosvar-path-join /etc/ $(var d)) x.yaml)"/>
+  <set_env name="C" value="$(find-pkg-share p)"/>
+  <set_env name="D" value="$(rosvar-path-join $(var d) x)"/>
+</launch>"""
+    )
+
+
 def test_typed_values_keep_their_types() -> None:
     result = parse_python_launch_bytes(
         (

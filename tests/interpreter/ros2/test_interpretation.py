@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 from rosvar.interpreter.workspace_models import Analysis
@@ -49,13 +50,18 @@ def test_arguments_are_inputs_and_nodes_get_presence_conditions(tmp_path: Path) 
     assert space.slot(model.inputs["mode"], "fast") & model.loads != space.false
 
 
-def test_an_included_files_arguments_are_not_inputs(tmp_path: Path) -> None:
-    (tmp_path / "inner.xml").write_text('<launch><arg name="x" default="1"/></launch>')
+def test_an_included_files_arguments_are_inputs_where_the_include_does_not_set_them(
+    tmp_path: Path,
+) -> None:
+    (tmp_path / "inner.xml").write_text(
+        '<launch><arg name="x" default="1"/><arg name="z" default="3"/></launch>'
+    )
     it, file = analysis(
         tmp_path,
         """<launch><arg name="y" default="2"/>
-        <include file="$(dirname)/../inner.xml"/></launch>""",
+        <include file="$(dirname)/../inner.xml"><arg name="z" value="4"/></include></launch>""",
     )
     model = it.model(file)
-    assert list(model.inputs) == ["y"]
-    assert [a.name for a in model.args] == ["y"]
+    assert list(model.inputs) == ["y", "x"]  # ros2 launch sets x:=... before loading
+    assert [a.name for a in model.args] == ["y", "x"]
+    assert [os.path.realpath(f) for f in model.settable.values()] == [str(tmp_path / "inner.xml")]

@@ -20,11 +20,13 @@ from rosvar.diagnostics import Location
 from rosvar.files import FileRefused, read_file
 from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.interpreter.ros2.interpretation import interpret
+from rosvar.interpreter.ros2.tags.node import ProcessKind
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.ros.ros2_namespaces import full_name, make_absolute, prefix_namespace
+from rosvar.ros import ros2_arguments
+from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace
 from rosvar.ros.ros2_parameters import ALL_NODES, Source, effective, file_entries, typed
 from rosvar.workspace import Workspace
 
@@ -33,13 +35,19 @@ from rosvar.workspace import Workspace
 class Ros2Resolution:
     nodes: list[dict[str, object]] = field(default_factory=list)
     errors: list[dict[str, object]] = field(default_factory=list)
+    warnings: list[dict[str, object]] = field(default_factory=list)
 
     @property
     def ok(self) -> bool:
         return not self.errors
 
     def to_json(self) -> dict[str, object]:
-        return {"ok": self.ok, "nodes": self.nodes, "errors": self.errors}
+        return {
+            "ok": self.ok,
+            "nodes": self.nodes,
+            "errors": self.errors,
+            "warnings": self.warnings,
+        }
 
 
 def resolve_ros2(
@@ -105,7 +113,7 @@ def restrict(model: LaunchModel, view: View) -> Ros2Resolution:
     for decl in model.nodes:
         if view.holds(decl.condition):
             try:
-                result.nodes.append(_node(decl, view))
+                result.nodes.append(_node(decl, view, result.warnings))
             except (ValueError, ResolutionError) as error:
                 result.errors.append(
                     {
@@ -117,7 +125,7 @@ def restrict(model: LaunchModel, view: View) -> Ros2Resolution:
     return result
 
 
-def _node(decl: NodeDecl, view: View) -> dict[str, object]:
+def _node(decl: NodeDecl, view: View, warnings: list[dict[str, object]]) -> dict[str, object]:
     def text(key: str) -> str | None:
         value = view.pick(decl.field(key), decl.location, f"<node> attribute '{key}'")
         return None if value is None else str(value)
@@ -125,38 +133,71 @@ def _node(decl: NodeDecl, view: View) -> dict[str, object]:
     def known(value: Raw, what: str) -> str:
         return view.evaluate(value, decl.location, what)
 
-    name = text("name")
-    namespace = make_absolute(prefix_namespace(text("ros_namespace"), text("namespace")))
+    kind = text("kind")
+    if kind == ProcessKind.PROCESS:
+        return {"kind": kind, "cmd": shlex.split(text("cmd") or "")}
+    argv = shlex.split(text("args") or "")
+    ros_args = text("ros_args")
+    if ros_args is not None:
+        argv += ["--ros-args", *shlex.split(ros_args)]
+    given = ros2_arguments.parse(argv)  # before launch_ros's own --ros-args section
+    name = given.name or text("name")
+    if given.namespace is not None:
+        namespace: str | None = given.namespace
+    else:
+        namespace = make_absolute(prefix_namespace(text("ros_namespace"), text("namespace")))
     fqn = None
     if name is not None:
-        fqn = full_name(text("ros_namespace"), text("namespace"), name)
+        fqn = (namespace or "").rstrip("/") + "/" + name
     sources: list[Source] = []
+    for parameter in given.parameters:
+        if isinstance(parameter, str):
+            sources.append(Source(entries=tuple(_file(parameter))))
+        else:
+            sources.append(Source(*parameter))
     for param in decl.parameters:
         if not view.holds(param.condition):
             continue
         if param.file is not None:
-            sources.append(Source(entries=tuple(_file(known(param.file, "parameter file")))))
+            path = known(param.file, "parameter file")
+            if param.globally:  # launch_ros asserts that a global parameter file exists
+                path = os.path.abspath(path)
+                if not os.path.isfile(path):
+                    raise ValueError(
+                        f"parameter file {path} of <set_parameters_from_file> is missing"
+                    )
+            elif kind != ProcessKind.COMPOSABLE_NODE and not os.path.isfile(path):
+                # launch_ros leaves a node's missing file out, with a warning
+                warnings.append(
+                    {
+                        "code": "parameter-file-missing",
+                        "message": f"Parameter file path is not a file: {path}",
+                        "location": decl.location.to_json(),
+                    }
+                )
+                continue
+            sources.append(Source(entries=tuple(_file(path))))
         elif param.name is not None and param.value is not None:
             # global (-p) and inline (a generated file) parameters both apply to /**
             value = typed(known(param.value, "parameter value"))
             entry = {known(param.name, "parameter name"): value}
             sources.append(Source(entries=((ALL_NODES, entry),)))
-    args = text("args")
-    remaps = [
+    remaps = [[source, target] for source, target in given.remaps]
+    remaps += [
         [known(r.source, "remapping"), known(r.target, "remapping")]
         for r in decl.remaps
         if view.holds(r.condition)
     ]
     return {
-        "kind": text("kind"),
+        "kind": kind,
         "package": text("pkg"),
-        "executable": text("exec") or text("cmd"),
+        "executable": text("exec"),
         "name": name,
         "namespace": namespace,
         "fqn": fqn,
         "remappings": remaps,
         "parameters": effective(fqn, sources),
-        "arguments": None if text("plugin") else shlex.split(args or ""),
+        "arguments": None if text("plugin") else given.program,
         "plugin": text("plugin"),
         "container": text("container"),
     }

@@ -143,6 +143,7 @@ ACTIONS: dict[tuple[str, str], ActionSpec] = {
         "ros_timer", (*_attributes("period"), Param("actions", "", Slot.ACTIONS))
     ),
     ("launch_ros", "Node"): ActionSpec("node", _NODE),
+    ("launch_ros", "LifecycleNode"): ActionSpec("lifecycle_node", _NODE),  # Python only
     ("launch_ros", "ComposableNodeContainer"): ActionSpec(
         "node_container",
         (*_NODE, Param("composable_node_descriptions", "", Slot.ACTIONS)),
@@ -171,7 +172,8 @@ ACTIONS: dict[tuple[str, str], ActionSpec] = {
     ("launch_ros", "SetUseSimTime"): ActionSpec("set_use_sim_time", _attributes("value")),
     ("launch_ros", "SetROSLogDir"): ActionSpec("set_ros_log_dir", _attributes("new_log_dir")),
 }
-"""Every action (and composable-node description) with an XML equivalent."""
+"""Every action (and composable-node description) with an XML equivalent, and
+``LifecycleNode``, which has none: a ``<node>`` whose tag says it is a lifecycle node."""
 
 
 def set_attribute(call: Call, entity: Entity, name: str, value: Value) -> None:

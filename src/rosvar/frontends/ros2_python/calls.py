@@ -13,7 +13,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from rosvar.diagnostics import DiagnosticSink, Location
-from rosvar.frontends.ros2_python.text import Sub, Text, unknown
+from rosvar.frontends.ros2_python.text import PATH_JOIN, Sub, Text, unknown
 from rosvar.frontends.ros2_python.values import (
     Condition,
     Module,
@@ -29,6 +29,10 @@ NOT_FOLLOWED = "python-not-followed"
 """Diagnostic code of every construct the static reading does not follow."""
 
 _MISSING = Unknown("missing argument")
+PATH_VALUED = frozenset(
+    {"find-pkg-share", "find-pkg-prefix", "dirname", "filename", "find-exec", "exec-in-pkg"}
+)
+"""Substitutions whose value is an absolute path with no trailing ``/``."""
 
 
 @dataclass(slots=True)
@@ -101,11 +105,22 @@ def _register(package: str, *names: str) -> Callable[[Builder], Builder]:
 
 
 def join_path(head: Text, tail: Text) -> Text:
-    """``os.path.join`` of two texts (an absolute ``tail`` replaces ``head``)."""
+    """``os.path.join`` of two texts (an absolute ``tail`` replaces ``head``), as text where
+    the boundary is known (a literal, or a substitution giving a path); else the join left
+    to the interpreter, ``$(rosvar-path-join head tail)``: ``$(var dir)`` may end in ``/``,
+    or be absolute, or empty."""
     first = tail.parts[0] if tail.parts else ""
-    if (isinstance(first, str) and first.startswith("/")) or not head.parts:
+    if not head.parts:
+        return tail
+    if isinstance(first, Sub):
+        if first.name in PATH_VALUED:
+            return tail
+        return Text.of(Sub(PATH_JOIN, (head, tail)))
+    if first.startswith("/"):
         return tail
     last = head.parts[-1]
+    if isinstance(last, Sub) and last.name not in PATH_VALUED:
+        return Text.of(Sub(PATH_JOIN, (head, tail)))
     separator = "" if isinstance(last, str) and last.endswith("/") else "/"
     return Text.of(head, separator, tail)
 

@@ -15,6 +15,9 @@ from dataclasses import dataclass
 UNKNOWN = "rosvar-unknown"
 """The substitution standing for a value the static reading cannot follow; its argument
 says what it was (``$(rosvar-unknown 'call read_config()')``). No launch file has it."""
+PATH_JOIN = "rosvar-path-join"
+"""The substitution standing for ``PathJoinSubstitution`` (``os.path.join`` of its
+arguments' values) where the join is not known from the text; XML has none."""
 
 _PLAIN_ARGUMENT = re.compile(r"[^\s'\"\\$()]+")
 

@@ -22,11 +22,13 @@ Configuration = Choice[Raw | None]
 
 @dataclass(slots=True)
 class GlobalParam:
-    """A ``<set_parameter>``: prepended to the parameters of later nodes."""
+    """A ``<set_parameter>`` (``name``, ``value``) or ``<set_parameters_from_file>``
+    (``file``): prepended to the parameters of later nodes."""
 
     condition: BDD
-    name: Raw
-    value: Raw
+    name: Raw | None
+    value: Raw | None
+    file: Raw | None = None
 
 
 @dataclass(slots=True)
@@ -60,6 +62,10 @@ class Context:
     env: dict[str, Choice[Raw | None]] = field(default_factory=dict)
     timers: list[Timer] = field(default_factory=list)  # pending, shared by every copy
     now: float = 0.0  # the virtual time of the actions being visited
+    open_command_line: bool = False
+    """Over every command line (the variational model): any ``name:=value`` may be given."""
+    unset_reads: set[str] = field(default_factory=set)  # shared by every copy
+    """Launch configurations ``$(var)`` read where they were not set."""
 
     def scoped(self) -> Context:
         """A copy for a scoped group (``PushLaunchConfigurations``).
@@ -77,7 +83,16 @@ class Context:
             dict(self.env),
             self.timers,
             self.now,
+            self.open_command_line,
+            self.unset_reads,
         )
+
+    def reset(self) -> None:
+        """``<reset>``: no launch configuration left, nor what launch_ros keeps in them."""
+        self.configurations = {}
+        self.namespace = None
+        self.remaps = None
+        self.params = None
 
     def restore(self, saved: Context) -> None:
         """``PopLaunchConfigurations``: back to ``saved``'s state."""

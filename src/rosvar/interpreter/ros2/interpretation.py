@@ -66,14 +66,21 @@ def walk_entry(it: Interpretation, root: Entity, context: Context) -> None:
         fire(it, context)
 
 
-def entry_context(it: Interpretation, file: str, root: Entity) -> Context:
+def entry_context(
+    it: Interpretation, file: str, root: Entity, settable: Mapping[str, str]
+) -> Context:
     """The context of ``ros2 launch file ...`` over every command line: each launch argument
-    the file declares is an input, not set where it is not given."""
+    the file declares is an input, not set where it is not given, and so is each of
+    ``settable`` (:attr:`LaunchModel.settable`: ``ros2 launch`` sets any ``name:=value``
+    before loading, so an included file's declaration takes it); other included files'
+    arguments become inputs where they are declared."""
     names = list(
         dict.fromkeys(
             name for d in entry_declarations(root) if (name := d.get("name")) and "$" not in name
         )
     )
-    context = Context(file)
-    context.configurations = it.entry_args(file, names, None)
+    extra = {name: declared for name, declared in settable.items() if name not in names}
+    context = Context(file, open_command_line=True)
+    context.configurations = it.entry_args(file, [*names, *extra], None, extra)
+    it.model.settable.update(extra)
     return context

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation
+from rosvar.workspace.launch_files import LaunchFormat, format_of
+from rosvar.workspace.ros_version import RosVersion
 
 PROCESS = frozenset(
     {
@@ -31,10 +33,16 @@ ATTRIBUTES: dict[str, frozenset[str]] = {
     "set_parameter": frozenset({"name", "value"}),
     "set_env": frozenset({"name", "value"}),
     "unset_env": frozenset({"name"}),
+    "append_env": frozenset({"name", "value", "prepend", "separator"}),
+    "reset": frozenset({"keep"}),
+    "set_parameters_from_file": frozenset({"filename"}),
+    "log": frozenset({"message"}),
+    "set_use_sim_time": frozenset({"value"}),
+    "set_ros_log_dir": frozenset({"new_log_dir"}),
     "node": PROCESS
     | {"pkg", "exec", "name", "namespace", "args", "ros_args", "exec_name", "node-name"}
     | {"param", "remap"},
-    "executable": PROCESS | {"cmd", "name", "args"},
+    "executable": PROCESS | {"cmd", "name"},
     "node_container": PROCESS
     | {"pkg", "exec", "name", "namespace", "args", "ros_args", "exec_name", "node-name"}
     | {"param", "remap", "composable_node"},
@@ -46,14 +54,21 @@ ATTRIBUTES: dict[str, frozenset[str]] = {
     "remap": frozenset({"from", "to"}),
     "env": frozenset({"name", "value"}),
 }
+PYTHON_ONLY: dict[str, frozenset[str]] = {"lifecycle_node": ATTRIBUTES["node"]}
+"""Actions with no XML or YAML tag (``LifecycleNode``): the Python frontend's entities."""
 ALWAYS = frozenset({"if", "unless"})
 CONTAINERS = frozenset({"group", "launch", "timer"})
 
 
 def check(it: Interpretation, root: Entity) -> None:
     """Record the frontend's failure for every unknown element or attribute below ``root``."""
+    python = format_of(root.location.file, RosVersion.ROS2) is LaunchFormat.PYTHON
+    _check(it, root, {**ATTRIBUTES, **PYTHON_ONLY} if python else ATTRIBUTES)
+
+
+def _check(it: Interpretation, root: Entity, attributes: dict[str, frozenset[str]]) -> None:
     for entity in root.children:
-        allowed = ATTRIBUTES.get(entity.tag)
+        allowed = attributes.get(entity.tag)
         if allowed is None:
             it.fail(
                 it.space.true,
@@ -77,7 +92,7 @@ def check(it: Interpretation, root: Entity) -> None:
                 entity.location,
             )
         elif container:
-            check(it, entity)
+            _check(it, entity, attributes)
         else:
             _nested(it, entity)
 

@@ -10,15 +10,18 @@ from __future__ import annotations
 
 import functools
 import os
+import posixpath
+import shlex
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from rosvar.frontends.ros2_python.text import PATH_JOIN, UNKNOWN
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.ros2.context import Context, optional
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
 from rosvar.logic.choice import Choice, Fail, combine, ite
-from rosvar.logic.terms import concat
+from rosvar.logic.terms import Apply, TermError, concat, register
 
 if TYPE_CHECKING:
     from rosvar.interpreter.interpretation import Interpretation
@@ -111,6 +114,44 @@ def parse(text: str) -> Template:
     return _Parser(text).template()
 
 
+def command_line(text: str) -> list[Template]:
+    """``text`` as a command line's arguments, split as launch's ``_parse_cmdline`` does:
+    literal text at whitespace (``shlex``), substitution values never (``$(var x)`` is one
+    argument whatever its value). Raises :class:`SubstitutionSyntaxError`, also for an
+    unclosed quote in the literal text."""
+    arguments: list[Template] = []
+    current: list[str | Call] = []
+
+    def close() -> None:
+        nonlocal current
+        arguments.append(tuple(current))
+        current = []
+
+    for part in parse(text):
+        if not isinstance(part, str):
+            current.append(part)
+            continue
+        try:
+            tokens = shlex.split(part)
+        except ValueError as error:
+            raise SubstitutionSyntaxError(f"{error} in [{text}]") from None
+        if not tokens:  # only whitespace: it separates two substitutions
+            close()
+            continue
+        if part[0].isspace() and current:
+            close()
+        current.append(tokens[0])
+        if len(tokens) > 1:
+            close()
+            arguments.extend((token,) for token in tokens[1:-1])
+            current.append(tokens[-1])
+        if part[-1].isspace():
+            close()
+    if current:
+        close()
+    return arguments
+
+
 Handler = Callable[["Interpretation", Context, list[Raw]], Choice[Value]]
 SUBSTITUTIONS: dict[str, Handler] = {}
 
@@ -147,6 +188,17 @@ class Ros2Substituter:
             return Choice.const(self.space, "")
         return combine(parts, _concatenate)
 
+    def command_line(self, text: str, context: Context) -> Choice[Value]:
+        """A command line's arguments (:func:`command_line`), each resolved, as one
+        ``shlex``-quoted text that :func:`shlex.split` gives back."""
+        try:
+            arguments = command_line(text)
+        except SubstitutionSyntaxError as error:
+            return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+        if not arguments:
+            return Choice.const(self.space, "")
+        return combine([self.template(a, context) for a in arguments], _quote)
+
     def _part(self, part: str | Call, context: Context) -> Choice[Value]:
         if isinstance(part, str):
             return Choice.const(self.space, part)
@@ -176,9 +228,16 @@ def _concatenate(leaves: Sequence[Value]) -> Value:
     for leaf in leaves:
         if isinstance(leaf, Fail):
             return leaf
-    if all(isinstance(leaf, str) for leaf in leaves):
-        return "".join(leaves)  # type: ignore[arg-type]
-    return Fail("a value depends on an input rosvar does not know", "value-unknown")
+    return concat(list(leaves))  # type: ignore[arg-type]  # no Fail left: texts and terms
+
+
+def _quote(leaves: Sequence[Value]) -> Value:
+    words: list[Raw] = []
+    for leaf in leaves:
+        if isinstance(leaf, Fail):
+            return leaf
+        words += [" ", shlex.quote(leaf) if isinstance(leaf, str) else leaf]
+    return concat(words[1:])  # a term (an unknown value) stays unquoted
 
 
 def _fail(host: Interpretation, message: str, code: str) -> Choice[Value]:
@@ -187,19 +246,21 @@ def _fail(host: Interpretation, message: str, code: str) -> Choice[Value]:
 
 @substitution("var")
 def _var(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
-    if len(args) != 1 or not isinstance(args[0], str):
-        return _fail(host, "$(var) takes one argument", "substitution-invalid")
+    if not 1 <= len(args) <= 2 or not isinstance(args[0], str):
+        return _fail(host, "$(var) takes a name and an optional default", "substitution-invalid")
     name = args[0]
+    missing: Value = (
+        args[1]
+        if len(args) == 2
+        else Fail(f"launch configuration '{name}' does not exist", "var-undefined")
+    )
     value = context.configurations.get(name)
     if value is None:
-        return _fail(host, f"launch configuration '{name}' does not exist", "var-undefined")
-    return value.map(
-        lambda leaf: (
-            Fail(f"launch configuration '{name}' does not exist", "var-undefined")
-            if leaf is None
-            else leaf
-        )
-    )
+        context.unset_reads.add(name)
+        return Choice.const(host.space, missing)
+    if any(leaf is None for _condition, leaf in value.branches):
+        context.unset_reads.add(name)
+    return value.map(lambda leaf: missing if leaf is None else leaf)
 
 
 @substitution("env")
@@ -260,6 +321,46 @@ def _command(host: Interpretation, context: Context, args: list[Raw]) -> Choice[
         )
     host.warn("command-not-run", "$(command) is never run by rosvar: its output is not known")
     return Choice.const(host.space, concat(["$(command ", args[0], ")"]))
+
+
+@substitution("find-exec")
+def _find_exec(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """The executable's path on the host's ``PATH``, which rosvar does not search (the
+    PATH of the machine that launches is not the analysing one's): the value stays the
+    text ``$(find-exec NAME)``, and a warning says so."""
+    if len(args) != 1:
+        return _fail(host, "$(find-exec) takes one argument", "substitution-invalid")
+    host.warn(
+        "find-exec-host",
+        "$(find-exec) is the path of an executable on the launching host's PATH: not searched",
+    )
+    return Choice.const(host.space, concat(["$(find-exec ", args[0], ")"]))
+
+
+@substitution(PATH_JOIN)
+def _path_join(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """``PathJoinSubstitution`` (the Python frontend's): ``os.path.join`` of the values."""
+    if all(isinstance(arg, str) for arg in args):
+        return Choice.const(host.space, posixpath.join(*args))  # type: ignore[arg-type]
+    parts: list[Raw] = []
+    for arg in args:  # an unknown value: joined as if relative, with no trailing '/'
+        parts += ["/", arg]
+    return Choice.const(host.space, concat(parts[1:]))
+
+
+@substitution(UNKNOWN)
+def _unknown(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """A value the Python frontend did not follow (it reported it): unknown, failing only
+    where its text is needed, as an argument's value outside its domain."""
+    what = args[0] if args and isinstance(args[0], str) else "value"
+    return Choice.const(host.space, Apply(UNKNOWN, (what,), f"$({UNKNOWN} {what})"))
+
+
+def _not_followed(_host: object, what: str) -> str:
+    raise TermError(f"{what} is not followed by rosvar")
+
+
+register(UNKNOWN, _not_followed)
 
 
 @substitution("eval")

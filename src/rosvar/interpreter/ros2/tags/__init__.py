@@ -4,6 +4,7 @@ from rosvar.interpreter.ros2.tags import (  # noqa: F401 - imported for registra
     arg,
     group,
     include,
+    inert,
     node,
     settings,
     timer,

@@ -10,10 +10,10 @@ from __future__ import annotations
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed
 from rosvar.interpreter.model import ArgDecl, Raw
-from rosvar.interpreter.ros2.context import Context, optional
+from rosvar.interpreter.ros2.context import Configuration, Context, optional
 from rosvar.interpreter.ros2.dialect import tag
 from rosvar.interpreter.ros2.tags.common import assign
-from rosvar.logic.choice import Choice
+from rosvar.logic.choice import Choice, ite
 
 
 @tag("arg")
@@ -24,6 +24,8 @@ def arg(it: Interpretation, entity: Entity, context: Context) -> None:
         it.fail(it.space.true, "attribute-missing", "<arg> tag is missing required 'name'")
         return
     old = context.configurations.get(name)
+    if context.open_command_line and len(it.stack) > 1 and name not in it.model.inputs:
+        old = _given(it, context, name, old)
     default = it.attr(entity, "default", context)
     unset = old.where(lambda leaf: leaf is None) if old is not None else it.space.true
     if default is None:
@@ -41,7 +43,10 @@ def arg(it: Interpretation, entity: Entity, context: Context) -> None:
             "arg-choice",
             f"argument '{name}' must be one of {allowed}",
         )
-    if len(it.stack) > 1:  # an included file's: not one of the command line's inputs
+    included = len(it.stack) > 1  # an included file's: listed if it is an input (see _given)
+    if included and (
+        name not in it.model.settable or any(arg.name == name for arg in it.model.args)
+    ):
         return
     it.model.args.append(
         ArgDecl(
@@ -54,6 +59,23 @@ def arg(it: Interpretation, entity: Entity, context: Context) -> None:
             it.model.inputs.get(name),
         )
     )
+
+
+def _given(
+    it: Interpretation, context: Context, name: str, old: Configuration | None
+) -> Configuration | None:
+    """An included file's argument the entry file does not declare: ``ros2 launch`` set
+    ``name:=value``, if given, before loading, so where nothing set it since, the declaration
+    sees the command line's value. It becomes an input here; a read of it before (or outside
+    the scope it is set in) makes the next interpretation know it from the start."""
+    unset = old.where(lambda leaf: leaf is None) if old is not None else it.space.true
+    if unset == it.space.false or "$" in name:
+        return old
+    it.model.settable[name] = context.filename
+    given = it.entry_args(it.model.file, [name], None, {name: context.filename})[name]
+    before = old if old is not None else Choice.const(it.space, None)
+    context.configurations[name] = ite(it.space, unset, given, before)  # on every path
+    return context.configurations[name]
 
 
 @tag("let")

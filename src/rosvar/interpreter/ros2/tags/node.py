@@ -29,21 +29,27 @@ class ProcessKind(StrEnum):
     """What a declaration starts (the oracle's ``kind``)."""
 
     NODE = "node"
-    EXECUTABLE = "executable"
+    LIFECYCLE_NODE = "lifecycle_node"
+    PROCESS = "process"
     CONTAINER = "container"
     COMPOSABLE_NODE = "composable_node"
 
 
 KINDS = {
     "node": ProcessKind.NODE,
-    "executable": ProcessKind.EXECUTABLE,
+    "lifecycle_node": ProcessKind.LIFECYCLE_NODE,
+    "executable": ProcessKind.PROCESS,
     "node_container": ProcessKind.CONTAINER,
 }
-REQUIRED = {"node": "exec", "executable": "cmd", "node_container": "exec"}
+REQUIRED = {"node": "exec", "lifecycle_node": "exec", "executable": "cmd", "node_container": "exec"}
+COMMAND_LINES = frozenset({"cmd", "args", "ros_args"})
+"""Attributes split into arguments before substitution (launch's ``_parse_cmdline``); the
+model holds them as one ``shlex``-quoted text."""
 NESTED = ("composable_node", "extra_arg")  # handled by their parent, not as settings
 
 
 @tag("node")
+@tag("lifecycle_node")
 @tag("executable")
 @tag("node_container")
 @processed
@@ -95,14 +101,21 @@ def _declare(
     none: Choice[Raw | None] = Choice.const(it.space, None)
     fields: dict[str, Choice[Raw | None]] = {}
     for key in FIELDS:
-        value = it.attr(entity, key, context)
+        value = (
+            _command_line(it, entity, key, context)
+            if key in COMMAND_LINES
+            else it.attr(entity, key, context)
+        )
         fields[key] = none if value is None else optional(value)
     fields["type"] = fields["exec"]  # the model's name for the executable (ROS 1's attribute)
     fields["ros_namespace"] = context.namespace or none
     fields["kind"] = Choice.const(it.space, kind)
     fields["container"] = container or none
     remaps = [Remap(r.condition, r.source, r.target) for r in context.remaps or ()]
-    parameters = [NodeParameter(p.condition, p.name, p.value) for p in context.params or ()]
+    parameters = [
+        NodeParameter(p.condition, p.name, p.value, p.file, globally=True)
+        for p in context.params or ()
+    ]
     env: list[EnvSetting] = []
     for child in entity.children:
         if child.tag in NESTED:
@@ -129,6 +142,16 @@ def _declare(
         )
     )
     return fields
+
+
+def _command_line(
+    it: Interpretation, entity: Entity, key: str, context: Context
+) -> Choice[Raw] | None:
+    text = entity.get(key)
+    if text is None:
+        return None
+    value = it.substituter.command_line(text, context)
+    return it.strip(value, f"<{entity.tag}> attribute '{key}'")
 
 
 def _remap(it: Interpretation, entity: Entity, context: Context, out: list[Remap]) -> None:
