@@ -135,7 +135,8 @@ def _node(decl: NodeDecl, view: View) -> dict[str, object]:
         if not view.holds(param.condition):
             continue
         if param.file is not None:
-            sources.append(Source(entries=tuple(_file(known(param.file, "parameter file")))))
+            entries = parameter_file(known(param.file, "parameter file"))
+            sources.append(Source(entries=tuple(entries)))
         elif param.name is not None and param.value is not None:
             # global (-p) and inline (a generated file) parameters both apply to /**
             value = typed(known(param.value, "parameter value"))
@@ -162,7 +163,8 @@ def _node(decl: NodeDecl, view: View) -> dict[str, object]:
     }
 
 
-def _file(path: str) -> list[tuple[str, dict[str, object]]]:
+def parameter_file(path: str) -> list[tuple[str, dict[str, object]]]:
+    """A parameter file's entries (node pattern, parameters); ``ValueError`` when unreadable."""
     try:
         text = read_file(path).decode()
     except (FileRefused, OSError, UnicodeDecodeError) as error:
