@@ -57,6 +57,7 @@ class FeatureState:
 
     kind: FeatureKind
     file: str
+    package: str | None  # the ROS package of the file, as ``roslaunch``/``ros2 launch`` name it
     arg: str | None
     value: str | None
     parent: str | None
@@ -71,6 +72,7 @@ class FeatureState:
         return {
             "kind": self.kind,
             "file": self.file,
+            "package": self.package,
             "arg": self.arg,
             "value": self.value,
             "parent": self.parent,
@@ -221,11 +223,18 @@ class Configurator:
             for feature, value in values
             if value.slot is OTHER
         ]
+        packages = {
+            entry.id: None
+            if (package := analysis.workspace.package_of(entry.path)) is None
+            else package.name
+            for entry in self.catalog.files
+        }
         self._feature_states = {  # by feature: by (decided value, chosen by the user)
             feature.id: {
                 (decided, chosen): FeatureState(
                     feature.kind,
                     feature.file,
+                    packages[feature.file],
                     feature.arg,
                     feature.value,
                     feature.parent,

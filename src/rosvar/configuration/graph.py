@@ -53,7 +53,7 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
-from rosvar.ros.ros2_namespaces import full_name, make_absolute, prefix_namespace
+from rosvar.ros.ros2_namespaces import full_name, make_absolute, prefix_namespace, unnamed
 from rosvar.ros.ros2_parameters import ALL_NODES, Source, effective, typed
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
@@ -582,7 +582,7 @@ def _ros2_fields(
         except ValueError:
             continue  # not a value yet (an arg still open) or not readable: not shown
     return {
-        "name": fqn or names.ns_join(namespace, f"⟨{text.get('exec') or ''}⟩"),
+        "name": fqn or unnamed(namespace, text.get("exec")),
         "fqn": fqn,
         "namespace": namespace,
         "parameters": effective(fqn, sources),

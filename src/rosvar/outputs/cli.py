@@ -187,13 +187,15 @@ def _resolve_ros2(
 ) -> int:
     """``ros2 launch FILE name:=value``: the nodes it starts (in the ROS 2 oracle's shape)."""
     from rosvar.analyses.ros2.resolve import resolve_ros2
+    from rosvar.ros.ros2_namespaces import unnamed
 
     result = resolve_ros2(workspace, file, args, env)
     if as_json:
         _print_json(result.to_json())
     else:
         for node in result.nodes:
-            print(f"node  {node['fqn'] or node['name']}  ({node['package']}/{node['executable']})")
+            name = node["fqn"] or unnamed(node["namespace"], node["executable"])  # type: ignore[arg-type]
+            print(f"node  {name}  ({node['package']}/{node['executable']})")
             for name, value in node["parameters"].items():  # type: ignore[attr-defined]
                 print(f"  param {name} = {value!r}")
             for source, target in node["remappings"]:  # type: ignore[attr-defined]

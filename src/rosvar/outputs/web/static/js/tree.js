@@ -39,9 +39,14 @@ function element(tag, attributes = {}, ...children) {
   return node;
 }
 
+// A file's path below its package's folder; a package named apart from its folder (ROS 2's
+// ros2_control_demo_example_2 in example_2/) shows the path from its launch/ folder.
 function fileLabel(id, pkg) {
   const at = id.lastIndexOf(`${pkg}/`);
-  return at >= 0 ? id.slice(at + pkg.length + 1) : id;
+  if (at === 0 || (at > 0 && id[at - 1] === "/")) return id.slice(at + pkg.length + 1);
+  const parts = id.split("/");
+  const launch = parts.lastIndexOf("launch");
+  return launch >= 0 && launch < parts.length - 1 ? parts.slice(launch).join("/") : parts[parts.length - 1];
 }
 
 function chooseButtons() {
