@@ -262,6 +262,20 @@ def _command(host: Interpretation, context: Context, args: list[Raw]) -> Choice[
     return Choice.const(host.space, concat(["$(command ", args[0], ")"]))
 
 
+@substitution("find-exec")
+def _find_exec(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """Never searched: the executable is looked up on the ``PATH`` of the machine that
+    launches, which rosvar does not read; its value is the text ``$(find-exec NAME)``, as
+    ``$(command)``'s is, so the launch around it is analysed."""
+    if len(args) != 1:
+        return _fail(host, "$(find-exec) takes one argument", "substitution-invalid")
+    host.warn(
+        "exec-not-searched",
+        "$(find-exec) is never searched by rosvar: the PATH is the launching machine's",
+    )
+    return Choice.const(host.space, concat(["$(find-exec ", args[0], ")"]))
+
+
 @substitution("eval")
 def _eval(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
     if len(args) != 1 or not isinstance(args[0], str):
