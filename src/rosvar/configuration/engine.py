@@ -58,6 +58,7 @@ class FeatureState:
     kind: FeatureKind
     file: str
     package: str | None  # the ROS package of the file, as ``roslaunch``/``ros2 launch`` name it
+    doc: str | None  # an arg's description in its file
     arg: str | None
     value: str | None
     parent: str | None
@@ -69,7 +70,7 @@ class FeatureState:
 
     @cached_property
     def _document(self) -> dict[str, object]:
-        return {
+        document: dict[str, object] = {
             "kind": self.kind,
             "file": self.file,
             "package": self.package,
@@ -79,6 +80,9 @@ class FeatureState:
             "state": self.state,
             "derived": self.derived,
         }
+        if self.doc:  # on the few args that have one
+            document["doc"] = self.doc
+        return document
 
 
 _Row = tuple[str, str, dict[tuple[bool | None, bool], FeatureState]]
@@ -235,6 +239,9 @@ class Configurator:
                     feature.kind,
                     feature.file,
                     packages[feature.file],
+                    self.catalog.args[feature.id][0].doc
+                    if feature.kind == FeatureKind.ARG
+                    else None,
                     feature.arg,
                     feature.value,
                     feature.parent,

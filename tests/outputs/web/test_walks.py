@@ -129,7 +129,16 @@ def test_ros2_bringup_configured_in_the_page_launches_the_graph_it_showed(
         assert server["complete"] and command == server["command"]
         assert page.locator("#copy").is_enabled()
         shown = product_nodes(live, server, command)
-    words = shlex.split(command)
+        words = shlex.split(command)
+        # the tree names the package as the command does; a clicked arg shows its description
+        packages = [
+            text.split()[0] for text in page.locator(".package > summary").all_inner_texts()
+        ]
+        assert words[2] in packages
+        for value in clicks:
+            arg = f"{bringup}:{value.split('=')[0]}"
+            doc = page.locator(f'.feature[data-id="{arg}"] > p.doc').inner_text()
+            assert doc == server["features"][arg]["doc"] and doc
     assert words[:2] == ["ros2", "launch"] and len(words) >= 4, command
     assert dict(word.split(":=", 1) for word in words[4:]) == arguments
     launched = launch_file(root, words[2], words[3])

@@ -128,9 +128,10 @@ export class FeatureTree {
     const node = element("details", { class: "feature arg", "data-id": id },
       element("summary", { class: "row" },
         element("span", { class: "mark" }),
-        element("span", { class: "name", title: id, text: feature.arg }),
+        element("span", { class: "name", title: feature.doc ? `${feature.arg}: ${feature.doc}` : id, text: feature.arg }),
         element("span", { class: "hint", text: hint, title: hint }),
         chooseButtons()),
+      feature.doc ? element("p", { class: "doc", text: feature.doc }) : "",
       values);
     for (const [valueId, value] of children.get(id) ?? []) {
       values.append(value.value === OTHER ? this.otherNode(valueId, id) : this.valueNode(valueId, value));
