@@ -172,6 +172,18 @@ def test_resolve_a_ros2_file(tmp_path: Path, capsys: pytest.CaptureFixture[str])
     node, unnamed = json.loads(out)["nodes"]
     assert (node["fqn"], node["parameters"]) == ("/s/n", {"k": 1})
     assert (unnamed["name"], unnamed["fqn"], unnamed["namespace"]) == (None, None, "/s")
+    # the configured product's graph has the same nodes, drawn with ROS 2's fields
+    file = str(package / "a.launch.xml")
+    code, out, _err = run(
+        capsys, "configure", str(tmp_path), "--select", file, "--set", f"{file}:ns=r", "--json"
+    )
+    document = json.loads(out)
+    assert document["command"] == "ros2 launch p a.launch.xml"
+    shown = [
+        (n["name"], n["fqn"], n["namespace"], n["parameters"]) for n in document["graph"]["nodes"]
+    ]
+    assert shown == [("/r/n", "/r/n", "/r", {"k": 1}), ("/r/⟨anonymous⟩", None, "/r", {})]
+    schema_check(document, "configure.schema.json")
 
 
 def test_query_and_check_on_a_ros2_workspace(
