@@ -156,16 +156,35 @@ def test_resolve_a_ros2_file(tmp_path: Path, capsys: pytest.CaptureFixture[str])
     (package / "a.launch.xml").write_text(
         """<launch><arg name="ns" default="r"/>
         <node pkg="p" exec="e" name="n" namespace="$(var ns)"><param name="k" value="1"/></node>
+        <node pkg="p" exec="anonymous" namespace="$(var ns)"/>
         </launch>"""
     )
     code, out, _err = run(capsys, "resolve", str(tmp_path), "--launch", "p", "a.launch.xml")
     assert code == EXIT_OK
-    assert out.splitlines() == ["node  /r/n  (p/e)", "  param k = 1"]
+    # a node with no name is named by its executable at run time
+    assert out.splitlines() == [
+        "node  /r/n  (p/e)",
+        "  param k = 1",
+        "node  /r/⟨anonymous⟩  (p/anonymous)",
+    ]
     code, out, _err = run(
         capsys, "resolve", "--launch", str(package / "a.launch.xml"), "ns:=/s", "--json"
     )
-    [node] = json.loads(out)["nodes"]
+    node, unnamed = json.loads(out)["nodes"]
     assert (node["fqn"], node["parameters"]) == ("/s/n", {"k": 1})
+    assert (unnamed["name"], unnamed["fqn"], unnamed["namespace"]) == (None, None, "/s")
+    # the configured product's graph has the same nodes, drawn with ROS 2's fields
+    file = str(package / "a.launch.xml")
+    code, out, _err = run(
+        capsys, "configure", str(tmp_path), "--select", file, "--set", f"{file}:ns=r", "--json"
+    )
+    document = json.loads(out)
+    assert document["command"] == "ros2 launch p a.launch.xml"
+    shown = [
+        (n["name"], n["fqn"], n["namespace"], n["parameters"]) for n in document["graph"]["nodes"]
+    ]
+    assert shown == [("/r/n", "/r/n", "/r", {"k": 1}), ("/r/⟨anonymous⟩", None, "/r", {})]
+    schema_check(document, "configure.schema.json")
 
 
 def test_query_and_check_on_a_ros2_workspace(

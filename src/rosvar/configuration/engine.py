@@ -57,6 +57,8 @@ class FeatureState:
 
     kind: FeatureKind
     file: str
+    package: str | None  # the ROS package of the file, as ``roslaunch``/``ros2 launch`` name it
+    doc: str | None  # an arg's description in its file
     arg: str | None
     value: str | None
     parent: str | None
@@ -68,15 +70,19 @@ class FeatureState:
 
     @cached_property
     def _document(self) -> dict[str, object]:
-        return {
+        document: dict[str, object] = {
             "kind": self.kind,
             "file": self.file,
+            "package": self.package,
             "arg": self.arg,
             "value": self.value,
             "parent": self.parent,
             "state": self.state,
             "derived": self.derived,
         }
+        if self.doc:  # on the few args that have one
+            document["doc"] = self.doc
+        return document
 
 
 _Row = tuple[str, str, dict[tuple[bool | None, bool], FeatureState]]
@@ -221,11 +227,21 @@ class Configurator:
             for feature, value in values
             if value.slot is OTHER
         ]
+        packages = {
+            entry.id: None
+            if (package := analysis.workspace.package_of(entry.path)) is None
+            else package.name
+            for entry in self.catalog.files
+        }
         self._feature_states = {  # by feature: by (decided value, chosen by the user)
             feature.id: {
                 (decided, chosen): FeatureState(
                     feature.kind,
                     feature.file,
+                    packages[feature.file],
+                    self.catalog.args[feature.id][0].doc
+                    if feature.kind == FeatureKind.ARG
+                    else None,
                     feature.arg,
                     feature.value,
                     feature.parent,

@@ -32,6 +32,7 @@ from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.resolve import ResolutionError, test_fields
+from rosvar.analyses.ros2.resolve import parameter_file
 from rosvar.configuration.derivation import Presence
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
@@ -54,7 +55,8 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
-from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace
+from rosvar.ros.ros2_namespaces import full_name, make_absolute, prefix_namespace, unnamed
+from rosvar.ros.ros2_parameters import ALL_NODES, Source, effective, typed
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
 Fields = dict[str, object]
@@ -86,10 +88,11 @@ class Values:
 
 
 class PartKind(StrEnum):
-    """What a node's part sets: a remap or an environment variable."""
+    """What a node's part sets: a remap, an environment variable or (ROS 2) a parameter."""
 
     REMAP = "remap"
     ENV = "env"
+    PARAMETER = "parameter"
 
 
 @dataclass(frozen=True)
@@ -335,13 +338,17 @@ class VariationalGraph:
                 condition, [(r.condition, r.source, r.target) for r in node.remaps], parts
             )
             env = self._parted(condition, [(e.condition, e.name, e.value) for e in node.env], parts)
+            parameters = self._parted(condition, _parameter_settings(node), parts)
             element = self._add(
                 ElementKind.TEST if node.is_test else ElementKind.NODE,
                 new_id,
                 model.file,
                 condition,
-                _node_renderer(raw, remaps, env, node),
-                _needs(*raw.values(), *(p for pair in remaps + env for p in pair[:2])),
+                _node_renderer(raw, remaps, env, parameters, node),
+                _needs(
+                    *raw.values(),
+                    *(p for pair in remaps + env + parameters for p in pair[:2]),
+                ),
                 parts=tuple(parts),
             )
             if element is not None and not node.is_test:
@@ -553,10 +560,51 @@ _Setting = tuple[Raw, Raw, int | None]
 index of its part (None: the variant always has it)."""
 
 
+def _parameter_settings(node: NodeDecl) -> list[tuple[BDD, Raw, Raw]]:
+    """A ROS 2 node's parameters as settings, in order: ``(name, value)``, or ``("", file)``
+    for a parameter file (a parameter's name is never empty)."""
+    settings: list[tuple[BDD, Raw, Raw]] = []
+    for parameter in node.parameters:
+        if parameter.file is not None:
+            settings.append((parameter.condition, "", parameter.file))
+        elif parameter.name is not None and parameter.value is not None:
+            settings.append((parameter.condition, parameter.name, parameter.value))
+    return settings
+
+
+def _ros2_fields(
+    text: Mapping[str, str | None], parameters: Sequence[tuple[str | None, str | None]]
+) -> Fields:
+    """A ROS 2 node's name, namespace and parameters as ``ros2 launch`` composes them: the
+    pushed namespace, the node's own, its parameters merged in order (``resolve_ros2``'s).
+    A node with no name takes one from its executable at run time: it is drawn as
+    ``⟨EXEC⟩`` in its namespace, its ``fqn`` null."""
+    pushed, own = text.get("ros_namespace"), text.get("namespace")
+    namespace = make_absolute(prefix_namespace(pushed, own)) or "/"
+    name = text.get("name")
+    fqn = None if name is None else full_name(pushed, own, name)
+    sources: list[Source] = []
+    for first, second in parameters:
+        try:
+            if not first:
+                sources.append(Source(entries=tuple(parameter_file(second or ""))))
+            else:
+                sources.append(Source(entries=((ALL_NODES, {first: typed(second or "")}),)))
+        except ValueError:
+            continue  # not a value yet (an arg still open) or not readable: not shown
+    return {
+        "name": fqn or unnamed(namespace, text.get("exec")),
+        "fqn": fqn,
+        "namespace": namespace,
+        "parameters": effective(fqn, sources),
+    }
+
+
 def _node_renderer(
     raw: Mapping[str, Raw | None],
     remaps: list[_Setting],
     env: list[_Setting],
+    parameters: list[_Setting],
     node: NodeDecl,
 ) -> Render:
     def render(values: Values, parts: Sequence[Shown]) -> list[Fields]:
@@ -585,6 +633,11 @@ def _node_renderer(
                 extra = test_fields(text, node.location)
             except ResolutionError:
                 extra = {}
+        if "ros_namespace" in raw:  # a ROS 2 node
+            present = [
+                _present(PartKind.PARAMETER, p, values, parts, undetermined) for p in parameters
+            ]
+            extra = _ros2_fields(text, [p for p in present if p is not None])
         return [
             {
                 "name": names.ns_join(namespace, text.get("name") or ""),

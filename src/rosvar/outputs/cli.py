@@ -204,6 +204,7 @@ def _resolve_ros2(
     and the topics, services and actions their interfaces give."""
     from rosvar.analyses.communication import resolved_graph
     from rosvar.analyses.ros2.resolve import resolve_ros2
+    from rosvar.ros.ros2_namespaces import unnamed
 
     result = resolve_ros2(workspace, file, args, env)
     graph = resolved_graph(result.nodes, _interfaces(workspace, options))
@@ -211,7 +212,8 @@ def _resolve_ros2(
         _print_json({**result.to_json(), **graph})
     else:
         for node in result.nodes:
-            print(f"node  {node['fqn'] or node['name']}  ({node['package']}/{node['executable']})")
+            name = node["fqn"] or unnamed(node["namespace"], node["executable"])  # type: ignore[arg-type]
+            print(f"node  {name}  ({node['package']}/{node['executable']})")
             for name, value in node["parameters"].items():  # type: ignore[attr-defined]
                 print(f"  param {name} = {value!r}")
             for source, target in node["remappings"]:  # type: ignore[attr-defined]

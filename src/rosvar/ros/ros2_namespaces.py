@@ -28,3 +28,9 @@ def full_name(pushed: str | None, namespace: str | None, name: str) -> str:
     """A node's fully qualified name from the pushed namespace, its own and its name."""
     absolute = make_absolute(prefix_namespace(pushed, namespace))
     return (absolute or "").rstrip("/") + "/" + name
+
+
+def unnamed(namespace: str | None, executable: str | None) -> str:
+    """How a node with no name is shown: ``⟨EXEC⟩`` in its namespace (the executable names
+    it at run time; no launch file says how)."""
+    return (namespace or "").rstrip("/") + f"/⟨{executable or ''}⟩"

@@ -439,7 +439,7 @@ def generate_launch_description():
              parameters=[ParameterFile(os.path.join(here, 'p.yaml'), allow_substs=True),
                          {'robot_description': ParameterValue(description, value_type=str),
                           'home': home, 'names': names, **extra}]),
-        Node(package='demo'),
+        Node(package='demo', output={'stdout': 'screen', 'stderr': 'log'}),
     ])
 """,
         IMPORTS,
@@ -461,6 +461,11 @@ def generate_launch_description():
         (
             "note",
             "launch_ros.actions.Node() argument 'on_exit' has no XML equivalent; not analysed",
+        ),
+        (  # launch takes one output per stream; the streams do not change the graph
+            "note",
+            "launch_ros.actions.Node() argument 'output' as a dict (one per stream) has no XML "
+            "equivalent; not analysed",
         ),
     ]
 

@@ -40,3 +40,22 @@ def test_anon_names_are_kept_per_id_and_scoped_by_groups(tmp_path: Path) -> None
     names = [node["name"] for node in result.nodes]
     assert names[0] == names[1] and names[2] != names[3]
     assert all(str(name).startswith(("n_", "m_")) for name in names)
+
+
+def test_find_exec_is_kept_as_its_text_with_a_warning(tmp_path: Path) -> None:
+    """The PATH that ``$(find-exec)`` searches is the launching machine's: the value stays
+    the substitution's text, inside a ``$(command)`` too, and the launch goes on."""
+    (tmp_path / "package.xml").write_text("<package format='3'><name>p</name></package>")
+    file = tmp_path / "a.launch.xml"
+    file.write_text(
+        """<launch><arg name="tool" default="xacro"/>
+          <node pkg="p" exec="e" name="n">
+            <param name="d" value="$(command '$(find-exec $(var tool)) f.xacro')"/>
+          </node>
+          <node pkg="p" exec="e" name="m" args="$(find-exec)"/>
+        </launch>"""
+    )
+    workspace = discover([str(tmp_path)])
+    result = resolve_ros2(workspace, str(file), {"tool": "ros2"})
+    assert result.nodes[0]["parameters"] == {"d": "$(command $(find-exec ros2) f.xacro)"}
+    assert [error["code"] for error in result.errors] == ["substitution-invalid"]

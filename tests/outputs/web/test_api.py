@@ -208,12 +208,16 @@ def test_a_ros2_workspace_is_served_with_its_ros2_launch_command(tmp_path: Path)
         "<export><build_type>ament_cmake</build_type></export></package>"
     )
     (package / "launch" / "main.launch.xml").write_text(
-        '<launch><arg name="robot" default="a"><choice value="a"/><choice value="b"/></arg>'
+        '<launch><arg name="robot" default="a" description="Which robot">'
+        '<choice value="a"/><choice value="b"/></arg>'
         '<node pkg="pkg" exec="e" name="$(var robot)"/></launch>'
     )
     with running(configurator([tmp_path])) as live:
         reply = live.open()
         file = first_of(reply, "file")
+        # the tree's package and the arg's description, as the file gives them
+        assert reply["features"][file]["package"] == "pkg"
+        assert reply["features"][f"{file}:robot"]["doc"] == "Which robot"
         body = {"session": reply["session"], "action": "select", "feature": file}
         after = live.post("/api/choose", body)
         value = next(

@@ -1,19 +1,30 @@
-"""A random walk through Husky's page to a complete product, as a user clicking around.
+"""Walks through a page to a complete product, as a user clicking around.
 
-Seeded random clicks in the feature tree (files in or out, values, typed ``<other>`` texts),
-then "Finish with defaults" and the texts still asked for. After every step the page shows
-the server's state, no placeholder in the command box or in a label of the graph, no ⚠ while
-the product has no conflict, and the command once complete; the graph reads well (no
-overlaps, a legible zoom) at the start, midway and at the end.
+Husky (ROS 1): seeded random clicks in the feature tree (files in or out, values, typed
+``<other>`` texts), then "Finish with defaults" and the texts still asked for. After every
+step the page shows the server's state, no placeholder in the command box or in a label of
+the graph, no ⚠ while the product has no conflict, and the command once complete; the graph
+reads well (no overlaps, a legible zoom) at the start, midway and at the end.
+
+ROS 2 (``tests/data/ros2``): a bringup file configured step by step, its ``ros2 launch``
+command read off the page and run by the real ros2/launch (the ROS 2 oracle), whose nodes
+must be those the page's product has.
 """
 
 from __future__ import annotations
 
+import json
 import random
+import shlex
+from pathlib import Path
 from typing import Any
 
-from outputs.web.live import Live
+import pytest
+
+from oracle.ros2_client import ORACLE, run_oracle
+from outputs.web.live import REPO, Live, configurator, running
 from outputs.web.test_app import LEGIBLE_ZOOM, OTHER, App, overlapping
+from rosvar.workspace import discover
 
 PLACEHOLDERS = ("⟨", "<default:", "<other>", "$(")
 CLICKS = 8
@@ -76,3 +87,101 @@ def assert_readable(app: App) -> None:
     app.wait_for_layout()
     assert app.page.evaluate("window.rosvar.graph.cy.zoom()") >= LEGIBLE_ZOOM
     assert overlapping(app) == []
+
+
+# -- ROS 2: a bringup configured in the page, launched by the real ros2/launch ------------------
+ROS2_DATA = REPO / "tests" / "data" / "ros2"
+
+
+BRINGUPS = {  # repository: (launch file, values clicked in the tree, the command's arguments)
+    "ros2_control_demos": (
+        "example_2/bringup/launch/diffbot.launch.xml",
+        ["gui=false"],
+        {"gui": "false"},
+    ),
+    "husky": ("husky_control/launch/teleop_base.launch.py", [], {}),
+}
+
+
+@pytest.mark.oracle
+@pytest.mark.skipif(not ORACLE.is_dir(), reason=f"the ROS 2 oracle {ORACLE} is absent")
+@pytest.mark.parametrize("repository", sorted(BRINGUPS))
+def test_ros2_bringup_configured_in_the_page_launches_the_graph_it_showed(
+    page: Any, repository: str
+) -> None:
+    """A bringup file selected in the tree, values clicked, the rest finished with defaults;
+    the command on the page, run by the oracle, starts the nodes of the page's product
+    (package, executable, name, namespace, parameters, remaps, arguments)."""
+    root = ROS2_DATA / repository
+    file, clicks, arguments = BRINGUPS[repository]
+    with running(configurator([root])) as live:
+        app = App(page, live)
+        bringup = next(
+            key for key, f in app.features.items()
+            if f["kind"] == "file" and key.endswith(f"{repository}/{file}")
+        )  # fmt: skip
+        app.choose(bringup, "select")
+        for value in clicks:
+            app.choose(f"{bringup}:{value}", "select")
+        app.wait_for_update(lambda: page.click("#finish"))
+        server = app.assert_shows_server_state()
+        command = page.locator("#command").inner_text()
+        assert server["complete"] and command == server["command"]
+        assert page.locator("#copy").is_enabled()
+        shown = product_nodes(live, server, command)
+        words = shlex.split(command)
+        # the tree names the package as the command does; a clicked arg shows its description
+        packages = [
+            text.split()[0] for text in page.locator(".package > summary").all_inner_texts()
+        ]
+        assert words[2] in packages
+        for value in clicks:
+            arg = f"{bringup}:{value.split('=')[0]}"
+            doc = page.locator(f'.feature[data-id="{arg}"] > p.doc').inner_text()
+            assert doc == server["features"][arg]["doc"] and doc
+    assert words[:2] == ["ros2", "launch"] and len(words) >= 4, command
+    assert dict(word.split(":=", 1) for word in words[4:]) == arguments
+    launched = launch_file(root, words[2], words[3])
+    assert launched == root / file
+    expected = run_oracle(launched, arguments, [root], strict=False)
+    assert expected["ok"], expected.get("error")
+    assert expected["nodes"]
+    assert sorted(map(oracle_node, expected["nodes"])) == sorted(map(page_node, shown))
+
+
+def launch_file(root: Path, package: str, name: str) -> Path:
+    """The file ``ros2 launch PACKAGE NAME`` starts: the one of that name in the package."""
+    folder = Path(discover([str(root)]).packages[package].path)
+    found = [path for path in folder.rglob(name) if path.is_file()]
+    assert len(found) == 1, found
+    return found[0]
+
+
+def product_nodes(live: Live, server: dict[str, Any], command: str) -> list[dict[str, Any]]:
+    """The present nodes of the page's product: the page's choices replayed in a session of
+    the same server that sends whole graphs (the page may draw groups fetched on demand)."""
+    session = live.open()["session"]
+    state: dict[str, Any] = {}
+    for choice in server["choices"]:
+        state = live.post("/api/choose", {"session": session, **choice})
+    assert state["command"] == command
+    return [node for node in state["graph"]["nodes"] if node["presence"] == "present"]
+
+
+Node = tuple[str, str, str | None, str, str, str, str]
+
+
+def oracle_node(node: dict[str, Any]) -> Node:
+    return (
+        node["package"], node["executable"], node["fqn"], node["namespace"] or "/",
+        json.dumps(node["parameters"], sort_keys=True),
+        json.dumps(sorted(node["remappings"])), json.dumps(node["arguments"]),
+    )  # fmt: skip
+
+
+def page_node(node: dict[str, Any]) -> Node:
+    return (
+        node["package"], node["type"], node["fqn"], node["namespace"],
+        json.dumps(node["parameters"], sort_keys=True),
+        json.dumps(sorted(node["remaps"])), json.dumps(shlex.split(node.get("args") or "")),
+    )  # fmt: skip

@@ -189,6 +189,7 @@ def extract(
                 boolean={s for s in domain if isinstance(s, str)} <= {"true", "false"}
                 and any(isinstance(s, str) for s in domain),
                 location=decl.location if decl else None,
+                doc=decl.doc if decl else None,
             )
             for slot in domain:
                 if slot is UNSET and (decl is None or decl.default is None):

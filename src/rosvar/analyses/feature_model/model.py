@@ -58,6 +58,7 @@ class ArgFeature:
     default: str | None
     boolean: bool
     location: Location | None
+    doc: str | None = None  # what the file says the arg is for (``doc``, ROS 2 ``description``)
     values: list[ValueFeature] = field(default_factory=list)
 
 

@@ -152,7 +152,7 @@ def _node(decl: NodeDecl, view: View, warnings: list[dict[str, object]]) -> dict
     sources: list[Source] = []
     for parameter in given.parameters:
         if isinstance(parameter, str):
-            sources.append(Source(entries=tuple(_file(parameter))))
+            sources.append(Source(entries=tuple(parameter_file(parameter))))
         else:
             sources.append(Source(*parameter))
     for param in decl.parameters:
@@ -176,7 +176,7 @@ def _node(decl: NodeDecl, view: View, warnings: list[dict[str, object]]) -> dict
                     }
                 )
                 continue
-            sources.append(Source(entries=tuple(_file(path))))
+            sources.append(Source(entries=tuple(parameter_file(path))))
         elif param.name is not None and param.value is not None:
             # global (-p) and inline (a generated file) parameters both apply to /**
             value = typed(known(param.value, "parameter value"))
@@ -203,7 +203,8 @@ def _node(decl: NodeDecl, view: View, warnings: list[dict[str, object]]) -> dict
     }
 
 
-def _file(path: str) -> list[tuple[str, dict[str, object]]]:
+def parameter_file(path: str) -> list[tuple[str, dict[str, object]]]:
+    """A parameter file's entries (node pattern, parameters); ``ValueError`` when unreadable."""
     try:
         text = read_file(path).decode()
     except (FileRefused, OSError, UnicodeDecodeError) as error:

@@ -335,7 +335,14 @@ def _action(spec: ActionSpec) -> Callable[[Call], Value]:
         if len(call.args) > len(spec.params):
             call.not_followed(f"extra positional arguments of {call.name}()")
         for param, value in given:
-            if value is not None:  # None is each argument's default: nothing to write
+            if param.xml == "output" and isinstance(value, dict):  # launch's output per stream
+                call.sink.note(
+                    "python-launch-argument",
+                    f"{call.name}() argument 'output' as a dict (one per stream) has no XML "
+                    "equivalent; not analysed",
+                    call.location,
+                )
+            elif value is not None:  # None is each argument's default: nothing to write
                 WRITERS[param.slot](call, entity, param, value)
         return entity
 

@@ -60,7 +60,7 @@ export class Bar {
     const stopKey = stops.map((error) => error.id).join(" ");
     if (!refused.length && stops.length && stopKey !== this.stopKey) { // told once, not every step
       const first = stops[0];
-      this.notify([`roslaunch would stop on this configuration: ${first.message}`,
+      this.notify([`the launch would stop on this configuration: ${first.message}`,
                    `at ${shortPath(first.file)}:${first.line}`
                    + (stops.length > 1 ? ` (and ${stops.length - 1} more such error${stops.length > 2 ? "s" : ""})` : "")]);
     }
@@ -108,7 +108,7 @@ export class Bar {
 // product can lack one), or a file to launch.
 function pendingText(state) {
   if (!state.complete) {
-    return `Choose features until none is left (${readableCount(state.unselected)} to go); the roslaunch command appears here.`;
+    return `Choose features until none is left (${readableCount(state.unselected)} to go); the launch command appears here.`;
   }
   const untyped = state.untyped ?? [];
   if (!untyped.length) return "Nothing to launch: no launch file is selected.";
@@ -117,5 +117,5 @@ function pendingText(state) {
     return arg ? `${arg.arg} of ${shortPath(arg.file)}` : shortenPaths(id);
   });
   const more = untyped.length > 3 ? ` and ${untyped.length - 3} more` : "";
-  return `Type a value of your own for ${named.join(", ")}${more}; the roslaunch command appears then.`;
+  return `Type a value of your own for ${named.join(", ")}${more}; the launch command appears then.`;
 }

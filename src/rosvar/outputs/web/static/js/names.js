@@ -31,7 +31,7 @@ export function shortPath(path) {
 
 // Every launch-file path in a text (engine messages name files by long relative paths).
 export function shortenPaths(text) {
-  return String(text).replace(/(?:[\w.⟨⟩-]+\/)+[\w.⟨⟩-]+\.(?:launch|xml|test)\b/g, shortPath);
+  return String(text).replace(/(?:[\w.⟨⟩-]+\/)+[\w.⟨⟩-]+\.(?:launch|xml|test|py|yaml|yml)\b/g, shortPath);
 }
 
 export function baseName(path) {

@@ -39,9 +39,14 @@ function element(tag, attributes = {}, ...children) {
   return node;
 }
 
+// A file's path below its package's folder; a package named apart from its folder (ROS 2's
+// ros2_control_demo_example_2 in example_2/) shows the path from its launch/ folder.
 function fileLabel(id, pkg) {
   const at = id.lastIndexOf(`${pkg}/`);
-  return at >= 0 ? id.slice(at + pkg.length + 1) : id;
+  if (at === 0 || (at > 0 && id[at - 1] === "/")) return id.slice(at + pkg.length + 1);
+  const parts = id.split("/");
+  const launch = parts.lastIndexOf("launch");
+  return launch >= 0 && launch < parts.length - 1 ? parts.slice(launch).join("/") : parts[parts.length - 1];
 }
 
 function chooseButtons() {
@@ -123,9 +128,10 @@ export class FeatureTree {
     const node = element("details", { class: "feature arg", "data-id": id },
       element("summary", { class: "row" },
         element("span", { class: "mark" }),
-        element("span", { class: "name", title: id, text: feature.arg }),
+        element("span", { class: "name", title: feature.doc ? `${feature.arg}: ${feature.doc}` : id, text: feature.arg }),
         element("span", { class: "hint", text: hint, title: hint }),
         chooseButtons()),
+      feature.doc ? element("p", { class: "doc", text: feature.doc }) : "",
       values);
     for (const [valueId, value] of children.get(id) ?? []) {
       values.append(value.value === OTHER ? this.otherNode(valueId, id) : this.valueNode(valueId, value));
