@@ -131,15 +131,15 @@ def test_feature_tree_from_the_catalog_and_the_state_string(
     assert len(compact["features"]) == len(rows) == len(whole["features"])
     codes = {"u": ("unselected", False), "s": ("selected", False), "d": ("deselected", False)}
     codes |= {"S": ("selected", True), "D": ("deselected", True)}
-    for (key, kind, _file, arg, value, _parent, default), code in zip(
-        rows, compact["features"], strict=True
+    for number, ((key, kind, _file, arg, value, _parent, default, _package, doc), code) in (
+        enumerate(zip(rows, compact["features"], strict=True))
     ):
         feature = whole["features"][key]
-        row = rows.index([key, kind, _file, arg, value, _parent, default])
-        while rows[row][2] is None:  # a file's row names it
+        row = number
+        while rows[row][2] is None:  # a file's row names it and its package
             row = rows[row][5]
-        assert (kind, rows[row][2], arg, value) == tuple(
-            feature[field] for field in ("kind", "file", "arg", "value")
+        assert (kind, rows[row][2], rows[row][7], arg, value, doc) == tuple(
+            feature.get(field) for field in ("kind", "file", "package", "arg", "value", "doc")
         )
         assert codes[code] == (feature["state"], feature["derived"])
         values = examples_engine.catalog.values_of(feature["parent"]) if kind == "value" else []

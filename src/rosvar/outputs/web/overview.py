@@ -266,9 +266,9 @@ SELECTIONS = {
 
 def catalog(configurator: Configurator) -> list[list[object]]:
     """The feature tree's fixed part, in tree order: ``[id, kind, file, arg, value, parent,
-    default]`` per feature: ``file`` on a file's row only (the others are their file's),
-    ``parent`` the row of its parent (-1: none), ``default`` whether it is its arg's default
-    value."""
+    default, package, doc]`` per feature: ``file`` and ``package`` on a file's row only (the
+    others are their file's), ``parent`` the row of its parent (-1: none), ``default`` whether
+    it is its arg's default value, ``doc`` an arg's description (None: none)."""
     features = configurator.state([]).features
     row = {key: number for number, key in enumerate(features)}
     defaults = {
@@ -286,6 +286,8 @@ def catalog(configurator: Configurator) -> list[list[object]]:
             f.value,
             row[f.parent] if f.parent is not None else -1,
             key in defaults,
+            f.package if f.parent is None else None,
+            f.doc,
         ]
         for key, f in features.items()
     ]

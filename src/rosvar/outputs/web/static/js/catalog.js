@@ -1,6 +1,6 @@
 // The feature tree's fixed part (GET /api/catalog, once) and each state's selections, one
 // character per feature in the catalog's order: together the features as the tree and the
-// bar read them ({kind, file, arg, value, parent, state, derived} by id).
+// bar read them ({kind, file, package, arg, value, parent, doc?, state, derived} by id).
 
 const SELECTIONS = {
   u: ["unselected", false],
@@ -11,13 +11,16 @@ const SELECTIONS = {
 };
 
 export class Catalog {
-  // rows: [id, kind, file, arg, value, parent row, default] in tree order.
+  // rows: [id, kind, file, arg, value, parent row, default, package, doc] in tree order.
   constructor(rows) {
     this.ids = rows.map(([id]) => id);
-    const fileOf = (row) => (rows[row][2] ?? fileOf(rows[row][5]));
-    this.fixed = rows.map(([, kind, , arg, value, parent], row) => ({
-      kind, file: fileOf(row), arg, value, parent: parent < 0 ? null : rows[parent][0],
-    }));
+    const fileRow = (row) => (rows[row][5] < 0 ? row : fileRow(rows[row][5]));
+    this.fixed = rows.map(([, kind, , arg, value, parent, , , doc], row) => {
+      const [, , file, , , , , pkg] = rows[fileRow(row)];
+      const fixed = { kind, file, package: pkg, arg, value, parent: parent < 0 ? null : rows[parent][0] };
+      if (doc) fixed.doc = doc;
+      return fixed;
+    });
     // arg id → the id of its default value
     this.defaults = Object.fromEntries(rows.filter((row) => row[6]).map(([id, , , , , parent]) => [rows[parent][0], id]));
     this.selection = null;
