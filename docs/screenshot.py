@@ -3,26 +3,23 @@
     python docs/screenshot.py [--out FILE] [--corpus DIR]
 
 Serves Husky (``DIR/husky``, its dependencies in ``DIR/_external``; default: the shared
-corpus next to the repository, or ``$ROSVAR_CORPUS``) in-process on a free loopback port,
-opens it in headless Chromium (Debian's ``/usr/bin/chromium`` through Playwright, as the
-browser tests do) at 1400×900, makes a few choices as a user would (a world, a robot
-description, one node's details: a configuration half done) and saves the page.
+corpus next to the repository, or ``$ROSVAR_CORPUS``) with ``rosvar serve --port 0`` as a
+user runs it (node interfaces, catalogue and checks included), opens it in headless Chromium
+(Debian's ``/usr/bin/chromium`` through Playwright, as the browser tests do) at 1400×900,
+makes a few choices as a user would (a world, a robot description, one node's details: a
+configuration half done) and saves the page.
 """
 
 from __future__ import annotations
 
 import argparse
 import os
-import threading
+import re
+import subprocess
+import sys
 from pathlib import Path
 
 from playwright.sync_api import Page, sync_playwright
-
-from rosvar.analyses.feature_model.extraction import extract
-from rosvar.configuration.engine import Configurator
-from rosvar.interpreter.workspace_models import Analysis
-from rosvar.outputs.web.server import make_server
-from rosvar.workspace import discover
 
 DOCS = Path(__file__).resolve().parent
 CORPUS = Path(os.environ.get("ROSVAR_CORPUS", DOCS.parent.parent / "shared" / "corpus"))
@@ -55,6 +52,7 @@ def stage(page: Page) -> None:
     page.locator(f'.feature[data-id="{playpen}"] > summary .name').click()
     page.locator(f'.feature[data-id="{playpen}"]').scroll_into_view_if_needed()
     page.wait_for_selector('#graph[data-layout="done"]')
+    page.wait_for_load_state("networkidle")  # the checks and the group members answered
 
 
 def main() -> None:
@@ -62,24 +60,23 @@ def main() -> None:
     parser.add_argument("--corpus", type=Path, default=CORPUS)
     parser.add_argument("--out", default=str(DOCS / "web-ui.png"))
     options = parser.parse_args()
-    workspace = discover(
-        [str(options.corpus / "husky")], ros_package_path=str(options.corpus / "_external")
-    )
-    analysis = Analysis(workspace)
-    server = make_server(Configurator(analysis, extract(analysis, products=True)), port=0)
-    threading.Thread(target=server.serve_forever, daemon=True).start()
+    command = [sys.executable, "-m", "rosvar", "serve", str(options.corpus / "husky")]
+    command += ["--deps", str(options.corpus / "_external"), "--port", "0"]
+    server = subprocess.Popen(command, stdout=subprocess.PIPE, text=True)
     try:
+        assert server.stdout is not None
+        address = next(m[1] for line in server.stdout if (m := re.search(r"(http://\S+)", line)))
         with sync_playwright() as playwright:
             browser = playwright.chromium.launch(executable_path=CHROMIUM)
             page = browser.new_page(viewport={"width": 1400, "height": 900})
-            page.goto(server.url)
+            page.goto(address)
             page.wait_for_selector("body[data-step]")
             stage(page)
             page.screenshot(path=options.out)
             browser.close()
     finally:
-        server.shutdown()
-        server.server_close()
+        server.terminate()
+        server.wait()
     print(f"wrote {options.out}")
 
 
