@@ -187,6 +187,11 @@ def test_resolve_a_ros2_file(tmp_path: Path, capsys: pytest.CaptureFixture[str])
     ]
     assert shown == [("/r/n", "/r/n", "/r", {"k": 1}), ("/r/⟨anonymous⟩", None, "/r", {})]
     schema_check(document, "configure.schema.json")
+    _code, out, _err = run(
+        capsys, "configure", str(tmp_path), "--select", file, "--set", f"{file}:ns=r"
+    )
+    assert "nodes: 2 present, 0 undetermined" in out.splitlines()
+    assert "params: 1 on the present nodes (a ROS 2 node holds its own)" in out.splitlines()
 
 
 def test_query_and_check_on_a_ros2_workspace(

@@ -21,7 +21,7 @@ import sys
 import time
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 from rosvar import __version__
 from rosvar.configuration.choices import Action
@@ -404,12 +404,13 @@ def cmd_configure(options: argparse.Namespace) -> int:
     if options.json:
         _print_json(state.to_json())
     else:
-        _print_state(state)
+        _print_state(state, analysis.workspace.ros_version)
     return EXIT_FAILS if state.refused else EXIT_OK
 
 
-def _print_state(state: ConfigurationState) -> None:
-    """The summary of a configuration step, for people."""
+def _print_state(state: ConfigurationState, ros: RosVersion) -> None:
+    """The summary of a configuration step, for people (a ROS 2 node holds its own
+    parameters: they are counted on the nodes, not as the parameter server's)."""
     from rosvar.analyses.feature_model.model import FeatureKind
     from rosvar.configuration.derivation import Presence
     from rosvar.configuration.engine import Selection
@@ -427,12 +428,19 @@ def _print_state(state: ConfigurationState) -> None:
     chosen = [k for k, f in files if f.state == Selection.SELECTED]
     print(f"selected files: {', '.join(chosen) if chosen else 'none'}")
     summary = state.summary  # the graph in numbers: no condition described
-    for kind, element in (("nodes", ElementKind.NODE), ("params", ElementKind.PARAM)):
+    kinds = [("nodes", ElementKind.NODE)]
+    if ros is RosVersion.ROS1:
+        kinds.append(("params", ElementKind.PARAM))
+    for kind, element in kinds:
         counts = summary.counts[element]
         print(
             f"{kind}: {counts[Presence.PRESENT]} present, "
             f"{counts[Presence.UNDETERMINED]} undetermined"
         )
+    if ros is RosVersion.ROS2:
+        present = [n for n in state.graph.nodes if n["presence"] == Presence.PRESENT]
+        owned = sum(len(cast("dict[str, object]", n.get("parameters") or {})) for n in present)
+        print(f"params: {owned} on the present nodes (a ROS 2 node holds its own)")
     for error in summary.errors:
         print(f"error: {error['file']}:{error['line']}: {error['message']}")
     for conflict in state.conflicts:
