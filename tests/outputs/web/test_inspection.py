@@ -10,6 +10,7 @@ import pytest
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
 from outputs.web.test_app import App
+from rosvar.outputs.web import inspection
 from rosvar.outputs.web.overview import key_of
 
 if TYPE_CHECKING:
@@ -158,6 +159,26 @@ def drawn(app: App, entry: str) -> str | None:
     [node] = [n for n in app.whole["graph"]["nodes"] if n["id"] == entry]
     [unit] = app.drawers([node])
     return unit
+
+
+def test_answers_list_the_first_results_and_count_them_all(
+    small: Live, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A large workspace's findings would make an answer of megabytes: the first are listed,
+    the same as the whole list begins with, and all are counted."""
+    session = small.open()["session"]
+    whole = small.post("/api/checks", {"session": session})
+    nodes = ask(small, session, "nodes")
+    assert whole["total"] == len(whole["findings"]) >= 1 and len(nodes) >= 2
+    monkeypatch.setattr(inspection, "LISTED", 1)
+    answer = small.post("/api/query", {"session": session, "expression": "nodes"})
+    assert answer["results"] == nodes[:1] and answer["total"] == len(nodes)
+    monkeypatch.setattr(inspection, "LISTED", 0)
+    cut = small.post("/api/checks", {"session": session})
+    assert cut["findings"] == [] and (cut["total"], cut["counts"]) == (
+        whole["total"],
+        whole["counts"],
+    )
 
 
 def test_the_query_box_marks_its_results_and_follows_the_choices(page: Any, small: Live) -> None:

@@ -29,6 +29,9 @@ from rosvar.outputs.web.overview import Grouping, key_of, labels
 from rosvar.workspace.interfaces.model import Interfaces
 
 Reply = dict[str, object]
+LISTED = 250
+"""Results and findings an answer lists (the worst first), so that no answer grows with the
+workspace: a large one's whole list of findings is megabytes; the counts cover them all."""
 NAMED = frozenset(KINDS.values())
 """Kinds of query results that are graph entries by their name alone."""
 _Place = tuple[str, str, int]
@@ -60,9 +63,10 @@ class Inspector:
         self._findings: list[Finding] | None = None
 
     def query(self, text: str, state: ConfigurationState, grouping: Grouping | None) -> Reply:
-        """The elements ``text`` selects in the configurations ``state`` leaves (with
-        ``grouping``, each with the ``groups`` of its ``ids``); raises
-        :class:`~rosvar.analyses.query.parser.QueryError` for a query it refuses."""
+        """The elements ``text`` selects in the configurations ``state`` leaves, the first
+        :data:`LISTED` of them, all counted (with ``grouping``, each with the ``groups`` of its
+        ``ids``); raises :class:`~rosvar.analyses.query.parser.QueryError` for a query it
+        refuses."""
         if self._engine is None:
             interfaces = self._configurator.graph.interfaces
             collections = None if interfaces is None else channel_collections(interfaces)
@@ -96,13 +100,13 @@ class Inspector:
                     **places.identify(ids),
                 }
             )
-        return {"query": text, "results": results}
+        return {"query": text, "results": results[:LISTED], "total": len(results)}
 
     def checks(self, state: ConfigurationState, grouping: Grouping | None) -> Reply:
         """The findings of ``rosvar check`` not absent from the configurations ``state``
-        leaves, the worst first; one reached from several entry files is listed once (from
-        an entry file where it is present, if there is one). With ``grouping``, each has the
-        ``groups`` of its ``ids``."""
+        leaves, the worst first (the first :data:`LISTED`, all counted); one reached from
+        several entry files is listed once (from an entry file where it is present, if there
+        is one). With ``grouping``, each has the ``groups`` of its ``ids``."""
         decisions = self._configurator.decisions(state.choices)
         places = _Places(state.graph, grouping)
         shown: dict[tuple[object, ...], Reply] = {}
@@ -136,7 +140,7 @@ class Inspector:
             key=lambda f: (order[str(f["severity"])], f["presence"] != Presence.PRESENT),
         )
         counts = {s.value: sum(f["severity"] == s.value for f in findings) for s in Severity}
-        return {"findings": findings, "counts": counts}
+        return {"findings": findings[:LISTED], "counts": counts, "total": len(findings)}
 
     def findings(self) -> list[Finding]:
         """Every entry file's findings, listed on first use (each file on its own: a tab

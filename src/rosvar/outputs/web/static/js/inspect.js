@@ -74,8 +74,9 @@ export class QueryBox {
     try {
       const answer = await this.latest.ask("/api/query", { session: this.session(), expression });
       if (answer === null) return;
-      const count = answer.results.length;
-      this.show(answer.results, `${count} result${count === 1 ? "" : "s"}`);
+      const count = answer.total;
+      const listed = count > answer.results.length ? ` (the first ${answer.results.length} listed)` : "";
+      this.show(answer.results, `${count} result${count === 1 ? "" : "s"}${listed}`);
     } catch (error) {
       if (!(error instanceof ApiError) || error.status !== 400) throw error;
       this.input.classList.add("invalid");
@@ -131,6 +132,8 @@ export class ChecksPanel {
       row.addEventListener("click", () => this.choose(row, finding));
       return row;
     }));
+    const more = answer.total - answer.findings.length;
+    if (more > 0) this.list.append(item("finding more", span("message", `… ${more} more: rosvar check lists them all`)));
     if (this.chosen && !chosen) this.chosen = null;
     this.graph.highlight("check", chosen ? chosen.ids : [], chosen ? chosen.groups : []);
     document.body.dataset.checks = String(Number(document.body.dataset.checks ?? 0) + 1);
