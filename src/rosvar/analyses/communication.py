@@ -348,26 +348,26 @@ def resolved_graph(
 def _resolved_node(node: Mapping[str, object]) -> LaunchedNode:
     """A node of ``rosvar resolve`` (ROS 2's carry their ``executable``, their namespace
     already composed)."""
-    if "executable" not in node:
-        remaps = node.get("remaps") or []
-        assert isinstance(remaps, list)
-        fields = {
+    ros2 = "executable" in node
+    remaps = node.get("remappings" if ros2 else "remaps") or []
+    assert isinstance(remaps, list)
+    fields = (
+        {
+            "pkg": node.get("package"),
+            "type": node.get("executable"),
+            "ros_namespace": node.get("namespace"),
+            "name": node.get("name"),
+            "plugin": node.get("plugin"),
+        }
+        if ros2
+        else {
             "pkg": node.get("package"),
             "type": node.get("type"),
             "namespace": node.get("namespace"),
             "name": str(node["name"]).rsplit(names.SEP, 1)[-1],
             "args": node.get("args"),
         }
-        return LaunchedNode.of(fields, [(str(a), str(b)) for a, b in remaps])
-    remaps = node.get("remappings") or []
-    assert isinstance(remaps, list)
-    fields = {
-        "pkg": node.get("package"),
-        "type": node.get("executable"),
-        "ros_namespace": node.get("namespace"),
-        "name": node.get("name"),
-        "plugin": node.get("plugin"),
-    }
+    )
     return LaunchedNode.of(fields, [(str(a), str(b)) for a, b in remaps])
 
 
