@@ -146,13 +146,18 @@ def test_resolve_ok(workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[st
     assert "warning" not in _err
 
 
-def test_resolve_a_ros2_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    package = tmp_path / "p"
+def ament_package(package: Path) -> Path:
+    """An empty ROS 2 package ``p`` (ament_cmake) at ``package``."""
     package.mkdir()
     (package / "package.xml").write_text(
         "<package format='3'><name>p</name>"
         "<export><build_type>ament_cmake</build_type></export></package>"
     )
+    return package
+
+
+def test_resolve_a_ros2_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    package = ament_package(tmp_path / "p")
     (package / "a.launch.xml").write_text(
         """<launch><arg name="ns" default="r"/>
         <node pkg="p" exec="e" name="n" namespace="$(var ns)"><param name="k" value="1"/></node>
@@ -198,12 +203,7 @@ def test_query_and_check_on_a_ros2_workspace(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     """A ROS 2 node's executable is its ``exec``; the ROS 1 catalogue does not apply."""
-    package = tmp_path / "p"
-    package.mkdir()
-    (package / "package.xml").write_text(
-        "<package format='3'><name>p</name>"
-        "<export><build_type>ament_cmake</build_type></export></package>"
-    )
+    package = ament_package(tmp_path / "p")
     (package / "a.launch.xml").write_text(
         """<launch><arg name="joy" default="true"/>
         <node pkg="joy" exec="joy_node" name="joy" if="$(var joy)"/></launch>"""

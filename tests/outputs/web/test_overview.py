@@ -131,9 +131,10 @@ def test_feature_tree_from_the_catalog_and_the_state_string(
     assert len(compact["features"]) == len(rows) == len(whole["features"])
     codes = {"u": ("unselected", False), "s": ("selected", False), "d": ("deselected", False)}
     codes |= {"S": ("selected", True), "D": ("deselected", True)}
-    for number, ((key, kind, _file, arg, value, _parent, default, _package, doc), code) in (
-        enumerate(zip(rows, compact["features"], strict=True))
-    ):
+    for number, (
+        (key, kind, _file, arg, value, _parent, default, _package, doc),
+        code,
+    ) in enumerate(zip(rows, compact["features"], strict=True)):
         feature = whole["features"][key]
         row = number
         while rows[row][2] is None:  # a file's row names it and its package
