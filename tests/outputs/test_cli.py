@@ -54,6 +54,9 @@ BAD = {
 }
 
 
+CORPUS = Path(__file__).resolve().parents[3] / "shared" / "corpus"
+
+
 def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
     code = main(list(argv))
     out, err = capsys.readouterr()
@@ -118,6 +121,22 @@ def test_analyze_without_launch_files(tmp_path: Path, capsys: pytest.CaptureFixt
     assert code == EXIT_INPUT and "no launch files" in err
     code, _out, err = run(capsys, "analyze", str(tmp_path / "missing"))
     assert code == EXIT_INPUT and "no such file or directory" in err
+
+
+@pytest.mark.parametrize("json_output", [False, True])
+def test_analyze_prints_the_same_with_any_number_of_jobs(
+    json_output: bool, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Each process describes the conditions of its own files in its own BDD manager, with
+    the variables declared in another order: the output must not show it."""
+    husky, external = CORPUS / "husky", CORPUS / "_external"
+    if not husky.is_dir():
+        pytest.skip(f"corpus not found at {CORPUS}")
+    argv = ["analyze", str(husky), "--deps", str(external), *(["--json"] if json_output else [])]
+    alone = run(capsys, *argv, "--jobs", "1")
+    assert alone[0] == EXIT_OK and len(alone[1]) > 10_000
+    for jobs in ("2", "3"):
+        assert run(capsys, *argv, "--jobs", jobs) == alone
 
 
 # -- resolve ------------------------------------------------------------------------------------

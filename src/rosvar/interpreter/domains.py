@@ -234,6 +234,12 @@ class DomainTable:
     def env_domain(self, name: str) -> tuple[Slot, ...]:
         return (*dict.fromkeys(self._env.get(name, ())), UNSET, OTHER)
 
+    def read_all(self) -> None:
+        """Read every launch file and index their includes now rather than at the first
+        question (``Analysis.map_models`` shares them with forked processes)."""
+        if self._passed is None:
+            self._passed = self._index_includes()
+
     def passed_literals(self, file: str) -> dict[str, set[str]]:
         """Literal values that including files pass to ``file``'s args."""
         if self._passed is None:

@@ -7,7 +7,9 @@ import os
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass
+from typing import TypeVar
 
+from rosvar.forked import forked_map
 from rosvar.frontends import registry
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import ParseResult, Snapshot
@@ -27,6 +29,7 @@ from rosvar.workspace.paths import real_path
 from rosvar.workspace.ros_version import RosVersion
 
 Progress = Callable[[int, int, str], None]
+Result = TypeVar("Result")
 MAX_PASSES = 4
 """ROS 2: interpretations of one entry file at most, each knowing more undeclared args from
 the start (one, unless an included file's arg is read before it is declared)."""
@@ -67,6 +70,29 @@ class Analysis:
                     progress(index, len(files), file)
                 models.append(self.model(file))
         return models
+
+    def map_models(
+        self,
+        work: Callable[[LaunchModel], Result],
+        jobs: int = 1,
+        progress: Progress | None = None,
+    ) -> list[Result]:
+        """What ``work`` makes of each launch file's model, in the files' order, computed by
+        ``jobs`` processes (``rosvar.forked``), for outputs that need only data derived from
+        each model: the models stay in the process that built them. Every file is read and
+        the include index built first, so that the processes share them."""
+        files = self.workspace.launch_files
+        self.domains.read_all()
+
+        def worked(file: str) -> Result:
+            return work(self.model(file))
+
+        def shown(index: int) -> None:
+            if progress is not None:
+                progress(index, len(files), files[index])
+
+        with collector_paused():
+            return forked_map(files, worked, jobs, shown)
 
     def label(self, file: str) -> str:
         """The file as people name it: relative to the root it was found under, or its

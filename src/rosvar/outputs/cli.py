@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING, cast
 
 from rosvar import __version__
 from rosvar.configuration.choices import Action
-from rosvar.diagnostics import Location, Severity
+from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.outputs.exports import FORMATS
 from rosvar.ros.names import command_line_mappings
 from rosvar.workspace.ros_version import RosVersion
@@ -34,6 +34,7 @@ from rosvar.workspace.ros_version import RosVersion
 # and the web server are not what `--version`, `--help` or another command pays for.
 if TYPE_CHECKING:
     from rosvar.configuration.engine import ConfigurationState, Progress
+    from rosvar.interpreter.model import LaunchModel
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace import Workspace
     from rosvar.workspace.hints import Hints
@@ -41,6 +42,9 @@ if TYPE_CHECKING:
     from rosvar.workspace.packages import Package
 
 EXIT_OK, EXIT_FAILS, EXIT_USAGE, EXIT_INPUT, EXIT_TOO_LARGE = 0, 1, 2, 3, 4
+FILES_PER_JOB = 50
+"""Fewest launch files worth a process of their own when ``--jobs`` is not given (each
+takes a fork and the return of its results)."""
 
 
 def _progress(index: int, total: int, file: str) -> None:
@@ -69,6 +73,22 @@ def _building(tty_only: bool) -> Progress:
     return show
 
 
+def _jobs(requested: int | None, files: int) -> int:
+    """Processes to analyse ``files`` launch files with: as asked, else one per processor
+    this process may use but no fewer than ``FILES_PER_JOB`` files each."""
+    from rosvar.forked import available_jobs
+
+    if requested is not None:
+        return max(1, requested)
+    return max(1, min(available_jobs(), files // FILES_PER_JOB))
+
+
+def _analyzed_row(model: LaunchModel) -> tuple[tuple[str, int, int, int, int], list[Diagnostic]]:
+    """What ``analyze``'s table shows of ``model``, and its diagnostics."""
+    counts = (len(model.inputs), len(model.nodes), len(model.params), len(model.errors))
+    return (model.file, *counts), model.diagnostics
+
+
 def _print_json(document: object) -> None:
     """``document`` on stdout: indented for a terminal, on one line for a pipe or a file.
 
@@ -93,7 +113,7 @@ def _workspace(paths: Sequence[str], options: argparse.Namespace) -> Workspace:
 
 
 def cmd_analyze(options: argparse.Namespace) -> int:
-    from rosvar.interpreter.workspace_models import Analysis, collector_paused
+    from rosvar.interpreter.workspace_models import Analysis
     from rosvar.outputs.describe import describe_model
 
     workspace = _workspace(options.paths, options)
@@ -101,24 +121,21 @@ def cmd_analyze(options: argparse.Namespace) -> int:
         print("rosvar: no launch files found", file=sys.stderr)
         return EXIT_INPUT
     analysis = Analysis(workspace)
-    models = analysis.all_models(_progress)
+    jobs = _jobs(options.jobs, len(workspace.launch_files))
     if options.json:
-        with collector_paused():  # the models' data, as the models
-            document = {"files": [describe_model(m) for m in models]}
-        _print_json(document)
+        _print_json({"files": analysis.map_models(describe_model, jobs, _progress)})
         return EXIT_OK
+    rows = analysis.map_models(_analyzed_row, jobs, _progress)
     # a file included by several entry files reports its problems once per entry file: once here
-    diagnostics = list(dict.fromkeys(d for m in models for d in m.diagnostics))
-    print(f"{len(models)} launch files, {len(workspace.packages)} packages")
+    diagnostics = list(dict.fromkeys(d for _row, found in rows for d in found))
+    print(f"{len(rows)} launch files, {len(workspace.packages)} packages")
     print(f"{'file':<60} {'args':>5} {'nodes':>6} {'params':>7} {'errors':>7}")
-    for model in models:
-        name = _shown(model.file)
+    for (file, *counts), _found in rows:
+        name = _shown(file)
         if len(name) > 60:  # its tail, marked: the file names differ at the end
             name = "…" + name[-59:]
-        print(
-            f"{name:<60} {len(model.inputs):>5} {len(model.nodes):>6} "
-            f"{len(model.params):>7} {len(model.errors):>7}"
-        )
+        inputs, nodes, params, failed = counts
+        print(f"{name:<60} {inputs:>5} {nodes:>6} {params:>7} {failed:>7}")
     errors = [d for d in diagnostics if d.severity is Severity.ERROR]
     print(f"\n{len(diagnostics)} diagnostics ({len(errors)} errors)")
     for diagnostic in diagnostics[:20]:
@@ -806,6 +823,14 @@ def parser() -> argparse.ArgumentParser:
     _workspace_options(analyze)
     analyze.add_argument(
         "--json", action="store_true", help="the whole model as JSON (docs/json-schema.md)"
+    )
+    analyze.add_argument(
+        "-j",
+        "--jobs",
+        type=int,
+        metavar="N",
+        help="processes that analyse the files (default: one per processor, at least "
+        f"{FILES_PER_JOB} files each); the output is the same for every N",
     )
     analyze.set_defaults(run=cmd_analyze)
     res = _command(commands, "resolve", "one concrete configuration, as roslaunch would load it")
