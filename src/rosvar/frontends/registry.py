@@ -10,7 +10,6 @@ import os
 from collections.abc import Callable
 
 from rosvar.frontends.ros1_xml.parser import ParseResult, load_launch_file
-from rosvar.frontends.ros2_yaml.parser import parse_yaml_launch_file
 
 Loader = Callable[[str], ParseResult]
 FRONTENDS: dict[str, Loader] = {}
@@ -30,13 +29,20 @@ def frontend(*suffixes: str) -> Callable[[Loader], Loader]:
 
 
 frontend(".launch.xml", ".xml", ".launch")(load_launch_file)
-frontend(".launch.yaml", ".launch.yml", ".yaml", ".yml")(parse_yaml_launch_file)
+
+# ROS 2's own formats are imported on first use: the Python frontend's abstract interpreter and
+# the YAML loader are most of the frontends' import time, which a ROS 1 workspace never needs
+
+
+@frontend(".launch.yaml", ".launch.yml", ".yaml", ".yml")
+def _yaml_launch_file(path: str) -> ParseResult:
+    from rosvar.frontends.ros2_yaml.parser import parse_yaml_launch_file
+
+    return parse_yaml_launch_file(path)
 
 
 @frontend(".launch.py", ".py")
 def _python_launch_file(path: str) -> ParseResult:
-    """ROS 2's Python frontend, imported on first use: its abstract interpreter is most of
-    the frontends' import time, which a workspace without Python launch files never needs."""
     from rosvar.frontends.ros2_python.parser import parse_python_launch_file
 
     return parse_python_launch_file(path)

@@ -17,13 +17,6 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from rosvar.interpreter.model import Raw
-from rosvar.interpreter.safe_eval import (
-    EvalEnvironment,
-    EvalFailed,
-    EvalRefused,
-    evaluate,
-    referenced_args,
-)
 from rosvar.interpreter.scope import MISSING, Scope, _Missing
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.conditions import ConditionSpace
@@ -440,6 +433,9 @@ class Substituter:
 
     # -- $(eval) ------------------------------------------------------------------------
     def _eval(self, expression: str, scope: Scope) -> Choice[Value]:
+        # the evaluator is imported by the first file that needs it: most workspaces never do
+        from rosvar.interpreter.safe_eval import EvalRefused, referenced_args
+
         space = self.space
         if "__" in expression:
             return Choice.const(
@@ -577,6 +573,8 @@ def _run_eval(
     find: Callable[[str], str | None],
     anon: Callable[[str], str],
 ) -> Value:
+    from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
+
     def env(name: str) -> str:
         if name not in envs:
             raise EvalFailed(f"environment variable '{name}' is not set")

@@ -10,7 +10,6 @@ from dataclasses import dataclass
 from typing import TypeVar
 
 from rosvar.forked import forked_map
-from rosvar.frontends import registry
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.ros1_xml.parser import ParseResult, Snapshot
 from rosvar.interpreter import tags  # noqa: F401 - registers the tag handlers
@@ -18,8 +17,6 @@ from rosvar.interpreter.dialect import Dialect
 from rosvar.interpreter.domains import DomainTable, entry_declarations
 from rosvar.interpreter.interpretation import ROS1, Interpretation
 from rosvar.interpreter.model import LaunchModel
-from rosvar.interpreter.ros2 import interpretation as ros2
-from rosvar.interpreter.ros2.dialect import ROS2
 from rosvar.interpreter.scope import Scope
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
@@ -47,7 +44,7 @@ class Analysis:
     ) -> None:
         self.workspace = workspace
         self.space = ConditionSpace(len(workspace.launch_files))
-        self.reading = READINGS[workspace.ros_version]
+        self.reading = READINGS[workspace.ros_version]()
         self.files = Snapshot(self.reading.loader)
         self.domains = DomainTable(
             workspace, extra_values, env_values, extra_executables, files=self.files
@@ -187,6 +184,8 @@ def _walk_ros2(
     """``ros2 launch``: the declared launch arguments are the command line's, and the
     ``undeclared`` ones included files declare; the included files' args read where they
     were not set (before their declaration, or outside its group) are returned."""
+    from rosvar.interpreter.ros2 import interpretation as ros2
+
     context = ros2.entry_context(it, file, root, undeclared)
     ros2.walk_entry(it, root, context)
     return {n for n in it.model.settable if n in context.unset_reads and n not in undeclared}
@@ -201,10 +200,20 @@ class Reading:
     walk: Callable[[Interpretation, str, Entity, Mapping[str, str]], set[str]]
 
 
-READINGS: dict[RosVersion, Reading] = {
-    RosVersion.ROS1: Reading(ROS1, None, _walk_ros1),
-    RosVersion.ROS2: Reading(ROS2, registry.load, _walk_ros2),
-}
+def _ros1() -> Reading:
+    return Reading(ROS1, None, _walk_ros1)
+
+
+def _ros2() -> Reading:
+    from rosvar.frontends import registry
+    from rosvar.interpreter.ros2.dialect import ROS2
+
+    return Reading(ROS2, registry.load, _walk_ros2)
+
+
+READINGS: dict[RosVersion, Callable[[], Reading]] = {RosVersion.ROS1: _ros1, RosVersion.ROS2: _ros2}
+"""Each ROS's reading, made on first use: a ROS 1 analysis never imports ROS 2's tags,
+substitutions and frontends (nor the other way round more than the shared XML parser)."""
 
 
 @contextmanager
