@@ -624,6 +624,10 @@ COMMANDS: list[Command] = [
         peak_mb=150,
     ),
     Command(
+        "rosvar analyze uni-400 --json -j 1 (one process)",
+        _rosvar("analyze", "--json", "--jobs", "1", workload="uni-400"),
+    ),
+    Command(
         "rosvar analyze uni-2000 --json", _rosvar("analyze", "--json", workload="uni-2000"), 5.0
     ),
     Command(

@@ -83,6 +83,14 @@ def _jobs(requested: int | None, files: int) -> int:
     return max(1, min(available_jobs(), files // FILES_PER_JOB))
 
 
+def _model_json(model: LaunchModel) -> str:
+    import json
+
+    from rosvar.outputs.describe import describe_model
+
+    return json.dumps(describe_model(model), ensure_ascii=False)
+
+
 def _analyzed_row(model: LaunchModel) -> tuple[tuple[str, int, int, int, int], list[Diagnostic]]:
     """What ``analyze``'s table shows of ``model``, and its diagnostics."""
     counts = (len(model.inputs), len(model.nodes), len(model.params), len(model.errors))
@@ -122,8 +130,12 @@ def cmd_analyze(options: argparse.Namespace) -> int:
         return EXIT_INPUT
     analysis = Analysis(workspace)
     jobs = _jobs(options.jobs, len(workspace.launch_files))
-    if options.json:
+    if options.json and sys.stdout.isatty():
         _print_json({"files": analysis.map_models(describe_model, jobs, _progress)})
+        return EXIT_OK
+    if options.json:  # one line, as _print_json writes it, each file's part by its process
+        parts = analysis.map_models(_model_json, jobs, _progress)
+        sys.stdout.write('{"files": [' + ", ".join(parts) + "]}\n")
         return EXIT_OK
     rows = analysis.map_models(_analyzed_row, jobs, _progress)
     # a file included by several entry files reports its problems once per entry file: once here
