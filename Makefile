@@ -81,6 +81,7 @@ demo: setup
 
 test: setup
 	$(VPY) -m ruff check src tests bench tools docs/screenshot.py
+	$(VPY) -m ruff format --check .
 	$(VPY) -m mypy
 	$(VPY) -m pytest -q --ignore=tests/outputs/web
 	# a renderer crash of Chromium under load ("Target crashed") is retried once; any
