@@ -58,8 +58,7 @@ SIDES = {
     MemberKind.ACTIONS: ("servers", "clients"),
 }
 """The side feeding a name and the side using it (a link goes from the one to the other)."""
-LINK_NAMES = 3  # names a link carries, for its details
-LINK = "\u0002"  # between the two group keys of a link's id (never in a key)
+LINK = "\u0002"  # between the kind and the two group keys of a link's id (never in a key)
 
 
 # -- names (files spelled as the page's names.js spells them) ------------------------------------
@@ -207,45 +206,36 @@ def links(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str, obj
     """The topics, services and actions between groups, aggregated: one link per kind and
     pair of groups (any levels, neither holding the other) that a name connects, from a
     group of a node feeding it (publisher, server) to a group of a node using it
-    (subscriber, client), with how many such names are present and possible and the first
-    few of them. Without interfaces a name's nodes have no side: its links go from the
+    (subscriber, client), with how many such names are present and possible: ``{"id":
+    KIND + LINK + FROM + LINK + TO, "count": [present, possible]}`` (the id says the rest:
+    a large workspace has thousands of links, whose keys are most of their bytes). A node
+    wired to a name without a side (a remap, no interface) is at both ends; a name none of whose nodes has a side links each pair of groups once, from the
     smaller key to the larger. Whatever groups the page draws closed, the links between two
-    of its boxes count each name once."""
+    of its boxes count each name once (per direction)."""
     graph = document["graph"]
     chains = {str(e["id"]): _chain(grouping, e) for _kind, e in _nodes(graph)}
-    found: dict[tuple[MemberKind, str, str], tuple[list[int], set[str]]] = {}
+    found: dict[tuple[MemberKind, str, str], list[int]] = {}
     for kind in CHANNELS:
-        feeding, using = SIDES[kind]
         for entry in _possible(graph.get(kind, ())):
-            directed = feeding in entry or using in entry
+            sided = [{str(edge["node"]) for edge in entry.get(side, ())} for side in SIDES[kind]]
+            sideless = {str(node) for node in entry.get("nodes", ())} - sided[0] - sided[1]
+            directed = bool(sided[0] or sided[1])
             ends = [
-                {key for node in nodes for key in chains.get(node, ())}
-                for nodes in (
-                    [[str(edge["node"]) for edge in entry.get(side, ())] for side in SIDES[kind]]
-                    if directed
-                    else [[str(node) for node in entry.get("nodes", ())]] * 2
-                )
+                {key for node in nodes | sideless for key in chains.get(node, ())}
+                for nodes in sided
             ]
             for source in ends[0]:
                 for target in ends[1]:
                     if _under(source, target) or _under(target, source):
                         continue
                     if not directed and source > target:
-                        continue  # wired both ways: one link per pair
-                    counts, names = found.setdefault((kind, source, target), ([0, 0], set()))
+                        continue  # no sides: one link per pair
+                    counts = found.setdefault((kind, source, target), [0, 0])
                     counts[0] += entry["presence"] == PRESENT
                     counts[1] += 1
-                    names.add(str(entry["name"]))
     return [
-        {
-            "id": f"{kind}{LINK}{source}{LINK}{target}",
-            "kind": kind,
-            "from": source,
-            "to": target,
-            "count": counts,
-            "names": sorted(names)[:LINK_NAMES],
-        }
-        for (kind, source, target), (counts, names) in sorted(found.items())
+        {"id": LINK.join((kind, source, target)), "count": counts}
+        for (kind, source, target), counts in sorted(found.items())
     ]
 
 
