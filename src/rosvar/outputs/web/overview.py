@@ -209,9 +209,10 @@ def links(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str, obj
     (subscriber, client), with how many such names are present and possible: ``{"id":
     KIND + LINK + FROM + LINK + TO, "count": [present, possible]}`` (the id says the rest:
     a large workspace has thousands of links, whose keys are most of their bytes). A node
-    wired to a name without a side (a remap, no interface) is at both ends; a name none of whose nodes has a side links each pair of groups once, from the
-    smaller key to the larger. Whatever groups the page draws closed, the links between two
-    of its boxes count each name once (per direction)."""
+    wired to a name without a side (a remap, no interface) is at both ends; a name none of
+    whose nodes has a side links each pair of groups once, from the smaller key to the
+    larger. Whatever groups the page draws closed, the links between two of its boxes count
+    each name once (per direction)."""
     graph = document["graph"]
     chains = {str(e["id"]): _chain(grouping, e) for _kind, e in _nodes(graph)}
     found: dict[tuple[MemberKind, str, str], list[int]] = {}
