@@ -75,7 +75,6 @@ const PREFIX = { node: "n:", test: "n:", topic: "t:", service: "s:", action: "a:
 // The kinds of names nodes are wired to, their lists in the graph, and the sides of their
 // edges (the list feeding the name, the list using it).
 const CHANNELS = [["topic", "topics"], ["service", "services"], ["action", "actions"]];
-const WORDS = { topics: "topic", services: "service", actions: "action" };
 const SIDES = { topic: ["publishers", "subscribers"], service: ["servers", "clients"], action: ["servers", "clients"] };
 
 // Every "kind name" (e.g. "node /controller") that takes part in a conflict of the state.
@@ -146,10 +145,13 @@ function variantHint(variant, differ, variants) {
   return `${key}: ${from ? "…" : ""}${shown}${from + 34 < text.length ? "…" : ""}`;
 }
 
-// What a link edge stands for: per kind, how many names and how many of them are present.
+// What a link edge stands for: per kind (topics first), how many names and how many of them
+// are present.
 export function linkRows(link) {
-  return Object.entries(link.counts).map(([list, [present, possible]]) =>
-    [plural(possible, WORDS[list]), `${present.toLocaleString("en")} present`]);
+  return CHANNELS.filter(([, list]) => list in link.counts).map(([kind, list]) => {
+    const [present, possible] = link.counts[list];
+    return [plural(possible, kind), `${present.toLocaleString("en")} present`];
+  });
 }
 
 // A link edge's tooltip.
@@ -565,7 +567,7 @@ export class GraphView {
       const counts = Object.values(element.counts);
       const total = counts.reduce((sum, [, possible]) => sum + possible, 0);
       const present = counts.reduce((sum, [found]) => sum + found, 0);
-      const label = Object.entries(element.counts).map(([list, [, possible]]) => plural(possible, WORDS[list])).join(" · ");
+      const label = linkRows(element).map(([count]) => count).join(" · ");
       const [from, to] = [element.source, element.target].map((unit) => drawn.get(unit));
       wanted.push({ group: "edges", classes: present ? "" : "undetermined",
                     data: { id, kind: "link", source: element.source, target: element.target, label,
