@@ -14,6 +14,7 @@ from urllib.parse import urlsplit
 
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
+from outputs.web.test_overview import wired_configurator, wired_workspace
 from rosvar.outputs.web.overview import SEPARATOR, Grouping, key_of, labels
 
 if TYPE_CHECKING:
@@ -99,9 +100,16 @@ class App:
         )
         clashing = {name for c in server["conflicts"] for name in c["names"]}
         prefix = {"nodes": "n:", "tests": "n:", "topics": "t:"}
+        nodes = {e["id"]: e for kind in ("nodes", "tests") for e in server["graph"][kind]}
+        linked = self.page.evaluate("window.rosvar.graph.linked()")
         for kind, mark in prefix.items():
             entries = server["graph"].get(kind, [])
             for entry, unit in zip(entries, self.drawers(entries), strict=True):
+                if kind == "topics" and linked and unit != mark + entry["id"]:
+                    # not fetched: none of its nodes is drawn but in a closed box (links)
+                    boxes = self.drawers([nodes[node] for node in entry["nodes"]])
+                    assert all(str(box).startswith("g:") for box in boxes), entry["name"]
+                    continue
                 if entry["presence"] == "absent":
                     alone = unit is not None and unit.startswith(mark)
                     assert not alone, f"absent {entry['name']} is drawn"
@@ -455,6 +463,72 @@ def test_the_pages_answers_stay_small_and_members_come_when_a_group_opens(
         app.assert_shows_server_state()
     sizes = [size for _, _, size in answers]
     assert len(sizes) > 5 and max(sizes) < whole / 50
+
+
+def fetched_groups(answers: list[Answer]) -> set[str]:
+    """The groups whose members (of any kind) the page fetched."""
+    return {body["group"] for path, body, _ in answers if path == "/api/group"}
+
+
+def drawn_links(app: App) -> dict[tuple[str, str], dict[str, list[int]]]:
+    """(source unit, target unit) → the counts per kind of the link edge drawn between them."""
+    edges = app.page.evaluate(
+        """() => window.rosvar.graph.cy.edges('[kind = "link"]').map((e) =>
+             [e.source().id(), e.target().id(), e.data('element').counts])"""
+    )
+    return {(source, target): counts for source, target, counts in edges}
+
+
+def test_many_topics_link_closed_boxes_and_only_open_groups_fetch_theirs(
+    page: Any, ws: LaunchWorkspace
+) -> None:
+    """Above the page's bound on topics, services and actions drawn one by one, closed boxes
+    are joined by the state's links and a step fetches only the open groups' members."""
+    wired_workspace(ws, topics=260)
+    with running(wired_configurator(ws)) as live:
+        answers = record_answers(page)
+        app = App(page, live)
+        app.wait_for_layout()
+        assert page.evaluate("window.rosvar.graph.linked()")
+        assert fetched_groups(answers) == set()  # nothing open
+
+        def expected() -> dict[tuple[str, str], dict[str, list[int]]]:
+            units = {u["id"] for u in app.units("group")}
+            found: dict[tuple[str, str], dict[str, list[int]]] = {}
+            for link in app.state["graph"]["links"]:
+                kind, source, target = link["id"].split("\u0002")
+                if f"g:{source}" in units and f"g:{target}" in units:
+                    found.setdefault((f"g:{source}", f"g:{target}"), {})[kind] = link["count"]
+            return found
+
+        start = drawn_links(app)
+        assert start == expected() and len(start) >= 2
+        assert app.units("topic") == []
+        channels = app.state["channels"]
+        counts = page.locator("#graph-counts").inner_text()
+        assert f"{channels['topics']} topics" in counts
+        app.assert_shows_server_state()
+        # a choice opens the selected file's group: its members alone are fetched, its
+        # topics drawn one by one, the other boxes still linked
+        del answers[:]
+        app.choose(file_named(app.state, "drivers/launch/base.launch"), "select")
+        app.wait_for_layout()
+        groups = {g["id"]: g for g in app.state["graph"]["groups"]}
+        (base,) = fetched_groups(answers)
+        assert base.endswith("drivers/base.launch")
+        kinds = {body.get("kind") for path, body, _ in answers if path == "/api/group"}
+        assert kinds == {"nodes", "topics", "services", "actions"}
+        assert len(app.units("topic")) == groups[base]["topics"][1] > 250
+        assert drawn_links(app) == expected() != {}
+        app.assert_shows_server_state()
+        # opening a box fetches that group's alone
+        del answers[:]
+        (view,) = [u for u in app.units("group") if "view.launch" in u["label"]]
+        app.click_graph_element(view["id"], double=True)
+        app.wait_for_layout()
+        assert fetched_groups(answers) == {view["element"]["key"]}
+        assert drawn_links(app) == expected()
+        app.assert_shows_server_state()
 
 
 def test_complete_product_gives_the_command(page: Any, examples: Live) -> None:

@@ -5,16 +5,21 @@ from __future__ import annotations
 
 import json
 from collections import Counter
-from typing import Any
+from collections.abc import Iterator
+from itertools import product
+from typing import TYPE_CHECKING, Any
 
 import pytest
 
-from outputs.web.live import Live
+from outputs.web.live import Live, running
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
 from rosvar.outputs.web.delta import patch
 from rosvar.outputs.web.overview import (
+    LINK,
     PAGE,
     SEPARATOR,
+    SIDES,
     Grouping,
     key_of,
     labels,
@@ -22,6 +27,10 @@ from rosvar.outputs.web.overview import (
     package_of,
     short_path,
 )
+from rosvar.workspace.interfaces.extraction import extract_interfaces
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
 
 
 def test_names_as_the_page_reads_them() -> None:
@@ -216,3 +225,126 @@ def test_no_answer_over_the_bound_on_husky(husky: Live) -> None:
     answers.append(husky.call("POST", "/api/choose", body))
     assert all(answer.status == 200 for answer in answers)
     assert max(len(answer.body) for answer in answers) < MAX_ANSWER
+
+
+# -- links between groups --------------------------------------------------------------------------
+def wired_workspace(ws: LaunchWorkspace, topics: int) -> None:
+    """Three packages whose nodes are wired by ``topics`` topics, a service and an action
+    (their scripts' interfaces: publisher and server in ``drivers``, subscribers and clients
+    elsewhere, a listener only when ``listen``), and relays of unknown interface remapped
+    onto a topic of the talker's and onto one of their own (names without sides)."""
+    header = "import rospy\nimport actionlib\nfrom std_msgs.msg import String\n"
+    calls = {
+        "talker": ("rospy.Publisher", "rospy.Service", "actionlib.SimpleActionServer"),
+        "listener": ("rospy.Subscriber", "rospy.ServiceProxy", "actionlib.SimpleActionClient"),
+    }
+    for script, (topic, service, action) in calls.items():
+        lines = [f'{topic}("t{number}", String)' for number in range(topics)]
+        lines += [f'{service}("reset", Empty, None)', f'{action}("move", MoveAction)']
+        ws.write(f"scripts/{script}.py", header + "\n".join(lines) + "\n", "drivers")
+    ws.package("planning")
+    ws.package("viz")
+    relay = '<node pkg="drivers" type="relay" name="{name}"><remap from="in" to="{to}"/></node>'
+    ws.launch(
+        "base.launch",
+        '<node pkg="drivers" type="talker.py" name="talker" ns="/w"/>\n'
+        + relay.format(name="tap", to="/w/t0"),
+        "drivers",
+    )
+    ws.launch(
+        "plan.launch",
+        '<arg name="listen" default="true"/>\n'
+        '<node pkg="drivers" type="listener.py" name="planner" ns="/w" if="$(arg listen)"/>',
+        "planning",
+    )
+    ws.launch("relay.launch", relay.format(name="relay", to="/loose"), "planning")
+    ws.launch(
+        "view.launch",
+        '<node pkg="drivers" type="listener.py" name="viewer" ns="/w"/>\n'
+        + relay.format(name="looker", to="/loose"),
+        "viz",
+    )
+
+
+@pytest.fixture
+def wired(ws: LaunchWorkspace) -> Iterator[Live]:
+    """The wired workspace with 3 topics, files named by their paths (packages group)."""
+    wired_workspace(ws, 3)
+    with running(wired_configurator(ws)) as live:
+        yield live
+
+
+def wired_configurator(ws: LaunchWorkspace) -> Configurator:
+    analysis = ws.analysis()
+    found = extract_interfaces(analysis.workspace.packages.values())
+    return Configurator(analysis, extract(analysis, products=True), interfaces=found)
+
+
+def expected_links(whole: dict[str, Any], grouping: Grouping) -> dict[str, list[int]]:
+    """Link id → [present, possible] from the whole state, pair of groups by pair of groups:
+    names of a kind with a node feeding them under the first and one using them under the
+    second (a node without a side does both; names with no side at all: once a pair)."""
+    graph = whole["graph"]
+    home = {
+        e["id"]: key_of(labels(grouping, e))
+        for kind in ("nodes", "tests")
+        for e in graph[kind]
+        if e["presence"] != "absent"
+    }
+    groups = {key[:at] for key in home.values() for at in range(len(key) + 1)
+              if key[at:].startswith(SEPARATOR) or at == len(key)} - {""}  # fmt: skip
+
+    def holds(outer: str, key: str) -> bool:
+        return (key + SEPARATOR).startswith(outer + SEPARATOR)
+
+    def under(node: str, group: str) -> bool:
+        return node in home and holds(group, home[node])
+
+    found: dict[str, list[int]] = {}
+    for kind, sides in SIDES.items():
+        for entry in graph.get(kind, []):
+            if entry["presence"] == "absent":
+                continue
+            feeding, using = ({edge["node"] for edge in entry.get(side, [])} for side in sides)
+            sideless = set(entry["nodes"]) - feeding - using
+            for source, target in product(groups, groups):
+                if holds(source, target) or holds(target, source):
+                    continue
+                if not (feeding or using) and source > target:
+                    continue
+                if any(under(n, source) for n in feeding | sideless) and any(
+                    under(n, target) for n in using | sideless
+                ):
+                    count = found.setdefault(LINK.join((kind, source, target)), [0, 0])
+                    count[0] += entry["presence"] == "present"
+                    count[1] += 1
+    return found
+
+
+@pytest.mark.parametrize("grouping", list(Grouping))
+def test_links_aggregate_the_whole_states_names_per_pair_of_groups(
+    wired: Live, grouping: Grouping
+) -> None:
+    tab = wired.post("/api/session", {"overview": grouping})
+    session = tab["session"]
+    states = []
+    for feature in (None, "drivers/launch/base.launch"):
+        if feature is not None:
+            file = next(k for k in wired.whole(session)["features"] if k.endswith(feature))
+            wired.post("/api/choose", {"session": session, "action": "select", "feature": file})
+        compact = wired.call("GET", f"/api/state?session={session}").json()
+        whole = wired.whole(session)
+        expected = expected_links(whole, grouping)
+        links = {link["id"]: link["count"] for link in compact["graph"]["links"]}
+        assert links == expected
+        assert compact["channels"] == {
+            kind: sum(e["presence"] != "absent" for e in whole["graph"][kind]) for kind in SIDES
+        }
+        states.append(expected)
+    start, chosen = states
+    if grouping != Grouping.NAMESPACE:  # there, the wired nodes are all in /w/
+        kinds = {link.split(LINK)[0] for link in start}
+        assert kinds == {"topics", "services", "actions"}
+        assert any(present for present, _ in chosen.values()) and not any(
+            present for present, _ in start.values()
+        )

@@ -52,6 +52,13 @@ class MemberKind(StrEnum):
 
 CHANNELS = (MemberKind.TOPICS, MemberKind.SERVICES, MemberKind.ACTIONS)
 """The names nodes are wired to: counted and listed under the groups of their nodes."""
+SIDES = {
+    MemberKind.TOPICS: ("publishers", "subscribers"),
+    MemberKind.SERVICES: ("servers", "clients"),
+    MemberKind.ACTIONS: ("servers", "clients"),
+}
+"""The side feeding a name and the side using it (a link goes from the one to the other)."""
+LINK = "\u0002"  # between the kind and the two group keys of a link's id (never in a key)
 
 
 # -- names (files spelled as the page's names.js spells them) ------------------------------------
@@ -195,6 +202,50 @@ def summaries(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str,
     ]
 
 
+def links(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str, object]]:
+    """The topics, services and actions between groups, aggregated: one link per kind and
+    pair of groups (any levels, neither holding the other) that a name connects, from a
+    group of a node feeding it (publisher, server) to a group of a node using it
+    (subscriber, client), with how many such names are present and possible: ``{"id":
+    KIND + LINK + FROM + LINK + TO, "count": [present, possible]}`` (the id says the rest:
+    a large workspace has thousands of links, whose keys are most of their bytes). A node
+    wired to a name without a side (a remap, no interface) is at both ends; a name none of
+    whose nodes has a side links each pair of groups once, from the smaller key to the
+    larger. Whatever groups the page draws closed, the links between two of its boxes count
+    each name once (per direction)."""
+    graph = document["graph"]
+    chains = {str(e["id"]): _chain(grouping, e) for _kind, e in _nodes(graph)}
+    found: dict[tuple[MemberKind, str, str], list[int]] = {}
+    for kind in CHANNELS:
+        for entry in _possible(graph.get(kind, ())):
+            sided = [{str(edge["node"]) for edge in entry.get(side, ())} for side in SIDES[kind]]
+            sideless = {str(node) for node in entry.get("nodes", ())} - sided[0] - sided[1]
+            directed = bool(sided[0] or sided[1])
+            ends = [
+                {key for node in nodes | sideless for key in chains.get(node, ())}
+                for nodes in sided
+            ]
+            for source in ends[0]:
+                for target in ends[1]:
+                    if _under(source, target) or _under(target, source):
+                        continue
+                    if not directed and source > target:
+                        continue  # no sides: one link per pair
+                    counts = found.setdefault((kind, source, target), [0, 0])
+                    counts[0] += entry["presence"] == PRESENT
+                    counts[1] += 1
+    return [
+        {"id": LINK.join((kind, source, target)), "count": counts}
+        for (kind, source, target), counts in sorted(found.items())
+    ]
+
+
+def _chain(grouping: Grouping, entry: Entry) -> tuple[str, ...]:
+    """The keys of the groups an entry is under, outermost first."""
+    path = labels(grouping, entry)
+    return tuple(key_of(path[: depth + 1]) for depth in range(len(path)))
+
+
 def members(
     document: Mapping[str, Any], grouping: Grouping, group: str, kind: MemberKind, page: int
 ) -> dict[str, object]:
@@ -295,7 +346,8 @@ def catalog(configurator: Configurator) -> list[list[object]]:
 
 def compact(document: Mapping[str, Any], grouping: Grouping) -> dict[str, Any]:
     """``document`` in overview mode: the features' states as one string (in the order of
-    :func:`catalog`), the graph as group summaries and the errors roslaunch stops on."""
+    :func:`catalog`), the graph as group summaries, the links between groups and the errors
+    roslaunch stops on, and how many topics, services and actions are possible."""
     graph = document["graph"]
     return {
         **document,
@@ -304,7 +356,11 @@ def compact(document: Mapping[str, Any], grouping: Grouping) -> dict[str, Any]:
         ),
         "graph": {
             "groups": summaries(document, grouping),
+            "links": links(document, grouping),
             "errors": [e for e in graph.get("errors", ()) if e["presence"] == PRESENT],
+        },
+        "channels": {
+            kind.value: sum(1 for _ in _possible(graph.get(kind, ()))) for kind in CHANNELS
         },
         "grouping": grouping,
     }

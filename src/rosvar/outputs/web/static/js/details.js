@@ -4,7 +4,7 @@
 // page at a time). Closing the panel unselects the element: it opens again on the next
 // click on the graph, not on the next step.
 
-import { clashName } from "./graph.js";
+import { clashName, linkRows } from "./graph.js";
 import { shortPath, entryFile } from "./names.js";
 
 const SHOWN_APART = new Set(["id", "kind", "name", "presence", "condition", "filename", "line", "col",
@@ -89,6 +89,9 @@ export class DetailsPanel {
     } else if (element.kind === "more") {
       title.textContent = `${element.hidden} more in ${element.name}`;
       extra.push(button("Show more", () => this.actions.open(element.unitId), "primary"));
+    } else if (element.kind === "link") { // topics, services and actions between two closed boxes
+      title.textContent = `${element.from} → ${element.to}`;
+      for (const [count, names] of linkRows(element)) table.append(row(count, names));
     } else if (element.kind === "params") {
       title.textContent = `${element.params.length.toLocaleString("en")} params of ${element.name}`;
       this.paramRows(table, element.params);

@@ -10,6 +10,10 @@
 // the selected launch files open by themselves: those come first. The state carries the
 // groups' summaries only (the server groups, docs/web.md "Overview mode"): the members of
 // the groups drawn open, and the topics, services and actions, are fetched for each state.
+// A state with more of these than LINKED_ABOVE (Husky with its dependencies as features:
+// thousands) would fetch megabytes of them per step to draw each one: then only those of the
+// groups drawn open are fetched, and two closed boxes are joined by one edge per direction
+// from the state's links between groups (how many names, of which kinds).
 //
 // Graph ids are stable across steps. When the drawn units appear or go the layout runs again
 // and every unit moves to its new place in an animation (new units grow from the box they
@@ -26,6 +30,7 @@ const PAGE = 24; // members of an expanded group drawn at a time
 const ANIMATION_MS = 350;
 const ZOOM = { min: 0.6, max: 1.6 }; // the fit never goes below a zoom whose labels are legible
 const PADDING = 30;
+const LINKED_ABOVE = 250; // topics, services and actions drawn one by one at most (Husky's are), else links
 
 const STYLE = [
   { selector: "node", style: {
@@ -51,6 +56,11 @@ const STYLE = [
   { selector: 'node[kind = "more"]', style: { "background-color": "#f6f7f9", "border-style": "dotted", height: 26 } },
   { selector: "edge", style: { width: 1.2, "line-color": "#9aa3b5", "curve-style": "bezier" } },
   { selector: 'edge[kind = "params"]', style: { "line-color": "#e0b54a", "line-style": "dotted" } },
+  { selector: 'edge[kind = "link"]', style: {
+    width: "data(width)", "line-color": "#7d8aa8", "target-arrow-shape": "triangle", "target-arrow-color": "#7d8aa8",
+    label: "data(label)", "font-size": 10, color: "#4a5570", "text-background-color": "#fff",
+    "text-background-opacity": 0.8, "text-background-padding": 1,
+  } },
   { selector: ".undetermined", style: { "border-style": "dashed", "line-style": "dashed", "background-opacity": 0.7 } },
   { selector: "node.conflict", style: { "border-color": "#b42318", "border-width": 4, color: "#b42318" } },
   { selector: "node.match", style: { "border-color": "#2f6fdb", "border-width": 4 } },
@@ -60,7 +70,7 @@ const STYLE = [
   { selector: ".hidden", style: { display: "none" } },
 ];
 
-const PREFIX = { node: "n:", test: "n:", topic: "t:", service: "s:", action: "a:", params: "p:", group: "g:", variants: "v:", more: "m:" };
+const PREFIX = { node: "n:", test: "n:", topic: "t:", service: "s:", action: "a:", params: "p:", group: "g:", variants: "v:", more: "m:", link: "l:" };
 
 // The kinds of names nodes are wired to, their lists in the graph, and the sides of their
 // edges (the list feeding the name, the list using it).
@@ -133,6 +143,20 @@ function variantHint(variant, differ, variants) {
   const from = Math.max(0, divergence(variants, key) - 6);
   const shown = text.slice(from, from + 34);
   return `${key}: ${from ? "…" : ""}${shown}${from + 34 < text.length ? "…" : ""}`;
+}
+
+// What a link edge stands for: per kind (topics first), how many names and how many of them
+// are present.
+export function linkRows(link) {
+  return CHANNELS.filter(([, list]) => list in link.counts).map(([kind, list]) => {
+    const [present, possible] = link.counts[list];
+    return [plural(possible, kind), `${present.toLocaleString("en")} present`];
+  });
+}
+
+// A link edge's tooltip.
+function linkText(link) {
+  return [`${link.from} → ${link.to}`, ...linkRows(link).map(([count, present]) => `${count} (${present})`)].join("\n");
 }
 
 // A group of the overview, from its summary (the server's, docs/web.md "Overview mode"):
@@ -212,6 +236,8 @@ export class GraphView {
     this.container.dataset.layout = "done";
     this.cy.on("select unselect", () => this.onSelect(this.selectedElement(), true));
     this.cy.on("dbltap", "node", (event) => this.open(event.target.id()));
+    this.cy.on("mouseover", 'edge[kind = "link"]', (event) => { this.container.title = linkText(event.target.data("element")); });
+    this.cy.on("mouseout", 'edge[kind = "link"]', () => { this.container.title = ""; });
   }
 
   selectedElement() {
@@ -332,8 +358,26 @@ export class GraphView {
     return [first, ...await Promise.all(rest)].flatMap((answer) => answer.members);
   }
 
-  // Fetches what the drawing needs: the nodes (and params) of the open groups, every
-  // topic, service and action.
+  // Whether the state has too many topics, services and actions to draw them all: then closed
+  // boxes are joined by the state's links.
+  linked() {
+    return Object.values(this.state?.channels ?? {}).reduce((sum, count) => sum + count, 0) > LINKED_ABOVE;
+  }
+
+  // The groups whose topics, services and actions are fetched: the root's (all of them), or
+  // when linked, those of the open groups drawing nodes one by one (not under another such:
+  // a group's are those of the nodes under it at any level).
+  wired(root) {
+    if (!this.linked()) return [root];
+    const found = [];
+    for (const group of this.opened(root)) {
+      if (group.own("nodes") > 0 && !found.some((outer) => group.key.startsWith(`${outer.key}\u0001`))) found.push(group);
+    }
+    return found;
+  }
+
+  // Fetches what the drawing needs: the nodes (and params) of the open groups, the topics,
+  // services and actions of wired(root).
   async fetch(root) {
     const jobs = [];
     // a group's own params and those of its subgroups holding no node
@@ -351,9 +395,15 @@ export class GraphView {
       if (this.options.params) params(group);
     }
     if (this.options.params) params(root);
+    const wired = this.wired(root);
     for (const [kind, list] of CHANNELS) {
       this.channels[kind] = [];
-      if (root.count(list) > 0) jobs.push(this.pagesOf("", list).then((found) => { this.channels[kind] = found; }));
+      const from = wired.filter((group) => group.count(list) > 0);
+      if (!from.length) continue;
+      jobs.push(Promise.all(from.map((group) => this.pagesOf(group.key, list))).then((found) => {
+        const byId = new Map(found.flat().map((named) => [named.id, named])); // once, if under two
+        this.channels[kind] = [...byId.values()];
+      }));
     }
     await Promise.all(jobs);
   }
@@ -461,7 +511,7 @@ export class GraphView {
 
     // the unit drawing the members of a group that are not fetched: its "+N more" box, or
     // the closed box it is in
-    const drawn = new Set(wanted.map((item) => item.data.id));
+    const drawn = new Map(wanted.map((item) => [item.data.id, item.data.element?.name]));
     const boxOf = (key) => {
       if (key === null || key === undefined) return undefined;
       if (drawn.has(PREFIX.more + key)) return PREFIX.more + key;
@@ -496,8 +546,33 @@ export class GraphView {
         }
       }
     }
+    if (this.linked()) this.linkEdges(state, drawn, wanted);
     if (this.options.params) this.paramUnits(root, wanted, drawnNodes, unitOf, opened);
     return { wanted, unitOf, searchNames, boxOf };
+  }
+
+  // One edge per direction between two closed boxes (`drawn`: the unit ids) that the state's
+  // links join, as thick as the names it stands for are many; dashed while none is present.
+  linkEdges(state, drawn, wanted) {
+    const edges = new Map(); // edge id → its element
+    for (const link of state.graph.links ?? []) {
+      const [list, from, to] = link.id.split("\u0002"); // kind, group keys (overview.py's links)
+      const [source, target] = [PREFIX.group + from, PREFIX.group + to];
+      if (!drawn.has(source) || !drawn.has(target)) continue;
+      const id = `${PREFIX.link}${from}\u0002${to}`;
+      if (!edges.has(id)) edges.set(id, { kind: "link", source, target, counts: {} });
+      edges.get(id).counts[list] = link.count;
+    }
+    for (const [id, element] of edges) {
+      const counts = Object.values(element.counts);
+      const total = counts.reduce((sum, [, possible]) => sum + possible, 0);
+      const present = counts.reduce((sum, [found]) => sum + found, 0);
+      const label = linkRows(element).map(([count]) => count).join(" · ");
+      const [from, to] = [element.source, element.target].map((unit) => drawn.get(unit));
+      wanted.push({ group: "edges", classes: present ? "" : "undetermined",
+                    data: { id, kind: "link", source: element.source, target: element.target, label,
+                            width: Math.min(8, 1.2 + Math.log2(total)), element: { ...element, from, to } } });
+    }
   }
 
   // Params as bundles: a node's own params (/ns/node/x) hang on it as one tag; the others
@@ -755,8 +830,10 @@ export class GraphView {
     if (!this.state) return { nodes: 0, topics: 0, services: 0, params: 0, undetermined: 0, drawn: 0 };
     const root = groupTree(this.state.graph.groups);
     const nodes = root.count("nodes");
-    return { nodes, topics: this.channels.topic.length,
-             services: this.channels.service.length + this.channels.action.length,
+    // linked: the state counts them (a few are fetched)
+    const channels = this.linked() ? this.state.channels
+      : Object.fromEntries(CHANNELS.map(([kind, list]) => [list, this.channels[kind].length]));
+    return { nodes, topics: channels.topics, services: channels.services + channels.actions,
              params: this.options.params ? root.count("params") : 0,
              undetermined: nodes - root.count("nodes", 0), drawn: this.cy.nodes().length };
   }
