@@ -786,3 +786,35 @@ def test_husky_double_click_is_one_choice(page: Any, husky: Live) -> None:
     page.wait_for_function("() => !document.body.classList.contains('busy')")
     server = app.assert_shows_server_state()
     assert server["choices"] == [{"action": "select", "feature": base, "value": None}]
+
+
+def chained_workspace(ws: LaunchWorkspace, packages: int, topics: int) -> None:
+    """``packages`` packages in a chain: each one's node publishes ``topics`` topics the next
+    package's node subscribes to (links p0 → p1 → …, each box joined to its neighbours)."""
+    for index in range(packages):
+        name = f"p{index:02d}"
+        lines = ["import rospy", "from std_msgs.msg import String"]
+        lines += [f'rospy.Publisher("c{index}_{n}", String)' for n in range(topics)]
+        lines += [f'rospy.Subscriber("c{index - 1}_{n}", String)' for n in range(topics) if index]
+        ws.write("scripts/node.py", "\n".join(lines) + "\n", name)
+        ws.launch("run.launch", f'<node pkg="{name}" type="node.py" name="n{index}"/>', name)
+
+
+def test_linked_boxes_are_all_in_view(page: Any, ws: LaunchWorkspace) -> None:
+    """Links do not place the boxes they join: a chain of a dozen packages, laid out along its
+    links, would run over several screens; every box is in view."""
+    chained_workspace(ws, packages=12, topics=25)
+    with running(wired_configurator(ws)) as live:
+        app = App(page, live)
+        app.wait_for_layout()
+        assert page.evaluate("window.rosvar.graph.linked()")
+        assert len(drawn_links(app)) == 11
+        outside = page.evaluate(
+            """() => {
+                 const cy = window.rosvar.graph.cy;
+                 const out = (b) => b.x1 < 0 || b.y1 < 0 || b.x2 > cy.width() || b.y2 > cy.height();
+                 return cy.nodes('[kind = "group"]').filter((n) => out(n.renderedBoundingBox()))
+                   .map((n) => n.id());
+               }"""
+        )
+        assert len(app.units("group")) == 12 and outside == []

@@ -646,11 +646,14 @@ export class GraphView {
 
   // Places every unit (layered where topics connect them, a grid for the rest), then moves
   // them there from where they were (new ones from the box they came out of) and the view to
-  // the units that matter most: the elements drawn one by one, else everything.
+  // the units that matter most: the elements drawn one by one, else everything. Links between
+  // closed boxes do not place them: layered, dozens of boxes joined every which way spread
+  // over several screens; on the grid they stay in one view, the links drawn across it.
   layout(before) {
     const cy = this.cy;
-    const loose = cy.nodes().filter((node) => node.degree(false) === 0);
-    const layered = cy.elements().difference(loose);
+    const placing = cy.edges('[kind != "link"]');
+    const loose = cy.nodes().filter((node) => node.connectedEdges(placing).empty());
+    const layered = cy.nodes().difference(loose).union(placing);
     // the elements drawn one by one (the selected files') first, at the top left; under them
     // the part topics connect (layered), beside it (or under a wide one) the boxes
     const single = loose.filter((node) => ["node", "test", "params"].includes(node.data("kind")));
