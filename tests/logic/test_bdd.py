@@ -172,13 +172,17 @@ def test_complemented_edges_flip_the_lowest_bit_of_int() -> None:
 
 
 @pytest.mark.parametrize("seed", range(20))
-def test_nodes_read_in_memory_are_those_dd_shows(seed: int) -> None:
+def test_nodes_read_in_memory_are_those_dd_shows(seed: int, bdd_reader: str) -> None:
     """Each node ``read`` found in CUDD's memory has the level and children that ``dd``'s
-    wrappers give (a complemented low edge as ``~place``), and every node is reached."""
+    wrappers give (a complemented low edge as ``~place``), every node is reached, and
+    children come before their parents."""
     rng = random.Random(seed)
-    names = NAMES[:8]
+    names = NAMES[:8] if seed < 10 else NAMES  # then many nodes a level, several levels down
     manager = fresh(names)
     formula = random_formula(manager, rng, names)
+    if seed >= 10:
+        for _ in range(6):
+            formula = manager.apply("xor", formula, random_formula(manager, rng, names))
     levels, lows, highs, root = bdd.read(
         manager, formula, [manager.level_of_var(name) for name in names]
     )
@@ -192,6 +196,7 @@ def test_nodes_read_in_memory_are_those_dd_shows(seed: int) -> None:
             continue
         assert levels[place] == function.level
         low, high = lows[place], highs[place]
+        assert 0 <= high < place and 0 <= (~low if low < 0 else low) < place
         pending.append((high, function.high))
         pending.append((~low, ~function.low) if low < 0 else (low, function.low))
     assert len(function_at) == len(levels)
@@ -199,7 +204,7 @@ def test_nodes_read_in_memory_are_those_dd_shows(seed: int) -> None:
 
 
 @pytest.mark.parametrize("seed", range(30))
-def test_taken_is_what_some_model_sets(seed: int) -> None:
+def test_taken_is_what_some_model_sets(seed: int, bdd_reader: str) -> None:
     """The values ``taken`` finds are those of the satisfying assignments."""
     names = NAMES[:6]
     manager = fresh(names)

@@ -333,6 +333,11 @@ class Nodes(NamedTuple):
     root: int
 
 
+READ_BY_LEVELS_FROM = 20_000
+"""Nodes from which ``read`` takes a diagram level by level in numpy: below, numpy's import
+costs more than it saves."""
+
+
 def read(manager: Manager, u: BDD, levels: Collection[int]) -> Nodes:
     """The nodes of ``u``, whose support lies within ``levels``.
 
@@ -342,8 +347,11 @@ def read(manager: Manager, u: BDD, levels: Collection[int]) -> Nodes:
     ``u`` is referenced, since nothing runs in CUDD meanwhile: its nodes can be
     neither freed nor moved. ``int`` of a ``dd`` function is its pointer plus 2, and
     CUDD marks a complemented edge in the pointer's lowest bit (``then`` edges never
-    are).
+    are). A large diagram is read a level at a time (``_by_levels``), a small one node
+    by node (``_Reader``).
     """
+    if u.dag_size >= READ_BY_LEVELS_FROM:
+        return _by_levels(manager, u, levels)
     reader = _Reader(_indices(manager, levels), int(manager.true) - 2, len(manager.vars))
     pointer = int(u) - 2
     negated = pointer & 1
@@ -384,6 +392,77 @@ def _indices(manager: Manager, levels: Iterable[int]) -> dict[int, int]:
             raise RuntimeError("dd's CUDD lays its nodes out otherwise than rosvar reads them")
         found[words[node] & 0xFFFFFFFF] = level
     return found
+
+
+def _by_levels(manager: Manager, u: BDD, levels: Collection[int]) -> Nodes:
+    """``read`` with numpy, from the top level down: every parent of a node lies above
+    it, so when a level is reached all its nodes are known, gathered from the children
+    of the levels above. Each level is one batch of array operations, where ``_Reader``
+    spends a Python call per node; the nodes are listed deepest level first."""
+    import numpy as np
+
+    words = _words()
+    index_of = _indices(manager, levels)
+    level_at = np.full(max(index_of, default=0) + 1, -1, dtype=np.int64)  # index → level
+    for index, level in index_of.items():
+        level_at[index] = level
+    true = int(manager.true) - 2
+    pointer = int(u) - 2
+    negated = pointer & 1
+    start = pointer ^ negated
+    waiting: dict[int, list[Any]] = {}  # a level → arrays of (regular) addresses of its nodes
+    if start != true:
+        waiting[index_of[int(words[(start >> 3) - 1]) & 0xFFFFFFFF]] = [np.asarray([start])]
+    found = []  # (level, its nodes' addresses, their then and else words), top level first
+    for level in sorted(levels):
+        batches = waiting.pop(level, None)
+        if batches is None:
+            continue
+        nodes = np.unique(np.concatenate(batches))
+        at = (nodes >> 3) - 1  # the index word of each node (``_words`` starts at 8)
+        highs, lows = words[at + 2], words[at + 3]
+        found.append((level, nodes, highs, lows))
+        children = np.concatenate([highs, lows & ~1])
+        children = children[children != true]
+        below = level_at[words[(children >> 3) - 1] & 0xFFFFFFFF]
+        by_level = np.argsort(below)
+        below, children = below[by_level], children[by_level]
+        cuts = (np.flatnonzero(below[1:] != below[:-1]) + 1).tolist()
+        for first, end in zip([0, *cuts], [*cuts, len(children)], strict=True):
+            if first < end:
+                waiting.setdefault(int(below[first]), []).append(children[first:end])
+    found.reverse()  # children first
+    bottom = len(manager.vars)
+    addresses = np.concatenate([np.asarray([true]), *(nodes for _, nodes, _, _ in found)])
+    ranked = np.argsort(addresses)  # places by address, to find each child's place
+    sorted_addresses = addresses[ranked]
+
+    def places(edges: Any) -> Any:
+        return ranked[np.searchsorted(sorted_addresses, edges)]
+
+    all_highs = np.concatenate([np.zeros(1, dtype=np.int64)] + [h for _, _, h, _ in found])
+    all_lows = np.concatenate([np.zeros(1, dtype=np.int64)] + [w for _, _, _, w in found])
+    high_places = places(all_highs)
+    low_places = places(all_lows & ~1)
+    low_places = np.where(all_lows & 1, ~low_places, low_places)
+    high_places[0] = low_places[0] = 0  # the constant's own children: none
+    levels_listed = [bottom]
+    for level, nodes, _, _ in found:
+        levels_listed += [level] * len(nodes)
+    root = int(places(np.asarray([start]))[0])
+    return Nodes(
+        levels_listed, low_places.tolist(), high_places.tolist(), ~root if negated else root
+    )
+
+
+@cache
+def _words() -> Any:
+    """``_memory`` as a numpy array of 64-bit words, for reading many nodes at once; it
+    starts at the address 8 (numpy takes an address 0 for no memory at all)."""
+    import numpy as np
+
+    everything = (ctypes.c_int64 * (sys.maxsize // 8 - 1)).from_address(8)
+    return np.frombuffer(memoryview(everything), dtype=np.int64)
 
 
 class _Reader:

@@ -47,7 +47,7 @@ def recount(request: pytest.FixtureRequest, monkeypatch: pytest.MonkeyPatch) -> 
 
 
 @pytest.mark.parametrize("seed", range(40))
-def test_counts_equal_enumeration(seed: int, recount: str) -> None:
+def test_counts_equal_enumeration(seed: int, recount: str, bdd_reader: str) -> None:
     """The first count, then counts under other weights (some zero, as choices are), each
     against listing the assignments."""
     rng = random.Random(seed)
@@ -151,7 +151,7 @@ def test_a_level_weight_no_modulus_can_divide_is_counted_one_by_one(
 
 
 @pytest.mark.parametrize("seed", range(20))
-def test_taken_values_equal_enumeration(seed: int) -> None:
+def test_taken_values_equal_enumeration(seed: int, bdd_reader: str) -> None:
     """A variable takes a value when some satisfying assignment gives it that value."""
     rng = random.Random(seed)
     manager = dd.cudd.BDD()
