@@ -515,21 +515,54 @@ def taken(
     One pass over the lists from the root down (``read`` lists children first), marking
     whether each node is reached as itself, as its complement or both: every function
     but FALSE is satisfiable, so the polarity only tells whether an edge to the constant
-    is one to FALSE: no stack, and no set of the (node, polarity) pairs seen."""
+    is one to FALSE: no stack, and no set of the (node, polarity) pairs seen. A large
+    diagram is gone down a level at a time in numpy (``_reached_by_levels``)."""
     if not level_of:
         return {}
     top = min(level_of.values())
     bottom = max(level_of.values()) + 1
     if root == ~0:  # FALSE: nothing satisfies it
         return {name: set() for name in level_of}
+    place = ~root if root < 0 else root
+    reach = _reached_by_levels if len(levels) >= READ_BY_LEVELS_FROM else _reached
+    falses, trues, free = reach(levels, lows, highs, place, 2 if root < 0 else 1, top, bottom)
+    values: dict[int, set[bool]] = {}
+    running = 0
+    for level in range(top, bottom):
+        running += free[level - top]
+        found = {False, True} if running > 0 else set()
+        if falses[level - top]:
+            found.add(False)
+        if trues[level - top]:
+            found.add(True)
+        values[level] = found
+    return {name: values[level] for name, level in level_of.items()}
+
+
+Reached = tuple[Sequence[bool], Sequence[bool], Sequence[int]]
+"""What ``taken`` gathers going down: per level from the top one, whether an edge of value
+false (true) leaves it for a satisfiable child; and a difference array over the levels, +1
+where the levels an edge skips begin and −1 past them."""
+
+
+def _reached(
+    levels: Sequence[int],
+    lows: Sequence[int],
+    highs: Sequence[int],
+    root: int,
+    polarity: int,
+    top: int,
+    bottom: int,
+) -> Reached:
+    """``taken``'s pass from the root (place ``root``, reached with ``polarity``) down, a
+    node at a time."""
     falses = [False] * (bottom - top)  # levels with an edge of that value to a satisfiable child
     trues = [False] * (bottom - top)
     free = [0] * (bottom - top + 1)  # difference array over the levels some edge skips
     reached = bytearray(len(levels))  # per place: 1 reached as itself, 2 as its complement
-    place = ~root if root < 0 else root
-    reached[place] = 2 if root < 0 else 1
+    reached[root] = polarity
     free[0] += 1  # the levels above the root are free
-    free[(levels[place] if place else bottom) - top] -= 1
+    free[(levels[root] if root else bottom) - top] -= 1
     for place in range(len(levels) - 1, 0, -1):
         polarity = reached[place]
         if not polarity:
@@ -548,14 +581,59 @@ def taken(
             free[here + 1] += 1
             free[(levels[low] if low else bottom) - top] -= 1
             reached[low] |= polarity
-    values: dict[int, set[bool]] = {}
-    running = 0
-    for level in range(top, bottom):
-        running += free[level - top]
-        found = {False, True} if running > 0 else set()
-        if falses[level - top]:
-            found.add(False)
-        if trues[level - top]:
-            found.add(True)
-        values[level] = found
-    return {name: values[level] for name, level in level_of.items()}
+    return falses, trues, free
+
+
+def _reached_by_levels(
+    levels: Sequence[int],
+    lows: Sequence[int],
+    highs: Sequence[int],
+    root: int,
+    polarity: int,
+    top: int,
+    bottom: int,
+) -> Reached:
+    """``_reached`` with numpy: the nodes of a level at once, from the top level down
+    (every parent lies above its children, so a level's nodes are reached in full before
+    it is gone down from)."""
+    import numpy as np
+
+    level_at = np.asarray(levels, dtype=np.int64)
+    level_at[0] = bottom  # TRUE's level, as the free levels count it
+    low_at = np.asarray(lows, dtype=np.int64)
+    high_at = np.asarray(highs, dtype=np.int64)
+    by_level = np.argsort(level_at[1:], kind="stable") + 1  # top level first
+    cuts = np.flatnonzero(np.diff(level_at[by_level])) + 1
+    falses, trues = [False] * (bottom - top), [False] * (bottom - top)
+    reached = np.zeros(len(levels), dtype=np.uint8)
+    reached[root] = polarity
+    starts, ends = [np.asarray([top])], [level_at[root : root + 1]]  # levels above the root
+    for places in np.split(by_level, cuts):
+        found = reached[places]
+        live = found != 0
+        if not live.any():
+            continue
+        places, found = places[live], found[live]
+        here = int(level_at[places[0]])
+        highs_here = high_at[places]
+        leaving = (highs_here != 0) | (found & 1 != 0)  # a then edge: FALSE only as ~TRUE
+        if leaving.any():
+            trues[here - top] = True
+            np.bitwise_or.at(reached, highs_here[leaving], found[leaving])
+            starts.append(np.full(np.count_nonzero(leaving), here + 1))
+            ends.append(level_at[highs_here[leaving]])
+        lows_here = low_at[places]
+        negated = lows_here < 0
+        lows_here = np.where(negated, ~lows_here, lows_here)
+        found = np.where(negated, (found & 1) << 1 | found >> 1, found)
+        leaving = (lows_here != 0) | (found & 1 != 0)
+        if leaving.any():
+            falses[here - top] = True
+            np.bitwise_or.at(reached, lows_here[leaving], found[leaving])
+            starts.append(np.full(np.count_nonzero(leaving), here + 1))
+            ends.append(level_at[lows_here[leaving]])
+    size = bottom - top + 1
+    free = np.bincount(np.concatenate(starts) - top, minlength=size) - np.bincount(
+        np.concatenate(ends) - top, minlength=size
+    )
+    return falses, trues, free.tolist()
