@@ -21,9 +21,11 @@ from __future__ import annotations
 
 import os
 from array import array
+from collections import Counter
 from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cache, cached_property
+from itertools import compress
 from typing import TYPE_CHECKING, TypeAlias
 
 from rosvar.interpreter.workspace_models import collector_paused
@@ -75,11 +77,9 @@ class CountedDiagram:
             self._kept_down_to = max(
                 (level for level in above if above[level] < VECTOR_FROM), default=-1
             )
-            self._top = [
-                place
-                for place in range(1, len(self._levels))
-                if self._levels[place] <= self._kept_down_to
-            ]  # children before parents, as all places
+            self._top = list(  # children before parents, as all places (TRUE's level is last)
+                compress(range(len(self._levels)), map(self._kept_down_to.__ge__, self._levels))
+            )
             kept = {self._root if self._root >= 0 else ~self._root, *self._top}
             for place in self._top:
                 low = self._lows[place]
@@ -152,11 +152,9 @@ class CountedDiagram:
     @cached_property
     def _above(self) -> dict[int, int]:
         """Per weighted level, the nodes at it or above: what a recount down to it visits."""
-        at: dict[int, int] = dict.fromkeys(self._weights, 0)
-        for level in self._levels[1:]:
-            at[level] += 1
+        at = Counter(self._levels)
         above, running = {}, 0
-        for level in sorted(at):
+        for level in sorted(self._weights):
             running += at[level]
             above[level] = running
         return above
