@@ -29,6 +29,7 @@ from itertools import compress
 from typing import TYPE_CHECKING, TypeAlias
 
 from rosvar.interpreter.workspace_models import collector_paused
+from rosvar.logic import bdd
 from rosvar.logic.bdd import BDD, Manager, Weight, read, taken
 
 if TYPE_CHECKING:
@@ -197,8 +198,12 @@ def _evaluated(
 ) -> dict[int, int]:
     """The values ``D`` under ``weight_at`` (``total``: their total weight) of the places
     ``kept``. Each other value is dropped once its last parent has been counted: live at
-    once are only those of the nodes whose parents are partly counted."""
+    once are only those of the nodes whose parents are partly counted. A large diagram,
+    which ``read`` lists a level after the other, is counted a level at a time
+    (``_evaluated_by_levels``)."""
     size = len(levels)
+    if size >= bdd.READ_BY_LEVELS_FROM:
+        return _evaluated_by_levels(levels, lows, highs, weight_at, total, kept)
     last = array("q", bytes(8 * size))  # a place → its last parent's place
     for place in range(1, size):
         low = lows[place]
@@ -229,6 +234,62 @@ def _evaluated(
             values[low] = 0
         if last[high] == place:
             values[high] = 0
+    return {place: values[place] for place in kept}
+
+
+def _evaluated_by_levels(
+    levels: list[int],
+    lows: list[int],
+    highs: list[int],
+    weight_at: Mapping[int, Weight],
+    total: int,
+    kept: Collection[int],
+) -> dict[int, int]:
+    """``_evaluated`` a run of places at one level at a time: the arithmetic of a run in
+    one comprehension, with the run's weight, and the values whose last parent is in the
+    run dropped after it. No node of a run is a child of another, so any order of the
+    places with children first is counted right; runs are long in ``read``'s order of a
+    large diagram."""
+    import numpy as np  # imported by ``read`` for such a diagram
+
+    size = len(levels)
+    level_at = np.asarray(levels, dtype=np.int64)
+    runs = (np.flatnonzero(level_at[2:] != level_at[1:-1]) + 2).tolist()
+    places = np.arange(size, dtype=np.int64)
+    last = np.zeros(size, dtype=np.int64)  # a place → its last parent's place
+    low_at = np.asarray(lows, dtype=np.int64)
+    np.maximum.at(last, np.where(low_at < 0, ~low_at, low_at), places)
+    np.maximum.at(last, np.asarray(highs, dtype=np.int64), places)
+    last[np.fromiter(kept, dtype=np.int64, count=len(kept))] = size  # never dropped
+    last[0] = size
+    dropped = np.argsort(last, kind="stable")  # places by their last parent
+    ends = [*runs, size] if size > 1 else []  # a constant has no run
+    drops = np.searchsorted(last[dropped], ends).tolist()
+    dropped_places = dropped.tolist()
+    values = [0] * size  # a dropped value is 0 again
+    values[0] = top = total
+    start, done = 1, 0
+    for end, drop in zip(ends, drops, strict=True):
+        off, on = weight_at[levels[start]]
+        run_lows, run_highs = lows[start:end], highs[start:end]
+        if off == on:  # as in ``combine``
+            values[start:end] = [
+                (top - values[~low] if low < 0 else values[low]) + values[high] >> 1
+                for low, high in zip(run_lows, run_highs, strict=True)
+            ]
+        elif not off:
+            values[start:end] = [values[high] for high in run_highs]
+        elif not on:
+            values[start:end] = [top - values[~low] if low < 0 else values[low] for low in run_lows]
+        else:
+            values[start:end] = [
+                (off * (top - values[~low] if low < 0 else values[low]) + on * values[high])
+                // (off + on)
+                for low, high in zip(run_lows, run_highs, strict=True)
+            ]
+        for place in dropped_places[done:drop]:
+            values[place] = 0
+        start, done = end, drop
     return {place: values[place] for place in kept}
 
 
