@@ -183,7 +183,7 @@ def test_nodes_read_in_memory_are_those_dd_shows(seed: int, bdd_reader: str) -> 
     if seed >= 10:
         for _ in range(6):
             formula = manager.apply("xor", formula, random_formula(manager, rng, names))
-    levels, lows, highs, root = bdd.read(
+    levels, lows, highs, root, _ = bdd.read(
         manager, formula, [manager.level_of_var(name) for name in names]
     )
     function_at: dict[int, BDD] = {}  # place → its function (never complemented), from the root
@@ -210,7 +210,7 @@ def test_taken_is_what_some_model_sets(seed: int, bdd_reader: str) -> None:
     manager = fresh(names)
     formula = random_formula(manager, random.Random(seed), names)
     level_of = {name: manager.level_of_var(name) for name in names}
-    levels, lows, highs, root = bdd.read(manager, formula, level_of.values())
+    levels, lows, highs, root, arrays = bdd.read(manager, formula, level_of.values())
     models = [v for v in assignments(names) if manager.let(v, formula) == manager.true]
     expected = {name: {model[name] for model in models} for name in names}
-    assert bdd.taken(levels, lows, highs, root, level_of) == expected
+    assert bdd.taken(levels, lows, highs, root, level_of, arrays) == expected

@@ -325,12 +325,18 @@ def _top(manager: Manager, part: BDD) -> int:
 class Nodes(NamedTuple):
     """A BDD's nodes, children first after the constant TRUE (place 0): each one's level, low
     and high child (places; a complemented edge as ``~place``); and the root's place
-    (complemented likewise). The level of TRUE is the manager's number of variables."""
+    (complemented likewise). The level of TRUE is the manager's number of variables.
+
+    ``arrays``: the three lists as numpy arrays when numpy read them (``_by_levels``, a
+    level after the other): what goes through them a level at a time (``taken``, the
+    count's ``_evaluated``) then takes them as they are, where converting each list
+    again cost about as much as reading it."""
 
     levels: list[int]
     lows: list[int]
     highs: list[int]
     root: int
+    arrays: tuple[Any, Any, Any] | None = None
 
 
 READ_BY_LEVELS_FROM = 20_000
@@ -446,12 +452,17 @@ def _by_levels(manager: Manager, u: BDD, levels: Collection[int]) -> Nodes:
     low_places = places(all_lows & ~1)
     low_places = np.where(all_lows & 1, ~low_places, low_places)
     high_places[0] = low_places[0] = 0  # the constant's own children: none
-    levels_listed = [bottom]
-    for level, nodes, _, _ in found:
-        levels_listed += [level] * len(nodes)
+    level_at = np.repeat(
+        np.asarray([bottom, *(level for level, _, _, _ in found)], dtype=np.int64),
+        [1, *(len(nodes) for _, nodes, _, _ in found)],
+    )
     root = int(places(np.asarray([start]))[0])
     return Nodes(
-        levels_listed, low_places.tolist(), high_places.tolist(), ~root if negated else root
+        level_at.tolist(),
+        low_places.tolist(),
+        high_places.tolist(),
+        ~root if negated else root,
+        (level_at, low_places, high_places),
     )
 
 
@@ -506,6 +517,7 @@ def taken(
     highs: Sequence[int],
     root: int,
     level_of: Mapping[str, int],
+    arrays: tuple[Any, Any, Any] | None = None,
 ) -> dict[str, set[bool]]:
     """For each variable of ``level_of`` (``read``'s levels, covering the diagram's support),
     the values it takes in some assignment satisfying the diagram ``levels, lows, highs,
@@ -515,8 +527,9 @@ def taken(
     One pass over the lists from the root down (``read`` lists children first), marking
     whether each node is reached as itself, as its complement or both: every function
     but FALSE is satisfiable, so the polarity only tells whether an edge to the constant
-    is one to FALSE: no stack, and no set of the (node, polarity) pairs seen. A large
-    diagram is gone down a level at a time in numpy (``_reached_by_levels``)."""
+    is one to FALSE: no stack, and no set of the (node, polarity) pairs seen. A diagram
+    numpy read (``arrays``, as ``read`` gives them) is gone down a level at a time in numpy
+    (``_reached_by_levels``)."""
     if not level_of:
         return {}
     top = min(level_of.values())
@@ -524,8 +537,11 @@ def taken(
     if root == ~0:  # FALSE: nothing satisfies it
         return {name: set() for name in level_of}
     place = ~root if root < 0 else root
-    reach = _reached_by_levels if len(levels) >= READ_BY_LEVELS_FROM else _reached
-    falses, trues, free = reach(levels, lows, highs, place, 2 if root < 0 else 1, top, bottom)
+    polarity = 2 if root < 0 else 1
+    if arrays is None:
+        falses, trues, free = _reached(levels, lows, highs, place, polarity, top, bottom)
+    else:
+        falses, trues, free = _reached_by_levels(*arrays, place, polarity, top, bottom)
     values: dict[int, set[bool]] = {}
     running = 0
     for level in range(top, bottom):
@@ -585,9 +601,9 @@ def _reached(
 
 
 def _reached_by_levels(
-    levels: Sequence[int],
-    lows: Sequence[int],
-    highs: Sequence[int],
+    levels: Any,
+    lows: Any,
+    highs: Any,
     root: int,
     polarity: int,
     top: int,
@@ -598,10 +614,9 @@ def _reached_by_levels(
     it is gone down from)."""
     import numpy as np
 
-    level_at = np.asarray(levels, dtype=np.int64)
+    level_at = np.array(levels, dtype=np.int64)  # a copy:
     level_at[0] = bottom  # TRUE's level, as the free levels count it
-    low_at = np.asarray(lows, dtype=np.int64)
-    high_at = np.asarray(highs, dtype=np.int64)
+    low_at, high_at = lows, highs
     by_level = np.argsort(level_at[1:], kind="stable") + 1  # top level first
     cuts = np.flatnonzero(np.diff(level_at[by_level])) + 1
     falses, trues = [False] * (bottom - top), [False] * (bottom - top)

@@ -29,7 +29,6 @@ from itertools import compress
 from typing import TYPE_CHECKING, TypeAlias
 
 from rosvar.interpreter.workspace_models import collector_paused
-from rosvar.logic import bdd
 from rosvar.logic.bdd import BDD, Manager, Weight, read, taken
 
 if TYPE_CHECKING:
@@ -71,7 +70,7 @@ class CountedDiagram:
         if self._total == 0:
             raise ValueError("the first weights of a diagram must not be zero")
         with collector_paused():  # its lists are young: the collector would rescan them
-            self._levels, self._lows, self._highs, self._root = read(
+            self._levels, self._lows, self._highs, self._root, self._arrays = read(
                 manager, formula, self._weights
             )
             above = self._above
@@ -86,7 +85,13 @@ class CountedDiagram:
                 low = self._lows[place]
                 kept.update((~low if low < 0 else low, self._highs[place]))
             self._values = _evaluated(
-                self._levels, self._lows, self._highs, self._weights, self._total, kept
+                self._levels,
+                self._lows,
+                self._highs,
+                self._weights,
+                self._total,
+                kept,
+                self._arrays,
             )
         self.first = self._value(self._values, self._total)  # under the weights read with
 
@@ -115,7 +120,9 @@ class CountedDiagram:
                 return found
         if deepest > self._kept_down_to:  # the values below were let go: count them anew
             root = self._root if self._root >= 0 else ~self._root
-            values = _evaluated(self._levels, self._lows, self._highs, weight_at, total, {root})
+            values = _evaluated(
+                self._levels, self._lows, self._highs, weight_at, total, {root}, self._arrays
+            )
             return self._value(values, total)
         times = over = 1  # T / T of the first count: the weights differ on ``changed`` only
         for level in changed:
@@ -162,12 +169,15 @@ class CountedDiagram:
 
     @cached_property
     def _residues(self) -> _Residues:
-        return _Residues.of(self._levels, self._lows, self._highs, self._root)
+        levels, lows, highs = self._arrays or (self._levels, self._lows, self._highs)
+        return _Residues.of(levels, lows, highs, self._root)
 
     def taken(self) -> dict[str, set[bool]]:
         """For each weighted variable, the values it takes in some assignment satisfying the
         formula (``bdd.taken``)."""
-        return taken(self._levels, self._lows, self._highs, self._root, self._level_of)
+        return taken(
+            self._levels, self._lows, self._highs, self._root, self._level_of, self._arrays
+        )
 
     def _value(self, values: Mapping[int, int], total: int, times: int = 1, over: int = 1) -> int:
         root = self._root
@@ -195,15 +205,16 @@ def _evaluated(
     weight_at: Mapping[int, Weight],
     total: int,
     kept: Collection[int],
+    arrays: tuple[Array, Array, Array] | None = None,
 ) -> dict[int, int]:
     """The values ``D`` under ``weight_at`` (``total``: their total weight) of the places
     ``kept``. Each other value is dropped once its last parent has been counted: live at
-    once are only those of the nodes whose parents are partly counted. A large diagram,
-    which ``read`` lists a level after the other, is counted a level at a time
-    (``_evaluated_by_levels``)."""
+    once are only those of the nodes whose parents are partly counted. A diagram numpy
+    read (``arrays``, as ``read`` gives them; a level after the other) is counted a level
+    at a time (``_evaluated_by_levels``)."""
+    if arrays is not None:
+        return _evaluated_by_levels(levels, lows, highs, arrays, weight_at, total, kept)
     size = len(levels)
-    if size >= bdd.READ_BY_LEVELS_FROM:
-        return _evaluated_by_levels(levels, lows, highs, weight_at, total, kept)
     last = array("q", bytes(8 * size))  # a place → its last parent's place
     for place in range(1, size):
         low = lows[place]
@@ -241,6 +252,7 @@ def _evaluated_by_levels(
     levels: list[int],
     lows: list[int],
     highs: list[int],
+    arrays: tuple[Array, Array, Array],
     weight_at: Mapping[int, Weight],
     total: int,
     kept: Collection[int],
@@ -250,16 +262,15 @@ def _evaluated_by_levels(
     run dropped after it. No node of a run is a child of another, so any order of the
     places with children first is counted right; runs are long in ``read``'s order of a
     large diagram."""
-    import numpy as np  # imported by ``read`` for such a diagram
+    import numpy as np  # imported by ``read``, which gave ``arrays``
 
     size = len(levels)
-    level_at = np.asarray(levels, dtype=np.int64)
+    level_at, low_at, high_at = arrays
     runs = (np.flatnonzero(level_at[2:] != level_at[1:-1]) + 2).tolist()
     places = np.arange(size, dtype=np.int64)
     last = np.zeros(size, dtype=np.int64)  # a place → its last parent's place
-    low_at = np.asarray(lows, dtype=np.int64)
     np.maximum.at(last, np.where(low_at < 0, ~low_at, low_at), places)
-    np.maximum.at(last, np.asarray(highs, dtype=np.int64), places)
+    np.maximum.at(last, high_at, places)
     last[np.fromiter(kept, dtype=np.int64, count=len(kept))] = size  # never dropped
     last[0] = size
     dropped = np.argsort(last, kind="stable")  # places by their last parent
@@ -373,7 +384,13 @@ class _Residues:
     root: int
 
     @classmethod
-    def of(cls, levels: list[int], lows: list[int], highs: list[int], root: int) -> _Residues:
+    def of(
+        cls,
+        levels: Sequence[int] | Array,
+        lows: Sequence[int] | Array,
+        highs: Sequence[int] | Array,
+        root: int,
+    ) -> _Residues:
         """The levels of a diagram read by ``CountedDiagram``.
 
         numpy is imported here, on first need: its import is slow, and every rosvar command
