@@ -276,7 +276,6 @@ def _evaluated_by_levels(
     dropped = np.argsort(last, kind="stable")  # places by their last parent
     ends = [*runs, size] if size > 1 else []  # a constant has no run
     drops = np.searchsorted(last[dropped], ends).tolist()
-    dropped_places = dropped.tolist()
     values = [0] * size  # a dropped value is 0 again
     values[0] = top = total
     start, done = 1, 0
@@ -298,7 +297,7 @@ def _evaluated_by_levels(
                 // (off + on)
                 for low, high in zip(run_lows, run_highs, strict=True)
             ]
-        for place in dropped_places[done:drop]:
+        for place in dropped[done:drop].tolist():
             values[place] = 0
         start, done = end, drop
     return {place: values[place] for place in kept}
