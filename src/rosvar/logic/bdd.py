@@ -15,6 +15,7 @@ version of ``dd`` for it, and ``_indices`` checks the layout before every read.
 from __future__ import annotations
 
 import ctypes
+import os
 import sys
 from collections.abc import Callable, Collection, Container, Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
@@ -400,11 +401,20 @@ def _indices(manager: Manager, levels: Iterable[int]) -> dict[int, int]:
     return found
 
 
+def without_blas_threads() -> None:
+    """Called before numpy is imported, which rosvar leaves to the first need (its import is
+    slow, and every command would otherwise pay for it at start-up): only its element-wise
+    integer operations are used, so its BLAS is kept from starting a worker thread per
+    core."""
+    os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+
 def _by_levels(manager: Manager, u: BDD, levels: Collection[int]) -> Nodes:
     """``read`` with numpy, from the top level down: every parent of a node lies above
     it, so when a level is reached all its nodes are known, gathered from the children
     of the levels above. Each level is one batch of array operations, where ``_Reader``
     spends a Python call per node; the nodes are listed deepest level first."""
+    without_blas_threads()
     import numpy as np
 
     words = _words()
@@ -456,9 +466,12 @@ def _by_levels(manager: Manager, u: BDD, levels: Collection[int]) -> Nodes:
         np.asarray([bottom, *(level for level, _, _, _ in found)], dtype=np.int64),
         [1, *(len(nodes) for _, nodes, _, _ in found)],
     )
+    levels_listed = [bottom]  # each level one int object, not one per node as ``tolist``'s
+    for level, nodes, _, _ in found:
+        levels_listed += [level] * len(nodes)
     root = int(places(np.asarray([start]))[0])
     return Nodes(
-        level_at.tolist(),
+        levels_listed,
         low_places.tolist(),
         high_places.tolist(),
         ~root if negated else root,

@@ -19,7 +19,6 @@ to exceed a bound of the count, so the residues determine it.
 
 from __future__ import annotations
 
-import os
 from array import array
 from collections import Counter
 from collections.abc import Collection, Mapping, Sequence
@@ -29,7 +28,7 @@ from itertools import compress
 from typing import TYPE_CHECKING, TypeAlias
 
 from rosvar.interpreter.workspace_models import collector_paused
-from rosvar.logic.bdd import BDD, Manager, Weight, read, taken
+from rosvar.logic.bdd import BDD, Manager, Weight, read, taken, without_blas_threads
 
 if TYPE_CHECKING:
     import numpy as np
@@ -390,13 +389,9 @@ class _Residues:
         highs: Sequence[int] | Array,
         root: int,
     ) -> _Residues:
-        """The levels of a diagram read by ``CountedDiagram``.
-
-        numpy is imported here, on first need: its import is slow, and every rosvar command
-        would otherwise pay for it at start-up. Only its element-wise integer operations
-        are used, so its BLAS is kept from starting a worker thread per core.
-        """
-        os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+        """The levels of a diagram read by ``CountedDiagram`` (numpy imported on first need,
+        ``bdd.without_blas_threads``)."""
+        without_blas_threads()
         import numpy as np
 
         level_of = np.asarray(levels, dtype=np.int64)
