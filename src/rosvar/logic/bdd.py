@@ -340,9 +340,9 @@ class Nodes(NamedTuple):
     arrays: tuple[Any, Any, Any] | None = None
 
 
-READ_BY_LEVELS_FROM = 20_000
+READ_BY_LEVELS_FROM = 100_000
 """Nodes from which ``read`` takes a diagram level by level in numpy: below, numpy's import
-costs more than it saves."""
+costs more time and memory than it saves (docs/performance.md)."""
 
 
 def read(manager: Manager, u: BDD, levels: Collection[int]) -> Nodes:
