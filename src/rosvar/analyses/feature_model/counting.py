@@ -49,7 +49,8 @@ class CountedDiagram:
     + w₁·D(high)) / (w₀ + w₁)``), a complemented edge is ``T − D`` (``T``: the total
     weight of all variables), and the count is ``D(root)``.
 
-    The nodes are read out of CUDD's memory (``bdd.read``) once, as plain lists.
+    The nodes are read out of CUDD's memory (``bdd.read``) once, as plain lists (a large
+    diagram by numpy, which also gives them as arrays: counted and gone down by levels).
     ``D(u) / T`` depends only on the weights of ``u``'s level and those below, so a
     later count whose weights differ on some levels recomputes only the nodes down to
     the deepest of them and rescales the first count's values of the nodes below: the
