@@ -4,6 +4,7 @@
 analyses them with one :class:`~rosvar.interpreter.workspace_models.Analysis`, restricts the model
 to configurations and, where the roslaunch oracle is available, compares a restriction with the
 real roslaunch (``tests/oracle``) using the differential harness's :func:`compare`.
+``bdd_reader`` runs a test with each of ``bdd.read``'s two ways of reading a diagram.
 
 The directory ``tests/`` is put on ``sys.path`` so that test modules (which pytest imports in
 ``importlib`` mode, outside any package) can import ``oracle.client`` like the harness does.
@@ -149,3 +150,14 @@ class LaunchWorkspace:
 @pytest.fixture
 def ws(tmp_path: Path) -> LaunchWorkspace:
     return LaunchWorkspace(tmp_path / "ws")
+
+
+@pytest.fixture(params=["node by node", "by levels"])
+def bdd_reader(request: pytest.FixtureRequest, monkeypatch: pytest.MonkeyPatch) -> str:
+    """``bdd.read`` either way, whatever the diagram's size: a Python call per node, or a
+    level at a time in numpy."""
+    from rosvar.logic import bdd
+
+    by_levels = request.param == "by levels"
+    monkeypatch.setattr(bdd, "READ_BY_LEVELS_FROM", 0 if by_levels else 10**9)
+    return str(request.param)

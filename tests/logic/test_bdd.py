@@ -172,14 +172,18 @@ def test_complemented_edges_flip_the_lowest_bit_of_int() -> None:
 
 
 @pytest.mark.parametrize("seed", range(20))
-def test_nodes_read_in_memory_are_those_dd_shows(seed: int) -> None:
+def test_nodes_read_in_memory_are_those_dd_shows(seed: int, bdd_reader: str) -> None:
     """Each node ``read`` found in CUDD's memory has the level and children that ``dd``'s
-    wrappers give (a complemented low edge as ``~place``), and every node is reached."""
+    wrappers give (a complemented low edge as ``~place``), every node is reached, and
+    children come before their parents."""
     rng = random.Random(seed)
-    names = NAMES[:8]
+    names = NAMES[:8] if seed < 10 else NAMES  # then many nodes a level, several levels down
     manager = fresh(names)
     formula = random_formula(manager, rng, names)
-    levels, lows, highs, root = bdd.read(
+    if seed >= 10:
+        for _ in range(6):
+            formula = manager.apply("xor", formula, random_formula(manager, rng, names))
+    levels, lows, highs, root, _ = bdd.read(
         manager, formula, [manager.level_of_var(name) for name in names]
     )
     function_at: dict[int, BDD] = {}  # place → its function (never complemented), from the root
@@ -192,6 +196,7 @@ def test_nodes_read_in_memory_are_those_dd_shows(seed: int) -> None:
             continue
         assert levels[place] == function.level
         low, high = lows[place], highs[place]
+        assert 0 <= high < place and 0 <= (~low if low < 0 else low) < place
         pending.append((high, function.high))
         pending.append((~low, ~function.low) if low < 0 else (low, function.low))
     assert len(function_at) == len(levels)
@@ -199,13 +204,13 @@ def test_nodes_read_in_memory_are_those_dd_shows(seed: int) -> None:
 
 
 @pytest.mark.parametrize("seed", range(30))
-def test_taken_is_what_some_model_sets(seed: int) -> None:
+def test_taken_is_what_some_model_sets(seed: int, bdd_reader: str) -> None:
     """The values ``taken`` finds are those of the satisfying assignments."""
     names = NAMES[:6]
     manager = fresh(names)
     formula = random_formula(manager, random.Random(seed), names)
     level_of = {name: manager.level_of_var(name) for name in names}
-    levels, lows, highs, root = bdd.read(manager, formula, level_of.values())
+    levels, lows, highs, root, arrays = bdd.read(manager, formula, level_of.values())
     models = [v for v in assignments(names) if manager.let(v, formula) == manager.true]
     expected = {name: {model[name] for model in models} for name in names}
-    assert bdd.taken(levels, lows, highs, root, level_of) == expected
+    assert bdd.taken(levels, lows, highs, root, level_of, arrays) == expected

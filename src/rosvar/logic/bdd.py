@@ -15,6 +15,7 @@ version of ``dd`` for it, and ``_indices`` checks the layout before every read.
 from __future__ import annotations
 
 import ctypes
+import os
 import sys
 from collections.abc import Callable, Collection, Container, Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
@@ -278,12 +279,21 @@ def conjoin(manager: Manager, parts: Sequence[BDD]) -> BDD:
     level, never a part reaching far up without those that prune it — the result
     does not grow beyond the final diagram's width (ordering by the deepest
     variable instead made intermediate results many times the final one).
-    """
 
+    The parts sharing a top variable are conjoined first, among themselves: a conjunction
+    walks the result down from that variable, once for them all instead of once each.
+    """
     result = manager.true
+    group = manager.true
+    level = None
     for part in _bottom_up(manager, parts):
-        result &= part
-    return result
+        top = _top(manager, part)
+        if top != level:
+            result &= group
+            group, level = part, top
+        else:
+            group &= part
+    return result & group
 
 
 def conjoin_within(manager: Manager, parts: Sequence[BDD], nodes: int) -> BDD | None:
@@ -302,12 +312,12 @@ SIZE_CHECKS = 32
 
 def _bottom_up(manager: Manager, parts: Sequence[BDD]) -> list[BDD]:
     """``parts`` by their top variable, deepest first (``conjoin``'s schedule)."""
-    constants = (manager.true, manager.false)
+    return sorted(parts, key=lambda part: _top(manager, part), reverse=True)
 
-    def top(part: BDD) -> int:
-        return -1 if part in constants else int(part.level)  # the root is the top variable
 
-    return sorted(parts, key=top, reverse=True)
+def _top(manager: Manager, part: BDD) -> int:
+    """The level of ``part``'s top variable (its root's); -1 for a constant."""
+    return -1 if part in (manager.true, manager.false) else int(part.level)
 
 
 # -- the nodes of a BDD as plain lists, read in CUDD's memory ------------------------------------
@@ -316,12 +326,23 @@ def _bottom_up(manager: Manager, parts: Sequence[BDD]) -> list[BDD]:
 class Nodes(NamedTuple):
     """A BDD's nodes, children first after the constant TRUE (place 0): each one's level, low
     and high child (places; a complemented edge as ``~place``); and the root's place
-    (complemented likewise). The level of TRUE is the manager's number of variables."""
+    (complemented likewise). The level of TRUE is the manager's number of variables.
+
+    ``arrays``: the three lists as numpy arrays when numpy read them (``_by_levels``, a
+    level after the other): what goes through them a level at a time (``taken``, the
+    count's ``_evaluated``) then takes them as they are, where converting each list
+    again cost about as much as reading it."""
 
     levels: list[int]
     lows: list[int]
     highs: list[int]
     root: int
+    arrays: tuple[Any, Any, Any] | None = None
+
+
+READ_BY_LEVELS_FROM = 100_000
+"""Nodes from which ``read`` takes a diagram level by level in numpy: below, numpy's import
+costs more time and memory than it saves (docs/performance.md)."""
 
 
 def read(manager: Manager, u: BDD, levels: Collection[int]) -> Nodes:
@@ -333,8 +354,11 @@ def read(manager: Manager, u: BDD, levels: Collection[int]) -> Nodes:
     ``u`` is referenced, since nothing runs in CUDD meanwhile: its nodes can be
     neither freed nor moved. ``int`` of a ``dd`` function is its pointer plus 2, and
     CUDD marks a complemented edge in the pointer's lowest bit (``then`` edges never
-    are).
+    are). A large diagram is read a level at a time (``_by_levels``), a small one node
+    by node (``_Reader``).
     """
+    if u.dag_size >= READ_BY_LEVELS_FROM:
+        return _by_levels(manager, u, levels)
     reader = _Reader(_indices(manager, levels), int(manager.true) - 2, len(manager.vars))
     pointer = int(u) - 2
     negated = pointer & 1
@@ -375,6 +399,94 @@ def _indices(manager: Manager, levels: Iterable[int]) -> dict[int, int]:
             raise RuntimeError("dd's CUDD lays its nodes out otherwise than rosvar reads them")
         found[words[node] & 0xFFFFFFFF] = level
     return found
+
+
+def without_blas_threads() -> None:
+    """Called before numpy is imported, which rosvar leaves to the first need (its import is
+    slow, and every command would otherwise pay for it at start-up): only its element-wise
+    integer operations are used, so its BLAS is kept from starting a worker thread per
+    core."""
+    os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+
+def _by_levels(manager: Manager, u: BDD, levels: Collection[int]) -> Nodes:
+    """``read`` with numpy, from the top level down: every parent of a node lies above
+    it, so when a level is reached all its nodes are known, gathered from the children
+    of the levels above. Each level is one batch of array operations, where ``_Reader``
+    spends a Python call per node; the nodes are listed deepest level first."""
+    without_blas_threads()
+    import numpy as np
+
+    words = _words()
+    index_of = _indices(manager, levels)
+    level_at = np.full(max(index_of, default=0) + 1, -1, dtype=np.int64)  # index → level
+    for index, level in index_of.items():
+        level_at[index] = level
+    true = int(manager.true) - 2
+    pointer = int(u) - 2
+    negated = pointer & 1
+    start = pointer ^ negated
+    waiting: dict[int, list[Any]] = {}  # a level → arrays of (regular) addresses of its nodes
+    if start != true:
+        waiting[index_of[int(words[(start >> 3) - 1]) & 0xFFFFFFFF]] = [np.asarray([start])]
+    found = []  # (level, its nodes' addresses, their then and else words), top level first
+    for level in sorted(levels):
+        batches = waiting.pop(level, None)
+        if batches is None:
+            continue
+        nodes = np.unique(np.concatenate(batches))
+        at = (nodes >> 3) - 1  # the index word of each node (``_words`` starts at 8)
+        highs, lows = words[at + 2], words[at + 3]
+        found.append((level, nodes, highs, lows))
+        children = np.concatenate([highs, lows & ~1])
+        children = children[children != true]
+        below = level_at[words[(children >> 3) - 1] & 0xFFFFFFFF]
+        by_level = np.argsort(below)
+        below, children = below[by_level], children[by_level]
+        cuts = (np.flatnonzero(below[1:] != below[:-1]) + 1).tolist()
+        for first, end in zip([0, *cuts], [*cuts, len(children)], strict=True):
+            if first < end:
+                waiting.setdefault(int(below[first]), []).append(children[first:end])
+    found.reverse()  # children first
+    bottom = len(manager.vars)
+    addresses = np.concatenate([np.asarray([true]), *(nodes for _, nodes, _, _ in found)])
+    ranked = np.argsort(addresses)  # places by address, to find each child's place
+    sorted_addresses = addresses[ranked]
+
+    def places(edges: Any) -> Any:
+        return ranked[np.searchsorted(sorted_addresses, edges)]
+
+    all_highs = np.concatenate([np.zeros(1, dtype=np.int64)] + [h for _, _, h, _ in found])
+    all_lows = np.concatenate([np.zeros(1, dtype=np.int64)] + [w for _, _, _, w in found])
+    high_places = places(all_highs)
+    low_places = places(all_lows & ~1)
+    low_places = np.where(all_lows & 1, ~low_places, low_places)
+    high_places[0] = low_places[0] = 0  # the constant's own children: none
+    level_at = np.repeat(
+        np.asarray([bottom, *(level for level, _, _, _ in found)], dtype=np.int64),
+        [1, *(len(nodes) for _, nodes, _, _ in found)],
+    )
+    levels_listed = [bottom]  # each level one int object, not one per node as ``tolist``'s
+    for level, nodes, _, _ in found:
+        levels_listed += [level] * len(nodes)
+    root = int(places(np.asarray([start]))[0])
+    return Nodes(
+        levels_listed,
+        low_places.tolist(),
+        high_places.tolist(),
+        ~root if negated else root,
+        (level_at, low_places, high_places),
+    )
+
+
+@cache
+def _words() -> Any:
+    """``_memory`` as a numpy array of 64-bit words, for reading many nodes at once; it
+    starts at the address 8 (numpy takes an address 0 for no memory at all)."""
+    import numpy as np
+
+    everything = (ctypes.c_int64 * (sys.maxsize // 8 - 1)).from_address(8)
+    return np.frombuffer(memoryview(everything), dtype=np.int64)
 
 
 class _Reader:
@@ -418,6 +530,7 @@ def taken(
     highs: Sequence[int],
     root: int,
     level_of: Mapping[str, int],
+    arrays: tuple[Any, Any, Any] | None = None,
 ) -> dict[str, set[bool]]:
     """For each variable of ``level_of`` (``read``'s levels, covering the diagram's support),
     the values it takes in some assignment satisfying the diagram ``levels, lows, highs,
@@ -427,21 +540,58 @@ def taken(
     One pass over the lists from the root down (``read`` lists children first), marking
     whether each node is reached as itself, as its complement or both: every function
     but FALSE is satisfiable, so the polarity only tells whether an edge to the constant
-    is one to FALSE: no stack, and no set of the (node, polarity) pairs seen."""
+    is one to FALSE: no stack, and no set of the (node, polarity) pairs seen. A diagram
+    numpy read (``arrays``, as ``read`` gives them) is gone down a level at a time in numpy
+    (``_reached_by_levels``)."""
     if not level_of:
         return {}
     top = min(level_of.values())
     bottom = max(level_of.values()) + 1
     if root == ~0:  # FALSE: nothing satisfies it
         return {name: set() for name in level_of}
+    place = ~root if root < 0 else root
+    polarity = 2 if root < 0 else 1
+    if arrays is None:
+        falses, trues, free = _reached(levels, lows, highs, place, polarity, top, bottom)
+    else:
+        falses, trues, free = _reached_by_levels(*arrays, place, polarity, top, bottom)
+    values: dict[int, set[bool]] = {}
+    running = 0
+    for level in range(top, bottom):
+        running += free[level - top]
+        found = {False, True} if running > 0 else set()
+        if falses[level - top]:
+            found.add(False)
+        if trues[level - top]:
+            found.add(True)
+        values[level] = found
+    return {name: values[level] for name, level in level_of.items()}
+
+
+Reached = tuple[Sequence[bool], Sequence[bool], Sequence[int]]
+"""What ``taken`` gathers going down: per level from the top one, whether an edge of value
+false (true) leaves it for a satisfiable child; and a difference array over the levels, +1
+where the levels an edge skips begin and −1 past them."""
+
+
+def _reached(
+    levels: Sequence[int],
+    lows: Sequence[int],
+    highs: Sequence[int],
+    root: int,
+    polarity: int,
+    top: int,
+    bottom: int,
+) -> Reached:
+    """``taken``'s pass from the root (place ``root``, reached with ``polarity``) down, a
+    node at a time."""
     falses = [False] * (bottom - top)  # levels with an edge of that value to a satisfiable child
     trues = [False] * (bottom - top)
     free = [0] * (bottom - top + 1)  # difference array over the levels some edge skips
     reached = bytearray(len(levels))  # per place: 1 reached as itself, 2 as its complement
-    place = ~root if root < 0 else root
-    reached[place] = 2 if root < 0 else 1
+    reached[root] = polarity
     free[0] += 1  # the levels above the root are free
-    free[(levels[place] if place else bottom) - top] -= 1
+    free[(levels[root] if root else bottom) - top] -= 1
     for place in range(len(levels) - 1, 0, -1):
         polarity = reached[place]
         if not polarity:
@@ -460,14 +610,58 @@ def taken(
             free[here + 1] += 1
             free[(levels[low] if low else bottom) - top] -= 1
             reached[low] |= polarity
-    values: dict[int, set[bool]] = {}
-    running = 0
-    for level in range(top, bottom):
-        running += free[level - top]
-        found = {False, True} if running > 0 else set()
-        if falses[level - top]:
-            found.add(False)
-        if trues[level - top]:
-            found.add(True)
-        values[level] = found
-    return {name: values[level] for name, level in level_of.items()}
+    return falses, trues, free
+
+
+def _reached_by_levels(
+    levels: Any,
+    lows: Any,
+    highs: Any,
+    root: int,
+    polarity: int,
+    top: int,
+    bottom: int,
+) -> Reached:
+    """``_reached`` with numpy: the nodes of a level at once, from the top level down
+    (every parent lies above its children, so a level's nodes are reached in full before
+    it is gone down from)."""
+    import numpy as np
+
+    level_at = np.array(levels, dtype=np.int64)  # a copy:
+    level_at[0] = bottom  # TRUE's level, as the free levels count it
+    low_at, high_at = lows, highs
+    by_level = np.argsort(level_at[1:], kind="stable") + 1  # top level first
+    cuts = np.flatnonzero(np.diff(level_at[by_level])) + 1
+    falses, trues = [False] * (bottom - top), [False] * (bottom - top)
+    reached = np.zeros(len(levels), dtype=np.uint8)
+    reached[root] = polarity
+    starts, ends = [np.asarray([top])], [level_at[root : root + 1]]  # levels above the root
+    for places in np.split(by_level, cuts):
+        found = reached[places]
+        live = found != 0
+        if not live.any():
+            continue
+        places, found = places[live], found[live]
+        here = int(level_at[places[0]])
+        highs_here = high_at[places]
+        leaving = (highs_here != 0) | (found & 1 != 0)  # a then edge: FALSE only as ~TRUE
+        if leaving.any():
+            trues[here - top] = True
+            np.bitwise_or.at(reached, highs_here[leaving], found[leaving])
+            starts.append(np.full(np.count_nonzero(leaving), here + 1))
+            ends.append(level_at[highs_here[leaving]])
+        lows_here = low_at[places]
+        negated = lows_here < 0
+        lows_here = np.where(negated, ~lows_here, lows_here)
+        found = np.where(negated, (found & 1) << 1 | found >> 1, found)
+        leaving = (lows_here != 0) | (found & 1 != 0)
+        if leaving.any():
+            falses[here - top] = True
+            np.bitwise_or.at(reached, lows_here[leaving], found[leaving])
+            starts.append(np.full(np.count_nonzero(leaving), here + 1))
+            ends.append(level_at[lows_here[leaving]])
+    size = bottom - top + 1
+    free = np.bincount(np.concatenate(starts) - top, minlength=size) - np.bincount(
+        np.concatenate(ends) - top, minlength=size
+    )
+    return falses, trues, free.tolist()

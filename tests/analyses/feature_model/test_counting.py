@@ -10,6 +10,7 @@ import pytest
 
 from rosvar.analyses.feature_model import counting
 from rosvar.analyses.feature_model.counting import CountedDiagram, Weight, moduli
+from rosvar.logic import bdd
 from rosvar.logic.bdd import BDD
 
 
@@ -47,7 +48,7 @@ def recount(request: pytest.FixtureRequest, monkeypatch: pytest.MonkeyPatch) -> 
 
 
 @pytest.mark.parametrize("seed", range(40))
-def test_counts_equal_enumeration(seed: int, recount: str) -> None:
+def test_counts_equal_enumeration(seed: int, recount: str, bdd_reader: str) -> None:
     """The first count, then counts under other weights (some zero, as choices are), each
     against listing the assignments."""
     rng = random.Random(seed)
@@ -151,7 +152,7 @@ def test_a_level_weight_no_modulus_can_divide_is_counted_one_by_one(
 
 
 @pytest.mark.parametrize("seed", range(20))
-def test_taken_values_equal_enumeration(seed: int) -> None:
+def test_taken_values_equal_enumeration(seed: int, bdd_reader: str) -> None:
     """A variable takes a value when some satisfying assignment gives it that value."""
     rng = random.Random(seed)
     manager = dd.cudd.BDD()
@@ -192,7 +193,7 @@ def test_a_prepared_diagram_recounts_with_what_it_built(monkeypatch: pytest.Monk
 
 @pytest.mark.parametrize("seed", range(8))
 def test_values_below_a_quick_recount_are_let_go_and_counted_anew(
-    seed: int, monkeypatch: pytest.MonkeyPatch
+    seed: int, monkeypatch: pytest.MonkeyPatch, bdd_reader: str
 ) -> None:
     """Only the first values a quick recount reads are kept; a recount in Python that
     reaches below them (numpy kept away) counts the whole diagram again, exactly."""
@@ -215,6 +216,55 @@ def test_values_below_a_quick_recount_are_let_go_and_counted_anew(
     for name in names:
         weights = {**first, name: (rng.randint(0, 3), rng.randint(0, 4))}
         assert diagram.count(weights) == enumerated(manager, formula, weights)
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_counts_by_levels_equal_those_node_by_node(
+    seed: int, recount: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Diagrams too large to enumerate, with many nodes a level: read and counted a level
+    at a time in numpy, their first count, recounts and values taken are those of the
+    reading and count node by node."""
+    rng = random.Random(seed)
+    manager = dd.cudd.BDD()
+    names = [f"x{i}" for i in range(18)]
+    manager.declare(*names)
+    formula = manager.false
+    for _ in range(5):
+        formula = manager.apply("xor", formula, random_formula(manager, rng, names))
+    first = {name: (rng.randint(1, 3), rng.randint(1, 4)) for name in names}
+    others = [
+        {**first, **{n: (rng.randint(0, 3), rng.randint(0, 4)) for n in rng.sample(names, 2)}}
+        for _ in range(4)
+    ]
+    found = []
+    for threshold in (0, 10**9):  # by levels, then node by node
+        monkeypatch.setattr(bdd, "READ_BY_LEVELS_FROM", threshold)
+        diagram = CountedDiagram(manager, formula, first)
+        found.append((diagram.first, [diagram.count(w) for w in others], diagram.taken()))
+    assert found[0] == found[1]
+    assert found[0][0] == counted_exactly(manager, formula, first)
+
+
+def counted_exactly(manager: dd.cudd.BDD, formula: BDD, weights: dict[str, Weight]) -> int:
+    """The weighted count by Shannon expansion over the variables in order (each function
+    and variable once): another computation than ``CountedDiagram``'s."""
+    order = sorted(weights, key=manager.level_of_var)
+    known: dict[tuple[BDD, int], int] = {}
+
+    def expand(u: BDD, index: int) -> int:
+        if u == manager.false:
+            return 0
+        if index == len(order):
+            return 1
+        if (u, index) not in known:
+            name = order[index]
+            off, on = weights[name]
+            low, high = (manager.let({name: value}, u) for value in (False, True))
+            known[u, index] = off * expand(low, index + 1) + on * expand(high, index + 1)
+        return known[u, index]
+
+    return expand(formula, 0)
 
 
 def test_combine_weighs_the_children() -> None:

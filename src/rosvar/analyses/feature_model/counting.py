@@ -19,15 +19,16 @@ to exceed a bound of the count, so the residues determine it.
 
 from __future__ import annotations
 
-import os
 from array import array
+from collections import Counter
 from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 from functools import cache, cached_property
+from itertools import compress
 from typing import TYPE_CHECKING, TypeAlias
 
 from rosvar.interpreter.workspace_models import collector_paused
-from rosvar.logic.bdd import BDD, Manager, Weight, read, taken
+from rosvar.logic.bdd import BDD, Manager, Weight, read, taken, without_blas_threads
 
 if TYPE_CHECKING:
     import numpy as np
@@ -48,7 +49,8 @@ class CountedDiagram:
     + w₁·D(high)) / (w₀ + w₁)``), a complemented edge is ``T − D`` (``T``: the total
     weight of all variables), and the count is ``D(root)``.
 
-    The nodes are read out of CUDD's memory (``bdd.read``) once, as plain lists.
+    The nodes are read out of CUDD's memory (``bdd.read``) once, as plain lists (a large
+    diagram by numpy, which also gives them as arrays: counted and gone down by levels).
     ``D(u) / T`` depends only on the weights of ``u``'s level and those below, so a
     later count whose weights differ on some levels recomputes only the nodes down to
     the deepest of them and rescales the first count's values of the nodes below: the
@@ -68,24 +70,28 @@ class CountedDiagram:
         if self._total == 0:
             raise ValueError("the first weights of a diagram must not be zero")
         with collector_paused():  # its lists are young: the collector would rescan them
-            self._levels, self._lows, self._highs, self._root = read(
+            self._levels, self._lows, self._highs, self._root, self._arrays = read(
                 manager, formula, self._weights
             )
             above = self._above
             self._kept_down_to = max(
                 (level for level in above if above[level] < VECTOR_FROM), default=-1
             )
-            self._top = [
-                place
-                for place in range(1, len(self._levels))
-                if self._levels[place] <= self._kept_down_to
-            ]  # children before parents, as all places
+            self._top = list(  # children before parents, as all places (TRUE's level is last)
+                compress(range(len(self._levels)), map(self._kept_down_to.__ge__, self._levels))
+            )
             kept = {self._root if self._root >= 0 else ~self._root, *self._top}
             for place in self._top:
                 low = self._lows[place]
                 kept.update((~low if low < 0 else low, self._highs[place]))
             self._values = _evaluated(
-                self._levels, self._lows, self._highs, self._weights, self._total, kept
+                self._levels,
+                self._lows,
+                self._highs,
+                self._weights,
+                self._total,
+                kept,
+                self._arrays,
             )
         self.first = self._value(self._values, self._total)  # under the weights read with
 
@@ -114,7 +120,9 @@ class CountedDiagram:
                 return found
         if deepest > self._kept_down_to:  # the values below were let go: count them anew
             root = self._root if self._root >= 0 else ~self._root
-            values = _evaluated(self._levels, self._lows, self._highs, weight_at, total, {root})
+            values = _evaluated(
+                self._levels, self._lows, self._highs, weight_at, total, {root}, self._arrays
+            )
             return self._value(values, total)
         times = over = 1  # T / T of the first count: the weights differ on ``changed`` only
         for level in changed:
@@ -152,23 +160,24 @@ class CountedDiagram:
     @cached_property
     def _above(self) -> dict[int, int]:
         """Per weighted level, the nodes at it or above: what a recount down to it visits."""
-        at: dict[int, int] = dict.fromkeys(self._weights, 0)
-        for level in self._levels[1:]:
-            at[level] += 1
+        at = Counter(self._levels)
         above, running = {}, 0
-        for level in sorted(at):
+        for level in sorted(self._weights):
             running += at[level]
             above[level] = running
         return above
 
     @cached_property
     def _residues(self) -> _Residues:
-        return _Residues.of(self._levels, self._lows, self._highs, self._root)
+        levels, lows, highs = self._arrays or (self._levels, self._lows, self._highs)
+        return _Residues.of(levels, lows, highs, self._root)
 
     def taken(self) -> dict[str, set[bool]]:
         """For each weighted variable, the values it takes in some assignment satisfying the
         formula (``bdd.taken``)."""
-        return taken(self._levels, self._lows, self._highs, self._root, self._level_of)
+        return taken(
+            self._levels, self._lows, self._highs, self._root, self._level_of, self._arrays
+        )
 
     def _value(self, values: Mapping[int, int], total: int, times: int = 1, over: int = 1) -> int:
         root = self._root
@@ -196,10 +205,15 @@ def _evaluated(
     weight_at: Mapping[int, Weight],
     total: int,
     kept: Collection[int],
+    arrays: tuple[Array, Array, Array] | None = None,
 ) -> dict[int, int]:
     """The values ``D`` under ``weight_at`` (``total``: their total weight) of the places
     ``kept``. Each other value is dropped once its last parent has been counted: live at
-    once are only those of the nodes whose parents are partly counted."""
+    once are only those of the nodes whose parents are partly counted. A diagram numpy
+    read (``arrays``, as ``read`` gives them; a level after the other) is counted a level
+    at a time (``_evaluated_by_levels``)."""
+    if arrays is not None:
+        return _evaluated_by_levels(levels, lows, highs, arrays, weight_at, total, kept)
     size = len(levels)
     last = array("q", bytes(8 * size))  # a place → its last parent's place
     for place in range(1, size):
@@ -231,6 +245,61 @@ def _evaluated(
             values[low] = 0
         if last[high] == place:
             values[high] = 0
+    return {place: values[place] for place in kept}
+
+
+def _evaluated_by_levels(
+    levels: list[int],
+    lows: list[int],
+    highs: list[int],
+    arrays: tuple[Array, Array, Array],
+    weight_at: Mapping[int, Weight],
+    total: int,
+    kept: Collection[int],
+) -> dict[int, int]:
+    """``_evaluated`` a run of places at one level at a time: the arithmetic of a run in
+    one comprehension, with the run's weight, and the values whose last parent is in the
+    run dropped after it. No node of a run is a child of another, so any order of the
+    places with children first is counted right; runs are long in ``read``'s order of a
+    large diagram."""
+    import numpy as np  # imported by ``read``, which gave ``arrays``
+
+    size = len(levels)
+    level_at, low_at, high_at = arrays
+    runs = (np.flatnonzero(level_at[2:] != level_at[1:-1]) + 2).tolist()
+    places = np.arange(size, dtype=np.int64)
+    last = np.zeros(size, dtype=np.int64)  # a place → its last parent's place
+    np.maximum.at(last, np.where(low_at < 0, ~low_at, low_at), places)
+    np.maximum.at(last, high_at, places)
+    last[np.fromiter(kept, dtype=np.int64, count=len(kept))] = size  # never dropped
+    last[0] = size
+    dropped = np.argsort(last, kind="stable")  # places by their last parent
+    ends = [*runs, size] if size > 1 else []  # a constant has no run
+    drops = np.searchsorted(last[dropped], ends).tolist()
+    values = [0] * size  # a dropped value is 0 again
+    values[0] = top = total
+    start, done = 1, 0
+    for end, drop in zip(ends, drops, strict=True):
+        off, on = weight_at[levels[start]]
+        run_lows, run_highs = lows[start:end], highs[start:end]
+        if off == on:  # as in ``combine``
+            values[start:end] = [
+                (top - values[~low] if low < 0 else values[low]) + values[high] >> 1
+                for low, high in zip(run_lows, run_highs, strict=True)
+            ]
+        elif not off:
+            values[start:end] = [values[high] for high in run_highs]
+        elif not on:
+            values[start:end] = [top - values[~low] if low < 0 else values[low] for low in run_lows]
+        else:
+            values[start:end] = [
+                (off * (top - values[~low] if low < 0 else values[low]) + on * values[high])
+                // (off + on)
+                for low, high in zip(run_lows, run_highs, strict=True)
+            ]
+        for place in dropped[done:drop].tolist():
+            values[place] = 0
+        start, done = end, drop
     return {place: values[place] for place in kept}
 
 
@@ -314,14 +383,16 @@ class _Residues:
     root: int
 
     @classmethod
-    def of(cls, levels: list[int], lows: list[int], highs: list[int], root: int) -> _Residues:
-        """The levels of a diagram read by ``CountedDiagram``.
-
-        numpy is imported here, on first need: its import is slow, and every rosvar command
-        would otherwise pay for it at start-up. Only its element-wise integer operations
-        are used, so its BLAS is kept from starting a worker thread per core.
-        """
-        os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+    def of(
+        cls,
+        levels: Sequence[int] | Array,
+        lows: Sequence[int] | Array,
+        highs: Sequence[int] | Array,
+        root: int,
+    ) -> _Residues:
+        """The levels of a diagram read by ``CountedDiagram`` (numpy imported on first need,
+        ``bdd.without_blas_threads``)."""
+        without_blas_threads()
         import numpy as np
 
         level_of = np.asarray(levels, dtype=np.int64)
