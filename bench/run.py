@@ -17,6 +17,7 @@ more entry, not one more branch. The script always exits 0; targets print PASS/F
 from __future__ import annotations
 
 import argparse
+import compileall
 import cProfile
 import datetime
 import gc
@@ -1192,6 +1193,9 @@ def selected(options: argparse.Namespace) -> list[Workload]:
 
 
 def run_all(options: argparse.Namespace) -> None:
+    # rosvar's bytecode up to date, as an install leaves it (``make setup`` does the same):
+    # where PYTHONDONTWRITEBYTECODE is set, each measured process would compile it again
+    compileall.compile_dir(REPO / "src", quiet=1)
     outcomes: list[Outcome] = []
     failed: set[tuple[str, str]] = set()  # (family, measurement) that failed at a smaller size
     load_before, revision_before = os.getloadavg()[1], _revision()
