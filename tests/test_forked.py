@@ -57,6 +57,20 @@ def test_progress_ends_on_the_last_place() -> None:
     assert told == sorted(told) and told[-1] == 10 and len(told) == 4  # places 0, 3, 6, 9
 
 
+PREPARED: list[int] = []  # the items prepared in this process (a child's copy its own)
+
+
+@pytest.mark.parametrize("jobs", [1, 2, 3])
+def test_a_process_prepares_its_whole_share_before_working(jobs: int) -> None:
+    PREPARED.clear()
+    told: list[int] = []
+    items = list(range(10))
+    found = forked_map(items, lambda _item: sorted(PREPARED), jobs, told.append, PREPARED.append)
+    assert found == [items[item % jobs :: jobs] for item in items]  # its process's share
+    assert told[-1] == 9 and len(told) == len(items[::jobs])  # told as prepare starts
+    PREPARED.clear()
+
+
 def fail_on_three(item: int) -> int:
     if item == 3:
         raise ValueError("three")

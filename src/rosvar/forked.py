@@ -19,7 +19,8 @@ import pickle
 import sys
 import traceback
 from collections.abc import Callable, Sequence
-from typing import TypeVar
+from functools import partial
+from typing import TypeVar, cast
 
 Item = TypeVar("Item")
 Result = TypeVar("Result")
@@ -46,13 +47,17 @@ def forked_map(
     work: Callable[[Item], Result],
     jobs: int,
     progress: Progress | None = None,
+    prepare: Callable[[Item], object] | None = None,
 ) -> list[Result]:
     """``[work(item) for item in items]``, computed by ``jobs`` processes: this one and
-    ``jobs - 1`` forked children. Results must pickle; ``work`` must not write to the
-    standard streams (a child's writes would interleave with this process's)."""
+    ``jobs - 1`` forked children. With ``prepare``, each process first runs it on every item
+    of its share, then ``work``: what ``work`` reads of several items is then complete when
+    it starts (every model of the share built before any is described). Progress is told
+    as the first phase starts on each item. Results must pickle; neither function may write
+    to the standard streams (a child's writes would interleave with this process's)."""
     jobs = min(jobs, len(items)) if hasattr(os, "fork") else 1
     if jobs <= 1:
-        return [_done(index, items, work, progress) for index in range(len(items))]
+        return _share_done(items, range(len(items)), work, prepare, progress, 1)
     for stream in (sys.stdout, sys.stderr):  # else a child would write the buffers again
         stream.flush()
     children: list[tuple[int, int, range]] = []
@@ -63,12 +68,14 @@ def forked_map(
             pid = os.fork()
             if pid == 0:  # pragma: no cover - the child's coverage is not collected
                 os.close(read_end)
-                _serve(write_end, [items[index] for index in share], work)
+                _serve(write_end, partial(_share_done, items, share, work, prepare, None, jobs))
             os.close(write_end)
             children.append((pid, read_end, share))
         results: list[Result | None] = [None] * len(items)
-        for index in range(0, len(items), jobs):
-            results[index] = _done(index, items, work, progress, jobs)
+        own = range(0, len(items), jobs)
+        computed = _share_done(items, own, work, prepare, progress, jobs)
+        for index, result in zip(own, computed, strict=True):
+            results[index] = result
         for pid, read_end, share in children:
             received: list[Result] = _received(pid, read_end, len(share))
             for index, result in zip(share, received, strict=True):
@@ -81,25 +88,36 @@ def forked_map(
             _reap(pid)
 
 
-def _done(
-    index: int,
+def _share_done(
     items: Sequence[Item],
+    share: range,
     work: Callable[[Item], Result],
+    prepare: Callable[[Item], object] | None,
     progress: Progress | None,
-    jobs: int = 1,
-) -> Result:
-    if progress is not None:
-        progress(min(index + jobs - 1, len(items) - 1))
-    return work(items[index])
+    jobs: int,
+) -> list[Result]:
+    """One process's results: its share prepared, then worked on."""
+    last = len(items) - 1
+    first_phase = prepare or work
+    results = []
+    for index in share:
+        if progress is not None:
+            progress(min(index + jobs - 1, last))
+        done = first_phase(items[index])
+        if prepare is None:
+            results.append(cast(Result, done))
+    if prepare is not None:
+        results = [work(items[index]) for index in share]
+    return results
 
 
-def _serve(write_end: int, items: list[Item], work: Callable[[Item], Result]) -> None:
+def _serve(write_end: int, results: Callable[[], list[Result]]) -> None:
     """A child's whole life: compute, send, and end without running the parent's
     clean-up (atexit handlers, buffered streams, a test runner's teardown)."""
     code = 0
     try:
         with os.fdopen(write_end, "wb") as stream:
-            pickle.dump([work(item) for item in items], stream, pickle.HIGHEST_PROTOCOL)
+            pickle.dump(results(), stream, pickle.HIGHEST_PROTOCOL)
     except BaseException:  # reported here: the parent only sees the exit status
         traceback.print_exc()
         sys.stderr.flush()

@@ -77,7 +77,9 @@ class Analysis:
         """What ``work`` makes of each launch file's model, in the files' order, computed by
         ``jobs`` processes (``rosvar.forked``), for outputs that need only data derived from
         each model: the models stay in the process that built them. Every file is read and
-        the include index built first, so that the processes share them."""
+        the include index built first, so that the processes share them; each process
+        builds all its models before ``work`` runs on one, as ``all_models`` does (the
+        readable form of conditions is computed once the facts stop growing)."""
         files = self.workspace.launch_files
         self.domains.read_all()
 
@@ -89,7 +91,7 @@ class Analysis:
                 progress(index, len(files), files[index])
 
         with collector_paused():
-            return forked_map(files, worked, jobs, shown)
+            return forked_map(files, worked, jobs, shown, prepare=self.model)
 
     def label(self, file: str) -> str:
         """The file as people name it: relative to the root it was found under, or its
