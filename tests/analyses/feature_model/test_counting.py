@@ -14,6 +14,14 @@ from rosvar.logic import bdd
 from rosvar.logic.bdd import BDD
 
 
+def declared(count: int) -> tuple[dd.cudd.BDD, list[str]]:
+    """A manager with the variables ``x0`` … ``x{count - 1}``, in that order."""
+    manager = dd.cudd.BDD()
+    names = [f"x{i}" for i in range(count)]
+    manager.declare(*names)
+    return manager, names
+
+
 def enumerated(manager: dd.cudd.BDD, formula: BDD, weights: dict[str, Weight]) -> int:
     """The weighted count by listing every assignment of ``weights``' variables."""
     names = sorted(weights)
@@ -52,9 +60,7 @@ def test_counts_equal_enumeration(seed: int, recount: str, bdd_reader: str) -> N
     """The first count, then counts under other weights (some zero, as choices are), each
     against listing the assignments."""
     rng = random.Random(seed)
-    manager = dd.cudd.BDD()
-    names = [f"x{i}" for i in range(7)]
-    manager.declare(*names)
+    manager, names = declared(7)
     formula = random_formula(manager, rng, names[:5])  # x5, x6: counted, never mentioned
     first = {name: (rng.randint(1, 3), rng.randint(1, 4)) for name in names}
     diagram = CountedDiagram(manager, formula, first)
@@ -71,9 +77,7 @@ def test_counts_equal_enumeration(seed: int, recount: str, bdd_reader: str) -> N
 def test_a_count_recomputes_the_levels_above_the_deepest_change(recount: str) -> None:
     """Changing only the top variable's weight leaves the nodes below as they were: their
     values are reused, rescaled to the new total weight."""
-    manager = dd.cudd.BDD()
-    names = [f"x{i}" for i in range(6)]
-    manager.declare(*names)
+    manager, names = declared(6)
     x0, x2, x3, x5 = (manager.var(name) for name in ("x0", "x2", "x3", "x5"))
     formula = (x0 | x3) & ((x2 & ~x5) | (~x2 & x5))
     diagram = CountedDiagram(manager, formula, dict.fromkeys(names, (1, 1)))
@@ -84,9 +88,7 @@ def test_a_count_recomputes_the_levels_above_the_deepest_change(recount: str) ->
 
 def test_counts_beyond_a_double_are_exact() -> None:
     """3^40 ways minus those with x0 and x1 both off: not representable in a double."""
-    manager = dd.cudd.BDD()
-    names = [f"x{i}" for i in range(40)]
-    manager.declare(*names)
+    manager, names = declared(40)
     formula = manager.var("x0") | manager.var("x1")
     exact = 3**40 - 3**38
     assert int(float(exact)) != exact
@@ -113,9 +115,7 @@ def test_vectorised_recounts_of_large_counts_equal_the_exact_ones(
     """Counts of hundreds of bits, under choices (bounded by the first count) and under
     larger weights (bounded by the total): both ways of recounting agree."""
     rng = random.Random(seed)
-    manager = dd.cudd.BDD()
-    names = [f"x{i}" for i in range(160)]
-    manager.declare(*names)
+    manager, names = declared(160)
     formula = manager.true
     for _ in range(60):
         a, b, c = rng.sample(names, 3)
@@ -155,9 +155,7 @@ def test_a_level_weight_no_modulus_can_divide_is_counted_one_by_one(
 def test_taken_values_equal_enumeration(seed: int, bdd_reader: str) -> None:
     """A variable takes a value when some satisfying assignment gives it that value."""
     rng = random.Random(seed)
-    manager = dd.cudd.BDD()
-    names = [f"x{i}" for i in range(6)]
-    manager.declare(*names)
+    manager, names = declared(6)
     formula = random_formula(manager, rng, names[:5])
     expected: dict[str, set[bool]] = {name: set() for name in names}
     for bits in itertools.product((False, True), repeat=len(names)):
@@ -173,9 +171,7 @@ def test_a_prepared_diagram_recounts_with_what_it_built(monkeypatch: pytest.Monk
     """``prepare`` builds the vectorised recount's levels of a large diagram once, ahead of
     the first recount, which then uses them; a small diagram, recounted one by one, gets
     nothing built."""
-    manager = dd.cudd.BDD()
-    names = [f"x{i}" for i in range(12)]
-    manager.declare(*names)
+    manager, names = declared(12)
     formula = random_formula(manager, random.Random(3), names) | manager.var("x0")
     weights = dict.fromkeys(names, (1, 1))
     diagram = CountedDiagram(manager, formula, weights)
@@ -198,9 +194,7 @@ def test_values_below_a_quick_recount_are_let_go_and_counted_anew(
     """Only the first values a quick recount reads are kept; a recount in Python that
     reaches below them (numpy kept away) counts the whole diagram again, exactly."""
     rng = random.Random(seed)
-    manager = dd.cudd.BDD()
-    names = [f"x{i}" for i in range(10)]
-    manager.declare(*names)
+    manager, names = declared(10)
     formula = manager.false  # a disjunction of cubes: a diagram of some size
     for _ in range(6):
         cube = manager.true
@@ -226,9 +220,7 @@ def test_counts_by_levels_equal_those_node_by_node(
     at a time in numpy, their first count, recounts and values taken are those of the
     reading and count node by node."""
     rng = random.Random(seed)
-    manager = dd.cudd.BDD()
-    names = [f"x{i}" for i in range(18)]
-    manager.declare(*names)
+    manager, names = declared(18)
     formula = manager.false
     for _ in range(5):
         formula = manager.apply("xor", formula, random_formula(manager, rng, names))
