@@ -20,7 +20,7 @@ import sys
 import traceback
 from collections.abc import Callable, Sequence
 from functools import partial
-from typing import TypeVar, cast
+from typing import TypeVar
 
 Item = TypeVar("Item")
 Result = TypeVar("Result")
@@ -98,14 +98,14 @@ def _share_done(
 ) -> list[Result]:
     """One process's results: its share prepared, then worked on."""
     last = len(items) - 1
-    first_phase = prepare or work
     results = []
     for index in share:
         if progress is not None:
             progress(min(index + jobs - 1, last))
-        done = first_phase(items[index])
         if prepare is None:
-            results.append(cast(Result, done))
+            results.append(work(items[index]))
+        else:
+            prepare(items[index])
     if prepare is not None:
         results = [work(items[index]) for index in share]
     return results

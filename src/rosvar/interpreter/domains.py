@@ -237,14 +237,17 @@ class DomainTable:
     def read_all(self) -> None:
         """Read every launch file and index their includes now rather than at the first
         question (``Analysis.map_models`` shares them with forked processes)."""
+        self._indexed()
+
+    def _indexed(self) -> dict[str, dict[str, set[str]]]:
+        """The literals passed to each file's args (and ``_forwards``), indexed once."""
         if self._passed is None:
             self._passed = self._index_includes()
+        return self._passed
 
     def passed_literals(self, file: str) -> dict[str, set[str]]:
         """Literal values that including files pass to ``file``'s args."""
-        if self._passed is None:
-            self._passed = self._index_includes()
-        return self._passed.get(real_path(file), {})
+        return self._indexed().get(real_path(file), {})
 
     def forwarded_literals(
         self, file: str, name: str, seen: frozenset[str] = frozenset()
@@ -255,8 +258,7 @@ class DomainTable:
         the included file's values of ``y`` (e.g. its ``true``/``false`` when ``y``
         decides an ``if``), followed through chains of includes.
         """
-        if self._passed is None:
-            self._passed = self._index_includes()
+        self._indexed()
         key = f"{real_path(file)}\x00{name}"
         if key in seen:
             return set()

@@ -59,14 +59,8 @@ class Analysis:
         return self._models[file]
 
     def all_models(self, progress: Progress | None = None) -> list[LaunchModel]:
-        files = self.workspace.launch_files
-        models = []
-        with collector_paused():
-            for index, file in enumerate(files):
-                if progress is not None:
-                    progress(index, len(files), file)
-                models.append(self.model(file))
-        return models
+        """Every launch file's model, in this process (the callers keep working on them)."""
+        return self.map_models(_itself, progress=progress)
 
     def map_models(
         self,
@@ -78,8 +72,8 @@ class Analysis:
         ``jobs`` processes (``rosvar.forked``), for outputs that need only data derived from
         each model: the models stay in the process that built them. Every file is read and
         the include index built first, so that the processes share them; each process
-        builds all its models before ``work`` runs on one, as ``all_models`` does (the
-        readable form of conditions is computed once the facts stop growing)."""
+        builds all its models before ``work`` runs on one (the readable form of conditions
+        is computed once the facts stop growing)."""
         files = self.workspace.launch_files
         self.domains.read_all()
 
@@ -159,6 +153,10 @@ class Analysis:
             if default is not None:
                 model.unset_defaults[name] = default
         return model, late
+
+
+def _itself(model: LaunchModel) -> LaunchModel:
+    return model
 
 
 def _walk_ros1(
