@@ -64,3 +64,29 @@ def test_a_chain_ordered_along_itself_is_crossed_once() -> None:
     assert widest_cut(order(files, chain), files, chain) == 1
     clique = [(f"f{a}", f"f{b}") for a in range(6) for b in range(a + 1, 6)]
     assert widest_cut(order(files, clique), files, clique) == 9  # 3 × 3 across the middle
+
+
+def _span(
+    variables: list[str], files: list[FileFeature], constraints: list[tuple[str, ...]]
+) -> int:
+    """The summed distance between the first and last file of each constraint."""
+    ids = {f.id for f in files}
+    position = {f: i for i, f in enumerate(v for v in variables if v in ids)}
+    return sum(max(position[f] for f in c) - min(position[f] for f in c) for c in constraints)
+
+
+def test_a_name_declared_by_many_files_pulls_as_one_constraint_not_as_every_pair() -> None:
+    """Seeded workspaces of requires (pairs) and clashing names (groups of 3–6 files):
+    ordering by the groups themselves leaves a shorter total span than ordering by their
+    pairs, which weigh a group of six as fifteen constraints."""
+    rng = random.Random(3)
+    by_groups = by_pairs = 0
+    for _trial in range(100):
+        files = _files(rng.randint(6, 14), 1)
+        ids = [f.id for f in files]
+        constraints = [tuple(rng.sample(ids, 2)) for _ in range(rng.randint(1, len(ids)))]
+        constraints += [tuple(rng.sample(ids, rng.randint(3, 6))) for _ in range(rng.randint(1, 3))]
+        pairs = [(a, b) for c in constraints for n, a in enumerate(c) for b in c[n + 1 :]]
+        by_groups += _span(order(files, constraints), files, constraints)
+        by_pairs += _span(order(files, pairs), files, constraints)
+    assert by_groups < by_pairs * 0.95

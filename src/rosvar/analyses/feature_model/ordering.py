@@ -1,6 +1,6 @@
 """The solver's variable order: linked files close together, components apart.
 
-A constraint between two files is cheap for a BDD only if their variables are close in the
+A constraint between files is cheap for a BDD only if their variables are close in the
 order: every constraint pending across a level can double the diagram's width there.
 """
 
@@ -15,20 +15,26 @@ FORCE_ROUNDS = 100
 FORCE_PATIENCE = 10  # rounds without a shorter span before FORCE stops
 
 
-def order(features: Sequence[FileFeature], links: Iterable[Sequence[str]]) -> list[str]:
+def order(features: Sequence[FileFeature], constraints: Iterable[Sequence[str]]) -> list[str]:
     """Feature variables in file blocks: linked files close together, components apart.
 
-    Cuthill–McKee (a breadth-first search from a file with
-    few links) finds the components and a first order of each; FORCE then refines
-    it (``_force``). The components go smallest first, so that conjoining them
-    never passes below the largest diagram (a conjunction walks every part of one
-    operand lying above the other's variables).
+    ``constraints``: the files (feature ids) each cross-tree constraint mentions — two for a
+    requires, every file declaring a clashing name for its at-most-one. Cuthill–McKee (a
+    breadth-first search from a file with few links) finds the components and a first
+    order of each; FORCE then refines it (``_force``). The components go smallest first,
+    so that conjoining them never passes below the largest diagram (a conjunction walks
+    every part of one operand lying above the other's variables).
     """
+    edges = [tuple(dict.fromkeys(files)) for files in constraints]
+    edges = [files for files in dict.fromkeys(edges) if len(files) > 1]
     neighbours: dict[str, set[str]] = {f.id: set() for f in features}
-    for a, b in links:  # files a constraint links (feature ids)
-        if a != b:
-            neighbours[a].add(b)
-            neighbours[b].add(a)
+    touching: dict[str, list[tuple[str, ...]]] = {f.id: [] for f in features}
+    for files in edges:
+        for file in files:
+            neighbours[file].update(files)
+            touching[file].append(files)
+    for file, linked in neighbours.items():
+        linked.discard(file)
     by_id = {f.id: f for f in features}
     visited: set[str] = set()
     components: list[list[str]] = []
@@ -44,40 +50,46 @@ def order(features: Sequence[FileFeature], links: Iterable[Sequence[str]]) -> li
             for nxt in sorted(neighbours[current] - visited, key=lambda f: (len(neighbours[f]), f)):
                 visited.add(nxt)
                 queue.append(nxt)
-        components.append(_force(component, neighbours))
+        components.append(_force(component, touching))
     blocks = [[name for i in files for name in by_id[i].variable_names()] for files in components]
     blocks.sort(key=len)
     return [name for block in blocks for name in block]
 
 
-def _force(files: list[str], neighbours: Mapping[str, set[str]]) -> list[str]:
+def _force(files: list[str], touching: Mapping[str, list[tuple[str, ...]]]) -> list[str]:
     """FORCE (Aloul, Markov and Sakallah, 2003) on one component's files.
 
-    Each round moves every file to the mean centre of its links and ranks the files
-    by that; the order with the shortest total span (the summed distance between
-    linked files) is kept, and the search stops once spans stop shrinking. Linear
-    in the links per round. Where clone-and-own configurations form a grid of requires
-    and excludes, it shrinks the diagram and its construction well beyond what
-    Cuthill–McKee alone finds.
+    Each round puts every constraint at the centre of its files, moves every file to the
+    mean of its constraints' centres and ranks the files by that; the order with the
+    shortest total span (the summed distance between the first and last file of each
+    constraint) is kept, and the search stops once spans stop shrinking. Linear in the
+    constraints' sizes per round. A clashing name is one constraint over all the files
+    declaring it, not a pull between each pair of them: taken pairwise, a name declared by
+    ten files weighed as 45 links and dragged its files together at the cost of every
+    other constraint (docs/performance.md, session 13).
     """
-    links = [(a, b) for a in files for b in neighbours[a] if a < b]
-    if not links:
+    edges = list(dict.fromkeys(edge for f in files for edge in touching[f]))
+    if not edges:
         return files
     position = {f: i for i, f in enumerate(files)}
 
     def span() -> int:
-        return sum(abs(position[a] - position[b]) for a, b in links)
+        total = 0
+        for edge in edges:
+            places = [position[f] for f in edge]
+            total += max(places) - min(places)
+        return total
 
     best, shortest, stale = files, span(), 0
     for _round in range(FORCE_ROUNDS):
         if stale == FORCE_PATIENCE:
             break
         pull = dict.fromkeys(files, 0.0)
-        for a, b in links:
-            centre = (position[a] + position[b]) / 2
-            pull[a] += centre
-            pull[b] += centre
-        files = sorted(files, key=lambda f: (pull[f] / len(neighbours[f]), position[f]))
+        for edge in edges:
+            centre = sum(position[f] for f in edge) / len(edge)
+            for file in edge:
+                pull[file] += centre
+        files = sorted(files, key=lambda f: (pull[f] / len(touching[f]), position[f]))
         position = {f: i for i, f in enumerate(files)}
         length = span()
         best, shortest, stale = (

@@ -264,7 +264,10 @@ def build(
     declared = declaring(space, files, buckets)
     linking = [(files[a].id, files[b].id) for a, b in excluding(declared)]
     links = [*(c.files for c in requires), *linking]
-    keep = order(features, links)
+    keep = order(
+        features,
+        [*(c.files for c in requires), *([files[f].id for f in when] for when in declared)],
+    )
     crossing = widest_cut(keep, features, links)
     if crossing > CUT_BUDGET:
         raise ModelTooLarge(
