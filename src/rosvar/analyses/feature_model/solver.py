@@ -262,12 +262,9 @@ def build(
     """
     files = {f.file: f for f in features}
     declared = declaring(space, files, buckets)
-    linking = [(files[a].id, files[b].id) for a, b in excluding(declared)]
-    links = [*(c.files for c in requires), *linking]
-    keep = order(
-        features,
-        [*(c.files for c in requires), *([files[f].id for f in when] for when in declared)],
-    )
+    requiring = [c.files for c in requires]
+    links = [*requiring, *((files[a].id, files[b].id) for a, b in excluding(declared))]
+    keep = order(features, [*requiring, *([files[f].id for f in when] for when in declared)])
     crossing = widest_cut(keep, features, links)
     if crossing > CUT_BUDGET:
         raise ModelTooLarge(

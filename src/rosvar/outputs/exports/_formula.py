@@ -69,16 +69,17 @@ class _Covers:
         self.care: BDD = solver.tree
         # literals are written in the feature tree's order, not the solver's, which is chosen
         # for the diagrams' size and changes with every improvement of the ordering
-        self.rank: dict[str, int] = {}
+        self.rank = {
+            name: i
+            for i, name in enumerate(name for f in model.files for name in f.variable_names())
+        }
         # value variable → (its file's variable, every value variable of its arg)
         self.groups: dict[str, tuple[str, tuple[str, ...]]] = {}
         for file in model.files:
             file_var = str(file.variable.var)
-            self.rank[file_var] = len(self.rank)
             for arg in file.args:
                 values = tuple(str(v.variable.var) for v in arg.values)
                 for value in values:
-                    self.rank[value] = len(self.rank)
                     self.groups[value] = (file_var, values)
 
     def cube(self, literals: Sequence[Literal]) -> BDD:
