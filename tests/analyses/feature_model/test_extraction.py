@@ -502,3 +502,21 @@ def test_an_arg_without_inferable_values_gets_a_diagnostic(ws: LaunchWorkspace) 
     assert diagnostic.location.file.endswith("a.launch") and diagnostic.location.line == 2
     [arg] = model.files[0].args
     assert [v.value for v in arg.values] == ["<other>"]
+
+
+def test_the_files_own_problems_are_the_models_diagnostics_once_each(ws: LaunchWorkspace) -> None:
+    """A file the interpreter could not read is still a feature, and the model says why:
+    ``rosvar features`` must not show a broken file as a file without args."""
+    ws.launch("broken.launch", '  <node pkg="pkg" type="t" name="n">\n')  # never closed
+    ws.write("launch/latin1.launch", b'<launch><node pkg="pkg" type="t" name="caf\xe9"/></launch>')
+    ws.launch("a.launch", INCLUDE_B.format(attrs="", body=""))
+    ws.launch("c.launch", INCLUDE_B.format(attrs="", body=""))
+    ws.launch("b.launch", "  <bogus/>\n")
+    model = extract(ws.analysis())
+    by_code = {d.code: d for d in model.diagnostics}
+    assert {"xml-malformed", "xml-encoding", "tag-unknown"} <= set(by_code), by_code
+    assert by_code["xml-malformed"].location.file.endswith("broken.launch")
+    assert by_code["tag-unknown"].location.line == 2
+    # b.launch is read from a, from c and on its own: its tag is reported once
+    assert [d.code for d in model.diagnostics].count("tag-unknown") == 1
+    assert {f.id for f in model.files} >= {"pkg/launch/broken.launch", "pkg/launch/latin1.launch"}

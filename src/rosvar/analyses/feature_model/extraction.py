@@ -236,8 +236,10 @@ def extract(
                     )
                 )
     buckets = index(models)
+    # a file included by several entry files reports its problems once per entry file: once here
+    found = list(dict.fromkeys(d for model in models for d in model.diagnostics))
     feature_model = FeatureModel(
-        space, features, requires, buckets, models, _unknown_values(features), products
+        space, features, requires, buckets, models, [*found, *_unknown_values(features)], products
     )
     try:
         _check_links(buckets, len(features))
