@@ -5,18 +5,21 @@ from __future__ import annotations
 
 import itertools
 from dataclasses import replace
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from rosvar.analyses.checks import Check, check_model, check_models
 from rosvar.analyses.communication import resolved_graph
 from rosvar.analyses.resolve import Restriction, resolve
 from rosvar.diagnostics import Severity
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, Role
+from workspace.interfaces.ros2_packages import MANIFEST, write_ros2_packages
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
-    from rosvar.interpreter.workspace_models import Analysis
 
 HEADER = "import rospy\nfrom std_msgs.msg import Int32, String\n"
 SOURCES = {
@@ -168,3 +171,30 @@ def test_a_partner_in_another_launch_file_makes_a_note(ws: LaunchWorkspace) -> N
     assert unfed.message.endswith("which no launched node provides here (base.launch does)")
     alone = check_models(analysis.space, models[:1], interfaces, analysis.workspace.confinement())
     assert [f.severity for f in alone if f.check is Check.NO_PROVIDER] == [Severity.WARNING]
+
+
+def test_ros2_nodes_of_one_name_are_a_warning_and_two_providers(tmp_path: Path) -> None:
+    """``ros2 launch`` starts both nodes of one name (roslaunch refuses): a warning, under the
+    pushed namespace's values where the names meet; what both serve has two providers."""
+    write_ros2_packages(tmp_path)
+    bringup = tmp_path / "demo_bringup"
+    bringup.mkdir()
+    (bringup / "package.xml").write_text(MANIFEST.format(name="demo_bringup", build="ament_cmake"))
+    (bringup / "a.launch.xml").write_text(
+        """<launch><arg name="ns" default="r1"/>
+        <group><push_ros_namespace namespace="$(var ns)"/>
+          <node pkg="demo_py" exec="listener" name="ear"/></group>
+        <node pkg="demo_py" exec="listener" name="ear" namespace="r1"/></launch>"""
+    )
+    analysis = Analysis(discover([tmp_path]))
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    [model] = [analysis.model(f) for f in analysis.workspace.launch_files]
+    findings = check_models(analysis.space, [model], interfaces, analysis.workspace.confinement())
+    [clash] = [f for f in findings if f.check is Check.NODE_NAME_CLASH]
+    assert clash.name == "/r1/ear" and clash.severity is Severity.WARNING
+    assert analysis.space.describe(clash.condition) == "ns=r1"
+    served = [f for f in findings if f.check is Check.MULTIPLE_PROVIDERS]
+    assert [(f.name, f.message) for f in served if f.name.endswith("reset")] == [
+        ("/r1/reset", "2 nodes serve /r1/reset: /r1/ear ×2")
+    ]
+    assert all(analysis.space.describe(f.condition) == "ns=r1" for f in served)

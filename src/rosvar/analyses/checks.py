@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import enum
 import os
-from collections import defaultdict
+from collections import Counter, defaultdict
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
@@ -37,6 +37,8 @@ from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
 from rosvar.workspace.interfaces.model import Interfaces, Role
 from rosvar.workspace.paths import real_path
+
+ROS2_BOTH_START = " (ros2 launch starts both: their parameter services and private names collide)"
 
 
 class Check(enum.StrEnum):
@@ -229,13 +231,15 @@ class _Checker:
         for condition in per_node.values():
             two |= one & condition
             one |= condition
-        nodes = sorted({node for node, _ in per_node})
+        # two declarations of one node name (ROS 2 launches both) are two providers
+        nodes = Counter(node for node, _ in per_node)
+        listed = ", ".join(n if k == 1 else f"{n} ×{k}" for n, k in sorted(nodes.items()))
         severity = Severity.NOTE if channel is Channel.TOPICS else Severity.WARNING
         self.add(
             Check.MULTIPLE_PROVIDERS,
             severity,
             name,
-            f"{len(nodes)} nodes {PROVIDED[channel]} {name}: {', '.join(nodes)}",
+            f"{len(per_node)} nodes {PROVIDED[channel]} {name}: {listed}",
             two,
             sorted({e.launch for e in providers}),
         )
@@ -309,17 +313,25 @@ class _Checker:
                 )
 
     def node_names(self) -> None:
+        """Two nodes of one name: roslaunch refuses to start, ``ros2 launch`` starts both
+        (a warning: their parameters, services and logs then share one name)."""
         buckets: dict[tuple[str, str], list[Occurrence]] = defaultdict(list)
+        ros2 = any("ros_namespace" in node.fields for node in self.model.nodes)
         for node in self.model.nodes:
             if not node.is_test:
-                for occurrence in node_occurrences(self.model, node):
+                for occurrence in node_occurrences(self.model, node, ros2=ros2):
                     buckets[("node", occurrence.name)].append(occurrence)
         for clash in clashes(buckets):
             self.add(
                 Check.NODE_NAME_CLASH,
-                Severity.ERROR,
+                Severity.WARNING if ros2 else Severity.ERROR,
                 clash.name,
-                f"two nodes are named {clash.name}",
+                f"two nodes are named {clash.name}"
+                + (
+                    " (ros2 launch starts both: their parameter services and private names collide)"
+                    if ros2
+                    else ""
+                ),
                 clash.condition,
                 (clash.second.location, clash.first.location),
             )

@@ -20,6 +20,7 @@ from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, anon_patt
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import combine
 from rosvar.ros import names
+from rosvar.ros.ros2_namespaces import full_name
 from rosvar.workspace.paths import real_path
 
 
@@ -99,8 +100,16 @@ def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
     return [replace(o, anonymous=True) if anon.search(o.name) else o for o in found]
 
 
-def node_occurrences(model: LaunchModel, node: NodeDecl) -> Iterator[Occurrence]:
-    full = combine([node.fields["namespace"], node.fields["name"]], _node_name)
+def node_occurrences(
+    model: LaunchModel, node: NodeDecl, *, ros2: bool = False
+) -> Iterator[Occurrence]:
+    """The node's resolved names. ``ros2``: a ROS 2 node's, its pushed namespace composed
+    with its own; ``ros2 launch`` starts two nodes of one name, so these are for the checks,
+    while a ROS 2 file's own declarations (:func:`declared_occurrences`) give none."""
+    keys: tuple[str, ...] = ("namespace", "name")
+    if ros2:
+        keys = ("ros_namespace", *keys)
+    full = combine([node.fields[key] for key in keys], ros2_node_name if ros2 else _node_name)
     for condition, name in full:
         if name is not None:
             yield Occurrence(
@@ -138,6 +147,15 @@ def _node_name(parts: Sequence[object]) -> str | None:
     if isinstance(namespace, str) and isinstance(name, str):
         return names.ns_join(namespace, name)
     return None
+
+
+def ros2_node_name(parts: Sequence[object]) -> str | None:
+    """The fully qualified name of a ROS 2 node from its pushed namespace, its own and its
+    name, where all three are known (a node without a name is named by its code)."""
+    pushed, namespace, name = parts
+    if not isinstance(name, str) or not all(p is None or isinstance(p, str) for p in parts[:2]):
+        return None
+    return full_name(pushed or None, namespace or None, name)  # type: ignore[arg-type]
 
 
 def index(models: Iterable[LaunchModel]) -> dict[tuple[str, str], list[Occurrence]]:

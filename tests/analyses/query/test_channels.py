@@ -94,3 +94,5 @@ def test_ros2_nodes_and_their_topics(tmp_path: Path) -> None:
     [(_when, publisher)] = talker.element.attribute("publishers").values()[0].members
     assert publisher.attribute("namespace").values() == ["/r1/arm"]
     assert _answers(engine, "topics[self.name == '/r1/chatter']") == {"/r1/chatter": "ns=r1"}
+    # the unnamed talker is shown as resolve and the page show it: its executable, in brackets
+    assert _answers(engine, "nodes[self.name == None]") == {"/r1/arm/⟨talker⟩": "ns=r1"}

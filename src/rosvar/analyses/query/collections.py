@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Protocol
 
+from rosvar.analyses.conflicts import ros2_node_name
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import Binary, DeferredValue, LaunchModel, NodeDecl, ParamDecl
 from rosvar.interpreter.workspace_models import Analysis
@@ -24,7 +25,7 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
-from rosvar.ros.ros2_namespaces import full_name, make_absolute, prefix_namespace
+from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace, unnamed
 
 
 class Kind(StrEnum):
@@ -154,8 +155,7 @@ def _full_name(parts: Sequence[object]) -> str | None:
     if not all(part is None or isinstance(part, str) for part in parts) or parts[-1] is None:
         return None
     if len(parts) == 3:  # ROS 2: launch_ros composes the pushed and the node's namespace
-        pushed, namespace, name = parts
-        return full_name(pushed or None, namespace or None, name)  # type: ignore[arg-type]
+        return ros2_node_name(parts)
     namespace, name = parts
     return names.ns_join("/" if namespace is None else namespace, name)  # type: ignore[arg-type]
 
@@ -181,6 +181,22 @@ def _template(parts: Sequence[object]) -> str:
     return names.ns_join(namespace, name)
 
 
+def _shown_names(
+    node: NodeDecl, names_: Choice[tuple[object, ...]]
+) -> Iterator[tuple[BDD, tuple[object, ...], str]]:
+    """Each variant of a node's name parts with its text for people: a ROS 2 node without a
+    name is ``⟨EXEC⟩`` in its namespace, per executable, as ``rosvar resolve`` prints it."""
+    for condition, parts in names_:
+        if len(parts) != 3 or parts[-1] is not None:
+            name = _full_name(parts)
+            yield condition, parts, name if name is not None else _template(parts)
+            continue
+        namespace = _template((*parts[:2], "")).rstrip("/")
+        for when, executable in node.fields["exec"]:
+            shown = unnamed(namespace, _shown("" if executable is None else executable))
+            yield condition & when, parts, shown
+
+
 def _nodes(analysis: Analysis, model: LaunchModel) -> Iterator[Element]:
     return (element for _node, element in node_elements(analysis, model))
 
@@ -195,9 +211,10 @@ def node_elements(analysis: Analysis, model: LaunchModel) -> Iterator[tuple[Node
         namespace = _known(fields["namespace"])
         if len(keys) == 3:
             namespace = combine([fields["ros_namespace"], fields["namespace"]], _namespace)
-        for condition, parts in combine([fields[key] for key in keys], tuple):
+        for condition, parts, shown in _shown_names(
+            node, combine([fields[k] for k in keys], tuple)
+        ):
             name = _full_name(parts)
-            shown = name if name is not None else _template(parts)
             values: dict[str, Choice[object]] = {
                 "name": _const(space, name),
                 "namespace": namespace,
