@@ -90,3 +90,12 @@ def test_a_model_too_large_to_solve_is_reported_unknown(
     assert [d for d in report["Diagnostics"] if d.endswith("[model-too-large]")] == [
         report["Diagnostics"][-1]
     ]
+
+
+def test_a_file_that_cannot_be_read_is_listed_with_its_problem(ws: LaunchWorkspace) -> None:
+    """The file's problem is in the report, at its id as the tree shows it, line and column."""
+    ws.launch("broken.launch", '  <node pkg="pkg" type="t" name="n">\n')  # never closed
+    report = sections(text.write(extraction.extract(ws.analysis())))
+    [problem] = report["Diagnostics"]
+    assert problem.startswith("  pkg/launch/broken.launch:4:"), problem
+    assert problem.endswith("[xml-malformed]")

@@ -134,7 +134,11 @@ def write(model: FeatureModel) -> str:
     lines += _conflicts(model, tree)
     if model.diagnostics:
         lines += ["", "Diagnostics"]
-        lines += [f"{INDENT}{d}" for d in model.diagnostics if d.severity is not Severity.NOTE]
+        lines += [
+            f"{INDENT}{_where(d.location, tree)}: {d.severity.value}: {d.message} [{d.code}]"
+            for d in model.diagnostics
+            if d.severity is not Severity.NOTE
+        ]
         notes = Counter(d.code for d in model.diagnostics if d.severity is Severity.NOTE)
         lines += [
             f"{INDENT}{_plural(count, 'note')} [{code}] (listed on stderr and in --format json)"
