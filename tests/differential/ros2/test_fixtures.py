@@ -382,6 +382,64 @@ def generate_launch_description():
         },
         [{}, {"mode": "real"}, {"robot": "r2", "on": "false"}, {"robot": "r2"}],
     ),
+    "reset-env-ros-timer-and-shutdown": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="stop" default="false"/>
+            <set_env name="R" value="set"/>
+            <node pkg="pkg" exec="x" name="x_$(env R dflt)"/>
+            <group>
+              <set_env name="S" value="in"/>
+              <reset_env/>
+              <node pkg="pkg" exec="g" name="g_$(env R dflt)_$(env S none)"/>
+            </group>
+            <node pkg="pkg" exec="a" name="a_$(env R dflt)_$(env S none)"/>
+            <set_env name="S" value="late" if="$(var stop)"/>
+            <reset_env if="$(var stop)"/>
+            <node pkg="pkg" exec="y" name="y_$(env R dflt)_$(env S none)"/>
+            <ros_timer period="1.0"><node pkg="pkg" exec="t" name="t_$(env R dflt)"/></ros_timer>
+            <timer period="0.5" cancel_on_shutdown="false">
+              <node pkg="pkg" exec="u" name="u"/></timer>
+            <shutdown reason="stopped by $(var stop)" if="$(var stop)"/>
+            <node pkg="pkg" exec="z" name="z"/>
+          </launch>""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import (DeclareLaunchArgument, GroupAction, ResetEnvironment,
+                            SetEnvironmentVariable, Shutdown, TimerAction)
+from launch.conditions import IfCondition
+from launch.substitutions import EnvironmentVariable as Env, LaunchConfiguration
+from launch_ros.actions import Node, RosTimer
+
+
+def generate_launch_description():
+    stop = IfCondition(LaunchConfiguration('stop'))
+    return LaunchDescription([
+        DeclareLaunchArgument('stop', default_value='false'),
+        SetEnvironmentVariable('R', 'set'),
+        Node(package='pkg', executable='x', name=['x_', Env('R', default_value='dflt')]),
+        GroupAction([
+            SetEnvironmentVariable('S', 'in'),
+            ResetEnvironment(),
+            Node(package='pkg', executable='g', name=[
+                'g_', Env('R', default_value='dflt'), '_', Env('S', default_value='none')]),
+        ]),
+        Node(package='pkg', executable='a', name=[
+            'a_', Env('R', default_value='dflt'), '_', Env('S', default_value='none')]),
+        SetEnvironmentVariable('S', 'late', condition=stop),
+        ResetEnvironment(condition=stop),
+        Node(package='pkg', executable='y', name=[
+            'y_', Env('R', default_value='dflt'), '_', Env('S', default_value='none')]),
+        RosTimer(period=1.0, actions=[
+            Node(package='pkg', executable='t', name=['t_', Env('R', default_value='dflt')])]),
+        TimerAction(period=0.5, actions=[Node(package='pkg', executable='u', name='u')],
+                    cancel_on_shutdown=False),
+        Shutdown(reason=['stopped by ', LaunchConfiguration('stop')], condition=stop),
+        Node(package='pkg', executable='z', name='z'),
+    ])
+""",
+        },
+        [{}, {"stop": "true"}],
+    ),
     "append-env-after-before-or-alone": (
         {
             "main.launch.xml": """<launch>

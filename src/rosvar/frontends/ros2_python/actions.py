@@ -139,8 +139,17 @@ ACTIONS: dict[tuple[str, str], ActionSpec] = {
             *_attributes("cancel_on_shutdown"),
         ),
     ),
-    ("launch_ros", "RosTimer"): ActionSpec(
-        "ros_timer", (*_attributes("period"), Param("actions", "", Slot.ACTIONS))
+    ("launch", "ResetEnvironment"): ActionSpec("reset_env", ()),
+    **dict.fromkeys(
+        [("launch_ros", "RosTimer"), ("launch_ros", "ROSTimer")],
+        ActionSpec(
+            "ros_timer",
+            (
+                *_attributes("period"),
+                Param("actions", "", Slot.ACTIONS),
+                *_attributes("cancel_on_shutdown"),
+            ),
+        ),
     ),
     ("launch_ros", "Node"): ActionSpec("node", _NODE),
     ("launch_ros", "LifecycleNode"): ActionSpec("lifecycle_node", _NODE),  # Python only

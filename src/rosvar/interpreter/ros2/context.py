@@ -48,6 +48,7 @@ class Timer:
     sequence: int
     condition: BDD
     actions: list[Entity]
+    cancelled_by_shutdown: BDD  # where ``cancel_on_shutdown`` holds (its default)
 
 
 @dataclass(slots=True)
@@ -61,6 +62,8 @@ class Context:
     params: list[GlobalParam] | None = None
     env: dict[str, Choice[Raw | None]] = field(default_factory=dict)
     timers: list[Timer] = field(default_factory=list)  # pending, shared by every copy
+    shutdowns: list[BDD] = field(default_factory=list)  # shared by every copy
+    """Conditions of the ``<shutdown>``s met since the event loop last ran."""
     now: float = 0.0  # the virtual time of the actions being visited
     open_command_line: bool = False
     """Over every command line (the variational model): any ``name:=value`` may be given."""
@@ -82,6 +85,7 @@ class Context:
             self.params,
             dict(self.env),
             self.timers,
+            self.shutdowns,
             self.now,
             self.open_command_line,
             self.unset_reads,

@@ -26,7 +26,10 @@ ATTRIBUTES: dict[str, frozenset[str]] = {
     "include": frozenset({"file", "arg"}),
     "group": frozenset({"scoped", "forwarding", "keep"}),
     "keep": frozenset({"name", "value"}),
-    "timer": frozenset({"period"}),
+    "timer": frozenset({"period", "cancel_on_shutdown"}),
+    "ros_timer": frozenset({"period", "cancel_on_shutdown"}),
+    "shutdown": frozenset({"reason"}),
+    "reset_env": frozenset(),
     "push-ros-namespace": frozenset({"namespace"}),
     "push_ros_namespace": frozenset({"namespace"}),
     "set_remap": frozenset({"from", "to"}),
@@ -57,7 +60,7 @@ ATTRIBUTES: dict[str, frozenset[str]] = {
 PYTHON_ONLY: dict[str, frozenset[str]] = {"lifecycle_node": ATTRIBUTES["node"]}
 """Actions with no XML or YAML tag (``LifecycleNode``): the Python frontend's entities."""
 ALWAYS = frozenset({"if", "unless"})
-CONTAINERS = frozenset({"group", "launch", "timer"})
+CONTAINERS = frozenset({"group", "launch", "timer", "ros_timer"})
 
 
 def check(it: Interpretation, root: Entity) -> None:

@@ -1,8 +1,8 @@
 """Actions that change what later nodes get: ``<set_remap>``, ``<set_parameter>``,
-``<set_parameters_from_file>``, ``<set_env>``, ``<unset_env>``, ``<append_env>``, and
-``<reset>``, which forgets the launch configurations. They live in launch configurations (the
-environment in its own stack), so scoped groups confine them, up to the shared lists of
-:meth:`Context.scoped`."""
+``<set_parameters_from_file>``, ``<set_env>``, ``<unset_env>``, ``<append_env>``,
+``<reset_env>``, and ``<reset>``, which forgets the launch configurations. They live in launch
+configurations (the environment in its own stack), so scoped groups confine them, up to the
+shared lists of :meth:`Context.scoped`."""
 
 from __future__ import annotations
 
@@ -112,6 +112,15 @@ def _current(it: Interpretation, context: Context, name: str) -> Choice[Raw | No
     """The variable's value before this action: set by the launch, or the environment's."""
     value = context.env.get(name)
     return it.env_value(name) if value is None else value
+
+
+@tag("reset_env")
+@processed
+def reset_env(it: Interpretation, entity: Entity, context: Context) -> None:
+    """``ResetEnvironment``: every variable back to its value when the launch started (a
+    scoped group's end still restores the environment it began with)."""
+    for name, current in context.env.items():
+        context.env[name] = assign(it, current, it.env_value(name))
 
 
 @tag("append_env")
