@@ -440,6 +440,43 @@ def generate_launch_description():
         },
         [{}, {"stop": "true"}],
     ),
+    "opaque-function-read-where-it-stands": (
+        {
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction, SetLaunchConfiguration
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def setup(context, prefix, suffix=''):
+    robot = LaunchConfiguration('robot').perform(context)
+    mode = context.launch_configurations.get('mode', 'sim')
+    return [
+        SetLaunchConfiguration('inner', 'set_by_opaque'),
+        Node(package='pkg', executable='a', name=prefix + robot + suffix,
+             parameters=[{'mode': mode, 'ns': context.launch_configurations['robot'] + '_ns'}]),
+        Node(package='pkg', executable='b',
+             name=context.perform_substitution(LaunchConfiguration('robot')) + '_b'),
+    ]
+
+
+def nothing(context):
+    return None
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot', default_value='r1'),
+        DeclareLaunchArgument('mode', default_value='real'),
+        OpaqueFunction(function=setup, args=['p_'], kwargs={'suffix': '_s'}),
+        OpaqueFunction(function=nothing),
+        Node(package='pkg', executable='c',
+             name=[LaunchConfiguration('inner', default='unset'), '_c']),
+    ])
+""",
+        },
+        [{}, {"robot": "r2"}, {"mode": "sim", "robot": "r3"}],
+    ),
     "append-env-after-before-or-alone": (
         {
             "main.launch.xml": """<launch>

@@ -230,6 +230,42 @@ def generate_launch_description():
     )
 
 
+def test_an_opaque_function_of_the_file_is_read_where_it_stands() -> None:
+    """Its actions are an unscoped group; what it reads of ``context`` is the substitution,
+    and ``dict()`` of pairs is followed (realsense's ``rs_launch.py`` builds its parameters
+    so)."""
+    tree, diagnostics = read(
+        """
+from launch.actions import OpaqueFunction
+
+def setup(context, names, rate=1):
+    name = LaunchConfiguration('robot').perform(context)
+    params = dict([(key, LaunchConfiguration(key)) for key in names])
+    params['mode'] = context.launch_configurations.get('mode', 'sim')
+    return [Node(package='demo', executable='driver', name=name + '_driver',
+                 namespace=context.launch_configurations['ns'], parameters=[params])]
+
+def generate_launch_description():
+    return LaunchDescription([
+        OpaqueFunction(function=setup, args=[('gain',)]),
+        OpaqueFunction(function=print),
+    ])
+""",
+        IMPORTS,
+    )
+    assert codes(diagnostics) == ["python-not-followed"]  # print is no function of the file
+    assert diagnostics[0].location.line == 25 and "Module" in diagnostics[0].message
+    assert tree == xml_shape(
+        """<launch>
+  <group scoped="false">
+    <node pkg="demo" exec="driver" name="$(var robot)_driver" namespace="$(var ns)">
+      <param name="gain" value="$(var gain)"/><param name="mode" value="$(var mode sim)"/>
+    </node>
+  </group>
+</launch>"""
+    )
+
+
 def test_composable_nodes_and_containers() -> None:
     tree, diagnostics = read(
         """
@@ -292,15 +328,13 @@ def test_what_is_not_followed_is_reported_and_the_rest_is_kept() -> None:
     tree, diagnostics = read(
         """
 import yaml
-from launch.actions import OpaqueFunction
-
-def spawn(context):
-    return [Node(package='hidden', executable='x')]
+from launch.actions import RegisterEventHandler
+from launch.event_handlers import OnProcessExit
 
 def generate_launch_description():
     config = yaml.safe_load(open('/etc/robot.yaml'))
     return LaunchDescription([
-        OpaqueFunction(function=spawn),
+        RegisterEventHandler(OnProcessExit(on_exit=[Node(package='hidden', executable='x')])),
         Node(package='demo', executable=config['exe'], name=undefined_name),
         Node(package='demo', executable='kept'),
     ])
@@ -315,13 +349,11 @@ def generate_launch_description():
 </launch>"""
     )
     assert [(str(d.location), d.message) for d in diagnostics] == [
-        ("t.launch.py:20:29", "call to open() is not followed"),
-        ("t.launch.py:20:14", "call to yaml.safe_load() is not followed"),
-        (
-            "t.launch.py:22:9",
-            "OpaqueFunction (Python run at launch time; its actions) is not followed",
-        ),
-        ("t.launch.py:23:61", "name 'undefined_name' is not followed"),
+        ("t.launch.py:18:29", "call to open() is not followed"),
+        ("t.launch.py:18:14", "call to yaml.safe_load() is not followed"),
+        ("t.launch.py:20:30", "call to launch.event_handlers.OnProcessExit() is not followed"),
+        ("t.launch.py:20:9", "RegisterEventHandler (actions run on events) is not followed"),
+        ("t.launch.py:21:61", "name 'undefined_name' is not followed"),
     ]
     assert set(codes(diagnostics)) == {"python-not-followed"}
 

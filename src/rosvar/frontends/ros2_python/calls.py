@@ -84,7 +84,6 @@ CALLS: dict[tuple[str, str], Builder] = {}
 """Known callables by (package, name)."""
 
 REASONS: dict[tuple[str, str], str] = {
-    ("launch", "OpaqueFunction"): "OpaqueFunction (Python run at launch time; its actions)",
     ("launch", "RegisterEventHandler"): "RegisterEventHandler (actions run on events)",
     ("launch", "LocalSubstitution"): "LocalSubstitution (a value of an event)",
 }

@@ -36,6 +36,7 @@ from rosvar.frontends.ros2_python.values import (
     Description,
     Function,
     Key,
+    LaunchContext,
     Method,
     Module,
     Scope,
@@ -536,6 +537,8 @@ class Interpreter:
         index = self.expr(node.slice, scope)
         if container == Module("os.environ") and isinstance(index, str | Text):
             return Text.of(Sub("env", (Text.of(index),)))
+        if container == Method(LaunchContext(), "launch_configurations"):
+            return _configuration(index)
         try:
             if isinstance(container, dict) and isinstance(index, Key):
                 return container[index]
@@ -627,7 +630,7 @@ class Interpreter:
         if isinstance(callee, Method):
             return self.call_method(callee, args, kwargs, node)
         if isinstance(callee, Module):
-            builtin = BUILTINS.get(callee.qualified)
+            builtin = BUILTINS.get(callee.qualified) or CALLING.get(key(callee.qualified))
             if builtin is not None:
                 return builtin(self, args, kwargs, node)
             call = Call(callee.qualified, args, kwargs, self.location(node), self.sink)
@@ -702,6 +705,10 @@ class Interpreter:
             return list(receiver)
         if isinstance(receiver, Text) and name == "perform":
             return receiver  # the value at launch time, which the text stands for
+        if isinstance(receiver, LaunchContext) and name == "perform_substitution" and args:
+            return Call(name, args, kwargs, self.location(node), self.sink).text(args[0])
+        if receiver == Method(LaunchContext(), "launch_configurations") and name == "get" and args:
+            return _configuration(*args[:2])
         if isinstance(receiver, str) and name in _STR_METHODS:
             return self._str_method(receiver, name, args, kwargs, node)
         return self.not_followed(f"method {name}() of a {type(receiver).__name__}", node)
@@ -829,9 +836,18 @@ def _collection(kind: type[list[Value]] | type[tuple[Value, ...]]) -> Builtin:
 def _dict_builtin(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
-    result: dict[Key, Value] = dict(args[0]) if args and isinstance(args[0], dict) else {}
-    if args and not isinstance(args[0], dict):
-        return interpreter.not_followed("dict() of a value that is not a dict", node)
+    """``dict(mapping)``, ``dict(pairs)``, then keywords."""
+    result: dict[Key, Value] = {}
+    if args and isinstance(args[0], dict):
+        result.update(args[0])
+    elif args:
+        pairs = interpreter.iterate(args[0], node)
+        if pairs is None or not all(
+            isinstance(pair, list | tuple) and len(pair) == 2 and isinstance(pair[0], Key)
+            for pair in pairs
+        ):
+            return interpreter.not_followed("dict() of a value that is not pairs", node)
+        result.update((pair[0], pair[1]) for pair in pairs)  # type: ignore[index,misc]
     result.update(kwargs)
     return result
 
@@ -858,7 +874,51 @@ def _print(
     return None
 
 
+def _configuration(name: Value, default: Value = None) -> Value:
+    """``context.launch_configurations[name]`` (``.get(name, default)``): ``$(var name)``."""
+    if not isinstance(name, str | Text):
+        return Unknown("a launch configuration of a name not known statically")
+    if default is None:
+        return Text.of(Sub("var", (Text.of(name),)))
+    if not isinstance(default, str | Text):
+        return Unknown("a launch configuration's default not known statically")
+    return Text.of(Sub("var", (Text.of(name), Text.of(default))))
+
+
+def _opaque_function(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
+    """``OpaqueFunction(function=f, args=..., kwargs=...)``: launch calls ``f(context, ...)``
+    where the action stands and visits the actions it returns there, in the same launch
+    configurations: the file's own ``f`` is read now, its actions an unscoped group."""
+    call = Call("OpaqueFunction", args, kwargs, interpreter.location(node), interpreter.sink)
+    function = call.arg(0, "function")
+    given, named = call.arg(1, "args", []), call.arg(2, "kwargs", {})
+    if not isinstance(function, Function):
+        return call.not_followed(f"OpaqueFunction of a {type(function).__name__}")
+    if not isinstance(given, list | tuple) or not isinstance(named, dict):
+        return call.not_followed("OpaqueFunction arguments not known statically")
+    if not all(isinstance(name, str) for name in named):
+        return call.not_followed("OpaqueFunction keyword names not known statically")
+    actions = interpreter.call_function(
+        function, [LaunchContext(), *given], {str(k): v for k, v in named.items()}, node
+    )
+    if isinstance(actions, Unknown):
+        return actions
+    group = Call(
+        "GroupAction",
+        [],
+        {"actions": [] if actions is None else actions, "scoped": False},
+        call.location,
+        call.sink,
+    )
+    return CALLS[("launch", "GroupAction")](group)
+
+
 Builtin = Callable[[Interpreter, list[Value], dict[str, Value], ast.AST], Value]
+
+CALLING: dict[tuple[str, str], Builtin] = {("launch", "OpaqueFunction"): _opaque_function}
+"""Callables of the launch API that call back into the file (by (package, name))."""
 
 BUILTINS: dict[str, Builtin] = {
     "str": _str,

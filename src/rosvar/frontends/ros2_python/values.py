@@ -60,6 +60,12 @@ class ParameterFile:
     allow_substs: Value
 
 
+@dataclass(frozen=True, slots=True)
+class LaunchContext:
+    """The ``context`` an ``OpaqueFunction`` passes to its function: a value read of it
+    (``perform``, ``launch_configurations[...]``) is the substitution that gives it."""
+
+
 @dataclass(eq=False, slots=True)
 class Description:
     """A ``LaunchDescription`` under construction: its ``launch`` element."""
@@ -109,6 +115,7 @@ Value = (
     | Source
     | ParameterValue
     | ParameterFile
+    | LaunchContext
     | Description
     | Function
     | Method
