@@ -16,7 +16,7 @@ from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, Role
-from workspace.interfaces.ros2_packages import MANIFEST, write_ros2_packages
+from workspace.interfaces.ros2_packages import write_ros2_bringup
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -176,15 +176,12 @@ def test_a_partner_in_another_launch_file_makes_a_note(ws: LaunchWorkspace) -> N
 def test_ros2_nodes_of_one_name_are_a_warning_and_two_providers(tmp_path: Path) -> None:
     """``ros2 launch`` starts both nodes of one name (roslaunch refuses): a warning, under the
     pushed namespace's values where the names meet; what both serve has two providers."""
-    write_ros2_packages(tmp_path)
-    bringup = tmp_path / "demo_bringup"
-    bringup.mkdir()
-    (bringup / "package.xml").write_text(MANIFEST.format(name="demo_bringup", build="ament_cmake"))
-    (bringup / "a.launch.xml").write_text(
+    write_ros2_bringup(
+        tmp_path,
         """<launch><arg name="ns" default="r1"/>
         <group><push_ros_namespace namespace="$(var ns)"/>
           <node pkg="demo_py" exec="listener" name="ear"/></group>
-        <node pkg="demo_py" exec="listener" name="ear" namespace="r1"/></launch>"""
+        <node pkg="demo_py" exec="listener" name="ear" namespace="r1"/></launch>""",
     )
     analysis = Analysis(discover([tmp_path]))
     interfaces = extract_interfaces(analysis.workspace.packages.values())

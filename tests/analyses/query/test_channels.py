@@ -10,7 +10,7 @@ from rosvar.analyses.query.evaluator import QueryEngine
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
-from workspace.interfaces.ros2_packages import MANIFEST, write_ros2_packages
+from workspace.interfaces.ros2_packages import write_ros2_bringup
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -74,16 +74,13 @@ def test_services_and_actions_have_servers_and_clients(ws: LaunchWorkspace) -> N
 def test_ros2_nodes_and_their_topics(tmp_path: Path) -> None:
     """A ROS 2 node's name composes the pushed namespace with its own; one the launch file
     does not name (its code does) is still each of its topics' publisher."""
-    write_ros2_packages(tmp_path)
-    bringup = tmp_path / "demo_bringup"
-    bringup.mkdir()
-    (bringup / "package.xml").write_text(MANIFEST.format(name="demo_bringup", build="ament_cmake"))
-    (bringup / "a.launch.xml").write_text(
+    write_ros2_bringup(
+        tmp_path,
         """<launch><arg name="ns" default="r1"/>
         <group><push_ros_namespace namespace="$(var ns)"/>
           <node pkg="demo_cpp" exec="talker" namespace="arm"/>
           <node pkg="demo_py" exec="listener" name="ear"/></group>
-        <node pkg="demo_py" exec="listener" name="top"/></launch>"""
+        <node pkg="demo_py" exec="listener" name="top"/></launch>""",
     )
     analysis = Analysis(discover([tmp_path]))
     interfaces = extract_interfaces(analysis.workspace.packages.values())

@@ -119,3 +119,12 @@ def write_ros2_packages(root: Path) -> None:
         path = root / relative
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(text)
+
+
+def write_ros2_bringup(root: Path, launch_xml: str) -> None:
+    """:func:`write_ros2_packages`, and ``demo_bringup`` whose ``a.launch.xml`` launches them."""
+    write_ros2_packages(root)
+    bringup = root / "demo_bringup"
+    bringup.mkdir()
+    (bringup / "package.xml").write_text(MANIFEST.format(name="demo_bringup", build="ament_cmake"))
+    (bringup / "a.launch.xml").write_text(launch_xml)
