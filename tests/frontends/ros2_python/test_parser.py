@@ -266,6 +266,27 @@ def generate_launch_description():
     )
 
 
+def test_what_an_opaque_function_reads_of_context_by_a_computed_name_is_reported() -> None:
+    _tree, diagnostics = read(
+        """
+from launch.actions import OpaqueFunction
+def f(context):
+    x = context.launch_configurations[LaunchConfiguration('a')]
+    y = context.launch_configurations.get(5)
+    w = context.launch_configurations.get('a', ['list'])
+    return [Node(package='a', executable=x, name=y), Node(package='a', executable=w)]
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=f)])
+""",
+        IMPORTS,
+    )
+    assert [(d.location.line, d.message) for d in diagnostics] == [
+        (15, "a launch configuration named by a non-string is not followed"),
+        (16, "a launch configuration named by a non-string is not followed"),
+        (17, "a launch configuration's non-string default is not followed"),
+    ]
+
+
 def test_composable_nodes_and_containers() -> None:
     tree, diagnostics = read(
         """

@@ -538,7 +538,7 @@ class Interpreter:
         if container == Module("os.environ") and isinstance(index, str | Text):
             return Text.of(Sub("env", (Text.of(index),)))
         if container == Method(LaunchContext(), "launch_configurations"):
-            return _configuration(index)
+            return _configuration(self, node, index)
         try:
             if isinstance(container, dict) and isinstance(index, Key):
                 return container[index]
@@ -708,7 +708,7 @@ class Interpreter:
         if isinstance(receiver, LaunchContext) and name == "perform_substitution" and args:
             return Call(name, args, kwargs, self.location(node), self.sink).text(args[0])
         if receiver == Method(LaunchContext(), "launch_configurations") and name == "get" and args:
-            return _configuration(*args[:2])
+            return _configuration(self, node, *args[:2])
         if isinstance(receiver, str) and name in _STR_METHODS:
             return self._str_method(receiver, name, args, kwargs, node)
         return self.not_followed(f"method {name}() of a {type(receiver).__name__}", node)
@@ -874,14 +874,16 @@ def _print(
     return None
 
 
-def _configuration(name: Value, default: Value = None) -> Value:
+def _configuration(
+    interpreter: Interpreter, node: ast.AST, name: Value, default: Value = None
+) -> Value:
     """``context.launch_configurations[name]`` (``.get(name, default)``): ``$(var name)``."""
-    if not isinstance(name, str | Text):
-        return Unknown("a launch configuration of a name not known statically")
+    if not isinstance(name, str):
+        return interpreter.not_followed("a launch configuration named by a non-string", node)
     if default is None:
         return Text.of(Sub("var", (Text.of(name),)))
     if not isinstance(default, str | Text):
-        return Unknown("a launch configuration's default not known statically")
+        return interpreter.not_followed("a launch configuration's non-string default", node)
     return Text.of(Sub("var", (Text.of(name), Text.of(default))))
 
 
