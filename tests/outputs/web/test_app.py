@@ -15,7 +15,7 @@ from urllib.parse import urlsplit
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
 from outputs.web.test_overview import wired_configurator, wired_workspace
-from rosvar.outputs.web.overview import SEPARATOR, Grouping, key_of, labels
+from rosvar.outputs.web.overview import SEPARATOR, Grouping, key_of, labels, packages
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -69,12 +69,13 @@ class App:
         drawing: dict[str, str] = self.page.evaluate("window.rosvar.graph.drawing()")
         units = set(self.page.evaluate("window.rosvar.graph.cy.nodes().map((n) => n.id())"))
         grouping = Grouping(self.page.evaluate("window.rosvar.state.grouping"))
+        named = packages(self.whole["features"])
         found: list[str | None] = []
         for entry in entries:
             if entry["id"] in drawing:
                 found.append(drawing[entry["id"]])
                 continue
-            key = key_of(labels(grouping, entry))
+            key = key_of(labels(grouping, entry, named))
             boxes = [f"m:{key}"] + [
                 "g:" + SEPARATOR.join(key.split(SEPARATOR)[:depth])
                 for depth in range(key.count(SEPARATOR) + 1, 1, -1)

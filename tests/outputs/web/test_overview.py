@@ -11,9 +11,10 @@ from typing import TYPE_CHECKING, Any
 
 import pytest
 
-from outputs.web.live import Live, running
+from outputs.web.live import REPO, Live, running
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.web.delta import patch
 from rosvar.outputs.web.overview import (
     LINK,
@@ -25,8 +26,11 @@ from rosvar.outputs.web.overview import (
     labels,
     namespace_path,
     package_of,
+    packages,
     short_path,
+    summaries,
 )
+from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 
 if TYPE_CHECKING:
@@ -41,9 +45,26 @@ def test_names_as_the_page_reads_them() -> None:
     assert namespace_path("/a/b/c") == ["/a/", "/a/b/"]
     assert namespace_path("/c") == ["/"]
     entry = {"id": "ws/pkg/launch/a.launch|a.launch:3:5#1", "name": "/ns/x"}
-    assert labels(Grouping.PACKAGE, entry) == ("pkg", "pkg/a.launch")
-    assert labels(Grouping.NAMESPACE, entry) == ("/ns/",)
+    assert labels(Grouping.PACKAGE, entry, {}) == ("pkg", "pkg/a.launch")
+    named = {"ws/pkg/launch/a.launch": "named_pkg"}  # its package.xml's name, as the tree's
+    assert labels(Grouping.PACKAGE, entry, named) == ("named_pkg", "pkg/a.launch")
+    assert labels(Grouping.NAMESPACE, entry, named) == ("/ns/",)
     assert key_of(["pkg", "pkg/a.launch"]) == f"{SEPARATOR}pkg{SEPARATOR}pkg/a.launch"
+
+
+ROS2_DATA = REPO / "tests" / "data" / "ros2"
+
+
+def test_ros2_package_groups_are_named_as_the_tree_names_packages() -> None:
+    """ros2_control_demos keeps each package in a folder named otherwise (``example_2``
+    holds ``ros2_control_demo_example_2``) and its launch files in ``bringup/launch``: the
+    boxes are the packages the tree shows, not one ``bringup`` of every example."""
+    analysis = Analysis(discover([str(ROS2_DATA / "ros2_control_demos")]))
+    document = Configurator(analysis, extract(analysis, products=True)).state([]).to_json()
+    tops = {g["label"] for g in summaries(document, Grouping.PACKAGE) if g["parent"] == ""}
+    tree = {f["package"] for f in document["features"].values() if f["kind"] == "file"}
+    assert "ros2_control_demo_example_2" in tops and "bringup" not in tops
+    assert tops <= tree
 
 
 def _pair(live: Live, grouping: str) -> tuple[dict[str, Any], dict[str, Any]]:
@@ -60,6 +81,7 @@ def _pair(live: Live, grouping: str) -> tuple[dict[str, Any], dict[str, Any]]:
 @pytest.mark.parametrize("grouping", list(Grouping))
 def test_summaries_count_the_whole_graph(examples: Live, grouping: Grouping) -> None:
     whole, compact = _pair(examples, grouping)
+    named = packages(whole["features"])
     assert compact["grouping"] == grouping
     groups = {group["id"]: group for group in compact["graph"]["groups"]}
     expected: Counter[tuple[str, str]] = Counter()
@@ -67,7 +89,7 @@ def test_summaries_count_the_whole_graph(examples: Live, grouping: Grouping) -> 
         for entry in whole["graph"][kind]:
             if entry["presence"] == "absent":
                 continue
-            path = labels(grouping, entry)
+            path = labels(grouping, entry, named)
             for depth in range(1, len(path) + 1):
                 key = key_of(path[:depth])
                 counted = "params" if kind == "params" else "nodes"
@@ -87,7 +109,7 @@ def test_summaries_count_the_whole_graph(examples: Live, grouping: Grouping) -> 
             for e in whole["graph"][kind]
             if e["presence"] != "absent"
             and e["id"].split("|")[0] in files
-            and key_of(labels(grouping, e)).startswith(key)
+            and key_of(labels(grouping, e, named)).startswith(key)
         ]
         assert group["selected"] == len(launched)
     assert any(group["selected"] for group in groups.values())
@@ -113,7 +135,8 @@ def test_members_by_page_are_the_groups_entries(examples: Live) -> None:
             {**entry, "kind": kind[:-1]}
             for kind in ("nodes", "tests")
             for entry in whole["graph"][kind]
-            if entry["presence"] != "absent" and key_of(labels(Grouping.FILE, entry)) == group["id"]
+            if entry["presence"] != "absent"
+            and key_of(labels(Grouping.FILE, entry, {})) == group["id"]
         ]
         key = json.dumps
         assert sorted(map(key, fetched)) == sorted(map(key, own))
@@ -126,7 +149,7 @@ def test_members_by_page_are_the_groups_entries(examples: Live) -> None:
             "/api/group", {"session": session, "group": group["id"], "kind": "topics"}
         )
         assert len(topics["members"]) == min(PAGE["topics"], group["topics"][1])
-        drawn = {e["id"]: key_of(labels(Grouping.FILE, e)) for e in whole["graph"]["nodes"]}
+        drawn = {e["id"]: key_of(labels(Grouping.FILE, e, {})) for e in whole["graph"]["nodes"]}
         for topic in topics["members"]:
             assert topic["groups"] == [drawn[node] for node in topic["nodes"]]
             assert group["id"] in topic["groups"]
@@ -285,8 +308,9 @@ def expected_links(whole: dict[str, Any], grouping: Grouping) -> dict[str, list[
     names of a kind with a node feeding them under the first and one using them under the
     second (a node without a side does both; names with no side at all: once a pair)."""
     graph = whole["graph"]
+    named = packages(whole["features"])
     home = {
-        e["id"]: key_of(labels(grouping, e))
+        e["id"]: key_of(labels(grouping, e, named))
         for kind in ("nodes", "tests")
         for e in graph[kind]
         if e["presence"] != "absent"

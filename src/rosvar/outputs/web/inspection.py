@@ -25,7 +25,7 @@ from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.view import Graph
 from rosvar.diagnostics import Severity
 from rosvar.logic.bdd import BDD
-from rosvar.outputs.web.overview import Grouping, key_of, labels
+from rosvar.outputs.web.overview import Grouping, Packages, key_of, labels
 from rosvar.workspace.interfaces.model import Interfaces
 
 Reply = dict[str, object]
@@ -61,6 +61,8 @@ class Inspector:
         self._paths = {analysis.label(path): path for path in self._entries}
         self._engine: QueryEngine | None = None
         self._findings: list[Finding] | None = None
+        features = configurator.state([]).features  # the packages never change: read once
+        self._packages = {key: f.package for key, f in features.items() if f.package}
 
     def query(self, text: str, state: ConfigurationState, grouping: Grouping | None) -> Reply:
         """The elements ``text`` selects in the configurations ``state`` leaves, the first
@@ -74,7 +76,7 @@ class Inspector:
                 self._configurator.analysis, list(self._entries), collections
             )
         decisions = self._configurator.decisions(state.choices)
-        places = _Places(state.graph, grouping)
+        places = _Places(state.graph, grouping, self._packages)
         results = []
         for result in self._engine.run(text):
             element = result.element
@@ -108,7 +110,7 @@ class Inspector:
         several entry files is listed once (from an entry file where it is present, if there
         is one). With ``grouping``, each has the ``groups`` of its ``ids``."""
         decisions = self._configurator.decisions(state.choices)
-        places = _Places(state.graph, grouping)
+        places = _Places(state.graph, grouping, self._packages)
         shown: dict[tuple[object, ...], Reply] = {}
         for finding in self.findings():
             key = (finding.check, finding.name, finding.locations)
@@ -179,7 +181,7 @@ class _Places:
     """The entries of one state's graph by where they are declared and by name, and (with
     a grouping) the group of each node and param."""
 
-    def __init__(self, graph: Graph, grouping: Grouping | None) -> None:
+    def __init__(self, graph: Graph, grouping: Grouping | None, named: Packages) -> None:
         self._declared: dict[tuple[Kind, *_Place], list[tuple[str, str]]] = {}
         self._named: dict[tuple[str, str], list[str]] = {}  # (entry file id or "", name) → ids
         self._grouping = grouping
@@ -203,7 +205,7 @@ class _Places:
                     place = (kind, file_id, str(entry["filename"]), int(str(entry["line"])))
                     self._declared.setdefault(place, []).append((name, id_))
                     if grouping is not None:
-                        self._groups[id_] = key_of(labels(grouping, entry))
+                        self._groups[id_] = key_of(labels(grouping, entry, named))
                 self._named.setdefault((file_id, name), []).append(id_)
 
     def declared(self, kind: Kind, place: _Place, name: str | None) -> list[str]:

@@ -99,11 +99,22 @@ def _last(parts: Sequence[str], item: str) -> int:
     return max((index for index, part in enumerate(parts) if part == item), default=-1)
 
 
-def labels(grouping: Grouping, entry: Entry) -> tuple[str, ...]:
+Packages = Mapping[str, str]
+"""A launch file's id → its ROS package's name, as the feature tree groups files (a ROS 2
+package's folder need not be named after it)."""
+
+
+def packages(features: Mapping[str, Any]) -> dict[str, str]:
+    """:data:`Packages` of a state's features as JSON."""
+    return {key: f["package"] for key, f in features.items() if f.get("package")}
+
+
+def labels(grouping: Grouping, entry: Entry, named: Packages) -> tuple[str, ...]:
     """The labels of the groups an entry is filed under, outermost first."""
     if grouping == Grouping.NAMESPACE:
         return _namespaces(str(entry.get("name", "")))
-    return _files(grouping, entry_file(str(entry["id"])))
+    file = entry_file(str(entry["id"]))
+    return _files(grouping, file, named.get(file))
 
 
 @lru_cache(maxsize=LABELS_KEPT)
@@ -112,10 +123,10 @@ def _namespaces(name: str) -> tuple[str, ...]:
 
 
 @lru_cache(maxsize=LABELS_KEPT)
-def _files(grouping: Grouping, file: str) -> tuple[str, ...]:
+def _files(grouping: Grouping, file: str, package: str | None) -> tuple[str, ...]:
     if grouping == Grouping.FILE:
         return (short_path(file),)
-    return (package_of(file), short_path(file))
+    return (package or package_of(file), short_path(file))
 
 
 def key_of(path: Iterable[str]) -> str:
@@ -151,12 +162,13 @@ def summaries(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str,
     graph = document["graph"]
     clashing = {name for conflict in document["conflicts"] for name in conflict["names"]}
     features = document["features"]
+    named = packages(features)
     selected = {key for key, f in features.items() if f["state"] == Selection.SELECTED}
     groups: dict[str, _Group] = {}
 
     def chain(entry: Entry) -> list[_Group]:
         found, key = [], ""
-        for label in labels(grouping, entry):
+        for label in labels(grouping, entry, named):
             parent, key = key, key + SEPARATOR + label
             if key not in groups:
                 groups[key] = _Group(label, parent)
@@ -214,7 +226,8 @@ def links(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str, obj
     larger. Whatever groups the page draws closed, the links between two of its boxes count
     each name once (per direction)."""
     graph = document["graph"]
-    chains = {str(e["id"]): _chain(grouping, e) for _kind, e in _nodes(graph)}
+    named = packages(document["features"])
+    chains = {str(e["id"]): _chain(grouping, e, named) for _kind, e in _nodes(graph)}
     found: dict[tuple[MemberKind, str, str], list[int]] = {}
     for kind in CHANNELS:
         for entry in _possible(graph.get(kind, ())):
@@ -240,9 +253,9 @@ def links(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str, obj
     ]
 
 
-def _chain(grouping: Grouping, entry: Entry) -> tuple[str, ...]:
+def _chain(grouping: Grouping, entry: Entry, named: Packages) -> tuple[str, ...]:
     """The keys of the groups an entry is under, outermost first."""
-    path = labels(grouping, entry)
+    path = labels(grouping, entry, named)
     return tuple(key_of(path[: depth + 1]) for depth in range(len(path)))
 
 
@@ -255,8 +268,9 @@ def members(
     level, as its summary counts them, each with the ``groups`` and the ``names`` of its
     ``nodes`` (the page draws them linked to whatever draws the nodes, a closed box too)."""
     graph = document["graph"]
+    named = packages(document["features"])
     if kind == MemberKind.NODES:
-        own = [(k, e) for k, e in _nodes(graph) if key_of(labels(grouping, e)) == group]
+        own = [(k, e) for k, e in _nodes(graph) if key_of(labels(grouping, e, named)) == group]
         by_name: dict[str, list[dict[str, object]]] = {}
         for node_kind, entry in own:
             by_name.setdefault(str(entry["name"]), []).append({**entry, "kind": node_kind})
@@ -269,11 +283,11 @@ def members(
             found = [
                 {**e}
                 for e in _possible(graph.get("params", ()))
-                if key_of(labels(grouping, e)) == group
+                if key_of(labels(grouping, e, named)) == group
             ]
         else:  # with its nodes' groups and names: what draws them, and how they read
             nodes = {str(e["id"]): e for _k, e in _nodes(graph)}
-            keys = {node: key_of(labels(grouping, e)) for node, e in nodes.items()}
+            keys = {node: key_of(labels(grouping, e, named)) for node, e in nodes.items()}
             found = [
                 {
                     **e,
