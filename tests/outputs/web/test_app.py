@@ -532,6 +532,28 @@ def test_many_topics_link_closed_boxes_and_only_open_groups_fetch_theirs(
         app.assert_shows_server_state()
 
 
+LABELLED_LINKS = """() => window.rosvar.graph.cy.edges('[kind = "link"]')
+  .filter((edge) => edge.style('text-opacity') !== '0').map((edge) => edge.id())"""
+
+
+def test_crowded_links_are_labelled_for_the_selected_box_only(
+    page: Any, ws: LaunchWorkspace
+) -> None:
+    """Two dozen boxes joined by links: every link's label over the others hid the boxes'
+    names (Husky with its dependencies); they are drawn for the selected box's links alone."""
+    chained_workspace(ws, packages=24, topics=11)  # 264 topics: linked; 23 links
+    with running(wired_configurator(ws)) as live:
+        app = App(page, live)
+        app.wait_for_layout()
+        assert len(drawn_links(app)) == 23
+        assert page.evaluate(LABELLED_LINKS) == []
+        (box,) = [u for u in app.units("group") if "p05" in u["label"]]
+        app.click_graph_element(box["id"])
+        page.wait_for_function("() => window.rosvar.graph.cy.$(':selected').length > 0")
+        labelled = page.evaluate(LABELLED_LINKS)
+        assert len(labelled) == 2 and all("p05" in link for link in labelled), labelled
+
+
 def test_complete_product_gives_the_command(page: Any, examples: Live) -> None:
     app = App(page, examples)
     robot = file_named(app.state, "robot.launch")

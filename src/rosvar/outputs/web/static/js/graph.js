@@ -30,6 +30,7 @@ const PAGE = 24; // members of an expanded group drawn at a time
 const ANIMATION_MS = 350;
 const ZOOM = { min: 0.6, max: 1.6 }; // the fit never goes below a zoom whose labels are legible
 const PADDING = 30;
+const QUIET_LINKS_ABOVE = 20; // more links drawn than this: labels only on a selected or hovered box's links
 const LINKED_ABOVE = 250; // topics, services and actions drawn one by one at most (Husky's are), else links
 
 const STYLE = [
@@ -61,6 +62,10 @@ const STYLE = [
     label: "data(label)", "font-size": 10, color: "#4a5570", "text-background-color": "#fff",
     "text-background-opacity": 0.8, "text-background-padding": 1,
   } },
+  // crowded links keep their labels for the box under the pointer or selected (and the link itself)
+  { selector: 'edge[kind = "link"].quiet', style: { "text-opacity": 0, "text-background-opacity": 0 } },
+  { selector: 'edge[kind = "link"].quiet.near, edge[kind = "link"].quiet.pointed, edge[kind = "link"].quiet:selected',
+    style: { "text-opacity": 1, "text-background-opacity": 0.8, "z-index": 10 } },
   { selector: ".undetermined", style: { "border-style": "dashed", "line-style": "dashed", "background-opacity": 0.7 } },
   { selector: "node.conflict", style: { "border-color": "#b42318", "border-width": 4, color: "#b42318" } },
   { selector: "node.match", style: { "border-color": "#2f6fdb", "border-width": 4 } },
@@ -234,10 +239,18 @@ export class GraphView {
     this.layoutRuns = 0;
     this.layoutsDone = 0;
     this.container.dataset.layout = "done";
-    this.cy.on("select unselect", () => this.onSelect(this.selectedElement(), true));
+    this.cy.on("select unselect", () => { this.markNear(); this.onSelect(this.selectedElement(), true); });
+    this.cy.on("mouseover", "node", (event) => event.target.connectedEdges('[kind = "link"]').addClass("pointed"));
+    this.cy.on("mouseout", "node", (event) => event.target.connectedEdges('[kind = "link"]').removeClass("pointed"));
     this.cy.on("dbltap", "node", (event) => this.open(event.target.id()));
     this.cy.on("mouseover", 'edge[kind = "link"]', (event) => { this.container.title = linkText(event.target.data("element")); });
     this.cy.on("mouseout", 'edge[kind = "link"]', () => { this.container.title = ""; });
+  }
+
+  // The links of the selected boxes are "near": they show their labels among quiet ones.
+  markNear() {
+    this.cy.edges(".near").removeClass("near");
+    this.cy.nodes(":selected").connectedEdges('[kind = "link"]').addClass("near");
   }
 
   selectedElement() {
@@ -563,13 +576,14 @@ export class GraphView {
       if (!edges.has(id)) edges.set(id, { kind: "link", source, target, counts: {} });
       edges.get(id).counts[list] = link.count;
     }
+    const quiet = edges.size > QUIET_LINKS_ABOVE ? " quiet" : "";
     for (const [id, element] of edges) {
       const counts = Object.values(element.counts);
       const total = counts.reduce((sum, [, possible]) => sum + possible, 0);
       const present = counts.reduce((sum, [found]) => sum + found, 0);
       const label = linkRows(element).map(([count]) => count).join(" · ");
       const [from, to] = [element.source, element.target].map((unit) => drawn.get(unit));
-      wanted.push({ group: "edges", classes: present ? "" : "undetermined",
+      wanted.push({ group: "edges", classes: (present ? "" : "undetermined") + quiet,
                     data: { id, kind: "link", source: element.source, target: element.target, label,
                             width: Math.min(8, 1.2 + Math.log2(total)), element: { ...element, from, to } } });
     }
@@ -636,6 +650,7 @@ export class GraphView {
       cy.add(added);
       // the same ids are the same elements: keep them selected across steps
       for (const id of selected) cy.getElementById(id).select();
+      this.markNear();
     });
     if (added.length || removed) this.layout(before);
     if (this.focused && cy.getElementById(this.focused).empty()) this.focused = null;
