@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import time
 from dataclasses import dataclass
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from rosvar.analyses.conflicts import (
@@ -13,11 +14,15 @@ from rosvar.analyses.conflicts import (
     clashes,
     declared_occurrences,
     index,
+    node_occurrences,
 )
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.resolve import resolve
 from rosvar.diagnostics import Location
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.workspace import discover
+from workspace.interfaces.ros2_packages import write_ros2_bringup
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -155,3 +160,22 @@ def test_anonymous_names_of_two_entry_files_never_clash(ws: LaunchWorkspace) -> 
     paths = sorted(f.file for f in model.files)
     for pair, loads in (((0, 1), True), ((2,), False)):
         assert resolve(analysis, [paths[i] for i in pair], {}).ok is loads
+
+
+def test_ros2_nodes_of_one_name_are_no_conflict(tmp_path: Path) -> None:
+    """``ros2 launch`` starts two nodes of one name (``rosvar check`` warns of them): no
+    excludes and no internal clash, whether the nodes give a namespace or not."""
+    node = '<node pkg="demo_py" exec="listener" name="ear"{}/>'
+    twice = node.format("") + node.format(' namespace=""')
+    write_ros2_bringup(tmp_path, f"<launch>{twice}</launch>")
+    (tmp_path / "demo_bringup" / "b.launch.xml").write_text(f"<launch>{twice}</launch>")
+    analysis = Analysis(discover([tmp_path]))
+    model = extract(analysis)
+    assert len(model.files) == 2
+    assert [c for c in model.constraints if c.kind == "excludes"] == []
+    assert model.internal == []
+    [built] = [
+        analysis.model(f) for f in analysis.workspace.launch_files if f.endswith("a.launch.xml")
+    ]
+    names = [o.name for n in built.nodes for o in node_occurrences(built, n)]
+    assert names == ["/ear", "/ear"]  # named as ros2 launch names them, for the checks

@@ -319,7 +319,7 @@ class _Checker:
         ros2 = any("ros_namespace" in node.fields for node in self.model.nodes)
         for node in self.model.nodes:
             if not node.is_test:
-                for occurrence in node_occurrences(self.model, node, ros2=ros2):
+                for occurrence in node_occurrences(self.model, node):
                     buckets[("node", occurrence.name)].append(occurrence)
         for clash in clashes(buckets):
             self.add(

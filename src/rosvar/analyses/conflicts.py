@@ -73,13 +73,19 @@ class _WrittenIn:
         return found
 
 
+def _clashes(node: NodeDecl) -> bool:
+    """Whether two such nodes of one name are a conflict: roslaunch refuses to start them (a
+    ``<test>`` is run apart); ``ros2 launch`` starts both (``rosvar check`` warns of them)."""
+    return not node.is_test and "ros_namespace" not in node.fields
+
+
 def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
     """Nodes and params written in ``model.file`` itself (Algorithm 1's GETELEMENTS)."""
     own = _WrittenIn(model.file)
     anon = anon_pattern(model.anon_ids)
     found: list[Occurrence] = []
     for node in model.nodes:
-        if not node.is_test and own(node.location.file):
+        if _clashes(node) and own(node.location.file):
             found.extend(node_occurrences(model, node))
     for param in model.params:
         if not isinstance(param, ParamDecl) or not own(param.location.file):
@@ -100,13 +106,11 @@ def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
     return [replace(o, anonymous=True) if anon.search(o.name) else o for o in found]
 
 
-def node_occurrences(
-    model: LaunchModel, node: NodeDecl, *, ros2: bool = False
-) -> Iterator[Occurrence]:
-    """The node's resolved names. ``ros2``: a ROS 2 node's, its pushed namespace composed
-    with its own; ``ros2 launch`` starts two nodes of one name, so these are for the checks,
-    while a ROS 2 file's own declarations (:func:`declared_occurrences`) give none."""
+def node_occurrences(model: LaunchModel, node: NodeDecl) -> Iterator[Occurrence]:
+    """The node's resolved names: a ROS 2 node's is its pushed namespace composed with its
+    own, as ``ros2 launch`` names it."""
     keys: tuple[str, ...] = ("namespace", "name")
+    ros2 = "ros_namespace" in node.fields
     if ros2:
         keys = ("ros_namespace", *keys)
     full = combine([node.fields[key] for key in keys], ros2_node_name if ros2 else _node_name)
@@ -128,7 +132,7 @@ def repeated_inclusions(model: LaunchModel) -> list[Clash]:
     seen: dict[tuple[str, Location], list[Occurrence]] = defaultdict(list)
     found: list[Clash] = []
     for node in model.nodes:
-        if node.is_test or own(node.location.file):
+        if not _clashes(node) or own(node.location.file):
             continue
         for occurrence in node_occurrences(model, node):
             earlier = seen[(occurrence.name, occurrence.location)]
