@@ -316,7 +316,7 @@ class _Checker:
         """Two nodes of one name: roslaunch refuses to start, ``ros2 launch`` starts both
         (a warning: their parameters, services and logs then share one name)."""
         buckets: dict[tuple[str, str], list[Occurrence]] = defaultdict(list)
-        ros2 = any("ros_namespace" in node.fields for node in self.model.nodes)
+        ros2 = any(node.ros2 for node in self.model.nodes)
         for node in self.model.nodes:
             if not node.is_test:
                 for occurrence in node_occurrences(self.model, node):
@@ -326,12 +326,7 @@ class _Checker:
                 Check.NODE_NAME_CLASH,
                 Severity.WARNING if ros2 else Severity.ERROR,
                 clash.name,
-                f"two nodes are named {clash.name}"
-                + (
-                    " (ros2 launch starts both: their parameter services and private names collide)"
-                    if ros2
-                    else ""
-                ),
+                f"two nodes are named {clash.name}" + (ROS2_BOTH_START if ros2 else ""),
                 clash.condition,
                 (clash.second.location, clash.first.location),
             )

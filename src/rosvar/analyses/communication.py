@@ -75,7 +75,7 @@ ROS2_FIELDS = (*FIELDS, "ros_namespace", "plugin")
 def node_fields(node: NodeDecl) -> tuple[str, ...]:
     """The fields :meth:`LaunchedNode.of` reads of ``node`` (a ROS 2 declaration carries the
     pushed namespace)."""
-    return ROS2_FIELDS if "ros_namespace" in node.fields else FIELDS
+    return ROS2_FIELDS if node.ros2 else FIELDS
 
 
 @dataclass(frozen=True)

@@ -76,7 +76,7 @@ class _WrittenIn:
 def _clashes(node: NodeDecl) -> bool:
     """Whether two such nodes of one name are a conflict: roslaunch refuses to start them (a
     ``<test>`` is run apart); ``ros2 launch`` starts both (``rosvar check`` warns of them)."""
-    return not node.is_test and "ros_namespace" not in node.fields
+    return not node.is_test and not node.ros2
 
 
 def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
@@ -110,10 +110,9 @@ def node_occurrences(model: LaunchModel, node: NodeDecl) -> Iterator[Occurrence]
     """The node's resolved names: a ROS 2 node's is its pushed namespace composed with its
     own, as ``ros2 launch`` names it."""
     keys: tuple[str, ...] = ("namespace", "name")
-    ros2 = "ros_namespace" in node.fields
-    if ros2:
+    if node.ros2:
         keys = ("ros_namespace", *keys)
-    full = combine([node.fields[key] for key in keys], ros2_node_name if ros2 else _node_name)
+    full = combine([node.fields[key] for key in keys], ros2_node_name if node.ros2 else _node_name)
     for condition, name in full:
         if name is not None:
             yield Occurrence(

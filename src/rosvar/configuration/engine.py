@@ -227,7 +227,7 @@ class Configurator:
             for feature, value in values
             if value.slot is OTHER
         ]
-        packages = {
+        self.packages: dict[str, str | None] = {  # launch file id → its ROS package
             entry.id: None
             if (package := analysis.workspace.package_of(entry.path)) is None
             else package.name
@@ -238,7 +238,7 @@ class Configurator:
                 (decided, chosen): FeatureState(
                     feature.kind,
                     feature.file,
-                    packages[feature.file],
+                    self.packages[feature.file],
                     self.catalog.args[feature.id][0].doc
                     if feature.kind == FeatureKind.ARG
                     else None,

@@ -84,6 +84,11 @@ class NodeDecl:
     def field(self, key: str) -> Choice[Raw | None]:
         return self.fields[key]
 
+    @property
+    def ros2(self) -> bool:
+        """Whether ``ros2 launch`` starts it: its name composes a pushed namespace."""
+        return "ros_namespace" in self.fields
+
 
 @dataclass(slots=True)
 class NodeParameter:

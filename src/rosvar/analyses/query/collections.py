@@ -146,7 +146,7 @@ def _const(space: ConditionSpace, value: object) -> Choice[object]:
 
 def _name_fields(node: NodeDecl) -> tuple[str, ...]:
     """The fields a node's name is made of: a ROS 2 node's pushed namespace comes first."""
-    if "ros_namespace" in node.fields:
+    if node.ros2:
         return ("ros_namespace", "namespace", "name")
     return ("namespace", "name")
 

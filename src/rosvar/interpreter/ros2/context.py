@@ -48,7 +48,7 @@ class Timer:
     sequence: int
     condition: BDD
     actions: list[Entity]
-    cancelled_by_shutdown: BDD  # where ``cancel_on_shutdown`` holds (its default)
+    cancel_on_shutdown: bool  # a shutdown cancels it while pending (the default)
 
 
 @dataclass(slots=True)

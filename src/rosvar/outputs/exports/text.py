@@ -8,6 +8,7 @@ with the fewest non-default choices, so each finding says what to look at.
 from __future__ import annotations
 
 from collections import Counter
+from dataclasses import replace
 
 from rosvar.analyses.feature_model.model import (
     ArgFeature,
@@ -30,10 +31,9 @@ def _plural(count: int, word: str) -> str:
     return f"{count} {word}{'' if count == 1 else 's'}"
 
 
-def _where(location: Location, tree: Tree) -> str:
-    """``file-id:line:col`` (a launch file's id is shorter than its path)."""
-    file = tree.by_path.get(real_path(location.file), location.file)
-    return f"{file}:{location.line}:{location.col}" if location.line > 0 else file
+def _where(location: Location, tree: Tree) -> Location:
+    """``location`` in a launch file's id, which is shorter than its path."""
+    return replace(location, file=tree.by_path.get(real_path(location.file), location.file))
 
 
 def _summary(model: FeatureModel, tree: Tree, configurations: int | None) -> list[str]:
@@ -85,7 +85,7 @@ def _constraints(model: FeatureModel, tree: Tree) -> list[str]:
         when = "always" if constraint.unconditional else f"when {describe(constraint.condition)}"
         lines.append(f"{INDENT}{constraint.kind} {a} {arrow} {b}, {when}")
         lines.append(f"{INDENT * 2}{constraint.text}")
-        where = [_where(loc, tree) for loc in constraint.locations]
+        where = [str(_where(loc, tree)) for loc in constraint.locations]
         if where:
             more = f" (+{len(where) - 4} more)" if len(where) > 4 else ""
             lines.append(f"{INDENT * 2}at {', '.join(where[:4])}{more}")
@@ -135,7 +135,7 @@ def write(model: FeatureModel) -> str:
     if model.diagnostics:
         lines += ["", "Diagnostics"]
         lines += [
-            f"{INDENT}{_where(d.location, tree)}: {d.severity.value}: {d.message} [{d.code}]"
+            f"{INDENT}{replace(d, location=_where(d.location, tree))}"
             for d in model.diagnostics
             if d.severity is not Severity.NOTE
         ]

@@ -61,8 +61,6 @@ class Inspector:
         self._paths = {analysis.label(path): path for path in self._entries}
         self._engine: QueryEngine | None = None
         self._findings: list[Finding] | None = None
-        features = configurator.state([]).features  # the packages never change: read once
-        self._packages = {key: f.package for key, f in features.items() if f.package}
 
     def query(self, text: str, state: ConfigurationState, grouping: Grouping | None) -> Reply:
         """The elements ``text`` selects in the configurations ``state`` leaves, the first
@@ -76,7 +74,7 @@ class Inspector:
                 self._configurator.analysis, list(self._entries), collections
             )
         decisions = self._configurator.decisions(state.choices)
-        places = _Places(state.graph, grouping, self._packages)
+        places = _Places(state.graph, grouping, self._configurator.packages)
         results = []
         for result in self._engine.run(text):
             element = result.element
@@ -110,7 +108,7 @@ class Inspector:
         several entry files is listed once (from an entry file where it is present, if there
         is one). With ``grouping``, each has the ``groups`` of its ``ids``."""
         decisions = self._configurator.decisions(state.choices)
-        places = _Places(state.graph, grouping, self._packages)
+        places = _Places(state.graph, grouping, self._configurator.packages)
         shown: dict[tuple[object, ...], Reply] = {}
         for finding in self.findings():
             key = (finding.check, finding.name, finding.locations)

@@ -99,7 +99,7 @@ def _last(parts: Sequence[str], item: str) -> int:
     return max((index for index, part in enumerate(parts) if part == item), default=-1)
 
 
-Packages = Mapping[str, str]
+Packages = Mapping[str, str | None]
 """A launch file's id → its ROS package's name, as the feature tree groups files (a ROS 2
 package's folder need not be named after it)."""
 

@@ -53,7 +53,7 @@ def timer(it: Interpretation, entity: Entity, context: Context) -> None:
                 next(CREATED),
                 it.pc & condition,
                 entity.children,
-                it.space.true if cancelled else it.space.false,
+                cancelled,
             )
         )
 
@@ -89,5 +89,6 @@ def _shut_down(it: Interpretation, context: Context) -> None:
         when |= condition
     context.shutdowns.clear()
     for pending in context.timers:
-        pending.condition &= ~(when & pending.cancelled_by_shutdown)
+        if pending.cancel_on_shutdown:
+            pending.condition &= ~when
     context.timers[:] = [t for t in context.timers if t.condition != it.space.false]
