@@ -28,7 +28,7 @@ from rosvar.configuration.choices import Action
 from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.outputs.exports import FORMATS
 from rosvar.ros.names import command_line_mappings
-from rosvar.workspace.ros_version import RosVersion
+from rosvar.ros.version import RosVersion
 
 # Each command imports what it needs when it runs: `dd` (and CUDD), the interpreter, numpy
 # and the web server are not what `--version`, `--help` or another command pays for.

@@ -1,8 +1,13 @@
-"""The ROS 2 dialect: its tag registry (filled by :mod:`rosvar.ros2.tags`) and
-its substitution language."""
+"""The ROS 2 dialect: its frontends (by file suffix), its substitution language, the launch
+context as its scope; its tag registry is filled by :mod:`rosvar.ros2.tags`."""
 
-from rosvar.interpreter.dialect import Dialect, RosVersion
+from rosvar.interpreter.semantics import Semantics
+from rosvar.ros.version import RosVersion
+from rosvar.ros2.context import Context
+from rosvar.ros2.entry import walk_entry
+from rosvar.ros2.frontends import registry
 from rosvar.ros2.substitutions import Ros2Substituter
 
-ROS2 = Dialect(RosVersion.ROS2, Ros2Substituter)
+ROS2: Semantics[Context] = Semantics(RosVersion.ROS2, registry.load, Ros2Substituter, walk_entry)
 tag = ROS2.tag
+"""Register a ROS 2 tag handler."""

@@ -9,8 +9,9 @@ from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation
+from rosvar.ros.version import RosVersion
+from rosvar.ros2.context import Context
 from rosvar.workspace.launch_files import LaunchFormat, format_of
-from rosvar.workspace.ros_version import RosVersion
 
 PROCESS = frozenset(
     {
@@ -63,13 +64,15 @@ ALWAYS = frozenset({"if", "unless"})
 CONTAINERS = frozenset({"group", "launch", "timer", "ros_timer"})
 
 
-def check(it: Interpretation, root: Entity) -> None:
+def check(it: Interpretation[Context], root: Entity) -> None:
     """Record the frontend's failure for every unknown element or attribute below ``root``."""
     python = format_of(root.location.file, RosVersion.ROS2) is LaunchFormat.PYTHON
     _check(it, root, {**ATTRIBUTES, **PYTHON_ONLY} if python else ATTRIBUTES)
 
 
-def _check(it: Interpretation, root: Entity, attributes: dict[str, frozenset[str]]) -> None:
+def _check(
+    it: Interpretation[Context], root: Entity, attributes: dict[str, frozenset[str]]
+) -> None:
     for entity in root.children:
         allowed = attributes.get(entity.tag)
         if allowed is None:
@@ -100,7 +103,7 @@ def _check(it: Interpretation, root: Entity, attributes: dict[str, frozenset[str
             _nested(it, entity)
 
 
-def _nested(it: Interpretation, entity: Entity) -> None:
+def _nested(it: Interpretation[Context], entity: Entity) -> None:
     """Children of a leaf action (``<param>`` in a node, ``<arg>`` in an include...)."""
     for child in entity.children:
         allowed = ATTRIBUTES.get(child.tag, frozenset())

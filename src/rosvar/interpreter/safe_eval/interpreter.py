@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import functools
 import itertools
 import operator
 from collections import ChainMap
@@ -42,7 +43,6 @@ from rosvar.interpreter.safe_eval.names import (
     _UNARY_OPS,
     EvalEnvironment,
 )
-from rosvar.ros1.typed_values import convert_scalar
 
 _T = TypeVar("_T")
 
@@ -58,13 +58,24 @@ def _lookup_or_none(lookup: Callable[[str], str], name: str) -> str | None:
         return None
 
 
+@functools.lru_cache(maxsize=65536)
 def convert_auto(value: str) -> bool | int | float | str:
     """roslaunch's ``convert_value(value, 'auto')``: how eval sees an arg's raw string.
 
     Replicated statement by statement because the quirks matter: ``'1_0'`` stays a string,
     ``'1_0.5'`` becomes ``10.5``, ``' 7 '`` becomes ``7``, ``'TRUE'`` becomes ``True``.
+    (Cached: the same texts recur in every includer, and the results are immutable.)
     """
-    return cast(bool | int | float | str, convert_scalar(value, "auto"))
+    try:
+        if "." in value:
+            return float(value)
+        if "_" not in value:
+            return int(value)
+    except ValueError:
+        pass
+    if value.lower() in ("true", "false"):
+        return value.lower() == "true"
+    return value
 
 
 class _Function(FunctionValue):
