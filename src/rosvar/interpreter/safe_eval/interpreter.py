@@ -10,6 +10,7 @@ from collections import ChainMap
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import Any, NoReturn, TypeVar, cast
 
+from rosvar.arithmetic import BINARY, COMPARISONS
 from rosvar.interpreter.safe_eval.checking import _Source
 from rosvar.interpreter.safe_eval.errors import _UNPLACED, EvalFailed, EvalRefused
 from rosvar.interpreter.safe_eval.limits import (
@@ -25,11 +26,9 @@ from rosvar.interpreter.safe_eval.limits import (
     _Sizer,
 )
 from rosvar.interpreter.safe_eval.names import (
-    _BIN_OPS,
     _BOOL_NAMES,
     _BUILTIN_FUNCTIONS,
     _CHEAP_FUNCTIONS,
-    _COMPARE_OPS,
     _CONSUMING_FUNCTIONS,
     _CONTAINERS,
     _END,
@@ -396,7 +395,7 @@ class _Interpreter:
             refusal = _binop_refusal(node.op, left, right, self._sizer)
             if refusal is not None:
                 raise EvalRefused(refusal, self._col(node))
-            return self._guarded(node, _BIN_OPS[type(node.op)], left, right)
+            return self._guarded(node, BINARY[type(node.op)], left, right)
         if isinstance(node, ast.Compare):
             return self._compare(node, scope)
         if isinstance(node, ast.IfExp):
@@ -453,7 +452,7 @@ class _Interpreter:
                     operand = self._charged_iteration(left, right)
             else:
                 self._guarded(node, self._charge_size, self._comparison_cost(op, left, right))
-            result = self._guarded(node, _COMPARE_OPS[type(op)], left, operand)
+            result = self._guarded(node, COMPARISONS[type(op)], left, operand)
             if not result:
                 return result
             left = right
