@@ -175,9 +175,9 @@ CORE_TO_DIALECT_PENDING = {
     "rosvar.configuration.graph -> rosvar.ros2.conventions.namespaces",
     "rosvar.configuration.graph -> rosvar.ros2.conventions.parameters",
     "rosvar.configuration.graph -> rosvar.ros2.resolve",
-    "rosvar.outputs.cli -> rosvar.ros1.resolve",
-    "rosvar.outputs.cli -> rosvar.ros2.conventions.namespaces",
-    "rosvar.outputs.cli -> rosvar.ros2.resolve",
+    "rosvar.outputs.commands.resolve -> rosvar.ros1.resolve",
+    "rosvar.outputs.commands.resolve -> rosvar.ros2.conventions.namespaces",
+    "rosvar.outputs.commands.resolve -> rosvar.ros2.resolve",
     "rosvar.ros2.resolve -> rosvar.ros1.resolve",
 }
 """Imports other steps of issue 27 remove, listed so that nothing can join them: the tests
