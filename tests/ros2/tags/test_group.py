@@ -64,3 +64,25 @@ def test_namespaces_compose_relative_absolute_and_computed(tmp_path: Path) -> No
     )
     it.matches_oracle({})
     it.matches_oracle({"ns": "/other"})
+
+
+@pytest.mark.oracle
+def test_both_python_names_of_push_ros_namespace_agree_with_ros2_launch(tmp_path: Path) -> None:
+    it = launch(
+        tmp_path,
+        """from launch import LaunchDescription
+from launch.actions import GroupAction
+from launch_ros.actions import Node, PushROSNamespace, PushRosNamespace
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        GroupAction([PushROSNamespace('one'), Node(package='pkg', executable='a', name='a')]),
+        GroupAction([PushRosNamespace('two'), Node(package='pkg', executable='b', name='b')]),
+    ])
+""",
+        suffix=".launch.py",
+    )
+    assert it.model.diagnostics == []
+    nodes = it.matches_oracle({})["nodes"]
+    assert sorted(node["namespace"] for node in nodes) == ["/one", "/two"]
