@@ -31,7 +31,6 @@ from rosvar.analyses.when import params_read
 from rosvar.diagnostics import Location, Severity
 from rosvar.files import Confinement
 from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, YamlDecl
-from rosvar.interpreter.tags.rosparam import load_rosparam
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
@@ -404,9 +403,7 @@ def _yaml_names(param: YamlDecl, confinement: Confinement) -> list[str]:
     if len(known) == len(parts):
         scope_ns, command, ns, file, name, text = known
         try:
-            pairs = load_rosparam(
-                str(command), ns, file, name, str(text), str(scope_ns), confinement
-            )
+            pairs = param.load(str(command), ns, file, name, str(text), str(scope_ns), confinement)
         except ValueError:
             return []
         return [names.canonicalize_name(key) for key, _ in pairs]

@@ -24,8 +24,6 @@ from rosvar.interpreter.model import (
     anon_pattern,
 )
 from rosvar.interpreter.substitution import PackageTable
-from rosvar.interpreter.tags.param import param_value
-from rosvar.interpreter.tags.rosparam import load_rosparam
 from rosvar.interpreter.validation import node_values
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.choice import Choice
@@ -241,7 +239,7 @@ def _restrict(
             if isinstance(value, DeferredValue):
                 concrete = r.evaluate(value.raw, param.location, f"param {name}")
                 try:
-                    value = param_value(value.kind, concrete, value.ptype, r.confinement)
+                    value = value.convert(value.kind, concrete, value.ptype, r.confinement)
                 except ValueError as error:
                     raise ResolutionError("param-invalid", str(error), param.location) from None
             result.params[str(name)] = json_value(value)
@@ -253,9 +251,7 @@ def _restrict(
             body = r.evaluate(param.text, param.location, "<rosparam> body")
             scope_ns, command, ns, file, name = parts
             try:
-                pairs = load_rosparam(
-                    str(command), ns, file, name, body, str(scope_ns), r.confinement
-                )
+                pairs = param.load(str(command), ns, file, name, body, str(scope_ns), r.confinement)
             except ValueError as error:
                 raise ResolutionError(
                     "rosparam-invalid", f"error loading <rosparam> tag: {error}", param.location

@@ -46,8 +46,6 @@ from rosvar.interpreter.model import (
     Raw,
     YamlDecl,
 )
-from rosvar.interpreter.tags.param import param_value
-from rosvar.interpreter.tags.rosparam import load_rosparam
 from rosvar.interpreter.validation import node_values
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
@@ -684,7 +682,7 @@ def _param_renderer(
             concrete = values.text(value.raw) or ""
             try:
                 shown = json_value(
-                    param_value(ParamSource.VALUE, concrete, value.ptype, confinement)
+                    value.convert(ParamSource.VALUE, concrete, value.ptype, confinement)
                 )
             except (ValueError, OSError):
                 shown = concrete
@@ -706,9 +704,7 @@ def _yaml_renderer(param: YamlDecl, confinement: Confinement) -> Render:
         if not values.knows(raws):
             return symbolic
         try:
-            pairs = load_rosparam(
-                str(command), ns, file, name, body or "", str(scope_ns), confinement
-            )
+            pairs = param.load(str(command), ns, file, name, body or "", str(scope_ns), confinement)
         except (ValueError, OSError):
             return symbolic
         return [{"name": key, "value": json_value(v), **_where(param.location)} for key, v in pairs]
