@@ -333,6 +333,7 @@ def measure_web(job: Job) -> Metrics:
     from rosvar.configuration.engine import Configurator
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.outputs.web.delta import patch
+    from rosvar.outputs.web.entries import render
     from rosvar.outputs.web.server import make_server
     from rosvar.workspace import discover
 
@@ -345,7 +346,9 @@ def measure_web(job: Job) -> Metrics:
     server = None
     try:
         analysis = Analysis(discover(job.roots, ros_package_path=job.package_path))
-        server = make_server(Configurator(analysis, extract(analysis, products=True)), port=0)
+        server = make_server(
+            Configurator(analysis, extract(analysis, products=True), render=render), port=0
+        )
         threading.Thread(target=server.serve_forever, daemon=True).start()
         connection = http.client.HTTPConnection("127.0.0.1", server.server_address[1])
 
@@ -413,6 +416,7 @@ def measure_configure(job: Job) -> Metrics:
     from rosvar.configuration.choices import UserChoice
     from rosvar.configuration.engine import Configurator
     from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.outputs.web.entries import render
     from rosvar.workspace import discover
 
     if len(job.files) > CONFIGURE_MAX_FILES or not job.feature_model_built:
@@ -424,7 +428,7 @@ def measure_configure(job: Job) -> Metrics:
     try:
         analysis = Analysis(discover(job.roots, ros_package_path=job.package_path))
         started = time.perf_counter()
-        engine = Configurator(analysis, extract(analysis, products=True))
+        engine = Configurator(analysis, extract(analysis, products=True), render=render)
         built_ms = (time.perf_counter() - started) * 1000
         rng = random.Random(CONFIGURE_SEED)
         for _sequence in range(CONFIGURE_SEQUENCES):

@@ -21,7 +21,7 @@ from rosvar.configuration.choices import Action, ChoiceError, Refusal, UserChoic
 from rosvar.configuration.command import Launch, command_line, group
 from rosvar.configuration.conflicts import Conflicts, ConflictState
 from rosvar.configuration.derivation import Decisions, Derivation, Presence
-from rosvar.configuration.graph import VariationalGraph
+from rosvar.configuration.graph import Render, VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.view import Graph, Summary, Views
@@ -169,13 +169,16 @@ class Configurator:
         spelling: Mapping[str, str] | None = None,
         progress: Progress | None = None,
         interfaces: Interfaces | None = None,
+        *,
+        render: Render,
     ) -> None:
         """``model`` from ``extract(analysis, products=True)``; ``progress``: told how far
         the build is (a large workspace takes a while); ``interfaces`` wire the nodes to
-        their topics."""
+        their topics; ``render``: the graph's entries as the presentation shows them
+        (``rosvar.outputs.web.entries.render``)."""
         if not model.products:
             raise ValueError("the configurator needs extract(..., products=True)")
-        self._build(analysis, model, env, spelling, progress or _silent, interfaces)
+        self._build(analysis, model, env, spelling, progress or _silent, interfaces, render)
 
     @collector_paused()  # a long-lived heap: left young, the collector rescanned it each step
     def _build(
@@ -186,6 +189,7 @@ class Configurator:
         spelling: Mapping[str, str] | None,
         progress: Progress,
         interfaces: Interfaces | None,
+        render: Render,
     ) -> None:
         self.analysis = analysis
         self.model = model
@@ -220,6 +224,7 @@ class Configurator:
             self.derivation,
             self.conflicts,
             cached,
+            render,
         )
         self._others = [
             (arg_id, feature.variable)

@@ -21,6 +21,7 @@ import pytest
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.web.entries import render
 from rosvar.outputs.web.server import WebServer, make_server
 from rosvar.workspace import discover
 
@@ -95,7 +96,7 @@ class Live:
 
 def configurator(paths: list[Path], package_path: str = "") -> Configurator:
     analysis = Analysis(discover([str(p) for p in paths], ros_package_path=package_path))
-    return Configurator(analysis, extract(analysis, products=True))
+    return Configurator(analysis, extract(analysis, products=True), render=render)
 
 
 @contextmanager
