@@ -409,13 +409,14 @@ def measure_configure(job: Job) -> Metrics:
     A step is what a session does for one click: ``Configurator.state(choices + [one])``,
     the answer for the shorter list being cached. Each seeded sequence selects or deselects
     a random unselected feature (not an ``<other>`` value) until the product is complete.
-    ``to_json()`` of each state is timed apart (what the web server then serialises).
+    ``state_document`` of each state is timed apart (what the web server then serialises).
     """
 
     from rosvar.analyses.feature_model.extraction import extract
     from rosvar.configuration.choices import UserChoice
     from rosvar.configuration.engine import Configurator
     from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.outputs.documents.state import feature_document, state_document
     from rosvar.outputs.web.entries import render
     from rosvar.workspace import discover
 
@@ -438,9 +439,11 @@ def measure_configure(job: Job) -> Metrics:
                 state = engine.state(choices)
                 steps.append((time.perf_counter() - wall) * 1000)
                 wall = time.perf_counter()
-                state.to_json()
+                state_document(state)
                 documents.append((time.perf_counter() - wall) * 1000)
-                click = random_click(rng, {k: f.to_json() for k, f in state.features.items()})
+                click = random_click(
+                    rng, {k: feature_document(f) for k, f in state.features.items()}
+                )
                 if click is None:
                     break
                 choices.append(UserChoice.parse(*click))

@@ -19,6 +19,7 @@ from configuration.helpers import (
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.documents.state import state_document
 from rosvar.outputs.web.entries import render
 from rosvar.workspace import discover
 
@@ -114,7 +115,7 @@ def test_services_and_actions_have_servers_and_clients_edge_by_edge(ws: LaunchWo
         ("present", [], [ids["/ns/server"]])
     ]
     schema = json.loads((REPO / "docs" / "schema" / "configure.schema.json").read_text())
-    pytest.importorskip("jsonschema").validate(state.to_json(), schema)
+    pytest.importorskip("jsonschema").validate(state_document(state), schema)
 
 
 def test_conditional_remaps_on_independent_args_are_parts_not_variants(
@@ -131,7 +132,7 @@ def test_conditional_remaps_on_independent_args_are_parts_not_variants(
     engine = configurator(ws)
     state = run(engine, "select a.launch")
     schema = json.loads((REPO / "docs" / "schema" / "configure.schema.json").read_text())
-    pytest.importorskip("jsonschema").validate(state.to_json(), schema)
+    pytest.importorskip("jsonschema").validate(state_document(state), schema)
     [node] = state.graph.nodes
     assert node["remaps"] == [] and node["env"] == []
     assert {(u["kind"], u["condition"]) for u in node["undetermined"]} == {

@@ -39,7 +39,6 @@ many as make this many feature states and entries in all, at least ``MIN_CACHED_
 fixed count of steps would hold memory in proportion to the workspace's size, without bound
 on large ones."""
 MIN_CACHED_STEPS = 64
-EXACT_INTEGER = 2**53  # larger counts go to JSON as strings
 
 
 class Selection(StrEnum):
@@ -50,10 +49,11 @@ class Selection(StrEnum):
     UNSELECTED = "unselected"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class FeatureState:
     """One feature's state; the engine hands out one object per feature and state, so
-    states share them and an unchanged feature is the same object (and JSON dict)."""
+    states share them and an unchanged feature is the same object (compared, and its
+    document kept, by identity)."""
 
     kind: FeatureKind
     file: str
@@ -64,25 +64,6 @@ class FeatureState:
     parent: str | None
     state: Selection
     derived: bool
-
-    def to_json(self) -> dict[str, object]:
-        return self._document
-
-    @cached_property
-    def _document(self) -> dict[str, object]:
-        document: dict[str, object] = {
-            "kind": self.kind,
-            "file": self.file,
-            "package": self.package,
-            "arg": self.arg,
-            "value": self.value,
-            "parent": self.parent,
-            "state": self.state,
-            "derived": self.derived,
-        }
-        if self.doc:  # on the few args that have one
-            document["doc"] = self.doc
-        return document
 
 
 _Row = tuple[str, str, dict[tuple[bool | None, bool], FeatureState]]
@@ -118,22 +99,6 @@ class ConfigurationState:
     def configurations(self) -> int:
         """Valid configurations remaining (counted on first use)."""
         return self.counter()
-
-    def to_json(self) -> dict[str, object]:
-        count = self.configurations
-        return {
-            "features": {k: v.to_json() for k, v in self.features.items()},
-            "conflicts": [c.to_json() for c in self.conflicts],
-            "graph": self.graph.to_json(),
-            "complete": self.complete,
-            "command": self.command,
-            "refused": [r.to_json() for r in self.refused],
-            "choices": [c.to_json() for c in self.choices],
-            "configurations": count if count <= EXACT_INTEGER else str(count),
-            "unselected": self.unselected,
-            "launched": [launch.spelled for group in self.commands for launch in group],
-            "untyped": self.untyped,
-        }
 
 
 @dataclass(frozen=True)

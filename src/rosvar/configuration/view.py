@@ -70,17 +70,6 @@ class Graph:
     actions: list[Fields] = field(default_factory=list)
     errors: list[Fields] = field(default_factory=list)
 
-    def to_json(self) -> dict[str, object]:
-        return {
-            "nodes": self.nodes,
-            "tests": self.tests,
-            "params": self.params,
-            "topics": self.topics,
-            "services": self.services,
-            "actions": self.actions,
-            "errors": self.errors,
-        }
-
 
 @dataclass(frozen=True)
 class Rendering:

@@ -15,6 +15,7 @@ from outputs.web.live import REPO, Live, running
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.documents.state import state_document
 from rosvar.outputs.web.delta import patch
 from rosvar.outputs.web.entries import render
 from rosvar.outputs.web.overview import (
@@ -61,8 +62,8 @@ def test_ros2_package_groups_are_named_as_the_tree_names_packages() -> None:
     holds ``ros2_control_demo_example_2``) and its launch files in ``bringup/launch``: the
     boxes are the packages the tree shows, not one ``bringup`` of every example."""
     analysis = Analysis(discover([str(ROS2_DATA / "ros2_control_demos")]))
-    document = (
-        Configurator(analysis, extract(analysis, products=True), render=render).state([]).to_json()
+    document = state_document(
+        Configurator(analysis, extract(analysis, products=True), render=render).state([])
     )
     tops = {g["label"] for g in summaries(document, Grouping.PACKAGE) if g["parent"] == ""}
     tree = {f["package"] for f in document["features"].values() if f["kind"] == "file"}

@@ -24,6 +24,7 @@ def cmd_configure(options: argparse.Namespace) -> int:
     from rosvar.analyses.feature_model.extraction import extract
     from rosvar.configuration.choices import ChoiceError, UserChoice
     from rosvar.configuration.engine import Configurator
+    from rosvar.outputs.documents.state import state_document
     from rosvar.outputs.web.entries import render
 
     loaded = analysis_with_env(options)
@@ -49,7 +50,7 @@ def cmd_configure(options: argparse.Namespace) -> int:
         print(f"rosvar: {error}", file=sys.stderr)
         return EXIT_USAGE
     if options.json:
-        print_json(state.to_json())
+        print_json(state_document(state))
     else:
         _print_state(state, analysis.workspace.ros_version)
     return EXIT_FAILS if state.refused else EXIT_OK
