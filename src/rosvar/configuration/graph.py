@@ -45,7 +45,7 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
-from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace
+from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
 Fields = dict[str, object]

@@ -11,8 +11,6 @@ from typing import TypeVar, cast
 
 from rosvar.analyses.communication import JSON_SIDES, SIDES
 from rosvar.analyses.json_values import json_value
-from rosvar.analyses.resolve import ResolutionError, test_fields
-from rosvar.analyses.ros2.resolve import parameter_file
 from rosvar.configuration.derivation import Presence
 from rosvar.configuration.graph import (
     ChannelContent,
@@ -32,11 +30,13 @@ from rosvar.configuration.graph import (
 )
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import DeferredValue, ParamSource, Raw
-from rosvar.interpreter.validation import node_values
 from rosvar.logic.terms import is_term
 from rosvar.ros import names
-from rosvar.ros.ros2_namespaces import full_name, make_absolute, prefix_namespace, unnamed
-from rosvar.ros.ros2_parameters import ALL_NODES, Source, effective, typed
+from rosvar.ros1.resolve import ResolutionError, test_fields
+from rosvar.ros1.validation import node_values
+from rosvar.ros2.conventions.namespaces import full_name, make_absolute, prefix_namespace, unnamed
+from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, typed
+from rosvar.ros2.resolve import parameter_file
 from rosvar.workspace.interfaces.model import Role
 
 C = TypeVar("C", bound=Content)
