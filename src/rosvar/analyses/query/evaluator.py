@@ -174,21 +174,13 @@ class QueryEngine:
         found = self._groups[key] = list(by_values.values())
         return found
 
-    def to_json(self, result: Result) -> dict[str, object]:
-        """``result`` as ``--json`` shows it (docs/schema/query.schema.json)."""
-        element, condition = result.element, result.condition
+    def example(self, condition: BDD) -> Mapping[str, str]:
+        """The simplest configuration in which ``condition`` holds (remembered: a query's
+        results share a few conditions)."""
         example = self._examples.get(condition)
         if example is None:
             example = self._examples[condition] = simplest_trigger(self.space, condition)
-        location = element.location
-        return {
-            "kind": str(element.kind),
-            "name": element.name,
-            "launch_file": element.file,
-            "condition": self.space.describe(condition),
-            "example": dict(example),
-            **({"file": location.file, "line": location.line} if location is not None else {}),
-        }
+        return example
 
     def satisfiable(self, condition: BDD) -> bool:
         known = self._satisfiable.get(condition)

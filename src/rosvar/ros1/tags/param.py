@@ -51,7 +51,7 @@ def _value_choice(
     def convert(leaf: Raw) -> object:
         if not isinstance(leaf, str):
             return (
-                DeferredValue(leaf, ptype, kind)
+                DeferredValue(leaf, ptype, kind, param_value)
                 if kind in (ParamSource.VALUE, ParamSource.COMMAND)
                 else Fail(
                     f"{kind} path {leaf} is only known per configuration", "param-unknown-file"

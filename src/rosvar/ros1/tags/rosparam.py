@@ -223,7 +223,9 @@ def _emit(
     parts = (scope_ns, command, ns, file, param, body)
     if not all(isinstance(part, str) or part is None for part in parts):
         it.model.params.append(
-            YamlDecl(it.pc, entity.location, scope_ns, command, ns, file, param, body)
+            YamlDecl(
+                it.pc, entity.location, scope_ns, command, ns, file, param, body, load_rosparam
+            )
         )
         return
     try:
