@@ -1,5 +1,6 @@
-"""``<node>``, ``<executable>``, ``<node_container>`` and ``<load_composable_node>``: what each
-starts, named, remapped and parameterised as launch_ros does."""
+"""The processes ``ros2/tags/node.py`` starts (``<node>``, ``<executable>``, ``<node_container>``,
+``<load_composable_node>``): named, remapped and parameterised as launch_ros does (a node's
+typed fields are ``test_node.py``'s)."""
 
 from __future__ import annotations
 
