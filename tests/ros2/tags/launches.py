@@ -12,6 +12,7 @@ from typing import Any
 
 import pytest
 
+from differential.ros2.test_fixtures import PACKAGE_XML
 from oracle.ros2_client import ORACLE, canonical_nodes, run_oracle
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
@@ -20,14 +21,6 @@ from rosvar.logic.inputs import Slot
 from rosvar.ros.version import RosVersion
 from rosvar.ros2.resolve import resolve_ros2, resolve_variational
 from rosvar.workspace import discover
-
-PACKAGE_XML = """<?xml version="1.0"?>
-<package format="3">
-  <name>pkg</name><version>0.0.0</version><description>d</description>
-  <maintainer email="a@b.c">m</maintainer><license>BSD</license>
-  <export><build_type>ament_cmake</build_type></export>
-</package>
-"""
 
 
 @dataclass
