@@ -5,9 +5,9 @@ from __future__ import annotations
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import ClearParamDecl, Raw
+from rosvar.logic.atoms import PREDICATES, register_predicate
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
-from rosvar.logic.conditions import PREDICATES, register_predicate
 from rosvar.logic.terms import Apply, Hole
 from rosvar.ros1.scope import Scope
 from rosvar.ros1.typed_values import bool_attribute
