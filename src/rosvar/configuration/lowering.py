@@ -21,9 +21,8 @@ from rosvar.logic.atoms import Atom, PredicateAtom, SlotAtom
 from rosvar.logic.bdd import BDD, transfer
 from rosvar.logic.conditions import decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
-from rosvar.logic.terms import term_inputs
+from rosvar.logic.terms import PackageTable, term_inputs
 from rosvar.memo import Memo
-from rosvar.ros1.substitutions import PackageTable
 
 _NONE: frozenset[str] = frozenset()
 COPIES = 100_000

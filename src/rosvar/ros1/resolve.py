@@ -26,9 +26,8 @@ from rosvar.interpreter.model import (
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import ArgInput, EnvInput, Input
-from rosvar.logic.terms import Apply, Hole, TermError, evaluate
+from rosvar.logic.terms import Apply, Hole, PackageTable, TermError, evaluate
 from rosvar.ros import names
-from rosvar.ros1.substitutions import PackageTable
 from rosvar.ros1.validation import node_values
 
 

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, cast
 from rosvar.outputs.commands.exit_codes import EXIT_FAILS, EXIT_OK, EXIT_USAGE
 from rosvar.outputs.commands.loading import analysis_with_env, interfaces_of
 from rosvar.outputs.commands.terminal import building, print_json, progress
-from rosvar.workspace.ros_version import RosVersion
+from rosvar.ros.version import RosVersion
 
 if TYPE_CHECKING:
     from rosvar.configuration.engine import ConfigurationState
