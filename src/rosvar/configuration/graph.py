@@ -26,7 +26,8 @@ from rosvar.analyses.communication import (
     find_interface,
     node_fields,
 )
-from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
+from rosvar.analyses.feature_model.features import ConstraintKind
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.param_values import ParamValues
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
