@@ -26,7 +26,6 @@ from rosvar.analyses.communication import (
     entry_names,
     entry_when,
     find_interface,
-    node_fields,
 )
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
@@ -55,7 +54,7 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
-from rosvar.ros.ros2_namespaces import full_name, make_absolute, prefix_namespace, unnamed
+from rosvar.ros.ros2_namespaces import unnamed
 from rosvar.ros.ros2_parameters import ALL_NODES, Source, effective, typed
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
@@ -352,7 +351,7 @@ class VariationalGraph:
                 parts=tuple(parts),
             )
             if element is not None and not node.is_test:
-                self._topic_uses(element, raw, remaps)
+                self._topic_uses(element, raw, remaps, node)
                 if self.interfaces is not None:
                     self._interface_uses(element, raw, node, condition)
 
@@ -422,15 +421,14 @@ class VariationalGraph:
         return kept
 
     def _topic_uses(
-        self, element: Element, raw: Mapping[str, Raw | None], remaps: list[_Setting]
+        self,
+        element: Element,
+        raw: Mapping[str, Raw | None],
+        remaps: list[_Setting],
+        node: NodeDecl,
     ) -> None:
         symbolic = Values({}, None)
-        namespace, pushed = raw.get("namespace"), raw.get("ros_namespace")
-        if "ros_namespace" in raw and all(
-            v is None or isinstance(v, str) for v in (namespace, pushed)
-        ):
-            # ROS 2: the pushed namespace and the node's, combined and absolute
-            namespace = make_absolute(prefix_namespace(pushed, namespace)) or names.SEP  # type: ignore[arg-type]
+        namespace = node.schema.namespace.of(raw)
         for _source, target, part in remaps:
             used = element.condition if part is None else element.parts[part].condition
             raws = (namespace, raw.get("name"), target)
@@ -449,10 +447,10 @@ class VariationalGraph:
         interface, each use an edge of its topic, service or action (judged as a part of
         it); names known statically only."""
         assert self.interfaces is not None
-        fields = {key: raw.get(key) for key in node_fields(node)}
+        fields = {key: raw.get(key) for key in node.schema.launched}
         if not all(text is None or isinstance(text, str) for text in fields.values()):
             return
-        launched = LaunchedNode.of(fields)
+        launched = LaunchedNode.of(node.schema, fields)
         unit = launched.unit()
         interface = None if unit is None else find_interface(self.interfaces, unit)
         if interface is None:
@@ -573,16 +571,16 @@ def _parameter_settings(node: NodeDecl) -> list[tuple[BDD, Raw, Raw]]:
 
 
 def _ros2_fields(
-    text: Mapping[str, str | None], parameters: Sequence[tuple[str | None, str | None]]
+    node: NodeDecl,
+    text: Mapping[str, str | None],
+    parameters: Sequence[tuple[str | None, str | None]],
 ) -> Fields:
     """A ROS 2 node's name, namespace and parameters as ``ros2 launch`` composes them: the
     pushed namespace, the node's own, its parameters merged in order (``resolve_ros2``'s).
     A node with no name takes one from its executable at run time: it is drawn as
     ``⟨EXEC⟩`` in its namespace, its ``fqn`` null."""
-    pushed, own = text.get("ros_namespace"), text.get("namespace")
-    namespace = make_absolute(prefix_namespace(pushed, own)) or "/"
-    name = text.get("name")
-    fqn = None if name is None else full_name(pushed, own, name)
+    namespace = node.schema.namespace.text(text) or "/"
+    fqn = node.schema.full_name.text(text)
     sources: list[Source] = []
     for first, second in parameters:
         try:
@@ -593,7 +591,7 @@ def _ros2_fields(
         except ValueError:
             continue  # not a value yet (an arg still open) or not readable: not shown
     return {
-        "name": fqn or unnamed(namespace, text.get("exec")),
+        "name": fqn or unnamed(namespace, node.schema.executable.text(text)),
         "fqn": fqn,
         "namespace": namespace,
         "parameters": effective(fqn, sources),
@@ -626,24 +624,25 @@ def _node_renderer(
             pair = _present(PartKind.ENV, setting, values, parts, undetermined)
             if pair is not None:
                 settings.append(list(pair))
-        namespace = text.get("namespace") or "/"
+        schema = node.schema
+        namespace = schema.namespace.text(text) or "/"
         extra: Fields = {}
         if node.is_test:
             try:
                 extra = test_fields(text, node.location)
             except ResolutionError:
                 extra = {}
-        if "ros_namespace" in raw:  # a ROS 2 node
+        if node.ros2:
             present = [
                 _present(PartKind.PARAMETER, p, values, parts, undetermined) for p in parameters
             ]
-            extra = _ros2_fields(text, [p for p in present if p is not None])
+            extra = _ros2_fields(node, text, [p for p in present if p is not None])
         return [
             {
-                "name": names.ns_join(namespace, text.get("name") or ""),
+                "name": schema.full_name.text(text),
                 "namespace": namespace,
-                "package": text.get("pkg"),
-                "type": text.get("type"),
+                "package": schema.package.text(text),
+                "type": schema.executable.text(text),
                 **typed,
                 "remaps": sorted([list(p) for p in mapping.items()]),
                 "env": sorted(settings),

@@ -26,7 +26,6 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import ros2_arguments
-from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace
 from rosvar.ros.ros2_parameters import ALL_NODES, Source, effective, file_entries, typed
 from rosvar.workspace import Workspace
 
@@ -145,7 +144,8 @@ def _node(decl: NodeDecl, view: View, warnings: list[dict[str, object]]) -> dict
     if given.namespace is not None:
         namespace: str | None = given.namespace
     else:
-        namespace = make_absolute(prefix_namespace(text("ros_namespace"), text("namespace")))
+        texts = {key: text(key) for key in decl.schema.namespace.keys}
+        namespace = decl.schema.namespace.text(texts)
     fqn = None
     if name is not None:
         fqn = (namespace or "").rstrip("/") + "/" + name

@@ -2,9 +2,21 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, tag
-from rosvar.interpreter.model import EnvSetting, NodeDecl, ParamDecl, Raw, Remap
+from rosvar.interpreter.lifted import apply
+from rosvar.interpreter.model import (
+    EnvSetting,
+    NodeDecl,
+    NodeField,
+    NodeSchema,
+    ParamDecl,
+    Raw,
+    Remap,
+    constant_field,
+)
 from rosvar.interpreter.scope import Scope
 from rosvar.interpreter.tags.common import namespace_scope
 from rosvar.interpreter.tags.env import handle_env
@@ -12,8 +24,9 @@ from rosvar.interpreter.tags.param import handle_param
 from rosvar.interpreter.tags.remap import add_remaps
 from rosvar.interpreter.tags.rosparam import handle_rosparam
 from rosvar.interpreter.validation import node_problem
-from rosvar.logic.choice import Choice, combine
+from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.ros.names import is_legal_name
+from rosvar.workspace.ros_version import RosVersion
 
 NODE_ATTRIBUTES = (
     "pkg",
@@ -31,6 +44,29 @@ NODE_ATTRIBUTES = (
     "required",
 )
 TEST_ATTRIBUTES = (*NODE_ATTRIBUTES, "test-name", "time-limit", "retry")
+
+
+def _full_name(values: Sequence[Raw | None]) -> Raw | None:
+    """roslaunch's ``ns_join`` of the node's namespace and name."""
+    namespace, name = values
+    if namespace is None or name is None:
+        return None
+    joined = apply("ns_join", (namespace, name))
+    return None if isinstance(joined, Fail) else joined
+
+
+ROS1_NODES = NodeSchema(
+    RosVersion.ROS1,
+    package=NodeField(("pkg",)),
+    executable=NodeField(("type",)),
+    name=NodeField(("name",)),
+    namespace=NodeField(("namespace",)),  # the ``ns`` attribute under its scope's, global
+    full_name=NodeField(("namespace", "name"), _full_name),
+    args=NodeField(("args",)),
+    plugin=constant_field(None),
+    launched=("pkg", "type", "namespace", "name", "args"),
+)
+"""A ``<node>``'s typed fields."""
 OPTIONAL = (
     "machine",
     "args",
@@ -153,6 +189,7 @@ def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> No
             fields=fields,
             remaps=remaps,
             env=[EnvSetting(e.condition, e.name, e.value) for e in env],
+            schema=ROS1_NODES,
             args=child.args,
         )
     )
