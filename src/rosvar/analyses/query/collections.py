@@ -24,7 +24,7 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
-from rosvar.ros.ros2_namespaces import unnamed
+from rosvar.ros2.conventions.namespaces import unnamed
 
 
 class Kind(StrEnum):
