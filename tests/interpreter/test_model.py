@@ -12,7 +12,7 @@ from rosvar.interpreter.model import NodeField, NodeSchema, Raw, constant_field
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import ArgInput, Input, Slot
-from rosvar.workspace.ros_version import RosVersion
+from rosvar.ros.version import RosVersion
 
 F = "/ws/pkg/launch/main.launch"
 NS = ArgInput(F, "ns")

@@ -32,9 +32,9 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
+from rosvar.ros.version import RosVersion
 from rosvar.ros2.conventions.namespaces import make_absolute
 from rosvar.workspace.interfaces.model import Default, Entry, Interfaces, NodeInterface, Role
-from rosvar.workspace.ros_version import RosVersion
 
 _R = TypeVar("_R")
 

@@ -25,7 +25,7 @@ from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros1.resolve import ResolutionError, Restriction
 from rosvar.ros2.conventions import command_line
 from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, file_entries, typed
-from rosvar.ros2.entry import interpret
+from rosvar.ros2.launch import interpret
 from rosvar.ros2.tags.node import ProcessKind
 from rosvar.workspace import Workspace
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, processed, tag
+from rosvar.interpreter.interpretation import Interpretation, processed
 from rosvar.interpreter.lifted import apply
 from rosvar.interpreter.model import (
     EnvSetting,
@@ -19,6 +19,8 @@ from rosvar.interpreter.model import (
 )
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.ros.names import is_legal_name
+from rosvar.ros.version import RosVersion
+from rosvar.ros1.dialect import tag
 from rosvar.ros1.scope import Scope
 from rosvar.ros1.tags.common import namespace_scope
 from rosvar.ros1.tags.env import handle_env
@@ -26,7 +28,6 @@ from rosvar.ros1.tags.param import handle_param
 from rosvar.ros1.tags.remap import add_remaps
 from rosvar.ros1.tags.rosparam import handle_rosparam
 from rosvar.ros1.validation import node_problem
-from rosvar.workspace.ros_version import RosVersion
 
 NODE_ATTRIBUTES = (
     "pkg",
@@ -80,17 +81,17 @@ OPTIONAL = (
 
 
 @tag("node")
-def handle_node(it: Interpretation, entity: Entity, scope: Scope) -> None:
+def handle_node(it: Interpretation[Scope], entity: Entity, scope: Scope) -> None:
     _node(it, entity, scope, is_test=False)
 
 
 @tag("test")
-def handle_test(it: Interpretation, entity: Entity, scope: Scope) -> None:
+def handle_test(it: Interpretation[Scope], entity: Entity, scope: Scope) -> None:
     _node(it, entity, scope, is_test=True)
 
 
 @processed
-def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> None:
+def _node(it: Interpretation[Scope], entity: Entity, scope: Scope, is_test: bool) -> None:
     fields: dict[str, Choice[Raw | None]] = {}
     if is_test:
         it.check_attributes(entity, TEST_ATTRIBUTES)

@@ -25,10 +25,11 @@ from rosvar.interpreter.model import (
 )
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.terms import Apply, is_term, register
+from rosvar.ros.version import RosVersion
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.conventions.namespaces import full_name, make_absolute, prefix_namespace
 from rosvar.ros2.dialect import tag
-from rosvar.workspace.ros_version import RosVersion
+from rosvar.ros2.substitutions import Ros2Substituter
 
 FIELDS = (
     "pkg", "exec", "cmd", "plugin", "name", "namespace", "args", "ros_args", "launch-prefix",
@@ -109,7 +110,7 @@ ROS2_NODES = NodeSchema(
 @tag("executable")
 @tag("node_container")
 @processed
-def node(it: Interpretation, entity: Entity, context: Context) -> None:
+def node(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     it.required(entity, REQUIRED[entity.tag], context)
     fields = _declare(it, entity, context, KINDS[entity.tag], None)
     named = ROS2_NODES.full_name.over(fields)
@@ -119,14 +120,14 @@ def node(it: Interpretation, entity: Entity, context: Context) -> None:
 
 @tag("load_composable_node")
 @processed
-def load_composable_node(it: Interpretation, entity: Entity, context: Context) -> None:
+def load_composable_node(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     target = it.required(entity, "target", context)
     if target is not None:
         _composables(it, entity, context, optional(target))
 
 
 def _composables(
-    it: Interpretation, entity: Entity, context: Context, container: Choice[Raw | None]
+    it: Interpretation[Context], entity: Entity, context: Context, container: Choice[Raw | None]
 ) -> None:
     for child in entity.children:
         if child.tag == "composable_node":
@@ -141,7 +142,7 @@ def _container_name(name: Raw | None) -> Raw | Fail | None:
 
 
 def _declare(
-    it: Interpretation,
+    it: Interpretation[Context],
     entity: Entity,
     context: Context,
     kind: ProcessKind,
@@ -195,16 +196,16 @@ def _declare(
 
 
 def _command_line(
-    it: Interpretation, entity: Entity, key: str, context: Context
+    it: Interpretation[Context], entity: Entity, key: str, context: Context
 ) -> Choice[Raw] | None:
     text = entity.get(key)
     if text is None:
         return None
-    value = it.substituter.command_line(text, context)
+    value = Ros2Substituter(it).command_line(text, context)
     return it.strip(value, f"<{entity.tag}> attribute '{key}'")
 
 
-def _remap(it: Interpretation, entity: Entity, context: Context, out: list[Remap]) -> None:
+def _remap(it: Interpretation[Context], entity: Entity, context: Context, out: list[Remap]) -> None:
     source, target = it.required(entity, "from", context), it.required(entity, "to", context)
     if source is None or target is None:
         return
@@ -212,7 +213,9 @@ def _remap(it: Interpretation, entity: Entity, context: Context, out: list[Remap
         out.append(Remap(it.pc & condition, s, t))
 
 
-def _env(it: Interpretation, entity: Entity, context: Context, out: list[EnvSetting]) -> None:
+def _env(
+    it: Interpretation[Context], entity: Entity, context: Context, out: list[EnvSetting]
+) -> None:
     name, value = it.required(entity, "name", context), it.required(entity, "value", context)
     if name is None or value is None:
         return
@@ -221,7 +224,11 @@ def _env(it: Interpretation, entity: Entity, context: Context, out: list[EnvSett
 
 
 def _param(
-    it: Interpretation, entity: Entity, context: Context, prefix: str, out: list[NodeParameter]
+    it: Interpretation[Context],
+    entity: Entity,
+    context: Context,
+    prefix: str,
+    out: list[NodeParameter],
 ) -> None:
     source = it.attr(entity, "from", context)
     if source is not None:
