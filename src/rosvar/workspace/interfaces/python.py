@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.workspace.interfaces import python2
 from rosvar.workspace.interfaces.model import Default, Entry, Expression, Extracted, Role
-from rosvar.workspace.interfaces.reading import read_text
+from rosvar.workspace.interfaces.reading import SourceReader
 from rosvar.workspace.interfaces.values import Text, action_type
 
 _CALLS: dict[str, tuple[Role, str]] = {
@@ -48,6 +48,8 @@ _RCLPY_ACTIONS = {  # constructor → role; (node, type, name, ...)
 }
 _RCLPY_NODES = frozenset({"rclpy.node.Node", "rclpy.create_node"})
 """Calls that build an rclpy node: the first argument is its name."""
+MAX_DEPTH = 64
+"""Nested ``+`` and f-string parts of a name evaluated before it is given up as unknown."""
 _MODULE_ALIASES = {
     "actionlib.simple_action_server": "actionlib",
     "actionlib.simple_action_client": "actionlib",
@@ -121,18 +123,20 @@ class _Reader:
                 full = alias + full[len(module) :]
         return full
 
-    def text(self, node: ast.expr) -> Text:
+    def text(self, node: ast.expr, depth: int = 0) -> Text:
+        if depth > MAX_DEPTH:
+            return Text.unknown(_unparse(node))
         if isinstance(node, ast.Constant) and isinstance(node.value, str):
             return Text(node.value)
         if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
-            return self.text(node.left) + self.text(node.right)
+            return self.text(node.left, depth + 1) + self.text(node.right, depth + 1)
         if isinstance(node, ast.JoinedStr):
             result = Text("")
             for part in node.values:
                 if isinstance(part, ast.FormattedValue):
-                    result = result + self.text(part.value)
+                    result = result + self.text(part.value, depth + 1)
                 else:
-                    result = result + self.text(part)
+                    result = result + self.text(part, depth + 1)
             return result
         name = _binding_name(node)
         if name is not None and name not in self.active:
@@ -140,10 +144,10 @@ class _Reader:
             if len(values) == 1:
                 self.active.add(name)
                 try:
-                    return self.text(values[0])
+                    return self.text(values[0], depth + 1)
                 finally:
                     self.active.discard(name)
-        return Text.unknown(ast.unparse(node))
+        return Text.unknown(_unparse(node))
 
     def type_name(self, node: ast.expr | None, role: Role, ros2: bool = False) -> str | None:
         """The ROS type a class names (ROS 2's with its ``msg``/``srv``/``action`` part)."""
@@ -242,31 +246,39 @@ class _Reader:
         return Entry(role, name.value, location, type=type_name, static=name.static)
 
 
+def _unparse(node: ast.expr) -> str:
+    """``node`` as written (``ast.unparse`` recurses: a deeper one is elided)."""
+    try:
+        return ast.unparse(node)
+    except RecursionError:
+        return "…"
+
+
 def _default(node: ast.expr | None) -> Default | None:
     if node is None:
         return None
     try:
         value = ast.literal_eval(node)
-    except (ValueError, SyntaxError, TypeError):
-        return Expression(ast.unparse(node))
+    except (ValueError, SyntaxError, TypeError, RecursionError):
+        return Expression(_unparse(node))
     if isinstance(value, bool | int | float | str):
         return value
-    return Expression(ast.unparse(node))
+    return Expression(_unparse(node))
 
 
-def extract(path: str, sink: DiagnosticSink) -> list[Entry]:
+def extract(path: str, sink: DiagnosticSink, files: SourceReader | None = None) -> list[Entry]:
     """The interface of the Python script at ``path`` (empty when it cannot be parsed)."""
-    return extract_node(path, sink).entries
+    return extract_node(path, sink, files).entries
 
 
-def extract_node(path: str, sink: DiagnosticSink) -> Extracted:
+def extract_node(path: str, sink: DiagnosticSink, files: SourceReader | None = None) -> Extracted:
     """:func:`extract`, with the name an rclpy node gives itself (ROS 2)."""
-    source = read_text(path)
+    source = (files or SourceReader(sink=sink)).text(path)
     if source is None:
         return Extracted([])
     try:
         tree, rewritten = python2.parse(source, path)
-    except (SyntaxError, ValueError) as error:
+    except (SyntaxError, ValueError, RecursionError, MemoryError) as error:
         line = getattr(error, "lineno", None) or 1
         sink.warning(
             "interface-unparsable", f"cannot parse the script: {error}", Location(path, line)

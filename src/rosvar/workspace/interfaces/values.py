@@ -11,6 +11,9 @@ from dataclasses import dataclass
 
 from rosvar.ros.names import ns_join
 
+MAX_TEXT = 4096
+"""No ROS name is longer: a value built by doubling in a loop or a helper chain stops here."""
+
 
 @dataclass(frozen=True)
 class Text:
@@ -24,7 +27,10 @@ class Text:
         return Text("{" + " ".join(expression.split()) + "}", static=False)
 
     def __add__(self, other: Text) -> Text:
-        return Text(self.value + other.value, self.static and other.static)
+        value = self.value + other.value
+        if len(value) > MAX_TEXT:
+            return Text.unknown("…")
+        return Text(value, self.static and other.static)
 
     def within(self, namespace: Text) -> Text:
         """This name as a node handle in ``namespace`` resolves it (``~``, ``/`` kept)."""

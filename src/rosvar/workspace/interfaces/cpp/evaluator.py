@@ -58,6 +58,7 @@ class Evaluator:
         self.active: set[tuple[int, int]] = set()
         self._writes: dict[str, list[tuple[Function, Node]]] | None = None
         self._fields: dict[str, Value] = {}
+        self._parameters: dict[tuple[int, int], Value] = {}
         for function in reached:
             kinds = ("call_expression", "new_expression", "declaration", "field_initializer")
             for call in function.nodes(*kinds):
@@ -320,6 +321,14 @@ class Evaluator:
         return None
 
     def _parameter(self, function: Function, index: int, type_text: str) -> Value:
+        """The value every call site gives parameter ``index`` of ``function``, kept: a
+        chain of helpers each calling the next twice is evaluated once per helper."""
+        key = (id(function), index)
+        if key not in self._parameters:
+            self._parameters[key] = self._parameter_value(function, index, type_text)
+        return self._parameters[key]
+
+    def _parameter_value(self, function: Function, index: int, type_text: str) -> Value:
         values: set[Value] = set()
         for site in self.calls.get(function.name, []):
             if (

@@ -15,9 +15,10 @@ from functools import lru_cache
 
 from tree_sitter import Node
 
+from rosvar.diagnostics import Location
 from rosvar.workspace.interfaces.cpp import syntax
 from rosvar.workspace.interfaces.cpp.ros_types import ros_type
-from rosvar.workspace.interfaces.reading import read_source
+from rosvar.workspace.interfaces.reading import SourceReader
 
 
 @dataclass(eq=False)
@@ -54,6 +55,9 @@ class _Parsed:
     declarations: list[Node]
 
 
+MAX_NESTING = 256
+"""Syntax nested deeper than this (40,000 braces, 20,000 templates) is no hand-written node:
+such a file is not read, so that every walk of its tree stays short."""
 _DECLARING = frozenset(
     {
         "function_definition",
@@ -66,12 +70,24 @@ _DECLARING = frozenset(
 )
 
 
+@dataclass(frozen=True)
+class _Tree:
+    """A file's tree and what indexing needs of it, or the place it nests too deep."""
+
+    root: Node
+    includes: tuple[str, ...] = ()
+    declarations: tuple[Node, ...] = ()
+    too_deep: Node | None = None
+
+
 @lru_cache(maxsize=4096)
-def _parse(path: str) -> _Parsed | None:
-    data = read_source(path)
-    if data is None:
-        return None
+def _tree(data: bytes) -> _Tree:
+    """Parsed once per content: a header included by every target of a package, the same
+    source in several packages."""
     root = syntax.parse(data)
+    deep = syntax.deeper_than(root, MAX_NESTING)
+    if deep is not None:
+        return _Tree(root, too_deep=deep)
     includes, declarations = [], []
     for node in syntax.walk(root, _DECLARING | {"preproc_include"}):
         if node.type != "preproc_include":
@@ -80,7 +96,24 @@ def _parse(path: str) -> _Parsed | None:
         target = node.child_by_field_name("path")
         if target is not None:
             includes.append(syntax.text(target).strip('"<>'))
-    return _Parsed(path, root, includes, declarations)
+    return _Tree(root, tuple(includes), tuple(declarations))
+
+
+def _parse(path: str, reader: SourceReader) -> _Parsed | None:
+    data = reader.data(path)
+    if data is None:
+        return None
+    tree = _tree(data)
+    if tree.too_deep is not None:
+        if reader.sink is not None:
+            line = tree.too_deep.start_point[0] + 1
+            reader.sink.warning(
+                "interface-too-nested",
+                f"not read: C++ nested more than {MAX_NESTING} deep",
+                Location(path, line),
+            )
+        return None
+    return _Parsed(path, tree.root, list(tree.includes), list(tree.declarations))
 
 
 @dataclass
@@ -110,8 +143,12 @@ class Unit:
     (defaults are written in the declaration, not in the definition)."""
 
     @staticmethod
-    def load(sources: Sequence[str], include_dirs: Sequence[str]) -> Unit:
-        """Parse ``sources`` and the headers they include from ``include_dirs`` or beside them."""
+    def load(
+        sources: Sequence[str], include_dirs: Sequence[str], reader: SourceReader | None = None
+    ) -> Unit:
+        """Parse ``sources`` and the headers they include from ``include_dirs`` or beside them
+        (read through ``reader``, the extraction's read gate)."""
+        reader = reader or SourceReader()
         unit = Unit([])
         pending = [os.path.abspath(path) for path in sources]
         seen: set[str] = set()
@@ -120,7 +157,7 @@ class Unit:
             if path in seen:
                 continue
             seen.add(path)
-            parsed = _parse(path)
+            parsed = _parse(path, reader)
             if parsed is None:
                 continue
             unit.files.append(path)
