@@ -27,7 +27,7 @@ from rosvar.workspace.interfaces.cmake import (
     cmake_extras,
     read_build,
 )
-from rosvar.workspace.interfaces.cpp.extract import extract, extract_node
+from rosvar.workspace.interfaces.cpp.extract import extract_node
 from rosvar.workspace.interfaces.cpp.unit import Unit
 from rosvar.workspace.interfaces.model import Extracted, Interfaces, NodeInterface, NodeKind
 from rosvar.workspace.interfaces.nodelets import nodelet_classes
@@ -64,14 +64,14 @@ def extract_package(
             node(
                 target.installed_name,
                 NodeKind.NODE,
-                extract_node(unit, entry, owner, sink, where),
+                extract_node(unit, entry, owner, sink, where, ros2),
             )
         elif ros2:
             plugins = _components(target.sources, reader)
             sources = _cpp_sources(build.sources(target.name)) if plugins else []
             unit = Unit.load(sources, include_dirs, reader)
             for plugin in plugins:
-                found = extract_node(unit, *_constructor(plugin), sink, where)
+                found = extract_node(unit, *_constructor(plugin), sink, where, ros2)
                 node(plugin, NodeKind.COMPONENT, found)
     for nodelet in nodelet_classes(package.path, sink, reader):
         if nodelet.library not in build.targets:
@@ -84,7 +84,7 @@ def extract_package(
             continue
         unit = Unit.load(_cpp_sources(build.sources(nodelet.library)), include_dirs, reader)
         owner = nodelet.type.rsplit("::", 1)[-1]
-        entries = extract(unit, "onInit", owner, sink, nodelet.location)
+        entries = extract_node(unit, "onInit", owner, sink, nodelet.location).entries
         nodes.append(NodeInterface(package.name, nodelet.name, NodeKind.NODELET, entries))
     for script in _python_scripts(package.path, build, reader):
         node(os.path.basename(script), NodeKind.NODE, python.extract_node(script, sink, reader))

@@ -200,3 +200,24 @@ def template_arguments_text(type_text: str) -> list[str]:
         depth += char == "<"
         depth -= char == ">"
     return [*parts, type_text[begin:end]]
+
+
+def template_parameters(definition: Node) -> tuple[str, ...]:
+    """The template parameters a function definition is written under: its own
+    (``template <typename T> void f()``) or, for a method, its class template's."""
+    names: list[str] = []
+    node = definition.parent
+    while node is not None:
+        if node.type == "template_declaration":
+            parameters = node.child_by_field_name("parameters")
+            for parameter in parameters.named_children if parameters is not None else ():
+                name = next(
+                    (c for c in parameter.named_children if c.type == "type_identifier"), None
+                )
+                if name is not None:
+                    names.append(text(name))
+            break
+        if node.type == "translation_unit":
+            break
+        node = node.parent
+    return tuple(names)
