@@ -18,6 +18,7 @@ from collections.abc import Iterable, Mapping
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.files import Confinement
+from rosvar.ros.version import RosVersion
 from rosvar.workspace.executables import SCRIPT_FOLDERS, console_scripts
 from rosvar.workspace.interfaces import python
 from rosvar.workspace.interfaces.cmake import (
@@ -33,7 +34,6 @@ from rosvar.workspace.interfaces.model import Extracted, Interfaces, NodeInterfa
 from rosvar.workspace.interfaces.nodelets import nodelet_classes
 from rosvar.workspace.interfaces.reading import SourceReader
 from rosvar.workspace.packages import Package
-from rosvar.workspace.ros_version import RosVersion
 
 _COMPONENT = re.compile(r"RCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)")
 

@@ -52,9 +52,6 @@ class Expression:
 
     text: str
 
-    def to_json(self) -> dict[str, str]:
-        return {"expression": self.text}
-
 
 Default = bool | int | float | str | Expression
 """A parameter's default: a literal's value, or the expression that computes it."""
@@ -76,12 +73,6 @@ class NamedBy:
     @property
     def indexed(self) -> bool:
         return INDEX in self.parameter
-
-    def to_json(self) -> dict[str, str]:
-        document = {"parameter": self.parameter}
-        if self.namespace:
-            document["namespace"] = self.namespace
-        return document
 
 
 INDEX = "{N}"
@@ -110,30 +101,6 @@ class Entry:
     """The parameter whose value is the name (then ``default`` is that parameter's default
     and ``name`` its symbolic form)."""
 
-    def to_json(self) -> dict[str, object]:
-        document: dict[str, object] = {"name": self.name}
-        if self.role is Role.PARAMS:
-            value = self.default
-            document["default"] = value.to_json() if isinstance(value, Expression) else value
-        else:
-            document["type"] = self.type
-        if self.named_by is not None:
-            document["named_by"] = self.named_by.to_json()
-            value = self.default
-            document["default"] = value.to_json() if isinstance(value, Expression) else value
-        document["file"] = self.location.file
-        document["line"] = self.location.line
-        document["origin"] = str(self.origin)
-        if not self.static:
-            document["static"] = False
-        if self.when is not None:
-            document["when"] = self.when
-        if self.boundary:
-            document["boundary"] = True
-        if self.beside is not None:
-            document["beside"] = self.beside
-        return document
-
 
 @dataclass(frozen=True)
 class Extracted:
@@ -158,18 +125,6 @@ class NodeInterface:
 
     def of(self, role: Role) -> list[Entry]:
         return [entry for entry in self.entries if entry.role is role]
-
-    def to_json(self) -> dict[str, object]:
-        document: dict[str, object] = {
-            "package": self.package,
-            "executable": self.executable,
-            "kind": str(self.kind),
-        }
-        if self.node_name is not None:
-            document["node_name"] = self.node_name
-        for role in Role:
-            document[str(role)] = [entry.to_json() for entry in self.of(role)]
-        return document
 
 
 class Fallback(Protocol):
@@ -204,9 +159,3 @@ class Interfaces:
         extra = [] if self.fallback is None else self.fallback.nodes()
         found = self.nodes + [n for n in extra if (n.package, n.executable) not in known]
         return sorted(found, key=lambda node: (node.package, node.executable))
-
-    def to_json(self) -> dict[str, object]:
-        return {
-            "interfaces": [node.to_json() for node in self.listed()],
-            "diagnostics": [diagnostic.to_json() for diagnostic in self.diagnostics],
-        }
