@@ -20,11 +20,12 @@ must give exactly those.
 from __future__ import annotations
 
 import enum
+import re
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import TypeVar
 
-from rosvar.analyses.param_values import ROS2_PARAMETERS, ParamValues, param_default
+from rosvar.analyses.param_values import ROS2_PARAMETERS, ParamValues, Unknown, param_default
 from rosvar.analyses.when import When, concrete_holds, when_condition
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import LaunchModel, NodeDecl, NodeSchema, Raw
@@ -34,7 +35,16 @@ from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
 from rosvar.ros.version import RosVersion
 from rosvar.ros2.conventions.namespaces import make_absolute
-from rosvar.workspace.interfaces.model import Default, Entry, Interfaces, NodeInterface, Role
+from rosvar.workspace.interfaces.model import (
+    INDEX,
+    Default,
+    Entry,
+    Interfaces,
+    NamedBy,
+    NodeInterface,
+    Role,
+)
+from rosvar.workspace.interfaces.values import Text
 
 _R = TypeVar("_R")
 
@@ -200,9 +210,99 @@ def node_edges(
             used = condition
             if entry.when is not None:
                 used &= entry_when(params, node, launched, interface, entry.when).condition
-            for when, name in entry_names(launched, remaps, entry, used):
-                edges.append(_edge(file, launched, node, entry, name, when, static))
+            for taken, use in entry_uses(params, node, launched, interface, entry, used):
+                for when, name in entry_names(launched, remaps, use, taken):
+                    edges.append(_edge(file, launched, node, use, name, when, static))
     return edges
+
+
+def entry_uses(
+    params: ParamValues,
+    node: NodeDecl,
+    launched: LaunchedNode,
+    interface: NodeInterface,
+    entry: Entry,
+    used: BDD,
+) -> list[tuple[BDD, Entry]]:
+    """``entry`` under ``used``; one named by a parameter becomes one entry per value the
+    parameter takes (what the launched files set, else its default), each under its
+    condition: a value not known keeps the symbolic entry; an indexed parameter
+    (``~imu{N}``) gives one per such parameter set, none where unset."""
+    named = entry.named_by
+    if named is None:
+        return [(used, entry)]
+    defaults = _defaults(launched, interface)
+    lookup = _ros2_lookup(params.space, node) if node.ros2 else None
+    uses: list[tuple[BDD, Entry]] = []
+    for parameter in _named_parameters(params, node, launched, named):
+        resolved = launched.resolve(parameter)
+        default = entry.default if entry.default is not None else defaults.get(resolved)
+        if named.indexed:
+            default = None
+        values = (
+            lookup(parameter, default) if lookup is not None else params.values(resolved, default)
+        )
+        for condition, value in values:
+            taken = used & condition
+            if taken == params.space.false:
+                continue
+            if isinstance(value, str) and value:
+                name = Text(value).within(Text(named.namespace)).value
+                uses.append((taken, replace(entry, name=name, static=True, named_by=None)))
+            elif not named.indexed:
+                uses.append((taken, entry))
+    return uses
+
+
+def _named_parameters(
+    params: ParamValues, node: NodeDecl, launched: LaunchedNode, named: NamedBy
+) -> list[str]:
+    """The parameters that name a use: the one, or every one of an indexed name that the
+    launched files set (as the node writes it)."""
+    if not named.indexed:
+        return [named.parameter]
+    head, _, tail = named.parameter.partition(INDEX)
+    if node.ros2:
+        written = [p.name for p in node.parameters if isinstance(p.name, str)]
+        pattern = re.compile(re.escape(head.lstrip("~/")) + r"(\d+)" + re.escape(tail) + "$")
+        return sorted({n for n in written if pattern.match(n)})
+    marker = "__index__"
+    resolved = launched.resolve(head + marker + tail)
+    pattern = re.compile(re.escape(resolved).replace(marker, r"(\d+)") + "$")
+    return [
+        head + match.group(1) + tail
+        for name in params.names()
+        if (match := pattern.match(name)) is not None
+    ]
+
+
+def _ros2_lookup(
+    space: ConditionSpace, node: NodeDecl
+) -> Callable[[str, Default | None], Choice[object]]:
+    """A ROS 2 node's own parameters as its launch description gives them: the values
+    written for it (the last that holds wins), else the default; a parameter file may set
+    any of them (not read here: a value not known)."""
+
+    def lookup(name: str, default: Default | None) -> Choice[object]:
+        branches: list[tuple[BDD, object]] = []
+        remaining = space.true
+        for parameter in reversed(node.parameters):
+            if parameter.file is not None:
+                value: object = Unknown(f"a parameter file ({parameter.file}) may set it")
+            elif parameter.name == name.lstrip("~/"):
+                raw = parameter.value
+                value = raw if isinstance(raw, str) else Unknown(f"its value is {raw}")
+            else:
+                continue
+            taken = remaining & parameter.condition
+            if taken != space.false:
+                branches.append((taken, value))
+            remaining &= ~parameter.condition
+        if remaining != space.false:
+            branches.append((remaining, param_default(default)))
+        return Choice.of(branches, space.false)
+
+    return lookup
 
 
 def entry_when(
@@ -332,11 +432,52 @@ def resolved_graph(
                 value = _param_value(params, launched, interface)
                 if not concrete_holds(entry.when, scopes[index], value):
                     continue
-            resolved = launched.resolve(entry.beside or entry.name)
-            name = table.get(resolved, resolved)
-            name = name if entry.beside is None else _beside(name)
-            uses.append((launched.full_name, entry.role, name, entry.type))
+            for use in _resolved_uses(node, launched, interface, entry, params):
+                resolved = launched.resolve(use.beside or use.name)
+                name = table.get(resolved, resolved)
+                name = name if use.beside is None else _beside(name)
+                uses.append((launched.full_name, use.role, name, use.type))
     return graph_json(uses)
+
+
+def _resolved_uses(
+    node: Mapping[str, object],
+    launched: LaunchedNode,
+    interface: NodeInterface,
+    entry: Entry,
+    params: Mapping[str, object] | None,
+) -> list[Entry]:
+    """:func:`entry_uses` in one configuration: ROS 1's parameter server (``params``), or
+    a ROS 2 node's own parameters."""
+    named = entry.named_by
+    if named is None:
+        return [entry]
+    own = node.get("parameters")
+    if params is None:  # ROS 2: the node's own parameters, by their plain names
+        values: Mapping[str, object] = own if isinstance(own, Mapping) else {}
+        key: Callable[[str], str] = lambda parameter: parameter.lstrip("~/")  # noqa: E731
+    else:
+        values, key = params, launched.resolve
+    head, _, tail = named.parameter.partition(INDEX)
+    if named.indexed:
+        marker = "__index__"
+        pattern = re.compile(re.escape(key(head + marker + tail)).replace(marker, r"\d+") + "$")
+        chosen = [values[n] for n in sorted(values) if pattern.match(n)]
+    else:
+        resolved = launched.resolve(named.parameter)
+        default = entry.default
+        if default is None:
+            default = _defaults(launched, interface).get(resolved)
+        written = key(named.parameter)
+        chosen = [values[written] if written in values else param_default(default)]
+    found = []
+    for value in chosen:
+        if isinstance(value, str) and value:
+            name = Text(value).within(Text(named.namespace)).value
+            found.append(replace(entry, name=name, static=True, named_by=None))
+        elif not named.indexed:
+            found.append(entry)
+    return found
 
 
 def _resolved_node(node: Mapping[str, object]) -> LaunchedNode:
