@@ -105,7 +105,7 @@ function wireToolbars() {
   $("expand-all").addEventListener("click", () => tree.expand(true));
   $("collapse-all").addEventListener("click", () => tree.expand(false));
   $("graph-search").addEventListener("input", (event) => graph.search(event.target.value));
-  $("graph-search").addEventListener("keydown", (event) => { if (event.key === "Enter") graph.fit(); });
+  $("graph-search").addEventListener("keydown", (event) => { if (event.key === "Enter") graph.fitMatches(); });
   $("show-params").addEventListener("change", (event) => { graph.setOption("params", event.target.checked); });
   $("group-by").addEventListener("change", () => act(() => client.regroup()));
   $("overview").addEventListener("click", () => graph.overview());
