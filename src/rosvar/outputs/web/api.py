@@ -98,7 +98,7 @@ class Api:
         features = configurator.state([]).features  # the ids never change: known once
         configurator.derivation.prepare_counts()
         self._kinds = {key: feature.kind for key, feature in features.items()}
-        self._inspector = Inspector(configurator)
+        self._inspector = Inspector(configurator, self._lock)
 
     def handle(self, method: str, path: str, query: Query, body: Body) -> Reply:
         route = ROUTES.get((method, path))

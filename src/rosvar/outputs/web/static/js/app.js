@@ -47,7 +47,8 @@ const details = new DetailsPanel($("details"), $("details-body"), $("details-clo
 
 const session = () => client.session;
 const query = new QueryBox({ input: $("query"), status: $("query-status"), list: $("query-results") }, session, graph);
-const checks = new ChecksPanel({ toggle: $("checks-toggle"), count: $("checks-count"), panel: $("checks"), list: $("checks-list") }, session, graph);
+const checks = new ChecksPanel({ toggle: $("checks-toggle"), count: $("checks-count"), panel: $("checks"), list: $("checks-list") },
+                               session, () => state, graph, (error) => bar.say(`Checks: ${error.message}`, true));
 
 // changes: what changed since the state rendered before (Client.receive), null for all.
 async function render(next, changes = null) {
@@ -56,7 +57,7 @@ async function render(next, changes = null) {
   bar.update(state);
   await graph.update(state);
   query.update().catch((error) => bar.say(`Query: ${error.message}`, true));
-  checks.update().catch((error) => bar.say(`Checks: ${error.message}`, true));
+  checks.update();
   // body[data-step] counts rendered states: tests (and curious users) can wait for the next one
   document.body.dataset.step = String(Number(document.body.dataset.step ?? 0) + 1);
 }
