@@ -14,7 +14,7 @@ from urllib.parse import urlsplit
 
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
-from outputs.web.test_overview import wired_configurator, wired_workspace
+from outputs.web.test_overview import expected_links, wired_configurator, wired_workspace
 from rosvar.outputs.web.overview import SEPARATOR, Grouping, key_of, labels, packages
 
 if TYPE_CHECKING:
@@ -494,12 +494,14 @@ def test_many_topics_link_closed_boxes_and_only_open_groups_fetch_theirs(
         assert fetched_groups(answers) == set()  # nothing open
 
         def expected() -> dict[tuple[str, str], dict[str, list[int]]]:
+            """The whole state's names between the closed boxes drawn, pair by pair."""
             units = {u["id"] for u in app.units("group")}
             found: dict[tuple[str, str], dict[str, list[int]]] = {}
-            for link in app.state["graph"]["links"]:
-                kind, source, target = link["id"].split("\u0002")
+            grouping = Grouping(app.state["grouping"])
+            for link, count in expected_links(app.whole, grouping).items():
+                kind, source, target = link.split("\u0002")
                 if f"g:{source}" in units and f"g:{target}" in units:
-                    found.setdefault((f"g:{source}", f"g:{target}"), {})[kind] = link["count"]
+                    found.setdefault((f"g:{source}", f"g:{target}"), {})[kind] = count
             return found
 
         start = drawn_links(app)
@@ -519,6 +521,8 @@ def test_many_topics_link_closed_boxes_and_only_open_groups_fetch_theirs(
         assert base.endswith("drivers/base.launch")
         kinds = {body.get("kind") for path, body, _ in answers if path == "/api/group"}
         assert kinds == {"nodes", "topics", "services", "actions"}
+        [boxes] = [body["groups"] for path, body, _ in answers if path == "/api/links"]
+        assert sorted(boxes) == sorted(u["element"]["key"] for u in app.units("group"))
         assert len(app.units("topic")) == groups[base]["topics"][1] > 250
         assert drawn_links(app) == expected() != {}
         app.assert_shows_server_state()

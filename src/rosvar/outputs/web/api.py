@@ -24,13 +24,15 @@ from rosvar.configuration.choices import Action, ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.session import Session
 from rosvar.outputs.web.inspection import Inspector
-from rosvar.outputs.web.overview import Grouping, MemberKind, catalog, compact, members
+from rosvar.outputs.web.overview import Grouping, MemberKind, catalog, compact, links, members
 from rosvar.outputs.web.sessions import DEFAULT_CAPACITY, SessionStore, Tab
 
 MAX_TEXT = 4096
 """Longest accepted string field (feature ids and typed values are far shorter)."""
 
 MAX_PAGE = 100_000
+MAX_GROUPS = 10_000
+"""Most groups whose links one request asks for (the page asks for the boxes it draws)."""
 StrEnumT = TypeVar("StrEnumT", Grouping, MemberKind)
 
 Body = Mapping[str, object]
@@ -153,6 +155,24 @@ class Api:
         document = tab.session.current().to_json()
         return members(document, tab.grouping, group, kind, _page(body))
 
+    def _links(self, query: Query, body: Body) -> Reply:
+        """The links between the given groups in the session's current state."""
+        _only(query, set())
+        _only(body, {"session", "groups"})
+        _key, tab = self._session(body)
+        if tab.grouping is None:
+            raise ApiError(HTTPStatus.BAD_REQUEST, "the session is not in overview mode")
+        groups = body.get("groups")
+        if (
+            not isinstance(groups, list)
+            or len(groups) > MAX_GROUPS
+            or not all(isinstance(key, str) and len(key) <= MAX_TEXT for key in groups)
+        ):
+            raise ApiError(
+                HTTPStatus.BAD_REQUEST, f"field 'groups' must be a list of at most {MAX_GROUPS} ids"
+            )
+        return {"links": links(tab.session.current().to_json(), tab.grouping, groups)}
+
     def _state(self, query: Query, body: Body) -> Reply:
         _only(query, {"session"})
         key, tab = self._session(query)
@@ -254,6 +274,7 @@ ROUTES: dict[tuple[str, str], Route] = {
     ("GET", "/api/catalog"): Api._catalog,
     ("POST", "/api/grouping"): Api._grouping,
     ("POST", "/api/group"): Api._group,
+    ("POST", "/api/links"): Api._links,
     ("POST", "/api/undo"): functools.partial(Api._step, step=Session.undo),
     ("POST", "/api/redo"): functools.partial(Api._step, step=Session.redo),
     ("POST", "/api/reset"): functools.partial(Api._step, step=Session.reset),

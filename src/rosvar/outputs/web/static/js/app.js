@@ -34,7 +34,7 @@ const bar = new Bar(
 const tree = new FeatureTree($("tree"), $("conflict-popup"), (action, feature, value) => {
   choose(() => client.choose(action, feature, value));
 });
-const graph = new GraphView($("graph"), (group, kind, page) => client.members(group, kind, page), (element, byUser) => {
+const graph = new GraphView($("graph"), (group, kind, page) => client.members(group, kind, page), (groups) => client.links(groups), (element, byUser) => {
   // a new selection opens the details; a step only refreshes them if they are open
   if (byUser || details.shown !== null) details.show(element, state);
   $("focus").disabled = !element;

@@ -13,7 +13,7 @@
 // A state with more of these than LINKED_ABOVE (Husky with its dependencies as features:
 // thousands) would fetch megabytes of them per step to draw each one: then only those of the
 // groups drawn open are fetched, and two closed boxes are joined by one edge per direction
-// from the state's links between groups (how many names, of which kinds).
+// from the links between the boxes drawn (how many names, of which kinds; /api/links).
 //
 // Graph ids are stable across steps. When the drawn units appear or go the layout runs again
 // and every unit moves to its new place in an animation (new units grow from the box they
@@ -211,11 +211,12 @@ function groupTree(summaries) {
 }
 
 export class GraphView {
-  // members(group, kind, page) fetches a page of a group's members (the API's /api/group).
+  // members(group, kind, page) fetches a page of a group's members (the API's /api/group),
+  // links(groups) the links between groups (/api/links).
   // onSelect(element | null, byUser) is called with the selected unit's description
   // whenever the selection (byUser: true) or the selected unit's data (false) changes.
   // onDrawn() is called after every redraw.
-  constructor(container, members, onSelect, onDrawn = () => {}) {
+  constructor(container, members, links, onSelect, onDrawn = () => {}) {
     this.container = container;
     this.cy = cytoscape({ container, style: STYLE, minZoom: 0.05, maxZoom: 4, boxSelectionEnabled: false });
     this.options = { params: false };
@@ -227,6 +228,8 @@ export class GraphView {
     this.marked = new Map(); // who marks (a query, a finding) → [graph entry id, its group key]
     this.state = null;
     this.members = members;
+    this.links = links;
+    this.linking = []; // the links between the closed boxes drawn, as fetched
     this.fetched = new Map(); // "group kind page" → the answer's promise, for the state drawn
     this.channels = { topic: [], service: [], action: [] }; // every one, as fetched
     this.units = new Map(); // unit id → {names: lowercased member names} for the search
@@ -392,10 +395,39 @@ export class GraphView {
     return found;
   }
 
+  // The groups drawn as closed boxes, as emit() in plan() draws them.
+  closed(root) {
+    const found = [];
+    const walk = (group) => {
+      for (const child of group.children.values()) {
+        if (this.opensWith(child) || this.isOpen(child)) walk(child);
+        else found.push(child.key);
+      }
+    };
+    walk(root);
+    return found;
+  }
+
+  // The links between the closed boxes in the state drawn, fetched once per set of boxes.
+  linksOf(keys) {
+    const key = `links ${keys.join("\u0003")}`;
+    if (!this.fetched.has(key)) {
+      const answer = this.links(keys);
+      answer.catch(() => this.fetched.delete(key));
+      this.fetched.set(key, answer);
+    }
+    return this.fetched.get(key);
+  }
+
   // Fetches what the drawing needs: the nodes (and params) of the open groups, the topics,
-  // services and actions of wired(root).
+  // services and actions of wired(root), and when linked the links between the closed boxes.
   async fetch(root) {
     const jobs = [];
+    this.linking = [];
+    if (this.linked()) {
+      const boxes = this.closed(root);
+      if (boxes.length > 1) jobs.push(this.linksOf(boxes).then((answer) => { this.linking = answer.links; }));
+    }
     // a group's own params and those of its subgroups holding no node
     const params = (into, group = into) => {
       if (group.own("params") > 0) jobs.push(this.pagesOf(group.key, "params").then((found) => into.params.push(...found)));
@@ -562,16 +594,16 @@ export class GraphView {
         }
       }
     }
-    if (this.linked()) this.linkEdges(state, drawn, wanted);
+    if (this.linked()) this.linkEdges(drawn, wanted);
     if (this.options.params) this.paramUnits(root, wanted, drawnNodes, unitOf, opened);
     return { wanted, unitOf, searchNames, boxOf };
   }
 
-  // One edge per direction between two closed boxes (`drawn`: the unit ids) that the state's
-  // links join, as thick as the names it stands for are many; dashed while none is present.
-  linkEdges(state, drawn, wanted) {
+  // One edge per direction between two closed boxes (`drawn`: the unit ids) that the links
+  // fetched join, as thick as the names it stands for are many; dashed while none is present.
+  linkEdges(drawn, wanted) {
     const edges = new Map(); // edge id → its element
-    for (const link of state.graph.links ?? []) {
+    for (const link of this.linking) {
       const [list, from, to] = link.id.split("\u0002"); // kind, group keys (overview.py's links)
       const [source, target] = [PREFIX.group + from, PREFIX.group + to];
       if (!drawn.has(source) || !drawn.has(target)) continue;
