@@ -785,7 +785,7 @@ def test_husky_params_and_namespaces_stay_bounded(page: Any, husky: Live) -> Non
     if len(largest["element"]["params"]) > 50:
         page.locator("#details button", has_text="more").click()
         assert rows.count() > 50
-    page.select_option("#group-by", "namespace")
+    app.wait_for_update(lambda: page.select_option("#group-by", "namespace"))
     app.assert_shows_server_state()
     assert drawn(app) <= MAX_DRAWN
     size = page.evaluate(
