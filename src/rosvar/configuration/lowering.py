@@ -16,12 +16,11 @@ from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass
 
 from rosvar.analyses.feature_model.model import FeatureModel
-from rosvar.interpreter.substitution import PackageTable
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD, transfer
 from rosvar.logic.conditions import Atom, PredicateAtom, SlotAtom, decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
-from rosvar.logic.terms import term_inputs
+from rosvar.logic.terms import PackageTable, term_inputs
 from rosvar.memo import Memo
 
 _NONE: frozenset[str] = frozenset()

@@ -1,1 +1,2 @@
-"""ROS 1 conventions (graph resource names) that every layer shares."""
+"""ROS conventions every layer shares: graph resource names (rosgraph's rules) and the ROS
+versions."""

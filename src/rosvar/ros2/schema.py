@@ -1,0 +1,80 @@
+"""The attributes and child tags ros2/launch's frontends accept, per tag, checked as they do.
+
+The frontend parses a whole file when it is loaded and fails on an element it does not
+know or an attribute nothing read, even inside a group that is never entered: so the check
+runs over the whole tree at each load, under the path of the load.
+"""
+
+from __future__ import annotations
+
+from rosvar.frontends.entity import Entity
+from rosvar.interpreter.interpretation import Interpretation
+from rosvar.ros.version import RosVersion
+from rosvar.ros2.api.actions import ACTIONS
+from rosvar.ros2.context import Context
+from rosvar.workspace.launch_files import LaunchFormat, format_of
+
+ATTRIBUTES: dict[str, frozenset[str]] = {
+    name: action.attributes for action in ACTIONS for name in action.names if not action.python_only
+}
+"""What the XML and YAML frontends accept, per tag (:data:`rosvar.ros2.api.actions.ACTIONS`)."""
+PYTHON_ATTRIBUTES = ATTRIBUTES | {
+    name: action.attributes for action in ACTIONS for name in action.names if action.python_only
+}
+"""What the Python frontend's elements may be (``LifecycleNode`` has no XML or YAML tag)."""
+ALWAYS = frozenset({"if", "unless"})
+CONTAINERS = frozenset(name for action in ACTIONS if action.holds_actions for name in action.names)
+
+
+def check(it: Interpretation[Context], root: Entity) -> None:
+    """Record the frontend's failure for every unknown element or attribute below ``root``."""
+    python = format_of(root.location.file, RosVersion.ROS2) is LaunchFormat.PYTHON
+    _check(it, root, PYTHON_ATTRIBUTES if python else ATTRIBUTES)
+
+
+def _check(
+    it: Interpretation[Context], root: Entity, attributes: dict[str, frozenset[str]]
+) -> None:
+    for entity in root.children:
+        allowed = attributes.get(entity.tag)
+        if allowed is None:
+            it.fail(
+                it.space.true,
+                "tag-unknown",
+                f"Unrecognized entity of the type: {entity.tag}",
+                entity.location,
+            )
+            continue
+        container = entity.tag in CONTAINERS  # its children are actions, checked below
+        children = [] if container else [child.tag for child in entity.children]
+        unexpected = sorted(
+            name
+            for name in [*entity.attributes, *children]
+            if name not in allowed and name not in ALWAYS
+        )
+        if unexpected:
+            it.fail(
+                it.space.true,
+                "attribute-unexpected",
+                f"Unexpected attribute(s) found in `{entity.tag}`: {set(unexpected)}",
+                entity.location,
+            )
+        elif container:
+            _check(it, entity, attributes)
+        else:
+            _nested(it, entity)
+
+
+def _nested(it: Interpretation[Context], entity: Entity) -> None:
+    """Children of a leaf action (``<param>`` in a node, ``<arg>`` in an include...)."""
+    for child in entity.children:
+        allowed = ATTRIBUTES.get(child.tag, frozenset())
+        unexpected = sorted(n for n in child.attributes if n not in allowed and n not in ALWAYS)
+        if unexpected:
+            it.fail(
+                it.space.true,
+                "attribute-unexpected",
+                f"Unexpected attribute(s) found in `{child.tag}`: {set(unexpected)}",
+                child.location,
+            )
+        _nested(it, child)
