@@ -172,7 +172,7 @@ class Api:
             raise ApiError(
                 HTTPStatus.BAD_REQUEST, f"field 'groups' must be a list of at most {MAX_GROUPS} ids"
             )
-        return {"links": links(tab.session.current().to_json(), tab.grouping, groups)}
+        return {"links": links(state_document(tab.session.current()), tab.grouping, groups)}
 
     def _state(self, query: Query, body: Body) -> Reply:
         _only(query, {"session"})

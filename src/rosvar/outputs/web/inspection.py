@@ -35,6 +35,7 @@ from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.view import Graph
 from rosvar.diagnostics import Severity
 from rosvar.logic.bdd import BDD
+from rosvar.outputs.documents.state import choice_document
 from rosvar.outputs.web.overview import Grouping, Packages, key_of, labels
 from rosvar.workspace.interfaces.model import Interfaces
 
@@ -126,7 +127,7 @@ class Inspector:
         entry file where it is present, if there is one). With ``grouping``, each has the
         ``groups`` of its ``ids``. While the findings are being listed: ``{"pending": [files
         done, files]}`` (the listing starts with the first question)."""
-        choices = [choice.to_json() for choice in state.choices]
+        choices = [choice_document(choice) for choice in state.choices]
         found = self._findings.listed()
         if found is None:
             return {"pending": list(self._findings.progress()), "choices": choices}
