@@ -101,7 +101,8 @@ class Api:
         features = configurator.state([]).features  # the ids never change: known once
         configurator.derivation.prepare_counts()
         self._kinds = {key: feature.kind for key, feature in features.items()}
-        self._inspector = Inspector(configurator, self._lock)
+        self._asking = 0  # requests in ``handle``: answered or waiting for the lock
+        self._inspector = Inspector(configurator, self._lock, lambda: self._asking > 0)
 
     def handle(self, method: str, path: str, query: Query, body: Body) -> Reply:
         route = ROUTES.get((method, path))
@@ -109,8 +110,12 @@ class Api:
             if any(known == path for _, known in ROUTES):
                 raise ApiError(HTTPStatus.METHOD_NOT_ALLOWED, f"{method} not allowed on {path}")
             raise ApiError(HTTPStatus.NOT_FOUND, f"no such API: {path}")
-        with self._lock:
-            return route(self, query, body)
+        self._asking += 1  # the findings' listing gives way (Inspector)
+        try:
+            with self._lock:
+                return route(self, query, body)
+        finally:
+            self._asking -= 1
 
     @property
     def sessions(self) -> int:

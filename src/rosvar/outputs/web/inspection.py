@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import threading
 import time
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
 from rosvar.analyses.checks import Finding, check_model
@@ -44,8 +44,7 @@ LISTED = 250
 """Results and findings an answer lists (the worst first), so that no answer grows with the
 workspace: a large one's whole list of findings is megabytes; the counts cover them all."""
 PAUSE_S = 0.002
-"""The listing thread's pause between two entry files: a request waiting for the engine's lock
-takes it then (a lock is not fair: a thread taking it again at once could keep it)."""
+"""The listing thread's pause between two entry files, and again while a request is answered."""
 NAMED = frozenset(KINDS.values())
 """Kinds of query results that are graph entries by their name alone."""
 _Place = tuple[str, str, int]
@@ -69,15 +68,21 @@ class Inspector:
     """Queries and checks of a configurator's workspace, judged under a tab's choices.
 
     ``lock`` is the engine's (the API's): the findings are listed in a thread of their own
-    that holds it for one entry file at a time."""
+    that holds it for one entry file at a time, and waits while ``asked()`` says a request
+    is being answered or waits for the lock."""
 
-    def __init__(self, configurator: Configurator, lock: threading.Lock) -> None:
+    def __init__(
+        self,
+        configurator: Configurator,
+        lock: threading.Lock,
+        asked: Callable[[], bool] = lambda: False,
+    ) -> None:
         self._configurator = configurator
         analysis = configurator.analysis
         self._entries = {entry.path: entry for entry in configurator.catalog.files}
         self._paths = {analysis.label(path): path for path in self._entries}
         self._engine: QueryEngine | None = None
-        self._findings = _Findings(configurator, list(self._entries), lock)
+        self._findings = _Findings(configurator, list(self._entries), lock, asked)
         self._lowered: dict[tuple[str, BDD], tuple[BDD, Bounds] | None] = {}
 
     def query(self, text: str, state: ConfigurationState, grouping: Grouping | None) -> Reply:
@@ -205,10 +210,17 @@ class _Findings:
     one that includes it), listed once by a thread of their own, a file at a time under the
     engine's lock."""
 
-    def __init__(self, configurator: Configurator, paths: list[str], lock: threading.Lock) -> None:
+    def __init__(
+        self,
+        configurator: Configurator,
+        paths: list[str],
+        lock: threading.Lock,
+        asked: Callable[[], bool],
+    ) -> None:
         self._configurator = configurator
         self._paths = paths
         self._lock = lock
+        self._asked = asked
         self._found: list[Finding] = []
         self._done = 0
         self._failure: BaseException | None = None
@@ -243,7 +255,11 @@ class _Findings:
             self._failure = error
 
     def _pause(self) -> None:
+        """Between two entry files: requests first (they would share the processor, and
+        a lock is not fair: taking it again at once could keep it)."""
         time.sleep(PAUSE_S)
+        while self._asked():
+            time.sleep(PAUSE_S)
 
 
 class _Places:
