@@ -17,13 +17,13 @@ from analyses.robot_description.xacro_oracle import XacroFailed, run_xacro
 from rosvar.analyses.robot_description.document import Description, Node, concrete
 from rosvar.analyses.robot_description.reading import XacroReader
 from rosvar.interpreter.model import Raw
-from rosvar.interpreter.scope import MISSING, _Missing
-from rosvar.interpreter.substitution import PackageTable
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Input
 from rosvar.logic.terms import Hole, evaluate
+from rosvar.ros1.scope import MISSING, _Missing
+from rosvar.ros1.substitutions import PackageTable
 from rosvar.workspace import discover
 
 UNKNOWN = "unknown"

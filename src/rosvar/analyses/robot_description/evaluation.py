@@ -6,7 +6,7 @@ is the float 0.5), several are joined into a string. ``${}`` goes through rosvar
 evaluator, with the properties the expression names as its symbols (each a :class:`Choice`:
 the expression is evaluated per combination of their values, within a bound); ``$()`` is
 roslaunch's substitution args, which xacro reuses, through the launch interpreter's
-:class:`~rosvar.interpreter.substitution.Substituter` with xacro's args. Failures are
+:class:`~rosvar.ros1.substitutions.Substituter` with xacro's args. Failures are
 ``Fail`` leaves; what rosvar does not evaluate is an unknown value, with a warning.
 """
 
@@ -30,18 +30,18 @@ from rosvar.analyses.robot_description.symbols import ABSENT, Lazy, Table
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalFailed, EvalRefused, referenced_names
-from rosvar.interpreter.scope import Scope, _Missing
-from rosvar.interpreter.substitution import (
+from rosvar.logic.bdd import BDD
+from rosvar.logic.choice import Choice, Fail, combine
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.terms import Operand, concat, is_term
+from rosvar.ros1.scope import Scope, _Missing
+from rosvar.ros1.substitutions import (
     MAX_COMBINATIONS,
     Substituter,
     SubstitutionError,
     collect,
     too_complex,
 )
-from rosvar.logic.bdd import BDD
-from rosvar.logic.choice import Choice, Fail, combine
-from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.terms import Operand, concat, is_term
 
 XACRO_COMMANDS: Final = ("find", "env", "optenv", "dirname", "arg")
 """The ``$()`` commands xacro accepts (roslaunch's without ``anon``; ``eval`` when whole)."""

@@ -9,13 +9,14 @@ from rosvar.analyses.robot_description import xacro_tags  # noqa: F401 - registe
 from rosvar.analyses.robot_description.document import Description
 from rosvar.analyses.robot_description.xacro import Expansion
 from rosvar.files import Confinement, FileRefused, read_file
-from rosvar.frontends.ros1_xml.parser import ParseResult, parse_xml_bytes
+from rosvar.frontends.entity import ParseResult
+from rosvar.frontends.xml import parse_xml_bytes
 from rosvar.interpreter.model import Raw
-from rosvar.interpreter.scope import _Missing
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import Slot
+from rosvar.ros1.scope import _Missing
 
 
 class XacroReader:

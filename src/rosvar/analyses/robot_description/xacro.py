@@ -30,16 +30,15 @@ from rosvar.analyses.robot_description.evaluation import Evaluator, Value, store
 from rosvar.analyses.robot_description.literals import Deferred, read_literal, text_of, truth
 from rosvar.analyses.robot_description.symbols import ABSENT, Lazy, Table
 from rosvar.diagnostics import DiagnosticSink, Location
-from rosvar.frontends.entity import Entity
-from rosvar.frontends.ros1_xml.parser import ParseResult
+from rosvar.frontends.entity import Entity, ParseResult
 from rosvar.interpreter.model import Raw
-from rosvar.interpreter.scope import Scope, _Missing
-from rosvar.interpreter.substitution import Substituter, too_complex
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, EnvInput, Slot
 from rosvar.logic.terms import Apply, Hole, Term, TermError, is_term, register
+from rosvar.ros1.scope import Scope, _Missing
+from rosvar.ros1.substitutions import Substituter, too_complex
 
 MAX_ELEMENTS: Final = 200_000
 """Elements one expansion may make (a macro that calls itself twice per level doubles them

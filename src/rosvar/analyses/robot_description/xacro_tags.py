@@ -31,9 +31,9 @@ from rosvar.analyses.robot_description.xacro import (
 )
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.model import Raw
-from rosvar.interpreter.scope import MISSING, _Missing
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, ite
+from rosvar.ros1.scope import MISSING, _Missing
 
 
 @handler("insert_block")
