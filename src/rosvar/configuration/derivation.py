@@ -574,6 +574,7 @@ class Derivation:
         false, position = self.manager.false, self.position
         best: dict[BDD, tuple[int, int, int] | None] = {self.manager.true: (0, 0, 0), false: None}
         for node in children_first(goal, cofactors, best):
+            assert node.var is not None  # the constants are in ``best`` already
             bit = 1 << position[node.var]
             has = bool(witness & bit)
             found = None

@@ -256,7 +256,8 @@ class LaunchModel:
     where nothing set them yet, so the command line can (name -> the declaring file)."""
     anon_ids: set[str] = field(default_factory=set)  # bases of the $(anon) names generated
     anon_count: Choice[int] | None = None  # how many, per configuration
-    loads: BDD = None  # configurations in which roslaunch loads the file without error
+    loads: BDD = field(kw_only=True)
+    """The configurations in which the file loads without error (the walk's ``finish``)."""
 
 
 def anon_pattern(bases: Collection[str]) -> re.Pattern[str] | None:
