@@ -23,8 +23,8 @@ from rosvar.analyses.conflicts import Clash, DeclarationKind
 from rosvar.analyses.feature_model.features import ConstraintKind, name_of
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.derivation import Decisions
+from rosvar.configuration.judgement import Typed
 from rosvar.configuration.lowering import Lowering
-from rosvar.configuration.presence import Typed
 from rosvar.logic.bdd import BDD, and_exists, conjoin, walked_support
 
 REQUIRES_LIMIT = 100_000
