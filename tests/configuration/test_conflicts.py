@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 import pytest
 
 from configuration.helpers import configurator, run
-from configuration.test_presence import FILES as PRESENCE_FILES
+from configuration.test_judgement import FILES as PRESENCE_FILES
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration import conflicts
 from rosvar.configuration.conflicts import _blocks

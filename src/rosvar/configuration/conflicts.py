@@ -20,11 +20,11 @@ from enum import StrEnum
 from itertools import count
 
 from rosvar.analyses.conflicts import Clash, DeclarationKind
-from rosvar.analyses.feature_model.features import ConstraintKind
+from rosvar.analyses.feature_model.features import ConstraintKind, name_of
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.derivation import Decisions
+from rosvar.configuration.judgement import Typed
 from rosvar.configuration.lowering import Lowering
-from rosvar.configuration.presence import Typed
 from rosvar.logic.bdd import BDD, and_exists, conjoin, walked_support
 
 REQUIRES_LIMIT = 100_000
@@ -110,7 +110,7 @@ class Conflicts:
             pair = (solver.var(a.variable), solver.var(b.variable))
             both = pair[0] & pair[1]
             # the bounds are ``fixed`` copied with atoms quantified: no other variables
-            support = space.support(fixed) | {file.var for file in pair}
+            support = space.support(fixed) | {name_of(a.variable), name_of(b.variable)}
             touched = tuple(sorted({block_of[v] for v in support & members[component_of[a.id]]}))
             if touched not in withins:
                 withins[touched] = (

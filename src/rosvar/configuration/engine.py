@@ -21,10 +21,11 @@ from rosvar.configuration.catalog import Catalog, Feature
 from rosvar.configuration.choices import Action, ChoiceError, Refusal, UserChoice
 from rosvar.configuration.command import Launch, command_line, group
 from rosvar.configuration.conflicts import Conflicts, ConflictState
-from rosvar.configuration.derivation import Decisions, Derivation, Presence
+from rosvar.configuration.derivation import Decisions, Derivation
 from rosvar.configuration.graph import Render, VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
+from rosvar.configuration.presence import Presence
 from rosvar.configuration.view import Graph, Summary, Views
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.inputs import OTHER, UNSET

@@ -526,8 +526,8 @@ class VariationalGraph:
                 continue
             used = condition
             if entry.when is not None:
-                when = entry_when(self.params, node, launched, interface, entry.when)
-                used &= self.lowering.fix(when.condition)
+                hinted = entry_when(self.params, node, launched, interface, entry.when)
+                used &= self.lowering.fix(hinted.condition)
             for when, resolved in entry_names(launched, remaps, entry, used):
                 fixed, bounds = self.lowering.lower(when)
                 if "{" in resolved or not self.lowering.satisfiable(fixed):

@@ -167,6 +167,7 @@ class Sat:
         """Clauses for every node under ``root`` not translated yet, children first."""
         nodes, clauses = self._nodes, []
         for node in children_first(root, _inner_children, nodes):
+            assert node.var is not None  # an inner node
             n, x = self._variable(), self._atoms[node.var]
             nodes[node] = n
             low, high = (self._literal(child) for child in cofactors(node))  # a regular node

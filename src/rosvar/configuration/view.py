@@ -15,7 +15,7 @@ from itertools import accumulate, chain
 
 from rosvar.configuration.catalog import Catalog, FileEntry
 from rosvar.configuration.conflicts import Conflicts, ConflictState
-from rosvar.configuration.derivation import Decisions, Derivation, Presence
+from rosvar.configuration.derivation import Decisions, Derivation
 from rosvar.configuration.graph import (
     NAMED,
     Element,
@@ -26,9 +26,10 @@ from rosvar.configuration.graph import (
     Values,
     VariationalGraph,
 )
+from rosvar.configuration.judgement import Judged, Judgement, Presences, Typed
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
-from rosvar.configuration.presence import Judged, Judgement, Presences, Typed
+from rosvar.configuration.presence import Presence
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace

@@ -116,7 +116,9 @@ class Interpretation(Generic[S]):
         # nodes after their manager, which CUDD reports as an error.
         self.substituter = substituter(self)
         inputs: dict[str, ArgInput] = {}
-        self.model = LaunchModel(file=file, space=space, inputs=inputs, domains={})
+        self.model = LaunchModel(
+            file=file, space=space, inputs=inputs, domains={}, loads=space.true
+        )
         self.default_machine: Choice[Raw | None] = Choice.const(space, None)
         self.anon_count: Choice[int] = Choice.const(space, 0)
         self.stack: list[str] = []

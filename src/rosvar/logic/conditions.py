@@ -10,10 +10,10 @@ t" (decided only when a configuration makes t concrete). Everything that asks
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
-from typing import Any, cast
+from typing import Any
 
 from rosvar.logic.atoms import PREDICATES, Atom, FileAtom, PredicateAtom, SlotAtom
-from rosvar.logic.bdd import BDD, cofactor, evaluate, new_manager, walked_support
+from rosvar.logic.bdd import BDD, Manager, cofactor, evaluate, new_manager, walked_support
 from rosvar.logic.inputs import OTHER, UNSET, Input, Slot
 from rosvar.logic.printer import Printer
 from rosvar.logic.terms import Term, term_inputs
@@ -45,7 +45,7 @@ def memory_estimate(files: int) -> int:
     return min(MAX_MEMORY, max(MIN_MEMORY, files * MEMORY_PER_FILE))
 
 
-def exactly_one(manager: Any, variables: Sequence[BDD]) -> BDD:
+def exactly_one(manager: Manager, variables: Sequence[BDD]) -> BDD:
     """Exactly one of ``variables`` holds (an xor-group), in ``manager``.
 
     Built in one pass (none so far / exactly one so far), not as the disjunction of one
@@ -176,7 +176,7 @@ class ConditionSpace:
         BDD that is large next to the number of variables.
         """
         if u.dag_size * SUPPORT_WALK_FACTOR > len(self._atoms):
-            return cast(set[str], self.bdd.support(u))
+            return self.bdd.support(u)
         return walked_support(u)
 
     def constrain(self, constraint: BDD) -> None:

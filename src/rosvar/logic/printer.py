@@ -379,6 +379,7 @@ def _isop(
     if found is not None:
         return found
     name = lower.var if upper.var is None or lower.level <= upper.level else upper.var
+    assert name is not None  # neither is a constant: those returned above
     lower_0, lower_1 = _split(lower, name)
     upper_0, upper_1 = _split(upper, name)
     cover_0, cubes_0 = _isop(lower_0 & ~upper_1, upper_0, memo, budget)

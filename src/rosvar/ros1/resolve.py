@@ -24,6 +24,7 @@ from rosvar.interpreter.model import (
     anon_pattern,
 )
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import ArgInput, EnvInput, Input
 from rosvar.logic.terms import Apply, Hole, PackageTable, TermError, evaluate
@@ -128,7 +129,7 @@ class Restriction:
                 lambda m: f"{m.group(1)}_anon{int(m.group(2)) + offset}", text
             )
 
-    def holds(self, condition: object) -> bool:
+    def holds(self, condition: BDD) -> bool:
         return self.space.evaluate(condition, self.assignment)
 
     def evaluate(self, value: Raw, location: Location, what: str) -> str:

@@ -275,7 +275,7 @@ after minutes. Real systems link a few files per file (the corpus at most 4, gen
 workspaces shaped like it 12), so a workspace of many systems gets a budget that grows
 with it; where every file shares names with a hundred others (the uniform shape, whose
 files at one position in every package declare the same names) the constraints form a
-grid whose diagram outgrows any budget (docs/performance.md, session 10).
+grid whose diagram outgrows any budget (docs/performance.md, "Feature model", budgets).
 """
 
 

@@ -201,6 +201,7 @@ def _cheapest(space: ConditionSpace, u: BDD, memo: dict[BDD, Path]) -> Path:
     if u in memo:
         return memo[u]
     var = u.var
+    assert var is not None  # neither constant
     low, high = cofactors(u)
     low_cost, low_path = _cheapest(space, low, memo)
     high_cost, high_path = _cheapest(space, high, memo)

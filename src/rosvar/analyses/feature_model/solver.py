@@ -239,8 +239,8 @@ CUT_BUDGET = 300
 before the solver is not attempted. The corpus and the generated workspaces shaped like it
 stay below 110, whatever their size (systems side by side are ordered apart); workspaces
 whose files each clash with dozens of others cross it at a hundred files, and their
-diagrams outgrow the memory budget only after many seconds (docs/performance.md, session
-10)."""
+diagrams outgrow the memory budget only after many seconds (docs/performance.md, "Feature
+model", budgets)."""
 
 
 def build(

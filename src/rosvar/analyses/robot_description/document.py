@@ -76,11 +76,11 @@ class Description:
     condition: BDD
     root: XElement | None
     failures: list[Failure] = field(default_factory=list)
-    unknown: BDD = None
-    """Where a part was not followed (a file named by an unknown value, rosvar's limits):
-    the description is then incomplete."""
     diagnostics: list[Diagnostic] = field(default_factory=list)
     files: list[str] = field(default_factory=list)
+    unknown: BDD = field(kw_only=True)
+    """Where a part was not followed (a file named by an unknown value, rosvar's limits):
+    the description is then incomplete."""
 
     @property
     def fails(self) -> BDD:

@@ -210,9 +210,9 @@ class Expansion:
             self.condition,
             element,
             self.failures,
-            self.unknown,
             self.sink.items,
             self.read,
+            unknown=self.unknown,
         )
 
     def close(self) -> None:

@@ -11,7 +11,6 @@ from typing import TypeVar, cast
 
 from rosvar.analyses.communication import JSON_SIDES, SIDES
 from rosvar.analyses.json_values import json_value
-from rosvar.configuration.derivation import Presence
 from rosvar.configuration.graph import (
     ChannelContent,
     Content,
@@ -28,6 +27,7 @@ from rosvar.configuration.graph import (
     YamlContent,
     topic_name,
 )
+from rosvar.configuration.presence import Presence
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import DeferredValue, NodeDecl, ParamSource, Raw
 from rosvar.logic.terms import is_term

@@ -29,9 +29,10 @@ from rosvar.analyses.feature_model.operations import simplest_trigger
 from rosvar.analyses.query.channels import KINDS, channel_collections
 from rosvar.analyses.query.collections import Kind
 from rosvar.analyses.query.evaluator import QueryEngine
-from rosvar.configuration.derivation import Decisions, Presence, PresenceVerdict
+from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.lowering import Bounds
+from rosvar.configuration.presence import Presence, PresenceVerdict
 from rosvar.configuration.view import Graph
 from rosvar.diagnostics import Severity
 from rosvar.logic.bdd import BDD

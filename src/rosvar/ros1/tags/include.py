@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from typing import cast
-
 from rosvar.files import FileRefused
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.booleans import bool_value
@@ -15,7 +13,6 @@ from rosvar.interpreter.interpretation import (
     split,
 )
 from rosvar.interpreter.model import IncludeDecl, Raw
-from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.ros1.dialect import tag
 from rosvar.ros1.scope import MISSING, Scope
@@ -111,7 +108,7 @@ def _include(
         it.stack.pop()
     if not pass_all:
         for name, where in passed_where.items():
-            declared_here = cast(BDD, child.declared.get(name, it.space.false))
+            declared_here = child.declared.get(name, it.space.false)
             unused = where & ~declared_here
             it.fail(unused, "include-arg-unused", f"unused args [{name}] for include of [{file}]")
 
