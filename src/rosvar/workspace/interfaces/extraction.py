@@ -32,6 +32,7 @@ from rosvar.workspace.interfaces.cpp.extract import extract_node
 from rosvar.workspace.interfaces.cpp.unit import Unit
 from rosvar.workspace.interfaces.model import Extracted, Interfaces, NodeInterface, NodeKind
 from rosvar.workspace.interfaces.nodelets import nodelet_classes
+from rosvar.workspace.interfaces.python_modules import module_file
 from rosvar.workspace.interfaces.reading import SourceReader
 from rosvar.workspace.packages import Package
 
@@ -86,10 +87,12 @@ def extract_package(
         owner = nodelet.type.rsplit("::", 1)[-1]
         entries = extract_node(unit, "onInit", owner, sink, nodelet.location).entries
         nodes.append(NodeInterface(package.name, nodelet.name, NodeKind.NODELET, entries))
+    python_roots = [package.path, os.path.join(package.path, "src")]
     for script in _python_scripts(package.path, build, reader):
-        node(os.path.basename(script), NodeKind.NODE, python.extract_node(script, sink, reader))
+        found = python.extract_node(script, sink, reader, python_roots)
+        node(os.path.basename(script), NodeKind.NODE, found)
     for executable, module in console_scripts(package.path).items():
-        path = _module_file(package.path, module)
+        path = module_file(python_roots, module)
         if path is None:
             sink.warning(
                 "interface-no-module",
@@ -97,7 +100,7 @@ def extract_package(
                 Location(os.path.join(package.path, "setup.py")),
             )
             continue
-        node(executable, NodeKind.NODE, python.extract_node(path, sink, reader))
+        node(executable, NodeKind.NODE, python.extract_node(path, sink, reader, python_roots))
     return sorted(nodes, key=lambda node: node.executable)
 
 
@@ -117,17 +120,6 @@ def _components(sources: list[str], reader: SourceReader) -> list[str]:
             if plugin not in found:
                 found.append(plugin)
     return found
-
-
-def _module_file(package_dir: str, module: str) -> str | None:
-    """The file of Python module ``module`` (dotted) in an ament_python package."""
-    relative = module.replace(".", os.sep)
-    for root in (package_dir, os.path.join(package_dir, "src")):
-        for candidate in (relative + ".py", os.path.join(relative, "__init__.py")):
-            path = os.path.join(root, candidate)
-            if os.path.isfile(path):
-                return path
-    return None
 
 
 def extract_interfaces(
