@@ -28,12 +28,13 @@ from typing import TypeVar
 from rosvar.analyses.param_values import ROS2_PARAMETERS, ParamValues, Unknown, param_default
 from rosvar.analyses.when import When, concrete_holds, when_condition
 from rosvar.diagnostics import Location
-from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
+from rosvar.interpreter.model import LaunchModel, NodeDecl, NodeSchema, Raw
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
-from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
+from rosvar.ros.version import RosVersion
+from rosvar.ros2.conventions.namespaces import make_absolute
 from rosvar.workspace.interfaces.model import (
     INDEX,
     Default,
@@ -76,18 +77,6 @@ JSON_SIDES: dict[Channel, tuple[str, str]] = {
 }
 
 
-FIELDS = ("pkg", "type", "namespace", "name", "args")
-"""The fields of a ``<node>`` that say what runs where (:meth:`LaunchedNode.of`)."""
-ROS2_FIELDS = (*FIELDS, "ros_namespace", "plugin")
-"""ROS 2's: the namespace pushed around the node, a composable node's class."""
-
-
-def node_fields(node: NodeDecl) -> tuple[str, ...]:
-    """The fields :meth:`LaunchedNode.of` reads of ``node`` (a ROS 2 declaration carries the
-    pushed namespace)."""
-    return ROS2_FIELDS if node.ros2 else FIELDS
-
-
 @dataclass(frozen=True)
 class LaunchedNode:
     """A ``<node>`` as one configuration (or one branch of its fields) has it."""
@@ -102,15 +91,20 @@ class LaunchedNode:
     ros2: bool = False
 
     @staticmethod
-    def of(fields: Mapping[str, object], remaps: Sequence[tuple[str, str]] = ()) -> LaunchedNode:
-        """The node of field values (those of :func:`node_fields`; absent ones None)."""
-        package, type_, namespace, name, args = (_text(fields.get(key)) for key in FIELDS)
-        if "ros_namespace" not in fields:
-            return LaunchedNode(package, type_, namespace, name, args, remaps)
-        pushed = _text(fields.get("ros_namespace")) or None
-        combined = make_absolute(prefix_namespace(pushed, namespace or None)) or names.SEP
-        plugin = _text(fields.get("plugin"))
-        return LaunchedNode(package, type_, combined, name, args, remaps, plugin, ros2=True)
+    def of(schema: NodeSchema, fields: Mapping[str, Raw | None]) -> LaunchedNode:
+        """The node of one variant's field values (``schema.launched``; absent ones None),
+        a part not known statically shown as ``{term}``."""
+        texts = {key: _text(fields.get(key)) for key in schema.launched}
+        return LaunchedNode(
+            _text(schema.package.text(texts)),
+            _text(schema.executable.text(texts)),
+            schema.namespace.text(texts) or names.SEP,
+            _text(schema.name.text(texts)),
+            _text(schema.args.text(texts)),
+            (),
+            _text(schema.plugin.text(texts)),
+            ros2=schema.version is RosVersion.ROS2,
+        )
 
     def named(self, interface: NodeInterface) -> LaunchedNode:
         """ROS 2: without a launch ``name``, the node has the one its code gives it
@@ -189,12 +183,12 @@ def launched_units(
 ) -> Iterator[tuple[BDD, LaunchedNode, NodeInterface, bool]]:
     """Per branch of a ``<node>``'s fields: its condition, the node, the interface it runs
     and whether every field is known statically (nodes without a known interface skipped)."""
-    keys = node_fields(node)
+    keys = node.schema.launched
     for condition, values in combine([node.field(key) for key in keys], list):
         condition &= node.condition
         if condition == space.false:
             continue
-        launched = LaunchedNode.of(dict(zip(keys, values, strict=True)))
+        launched = LaunchedNode.of(node.schema, dict(zip(keys, values, strict=True)))
         unit = launched.unit()
         interface = None if unit is None else find_interface(interfaces, unit)
         if interface is not None:
@@ -489,27 +483,24 @@ def _resolved_uses(
 def _resolved_node(node: Mapping[str, object]) -> LaunchedNode:
     """A node of ``rosvar resolve`` (ROS 2's carry their ``executable``, their namespace
     already composed)."""
-    ros2 = "executable" in node
-    remaps = node.get("remappings" if ros2 else "remaps") or []
+    remaps = node.get("remappings" if "executable" in node else "remaps") or []
     assert isinstance(remaps, list)
-    fields = (
-        {
-            "pkg": node.get("package"),
-            "type": node.get("executable"),
-            "ros_namespace": node.get("namespace"),
-            "name": node.get("name"),
-            "plugin": node.get("plugin"),
-        }
-        if ros2
-        else {
-            "pkg": node.get("package"),
-            "type": node.get("type"),
-            "namespace": node.get("namespace"),
-            "name": str(node["name"]).rsplit(names.SEP, 1)[-1],
-            "args": node.get("args"),
-        }
+    pairs = [(str(a), str(b)) for a, b in remaps]
+    if "executable" in node:
+        namespace = make_absolute(_text(node.get("namespace")) or None) or names.SEP
+        name, plugin = _text(node.get("name")), _text(node.get("plugin"))
+        executable = _text(node.get("executable"))
+        return LaunchedNode(
+            _text(node.get("package")), executable, namespace, name, "", pairs, plugin, True
+        )
+    return LaunchedNode(
+        _text(node.get("package")),
+        _text(node.get("type")),
+        _text(node.get("namespace")),
+        str(node["name"]).rsplit(names.SEP, 1)[-1],
+        _text(node.get("args")),
+        pairs,
     )
-    return LaunchedNode.of(fields, [(str(a), str(b)) for a, b in remaps])
 
 
 def _param_value(
