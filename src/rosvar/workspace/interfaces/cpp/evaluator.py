@@ -392,7 +392,8 @@ class Evaluator:
         ``arguments``."""
         if apis.RCLCPP_NODE.search(type_text.replace(" ", "")):
             return Handle(Text(""), rclcpp=True)
-        type_name = syntax.last(type_text.replace(" ", "").split("<")[0])
+        bare = re.sub(r"\b(const|volatile)\b|[&*\s]", "", type_text)
+        type_name = syntax.last(bare.split("<")[0])
         if type_name == "NodeHandle":
             values = [self.evaluate(argument, function) for argument in arguments]
             parent = values[0] if values and isinstance(values[0], Handle) else None
@@ -478,6 +479,12 @@ class Evaluator:
         for site in self.sites(function):
             if index < len(site.arguments):
                 values.add(self.evaluate(site.arguments[index], site.caller))
+            elif (default := function.defaults.get(index)) is not None:  # = {"~"}
+                braces = next(syntax.walk(default, {"initializer_list"}), None)
+                built = None
+                if braces is not None:
+                    built = self.construct(type_text, list(braces.named_children), function)
+                values.add(built if built is not None else self.evaluate(default, function))
         name = function.parameters[index][1]
         if len(values) == 1 and None not in values:
             return values.pop()
