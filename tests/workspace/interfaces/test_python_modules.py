@@ -124,3 +124,34 @@ def test_modules_of_the_package_make_the_interface(tmp_path: Path) -> None:
         ("publishes", "/tf_static", "tf2_msgs/msg/TFMessage"),
     ]
     assert [d for d in ros1.diagnostics + ros2.diagnostics if d.code != "interface-python2"] == []
+
+
+def test_a_dotted_import_and_a_class_used_for_one_method(tmp_path: Path) -> None:
+    """nmea_navsat_driver: ``import lib.nodes.reader; lib.nodes.reader.main()``, whose module
+    calls only ``Driver.get_frame_id()`` (a static method: the driver's topics are not its)."""
+    _write(
+        tmp_path,
+        {
+            "nmea/package.xml": MANIFEST.format(name="nmea", build="catkin"),
+            "nmea/scripts/reader": "#!/usr/bin/env python\nimport lib.nodes.reader\n"
+            "lib.nodes.reader.main()\n",
+            "nmea/src/lib/__init__.py": "",
+            "nmea/src/lib/nodes/__init__.py": "",
+            "nmea/src/lib/nodes/reader.py": "import rospy\nfrom nmea_msgs.msg import Sentence\n"
+            "from lib.driver import Driver\n"
+            "def main():\n    rospy.Publisher('nmea_sentence', Sentence)\n"
+            "    Driver.get_frame_id()\n",
+            "nmea/src/lib/driver.py": "import rospy\nfrom sensor_msgs.msg import NavSatFix\n"
+            "class Driver:\n    def __init__(self):\n"
+            "        rospy.Publisher('fix', NavSatFix)\n"
+            "    @staticmethod\n    def get_frame_id():\n"
+            "        return rospy.get_param('~frame_id', 'gps')\n",
+        },
+    )
+    interfaces = extract_interfaces(discover([tmp_path / "nmea"]).packages.values())
+    reader = interfaces.find("nmea", "reader")
+    assert reader is not None
+    assert [(str(e.role), e.name) for e in reader.entries] == [
+        ("publishes", "nmea_sentence"),
+        ("params", "~frame_id"),
+    ]

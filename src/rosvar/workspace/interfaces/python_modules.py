@@ -5,8 +5,9 @@ A node's script is often a few lines that import a class from the package's Pyth
 module importing its node class); the interfaces are made there. The package's own modules
 are those found below its folder or its ``src/`` (as ``catkin_python_setup`` and
 ``ament_python`` install them); anything else is a library, not followed. Of a module
-imported as ``from m import A``, what runs is ``A`` (and the definitions of ``m`` it names,
-its base classes among them) and ``m``'s module-level statements (run on import, its
+imported as ``from m import A``, what runs is ``A`` (only ``A.f`` when the script only calls
+``A.f``; and the definitions of ``m`` it names, its base classes among them) and ``m``'s
+module-level statements (run on import, its
 ``if __name__ == "__main__"`` block left out); ``import m`` takes all of ``m``. Modules are
 parsed, never imported, at most :data:`MAX_MODULES` per node.
 """
@@ -72,24 +73,28 @@ def _used_imports(
     (of the module's top level or inside them), or that re-export a ``wanted`` name:
     (file, the names taken from it, None for all)."""
     used = set(wanted)
+    plain = set(wanted)  # used other than as ``name.attribute``
     attributes: dict[str, set[str]] = {}
     imports: list[ast.Import | ast.ImportFrom] = [
         node for node in tree.body if isinstance(node, ast.Import | ast.ImportFrom)
     ]
     for part in parts:
+        bases = {id(n.value) for n in ast.walk(part) if isinstance(n, ast.Attribute)}
         for node in ast.walk(part):
             if isinstance(node, ast.Name):
                 used.add(node.id)
-            elif isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
-                attributes.setdefault(node.value.id, set()).add(node.attr)
+                if id(node) not in bases:
+                    plain.add(node.id)
+            elif isinstance(node, ast.Attribute) and (base := _dotted(node.value)):
+                attributes.setdefault(base, set()).add(node.attr)  # pkg.mod.main: main
             elif isinstance(node, ast.Import | ast.ImportFrom) and node not in imports:
                 imports.append(node)
     for node in imports:
         if isinstance(node, ast.Import):
             for alias in node.names:
-                bound = alias.asname or alias.name.split(".")[0]
+                bound = alias.asname or alias.name
                 file = module_file(roots, alias.name)
-                if file is not None and bound in used:
+                if file is not None and bound.split(".")[0] in used:
                     yield file, attributes.get(bound) or None
             continue
         search = [_base(node, path)] if node.level else roots
@@ -102,7 +107,21 @@ def _used_imports(
             if submodule is not None:  # from pkg import mod: the module itself
                 yield submodule, attributes.get(bound) or None
             elif node.module and (file := module_file(search, node.module)) is not None:
-                yield file, None if alias.name == "*" else {alias.name}
+                if alias.name == "*":
+                    yield file, None
+                elif bound in plain:  # constructed or called: all of it
+                    yield file, {alias.name}
+                else:  # only Class.method: that method
+                    yield file, {f"{alias.name}.{a}" for a in attributes.get(bound, ())}
+
+
+def _dotted(node: ast.expr) -> str | None:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        base = _dotted(node.value)
+        return None if base is None else f"{base}.{node.attr}"
+    return None
 
 
 def _base(node: ast.ImportFrom, path: str) -> str:
@@ -131,6 +150,17 @@ def _select(module: Module, wanted: set[str] | None) -> list[ast.AST]:
         ]
     chosen = {id(part) for part in module.parts + added}
     pending = list(definitions) if wanted is None else [n for n in wanted if n in definitions]
+    for name in wanted or ():  # Class.method: only that method of the class
+        owner, _, method = name.partition(".")
+        if method and isinstance(definitions.get(owner), ast.ClassDef):
+            member = next(
+                (n for n in definitions[owner].body if getattr(n, "name", None) == method), None
+            )
+            if member is not None and id(member) not in chosen:
+                chosen.add(id(member))
+                added.append(member)
+                named = {n.id for n in ast.walk(member) if isinstance(n, ast.Name)}
+                pending.extend(n for n in named if n in definitions)
     while pending:
         definition = definitions[pending.pop()]
         if id(definition) in chosen:
