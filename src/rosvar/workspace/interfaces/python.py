@@ -220,6 +220,8 @@ class _Reader:
         read = self.param_read(node, depth)
         if read is not None:
             return read
+        if isinstance(node, ast.Call) and not node.args and self._node_name_call(node.func):
+            return Text("~")  # the node's own name: its private namespace itself
         name = _binding_name(node)
         if name is not None and name not in self.active:
             values = self.scope.strings.get(name, [])
@@ -232,6 +234,17 @@ class _Reader:
             finally:
                 self.active.discard(name)
         return Text.unknown(_unparse(node))
+
+    def _node_name_call(self, callee: ast.expr) -> bool:
+        """``rospy.get_name()`` or an rclpy node's ``self.get_name()``."""
+        if self.qualified(callee) == "rospy.get_name":
+            return True
+        return (
+            isinstance(callee, ast.Attribute)
+            and callee.attr == "get_name"
+            and isinstance(callee.value, ast.Name)
+            and callee.value.id == "self"
+        )
 
     def param_read(self, node: ast.expr, depth: int) -> ParamRef | None:
         """``rospy.get_param(name[, default])``; rclpy's ``declare_parameter(name[,
