@@ -502,7 +502,7 @@ class Evaluator:
         values: set[Value] = set()
         type_text = self.unit.fields.get(name, "")
         for write in self.unit.writes.get(name, []):
-            if not self._constructed(write.function):
+            if not self.constructed(write.function):
                 continue
             if write.arguments is not None:
                 built = self.construct(type_text, write.arguments, write.function)
@@ -512,7 +512,7 @@ class Evaluator:
             elif write.value is not None:
                 values.add(self.evaluate(write.value, write.function))
         for function, node in self._member_writes().get(name, []):
-            if self._constructed(function):
+            if self.constructed(function):
                 values.add(self.evaluate(node, function))
         values.discard(None)
         if len(values) == 1:
@@ -527,7 +527,7 @@ class Evaluator:
             )
         return None
 
-    def _constructed(self, function: Function | None) -> bool:
+    def constructed(self, function: Function | None) -> bool:
         """Whether a member write in ``function`` happens: not in a constructor overload that
         the reached code never calls with its number of arguments (``SlamGMapping gn;`` runs
         the default constructor, not the nodelet's ``SlamGMapping(nh, pnh)``). A class no
