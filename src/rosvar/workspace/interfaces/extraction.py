@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.files import Confinement
@@ -44,12 +44,16 @@ def extract_package(
     sink: DiagnosticSink,
     reader: SourceReader | None = None,
     extras: Mapping[str, list[str]] | None = None,
+    headers: Sequence[str] = (),
 ) -> list[NodeInterface]:
     """The nodes and nodelets of one package, in a stable order; its files read through
-    ``reader``, the CMake ``extras`` of the workspace's packages known by name."""
+    ``reader``, the CMake ``extras`` of the workspace's packages known by name, the include
+    folders of the workspace's packages (``headers``) searched after the package's own: a
+    wrapper class a dependency defines in a header (``nav2_util::SimpleActionServer``) is
+    read where it is used."""
     reader = reader or SourceReader(Confinement.of([package.path]), sink)
     build = read_build(package.path, package.name, reader, extras, sink)
-    include_dirs = [*build.include_dirs, os.path.join(package.path, "include")]
+    include_dirs = [*build.include_dirs, os.path.join(package.path, "include"), *headers]
     ros2 = package.ros_version is RosVersion.ROS2
     nodes: list[NodeInterface] = []
     where = Location(os.path.join(package.path, CMAKE_FILE))
@@ -133,10 +137,14 @@ def extract_interfaces(
     chosen = sorted(packages, key=lambda p: p.name)
     sink = DiagnosticSink()
     reader = SourceReader(confinement or Confinement.of(p.path for p in chosen), sink)
-    extras = {p.name: cmake_extras(p.path) for p in (*workspace, *chosen)}
+    everything = {p.path: p for p in (*workspace, *chosen)}.values()
+    extras = {p.name: cmake_extras(p.path) for p in everything}
+    headers = [
+        folder for p in everything if os.path.isdir(folder := os.path.join(p.path, "include"))
+    ]
     nodes: list[NodeInterface] = []
     for package in chosen:
-        nodes.extend(extract_package(package, sink, reader, extras))
+        nodes.extend(extract_package(package, sink, reader, extras, headers))
     return Interfaces(nodes, sink.items)
 
 
