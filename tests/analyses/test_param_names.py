@@ -5,11 +5,15 @@ graph of ``resolve`` in every configuration."""
 from __future__ import annotations
 
 import itertools
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from rosvar.analyses.communication import graph_json, model_edges, resolved_graph, restrict
 from rosvar.diagnostics import Location
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.ros1.resolve import Restriction, resolve
+from rosvar.ros2.resolve import resolve_ros2
+from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import (
     Entry,
@@ -23,7 +27,6 @@ from rosvar.workspace.interfaces.model import (
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
     from rosvar.analyses.communication import Edge
-    from rosvar.interpreter.workspace_models import Analysis
 
 FOLLOWER = """\
 import rospy
@@ -113,3 +116,62 @@ def test_an_indexed_parameter_names_one_use_per_parameter_set(ws: LaunchWorkspac
     assert {name for name, _ in found} == {"/imu/data", "/other/imu"}
     [(_, when)] = [f for f in found if f[0] == "/other/imu"]
     assert "second" in when
+
+
+RELAY_SETUP = """\
+from setuptools import setup
+setup(name='relay_py', entry_points={'console_scripts': ['relay = relay_py.relay:main']})
+"""
+RELAY = """\
+import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+class Relay(Node):
+    def __init__(self):
+        super().__init__('relay')
+        topic = self.declare_parameter('input', 'chatter').value
+        self.create_subscription(String, topic, None, 10)
+def main():
+    rclpy.spin(Relay())
+"""
+ROS2_LAUNCH = """\
+<launch>
+  <arg name="remote" default="false"/>
+  <node pkg="relay_py" exec="relay" name="relay" namespace="r1">
+    <param name="input" value="/remote/chatter" if="$(var remote)"/>
+  </node>
+</launch>
+"""
+MANIFEST = """\
+<package format="3"><name>{name}</name><version>0.0.0</version><description>d</description>
+<maintainer email="a@b.c">a</maintainer><license>MIT</license>
+<export><build_type>{build}</build_type></export></package>
+"""
+
+
+def test_a_ros2_nodes_own_parameters_name_its_uses(tmp_path: Path) -> None:
+    """ROS 2: the value the launch description gives the node's parameter, else the
+    default of its declaration; the restriction equals the graph of ``resolve``."""
+    package = tmp_path / "relay_py"
+    (package / "relay_py").mkdir(parents=True)
+    (package / "package.xml").write_text(MANIFEST.format(name="relay_py", build="ament_python"))
+    (package / "setup.py").write_text(RELAY_SETUP)
+    (package / "relay_py" / "__init__.py").write_text("")
+    (package / "relay_py" / "relay.py").write_text(RELAY)
+    (package / "launch").mkdir()
+    file = str(package / "launch" / "relay.launch.xml")
+    Path(file).write_text(ROS2_LAUNCH)
+    analysis = Analysis(discover([tmp_path]))
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    model = analysis.model(file)
+    edges = model_edges(analysis.space, model, interfaces)
+    assert {e.name for e in edges} == {"/r1/chatter", "/remote/chatter"}
+    for remote in ("true", "false"):
+        args = {"remote": remote}
+        resolution = resolve_ros2(analysis.workspace, file, args)
+        kept = restrict(edges, Restriction(analysis, model, args, {}).holds)
+        uses = [(e.node, e.role, e.name, e.type) for e in kept]
+        expected = resolved_graph(resolution.nodes, interfaces)
+        assert graph_json(uses) == expected
+        [topic] = expected["topics"]
+        assert topic["name"] == ("/remote/chatter" if remote == "true" else "/r1/chatter")

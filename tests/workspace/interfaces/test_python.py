@@ -123,3 +123,18 @@ def test_rclpy_names_read_from_parameters(tmp_path: Path) -> None:
         ("subscribes", "{input}", NamedBy("input"), "chatter"),
         ("publishes", "{output}", NamedBy("output"), None),
     ]
+
+
+def test_the_nodes_own_name(tmp_path: Path) -> None:
+    """turtlebot3_server: ``SimpleActionServer(rospy.get_name(), ...)`` serves at the node's
+    own name, which ``~`` names."""
+    path = tmp_path / "server.py"
+    path.write_text(
+        "import rospy, actionlib\nfrom demo.msg import DoAction\n"
+        "actionlib.SimpleActionServer(rospy.get_name(), DoAction, None)\n"
+        "rospy.Publisher(rospy.get_name() + '/state', DoAction)\n"
+    )
+    assert [(str(e.role), e.name) for e in extract(str(path), DiagnosticSink())] == [
+        ("action_servers", "~"),
+        ("publishes", "~/state"),
+    ]

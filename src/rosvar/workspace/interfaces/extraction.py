@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.files import Confinement
@@ -32,6 +32,7 @@ from rosvar.workspace.interfaces.cpp.extract import extract_node
 from rosvar.workspace.interfaces.cpp.unit import Unit
 from rosvar.workspace.interfaces.model import Extracted, Interfaces, NodeInterface, NodeKind
 from rosvar.workspace.interfaces.nodelets import nodelet_classes
+from rosvar.workspace.interfaces.python_modules import module_file
 from rosvar.workspace.interfaces.reading import SourceReader
 from rosvar.workspace.packages import Package
 
@@ -43,12 +44,16 @@ def extract_package(
     sink: DiagnosticSink,
     reader: SourceReader | None = None,
     extras: Mapping[str, list[str]] | None = None,
+    headers: Sequence[str] = (),
 ) -> list[NodeInterface]:
     """The nodes and nodelets of one package, in a stable order; its files read through
-    ``reader``, the CMake ``extras`` of the workspace's packages known by name."""
+    ``reader``, the CMake ``extras`` of the workspace's packages known by name, the include
+    folders of the workspace's packages (``headers``) searched after the package's own: a
+    wrapper class a dependency defines in a header (``nav2_util::SimpleActionServer``) is
+    read where it is used."""
     reader = reader or SourceReader(Confinement.of([package.path]), sink)
     build = read_build(package.path, package.name, reader, extras, sink)
-    include_dirs = [*build.include_dirs, os.path.join(package.path, "include")]
+    include_dirs = [*build.include_dirs, os.path.join(package.path, "include"), *headers]
     ros2 = package.ros_version is RosVersion.ROS2
     nodes: list[NodeInterface] = []
     where = Location(os.path.join(package.path, CMAKE_FILE))
@@ -86,10 +91,12 @@ def extract_package(
         owner = nodelet.type.rsplit("::", 1)[-1]
         entries = extract_node(unit, "onInit", owner, sink, nodelet.location).entries
         nodes.append(NodeInterface(package.name, nodelet.name, NodeKind.NODELET, entries))
+    python_roots = [package.path, os.path.join(package.path, "src")]
     for script in _python_scripts(package.path, build, reader):
-        node(os.path.basename(script), NodeKind.NODE, python.extract_node(script, sink, reader))
+        found = python.extract_node(script, sink, reader, python_roots)
+        node(os.path.basename(script), NodeKind.NODE, found)
     for executable, module in console_scripts(package.path).items():
-        path = _module_file(package.path, module)
+        path = module_file(python_roots, module)
         if path is None:
             sink.warning(
                 "interface-no-module",
@@ -97,7 +104,7 @@ def extract_package(
                 Location(os.path.join(package.path, "setup.py")),
             )
             continue
-        node(executable, NodeKind.NODE, python.extract_node(path, sink, reader))
+        node(executable, NodeKind.NODE, python.extract_node(path, sink, reader, python_roots))
     return sorted(nodes, key=lambda node: node.executable)
 
 
@@ -119,17 +126,6 @@ def _components(sources: list[str], reader: SourceReader) -> list[str]:
     return found
 
 
-def _module_file(package_dir: str, module: str) -> str | None:
-    """The file of Python module ``module`` (dotted) in an ament_python package."""
-    relative = module.replace(".", os.sep)
-    for root in (package_dir, os.path.join(package_dir, "src")):
-        for candidate in (relative + ".py", os.path.join(relative, "__init__.py")):
-            path = os.path.join(root, candidate)
-            if os.path.isfile(path):
-                return path
-    return None
-
-
 def extract_interfaces(
     packages: Iterable[Package],
     confinement: Confinement | None = None,
@@ -141,10 +137,14 @@ def extract_interfaces(
     chosen = sorted(packages, key=lambda p: p.name)
     sink = DiagnosticSink()
     reader = SourceReader(confinement or Confinement.of(p.path for p in chosen), sink)
-    extras = {p.name: cmake_extras(p.path) for p in (*workspace, *chosen)}
+    everything = {p.path: p for p in (*workspace, *chosen)}.values()
+    extras = {p.name: cmake_extras(p.path) for p in everything}
+    headers = [
+        folder for p in everything if os.path.isdir(folder := os.path.join(p.path, "include"))
+    ]
     nodes: list[NodeInterface] = []
     for package in chosen:
-        nodes.extend(extract_package(package, sink, reader, extras))
+        nodes.extend(extract_package(package, sink, reader, extras, headers))
     return Interfaces(nodes, sink.items)
 
 

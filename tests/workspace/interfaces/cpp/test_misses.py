@@ -240,3 +240,24 @@ int main() { rclcpp::spin(std::make_shared<Smoother>()); }
         ("{scan_topic}", NamedBy("scan_topic"), "scan"),
         ("{out_topic}", NamedBy("out_topic"), "cmd_vel_smoothed"),
     ]
+
+
+def test_default_arguments_of_a_constructor(tmp_path: Path) -> None:
+    """laser_filters: ``ScanToScanFilterChain(const ros::NodeHandle& nh = {}, const
+    ros::NodeHandle& pnh = {"~"})`` built as ``ScanToScanFilterChain t;``."""
+    source = """\
+class Chain {
+ public:
+  Chain(const ros::NodeHandle& nh = {}, const ros::NodeHandle& pnh = {"~"})
+      : nh_(nh), pnh_(pnh), sub_(nh_, "scan", 50) {
+    pub_ = pnh_.advertise<sensor_msgs::LaserScan>("filtered", 1);
+  }
+  ros::NodeHandle nh_, pnh_;
+  message_filters::Subscriber<sensor_msgs::LaserScan> sub_;
+};
+int main() { Chain t; }
+"""
+    assert _uses(_entries(tmp_path, source, ros2=False)) == [
+        ("subscribes", "scan", "sensor_msgs/LaserScan", 4),
+        ("publishes", "~filtered", "sensor_msgs/LaserScan", 5),
+    ]

@@ -392,7 +392,8 @@ class Evaluator:
         ``arguments``."""
         if apis.RCLCPP_NODE.search(type_text.replace(" ", "")):
             return Handle(Text(""), rclcpp=True)
-        type_name = syntax.last(type_text.replace(" ", "").split("<")[0])
+        bare = re.sub(r"\b(const|volatile)\b|[&*\s]", "", type_text)
+        type_name = syntax.last(bare.split("<")[0])
         if type_name == "NodeHandle":
             values = [self.evaluate(argument, function) for argument in arguments]
             parent = values[0] if values and isinstance(values[0], Handle) else None
@@ -458,10 +459,18 @@ class Evaluator:
 
     def sites(self, function: Function) -> list[CallSite]:
         """The reached calls of ``function`` (the constructions of its class, for a
-        constructor) that may bind its parameters; only the pinned one when it is pinned."""
+        constructor) that may bind its parameters; only the pinned one when it is pinned.
+        Without types, a call that several overloads accept by its number of arguments is
+        taken as the one with the fewest parameters (the others usually forward to it with
+        more, as a delegating constructor does)."""
         pinned = self.pinned.get(id(function))
         if pinned is not None:
             return [pinned]
+        shorter = [
+            f
+            for f in self.unit.functions.get(function.name, ())
+            if f.owner == function.owner and len(f.parameters) < len(function.parameters)
+        ]
         return [
             site
             for site in self.calls.get(function.name, [])
@@ -470,14 +479,47 @@ class Evaluator:
                 or function.owner is None
                 or function.owner in re.findall(r"\w+", site.receiver)
             )  # not a method of that name of another class
-            and len(site.arguments) <= len(function.parameters)
+            and self._accepts(function, site)
+            and not any(self._accepts(other, site) for other in shorter)
+            and self.constructed(site.caller)  # not from an overload nothing calls
         ]
+
+    def _accepts(self, function: Function, site: CallSite) -> bool:
+        """Whether ``site`` may call ``function``: its number of arguments, and no string
+        literal given for a parameter that is no string (nor a template's) or the reverse
+        (an overload taking the node's interfaces against one taking a name)."""
+        if len(site.arguments) not in self._arities(function):
+            return False
+        for argument, (type_text, _) in zip(site.arguments, function.parameters, strict=False):
+            literal = argument.type in ("string_literal", "concatenated_string")
+            textual = re.search(r"string|char|\bauto\b|&&", type_text) is not None or (
+                syntax.last(re.sub(r"\b(const|volatile)\b|[&*\s]", "", type_text))
+                in function.templates
+            )
+            if literal and not textual:
+                return False
+            if not literal and "string" in type_text and "interface" in syntax.text(argument):
+                return False
+        return True
+
+    def _arities(self, function: Function) -> range:
+        """How many arguments a call of ``function`` gives: at least those without a default
+        (in its definition or a declaration), at most all."""
+        count = len(function.parameters)
+        required = min(function.required, self.unit.required.get((function.name, count), count))
+        return range(required, count + 1)
 
     def _parameter_value(self, function: Function, index: int, type_text: str) -> Value:
         values: set[Value] = set()
         for site in self.sites(function):
             if index < len(site.arguments):
                 values.add(self.evaluate(site.arguments[index], site.caller))
+            elif (default := function.defaults.get(index)) is not None:  # = {"~"}
+                braces = next(syntax.walk(default, {"initializer_list"}), None)
+                built = None
+                if braces is not None:
+                    built = self.construct(type_text, list(braces.named_children), function)
+                values.add(built if built is not None else self.evaluate(default, function))
         name = function.parameters[index][1]
         if len(values) == 1 and None not in values:
             return values.pop()
@@ -495,7 +537,7 @@ class Evaluator:
         values: set[Value] = set()
         type_text = self.unit.fields.get(name, "")
         for write in self.unit.writes.get(name, []):
-            if not self._constructed(write.function):
+            if not self.constructed(write.function):
                 continue
             if write.arguments is not None:
                 built = self.construct(type_text, write.arguments, write.function)
@@ -505,7 +547,7 @@ class Evaluator:
             elif write.value is not None:
                 values.add(self.evaluate(write.value, write.function))
         for function, node in self._member_writes().get(name, []):
-            if self._constructed(function):
+            if self.constructed(function):
                 values.add(self.evaluate(node, function))
         values.discard(None)
         if len(values) == 1:
@@ -520,7 +562,7 @@ class Evaluator:
             )
         return None
 
-    def _constructed(self, function: Function | None) -> bool:
+    def constructed(self, function: Function | None) -> bool:
         """Whether a member write in ``function`` happens: not in a constructor overload that
         the reached code never calls with its number of arguments (``SlamGMapping gn;`` runs
         the default constructor, not the nodelet's ``SlamGMapping(nh, pnh)``). A class no
@@ -528,10 +570,7 @@ class Evaluator:
         if function is None or function.name != function.owner:
             return True
         sites = self.calls.get(function.name, [])
-        count = len(function.parameters)
-        required = min(function.required, self.unit.required.get((function.name, count), count))
-        arities = range(required, count + 1)
-        return not sites or any(len(s.arguments) in arities for s in sites)
+        return not sites or any(self._accepts(function, s) for s in sites)
 
     def _constant(self, name: str) -> Value:
         node = self.unit.constants.get(name)

@@ -35,6 +35,8 @@ def extract_node(
     collector = Collector(unit, evaluator, sink, ros2=ros2)
     built: set[str] = set()
     for function in sorted(reached, key=lambda f: (f.file, f.node.start_byte)):
+        if not evaluator.constructed(function):
+            continue  # a constructor overload no reached code calls with its arguments
         collector.scan(function)
         if function.owner == function.name and function.owner not in built:
             built.add(function.owner)

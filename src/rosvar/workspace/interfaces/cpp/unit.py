@@ -32,6 +32,8 @@ class Function:
     node: Node
     file: str
     required: int = 0  # the parameters without a default value
+    defaults: dict[int, Node] = field(default_factory=dict)
+    """The default arguments written in the definition, by parameter index."""
     templates: tuple[str, ...] = ()
     """Template parameters the construction or call names (a class template's for its
     methods, a function template's own), in order: ``ServiceT`` of ``ServiceClient<ServiceT>``."""
@@ -251,11 +253,15 @@ class Unit:
             owner = syntax.last(qualified.rsplit("::", 1)[0].split("<")[0])
         else:
             owner = syntax.enclosing_class(node)
-        parameters = []
+        parameters: list[tuple[str, str]] = []
         required = 0
+        defaults: dict[int, Node] = {}
         parameter_list = declarator.child_by_field_name("parameters")
         for parameter in parameter_list.named_children if parameter_list is not None else []:
             required += parameter.type == "parameter_declaration"
+            default = parameter.child_by_field_name("default_value")
+            if default is not None:
+                defaults[len(parameters)] = default
             type_node = parameter.child_by_field_name("type")
             name_node = parameter.child_by_field_name("declarator")
             name = syntax.declarator_name(name_node) if name_node is not None else None
@@ -270,6 +276,7 @@ class Unit:
             node,
             path,
             required=required,
+            defaults=defaults,
             templates=syntax.template_parameters(node),
         )
         self.functions.setdefault(function.name, []).append(function)
