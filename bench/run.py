@@ -49,6 +49,7 @@ BENCH = Path(__file__).resolve().parent
 REPO = BENCH.parent
 CORPUS = REPO.parent / "shared" / "corpus"
 EXTERNAL = CORPUS / "_external"
+ROS2_DATA = REPO / "tests" / "data" / "ros2"  # real ROS 2 repositories (their README.md)
 DOC = REPO / "docs" / "performance.md"
 
 TIMEOUT_S = 600.0
@@ -58,7 +59,7 @@ MEMORY_LIMIT_MB = 8192
 REPEATS = 3
 SINGLE_RUN_FROM = 2_000  # workloads this large are timed once: one run is minutes
 GENERATED_SIZES = (100, 400, 2_000, 10_000)
-GENERATED_PREFIXES = {"corpus": "gen", "uniform": "uni", "ros2": "ros2"}
+GENERATED_PREFIXES = {"corpus": "gen", "uniform": "uni", "ros2": "ros2", "ros2-dense": "ros2dense"}
 ROS2_FILES = 120  # bench/generate.py's ROS 2 workspace: 1,500 args, include trees 8 deep
 QUICK_SIZES = (100, 400)
 UNIFORM_SIZES = (400, 2_000)  # the issue's shape: 5 args, 5 conditional nodes, group, include
@@ -84,6 +85,7 @@ class Workload:
     package_path: str = ""
     size: int = 0  # nominal launch-file count (generated workloads); orders a family
     repeats: int = REPEATS
+    in_table: bool = True  # False: measured only by COMMANDS (or when named by --only)
 
 
 WORKLOADS: dict[str, Workload] = {}
@@ -100,9 +102,19 @@ def _corpus(system: str) -> Workload:
     return Workload(system, "corpus", prepare, package_path=str(EXTERNAL))
 
 
+def _ros2_repository(name: str) -> Workload:
+    """A real ROS 2 repository of the tests' data (``tests/data/ros2/NAME``)."""
+
+    def prepare(_scratch: Path) -> list[str]:
+        return [str(ROS2_DATA / name)]
+
+    return Workload(name, "ros2-real", prepare, in_table=False)
+
+
 def _generated(n_files: int, shape: str = "corpus") -> Workload:
     """A workspace of ``bench/generate.py``: ``gen-N`` shaped like the corpus, ``uni-N`` the
-    uniform shape of the workspace-scale issue (every file alike), ``ros2-N`` ROS 2's."""
+    uniform shape of the workspace-scale issue (every file alike), ``ros2-N`` ROS 2's,
+    ``ros2dense-N`` the slow ROS 2 system of issue 28 (denser includes, ``$(eval)``)."""
     prefix = GENERATED_PREFIXES[shape]
 
     def prepare(scratch: Path) -> list[str]:
@@ -131,6 +143,12 @@ for _size in UNIFORM_SIZES:
 
 # One size, measured in every run like a corpus system (size 0: not one of --sizes).
 register_workload(replace(_generated(ROS2_FILES, "ros2"), size=0))
+# Issue 28's large ROS 2 systems, measured as whole processes (COMMANDS) only: one run of
+# each took minutes in-process when they were added.
+ROS2_DENSE = f"ros2dense-{ROS2_FILES}"
+register_workload(replace(_generated(ROS2_FILES, "ros2-dense"), size=0, in_table=False))
+AUTOWARE = "autoware.universe"
+register_workload(_ros2_repository(AUTOWARE))
 
 
 # -- measurements inside the isolated process (run.py --one) -------------------------------
@@ -543,8 +561,11 @@ def _limit_memory() -> None:
     resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
 
 
-def run_bounded(command: Sequence[str], env: dict[str, str], stdout: bool = True) -> Finished:
-    """Run ``command`` with the timeout, keeping its own rusage (os.wait4) for peak RSS."""
+def run_bounded(
+    command: Sequence[str], env: dict[str, str], stdout: bool = True, timeout: float = TIMEOUT_S
+) -> Finished:
+    """Run ``command`` for at most ``timeout`` seconds, keeping its own rusage (os.wait4) for
+    peak RSS."""
     with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
         started = time.perf_counter()
         process = subprocess.Popen(
@@ -554,7 +575,7 @@ def run_bounded(command: Sequence[str], env: dict[str, str], stdout: bool = True
             env=env,
             preexec_fn=_limit_memory,
         )
-        deadline = started + TIMEOUT_S
+        deadline = started + timeout
         status: int | None = None
         maxrss = 0
         while time.perf_counter() < deadline:
@@ -579,9 +600,9 @@ def _env(workload: Workload) -> dict[str, str]:
     return {**os.environ, "ROS_PACKAGE_PATH": workload.package_path}
 
 
-def _failure(finished: Finished, what: str) -> str:
+def _failure(finished: Finished, what: str, timeout: float = TIMEOUT_S) -> str:
     if finished.returncode is None:
-        return f"{what}: timeout after {TIMEOUT_S:.0f} s"
+        return f"{what}: timeout after {timeout:.0f} s"
     tail = finished.stderr.strip().splitlines()[-1:] or ["no output"]
     return f"{what}: exit {finished.returncode} ({tail[0][:120]})"
 
@@ -625,18 +646,26 @@ def measure_whole_process(workload: Workload, roots: list[str], outcome: Outcome
 
 # -- whole processes as a user runs them -----------------------------------------------------
 COMMAND_REPEATS = 3
+SLOW_COMMAND_S = 20.0  # a command this slow is timed once: more runs would say nothing new
+LONG_COMMAND_CAP_S = 150.0  # the cap of issue 28's commands (67 s when the issue was filed)
 HAROSVAR = "harosvar"  # the paper's prototype (github.com/git-afsanos/harosvar), if installed
 
 
 @dataclass(frozen=True)
 class Command:
-    """A command line measured as a whole process: wall time (median of
-    ``COMMAND_REPEATS``) and peak RSS (the largest), with the targets of the issue."""
+    """A command line measured as a whole process: wall time (median of ``COMMAND_REPEATS``,
+    one run from ``SLOW_COMMAND_S``) and peak RSS (the largest), with the targets of the
+    issue: ``wall_s``/``peak_mb``, or ``within`` a factor of another command's wall time.
+    A run is stopped at ``cap_s`` (reported as over it); ``ok_codes`` are the exit codes of a
+    finished run (``check`` exits with 1 when it finds errors)."""
 
     name: str
     argv: Callable[[Path], list[str] | None]  # None: not available on this machine
     wall_s: float | None = None
     peak_mb: float | None = None
+    within: tuple[str, float] | None = None  # (another command's name, factor)
+    cap_s: float = TIMEOUT_S
+    ok_codes: tuple[int, ...] = (0,)
 
 
 def _rosvar(*words: str, workload: str | None = None) -> Callable[[Path], list[str]]:
@@ -678,6 +707,30 @@ COMMANDS: list[Command] = [
         _rosvar("analyze", workload=f"ros2-{ROS2_FILES}"),
         wall_s=2.0,
     ),
+    # issue 28: the large ROS 2 systems
+    Command(
+        f"rosvar analyze {ROS2_DENSE}",
+        _rosvar("analyze", workload=ROS2_DENSE),
+        wall_s=3.0,
+        peak_mb=300,
+        cap_s=LONG_COMMAND_CAP_S,
+    ),
+    *(
+        Command(
+            f"rosvar {name} {ROS2_DENSE}",
+            _rosvar(name, workload=ROS2_DENSE),
+            within=(f"rosvar analyze {ROS2_DENSE}", 2.0),
+            cap_s=LONG_COMMAND_CAP_S,
+            ok_codes=codes,
+        )
+        for name, codes in (("features", (0,)), ("check", (0, 1)))
+    ),
+    Command(
+        f"rosvar analyze {AUTOWARE}",
+        _rosvar("analyze", workload=AUTOWARE),
+        wall_s=10.0,
+        cap_s=LONG_COMMAND_CAP_S,
+    ),
     Command("harosvar uni-400 (the paper's prototype)", _harosvar),
 ]
 
@@ -690,11 +743,11 @@ class CommandOutcome:
     note: str = ""
 
 
-def measure_commands(scratch: Path) -> list[CommandOutcome]:
+def measure_commands(scratch: Path, only: Sequence[str] = ()) -> list[CommandOutcome]:
     """Each command of :data:`COMMANDS` in fresh processes, output to /dev/null, with an
     empty ROS_PACKAGE_PATH (the command line says everything)."""
     outcomes = []
-    for command in COMMANDS:
+    for command in [c for c in COMMANDS if not only or any(t in c.name for t in only)]:
         print(f"{command.name} ...", file=sys.stderr, flush=True)
         outcome = CommandOutcome(command)
         outcomes.append(outcome)
@@ -704,12 +757,18 @@ def measure_commands(scratch: Path) -> list[CommandOutcome]:
             continue
         walls, peaks = [], []
         for _ in range(COMMAND_REPEATS):
-            finished = run_bounded(argv, {**os.environ, "ROS_PACKAGE_PATH": ""}, stdout=False)
-            if finished.returncode != 0:
+            env = {**os.environ, "ROS_PACKAGE_PATH": ""}
+            finished = run_bounded(argv, env, stdout=False, timeout=command.cap_s)
+            if finished.returncode is None:
+                outcome.note = f"> {command.cap_s:.0f} s (cap)"
+                break
+            if finished.returncode not in command.ok_codes:
                 outcome.note = _failure(finished, "run")
                 break
             walls.append(finished.wall_ms)
             peaks.append(finished.peak_mb)
+            if finished.wall_ms >= SLOW_COMMAND_S * 1000:
+                break
         if walls:
             outcome.wall_ms, outcome.peak_mb = statistics.median(walls), max(peaks)
     return outcomes
@@ -719,6 +778,7 @@ def command_lines(outcomes: Sequence[CommandOutcome]) -> list[str]:
     """The commands' figures as a Markdown table, then a PASS/FAIL line per target."""
     lines = ["| command | wall s | peak MB | target |", "|---|---:|---:|---|"]
     verdicts = []
+    walls = {o.command.name: o.wall_ms for o in outcomes}
     for outcome in outcomes:
         command = outcome.command
         wall = None if outcome.wall_ms is None else outcome.wall_ms / 1000
@@ -726,6 +786,10 @@ def command_lines(outcomes: Sequence[CommandOutcome]) -> list[str]:
         if command.wall_s is not None:
             limits.append(f"≤ {command.wall_s:g} s")
             verdicts.append(_verdict(command.name, "wall", wall, command.wall_s, "s", outcome))
+        if command.within is not None:
+            other, factor = command.within
+            limits.append(f"≤ {factor:g} × `{other}`")
+            verdicts.append(_relative_verdict(command.name, wall, other, factor, walls, outcome))
         if command.peak_mb is not None:
             limits.append(f"≤ {command.peak_mb:g} MB")
             verdicts.append(
@@ -736,6 +800,25 @@ def command_lines(outcomes: Sequence[CommandOutcome]) -> list[str]:
             f"| `{command.name}` | {shown} | {_number(outcome.peak_mb)} | {', '.join(limits)} |"
         )
     return [*lines, "", *verdicts]
+
+
+def _relative_verdict(
+    name: str,
+    wall: float | None,
+    other: str,
+    factor: float,
+    walls: Mapping[str, float | None],
+    outcome: CommandOutcome,
+) -> str:
+    """PASS when ``wall`` is at most ``factor`` times the wall time of command ``other``."""
+    label = f"{name}: wall ≤ {factor:g} × {other}"
+    base = walls.get(other)
+    if wall is None or base is None:
+        why = outcome.note if wall is None else f"{other}: no figure"
+        return f"FAIL  {label}: {why or 'no figure'}"
+    limit = factor * base / 1000
+    status = "PASS" if wall <= limit else "FAIL"
+    return f"{status}  {label}: {wall:,.2f} s (limit {limit:,.2f} s)"
 
 
 def _verdict(
@@ -1327,12 +1410,16 @@ def write_doc(
         parts += [
             "## Whole processes, as a user runs them",
             "",
-            f"Wall time (median of {COMMAND_REPEATS}) and peak RSS (`wait4`'s `ru_maxrss`) "
-            "of each command in a fresh process, output to `/dev/null`, ROS_PACKAGE_PATH "
-            "empty; the targets are those of the workspace-scale issue. `uni-N` is "
-            "`bench/generate.py --shape uniform` (5 args, 5 conditional nodes, a group and "
-            f"an include per file); the paper's prototype (`{HAROSVAR}`) runs on the same "
-            "workspace where it is installed.",
+            f"Wall time (median of {COMMAND_REPEATS}; one run from {SLOW_COMMAND_S:.0f} s) "
+            "and peak RSS (`wait4`'s `ru_maxrss`) of each command in a fresh process, output "
+            "to `/dev/null`, ROS_PACKAGE_PATH empty; the targets are those of the "
+            "workspace-scale issue and of issue 28. `uni-N` is `bench/generate.py --shape "
+            "uniform` (5 args, 5 conditional nodes, a group and an include per file); the "
+            f"paper's prototype (`{HAROSVAR}`) runs on the same workspace where it is "
+            f"installed. `{ROS2_DENSE}` is `bench/generate.py --shape ros2-dense` (issue 28's "
+            "slow system: 120 XML files, 1,500 args, 340 includes, 180 `$(eval)`s), "
+            f"`{AUTOWARE}` the launch files of `tests/data/ros2/{AUTOWARE}`; their runs stop "
+            f"at {LONG_COMMAND_CAP_S:.0f} s.",
             "",
             *table,
             "",
@@ -1357,11 +1444,13 @@ def write_doc(
 
 
 def selected(options: argparse.Namespace) -> list[Workload]:
+    """The workloads of the table: those of the sizes asked for, or those named by --only
+    (also those otherwise measured as whole processes only)."""
     sizes = QUICK_SIZES if options.quick else options.sizes or GENERATED_SIZES
-    chosen = [w for w in WORKLOADS.values() if not w.size or w.size in sizes]
-    chosen.sort(key=lambda w: (w.size > 0, w.family, w.size))  # a family smallest first
+    chosen = [w for w in WORKLOADS.values() if w.in_table and (not w.size or w.size in sizes)]
     if options.only:
-        chosen = [w for w in chosen if w.name in options.only]
+        chosen = [w for w in WORKLOADS.values() if w.name in options.only]
+    chosen.sort(key=lambda w: (w.size > 0, w.family, w.size))  # a family smallest first
     return chosen
 
 
@@ -1388,7 +1477,8 @@ def run_all(options: argparse.Namespace) -> None:
                 if not measure(workload, roots, outcome) and workload.size:
                     failed.add(key)
         profiled = profile(WORKLOADS[options.profile], scratch) if options.profile else None
-        commands = [] if options.no_commands else command_lines(measure_commands(scratch))
+        measured = [] if options.no_commands else measure_commands(scratch, options.command or ())
+        commands = command_lines(measured) if measured else []
     print()
     print(text_table(outcomes))
     for outcome in outcomes:
@@ -1430,6 +1520,12 @@ def parse_options(argv: Sequence[str] | None = None) -> argparse.Namespace:
     )
     parser.add_argument(
         "--commands-only", action="store_true", help="only the whole-process command rows"
+    )
+    parser.add_argument(
+        "--command",
+        action="append",
+        metavar="TEXT",
+        help="only the whole-process commands whose name holds TEXT (repeatable)",
     )
     parser.add_argument("--profile", metavar="NAME", choices=sorted(WORKLOADS))
     parser.add_argument("--write-doc", action="store_true", help=f"write {DOC.relative_to(REPO)}")

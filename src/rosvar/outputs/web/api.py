@@ -18,7 +18,7 @@ from functools import cached_property
 from http import HTTPStatus
 from typing import TypeVar
 
-from rosvar.analyses.feature_model.model import FeatureKind
+from rosvar.analyses.feature_model.features import FeatureKind
 from rosvar.analyses.query.parser import QueryError
 from rosvar.configuration.choices import Action, ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
