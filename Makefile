@@ -90,9 +90,7 @@ test: setup
 	$(VPY) -m ruff format --check .
 	$(VPY) -m mypy
 	$(VPY) -m pytest -q --ignore=tests/outputs/web
-	# a renderer crash of Chromium under load ("Target crashed") is retried once; any
-	# other failure is not
-	$(VPY) -m pytest -q tests/outputs/web --reruns 1 --only-rerun "Target crashed"
+	$(VPY) -m pytest -q tests/outputs/web
 
 bench: setup
 	$(VPY) bench/run.py

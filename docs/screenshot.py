@@ -12,8 +12,8 @@ browser tests do) at 1600×1000 and the page saved as a user meets it:
 * ``web-first.png``: Husky's first view;
 * ``web-choice.png``: ``husky_playpen.launch`` selected;
 * ``web-fit.png``: then zoomed in by the user (the view stays), and *Fit* pressed;
-* ``web-ui.png``: then ``husky_empty_world.launch`` deselected and the playpen's args
-  unfolded in the tree, a configuration half done (the README's picture);
+* ``web-ui.png``: then ``husky_empty_world.launch`` deselected, the playpen's row scrolled
+  into view in the tree: a configuration half done (the README's picture);
 * ``web-external-first.png``, ``web-external-choice.png``: Husky with ``_external`` as a
   second root, first view and ``husky_playpen.launch`` selected.
 """
@@ -105,7 +105,6 @@ def husky(browser: Browser, corpus: Path, out: Path) -> None:
         page.screenshot(path=out / "web-fit.png")
         choose(page, EMPTY_WORLD, "deselect")
         playpen = file_id(page, PLAYPEN)
-        page.locator(f'.feature[data-id="{playpen}"] > summary .name').click()
         page.locator(f'.feature[data-id="{playpen}"]').scroll_into_view_if_needed()
         settled(page)
         page.screenshot(path=out / "web-ui.png")

@@ -22,7 +22,7 @@ from rosvar.configuration.choices import Action, ChoiceError, Refusal, UserChoic
 from rosvar.configuration.command import Launch, command_line, group
 from rosvar.configuration.conflicts import Conflicts, ConflictState
 from rosvar.configuration.derivation import Decisions, Derivation
-from rosvar.configuration.graph import Render, VariationalGraph
+from rosvar.configuration.graph import Fields, Render, VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.presence import Presence
@@ -79,6 +79,8 @@ class ConfigurationState:
     features: dict[str, FeatureState]
     conflicts: list[ConflictState]
     grapher: Callable[[], Graph] = field(repr=False)  # judged and rendered on first use
+    outliner: Callable[[], Graph] = field(repr=False)  # the same without conditions
+    describer: Callable[[Iterable[str]], dict[str, Fields]] = field(repr=False)
     summarizer: Callable[[], Summary] = field(repr=False)  # judged on first use
     complete: bool
     command: str | None
@@ -91,6 +93,16 @@ class ConfigurationState:
     def graph(self) -> Graph:
         """The graph's elements with their presence (judged on first use)."""
         return self.grapher()
+
+    @cached_property
+    def outline(self) -> Graph:
+        """The graph's elements with their presence, their conditions not described (None):
+        what is summarised needs no condition, and describing is most of rendering."""
+        return self.outliner()
+
+    def described(self, ids: Iterable[str]) -> dict[str, Fields]:
+        """The graph entries ``ids`` as ``graph`` has them, conditions described."""
+        return self.describer(ids)
 
     @cached_property
     def summary(self) -> Summary:
@@ -396,6 +408,8 @@ class Configurator:
             features=features,
             conflicts=self.conflicts.shown(view.conflicts, decisions),
             grapher=lambda: self.views.rendering(view).graph,
+            outliner=lambda: self.views.outline(view).graph,
+            describer=lambda ids: self.views.described(view, ids),
             summarizer=lambda: self.views.summary(view),
             complete=complete,
             command=command,

@@ -88,7 +88,9 @@ class View:
     first asked for (``Views.judgement``), and their entries, which describe the conditions
     of undetermined ones, when the graph is (``Views.rendering``): a server is ready
     without judging every element of a large workspace up front, and ``configure``
-    prints its summary without describing them."""
+    prints its summary without describing them. The web page's overview reads the entries
+    without their conditions (``Views.outline``) and has the few it lists described
+    (``Views.described``): describing is most of rendering a large workspace's entries."""
 
     def __init__(
         self,
@@ -105,6 +107,7 @@ class View:
         self.before = before  # until rendered: the view it is judged and rendered from
         self.presences: Judgement | None = None  # set by ``Views.judgement``
         self.rendering: Rendering | None = None  # set by ``Views.rendering``
+        self.outline: Rendering | None = None  # set by ``Views.outline``
 
 
 @dataclass(frozen=True)
@@ -186,7 +189,9 @@ class Views:
                     for feature, _value in catalog.values_of(arg_id):
                         self._reading.setdefault(feature.variable, []).append(index)
                     self._reading.setdefault(arg_id, []).append(index)
-        index_of = {element.id: index for index, element in enumerate(graph.elements)}
+        self._index_of = index_of = {
+            element.id: index for index, element in enumerate(graph.elements)
+        }
         self._users: dict[int, list[int]] = {}  # topic → its nodes, node → its topics
         for index, element in enumerate(graph.elements):
             for node in element.nodes:
@@ -268,10 +273,47 @@ class Views:
             pending.append(later)
             later = later.before
         for later in reversed(pending):
-            later.rendering = self._rendering_of(later, later.before)
+            later.rendering = self._rendering_of(later, later.before, described=True)
             later.before = None
         assert view.rendering is not None
         return view.rendering
+
+    def outline(self, view: View) -> Rendering:
+        """``view``'s entries without their conditions (``condition`` None: not described),
+        from the earlier views' entries as ``rendering`` makes them (described or not). The
+        views it is derived from are kept (``rendering`` may still be asked for), at most
+        ``MIN_VIEWS`` of them."""
+        pending = []
+        later: View | None = view
+        while later is not None and later.outline is None and later.rendering is None:
+            pending.append(later)
+            later = later.before
+        for later in reversed(pending):
+            later.outline = self._rendering_of(later, later.before, described=False)
+        cut: View | None = view
+        for _ in range(MIN_VIEWS):
+            cut = None if cut is None else cut.before
+        if cut is not None:
+            cut.before = None
+        found = view.outline or view.rendering
+        assert found is not None
+        return found
+
+    def described(self, view: View, ids: Iterable[str]) -> dict[str, Fields]:
+        """The entries ``ids`` of ``view`` as ``rendering`` makes them (conditions described),
+        made for those alone."""
+        presences = self.judgement(view)
+        outline = self.outline(view)
+        values: dict[str, Values] = {}
+        found: dict[str, Fields] = {}
+        for id_ in ids:
+            index, number = self._index_of.get(id_), "0"
+            if index is None:  # a variant after the first: ELEMENT/NUMBER
+                element_id, _, number = id_.rpartition("/")
+                index = self._index_of[element_id]
+            entries = self._entries_of(index, presences, outline.entries, values, view, True)
+            found[id_] = entries[int(number)]
+        return found
 
     def summary(self, view: View) -> Summary:
         """How many entries of each kind ``view`` shows with each presence (a part's
@@ -287,7 +329,7 @@ class Views:
                 continue
             given = self._given(element, presence, values, view.decisions, view.texts)
             if presence == Presence.PRESENT and element.kind == ElementKind.ERROR:
-                shown = self._element_entries(element, judged, (), given, ())  # none described
+                shown = self._element_entries(element, judged.shown, (), given, ())
                 errors.extend(shown)
             else:
                 parts = self.presences.of_parts[index]
@@ -316,40 +358,59 @@ class Views:
             found = values[element.entry] = self._values(element.entry, decisions, texts)
         return found
 
-    def _rendering_of(self, view: View, before: View | None) -> Rendering:
-        """``view``'s entries, from those of ``before`` (rendered) if any."""
-        decisions, texts = view.decisions, view.texts
+    def _rendering_of(self, view: View, before: View | None, described: bool) -> Rendering:
+        """``view``'s entries, from those of ``before`` (rendered, or outlined when not
+        ``described``) if any; ``described``: with their conditions."""
         presences = self.judgement(view)
-        if before is None:
-            earlier = None
+        earlier = None
+        if before is not None:
+            earlier = before.rendering if described else before.outline or before.rendering
+        if earlier is None:
             entries: list[list[Fields]] = [[] for _ in self.graph.elements]
             again: Iterable[int] = range(len(self.graph.elements))
         else:
-            earlier = before.rendering
-            assert earlier is not None and before.presences is not None
+            assert before is not None and before.presences is not None
             entries = list(earlier.entries)
-            again = self._rerendered(decisions, texts, before, before.presences, presences)
+            again = self._rerendered(
+                view.decisions, view.texts, before, before.presences, presences, described
+            )
         values: dict[str, Values] = {}
         moved: dict[ElementKind, list[int]] = {}  # per kind: the elements rendered anew
         for index in again:  # in graph order: a topic comes after its nodes
-            element = self.graph.elements[index]
-            judged = presences.verdicts[self.presences.of_element[index]]
-            parts = tuple(presences.verdicts[c].shown for c in self.presences.of_parts[index])
-            users = tuple(
-                self.graph.elements[n].id
-                for n in self._users.get(index, ())
-                if entries[n] and entries[n][0]["presence"] != Presence.ABSENT
-            )
-            given = self._given(element, judged.verdict.presence, values, decisions, texts)
-            found = self._element_entries(
-                element, judged, parts, given, users if element.kind in _USED else ()
-            )
+            found = self._entries_of(index, presences, entries, values, view, described)
             if found is not entries[index]:
-                moved.setdefault(element.kind, []).append(index)
+                moved.setdefault(self.graph.elements[index].kind, []).append(index)
             entries[index] = found
         lists, starts = self._lists(entries, earlier, moved)
         graph = Graph(**{f"{kind}s": listed for kind, listed in lists.items()})
         return Rendering(entries, starts, graph)
+
+    def _entries_of(
+        self,
+        index: int,
+        presences: Judgement,
+        entries: list[list[Fields]],
+        values: dict[str, Values],
+        view: View,
+        described: bool,
+    ) -> list[Fields]:
+        """The entries of element ``index`` under ``presences`` (``entries``: those of the
+        elements before it, for a topic's nodes), described or not."""
+        element = self.graph.elements[index]
+        judged = presences.verdicts[self.presences.of_element[index]]
+        parts = tuple(
+            _shown(presences.verdicts[c], described) for c in self.presences.of_parts[index]
+        )
+        users = tuple(
+            self.graph.elements[n].id
+            for n in self._users.get(index, ())
+            if entries[n] and entries[n][0]["presence"] != Presence.ABSENT
+        )
+        presence = judged.verdict.presence
+        given = self._given(element, presence, values, view.decisions, view.texts)
+        return self._element_entries(
+            element, _shown(judged, described), parts, given, users if element.kind in _USED else ()
+        )
 
     def _lists(
         self,
@@ -389,13 +450,15 @@ class Views:
         before: View,
         earlier: Judgement,
         presences: Judgement,
+        described: bool,
     ) -> list[int]:
-        """Elements whose verdict or read strings differ from ``before`` (and the topics of
-        nodes among them, whose lists of nodes may change), in graph order."""
+        """Elements whose verdict (its description too when ``described``) or read strings
+        differ from ``before`` (and the topics of nodes among them, whose lists of nodes may
+        change), in graph order."""
         again: set[int] = set()
         for condition in presences.judged:
             judged, was = presences.verdicts[condition], earlier.verdicts[condition]
-            if judged is not was and judged.shown != was.shown:
+            if judged is not was and _shown(judged, described) != _shown(was, described):
                 again.update(self._elements_of[condition])
         changed = decisions.decided.items() ^ before.decisions.decided.items()
         for variable, _value in changed:
@@ -429,7 +492,7 @@ class Views:
     def _element_entries(
         self,
         element: Element,
-        judged: Judged,
+        shown: Shown,
         parts: tuple[Shown, ...],
         given: Values | None,
         users: tuple[str, ...],
@@ -441,14 +504,14 @@ class Views:
         Made once per verdict and strings its terms read: the same entries serve every
         state that shows them (a session's later clicks, and other sessions, meet them
         again)."""
-        presence, condition = judged.shown
+        presence, condition = shown
         if presence == Presence.ABSENT and element.kind == ElementKind.ERROR:
             return []
         strings = frozenset((i, given.concrete.get(i)) for i in element.inputs) if given else None
         key = (element.id, presence, condition, strings, parts, users)
         entries = self._entries.get(key)
         if entries is None:
-            shown = self._fields(element, given, strings, parts)
+            variants = self._fields(element, given, strings, parts)
             extra: Fields = {"nodes": list(users)} if element.kind in _USED else {}
             entries = self._entries[key] = [
                 {
@@ -458,7 +521,7 @@ class Views:
                     "condition": condition,
                     "id": element.id if number == 0 else f"{element.id}/{number}",
                 }
-                for number, fields in enumerate(shown)
+                for number, fields in enumerate(variants)
             ]
         return entries
 
@@ -478,3 +541,8 @@ class Views:
             found = self.render(element.content, given or self._symbolic, parts)
             self._rendered[key] = found
         return found
+
+
+def _shown(judged: Judged, described: bool) -> Shown:
+    """What entries show of a verdict: its presence, and its condition when ``described``."""
+    return judged.shown if described else (judged.verdict.presence, None)

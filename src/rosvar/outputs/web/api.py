@@ -91,6 +91,18 @@ def _only(fields: Mapping[str, object], allowed: set[str]) -> None:
         raise ApiError(HTTPStatus.BAD_REQUEST, f"unknown field(s): {', '.join(unknown)}")
 
 
+class _Asking:
+    """The requests in ``Api.handle``, answered or waiting for the lock: the findings' listing
+    gives way to them. Apart from the API: a closure over it would make it a reference
+    cycle (see ``ROUTES``)."""
+
+    def __init__(self) -> None:
+        self.count = 0
+
+    def any(self) -> bool:
+        return self.count > 0
+
+
 class Api:
     """Sessions of one :class:`Configurator`, reached through the route table."""
 
@@ -101,8 +113,8 @@ class Api:
         features = configurator.state([]).features  # the ids never change: known once
         configurator.derivation.prepare_counts()
         self._kinds = {key: feature.kind for key, feature in features.items()}
-        self._asking = 0  # requests in ``handle``: answered or waiting for the lock
-        self._inspector = Inspector(configurator, self._lock, lambda: self._asking > 0)
+        self._asking = _Asking()
+        self._inspector = Inspector(configurator, self._lock, self._asking.any)
 
     def handle(self, method: str, path: str, query: Query, body: Body) -> Reply:
         route = ROUTES.get((method, path))
@@ -110,12 +122,12 @@ class Api:
             if any(known == path for _, known in ROUTES):
                 raise ApiError(HTTPStatus.METHOD_NOT_ALLOWED, f"{method} not allowed on {path}")
             raise ApiError(HTTPStatus.NOT_FOUND, f"no such API: {path}")
-        self._asking += 1  # the findings' listing gives way (Inspector)
+        self._asking.count += 1  # the findings' listing gives way (Inspector)
         try:
             with self._lock:
                 return route(self, query, body)
         finally:
-            self._asking -= 1
+            self._asking.count -= 1
 
     @property
     def sessions(self) -> int:
@@ -158,8 +170,9 @@ class Api:
             raise ApiError(HTTPStatus.BAD_REQUEST, "the session is not in overview mode")
         group = _text(body, "group")
         kind = MemberKind.NODES if "kind" not in body else _choice_of(body, "kind", MemberKind)
-        document = state_document(tab.session.current())
-        return members(document, tab.grouping, group, kind, _page(body))
+        state = tab.session.current()
+        document = state_document(state, state.outline)
+        return members(document, tab.grouping, group, kind, _page(body), state.described)
 
     def _links(self, query: Query, body: Body) -> Reply:
         """The links between the given groups in the session's current state."""
@@ -177,7 +190,8 @@ class Api:
             raise ApiError(
                 HTTPStatus.BAD_REQUEST, f"field 'groups' must be a list of at most {MAX_GROUPS} ids"
             )
-        return {"links": links(state_document(tab.session.current()), tab.grouping, groups)}
+        state = tab.session.current()
+        return {"links": links(state_document(state, state.outline), tab.grouping, groups)}
 
     def _state(self, query: Query, body: Body) -> Reply:
         _only(query, {"session"})
@@ -261,8 +275,11 @@ class Api:
         return UserChoice(action, feature, _text(body, "value"))
 
     def _reply(self, key: str, tab: Tab, state: ConfigurationState, known: int | None) -> Reply:
+        """The state's document for the tab: whole, or in overview mode (its graph's
+        conditions not described: the summaries do not show them)."""
+        overview = tab.grouping is not None
         document = {
-            **state_document(state),
+            **state_document(state, state.outline if overview else None),
             "can_undo": tab.session.can_undo,
             "can_redo": tab.session.can_redo,
         }

@@ -98,7 +98,7 @@ class Inspector:
                 self._configurator.analysis, list(self._entries), collections
             )
         decisions = self._configurator.decisions(state.choices)
-        places = _Places(state.graph, grouping, self._configurator.packages)
+        places = _Places(state.outline, grouping, self._configurator.packages)
         results = []
         for result in self._engine.run(text):
             element = result.element
@@ -158,7 +158,7 @@ class Inspector:
             key=lambda f: (order[f[0].severity], f[1].presence != Presence.PRESENT),
         )
         counts = {s.value: sum(f.severity == s for f, _ in ranked) for s in Severity}
-        places = _Places(state.graph, grouping, self._configurator.packages)
+        places = _Places(state.outline, grouping, self._configurator.packages)
         listed = [self._finding(f, verdict, places) for f, verdict in ranked[:LISTED]]
         return {"findings": listed, "counts": counts, "total": len(ranked), "choices": choices}
 

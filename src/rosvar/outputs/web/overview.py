@@ -15,7 +15,7 @@ summarised is exactly what the whole document would carry.
 
 from __future__ import annotations
 
-from collections.abc import Collection, Iterable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Collection, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
 from functools import lru_cache
@@ -268,13 +268,20 @@ def _chain(grouping: Grouping, entry: Entry, named: Packages) -> tuple[str, ...]
 
 
 def members(
-    document: Mapping[str, Any], grouping: Grouping, group: str, kind: MemberKind, page: int
+    document: Mapping[str, Any],
+    grouping: Grouping,
+    group: str,
+    kind: MemberKind,
+    page: int,
+    described: Callable[[list[str]], Mapping[str, Entry]] | None = None,
 ) -> dict[str, object]:
     """A page of a group's members, sorted by name: whole graph entries. Nodes and params
     are its own (not its subgroups'); a page of nodes holds ``PAGE["nodes"]`` names with all
     their variants. Topics, services and actions are those of the nodes under it at any
     level, as its summary counts them, each with the ``groups`` and the ``names`` of its
-    ``nodes`` (the page draws them linked to whatever draws the nodes, a closed box too)."""
+    ``nodes`` (the page draws them linked to whatever draws the nodes, a closed box too).
+    ``described``: the entries of the ids given with their conditions described, for a
+    ``document`` whose entries have them not (the outline of the state)."""
     graph = document["graph"]
     named = packages(document["features"])
     if kind == MemberKind.NODES:
@@ -308,6 +315,9 @@ def members(
         found.sort(key=lambda e: (str(e.get("name")), str(e["id"])))
         listed = found[page * PAGE[kind] : (page + 1) * PAGE[kind]]
         total = len(found)
+    if described is not None:
+        whole = described([str(entry["id"]) for entry in listed])
+        listed = [{**entry, **whole[str(entry["id"])]} for entry in listed]
     pages = max(1, -(-total // PAGE[kind]))
     return {"group": group, "kind": kind, "page": page, "pages": pages, "members": listed}
 
