@@ -22,11 +22,11 @@ from __future__ import annotations
 import enum
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
-from typing import TypeVar
+from typing import Protocol, TypeVar
 
 from rosvar.analyses.param_values import ROS2_PARAMETERS, ParamValues, param_default
 from rosvar.analyses.when import When, concrete_holds, when_condition
-from rosvar.diagnostics import Location
+from rosvar.diagnostics import Location, Severity
 from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
@@ -159,18 +159,53 @@ class Edge:
         return CHANNEL[self.role]
 
 
+@dataclass(frozen=True)
+class Gap:
+    """A part of the graph analysis could not read where ``condition`` holds (a robot
+    description xacro fails on, a Gazebo plugin of an unknown library): ``name`` says what."""
+
+    name: str
+    message: str
+    condition: BDD
+    locations: tuple[Location, ...]  # the first is where it is reported (the launching node)
+    severity: Severity
+
+
+class Described(Protocol):
+    """Uses that a launch model makes beyond its nodes' code: the Gazebo plugins of the robot
+    descriptions its spawners load, the topics its bridges' arguments name (edges of the
+    node that loads or runs them), and what of those could not be read."""
+
+    def edges(self, model: LaunchModel) -> list[Edge]: ...
+
+    def gaps(self, model: LaunchModel) -> list[Gap]: ...
+
+    def fails(self, model: LaunchModel) -> BDD:
+        """Where running what the model launches fails although the model loads (xacro on
+        a robot description: roslaunch stops, as ``ros2 launch`` does)."""
+        ...
+
+
 def find_interface(interfaces: Interfaces, unit: tuple[str, str]) -> NodeInterface | None:
     package, executable = unit
     return interfaces.find(package or None, executable)
 
 
-def model_edges(space: ConditionSpace, model: LaunchModel, interfaces: Interfaces) -> list[Edge]:
-    """Every edge the nodes of ``model`` can have (tests excluded: they run apart)."""
+def model_edges(
+    space: ConditionSpace,
+    model: LaunchModel,
+    interfaces: Interfaces,
+    described: Described | None = None,
+) -> list[Edge]:
+    """Every edge the nodes of ``model`` can have (tests excluded: they run apart), and
+    those ``described`` gives them (robot descriptions, bridges)."""
     edges: list[Edge] = []
     params = ParamValues(space, [(space.true, model)])
     for node in model.nodes:
         if not node.is_test:
             edges.extend(node_edges(space, model.file, node, interfaces, params))
+    if described is not None:
+        edges.extend(described.edges(model))
     return edges
 
 

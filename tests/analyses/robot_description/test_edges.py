@@ -1,0 +1,126 @@
+"""Robot descriptions in the communication graph: a spawner's Gazebo plugins are its edges,
+with the launch file's and the description's conditions."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from rosvar.analyses.checks import Check, check_models
+from rosvar.analyses.communication import Edge, model_edges
+from rosvar.analyses.robot_description.edges import RobotDescriptions
+from rosvar.logic.bdd import BDD
+from rosvar.ros1.resolve import Restriction
+from rosvar.diagnostics import Severity
+from rosvar.workspace.interfaces.extraction import extract_interfaces
+from rosvar.workspace.interfaces.model import Role
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+ROBOT = """<?xml version="1.0"?>
+<robot name="bot" xmlns:xacro="http://ros.org/wiki/xacro">
+  <xacro:arg name="laser" default="false"/>
+  <xacro:arg name="prefix" default=""/>
+  <xacro:macro name="lidar" params="topic">
+    <gazebo reference="laser"><sensor type="ray" name="laser">
+      <plugin name="lidar" filename="libgazebo_ros_laser.so">
+        <topicName>${topic}</topicName><frameName>laser</frameName>
+      </plugin>
+    </sensor></gazebo>
+  </xacro:macro>
+  <xacro:if value="$(arg laser)"><xacro:lidar topic="$(arg prefix)scan"/></xacro:if>
+  <gazebo>
+    <plugin name="imu" filename="libhector_gazebo_ros_imu.so">
+      <topicName>imu/data</topicName>
+    </plugin>
+    <plugin name="drive" filename="libgazebo_ros_diff_drive.so">
+      <robotNamespace>/base</robotNamespace>
+    </plugin>
+    <plugin name="mystery" filename="libgazebo_ros_mystery.so"/>
+  </gazebo>
+</robot>
+"""
+LISTENER = """\
+import rospy
+from sensor_msgs.msg import LaserScan
+rospy.Subscriber("scan", LaserScan, None)
+"""
+LAUNCH = """
+  <arg name="laser" default="false"/>
+  <arg name="ns" default="/"/>
+  <param name="robot_description"
+         command="$(find xacro)/xacro '$(find pkg)/urdf/robot.urdf.xacro' laser:=$(arg laser)"/>
+  <group ns="$(arg ns)">
+    <node name="spawn" pkg="gazebo_ros" type="spawn_model"
+          args="-urdf -param /robot_description -model bot -x 1"/>
+  </group>
+  <node name="listener" pkg="pkg" type="listener.py"/>
+"""
+
+
+def _setup(ws: LaunchWorkspace) -> tuple[list[Edge], RobotDescriptions]:
+    ws.write("urdf/robot.urdf.xacro", ROBOT)
+    ws.write("scripts/listener.py", LISTENER)
+    file = ws.launch("sim.launch", LAUNCH)
+    analysis = ws.analysis()
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    described = RobotDescriptions(analysis)
+    return model_edges(analysis.space, analysis.model(file), interfaces, described), described
+
+
+def _holds(ws: LaunchWorkspace, condition: BDD, **args: str) -> bool:
+    analysis = ws.analysis()
+    model = analysis.model(analysis.workspace.launch_files[0])
+    return Restriction(analysis, model, args, {}).holds(condition)
+
+
+def test_plugins_are_edges_of_the_spawner(ws: LaunchWorkspace) -> None:
+    edges, _described = _setup(ws)
+    uses = {(e.node, e.role, e.name, e.type): e.condition for e in edges if "plugin" in e.node}
+    scan = uses[("/spawn: gazebo plugin lidar", Role.PUBLISHES, "/scan", "sensor_msgs/LaserScan")]
+    assert _holds(ws, scan, laser="true") and not _holds(ws, scan, laser="false")
+    # no robotNamespace: the spawner's namespace (spawn_model's -robot_namespace default)
+    imu = uses[("/spawn: gazebo plugin imu", Role.PUBLISHES, "/imu/data", "sensor_msgs/Imu")]
+    assert _holds(ws, imu) and not _holds(ws, imu, ns="r1")
+    moved = [e for e in edges if e.name.endswith("/imu/data") and e.name != "/imu/data"]
+    assert moved and not any(e.static for e in moved)  # a namespace only known per value
+    drive = {k[2] for k in uses if k[0].endswith("plugin drive")}
+    assert drive == {"/base/cmd_vel", "/base/odom", "/tf"}
+    bias = [k for k in uses if k[2] == "/imu/data/bias"]  # hector's default after topicName
+    assert bias
+
+
+def test_a_simulated_sensor_is_the_missing_partner(ws: LaunchWorkspace) -> None:
+    """The listener's scan has a provider exactly where the description has its laser."""
+    _setup(ws)
+    analysis = ws.analysis()
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    described = RobotDescriptions(analysis)
+    models = [analysis.model(f) for f in analysis.workspace.launch_files]
+    findings = check_models(
+        analysis.space, models, interfaces, analysis.workspace.confinement(), described
+    )
+    missing = [f for f in findings if f.check is Check.NO_PROVIDER and f.name == "/scan"]
+    assert len(missing) == 1
+    assert _holds(ws, missing[0].condition, laser="false")
+    assert not _holds(ws, missing[0].condition, laser="true")
+    unread = [f for f in findings if f.check is Check.UNREAD]
+    assert any("libgazebo_ros_mystery.so" in f.message for f in unread)
+    assert all(f.severity is Severity.NOTE for f in unread)
+
+
+def test_xacro_failing_is_a_warning_where_the_launch_stops(ws: LaunchWorkspace) -> None:
+    launch = LAUNCH.replace("laser:=$(arg laser)", "laser:=$(arg laser) prefix:=$(arg ns)")
+    failing = "<xacro:if value=\"${'$(arg prefix)' == 'bad'}\"><xacro:undefined_macro/></xacro:if>"
+    ws.write("urdf/robot.urdf.xacro", ROBOT.replace("<gazebo>", failing + "<gazebo>", 1))
+    ws.write("scripts/listener.py", LISTENER)
+    file = ws.launch("sim.launch", launch)
+    analysis = ws.analysis(extra_values={"ns": ["bad"]})
+    described = RobotDescriptions(analysis)
+    model = analysis.model(file)
+    fails = described.fails(model)
+    for ns, expected in (("bad", True), ("/", False), ("good", False)):
+        assert Restriction(analysis, model, {"ns": ns}, {}).holds(fails) is expected
+    warnings = [g for g in described.gaps(model) if g.severity is Severity.WARNING]
+    assert [analysis.space.describe(g.condition) for g in warnings] == ["ns=bad"]
+    assert "unknown macro name" in warnings[0].message
