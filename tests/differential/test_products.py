@@ -18,6 +18,7 @@ from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.command import given
 from rosvar.configuration.engine import Configurator
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.web.entries import render
 from rosvar.workspace import discover
 
 from .harness import (
@@ -46,7 +47,9 @@ def test_engine_products_load_as_in_roslaunch(system: str) -> None:
         analysis = Analysis(
             discover(roots, ros_package_path=""), env_values={k: [v] for k, v in env.items()}
         )
-        engine = Configurator(analysis, extract(analysis, files=run.files(), products=True), env)
+        engine = Configurator(
+            analysis, extract(analysis, files=run.files(), products=True), env, render=render
+        )
         rng = random.Random(f"{SEED}:{run.name}")
         cases = []
         for _ in range(PRODUCTS):

@@ -12,13 +12,14 @@ AS_V (AS with values inferred besides the default), IF (times ACG args decide an
 from __future__ import annotations
 
 from collections import Counter
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass
 
-from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
+from rosvar.analyses.feature_model.features import ConstraintKind
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import load_launch_file
 from rosvar.interpreter.workspace_models import Analysis
-from rosvar.logic.conditions import SlotAtom
+from rosvar.logic.atoms import SlotAtom
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput
 
 TRUE_LITERALS = ("true", "1")
@@ -39,9 +40,6 @@ class Metrics:
     AS_V: int
     IF: int
     IF_M: int
-
-    def to_json(self) -> dict[str, int]:
-        return asdict(self)
 
 
 def command_line_args(root: Entity) -> set[str]:

@@ -20,7 +20,8 @@ from enum import StrEnum
 from itertools import count
 
 from rosvar.analyses.conflicts import Clash, DeclarationKind
-from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
+from rosvar.analyses.feature_model.features import ConstraintKind
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.presence import Typed
@@ -65,14 +66,6 @@ class ConflictState:
     names: tuple[str, ...]
     status: Certainty
     condition: str | None
-
-    def to_json(self) -> dict[str, object]:
-        return {
-            "files": list(self.files),
-            "names": list(self.names),
-            "status": self.status,
-            "condition": self.condition,
-        }
 
 
 class Conflicts:

@@ -15,23 +15,19 @@ import os
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
-from typing import cast
+from typing import Protocol, cast
 
 from rosvar.analyses.communication import (
     CHANNEL,
-    JSON_SIDES,
-    SIDES,
     Channel,
     LaunchedNode,
     entry_names,
     entry_when,
     find_interface,
-    node_fields,
 )
-from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
-from rosvar.analyses.json_values import json_value
+from rosvar.analyses.feature_model.features import ConstraintKind
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.param_values import ParamValues
-from rosvar.configuration.derivation import Presence
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
 from rosvar.files import Confinement
@@ -40,7 +36,6 @@ from rosvar.interpreter.model import (
     LaunchModel,
     NodeDecl,
     ParamDecl,
-    ParamSource,
     Raw,
     YamlDecl,
 )
@@ -50,20 +45,12 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
-from rosvar.ros1.resolve import ResolutionError, test_fields
-from rosvar.ros1.tags.param import param_value
-from rosvar.ros1.tags.rosparam import load_rosparam
-from rosvar.ros1.validation import node_values
-from rosvar.ros2.conventions.namespaces import full_name, make_absolute, prefix_namespace, unnamed
-from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, typed
-from rosvar.ros2.resolve import parameter_file
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
 Fields = dict[str, object]
+"""An entry of the graph as the state document shows it."""
 Shown = tuple[str, str | None]
 """A condition's presence at one step, and its readable form while undetermined."""
-Render = Callable[["Values", Sequence[Shown]], list[Fields]]
-"""An element's fields for concrete values and the presence of each of its parts."""
 
 
 class Values:
@@ -128,6 +115,91 @@ NAMED: dict[Channel, ElementKind] = {
 """The element kind of each channel's names: those with ``nodes`` using them."""
 
 
+@dataclass(frozen=True, slots=True)
+class NodeContent:
+    """A node variant: its fields' raw values, and its remaps, environment settings and
+    (ROS 2) parameters, each with the part it depends on."""
+
+    raw: Mapping[str, Raw | None]
+    remaps: list[Setting]
+    env: list[Setting]
+    parameters: list[Setting]
+    node: NodeDecl
+
+
+@dataclass(frozen=True, slots=True)
+class ParamContent:
+    """A ``<param>`` variant: its name and value (a deferred one converted once known)."""
+
+    name: object
+    value: object
+    location: Location
+    confinement: Confinement  # the files its conversion may read
+
+
+@dataclass(frozen=True, slots=True)
+class YamlContent:
+    """A ``<rosparam>`` with terms: loaded (by its dialect's ``load``) once they are known."""
+
+    param: YamlDecl
+    confinement: Confinement
+
+
+@dataclass(frozen=True, slots=True)
+class TopicContent:
+    """A topic named from a file's args: the namespace, name and remap target of its first
+    use."""
+
+    raws: tuple[Raw | None, Raw | None, Raw]
+
+
+@dataclass(frozen=True, slots=True)
+class ChannelContent:
+    """A topic, service or action known by name, with its nodes' uses (its parts, in
+    order)."""
+
+    channel: Channel
+    name: str
+    edges: Sequence[Edge]
+
+
+@dataclass(frozen=True, slots=True)
+class NamedContent:
+    """A topic known by name alone (no interfaces to tell its nodes' uses)."""
+
+    name: str
+
+
+@dataclass(frozen=True, slots=True)
+class ErrorContent:
+    """Where roslaunch would stop, and why."""
+
+    code: str
+    message: str
+    location: Location
+
+
+Content = (
+    NodeContent
+    | ParamContent
+    | YamlContent
+    | TopicContent
+    | ChannelContent
+    | NamedContent
+    | ErrorContent
+)
+"""What an element shows, in raw values and conditions; presentation renders it."""
+
+
+class Render(Protocol):
+    """An element's entries for concrete ``values`` and the presence of each of its parts
+    (several for a YAML load): the presentation's, given to the engine."""
+
+    def __call__(
+        self, content: Content, values: Values, parts: Sequence[Shown]
+    ) -> list[Fields]: ...
+
+
 @dataclass
 class Element:
     """One variant of a node, param, topic or error, with its presence condition."""
@@ -137,14 +209,10 @@ class Element:
     entry: str  # the entry launch file (path) whose model holds it
     condition: BDD  # analysis manager, fixed atoms substituted
     bounds: Bounds  # solver manager
-    render: Render  # fields for one set of concrete values (several for a YAML load)
+    content: Content  # what it shows, in raw values: rendered for each set of concrete ones
     inputs: frozenset[Input] = frozenset()  # inputs its fields still need
     nodes: list[str] = field(default_factory=list)  # names: the node variants using it
     parts: tuple[Part, ...] = ()  # nodes: their conditional remaps and environment settings
-
-    def fields(self, values: Values, parts: Sequence[Shown]) -> list[Fields]:
-        """Its fields, given the presence of each of its ``parts``."""
-        return self.render(values, parts)
 
 
 class VariationalGraph:
@@ -169,7 +237,7 @@ class VariationalGraph:
         self.interfaces = interfaces
         self._topics: dict[tuple[str, str], _Topic] = {}
         self._shadows: dict[BDD, BDD] = {}
-        self._edges: dict[tuple[Channel, str], list[_Edge]] = {}  # a static name → its uses
+        self._edges: dict[tuple[Channel, str], list[Edge]] = {}  # a static name → its uses
         self._served: dict[tuple[Channel, str], tuple[list[str], BDD]] = {}  # services, actions
         self.params = ParamValues(  # the nodes' parameters, for hints' when:
             self.space, ((self.launched[f.file], analysis.model(f.file)) for f in model.files)
@@ -185,10 +253,10 @@ class VariationalGraph:
         for (entry, name), (nodes, condition, raws) in sorted(self._topics.items()):
             if not entry:
                 edges = self._edges.get((Channel.TOPICS, name), [])
-                render = (
-                    _static({"name": name})
+                content: Content = (
+                    NamedContent(name)
                     if interfaces is None
-                    else _edges_renderer(Channel.TOPICS, name, edges)
+                    else ChannelContent(Channel.TOPICS, name, edges)
                 )
                 parts = tuple(Part(when, bounds) for _n, _r, _t, when, bounds in edges)
                 self._add(
@@ -196,7 +264,7 @@ class VariationalGraph:
                     f"topic:{name}",
                     "",
                     condition,
-                    render,
+                    content,
                     nodes=nodes,
                     parts=parts,
                 )
@@ -206,7 +274,7 @@ class VariationalGraph:
                 f"topic:{file_ids[entry]}|{name}",
                 entry,
                 condition,
-                _topic_renderer(raws),
+                TopicContent(raws),
                 _needs(*raws),
                 nodes=nodes,
             )
@@ -217,7 +285,7 @@ class VariationalGraph:
                 f"{NAMED[channel]}:{name}",
                 "",
                 condition,
-                _edges_renderer(channel, name, edges),
+                ChannelContent(channel, name, edges),
                 nodes=nodes,
                 parts=tuple(Part(when, bounds) for _n, _r, _t, when, bounds in edges),
             )
@@ -231,7 +299,7 @@ class VariationalGraph:
         id_: str | Callable[[], str],
         entry: str,
         condition: BDD,
-        render: Render,
+        content: Content,
         inputs: Iterable[Input] = (),
         nodes: list[str] | None = None,
         parts: tuple[Part, ...] = (),
@@ -247,7 +315,7 @@ class VariationalGraph:
             entry,
             fixed,
             self.lowering.bounds(condition),
-            render,
+            content,
             frozenset(inputs),
             nodes or [],
             parts,
@@ -283,7 +351,7 @@ class VariationalGraph:
                         numbered(param.location),
                         model.file,
                         variant,
-                        _param_renderer(name, value, param.location, self.confinement),
+                        ParamContent(name, value, param.location, self.confinement),
                         _needs(name, value.raw if isinstance(value, DeferredValue) else value),
                     )
             else:
@@ -292,7 +360,7 @@ class VariationalGraph:
                     numbered(param.location),
                     model.file,
                     conjunction(factors),
-                    _yaml_renderer(param, self.confinement),
+                    YamlContent(param, self.confinement),
                     _needs(
                         param.scope_ns, param.command, param.ns, param.file, param.param, param.text
                     ),
@@ -306,13 +374,7 @@ class VariationalGraph:
                     numbered(include.location),
                     model.file,
                     conjunction((launched, fix(include.condition))),
-                    _static(
-                        {
-                            "code": "include-unknown",
-                            "message": message,
-                            **include.location.to_json(),
-                        }
-                    ),
+                    ErrorContent("include-unknown", message, include.location),
                 )
         for error in model.errors:
             self._add(
@@ -320,7 +382,7 @@ class VariationalGraph:
                 numbered(error.location),
                 model.file,
                 conjunction((launched, fix(error.condition))),
-                _static({"code": error.code, "message": error.message, **error.location.to_json()}),
+                ErrorContent(error.code, error.message, error.location),
             )
 
     def _add_node(
@@ -344,7 +406,7 @@ class VariationalGraph:
                 new_id,
                 model.file,
                 condition,
-                _node_renderer(raw, remaps, env, parameters, node),
+                NodeContent(raw, remaps, env, parameters, node),
                 _needs(
                     *raw.values(),
                     *(p for pair in remaps + env + parameters for p in pair[:2]),
@@ -352,7 +414,7 @@ class VariationalGraph:
                 parts=tuple(parts),
             )
             if element is not None and not node.is_test:
-                self._topic_uses(element, raw, remaps)
+                self._topic_uses(element, raw, remaps, node)
                 if self.interfaces is not None:
                     self._interface_uses(element, raw, node, condition)
 
@@ -406,10 +468,10 @@ class VariationalGraph:
 
     def _parted(
         self, condition: BDD, settings: list[tuple[BDD, Raw, Raw]], parts: list[Part]
-    ) -> list[_Setting]:
+    ) -> list[Setting]:
         """The settings a node variant of ``condition`` (fixed) may have, each with the index of
         its part in ``parts`` (added) or None when the variant always has it."""
-        kept: list[_Setting] = []
+        kept: list[Setting] = []
         for own, first, second in settings:
             both = self.lowering.conjunction((condition, self.lowering.fix(own)))
             if both == condition:
@@ -422,19 +484,18 @@ class VariationalGraph:
         return kept
 
     def _topic_uses(
-        self, element: Element, raw: Mapping[str, Raw | None], remaps: list[_Setting]
+        self,
+        element: Element,
+        raw: Mapping[str, Raw | None],
+        remaps: list[Setting],
+        node: NodeDecl,
     ) -> None:
         symbolic = Values({}, None)
-        namespace, pushed = raw.get("namespace"), raw.get("ros_namespace")
-        if "ros_namespace" in raw and all(
-            v is None or isinstance(v, str) for v in (namespace, pushed)
-        ):
-            # ROS 2: the pushed namespace and the node's, combined and absolute
-            namespace = make_absolute(prefix_namespace(pushed, namespace)) or names.SEP  # type: ignore[arg-type]
+        namespace = node.schema.namespace.of(raw)
         for _source, target, part in remaps:
             used = element.condition if part is None else element.parts[part].condition
             raws = (namespace, raw.get("name"), target)
-            topic = _topic_name(symbolic, *raws)
+            topic = topic_name(symbolic, *raws)
             # a name that reads args is the entry file's own: another file's ⟨scan⟩ is
             # another arg, and its string is known only with that file's choices
             key = (element.entry if _needs(*raws) else "", topic)
@@ -449,10 +510,10 @@ class VariationalGraph:
         interface, each use an edge of its topic, service or action (judged as a part of
         it); names known statically only."""
         assert self.interfaces is not None
-        fields = {key: raw.get(key) for key in node_fields(node)}
+        fields = {key: raw.get(key) for key in node.schema.launched}
         if not all(text is None or isinstance(text, str) for text in fields.values()):
             return
-        launched = LaunchedNode.of(fields)
+        launched = LaunchedNode.of(node.schema, fields)
         unit = launched.unit()
         interface = None if unit is None else find_interface(self.interfaces, unit)
         if interface is None:
@@ -507,7 +568,7 @@ _Topic = tuple[list[str], BDD, tuple[Raw | None, Raw | None, Raw]]
 target it was named from (the first use's)."""
 
 
-def _topic_name(values: Values, namespace: Raw | None, name: Raw | None, target: Raw) -> str:
+def topic_name(values: Values, namespace: Raw | None, name: Raw | None, target: Raw) -> str:
     """The topic a node remaps to, resolved in its namespace (a private name in its own)."""
     space = values.text(namespace) or "/"
     topic = values.text(target) or ""
@@ -516,31 +577,9 @@ def _topic_name(values: Values, namespace: Raw | None, name: Raw | None, target:
     return names.ns_join(space, topic)
 
 
-_Edge = tuple[str, Role, str | None, BDD, Bounds]
+Edge = tuple[str, Role, str | None, BDD, Bounds]
 """A node variant's use of a name: its id, its role (publishes, serves...), the type, and
 the condition of the use (analysis manager, fixed) with its bounds."""
-
-
-def _edges_renderer(channel: Channel, name: str, edges: Sequence[_Edge]) -> Render:
-    """A topic (service, action) with its types and its publishers and subscribers (servers
-    and clients) that are not absent, each with its presence and condition (the name's
-    parts, in the order of ``edges``)."""
-    types = sorted({type_ for _id, _role, type_, _c, _b in edges if type_ is not None})
-    roles = SIDES[channel]
-    lists = JSON_SIDES[channel]
-
-    def render(_values: Values, parts: Sequence[Shown]) -> list[Fields]:
-        sides: dict[Role, list[Fields]] = {role: [] for role in roles}
-        for (node, role, _type, _c, _b), (presence, condition) in zip(edges, parts, strict=True):
-            if presence != Presence.ABSENT:
-                sides[role].append({"node": node, "presence": presence, "condition": condition})
-        return [{"name": name, "types": types, **{lists[i]: sides[roles[i]] for i in (0, 1)}}]
-
-    return render
-
-
-def _topic_renderer(raws: tuple[Raw | None, Raw | None, Raw]) -> Render:
-    return lambda values, _parts: [{"name": _topic_name(values, *raws)}]
 
 
 def _needs(*raws: object) -> set[Input]:
@@ -551,11 +590,7 @@ def _needs(*raws: object) -> set[Input]:
     return found
 
 
-def _static(fields: Fields) -> Render:
-    return lambda _values, _parts: [fields]
-
-
-_Setting = tuple[Raw, Raw, int | None]
+Setting = tuple[Raw, Raw, int | None]
 """A remap (from, to) or environment setting (name, value) of a node variant, with the
 index of its part (None: the variant always has it)."""
 
@@ -570,151 +605,3 @@ def _parameter_settings(node: NodeDecl) -> list[tuple[BDD, Raw, Raw]]:
         elif parameter.name is not None and parameter.value is not None:
             settings.append((parameter.condition, parameter.name, parameter.value))
     return settings
-
-
-def _ros2_fields(
-    text: Mapping[str, str | None], parameters: Sequence[tuple[str | None, str | None]]
-) -> Fields:
-    """A ROS 2 node's name, namespace and parameters as ``ros2 launch`` composes them: the
-    pushed namespace, the node's own, its parameters merged in order (``resolve_ros2``'s).
-    A node with no name takes one from its executable at run time: it is drawn as
-    ``⟨EXEC⟩`` in its namespace, its ``fqn`` null."""
-    pushed, own = text.get("ros_namespace"), text.get("namespace")
-    namespace = make_absolute(prefix_namespace(pushed, own)) or "/"
-    name = text.get("name")
-    fqn = None if name is None else full_name(pushed, own, name)
-    sources: list[Source] = []
-    for first, second in parameters:
-        try:
-            if not first:
-                sources.append(Source(entries=tuple(parameter_file(second or ""))))
-            else:
-                sources.append(Source(entries=((ALL_NODES, {first: typed(second or "")}),)))
-        except ValueError:
-            continue  # not a value yet (an arg still open) or not readable: not shown
-    return {
-        "name": fqn or unnamed(namespace, text.get("exec")),
-        "fqn": fqn,
-        "namespace": namespace,
-        "parameters": effective(fqn, sources),
-    }
-
-
-def _node_renderer(
-    raw: Mapping[str, Raw | None],
-    remaps: list[_Setting],
-    env: list[_Setting],
-    parameters: list[_Setting],
-    node: NodeDecl,
-) -> Render:
-    def render(values: Values, parts: Sequence[Shown]) -> list[Fields]:
-        text = {k: values.text(v) for k, v in raw.items()}
-        try:
-            typed: Fields = node_values(text)
-        except ValueError:
-            typed = {}
-        undetermined: list[Fields] = []
-        mapping: dict[str, str] = {}
-        for remap in remaps:
-            pair = _present(PartKind.REMAP, remap, values, parts, undetermined)
-            if pair is not None:
-                key = pair[0] or ""
-                mapping.pop(key, None)
-                mapping[key] = pair[1] or ""
-        settings = []
-        for setting in env:
-            pair = _present(PartKind.ENV, setting, values, parts, undetermined)
-            if pair is not None:
-                settings.append(list(pair))
-        namespace = text.get("namespace") or "/"
-        extra: Fields = {}
-        if node.is_test:
-            try:
-                extra = test_fields(text, node.location)
-            except ResolutionError:
-                extra = {}
-        if "ros_namespace" in raw:  # a ROS 2 node
-            present = [
-                _present(PartKind.PARAMETER, p, values, parts, undetermined) for p in parameters
-            ]
-            extra = _ros2_fields(text, [p for p in present if p is not None])
-        return [
-            {
-                "name": names.ns_join(namespace, text.get("name") or ""),
-                "namespace": namespace,
-                "package": text.get("pkg"),
-                "type": text.get("type"),
-                **typed,
-                "remaps": sorted([list(p) for p in mapping.items()]),
-                "env": sorted(settings),
-                **({"undetermined": undetermined} if undetermined else {}),
-                "filename": node.filename,
-                "line": node.location.line,
-                "col": node.location.col,
-                **extra,
-            }
-        ]
-
-    return render
-
-
-def _present(
-    kind: PartKind,
-    setting: _Setting,
-    values: Values,
-    parts: Sequence[Shown],
-    undetermined: list[Fields],
-) -> tuple[str | None, str | None] | None:
-    """A setting's strings where the step has it, else None; an undetermined one is added to
-    ``undetermined`` with its condition."""
-    first, second, part = setting
-    shown = (values.text(first), values.text(second))
-    presence, condition = (Presence.PRESENT, None) if part is None else parts[part]
-    if presence == Presence.UNDETERMINED:
-        undetermined.append({"kind": kind, "pair": list(shown), "condition": condition})
-    return shown if presence == Presence.PRESENT else None
-
-
-def _param_renderer(
-    name: object, value: object, location: Location, confinement: Confinement
-) -> Render:
-    def render(values: Values, _parts: Sequence[Shown]) -> list[Fields]:
-        shown: object = value
-        if isinstance(value, DeferredValue):
-            concrete = values.text(value.raw) or ""
-            try:
-                shown = json_value(
-                    param_value(ParamSource.VALUE, concrete, value.ptype, confinement)
-                )
-            except (ValueError, OSError):
-                shown = concrete
-        elif is_term(value):
-            shown = values.text(value)  # type: ignore[arg-type]
-        else:
-            shown = json_value(value)
-        return [{"name": values.text(cast(Raw, name)), "value": shown, **_where(location)}]
-
-    return render
-
-
-def _yaml_renderer(param: YamlDecl, confinement: Confinement) -> Render:
-    raws = (param.scope_ns, param.command, param.ns, param.file, param.param, param.text)
-
-    def render(values: Values, _parts: Sequence[Shown]) -> list[Fields]:
-        scope_ns, command, ns, file, name, body = (values.text(p) for p in raws)
-        symbolic = [{"name": f"{scope_ns} (YAML)", "value": "<yaml>", **_where(param.location)}]
-        if not values.knows(raws):
-            return symbolic
-        try:
-            pairs = load_rosparam(
-                str(command), ns, file, name, body or "", str(scope_ns), confinement
-            )
-        except (ValueError, OSError):
-            return symbolic
-        return [{"name": key, "value": json_value(v), **_where(param.location)} for key, v in pairs]
-
-    return render
-
-
-def _where(location: Location) -> Fields:
-    return {"filename": location.file, "line": location.line}

@@ -21,6 +21,7 @@ from rosvar.configuration.graph import (
     Element,
     ElementKind,
     Fields,
+    Render,
     Shown,
     Values,
     VariationalGraph,
@@ -68,17 +69,6 @@ class Graph:
     services: list[Fields] = field(default_factory=list)
     actions: list[Fields] = field(default_factory=list)
     errors: list[Fields] = field(default_factory=list)
-
-    def to_json(self) -> dict[str, object]:
-        return {
-            "nodes": self.nodes,
-            "tests": self.tests,
-            "params": self.params,
-            "topics": self.topics,
-            "services": self.services,
-            "actions": self.actions,
-            "errors": self.errors,
-        }
 
 
 @dataclass(frozen=True)
@@ -161,10 +151,13 @@ class Views:
         derivation: Derivation,
         conflicts: Conflicts,
         cached: int,
+        render: Render,
     ) -> None:
         """``cached``: how many answers per list of choices the engine keeps
-        (``engine.CACHED_FEATURES``); views keep a share of it."""
+        (``engine.CACHED_FEATURES``); views keep a share of it. ``render``: the elements'
+        entries, as the presentation shows them."""
         self.analysis = analysis
+        self.render = render
         self.catalog = catalog
         self.graph = graph
         self.lowering = lowering
@@ -297,8 +290,10 @@ class Views:
                 errors.extend(shown)
             else:
                 parts = self.presences.of_parts[index]
-                shown = element.fields(
-                    given or self._symbolic, [(verdicts[c].verdict.presence, None) for c in parts]
+                shown = self.render(
+                    element.content,
+                    given or self._symbolic,
+                    [(verdicts[c].verdict.presence, None) for c in parts],
                 )
             counts[element.kind][presence] += len(shown)
         return Summary(counts, errors)
@@ -479,6 +474,6 @@ class Views:
         key = (element.id, strings, parts)
         found = self._rendered.get(key)
         if found is None:
-            found = element.fields(given or self._symbolic, parts)
+            found = self.render(element.content, given or self._symbolic, parts)
             self._rendered[key] = found
         return found

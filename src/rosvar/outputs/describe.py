@@ -7,6 +7,7 @@ from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl, Para
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import OTHER, UNSET, Slot
 from rosvar.logic.terms import Apply, Hole
+from rosvar.outputs.documents.diagnostics import diagnostic_document
 
 
 def _slot(slot: Slot) -> str:
@@ -66,10 +67,10 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
         ],
         "nodes": [
             {
-                "name": _values(n.fields["name"], model),
-                "namespace": _values(n.fields["namespace"], model),
-                "package": _values(n.fields["pkg"], model),
-                "type": _values(n.fields["type"], model),
+                "name": _values(n.value(n.schema.name), model),
+                "namespace": _values(n.fields["namespace"], model),  # its own (ROS 2: not pushed)
+                "package": _values(n.value(n.schema.package), model),
+                "type": _values(n.value(n.schema.executable), model),
                 "test": n.is_test,
                 "condition": describe(n.condition),
                 **n.location.to_json(),
@@ -96,7 +97,7 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
             }
             for e in model.errors
         ],
-        "diagnostics": [d.to_json() for d in model.diagnostics],
+        "diagnostics": [diagnostic_document(d) for d in model.diagnostics],
     }
 
 

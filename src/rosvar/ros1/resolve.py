@@ -26,11 +26,8 @@ from rosvar.interpreter.model import (
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import ArgInput, EnvInput, Input
-from rosvar.logic.terms import Apply, Hole, TermError, evaluate
+from rosvar.logic.terms import Apply, Hole, PackageTable, TermError, evaluate
 from rosvar.ros import names
-from rosvar.ros1.substitutions import PackageTable
-from rosvar.ros1.tags.param import param_value
-from rosvar.ros1.tags.rosparam import load_rosparam
 from rosvar.ros1.validation import node_values
 
 
@@ -241,7 +238,7 @@ def _restrict(
             if isinstance(value, DeferredValue):
                 concrete = r.evaluate(value.raw, param.location, f"param {name}")
                 try:
-                    value = param_value(value.kind, concrete, value.ptype, r.confinement)
+                    value = value.convert(value.kind, concrete, value.ptype, r.confinement)
                 except ValueError as error:
                     raise ResolutionError("param-invalid", str(error), param.location) from None
             result.params[str(name)] = json_value(value)
@@ -253,9 +250,7 @@ def _restrict(
             body = r.evaluate(param.text, param.location, "<rosparam> body")
             scope_ns, command, ns, file, name = parts
             try:
-                pairs = load_rosparam(
-                    str(command), ns, file, name, body, str(scope_ns), r.confinement
-                )
+                pairs = param.load(str(command), ns, file, name, body, str(scope_ns), r.confinement)
             except ValueError as error:
                 raise ResolutionError(
                     "rosparam-invalid", f"error loading <rosparam> tag: {error}", param.location

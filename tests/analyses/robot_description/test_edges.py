@@ -8,9 +8,9 @@ from typing import TYPE_CHECKING
 from rosvar.analyses.checks import Check, check_models
 from rosvar.analyses.communication import Edge, model_edges
 from rosvar.analyses.robot_description.edges import RobotDescriptions
+from rosvar.diagnostics import Severity
 from rosvar.logic.bdd import BDD
 from rosvar.ros1.resolve import Restriction
-from rosvar.diagnostics import Severity
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Role
 

@@ -11,9 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from enum import StrEnum
 from functools import cached_property
-from typing import TYPE_CHECKING
 
 from rosvar.analyses.conflicts import (
     Clash,
@@ -22,81 +20,16 @@ from rosvar.analyses.conflicts import (
     clashes,
     repeated_inclusions,
 )
-from rosvar.diagnostics import Diagnostic, Location
+from rosvar.analyses.feature_model.features import (
+    Constraint,
+    ConstraintKind,
+    FileFeature,
+    ModelTooLarge,
+)
+from rosvar.analyses.feature_model.solver import Solver
+from rosvar.diagnostics import Diagnostic
 from rosvar.interpreter.model import LaunchModel
-from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
-
-if TYPE_CHECKING:
-    from rosvar.analyses.feature_model.solver import Solver
-
-
-class FeatureKind(StrEnum):
-    """A feature's level in the tree: a launch file, one of its args, one of an arg's values."""
-
-    FILE = "file"
-    ARG = "arg"
-    VALUE = "value"
-
-
-@dataclass
-class ValueFeature:
-    id: str
-    value: str
-    slot: Slot
-    default: bool
-    variable: BDD
-
-
-@dataclass
-class ArgFeature:
-    id: str
-    file: str
-    name: str
-    input: ArgInput
-    default: str | None
-    boolean: bool
-    location: Location | None
-    doc: str | None = None  # what the file says the arg is for (``doc``, ROS 2 ``description``)
-    values: list[ValueFeature] = field(default_factory=list)
-
-
-@dataclass
-class FileFeature:
-    id: str
-    file: str
-    variable: BDD
-    args: list[ArgFeature] = field(default_factory=list)
-
-    def variable_names(self) -> list[str]:
-        """The file's variable, then its args' values: a block of the solver's order (the
-        names are the same in the analysis' manager and the solver's)."""
-        return [name_of(self.variable)] + [name_of(v.variable) for a in self.args for v in a.values]
-
-
-class ConstraintKind(StrEnum):
-    """What a cross-tree constraint says: an include needs its file, clashing files exclude."""
-
-    REQUIRES = "requires"
-    EXCLUDES = "excludes"
-
-
-@dataclass
-class Constraint:
-    """A cross-tree constraint: ``formula`` must hold; ``text`` says why, for people."""
-
-    kind: ConstraintKind
-    files: tuple[str, ...]
-    formula: BDD
-    condition: BDD  # when it bites (include condition, clash condition)
-    text: str
-    locations: tuple[Location, ...] = ()
-    unconditional: bool = False
-
-
-class ModelTooLarge(Exception):
-    """The solver's BDDs would outgrow their budget: the model is listed, not solved."""
 
 
 class CrossTree:
@@ -187,20 +120,6 @@ class FeatureModel:
                 ids.append(arg.id)
                 ids.extend(v.id for v in arg.values)
         return ids
-
-
-def name_of(variable: BDD) -> str:
-    """The name of a feature variable: the same in the analysis' manager and the solver's."""
-    return str(variable.var)
-
-
-def value_text(slot: Slot, default_text: str | None) -> str:
-    """How a value feature shows ``slot``."""
-    if slot is OTHER:
-        return "<other>"
-    if slot is UNSET:
-        return f"<default: {default_text}>" if default_text else "<unset>"
-    return str(slot)
 
 
 def _excludes(

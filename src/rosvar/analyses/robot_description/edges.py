@@ -20,8 +20,9 @@ from rosvar.analyses.robot_description.spawns import Spawn, Spawns
 from rosvar.diagnostics import Location, Severity
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.logic.atoms import SlotAtom
 from rosvar.logic.bdd import BDD
-from rosvar.logic.conditions import ConditionSpace, SlotAtom
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER
 
 PARTIAL_CODES = frozenset({"xacro-unsupported", "xacro-too-large", "package-unknown"})

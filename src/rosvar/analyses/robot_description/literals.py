@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from typing import Final
 
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate_value
-from rosvar.logic.conditions import register_predicate
+from rosvar.logic.atoms import register_predicate
 from rosvar.logic.terms import Apply, Hole, Operand, Term, TermError, register
 
 TRUE_WORDS: Final = ("true", "True")

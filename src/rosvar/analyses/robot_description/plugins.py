@@ -26,8 +26,8 @@ from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import concat, is_term
 from rosvar.ros import names
+from rosvar.ros.version import RosVersion
 from rosvar.workspace.interfaces.model import Role
-from rosvar.workspace.ros_version import RosVersion
 
 ROS1_SOURCE: Final = (
     "https://github.com/ros-simulation/gazebo_ros_pkgs/blob/"

@@ -17,7 +17,7 @@ from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from typing import Final
 
-from rosvar.analyses.communication import Gap, LaunchedNode, node_fields
+from rosvar.analyses.communication import Gap, LaunchedNode
 from rosvar.analyses.robot_description.commands import (
     CommandError,
     XacroCommand,
@@ -42,8 +42,8 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, concat, is_term
+from rosvar.ros.version import RosVersion
 from rosvar.ros1.scope import MISSING, _Missing
-from rosvar.workspace.ros_version import RosVersion
 
 COMMAND_WRAPPERS: Final = (("__command__(", ")"), ("$(command ", ")"))
 """How a command's text is kept in a model: ROS 1's ``<param command>`` value, ROS 2's
@@ -127,12 +127,12 @@ class Spawns:
     def _node(self, model: LaunchModel, node: NodeDecl) -> Iterator[Spawn]:
         """A spawner's spawns: per branch of its fields, and of its ``args`` grouped by the
         options that say what it spawns (``-x $(arg x)`` makes branches that do not)."""
-        keys = [key for key in node_fields(node) if key != "args"]
+        keys = [key for key in node.schema.launched if key != "args"]
         for condition, values in combine([node.field(key) for key in keys], list):
             condition &= node.condition
             if not self.space.satisfiable(condition):
                 continue
-            launched = LaunchedNode.of(dict(zip(keys, values, strict=True)))
+            launched = LaunchedNode.of(node.schema, dict(zip(keys, values, strict=True)))
             kind = SPAWNERS.get((launched.package, launched.type))
             if kind is None:
                 continue
@@ -206,9 +206,9 @@ class Spawns:
         ``topic`` (robot_state_publisher, in its namespace)."""
         sources: list[_Source] = []
         for node in model.nodes:
-            keys = node_fields(node)
+            keys = node.schema.launched
             for branch, values in combine([node.field(key) for key in keys], list):
-                launched = LaunchedNode.of(dict(zip(keys, values, strict=True)))
+                launched = LaunchedNode.of(node.schema, dict(zip(keys, values, strict=True)))
                 if launched.resolve(DESCRIPTION_PARAMETER) != topic:
                     continue
                 for parameter in node.parameters:

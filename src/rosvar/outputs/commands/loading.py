@@ -12,7 +12,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from rosvar.outputs.commands.exit_codes import EXIT_INPUT, EXIT_USAGE
-from rosvar.workspace.ros_version import RosVersion
+from rosvar.ros.version import RosVersion
 
 if TYPE_CHECKING:
     from rosvar.interpreter.workspace_models import Analysis
@@ -143,7 +143,9 @@ def interfaces_of(
     from rosvar.workspace.interfaces.extraction import extract_interfaces
     from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
 
-    interfaces = extract_interfaces(workspace.packages.values() if packages is None else packages)
+    everything = workspace.packages.values()
+    chosen = everything if packages is None else packages
+    interfaces = extract_interfaces(chosen, workspace.confinement(), everything)
     hints = hints_of(options)
     interfaces.diagnostics.extend(hints.diagnostics)
     if getattr(options, "catalogue", True) and workspace.ros_version == RosVersion.ROS1:

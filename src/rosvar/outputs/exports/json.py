@@ -10,12 +10,14 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.features import ArgFeature, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.operations import (
     VerdictKind,
     core_and_dead,
     count_configurations,
 )
+from rosvar.outputs.documents.diagnostics import diagnostic_document
 from rosvar.outputs.exports._common import Tree, Triggers, conflicts
 from rosvar.outputs.exports._formula import LOGIC_OPERATORS, exported, render
 
@@ -73,7 +75,7 @@ def document(model: FeatureModel) -> dict[str, Any]:
             for number, c in enumerate(model.constraints)
         ],
         "configurations": count_configurations(model),
-        "diagnostics": [d.to_json() for d in model.diagnostics],
+        "diagnostics": [diagnostic_document(d) for d in model.diagnostics],
         "core": verdicts[VerdictKind.CORE],
         "dead": verdicts[VerdictKind.DEAD],
         "conflicts": [

@@ -52,12 +52,31 @@ class Expression:
 
     text: str
 
-    def to_json(self) -> dict[str, str]:
-        return {"expression": self.text}
-
 
 Default = bool | int | float | str | Expression
 """A parameter's default: a literal's value, or the expression that computes it."""
+
+
+@dataclass(frozen=True)
+class NamedBy:
+    """A name that is a parameter's value (``nh.param("path_topic", t, "plan");
+    nh.subscribe(t, ...)``): the graph takes the value each configuration gives
+    ``parameter`` (as the node resolves it: ``~path_topic``), else the entry's ``default``,
+    and resolves it within ``namespace`` (the node handle's, as written). A
+    ``parameter`` holding ``{N}`` stands for every parameter of that form the launch files
+    set (robot_localization's ``imu0``, ``imu1``, ...), each naming one use; one never set
+    gives none."""
+
+    parameter: str
+    namespace: str = ""
+
+    @property
+    def indexed(self) -> bool:
+        return INDEX in self.parameter
+
+
+INDEX = "{N}"
+"""In a parameter's name, any number (``~imu{N}``)."""
 
 
 @dataclass(frozen=True)
@@ -78,26 +97,9 @@ class Entry:
     beside: str | None = None
     """image_transport's camera info: named after the image topic ``beside`` (as the node
     writes it) once that is remapped, so the graph derives this name, not ``name``."""
-
-    def to_json(self) -> dict[str, object]:
-        document: dict[str, object] = {"name": self.name}
-        if self.role is Role.PARAMS:
-            value = self.default
-            document["default"] = value.to_json() if isinstance(value, Expression) else value
-        else:
-            document["type"] = self.type
-        document["file"] = self.location.file
-        document["line"] = self.location.line
-        document["origin"] = str(self.origin)
-        if not self.static:
-            document["static"] = False
-        if self.when is not None:
-            document["when"] = self.when
-        if self.boundary:
-            document["boundary"] = True
-        if self.beside is not None:
-            document["beside"] = self.beside
-        return document
+    named_by: NamedBy | None = None
+    """The parameter whose value is the name (then ``default`` is that parameter's default
+    and ``name`` its symbolic form)."""
 
 
 @dataclass(frozen=True)
@@ -123,18 +125,6 @@ class NodeInterface:
 
     def of(self, role: Role) -> list[Entry]:
         return [entry for entry in self.entries if entry.role is role]
-
-    def to_json(self) -> dict[str, object]:
-        document: dict[str, object] = {
-            "package": self.package,
-            "executable": self.executable,
-            "kind": str(self.kind),
-        }
-        if self.node_name is not None:
-            document["node_name"] = self.node_name
-        for role in Role:
-            document[str(role)] = [entry.to_json() for entry in self.of(role)]
-        return document
 
 
 class Fallback(Protocol):
@@ -169,9 +159,3 @@ class Interfaces:
         extra = [] if self.fallback is None else self.fallback.nodes()
         found = self.nodes + [n for n in extra if (n.package, n.executable) not in known]
         return sorted(found, key=lambda node: (node.package, node.executable))
-
-    def to_json(self) -> dict[str, object]:
-        return {
-            "interfaces": [node.to_json() for node in self.listed()],
-            "diagnostics": [diagnostic.to_json() for diagnostic in self.diagnostics],
-        }
