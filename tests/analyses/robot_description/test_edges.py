@@ -3,14 +3,17 @@ with the launch file's and the description's conditions."""
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from rosvar.analyses.checks import Check, check_models
 from rosvar.analyses.communication import Edge, model_edges
-from rosvar.analyses.robot_description.edges import RobotDescriptions
+from rosvar.analyses.robot_description.edges import Simulation
 from rosvar.diagnostics import Severity
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.ros1.resolve import Restriction
+from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Role
 
@@ -58,13 +61,13 @@ LAUNCH = """
 """
 
 
-def _setup(ws: LaunchWorkspace) -> tuple[list[Edge], RobotDescriptions]:
+def _setup(ws: LaunchWorkspace) -> tuple[list[Edge], Simulation]:
     ws.write("urdf/robot.urdf.xacro", ROBOT)
     ws.write("scripts/listener.py", LISTENER)
     file = ws.launch("sim.launch", LAUNCH)
     analysis = ws.analysis()
     interfaces = extract_interfaces(analysis.workspace.packages.values())
-    described = RobotDescriptions(analysis)
+    described = Simulation(analysis)
     return model_edges(analysis.space, analysis.model(file), interfaces, described), described
 
 
@@ -95,7 +98,7 @@ def test_a_simulated_sensor_is_the_missing_partner(ws: LaunchWorkspace) -> None:
     _setup(ws)
     analysis = ws.analysis()
     interfaces = extract_interfaces(analysis.workspace.packages.values())
-    described = RobotDescriptions(analysis)
+    described = Simulation(analysis)
     models = [analysis.model(f) for f in analysis.workspace.launch_files]
     findings = check_models(
         analysis.space, models, interfaces, analysis.workspace.confinement(), described
@@ -116,7 +119,7 @@ def test_xacro_failing_is_a_warning_where_the_launch_stops(ws: LaunchWorkspace) 
     ws.write("scripts/listener.py", LISTENER)
     file = ws.launch("sim.launch", launch)
     analysis = ws.analysis(extra_values={"ns": ["bad"]})
-    described = RobotDescriptions(analysis)
+    described = Simulation(analysis)
     model = analysis.model(file)
     fails = described.fails(model)
     for ns, expected in (("bad", True), ("/", False), ("good", False)):
@@ -124,3 +127,86 @@ def test_xacro_failing_is_a_warning_where_the_launch_stops(ws: LaunchWorkspace) 
     warnings = [g for g in described.gaps(model) if g.severity is Severity.WARNING]
     assert [analysis.space.describe(g.condition) for g in warnings] == ["ns=bad"]
     assert "unknown macro name" in warnings[0].message
+
+
+ROS2_MANIFEST = """<package format="3"><name>bot</name><version>0.0.0</version><description>d
+</description><maintainer email="a@b.c">a</maintainer><license>MIT</license>
+<export><build_type>ament_cmake</build_type></export></package>"""
+ROS2_ROBOT = """<robot name="bot" xmlns:xacro="http://ros.org/wiki/xacro">
+  <xacro:arg name="lidar" default="true"/>
+  <xacro:if value="$(arg lidar)">
+    <gazebo reference="l"><sensor type="ray" name="lidar">
+      <plugin name="scanner" filename="libgazebo_ros_ray_sensor.so">
+        <ros><namespace>/bot</namespace><remapping>~/out:=scan</remapping></ros>
+        <output_type>sensor_msgs/LaserScan</output_type>
+      </plugin>
+    </sensor></gazebo>
+  </xacro:if>
+  <gazebo><plugin name="diff" filename="libgazebo_ros_diff_drive.so">
+    <publish_odom>true</publish_odom>
+  </plugin></gazebo>
+</robot>"""
+ROS2_XML = """<launch>
+  <arg name="lidar" default="true"/>
+  <node pkg="robot_state_publisher" exec="robot_state_publisher">
+    <param name="robot_description"
+      value="$(command 'xacro $(find-pkg-share bot)/urdf/bot.urdf.xacro lidar:=$(var lidar)')"/>
+  </node>
+  <node pkg="gazebo_ros" exec="spawn_entity.py" args="-topic robot_description -entity bot"/>
+</launch>"""
+ROS2_PYTHON = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import Command, FindExecutable, LaunchConfiguration, PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.parameter_descriptions import ParameterValue
+from launch_ros.substitutions import FindPackageShare
+
+def generate_launch_description():
+    description = Command([
+        PathJoinSubstitution([FindExecutable(name="xacro")]), " ",
+        PathJoinSubstitution([FindPackageShare("bot"), "urdf", "bot.urdf.xacro"]),
+        " lidar:=", LaunchConfiguration("lidar"),
+    ])
+    return LaunchDescription([
+        DeclareLaunchArgument("lidar", default_value="false"),
+        Node(package="robot_state_publisher", executable="robot_state_publisher",
+             parameters=[{"robot_description": ParameterValue(description, value_type=str)}]),
+        Node(package="gazebo_ros", executable="spawn_entity.py",
+             arguments=["-topic", "robot_description", "-entity", "bot",
+                        "-robot_namespace", "r2"]),
+    ])
+"""
+
+
+def test_ros2_spawners_read_robot_state_publishers_description(tmp_path: Path) -> None:
+    """``$(command 'xacro ...')`` (XML) and ``Command([...])`` (Python) as the parameter of
+    robot_state_publisher, whose topic spawn_entity.py reads; ROS 2 plugins are nodes named
+    after themselves, with <ros><namespace> (replaced by -robot_namespace) and remappings."""
+    package = tmp_path / "ws" / "bot"
+    (package / "launch").mkdir(parents=True)
+    (package / "urdf").mkdir()
+    (package / "package.xml").write_text(ROS2_MANIFEST)
+    (package / "urdf" / "bot.urdf.xacro").write_text(ROS2_ROBOT)
+    (package / "launch" / "sim.launch.xml").write_text(ROS2_XML)
+    (package / "launch" / "sim.launch.py").write_text(ROS2_PYTHON)
+    analysis = Analysis(discover([tmp_path / "ws"], ros_package_path=""))
+    simulation = Simulation(analysis)
+    found = {}
+    for name in ("sim.launch.xml", "sim.launch.py"):
+        model = analysis.model(str(package / "launch" / name))
+        found[name] = {
+            (e.role, e.name, e.type): Restriction(analysis, model, {}, {}).holds(e.condition)
+            for e in simulation.edges(model)
+        }
+    scan = (Role.PUBLISHES, "/bot/scan", "sensor_msgs/msg/LaserScan")
+    assert found["sim.launch.xml"] == {
+        scan: True,  # lidar defaults to true there
+        (Role.SUBSCRIBES, "/cmd_vel", "geometry_msgs/msg/Twist"): True,
+        (Role.PUBLISHES, "/odom", "nav_msgs/msg/Odometry"): True,
+    }
+    assert found["sim.launch.py"] == {
+        (Role.PUBLISHES, "/r2/scan", "sensor_msgs/msg/LaserScan"): False,  # lidar: false
+        (Role.SUBSCRIBES, "/r2/cmd_vel", "geometry_msgs/msg/Twist"): True,
+        (Role.PUBLISHES, "/r2/odom", "nav_msgs/msg/Odometry"): True,
+    }

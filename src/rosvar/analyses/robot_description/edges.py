@@ -1,4 +1,5 @@
-"""The robot descriptions' Gazebo plugins as edges of the communication graph.
+"""The robot descriptions' Gazebo plugins (and the bridges, :mod:`.bridges`) as edges of the
+communication graph.
 
 Each plugin's use of a name is an edge of the spawner that loads the description, under the
 spawner's condition (its fields' branch, its ``args``), the description's (the parameter or
@@ -13,6 +14,7 @@ plugin of a library rosvar does not know.
 from __future__ import annotations
 
 from rosvar.analyses.communication import Edge, Gap
+from rosvar.analyses.robot_description.bridges import Bridges
 from rosvar.analyses.robot_description.document import Description
 from rosvar.analyses.robot_description.plugins import plugin_uses
 from rosvar.analyses.robot_description.reading import XacroReader
@@ -28,8 +30,9 @@ from rosvar.logic.inputs import OTHER
 PARTIAL_CODES = frozenset({"xacro-unsupported", "xacro-too-large", "package-unknown"})
 
 
-class RobotDescriptions:
-    """The descriptions the launch models of one analysis spawn, read once per model."""
+class Simulation:
+    """What a simulation adds to the graph of the launch models of one analysis, read once
+    per model: the plugins of the descriptions their spawners load, their bridges."""
 
     def __init__(self, analysis: Analysis) -> None:
         workspace = analysis.workspace
@@ -38,6 +41,7 @@ class RobotDescriptions:
             analysis.space, workspace.find, analysis.domains.env_domain, workspace.confinement()
         )
         self.spawns = Spawns(analysis.space, self.reader)
+        self.bridges = Bridges(analysis.space, workspace.confinement())
         self._read: dict[str, tuple[list[Edge], list[Gap]]] = {}
         self._spawned: dict[str, list[Spawn]] = {}
         self._fails: dict[str, BDD] = {}
@@ -66,7 +70,8 @@ class RobotDescriptions:
         if found is None:
             spawns, gaps = self.spawns.of(model)
             self._spawned[model.file] = spawns
-            edges: list[Edge] = []
+            edges, bridge_gaps = self.bridges.of(model)
+            gaps.extend(bridge_gaps)
             for spawn in spawns:
                 edges.extend(self._spawn_edges(model, spawn, gaps))
                 gaps.extend(_description_gaps(self.space, spawn))

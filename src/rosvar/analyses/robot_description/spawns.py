@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Final
 
 from rosvar.analyses.communication import Gap, LaunchedNode
@@ -136,6 +136,8 @@ class Spawns:
             kind = SPAWNERS.get((launched.package, launched.type))
             if kind is None:
                 continue
+            if not launched.name:  # ROS 2, unnamed: its code names it
+                launched = replace(launched, name="{" + launched.type + "}")
             grouped: dict[tuple[Raw | None, ...], tuple[BDD, dict[str, Raw | None]]] = {}
             for branch, text in node.field("args"):
                 where = condition & branch

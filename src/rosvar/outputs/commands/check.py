@@ -16,7 +16,7 @@ FAIL_LEVELS = {Severity.NOTE: 0, Severity.WARNING: 1, Severity.ERROR: 2}
 
 def cmd_check(options: argparse.Namespace) -> int:
     from rosvar.analyses.checks import check_models
-    from rosvar.analyses.robot_description.edges import RobotDescriptions
+    from rosvar.analyses.robot_description.edges import Simulation
     from rosvar.outputs.documents.findings import finding_document
     from rosvar.outputs.sarif import sarif
 
@@ -25,7 +25,7 @@ def cmd_check(options: argparse.Namespace) -> int:
         return EXIT_INPUT
     interfaces = interfaces_of(analysis.workspace, options)
     models = analysis.all_models(progress)
-    described = RobotDescriptions(analysis)
+    described = Simulation(analysis)
     findings = check_models(
         analysis.space, models, interfaces, analysis.workspace.confinement(), described
     )
