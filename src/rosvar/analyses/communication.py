@@ -32,6 +32,7 @@ from rosvar.interpreter.model import LaunchModel, NodeDecl, NodeSchema, Raw
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.terms import Term
 from rosvar.ros import names
 from rosvar.ros.version import RosVersion
 from rosvar.ros2.conventions.namespaces import make_absolute
@@ -157,6 +158,8 @@ class Edge:
     source: Location  # the use in the node's source
     static: bool  # False: a part of the name is not known statically
     boundary: bool = False  # meant for something outside the launched nodes (Entry.boundary)
+    term: Term | None = None
+    """A name known per configuration (a robot description's value): evaluated in one."""
 
     @property
     def channel(self) -> Channel:
@@ -173,6 +176,7 @@ class Gap:
     condition: BDD
     locations: tuple[Location, ...]  # the first is where it is reported (the launching node)
     severity: Severity
+    stops: bool = False  # the launch stops there (xacro failing on a robot description)
 
 
 class Described(Protocol):
@@ -443,13 +447,17 @@ def resolved_graph(
     interfaces: Interfaces,
     scopes: Sequence[Mapping[str, str]] | None = None,
     params: Mapping[str, object] | None = None,
+    more: Iterable[Edge] = (),
 ) -> dict[str, list[dict[str, object]]]:
     """``topics``, ``services`` and ``actions`` of resolved nodes (``rosvar resolve``'s, ROS
     1's or ROS 2's); a hinted entry's where its ``when:`` holds with the node's args
     (``scopes``, one per node) and ROS 1's parameter server (``params``). Without them (ROS 2,
     whose nodes keep their own parameters) a ``when:`` is not known, and the entry is kept as
-    the variational graph keeps it."""
-    uses: list[tuple[str, Role, str, str | None]] = []
+    the variational graph keeps it. ``more``: edges of the configuration beyond the nodes'
+    interfaces (a spawned description's plugins, bridges: :class:`Described`'s)."""
+    uses: list[tuple[str, Role, str, str | None]] = [
+        (edge.node, edge.role, edge.name, edge.type) for edge in more if edge.static
+    ]
     for index, node in enumerate(nodes):
         launched = _resolved_node(node)
         unit = launched.unit()

@@ -6,12 +6,17 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+import pytest
+
 from rosvar.analyses.checks import Check, check_models
 from rosvar.analyses.communication import Edge, model_edges
-from rosvar.analyses.robot_description.edges import Simulation
-from rosvar.diagnostics import Severity
+from rosvar.analyses.robot_description.document import XElement
+from rosvar.analyses.robot_description.edges import Simulation, configuration_edges
+from rosvar.diagnostics import Location, Severity
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
+from rosvar.logic.choice import Choice
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros1.resolve import Restriction
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
@@ -210,3 +215,80 @@ def test_ros2_spawners_read_robot_state_publishers_description(tmp_path: Path) -
         (Role.SUBSCRIBES, "/r2/cmd_vel", "geometry_msgs/msg/Twist"): True,
         (Role.PUBLISHES, "/r2/odom", "nav_msgs/msg/Odometry"): True,
     }
+
+
+def test_queries_see_the_plugins_topics_published_by_the_spawner(ws: LaunchWorkspace) -> None:
+    from rosvar.analyses.query.channels import channel_collections
+    from rosvar.analyses.query.evaluator import QueryEngine
+
+    _setup(ws)
+    analysis = ws.analysis()
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    collections = channel_collections(interfaces, Simulation(analysis))
+    engine = QueryEngine(analysis, collections=collections)
+    [scan] = engine.run("topics[self.name == '/scan']")
+    members = scan.element.attribute("publishers").values()[0].members
+    publishers = {publisher.attribute("name").values()[0] for _when, publisher in members}
+    assert publishers == {"/spawn"}  # the node that loads the plugin
+
+
+CORPUS = Path("/work/shared/corpus")
+HUSKY_SPAWN = CORPUS / "husky/husky/husky_gazebo/launch/spawn_husky.launch"
+HUSKY_CONFIGURATIONS = [
+    ({}, {}),
+    ({}, {"HUSKY_LMS1XX_ENABLED": "1"}),
+    ({}, {"HUSKY_LMS1XX_ENABLED": "true", "HUSKY_LMS1XX_SECONDARY_ENABLED": "1"}),
+    ({}, {"HUSKY_UST10_ENABLED": "1", "HUSKY_UST10_TOPIC": "hokuyo/scan"}),
+    ({}, {"HUSKY_REALSENSE_ENABLED": "1"}),
+    ({}, {"HUSKY_LASER_3D_ENABLED": "1", "HUSKY_LASER_3D_TOPIC": "velodyne_points"}),
+    ({"robot_namespace": "husky_alpha"}, {"HUSKY_LMS1XX_ENABLED": "1"}),
+    ({"robot_namespace": "husky_beta", "multimaster": "true"}, {"HUSKY_REALSENSE_ENABLED": "1"}),
+]
+
+
+def _element(node: tuple[object, ...], space: ConditionSpace) -> XElement:
+    """xacro's printed element as a description element present everywhere."""
+    tag, attributes, text, children = node
+    element = XElement(str(tag), space.true, Location("xacro"))
+    element.attributes = {k: Choice.const(space, v) for k, v in attributes}  # type: ignore[attr-defined]
+    element.texts = [(space.true, Choice.const(space, text))]
+    element.children = [_element(child, space) for child in children]  # type: ignore[attr-defined]
+    return element
+
+
+@pytest.mark.skipif(not HUSKY_SPAWN.is_file(), reason="corpus not available")
+def test_husky_plugins_restricted_are_the_real_xacros(tmp_path: Path) -> None:
+    """Differential: per configuration, the spawner's plugin edges restricted from the
+    variational model are the plugins of what the real xacro prints for the command the
+    launch file gives it (its args, the environment)."""
+    from analyses.robot_description.xacro_oracle import XacroFailed, run_xacro
+    from rosvar.analyses.robot_description.commands import split, xacro_command
+    from rosvar.analyses.robot_description.plugins import Spawning, plugin_uses
+    from rosvar.ros.version import RosVersion
+    from rosvar.ros1.resolve import resolve
+
+    workspace = discover([CORPUS / "husky"], deps=[CORPUS / "_external"], ros_package_path="")
+    analysis = Analysis(workspace)
+    simulation = Simulation(analysis)
+    model = analysis.model(str(HUSKY_SPAWN))
+    simulation.edges(model)
+    packages = {name: package.path for name, package in workspace.packages.items()}
+    compared = 0
+    for args, env in HUSKY_CONFIGURATIONS:
+        restricted = configuration_edges(analysis, [str(HUSKY_SPAWN)], args, env)
+        ours = {(e.role, e.name, e.type) for e in restricted.edges}
+        resolution = resolve(analysis, [str(HUSKY_SPAWN)], args, env)
+        [spawner] = [n for n in resolution.nodes if n["type"] == "spawn_model"]
+        command = str(resolution.params[f"{spawner['namespace']}robot_description"])
+        run = xacro_command(split(command.removeprefix("__command__(").removesuffix(")")))
+        assert run is not None and isinstance(run.file, str)
+        printed = run_xacro(run.file, {k: str(v) for k, v in run.args.items()}, env, packages)
+        assert not isinstance(printed, XacroFailed), (args, env)
+        spawning = Spawning(str(spawner["namespace"]), None, "husky")
+        uses, _unread = plugin_uses(
+            analysis.space, _element(printed, analysis.space), RosVersion.ROS1, spawning
+        )
+        theirs = {(u.role, u.name, u.type) for u in uses}
+        assert ours == theirs, (args, env)
+        compared += bool(theirs)
+    assert compared == len(HUSKY_CONFIGURATIONS)

@@ -13,6 +13,9 @@ plugin of a library rosvar does not know.
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field, replace
+
 from rosvar.analyses.communication import Edge, Gap
 from rosvar.analyses.robot_description.bridges import Bridges
 from rosvar.analyses.robot_description.document import Description
@@ -26,6 +29,7 @@ from rosvar.logic.atoms import SlotAtom
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER
+from rosvar.ros1.resolve import ResolutionError, Restriction
 
 PARTIAL_CODES = frozenset({"xacro-unsupported", "xacro-too-large", "package-unknown"})
 
@@ -116,6 +120,7 @@ class Simulation:
                     use.location,
                     isinstance(use.name, str) and "{" not in name,
                     use.boundary,
+                    None if isinstance(use.name, str) else use.name,
                 )
             )
         return edges
@@ -138,6 +143,7 @@ def _description_gaps(space: ConditionSpace, spawn: Spawn) -> list[Gap]:
                 condition,
                 (spawn.node.location, failure.location),
                 Severity.WARNING if foreseen else Severity.NOTE,
+                stops=True,
             )
         )
     for diagnostic in description.diagnostics:
@@ -180,3 +186,41 @@ def _locations(description: Description) -> tuple[Location, ...]:
     return tuple(
         dict.fromkeys(d.location for d in description.diagnostics if d.code in PARTIAL_CODES)
     )[:3]
+
+
+@dataclass
+class ConfigurationEdges:
+    """What a simulation adds to one configuration: its edges, and the errors that stop the
+    launch (xacro failing on a description a spawner reads)."""
+
+    edges: list[Edge] = field(default_factory=list)
+    errors: list[ResolutionError] = field(default_factory=list)
+
+
+def configuration_edges(
+    analysis: Analysis, files: Sequence[str], args: Mapping[str, str], env: Mapping[str, str]
+) -> ConfigurationEdges:
+    """The variational edges of ``files`` restricted to the configuration ``args``/``env``
+    (``rosvar resolve``'s), read before the restriction is made: reading a description
+    declares the environment variables it reads."""
+    simulation = Simulation(analysis)
+    models = [analysis.model(file) for file in files]
+    for model in models:
+        simulation.edges(model)
+    found = ConfigurationEdges()
+    for model in models:
+        restriction = Restriction(analysis, model, args, env)
+        for edge in simulation.edges(model):
+            if not restriction.holds(edge.condition):
+                continue
+            if edge.term is not None:
+                try:
+                    name = restriction.evaluate(edge.term, edge.source, "plugin name")
+                except ResolutionError:
+                    continue
+                edge = replace(edge, name=name, static="{" not in name, term=None)
+            found.edges.append(edge)
+        for gap in simulation.gaps(model):
+            if gap.stops and restriction.holds(gap.condition) and not found.errors:
+                found.errors.append(ResolutionError("launch-stops", gap.message, gap.locations[0]))
+    return found

@@ -24,7 +24,7 @@ from rosvar.diagnostics import Location
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.terms import concat, is_term
+from rosvar.logic.terms import Apply, concat, is_term
 from rosvar.ros import names
 from rosvar.ros.version import RosVersion
 from rosvar.workspace.interfaces.model import Role
@@ -660,8 +660,9 @@ def _resolved(
     """The names the plugin's node handle (ROS 2: its node, remapped by the first rule
     that matches) resolves ``name`` to, each with its condition; a term where a part is
     only known per configuration."""
-    if is_term(namespace) or is_term(name):
-        return [(condition, concat([namespace, "/", name]))]
+    if is_term(namespace) or is_term(name):  # joined once the values are known
+        joined = Apply("ns_join", (concat(["/", namespace]), name))
+        return [(condition, Apply("canonicalize", (joined,)))]
     assert isinstance(namespace, str) and isinstance(name, str)
     if kind.namespacing is Namespacing.ROBOT_NAMESPACE:
         return [(condition, names.canonicalize_name(names.ns_join(_absolute(namespace), name)))]
