@@ -23,15 +23,16 @@ import enum
 import re
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
-from typing import TypeVar
+from typing import Protocol, TypeVar
 
 from rosvar.analyses.param_values import ROS2_PARAMETERS, ParamValues, Unknown, param_default
 from rosvar.analyses.when import When, concrete_holds, when_condition
-from rosvar.diagnostics import Location
+from rosvar.diagnostics import Location, Severity
 from rosvar.interpreter.model import LaunchModel, NodeDecl, NodeSchema, Raw
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.terms import Term
 from rosvar.ros import names
 from rosvar.ros.version import RosVersion
 from rosvar.ros2.conventions.namespaces import make_absolute
@@ -157,10 +158,40 @@ class Edge:
     source: Location  # the use in the node's source
     static: bool  # False: a part of the name is not known statically
     boundary: bool = False  # meant for something outside the launched nodes (Entry.boundary)
+    term: Term | None = None
+    """A name known per configuration (a robot description's value): evaluated in one."""
 
     @property
     def channel(self) -> Channel:
         return CHANNEL[self.role]
+
+
+@dataclass(frozen=True)
+class Gap:
+    """A part of the graph analysis could not read where ``condition`` holds (a robot
+    description xacro fails on, a Gazebo plugin of an unknown library): ``name`` says what."""
+
+    name: str
+    message: str
+    condition: BDD
+    locations: tuple[Location, ...]  # the first is where it is reported (the launching node)
+    severity: Severity
+    stops: bool = False  # the launch stops there (xacro failing on a robot description)
+
+
+class Described(Protocol):
+    """Uses that a launch model makes beyond its nodes' code: the Gazebo plugins of the robot
+    descriptions its spawners load, the topics its bridges' arguments name (edges of the
+    node that loads or runs them), and what of those could not be read."""
+
+    def edges(self, model: LaunchModel) -> list[Edge]: ...
+
+    def gaps(self, model: LaunchModel) -> list[Gap]: ...
+
+    def fails(self, model: LaunchModel) -> BDD:
+        """Where running what the model launches fails although the model loads (xacro on
+        a robot description: roslaunch stops, as ``ros2 launch`` does)."""
+        ...
 
 
 def find_interface(interfaces: Interfaces, unit: tuple[str, str]) -> NodeInterface | None:
@@ -168,13 +199,21 @@ def find_interface(interfaces: Interfaces, unit: tuple[str, str]) -> NodeInterfa
     return interfaces.find(package or None, executable)
 
 
-def model_edges(space: ConditionSpace, model: LaunchModel, interfaces: Interfaces) -> list[Edge]:
-    """Every edge the nodes of ``model`` can have (tests excluded: they run apart)."""
+def model_edges(
+    space: ConditionSpace,
+    model: LaunchModel,
+    interfaces: Interfaces,
+    described: Described | None = None,
+) -> list[Edge]:
+    """Every edge the nodes of ``model`` can have (tests excluded: they run apart), and
+    those ``described`` gives them (robot descriptions, bridges)."""
     edges: list[Edge] = []
     params = ParamValues(space, [(space.true, model)])
     for node in model.nodes:
         if not node.is_test:
             edges.extend(node_edges(space, model.file, node, interfaces, params))
+    if described is not None:
+        edges.extend(described.edges(model))
     return edges
 
 
@@ -408,13 +447,17 @@ def resolved_graph(
     interfaces: Interfaces,
     scopes: Sequence[Mapping[str, str]] | None = None,
     params: Mapping[str, object] | None = None,
+    more: Iterable[Edge] = (),
 ) -> dict[str, list[dict[str, object]]]:
     """``topics``, ``services`` and ``actions`` of resolved nodes (``rosvar resolve``'s, ROS
     1's or ROS 2's); a hinted entry's where its ``when:`` holds with the node's args
     (``scopes``, one per node) and ROS 1's parameter server (``params``). Without them (ROS 2,
     whose nodes keep their own parameters) a ``when:`` is not known, and the entry is kept as
-    the variational graph keeps it."""
-    uses: list[tuple[str, Role, str, str | None]] = []
+    the variational graph keeps it. ``more``: edges of the configuration beyond the nodes'
+    interfaces (a spawned description's plugins, bridges: :class:`Described`'s)."""
+    uses: list[tuple[str, Role, str, str | None]] = [
+        (edge.node, edge.role, edge.name, edge.type) for edge in more if edge.static
+    ]
     for index, node in enumerate(nodes):
         launched = _resolved_node(node)
         unit = launched.unit()

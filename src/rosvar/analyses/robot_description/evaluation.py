@@ -16,6 +16,8 @@ import re
 from collections.abc import Sequence
 from typing import Final, Protocol
 
+from rosvar.analyses.robot_description.commands import parts
+from rosvar.analyses.robot_description.document import Text
 from rosvar.analyses.robot_description.literals import (
     NAMESPACES,
     Deferred,
@@ -165,18 +167,21 @@ class Evaluator:
     def _expression(self, inner: Value, table: Table) -> Choice[Value]:
         if isinstance(inner, Fail):
             return Choice.const(self.space, inner)
-        if not isinstance(inner, str):
+        if not isinstance(inner, str) and not is_term(inner):
             return self._unknown(f"${{{inner}}}")
-        expression = inner
+        expression: Text = inner  # type: ignore[assignment]
+        # a part known per configuration (``'$(arg x)' == 'a'``) stands inside one token:
+        # the names are those of the text with a number in its place
+        probe = "".join(p if isinstance(p, str) else "0" for p in parts(expression))
         try:
-            names = sorted(referenced_names(expression.strip(), frozenset(NAMESPACES)))
+            names = sorted(referenced_names(probe.strip(), frozenset(NAMESPACES)))
         except EvalRefused as refused:
             if refused.message.startswith(_SYNTAX_ERRORS):
                 return self._fail(f"{refused.message} when evaluating expression '{inner}'")
             self.walk.unsupported(f"${{{expression}}}: {refused.message}")
             return self._unknown(f"${{{expression}}}")
         values = [table.lookup(name, self.walk.pc, self.lazy) for name in names]
-        if not self._affordable(expression, values):
+        if not self._affordable(str(expression), values):
             return self._unknown(f"${{{expression}}}")
 
         def run(leaves: list[object]) -> Value:
@@ -186,12 +191,14 @@ class Evaluator:
             return Choice.const(self.space, run([]))
         return combine(values, run)
 
-    def _evaluated(self, expression: str, names: Sequence[str], leaves: list[object]) -> Value:
+    def _evaluated(self, expression: Text, names: Sequence[str], leaves: list[object]) -> Value:
         present = [(n, v) for n, v in zip(names, leaves, strict=True) if v is not ABSENT]
         for _name, leaf in present:
             if isinstance(leaf, Fail):
                 return leaf
         try:
+            if not isinstance(expression, str):
+                raise Unread("the expression's text is known per configuration")
             return evaluate(expression.strip(), dict(present))
         except Unread:
             operands: list[Operand] = []
@@ -200,7 +207,8 @@ class Evaluator:
                 if operand is None:
                     return self._opaque(f"${{{expression}}}")
                 operands.append(operand)
-            return Deferred(deferred(expression.strip(), tuple(n for n, _ in present), operands))
+            written = expression.strip() if isinstance(expression, str) else expression
+            return Deferred(deferred(written, tuple(n for n, _ in present), operands))
         except EvalFailed as failure:
             return Fail(f"{failure.message} when evaluating expression '{expression}'", "xacro")
         except EvalRefused as refused:

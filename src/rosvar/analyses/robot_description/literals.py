@@ -139,7 +139,7 @@ def _decode(operand: object) -> object:
     return text
 
 
-def deferred(expression: str, names: tuple[str, ...], operands: list[Operand]) -> Term:
+def deferred(expression: str | Term, names: tuple[str, ...], operands: list[Operand]) -> Term:
     """The term of ``expression`` over the values of ``names`` (``operands``, encoded): its
     string is the value's ``str()``."""
     return Apply("xacro_eval", (expression, names, *operands), display=f"${{{expression}}}")
@@ -150,7 +150,7 @@ def _evaluate_deferred(_host: object, expression: str, *operands: object) -> str
     assert isinstance(names, tuple)
     values = dict(zip(names, map(_decode, operands[1:]), strict=True))
     try:
-        return str(evaluate(expression, values))
+        return str(evaluate(expression.strip(), values))
     except (EvalRefused, EvalFailed) as error:
         raise TermError(f"${{{expression}}}: {error.message}") from None
 

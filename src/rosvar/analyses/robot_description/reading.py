@@ -52,7 +52,23 @@ class XacroReader:
         return found
 
     def expand(
-        self, file: str, args: Mapping[str, Choice[Raw | _Missing]], condition: BDD
+        self,
+        file: str,
+        args: Mapping[str, Choice[Raw | _Missing]],
+        condition: BDD,
+        plain: bool = False,
     ) -> Description:
-        """``xacro FILE name:=value...`` where ``condition`` holds, each arg a choice."""
-        return Expansion(self, file, dict(args), condition).run()
+        """``xacro FILE name:=value...`` where ``condition`` holds, each arg a choice; with
+        ``plain``, the file as it is (a URDF or SDF file a spawner reads)."""
+        return Expansion(self, file, dict(args), condition, plain).run()
+
+    def expand_text(self, text: str, file: str, condition: BDD) -> Description:
+        """A description given as text (a parameter's value, a ``textfile``), as it is;
+        ``file``: where it is written, for locations."""
+        parsed = parse_xml_bytes(text.encode("utf-8", "surrogateescape"), file)
+        expansion = Expansion(self, file, {}, condition, plain=True, root=parsed.root)
+        for diagnostic in parsed.diagnostics:
+            expansion.sink.add(diagnostic)
+        if parsed.root is None:
+            expansion.fail(self.space.true, "the robot description is no XML", "xacro-invalid")
+        return expansion.run()

@@ -130,8 +130,16 @@ class Expansion:
         file: str,
         args: dict[str, Choice[Raw | _Missing]],
         condition: BDD,
+        plain: bool = False,
+        root: Entity | None = None,
     ) -> None:
+        """``plain``: a document read as it is (a URDF file a spawner reads, a parameter's
+        text), no xacro tag nor substitution evaluated; ``root``: its tree, when it is no
+        file."""
         self.reader = reader
+        self.plain = plain
+        self.root = root
+        self.unexpanded = False  # a xacro tag met in a plain document (reported once)
         self.space = reader.space
         self.file = file
         self.condition = condition
@@ -197,7 +205,7 @@ class Expansion:
 
     # -- the run ---------------------------------------------------------------------------
     def run(self) -> Description:
-        root = self.load(self.file)
+        root = self.root if self.root is not None else self.load(self.file)
         element = None
         if root is not None:
             element = XElement(root.tag, self.pc, root.location)
@@ -259,8 +267,9 @@ class Expansion:
             self._location = saved
 
     def fail(self, condition: BDD, message: str, code: str = "xacro-error") -> None:
-        """xacro raises here where ``condition`` holds on the path."""
-        where = self.pc & condition
+        """xacro raises here where ``condition`` holds on the path; where a part before was
+        not followed (an include of an unknown file), this may be its doing: unknown."""
+        where = self.pc & condition & ~self.unknown
         if where != self.space.false:
             self.failures.append(Failure(where, self.location, message))
             self.sink.warning(code, f"xacro fails here: {message}", self.location)
@@ -288,6 +297,8 @@ class Expansion:
 
     def texts(self, text: str, symbols: Table) -> Choice[Text]:
         """``str(eval_text(text))``: the text xacro writes."""
+        if self.plain:
+            return Choice.const(self.space, text)
         return self.eval(text, symbols).map(text_of)
 
     def words(self, text: str, symbols: Table) -> Iterator[tuple[BDD, str]]:
@@ -314,6 +325,12 @@ class Expansion:
                 with self.under(condition):
                     term = self._tested(leaf, text, tested)
                 yes = self.space.predicate("xacro-true", term)
+                if opaque(term):  # never computed: either way, and the rest unknown
+                    true |= condition & yes
+                    false |= condition & ~yes
+                    with self.under(condition):
+                        self.unknown |= self.pc
+                    continue
                 no = self.space.predicate("xacro-false", term)
                 self.space.constrain(~(yes & no))
                 true |= condition & yes
@@ -381,11 +398,18 @@ class Expansion:
             self.nesting -= 1
 
     def element(self, entity: Entity, parent: XElement, macros: Table, symbols: Table) -> None:
-        found = HANDLERS.get(entity.tag)
+        found = None if self.plain else HANDLERS.get(entity.tag)
         if found is not None:
             found(self, entity, parent, macros, symbols)
-        elif entity.tag.startswith(XACRO_PREFIX):
+        elif entity.tag.startswith(XACRO_PREFIX) and not self.plain:
             self.call(entity, entity.tag[len(XACRO_PREFIX) :], parent, macros, symbols)
+        elif entity.tag.startswith(XACRO_PREFIX) and self.plain and not self.unexpanded:
+            self.unexpanded = True
+            self.sink.warning(
+                "description-unexpanded",
+                f"<{entity.tag}> in a description read as it is: xacro never expands it",
+                self.location,
+            )
         else:
             self.made += 1
             if self.made > MAX_ELEMENTS:
@@ -549,6 +573,21 @@ class Expansion:
                 taken_all |= condition
             value = Choice.of([*branches, (~taken_all, ABSENT)], self.space.false)
             symbols.set(param, value, self.pc)
+
+
+def opaque(term: object) -> bool:
+    """Whether a term holds a value rosvar never computes (over its limits, unsupported);
+    walked without recursion: a recursive macro nests terms deeply."""
+    pending = [term]
+    seen: set[int] = set()
+    while pending:
+        item = pending.pop()
+        if isinstance(item, Apply) and id(item) not in seen:
+            if item.function == "too_complex":
+                return True
+            seen.add(id(item))
+            pending.extend(item.operands)
+    return False
 
 
 def _counted(count: Choice[int], index: int) -> BDD:

@@ -26,6 +26,7 @@ if TYPE_CHECKING:
 
 def cmd_resolve(options: argparse.Namespace) -> int:
     from rosvar.analyses.communication import resolved_graph
+    from rosvar.analyses.robot_description.edges import configuration_edges
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.ros1.resolve import resolve
 
@@ -53,13 +54,17 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         env_values={k: [v] for k, v in env.items()},
     )
     warn_unknown_args(analysis, files, args)
+    # before resolving: reading the descriptions declares the environment they read
+    simulated = configuration_edges(analysis, files, args, env)
     result = resolve(analysis, files, args, env)
+    if result.ok:
+        result.errors.extend(simulated.errors)
     document = result.to_json()
     interfaces = interfaces_of(workspace, options)
     for diagnostic in interfaces.diagnostics:
         if diagnostic.code == "hints-invalid":
             print(diagnostic, file=sys.stderr)
-    graph = resolved_graph(result.nodes, interfaces, result.scopes, result.params)
+    graph = resolved_graph(result.nodes, interfaces, result.scopes, result.params, simulated.edges)
     document.update(graph)
     if options.json:
         print_json(document)
