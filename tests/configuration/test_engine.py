@@ -7,10 +7,10 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from configuration.helpers import choices, configurator, present, run, states
+from configuration.helpers import choices, configurator, present, run, same_as_resolve, states
 from rosvar.analyses.feature_model.operations import count_configurations
 from rosvar.configuration.choices import ChoiceError
-from rosvar.configuration.engine import Configurator
+from rosvar.configuration.engine import ConfigurationState, Configurator
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -245,3 +245,64 @@ def test_an_arg_roslaunch_stops_without_is_asked_for_and_an_unused_one_left_off(
     typed = run(engine, "select a.launch", "set a.launch:out=screen")
     assert typed.complete and typed.command == "roslaunch pkg a.launch out:=screen"
     assert typed.graph.errors == []  # absent: not listed
+
+
+TYPED = """  <arg name="rate" default="5"/>
+  <arg name="fast" default="false"/>
+  <group if="$(arg fast)">
+    <param name="rate" type="int" value="$(arg rate)"/>
+    <param name="description" command="$(arg rate)"/>
+  </group>
+  <node pkg="pkg" type="t" name="n"/>
+"""
+
+
+def test_a_typed_text_every_product_left_fails_by_is_refused_with_where(
+    ws: LaunchWorkspace,
+) -> None:
+    """issue 30: ``initial_reset:=typed8`` made a product whose command roslaunch refuses."""
+    ws.launch("t.launch", TYPED)
+    engine = configurator(ws)
+    state = run(engine, "set t.launch:fast=true", "set t.launch:rate=abc")
+    [refusal] = state.refused
+    assert refusal.choice.value == "abc"
+    assert "roslaunch would stop at " in refusal.reason
+    assert "t.launch:5:5: invalid literal for int() with base 10: 'abc' [param-invalid]" in (
+        refusal.reason
+    )
+    assert "t.launch:rate" not in state.untyped and typed_failures(state) == []
+    assert run(engine, "set t.launch:fast=true", "set t.launch:rate=7").refused == []
+
+
+def test_a_typed_text_some_products_fail_by_is_their_error_under_its_condition(
+    ws: LaunchWorkspace,
+) -> None:
+    ws.launch("t.launch", TYPED)
+    engine = configurator(ws)
+    typed = run(engine, "set t.launch:rate=abc")
+    assert typed.refused == []
+    [error] = typed_failures(typed)
+    assert (error["line"], error["presence"], error["condition"]) == (5, "undetermined", "fast")
+    assert typed.summary.errors == []
+    chosen = choices("set t.launch:rate=abc", "set t.launch:fast=true")
+    failing = engine.state(chosen + engine.completion(chosen))
+    assert failing.complete and [e["presence"] for e in typed_failures(failing)] == ["present"]
+    assert [e["code"] for e in failing.summary.errors] == ["param-invalid"]
+    assert same_as_resolve(ws.analysis(), failing) == 0  # rosvar resolve refuses it too
+    loads = run(engine, "set t.launch:rate=abc", "set t.launch:fast=false")
+    assert typed_failures(loads) == [] and loads.summary.errors == []
+
+
+def typed_failures(state: ConfigurationState) -> list[dict[str, object]]:
+    """The errors of texts typed for ``<other>`` values that are not absent."""
+    return [e for e in state.graph.errors if e["code"] == "param-invalid"]
+
+
+def test_a_command_param_shows_what_roslaunch_loads_once_typed(ws: LaunchWorkspace) -> None:
+    ws.launch("t.launch", TYPED)
+    engine = configurator(ws)
+    chosen = choices("set t.launch:fast=true", "set t.launch:rate=12")
+    state = engine.state(chosen + engine.completion(chosen))
+    params = {p["name"]: p["value"] for p in state.graph.params if p["presence"] == "present"}
+    assert params == {"/rate": 12, "/description": "__command__(12)"}
+    assert same_as_resolve(ws.analysis(), state) == 1

@@ -313,6 +313,12 @@ class Configurator:
         if after is None:
             reason = self._reason(kept, entry)
             return replace(replay, refused=(*replay.refused, Refusal(choice, reason)))
+        if entry.arg is not None:  # a typed text: refused where every product left fails by it
+            stops = self.views.stops(after, _texts([*kept, entry]), entry.arg)
+            if stops:
+                because = "; ".join(f"{f.location}: {f.message} [{f.code}]" for f in stops)
+                reason = f"{_show(choice)} is impossible: roslaunch would stop at {because}"
+                return replace(replay, refused=(*replay.refused, Refusal(choice, reason)))
         return _Replay(accepted, replay.refused, (*kept, entry), after)
 
     def completion(self, choices: Sequence[UserChoice]) -> list[UserChoice]:

@@ -31,7 +31,15 @@ from rosvar.analyses.communication import (
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.param_values import ParamValues
-from rosvar.analyses.resolve import ResolutionError, test_fields
+from rosvar.analyses.resolve import (
+    ResolutionError,
+    check_remap,
+    deferred_value,
+    evaluated,
+    rosparam_pairs,
+    test_fields,
+    typed_node,
+)
 from rosvar.analyses.ros2.resolve import parameter_file
 from rosvar.configuration.derivation import Presence
 from rosvar.configuration.lowering import Bounds, Lowering
@@ -42,13 +50,9 @@ from rosvar.interpreter.model import (
     LaunchModel,
     NodeDecl,
     ParamDecl,
-    ParamSource,
     Raw,
     YamlDecl,
 )
-from rosvar.interpreter.tags.param import param_value
-from rosvar.interpreter.tags.rosparam import load_rosparam
-from rosvar.interpreter.validation import node_values
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
@@ -64,6 +68,29 @@ Shown = tuple[str, str | None]
 """A condition's presence at one step, and its readable form while undetermined."""
 Render = Callable[["Values", Sequence[Shown]], list[Fields]]
 """An element's fields for concrete values and the presence of each of its parts."""
+
+
+@dataclass(frozen=True)
+class Failure:
+    """Where roslaunch stops loading an element: in one of its parts (its index), or in the
+    element itself (``part`` None). A record, not the exception: one kept would hold the
+    frames it was raised in, and the diagrams they reach."""
+
+    part: int | None
+    code: str
+    message: str
+    location: Location
+
+    @classmethod
+    def of(cls, part: int | None, error: ResolutionError) -> Failure:
+        return cls(part, error.code, error.message, error.location)
+
+    def to_json(self) -> Fields:
+        return {"code": self.code, "message": self.message, **self.location.to_json()}
+
+
+Check = Callable[["Values"], list[Failure]]
+"""Where an element's strings, once every input it reads has one, make roslaunch stop."""
 
 
 class Values:
@@ -85,6 +112,12 @@ class Values:
             return evaluate(raw, self.concrete, self.host)
         except (TermError, LookupError, ValueError):
             return str(raw)
+
+    def strict(self, raw: Raw | None, location: Location, what: str) -> str | None:
+        """The string of ``raw``, or :class:`ResolutionError` where roslaunch has none."""
+        if raw is None or isinstance(raw, str):
+            return raw
+        return evaluated(raw, self.concrete, self.host, location, what)
 
 
 class PartKind(StrEnum):
@@ -139,6 +172,7 @@ class Element:
     bounds: Bounds  # solver manager
     render: Render  # fields for one set of concrete values (several for a YAML load)
     inputs: frozenset[Input] = frozenset()  # inputs its fields still need
+    check: Check | None = None  # where those inputs' strings make roslaunch stop
     nodes: list[str] = field(default_factory=list)  # names: the node variants using it
     parts: tuple[Part, ...] = ()  # nodes: their conditional remaps and environment settings
 
@@ -235,6 +269,7 @@ class VariationalGraph:
         inputs: Iterable[Input] = (),
         nodes: list[str] | None = None,
         parts: tuple[Part, ...] = (),
+        check: Check | None = None,
     ) -> Element | None:
         """The element, unless no configuration has it; ``id_`` (or made by it) is only
         taken by an element added, so the variants of one place are numbered 1, 2, ..."""
@@ -249,6 +284,7 @@ class VariationalGraph:
             self.lowering.bounds(condition),
             render,
             frozenset(inputs),
+            check if inputs else None,
             nodes or [],
             parts,
         )
@@ -278,24 +314,26 @@ class VariationalGraph:
             factors = (launched, fix(param.condition))
             if isinstance(param, ParamDecl):
                 for variant, (name, value) in self._variants(factors, [param.name, param.value]):
+                    loaded = _ParamValue(name, value, param.location, self.confinement)
                     self._add(
                         ElementKind.PARAM,
                         numbered(param.location),
                         model.file,
                         variant,
-                        _param_renderer(name, value, param.location, self.confinement),
-                        _needs(name, value.raw if isinstance(value, DeferredValue) else value),
+                        loaded.render,
+                        _needs(name, loaded.raw),
+                        check=loaded.check,
                     )
             else:
+                loads = _RosparamLoad(param, self.confinement)
                 self._add(
                     ElementKind.PARAM,
                     numbered(param.location),
                     model.file,
                     conjunction(factors),
-                    _yaml_renderer(param, self.confinement),
-                    _needs(
-                        param.scope_ns, param.command, param.ns, param.file, param.param, param.text
-                    ),
+                    loads.render,
+                    _needs(*loads.raws),
+                    check=loads.check,
                 )
         for include in model.includes:
             if not include.resolved:  # roslaunch stops where it cannot read the file
@@ -350,6 +388,7 @@ class VariationalGraph:
                     *(p for pair in remaps + env + parameters for p in pair[:2]),
                 ),
                 parts=tuple(parts),
+                check=None if node.ros2 else _node_check(raw, remaps, env, node),
             )
             if element is not None and not node.is_test:
                 self._topic_uses(element, raw, remaps)
@@ -610,8 +649,8 @@ def _node_renderer(
     def render(values: Values, parts: Sequence[Shown]) -> list[Fields]:
         text = {k: values.text(v) for k, v in raw.items()}
         try:
-            typed: Fields = node_values(text)
-        except ValueError:
+            typed: Fields = typed_node(text, node.location)
+        except ResolutionError:
             typed = {}
         undetermined: list[Fields] = []
         mapping: dict[str, str] = {}
@@ -675,45 +714,116 @@ def _present(
     return shown if presence == Presence.PRESENT else None
 
 
-def _param_renderer(
-    name: object, value: object, location: Location, confinement: Confinement
-) -> Render:
-    def render(values: Values, _parts: Sequence[Shown]) -> list[Fields]:
-        shown: object = value
+class _ParamValue:
+    """A ``<param>`` variant's value as roslaunch loads it: shown, and checked once its
+    strings are known (the same conversion as ``rosvar resolve``'s)."""
+
+    def __init__(
+        self, name: object, value: object, location: Location, confinement: Confinement
+    ) -> None:
+        self.name = cast(Raw, name)
+        self.value = value
+        self.raw = value.raw if isinstance(value, DeferredValue) else value
+        self.location = location
+        self.confinement = confinement
+
+    def loaded(self, values: Values) -> object:
+        """The value loaded (raises :class:`ResolutionError` where roslaunch stops)."""
+        value, where = self.value, self.location
         if isinstance(value, DeferredValue):
-            concrete = values.text(value.raw) or ""
-            try:
-                shown = json_value(
-                    param_value(ParamSource.VALUE, concrete, value.ptype, confinement)
-                )
-            except (ValueError, OSError):
-                shown = concrete
-        elif is_term(value):
-            shown = values.text(value)  # type: ignore[arg-type]
-        else:
-            shown = json_value(value)
-        return [{"name": values.text(cast(Raw, name)), "value": shown, **_where(location)}]
+            text = values.strict(value.raw, where, f"param {values.text(self.name)}") or ""
+            return json_value(deferred_value(value, text, where, self.confinement))
+        if is_term(value):
+            return values.strict(cast(Raw, value), where, f"param {values.text(self.name)}")
+        return json_value(value)
 
-    return render
-
-
-def _yaml_renderer(param: YamlDecl, confinement: Confinement) -> Render:
-    raws = (param.scope_ns, param.command, param.ns, param.file, param.param, param.text)
-
-    def render(values: Values, _parts: Sequence[Shown]) -> list[Fields]:
-        scope_ns, command, ns, file, name, body = (values.text(p) for p in raws)
-        symbolic = [{"name": f"{scope_ns} (YAML)", "value": "<yaml>", **_where(param.location)}]
-        if not values.knows(raws):
-            return symbolic
+    def render(self, values: Values, _parts: Sequence[Shown]) -> list[Fields]:
         try:
-            pairs = load_rosparam(
-                str(command), ns, file, name, body or "", str(scope_ns), confinement
-            )
-        except (ValueError, OSError):
-            return symbolic
-        return [{"name": key, "value": json_value(v), **_where(param.location)} for key, v in pairs]
+            shown = self.loaded(values)
+        except ResolutionError:  # its strings not known yet, or failing (``check``)
+            shown = values.text(cast(Raw, self.raw))
+        name = values.text(self.name)
+        return [{"name": name, "value": shown, **_where(self.location)}]
 
-    return render
+    def check(self, values: Values) -> list[Failure]:
+        if not values.knows([self.name, cast(Raw, self.raw)]):
+            return []
+        try:
+            values.strict(self.name, self.location, "param name")
+            self.loaded(values)
+        except ResolutionError as error:
+            return [Failure.of(None, error)]
+        return []
+
+
+class _RosparamLoad:
+    """A ``<rosparam>``'s params as roslaunch loads them: shown, and checked once its
+    strings are known (``rosvar resolve``'s load)."""
+
+    def __init__(self, param: YamlDecl, confinement: Confinement) -> None:
+        self.raws = (param.scope_ns, param.command, param.ns, param.file, param.param, param.text)
+        self.location = param.location
+        self.confinement = confinement
+
+    def pairs(self, values: Values) -> list[tuple[str, object]]:
+        """The params set (raises :class:`ResolutionError` where roslaunch stops)."""
+        scope_ns, command, ns, file, name, body = (
+            values.strict(raw, self.location, "<rosparam>") for raw in self.raws
+        )
+        texts = (str(scope_ns), str(command), ns, file, name, body or "")
+        return rosparam_pairs(texts, self.location, self.confinement)
+
+    def render(self, values: Values, _parts: Sequence[Shown]) -> list[Fields]:
+        where = _where(self.location)
+        if values.knows(self.raws):
+            try:
+                return [
+                    {"name": key, "value": json_value(v), **where} for key, v in self.pairs(values)
+                ]
+            except ResolutionError:
+                pass  # failing: ``check`` tells
+        return [{"name": f"{values.text(self.raws[0])} (YAML)", "value": "<yaml>", **where}]
+
+    def check(self, values: Values) -> list[Failure]:
+        if not values.knows(self.raws):
+            return []
+        try:
+            self.pairs(values)
+        except ResolutionError as error:
+            return [Failure.of(None, error)]
+        return []
+
+
+def _node_check(
+    raw: Mapping[str, Raw | None], remaps: list[_Setting], env: list[_Setting], node: NodeDecl
+) -> Check:
+    """Where a ROS 1 node variant's strings make roslaunch stop, as ``rosvar resolve``
+    loads it: its fields, and each remap and environment setting (in its part, if any)."""
+    where = node.location
+
+    def check(values: Values) -> list[Failure]:
+        found: list[Failure] = []
+        if values.knows(raw.values()):
+            try:
+                text = {k: values.strict(v, where, f"<node> {k}") for k, v in raw.items()}
+                typed_node(text, where)
+                if node.is_test:
+                    test_fields(text, where)
+            except ResolutionError as error:
+                found.append(Failure.of(None, error))
+        for setting, label in [*((r, "remap") for r in remaps), *((e, "env") for e in env)]:
+            first, second, part = setting
+            if not values.knows((first, second)):
+                continue
+            try:
+                pair = (values.strict(first, where, label), values.strict(second, where, label))
+                if label == "remap":
+                    check_remap(*pair, where)
+            except ResolutionError as error:
+                found.append(Failure.of(part, error))
+        return found
+
+    return check
 
 
 def _where(location: Location) -> Fields:
