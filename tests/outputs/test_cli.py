@@ -1,7 +1,7 @@
 """The command line: ``rosvar analyze`` and ``rosvar resolve``, their output and exit codes.
 
-Exit codes (``rosvar.outputs.cli``): 0 success, 1 the configuration fails (errors or conflicts),
-2 usage error, 3 nothing to analyse / a ``--launch`` file missing.
+Exit codes (``rosvar.outputs.commands.exit_codes``): 0 success, 1 the configuration fails
+(errors or conflicts), 2 usage error, 3 nothing to analyse / a ``--launch`` file missing.
 """
 
 from __future__ import annotations
@@ -21,14 +21,13 @@ import pytest
 
 import rosvar
 from rosvar.analyses.feature_model import extraction
-from rosvar.outputs.cli import (
+from rosvar.outputs.cli import main, parser
+from rosvar.outputs.commands.exit_codes import (
     EXIT_FAILS,
     EXIT_INPUT,
     EXIT_OK,
     EXIT_TOO_LARGE,
     EXIT_USAGE,
-    main,
-    parser,
 )
 from workspace.interfaces.ros2_packages import MANIFEST, write_ros2_packages
 

@@ -7,7 +7,8 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from rosvar.outputs.cli import EXIT_OK, EXIT_USAGE, main
+from rosvar.outputs.cli import main
+from rosvar.outputs.commands.exit_codes import EXIT_OK, EXIT_USAGE
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace

@@ -10,7 +10,8 @@ from typing import TYPE_CHECKING
 import jsonschema
 import pytest
 
-from rosvar.outputs.cli import EXIT_FAILS, EXIT_OK, main
+from rosvar.outputs.cli import main
+from rosvar.outputs.commands.exit_codes import EXIT_FAILS, EXIT_OK
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace

@@ -7,7 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from rosvar.outputs.cli import EXIT_OK, main
+from rosvar.outputs.cli import main
+from rosvar.outputs.commands.exit_codes import EXIT_OK
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, NodeInterface, NodeKind, Role
