@@ -67,7 +67,10 @@ def test_refusal_names_the_earlier_choice_and_the_constraints(engine: Configurat
     assert refusal.choice.feature == "main.launch:cam"
     assert "select other_camera.launch" in refusal.reason
     assert "select main.launch" not in refusal.reason  # not needed for the contradiction
-    assert "includes" in refusal.reason and "both declare node /camera" in refusal.reason
+    # main.launch loads camera.launch's node: the clash is main's own (issue 30)
+    assert "main.launch and pkg/launch/other_camera.launch both load node /camera" in (
+        refusal.reason
+    )
     assert [c.feature for c in state.choices] == ["other_camera.launch", "main.launch"]
     assert states(state)["main.launch:cam=true"] == "deselected*"
 
@@ -197,14 +200,25 @@ def test_conflict_certain_possible_gone(ws: LaunchWorkspace) -> None:
     assert [c.condition for c in both.conflicts] == ["only for other values"]
 
 
-def test_a_certain_clash_is_certain_only_once_its_files_are_in(ws: LaunchWorkspace) -> None:
+def test_a_file_that_loads_a_node_twice_fails_alone(ws: LaunchWorkspace) -> None:
+    """roslaunch refuses it ("multiple nodes named"): the engine's model excludes it, and
+    the values that would make it happen."""
     ws.launch("a.launch", '  <node pkg="p" type="t" name="n"/>\n' * 2)
+    ws.launch(
+        "b.launch",
+        '  <arg name="twice" default="false"/>\n  <node pkg="p" type="t" name="m"/>\n'
+        '  <node pkg="p" type="t" name="m" if="$(arg twice)"/>\n',
+    )
     engine = configurator(ws)
-    [conflict] = run(engine).conflicts
-    assert (conflict.files, conflict.status) == (("a.launch", "a.launch"), "possible")
-    [conflict] = run(engine, "select a.launch").conflicts
-    assert conflict.status == "certain"
-    assert run(engine, "deselect a.launch").conflicts == []
+    assert states(run(engine))["a.launch"] == "deselected*"
+    [refusal] = run(engine, "select a.launch").refused
+    assert refusal.reason.endswith("pkg/launch/a.launch loads node /n twice")
+    b = run(engine, "select b.launch")
+    assert states(b)["b.launch:twice=true"] == "deselected*"
+    assert [c.condition for c in b.conflicts] == ["only for other values"]  # a typed 'true'
+    assert (
+        "b.launch loads node /m twice" in run(engine, "set b.launch:twice=true").refused[0].reason
+    )
 
 
 def test_configurations_are_counted_exactly_beyond_a_double(ws: LaunchWorkspace) -> None:

@@ -247,7 +247,10 @@ class Conflicts:
         if not self._meets(escapes, pair, cube):
             return ConflictState(pair.files, pair.names, Certainty.CERTAIN, None)
         decided = decisions.decided
+        # when both files are in: the clash is about them (a file's condition to be launched,
+        # not included by another file, stays)
         literals = {v: decided[v] for v in pair.variables if v in decided}
+        literals.update(dict.fromkeys(pair.file_variables, True))
         return ConflictState(
             pair.files, pair.names, Certainty.POSSIBLE, describe(pair.condition, literals)
         )

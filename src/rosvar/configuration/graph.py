@@ -28,7 +28,7 @@ from rosvar.analyses.communication import (
     find_interface,
     node_fields,
 )
-from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
+from rosvar.analyses.feature_model.model import FeatureModel, launched_conditions
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.resolve import (
@@ -199,7 +199,7 @@ class VariationalGraph:
         self.space = analysis.space
         self.confinement = analysis.workspace.confinement()
         self.elements: list[Element] = []
-        self.launched: dict[str, BDD] = _launched(model)
+        self.launched: dict[str, BDD] = launched_conditions(model.files, model.requires)
         self.interfaces = interfaces
         self._topics: dict[tuple[str, str], _Topic] = {}
         self._shadows: dict[BDD, BDD] = {}
@@ -527,18 +527,6 @@ class VariationalGraph:
                     self._served[channel, resolved] = (nodes, used | fixed)
                 if element.id not in nodes:
                     nodes.append(element.id)
-
-
-def _launched(model: FeatureModel) -> dict[str, BDD]:
-    """File → "selected and not included by a selected file that includes it there"."""
-    by_id = {f.id: f for f in model.files}
-    launched = {f.file: f.variable for f in model.files}
-    for constraint in model.constraints:
-        if constraint.kind != ConstraintKind.REQUIRES:
-            continue
-        source, target = (by_id[i] for i in constraint.files)
-        launched[target.file] &= ~(source.variable & constraint.condition)
-    return launched
 
 
 _Topic = tuple[list[str], BDD, tuple[Raw | None, Raw | None, Raw]]

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 
-from rosvar.analyses.conflicts import Occurrence, index
+from rosvar.analyses.conflicts import Occurrence, index, internal_clashes
 from rosvar.analyses.feature_model.model import (
     ArgFeature,
     Constraint,
@@ -18,6 +18,7 @@ from rosvar.analyses.feature_model.model import (
     FileFeature,
     ModelTooLarge,
     ValueFeature,
+    launched_conditions,
     value_text,
 )
 from rosvar.analyses.feature_model.solver import build
@@ -235,7 +236,7 @@ def extract(
                         space.valid_implies(when),
                     )
                 )
-    buckets = index(models)
+    buckets = index(models, launched_conditions(features, requires) if products else None)
     # a file included by several entry files reports its problems once per entry file: once here
     found = list(dict.fromkeys(d for model in models for d in model.diagnostics))
     feature_model = FeatureModel(
@@ -245,7 +246,12 @@ def extract(
         _check_links(buckets, len(features))
         cross_tree = feature_model.cross_tree
         feature_model.solution = build(
-            space, features, requires, buckets, lambda: cross_tree.constraints
+            space,
+            features,
+            requires,
+            buckets,
+            lambda: cross_tree.constraints,
+            internal_clashes(buckets) if products else (),
         )
     except ModelTooLarge as too_large:
         # kept without its traceback, whose frames hold the half-built BDDs

@@ -27,6 +27,7 @@ from rosvar.interpreter.model import LaunchModel
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
+from rosvar.workspace.paths import real_path
 
 if TYPE_CHECKING:
     from rosvar.analyses.feature_model.solver import Solver
@@ -112,11 +113,13 @@ class CrossTree:
         files: Sequence[FileFeature],
         requires: list[Constraint],
         declarations: Mapping[tuple[str, str], list[Occurrence]],
+        products: bool = False,
     ) -> None:
         self.space = space
         self.files = files
         self.requires = requires
         self.declarations = declarations
+        self.products = products
 
     @cached_property
     def clashes(self) -> list[Clash]:
@@ -124,7 +127,7 @@ class CrossTree:
 
     @cached_property
     def constraints(self) -> list[Constraint]:
-        return self.requires + _excludes(self.space, self.files, self.clashes)
+        return self.requires + _excludes(self.space, self.files, self.clashes, self.products)
 
 
 @dataclass
@@ -159,7 +162,9 @@ class FeatureModel:
         return self.solution
 
     def __post_init__(self) -> None:
-        self.cross_tree = CrossTree(self.space, self.files, self.requires, self.declarations)
+        self.cross_tree = CrossTree(
+            self.space, self.files, self.requires, self.declarations, self.products
+        )
 
     @property
     def clashes(self) -> list[Clash]:
@@ -189,6 +194,21 @@ class FeatureModel:
         return ids
 
 
+def launched_conditions(
+    files: Sequence[FileFeature], requires: Sequence[Constraint]
+) -> dict[str, BDD]:
+    """File → when it is *launched*: selected, and not included by a selected file that
+    includes it there (its elements are then that file's)."""
+    by_id = {f.id: f for f in files}
+    launched = {f.file: f.variable for f in files}
+    for constraint in requires:
+        if constraint.kind != ConstraintKind.REQUIRES:
+            continue
+        source, target = (by_id[i] for i in constraint.files)
+        launched[target.file] &= ~(source.variable & constraint.condition)
+    return launched
+
+
 def name_of(variable: BDD) -> str:
     """The name of a feature variable: the same in the analysis' manager and the solver's."""
     return str(variable.var)
@@ -204,13 +224,20 @@ def value_text(slot: Slot, default_text: str | None) -> str:
 
 
 def _excludes(
-    space: ConditionSpace, features: Sequence[FileFeature], found: Sequence[Clash]
+    space: ConditionSpace,
+    features: Sequence[FileFeature],
+    found: Sequence[Clash],
+    products: bool = False,
 ) -> list[Constraint]:
-    """One ``excludes`` constraint per pair of files whose declarations clash."""
+    """One ``excludes`` constraint per pair of files whose declarations clash (with
+    ``products``, the engine's model, also one per file loading two nodes of one name: the
+    file alone fails, ``internal_clashes``)."""
     by_file = {f.file: f for f in features}  # an occurrence's file is its model's file
     between: dict[tuple[str, str], list[Clash]] = {}
     for clash in found:
-        if clash.first.file != clash.second.file:
+        if clash.first.file != clash.second.file or (
+            products and clash.kind == DeclarationKind.NODE
+        ):
             key = tuple(sorted(clash.files))
             between.setdefault(key, []).append(clash)  # type: ignore[arg-type]
     constraints = []
@@ -220,13 +247,24 @@ def _excludes(
         for clash in pair_clashes:
             condition |= clash.condition
         names = sorted({f"{c.kind} {c.name}" for c in pair_clashes})
+        # the engine's model counts what a file loads from the files it includes too
+        written = all(
+            real_path(o.location.file) == real_path(o.file)
+            for c in pair_clashes
+            for o in (c.first, c.second)
+        )
         constraints.append(
             Constraint(
                 ConstraintKind.EXCLUDES,
                 (a.id, b.id),
                 ~(a.variable & b.variable & condition),
                 condition,
-                f"{a.id} and {b.id} both declare {', '.join(names[:3])}"
+                (
+                    f"{a.id} loads {', '.join(names[:3])} twice"
+                    if a is b
+                    else f"{a.id} and {b.id} both {'declare' if written else 'load'} "
+                    f"{', '.join(names[:3])}"
+                )
                 + (f" (+{len(names) - 3} more)" if len(names) > 3 else ""),
                 tuple(loc for c in pair_clashes for loc in (c.first.location, c.second.location)),
                 space.valid_implies(condition),
