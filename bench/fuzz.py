@@ -29,10 +29,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from types import FrameType
 
-from rosvar.analyses.resolve import resolve
-from rosvar.frontends.ros1_xml import parser
+from rosvar.frontends import xml
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.describe import describe_model
+from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -159,7 +159,7 @@ def _check(text: str, directory: Path, index: int) -> None:
         json.dumps(resolve(analysis, [str(launch)], {}, {}).to_json(), ensure_ascii=False)
     finally:
         launch.unlink()
-        parser.clear_cache()
+        xml.clear_cache()
 
 
 def campaign(

@@ -13,8 +13,8 @@ import statistics
 import time
 from collections.abc import Callable
 
-from rosvar.frontends.ros2_python.parser import parse_python_launch_bytes
-from rosvar.frontends.ros2_yaml.parser import parse_yaml_launch_bytes
+from rosvar.ros2.frontends.python.parser import parse_python_launch_bytes
+from rosvar.ros2.frontends.yaml.parser import parse_yaml_launch_bytes
 
 LINES = 300
 TARGET_MS = 100.0

@@ -192,7 +192,7 @@ def _disarm(previous: object) -> None:
 
 def measure_analyze(job: Job) -> Metrics:
     """What ``rosvar analyze`` does before printing, with nothing cached from a prior run."""
-    from rosvar.frontends.ros1_xml.parser import clear_cache
+    from rosvar.frontends.xml import clear_cache
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace import discover
 
@@ -1008,7 +1008,7 @@ def target_lines(outcomes: Sequence[Outcome]) -> list[str]:
 # -- profile, document, driver ----------------------------------------------------------------
 def profile_one(options: argparse.Namespace) -> None:
     """The ``--one --profile-one`` mode: cProfile of one analyze run, top functions printed."""
-    from rosvar.frontends.ros1_xml.parser import clear_cache
+    from rosvar.frontends.xml import clear_cache
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.workspace import discover
 

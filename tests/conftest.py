@@ -19,9 +19,9 @@ from typing import Any
 
 import pytest
 
-from rosvar.analyses.resolve import Resolution, resolve
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.ros1.resolve import Resolution, resolve
 from rosvar.workspace import discover
 
 TESTS = Path(__file__).resolve().parent

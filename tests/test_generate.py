@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from rosvar.frontends.entity import Entity
-from rosvar.frontends.ros1_xml.parser import parse_xml_file
+from rosvar.frontends.xml import parse_xml_file
 from rosvar.workspace import discover
 from rosvar.workspace.executables import executables
 from rosvar.workspace.launch_files import LaunchFormat

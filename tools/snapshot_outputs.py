@@ -2,7 +2,8 @@
 
 Refactorings must leave them byte-identical: run this before and after a change and compare
 the two folders (``diff -r``). Runs the sources of this checkout (``src``) with the current
-Python; the corpus is ``../shared/corpus`` beside the repository.
+Python; the ROS 1 corpus is ``../shared/corpus`` beside the repository, the ROS 2 workspaces
+are this checkout's ``tests/data/ros2``.
 
     python tools/snapshot_outputs.py OUT_DIR
 """
@@ -30,6 +31,51 @@ for system in SYSTEMS:
     RUNS[f"{system}.metrics.txt"] = ["metrics", path]
     RUNS[f"{system}.configure.finish.json"] = ["configure", path, "--finish", "--json"]
     RUNS[f"{system}.configure.txt"] = ["configure", path]
+for system in ("kobuki", "husky"):
+    path = str(CORPUS / system)
+    RUNS[f"{system}.check.json"] = ["check", path, "--format", "json"]
+    RUNS[f"{system}.query.nodes.json"] = ["query", path, "nodes", "--json"]
+
+ROS2 = ROOT / "tests" / "data" / "ros2"
+ROS2_SYSTEMS = (
+    "clearpath_common",
+    "husky",
+    "moveit2_tutorials",
+    "realsense-ros",
+    "ros2_control_demos",
+    "slam_toolbox",
+)
+for system in ROS2_SYSTEMS:
+    path = str(ROS2 / system)
+    name = f"ros2.{system}"
+    RUNS[f"{name}.analyze.json"] = ["analyze", path, "--json"]
+    RUNS[f"{name}.analyze.txt"] = ["analyze", path]
+    for fmt in ("text", "json", "uvl"):
+        RUNS[f"{name}.features.{fmt}"] = ["features", path, "--format", fmt]
+    RUNS[f"{name}.metrics.json"] = ["metrics", path, "--json"]
+    RUNS[f"{name}.configure.finish.json"] = ["configure", path, "--finish", "--json"]
+    RUNS[f"{name}.configure.txt"] = ["configure", path]
+    RUNS[f"{name}.check.json"] = ["check", path, "--format", "json"]
+    for query in ("nodes", "params", "topics"):
+        RUNS[f"{name}.query.{query}.json"] = ["query", path, query, "--json"]
+DEMOS = ROS2 / "ros2_control_demos"
+RRBOT = str(DEMOS / "example_1/bringup/launch/rrbot.launch.py")
+RUNS["ros2.ros2_control_demos.resolve.rrbot.txt"] = ["resolve", str(DEMOS), "--launch", RRBOT]
+RUNS["ros2.ros2_control_demos.resolve.rrbot.json"] = [
+    "resolve",
+    str(DEMOS),
+    "--launch",
+    RRBOT,
+    "gui:=false",
+    "--json",
+]
+RUNS["ros2.ros2_control_demos.resolve.xml.json"] = [
+    "resolve",
+    str(DEMOS),
+    "--launch",
+    str(DEMOS / "example_2/bringup/launch/diffbot.launch.xml"),
+    "--json",
+]
 
 HUSKY = CORPUS / "husky" / "husky"
 RUNS["husky.resolve.spawn.json"] = [

@@ -1,7 +1,7 @@
 """Python's arithmetic operators by AST node: the one table the restricted evaluators share.
 
 ``$(eval)`` (``interpreter/safe_eval``), the query language (``analyses/query``) and the static
-reading of Python launch files (``frontends/ros2_python``) all compute ``+ - * / // %`` on
+reading of Python launch files (``ros2/frontends/python``) all compute ``+ - * / // %`` on
 constants; each adds what it allows beyond these.
 """
 

@@ -10,9 +10,9 @@ from typing import TYPE_CHECKING
 
 from rosvar.analyses.checks import Check, check_model, check_models
 from rosvar.analyses.communication import resolved_graph
-from rosvar.analyses.resolve import Restriction, resolve
 from rosvar.diagnostics import Severity
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.ros1.resolve import Restriction, resolve
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, Role

@@ -18,10 +18,10 @@ from rosvar.analyses.communication import (
     resolved_graph,
     restrict,
 )
-from rosvar.analyses.resolve import Restriction, resolve
-from rosvar.analyses.ros2.resolve import resolve_ros2
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.ros1.resolve import Restriction, resolve
+from rosvar.ros2.resolve import resolve_ros2
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.catalogue import load_catalogue
 from rosvar.workspace.interfaces.extraction import extract_interfaces

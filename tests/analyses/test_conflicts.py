@@ -17,10 +17,10 @@ from rosvar.analyses.conflicts import (
     node_occurrences,
 )
 from rosvar.analyses.feature_model.extraction import extract
-from rosvar.analyses.resolve import resolve
 from rosvar.diagnostics import Location
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 from workspace.interfaces.ros2_packages import write_ros2_bringup
 

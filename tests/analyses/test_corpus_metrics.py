@@ -16,7 +16,7 @@ import pytest
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.metrics import Metrics, command_line_args, compute
-from rosvar.frontends.ros1_xml.parser import load_launch_file
+from rosvar.frontends.xml import load_launch_file
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.metrics import Metrics, command_line_args, compute
-from rosvar.frontends.ros1_xml.parser import load_launch_file
+from rosvar.frontends.xml import load_launch_file
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace

@@ -20,13 +20,13 @@ from rosvar.analyses.communication import (
 )
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.param_values import ParamValues
-from rosvar.analyses.resolve import Restriction, resolve
 from rosvar.analyses.when import params_read, refusal, refusals
 from rosvar.configuration.engine import Configurator
 from rosvar.diagnostics import Severity
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER
+from rosvar.ros1.resolve import Restriction, resolve
 from rosvar.workspace.hints import load_hints
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, Role

@@ -11,12 +11,12 @@ from typing import TYPE_CHECKING, Any
 
 from rosvar.analyses.conflicts import node_occurrences
 from rosvar.analyses.feature_model.extraction import extract
-from rosvar.analyses.resolve import resolve
 from rosvar.configuration.choices import UserChoice
 from rosvar.configuration.command import given
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.ros import names
+from rosvar.ros1.resolve import resolve
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 
 if TYPE_CHECKING:

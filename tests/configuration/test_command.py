@@ -5,9 +5,9 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from configuration.helpers import canonical, choices, configurator, product, run
-from rosvar.analyses.resolve import resolve
 from rosvar.configuration.command import Launch, given, group
 from rosvar.configuration.engine import ConfigurationState
+from rosvar.ros1.resolve import resolve
 from rosvar.workspace.ros_version import RosVersion
 
 if TYPE_CHECKING:

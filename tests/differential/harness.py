@@ -3,7 +3,7 @@
 For every launch file of a system, a few configurations (command-line args) are chosen from the
 file's variational model (:func:`configurations`). Each configuration is loaded by the roslaunch
 oracle (``tests/oracle``, all jobs of a system in one batch) and restricted by rosvar in-process
-(:func:`rosvar.analyses.resolve.resolve`, one
+(:func:`rosvar.ros1.resolve.resolve`, one
 :class:`~rosvar.interpreter.workspace_models.Analysis` per system), and the two
 results are compared (:func:`compare`). Each case ends up as
 
@@ -39,9 +39,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from rosvar.analyses.resolve import resolve
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 
 try:

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 import pytest
 
 from rosvar.diagnostics import Location, Severity
-from rosvar.frontends.ros1_xml import parser
+from rosvar.frontends import xml
 from rosvar.interpreter.model import LaunchModel
 
 if TYPE_CHECKING:
@@ -329,7 +329,7 @@ def test_file_over_the_size_limit_is_refused_unread(ws: LaunchWorkspace) -> None
     good = ws.write("launch/good.launch", GOOD)
     huge = ws.write("launch/huge.launch", b"")
     with open(huge, "r+b") as handle:  # sparse: nothing is written, nothing must be read
-        handle.truncate(parser.MAX_FILE_BYTES + 1)
+        handle.truncate(xml.MAX_FILE_BYTES + 1)
     start = time.perf_counter()
     models = {m.file: m for m in ws.analysis().all_models()}
     assert time.perf_counter() - start < 5
@@ -349,7 +349,7 @@ def test_large_file_under_the_limit_is_analysed(ws: LaunchWorkspace) -> None:
     lines = "".join(f'  <param name="p{i}" value="{i}"/>\n' for i in range(count))
     good = ws.write("launch/good.launch", GOOD)
     big = ws.launch("big.launch", lines + '  <node pkg="pkg" type="t" name="last"/>')
-    assert 0.9e6 < os.path.getsize(big) < parser.MAX_FILE_BYTES
+    assert 0.9e6 < os.path.getsize(big) < xml.MAX_FILE_BYTES
     start = time.perf_counter()
     models = {m.file: m for m in ws.analysis().all_models()}
     elapsed = time.perf_counter() - start

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from rosvar.interpreter import tags  # noqa: F401 - registers the tag handlers
 from rosvar.interpreter.interpretation import TAGS, tag
+from rosvar.ros1 import tags  # noqa: F401 - registers the tag handlers
 
 
 def test_every_roslaunch_tag_has_a_handler() -> None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from rosvar.frontends.entity import Entity
-from rosvar.frontends.ros1_xml.parser import parse_xml_bytes
+from rosvar.frontends.xml import parse_xml_bytes
 from rosvar.workspace.ros_version import RosVersion, build_tool_version, majority, package_version
 
 

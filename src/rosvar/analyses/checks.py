@@ -31,10 +31,10 @@ from rosvar.analyses.when import params_read
 from rosvar.diagnostics import Location, Severity
 from rosvar.files import Confinement
 from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, YamlDecl
-from rosvar.interpreter.tags.rosparam import load_rosparam
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
+from rosvar.ros1.tags.rosparam import load_rosparam
 from rosvar.workspace.interfaces.model import Interfaces, Role
 from rosvar.workspace.paths import real_path
 

@@ -32,7 +32,7 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
-from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace
+from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.workspace.interfaces.model import Default, Entry, Interfaces, NodeInterface, Role
 
 _R = TypeVar("_R")

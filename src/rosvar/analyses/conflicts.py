@@ -25,7 +25,7 @@ from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, anon_patt
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import combine
 from rosvar.ros import names
-from rosvar.ros.ros2_namespaces import full_name
+from rosvar.ros2.conventions.namespaces import full_name
 from rosvar.workspace.paths import real_path
 
 

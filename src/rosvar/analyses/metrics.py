@@ -16,7 +16,7 @@ from dataclasses import asdict, dataclass
 
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.frontends.entity import Entity
-from rosvar.frontends.ros1_xml.parser import load_launch_file
+from rosvar.frontends.xml import load_launch_file
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.conditions import SlotAtom
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput

@@ -31,16 +31,6 @@ from rosvar.analyses.communication import (
 from rosvar.analyses.feature_model.model import FeatureModel, launched_conditions
 from rosvar.analyses.json_values import json_value
 from rosvar.analyses.param_values import ParamValues
-from rosvar.analyses.resolve import (
-    ResolutionError,
-    check_remap,
-    deferred_value,
-    evaluated,
-    rosparam_pairs,
-    test_fields,
-    typed_node,
-)
-from rosvar.analyses.ros2.resolve import parameter_file
 from rosvar.configuration.derivation import Presence
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
@@ -59,8 +49,18 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
-from rosvar.ros.ros2_namespaces import full_name, make_absolute, prefix_namespace, unnamed
-from rosvar.ros.ros2_parameters import ALL_NODES, Source, effective, typed
+from rosvar.ros1.resolve import (
+    ResolutionError,
+    check_remap,
+    deferred_value,
+    evaluated,
+    rosparam_pairs,
+    test_fields,
+    typed_node,
+)
+from rosvar.ros2.conventions.namespaces import full_name, make_absolute, prefix_namespace, unnamed
+from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, typed
+from rosvar.ros2.resolve import parameter_file
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
 Fields = dict[str, object]

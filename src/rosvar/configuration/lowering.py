@@ -16,13 +16,13 @@ from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass
 
 from rosvar.analyses.feature_model.model import FeatureModel
-from rosvar.interpreter.substitution import PackageTable
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD, transfer
 from rosvar.logic.conditions import Atom, PredicateAtom, SlotAtom, decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import term_inputs
 from rosvar.memo import Memo
+from rosvar.ros1.substitutions import PackageTable
 
 _NONE: frozenset[str] = frozenset()
 COPIES = 100_000

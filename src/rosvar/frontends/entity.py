@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from rosvar.diagnostics import Location
+from rosvar.diagnostics import Diagnostic, Location
 
 
 @dataclass(eq=False, slots=True)
@@ -27,10 +27,18 @@ class Entity:
     text: str = ""
     typed: frozenset[str] = frozenset()
     """Attributes written as typed values in YAML or Python, not as strings
-    (:mod:`rosvar.frontends.typed_text`); XML has none."""
+    (:mod:`rosvar.ros2.frontends.typed_text`); XML has none."""
 
     def get(self, name: str) -> str | None:
         return self.attributes.get(name)
 
     def has(self, name: str) -> bool:
         return name in self.attributes
+
+
+@dataclass
+class ParseResult:
+    """A parsed file: ``root`` is ``None`` exactly when the file cannot be used."""
+
+    root: Entity | None
+    diagnostics: list[Diagnostic] = field(default_factory=list)

@@ -17,7 +17,7 @@ from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 
 from rosvar.frontends.entity import Entity
-from rosvar.frontends.ros1_xml.parser import Snapshot
+from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.safe_eval import EvalRefused, compared_literals
 from rosvar.logic.inputs import OTHER, UNSET, Slot
 from rosvar.workspace import Workspace

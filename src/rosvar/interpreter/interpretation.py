@@ -3,7 +3,7 @@
 The walk follows roslaunch's ``XmlLoader`` tag by tag, but where roslaunch holds
 one value the walk holds a :class:`Choice`, and where roslaunch tests a
 condition the walk narrows its *path condition* (``pc``). Tags are handled by
-the functions registered in :data:`TAGS` (see :mod:`rosvar.interpreter.tags`).
+the functions registered in :data:`TAGS` (see :mod:`rosvar.ros1.tags`).
 """
 
 from __future__ import annotations
@@ -14,18 +14,18 @@ from typing import Any, Concatenate, ParamSpec, TypeVar
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
-from rosvar.frontends.ros1_xml.parser import Snapshot
+from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.dialect import Dialect, RosVersion
 from rosvar.interpreter.lifted import apply, lift
 from rosvar.interpreter.model import Decision, ErrorEvent, Guard, LaunchModel, Raw
-from rosvar.interpreter.ros2.context import Context
-from rosvar.interpreter.scope import MISSING, Scope
-from rosvar.interpreter.substitution import Substituter
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.conditions import ConditionSpace, register_predicate
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
 from rosvar.logic.terms import Hole
+from rosvar.ros1.scope import MISSING, Scope
+from rosvar.ros1.substitutions import Substituter
+from rosvar.ros2.context import Context
 from rosvar.workspace import Workspace
 
 V = TypeVar("V")

@@ -2,7 +2,7 @@
 
 Every element carries a presence ``condition`` (a BDD over the entry file's inputs)
 and attributes as :class:`~rosvar.logic.choice.Choice` values, so restricting the
-model to one configuration (see :mod:`rosvar.analyses.resolve`) gives what
+model to one configuration (see :mod:`rosvar.ros1.resolve`) gives what
 roslaunch would load, without reading the XML again.
 
 Element classes have slots: a large workspace's models hold millions of them.

@@ -10,17 +10,17 @@ from dataclasses import dataclass
 from typing import TypeVar
 
 from rosvar.forked import forked_map
-from rosvar.frontends.entity import Entity
-from rosvar.frontends.ros1_xml.parser import ParseResult, Snapshot
-from rosvar.interpreter import tags  # noqa: F401 - registers the tag handlers
+from rosvar.frontends.entity import Entity, ParseResult
+from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.dialect import Dialect
 from rosvar.interpreter.domains import DomainTable, entry_declarations
 from rosvar.interpreter.interpretation import ROS1, Interpretation
 from rosvar.interpreter.model import LaunchModel
-from rosvar.interpreter.scope import Scope
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros.names import settable
+from rosvar.ros1 import tags  # noqa: F401 - registers the tag handlers
+from rosvar.ros1.scope import Scope
 from rosvar.workspace import Workspace
 from rosvar.workspace.paths import real_path
 from rosvar.workspace.ros_version import RosVersion
@@ -184,7 +184,7 @@ def _walk_ros2(
     """``ros2 launch``: the declared launch arguments are the command line's, and the
     ``undeclared`` ones included files declare; the included files' args read where they
     were not set (before their declaration, or outside its group) are returned."""
-    from rosvar.interpreter.ros2 import interpretation as ros2
+    from rosvar.ros2 import entry as ros2
 
     context = ros2.entry_context(it, file, root, undeclared)
     ros2.walk_entry(it, root, context)
@@ -205,8 +205,8 @@ def _ros1() -> Reading:
 
 
 def _ros2() -> Reading:
-    from rosvar.frontends import registry
-    from rosvar.interpreter.ros2.dialect import ROS2
+    from rosvar.ros2.dialect import ROS2
+    from rosvar.ros2.frontends import registry
 
     return Reading(ROS2, registry.load, _walk_ros2)
 

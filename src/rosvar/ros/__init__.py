@@ -1,1 +1,1 @@
-"""ROS 1 conventions (graph resource names) that every layer shares."""
+"""ROS graph resource names (rosgraph's rules), which every layer shares."""

@@ -22,9 +22,9 @@ from dataclasses import dataclass, field
 
 import yaml
 
+from rosvar.bounded_yaml import check_limits
 from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.files import read_file
-from rosvar.workspace.bounded_yaml import check_limits
 from rosvar.workspace.interfaces.model import Entry, Origin, Role
 
 SECTIONS = ("executables", "args", "env", "nodes")

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from enum import StrEnum
 
 from rosvar.files import read_file
-from rosvar.frontends.ros1_xml.parser import is_launch_root
+from rosvar.frontends.xml import is_launch_root
 from rosvar.workspace.ros_version import RosVersion
 
 PACKAGE_FILE = "package.xml"

@@ -13,8 +13,8 @@ import sys
 from pathlib import Path
 
 from oracle.ros2_client import canonical_nodes, run_oracle
-from rosvar.analyses.ros2.resolve import resolve_variational
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.ros2.resolve import resolve_variational
 from rosvar.workspace import discover
 
 from .test_variational import DATA, configurations

@@ -8,7 +8,7 @@ import itertools
 import pytest
 
 from oracle.ros2_client import ORACLE, canonical_nodes, requires_ros2_oracle, run_oracle
-from rosvar.analyses.ros2.resolve import resolve_ros2
+from rosvar.ros2.resolve import resolve_ros2
 from rosvar.workspace import discover
 
 pytestmark = requires_ros2_oracle

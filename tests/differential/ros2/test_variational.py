@@ -12,9 +12,9 @@ from pathlib import Path
 import pytest
 
 from oracle.ros2_client import ORACLE, canonical_nodes, requires_ros2_oracle, run_oracle
-from rosvar.analyses.ros2.resolve import resolve_variational
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.inputs import OTHER, UNSET
+from rosvar.ros2.resolve import resolve_variational
 from rosvar.workspace import discover
 
 from .test_fixtures import CASES, LENIENT, _workspace, entries

@@ -25,7 +25,7 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
-from rosvar.ros.ros2_namespaces import make_absolute, prefix_namespace, unnamed
+from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace, unnamed
 
 
 class Kind(StrEnum):

@@ -42,7 +42,7 @@ from rosvar.interpreter.safe_eval.names import (
     _UNARY_OPS,
     EvalEnvironment,
 )
-from rosvar.interpreter.typed_values import convert_scalar
+from rosvar.ros1.typed_values import convert_scalar
 
 _T = TypeVar("_T")
 

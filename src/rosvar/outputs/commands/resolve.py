@@ -26,8 +26,8 @@ if TYPE_CHECKING:
 
 def cmd_resolve(options: argparse.Namespace) -> int:
     from rosvar.analyses.communication import resolved_graph
-    from rosvar.analyses.resolve import resolve
     from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.ros1.resolve import resolve
 
     paths = [os.path.abspath(words[0]) for words in options.launch if len(words) == 1]
     missing = [f for f in paths if not os.path.isfile(f)]
@@ -99,8 +99,8 @@ def _resolve_ros2(
     """``ros2 launch FILE name:=value``: the nodes it starts (in the ROS 2 oracle's shape),
     and the topics, services and actions their interfaces give."""
     from rosvar.analyses.communication import resolved_graph
-    from rosvar.analyses.ros2.resolve import resolve_ros2
-    from rosvar.ros.ros2_namespaces import unnamed
+    from rosvar.ros2.conventions.namespaces import unnamed
+    from rosvar.ros2.resolve import resolve_ros2
 
     result = resolve_ros2(workspace, file, args, env)
     graph = resolved_graph(result.nodes, interfaces_of(workspace, options))

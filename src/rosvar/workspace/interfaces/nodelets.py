@@ -13,8 +13,8 @@ import re
 from dataclasses import dataclass
 
 from rosvar.diagnostics import DiagnosticSink, Location
-from rosvar.frontends.entity import Entity
-from rosvar.frontends.ros1_xml.parser import ParseResult, parse_xml_bytes, parse_xml_file
+from rosvar.frontends.entity import Entity, ParseResult
+from rosvar.frontends.xml import parse_xml_bytes, parse_xml_file
 from rosvar.workspace.interfaces.reading import read_source
 
 PREFIX = "${prefix}"

@@ -1,1 +1,0 @@
-"""Analyses of ROS 2 launch models."""

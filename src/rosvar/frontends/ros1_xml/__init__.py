@@ -1,1 +1,0 @@
-"""frontends/ros1_xml."""

@@ -1,1 +1,0 @@
-"""frontends/ros2_python: ROS 2 Python launch files, read statically."""

@@ -1,1 +1,0 @@
-"""frontends/ros2_yaml: ROS 2 YAML launch files."""

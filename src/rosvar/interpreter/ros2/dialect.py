@@ -1,8 +1,0 @@
-"""The ROS 2 dialect: its tag registry (filled by :mod:`rosvar.interpreter.ros2.tags`) and
-its substitution language."""
-
-from rosvar.interpreter.dialect import Dialect, RosVersion
-from rosvar.interpreter.ros2.substitutions import Ros2Substituter
-
-ROS2 = Dialect(RosVersion.ROS2, Ros2Substituter)
-tag = ROS2.tag

@@ -1,0 +1,369 @@
+"""Launch actions of Python launch files as the elements of their XML equivalents.
+
+Each action class is described once (:data:`ACTIONS`): the XML tag it is exposed as, and
+for each constructor argument the attribute or children it becomes and how (a
+:class:`Slot`, with one writer per slot). ``Node(package='p', parameters=[{'rate': 10}],
+remappings=[('a', 'b')])`` becomes ``<node pkg="p"><param name="rate" value="10"/>
+<remap from="a" to="b"/></node>``, children in the order the arguments are written.
+"""
+
+from __future__ import annotations
+
+import enum
+import shlex
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from rosvar.frontends.entity import Entity
+from rosvar.ros2.frontends.python.calls import CALLS, Call
+from rosvar.ros2.frontends.python.text import render
+from rosvar.ros2.frontends.python.values import (
+    Condition,
+    Description,
+    Key,
+    ParameterFile,
+    ParameterValue,
+    Unknown,
+    Value,
+)
+from rosvar.ros2.frontends.typed_text import Scalar, reads_as_other_value, typed_text
+
+
+class Slot(enum.StrEnum):
+    """How one constructor argument is written into the element."""
+
+    ATTRIBUTE = "attribute"  # a text, or a typed scalar
+    COMMAND_LINE = "command-line"  # a list of arguments, one space-separated attribute
+    PARAMETERS = "parameters"  # dicts and files: <param name value> / <param from>
+    PAIRS = "pairs"  # (from, to) pairs: <remap from to>
+    NAMED_VALUES = "named-values"  # a dict or (name, value) pairs: <env name value>...
+    VALUES = "values"  # a list: <choice value>
+    ACTIONS = "actions"  # actions as children
+
+
+@dataclass(frozen=True, slots=True)
+class Param:
+    """One constructor argument: its Python name, its XML attribute or child tag, and how."""
+
+    python: str
+    xml: str
+    slot: Slot = Slot.ATTRIBUTE
+
+
+@dataclass(frozen=True, slots=True)
+class ActionSpec:
+    """An action class: its XML tag and its arguments, positional ones first."""
+
+    tag: str
+    params: tuple[Param, ...]
+
+
+def _attributes(*names: str) -> tuple[Param, ...]:
+    """Attributes named as in Python, or ``python:xml``."""
+    return tuple(Param(name.partition(":")[0], name.rpartition(":")[2]) for name in names)
+
+
+_PROCESS = (
+    *_attributes(
+        "name",
+        "cwd",
+        "output",
+        "respawn",
+        "respawn_delay",
+        "respawn_max_retries",
+        "prefix:launch-prefix",
+        "emulate_tty",
+        "shell",
+        "sigterm_timeout",
+        "sigkill_timeout",
+    ),
+    Param("additional_env", "env", Slot.NAMED_VALUES),
+)
+"""What every process (``ExecuteProcess``, ``Node``) takes."""
+
+_ROS_NODE = (
+    Param("parameters", "param", Slot.PARAMETERS),
+    Param("remappings", "remap", Slot.PAIRS),
+)
+
+_NODE = (
+    *_attributes("package:pkg", "executable:exec", "name", "namespace", "exec_name"),
+    *_PROCESS,
+    *_ROS_NODE,
+    Param("arguments", "args", Slot.COMMAND_LINE),
+    Param("ros_arguments", "ros_args", Slot.COMMAND_LINE),
+)
+
+ACTIONS: dict[tuple[str, str], ActionSpec] = {
+    ("launch", "DeclareLaunchArgument"): ActionSpec(
+        "arg",
+        (
+            *_attributes("name", "default_value:default", "description"),
+            Param("choices", "choice", Slot.VALUES),
+        ),
+    ),
+    ("launch", "SetLaunchConfiguration"): ActionSpec("let", _attributes("name", "value")),
+    ("launch", "GroupAction"): ActionSpec(
+        "group",
+        (
+            Param("actions", "", Slot.ACTIONS),
+            *_attributes("scoped", "forwarding"),
+            Param("launch_configurations", "keep", Slot.NAMED_VALUES),
+        ),
+    ),
+    ("launch", "IncludeLaunchDescription"): ActionSpec(
+        "include",
+        (
+            Param("launch_description_source", "file"),  # a source or a path, as text
+            Param("launch_arguments", "arg", Slot.NAMED_VALUES),
+        ),
+    ),
+    ("launch", "ExecuteProcess"): ActionSpec(
+        "executable", (Param("cmd", "cmd", Slot.COMMAND_LINE), *_PROCESS)
+    ),
+    ("launch", "SetEnvironmentVariable"): ActionSpec("set_env", _attributes("name", "value")),
+    ("launch", "UnsetEnvironmentVariable"): ActionSpec("unset_env", _attributes("name")),
+    ("launch", "AppendEnvironmentVariable"): ActionSpec(
+        "append_env", _attributes("name", "value", "prepend", "separator")
+    ),
+    ("launch", "ResetLaunchConfigurations"): ActionSpec(
+        "reset", (Param("launch_configurations", "keep", Slot.NAMED_VALUES),)
+    ),
+    ("launch", "LogInfo"): ActionSpec("log", _attributes("msg:message")),
+    ("launch", "Shutdown"): ActionSpec("shutdown", _attributes("reason")),
+    ("launch", "TimerAction"): ActionSpec(
+        "timer",
+        (
+            *_attributes("period"),
+            Param("actions", "", Slot.ACTIONS),
+            *_attributes("cancel_on_shutdown"),
+        ),
+    ),
+    ("launch", "ResetEnvironment"): ActionSpec("reset_env", ()),
+    **dict.fromkeys(
+        [("launch_ros", "RosTimer"), ("launch_ros", "ROSTimer")],
+        ActionSpec(
+            "ros_timer",
+            (
+                *_attributes("period"),
+                Param("actions", "", Slot.ACTIONS),
+                *_attributes("cancel_on_shutdown"),
+            ),
+        ),
+    ),
+    ("launch_ros", "Node"): ActionSpec("node", _NODE),
+    ("launch_ros", "LifecycleNode"): ActionSpec("lifecycle_node", _NODE),  # Python only
+    ("launch_ros", "ComposableNodeContainer"): ActionSpec(
+        "node_container",
+        (*_NODE, Param("composable_node_descriptions", "", Slot.ACTIONS)),
+    ),
+    ("launch_ros", "ComposableNode"): ActionSpec(
+        "composable_node",
+        (
+            *_attributes("package:pkg", "plugin", "name", "namespace"),
+            *_ROS_NODE,
+            Param("extra_arguments", "extra_arg", Slot.PARAMETERS),
+        ),
+    ),
+    ("launch_ros", "LoadComposableNodes"): ActionSpec(
+        "load_composable_node",
+        (
+            Param("composable_node_descriptions", "", Slot.ACTIONS),
+            *_attributes("target_container:target"),
+        ),
+    ),
+    ("launch_ros", "PushRosNamespace"): ActionSpec("push-ros-namespace", _attributes("namespace")),
+    ("launch_ros", "SetRemap"): ActionSpec("set_remap", _attributes("src:from", "dst:to")),
+    ("launch_ros", "SetParameter"): ActionSpec("set_parameter", _attributes("name", "value")),
+    ("launch_ros", "SetParametersFromFile"): ActionSpec(
+        "set_parameters_from_file", _attributes("filename")
+    ),
+    ("launch_ros", "SetUseSimTime"): ActionSpec("set_use_sim_time", _attributes("value")),
+    ("launch_ros", "SetROSLogDir"): ActionSpec("set_ros_log_dir", _attributes("new_log_dir")),
+}
+"""Every action (and composable-node description) with an XML equivalent, and
+``LifecycleNode``, which has none: a ``<node>`` whose tag says it is a lifecycle node."""
+
+
+def set_attribute(call: Call, entity: Entity, name: str, value: Value) -> None:
+    """A typed scalar as typed text (:mod:`rosvar.ros2.frontends.typed_text`), anything else as
+    the text of its substitutions."""
+    if value is None or isinstance(value, bool | int | float):
+        entity.attributes[name] = typed_text(value)
+        entity.typed = entity.typed | {name}
+    else:
+        entity.attributes[name] = render(call.text(value))
+
+
+def _items(call: Call, value: Value, what: str) -> list[Value]:
+    """The items of a list argument; anything else is reported and read as empty."""
+    if isinstance(value, list | tuple):
+        return list(value)
+    if isinstance(value, dict):
+        return [(name, item) for name, item in value.items()]
+    if not isinstance(value, Unknown):
+        call.not_followed(f"{what} given as {type(value).__name__}")
+    return []
+
+
+def _child(call: Call, parent: Entity, tag: str) -> Entity:
+    child = Entity(tag, {}, call.location)
+    parent.children.append(child)
+    return child
+
+
+def _write_attribute(call: Call, entity: Entity, param: Param, value: Value) -> None:
+    set_attribute(call, entity, param.xml, value)
+
+
+def _write_command_line(call: Call, entity: Entity, param: Param, value: Value) -> None:
+    words = []
+    for item in _items(call, value, param.python):
+        text = call.text(item)
+        literal = text.literal()
+        words.append(shlex.quote(literal) if literal is not None else render(text))
+    entity.attributes[param.xml] = " ".join(words)
+
+
+def _write_parameters(call: Call, entity: Entity, param: Param, value: Value) -> None:
+    for item in _items(call, value, param.python):
+        if isinstance(item, dict):
+            _named_parameters(call, entity, param.xml, item)
+        elif isinstance(item, ParameterFile):
+            child = _child(call, entity, param.xml)
+            set_attribute(call, child, "from", item.path)
+            if item.allow_substs is not None:
+                set_attribute(call, child, "allow_substs", item.allow_substs)
+        else:
+            set_attribute(call, _child(call, entity, param.xml), "from", item)
+
+
+def _named_parameters(call: Call, parent: Entity, tag: str, values: dict[Key, Value]) -> None:
+    """``{'a': {'b': 1}}`` as ``<param name="a"><param name="b" value="1"/></param>``."""
+    for name, value in values.items():
+        child = _child(call, parent, tag)
+        set_attribute(call, child, "name", name)
+        if isinstance(value, dict):
+            _named_parameters(call, child, tag, value)
+        elif isinstance(value, ParameterValue):
+            set_attribute(call, child, "value", value.value)
+            if value.type_name is not None:
+                child.attributes["type"] = value.type_name
+        elif isinstance(value, list | tuple) and all(
+            isinstance(item, bool | int | float | str) for item in value
+        ):
+            items: list[Scalar] = [item for item in value if isinstance(item, Scalar)]
+            child.attributes["value"] = typed_text(items)
+            child.typed = child.typed | {"value"}
+        else:
+            set_attribute(call, child, "value", value)
+            if isinstance(value, str) and reads_as_other_value(value):
+                child.attributes["type"] = "str"  # a literal stays a string, unlike XML's
+
+
+def _write_pairs(call: Call, entity: Entity, param: Param, value: Value) -> None:
+    for item in _items(call, value, param.python):
+        if isinstance(item, list | tuple) and len(item) == 2:
+            child = _child(call, entity, param.xml)
+            set_attribute(call, child, "from", item[0])
+            set_attribute(call, child, "to", item[1])
+        else:
+            call.not_followed(f"an item of {param.python} that is not a pair")
+
+
+def _write_named_values(call: Call, entity: Entity, param: Param, value: Value) -> None:
+    for item in _items(call, value, param.python):
+        if isinstance(item, list | tuple) and len(item) == 2:
+            child = _child(call, entity, param.xml)
+            set_attribute(call, child, "name", item[0])
+            set_attribute(call, child, "value", item[1])
+        else:
+            call.not_followed(f"an item of {param.python} that is not a (name, value) pair")
+
+
+def _write_values(call: Call, entity: Entity, param: Param, value: Value) -> None:
+    for item in _items(call, value, param.python):
+        set_attribute(call, _child(call, entity, param.xml), "value", item)
+
+
+def _write_actions(call: Call, entity: Entity, param: Param, value: Value) -> None:
+    add_actions(call, entity, value)
+
+
+WRITERS: dict[Slot, Callable[[Call, Entity, Param, Value], None]] = {
+    Slot.ATTRIBUTE: _write_attribute,
+    Slot.COMMAND_LINE: _write_command_line,
+    Slot.PARAMETERS: _write_parameters,
+    Slot.PAIRS: _write_pairs,
+    Slot.NAMED_VALUES: _write_named_values,
+    Slot.VALUES: _write_values,
+    Slot.ACTIONS: _write_actions,
+}
+
+
+def add_actions(call: Call, parent: Entity, actions: Value) -> None:
+    """Actions as children of ``parent``; a nested LaunchDescription adds its own."""
+    for action in _items(call, actions, "actions"):
+        if isinstance(action, Entity):
+            parent.children.append(action)
+        elif isinstance(action, Description):
+            parent.children.extend(action.root.children)
+        elif isinstance(action, list | tuple):
+            add_actions(call, parent, action)
+        elif not isinstance(action, Unknown):  # an Unknown was reported where it arose
+            call.not_followed(f"a {type(action).__name__} used as an action")
+
+
+def _set_condition(call: Call, entity: Entity, condition: Value) -> None:
+    if isinstance(condition, Condition):
+        entity.attributes[condition.attribute] = render(condition.text)
+    elif isinstance(condition, Unknown):
+        set_attribute(call, entity, "if", condition)
+    elif condition is not None:
+        call.not_followed(f"condition={type(condition).__name__}")
+
+
+def _action(spec: ActionSpec) -> Callable[[Call], Value]:
+    def build(call: Call) -> Value:
+        entity = Entity(spec.tag, {}, call.location)
+        given: list[tuple[Param, Value]] = []
+        by_name = {param.python: param for param in spec.params}
+        for param, value in zip(spec.params, call.args, strict=False):
+            given.append((param, value))
+        for name, value in call.kwargs.items():
+            if name == "condition":
+                _set_condition(call, entity, value)
+            elif name in by_name:
+                given.append((by_name[name], value))
+            else:
+                call.sink.note(
+                    "python-launch-argument",
+                    f"{call.name}() argument '{name}' has no XML equivalent; not analysed",
+                    call.location,
+                )
+        if len(call.args) > len(spec.params):
+            call.not_followed(f"extra positional arguments of {call.name}()")
+        for param, value in given:
+            if param.xml == "output" and isinstance(value, dict):  # launch's output per stream
+                call.sink.note(
+                    "python-launch-argument",
+                    f"{call.name}() argument 'output' as a dict (one per stream) has no XML "
+                    "equivalent; not analysed",
+                    call.location,
+                )
+            elif value is not None:  # None is each argument's default: nothing to write
+                WRITERS[param.slot](call, entity, param, value)
+        return entity
+
+    return build
+
+
+def _launch_description(call: Call) -> Value:
+    description = Description(Entity("launch", {}, call.location))
+    add_actions(call, description.root, call.arg(0, "initial_entities", []))
+    return description
+
+
+for _key, _spec in ACTIONS.items():
+    CALLS[_key] = _action(_spec)
+CALLS["launch", "LaunchDescription"] = _launch_description

@@ -1,0 +1,255 @@
+"""The callables of the launch API the static reading knows, by qualified name.
+
+A call is looked up by its package and its name (``launch_ros`` and ``Node`` for
+``launch_ros.actions.Node`` as for ``launch_ros.actions.node.Node``), so that every import
+path of a name finds it. Substitutions, conditions and sources are registered here; actions
+in :mod:`~rosvar.ros2.frontends.python.actions`. A call to anything else is not followed.
+"""
+
+from __future__ import annotations
+
+import posixpath
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.ros2.frontends.python.text import PATH_JOIN, Sub, Text, unknown
+from rosvar.ros2.frontends.python.values import (
+    Condition,
+    Module,
+    ParameterFile,
+    ParameterValue,
+    Source,
+    Unknown,
+    Value,
+)
+from rosvar.ros2.frontends.typed_text import typed_text
+
+NOT_FOLLOWED = "python-not-followed"
+"""Diagnostic code of every construct the static reading does not follow."""
+
+_MISSING = Unknown("missing argument")
+PATH_VALUED = frozenset(
+    {"find-pkg-share", "find-pkg-prefix", "dirname", "filename", "find-exec", "exec-in-pkg"}
+)
+"""Substitutions whose value is an absolute path with no trailing ``/``."""
+
+
+@dataclass(slots=True)
+class Call:
+    """One call of a known callable: its arguments as abstract values, and where it is."""
+
+    name: str
+    args: list[Value]
+    kwargs: dict[str, Value]
+    location: Location
+    sink: DiagnosticSink
+
+    def arg(self, index: int, keyword: str, default: Value = _MISSING) -> Value:
+        """The argument given by position ``index`` or by ``keyword``."""
+        if keyword in self.kwargs:
+            return self.kwargs[keyword]
+        if index < len(self.args):
+            return self.args[index]
+        if default is _MISSING:
+            self.sink.warning(
+                "python-launch-argument", f"{self.name}() without '{keyword}'", self.location
+            )
+        return default
+
+    def not_followed(self, what: str) -> Unknown:
+        self.sink.warning(NOT_FOLLOWED, f"{what} is not followed", self.location)
+        return Unknown(what)
+
+    def text(self, value: Value) -> Text:
+        """``value`` as launch normalizes a substitution argument: texts concatenated."""
+        if isinstance(value, Text):
+            return value
+        if isinstance(value, str):
+            return Text.of(value)
+        if isinstance(value, list | tuple):
+            return Text.of(*(self.text(item) for item in value))
+        if isinstance(value, Unknown):
+            return Text.of(unknown(value.what))
+        if isinstance(value, Source):
+            return value.path
+        if value is None or isinstance(value, bool | int | float):
+            return Text.of(typed_text(value))
+        return Text.of(unknown(self.not_followed(f"{type(value).__name__} used as text").what))
+
+
+Builder = Callable[[Call], Value]
+
+CALLS: dict[tuple[str, str], Builder] = {}
+"""Known callables by (package, name)."""
+
+REASONS: dict[tuple[str, str], str] = {
+    ("launch", "RegisterEventHandler"): "RegisterEventHandler (actions run on events)",
+    ("launch", "LocalSubstitution"): "LocalSubstitution (a value of an event)",
+}
+"""Why a known construct stays unknown, for its diagnostic."""
+
+
+def key(qualified: str) -> tuple[str, str]:
+    return qualified.partition(".")[0], qualified.rpartition(".")[2]
+
+
+def _register(package: str, *names: str) -> Callable[[Builder], Builder]:
+    def register(builder: Builder) -> Builder:
+        for name in names:
+            CALLS[package, name] = builder
+        return builder
+
+    return register
+
+
+def join_path(head: Text, tail: Text) -> Text:
+    """``os.path.join`` of two texts (an absolute ``tail`` replaces ``head``), as text where
+    the boundary is known (a literal, or a substitution giving a path); else the join left
+    to the interpreter, ``$(rosvar-path-join head tail)``: ``$(var dir)`` may end in ``/``,
+    or be absolute, or empty."""
+    first = tail.parts[0] if tail.parts else ""
+    if not head.parts:
+        return tail
+    if isinstance(first, Sub):
+        if first.name in PATH_VALUED:
+            return tail
+        return Text.of(Sub(PATH_JOIN, (head, tail)))
+    if first.startswith("/"):
+        return tail
+    last = head.parts[-1]
+    if isinstance(last, Sub) and last.name not in PATH_VALUED:
+        return Text.of(Sub(PATH_JOIN, (head, tail)))
+    separator = "" if isinstance(last, str) and last.endswith("/") else "/"
+    return Text.of(head, separator, tail)
+
+
+def _substitution(name: str, *keywords: str, optional: int = 0) -> Builder:
+    """A substitution whose XML form takes the arguments ``keywords``, the last
+    ``optional`` of them only when given."""
+
+    def build(call: Call) -> Value:
+        args: list[Text] = []
+        for index, keyword in enumerate(keywords):
+            required = index < len(keywords) - optional
+            value = call.arg(index, keyword, _MISSING if required else None)
+            if value is None and not required:
+                break
+            args.append(call.text(value))
+        return Text.of(Sub(name, tuple(args)))
+
+    return build
+
+
+for _package, _name, _xml, _keywords, _optional in (
+    ("launch", "LaunchConfiguration", "var", ("variable_name", "default"), 1),
+    ("launch", "EnvironmentVariable", "env", ("name", "default_value"), 1),
+    ("launch", "FindExecutable", "find-exec", ("name",), 0),
+    ("launch", "AnonName", "anon", ("name",), 0),
+    ("launch", "ThisLaunchFile", "filename", (), 0),
+    ("launch", "ThisLaunchFileDir", "dirname", (), 0),
+    ("launch", "EqualsSubstitution", "equals", ("left", "right"), 0),
+    ("launch", "NotEqualsSubstitution", "not-equals", ("left", "right"), 0),
+    ("launch", "AndSubstitution", "and", ("left", "right"), 0),
+    ("launch", "OrSubstitution", "or", ("left", "right"), 0),
+    ("launch", "NotSubstitution", "not", ("value",), 0),
+    ("launch", "IfElseSubstitution", "if", ("condition", "if_value", "else_value"), 0),
+    ("launch", "Command", "command", ("command", "on_stderr"), 1),
+    ("launch", "PythonExpression", "eval", ("expression",), 0),
+    ("launch_ros", "FindPackageShare", "find-pkg-share", ("package",), 0),
+    ("launch_ros", "FindPackagePrefix", "find-pkg-prefix", ("package",), 0),
+    ("launch_ros", "ExecutableInPackage", "exec-in-pkg", ("executable", "package"), 0),
+    ("launch_ros", "Parameter", "param", ("name",), 0),
+    ("ament_index_python", "get_package_share_directory", "find-pkg-share", ("package_name",), 0),
+    ("ament_index_python", "get_package_prefix", "find-pkg-prefix", ("package_name",), 0),
+    ("os", "getenv", "env", ("key", "default"), 1),
+    ("os", "get", "env", ("key", "default"), 1),  # os.environ.get
+):
+    CALLS[_package, _name] = _substitution(_xml, *_keywords, optional=_optional)
+
+
+@_register("launch", "AllSubstitution", "AnySubstitution")
+def _all_any(call: Call) -> Value:
+    name = "all" if call.name.endswith("AllSubstitution") else "any"
+    return Text.of(Sub(name, tuple(call.text(arg) for arg in call.args)))
+
+
+@_register("launch", "PathSubstitution")
+def _path(call: Call) -> Value:
+    return call.text(call.arg(0, "path"))
+
+
+@_register("launch", "TextSubstitution")
+def _text(call: Call) -> Value:
+    return call.text(call.arg(0, "text"))
+
+
+@_register("launch", "PathJoinSubstitution")
+def _path_join(call: Call) -> Value:
+    parts = call.arg(0, "substitutions")
+    result = Text.of()
+    for part in parts if isinstance(parts, list | tuple) else [parts]:
+        result = join_path(result, call.text(part))
+    return result
+
+
+@_register("os", "join")
+def _os_path_join(call: Call) -> Value:
+    if all(isinstance(arg, str) for arg in call.args):
+        return posixpath.join(*(str(arg) for arg in call.args))
+    result = Text.of()
+    for part in call.args:
+        result = join_path(result, call.text(part))
+    return result
+
+
+@_register("os", "dirname")
+def _dirname(call: Call) -> Value:
+    path = call.arg(0, "p")
+    if isinstance(path, str):
+        return posixpath.dirname(path)
+    if path == Text.of(Sub("filename")):
+        return Text.of(Sub("dirname"))
+    return call.not_followed("os.path.dirname() of a computed path")
+
+
+def _condition(attribute: str, compare: str | None = None) -> Builder:
+    def build(call: Call) -> Value:
+        if compare is None:
+            return Condition(attribute, call.text(call.arg(0, "predicate_expression")))
+        name = call.text(call.arg(0, "launch_configuration_name"))
+        expected = call.text(call.arg(1, "expected_value"))
+        return Condition(attribute, Text.of(Sub(compare, (Text.of(Sub("var", (name,))), expected))))
+
+    return build
+
+
+CALLS["launch", "IfCondition"] = _condition("if")
+CALLS["launch", "UnlessCondition"] = _condition("unless")
+CALLS["launch", "LaunchConfigurationEquals"] = _condition("if", "equals")
+CALLS["launch", "LaunchConfigurationNotEquals"] = _condition("if", "not-equals")
+
+
+@_register("launch", "PythonLaunchDescriptionSource", "AnyLaunchDescriptionSource")
+@_register("launch", "FrontendLaunchDescriptionSource")
+@_register("launch_xml", "XMLLaunchDescriptionSource")
+@_register("launch_yaml", "YAMLLaunchDescriptionSource")
+def _source(call: Call) -> Value:
+    return Source(call.text(call.arg(0, "launch_file_path")))
+
+
+@_register("launch_ros", "ParameterValue")
+def _parameter_value(call: Call) -> Value:
+    kind = call.arg(1, "value_type", None)
+    type_name = None
+    if kind is not None:
+        type_name = kind.qualified if isinstance(kind, Module) else None
+        if type_name not in ("str", "int", "float", "bool"):
+            call.not_followed(f"value_type={kind!r}")
+            type_name = None
+    return ParameterValue(call.arg(0, "value"), type_name)
+
+
+@_register("launch_ros", "ParameterFile")
+def _parameter_file(call: Call) -> Value:
+    return ParameterFile(call.arg(0, "param_file"), call.arg(1, "allow_substs", None))

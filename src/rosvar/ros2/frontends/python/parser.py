@@ -1,0 +1,61 @@
+"""ROS 2 Python launch files to :class:`Entity` trees, read statically.
+
+The file's ``generate_launch_description()`` is read by an abstract interpreter
+(:mod:`~rosvar.ros2.frontends.python.interpreter`), never executed or compiled: the
+result is the element tree of the equivalent XML launch file, with what could not be
+followed as ``$(rosvar-unknown ...)`` texts or left out, each with a diagnostic.
+"""
+
+from __future__ import annotations
+
+import ast
+import os
+
+from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.frontends.entity import ParseResult
+from rosvar.frontends.xml import read_bytes
+from rosvar.ros2.frontends.python.interpreter import (
+    MAX_STEPS,
+    Interpreter,
+    OutOfBudget,
+    entry_point,
+)
+
+
+def parse_python_launch_bytes(data: bytes, filename: str) -> ParseResult:
+    """Read a ROS 2 Python launch file held in memory; never raises."""
+    sink = DiagnosticSink()
+    start = Location(filename, 1, 1)
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as error:
+        sink.error("python-syntax", f"invalid UTF-8 byte at offset {error.start}", start)
+        return ParseResult(None, sink.items)
+    try:
+        tree = ast.parse(text, filename)
+    except SyntaxError as error:
+        where = Location(filename, error.lineno or 1, error.offset or 1)
+        sink.error("python-syntax", f"invalid Python: {error.msg}", where)
+        return ParseResult(None, sink.items)
+    except (ValueError, RecursionError, MemoryError) as error:
+        reason = str(error) or "nested too deeply"
+        sink.error("python-syntax", f"invalid Python: {reason}", start)
+        return ParseResult(None, sink.items)
+    interpreter = Interpreter(filename, text, sink)
+    try:
+        root = entry_point(interpreter, tree)
+    except OutOfBudget:
+        sink.error("python-budget", f"reading the file takes more than {MAX_STEPS} steps", start)
+        return ParseResult(None, sink.items)
+    except RecursionError:
+        sink.error("python-budget", "expressions nested too deeply to read", start)
+        return ParseResult(None, sink.items)
+    return ParseResult(root, sink.items)
+
+
+def parse_python_launch_file(path: str | os.PathLike[str]) -> ParseResult:
+    """Read a ROS 2 Python launch file; Locations use ``path`` as given. Never raises."""
+    data = read_bytes(path)
+    if isinstance(data, ParseResult):
+        return data
+    return parse_python_launch_bytes(data, os.fspath(path))

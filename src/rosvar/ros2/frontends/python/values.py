@@ -1,0 +1,126 @@
+"""The abstract values a Python launch file computes, as the static reading knows them.
+
+Python constants, lists, tuples and dicts stay themselves; launch's objects become what
+their XML equivalent is made of: substitutions become :class:`Text`, actions become
+:class:`Entity` elements, a condition the attribute it sets. What cannot be followed is an
+:class:`Unknown` (reported once, where it arose) that spreads through whatever uses it.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass, field
+
+from rosvar.frontends.entity import Entity
+from rosvar.ros2.frontends.python.text import Text
+
+
+@dataclass(frozen=True, slots=True)
+class Unknown:
+    """A value the static reading cannot follow; ``what`` names the construct."""
+
+    what: str
+
+
+@dataclass(frozen=True, slots=True)
+class Condition:
+    """``IfCondition(x)`` and kin: the attribute (``if``/``unless``) and its text."""
+
+    attribute: str
+    text: Text
+
+
+@dataclass(frozen=True, slots=True)
+class Module:
+    """An imported module or a name in it, by its qualified name (``launch_ros.actions.Node``)."""
+
+    qualified: str
+
+
+@dataclass(frozen=True, slots=True)
+class Source:
+    """A launch description source: the file an include names."""
+
+    path: Text
+
+
+@dataclass(frozen=True, slots=True)
+class ParameterValue:
+    """``ParameterValue(value, value_type=T)``: a parameter value with its declared type."""
+
+    value: Value
+    type_name: str | None
+
+
+@dataclass(frozen=True, slots=True)
+class ParameterFile:
+    """``ParameterFile(path, allow_substs=...)``."""
+
+    path: Value
+    allow_substs: Value
+
+
+@dataclass(frozen=True, slots=True)
+class LaunchContext:
+    """The ``context`` an ``OpaqueFunction`` passes to its function: a value read of it
+    (``perform``, ``launch_configurations[...]``) is the substitution that gives it."""
+
+
+@dataclass(eq=False, slots=True)
+class Description:
+    """A ``LaunchDescription`` under construction: its ``launch`` element."""
+
+    root: Entity
+
+
+@dataclass(eq=False, slots=True)
+class Function:
+    """A function defined in the launch file, called by reading its body again."""
+
+    node: ast.FunctionDef
+    scope: Scope
+    defaults: dict[str, Value]
+
+
+@dataclass(frozen=True, slots=True)
+class Method:
+    """A method looked up on a value (``ld.add_action``), waiting for its call."""
+
+    receiver: Value
+    name: str
+
+
+@dataclass(eq=False, slots=True)
+class Scope:
+    """Names of one function call (or the module), with the enclosing scope."""
+
+    names: dict[str, Value] = field(default_factory=dict)
+    parent: Scope | None = None
+
+    def lookup(self, name: str) -> tuple[bool, Value]:
+        scope: Scope | None = self
+        while scope is not None:
+            if name in scope.names:
+                return True, scope.names[name]
+            scope = scope.parent
+        return False, None
+
+
+Key = str | int | float | bool | None | Text
+Value = (
+    Key
+    | Unknown
+    | Condition
+    | Module
+    | Source
+    | ParameterValue
+    | ParameterFile
+    | LaunchContext
+    | Description
+    | Function
+    | Method
+    | Entity
+    | list["Value"]
+    | tuple["Value", ...]
+    | dict[Key, "Value"]
+)

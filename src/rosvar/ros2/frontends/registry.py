@@ -1,0 +1,56 @@
+"""Frontends by file suffix: every format is a thin adapter producing :class:`Entity` trees.
+
+The XML parser serves both ROS 1 and ROS 2 files; YAML and Python are ROS 2's own formats,
+read into the same trees as the XML (the interpreter never knows which format it walks).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable
+
+from rosvar.frontends.entity import ParseResult
+from rosvar.frontends.xml import load_launch_file
+
+Loader = Callable[[str], ParseResult]
+FRONTENDS: dict[str, Loader] = {}
+
+
+def frontend(*suffixes: str) -> Callable[[Loader], Loader]:
+    """Register ``loader`` for files whose names end with one of ``suffixes``."""
+
+    def register(loader: Loader) -> Loader:
+        for suffix in suffixes:
+            if suffix in FRONTENDS:
+                raise ValueError(f"suffix {suffix} has two frontends")
+            FRONTENDS[suffix] = loader
+        return loader
+
+    return register
+
+
+frontend(".launch.xml", ".xml", ".launch")(load_launch_file)
+
+# ROS 2's own formats are imported on first use: the Python frontend's abstract interpreter and
+# the YAML loader are most of the frontends' import time, which a ROS 1 workspace never needs
+
+
+@frontend(".launch.yaml", ".launch.yml", ".yaml", ".yml")
+def _yaml_launch_file(path: str) -> ParseResult:
+    from rosvar.ros2.frontends.yaml.parser import parse_yaml_launch_file
+
+    return parse_yaml_launch_file(path)
+
+
+@frontend(".launch.py", ".py")
+def _python_launch_file(path: str) -> ParseResult:
+    from rosvar.ros2.frontends.python.parser import parse_python_launch_file
+
+    return parse_python_launch_file(path)
+
+
+def load(path: str | os.PathLike[str]) -> ParseResult:
+    """Parse ``path`` with the frontend of its longest registered suffix (XML otherwise)."""
+    name = os.fspath(path)
+    best = max((s for s in FRONTENDS if name.endswith(s)), key=len, default=None)
+    return (FRONTENDS[best] if best is not None else load_launch_file)(name)

@@ -1,0 +1,1 @@
+"""ROS 2 YAML launch files to entity trees."""

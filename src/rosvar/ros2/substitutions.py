@@ -1,0 +1,399 @@
+"""ROS 2 substitutions (``$(var x)``, ``$(find-pkg-share p)``, ``$(eval ...)``, ...).
+
+The text is parsed as launch's frontend grammar does (substitutions nest; arguments are
+split at whitespace, quoted with ``'``/``"``; a backslash escapes the next character),
+then every substitution is computed over all configurations with :func:`combine`.
+Handlers live in :data:`SUBSTITUTIONS`, keyed by name.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+import posixpath
+import shlex
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from rosvar.interpreter.model import Raw
+from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
+from rosvar.logic.choice import Choice, Fail, combine, ite
+from rosvar.logic.terms import Apply, TermError, concat, register
+from rosvar.ros2.context import Context, optional
+from rosvar.ros2.frontends.python.text import PATH_JOIN, UNKNOWN
+
+if TYPE_CHECKING:
+    from rosvar.interpreter.interpretation import Interpretation
+
+Value = Raw | Fail
+
+
+class SubstitutionSyntaxError(Exception):
+    """The text is not in launch's substitution grammar."""
+
+
+@dataclass(frozen=True)
+class Call:
+    """``$(name arg ...)``: each argument a sequence of text and nested calls."""
+
+    name: str
+    arguments: tuple[Template, ...]
+
+
+Template = tuple[str | Call, ...]
+
+
+class _Parser:
+    def __init__(self, text: str) -> None:
+        self.text = text
+        self.at = 0
+
+    def template(self, stop: str = "") -> Template:
+        parts: list[str | Call] = []
+        buffer: list[str] = []
+        text = self.text
+        while self.at < len(text):
+            ch = text[self.at]
+            if stop and ch in stop:
+                break
+            if ch == "\\" and self.at + 1 < len(text):
+                buffer.append(text[self.at + 1])
+                self.at += 2
+            elif text.startswith("$(", self.at):
+                if buffer:
+                    parts.append("".join(buffer))
+                    buffer.clear()
+                parts.append(self.call())
+            else:
+                buffer.append(ch)
+                self.at += 1
+        if buffer:
+            parts.append("".join(buffer))
+        return tuple(parts)
+
+    def call(self) -> Call:
+        self.at += 2
+        start = self.at
+        text = self.text
+        while self.at < len(text) and (text[self.at].isalnum() or text[self.at] in "-_"):
+            self.at += 1
+        name = text[start : self.at]
+        if not name:
+            raise SubstitutionSyntaxError(f"a substitution has no name in [{text}]")
+        arguments: list[Template] = []
+        while True:
+            while self.at < len(text) and text[self.at].isspace():
+                self.at += 1
+            if self.at >= len(text):
+                raise SubstitutionSyntaxError(f"unclosed substitution in [{text}]")
+            if text[self.at] == ")":
+                self.at += 1
+                return Call(name, tuple(arguments))
+            arguments.append(self.argument())
+
+    def argument(self) -> Template:
+        parts: list[str | Call] = []
+        text = self.text
+        while self.at < len(text) and not text[self.at].isspace() and text[self.at] != ")":
+            ch = text[self.at]
+            if ch in "'\"":
+                self.at += 1
+                parts.extend(self.template(ch))
+                if self.at >= len(text):
+                    raise SubstitutionSyntaxError(f"unclosed quote in [{text}]")
+                self.at += 1
+            else:
+                parts.extend(self.template(" \t\n)'\""))
+        return tuple(parts)
+
+
+@functools.lru_cache(maxsize=16384)
+def parse(text: str) -> Template:
+    """``text`` as a template; raises :class:`SubstitutionSyntaxError`."""
+    return _Parser(text).template()
+
+
+def command_line(text: str) -> list[Template]:
+    """``text`` as a command line's arguments, split as launch's ``_parse_cmdline`` does:
+    literal text at whitespace (``shlex``), substitution values never (``$(var x)`` is one
+    argument whatever its value). Raises :class:`SubstitutionSyntaxError`, also for an
+    unclosed quote in the literal text."""
+    arguments: list[Template] = []
+    current: list[str | Call] = []
+
+    def close() -> None:
+        nonlocal current
+        arguments.append(tuple(current))
+        current = []
+
+    for part in parse(text):
+        if not isinstance(part, str):
+            current.append(part)
+            continue
+        try:
+            tokens = shlex.split(part)
+        except ValueError as error:
+            raise SubstitutionSyntaxError(f"{error} in [{text}]") from None
+        if not tokens:  # only whitespace: it separates two substitutions
+            close()
+            continue
+        if part[0].isspace() and current:
+            close()
+        current.append(tokens[0])
+        if len(tokens) > 1:
+            close()
+            arguments.extend((token,) for token in tokens[1:-1])
+            current.append(tokens[-1])
+        if part[-1].isspace():
+            close()
+    if current:
+        close()
+    return arguments
+
+
+Handler = Callable[["Interpretation", Context, list[Raw]], Choice[Value]]
+SUBSTITUTIONS: dict[str, Handler] = {}
+
+
+def substitution(name: str) -> Callable[[Handler], Handler]:
+    """Register the handler of ``$(name ...)``; it gets the arguments' texts."""
+
+    def register(handler: Handler) -> Handler:
+        SUBSTITUTIONS[name] = handler
+        return handler
+
+    return register
+
+
+class Ros2Substituter:
+    """Resolves attribute text in a :class:`Context`, for all configurations at once."""
+
+    def __init__(self, host: Interpretation) -> None:
+        self.host = host
+        self.space = host.space
+
+    def resolve(self, text: str | None, context: Context) -> Choice[Value] | None:
+        if text is None:
+            return None
+        try:
+            template = parse(text)
+        except SubstitutionSyntaxError as error:
+            return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+        return self.template(template, context)
+
+    def template(self, template: Template, context: Context) -> Choice[Value]:
+        parts = [self._part(part, context) for part in template]
+        if not parts:
+            return Choice.const(self.space, "")
+        return combine(parts, _concatenate)
+
+    def command_line(self, text: str, context: Context) -> Choice[Value]:
+        """A command line's arguments (:func:`command_line`), each resolved, as one
+        ``shlex``-quoted text that :func:`shlex.split` gives back."""
+        try:
+            arguments = command_line(text)
+        except SubstitutionSyntaxError as error:
+            return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+        if not arguments:
+            return Choice.const(self.space, "")
+        return combine([self.template(a, context) for a in arguments], _quote)
+
+    def _part(self, part: str | Call, context: Context) -> Choice[Value]:
+        if isinstance(part, str):
+            return Choice.const(self.space, part)
+        handler = SUBSTITUTIONS.get(part.name)
+        if handler is None:
+            return Choice.const(
+                self.space, Fail(f"unknown substitution '{part.name}'", "substitution-unknown")
+            )
+        arguments = [self.template(a, context) for a in part.arguments]
+        if not arguments:
+            return handler(self.host, context, [])
+        return combine(arguments, lambda leaves: leaves).bind(
+            lambda leaves: _call(handler, self.host, context, leaves)
+        )
+
+
+def _call(
+    handler: Handler, host: Interpretation, context: Context, leaves: Sequence[Value]
+) -> Choice[Value]:
+    for leaf in leaves:
+        if isinstance(leaf, Fail):
+            return Choice.const(host.space, leaf)
+    return handler(host, context, list(leaves))  # type: ignore[arg-type]  # Fails returned
+
+
+def _concatenate(leaves: Sequence[Value]) -> Value:
+    for leaf in leaves:
+        if isinstance(leaf, Fail):
+            return leaf
+    return concat(list(leaves))  # type: ignore[arg-type]  # no Fail left: texts and terms
+
+
+def _quote(leaves: Sequence[Value]) -> Value:
+    words: list[Raw] = []
+    for leaf in leaves:
+        if isinstance(leaf, Fail):
+            return leaf
+        words += [" ", shlex.quote(leaf) if isinstance(leaf, str) else leaf]
+    return concat(words[1:])  # a term (an unknown value) stays unquoted
+
+
+def _fail(host: Interpretation, message: str, code: str) -> Choice[Value]:
+    return Choice.const(host.space, Fail(message, code))
+
+
+@substitution("var")
+def _var(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    if not 1 <= len(args) <= 2 or not isinstance(args[0], str):
+        return _fail(host, "$(var) takes a name and an optional default", "substitution-invalid")
+    name = args[0]
+    missing: Value = (
+        args[1]
+        if len(args) == 2
+        else Fail(f"launch configuration '{name}' does not exist", "var-undefined")
+    )
+    value = context.configurations.get(name)
+    if value is None:
+        context.unset_reads.add(name)
+        return Choice.const(host.space, missing)
+    if any(leaf is None for _condition, leaf in value.branches):
+        context.unset_reads.add(name)
+    return value.map(lambda leaf: missing if leaf is None else leaf)
+
+
+@substitution("env")
+def _env(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    if not 1 <= len(args) <= 2 or not isinstance(args[0], str):
+        return _fail(host, "$(env) takes one or two arguments", "substitution-invalid")
+    name, default = args[0], args[1] if len(args) == 2 else None
+    value = context.env.get(name)
+    if value is None:
+        value = host.env_value(name)
+
+    def pick(leaf: Raw | None) -> Value:
+        if leaf is not None:
+            return leaf
+        if default is not None:
+            return default
+        return Fail(f"environment variable '{name}' does not exist", "env-undefined")
+
+    return value.map(pick)
+
+
+def _package(host: Interpretation, args: list[Raw], what: str) -> Choice[Value]:
+    if len(args) != 1 or not isinstance(args[0], str):
+        return _fail(host, f"$({what}) takes one argument", "substitution-invalid")
+    path = host.find_package(args[0])
+    if path is None:
+        return _fail(host, f"package '{args[0]}' not found", "package-not-found")
+    return Choice.const(host.space, path)
+
+
+@substitution("find-pkg-share")
+def _share(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    return _package(host, args, "find-pkg-share")  # the source folder stands for the share
+
+
+@substitution("find-pkg-prefix")
+def _prefix(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    return _package(host, args, "find-pkg-prefix")
+
+
+@substitution("dirname")
+def _dirname(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    return Choice.const(host.space, os.path.dirname(os.path.abspath(context.filename)))
+
+
+@substitution("filename")
+def _filename(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    return Choice.const(host.space, os.path.abspath(context.filename))
+
+
+@substitution("command")
+def _command(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """Never run: the value is the text a dry run shows, ``$(command TEXT)`` (as the oracle
+    records it), so the launch around it is analysed; a warning says it is not known."""
+    if not 1 <= len(args) <= 2:
+        return _fail(
+            host, "$(command) takes a command and an optional on_stderr", "command-invalid"
+        )
+    host.warn("command-not-run", "$(command) is never run by rosvar: its output is not known")
+    return Choice.const(host.space, concat(["$(command ", args[0], ")"]))
+
+
+@substitution("find-exec")
+def _find_exec(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """The executable's path on the host's ``PATH``, which rosvar does not search (the
+    PATH of the machine that launches is not the analysing one's): the value stays the
+    text ``$(find-exec NAME)``, and a warning says so."""
+    if len(args) != 1:
+        return _fail(host, "$(find-exec) takes one argument", "substitution-invalid")
+    host.warn(
+        "find-exec-host",
+        "$(find-exec) is the path of an executable on the launching host's PATH: not searched",
+    )
+    return Choice.const(host.space, concat(["$(find-exec ", args[0], ")"]))
+
+
+@substitution(PATH_JOIN)
+def _path_join(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """``PathJoinSubstitution`` (the Python frontend's): ``os.path.join`` of the values."""
+    if all(isinstance(arg, str) for arg in args):
+        return Choice.const(host.space, posixpath.join(*args))  # type: ignore[arg-type]
+    parts: list[Raw] = []
+    for arg in args:  # an unknown value: joined as if relative, with no trailing '/'
+        parts += ["/", arg]
+    return Choice.const(host.space, concat(parts[1:]))
+
+
+@substitution(UNKNOWN)
+def _unknown(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """A value the Python frontend did not follow (it reported it): unknown, failing only
+    where its text is needed, as an argument's value outside its domain."""
+    what = args[0] if args and isinstance(args[0], str) else "value"
+    return Choice.const(host.space, Apply(UNKNOWN, (what,), f"$({UNKNOWN} {what})"))
+
+
+def _not_followed(_host: object, what: str) -> str:
+    raise TermError(f"{what} is not followed by rosvar")
+
+
+register(UNKNOWN, _not_followed)
+
+
+@substitution("eval")
+def _eval(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    if len(args) != 1 or not isinstance(args[0], str):
+        return _fail(host, "$(eval) takes one argument", "substitution-invalid")
+    try:
+        return Choice.const(host.space, evaluate(args[0], EvalEnvironment(_no_arg)))
+    except (EvalFailed, EvalRefused) as error:
+        return _fail(host, f"$(eval {args[0]}): {error}", "eval-failed")
+
+
+def _no_arg(name: str) -> str:
+    raise KeyError(name)  # ROS 2 expressions read launch configurations only through $(var)
+
+
+@substitution("anon")
+def _anon(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+    """One name per id, kept as the launch configuration ``anon<id>`` (so groups scope it);
+    a counter stands for launch's host, pid and random part, as for ROS 1."""
+    if len(args) != 1 or not isinstance(args[0], str):
+        return _fail(host, "$(anon) takes one argument", "substitution-invalid")
+    key = "anon" + args[0]
+    old = context.configurations.get(key)
+    unset = host.space.true if old is None else old.where(lambda leaf: leaf is None)
+    if unset != host.space.false:
+        with host.under(unset) as live:
+            if live:
+                fresh = optional(host.new_anon(context, args[0]))
+                before = old if old is not None else Choice.const(host.space, None)
+                context.configurations[key] = ite(host.space, host.pc, fresh, before)
+    return context.configurations[key].map(_present)
+
+
+def _present(leaf: Raw | None) -> Value:
+    return Fail("anonymous name not set", "value-unknown") if leaf is None else leaf

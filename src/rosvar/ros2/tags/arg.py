@@ -1,0 +1,96 @@
+"""``<arg>`` (``DeclareLaunchArgument``) and ``<let>`` (``SetLaunchConfiguration``).
+
+Both write the global launch configurations: an ``<arg>``'s ``default`` applies only where
+no value is set yet (given on the command line or by an including file), and a value
+outside its ``<choice value=...>`` children is an error.
+"""
+
+from __future__ import annotations
+
+from rosvar.frontends.entity import Entity
+from rosvar.interpreter.interpretation import Interpretation, processed
+from rosvar.interpreter.model import ArgDecl, Raw
+from rosvar.logic.choice import Choice, ite
+from rosvar.ros2.context import Configuration, Context, optional
+from rosvar.ros2.dialect import tag
+from rosvar.ros2.tags.common import assign
+
+
+@tag("arg")
+@processed
+def arg(it: Interpretation, entity: Entity, context: Context) -> None:
+    name = entity.get("name")
+    if not name:
+        it.fail(it.space.true, "attribute-missing", "<arg> tag is missing required 'name'")
+        return
+    old = context.configurations.get(name)
+    if context.open_command_line and len(it.stack) > 1 and name not in it.model.inputs:
+        old = _given(it, context, name, old)
+    default = it.attr(entity, "default", context)
+    unset = old.where(lambda leaf: leaf is None) if old is not None else it.space.true
+    if default is None:
+        it.fail(unset, "arg-required", f"Required launch argument '{name}' was not provided")
+    else:
+        with it.under(unset) as live:
+            if live:
+                context.configurations[name] = assign(it, old, optional(default))
+    value = context.configurations.get(name)
+    allowed = [c.get("value") or "" for c in entity.children if c.tag == "choice"]
+    if allowed and value is not None:
+        bad = value.where(lambda leaf: isinstance(leaf, str) and leaf not in allowed)
+        it.fail(
+            bad,
+            "arg-choice",
+            f"argument '{name}' must be one of {allowed}",
+        )
+    included = len(it.stack) > 1  # an included file's: listed if it is an input (see _given)
+    if included and (
+        name not in it.model.settable or any(arg.name == name for arg in it.model.args)
+    ):
+        return
+    it.model.args.append(
+        ArgDecl(
+            name,
+            entity.location,
+            it.pc,
+            entity.get("default"),
+            None,
+            entity.get("description"),
+            it.model.inputs.get(name),
+        )
+    )
+
+
+def _given(
+    it: Interpretation, context: Context, name: str, old: Configuration | None
+) -> Configuration | None:
+    """An included file's argument the entry file does not declare: ``ros2 launch`` set
+    ``name:=value``, if given, before loading, so where nothing set it since, the declaration
+    sees the command line's value. It becomes an input here; a read of it before (or outside
+    the scope it is set in) makes the next interpretation know it from the start."""
+    unset = old.where(lambda leaf: leaf is None) if old is not None else it.space.true
+    if unset == it.space.false or "$" in name:
+        return old
+    it.model.settable[name] = context.filename
+    given = it.entry_args(it.model.file, [name], None, {name: context.filename})[name]
+    before = old if old is not None else Choice.const(it.space, None)
+    context.configurations[name] = ite(it.space, unset, given, before)  # on every path
+    return context.configurations[name]
+
+
+@tag("let")
+@processed
+def let(it: Interpretation, entity: Entity, context: Context) -> None:
+    name = it.required(entity, "name", context)
+    value = it.required(entity, "value", context)
+    if name is None or value is None:
+        return
+    for condition, key in name:
+        if not isinstance(key, str):
+            it.fail(condition, "value-unknown", "<let> name depends on an unknown value")
+            continue
+        with it.under(condition) as live:
+            if live:
+                old = context.configurations.get(key)
+                new: Choice[Raw | None] = optional(value)
+                context.configurations[key] = assign(it, old, new)

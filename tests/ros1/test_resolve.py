@@ -1,0 +1,97 @@
+"""``resolve``: one configuration of several entry files, and the JSON of a resolution."""
+
+from __future__ import annotations
+
+import json
+from typing import TYPE_CHECKING, Any
+
+import pytest
+
+from rosvar.ros1.resolve import resolve
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+
+BASE = """
+  <arg name="ns" default=""/>
+  <node pkg="pkg" type="t" name="driver" ns="$(arg ns)" if="$(eval ns != '')"/>
+  <node pkg="pkg" type="t" name="driver" unless="$(eval ns != '')"/>
+  <param name="shared" value="base"/>
+"""
+EXTRA = """
+  <node pkg="pkg" type="t" name="driver"/>
+  <param name="shared" value="extra"/>
+"""
+
+
+def test_several_files_share_one_configuration(ws: LaunchWorkspace) -> None:
+    base, extra = ws.launch("base.launch", BASE), ws.launch("extra.launch", EXTRA)
+    analysis = ws.analysis()
+    moved = resolve(analysis, [base, extra], {"ns": "robot"})
+    assert moved.ok
+    assert sorted(str(n["name"]) for n in moved.nodes) == ["/driver", "/robot/driver"]
+    assert moved.params == {"/shared": "extra"}  # the later file wins
+    clash = resolve(analysis, [base, extra], {})
+    [conflict] = clash.conflicts
+    assert conflict.name == "/driver"
+    assert [loc.file for loc in conflict.locations] == [base, extra]
+
+
+@pytest.mark.oracle
+def test_several_files_agree_with_roslaunch(ws: LaunchWorkspace) -> None:
+    base, extra = ws.launch("base.launch", BASE), ws.launch("extra.launch", EXTRA)
+    jobs = [
+        {"id": i, "roots": [str(ws.root)], "files": [base, extra], "args": args, "env": {}}
+        for i, args in enumerate([{"ns": "robot"}, {}])
+    ]
+    from oracle.client import shared_oracle
+
+    moved, clash = shared_oracle().run(jobs)
+    ours = resolve(ws.analysis(), [base, extra], {"ns": "robot"}).to_json()
+    assert moved["ok"] and ours["ok"]
+    assert moved["params"] == ours["params"]
+    assert [n["name"] for n in moved["nodes"]] == [n["name"] for n in ours["nodes"]]  # type: ignore[index]
+    assert not clash["ok"] and "multiple nodes named [/driver]" in clash["error"]
+
+
+def test_an_error_stops_at_its_file(ws: LaunchWorkspace) -> None:
+    broken = ws.launch("broken.launch", '  <param name="p" value="$(arg missing)"/>')
+    extra = ws.launch("extra.launch", EXTRA)
+    result = resolve(ws.analysis(), [broken, extra])
+    assert not result.ok
+    assert [e.code for e in result.errors] == ["arg-undefined"]
+    assert result.nodes == [] and result.params == {}
+
+
+def test_json_values(ws: LaunchWorkspace) -> None:
+    file = ws.launch(
+        "values.launch",
+        '  <param name="nan" value="nan"/>\n'
+        '  <param name="inf" value="-inf" type="double"/>\n'
+        "  <rosparam>{a: .inf, b: !!binary AAH/, c: [1, {d: null}]}</rosparam>",
+    )
+    resolution = ws.resolve(file)
+    assert resolution.ok
+    assert resolution.params["/nan"] == "nan"  # already JSON-safe
+    document: dict[str, Any] = json.loads(json.dumps(resolution.to_json(), allow_nan=False))
+    assert document["params"] == {
+        "/a": "inf",
+        "/b": {"__binary__": "AAH/"},
+        "/c": [1, {"d": None}],
+        "/inf": "-inf",
+        "/nan": "nan",
+    }
+    assert list(document["params"]) == sorted(document["params"])
+
+
+def test_to_json_shape(ws: LaunchWorkspace) -> None:
+    file = ws.launch("dup.launch", EXTRA + EXTRA)
+    document = ws.resolve(file).to_json()
+    assert set(document) == {"ok", "nodes", "tests", "params", "conflicts", "errors"}
+    assert document["ok"] is False
+    [conflict] = document["conflicts"]  # type: ignore[misc]
+    assert conflict["kind"] == "node-name"
+    # lines: <launch>, blank, node, param, blank, node
+    assert [(loc["line"], loc["col"]) for loc in conflict["locations"]] == [(3, 3), (6, 3)]
+    node = document["nodes"][0]  # type: ignore[index]
+    assert {"name", "namespace", "package", "type", "filename", "line", "col"} <= set(node)
