@@ -201,6 +201,7 @@ def same_as_resolve(analysis: Analysis, state: ConfigurationState) -> int:
         )
         ours = anon_free(product(state, [m.spelled for m in members]))
         assert ours["ok"] == resolution["ok"], state.command
+        assert resolution["ok"] or state.launches is not True, state.command
         if not resolution["ok"]:
             topics = None
             continue

@@ -320,3 +320,32 @@ def test_a_command_param_shows_what_roslaunch_loads_once_typed(ws: LaunchWorkspa
     params = {p["name"]: p["value"] for p in state.graph.params if p["presence"] == "present"}
     assert params == {"/rate": 12, "/description": "__command__(12)"}
     assert same_as_resolve(ws.analysis(), state) == 1
+
+
+def test_what_rosvar_could_not_read_is_shown_while_its_file_is_in(ws: LaunchWorkspace) -> None:
+    """issue 30: a product rosvar could not read was offered as finished ("0 nodes") and the
+    notice of what it could not read was gone after the next click."""
+    ws.launch("a.launch", '  <include file="$(find nopkg)/launch/x.launch"/>')
+    ws.launch("b.launch", '  <node pkg="p" type="t" name="n"/>')
+    engine = configurator(ws)
+    assert run(engine).unknown == []
+    chosen = choices("select a.launch")
+    for state in (run(engine, "select a.launch"), engine.state(chosen + engine.completion(chosen))):
+        assert [(d.code, d.location.line) for d in state.unknown] == [
+            ("package-unknown", 2),
+            ("include-unknown", 2),
+        ]
+    finished = engine.state(chosen + engine.completion(chosen))
+    assert finished.complete and finished.to_json()["unknown"][0]["code"] == "package-unknown"
+    assert run(engine, "select b.launch", "deselect a.launch").unknown == []
+
+
+def test_a_finished_product_says_whether_it_launches(ws: LaunchWorkspace) -> None:
+    ws.launch("t.launch", TYPED)
+    engine = configurator(ws)
+    assert run(engine, "set t.launch:rate=abc").launches is None  # not finished
+    chosen = choices("set t.launch:rate=abc", "set t.launch:fast=true")
+    failing = engine.state(chosen + engine.completion(chosen))
+    assert failing.launches is False and failing.to_json()["launches"] is False
+    chosen = choices("set t.launch:rate=3", "set t.launch:fast=true")
+    assert engine.state(chosen + engine.completion(chosen)).launches is True

@@ -19,12 +19,13 @@ from rosvar.analyses.feature_model.operations import explain
 from rosvar.configuration.catalog import Catalog, Feature
 from rosvar.configuration.choices import Action, ChoiceError, Refusal, UserChoice
 from rosvar.configuration.command import Launch, command_line, group
-from rosvar.configuration.conflicts import Conflicts, ConflictState
+from rosvar.configuration.conflicts import Certainty, Conflicts, ConflictState
 from rosvar.configuration.derivation import Decisions, Derivation, Presence
 from rosvar.configuration.graph import VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.view import Graph, Summary, Views
+from rosvar.diagnostics import Diagnostic, leaves_unknown
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.inputs import OTHER, UNSET
 from rosvar.workspace.interfaces.model import Interfaces
@@ -103,6 +104,9 @@ class ConfigurationState:
     unselected: int
     commands: list[list[Launch]] = field(default_factory=list)  # files sharing a command line
     untyped: list[str] = field(default_factory=list)  # args at <other> still without a text
+    unknown: list[Diagnostic] = field(default_factory=list)
+    """What rosvar could not read of the selected files (``diagnostics.leaves_unknown``):
+    the product's graph may lack what they load there."""
 
     @cached_property
     def graph(self) -> Graph:
@@ -113,6 +117,18 @@ class ConfigurationState:
     def summary(self) -> Summary:
         """The graph in numbers, judged on first use without describing conditions."""
         return self.summarizer()
+
+    @cached_property
+    def launches(self) -> bool | None:
+        """Whether the product's command loads: False when roslaunch would stop (an error
+        present) or refuse two nodes of one name (a certain conflict); None while there is
+        no command (incomplete, or an ``<other>`` value without its text) or while rosvar
+        could not read all of the product (``unknown``)."""
+        if not self.complete or self.command is None:
+            return None
+        if self.summary.errors or any(c.status == Certainty.CERTAIN for c in self.conflicts):
+            return False
+        return None if self.unknown else True
 
     @cached_property
     def configurations(self) -> int:
@@ -133,6 +149,8 @@ class ConfigurationState:
             "unselected": self.unselected,
             "launched": [launch.spelled for group in self.commands for launch in group],
             "untyped": self.untyped,
+            "launches": self.launches,
+            "unknown": [d.to_json() for d in self.unknown],
         }
 
 
@@ -258,6 +276,10 @@ class Configurator:
             for feature in self.catalog
         }
         self._rows = {f.id: (f.id, f.variable, self._feature_states[f.id]) for f in self.catalog}
+        self._unread = {  # launch file id → what of its model rosvar could not read
+            entry.id: [d for d in analysis.model(entry.path).diagnostics if leaves_unknown(d)]
+            for entry in self.catalog.files
+        }
         self._rows_of: dict[str, list[_Row]] = {}
         for row in self._rows.values():
             self._rows_of.setdefault(row[1], []).append(row)
@@ -439,6 +461,14 @@ class Configurator:
             untyped=[
                 arg for arg, variable in self._others if decided.get(variable) and arg not in texts
             ],
+            unknown=list(
+                dict.fromkeys(
+                    diagnostic
+                    for entry in self.catalog.files
+                    if features[entry.id].state == Selection.SELECTED
+                    for diagnostic in self._unread[entry.id]
+                )
+            ),
         )
 
     def _features(
