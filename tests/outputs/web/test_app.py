@@ -570,6 +570,43 @@ def test_complete_product_gives_the_command(page: Any, examples: Live) -> None:
     page.locator("#copy", has_text="Copied ✓").wait_for(timeout=10_000)  # the clipboard is async
 
 
+def test_what_stops_the_product_stays_in_view_until_it_is_gone(
+    page: Any, ws: LaunchWorkspace
+) -> None:
+    """issue 30: on a bringup rosvar could not read, Finish showed "0 nodes" with Copy
+    enabled, and the notice of what it could not read was gone at the next click; a
+    product whose command roslaunch refuses was offered for copying."""
+    ws.launch("unread.launch", '  <param name="p" value="$(find nopkg)/p.yaml"/>')
+    ws.launch(
+        "t.launch",
+        '  <arg name="rate" default="5"/>\n  <arg name="fast" default="false"/>\n'
+        '  <param name="rate" type="int" value="$(arg rate)" if="$(arg fast)"/>',
+    )
+    with running(configurator(ws)) as live:
+        app = App(page, live)
+        status = page.locator("#command-status")
+        assert status.is_hidden()
+        app.choose("unread.launch", "select")
+        assert "rosvar could not read all of the selected files" in status.inner_text()
+        assert "nopkg" in status.inner_text()
+        app.wait_for_update(lambda: page.click("#finish"))  # another click: still said
+        assert app.state["complete"] and app.state["launches"] is None
+        assert status.is_visible() and "could not read" in status.inner_text()
+        assert page.locator("#copy").is_enabled()  # the command is right; what it loads unknown
+        app.wait_for_update(lambda: page.click("#undo"))
+        assert status.is_visible() and "could not read" in status.inner_text()
+        app.wait_for_update(lambda: page.click("#reset"))
+        assert status.is_hidden()
+        app.type_other("t.launch:rate", "abc")  # accepted: the param is in some products only
+        app.choose("t.launch:fast=true", "select")
+        app.wait_for_update(lambda: page.click("#finish"))
+        assert app.state["launches"] is False
+        assert "This product does not launch: roslaunch would stop at" in status.inner_text()
+        assert "invalid literal for int()" in status.inner_text()
+        assert page.locator("#copy").is_disabled()
+        assert page.locator("#command.fails").inner_text().startswith("roslaunch pkg t.launch")
+
+
 def test_tabs_keep_their_own_sessions(page: Any, examples: Live) -> None:
     first = App(page, examples)
     robot = file_named(first.state, "robot.launch")

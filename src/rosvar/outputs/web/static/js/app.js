@@ -21,7 +21,7 @@ const bar = new Bar(
   {
     featuresLeft: $("features-left"), configurations: $("configurations"), completeness: $("completeness"),
     undo: $("undo"), redo: $("redo"), reset: $("reset"), finish: $("finish"),
-    message: $("message"), command: $("command"), copy: $("copy"),
+    message: $("message"), command: $("command"), copy: $("copy"), status: $("command-status"),
     notice: $("notice"), noticeText: $("notice-text"), noticeClose: $("notice-close"),
   },
   {
