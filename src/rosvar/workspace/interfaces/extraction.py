@@ -18,8 +18,10 @@ from collections.abc import Iterable
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.workspace.executables import SCRIPT_FOLDERS, console_scripts
-from rosvar.workspace.interfaces import cpp, python
+from rosvar.workspace.interfaces import python
 from rosvar.workspace.interfaces.cmake import CMAKE_FILE, Build, TargetKind, read_build
+from rosvar.workspace.interfaces.cpp.extract import extract, extract_node
+from rosvar.workspace.interfaces.cpp.unit import Unit
 from rosvar.workspace.interfaces.model import Extracted, Interfaces, NodeInterface, NodeKind
 from rosvar.workspace.interfaces.nodelets import nodelet_classes
 from rosvar.workspace.interfaces.reading import read_source, read_text
@@ -43,19 +45,19 @@ def extract_package(package: Package, sink: DiagnosticSink) -> list[NodeInterfac
 
     for target in build.targets.values():
         if target.kind is TargetKind.EXECUTABLE:
-            unit = cpp.Unit.load(_cpp_sources(build.sources(target.name)), include_dirs)
+            unit = Unit.load(_cpp_sources(build.sources(target.name)), include_dirs)
             entry, owner = ("main", None) if target.plugin is None else _constructor(target.plugin)
             node(
                 target.installed_name,
                 NodeKind.NODE,
-                cpp.extract_node(unit, entry, owner, sink, where),
+                extract_node(unit, entry, owner, sink, where),
             )
         elif ros2:
             plugins = _components(target.sources)
             sources = _cpp_sources(build.sources(target.name)) if plugins else []
-            unit = cpp.Unit.load(sources, include_dirs)
+            unit = Unit.load(sources, include_dirs)
             for plugin in plugins:
-                found = cpp.extract_node(unit, *_constructor(plugin), sink, where)
+                found = extract_node(unit, *_constructor(plugin), sink, where)
                 node(plugin, NodeKind.COMPONENT, found)
     for nodelet in nodelet_classes(package.path, sink):
         if nodelet.library not in build.targets:
@@ -66,9 +68,9 @@ def extract_package(package: Package, sink: DiagnosticSink) -> list[NodeInterfac
             )
             nodes.append(NodeInterface(package.name, nodelet.name, NodeKind.NODELET))
             continue
-        unit = cpp.Unit.load(_cpp_sources(build.sources(nodelet.library)), include_dirs)
+        unit = Unit.load(_cpp_sources(build.sources(nodelet.library)), include_dirs)
         owner = nodelet.type.rsplit("::", 1)[-1]
-        entries = cpp.extract(unit, "onInit", owner, sink, nodelet.location)
+        entries = extract(unit, "onInit", owner, sink, nodelet.location)
         nodes.append(NodeInterface(package.name, nodelet.name, NodeKind.NODELET, entries))
     for script in _python_scripts(package.path, build):
         node(os.path.basename(script), NodeKind.NODE, python.extract_node(script, sink))

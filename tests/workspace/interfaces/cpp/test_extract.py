@@ -5,7 +5,9 @@ from __future__ import annotations
 from pathlib import Path
 
 from rosvar.diagnostics import DiagnosticSink, Location
-from rosvar.workspace.interfaces.cpp import Unit, extract, extract_node, ros_type
+from rosvar.workspace.interfaces.cpp.extract import extract, extract_node
+from rosvar.workspace.interfaces.cpp.ros_types import ros_type
+from rosvar.workspace.interfaces.cpp.unit import Unit
 from rosvar.workspace.interfaces.model import Entry, Expression, Role
 
 NODE = """\

@@ -1,0 +1,61 @@
+"""The ROS client library APIs C++ extraction recognises: the calls and classes that make a
+node publish, subscribe, serve, call or read a name, by the names the sources spell them.
+
+Kept in one table so that recognising another API is adding a row, not a branch.
+"""
+
+from __future__ import annotations
+
+import re
+
+from rosvar.workspace.interfaces.model import Role
+
+PRIVATE_HANDLES = frozenset({"getPrivateNodeHandle", "getMTPrivateNodeHandle"})
+PUBLIC_HANDLES = frozenset({"getNodeHandle", "getMTNodeHandle"})
+PARAM_READS = frozenset({"param", "getParam", "getParamCached"})
+FREE_PARAM_READS = frozenset({"ros::param::get", "ros::param::param", "ros::param::getCached"})
+ACTION_CLASSES = {
+    "SimpleActionServer": Role.ACTION_SERVERS,
+    "ActionServer": Role.ACTION_SERVERS,
+    "SimpleActionClient": Role.ACTION_CLIENTS,
+    "ActionClient": Role.ACTION_CLIENTS,
+}
+IMAGE = "sensor_msgs/Image"
+CAMERA_INFO = "sensor_msgs/CameraInfo"
+RCLCPP_CALLS = {
+    "create_publisher": Role.PUBLISHES,
+    "create_subscription": Role.SUBSCRIBES,
+    "create_service": Role.SERVICES,
+    "create_client": Role.CLIENTS,
+}
+"""rclcpp's ``Node`` methods: called on the node (``this->``, ``node->``, a member pointer,
+``shared_from_this()``) or unqualified in a class derived from it. A ROS 2 node has one
+namespace, so the receiver need not be followed."""
+RCLCPP_FREE_CALLS = {
+    # free function → role and the index of the name argument (the node comes first)
+    "rclcpp_action::create_server": Role.ACTION_SERVERS,
+    "rclcpp_action::create_client": Role.ACTION_CLIENTS,
+    "image_transport::create_publisher": Role.PUBLISHES,
+    "image_transport::create_subscription": Role.SUBSCRIBES,
+    "image_transport::create_camera_publisher": Role.PUBLISHES,
+    "image_transport::create_camera_subscription": Role.SUBSCRIBES,
+}
+RCLCPP_DECLARE = "declare_parameter"
+RCLCPP_READS = frozenset({"get_parameter", "get_parameter_or"})
+RCLCPP_NODE = re.compile(r"^rclcpp::Node(?:::make_shared)?$|make_shared<rclcpp::Node>$")
+"""An rclcpp node built here (``rclcpp::Node::make_shared("name")``): its first argument
+is the node's name."""
+ROS2_IMAGE = "sensor_msgs/msg/Image"
+ROS2_CAMERA_INFO = "sensor_msgs/msg/CameraInfo"
+CONTROLLER_MANAGER_SERVICES = tuple(
+    (service, "controller_manager_msgs/" + service.title().replace("_", ""))
+    for service in (
+        "list_controllers",
+        "list_controller_types",
+        "load_controller",
+        "unload_controller",
+        "switch_controller",
+        "reload_controller_libraries",
+    )
+)
+"""What ros_control's ControllerManager serves (its constructor, controller_manager.cpp)."""

@@ -1,0 +1,43 @@
+"""C++ extraction's entry point: the interface of the code one entry function reaches."""
+
+from __future__ import annotations
+
+from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.workspace.interfaces.cpp.collector import Collector
+from rosvar.workspace.interfaces.cpp.evaluator import Evaluator
+from rosvar.workspace.interfaces.cpp.unit import Unit
+from rosvar.workspace.interfaces.model import Entry, Extracted, Role
+
+
+def extract(
+    unit: Unit, entry: str, owner: str | None, sink: DiagnosticSink, where: Location
+) -> list[Entry]:
+    """The interface of the code reachable from function ``entry`` (of class ``owner``)."""
+    return extract_node(unit, entry, owner, sink, where).entries
+
+
+def extract_node(
+    unit: Unit, entry: str, owner: str | None, sink: DiagnosticSink, where: Location
+) -> Extracted:
+    """:func:`extract`, with the node's own name (ROS 2)."""
+    starts = [f for f in unit.functions.get(entry, []) if owner is None or f.owner == owner]
+    if owner is not None:
+        starts += unit.functions.get(owner, [])  # the nodelet's constructor runs first
+    if not starts:
+        what = f"{owner}::{entry}" if owner else entry
+        sink.warning(
+            "interface-no-entry",
+            f"no definition of {what} in the sources; every function of them is read",
+            where,
+        )
+        starts = [f for functions in unit.functions.values() for f in functions]
+    reached = unit.reachable(starts)
+    evaluator = Evaluator(unit, reached)
+    collector = Collector(unit, evaluator, sink)
+    for function in sorted(reached, key=lambda f: (f.file, f.node.start_byte)):
+        collector.scan(function)
+    declared = {e.name for e in collector.entries if e.role is Role.PARAMS}
+    reads = [read for read in collector.reads if read.name not in declared]
+    names = {name.value for name in collector.node_names if name.static}
+    node_name = names.pop() if len(names) == 1 else None
+    return Extracted(collector.entries + reads, node_name)
