@@ -3,14 +3,19 @@
 from __future__ import annotations
 
 import gc
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 import pytest
 
 from configuration.helpers import choices, configurator, present, run, same_as_resolve, states
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.feature_model.operations import count_configurations
-from rosvar.configuration.choices import ChoiceError
+from rosvar.configuration.choices import ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
+from rosvar.configuration.sat import Sat
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.workspace import discover
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -349,3 +354,35 @@ def test_a_finished_product_says_whether_it_launches(ws: LaunchWorkspace) -> Non
     assert failing.launches is False and failing.to_json()["launches"] is False
     chosen = choices("set t.launch:rate=3", "set t.launch:fast=true")
     assert engine.state(chosen + engine.completion(chosen)).launches is True
+
+
+def test_a_refusal_the_search_cannot_explain_in_its_budget_says_so(
+    engine: Configurator, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(Sat, "_limited", lambda _sat, _assumptions: None)
+    state = run(
+        engine, "select other_camera.launch", "select main.launch", "set main.launch:cam=true"
+    )
+    [refusal] = state.refused
+    assert refusal.reason.endswith(
+        "is impossible after select other_camera.launch: not explained (finding the "
+        "constraints why took too long)"
+    )
+
+
+def test_two_ordinary_clicks_on_husky_are_explained_at_once() -> None:
+    """issue 30.5: two selections that each took a second took over 120 s together, in the
+    BDD conjunctions of the refusal's explanation."""
+    corpus = Path(__file__).resolve().parents[3] / "shared" / "corpus"
+    if not (corpus / "husky").is_dir():
+        pytest.skip(f"corpus not found at {corpus}")
+    analysis = Analysis(discover([corpus / "husky"], deps=[corpus / "_external"]))
+    engine = Configurator(analysis, extract(analysis, products=True))
+    config = "husky_manipulation/husky_dual_gen3_moveit_config/launch/"
+    [gazebo, planning] = [
+        next(f.id for f in engine.catalog.files if f.path.endswith(config + name))
+        for name in ("gazebo.launch", "husky_dual_gen3_moveit_planning_execution.launch")
+    ]
+    [refusal] = engine.state([UserChoice("select", gazebo), UserChoice("select", planning)]).refused
+    assert refusal.reason.startswith(f"select {planning} is impossible after select {gazebo}: ")
+    assert "ros_controllers.launch both declare param /controller_list" in refusal.reason

@@ -15,7 +15,6 @@ from enum import StrEnum
 from functools import cached_property
 
 from rosvar.analyses.feature_model.model import FeatureKind, FeatureModel
-from rosvar.analyses.feature_model.operations import explain
 from rosvar.configuration.catalog import Catalog, Feature
 from rosvar.configuration.choices import Action, ChoiceError, Refusal, UserChoice
 from rosvar.configuration.command import Launch, command_line, group
@@ -24,6 +23,7 @@ from rosvar.configuration.derivation import Decisions, Derivation, Presence
 from rosvar.configuration.graph import VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
+from rosvar.configuration.sat import Sat
 from rosvar.configuration.view import Graph, Summary, Views
 from rosvar.diagnostics import Diagnostic, leaves_unknown
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
@@ -276,6 +276,7 @@ class Configurator:
             for feature in self.catalog
         }
         self._rows = {f.id: (f.id, f.variable, self._feature_states[f.id]) for f in self.catalog}
+        self._explaining: dict[int, tuple[Sat, list[int]]] = {}  # by component, made on need
         self._unread = {  # launch file id → what of its model rosvar could not read
             entry.id: [d for d in analysis.model(entry.path).diagnostics if leaves_unknown(d)]
             for entry in self.catalog.files
@@ -412,7 +413,6 @@ class Configurator:
 
     def _reason(self, earlier: Sequence[_Effective], entry: _Effective) -> str:
         """The earlier choices and the constraints that together rule ``entry`` out."""
-        manager = self.derivation.manager
         component = self.derivation.component_of[entry.variable]
         kept = [e for e in earlier if self.derivation.component_of[e.variable] == component]
         position = 0
@@ -422,15 +422,25 @@ class Configurator:
                 position += 1
             else:
                 kept = trial
-        cube = manager.true
-        for e in [*kept, entry]:
-            atom = manager.var(e.variable)
-            cube &= atom if e.value else ~atom
-        because = explain(self.model, cube)
+        because = self._because(component, [*kept, entry])
         text = f"{_show(entry.choice)} is impossible"
         if kept:
             text += " after " + ", ".join(_show(e.choice) for e in kept)
         return f"{text}: {'; '.join(because)}"
+
+    def _because(self, component: int, literals: Sequence[_Effective]) -> list[str]:
+        """The cross-tree constraints that rule ``literals`` (of ``component``) out: a
+        minimal set, found by SAT within bounded work, or an honest "not explained"."""
+        found = self._explaining.get(component)
+        if found is None:
+            found = self._explaining[component] = Sat.explaining(self.model, component)
+        sat, numbers = found
+        core = sat.core([sat.atom(e.variable, e.value) for e in literals])
+        if core is None:
+            return ["not explained (finding the constraints why took too long)"]
+        return [self.model.constraints[numbers[i]].text for i in core] or [
+            "the feature tree itself"
+        ]
 
     # -- the answer ---------------------------------------------------------------------
     def _answer(self, replay: _Replay) -> ConfigurationState:
