@@ -11,7 +11,7 @@ from configuration.test_derivation import FILES
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration import sat as sat_module
 from rosvar.configuration.sat import PATHS, Sat
-from rosvar.logic.bdd import conjoin
+from rosvar.logic.bdd import BDD, conjoin
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -102,7 +102,7 @@ def test_a_core_is_a_minimal_set_of_constraints_that_rules_literals_out(
         core = sat.core([sat.atom(v, value) for v, value in literals.items()])
         cube = manager.cube(literals)
 
-        def possible(chosen: list[int]) -> bool:
+        def possible(chosen: list[int], cube: BDD = cube, numbers: list[int] = numbers) -> bool:
             parts = [solver.tree, cube, *(solver.constraints[numbers[i]] for i in chosen)]
             return bool(conjoin(manager, parts) != manager.false)
 

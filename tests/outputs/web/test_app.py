@@ -8,13 +8,17 @@ included file, a node named after an arg follows the arg's value).
 from __future__ import annotations
 
 import json
+import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 from urllib.parse import urlsplit
 
+import pytest
+
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
 from outputs.web.test_overview import wired_configurator, wired_workspace
+from rosvar.outputs.web import api as api_module
 from rosvar.outputs.web.overview import SEPARATOR, Grouping, key_of, labels, packages
 
 if TYPE_CHECKING:
@@ -605,6 +609,57 @@ def test_what_stops_the_product_stays_in_view_until_it_is_gone(
         assert "invalid literal for int()" in status.inner_text()
         assert page.locator("#copy").is_disabled()
         assert page.locator("#command.fails").inner_text().startswith("roslaunch pkg t.launch")
+
+
+SLOW_S = 4.0
+
+
+def test_a_slow_choice_of_one_client_keeps_no_other_waiting(
+    page: Any, browser: Any, ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """issue 30.5: two clicks that took minutes froze every client. Here one client's choice
+    takes ``SLOW_S`` in the engine: meanwhile another client's page loads at once (its files
+    and the catalog need no engine), waits for its own steps no longer than the engine is
+    busy (with a budget shorter than that, it is told to wait and tries again), and both
+    pages end showing their own sessions' states."""
+    ws.launch("slow.launch", '  <node pkg="pkg" type="t" name="slow"/>')
+    ws.launch("quick.launch", '  <node pkg="pkg" type="t" name="quick"/>')
+    engine = configurator(ws)
+    original = engine.state
+
+    def state(choices: Any) -> Any:
+        if any(c.feature == "slow.launch" for c in choices) and not state.done:
+            state.done = True  # the first time only: a cold step of a large workspace
+            time.sleep(SLOW_S)
+        return original(choices)
+
+    state.done = False  # type: ignore[attr-defined]
+    monkeypatch.setattr(engine, "state", state)
+    monkeypatch.setattr(api_module, "ENGINE_WAIT", 1.0)
+    with running(engine) as live:
+        first = App(page, live)
+        other = browser.new_context(viewport={"width": 1400, "height": 850}).new_page()
+        first.reveal("slow.launch")
+        button = first.own_row("slow.launch").locator('.choose button[data-action="select"]')
+        arrived: dict[str, float] = {}
+        other.on("response", lambda r: arrived.setdefault(urlsplit(r.url).path, time.monotonic()))
+        started = time.monotonic()
+        button.click()  # answered in SLOW_S: not waited for here
+        second = App(other, live)  # the page, the catalog, then a session once the engine is free
+        assert arrived["/api/catalog"] - started < SLOW_S  # no engine needed: not kept waiting
+        assert arrived["/assets/js/app.js"] - started < SLOW_S
+        assert "Waiting for the server" in other.locator("#message").inner_text()
+        second.choose("quick.launch", "select")
+        answered = time.monotonic() - started
+        first.page.wait_for_function(
+            "() => window.rosvar.state.features['slow.launch'].state === 'selected'"
+        )
+        assert answered < SLOW_S + 5  # its own steps waited for the engine, no longer
+        assert first.state["features"]["quick.launch"]["state"] == "unselected"
+        assert second.state["features"]["slow.launch"]["state"] == "unselected"
+        assert second.state["features"]["quick.launch"]["state"] == "selected"
+        first.assert_shows_server_state()
+        second.assert_shows_server_state()
 
 
 def test_tabs_keep_their_own_sessions(page: Any, examples: Live) -> None:

@@ -4,7 +4,7 @@
 // while the previous one is still being answered is ignored (a double click is one choice);
 // the steps the page makes itself run one after another.
 
-import { ApiError, Client } from "./api.js";
+import { ApiError, Client, waiting } from "./api.js";
 import { Bar } from "./bar.js";
 import { DetailsPanel } from "./details.js";
 import { GraphView } from "./graph.js";
@@ -99,6 +99,8 @@ function act(call) {
   });
   return queue;
 }
+
+waiting.addEventListener("wait", () => bar.say("Waiting for the server: it is computing another client's step…"));
 
 function wireToolbars() {
   $("tree-filter").addEventListener("input", (event) => tree.filter(event.target.value));
