@@ -21,6 +21,7 @@ from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.web.api import Api
+from rosvar.outputs.web.entries import render
 from rosvar.workspace import discover
 
 
@@ -45,7 +46,7 @@ def main() -> int:
     parser.add_argument("--sessions", type=int, default=64, help="the store's capacity")
     options = parser.parse_args()
     analysis = Analysis(discover(options.paths))
-    engine = Configurator(analysis, extract(analysis, products=True))
+    engine = Configurator(analysis, extract(analysis, products=True), render=render)
     api = Api(engine, capacity=options.sessions)
     args = [arg_id for arg_id, _values in engine.catalog.args.items()]
     gc.collect()

@@ -15,6 +15,7 @@ import time
 
 from rosvar.analyses.query.evaluator import QueryEngine
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.documents.query import result_document
 from rosvar.workspace import discover
 
 CORPUS = "/work/shared/corpus"
@@ -60,7 +61,7 @@ def main() -> int:
             begun = time.perf_counter()
             results = engine.run(query)
             for result in results:
-                engine.to_json(result)
+                result_document(engine, result)
             samples.append((time.perf_counter() - begun) * 1000)
         p95 = percentile(samples, 0.95)
         worst = max(worst, p95)

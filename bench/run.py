@@ -333,6 +333,7 @@ def measure_web(job: Job) -> Metrics:
     from rosvar.configuration.engine import Configurator
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.outputs.web.delta import patch
+    from rosvar.outputs.web.entries import render
     from rosvar.outputs.web.server import make_server
     from rosvar.workspace import discover
 
@@ -345,7 +346,9 @@ def measure_web(job: Job) -> Metrics:
     server = None
     try:
         analysis = Analysis(discover(job.roots, ros_package_path=job.package_path))
-        server = make_server(Configurator(analysis, extract(analysis, products=True)), port=0)
+        server = make_server(
+            Configurator(analysis, extract(analysis, products=True), render=render), port=0
+        )
         threading.Thread(target=server.serve_forever, daemon=True).start()
         connection = http.client.HTTPConnection("127.0.0.1", server.server_address[1])
 
@@ -406,13 +409,15 @@ def measure_configure(job: Job) -> Metrics:
     A step is what a session does for one click: ``Configurator.state(choices + [one])``,
     the answer for the shorter list being cached. Each seeded sequence selects or deselects
     a random unselected feature (not an ``<other>`` value) until the product is complete.
-    ``to_json()`` of each state is timed apart (what the web server then serialises).
+    ``state_document`` of each state is timed apart (what the web server then serialises).
     """
 
     from rosvar.analyses.feature_model.extraction import extract
     from rosvar.configuration.choices import UserChoice
     from rosvar.configuration.engine import Configurator
     from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.outputs.documents.state import feature_document, state_document
+    from rosvar.outputs.web.entries import render
     from rosvar.workspace import discover
 
     if len(job.files) > CONFIGURE_MAX_FILES or not job.feature_model_built:
@@ -424,7 +429,7 @@ def measure_configure(job: Job) -> Metrics:
     try:
         analysis = Analysis(discover(job.roots, ros_package_path=job.package_path))
         started = time.perf_counter()
-        engine = Configurator(analysis, extract(analysis, products=True))
+        engine = Configurator(analysis, extract(analysis, products=True), render=render)
         built_ms = (time.perf_counter() - started) * 1000
         rng = random.Random(CONFIGURE_SEED)
         for _sequence in range(CONFIGURE_SEQUENCES):
@@ -434,9 +439,11 @@ def measure_configure(job: Job) -> Metrics:
                 state = engine.state(choices)
                 steps.append((time.perf_counter() - wall) * 1000)
                 wall = time.perf_counter()
-                state.to_json()
+                state_document(state)
                 documents.append((time.perf_counter() - wall) * 1000)
-                click = random_click(rng, {k: f.to_json() for k, f in state.features.items()})
+                click = random_click(
+                    rng, {k: feature_document(f) for k, f in state.features.items()}
+                )
                 if click is None:
                     break
                 choices.append(UserChoice.parse(*click))

@@ -13,10 +13,10 @@ import pytest
 
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import parse_xml_file
+from rosvar.ros.version import RosVersion
 from rosvar.workspace import discover
 from rosvar.workspace.executables import executables
 from rosvar.workspace.launch_files import LaunchFormat
-from rosvar.workspace.ros_version import RosVersion
 
 BENCH = Path(__file__).resolve().parent.parent / "bench" / "generate.py"
 _spec = importlib.util.spec_from_file_location("rosvar_bench_generate", BENCH)

@@ -21,6 +21,7 @@ import sys
 import tempfile
 from dataclasses import dataclass, field
 
+from rosvar.outputs.documents.interfaces import node_document
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 
@@ -407,7 +408,7 @@ def build(mirrors: str) -> dict[str, object]:
                 unreviewed = (node.package, node.executable) not in REVIEW
                 if unreviewed and (TEST_EXECUTABLE.search(node.executable) or not node.entries):
                     continue
-                document = node.to_json()
+                document = node_document(node)
                 review = REVIEW.get((node.package, node.executable))
                 if review is not None:
                     _reviewed(document, review, checkout)

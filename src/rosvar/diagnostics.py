@@ -47,14 +47,6 @@ class Diagnostic:
     def __str__(self) -> str:
         return f"{self.location}: {self.severity.value}: {self.message} [{self.code}]"
 
-    def to_json(self) -> dict[str, object]:
-        return {
-            "code": self.code,
-            "severity": self.severity.value,
-            "message": self.message,
-            **self.location.to_json(),
-        }
-
 
 READ_AS_ROSLAUNCH = frozenset(
     {"tag-unknown", "attribute-unknown", "node-name-illegal", "launch-nested-root"}

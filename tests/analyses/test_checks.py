@@ -12,6 +12,7 @@ from rosvar.analyses.checks import Check, check_model, check_models
 from rosvar.analyses.communication import resolved_graph
 from rosvar.diagnostics import Severity
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.documents.findings import finding_document
 from rosvar.ros1.resolve import Restriction, resolve
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
@@ -99,7 +100,7 @@ def test_findings_are_readable(ws: LaunchWorkspace) -> None:
         analysis.space, [analysis.model(file)], interfaces, analysis.workspace.confinement()
     )
     [mismatch] = [f for f in findings if f.check is Check.TYPE_MISMATCH]
-    document = mismatch.to_json(analysis.space)
+    document = finding_document(mismatch, analysis.space)
     assert document["condition"] == "wrong"
     assert document["example"] == {"system.launch:wrong": "true"}
     assert document["severity"] == "error"

@@ -11,6 +11,7 @@ import pytest
 
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.metrics import compute
+from rosvar.outputs.documents.metrics import metrics_document
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -68,7 +69,7 @@ def test_metrics_json(small: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
     document = json.loads(out)
     assert list(document) == KEYS
     analysis = small.analysis()
-    assert document == compute(analysis, extract(analysis)).to_json()
+    assert document == metrics_document(compute(analysis, extract(analysis)))
     # by hand: a-b clash on /cam when use_cam (conditional); A = ACG = 2 (use_cam, robot)
     assert (document["LF"], document["LC"], document["LC_U"], document["LC_A"]) == (2, 2, 0, 2)
     assert (document["A"], document["ACG"], document["AS"], document["IF"]) == (2, 2, 1, 1)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import os
 import time
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import pytest
@@ -92,7 +92,7 @@ def test_launch_files_are_the_manifests(system: str) -> None:
 
 @pytest.mark.parametrize("system", list(MANIFEST))
 def test_metrics_match_the_manifest_and_hold_together(system: str) -> None:
-    metrics = result(system).metrics.to_json()
+    metrics = asdict(result(system).metrics)
     assert list(metrics) == KEYS
     lf, a = MANIFEST[system]
     assert metrics["LF"] == lf

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import asdict
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -81,7 +82,7 @@ def test_argument_metrics_by_hand(ws: LaunchWorkspace) -> None:
     # AS_D: robot (frame has no default).                   AS_V: robot (r2 besides r1).
     # IF: in m, use_cam decides cam's if and, passed on, b_node's if (2); robot decides
     #     extra's if (1); in b, enable decides b_node's if (1): 4. IF_M: use_cam in m, 2.
-    assert metrics.to_json() == {
+    assert asdict(metrics) == {
         "LF": 2,
         "LV": 2,
         "LC": 0,
@@ -136,7 +137,7 @@ def test_a_file_in_both_kinds_of_conflict_is_unconditional(ws: LaunchWorkspace) 
 
 def test_metric_keys_and_invariants(ws: LaunchWorkspace) -> None:
     ws.launch("a.launch", '  <arg name="x" default="1"/>\n  <param name="x" value="$(arg x)"/>')
-    metrics = metrics_of(ws).to_json()
+    metrics = asdict(metrics_of(ws))
     assert list(metrics) == KEYS
     assert metrics["LV"] + metrics["LC"] == metrics["LF"] == 1
     assert (metrics["A"], metrics["ACG"], metrics["AS"], metrics["AS_D"]) == (1, 1, 1, 1)

@@ -12,6 +12,7 @@ from rosvar.configuration.engine import Configurator
 from rosvar.diagnostics import Location
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
+from rosvar.outputs.web.entries import render
 from rosvar.workspace.hints import load_hints
 from rosvar.workspace.interfaces.model import Entry, Interfaces, Role
 from rosvar.workspace.interfaces.overrides import apply_hints
@@ -79,7 +80,9 @@ def test_the_configure_graph_follows_the_when(ws: LaunchWorkspace) -> None:
     analysis = ws.analysis()
     model = extract(analysis, products=True)
     spelling = {f.file: f.file.rsplit("/", 1)[-1] for f in model.files}
-    engine = Configurator(analysis, model, spelling=spelling, interfaces=_interfaces(ws))
+    engine = Configurator(
+        analysis, model, spelling=spelling, interfaces=_interfaces(ws), render=render
+    )
     state = engine.state(choices("select a.launch"))
     shown = {t["name"]: (t["presence"], t["condition"]) for t in state.graph.topics}
     assert shown["/scan"] == ("undetermined", "use_laser")

@@ -26,6 +26,7 @@ from rosvar.diagnostics import Severity
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER
+from rosvar.outputs.web.entries import render
 from rosvar.ros1.resolve import Restriction, resolve
 from rosvar.workspace.hints import load_hints
 from rosvar.workspace.interfaces.extraction import extract_interfaces
@@ -185,7 +186,7 @@ def test_the_configure_graph_follows_the_parameter(ws: LaunchWorkspace) -> None:
     analysis, _model, _file, interfaces = _setup(ws)
     model = extract(analysis, products=True)
     spelling = {f.file: f.file.rsplit("/", 1)[-1] for f in model.files}
-    engine = Configurator(analysis, model, spelling=spelling, interfaces=interfaces)
+    engine = Configurator(analysis, model, spelling=spelling, interfaces=interfaces, render=render)
     unset = ("select a.launch", "set a.launch:set_imu=false")
 
     def imu(*words: str) -> str:

@@ -15,6 +15,7 @@ from rosvar.configuration.choices import UserChoice
 from rosvar.configuration.command import given
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.web.entries import render
 from rosvar.ros import names
 from rosvar.ros1.resolve import resolve
 from rosvar.workspace.interfaces.extraction import extract_interfaces
@@ -32,7 +33,7 @@ def configurator(
     model = extract(analysis, products=True)
     spelling = {os.path.realpath(f.file): os.path.basename(f.file) for f in model.files}
     found = extract_interfaces(analysis.workspace.packages.values()) if interfaces else None
-    return Configurator(analysis, model, env, spelling, interfaces=found)
+    return Configurator(analysis, model, env, spelling, interfaces=found, render=render)
 
 
 def choices(*words: str) -> list[UserChoice]:

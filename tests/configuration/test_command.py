@@ -7,8 +7,8 @@ from typing import TYPE_CHECKING
 from configuration.helpers import canonical, choices, configurator, product, run
 from rosvar.configuration.command import Launch, given, group
 from rosvar.configuration.engine import ConfigurationState
+from rosvar.ros.version import RosVersion
 from rosvar.ros1.resolve import resolve
-from rosvar.workspace.ros_version import RosVersion
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace

@@ -15,6 +15,8 @@ from rosvar.configuration.choices import ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.sat import Sat
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.documents.state import state_document
+from rosvar.outputs.web.entries import render
 from rosvar.workspace import discover
 
 if TYPE_CHECKING:
@@ -341,7 +343,7 @@ def test_what_rosvar_could_not_read_is_shown_while_its_file_is_in(ws: LaunchWork
             ("include-unknown", 2),
         ]
     finished = engine.state(chosen + engine.completion(chosen))
-    assert finished.complete and finished.to_json()["unknown"][0]["code"] == "package-unknown"
+    assert finished.complete and state_document(finished)["unknown"][0]["code"] == "package-unknown"
     assert run(engine, "select b.launch", "deselect a.launch").unknown == []
 
 
@@ -351,7 +353,7 @@ def test_a_finished_product_says_whether_it_launches(ws: LaunchWorkspace) -> Non
     assert run(engine, "set t.launch:rate=abc").launches is None  # not finished
     chosen = choices("set t.launch:rate=abc", "set t.launch:fast=true")
     failing = engine.state(chosen + engine.completion(chosen))
-    assert failing.launches is False and failing.to_json()["launches"] is False
+    assert failing.launches is False and state_document(failing)["launches"] is False
     chosen = choices("set t.launch:rate=3", "set t.launch:fast=true")
     assert engine.state(chosen + engine.completion(chosen)).launches is True
 
@@ -377,7 +379,7 @@ def test_two_ordinary_clicks_on_husky_are_explained_at_once() -> None:
     if not (corpus / "husky").is_dir():
         pytest.skip(f"corpus not found at {corpus}")
     analysis = Analysis(discover([corpus / "husky"], deps=[corpus / "_external"]))
-    engine = Configurator(analysis, extract(analysis, products=True))
+    engine = Configurator(analysis, extract(analysis, products=True), render=render)
     config = "husky_manipulation/husky_dual_gen3_moveit_config/launch/"
     [gazebo, planning] = [
         next(f.id for f in engine.catalog.files if f.path.endswith(config + name))

@@ -19,6 +19,8 @@ from configuration.helpers import (
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.documents.state import state_document
+from rosvar.outputs.web.entries import render
 from rosvar.workspace import discover
 
 if TYPE_CHECKING:
@@ -113,7 +115,7 @@ def test_services_and_actions_have_servers_and_clients_edge_by_edge(ws: LaunchWo
         ("present", [], [ids["/ns/server"]])
     ]
     schema = json.loads((REPO / "docs" / "schema" / "configure.schema.json").read_text())
-    pytest.importorskip("jsonschema").validate(state.to_json(), schema)
+    pytest.importorskip("jsonschema").validate(state_document(state), schema)
 
 
 def test_conditional_remaps_on_independent_args_are_parts_not_variants(
@@ -130,7 +132,7 @@ def test_conditional_remaps_on_independent_args_are_parts_not_variants(
     engine = configurator(ws)
     state = run(engine, "select a.launch")
     schema = json.loads((REPO / "docs" / "schema" / "configure.schema.json").read_text())
-    pytest.importorskip("jsonschema").validate(state.to_json(), schema)
+    pytest.importorskip("jsonschema").validate(state_document(state), schema)
     [node] = state.graph.nodes
     assert node["remaps"] == [] and node["env"] == []
     assert {(u["kind"], u["condition"]) for u in node["undetermined"]} == {
@@ -169,7 +171,7 @@ def _same_as_resolve(
 
 def test_complete_products_of_the_example_equal_resolve() -> None:
     analysis = Analysis(discover([REPO / "examples"], ros_package_path=""))
-    engine = Configurator(analysis, extract(analysis, products=True))
+    engine = Configurator(analysis, extract(analysis, products=True), render=render)
     _same_as_resolve(engine, analysis, seed=1, products=12, loading=8)
 
 
@@ -177,7 +179,7 @@ def test_complete_products_of_lizi_equal_resolve() -> None:
     if not (CORPUS / "lizi").is_dir():
         pytest.skip(f"corpus not found at {CORPUS}")
     analysis = Analysis(discover([CORPUS / "lizi"], ros_package_path=str(CORPUS / "_external")))
-    engine = Configurator(analysis, extract(analysis, products=True))
+    engine = Configurator(analysis, extract(analysis, products=True), render=render)
     # most of Lizi's products fail in roslaunch (packages missing from the corpus, a
     # realsense include with unused args): they must fail for the engine too
     _same_as_resolve(engine, analysis, seed=4, products=6, loading=1)

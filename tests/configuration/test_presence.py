@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 
 from configuration.helpers import configurator
 from rosvar.configuration.choices import UserChoice
+from rosvar.outputs.documents.state import conflict_document, graph_document
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -48,9 +49,9 @@ def test_carried_presences_equal_presences_judged_at_once(ws: LaunchWorkspace) -
         while True:
             state = engine.state(chosen)
             at_once = configurator(ws).state(chosen)
-            assert state.graph.to_json() == at_once.graph.to_json()
-            assert [c.to_json() for c in state.conflicts] == [
-                c.to_json() for c in at_once.conflicts
+            assert graph_document(state.graph) == graph_document(at_once.graph)
+            assert [conflict_document(c) for c in state.conflicts] == [
+                conflict_document(c) for c in at_once.conflicts
             ]
             open_ = [f for f in engine.catalog if state.features[f.id].state == "unselected"]
             known = [f for f in open_ if f.value != "<other>"]

@@ -36,6 +36,7 @@ from rosvar.configuration.sat import Sat
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.inputs import OTHER, UNSET, Input
+from rosvar.outputs.web.entries import render
 from rosvar.workspace import discover
 
 CORPUS = Path(__file__).resolve().parents[3] / "shared" / "corpus"
@@ -52,7 +53,8 @@ def system(request: pytest.FixtureRequest) -> tuple[str, Analysis, Configurator]
     if not root.is_dir() or not (CORPUS / "_external").is_dir():
         pytest.skip(f"corpus not found at {CORPUS}")
     analysis = Analysis(discover([root], deps=[CORPUS / "_external"]))
-    return request.param, analysis, Configurator(analysis, extract(analysis, products=True))
+    engine = Configurator(analysis, extract(analysis, products=True), render=render)
+    return request.param, analysis, engine
 
 
 def test_random_walks_show_no_placeholder_no_false_conflict_and_end_in_a_command(

@@ -23,6 +23,7 @@ from rosvar.configuration.choices import UserChoice
 from rosvar.configuration.command import given
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.web.entries import render
 from rosvar.workspace import discover
 
 from .harness import (
@@ -68,7 +69,9 @@ def test_files_that_include_one_file_are_not_a_product_roslaunch_refuses_them() 
     [run] = system_runs("husky")
     roots = [os.path.realpath(r) for r in run.roots]
     analysis = Analysis(discover(roots, ros_package_path=""))
-    engine = Configurator(analysis, extract(analysis, files=run.files(), products=True))
+    engine = Configurator(
+        analysis, extract(analysis, files=run.files(), products=True), render=render
+    )
     gazebo = os.path.join(roots[0], "husky", "husky_gazebo", "launch")
     [playpen, empty] = [
         next(f for f in engine.catalog.files if f.path == os.path.join(gazebo, name))
@@ -102,7 +105,9 @@ def compare_products(
         analysis = Analysis(
             discover(roots, ros_package_path=""), env_values={k: [v] for k, v in env.items()}
         )
-        engine = Configurator(analysis, extract(analysis, files=run.files(), products=True), env)
+        engine = Configurator(
+            analysis, extract(analysis, files=run.files(), products=True), env, render=render
+        )
         rng = random.Random(f"{SEED}:{run.name}")
         cases = []
         for state in products(engine, rng):

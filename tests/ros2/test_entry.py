@@ -7,8 +7,8 @@ from pathlib import Path
 
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.inputs import OTHER, UNSET
+from rosvar.ros.version import RosVersion
 from rosvar.workspace import discover
-from rosvar.workspace.ros_version import RosVersion
 
 MANIFEST = """<package format="3"><name>p</name>
 <export><build_type>ament_cmake</build_type></export></package>"""

@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
+from rosvar.ros.version import RosVersion
 from rosvar.workspace.launch_files import LaunchFormat, format_of, launch_format
-from rosvar.workspace.ros_version import RosVersion
 
 ROS1, ROS2 = RosVersion.ROS1, RosVersion.ROS2
 XML, YAML, PYTHON = LaunchFormat.XML, LaunchFormat.YAML, LaunchFormat.PYTHON

@@ -8,9 +8,9 @@ from pathlib import Path
 import pytest
 
 from rosvar.diagnostics import Severity
+from rosvar.ros.version import RosVersion
 from rosvar.workspace import Package, Workspace, discover
 from rosvar.workspace.launch_files import LaunchFormat
-from rosvar.workspace.ros_version import RosVersion
 
 CORPUS = Path(__file__).resolve().parents[2] / ".." / "shared" / "corpus"
 LAUNCH = "<launch>\n  <arg name='a'/>\n</launch>\n"

@@ -6,7 +6,8 @@ import pytest
 
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import parse_xml_bytes
-from rosvar.workspace.ros_version import RosVersion, build_tool_version, majority, package_version
+from rosvar.ros.version import RosVersion
+from rosvar.workspace.ros_version import build_tool_version, majority, package_version
 
 
 def manifest(body: str) -> Entity:

@@ -4,8 +4,8 @@ Each finding holds a presence condition over its entry file's args, computed on 
 variational model: "two publishers" is the disjunction, over pairs of different nodes
 publishing one resolved name, of both edges' conditions; "nobody publishes" is a
 subscription's condition and the negation of every publication's of that name. No
-configuration is enumerated; an example configuration is read off the condition
-(:func:`simplest_trigger`).
+configuration is enumerated; the documents read an example configuration off the
+condition (``simplest_trigger``).
 """
 
 from __future__ import annotations
@@ -25,7 +25,6 @@ from rosvar.analyses.communication import (
     model_edges,
 )
 from rosvar.analyses.conflicts import Occurrence, clashes, node_occurrences
-from rosvar.analyses.feature_model.operations import simplest_trigger
 from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.when import params_read
 from rosvar.diagnostics import Location, Severity
@@ -34,7 +33,6 @@ from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, YamlDecl
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
-from rosvar.ros1.tags.rosparam import load_rosparam
 from rosvar.workspace.interfaces.model import Interfaces, Role
 from rosvar.workspace.paths import real_path
 
@@ -83,18 +81,6 @@ class Finding:
     file: str
     condition: BDD
     locations: tuple[Location, ...]  # the first is where the problem is reported
-
-    def to_json(self, space: ConditionSpace) -> dict[str, object]:
-        return {
-            "check": str(self.check),
-            "severity": self.severity.value,
-            "name": self.name,
-            "message": self.message,
-            "file": self.file,
-            "condition": space.describe(self.condition),
-            "example": simplest_trigger(space, self.condition),
-            "locations": [location.to_json() for location in self.locations],
-        }
 
 
 def check_models(
@@ -404,9 +390,7 @@ def _yaml_names(param: YamlDecl, confinement: Confinement) -> list[str]:
     if len(known) == len(parts):
         scope_ns, command, ns, file, name, text = known
         try:
-            pairs = load_rosparam(
-                str(command), ns, file, name, str(text), str(scope_ns), confinement
-            )
+            pairs = param.load(str(command), ns, file, name, str(text), str(scope_ns), confinement)
         except ValueError:
             return []
         return [names.canonicalize_name(key) for key, _ in pairs]

@@ -12,7 +12,7 @@ AS_V (AS with values inferred besides the default), IF (times ACG args decide an
 from __future__ import annotations
 
 from collections import Counter
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass
 
 from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
 from rosvar.frontends.entity import Entity
@@ -39,9 +39,6 @@ class Metrics:
     AS_V: int
     IF: int
     IF_M: int
-
-    def to_json(self) -> dict[str, int]:
-        return asdict(self)
 
 
 def command_line_args(root: Entity) -> set[str]:

@@ -49,9 +49,6 @@ class UserChoice:
             raise ChoiceError(f"set expects FILE:ARG=VALUE, got {text!r}")
         return UserChoice(Action.SET, feature, value)
 
-    def to_json(self) -> dict[str, object]:
-        return {"action": self.action, "feature": self.feature, "value": self.value}
-
 
 @dataclass(frozen=True)
 class Refusal:
@@ -59,6 +56,3 @@ class Refusal:
 
     choice: UserChoice
     reason: str
-
-    def to_json(self) -> dict[str, object]:
-        return {"choice": self.choice.to_json(), "reason": self.reason}

@@ -16,8 +16,8 @@ import shlex
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
+from rosvar.ros.version import RosVersion
 from rosvar.workspace import Workspace
-from rosvar.workspace.ros_version import RosVersion
 
 
 @dataclass(frozen=True)

@@ -66,14 +66,6 @@ class ConflictState:
     status: Certainty
     condition: str | None
 
-    def to_json(self) -> dict[str, object]:
-        return {
-            "files": list(self.files),
-            "names": list(self.names),
-            "status": self.status,
-            "condition": self.condition,
-        }
-
 
 class Conflicts:
     """Every clashing pair of the model, judged against ``tree ∧ requires``.

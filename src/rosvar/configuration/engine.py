@@ -20,7 +20,7 @@ from rosvar.configuration.choices import Action, ChoiceError, Refusal, UserChoic
 from rosvar.configuration.command import Launch, command_line, group
 from rosvar.configuration.conflicts import Certainty, Conflicts, ConflictState
 from rosvar.configuration.derivation import Decisions, Derivation, Presence
-from rosvar.configuration.graph import VariationalGraph
+from rosvar.configuration.graph import Render, VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.sat import Sat
@@ -40,7 +40,6 @@ many as make this many feature states and entries in all, at least ``MIN_CACHED_
 fixed count of steps would hold memory in proportion to the workspace's size, without bound
 on large ones."""
 MIN_CACHED_STEPS = 64
-EXACT_INTEGER = 2**53  # larger counts go to JSON as strings
 
 
 class Selection(StrEnum):
@@ -51,10 +50,11 @@ class Selection(StrEnum):
     UNSELECTED = "unselected"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class FeatureState:
     """One feature's state; the engine hands out one object per feature and state, so
-    states share them and an unchanged feature is the same object (and JSON dict)."""
+    states share them and an unchanged feature is the same object (compared, and its
+    document kept, by identity)."""
 
     kind: FeatureKind
     file: str
@@ -65,25 +65,6 @@ class FeatureState:
     parent: str | None
     state: Selection
     derived: bool
-
-    def to_json(self) -> dict[str, object]:
-        return self._document
-
-    @cached_property
-    def _document(self) -> dict[str, object]:
-        document: dict[str, object] = {
-            "kind": self.kind,
-            "file": self.file,
-            "package": self.package,
-            "arg": self.arg,
-            "value": self.value,
-            "parent": self.parent,
-            "state": self.state,
-            "derived": self.derived,
-        }
-        if self.doc:  # on the few args that have one
-            document["doc"] = self.doc
-        return document
 
 
 _Row = tuple[str, str, dict[tuple[bool | None, bool], FeatureState]]
@@ -135,24 +116,6 @@ class ConfigurationState:
         """Valid configurations remaining (counted on first use)."""
         return self.counter()
 
-    def to_json(self) -> dict[str, object]:
-        count = self.configurations
-        return {
-            "features": {k: v.to_json() for k, v in self.features.items()},
-            "conflicts": [c.to_json() for c in self.conflicts],
-            "graph": self.graph.to_json(),
-            "complete": self.complete,
-            "command": self.command,
-            "refused": [r.to_json() for r in self.refused],
-            "choices": [c.to_json() for c in self.choices],
-            "configurations": count if count <= EXACT_INTEGER else str(count),
-            "unselected": self.unselected,
-            "launched": [launch.spelled for group in self.commands for launch in group],
-            "untyped": self.untyped,
-            "launches": self.launches,
-            "unknown": [d.to_json() for d in self.unknown],
-        }
-
 
 @dataclass(frozen=True)
 class _Effective:
@@ -187,13 +150,16 @@ class Configurator:
         spelling: Mapping[str, str] | None = None,
         progress: Progress | None = None,
         interfaces: Interfaces | None = None,
+        *,
+        render: Render,
     ) -> None:
         """``model`` from ``extract(analysis, products=True)``; ``progress``: told how far
         the build is (a large workspace takes a while); ``interfaces`` wire the nodes to
-        their topics."""
+        their topics; ``render``: the graph's entries as the presentation shows them
+        (``rosvar.outputs.web.entries.render``)."""
         if not model.products:
             raise ValueError("the configurator needs extract(..., products=True)")
-        self._build(analysis, model, env, spelling, progress or _silent, interfaces)
+        self._build(analysis, model, env, spelling, progress or _silent, interfaces, render)
 
     @collector_paused()  # a long-lived heap: left young, the collector rescanned it each step
     def _build(
@@ -204,6 +170,7 @@ class Configurator:
         spelling: Mapping[str, str] | None,
         progress: Progress,
         interfaces: Interfaces | None,
+        render: Render,
     ) -> None:
         self.analysis = analysis
         self.model = model
@@ -238,6 +205,7 @@ class Configurator:
             self.derivation,
             self.conflicts,
             cached,
+            render,
         )
         self._others = [
             (arg_id, feature.variable)
@@ -339,7 +307,9 @@ class Configurator:
         if entry.arg is not None:  # a typed text: refused where every product left fails by it
             stops = self.views.stops(after, _texts([*kept, entry]), entry.arg)
             if stops:
-                because = "; ".join(f"{f.location}: {f.message} [{f.code}]" for f in stops)
+                because = "; ".join(
+                    f"{f.error.location}: {f.error.message} [{f.error.code}]" for f in stops
+                )
                 reason = f"{_show(choice)} is impossible: roslaunch would stop at {because}"
                 return replace(replay, refused=(*replay.refused, Refusal(choice, reason)))
         return _Replay(accepted, replay.refused, (*kept, entry), after)

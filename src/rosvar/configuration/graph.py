@@ -15,12 +15,10 @@ import os
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
-from typing import cast
+from typing import Protocol, cast
 
 from rosvar.analyses.communication import (
     CHANNEL,
-    JSON_SIDES,
-    SIDES,
     Channel,
     LaunchedNode,
     entry_names,
@@ -29,9 +27,7 @@ from rosvar.analyses.communication import (
     node_fields,
 )
 from rosvar.analyses.feature_model.model import FeatureModel, launched_conditions
-from rosvar.analyses.json_values import json_value
 from rosvar.analyses.param_values import ParamValues
-from rosvar.configuration.derivation import Presence
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
 from rosvar.files import Confinement
@@ -58,39 +54,13 @@ from rosvar.ros1.resolve import (
     test_fields,
     typed_node,
 )
-from rosvar.ros2.conventions.namespaces import full_name, make_absolute, prefix_namespace, unnamed
-from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, typed
-from rosvar.ros2.resolve import parameter_file
+from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
 Fields = dict[str, object]
+"""An entry of the graph as the state document shows it."""
 Shown = tuple[str, str | None]
 """A condition's presence at one step, and its readable form while undetermined."""
-Render = Callable[["Values", Sequence[Shown]], list[Fields]]
-"""An element's fields for concrete values and the presence of each of its parts."""
-
-
-@dataclass(frozen=True)
-class Failure:
-    """Where roslaunch stops loading an element: in one of its parts (its index), or in the
-    element itself (``part`` None). A record, not the exception: one kept would hold the
-    frames it was raised in, and the diagrams they reach."""
-
-    part: int | None
-    code: str
-    message: str
-    location: Location
-
-    @classmethod
-    def of(cls, part: int | None, error: ResolutionError) -> Failure:
-        return cls(part, error.code, error.message, error.location)
-
-    def to_json(self) -> Fields:
-        return {"code": self.code, "message": self.message, **self.location.to_json()}
-
-
-Check = Callable[["Values"], list[Failure]]
-"""Where an element's strings, once every input it reads has one, make roslaunch stop."""
 
 
 class Values:
@@ -161,6 +131,192 @@ NAMED: dict[Channel, ElementKind] = {
 """The element kind of each channel's names: those with ``nodes`` using them."""
 
 
+@dataclass(frozen=True, slots=True)
+class NodeContent:
+    """A node variant: its fields' raw values, and its remaps, environment settings and
+    (ROS 2) parameters, each with the part it depends on."""
+
+    raw: Mapping[str, Raw | None]
+    remaps: list[Setting]
+    env: list[Setting]
+    parameters: list[Setting]
+    node: NodeDecl
+
+    def failures(self, values: Values) -> list[Failure]:
+        """Where a ROS 1 node variant's strings make roslaunch stop, as ``rosvar resolve``
+        loads it: its fields, and each remap and environment setting (in its part, if any)."""
+        if self.node.ros2:
+            return []
+        where = self.node.location
+        found: list[Failure] = []
+        if values.knows(self.raw.values()):
+            try:
+                text = {k: values.strict(v, where, f"<node> {k}") for k, v in self.raw.items()}
+                typed_node(text, where)
+                if self.node.is_test:
+                    test_fields(text, where)
+            except ResolutionError as error:
+                found.append(Failure.of(None, error))
+        settings = [*((r, "remap") for r in self.remaps), *((e, "env") for e in self.env)]
+        for (first, second, part), label in settings:
+            if not values.knows((first, second)):
+                continue
+            try:
+                pair = (values.strict(first, where, label), values.strict(second, where, label))
+                if label == "remap":
+                    check_remap(*pair, where)
+            except ResolutionError as error:
+                found.append(Failure.of(part, error))
+        return found
+
+
+@dataclass(frozen=True, slots=True)
+class ParamContent:
+    """A ``<param>`` variant: its name and value (a deferred one converted once known)."""
+
+    name: object
+    value: object
+    location: Location
+    confinement: Confinement  # the files its conversion may read
+
+    @property
+    def raw(self) -> object:
+        """Its value's string, or the term of it."""
+        return self.value.raw if isinstance(self.value, DeferredValue) else self.value
+
+    def loaded(self, values: Values) -> object:
+        """The value roslaunch loads with ``values`` (the same conversion as ``rosvar
+        resolve``'s), or :class:`ResolutionError` where it stops (or a string is unknown)."""
+        value, where = self.value, self.location
+        what = f"param {values.text(cast(Raw, self.name))}"
+        if isinstance(value, DeferredValue):
+            text = values.strict(value.raw, where, what) or ""
+            return deferred_value(value, text, where, self.confinement)
+        if is_term(value):
+            return values.strict(cast(Raw, value), where, what)
+        return value
+
+    def failures(self, values: Values) -> list[Failure]:
+        if not values.knows([cast(Raw, self.name), cast(Raw, self.raw)]):
+            return []
+        try:
+            values.strict(cast(Raw, self.name), self.location, "param name")
+            self.loaded(values)
+        except ResolutionError as error:
+            return [Failure.of(None, error)]
+        return []
+
+
+@dataclass(frozen=True, slots=True)
+class YamlContent:
+    """A ``<rosparam>`` with terms: loaded (by its dialect's ``load``) once they are known."""
+
+    param: YamlDecl
+    confinement: Confinement
+
+    @property
+    def raws(self) -> tuple[Raw | None, ...]:
+        param = self.param
+        return (param.scope_ns, param.command, param.ns, param.file, param.param, param.text)
+
+    def pairs(self, values: Values) -> list[tuple[str, object]]:
+        """The params roslaunch sets with ``values`` (``rosvar resolve``'s load), or
+        :class:`ResolutionError` where it stops (or a string is unknown)."""
+        where = self.param.location
+        scope_ns, command, ns, file, name, body = (
+            values.strict(raw, where, "<rosparam>") for raw in self.raws
+        )
+        texts = (str(scope_ns), str(command), ns, file, name, body or "")
+        return rosparam_pairs(self.param, texts, self.confinement)
+
+    def failures(self, values: Values) -> list[Failure]:
+        if not values.knows(self.raws):
+            return []
+        try:
+            self.pairs(values)
+        except ResolutionError as error:
+            return [Failure.of(None, error)]
+        return []
+
+
+@dataclass(frozen=True, slots=True)
+class TopicContent:
+    """A topic named from a file's args: the namespace, name and remap target of its first
+    use."""
+
+    raws: tuple[Raw | None, Raw | None, Raw]
+
+
+@dataclass(frozen=True, slots=True)
+class ChannelContent:
+    """A topic, service or action known by name, with its nodes' uses (its parts, in
+    order)."""
+
+    channel: Channel
+    name: str
+    edges: Sequence[Edge]
+
+
+@dataclass(frozen=True, slots=True)
+class NamedContent:
+    """A topic known by name alone (no interfaces to tell its nodes' uses)."""
+
+    name: str
+
+
+@dataclass(frozen=True, slots=True)
+class ErrorContent:
+    """Where roslaunch would stop, and why."""
+
+    code: str
+    message: str
+    location: Location
+
+
+@dataclass(frozen=True, slots=True)
+class Failure:
+    """Where the strings typed for ``<other>`` values make roslaunch stop loading an element:
+    in one of its parts (its index), or in the element itself (``part`` None). A record,
+    not the exception: one kept would hold the frames it was raised in, and the diagrams
+    they reach."""
+
+    part: int | None
+    error: ErrorContent
+
+    @classmethod
+    def of(cls, part: int | None, error: ResolutionError) -> Failure:
+        return cls(part, ErrorContent(error.code, error.message, error.location))
+
+
+Content = (
+    NodeContent
+    | ParamContent
+    | YamlContent
+    | TopicContent
+    | ChannelContent
+    | NamedContent
+    | ErrorContent
+)
+"""What an element shows, in raw values and conditions; presentation renders it."""
+
+
+def failures(content: Content, values: Values) -> list[Failure]:
+    """Where ``content`` fails to load with ``values`` (every string it reads known, else
+    not yet): the contents roslaunch converts or checks say so; the others cannot fail."""
+    if isinstance(content, NodeContent | ParamContent | YamlContent):
+        return content.failures(values)
+    return []
+
+
+class Render(Protocol):
+    """An element's entries for concrete ``values`` and the presence of each of its parts
+    (several for a YAML load): the presentation's, given to the engine."""
+
+    def __call__(
+        self, content: Content, values: Values, parts: Sequence[Shown]
+    ) -> list[Fields]: ...
+
+
 @dataclass
 class Element:
     """One variant of a node, param, topic or error, with its presence condition."""
@@ -170,15 +326,10 @@ class Element:
     entry: str  # the entry launch file (path) whose model holds it
     condition: BDD  # analysis manager, fixed atoms substituted
     bounds: Bounds  # solver manager
-    render: Render  # fields for one set of concrete values (several for a YAML load)
+    content: Content  # what it shows, in raw values: rendered for each set of concrete ones
     inputs: frozenset[Input] = frozenset()  # inputs its fields still need
-    check: Check | None = None  # where those inputs' strings make roslaunch stop
     nodes: list[str] = field(default_factory=list)  # names: the node variants using it
     parts: tuple[Part, ...] = ()  # nodes: their conditional remaps and environment settings
-
-    def fields(self, values: Values, parts: Sequence[Shown]) -> list[Fields]:
-        """Its fields, given the presence of each of its ``parts``."""
-        return self.render(values, parts)
 
 
 class VariationalGraph:
@@ -203,7 +354,7 @@ class VariationalGraph:
         self.interfaces = interfaces
         self._topics: dict[tuple[str, str], _Topic] = {}
         self._shadows: dict[BDD, BDD] = {}
-        self._edges: dict[tuple[Channel, str], list[_Edge]] = {}  # a static name → its uses
+        self._edges: dict[tuple[Channel, str], list[Edge]] = {}  # a static name → its uses
         self._served: dict[tuple[Channel, str], tuple[list[str], BDD]] = {}  # services, actions
         self.params = ParamValues(  # the nodes' parameters, for hints' when:
             self.space, ((self.launched[f.file], analysis.model(f.file)) for f in model.files)
@@ -219,10 +370,10 @@ class VariationalGraph:
         for (entry, name), (nodes, condition, raws) in sorted(self._topics.items()):
             if not entry:
                 edges = self._edges.get((Channel.TOPICS, name), [])
-                render = (
-                    _static({"name": name})
+                content: Content = (
+                    NamedContent(name)
                     if interfaces is None
-                    else _edges_renderer(Channel.TOPICS, name, edges)
+                    else ChannelContent(Channel.TOPICS, name, edges)
                 )
                 parts = tuple(Part(when, bounds) for _n, _r, _t, when, bounds in edges)
                 self._add(
@@ -230,7 +381,7 @@ class VariationalGraph:
                     f"topic:{name}",
                     "",
                     condition,
-                    render,
+                    content,
                     nodes=nodes,
                     parts=parts,
                 )
@@ -240,7 +391,7 @@ class VariationalGraph:
                 f"topic:{file_ids[entry]}|{name}",
                 entry,
                 condition,
-                _topic_renderer(raws),
+                TopicContent(raws),
                 _needs(*raws),
                 nodes=nodes,
             )
@@ -251,7 +402,7 @@ class VariationalGraph:
                 f"{NAMED[channel]}:{name}",
                 "",
                 condition,
-                _edges_renderer(channel, name, edges),
+                ChannelContent(channel, name, edges),
                 nodes=nodes,
                 parts=tuple(Part(when, bounds) for _n, _r, _t, when, bounds in edges),
             )
@@ -265,11 +416,10 @@ class VariationalGraph:
         id_: str | Callable[[], str],
         entry: str,
         condition: BDD,
-        render: Render,
+        content: Content,
         inputs: Iterable[Input] = (),
         nodes: list[str] | None = None,
         parts: tuple[Part, ...] = (),
-        check: Check | None = None,
     ) -> Element | None:
         """The element, unless no configuration has it; ``id_`` (or made by it) is only
         taken by an element added, so the variants of one place are numbered 1, 2, ..."""
@@ -282,9 +432,8 @@ class VariationalGraph:
             entry,
             fixed,
             self.lowering.bounds(condition),
-            render,
+            content,
             frozenset(inputs),
-            check if inputs else None,
             nodes or [],
             parts,
         )
@@ -314,26 +463,24 @@ class VariationalGraph:
             factors = (launched, fix(param.condition))
             if isinstance(param, ParamDecl):
                 for variant, (name, value) in self._variants(factors, [param.name, param.value]):
-                    loaded = _ParamValue(name, value, param.location, self.confinement)
                     self._add(
                         ElementKind.PARAM,
                         numbered(param.location),
                         model.file,
                         variant,
-                        loaded.render,
-                        _needs(name, loaded.raw),
-                        check=loaded.check,
+                        ParamContent(name, value, param.location, self.confinement),
+                        _needs(name, value.raw if isinstance(value, DeferredValue) else value),
                     )
             else:
-                loads = _RosparamLoad(param, self.confinement)
                 self._add(
                     ElementKind.PARAM,
                     numbered(param.location),
                     model.file,
                     conjunction(factors),
-                    loads.render,
-                    _needs(*loads.raws),
-                    check=loads.check,
+                    YamlContent(param, self.confinement),
+                    _needs(
+                        param.scope_ns, param.command, param.ns, param.file, param.param, param.text
+                    ),
                 )
         for include in model.includes:
             if not include.resolved:  # roslaunch stops where it cannot read the file
@@ -344,13 +491,7 @@ class VariationalGraph:
                     numbered(include.location),
                     model.file,
                     conjunction((launched, fix(include.condition))),
-                    _static(
-                        {
-                            "code": "include-unknown",
-                            "message": message,
-                            **include.location.to_json(),
-                        }
-                    ),
+                    ErrorContent("include-unknown", message, include.location),
                 )
         for error in model.errors:
             self._add(
@@ -358,7 +499,7 @@ class VariationalGraph:
                 numbered(error.location),
                 model.file,
                 conjunction((launched, fix(error.condition))),
-                _static({"code": error.code, "message": error.message, **error.location.to_json()}),
+                ErrorContent(error.code, error.message, error.location),
             )
 
     def _add_node(
@@ -382,13 +523,12 @@ class VariationalGraph:
                 new_id,
                 model.file,
                 condition,
-                _node_renderer(raw, remaps, env, parameters, node),
+                NodeContent(raw, remaps, env, parameters, node),
                 _needs(
                     *raw.values(),
                     *(p for pair in remaps + env + parameters for p in pair[:2]),
                 ),
                 parts=tuple(parts),
-                check=None if node.ros2 else _node_check(raw, remaps, env, node),
             )
             if element is not None and not node.is_test:
                 self._topic_uses(element, raw, remaps)
@@ -445,10 +585,10 @@ class VariationalGraph:
 
     def _parted(
         self, condition: BDD, settings: list[tuple[BDD, Raw, Raw]], parts: list[Part]
-    ) -> list[_Setting]:
+    ) -> list[Setting]:
         """The settings a node variant of ``condition`` (fixed) may have, each with the index of
         its part in ``parts`` (added) or None when the variant always has it."""
-        kept: list[_Setting] = []
+        kept: list[Setting] = []
         for own, first, second in settings:
             both = self.lowering.conjunction((condition, self.lowering.fix(own)))
             if both == condition:
@@ -461,7 +601,7 @@ class VariationalGraph:
         return kept
 
     def _topic_uses(
-        self, element: Element, raw: Mapping[str, Raw | None], remaps: list[_Setting]
+        self, element: Element, raw: Mapping[str, Raw | None], remaps: list[Setting]
     ) -> None:
         symbolic = Values({}, None)
         namespace, pushed = raw.get("namespace"), raw.get("ros_namespace")
@@ -473,7 +613,7 @@ class VariationalGraph:
         for _source, target, part in remaps:
             used = element.condition if part is None else element.parts[part].condition
             raws = (namespace, raw.get("name"), target)
-            topic = _topic_name(symbolic, *raws)
+            topic = topic_name(symbolic, *raws)
             # a name that reads args is the entry file's own: another file's ⟨scan⟩ is
             # another arg, and its string is known only with that file's choices
             key = (element.entry if _needs(*raws) else "", topic)
@@ -534,7 +674,7 @@ _Topic = tuple[list[str], BDD, tuple[Raw | None, Raw | None, Raw]]
 target it was named from (the first use's)."""
 
 
-def _topic_name(values: Values, namespace: Raw | None, name: Raw | None, target: Raw) -> str:
+def topic_name(values: Values, namespace: Raw | None, name: Raw | None, target: Raw) -> str:
     """The topic a node remaps to, resolved in its namespace (a private name in its own)."""
     space = values.text(namespace) or "/"
     topic = values.text(target) or ""
@@ -543,31 +683,9 @@ def _topic_name(values: Values, namespace: Raw | None, name: Raw | None, target:
     return names.ns_join(space, topic)
 
 
-_Edge = tuple[str, Role, str | None, BDD, Bounds]
+Edge = tuple[str, Role, str | None, BDD, Bounds]
 """A node variant's use of a name: its id, its role (publishes, serves...), the type, and
 the condition of the use (analysis manager, fixed) with its bounds."""
-
-
-def _edges_renderer(channel: Channel, name: str, edges: Sequence[_Edge]) -> Render:
-    """A topic (service, action) with its types and its publishers and subscribers (servers
-    and clients) that are not absent, each with its presence and condition (the name's
-    parts, in the order of ``edges``)."""
-    types = sorted({type_ for _id, _role, type_, _c, _b in edges if type_ is not None})
-    roles = SIDES[channel]
-    lists = JSON_SIDES[channel]
-
-    def render(_values: Values, parts: Sequence[Shown]) -> list[Fields]:
-        sides: dict[Role, list[Fields]] = {role: [] for role in roles}
-        for (node, role, _type, _c, _b), (presence, condition) in zip(edges, parts, strict=True):
-            if presence != Presence.ABSENT:
-                sides[role].append({"node": node, "presence": presence, "condition": condition})
-        return [{"name": name, "types": types, **{lists[i]: sides[roles[i]] for i in (0, 1)}}]
-
-    return render
-
-
-def _topic_renderer(raws: tuple[Raw | None, Raw | None, Raw]) -> Render:
-    return lambda values, _parts: [{"name": _topic_name(values, *raws)}]
 
 
 def _needs(*raws: object) -> set[Input]:
@@ -578,11 +696,7 @@ def _needs(*raws: object) -> set[Input]:
     return found
 
 
-def _static(fields: Fields) -> Render:
-    return lambda _values, _parts: [fields]
-
-
-_Setting = tuple[Raw, Raw, int | None]
+Setting = tuple[Raw, Raw, int | None]
 """A remap (from, to) or environment setting (name, value) of a node variant, with the
 index of its part (None: the variant always has it)."""
 
@@ -597,222 +711,3 @@ def _parameter_settings(node: NodeDecl) -> list[tuple[BDD, Raw, Raw]]:
         elif parameter.name is not None and parameter.value is not None:
             settings.append((parameter.condition, parameter.name, parameter.value))
     return settings
-
-
-def _ros2_fields(
-    text: Mapping[str, str | None], parameters: Sequence[tuple[str | None, str | None]]
-) -> Fields:
-    """A ROS 2 node's name, namespace and parameters as ``ros2 launch`` composes them: the
-    pushed namespace, the node's own, its parameters merged in order (``resolve_ros2``'s).
-    A node with no name takes one from its executable at run time: it is drawn as
-    ``⟨EXEC⟩`` in its namespace, its ``fqn`` null."""
-    pushed, own = text.get("ros_namespace"), text.get("namespace")
-    namespace = make_absolute(prefix_namespace(pushed, own)) or "/"
-    name = text.get("name")
-    fqn = None if name is None else full_name(pushed, own, name)
-    sources: list[Source] = []
-    for first, second in parameters:
-        try:
-            if not first:
-                sources.append(Source(entries=tuple(parameter_file(second or ""))))
-            else:
-                sources.append(Source(entries=((ALL_NODES, {first: typed(second or "")}),)))
-        except ValueError:
-            continue  # not a value yet (an arg still open) or not readable: not shown
-    return {
-        "name": fqn or unnamed(namespace, text.get("exec")),
-        "fqn": fqn,
-        "namespace": namespace,
-        "parameters": effective(fqn, sources),
-    }
-
-
-def _node_renderer(
-    raw: Mapping[str, Raw | None],
-    remaps: list[_Setting],
-    env: list[_Setting],
-    parameters: list[_Setting],
-    node: NodeDecl,
-) -> Render:
-    def render(values: Values, parts: Sequence[Shown]) -> list[Fields]:
-        text = {k: values.text(v) for k, v in raw.items()}
-        try:
-            typed: Fields = typed_node(text, node.location)
-        except ResolutionError:
-            typed = {}
-        undetermined: list[Fields] = []
-        mapping: dict[str, str] = {}
-        for remap in remaps:
-            pair = _present(PartKind.REMAP, remap, values, parts, undetermined)
-            if pair is not None:
-                key = pair[0] or ""
-                mapping.pop(key, None)
-                mapping[key] = pair[1] or ""
-        settings = []
-        for setting in env:
-            pair = _present(PartKind.ENV, setting, values, parts, undetermined)
-            if pair is not None:
-                settings.append(list(pair))
-        namespace = text.get("namespace") or "/"
-        extra: Fields = {}
-        if node.is_test:
-            try:
-                extra = test_fields(text, node.location)
-            except ResolutionError:
-                extra = {}
-        if "ros_namespace" in raw:  # a ROS 2 node
-            present = [
-                _present(PartKind.PARAMETER, p, values, parts, undetermined) for p in parameters
-            ]
-            extra = _ros2_fields(text, [p for p in present if p is not None])
-        return [
-            {
-                "name": names.ns_join(namespace, text.get("name") or ""),
-                "namespace": namespace,
-                "package": text.get("pkg"),
-                "type": text.get("type"),
-                **typed,
-                "remaps": sorted([list(p) for p in mapping.items()]),
-                "env": sorted(settings),
-                **({"undetermined": undetermined} if undetermined else {}),
-                "filename": node.filename,
-                "line": node.location.line,
-                "col": node.location.col,
-                **extra,
-            }
-        ]
-
-    return render
-
-
-def _present(
-    kind: PartKind,
-    setting: _Setting,
-    values: Values,
-    parts: Sequence[Shown],
-    undetermined: list[Fields],
-) -> tuple[str | None, str | None] | None:
-    """A setting's strings where the step has it, else None; an undetermined one is added to
-    ``undetermined`` with its condition."""
-    first, second, part = setting
-    shown = (values.text(first), values.text(second))
-    presence, condition = (Presence.PRESENT, None) if part is None else parts[part]
-    if presence == Presence.UNDETERMINED:
-        undetermined.append({"kind": kind, "pair": list(shown), "condition": condition})
-    return shown if presence == Presence.PRESENT else None
-
-
-class _ParamValue:
-    """A ``<param>`` variant's value as roslaunch loads it: shown, and checked once its
-    strings are known (the same conversion as ``rosvar resolve``'s)."""
-
-    def __init__(
-        self, name: object, value: object, location: Location, confinement: Confinement
-    ) -> None:
-        self.name = cast(Raw, name)
-        self.value = value
-        self.raw = value.raw if isinstance(value, DeferredValue) else value
-        self.location = location
-        self.confinement = confinement
-
-    def loaded(self, values: Values) -> object:
-        """The value loaded (raises :class:`ResolutionError` where roslaunch stops)."""
-        value, where = self.value, self.location
-        if isinstance(value, DeferredValue):
-            text = values.strict(value.raw, where, f"param {values.text(self.name)}") or ""
-            return json_value(deferred_value(value, text, where, self.confinement))
-        if is_term(value):
-            return values.strict(cast(Raw, value), where, f"param {values.text(self.name)}")
-        return json_value(value)
-
-    def render(self, values: Values, _parts: Sequence[Shown]) -> list[Fields]:
-        try:
-            shown = self.loaded(values)
-        except ResolutionError:  # its strings not known yet, or failing (``check``)
-            shown = values.text(cast(Raw, self.raw))
-        name = values.text(self.name)
-        return [{"name": name, "value": shown, **_where(self.location)}]
-
-    def check(self, values: Values) -> list[Failure]:
-        if not values.knows([self.name, cast(Raw, self.raw)]):
-            return []
-        try:
-            values.strict(self.name, self.location, "param name")
-            self.loaded(values)
-        except ResolutionError as error:
-            return [Failure.of(None, error)]
-        return []
-
-
-class _RosparamLoad:
-    """A ``<rosparam>``'s params as roslaunch loads them: shown, and checked once its
-    strings are known (``rosvar resolve``'s load)."""
-
-    def __init__(self, param: YamlDecl, confinement: Confinement) -> None:
-        self.raws = (param.scope_ns, param.command, param.ns, param.file, param.param, param.text)
-        self.location = param.location
-        self.confinement = confinement
-
-    def pairs(self, values: Values) -> list[tuple[str, object]]:
-        """The params set (raises :class:`ResolutionError` where roslaunch stops)."""
-        scope_ns, command, ns, file, name, body = (
-            values.strict(raw, self.location, "<rosparam>") for raw in self.raws
-        )
-        texts = (str(scope_ns), str(command), ns, file, name, body or "")
-        return rosparam_pairs(texts, self.location, self.confinement)
-
-    def render(self, values: Values, _parts: Sequence[Shown]) -> list[Fields]:
-        where = _where(self.location)
-        if values.knows(self.raws):
-            try:
-                return [
-                    {"name": key, "value": json_value(v), **where} for key, v in self.pairs(values)
-                ]
-            except ResolutionError:
-                pass  # failing: ``check`` tells
-        return [{"name": f"{values.text(self.raws[0])} (YAML)", "value": "<yaml>", **where}]
-
-    def check(self, values: Values) -> list[Failure]:
-        if not values.knows(self.raws):
-            return []
-        try:
-            self.pairs(values)
-        except ResolutionError as error:
-            return [Failure.of(None, error)]
-        return []
-
-
-def _node_check(
-    raw: Mapping[str, Raw | None], remaps: list[_Setting], env: list[_Setting], node: NodeDecl
-) -> Check:
-    """Where a ROS 1 node variant's strings make roslaunch stop, as ``rosvar resolve``
-    loads it: its fields, and each remap and environment setting (in its part, if any)."""
-    where = node.location
-
-    def check(values: Values) -> list[Failure]:
-        found: list[Failure] = []
-        if values.knows(raw.values()):
-            try:
-                text = {k: values.strict(v, where, f"<node> {k}") for k, v in raw.items()}
-                typed_node(text, where)
-                if node.is_test:
-                    test_fields(text, where)
-            except ResolutionError as error:
-                found.append(Failure.of(None, error))
-        for setting, label in [*((r, "remap") for r in remaps), *((e, "env") for e in env)]:
-            first, second, part = setting
-            if not values.knows((first, second)):
-                continue
-            try:
-                pair = (values.strict(first, where, label), values.strict(second, where, label))
-                if label == "remap":
-                    check_remap(*pair, where)
-            except ResolutionError as error:
-                found.append(Failure.of(part, error))
-        return found
-
-    return check
-
-
-def _where(location: Location) -> Fields:
-    return {"filename": location.file, "line": location.line}

@@ -20,9 +20,8 @@ from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD, transfer
 from rosvar.logic.conditions import Atom, PredicateAtom, SlotAtom, decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
-from rosvar.logic.terms import term_inputs
+from rosvar.logic.terms import PackageTable, term_inputs
 from rosvar.memo import Memo
-from rosvar.ros1.substitutions import PackageTable
 
 _NONE: frozenset[str] = frozenset()
 COPIES = 100_000

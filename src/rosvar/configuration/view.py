@@ -22,9 +22,11 @@ from rosvar.configuration.graph import (
     ElementKind,
     Failure,
     Fields,
+    Render,
     Shown,
     Values,
     VariationalGraph,
+    failures,
 )
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
@@ -69,17 +71,6 @@ class Graph:
     services: list[Fields] = field(default_factory=list)
     actions: list[Fields] = field(default_factory=list)
     errors: list[Fields] = field(default_factory=list)
-
-    def to_json(self) -> dict[str, object]:
-        return {
-            "nodes": self.nodes,
-            "tests": self.tests,
-            "params": self.params,
-            "topics": self.topics,
-            "services": self.services,
-            "actions": self.actions,
-            "errors": self.errors,
-        }
 
 
 Failures = Mapping[int, tuple[Failure, ...]]
@@ -169,10 +160,13 @@ class Views:
         derivation: Derivation,
         conflicts: Conflicts,
         cached: int,
+        render: Render,
     ) -> None:
         """``cached``: how many answers per list of choices the engine keeps
-        (``engine.CACHED_FEATURES``); views keep a share of it."""
+        (``engine.CACHED_FEATURES``); views keep a share of it. ``render``: the elements'
+        entries, as the presentation shows them."""
         self.analysis = analysis
+        self.render = render
         self.catalog = catalog
         self.graph = graph
         self.lowering = lowering
@@ -304,12 +298,12 @@ class Views:
             found.pop(index, None)
             element = self.graph.elements[index]
             mine = typed.get(element.entry)
-            if element.check is None or not mine or element.inputs.isdisjoint(mine):
+            if not mine or element.inputs.isdisjoint(mine):
                 continue
             given = values.get(element.entry)
             if given is None:
                 given = values[element.entry] = self._values(element.entry, decisions, texts)
-            failed = element.check(given)
+            failed = failures(element.content, given)
             if failed:
                 found[index] = tuple(failed)
         return found
@@ -328,8 +322,9 @@ class Views:
                 key = (element.id, number, failure, where)
                 entry = self._failure_entries.get(key)
                 if entry is None:
+                    [shown_error] = self.render(failure.error, self._symbolic, ())
                     entry = self._failure_entries[key] = {
-                        **failure.to_json(),
+                        **shown_error,
                         "presence": where[0],
                         "condition": where[1],
                         "id": f"{element.id}!{number}",
@@ -390,15 +385,17 @@ class Views:
                 errors.extend(shown)
             else:
                 parts = self.presences.of_parts[index]
-                shown = element.fields(
-                    given or self._symbolic, [(verdicts[c].verdict.presence, None) for c in parts]
+                shown = self.render(
+                    element.content,
+                    given or self._symbolic,
+                    [(verdicts[c].verdict.presence, None) for c in parts],
                 )
             counts[element.kind][presence] += len(shown)
         for index, failed in view.failures.items():
             for failure in failed:
                 condition = self._condition_of(index, failure)
                 if verdicts[condition].verdict.presence == Presence.PRESENT:
-                    errors.append(failure.to_json())
+                    errors.extend(self.render(failure.error, self._symbolic, ()))
         return Summary(counts, errors)
 
     def _condition_of(self, index: int, failure: Failure) -> int:
@@ -587,6 +584,6 @@ class Views:
         key = (element.id, strings, parts)
         found = self._rendered.get(key)
         if found is None:
-            found = element.fields(given or self._symbolic, parts)
+            found = self.render(element.content, given or self._symbolic, parts)
             self._rendered[key] = found
         return found

@@ -1,43 +1,78 @@
-"""Dialects: which ROS's launch semantics an interpretation follows.
+"""Dialects: what one ROS brings to the core, and the registry the core finds them in.
 
-One walk (:class:`~rosvar.interpreter.interpretation.Interpretation`) serves ROS 1 and
-ROS 2; a dialect supplies what differs between them: the tag handlers and the
-substitution language. Each dialect registers its handlers in its own registry.
+The core (the walk, the analyses, configuration, outputs) follows whichever ROS a workspace
+is, and names neither: it looks the workspace's :class:`Dialect` up by :class:`RosVersion`
+(:func:`dialect_of`). The dialect packages (``rosvar.ros1``, ``rosvar.ros2``) provide them,
+and a module above both registers them (:mod:`rosvar.dialects`), each imported on first use,
+as ros2/launch finds its frontends by entry point without naming them.
+
+This module stays light (typing-only imports): the package imports it at start-up.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING, Protocol
 
-from rosvar.frontends.entity import Entity
-from rosvar.workspace.ros_version import RosVersion
-
-__all__ = ["Dialect", "Handler", "RosVersion"]
+from rosvar.ros.version import RosVersion
 
 if TYPE_CHECKING:
-    from rosvar.interpreter.interpretation import Interpretation
+    from rosvar.frontends.entity import ParseResult
+    from rosvar.frontends.xml import Snapshot
+    from rosvar.interpreter.model import LaunchModel
+    from rosvar.logic.conditions import ConditionSpace
+    from rosvar.logic.inputs import Slot
+    from rosvar.workspace import Workspace
 
-Handler = Callable[["Interpretation", Entity, Any], None]
-"""A tag handler: the walk, the element, and the dialect's scope (context) type."""
+__all__ = ["Dialect", "Loader", "RosVersion", "dialect_of", "register"]
+
+Loader = Callable[[str], "ParseResult"]
+"""A dialect's frontends: a launch file of any of its formats to an entity tree."""
 
 
-@dataclass
-class Dialect:
-    """The tag registry and substituter factory of one :class:`RosVersion`."""
+class Dialect(Protocol):
+    """What the core asks of one ROS, whatever the scope its walk carries (the generic
+    :class:`~rosvar.interpreter.semantics.Semantics` implements it)."""
 
-    version: RosVersion
-    substituter: Callable[[Interpretation], Any]
-    tags: dict[str, Handler] = field(default_factory=dict)
+    @property
+    def version(self) -> RosVersion: ...
 
-    def tag(self, name: str) -> Callable[[Handler], Handler]:
-        """Register the handler of ``<name>`` (extension by registry, not if-chains)."""
+    @property
+    def loader(self) -> Loader: ...
 
-        def register(handler: Handler) -> Handler:
-            if name in self.tags:  # a second handler would silently replace the first
-                raise ValueError(f"tag <{name}> is registered twice in {self.version}")
-            self.tags[name] = handler
-            return handler
+    def interpret(
+        self,
+        workspace: Workspace,
+        space: ConditionSpace,
+        domains: Callable[[str, str], tuple[Slot, ...]],
+        env_domains: Callable[[str], tuple[Slot, ...]],
+        file: str,
+        files: Snapshot,
+        undeclared: Mapping[str, str],
+    ) -> tuple[LaunchModel, set[str]]:
+        """The model of entry file ``file`` over every command line, and the args to know
+        from the start in another interpretation (ROS 2: read before being declared);
+        ``undeclared`` are such args, known from a previous interpretation."""
+        ...
 
-        return register
+
+_FACTORIES: dict[RosVersion, Callable[[], Dialect]] = {}
+_DIALECTS: dict[RosVersion, Dialect] = {}
+
+
+def register(version: RosVersion, factory: Callable[[], Dialect]) -> None:
+    """Make ``factory`` (called on first use) the dialect of ``version``."""
+    if version in _FACTORIES:  # a second one would silently replace the first
+        raise ValueError(f"{version.label} has two dialects")
+    _FACTORIES[version] = factory
+
+
+def dialect_of(version: RosVersion) -> Dialect:
+    """The registered dialect of ``version``."""
+    found = _DIALECTS.get(version)
+    if found is None:
+        factory = _FACTORIES.get(version)
+        if factory is None:
+            raise LookupError(f"no dialect is registered for {version.label}")
+        found = _DIALECTS[version] = factory()
+    return found

@@ -20,10 +20,10 @@ from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.safe_eval import EvalRefused, compared_literals
 from rosvar.logic.inputs import OTHER, UNSET, Slot
+from rosvar.ros.version import RosVersion
 from rosvar.workspace import Workspace
 from rosvar.workspace.executables import executables
 from rosvar.workspace.paths import real_path
-from rosvar.workspace.ros_version import RosVersion
 
 _WHOLE_ARG = {
     RosVersion.ROS1: re.compile(r"\s*\$\(arg\s+([^\s)]+)\s*\)\s*"),

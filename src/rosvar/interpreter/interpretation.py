@@ -1,21 +1,21 @@
 """Symbolic interpretation of one entry launch file, for all configurations at once.
 
-The walk follows roslaunch's ``XmlLoader`` tag by tag, but where roslaunch holds
-one value the walk holds a :class:`Choice`, and where roslaunch tests a
-condition the walk narrows its *path condition* (``pc``). Tags are handled by
-the functions registered in :data:`TAGS` (see :mod:`rosvar.ros1.tags`).
+The walk follows the launch code tag by tag (roslaunch's ``XmlLoader``, ros2/launch's
+actions), but where it holds one value the walk holds a :class:`Choice`, and where it tests
+a condition the walk narrows its *path condition* (``pc``). What the tags mean is a dialect's
+(:class:`~rosvar.interpreter.semantics.Semantics`): its tag handlers, its substitution
+language and the scope type ``S`` both carry along the walk.
 """
 
 from __future__ import annotations
 
 import functools
 from collections.abc import Callable, Mapping, Sequence
-from typing import Any, Concatenate, ParamSpec, TypeVar
+from typing import Any, Concatenate, Generic, ParamSpec, Protocol, TypeVar
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import Snapshot
-from rosvar.interpreter.dialect import Dialect, RosVersion
 from rosvar.interpreter.lifted import apply, lift
 from rosvar.interpreter.model import Decision, ErrorEvent, Guard, LaunchModel, Raw
 from rosvar.logic.bdd import BDD
@@ -23,18 +23,13 @@ from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.conditions import ConditionSpace, register_predicate
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
 from rosvar.logic.terms import Hole
-from rosvar.ros1.scope import MISSING, Scope
-from rosvar.ros1.substitutions import Substituter
-from rosvar.ros2.context import Context
 from rosvar.workspace import Workspace
 
 V = TypeVar("V")
 P = ParamSpec("P")
-S = TypeVar("S", Scope, Context)
-AnyScope = Scope | Context
-"""What a dialect's handlers carry along the walk: roslaunch's scope or ros2's context."""
-ROS1 = Dialect(RosVersion.ROS1, Substituter)
-TAGS = ROS1.tags
+S = TypeVar("S")
+"""The scope a dialect's handlers carry along the walk (roslaunch's scope, ros2's context)."""
+S_contra = TypeVar("S_contra", contravariant=True)
 MAX_INCLUDE_DEPTH = 64
 MAX_INCLUDES = 4096
 """Includes followed in one interpretation: a diamond (each file including the next twice)
@@ -47,13 +42,19 @@ TRUE_WORDS = ("true", "1")
 FALSE_WORDS = ("false", "0")
 
 
-tag = ROS1.tag
-"""Register a ROS 1 tag handler."""
+class Substituter(Protocol[S_contra]):
+    """A dialect's substitution language: attribute text to its values in a scope."""
+
+    def resolve(self, text: str | None, scope: S_contra) -> Choice[Raw | Fail] | None: ...
+
+
+Handler = Callable[["Interpretation[S]", Entity, S], None]
+"""A tag handler: the walk, the element, and the dialect's scope."""
 
 
 def processed(
-    body: Callable[Concatenate[Interpretation, Entity, S, P], None],
-) -> Callable[Concatenate[Interpretation, Entity, S, P], None]:
+    body: Callable[Concatenate[Interpretation[S], Entity, S, P], None],
+) -> Callable[Concatenate[Interpretation[S], Entity, S, P], None]:
     """roslaunch's ``ifunless_test``, which every tag handler starts with: ``body`` runs
     where the tag's ``if``/``unless`` lets it, on the path narrowed to there.
 
@@ -62,7 +63,7 @@ def processed(
     """
 
     def guarded(
-        it: Interpretation, entity: Entity, scope: S, /, *args: P.args, **kwargs: P.kwargs
+        it: Interpretation[S], entity: Entity, scope: S, /, *args: P.args, **kwargs: P.kwargs
     ) -> None:
         attributes = entity.attributes
         if "if" not in attributes and "unless" not in attributes:
@@ -88,8 +89,8 @@ register_predicate("true", _truthy, "{} is true")
 register_predicate("false", _falsy, "{} is false")
 
 
-class Interpretation:
-    """State of one symbolic roslaunch run over one or more entry files."""
+class Interpretation(Generic[S]):
+    """State of one symbolic launch run over one or more entry files."""
 
     def __init__(
         self,
@@ -98,12 +99,13 @@ class Interpretation:
         domains: Callable[[str, str], tuple[Slot, ...]],
         env_domains: Callable[[str], tuple[Slot, ...]],
         file: str,
-        files: Snapshot | None = None,
-        dialect: Dialect | None = None,
+        files: Snapshot,
+        tags: Mapping[str, Handler[S]],
+        substituter: Callable[[Interpretation[S]], Substituter[S]],
     ) -> None:
-        self.dialect = dialect or ROS1
+        self.tags = tags
         self.workspace = workspace
-        self.files = files or Snapshot()
+        self.files = files
         self.space = space
         self._domains = domains
         self._env_domains = env_domains
@@ -111,7 +113,7 @@ class Interpretation:
         self.pc: BDD = space.true
         # A cycle (broken by ``close``): left to the garbage collector, it could free BDD
         # nodes after their manager, which CUDD reports as an error.
-        self.substituter = self.dialect.substituter(self)
+        self.substituter = substituter(self)
         inputs: dict[str, ArgInput] = {}
         self.model = LaunchModel(file=file, space=space, inputs=inputs, domains={})
         self.default_machine: Choice[Raw | None] = Choice.const(space, None)
@@ -166,7 +168,7 @@ class Interpretation:
                 branches.append((atom, slot))
         return Choice.of(branches)
 
-    def new_anon(self, scope: AnyScope, anon_id: str) -> Choice[Raw]:
+    def new_anon(self, scope: S, anon_id: str) -> Choice[Raw]:
         pc = self.pc
         current = self.anon_count
         # roslaunch's anonymous_name() screens '.', '-' and ':' out of names; the
@@ -184,7 +186,7 @@ class Interpretation:
         self,
         file: str,
         names: Sequence[str],
-        unset: object = MISSING,
+        unset: object,
         declared_in: Mapping[str, str] | None = None,
     ) -> dict[str, Choice[Any]]:
         """Command-line args of the entry file as choices over their input slots, ``unset``
@@ -209,11 +211,11 @@ class Interpretation:
     def location(self) -> Location:
         return self._location
 
-    def at(self, entity: Entity) -> _At:
+    def at(self, entity: Entity) -> _At[S]:
         """Attribute what happens inside to ``entity``'s location."""
         return _At(self, entity.location)
 
-    def under(self, condition: BDD) -> _Under:
+    def under(self, condition: BDD) -> _Under[S]:
         """Narrow the path condition; entering says whether anything is left."""
         return _Under(self, condition)
 
@@ -266,13 +268,13 @@ class Interpretation:
             return Choice.empty(self.space)
         return Choice.const(self.space, value)
 
-    def resolve(self, text: str | None, scope: AnyScope, context: str = "") -> Choice[Raw] | None:
+    def resolve(self, text: str | None, scope: S, context: str = "") -> Choice[Raw] | None:
         if text is not None and "$" not in text:  # most texts are literal: nothing can fail
             return Choice.const(self.space, text)
         value = self.substituter.resolve(text, scope)
         return None if value is None else self.strip(value, context)
 
-    def attr(self, entity: Entity, name: str, scope: AnyScope) -> Choice[Raw] | None:
+    def attr(self, entity: Entity, name: str, scope: S) -> Choice[Raw] | None:
         text = entity.attributes.get(name)
         if text is None:  # most optional attributes are absent: no message to format
             return None
@@ -280,7 +282,7 @@ class Interpretation:
             return Choice.const(self.space, text)
         return self.resolve(text, scope, f"<{entity.tag}> attribute '{name}'")
 
-    def required(self, entity: Entity, name: str, scope: AnyScope) -> Choice[Raw] | None:
+    def required(self, entity: Entity, name: str, scope: S) -> Choice[Raw] | None:
         value = self.attr(entity, name, scope)  # None exactly when the attribute is absent
         if value is None:
             self.fail(
@@ -315,7 +317,7 @@ class Interpretation:
             self.fail(invalid, "bool-invalid", f"{label}: value is not a 'bool' type")
         return true
 
-    def condition_of(self, entity: Entity, scope: AnyScope) -> BDD:
+    def condition_of(self, entity: Entity, scope: S) -> BDD:
         """``ifunless_test``: where the tag is processed."""
         attributes = entity.attributes
         if "if" not in attributes and "unless" not in attributes:  # most tags
@@ -353,7 +355,7 @@ class Interpretation:
         return invalid
 
     # -- walking ------------------------------------------------------------------------
-    def walk(self, children: Sequence[Entity], scope: AnyScope) -> None:
+    def walk(self, children: Sequence[Entity], scope: S) -> None:
         if not children:
             return
         if self.depth >= MAX_NESTING:
@@ -365,7 +367,7 @@ class Interpretation:
             )
             return
         saved = self._location
-        tags = self.dialect.tags
+        tags = self.tags
         self.depth += 1
         try:
             for child in children:
@@ -397,13 +399,13 @@ class Interpretation:
         return result.root
 
 
-class _At:
+class _At(Generic[S]):
     """The context of :meth:`Interpretation.at` (a class: this runs for every tag, and
     generator-based context managers cost several times more)."""
 
     __slots__ = ("_it", "_location", "_saved")
 
-    def __init__(self, it: Interpretation, location: Location) -> None:
+    def __init__(self, it: Interpretation[S], location: Location) -> None:
         self._it = it
         self._location = location
 
@@ -415,12 +417,12 @@ class _At:
         self._it._location = self._saved
 
 
-class _Under:
+class _Under(Generic[S]):
     """The context of :meth:`Interpretation.under` (a class, as :class:`_At`)."""
 
     __slots__ = ("_condition", "_it", "_saved")
 
-    def __init__(self, it: Interpretation, condition: BDD) -> None:
+    def __init__(self, it: Interpretation[S], condition: BDD) -> None:
         self._it = it
         self._condition = condition
 
@@ -435,7 +437,7 @@ class _Under:
         self._it.pc = self._saved
 
 
-def split(interpretation: Interpretation, choice: Choice[V]) -> Sequence[tuple[BDD, V]]:
+def split(interpretation: Interpretation[S], choice: Choice[V]) -> Sequence[tuple[BDD, V]]:
     """The branches of ``choice`` that are possible on the current path.
 
     Most paths are true, where every branch is possible (a choice keeps no false

@@ -14,8 +14,10 @@ import re
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
 from enum import StrEnum
+from typing import Protocol
 
 from rosvar.diagnostics import Diagnostic, Location
+from rosvar.files import Confinement
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
@@ -35,13 +37,27 @@ class ParamSource(StrEnum):
     COMMAND = "command"  # its text is wrapped, never run
 
 
+class ParamConversion(Protocol):
+    """The dialect's conversion of a ``<param>``'s concrete string to its value (roslaunch's
+    ``Loader.param_value``): ValueError/OSError where roslaunch fails."""
+
+    def __call__(
+        self, kind: ParamSource, raw: str, ptype: str, confinement: Confinement
+    ) -> object: ...
+
+
 @dataclass(frozen=True)
 class DeferredValue:
-    """A ``<param>`` value whose string is a term: converted with ``ptype`` once known."""
+    """A ``<param>`` value whose string is a term: converted with ``ptype`` once known.
+
+    It carries its dialect's ``convert``: whoever learns the string (resolution, the
+    configuration's graph) converts it as the interpreter would, without knowing the
+    dialect's tags."""
 
     raw: Term
     ptype: str
-    kind: ParamSource = ParamSource.VALUE  # or COMMAND: a file to read must be known at once
+    kind: ParamSource  # VALUE or COMMAND: a file to read must be known at once
+    convert: ParamConversion
 
 
 @dataclass(frozen=True)
@@ -113,12 +129,30 @@ class ParamDecl:
     value: Choice[object]
 
 
+class RosparamLoad(Protocol):
+    """The dialect's ``<rosparam>`` for concrete strings (roslaunch's
+    ``Loader.load_rosparam``): the params it sets, or ValueError/OSError where roslaunch
+    fails."""
+
+    def __call__(
+        self,
+        command: str,
+        ns: str | None,
+        file: str | None,
+        param: str | None,
+        text: str,
+        scope_ns: str,
+        confinement: Confinement,
+    ) -> list[tuple[str, object]]: ...
+
+
 @dataclass(slots=True)
 class YamlDecl:
     """A ``<rosparam>`` some of whose attributes are only known per configuration.
 
-    Resolution evaluates the terms and loads it like the interpreter loads a
-    concrete one (``load_rosparam``), with the same checks.
+    Whoever learns the strings (resolution, the checks, the configuration's graph) evaluates
+    the terms and loads it with its dialect's ``load``, as the interpreter loads a concrete
+    one, with the same checks.
     """
 
     condition: BDD
@@ -129,6 +163,7 @@ class YamlDecl:
     file: Raw | None
     param: Raw | None
     text: Raw
+    load: RosparamLoad
 
 
 @dataclass(slots=True)

@@ -6,24 +6,15 @@ import gc
 import os
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
-from dataclasses import dataclass
 from typing import TypeVar
 
 from rosvar.forked import forked_map
-from rosvar.frontends.entity import Entity, ParseResult
 from rosvar.frontends.xml import Snapshot
-from rosvar.interpreter.dialect import Dialect
-from rosvar.interpreter.domains import DomainTable, entry_declarations
-from rosvar.interpreter.interpretation import ROS1, Interpretation
+from rosvar.interpreter.dialect import dialect_of
+from rosvar.interpreter.domains import DomainTable
 from rosvar.interpreter.model import LaunchModel
-from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.ros.names import settable
-from rosvar.ros1 import tags  # noqa: F401 - registers the tag handlers
-from rosvar.ros1.scope import Scope
 from rosvar.workspace import Workspace
-from rosvar.workspace.paths import real_path
-from rosvar.workspace.ros_version import RosVersion
 
 Progress = Callable[[int, int, str], None]
 Result = TypeVar("Result")
@@ -44,8 +35,8 @@ class Analysis:
     ) -> None:
         self.workspace = workspace
         self.space = ConditionSpace(len(workspace.launch_files))
-        self.reading = READINGS[workspace.ros_version]()
-        self.files = Snapshot(self.reading.loader)
+        self.dialect = dialect_of(workspace.ros_version)
+        self.files = Snapshot(self.dialect.loader)
         self.domains = DomainTable(
             workspace, extra_values, env_values, extra_executables, files=self.files
         )
@@ -124,30 +115,16 @@ class Analysis:
     def _interpret_with(
         self, file: str, undeclared: Mapping[str, str]
     ) -> tuple[LaunchModel, set[str]]:
-        it = Interpretation(
+        """The model, and the args to know from the start in another interpretation."""
+        model, late = self.dialect.interpret(
             self.workspace,
             self.space,
             self.domains.arg_domain,
             self.domains.env_domain,
             file,
             self.files,
-            self.reading.dialect,
+            undeclared,
         )
-        try:
-            return self._run(it, file, undeclared)
-        finally:
-            it.close()
-
-    def _run(
-        self, it: Interpretation, file: str, undeclared: Mapping[str, str]
-    ) -> tuple[LaunchModel, set[str]]:
-        """The model, and the args to know from the start in another interpretation."""
-        it.stack.append(real_path(file))
-        root = it.load(file)
-        late: set[str] = set()
-        if root is not None:
-            late = self.reading.walk(it, file, root, undeclared)
-        model = it.finish()
         for name in model.inputs:  # what leaving each arg out amounts to, if one literal
             default = self.domains.unset_default(file, name)
             if default is not None:
@@ -157,63 +134,6 @@ class Analysis:
 
 def _itself(model: LaunchModel) -> LaunchModel:
     return model
-
-
-def _walk_ros1(
-    it: Interpretation, file: str, root: Entity, _undeclared: Mapping[str, str]
-) -> set[str]:
-    """roslaunch: the file's args are the command line's, in a scope at ``/``."""
-    deprecated = root.get("deprecated")
-    if deprecated:
-        it.sink.note("launch-deprecated", f"DEPRECATED: {deprecated}", root.location)
-    names = list(
-        dict.fromkeys(
-            d.get("name") or "" for d in entry_declarations(root) if settable(d.get("name") or "")
-        )
-    )
-    args = it.entry_args(file, names)
-    scope = Scope(ns=Choice.const(it.space, "/"), filename=file, args=args)
-    with it.at(root):
-        it.walk(root.children, scope)
-    return set()
-
-
-def _walk_ros2(
-    it: Interpretation, file: str, root: Entity, undeclared: Mapping[str, str]
-) -> set[str]:
-    """``ros2 launch``: the declared launch arguments are the command line's, and the
-    ``undeclared`` ones included files declare; the included files' args read where they
-    were not set (before their declaration, or outside its group) are returned."""
-    from rosvar.ros2 import entry as ros2
-
-    context = ros2.entry_context(it, file, root, undeclared)
-    ros2.walk_entry(it, root, context)
-    return {n for n in it.model.settable if n in context.unset_reads and n not in undeclared}
-
-
-@dataclass(frozen=True)
-class Reading:
-    """How one ROS reads an entry file: its dialect, its frontends, its entry walk."""
-
-    dialect: Dialect
-    loader: Callable[[str], ParseResult] | None  # None: roslaunch's XML parser
-    walk: Callable[[Interpretation, str, Entity, Mapping[str, str]], set[str]]
-
-
-def _ros1() -> Reading:
-    return Reading(ROS1, None, _walk_ros1)
-
-
-def _ros2() -> Reading:
-    from rosvar.ros2.dialect import ROS2
-    from rosvar.ros2.frontends import registry
-
-    return Reading(ROS2, registry.load, _walk_ros2)
-
-
-READINGS: dict[RosVersion, Callable[[], Reading]] = {RosVersion.ROS1: _ros1, RosVersion.ROS2: _ros2}
-"""Each ROS's reading, made on first use: a ROS 1 analysis never imports ROS 2's tags,
-substitutions and frontends (nor the other way round more than the shared XML parser)."""
 
 
 @contextmanager

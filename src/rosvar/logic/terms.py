@@ -9,6 +9,7 @@ when a concrete configuration supplies the missing strings (HAROS-style
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 
 from rosvar.logic.inputs import Input
 
@@ -102,6 +103,14 @@ Operand = str | Term | tuple[str, ...]
 
 TermFunction = Callable[..., str]
 FUNCTIONS: dict[str, TermFunction] = {"concat": lambda _host, *parts: "".join(parts)}
+
+
+@dataclass(frozen=True)
+class PackageTable:
+    """Package name → path: the host a term's functions get outside an interpretation (a
+    dialect's ``$(find)`` terms read it)."""
+
+    paths: dict[str, str]
 
 
 def register(name: str, function: TermFunction) -> None:

@@ -7,6 +7,7 @@ from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl, Para
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import OTHER, UNSET, Slot
 from rosvar.logic.terms import Apply, Hole
+from rosvar.outputs.documents.diagnostics import diagnostic_document
 
 
 def _slot(slot: Slot) -> str:
@@ -96,7 +97,7 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
             }
             for e in model.errors
         ],
-        "diagnostics": [d.to_json() for d in model.diagnostics],
+        "diagnostics": [diagnostic_document(d) for d in model.diagnostics],
     }
 
 

@@ -14,6 +14,7 @@ from rosvar import __version__
 from rosvar.analyses.checks import DESCRIPTIONS, Check, Finding
 from rosvar.diagnostics import Location
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.outputs.documents.findings import finding_document
 
 SCHEMA = (
     "https://docs.oasis-open.org/sarif/sarif/v2.1.0/errata01/os/schemas/sarif-schema-2.1.0.json"
@@ -44,7 +45,7 @@ def sarif(findings: Sequence[Finding], space: ConditionSpace) -> dict[str, objec
 
 
 def _result(finding: Finding, space: ConditionSpace, rule: int) -> dict[str, object]:
-    document = finding.to_json(space)
+    document = finding_document(finding, space)
     primary, *related = finding.locations
     return {
         "ruleId": str(finding.check),

@@ -1,1 +1,2 @@
-"""ROS graph resource names (rosgraph's rules), which every layer shares."""
+"""ROS conventions every layer shares: graph resource names (rosgraph's rules) and the ROS
+versions."""

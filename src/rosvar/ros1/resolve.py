@@ -22,16 +22,14 @@ from rosvar.interpreter.model import (
     NodeDecl,
     ParamDecl,
     Raw,
+    YamlDecl,
     anon_pattern,
 )
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import ArgInput, EnvInput, Input
-from rosvar.logic.terms import Apply, Hole, TermError, evaluate
+from rosvar.logic.terms import Apply, Hole, PackageTable, TermError, evaluate
 from rosvar.ros import names
-from rosvar.ros1.substitutions import PackageTable
-from rosvar.ros1.tags.param import param_value
-from rosvar.ros1.tags.rosparam import load_rosparam
 from rosvar.ros1.validation import node_values
 
 
@@ -248,7 +246,7 @@ def _restrict(
             body = r.evaluate(param.text, param.location, "<rosparam> body")
             scope_ns, command, ns, file, name = parts
             pairs = rosparam_pairs(
-                (str(scope_ns), str(command), ns, file, name, body), param.location, r.confinement
+                param, (str(scope_ns), str(command), ns, file, name, body), r.confinement
             )
             for key, value in pairs:
                 result.params[key] = json_value(value)
@@ -335,7 +333,7 @@ def deferred_value(
 ) -> object:
     """A ``<param>`` value whose string became ``text``, typed as roslaunch types it."""
     try:
-        return param_value(value.kind, text, value.ptype, confinement)
+        return value.convert(value.kind, text, value.ptype, confinement)
     except ValueError as error:
         raise ResolutionError("param-invalid", str(error), location) from None
 
@@ -345,15 +343,15 @@ RosparamTexts = tuple[str, str, str | None, str | None, str | None, str]
 
 
 def rosparam_pairs(
-    texts: RosparamTexts, location: Location, confinement: Confinement
+    param: YamlDecl, texts: RosparamTexts, confinement: Confinement
 ) -> list[tuple[str, object]]:
-    """The params a ``<rosparam>`` with these strings sets, as roslaunch loads them."""
+    """The params ``param`` sets with these strings, as roslaunch loads them."""
     scope_ns, command, ns, file, name, body = texts
     try:
-        return load_rosparam(command, ns, file, name, body, scope_ns, confinement)
+        return param.load(command, ns, file, name, body, scope_ns, confinement)
     except ValueError as error:
         raise ResolutionError(
-            "rosparam-invalid", f"error loading <rosparam> tag: {error}", location
+            "rosparam-invalid", f"error loading <rosparam> tag: {error}", param.location
         ) from None
 
 

@@ -13,13 +13,21 @@ import ast
 import functools
 import os
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from typing import Protocol
 
 from rosvar.interpreter.model import Raw
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.terms import Apply, Hole, Term, TermError, concat, is_term, register
+from rosvar.logic.terms import (
+    Apply,
+    Hole,
+    PackageTable,
+    Term,
+    TermError,
+    concat,
+    is_term,
+    register,
+)
 from rosvar.ros1.scope import MISSING, Scope, _Missing
 
 Value = Raw | Fail
@@ -152,13 +160,6 @@ def _plan(
 
 
 # -- the find pass, on a concrete string (also used to evaluate terms later) ----------------
-@dataclass(frozen=True)
-class PackageTable:
-    """Package name → path, for evaluating ``$(find)`` terms outside an interpretation."""
-
-    paths: dict[str, str]
-
-
 def find_pass(text: str, lookup: Callable[[str], str | None]) -> str:
     """roslaunch's second pass: every ``$(find pkg)`` plus the path that follows it."""
     resolved = text

@@ -1,10 +1,12 @@
 """Typed values from strings, exactly as roslaunch converts them (but YAML, whose loader
-with rosparam's tags is ``rosparam_yaml``: its ``!radians`` needs the ``$(eval)`` evaluator,
-which itself converts args here)."""
+with rosparam's tags is ``rosparam_yaml``: its ``!radians`` needs the ``$(eval)`` evaluator;
+``auto`` is the evaluator's own conversion of args)."""
 
 from __future__ import annotations
 
 import functools
+
+from rosvar.interpreter.safe_eval import convert_auto
 
 
 @functools.lru_cache(maxsize=65536)
@@ -12,16 +14,7 @@ def convert_scalar(value: str, type_: str) -> object:
     """The non-YAML types (cached: the same texts recur in every includer, and the
     results are immutable, unlike a YAML value, which each caller gets fresh)."""
     if type_ == "auto":
-        try:
-            if "." in value:
-                return float(value)
-            if "_" not in value:
-                return int(value)
-        except ValueError:
-            pass
-        if value.lower() in ("true", "false"):
-            return convert_scalar(value, "bool")
-        return value
+        return convert_auto(value)
     if type_ in ("str", "string"):
         return value
     if type_ == "int":
@@ -36,19 +29,6 @@ def convert_scalar(value: str, type_: str) -> object:
             return False
         raise ValueError(f"{word} is not a '{type_}' type")
     raise ValueError(f"Unknown type '{type_}'")
-
-
-def bool_attribute(value: str | None, default: bool, label: str) -> bool:
-    """``_bool_attr``: only ``true``/``false`` (any case)."""
-    if value is None:
-        return default
-    if value.lower() == "true":
-        return True
-    if value.lower() == "false":
-        return False
-    if not value:
-        raise ValueError(f"bool value for {label} must be non-empty")
-    raise ValueError(f"invalid bool value for {label}: {value}")
 
 
 def float_attribute(value: str | None, default: float, label: str) -> float:

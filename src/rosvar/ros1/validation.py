@@ -8,8 +8,9 @@ from __future__ import annotations
 
 import functools
 
+from rosvar.interpreter.booleans import bool_attribute
 from rosvar.logic.terms import is_term
-from rosvar.ros1.typed_values import bool_attribute, float_attribute
+from rosvar.ros1.typed_values import float_attribute
 
 
 @functools.lru_cache(maxsize=65536)

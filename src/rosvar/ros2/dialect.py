@@ -1,8 +1,25 @@
-"""The ROS 2 dialect: its tag registry (filled by :mod:`rosvar.ros2.tags`) and
-its substitution language."""
+"""The ROS 2 dialect: its frontends (by file suffix), its substitution language, the launch
+context as its scope; its tag registry is filled by :mod:`rosvar.ros2.tags`, a handler for
+each action of the launch API's registry (:mod:`rosvar.ros2.api.actions`)."""
 
-from rosvar.interpreter.dialect import Dialect, RosVersion
+from collections.abc import Callable
+
+from rosvar.interpreter.interpretation import Handler
+from rosvar.interpreter.semantics import Semantics
+from rosvar.ros.version import RosVersion
+from rosvar.ros2.api.actions import ACTIONS
+from rosvar.ros2.context import Context
+from rosvar.ros2.entry import walk_entry
+from rosvar.ros2.frontends import registry
 from rosvar.ros2.substitutions import Ros2Substituter
 
-ROS2 = Dialect(RosVersion.ROS2, Ros2Substituter)
-tag = ROS2.tag
+ROS2: Semantics[Context] = Semantics(RosVersion.ROS2, registry.load, Ros2Substituter, walk_entry)
+
+
+def tag(name: str) -> Callable[[Handler[Context]], Handler[Context]]:
+    """Register the handler of the action exposed as ``<name>``; an action the registry does
+    not know, or an element its parent reads, has none."""
+    action = ACTIONS.by_name.get(name)
+    if action is None or not action.walked:
+        raise ValueError(f"<{name}> is no action of the launch API's registry")
+    return ROS2.tag(name)

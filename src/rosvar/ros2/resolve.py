@@ -26,7 +26,7 @@ from rosvar.ros1.resolve import ResolutionError, Restriction
 from rosvar.ros2.conventions import command_line
 from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, file_entries, typed
-from rosvar.ros2.entry import interpret
+from rosvar.ros2.launch import interpret
 from rosvar.ros2.tags.node import ProcessKind
 from rosvar.workspace import Workspace
 

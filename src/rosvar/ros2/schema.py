@@ -1,4 +1,4 @@
-"""The attributes and child tags ros2/launch's XML frontend accepts, per tag.
+"""The attributes and child tags ros2/launch's frontends accept, per tag, checked as they do.
 
 The frontend parses a whole file when it is loaded and fails on an element it does not
 know or an attribute nothing read, even inside a group that is never entered: so the check
@@ -9,67 +9,32 @@ from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation
+from rosvar.ros.version import RosVersion
+from rosvar.ros2.api.actions import ACTIONS
+from rosvar.ros2.context import Context
 from rosvar.workspace.launch_files import LaunchFormat, format_of
-from rosvar.workspace.ros_version import RosVersion
 
-PROCESS = frozenset(
-    {
-        "cwd", "launch-prefix", "output", "respawn", "respawn_delay", "respawn_max_retries",
-        "shell", "emulate_tty", "sigterm_timeout", "sigkill_timeout", "on_exit", "env",
-    }
-)  # fmt: skip
 ATTRIBUTES: dict[str, frozenset[str]] = {
-    "launch": frozenset({"version"}),
-    "arg": frozenset({"name", "default", "description", "value", "choice"}),
-    "choice": frozenset({"value"}),
-    "let": frozenset({"name", "value"}),
-    "include": frozenset({"file", "arg"}),
-    "group": frozenset({"scoped", "forwarding", "keep"}),
-    "keep": frozenset({"name", "value"}),
-    "timer": frozenset({"period", "cancel_on_shutdown"}),
-    "ros_timer": frozenset({"period", "cancel_on_shutdown"}),
-    "shutdown": frozenset({"reason"}),
-    "reset_env": frozenset(),
-    "push-ros-namespace": frozenset({"namespace"}),
-    "push_ros_namespace": frozenset({"namespace"}),
-    "set_remap": frozenset({"from", "to"}),
-    "set_parameter": frozenset({"name", "value"}),
-    "set_env": frozenset({"name", "value"}),
-    "unset_env": frozenset({"name"}),
-    "append_env": frozenset({"name", "value", "prepend", "separator"}),
-    "reset": frozenset({"keep"}),
-    "set_parameters_from_file": frozenset({"filename"}),
-    "log": frozenset({"message"}),
-    "set_use_sim_time": frozenset({"value"}),
-    "set_ros_log_dir": frozenset({"new_log_dir"}),
-    "node": PROCESS
-    | {"pkg", "exec", "name", "namespace", "args", "ros_args", "exec_name", "node-name"}
-    | {"param", "remap"},
-    "executable": PROCESS | {"cmd", "name"},
-    "node_container": PROCESS
-    | {"pkg", "exec", "name", "namespace", "args", "ros_args", "exec_name", "node-name"}
-    | {"param", "remap", "composable_node"},
-    "load_composable_node": frozenset({"target", "composable_node"}),
-    "composable_node": frozenset({"pkg", "plugin", "name", "namespace", "param", "remap"})
-    | {"extra_arg"},
-    "extra_arg": frozenset({"name", "value"}),
-    "param": frozenset({"name", "value", "type", "from", "allow_substs", "param", "sep"}),
-    "remap": frozenset({"from", "to"}),
-    "env": frozenset({"name", "value"}),
+    name: action.attributes for action in ACTIONS for name in action.names if not action.python_only
 }
-PYTHON_ONLY: dict[str, frozenset[str]] = {"lifecycle_node": ATTRIBUTES["node"]}
-"""Actions with no XML or YAML tag (``LifecycleNode``): the Python frontend's entities."""
+"""What the XML and YAML frontends accept, per tag (:data:`rosvar.ros2.api.actions.ACTIONS`)."""
+PYTHON_ATTRIBUTES = ATTRIBUTES | {
+    name: action.attributes for action in ACTIONS for name in action.names if action.python_only
+}
+"""What the Python frontend's elements may be (``LifecycleNode`` has no XML or YAML tag)."""
 ALWAYS = frozenset({"if", "unless"})
-CONTAINERS = frozenset({"group", "launch", "timer", "ros_timer"})
+CONTAINERS = frozenset(name for action in ACTIONS if action.holds_actions for name in action.names)
 
 
-def check(it: Interpretation, root: Entity) -> None:
+def check(it: Interpretation[Context], root: Entity) -> None:
     """Record the frontend's failure for every unknown element or attribute below ``root``."""
     python = format_of(root.location.file, RosVersion.ROS2) is LaunchFormat.PYTHON
-    _check(it, root, {**ATTRIBUTES, **PYTHON_ONLY} if python else ATTRIBUTES)
+    _check(it, root, PYTHON_ATTRIBUTES if python else ATTRIBUTES)
 
 
-def _check(it: Interpretation, root: Entity, attributes: dict[str, frozenset[str]]) -> None:
+def _check(
+    it: Interpretation[Context], root: Entity, attributes: dict[str, frozenset[str]]
+) -> None:
     for entity in root.children:
         allowed = attributes.get(entity.tag)
         if allowed is None:
@@ -100,7 +65,7 @@ def _check(it: Interpretation, root: Entity, attributes: dict[str, frozenset[str
             _nested(it, entity)
 
 
-def _nested(it: Interpretation, entity: Entity) -> None:
+def _nested(it: Interpretation[Context], entity: Entity) -> None:
     """Children of a leaf action (``<param>`` in a node, ``<arg>`` in an include...)."""
     for child in entity.children:
         allowed = ATTRIBUTES.get(child.tag, frozenset())

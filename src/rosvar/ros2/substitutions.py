@@ -14,17 +14,14 @@ import posixpath
 import shlex
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
+from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
 from rosvar.logic.choice import Choice, Fail, combine, ite
 from rosvar.logic.terms import Apply, TermError, concat, register
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.frontends.python.text import PATH_JOIN, UNKNOWN
-
-if TYPE_CHECKING:
-    from rosvar.interpreter.interpretation import Interpretation
 
 Value = Raw | Fail
 
@@ -152,7 +149,7 @@ def command_line(text: str) -> list[Template]:
     return arguments
 
 
-Handler = Callable[["Interpretation", Context, list[Raw]], Choice[Value]]
+Handler = Callable[[Interpretation[Context], Context, list[Raw]], Choice[Value]]
 SUBSTITUTIONS: dict[str, Handler] = {}
 
 
@@ -169,7 +166,7 @@ def substitution(name: str) -> Callable[[Handler], Handler]:
 class Ros2Substituter:
     """Resolves attribute text in a :class:`Context`, for all configurations at once."""
 
-    def __init__(self, host: Interpretation) -> None:
+    def __init__(self, host: Interpretation[Context]) -> None:
         self.host = host
         self.space = host.space
 
@@ -216,7 +213,7 @@ class Ros2Substituter:
 
 
 def _call(
-    handler: Handler, host: Interpretation, context: Context, leaves: Sequence[Value]
+    handler: Handler, host: Interpretation[Context], context: Context, leaves: Sequence[Value]
 ) -> Choice[Value]:
     for leaf in leaves:
         if isinstance(leaf, Fail):
@@ -240,12 +237,12 @@ def _quote(leaves: Sequence[Value]) -> Value:
     return concat(words[1:])  # a term (an unknown value) stays unquoted
 
 
-def _fail(host: Interpretation, message: str, code: str) -> Choice[Value]:
+def _fail(host: Interpretation[Context], message: str, code: str) -> Choice[Value]:
     return Choice.const(host.space, Fail(message, code))
 
 
 @substitution("var")
-def _var(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+def _var(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     if not 1 <= len(args) <= 2 or not isinstance(args[0], str):
         return _fail(host, "$(var) takes a name and an optional default", "substitution-invalid")
     name = args[0]
@@ -264,7 +261,7 @@ def _var(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Valu
 
 
 @substitution("env")
-def _env(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+def _env(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     if not 1 <= len(args) <= 2 or not isinstance(args[0], str):
         return _fail(host, "$(env) takes one or two arguments", "substitution-invalid")
     name, default = args[0], args[1] if len(args) == 2 else None
@@ -282,7 +279,7 @@ def _env(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Valu
     return value.map(pick)
 
 
-def _package(host: Interpretation, args: list[Raw], what: str) -> Choice[Value]:
+def _package(host: Interpretation[Context], args: list[Raw], what: str) -> Choice[Value]:
     if len(args) != 1 or not isinstance(args[0], str):
         return _fail(host, f"$({what}) takes one argument", "substitution-invalid")
     path = host.find_package(args[0])
@@ -292,27 +289,27 @@ def _package(host: Interpretation, args: list[Raw], what: str) -> Choice[Value]:
 
 
 @substitution("find-pkg-share")
-def _share(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+def _share(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     return _package(host, args, "find-pkg-share")  # the source folder stands for the share
 
 
 @substitution("find-pkg-prefix")
-def _prefix(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+def _prefix(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     return _package(host, args, "find-pkg-prefix")
 
 
 @substitution("dirname")
-def _dirname(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+def _dirname(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     return Choice.const(host.space, os.path.dirname(os.path.abspath(context.filename)))
 
 
 @substitution("filename")
-def _filename(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+def _filename(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     return Choice.const(host.space, os.path.abspath(context.filename))
 
 
 @substitution("command")
-def _command(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+def _command(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     """Never run: the value is the text a dry run shows, ``$(command TEXT)`` (as the oracle
     records it), so the launch around it is analysed; a warning says it is not known."""
     if not 1 <= len(args) <= 2:
@@ -324,7 +321,7 @@ def _command(host: Interpretation, context: Context, args: list[Raw]) -> Choice[
 
 
 @substitution("find-exec")
-def _find_exec(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+def _find_exec(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     """The executable's path on the host's ``PATH``, which rosvar does not search (the
     PATH of the machine that launches is not the analysing one's): the value stays the
     text ``$(find-exec NAME)``, and a warning says so."""
@@ -338,7 +335,7 @@ def _find_exec(host: Interpretation, context: Context, args: list[Raw]) -> Choic
 
 
 @substitution(PATH_JOIN)
-def _path_join(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+def _path_join(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     """``PathJoinSubstitution`` (the Python frontend's): ``os.path.join`` of the values."""
     if all(isinstance(arg, str) for arg in args):
         return Choice.const(host.space, posixpath.join(*args))  # type: ignore[arg-type]
@@ -349,7 +346,7 @@ def _path_join(host: Interpretation, context: Context, args: list[Raw]) -> Choic
 
 
 @substitution(UNKNOWN)
-def _unknown(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+def _unknown(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     """A value the Python frontend did not follow (it reported it): unknown, failing only
     where its text is needed, as an argument's value outside its domain."""
     what = args[0] if args and isinstance(args[0], str) else "value"
@@ -364,7 +361,7 @@ register(UNKNOWN, _not_followed)
 
 
 @substitution("eval")
-def _eval(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+def _eval(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     if len(args) != 1 or not isinstance(args[0], str):
         return _fail(host, "$(eval) takes one argument", "substitution-invalid")
     try:
@@ -378,7 +375,7 @@ def _no_arg(name: str) -> str:
 
 
 @substitution("anon")
-def _anon(host: Interpretation, context: Context, args: list[Raw]) -> Choice[Value]:
+def _anon(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     """One name per id, kept as the launch configuration ``anon<id>`` (so groups scope it);
     a counter stands for launch's host, pid and random part, as for ROS 1."""
     if len(args) != 1 or not isinstance(args[0], str):

@@ -17,7 +17,7 @@ from enum import StrEnum
 
 from rosvar.files import read_file
 from rosvar.frontends.xml import is_launch_root
-from rosvar.workspace.ros_version import RosVersion
+from rosvar.ros.version import RosVersion
 
 PACKAGE_FILE = "package.xml"
 LAUNCH_FOLDER = "launch"

@@ -19,9 +19,10 @@ from dataclasses import dataclass, field
 from rosvar.diagnostics import Diagnostic, DiagnosticSink, Location
 from rosvar.files import Confinement, read_file
 from rosvar.frontends.xml import parse_xml_file
+from rosvar.ros.version import RosVersion
 from rosvar.workspace.launch_files import PACKAGE_FILE, LaunchFormat, format_of, launch_format
 from rosvar.workspace.paths import real_path
-from rosvar.workspace.ros_version import RosVersion, majority, package_version
+from rosvar.workspace.ros_version import majority, package_version
 
 EXECUTABLES_FILE = ".executables"
 IGNORE_MARKERS = ("CATKIN_IGNORE", "rospack_nosubdirs", "COLCON_IGNORE", "AMENT_IGNORE")

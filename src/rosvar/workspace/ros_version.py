@@ -10,20 +10,9 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Iterable
-from enum import StrEnum
 
 from rosvar.frontends.entity import Entity
-
-
-class RosVersion(StrEnum):
-    ROS1 = "ros1"
-    ROS2 = "ros2"
-
-    @property
-    def label(self) -> str:
-        """The name people write: ``ROS 1``."""
-        return f"ROS {self.value.removeprefix('ros')}"
-
+from rosvar.ros.version import RosVersion
 
 # Build tools by name; a prefix entry (ending in "_") covers the tool's variants
 # (ament_cmake_auto, ament_cmake_python, ...).

@@ -67,7 +67,7 @@ def test_services_and_actions_have_servers_and_clients(ws: LaunchWorkspace) -> N
     engine = _engine(ws)
     assert _answers(engine, "services[len(self.servers) == 2]") == {"/reset": "second"}
     [result] = engine.run("for s in services where len(s.clients) == 1 return s")
-    assert engine.to_json(result)["kind"] == "service"
+    assert result.element.kind == "service"
     assert _answers(engine, "actions") == {}
 
 

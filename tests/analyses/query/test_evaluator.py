@@ -51,7 +51,7 @@ def satisfied(engine: QueryEngine, file: str, result: Result) -> bool:
     """The result's example configuration (as ``name:=value`` words) satisfies its condition."""
     values: dict[Input, str | None] = {}
     space = engine.space
-    for key, value in engine.to_json(result)["example"].items():  # type: ignore[attr-defined]
+    for key, value in engine.example(result.condition).items():
         _file, name = key.split(":")
         special = value.startswith("<")
         values[ArgInput(file, name)] = (

@@ -21,6 +21,8 @@ import pytest
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.documents.state import state_document
+from rosvar.outputs.web.entries import render
 from rosvar.outputs.web.server import WebServer, make_server
 from rosvar.workspace import discover
 
@@ -88,14 +90,14 @@ class Live:
         with api._lock:
             tab = api._store.get(session)
             assert tab is not None, "no such session"
-            document = tab.session.current().to_json()
+            document = state_document(tab.session.current())
         whole: dict[str, Any] = json.loads(json.dumps(document))
         return whole
 
 
 def configurator(paths: list[Path], package_path: str = "") -> Configurator:
     analysis = Analysis(discover([str(p) for p in paths], ros_package_path=package_path))
-    return Configurator(analysis, extract(analysis, products=True))
+    return Configurator(analysis, extract(analysis, products=True), render=render)
 
 
 @contextmanager

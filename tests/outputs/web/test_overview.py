@@ -15,7 +15,9 @@ from outputs.web.live import REPO, Live, running
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.documents.state import state_document
 from rosvar.outputs.web.delta import patch
+from rosvar.outputs.web.entries import render
 from rosvar.outputs.web.overview import (
     LINK,
     PAGE,
@@ -60,7 +62,9 @@ def test_ros2_package_groups_are_named_as_the_tree_names_packages() -> None:
     holds ``ros2_control_demo_example_2``) and its launch files in ``bringup/launch``: the
     boxes are the packages the tree shows, not one ``bringup`` of every example."""
     analysis = Analysis(discover([str(ROS2_DATA / "ros2_control_demos")]))
-    document = Configurator(analysis, extract(analysis, products=True)).state([]).to_json()
+    document = state_document(
+        Configurator(analysis, extract(analysis, products=True), render=render).state([])
+    )
     tops = {g["label"] for g in summaries(document, Grouping.PACKAGE) if g["parent"] == ""}
     tree = {f["package"] for f in document["features"].values() if f["kind"] == "file"}
     assert "ros2_control_demo_example_2" in tops and "bringup" not in tops
@@ -300,7 +304,7 @@ def wired(ws: LaunchWorkspace) -> Iterator[Live]:
 def wired_configurator(ws: LaunchWorkspace) -> Configurator:
     analysis = ws.analysis()
     found = extract_interfaces(analysis.workspace.packages.values())
-    return Configurator(analysis, extract(analysis, products=True), interfaces=found)
+    return Configurator(analysis, extract(analysis, products=True), interfaces=found, render=render)
 
 
 def expected_links(whole: dict[str, Any], grouping: Grouping) -> dict[str, list[int]]:

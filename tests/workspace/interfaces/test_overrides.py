@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from rosvar.diagnostics import Location
+from rosvar.outputs.documents.interfaces import node_document
 from rosvar.workspace.hints import load_hints
 from rosvar.workspace.interfaces.catalogue import Catalogue
 from rosvar.workspace.interfaces.model import (
@@ -77,7 +78,7 @@ def test_hints_override_and_add(tmp_path: Path) -> None:
     ]
     created = interfaces.find("other", "new_node")
     assert created is not None and created.kind is NodeKind.NODE
-    assert created.to_json()["clients"] == [
+    assert node_document(created)["clients"] == [
         {
             "name": "reset",
             "type": "std_srvs/Empty",

@@ -26,8 +26,8 @@ from typing import Any, Final
 from rosvar.analyses.feature_model.operations import simplest_trigger
 from rosvar.analyses.query.collections import COLLECTIONS, Collection, ElementSet, Queryable
 from rosvar.analyses.query.parser import CONSTANTS, Predicate, Query, QueryError, parse
+from rosvar.arithmetic import BINARY, COMPARISONS
 from rosvar.interpreter.safe_eval.limits import MAX_SEQUENCE
-from rosvar.interpreter.safe_eval.names import _BIN_OPS, _COMPARE_OPS
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
@@ -45,7 +45,7 @@ Compiled = Callable[[Mapping[str, object]], object]
 _ERRORS: Final = (TypeError, ValueError, AttributeError, IndexError, KeyError, ArithmeticError)
 # $(eval)'s arithmetic without ``**`` (a query has no use for powers, and they are costly)
 _BINARY: Final[Mapping[type[ast.operator], Callable[[Any, Any], Any]]] = {
-    op: function for op, function in _BIN_OPS.items() if op is not ast.Pow
+    op: function for op, function in BINARY.items() if op is not ast.Pow
 }
 _FUNCTIONS: Final[Mapping[str, Callable[..., object]]] = {
     "str": str,
@@ -174,21 +174,13 @@ class QueryEngine:
         found = self._groups[key] = list(by_values.values())
         return found
 
-    def to_json(self, result: Result) -> dict[str, object]:
-        """``result`` as ``--json`` shows it (docs/schema/query.schema.json)."""
-        element, condition = result.element, result.condition
+    def example(self, condition: BDD) -> Mapping[str, str]:
+        """The simplest configuration in which ``condition`` holds (remembered: a query's
+        results share a few conditions)."""
         example = self._examples.get(condition)
         if example is None:
             example = self._examples[condition] = simplest_trigger(self.space, condition)
-        location = element.location
-        return {
-            "kind": str(element.kind),
-            "name": element.name,
-            "launch_file": element.file,
-            "condition": self.space.describe(condition),
-            "example": dict(example),
-            **({"file": location.file, "line": location.line} if location is not None else {}),
-        }
+        return example
 
     def satisfiable(self, condition: BDD) -> bool:
         known = self._satisfiable.get(condition)
@@ -358,7 +350,7 @@ def _compile(node: ast.expr) -> Compiled:
 def _compile_compare(node: ast.Compare) -> Compiled:
     first = _compile(node.left)
     rest = [
-        (_COMPARE_OPS[type(op)], _compile(c))
+        (COMPARISONS[type(op)], _compile(c))
         for op, c in zip(node.ops, node.comparators, strict=True)
     ]
 

@@ -19,9 +19,10 @@ import re
 from dataclasses import dataclass
 from typing import Final
 
+from rosvar.arithmetic import COMPARISONS
 from rosvar.interpreter.safe_eval.checking import _parse
 from rosvar.interpreter.safe_eval.errors import EvalRefused
-from rosvar.interpreter.safe_eval.names import _COMPARE_OPS, _REFUSED_NODES
+from rosvar.interpreter.safe_eval.names import REFUSED_NODES
 
 FUNCTIONS: Final = frozenset({"len", "str", "int", "float", "bool", "abs", "min", "max"})
 STR_METHODS: Final = frozenset(
@@ -167,7 +168,7 @@ class _Checker:
                 raise self.refuse(f"operator {type(node.op).__name__} is not allowed", node)
             self.visit(node.operand)
         elif isinstance(node, ast.Compare):
-            if not all(type(op) in _COMPARE_OPS for op in node.ops):
+            if not all(type(op) in COMPARISONS for op in node.ops):
                 raise self.refuse("comparison not allowed", node)
             for operand in (node.left, *node.comparators):
                 self.visit(operand)
@@ -209,4 +210,4 @@ class _Checker:
     def why(node: ast.expr) -> str:
         if isinstance(node, _COMPREHENSIONS):
             return "comprehensions are not allowed (use: for X in COLLECTION where ... return X)"
-        return _REFUSED_NODES.get(type(node), f"{type(node).__name__} expressions are not allowed")
+        return REFUSED_NODES.get(type(node), f"{type(node).__name__} expressions are not allowed")

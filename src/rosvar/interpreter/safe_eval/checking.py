@@ -9,18 +9,18 @@ import re
 import warnings
 from typing import Final, NoReturn, cast
 
+from rosvar.arithmetic import BINARY
 from rosvar.interpreter.safe_eval.errors import EvalRefused
 from rosvar.interpreter.safe_eval.limits import MAX_NESTING, nesting
 from rosvar.interpreter.safe_eval.names import (
-    _BIN_OPS,
     _BOOL_NAMES,
     _CALLABLE_NAMES,
     _CASE_METHODS,
     _CONVERSION_FUNCTIONS,
     _LITERAL_TYPES,
     _NOT_ARG_NAMES,
-    _REFUSED_NODES,
     _STR_METHODS,
+    REFUSED_NODES,
 )
 
 _DUNDER_MESSAGE: Final = "$(eval ...) may not contain double underscore expressions"
@@ -123,7 +123,7 @@ class _Analyser:
         elif isinstance(node, ast.UnaryOp):
             self.visit(node.operand, bound)
         elif isinstance(node, ast.BinOp):
-            if type(node.op) not in _BIN_OPS:
+            if type(node.op) not in BINARY:
                 self._refuse(f"the {type(node.op).__name__} operator is not allowed", node)
             self.visit(node.left, bound)
             self.visit(node.right, bound)
@@ -164,7 +164,7 @@ class _Analyser:
                 self._source.attr_col(node),
             )
         else:
-            message = _REFUSED_NODES.get(type(node), f"{type(node).__name__} is not allowed")
+            message = REFUSED_NODES.get(type(node), f"{type(node).__name__} is not allowed")
             self._refuse(message, node)
 
     def _visit_call(self, node: ast.Call, bound: frozenset[str] | None) -> None:

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import ast
+import functools
 import itertools
 import operator
 from collections import ChainMap
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import Any, NoReturn, TypeVar, cast
 
+from rosvar.arithmetic import BINARY, COMPARISONS
 from rosvar.interpreter.safe_eval.checking import _Source
 from rosvar.interpreter.safe_eval.errors import _UNPLACED, EvalFailed, EvalRefused
 from rosvar.interpreter.safe_eval.limits import (
@@ -24,11 +26,9 @@ from rosvar.interpreter.safe_eval.limits import (
     _Sizer,
 )
 from rosvar.interpreter.safe_eval.names import (
-    _BIN_OPS,
     _BOOL_NAMES,
     _BUILTIN_FUNCTIONS,
     _CHEAP_FUNCTIONS,
-    _COMPARE_OPS,
     _CONSUMING_FUNCTIONS,
     _CONTAINERS,
     _END,
@@ -42,7 +42,6 @@ from rosvar.interpreter.safe_eval.names import (
     _UNARY_OPS,
     EvalEnvironment,
 )
-from rosvar.ros1.typed_values import convert_scalar
 
 _T = TypeVar("_T")
 
@@ -58,13 +57,24 @@ def _lookup_or_none(lookup: Callable[[str], str], name: str) -> str | None:
         return None
 
 
+@functools.lru_cache(maxsize=65536)
 def convert_auto(value: str) -> bool | int | float | str:
     """roslaunch's ``convert_value(value, 'auto')``: how eval sees an arg's raw string.
 
     Replicated statement by statement because the quirks matter: ``'1_0'`` stays a string,
     ``'1_0.5'`` becomes ``10.5``, ``' 7 '`` becomes ``7``, ``'TRUE'`` becomes ``True``.
+    (Cached: the same texts recur in every includer, and the results are immutable.)
     """
-    return cast(bool | int | float | str, convert_scalar(value, "auto"))
+    try:
+        if "." in value:
+            return float(value)
+        if "_" not in value:
+            return int(value)
+    except ValueError:
+        pass
+    if value.lower() in ("true", "false"):
+        return value.lower() == "true"
+    return value
 
 
 class _Function(FunctionValue):
@@ -385,7 +395,7 @@ class _Interpreter:
             refusal = _binop_refusal(node.op, left, right, self._sizer)
             if refusal is not None:
                 raise EvalRefused(refusal, self._col(node))
-            return self._guarded(node, _BIN_OPS[type(node.op)], left, right)
+            return self._guarded(node, BINARY[type(node.op)], left, right)
         if isinstance(node, ast.Compare):
             return self._compare(node, scope)
         if isinstance(node, ast.IfExp):
@@ -442,7 +452,7 @@ class _Interpreter:
                     operand = self._charged_iteration(left, right)
             else:
                 self._guarded(node, self._charge_size, self._comparison_cost(op, left, right))
-            result = self._guarded(node, _COMPARE_OPS[type(op)], left, operand)
+            result = self._guarded(node, COMPARISONS[type(op)], left, operand)
             if not result:
                 return result
             left = right

@@ -11,8 +11,6 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Final
 
-from rosvar.arithmetic import ARITHMETIC
-
 
 @dataclass(frozen=True)
 class EvalEnvironment:
@@ -64,15 +62,6 @@ _LITERAL_TYPES: Final = (str, int, float, bool, type(None))
 _CONVERSION_FUNCTIONS: Final = frozenset({"str", "int", "float"})
 _CASE_METHODS: Final = frozenset({"lower", "upper", "strip", "lstrip", "rstrip"})
 
-_BIN_OPS: Final[Mapping[type[ast.operator], Callable[[Any, Any], Any]]] = {
-    **ARITHMETIC,
-    ast.Pow: operator.pow,
-    ast.LShift: operator.lshift,
-    ast.RShift: operator.rshift,
-    ast.BitOr: operator.or_,
-    ast.BitXor: operator.xor,
-    ast.BitAnd: operator.and_,
-}
 _UNARY_OPS: Final[Mapping[type[ast.unaryop], Callable[[Any], Any]]] = {
     ast.Not: operator.not_,
     ast.USub: operator.neg,
@@ -81,27 +70,7 @@ _UNARY_OPS: Final[Mapping[type[ast.unaryop], Callable[[Any], Any]]] = {
 }
 
 
-def _contains(item: Any, container: Any) -> bool:
-    return item in container
-
-
-def _not_contains(item: Any, container: Any) -> bool:
-    return item not in container
-
-
-_COMPARE_OPS: Final[Mapping[type[ast.cmpop], Callable[[Any, Any], Any]]] = {
-    ast.Eq: operator.eq,
-    ast.NotEq: operator.ne,
-    ast.Lt: operator.lt,
-    ast.LtE: operator.le,
-    ast.Gt: operator.gt,
-    ast.GtE: operator.ge,
-    ast.Is: operator.is_,
-    ast.IsNot: operator.is_not,
-    ast.In: _contains,
-    ast.NotIn: _not_contains,
-}
-_REFUSED_NODES: Final[Mapping[type[ast.AST], str]] = {
+REFUSED_NODES: Final[Mapping[type[ast.AST], str]] = {
     ast.Lambda: "lambda expressions are not allowed",
     ast.NamedExpr: "assignment expressions (:=) are not allowed",
     ast.Starred: "starred unpacking (*) is not allowed",

@@ -16,6 +16,7 @@ FAIL_LEVELS = {Severity.NOTE: 0, Severity.WARNING: 1, Severity.ERROR: 2}
 
 def cmd_check(options: argparse.Namespace) -> int:
     from rosvar.analyses.checks import check_models
+    from rosvar.outputs.documents.findings import finding_document
     from rosvar.outputs.sarif import sarif
 
     analysis = analysis_of(options)
@@ -27,11 +28,11 @@ def cmd_check(options: argparse.Namespace) -> int:
     if options.format == "sarif":
         print_json(sarif(findings, analysis.space))
     elif options.format == "json":
-        print_json({"findings": [f.to_json(analysis.space) for f in findings]})
+        print_json({"findings": [finding_document(f, analysis.space) for f in findings]})
     else:
         for finding in findings:
             where, *related = finding.locations
-            document = finding.to_json(analysis.space)
+            document = finding_document(finding, analysis.space)
             example = ", ".join(f"{k}={v}" for k, v in document["example"].items())  # type: ignore[attr-defined]
             print(
                 f"{shown_location(where)}: {finding.severity.value}[{finding.check}]: "

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, cast
 from rosvar.outputs.commands.exit_codes import EXIT_FAILS, EXIT_OK, EXIT_USAGE
 from rosvar.outputs.commands.loading import analysis_with_env, interfaces_of
 from rosvar.outputs.commands.terminal import building, print_json, progress, relative_location
-from rosvar.workspace.ros_version import RosVersion
+from rosvar.ros.version import RosVersion
 
 if TYPE_CHECKING:
     from rosvar.configuration.engine import ConfigurationState
@@ -27,6 +27,8 @@ def cmd_configure(options: argparse.Namespace) -> int:
     from rosvar.analyses.feature_model.extraction import extract
     from rosvar.configuration.choices import ChoiceError, UserChoice
     from rosvar.configuration.engine import Configurator
+    from rosvar.outputs.documents.state import state_document
+    from rosvar.outputs.web.entries import render
 
     loaded = analysis_with_env(options)
     if isinstance(loaded, int):
@@ -37,7 +39,12 @@ def cmd_configure(options: argparse.Namespace) -> int:
         model = extract(analysis, progress=progress, products=True)
         interfaces = interfaces_of(analysis.workspace, options)
         configurator = Configurator(
-            analysis, model, env, progress=building(tty_only=True), interfaces=interfaces
+            analysis,
+            model,
+            env,
+            progress=building(tty_only=True),
+            interfaces=interfaces,
+            render=render,
         )
         if options.finish:
             choices += configurator.completion(choices)
@@ -46,7 +53,7 @@ def cmd_configure(options: argparse.Namespace) -> int:
         print(f"rosvar: {error}", file=sys.stderr)
         return EXIT_USAGE
     if options.json:
-        print_json(state.to_json())
+        print_json(state_document(state))
     else:
         _print_state(state, analysis.workspace.ros_version)
     return EXIT_FAILS if state.refused or state.launches is False else EXIT_OK

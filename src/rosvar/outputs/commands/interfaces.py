@@ -13,6 +13,8 @@ from rosvar.outputs.commands.terminal import print_json
 
 
 def cmd_interfaces(options: argparse.Namespace) -> int:
+    from rosvar.outputs.documents.interfaces import interfaces_document
+
     roots = [os.path.abspath(path) for path in options.paths]
     workspace = workspace_of(options.paths, options)
     packages = [
@@ -22,7 +24,7 @@ def cmd_interfaces(options: argparse.Namespace) -> int:
     ]
     interfaces = interfaces_of(workspace, options, packages)
     if options.json:
-        print_json(interfaces.to_json())
+        print_json(interfaces_document(interfaces))
         return EXIT_OK
     for node in interfaces.listed():
         print(f"{node.package} {node.executable} ({node.kind})")

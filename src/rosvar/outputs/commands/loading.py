@@ -12,7 +12,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from rosvar.outputs.commands.exit_codes import EXIT_INPUT, EXIT_USAGE
-from rosvar.workspace.ros_version import RosVersion
+from rosvar.ros.version import RosVersion
 
 if TYPE_CHECKING:
     from rosvar.interpreter.workspace_models import Analysis

@@ -22,13 +22,14 @@ def cmd_metrics(options: argparse.Namespace) -> int:
     ``--deps`` and ``ROS_PACKAGE_PATH``, not from the other PATHs)."""
     from rosvar.analyses.feature_model.extraction import extract
     from rosvar.analyses.metrics import compute
+    from rosvar.outputs.documents.metrics import metrics_document
 
     rows: dict[str, dict[str, int]] = {}
     for path in options.paths:
         analysis = analysis_of(options, paths=[path])
         if analysis is None:
             return EXIT_INPUT
-        rows[path] = compute(analysis, extract(analysis, progress=progress)).to_json()
+        rows[path] = metrics_document(compute(analysis, extract(analysis, progress=progress)))
     if options.json:
         print_json(next(iter(rows.values())) if len(rows) == 1 else rows)
         return EXIT_OK

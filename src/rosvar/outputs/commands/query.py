@@ -20,6 +20,7 @@ def cmd_query(options: argparse.Namespace) -> int:
     from rosvar.analyses.query.channels import channel_collections
     from rosvar.analyses.query.evaluator import QueryEngine
     from rosvar.analyses.query.parser import QueryError
+    from rosvar.outputs.documents.query import result_document
 
     words = [*options.words, *options.mappings]
     args = command_line_mappings([w for w in words if re.match(MAPPING, w)])
@@ -39,7 +40,7 @@ def cmd_query(options: argparse.Namespace) -> int:
     except QueryError as error:
         print(f"rosvar: {error}\n  {expression}\n  {' ' * error.col}^", file=sys.stderr)
         return EXIT_USAGE
-    documents = [engine.to_json(result) for result in results]
+    documents = [result_document(engine, result) for result in results]
     if options.json:
         print_json({"query": expression, "results": documents})
         return EXIT_OK

@@ -18,7 +18,7 @@ from rosvar.outputs.commands.loading import (
 )
 from rosvar.outputs.commands.terminal import print_json, shown_location
 from rosvar.ros.names import command_line_mappings
-from rosvar.workspace.ros_version import RosVersion
+from rosvar.ros.version import RosVersion
 
 if TYPE_CHECKING:
     from rosvar.workspace import Workspace

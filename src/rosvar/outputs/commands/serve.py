@@ -15,6 +15,7 @@ from rosvar.outputs.commands.terminal import building, progress
 def cmd_serve(options: argparse.Namespace) -> int:
     from rosvar.analyses.feature_model.extraction import extract
     from rosvar.configuration.engine import Configurator
+    from rosvar.outputs.web.entries import render
     from rosvar.outputs.web.server import make_server
 
     loaded = analysis_with_env(options)
@@ -27,7 +28,12 @@ def cmd_serve(options: argparse.Namespace) -> int:
     model = extract(analysis, progress=progress, products=True)
     interfaces = interfaces_of(analysis.workspace, options)
     configurator = Configurator(
-        analysis, model, env, progress=building(tty_only=False), interfaces=interfaces
+        analysis,
+        model,
+        env,
+        progress=building(tty_only=False),
+        interfaces=interfaces,
+        render=render,
     )
     try:
         server = make_server(configurator, options.host, options.port)

@@ -16,6 +16,7 @@ from rosvar.analyses.feature_model.operations import (
     core_and_dead,
     count_configurations,
 )
+from rosvar.outputs.documents.diagnostics import diagnostic_document
 from rosvar.outputs.exports._common import Tree, Triggers, conflicts
 from rosvar.outputs.exports._formula import LOGIC_OPERATORS, exported, render
 
@@ -73,7 +74,7 @@ def document(model: FeatureModel) -> dict[str, Any]:
             for number, c in enumerate(model.constraints)
         ],
         "configurations": count_configurations(model),
-        "diagnostics": [d.to_json() for d in model.diagnostics],
+        "diagnostics": [diagnostic_document(d) for d in model.diagnostics],
         "core": verdicts[VerdictKind.CORE],
         "dead": verdicts[VerdictKind.DEAD],
         "conflicts": [

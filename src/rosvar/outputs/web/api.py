@@ -25,6 +25,7 @@ from rosvar.analyses.query.parser import QueryError
 from rosvar.configuration.choices import Action, ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.session import Session
+from rosvar.outputs.documents.state import state_document
 from rosvar.outputs.web.inspection import Inspector
 from rosvar.outputs.web.overview import Grouping, MemberKind, catalog, compact, members
 from rosvar.outputs.web.sessions import DEFAULT_CAPACITY, SessionStore, Tab
@@ -160,7 +161,7 @@ class Api:
             raise ApiError(HTTPStatus.BAD_REQUEST, "the session is not in overview mode")
         group = _text(body, "group")
         kind = MemberKind.NODES if "kind" not in body else _choice_of(body, "kind", MemberKind)
-        document = tab.session.current().to_json()
+        document = state_document(tab.session.current())
         return members(document, tab.grouping, group, kind, _page(body))
 
     def _state(self, query: Query, body: Body) -> Reply:
@@ -246,7 +247,7 @@ class Api:
 
     def _reply(self, key: str, tab: Tab, state: ConfigurationState, known: int | None) -> Reply:
         document = {
-            **state.to_json(),
+            **state_document(state),
             "can_undo": tab.session.can_undo,
             "can_redo": tab.session.can_redo,
         }

@@ -9,7 +9,7 @@ the user opens it, a page at a time. The feature tree goes compactly too: its fi
 (ids, kinds, parents) once, from :func:`catalog`, and each state's selections as one
 character per feature.
 
-Everything here reads the state document (``ConfigurationState.to_json``), so what is
+Everything here reads the state document (``outputs.documents.state``), so what is
 summarised is exactly what the whole document would carry.
 """
 

@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
+from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import ArgDecl, Raw
 from rosvar.logic.choice import Choice, ite
+from rosvar.ros1.dialect import tag
 from rosvar.ros1.scope import MISSING, ArgValue, Scope
 
 ATTRIBUTES = ("name", "value", "default", "doc")
@@ -13,7 +14,7 @@ ATTRIBUTES = ("name", "value", "default", "doc")
 
 @tag("arg")
 @processed
-def handle_arg(it: Interpretation, entity: Entity, scope: Scope) -> None:
+def handle_arg(it: Interpretation[Scope], entity: Entity, scope: Scope) -> None:
     it.check_attributes(entity, ATTRIBUTES)
     names = it.required(entity, "name", scope)
     if names is None:
@@ -49,7 +50,7 @@ def handle_arg(it: Interpretation, entity: Entity, scope: Scope) -> None:
 
 
 def declare(
-    it: Interpretation,
+    it: Interpretation[Scope],
     scope: Scope,
     name: str,
     value: Choice[Raw] | None,

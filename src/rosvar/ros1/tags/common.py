@@ -3,14 +3,14 @@
 from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
+from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import ClearParamDecl, Raw
 from rosvar.logic.bdd import BDD
-from rosvar.logic.choice import Choice, Fail
+from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import PREDICATES, register_predicate
 from rosvar.logic.terms import Apply, Hole
 from rosvar.ros1.scope import Scope
-from rosvar.ros1.typed_values import bool_attribute
 
 # Tests on attribute text; on a term they become predicate atoms decided per configuration.
 register_predicate("empty", lambda text: text == "", "{} is empty")
@@ -18,7 +18,7 @@ register_predicate("bool-true", lambda text: text.lower() == "true", "{} is 'tru
 register_predicate("bool-false", lambda text: text.lower() == "false", "{} is 'false'")
 
 
-def where_text(it: Interpretation, value: Choice[object], test: str) -> BDD:
+def where_text(it: Interpretation[Scope], value: Choice[object], test: str) -> BDD:
     """Where ``value`` is text passing the predicate ``test``: decided now for strings, later
     (as a predicate atom) for terms."""
     check = PREDICATES[test][0]
@@ -32,26 +32,8 @@ def where_text(it: Interpretation, value: Choice[object], test: str) -> BDD:
     return result
 
 
-def bool_value(
-    it: Interpretation, value: Choice[Raw] | None, default: bool, label: str
-) -> Choice[bool | Raw]:
-    """``_bool_attr`` per branch; terms stay raw and are checked on resolution."""
-    if value is None:
-        return Choice.const(it.space, default)
-
-    def convert(leaf: Raw) -> bool | Raw | Fail:
-        if not isinstance(leaf, str):
-            return leaf
-        try:
-            return bool_attribute(leaf, default, label)
-        except ValueError as error:
-            return Fail(str(error), "bool-invalid")
-
-    return it.strip(value.map(convert), label)
-
-
 def namespace_scope(
-    it: Interpretation,
+    it: Interpretation[Scope],
     tag_name: str,
     entity: Entity,
     scope: Scope,
@@ -97,7 +79,7 @@ def namespace_scope(
 
 
 def _clear(
-    it: Interpretation,
+    it: Interpretation[Scope],
     tag_name: str,
     child: Scope,
     ns: Choice[Raw] | None,

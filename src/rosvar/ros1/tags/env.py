@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
+from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import EnvSetting
+from rosvar.ros1.dialect import tag
 from rosvar.ros1.scope import Scope
 
 ATTRIBUTES = ("name", "value")
@@ -12,7 +13,7 @@ ATTRIBUTES = ("name", "value")
 
 @tag("env")
 @processed
-def handle_env(it: Interpretation, entity: Entity, scope: Scope) -> None:
+def handle_env(it: Interpretation[Scope], entity: Entity, scope: Scope) -> None:
     it.check_attributes(entity, ATTRIBUTES)
     name = it.required(entity, "name", scope)
     value = it.required(entity, "value", scope)

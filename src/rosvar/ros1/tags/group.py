@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, processed, tag
+from rosvar.interpreter.interpretation import Interpretation, processed
+from rosvar.ros1.dialect import tag
 from rosvar.ros1.scope import Scope
 from rosvar.ros1.tags.common import namespace_scope
 
@@ -12,7 +13,7 @@ ATTRIBUTES = ("ns", "clear_params")
 
 @tag("group")
 @processed
-def handle_group(it: Interpretation, entity: Entity, scope: Scope) -> None:
+def handle_group(it: Interpretation[Scope], entity: Entity, scope: Scope) -> None:
     it.check_attributes(entity, ATTRIBUTES)
     child = namespace_scope(it, "group", entity, scope)
     child.params = list(child.params)

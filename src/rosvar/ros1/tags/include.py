@@ -6,20 +6,21 @@ from typing import cast
 
 from rosvar.files import FileRefused
 from rosvar.frontends.entity import Entity
+from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import (
     MAX_INCLUDE_DEPTH,
     MAX_INCLUDES,
     Interpretation,
     processed,
     split,
-    tag,
 )
 from rosvar.interpreter.model import IncludeDecl, Raw
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
+from rosvar.ros1.dialect import tag
 from rosvar.ros1.scope import MISSING, Scope
 from rosvar.ros1.tags.arg import declare, handle_arg
-from rosvar.ros1.tags.common import bool_value, namespace_scope
+from rosvar.ros1.tags.common import namespace_scope
 from rosvar.ros1.tags.env import handle_env
 from rosvar.workspace.paths import real_path
 
@@ -28,7 +29,7 @@ ATTRIBUTES = ("file", "ns", "clear_params", "pass_all_args")
 
 @tag("include")
 @processed
-def handle_include(it: Interpretation, entity: Entity, scope: Scope) -> None:
+def handle_include(it: Interpretation[Scope], entity: Entity, scope: Scope) -> None:
     it.check_attributes(entity, ATTRIBUTES)
     files = it.required(entity, "file", scope)
     if files is None:
@@ -40,7 +41,9 @@ def handle_include(it: Interpretation, entity: Entity, scope: Scope) -> None:
                 _include(it, entity, scope, file, flag is True)
 
 
-def _include(it: Interpretation, entity: Entity, scope: Scope, file: Raw, pass_all: bool) -> None:
+def _include(
+    it: Interpretation[Scope], entity: Entity, scope: Scope, file: Raw, pass_all: bool
+) -> None:
     if not isinstance(file, str):
         it.warn("include-unknown", f"included file {file} is only known per configuration")
         _not_followed(it, entity, scope, file)
@@ -113,7 +116,7 @@ def _include(it: Interpretation, entity: Entity, scope: Scope, file: Raw, pass_a
             it.fail(unused, "include-arg-unused", f"unused args [{name}] for include of [{file}]")
 
 
-def _not_followed(it: Interpretation, entity: Entity, scope: Scope, file: Raw) -> None:
+def _not_followed(it: Interpretation[Scope], entity: Entity, scope: Scope, file: Raw) -> None:
     """Record an include that is not interpreted: ``resolve`` fails where it is active."""
     it.model.includes.append(
         IncludeDecl(it.pc, entity.location, Choice.const(it.space, file), scope.ns, False)

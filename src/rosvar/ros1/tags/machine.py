@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
+from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import MachineDecl
 from rosvar.logic.choice import Choice, ite
+from rosvar.ros1.dialect import tag
 from rosvar.ros1.scope import Scope
 
 ATTRIBUTES = ("name", "address", "env-loader", "ssh-port", "user", "password", "default", "timeout")
@@ -13,7 +14,7 @@ ATTRIBUTES = ("name", "address", "env-loader", "ssh-port", "user", "password", "
 
 @tag("machine")
 @processed
-def handle_machine(it: Interpretation, entity: Entity, scope: Scope) -> None:
+def handle_machine(it: Interpretation[Scope], entity: Entity, scope: Scope) -> None:
     it.check_attributes(entity, ATTRIBUTES)
     name = it.required(entity, "name", scope)
     address = it.required(entity, "address", scope)

@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, processed, tag
+from rosvar.interpreter.interpretation import Interpretation, processed
 from rosvar.interpreter.model import EnvSetting, NodeDecl, ParamDecl, Raw, Remap
 from rosvar.logic.choice import Choice, combine
 from rosvar.ros.names import is_legal_name
+from rosvar.ros1.dialect import tag
 from rosvar.ros1.scope import Scope
 from rosvar.ros1.tags.common import namespace_scope
 from rosvar.ros1.tags.env import handle_env
@@ -44,17 +45,17 @@ OPTIONAL = (
 
 
 @tag("node")
-def handle_node(it: Interpretation, entity: Entity, scope: Scope) -> None:
+def handle_node(it: Interpretation[Scope], entity: Entity, scope: Scope) -> None:
     _node(it, entity, scope, is_test=False)
 
 
 @tag("test")
-def handle_test(it: Interpretation, entity: Entity, scope: Scope) -> None:
+def handle_test(it: Interpretation[Scope], entity: Entity, scope: Scope) -> None:
     _node(it, entity, scope, is_test=True)
 
 
 @processed
-def _node(it: Interpretation, entity: Entity, scope: Scope, is_test: bool) -> None:
+def _node(it: Interpretation[Scope], entity: Entity, scope: Scope, is_test: bool) -> None:
     fields: dict[str, Choice[Raw | None]] = {}
     if is_test:
         it.check_attributes(entity, TEST_ATTRIBUTES)

@@ -4,11 +4,12 @@ from __future__ import annotations
 
 from rosvar.files import Confinement, FileCode, FileRefused, read_file
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
+from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import Binary, DeferredValue, ParamDecl, ParamSource, Raw
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.terms import Apply, TermError, register
 from rosvar.ros import names
+from rosvar.ros1.dialect import tag
 from rosvar.ros1.rosparam_yaml import load_yaml
 from rosvar.ros1.scope import PrivateParam, Scope
 from rosvar.ros1.tags.rosparam import read_text
@@ -45,12 +46,12 @@ register("unread", _unread)
 
 
 def _value_choice(
-    it: Interpretation, kind: ParamSource, raw: Choice[Raw], ptype: str
+    it: Interpretation[Scope], kind: ParamSource, raw: Choice[Raw], ptype: str
 ) -> Choice[object]:
     def convert(leaf: Raw) -> object:
         if not isinstance(leaf, str):
             return (
-                DeferredValue(leaf, ptype, kind)
+                DeferredValue(leaf, ptype, kind, param_value)
                 if kind in (ParamSource.VALUE, ParamSource.COMMAND)
                 else Fail(
                     f"{kind} path {leaf} is only known per configuration", "param-unknown-file"
@@ -70,7 +71,7 @@ def _value_choice(
 
 
 def add_private(
-    it: Interpretation, params: list[PrivateParam], key: str, value: Choice[object]
+    it: Interpretation[Scope], params: list[PrivateParam], key: str, value: Choice[object]
 ) -> None:
     """``LoaderContext.add_param``: a later ``~key`` hides an earlier one."""
     kept = []
@@ -85,7 +86,9 @@ def add_private(
 
 
 @processed
-def handle_param(it: Interpretation, entity: Entity, scope: Scope, force_local: bool) -> None:
+def handle_param(
+    it: Interpretation[Scope], entity: Entity, scope: Scope, force_local: bool
+) -> None:
     it.check_attributes(entity, ATTRIBUTES)
     ptype = (entity.get("type") or "auto").lower().strip()
     attributes = entity.attributes
@@ -130,5 +133,5 @@ def handle_param(it: Interpretation, entity: Entity, scope: Scope, force_local: 
 
 
 @tag("param")
-def handle_param_tag(it: Interpretation, entity: Entity, scope: Scope) -> None:
+def handle_param_tag(it: Interpretation[Scope], entity: Entity, scope: Scope) -> None:
     handle_param(it, entity, scope, force_local=False)

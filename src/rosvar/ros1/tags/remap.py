@@ -5,17 +5,20 @@ from __future__ import annotations
 import functools
 
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
+from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import Raw, Remap
 from rosvar.logic.terms import Apply
 from rosvar.ros import names
+from rosvar.ros1.dialect import tag
 from rosvar.ros1.scope import Scope
 
 ATTRIBUTES = ("from", "to")
 
 
 @processed
-def add_remaps(it: Interpretation, entity: Entity, scope: Scope, remaps: list[Remap]) -> None:
+def add_remaps(
+    it: Interpretation[Scope], entity: Entity, scope: Scope, remaps: list[Remap]
+) -> None:
     """Add to ``remaps`` what a ``<remap>`` adds on the current path (``_remap_tag`` +
     ``add_remap``): a scope's own, or a node's."""
     it.check_attributes(entity, ATTRIBUTES)
@@ -42,7 +45,7 @@ def _canonical_text(text: str) -> tuple[str, bool]:
     return canonical, canonical == "" or names.is_legal_name(canonical)
 
 
-def _canonical_pair(it: Interpretation, source: Raw, target: Raw) -> tuple[Raw, Raw] | None:
+def _canonical_pair(it: Interpretation[Scope], source: Raw, target: Raw) -> tuple[Raw, Raw] | None:
     pair: list[Raw] = []
     for label, value in (("from", source), ("to", target)):
         if not isinstance(value, str):
@@ -77,5 +80,5 @@ def add_remap(remaps: list[Remap], new: Remap) -> None:
 
 
 @tag("remap")
-def handle_remap(it: Interpretation, entity: Entity, scope: Scope) -> None:
+def handle_remap(it: Interpretation[Scope], entity: Entity, scope: Scope) -> None:
     add_remaps(it, entity, scope, scope.remaps)

@@ -9,13 +9,14 @@ import stat
 
 from rosvar.files import Confinement, FileCode, FileRefused, read_file
 from rosvar.frontends.entity import Entity
-from rosvar.interpreter.interpretation import Interpretation, processed, split, tag
+from rosvar.interpreter.booleans import bool_value
+from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import ParamDecl, Raw, YamlDecl
 from rosvar.logic.choice import Choice
 from rosvar.ros import names
+from rosvar.ros1.dialect import tag
 from rosvar.ros1.rosparam_yaml import YamlInvalid, load_yaml
 from rosvar.ros1.scope import Scope
-from rosvar.ros1.tags.common import bool_value
 
 ATTRIBUTES = ("command", "ns", "file", "param", "subst_value")
 
@@ -57,7 +58,7 @@ def _parsed_yaml(text: str) -> object:
 
 @tag("rosparam")
 @processed
-def handle_rosparam(it: Interpretation, entity: Entity, scope: Scope) -> None:
+def handle_rosparam(it: Interpretation[Scope], entity: Entity, scope: Scope) -> None:
     it.check_attributes(entity, ATTRIBUTES)
     values = {a: it.attr(entity, a, scope) for a in ATTRIBUTES}
     subst = bool_value(it, values["subst_value"], False, "subst_value")
@@ -66,14 +67,14 @@ def handle_rosparam(it: Interpretation, entity: Entity, scope: Scope) -> None:
             _load(it, entity, scope, values, substitute is True)
 
 
-def _one(it: Interpretation, value: Choice[Raw] | None) -> list[tuple[object, Raw | None]]:
+def _one(it: Interpretation[Scope], value: Choice[Raw] | None) -> list[tuple[object, Raw | None]]:
     if value is None:
         return [(it.space.true, None)]
     return list(split(it, value))
 
 
 def _load(
-    it: Interpretation,
+    it: Interpretation[Scope],
     entity: Entity,
     scope: Scope,
     values: dict[str, Choice[Raw] | None],
@@ -171,7 +172,7 @@ def load_rosparam(
 
 
 def _load_one(
-    it: Interpretation,
+    it: Interpretation[Scope],
     entity: Entity,
     scope: Scope,
     command: Raw,
@@ -210,7 +211,7 @@ def _load_one(
 
 
 def _emit(
-    it: Interpretation,
+    it: Interpretation[Scope],
     entity: Entity,
     scope_ns: Raw,
     command: Raw,
@@ -222,7 +223,9 @@ def _emit(
     parts = (scope_ns, command, ns, file, param, body)
     if not all(isinstance(part, str) or part is None for part in parts):
         it.model.params.append(
-            YamlDecl(it.pc, entity.location, scope_ns, command, ns, file, param, body)
+            YamlDecl(
+                it.pc, entity.location, scope_ns, command, ns, file, param, body, load_rosparam
+            )
         )
         return
     try:
@@ -253,7 +256,7 @@ def _emit(
         )
 
 
-def _not_read(it: Interpretation, file: str, code: FileCode, message: str) -> None:
+def _not_read(it: Interpretation[Scope], file: str, code: FileCode, message: str) -> None:
     """A file rosvar refuses to read: outside the workspace, its parameters are unknown
     (a warning, as for a file only known per configuration); otherwise roslaunch could
     not load it either (an error event)."""

@@ -18,7 +18,7 @@ from rosvar.ros2.tags.common import assign
 
 @tag("arg")
 @processed
-def arg(it: Interpretation, entity: Entity, context: Context) -> None:
+def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     name = entity.get("name")
     if not name:
         it.fail(it.space.true, "attribute-missing", "<arg> tag is missing required 'name'")
@@ -62,7 +62,7 @@ def arg(it: Interpretation, entity: Entity, context: Context) -> None:
 
 
 def _given(
-    it: Interpretation, context: Context, name: str, old: Configuration | None
+    it: Interpretation[Context], context: Context, name: str, old: Configuration | None
 ) -> Configuration | None:
     """An included file's argument the entry file does not declare: ``ros2 launch`` set
     ``name:=value``, if given, before loading, so where nothing set it since, the declaration
@@ -80,7 +80,7 @@ def _given(
 
 @tag("let")
 @processed
-def let(it: Interpretation, entity: Entity, context: Context) -> None:
+def let(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     name = it.required(entity, "name", context)
     value = it.required(entity, "value", context)
     if name is None or value is None:

@@ -5,10 +5,11 @@ from __future__ import annotations
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
 from rosvar.logic.choice import Choice, ite
+from rosvar.ros2.context import Context
 
 
 def assign(
-    it: Interpretation, old: Choice[Raw | None] | None, new: Choice[Raw | None]
+    it: Interpretation[Context], old: Choice[Raw | None] | None, new: Choice[Raw | None]
 ) -> Choice[Raw | None]:
     """``new`` on the current path, ``old`` (None where absent) elsewhere."""
     before = old if old is not None else Choice.const(it.space, None)

@@ -8,23 +8,25 @@ the ``<keep>`` configurations only.
 from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
+from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import Raw
 from rosvar.logic.choice import Choice, Fail, combine
-from rosvar.ros1.tags.common import bool_value
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.ros2.dialect import tag
 from rosvar.ros2.tags.common import assign
 
 
-def _flag(it: Interpretation, entity: Entity, name: str, context: Context) -> Choice[bool | Raw]:
+def _flag(
+    it: Interpretation[Context], entity: Entity, name: str, context: Context
+) -> Choice[bool | Raw]:
     return bool_value(it, it.attr(entity, name, context), True, f"<group> attribute '{name}'")
 
 
 @tag("group")
 @processed
-def group(it: Interpretation, entity: Entity, context: Context) -> None:
+def group(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     body = [child for child in entity.children if child.tag != "keep"]
     keeps = [child for child in entity.children if child.tag == "keep"]
     scoped = _flag(it, entity, "scoped", context)
@@ -50,7 +52,9 @@ def group(it: Interpretation, entity: Entity, context: Context) -> None:
                 context.restore(saved)
 
 
-def _keep(it: Interpretation, keeps: list[Entity], source: Context, target: Context) -> None:
+def _keep(
+    it: Interpretation[Context], keeps: list[Entity], source: Context, target: Context
+) -> None:
     """``<keep name= value=>``: set before the body, values read in the enclosing context."""
     for keep in keeps:
         name, value = keep.get("name"), it.attr(keep, "value", source)
@@ -63,7 +67,7 @@ def _keep(it: Interpretation, keeps: list[Entity], source: Context, target: Cont
 @tag("push-ros-namespace")
 @tag("push_ros_namespace")
 @processed
-def push_ros_namespace(it: Interpretation, entity: Entity, context: Context) -> None:
+def push_ros_namespace(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     pushed = it.required(entity, "namespace", context)
     if pushed is None:
         return

@@ -27,7 +27,7 @@ from rosvar.workspace.paths import real_path
 
 @tag("include")
 @processed
-def include(it: Interpretation, entity: Entity, context: Context) -> None:
+def include(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     files = it.required(entity, "file", context)
     if files is None:
         return
@@ -47,7 +47,7 @@ def include(it: Interpretation, entity: Entity, context: Context) -> None:
             _include(it, entity, context, file)
 
 
-def _include(it: Interpretation, entity: Entity, context: Context, file: Raw) -> None:
+def _include(it: Interpretation[Context], entity: Entity, context: Context, file: Raw) -> None:
     namespace = context.namespace or Choice.const(it.space, None)
     ns = namespace.map(lambda leaf: "/" if leaf is None else leaf)
     if not isinstance(file, str):

@@ -16,5 +16,5 @@ READ = {"log": "message", "set_use_sim_time": "value", "set_ros_log_dir": "new_l
 @tag("set_use_sim_time")
 @tag("set_ros_log_dir")
 @processed
-def inert(it: Interpretation, entity: Entity, context: Context) -> None:
+def inert(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     it.required(entity, READ[entity.tag], context)

@@ -18,6 +18,7 @@ from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.conventions.namespaces import full_name
 from rosvar.ros2.dialect import tag
+from rosvar.ros2.substitutions import Ros2Substituter
 
 FIELDS = (
     "pkg", "exec", "cmd", "plugin", "name", "namespace", "args", "ros_args", "launch-prefix",
@@ -53,7 +54,7 @@ NESTED = ("composable_node", "extra_arg")  # handled by their parent, not as set
 @tag("executable")
 @tag("node_container")
 @processed
-def node(it: Interpretation, entity: Entity, context: Context) -> None:
+def node(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     it.required(entity, REQUIRED[entity.tag], context)
     fields = _declare(it, entity, context, KINDS[entity.tag], None)
     container = it.strip(
@@ -65,14 +66,14 @@ def node(it: Interpretation, entity: Entity, context: Context) -> None:
 
 @tag("load_composable_node")
 @processed
-def load_composable_node(it: Interpretation, entity: Entity, context: Context) -> None:
+def load_composable_node(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     target = it.required(entity, "target", context)
     if target is not None:
         _composables(it, entity, context, optional(target))
 
 
 def _composables(
-    it: Interpretation, entity: Entity, context: Context, container: Choice[Raw | None]
+    it: Interpretation[Context], entity: Entity, context: Context, container: Choice[Raw | None]
 ) -> None:
     for child in entity.children:
         if child.tag == "composable_node":
@@ -91,7 +92,7 @@ def _full_name(leaves: list[Raw | None]) -> Raw | Fail | None:
 
 
 def _declare(
-    it: Interpretation,
+    it: Interpretation[Context],
     entity: Entity,
     context: Context,
     kind: ProcessKind,
@@ -145,16 +146,16 @@ def _declare(
 
 
 def _command_line(
-    it: Interpretation, entity: Entity, key: str, context: Context
+    it: Interpretation[Context], entity: Entity, key: str, context: Context
 ) -> Choice[Raw] | None:
     text = entity.get(key)
     if text is None:
         return None
-    value = it.substituter.command_line(text, context)
+    value = Ros2Substituter(it).command_line(text, context)
     return it.strip(value, f"<{entity.tag}> attribute '{key}'")
 
 
-def _remap(it: Interpretation, entity: Entity, context: Context, out: list[Remap]) -> None:
+def _remap(it: Interpretation[Context], entity: Entity, context: Context, out: list[Remap]) -> None:
     source, target = it.required(entity, "from", context), it.required(entity, "to", context)
     if source is None or target is None:
         return
@@ -162,7 +163,9 @@ def _remap(it: Interpretation, entity: Entity, context: Context, out: list[Remap
         out.append(Remap(it.pc & condition, s, t))
 
 
-def _env(it: Interpretation, entity: Entity, context: Context, out: list[EnvSetting]) -> None:
+def _env(
+    it: Interpretation[Context], entity: Entity, context: Context, out: list[EnvSetting]
+) -> None:
     name, value = it.required(entity, "name", context), it.required(entity, "value", context)
     if name is None or value is None:
         return
@@ -171,7 +174,11 @@ def _env(it: Interpretation, entity: Entity, context: Context, out: list[EnvSett
 
 
 def _param(
-    it: Interpretation, entity: Entity, context: Context, prefix: str, out: list[NodeParameter]
+    it: Interpretation[Context],
+    entity: Entity,
+    context: Context,
+    prefix: str,
+    out: list[NodeParameter],
 ) -> None:
     source = it.attr(entity, "from", context)
     if source is not None:

@@ -10,11 +10,11 @@ import os
 from dataclasses import replace
 
 from rosvar.frontends.entity import Entity
+from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import Raw
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.terms import concat
-from rosvar.ros1.tags.common import bool_value
 from rosvar.ros2.context import Context, GlobalParam, GlobalRemap, optional
 from rosvar.ros2.dialect import tag
 from rosvar.ros2.tags.common import assign
@@ -22,7 +22,7 @@ from rosvar.ros2.tags.common import assign
 
 @tag("set_remap")
 @processed
-def set_remap(it: Interpretation, entity: Entity, context: Context) -> None:
+def set_remap(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     source, target = it.required(entity, "from", context), it.required(entity, "to", context)
     if source is None or target is None:
         return
@@ -34,7 +34,7 @@ def set_remap(it: Interpretation, entity: Entity, context: Context) -> None:
 
 @tag("set_parameter")
 @processed
-def set_parameter(it: Interpretation, entity: Entity, context: Context) -> None:
+def set_parameter(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     name, value = it.required(entity, "name", context), it.required(entity, "value", context)
     if name is None or value is None:
         return
@@ -46,7 +46,7 @@ def set_parameter(it: Interpretation, entity: Entity, context: Context) -> None:
 
 @tag("set_parameters_from_file")
 @processed
-def set_parameters_from_file(it: Interpretation, entity: Entity, context: Context) -> None:
+def set_parameters_from_file(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     file = it.required(entity, "filename", context)
     if file is None:
         return
@@ -58,7 +58,7 @@ def set_parameters_from_file(it: Interpretation, entity: Entity, context: Contex
 
 @tag("reset")
 @processed
-def reset(it: Interpretation, entity: Entity, context: Context) -> None:
+def reset(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     """``ResetLaunchConfigurations``: the ``<keep>`` values, read before, are all that stays."""
     kept: list[tuple[Choice[Raw], Choice[Raw]]] = []
     for keep in entity.children:
@@ -94,7 +94,7 @@ def reset(it: Interpretation, entity: Entity, context: Context) -> None:
 
 @tag("set_env")
 @processed
-def set_env(it: Interpretation, entity: Entity, context: Context) -> None:
+def set_env(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     name, value = entity.get("name"), it.required(entity, "value", context)
     if name and value is not None:
         context.env[name] = assign(it, _current(it, context, name), optional(value))
@@ -102,13 +102,13 @@ def set_env(it: Interpretation, entity: Entity, context: Context) -> None:
 
 @tag("unset_env")
 @processed
-def unset_env(it: Interpretation, entity: Entity, context: Context) -> None:
+def unset_env(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     name = entity.get("name")
     if name:
         context.env[name] = assign(it, _current(it, context, name), Choice.const(it.space, None))
 
 
-def _current(it: Interpretation, context: Context, name: str) -> Choice[Raw | None]:
+def _current(it: Interpretation[Context], context: Context, name: str) -> Choice[Raw | None]:
     """The variable's value before this action: set by the launch, or the environment's."""
     value = context.env.get(name)
     return it.env_value(name) if value is None else value
@@ -116,7 +116,7 @@ def _current(it: Interpretation, context: Context, name: str) -> Choice[Raw | No
 
 @tag("reset_env")
 @processed
-def reset_env(it: Interpretation, entity: Entity, context: Context) -> None:
+def reset_env(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     """``ResetEnvironment``: every variable back to its value when the launch started (a
     scoped group's end still restores the environment it began with)."""
     for name, current in context.env.items():
@@ -125,7 +125,7 @@ def reset_env(it: Interpretation, entity: Entity, context: Context) -> None:
 
 @tag("append_env")
 @processed
-def append_env(it: Interpretation, entity: Entity, context: Context) -> None:
+def append_env(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     """``AppendEnvironmentVariable``: ``value`` after (``prepend``: before) the variable's
     value and ``separator`` (``:``), or alone where the variable is not set."""
     name, value = entity.get("name"), it.required(entity, "value", context)

@@ -13,9 +13,9 @@ from __future__ import annotations
 import itertools
 
 from rosvar.frontends.entity import Entity
+from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.logic.choice import combine
-from rosvar.ros1.tags.common import bool_value
 from rosvar.ros2.context import Context, Timer
 from rosvar.ros2.dialect import tag
 
@@ -26,7 +26,7 @@ CREATED = itertools.count()
 @tag("timer")
 @tag("ros_timer")
 @processed
-def timer(it: Interpretation, entity: Entity, context: Context) -> None:
+def timer(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     period = it.required(entity, "period", context)
     cancel = bool_value(
         it,
@@ -60,35 +60,6 @@ def timer(it: Interpretation, entity: Entity, context: Context) -> None:
 
 @tag("shutdown")
 @processed
-def shutdown(it: Interpretation, entity: Entity, context: Context) -> None:
+def shutdown(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     it.attr(entity, "reason", context)  # read for the errors its substitutions raise
     context.shutdowns.append(it.pc)
-
-
-def fire(it: Interpretation, context: Context) -> None:
-    """Run the pending timers in time order (ties in creation order), as the event loop,
-    handling the shutdowns of each round of visits before the next timer fires."""
-    _shut_down(it, context)
-    while context.timers:
-        first = min(context.timers, key=lambda t: (t.time, t.sequence))
-        context.timers.remove(first)
-        saved, context.now = context.now, first.time
-        with it.under(first.condition) as live:
-            if live:
-                it.walk(first.actions, context)
-        context.now = saved
-        _shut_down(it, context)
-
-
-def _shut_down(it: Interpretation, context: Context) -> None:
-    """The pending timers cancelled where a ``<shutdown>`` ran since the last round."""
-    if not context.shutdowns:
-        return
-    when = it.space.false
-    for condition in context.shutdowns:
-        when |= condition
-    context.shutdowns.clear()
-    for pending in context.timers:
-        if pending.cancel_on_shutdown:
-            pending.condition &= ~when
-    context.timers[:] = [t for t in context.timers if t.condition != it.space.false]

@@ -17,6 +17,7 @@ import re
 from collections.abc import Iterable
 
 from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.ros.version import RosVersion
 from rosvar.workspace.executables import SCRIPT_FOLDERS, console_scripts
 from rosvar.workspace.interfaces import python
 from rosvar.workspace.interfaces.cmake import CMAKE_FILE, Build, TargetKind, read_build
@@ -26,7 +27,6 @@ from rosvar.workspace.interfaces.model import Extracted, Interfaces, NodeInterfa
 from rosvar.workspace.interfaces.nodelets import nodelet_classes
 from rosvar.workspace.interfaces.reading import read_source, read_text
 from rosvar.workspace.packages import Package
-from rosvar.workspace.ros_version import RosVersion
 
 _COMPONENT = re.compile(r"RCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)")
 

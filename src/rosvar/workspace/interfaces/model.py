@@ -52,9 +52,6 @@ class Expression:
 
     text: str
 
-    def to_json(self) -> dict[str, str]:
-        return {"expression": self.text}
-
 
 Default = bool | int | float | str | Expression
 """A parameter's default: a literal's value, or the expression that computes it."""
@@ -78,26 +75,6 @@ class Entry:
     beside: str | None = None
     """image_transport's camera info: named after the image topic ``beside`` (as the node
     writes it) once that is remapped, so the graph derives this name, not ``name``."""
-
-    def to_json(self) -> dict[str, object]:
-        document: dict[str, object] = {"name": self.name}
-        if self.role is Role.PARAMS:
-            value = self.default
-            document["default"] = value.to_json() if isinstance(value, Expression) else value
-        else:
-            document["type"] = self.type
-        document["file"] = self.location.file
-        document["line"] = self.location.line
-        document["origin"] = str(self.origin)
-        if not self.static:
-            document["static"] = False
-        if self.when is not None:
-            document["when"] = self.when
-        if self.boundary:
-            document["boundary"] = True
-        if self.beside is not None:
-            document["beside"] = self.beside
-        return document
 
 
 @dataclass(frozen=True)
@@ -123,18 +100,6 @@ class NodeInterface:
 
     def of(self, role: Role) -> list[Entry]:
         return [entry for entry in self.entries if entry.role is role]
-
-    def to_json(self) -> dict[str, object]:
-        document: dict[str, object] = {
-            "package": self.package,
-            "executable": self.executable,
-            "kind": str(self.kind),
-        }
-        if self.node_name is not None:
-            document["node_name"] = self.node_name
-        for role in Role:
-            document[str(role)] = [entry.to_json() for entry in self.of(role)]
-        return document
 
 
 class Fallback(Protocol):
@@ -169,9 +134,3 @@ class Interfaces:
         extra = [] if self.fallback is None else self.fallback.nodes()
         found = self.nodes + [n for n in extra if (n.package, n.executable) not in known]
         return sorted(found, key=lambda node: (node.package, node.executable))
-
-    def to_json(self) -> dict[str, object]:
-        return {
-            "interfaces": [node.to_json() for node in self.listed()],
-            "diagnostics": [diagnostic.to_json() for diagnostic in self.diagnostics],
-        }

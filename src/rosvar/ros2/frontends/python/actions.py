@@ -1,20 +1,20 @@
 """Launch actions of Python launch files as the elements of their XML equivalents.
 
-Each action class is described once (:data:`ACTIONS`): the XML tag it is exposed as, and
-for each constructor argument the attribute or children it becomes and how (a
-:class:`Slot`, with one writer per slot). ``Node(package='p', parameters=[{'rate': 10}],
+Each action class is described once, in the registry of actions
+(:data:`rosvar.ros2.api.actions.ACTIONS`): the XML tag it is exposed as, and for each
+constructor argument the attribute or children it becomes and how (a :class:`Slot`, with one
+writer per slot here). ``Node(package='p', parameters=[{'rate': 10}],
 remappings=[('a', 'b')])`` becomes ``<node pkg="p"><param name="rate" value="10"/>
 <remap from="a" to="b"/></node>``, children in the order the arguments are written.
 """
 
 from __future__ import annotations
 
-import enum
 import shlex
 from collections.abc import Callable
-from dataclasses import dataclass
 
 from rosvar.frontends.entity import Entity
+from rosvar.ros2.api.actions import ACTIONS, Action, Param, Slot
 from rosvar.ros2.frontends.python.calls import CALLS, Call
 from rosvar.ros2.frontends.python.text import render
 from rosvar.ros2.frontends.python.values import (
@@ -27,162 +27,6 @@ from rosvar.ros2.frontends.python.values import (
     Value,
 )
 from rosvar.ros2.frontends.typed_text import Scalar, reads_as_other_value, typed_text
-
-
-class Slot(enum.StrEnum):
-    """How one constructor argument is written into the element."""
-
-    ATTRIBUTE = "attribute"  # a text, or a typed scalar
-    COMMAND_LINE = "command-line"  # a list of arguments, one space-separated attribute
-    PARAMETERS = "parameters"  # dicts and files: <param name value> / <param from>
-    PAIRS = "pairs"  # (from, to) pairs: <remap from to>
-    NAMED_VALUES = "named-values"  # a dict or (name, value) pairs: <env name value>...
-    VALUES = "values"  # a list: <choice value>
-    ACTIONS = "actions"  # actions as children
-
-
-@dataclass(frozen=True, slots=True)
-class Param:
-    """One constructor argument: its Python name, its XML attribute or child tag, and how."""
-
-    python: str
-    xml: str
-    slot: Slot = Slot.ATTRIBUTE
-
-
-@dataclass(frozen=True, slots=True)
-class ActionSpec:
-    """An action class: its XML tag and its arguments, positional ones first."""
-
-    tag: str
-    params: tuple[Param, ...]
-
-
-def _attributes(*names: str) -> tuple[Param, ...]:
-    """Attributes named as in Python, or ``python:xml``."""
-    return tuple(Param(name.partition(":")[0], name.rpartition(":")[2]) for name in names)
-
-
-_PROCESS = (
-    *_attributes(
-        "name",
-        "cwd",
-        "output",
-        "respawn",
-        "respawn_delay",
-        "respawn_max_retries",
-        "prefix:launch-prefix",
-        "emulate_tty",
-        "shell",
-        "sigterm_timeout",
-        "sigkill_timeout",
-    ),
-    Param("additional_env", "env", Slot.NAMED_VALUES),
-)
-"""What every process (``ExecuteProcess``, ``Node``) takes."""
-
-_ROS_NODE = (
-    Param("parameters", "param", Slot.PARAMETERS),
-    Param("remappings", "remap", Slot.PAIRS),
-)
-
-_NODE = (
-    *_attributes("package:pkg", "executable:exec", "name", "namespace", "exec_name"),
-    *_PROCESS,
-    *_ROS_NODE,
-    Param("arguments", "args", Slot.COMMAND_LINE),
-    Param("ros_arguments", "ros_args", Slot.COMMAND_LINE),
-)
-
-ACTIONS: dict[tuple[str, str], ActionSpec] = {
-    ("launch", "DeclareLaunchArgument"): ActionSpec(
-        "arg",
-        (
-            *_attributes("name", "default_value:default", "description"),
-            Param("choices", "choice", Slot.VALUES),
-        ),
-    ),
-    ("launch", "SetLaunchConfiguration"): ActionSpec("let", _attributes("name", "value")),
-    ("launch", "GroupAction"): ActionSpec(
-        "group",
-        (
-            Param("actions", "", Slot.ACTIONS),
-            *_attributes("scoped", "forwarding"),
-            Param("launch_configurations", "keep", Slot.NAMED_VALUES),
-        ),
-    ),
-    ("launch", "IncludeLaunchDescription"): ActionSpec(
-        "include",
-        (
-            Param("launch_description_source", "file"),  # a source or a path, as text
-            Param("launch_arguments", "arg", Slot.NAMED_VALUES),
-        ),
-    ),
-    ("launch", "ExecuteProcess"): ActionSpec(
-        "executable", (Param("cmd", "cmd", Slot.COMMAND_LINE), *_PROCESS)
-    ),
-    ("launch", "SetEnvironmentVariable"): ActionSpec("set_env", _attributes("name", "value")),
-    ("launch", "UnsetEnvironmentVariable"): ActionSpec("unset_env", _attributes("name")),
-    ("launch", "AppendEnvironmentVariable"): ActionSpec(
-        "append_env", _attributes("name", "value", "prepend", "separator")
-    ),
-    ("launch", "ResetLaunchConfigurations"): ActionSpec(
-        "reset", (Param("launch_configurations", "keep", Slot.NAMED_VALUES),)
-    ),
-    ("launch", "LogInfo"): ActionSpec("log", _attributes("msg:message")),
-    ("launch", "Shutdown"): ActionSpec("shutdown", _attributes("reason")),
-    ("launch", "TimerAction"): ActionSpec(
-        "timer",
-        (
-            *_attributes("period"),
-            Param("actions", "", Slot.ACTIONS),
-            *_attributes("cancel_on_shutdown"),
-        ),
-    ),
-    ("launch", "ResetEnvironment"): ActionSpec("reset_env", ()),
-    **dict.fromkeys(
-        [("launch_ros", "RosTimer"), ("launch_ros", "ROSTimer")],
-        ActionSpec(
-            "ros_timer",
-            (
-                *_attributes("period"),
-                Param("actions", "", Slot.ACTIONS),
-                *_attributes("cancel_on_shutdown"),
-            ),
-        ),
-    ),
-    ("launch_ros", "Node"): ActionSpec("node", _NODE),
-    ("launch_ros", "LifecycleNode"): ActionSpec("lifecycle_node", _NODE),  # Python only
-    ("launch_ros", "ComposableNodeContainer"): ActionSpec(
-        "node_container",
-        (*_NODE, Param("composable_node_descriptions", "", Slot.ACTIONS)),
-    ),
-    ("launch_ros", "ComposableNode"): ActionSpec(
-        "composable_node",
-        (
-            *_attributes("package:pkg", "plugin", "name", "namespace"),
-            *_ROS_NODE,
-            Param("extra_arguments", "extra_arg", Slot.PARAMETERS),
-        ),
-    ),
-    ("launch_ros", "LoadComposableNodes"): ActionSpec(
-        "load_composable_node",
-        (
-            Param("composable_node_descriptions", "", Slot.ACTIONS),
-            *_attributes("target_container:target"),
-        ),
-    ),
-    ("launch_ros", "PushRosNamespace"): ActionSpec("push-ros-namespace", _attributes("namespace")),
-    ("launch_ros", "SetRemap"): ActionSpec("set_remap", _attributes("src:from", "dst:to")),
-    ("launch_ros", "SetParameter"): ActionSpec("set_parameter", _attributes("name", "value")),
-    ("launch_ros", "SetParametersFromFile"): ActionSpec(
-        "set_parameters_from_file", _attributes("filename")
-    ),
-    ("launch_ros", "SetUseSimTime"): ActionSpec("set_use_sim_time", _attributes("value")),
-    ("launch_ros", "SetROSLogDir"): ActionSpec("set_ros_log_dir", _attributes("new_log_dir")),
-}
-"""Every action (and composable-node description) with an XML equivalent, and
-``LifecycleNode``, which has none: a ``<node>`` whose tag says it is a lifecycle node."""
 
 
 def set_attribute(call: Call, entity: Entity, name: str, value: Value) -> None:
@@ -323,7 +167,7 @@ def _set_condition(call: Call, entity: Entity, condition: Value) -> None:
         call.not_followed(f"condition={type(condition).__name__}")
 
 
-def _action(spec: ActionSpec) -> Callable[[Call], Value]:
+def _action(spec: Action) -> Callable[[Call], Value]:
     def build(call: Call) -> Value:
         entity = Entity(spec.tag, {}, call.location)
         given: list[tuple[Param, Value]] = []
@@ -364,6 +208,6 @@ def _launch_description(call: Call) -> Value:
     return description
 
 
-for _key, _spec in ACTIONS.items():
+for _key, _spec in ACTIONS.by_python.items():
     CALLS[_key] = _action(_spec)
 CALLS["launch", "LaunchDescription"] = _launch_description

@@ -14,12 +14,11 @@ from __future__ import annotations
 
 import ast
 import builtins
-import operator
 import string
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from rosvar.arithmetic import ARITHMETIC
+from rosvar.arithmetic import ARITHMETIC, COMPARISONS
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.frontends.python.actions import add_actions
@@ -76,18 +75,6 @@ class OutOfBudget(Exception):
 
 
 _SCALARS = (str, int, float, bool, type(None))
-_COMPARE: dict[type[ast.cmpop], Callable[[Any, Any], Any]] = {
-    ast.Eq: operator.eq,
-    ast.NotEq: operator.ne,
-    ast.Lt: operator.lt,
-    ast.LtE: operator.le,
-    ast.Gt: operator.gt,
-    ast.GtE: operator.ge,
-    ast.In: lambda a, b: a in b,
-    ast.NotIn: lambda a, b: a not in b,
-    ast.Is: operator.is_,
-    ast.IsNot: operator.is_not,
-}
 _STR_METHODS = frozenset(
     {
         "join",
@@ -480,7 +467,7 @@ class Interpreter:
             ):
                 return Unknown("a comparison of values not known statically")
             try:
-                if not _COMPARE[type(op)](left, right):
+                if not COMPARISONS[type(op)](left, right):
                     return False
             except TypeError as error:
                 return self.not_followed(f"a comparison that fails ({error})", node)

@@ -1,0 +1,88 @@
+"""A dialect on the shared walk: what one ROS's launch files mean, typed by its scope.
+
+ROS 1 carries roslaunch's scope along the walk, ROS 2 ros2/launch's context: a dialect is
+generic in that scope type (``S``), so that each tag handler, the substituter and the entry
+walk agree on it, and the core, which sees a :class:`~rosvar.interpreter.dialect.Dialect`,
+never needs to know it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Generic, TypeVar
+
+from rosvar.frontends.entity import Entity
+from rosvar.frontends.xml import Snapshot
+from rosvar.interpreter.dialect import Loader
+from rosvar.interpreter.interpretation import Handler, Interpretation, Substituter
+from rosvar.interpreter.model import LaunchModel
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.inputs import Slot
+from rosvar.ros.version import RosVersion
+from rosvar.workspace import Workspace
+from rosvar.workspace.paths import real_path
+
+S = TypeVar("S")
+
+EntryWalk = Callable[[Interpretation[S], str, Entity, Mapping[str, str]], set[str]]
+"""How an entry file is walked: the scope its command line makes (the dialect's scope
+factory: the file's args as inputs), the walk of the root's children in it, and the args read
+before being declared (to know from the start in another interpretation)."""
+
+
+@dataclass
+class Semantics(Generic[S]):
+    """One ROS's launch semantics: its frontends, substitution language, tag handlers
+    (registered by :meth:`tag`) and entry walk. Implements
+    :class:`~rosvar.interpreter.dialect.Dialect`."""
+
+    version: RosVersion
+    loader: Loader
+    substituter: Callable[[Interpretation[S]], Substituter[S]]
+    entry: EntryWalk[S]
+    tags: dict[str, Handler[S]] = field(default_factory=dict)
+
+    def tag(self, name: str) -> Callable[[Handler[S]], Handler[S]]:
+        """Register the handler of ``<name>`` (extension by registry, not if-chains)."""
+
+        def register(handler: Handler[S]) -> Handler[S]:
+            if name in self.tags:  # a second handler would silently replace the first
+                raise ValueError(f"tag <{name}> is registered twice in {self.version.label}")
+            self.tags[name] = handler
+            return handler
+
+        return register
+
+    def interpretation(
+        self,
+        workspace: Workspace,
+        space: ConditionSpace,
+        domains: Callable[[str, str], tuple[Slot, ...]],
+        env_domains: Callable[[str], tuple[Slot, ...]],
+        file: str,
+        files: Snapshot,
+    ) -> Interpretation[S]:
+        """A walk of ``file`` in this dialect."""
+        return Interpretation(
+            workspace, space, domains, env_domains, file, files, self.tags, self.substituter
+        )
+
+    def interpret(
+        self,
+        workspace: Workspace,
+        space: ConditionSpace,
+        domains: Callable[[str, str], tuple[Slot, ...]],
+        env_domains: Callable[[str], tuple[Slot, ...]],
+        file: str,
+        files: Snapshot,
+        undeclared: Mapping[str, str],
+    ) -> tuple[LaunchModel, set[str]]:
+        it = self.interpretation(workspace, space, domains, env_domains, file, files)
+        try:
+            it.stack.append(real_path(file))
+            root = it.load(file)
+            late = set() if root is None else self.entry(it, file, root, undeclared)
+            return it.finish(), late
+        finally:
+            it.close()

@@ -1,0 +1,87 @@
+"""The registry of launch actions: one entry per action, a handler for each walked one, and
+names the real launch code exposes (read from its sources in ``../shared/ros2-oracle``)."""
+
+from __future__ import annotations
+
+import ast
+import re
+from pathlib import Path
+
+import pytest
+
+from rosvar.interpreter.dialect import dialect_of
+from rosvar.ros.version import RosVersion
+from rosvar.ros2.api.actions import ACTIONS, Action, attributes
+from rosvar.ros2.api.registry import Registry
+from rosvar.ros2.dialect import ROS2, tag
+
+UPSTREAM = Path(__file__).resolve().parents[4] / "shared" / "ros2-oracle" / "upstream"
+
+
+def test_every_walked_action_has_a_handler_and_no_other_tag_has() -> None:
+    dialect_of(RosVersion.ROS2)  # its handlers registered
+    walked = {name for action in ACTIONS if action.walked for name in action.names}
+    assert set(ROS2.tags) == walked
+
+
+def test_a_handler_needs_a_registered_action() -> None:
+    with pytest.raises(ValueError, match="<nodes> is no action"):
+        tag("nodes")
+    with pytest.raises(ValueError, match="<param> is no action"):  # read by its parent
+        tag("param")
+
+
+def test_a_name_is_exposed_once() -> None:
+    registry: Registry[Action] = Registry("action")
+    registry.expose(Action(("a", "b"), ("launch.A",)))
+    with pytest.raises(ValueError, match="action <b> is exposed twice"):
+        registry.expose(Action(("b",)))
+    with pytest.raises(ValueError, match=r"action launch\.A is exposed twice"):
+        registry.expose(Action(("c",), ("launch.actions.a.A",)))
+    assert list(registry) == [registry.by_name["a"]]  # a refusal registers nothing
+
+
+def test_aliases_and_tags_find_one_entry() -> None:
+    timer = ACTIONS.by_name["ros_timer"]
+    assert ACTIONS.by_python["launch_ros", "RosTimer"] is timer
+    assert ACTIONS.by_python["launch_ros", "ROSTimer"] is timer
+    push = ACTIONS.by_name["push-ros-namespace"]
+    assert ACTIONS.by_name["push_ros_namespace"] is push and push.tag == "push-ros-namespace"
+
+
+def test_attributes_are_the_arguments_and_the_xml_only_ones() -> None:
+    action = Action(("x",), params=attributes("a", "b_c:b-c"), xml_only=("d",))
+    assert action.attributes == {"a", "b-c", "d"}
+    assert ACTIONS.by_name["node"].attributes >= {"pkg", "exec", "param", "remap", "on_exit"}
+    assert "composable_node" in ACTIONS.by_name["node_container"].attributes
+
+
+def _upstream(pattern: str, package: str) -> set[str]:
+    found: set[str] = set()
+    for path in (UPSTREAM / package / package).rglob("*.py"):
+        found.update(re.findall(pattern, path.read_text(encoding="utf-8")))
+    return found
+
+
+def _exported(package: str) -> set[str]:
+    """The names a package's ``actions`` module exports (aliases included)."""
+    tree = ast.parse((UPSTREAM / package / package / "actions" / "__init__.py").read_text())
+    return {
+        alias.asname or alias.name
+        for node in tree.body
+        if isinstance(node, ast.ImportFrom)
+        for alias in node.names
+    }
+
+
+@pytest.mark.skipif(not UPSTREAM.is_dir(), reason="no ROS 2 oracle")
+def test_the_real_launch_exposes_every_tag_and_class() -> None:
+    exposed = _upstream(r"@expose_action\('([^']+)'\)", "launch") | _upstream(
+        r"@expose_action\('([^']+)'\)", "launch_ros"
+    )
+    walked = {n for a in ACTIONS if a.walked and not a.python_only for n in a.names}
+    assert walked <= exposed, walked - exposed
+    classes = {("launch", n) for n in _exported("launch")}
+    classes |= {("launch_ros", n) for n in _exported("launch_ros")}
+    unknown = {k for k, a in ACTIONS.by_python.items() if a.walked} - classes
+    assert unknown == set()
