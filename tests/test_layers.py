@@ -161,23 +161,21 @@ def test_the_layout_names_the_dialects_and_every_module() -> None:
 
 CORE_TO_DIALECT_PENDING = {
     # issue 27 item 3 (typed node accessors through the dialect, h-resolve): the core still
-    # reads a ROS 2 node's namespace or a <rosparam>'s names itself
-    "rosvar.analyses.checks -> rosvar.ros1.tags.rosparam",
+    # reads a ROS 2 node's namespace itself
     "rosvar.analyses.communication -> rosvar.ros2.conventions.namespaces",
     "rosvar.analyses.conflicts -> rosvar.ros2.conventions.namespaces",
     "rosvar.analyses.query.collections -> rosvar.ros2.conventions.namespaces",
-    # items 4 and 5 (one resolution for both dialects, h-resolve; the graph's renderers to
-    # outputs/, h-outputs)
-    "rosvar.configuration.graph -> rosvar.ros1.resolve",
-    "rosvar.configuration.graph -> rosvar.ros1.tags.param",
-    "rosvar.configuration.graph -> rosvar.ros1.tags.rosparam",
-    "rosvar.configuration.graph -> rosvar.ros1.validation",
     "rosvar.configuration.graph -> rosvar.ros2.conventions.namespaces",
-    "rosvar.configuration.graph -> rosvar.ros2.conventions.parameters",
-    "rosvar.configuration.graph -> rosvar.ros2.resolve",
-    "rosvar.outputs.cli -> rosvar.ros1.resolve",
-    "rosvar.outputs.cli -> rosvar.ros2.conventions.namespaces",
-    "rosvar.outputs.cli -> rosvar.ros2.resolve",
+    # item 4 (one resolution for both dialects, h-resolve): the resolve command and the
+    # page's entries print each dialect's resolution
+    "rosvar.outputs.commands.resolve -> rosvar.ros1.resolve",
+    "rosvar.outputs.commands.resolve -> rosvar.ros2.conventions.namespaces",
+    "rosvar.outputs.commands.resolve -> rosvar.ros2.resolve",
+    "rosvar.outputs.web.entries -> rosvar.ros1.resolve",
+    "rosvar.outputs.web.entries -> rosvar.ros1.validation",
+    "rosvar.outputs.web.entries -> rosvar.ros2.conventions.namespaces",
+    "rosvar.outputs.web.entries -> rosvar.ros2.conventions.parameters",
+    "rosvar.outputs.web.entries -> rosvar.ros2.resolve",
     "rosvar.ros2.resolve -> rosvar.ros1.resolve",
 }
 """Imports other steps of issue 27 remove, listed so that nothing can join them: the tests
