@@ -543,6 +543,33 @@ def test_a_model_too_large_to_solve(
         assert err.startswith("rosvar: the feature model is too large to solve: ")
 
 
+def test_a_model_too_large_says_its_largest_parts_and_a_narrower_command(
+    ws: LaunchWorkspace,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """issue 30.6: on a whole repository configure stopped after seconds with the reason
+    only; it names the packages the largest groups of linked files are in, and the
+    narrower command that works (one package, the rest as dependencies)."""
+    for package, files in (("big", 3), ("small", 1)):
+        for number in range(files):
+            ws.launch(f"f{number}.launch", '  <node pkg="p" type="t" name="same"/>', package)
+    ws.launch("alone.launch", '  <node pkg="p" type="t" name="other"/>', "lone")
+    monkeypatch.setattr(extraction, "LINK_BUDGET", 0)
+    monkeypatch.setattr(extraction, "LINKS_PER_FILE", 0)
+    monkeypatch.chdir(ws.root)
+    code, _out, err = run(capsys, "configure", ".")
+    assert code == EXIT_TOO_LARGE
+    lines = err.splitlines()
+    assert lines[0].startswith("rosvar: the feature model is too large to solve: 6 pairs")
+    assert lines[1:4] == [
+        "rosvar: its largest parts (files linked by includes and shared names):",
+        "  4 files of 2 packages: big (3), small (1)",
+        "  1 file of 1 package: lone (1)",
+    ]
+    assert lines[4].endswith("e.g. rosvar configure big --deps .")
+
+
 # -- readable summaries -------------------------------------------------------------------------
 REPO = Path(__file__).resolve().parents[2]
 

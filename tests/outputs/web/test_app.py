@@ -771,8 +771,20 @@ def test_husky_overview_aggregates_and_opens_the_selected_files(page: Any, husky
     assert overlapping(app) == []
     assert page.evaluate("window.rosvar.graph.cy.zoom()") >= LEGIBLE_ZOOM
     # elements going away: the layout runs again (no holes) and the page still shows all
+    # (husky_empty_world.launch, which loads husky_playpen's nodes too, is out already)
+    assert server["features"][husky_file(app, "husky_empty_world.launch")]["state"] == "deselected"
     runs = page.evaluate("window.rosvar.graph.layoutRuns")
-    app.choose(husky_file(app, "husky_empty_world.launch"), "deselect")
+    left = next(
+        feature
+        for feature, state in server["features"].items()
+        if state["kind"] == "file"
+        and state["state"] == "unselected"
+        and any(
+            n["id"].startswith(f"{feature}|") and n["presence"] != "absent"
+            for n in server["graph"]["nodes"]
+        )
+    )
+    app.choose(left, "deselect")
     app.assert_shows_server_state()
     assert page.evaluate("window.rosvar.graph.layoutRuns") > runs
     assert overlapping(app) == []

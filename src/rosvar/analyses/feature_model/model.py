@@ -96,8 +96,26 @@ class Constraint:
     unconditional: bool = False
 
 
+@dataclass(frozen=True)
+class ModelPart:
+    """Files the model's constraints link (includes, names declared in several of them),
+    which the solver would have to solve together: how many, and their packages, the
+    most files first (the package's folder: what to configure on its own)."""
+
+    files: int
+    package_count: int
+    packages: tuple[tuple[str, str, int], ...]  # the first few: name, folder, its files
+
+
 class ModelTooLarge(Exception):
-    """The solver's BDDs would outgrow their budget: the model is listed, not solved."""
+    """The solver's BDDs would outgrow their budget: the model is listed, not solved.
+
+    ``parts``: the largest groups of files its constraints link, when known (extraction
+    tells them): what a narrower analysis could take on its own."""
+
+    def __init__(self, message: str, parts: Sequence[ModelPart] = ()) -> None:
+        super().__init__(message)
+        self.parts = tuple(parts)
 
 
 class CrossTree:
@@ -158,7 +176,7 @@ class FeatureModel:
     @property
     def solver(self) -> Solver:
         if isinstance(self.solution, ModelTooLarge):
-            raise ModelTooLarge(*self.solution.args)
+            raise ModelTooLarge(str(self.solution), self.solution.parts)
         return self.solution
 
     def __post_init__(self) -> None:

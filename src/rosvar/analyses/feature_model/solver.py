@@ -359,4 +359,4 @@ def memory_bound(manager: Manager, files: int) -> Iterator[None]:
         with bdd.memory_bound(manager, MEMORY_BUDGET + MEMORY_PER_FILE * files):
             yield
     except bdd.OutOfMemory as error:
-        raise ModelTooLarge(*error.args) from error
+        raise ModelTooLarge(str(error)) from error
