@@ -22,6 +22,7 @@ from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.ros1.resolve import Restriction, resolve
 from rosvar.ros2.resolve import resolve_ros2
+from rosvar.ros2.tags.node import ROS2_NODES
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.catalogue import load_catalogue
 from rosvar.workspace.interfaces.extraction import extract_interfaces
@@ -321,8 +322,8 @@ def test_ros2_names_resolve_as_rcl_does(
 
 def test_ros2_namespaces_compose() -> None:
     def node(pushed: str | None, namespace: str | None) -> LaunchedNode:
-        fields = {"pkg": "p", "type": "t", "name": "n", "ros_namespace": pushed}
-        return LaunchedNode.of({**fields, "namespace": namespace})
+        fields = {"pkg": "p", "exec": "t", "name": "n", "ros_namespace": pushed}
+        return LaunchedNode.of(ROS2_NODES, {**fields, "namespace": namespace})
 
     assert node(None, None).full_name == "/n"
     assert node("/r1", None).full_name == "/r1/n"

@@ -496,19 +496,25 @@ def test_ament_prefix_path_from_the_environment(
 
 
 ROS2_DATA = Path(__file__).resolve().parents[1] / "data" / "ros2"
-# repository folder: packages, Python launch files, XML launch files (tests/data/ros2/README.md)
+# repository folder: packages, Python, XML and YAML launch files (tests/data/ros2/README.md)
 ROS2_REPOSITORIES = {
-    "husky": (10, 10, 0),
-    "clearpath_common": (11, 12, 0),
-    "ros2_control_demos": (20, 48, 5),
-    "slam_toolbox": (1, 6, 0),
-    "realsense-ros": (3, 9, 0),
-    "moveit2_tutorials": (1, 24, 0),
+    "husky": (10, 10, 0, 0),
+    "clearpath_common": (11, 12, 0, 0),
+    "ros2_control_demos": (20, 48, 5, 0),
+    "slam_toolbox": (1, 6, 0, 0),
+    "realsense-ros": (3, 9, 0, 0),
+    "moveit2_tutorials": (1, 24, 0, 0),
+    "Universal_Robots_ROS2_Driver": (6, 22, 0, 0),
+    "moveit2": (39, 7, 0, 0),
+    "ros_gz": (7, 24, 0, 0),
+    "image_pipeline": (9, 17, 0, 0),
+    "demos": (20, 12, 1, 1),
+    "autoware.universe": (238, 22, 236, 0),
 }
 
 
 @pytest.mark.parametrize(("repository", "counts"), ROS2_REPOSITORIES.items())
-def test_real_ros2_repositories(repository: str, counts: tuple[int, int, int]) -> None:
+def test_real_ros2_repositories(repository: str, counts: tuple[int, int, int, int]) -> None:
     workspace = discover([ROS2_DATA / repository], ros_package_path="", ament_prefix_path="")
     assert workspace.ros_version == RosVersion.ROS2
     assert workspace.diagnostics == []
@@ -517,17 +523,18 @@ def test_real_ros2_repositories(repository: str, counts: tuple[int, int, int]) -
         len(workspace.packages),
         formats.count(LaunchFormat.PYTHON),
         formats.count(LaunchFormat.XML),
+        formats.count(LaunchFormat.YAML),
     )
     assert found == counts
     assert all(package.ros_version == RosVersion.ROS2 for package in workspace.packages.values())
 
 
 def test_real_ros2_repositories_together() -> None:
-    """All six as one colcon workspace: every launch file of each, and the ROS 1 leftovers
-    (Husky's and MoveIt's ``*.launch``) still left out."""
+    """All of them as one colcon workspace: every launch file of each, and the ROS 1
+    leftovers (Husky's and MoveIt's ``*.launch``) still left out."""
     workspace = discover([ROS2_DATA], ros_package_path="", ament_prefix_path="")
     assert workspace.ros_version == RosVersion.ROS2
-    assert len(workspace.launch_files) == sum(p + x for _, p, x in ROS2_REPOSITORIES.values())
+    assert len(workspace.launch_files) == sum(sum(c[1:]) for c in ROS2_REPOSITORIES.values())
     assert not [path for path in workspace.launch_files if path.endswith(".launch")]
     assert workspace.diagnostics == []  # no package name is shared between the repositories
     assert workspace.find_share("husky_control") == str(ROS2_DATA / "husky" / "husky_control")

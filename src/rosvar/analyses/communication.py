@@ -20,20 +20,31 @@ must give exactly those.
 from __future__ import annotations
 
 import enum
+import re
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import TypeVar
 
-from rosvar.analyses.param_values import ROS2_PARAMETERS, ParamValues, param_default
+from rosvar.analyses.param_values import ROS2_PARAMETERS, ParamValues, Unknown, param_default
 from rosvar.analyses.when import When, concrete_holds, when_condition
 from rosvar.diagnostics import Location
-from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
+from rosvar.interpreter.model import LaunchModel, NodeDecl, NodeSchema, Raw
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
-from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
-from rosvar.workspace.interfaces.model import Default, Entry, Interfaces, NodeInterface, Role
+from rosvar.ros.version import RosVersion
+from rosvar.ros2.conventions.namespaces import make_absolute
+from rosvar.workspace.interfaces.model import (
+    INDEX,
+    Default,
+    Entry,
+    Interfaces,
+    NamedBy,
+    NodeInterface,
+    Role,
+)
+from rosvar.workspace.interfaces.values import Text
 
 _R = TypeVar("_R")
 
@@ -66,18 +77,6 @@ JSON_SIDES: dict[Channel, tuple[str, str]] = {
 }
 
 
-FIELDS = ("pkg", "type", "namespace", "name", "args")
-"""The fields of a ``<node>`` that say what runs where (:meth:`LaunchedNode.of`)."""
-ROS2_FIELDS = (*FIELDS, "ros_namespace", "plugin")
-"""ROS 2's: the namespace pushed around the node, a composable node's class."""
-
-
-def node_fields(node: NodeDecl) -> tuple[str, ...]:
-    """The fields :meth:`LaunchedNode.of` reads of ``node`` (a ROS 2 declaration carries the
-    pushed namespace)."""
-    return ROS2_FIELDS if node.ros2 else FIELDS
-
-
 @dataclass(frozen=True)
 class LaunchedNode:
     """A ``<node>`` as one configuration (or one branch of its fields) has it."""
@@ -92,15 +91,20 @@ class LaunchedNode:
     ros2: bool = False
 
     @staticmethod
-    def of(fields: Mapping[str, object], remaps: Sequence[tuple[str, str]] = ()) -> LaunchedNode:
-        """The node of field values (those of :func:`node_fields`; absent ones None)."""
-        package, type_, namespace, name, args = (_text(fields.get(key)) for key in FIELDS)
-        if "ros_namespace" not in fields:
-            return LaunchedNode(package, type_, namespace, name, args, remaps)
-        pushed = _text(fields.get("ros_namespace")) or None
-        combined = make_absolute(prefix_namespace(pushed, namespace or None)) or names.SEP
-        plugin = _text(fields.get("plugin"))
-        return LaunchedNode(package, type_, combined, name, args, remaps, plugin, ros2=True)
+    def of(schema: NodeSchema, fields: Mapping[str, Raw | None]) -> LaunchedNode:
+        """The node of one variant's field values (``schema.launched``; absent ones None),
+        a part not known statically shown as ``{term}``."""
+        texts = {key: _text(fields.get(key)) for key in schema.launched}
+        return LaunchedNode(
+            _text(schema.package.text(texts)),
+            _text(schema.executable.text(texts)),
+            schema.namespace.text(texts) or names.SEP,
+            _text(schema.name.text(texts)),
+            _text(schema.args.text(texts)),
+            (),
+            _text(schema.plugin.text(texts)),
+            ros2=schema.version is RosVersion.ROS2,
+        )
 
     def named(self, interface: NodeInterface) -> LaunchedNode:
         """ROS 2: without a launch ``name``, the node has the one its code gives it
@@ -179,12 +183,12 @@ def launched_units(
 ) -> Iterator[tuple[BDD, LaunchedNode, NodeInterface, bool]]:
     """Per branch of a ``<node>``'s fields: its condition, the node, the interface it runs
     and whether every field is known statically (nodes without a known interface skipped)."""
-    keys = node_fields(node)
+    keys = node.schema.launched
     for condition, values in combine([node.field(key) for key in keys], list):
         condition &= node.condition
         if condition == space.false:
             continue
-        launched = LaunchedNode.of(dict(zip(keys, values, strict=True)))
+        launched = LaunchedNode.of(node.schema, dict(zip(keys, values, strict=True)))
         unit = launched.unit()
         interface = None if unit is None else find_interface(interfaces, unit)
         if interface is not None:
@@ -206,9 +210,99 @@ def node_edges(
             used = condition
             if entry.when is not None:
                 used &= entry_when(params, node, launched, interface, entry.when).condition
-            for when, name in entry_names(launched, remaps, entry, used):
-                edges.append(_edge(file, launched, node, entry, name, when, static))
+            for taken, use in entry_uses(params, node, launched, interface, entry, used):
+                for when, name in entry_names(launched, remaps, use, taken):
+                    edges.append(_edge(file, launched, node, use, name, when, static))
     return edges
+
+
+def entry_uses(
+    params: ParamValues,
+    node: NodeDecl,
+    launched: LaunchedNode,
+    interface: NodeInterface,
+    entry: Entry,
+    used: BDD,
+) -> list[tuple[BDD, Entry]]:
+    """``entry`` under ``used``; one named by a parameter becomes one entry per value the
+    parameter takes (what the launched files set, else its default), each under its
+    condition: a value not known keeps the symbolic entry; an indexed parameter
+    (``~imu{N}``) gives one per such parameter set, none where unset."""
+    named = entry.named_by
+    if named is None:
+        return [(used, entry)]
+    defaults = _defaults(launched, interface)
+    lookup = _ros2_lookup(params.space, node) if node.ros2 else None
+    uses: list[tuple[BDD, Entry]] = []
+    for parameter in _named_parameters(params, node, launched, named):
+        resolved = launched.resolve(parameter)
+        default = entry.default if entry.default is not None else defaults.get(resolved)
+        if named.indexed:
+            default = None
+        values = (
+            lookup(parameter, default) if lookup is not None else params.values(resolved, default)
+        )
+        for condition, value in values:
+            taken = used & condition
+            if taken == params.space.false:
+                continue
+            if isinstance(value, str) and value:
+                name = Text(value).within(Text(named.namespace)).value
+                uses.append((taken, replace(entry, name=name, static=True, named_by=None)))
+            elif not named.indexed:
+                uses.append((taken, entry))
+    return uses
+
+
+def _named_parameters(
+    params: ParamValues, node: NodeDecl, launched: LaunchedNode, named: NamedBy
+) -> list[str]:
+    """The parameters that name a use: the one, or every one of an indexed name that the
+    launched files set (as the node writes it)."""
+    if not named.indexed:
+        return [named.parameter]
+    head, _, tail = named.parameter.partition(INDEX)
+    if node.ros2:
+        written = [p.name for p in node.parameters if isinstance(p.name, str)]
+        pattern = re.compile(re.escape(head.lstrip("~/")) + r"(\d+)" + re.escape(tail) + "$")
+        return sorted({n for n in written if pattern.match(n)})
+    marker = "__index__"
+    resolved = launched.resolve(head + marker + tail)
+    pattern = re.compile(re.escape(resolved).replace(marker, r"(\d+)") + "$")
+    return [
+        head + match.group(1) + tail
+        for name in params.names()
+        if (match := pattern.match(name)) is not None
+    ]
+
+
+def _ros2_lookup(
+    space: ConditionSpace, node: NodeDecl
+) -> Callable[[str, Default | None], Choice[object]]:
+    """A ROS 2 node's own parameters as its launch description gives them: the values
+    written for it (the last that holds wins), else the default; a parameter file may set
+    any of them (not read here: a value not known)."""
+
+    def lookup(name: str, default: Default | None) -> Choice[object]:
+        branches: list[tuple[BDD, object]] = []
+        remaining = space.true
+        for parameter in reversed(node.parameters):
+            if parameter.file is not None:
+                value: object = Unknown(f"a parameter file ({parameter.file}) may set it")
+            elif parameter.name == name.lstrip("~/"):
+                raw = parameter.value
+                value = raw if isinstance(raw, str) else Unknown(f"its value is {raw}")
+            else:
+                continue
+            taken = remaining & parameter.condition
+            if taken != space.false:
+                branches.append((taken, value))
+            remaining &= ~parameter.condition
+        if remaining != space.false:
+            branches.append((remaining, param_default(default)))
+        return Choice.of(branches, space.false)
+
+    return lookup
 
 
 def entry_when(
@@ -338,37 +432,75 @@ def resolved_graph(
                 value = _param_value(params, launched, interface)
                 if not concrete_holds(entry.when, scopes[index], value):
                     continue
-            resolved = launched.resolve(entry.beside or entry.name)
-            name = table.get(resolved, resolved)
-            name = name if entry.beside is None else _beside(name)
-            uses.append((launched.full_name, entry.role, name, entry.type))
+            for use in _resolved_uses(node, launched, interface, entry, params):
+                resolved = launched.resolve(use.beside or use.name)
+                name = table.get(resolved, resolved)
+                name = name if use.beside is None else _beside(name)
+                uses.append((launched.full_name, use.role, name, use.type))
     return graph_json(uses)
+
+
+def _resolved_uses(
+    node: Mapping[str, object],
+    launched: LaunchedNode,
+    interface: NodeInterface,
+    entry: Entry,
+    params: Mapping[str, object] | None,
+) -> list[Entry]:
+    """:func:`entry_uses` in one configuration: ROS 1's parameter server (``params``), or
+    a ROS 2 node's own parameters."""
+    named = entry.named_by
+    if named is None:
+        return [entry]
+    own = node.get("parameters")
+    if params is None:  # ROS 2: the node's own parameters, by their plain names
+        values: Mapping[str, object] = own if isinstance(own, Mapping) else {}
+        key: Callable[[str], str] = lambda parameter: parameter.lstrip("~/")  # noqa: E731
+    else:
+        values, key = params, launched.resolve
+    head, _, tail = named.parameter.partition(INDEX)
+    if named.indexed:
+        marker = "__index__"
+        pattern = re.compile(re.escape(key(head + marker + tail)).replace(marker, r"\d+") + "$")
+        chosen = [values[n] for n in sorted(values) if pattern.match(n)]
+    else:
+        resolved = launched.resolve(named.parameter)
+        default = entry.default
+        if default is None:
+            default = _defaults(launched, interface).get(resolved)
+        written = key(named.parameter)
+        chosen = [values[written] if written in values else param_default(default)]
+    found = []
+    for value in chosen:
+        if isinstance(value, str) and value:
+            name = Text(value).within(Text(named.namespace)).value
+            found.append(replace(entry, name=name, static=True, named_by=None))
+        elif not named.indexed:
+            found.append(entry)
+    return found
 
 
 def _resolved_node(node: Mapping[str, object]) -> LaunchedNode:
     """A node of ``rosvar resolve`` (ROS 2's carry their ``executable``, their namespace
     already composed)."""
-    ros2 = "executable" in node
-    remaps = node.get("remappings" if ros2 else "remaps") or []
+    remaps = node.get("remappings" if "executable" in node else "remaps") or []
     assert isinstance(remaps, list)
-    fields = (
-        {
-            "pkg": node.get("package"),
-            "type": node.get("executable"),
-            "ros_namespace": node.get("namespace"),
-            "name": node.get("name"),
-            "plugin": node.get("plugin"),
-        }
-        if ros2
-        else {
-            "pkg": node.get("package"),
-            "type": node.get("type"),
-            "namespace": node.get("namespace"),
-            "name": str(node["name"]).rsplit(names.SEP, 1)[-1],
-            "args": node.get("args"),
-        }
+    pairs = [(str(a), str(b)) for a, b in remaps]
+    if "executable" in node:
+        namespace = make_absolute(_text(node.get("namespace")) or None) or names.SEP
+        name, plugin = _text(node.get("name")), _text(node.get("plugin"))
+        executable = _text(node.get("executable"))
+        return LaunchedNode(
+            _text(node.get("package")), executable, namespace, name, "", pairs, plugin, True
+        )
+    return LaunchedNode(
+        _text(node.get("package")),
+        _text(node.get("type")),
+        _text(node.get("namespace")),
+        str(node["name"]).rsplit(names.SEP, 1)[-1],
+        _text(node.get("args")),
+        pairs,
     )
-    return LaunchedNode.of(fields, [(str(a), str(b)) for a, b in remaps])
 
 
 def _param_value(

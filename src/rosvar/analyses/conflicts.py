@@ -23,9 +23,6 @@ from enum import StrEnum
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, anon_pattern
 from rosvar.logic.bdd import BDD
-from rosvar.logic.choice import combine
-from rosvar.ros import names
-from rosvar.ros2.conventions.namespaces import full_name
 from rosvar.workspace.paths import real_path
 
 
@@ -122,14 +119,10 @@ def declared_occurrences(model: LaunchModel, launched: BDD | None = None) -> Ite
 
 
 def node_occurrences(model: LaunchModel, node: NodeDecl) -> Iterator[Occurrence]:
-    """The node's resolved names: a ROS 2 node's is its pushed namespace composed with its
-    own, as ``ros2 launch`` names it."""
-    keys: tuple[str, ...] = ("namespace", "name")
-    if node.ros2:
-        keys = ("ros_namespace", *keys)
-    full = combine([node.fields[key] for key in keys], ros2_node_name if node.ros2 else _node_name)
-    for condition, name in full:
-        if name is not None:
+    """The node's resolved names, where known (a ROS 2 node's is its pushed namespace
+    composed with its own, as ``ros2 launch`` names it)."""
+    for condition, name in node.value(node.schema.full_name):
+        if isinstance(name, str):
             yield Occurrence(
                 DeclarationKind.NODE, name, model.file, node.location, node.condition & condition
             )
@@ -160,22 +153,6 @@ def repeated_inclusions(model: LaunchModel) -> list[Clash]:
     return found
 
 
-def _node_name(parts: Sequence[object]) -> str | None:
-    namespace, name = parts
-    if isinstance(namespace, str) and isinstance(name, str):
-        return names.ns_join(namespace, name)
-    return None
-
-
-def ros2_node_name(parts: Sequence[object]) -> str | None:
-    """The fully qualified name of a ROS 2 node from its pushed namespace, its own and its
-    name, where all three are known (a node without a name is named by its code)."""
-    pushed, namespace, name = parts
-    if not isinstance(name, str) or not all(p is None or isinstance(p, str) for p in parts[:2]):
-        return None
-    return full_name(pushed or None, namespace or None, name)  # type: ignore[arg-type]
-
-
 def index(
     models: Iterable[LaunchModel], launched: Mapping[str, BDD] | None = None
 ) -> dict[tuple[str, str], list[Occurrence]]:
@@ -192,14 +169,14 @@ def index(
 def internal_clashes(buckets: Mapping[tuple[str, str], Sequence[Occurrence]]) -> list[Clash]:
     """``clashes`` of two node declarations one file loads (the file alone fails)."""
     found: list[Clash] = []
-    for (kind, _name), occurrences in buckets.items():
+    for (kind, name), occurrences in buckets.items():
         if kind != DeclarationKind.NODE or len(occurrences) < 2:
             continue
         by_file: dict[str, list[Occurrence]] = defaultdict(list)
         for occurrence in occurrences:
             by_file[occurrence.file].append(occurrence)
         for mine in by_file.values():
-            found.extend(c for c in clashes({(kind, _name): mine}) if c.files[0] == c.files[1])
+            found.extend(c for c in clashes({(kind, name): mine}) if c.files[0] == c.files[1])
     return found
 
 

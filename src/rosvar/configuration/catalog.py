@@ -12,13 +12,13 @@ import os
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 
-from rosvar.analyses.feature_model.model import (
+from rosvar.analyses.feature_model.features import (
     ArgFeature,
     FeatureKind,
-    FeatureModel,
     FileFeature,
     ValueFeature,
 )
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.choices import ChoiceError
 
 NEAREST = 3

@@ -20,7 +20,8 @@ from enum import StrEnum
 from itertools import count
 
 from rosvar.analyses.conflicts import Clash, DeclarationKind
-from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
+from rosvar.analyses.feature_model.features import ConstraintKind
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.presence import Typed

@@ -35,7 +35,8 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from enum import StrEnum
 
-from rosvar.analyses.feature_model.model import FeatureModel, FileFeature, name_of
+from rosvar.analyses.feature_model.features import FileFeature, name_of
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.sat import Sat
 from rosvar.logic.bdd import BDD, children_first, cofactor, cofactors, evaluate, walked_support

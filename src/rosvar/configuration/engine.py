@@ -14,7 +14,8 @@ from dataclasses import dataclass, field, replace
 from enum import StrEnum
 from functools import cached_property
 
-from rosvar.analyses.feature_model.model import FeatureKind, FeatureModel
+from rosvar.analyses.feature_model.features import FeatureKind
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.catalog import Catalog, Feature
 from rosvar.configuration.choices import Action, ChoiceError, Refusal, UserChoice
 from rosvar.configuration.command import Launch, command_line, group

@@ -24,9 +24,9 @@ from rosvar.analyses.communication import (
     entry_names,
     entry_when,
     find_interface,
-    node_fields,
 )
-from rosvar.analyses.feature_model.model import FeatureModel, launched_conditions
+from rosvar.analyses.feature_model.features import launched_conditions
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.param_values import ParamValues
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
@@ -54,7 +54,6 @@ from rosvar.ros1.resolve import (
     test_fields,
     typed_node,
 )
-from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
 Fields = dict[str, object]
@@ -531,7 +530,7 @@ class VariationalGraph:
                 parts=tuple(parts),
             )
             if element is not None and not node.is_test:
-                self._topic_uses(element, raw, remaps)
+                self._topic_uses(element, raw, remaps, node)
                 if self.interfaces is not None:
                     self._interface_uses(element, raw, node, condition)
 
@@ -601,15 +600,14 @@ class VariationalGraph:
         return kept
 
     def _topic_uses(
-        self, element: Element, raw: Mapping[str, Raw | None], remaps: list[Setting]
+        self,
+        element: Element,
+        raw: Mapping[str, Raw | None],
+        remaps: list[Setting],
+        node: NodeDecl,
     ) -> None:
         symbolic = Values({}, None)
-        namespace, pushed = raw.get("namespace"), raw.get("ros_namespace")
-        if "ros_namespace" in raw and all(
-            v is None or isinstance(v, str) for v in (namespace, pushed)
-        ):
-            # ROS 2: the pushed namespace and the node's, combined and absolute
-            namespace = make_absolute(prefix_namespace(pushed, namespace)) or names.SEP  # type: ignore[arg-type]
+        namespace = node.schema.namespace.of(raw)
         for _source, target, part in remaps:
             used = element.condition if part is None else element.parts[part].condition
             raws = (namespace, raw.get("name"), target)
@@ -628,10 +626,10 @@ class VariationalGraph:
         interface, each use an edge of its topic, service or action (judged as a part of
         it); names known statically only."""
         assert self.interfaces is not None
-        fields = {key: raw.get(key) for key in node_fields(node)}
+        fields = {key: raw.get(key) for key in node.schema.launched}
         if not all(text is None or isinstance(text, str) for text in fields.values()):
             return
-        launched = LaunchedNode.of(fields)
+        launched = LaunchedNode.of(node.schema, fields)
         unit = launched.unit()
         interface = None if unit is None else find_interface(self.interfaces, unit)
         if interface is None:

@@ -18,9 +18,10 @@ from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.lifted import apply, lift
 from rosvar.interpreter.model import Decision, ErrorEvent, Guard, LaunchModel, Raw
+from rosvar.logic.atoms import register_predicate
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
-from rosvar.logic.conditions import ConditionSpace, register_predicate
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
 from rosvar.logic.terms import Hole
 from rosvar.workspace import Workspace

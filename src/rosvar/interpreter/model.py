@@ -11,7 +11,7 @@ Element classes have slots: a large workspace's models hold millions of them.
 from __future__ import annotations
 
 import re
-from collections.abc import Collection, Mapping
+from collections.abc import Callable, Collection, Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Protocol
@@ -19,10 +19,11 @@ from typing import Protocol
 from rosvar.diagnostics import Diagnostic, Location
 from rosvar.files import Confinement
 from rosvar.logic.bdd import BDD
-from rosvar.logic.choice import Choice
+from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import ArgInput, Slot
 from rosvar.logic.terms import Term
+from rosvar.ros.version import RosVersion
 
 Raw = str | Term
 """An attribute's string after substitution: concrete, or a term awaiting inputs."""
@@ -81,9 +82,81 @@ class EnvSetting:
     value: Raw
 
 
+@dataclass(frozen=True, slots=True)
+class NodeField:
+    """One meaning of a node declaration (its namespace, its full name...), made of the raw
+    fields ``keys`` by ``compute`` (None: the one key's value as it is). A dialect defines
+    each once (:class:`NodeSchema`); readers take it for one variant's values (:meth:`of`)
+    or over every configuration (:meth:`over`), instead of working it out again.
+
+    ``compute`` is total: where a part is a term, the result is a term that computes the
+    same once the inputs are known."""
+
+    keys: tuple[str, ...]
+    compute: Callable[[Sequence[Raw | None]], Raw | None] | None = None
+
+    def of(self, values: Mapping[str, Raw | None]) -> Raw | None:
+        """The meaning in one variant (absent fields None)."""
+        if self.compute is None:
+            return values.get(self.keys[0])
+        return self.compute([values.get(key) for key in self.keys])
+
+    def text(self, values: Mapping[str, str | None]) -> str | None:
+        """The meaning of known strings: a string (or None) too."""
+        value = self.of(values)
+        assert value is None or isinstance(value, str)
+        return value
+
+    def over(self, fields: Mapping[str, Choice[Raw | None]]) -> Choice[Raw | None]:
+        """The meaning in every configuration: a field read as it is stays the same
+        :class:`Choice` (shared by the declarations of one scope)."""
+        if self.compute is None:
+            return fields[self.keys[0]]
+        if not self.keys:  # a constant (:func:`constant_field`), in the fields' space
+            false = next(iter(fields.values())).false
+            return Choice.of([(~false, self.compute(()))], false)
+        return combine([fields[key] for key in self.keys], self.compute)
+
+
+def constant_field(value: Raw | None) -> NodeField:
+    """A meaning a dialect's nodes never vary in (ROS 1 has no composable node's plugin)."""
+    return NodeField((), lambda _values: value)
+
+
+@dataclass(frozen=True)
+class NodeSchema:
+    """How one dialect's node declarations read: their typed accessors, one definition
+    each. The node tag of the dialect stamps its declarations with it (``NodeDecl.schema``).
+    """
+
+    version: RosVersion
+    package: NodeField
+    executable: NodeField
+    name: NodeField
+    """The node's own name as the launch file gives it (ROS 2: None, its code names it)."""
+    namespace: NodeField
+    """The namespace it is launched in (ROS 2: the pushed one, then its own, absolute;
+    None where neither is given)."""
+    full_name: NodeField
+    """Its namespace joined with its name (None without a name)."""
+    args: NodeField
+    plugin: NodeField
+    """A ROS 2 composable node's class."""
+    launched: tuple[str, ...]
+    """The raw fields the accessors read, in the order a node's variants are formed."""
+
+    def __post_init__(self) -> None:
+        accessors = (self.package, self.executable, self.name, self.namespace)
+        for accessor in (*accessors, self.full_name, self.args, self.plugin):
+            missing = set(accessor.keys) - set(self.launched)
+            if missing:
+                raise ValueError(f"{self.version.label} node fields {missing} are not launched")
+
+
 @dataclass(slots=True)
 class NodeDecl:
-    """A ``<node>`` or ``<test>``; ``fields`` hold raw strings (or None when absent)."""
+    """A ``<node>`` or ``<test>``; ``fields`` hold raw strings (or None when absent), which
+    ``schema`` (the dialect's) reads."""
 
     condition: BDD
     location: Location
@@ -92,6 +165,7 @@ class NodeDecl:
     fields: dict[str, Choice[Raw | None]]
     remaps: list[Remap]
     env: list[EnvSetting]
+    schema: NodeSchema
     # the args its scope sees (undefined ones as a non-text leaf), for conditions written
     # outside the launch files about the node: a hinted interface entry's ``when:``
     args: Mapping[str, Choice[object]] = field(default_factory=dict)
@@ -100,10 +174,14 @@ class NodeDecl:
     def field(self, key: str) -> Choice[Raw | None]:
         return self.fields[key]
 
+    def value(self, accessor: NodeField) -> Choice[Raw | None]:
+        """``accessor`` (one of ``schema``'s) over every configuration."""
+        return accessor.over(self.fields)
+
     @property
     def ros2(self) -> bool:
         """Whether ``ros2 launch`` starts it: its name composes a pushed namespace."""
-        return "ros_namespace" in self.fields
+        return self.schema.version is RosVersion.ROS2
 
 
 @dataclass(slots=True)

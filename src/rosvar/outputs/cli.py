@@ -357,7 +357,7 @@ def _main(argv: Sequence[str] | None) -> int:
     except BrokenPipeError:
         return EXIT_OK
     except Exception as error:
-        from rosvar.analyses.feature_model.model import ModelTooLarge  # imported if raised
+        from rosvar.analyses.feature_model.features import ModelTooLarge  # imported if raised
 
         if not isinstance(error, ModelTooLarge):
             raise

@@ -67,10 +67,10 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
         ],
         "nodes": [
             {
-                "name": _values(n.fields["name"], model),
-                "namespace": _values(n.fields["namespace"], model),
-                "package": _values(n.fields["pkg"], model),
-                "type": _values(n.fields["type"], model),
+                "name": _values(n.value(n.schema.name), model),
+                "namespace": _values(n.fields["namespace"], model),  # its own (ROS 2: not pushed)
+                "package": _values(n.value(n.schema.package), model),
+                "type": _values(n.value(n.schema.executable), model),
                 "test": n.is_test,
                 "condition": describe(n.condition),
                 **n.location.to_json(),

@@ -24,7 +24,6 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros1.resolve import ResolutionError, Restriction
 from rosvar.ros2.conventions import command_line
-from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, file_entries, typed
 from rosvar.ros2.launch import interpret
 from rosvar.ros2.tags.node import ProcessKind
@@ -145,7 +144,8 @@ def _node(decl: NodeDecl, view: View, warnings: list[dict[str, object]]) -> dict
     if given.namespace is not None:
         namespace: str | None = given.namespace
     else:
-        namespace = make_absolute(prefix_namespace(text("ros_namespace"), text("namespace")))
+        texts = {key: text(key) for key in decl.schema.namespace.keys}
+        namespace = decl.schema.namespace.text(texts)
     fqn = None
     if name is not None:
         fqn = (namespace or "").rstrip("/") + "/" + name

@@ -17,7 +17,7 @@ import pytest
 
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
-from outputs.web.test_overview import wired_configurator, wired_workspace
+from outputs.web.test_overview import expected_links, wired_configurator, wired_workspace
 from rosvar.outputs.web import api as api_module
 from rosvar.outputs.web.overview import SEPARATOR, Grouping, key_of, labels, packages
 
@@ -498,12 +498,14 @@ def test_many_topics_link_closed_boxes_and_only_open_groups_fetch_theirs(
         assert fetched_groups(answers) == set()  # nothing open
 
         def expected() -> dict[tuple[str, str], dict[str, list[int]]]:
+            """The whole state's names between the closed boxes drawn, pair by pair."""
             units = {u["id"] for u in app.units("group")}
             found: dict[tuple[str, str], dict[str, list[int]]] = {}
-            for link in app.state["graph"]["links"]:
-                kind, source, target = link["id"].split("\u0002")
+            grouping = Grouping(app.state["grouping"])
+            for link, count in expected_links(app.whole, grouping).items():
+                kind, source, target = link.split("\u0002")
                 if f"g:{source}" in units and f"g:{target}" in units:
-                    found.setdefault((f"g:{source}", f"g:{target}"), {})[kind] = link["count"]
+                    found.setdefault((f"g:{source}", f"g:{target}"), {})[kind] = count
             return found
 
         start = drawn_links(app)
@@ -523,6 +525,8 @@ def test_many_topics_link_closed_boxes_and_only_open_groups_fetch_theirs(
         assert base.endswith("drivers/base.launch")
         kinds = {body.get("kind") for path, body, _ in answers if path == "/api/group"}
         assert kinds == {"nodes", "topics", "services", "actions"}
+        [boxes] = [body["groups"] for path, body, _ in answers if path == "/api/links"]
+        assert sorted(boxes) == sorted(u["element"]["key"] for u in app.units("group"))
         assert len(app.units("topic")) == groups[base]["topics"][1] > 250
         assert drawn_links(app) == expected() != {}
         app.assert_shows_server_state()
@@ -727,6 +731,7 @@ def test_husky_clicks_update_the_page_in_place(page: Any, husky: Live) -> None:
 
 MAX_DRAWN = 150  # units a readable drawing holds; Husky has 985 nodes and 7,500 params
 LEGIBLE_ZOOM = 0.6  # 12 px labels at 7 px or more
+READABLE_ZOOM = 0.35  # a whole drawing of a hundred units: labels at 4 px, shapes and links clear
 
 
 def husky_file(app: App, name: str) -> str:
@@ -752,6 +757,54 @@ def overlapping(app: App) -> list[tuple[str, str]]:
     return pairs
 
 
+def beyond_the_canvas(app: App) -> dict[str, float]:
+    """How far (px) the drawn elements' bounding box, labels included, reaches past each side
+    of the canvas once the view stopped moving: empty when the whole drawing is in view."""
+    app.wait_for_layout()
+    app.page.wait_for_function("() => !window.rosvar.graph.cy.animated()")
+    box: dict[str, float] = app.page.evaluate(
+        """() => { const cy = window.rosvar.graph.cy;
+                   const b = cy.elements(':visible').renderedBoundingBox();
+                   return {left: -b.x1, top: -b.y1,
+                           right: b.x2 - cy.width(), bottom: b.y2 - cy.height()}; }"""
+    )  # fmt: skip
+    return {side: reach for side, reach in box.items() if reach > 0.5}
+
+
+def zoom(app: App) -> float:
+    return float(app.page.evaluate("window.rosvar.graph.cy.zoom()"))
+
+
+def test_husky_the_whole_drawing_is_in_view_until_the_user_moves_it(page: Any, husky: Live) -> None:
+    """The first view, Fit and the view after each choice show the whole drawn graph; once
+    the user zoomed, a choice leaves the view alone until the next Fit."""
+    page.set_viewport_size({"width": 1600, "height": 1000})
+    app = App(page, husky)
+    assert beyond_the_canvas(app) == {} and zoom(app) >= LEGIBLE_ZOOM
+    page.click("#fit")
+    assert beyond_the_canvas(app) == {}
+    app.choose(husky_file(app, "husky_playpen.launch"), "select")
+    assert app.units("node")  # its nodes drawn one by one, with their topics
+    assert beyond_the_canvas(app) == {} and zoom(app) >= READABLE_ZOOM
+    page.click("#fit")
+    assert beyond_the_canvas(app) == {}
+    canvas = page.locator("#graph").bounding_box()
+    page.mouse.move(canvas["x"] + canvas["width"] / 2, canvas["y"] + canvas["height"] / 2)
+    for _ in range(5):
+        page.mouse.wheel(0, -400)  # the user zooms in
+    page.wait_for_function("() => !window.rosvar.graph.cy.animated()")
+    zoomed = zoom(app)
+    assert beyond_the_canvas(app) != {}
+    runs = page.evaluate("window.rosvar.graph.layoutRuns")
+    app.choose(husky_file(app, "husky_empty_world.launch"), "deselect")
+    assert page.evaluate("window.rosvar.graph.layoutRuns") > runs  # units went: placed again
+    assert zoom(app) == zoomed  # the view stays where the user put it
+    page.click("#fit")
+    assert beyond_the_canvas(app) == {}
+    app.choose(husky_file(app, "husky_playpen.launch"), "select")  # withdrawn: fewer units
+    assert beyond_the_canvas(app) == {}
+
+
 def test_husky_overview_aggregates_and_opens_the_selected_files(page: Any, husky: Live) -> None:
     app = App(page, husky)
     app.assert_shows_server_state()
@@ -769,7 +822,7 @@ def test_husky_overview_aggregates_and_opens_the_selected_files(page: Any, husky
     assert own and {n["id"] for n in own} <= alone  # the selected file's nodes, one by one
     assert page.evaluate("window.rosvar.graph.layoutRuns") > runs  # placed again
     assert overlapping(app) == []
-    assert page.evaluate("window.rosvar.graph.cy.zoom()") >= LEGIBLE_ZOOM
+    assert beyond_the_canvas(app) == {} and zoom(app) >= READABLE_ZOOM
     # elements going away: the layout runs again (no holes) and the page still shows all
     # (husky_empty_world.launch, which loads husky_playpen's nodes too, is out already)
     assert server["features"][husky_file(app, "husky_empty_world.launch")]["state"] == "deselected"
@@ -836,7 +889,7 @@ def test_husky_params_and_namespaces_stay_bounded(page: Any, husky: Live) -> Non
     if len(largest["element"]["params"]) > 50:
         page.locator("#details button", has_text="more").click()
         assert rows.count() > 50
-    page.select_option("#group-by", "namespace")
+    app.wait_for_update(lambda: page.select_option("#group-by", "namespace"))
     app.assert_shows_server_state()
     assert drawn(app) <= MAX_DRAWN
     size = page.evaluate(

@@ -216,6 +216,10 @@ def test_deltas_in_overview_mode_patch_to_the_whole_state(examples: Live) -> Non
         ("/api/group", {"group": "", "kind": "things"}),
         ("/api/group", {"group": "", "page": True}),
         ("/api/grouping", {"grouping": 3}),
+        ("/api/links", {"groups": "\u0001pkg"}),
+        ("/api/links", {"groups": [3]}),
+        ("/api/links", {"groups": ["x" * 5000]}),
+        ("/api/links", {}),
     ],
 )
 def test_bad_overview_requests_are_refused(examples: Live, path: str, body: dict[str, Any]) -> None:
@@ -228,6 +232,8 @@ def test_bad_overview_requests_are_refused(examples: Live, path: str, body: dict
 def test_members_need_overview_mode(examples: Live) -> None:
     tab = examples.open()
     reply = examples.call("POST", "/api/group", {"session": tab["session"], "group": ""})
+    assert reply.status == 400
+    reply = examples.call("POST", "/api/links", {"session": tab["session"], "groups": []})
     assert reply.status == 400
 
 
@@ -349,6 +355,12 @@ def expected_links(whole: dict[str, Any], grouping: Grouping) -> dict[str, list[
     return found
 
 
+def linked(live: Live, session: str, groups: list[str]) -> dict[str, list[int]]:
+    """Link id → [present, possible] between ``groups``, as the API answers."""
+    answer = live.post("/api/links", {"session": session, "groups": groups})
+    return {link["id"]: link["count"] for link in answer["links"]}
+
+
 @pytest.mark.parametrize("grouping", list(Grouping))
 def test_links_aggregate_the_whole_states_names_per_pair_of_groups(
     wired: Live, grouping: Grouping
@@ -363,8 +375,14 @@ def test_links_aggregate_the_whole_states_names_per_pair_of_groups(
         compact = wired.call("GET", f"/api/state?session={session}").json()
         whole = wired.whole(session)
         expected = expected_links(whole, grouping)
-        links = {link["id"]: link["count"] for link in compact["graph"]["links"]}
-        assert links == expected
+        every = [group["id"] for group in compact["graph"]["groups"]]
+        assert linked(wired, session, every) == expected
+        assert "links" not in compact["graph"]  # asked for apart, for the boxes drawn
+        # the boxes of one level: the links between those alone
+        top = [key for key in every if key.count(SEPARATOR) == 1]
+        assert linked(wired, session, top) == {
+            key: count for key, count in expected.items() if set(key.split(LINK)[1:]) <= set(top)
+        }
         assert compact["channels"] == {
             kind: sum(e["presence"] != "absent" for e in whole["graph"][kind]) for kind in SIDES
         }

@@ -9,6 +9,7 @@ import pytest
 from rosvar.interpreter.model import LaunchModel, NodeDecl
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
+from rosvar.ros1.resolve import Restriction
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -235,3 +236,43 @@ def test_anonymous_names_agree_with_roslaunch(ws: LaunchWorkspace) -> None:
     file = ws.launch("anon.launch", ANON)
     [result] = ws.assert_agrees(file, [{}])
     assert len(result["nodes"]) == 3
+
+
+TYPED = """
+  <arg name="robot" default="r1"/>
+  <arg name="sub" default="arm"/>
+  <group ns="$(arg robot)">
+    <node pkg="pkg" type="driver" name="driver" ns="$(arg sub)" args="--robot $(arg robot)"/>
+  </group>
+"""
+
+
+@pytest.mark.oracle
+def test_typed_fields_in_a_configuration_are_what_roslaunch_launches(
+    ws: LaunchWorkspace,
+) -> None:
+    """Each typed field, over every configuration, restricted to one (given values that are
+    ``<other>`` slots of the shared model: terms evaluated) is roslaunch's value."""
+    file = ws.launch("typed.launch", TYPED)
+    model = ws.model(file)
+    [node] = model.nodes
+    schema = node.schema
+    accessors = {
+        "name": schema.full_name,
+        "namespace": schema.namespace,
+        "package": schema.package,
+        "type": schema.executable,
+        "args": schema.args,
+    }
+    configs = [{}, {"robot": "r2"}, {"robot": "r2", "sub": "x"}, {"sub": "/abs"}]
+    results = ws.oracle(file, [(config, {}) for config in configs])
+    for config, theirs in zip(configs, results, strict=True):
+        restriction = Restriction(ws.analysis(), model, config, {})
+        assert theirs["ok"] and restriction.holds(node.condition)
+        ours = {
+            key: restriction.pick(node.value(accessor), node.location, key)
+            for key, accessor in accessors.items()
+        }
+        [expected] = theirs["nodes"]
+        assert ours == {key: expected[key] for key in accessors}, config
+    assert schema.name.of({"name": "driver"}) == "driver"

@@ -47,6 +47,8 @@ def test_aliases_and_tags_find_one_entry() -> None:
     assert ACTIONS.by_python["launch_ros", "ROSTimer"] is timer
     push = ACTIONS.by_name["push-ros-namespace"]
     assert ACTIONS.by_name["push_ros_namespace"] is push and push.tag == "push-ros-namespace"
+    assert ACTIONS.by_python["launch_ros", "PushROSNamespace"] is push
+    assert ACTIONS.by_python["launch_ros", "PushRosNamespace"] is push
 
 
 def test_attributes_are_the_arguments_and_the_xml_only_ones() -> None:

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 
 from rosvar.analyses.conflicts import Clash, Occurrence
-from rosvar.analyses.feature_model.model import FileFeature, name_of
+from rosvar.analyses.feature_model.features import FileFeature, name_of
 from rosvar.logic.bdd import BDD, Manager, transfer
 from rosvar.logic.conditions import ConditionSpace
 

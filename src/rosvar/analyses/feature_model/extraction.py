@@ -12,11 +12,10 @@ import os
 from collections.abc import Callable, Mapping, Sequence
 
 from rosvar.analyses.conflicts import Occurrence, index, internal_clashes
-from rosvar.analyses.feature_model.model import (
+from rosvar.analyses.feature_model.features import (
     ArgFeature,
     Constraint,
     ConstraintKind,
-    FeatureModel,
     FileFeature,
     ModelPart,
     ModelTooLarge,
@@ -24,13 +23,15 @@ from rosvar.analyses.feature_model.model import (
     launched_conditions,
     value_text,
 )
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.solver import build
 from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
+from rosvar.logic.atoms import PredicateAtom, SlotAtom
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
-from rosvar.logic.conditions import ConditionSpace, PredicateAtom, SlotAtom
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import UNSET, ArgInput
 from rosvar.logic.terms import Apply, Hole, Operand, term_inputs
 from rosvar.workspace.paths import real_path

@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Iterable, Mapping, Sequence
 
-from rosvar.analyses.feature_model.model import FileFeature
+from rosvar.analyses.feature_model.features import FileFeature
 
 FORCE_ROUNDS = 100
 FORCE_PATIENCE = 10  # rounds without a shorter span before FORCE stops

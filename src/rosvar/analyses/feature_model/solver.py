@@ -14,7 +14,7 @@ from functools import cached_property
 from rosvar.analyses.conflicts import Clash, Occurrence
 from rosvar.analyses.feature_model.counting import CountedDiagram
 from rosvar.analyses.feature_model.exclusions import declaring, excluding, exclusions
-from rosvar.analyses.feature_model.model import Constraint, FileFeature, ModelTooLarge, name_of
+from rosvar.analyses.feature_model.features import Constraint, FileFeature, ModelTooLarge, name_of
 from rosvar.analyses.feature_model.ordering import order, widest_cut
 from rosvar.logic import bdd
 from rosvar.logic.bdd import (

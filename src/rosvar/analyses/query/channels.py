@@ -58,7 +58,7 @@ def _provider(
         nodes: dict[tuple[Location, str | None], Element] = {}
         for decl, node in node_elements(analysis, model):
             nodes[decl.location, node.name] = node
-            if decl.field("name").values() == [None]:
+            if decl.value(decl.schema.name).values() == [None]:
                 # a ROS 2 node the launch file does not name: its code does (the edge's)
                 nodes[decl.location, None] = node
         named: dict[str, list[Edge]] = {}

@@ -17,7 +17,6 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Protocol
 
-from rosvar.analyses.conflicts import ros2_node_name
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import Binary, DeferredValue, LaunchModel, NodeDecl, ParamDecl
 from rosvar.interpreter.workspace_models import Analysis
@@ -25,7 +24,7 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
-from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace, unnamed
+from rosvar.ros2.conventions.namespaces import unnamed
 
 
 class Kind(StrEnum):
@@ -144,28 +143,12 @@ def _const(space: ConditionSpace, value: object) -> Choice[object]:
     return Choice.const(space, value)
 
 
-def _name_fields(node: NodeDecl) -> tuple[str, ...]:
-    """The fields a node's name is made of: a ROS 2 node's pushed namespace comes first."""
-    if node.ros2:
-        return ("ros_namespace", "namespace", "name")
-    return ("namespace", "name")
-
-
-def _full_name(parts: Sequence[object]) -> str | None:
-    if not all(part is None or isinstance(part, str) for part in parts) or parts[-1] is None:
-        return None
-    if len(parts) == 3:  # ROS 2: launch_ros composes the pushed and the node's namespace
-        return ros2_node_name(parts)
+def _in_namespace(parts: Sequence[object]) -> str | None:
+    """A relative name (a remap's target) resolved in a namespace, where both are known."""
     namespace, name = parts
-    return names.ns_join("/" if namespace is None else namespace, name)  # type: ignore[arg-type]
-
-
-def _namespace(parts: Sequence[object]) -> object:
-    """A ROS 2 node's namespace: the pushed one and its own, combined and absolute."""
-    pushed, namespace = parts
-    if not all(part is None or isinstance(part, str) for part in parts):
+    if not isinstance(name, str) or not (namespace is None or isinstance(namespace, str)):
         return None
-    return make_absolute(prefix_namespace(pushed or None, namespace or None)) or "/"  # type: ignore[arg-type]
+    return names.ns_join("/" if namespace is None else namespace, name)
 
 
 def _shown(value: object) -> str:
@@ -173,28 +156,28 @@ def _shown(value: object) -> str:
     return value if isinstance(value, str) else f"{value}"
 
 
-def _template(parts: Sequence[object]) -> str:
-    if len(parts) == 3:  # ROS 2: what is known of the pushed and the node's namespace
-        *namespaces, name = (_shown("" if part is None else part) for part in parts)
-        return names.ns_join("/" + "/".join(p.strip("/") for p in namespaces if p), name)
-    namespace, name = (_shown("/" if part is None else part) for part in parts)
-    return names.ns_join(namespace, name)
+def _namespace(node: NodeDecl) -> Choice[object]:
+    """The namespace a node is launched in, ``/`` where none is given (ROS 2)."""
+    namespace = node.value(node.schema.namespace)
+    if None in namespace.values():
+        return _known(namespace.map(lambda value: names.SEP if value is None else value))
+    return _known(namespace)
 
 
-def _shown_names(
-    node: NodeDecl, names_: Choice[tuple[object, ...]]
-) -> Iterator[tuple[BDD, tuple[object, ...], str]]:
-    """Each variant of a node's name parts with its text for people: a ROS 2 node without a
-    name is ``⟨EXEC⟩`` in its namespace, per executable, as ``rosvar resolve`` prints it."""
-    for condition, parts in names_:
-        if len(parts) != 3 or parts[-1] is not None:
-            name = _full_name(parts)
-            yield condition, parts, name if name is not None else _template(parts)
+def _shown_names(node: NodeDecl) -> Iterator[tuple[BDD, str | None, str]]:
+    """Each variant of a node's full name (None where not known) with its text for people:
+    a ROS 2 node without a name is ``⟨EXEC⟩`` in its namespace, per executable, as
+    ``rosvar resolve`` prints it."""
+    schema = node.schema
+    for condition, name in node.value(schema.full_name):
+        if name is not None:
+            yield condition, name if isinstance(name, str) else None, _shown(name)
             continue
-        namespace = _template((*parts[:2], "")).rstrip("/")
-        for when, executable in node.fields["exec"]:
-            shown = unnamed(namespace, _shown("" if executable is None else executable))
-            yield condition & when, parts, shown
+        where = combine([node.value(schema.namespace), node.value(schema.executable)], tuple)
+        for when, (namespace, executable) in where:
+            both = condition & when
+            if both != both.bdd.false:
+                yield both, None, unnamed(_shown(namespace or ""), _shown(executable or ""))
 
 
 def _nodes(analysis: Analysis, model: LaunchModel) -> Iterator[Element]:
@@ -206,20 +189,14 @@ def node_elements(analysis: Analysis, model: LaunchModel) -> Iterator[tuple[Node
     space = analysis.space
     entry = analysis.label(model.file)
     for node in model.nodes:
-        fields = node.fields
-        keys = _name_fields(node)
-        namespace = _known(fields["namespace"])
-        if len(keys) == 3:
-            namespace = combine([fields["ros_namespace"], fields["namespace"]], _namespace)
-        for condition, parts, shown in _shown_names(
-            node, combine([fields[k] for k in keys], tuple)
-        ):
-            name = _full_name(parts)
+        schema = node.schema
+        namespace = _namespace(node)
+        for condition, name, shown in _shown_names(node):
             values: dict[str, Choice[object]] = {
                 "name": _const(space, name),
                 "namespace": namespace,
-                "package": _known(fields["pkg"]),
-                "type": _known(fields["type"]),
+                "package": _known(node.value(schema.package)),
+                "type": _known(node.value(schema.executable)),
                 "test": _const(space, node.is_test),
                 "launch_file": _const(space, entry),
                 "file": _const(space, node.location.file),
@@ -260,7 +237,7 @@ def remapped_topics(analysis: Analysis, model: LaunchModel) -> list[Element]:
     for declaration, node in node_elements(analysis, model):
         for remap in declaration.remaps:
             target = Choice.of([(remap.condition, remap.target)], space.false)
-            for condition, name in combine([node.attribute("namespace"), target], _full_name):
+            for condition, name in combine([node.attribute("namespace"), target], _in_namespace):
                 presence = node.presence & condition
                 if name is not None and presence != space.false:
                     remapped.setdefault(name, []).append((presence, node))

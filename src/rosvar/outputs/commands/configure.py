@@ -62,7 +62,7 @@ def cmd_configure(options: argparse.Namespace) -> int:
 def _print_state(state: ConfigurationState, ros: RosVersion) -> None:
     """The summary of a configuration step, for people (a ROS 2 node holds its own
     parameters: they are counted on the nodes, not as the parameter server's)."""
-    from rosvar.analyses.feature_model.model import FeatureKind
+    from rosvar.analyses.feature_model.features import FeatureKind
     from rosvar.configuration.derivation import Presence
     from rosvar.configuration.engine import Selection
     from rosvar.configuration.graph import ElementKind

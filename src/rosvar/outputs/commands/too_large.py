@@ -7,7 +7,7 @@ import os
 import shlex
 from collections.abc import Sequence
 
-from rosvar.analyses.feature_model.model import ModelTooLarge
+from rosvar.analyses.feature_model.features import ModelTooLarge
 from rosvar.outputs.commands.terminal import shown_path
 
 

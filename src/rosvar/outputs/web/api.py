@@ -20,20 +20,22 @@ from collections.abc import Callable, Mapping
 from http import HTTPStatus
 from typing import TypeVar
 
-from rosvar.analyses.feature_model.model import FeatureKind
+from rosvar.analyses.feature_model.features import FeatureKind
 from rosvar.analyses.query.parser import QueryError
 from rosvar.configuration.choices import Action, ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.session import Session
 from rosvar.outputs.documents.state import state_document
 from rosvar.outputs.web.inspection import Inspector
-from rosvar.outputs.web.overview import Grouping, MemberKind, catalog, compact, members
+from rosvar.outputs.web.overview import Grouping, MemberKind, catalog, compact, links, members
 from rosvar.outputs.web.sessions import DEFAULT_CAPACITY, SessionStore, Tab
 
 MAX_TEXT = 4096
 """Longest accepted string field (feature ids and typed values are far shorter)."""
 
 MAX_PAGE = 100_000
+MAX_GROUPS = 10_000
+"""Most groups whose links one request asks for (the page asks for the boxes it draws)."""
 ENGINE_WAIT = 20.0
 """Seconds a call waits for the engine, busy with another's, before it is answered 503."""
 StrEnumT = TypeVar("StrEnumT", Grouping, MemberKind)
@@ -103,7 +105,8 @@ class Api:
         features = configurator.state([]).features  # the ids never change: known once
         configurator.derivation.prepare_counts()
         self._kinds = {key: feature.kind for key, feature in features.items()}
-        self._inspector = Inspector(configurator)
+        self._asking = 0  # requests in ``handle``: answered or waiting for the lock
+        self._inspector = Inspector(configurator, self._lock, lambda: self._asking > 0)
         self._rows = catalog(configurator)  # the catalog's answer, served without the lock
 
     def handle(self, method: str, path: str, query: Query, body: Body) -> Reply:
@@ -114,15 +117,20 @@ class Api:
             raise ApiError(HTTPStatus.NOT_FOUND, f"no such API: {path}")
         if (method, path) in UNLOCKED:
             return route(self, query, body)
-        if not self._lock.acquire(timeout=ENGINE_WAIT):
-            raise ApiError(
-                HTTPStatus.SERVICE_UNAVAILABLE,
-                f"the engine is busy with another request (over {ENGINE_WAIT:.0f} s): try again",
-            )
+        self._asking += 1  # the findings' listing gives way (Inspector)
         try:
-            return route(self, query, body)
+            if not self._lock.acquire(timeout=ENGINE_WAIT):
+                raise ApiError(
+                    HTTPStatus.SERVICE_UNAVAILABLE,
+                    f"the engine is busy with another request (over {ENGINE_WAIT:.0f} s): "
+                    "try again",
+                )
+            try:
+                return route(self, query, body)
+            finally:
+                self._lock.release()
         finally:
-            self._lock.release()
+            self._asking -= 1
 
     @property
     def sessions(self) -> int:
@@ -163,6 +171,24 @@ class Api:
         kind = MemberKind.NODES if "kind" not in body else _choice_of(body, "kind", MemberKind)
         document = state_document(tab.session.current())
         return members(document, tab.grouping, group, kind, _page(body))
+
+    def _links(self, query: Query, body: Body) -> Reply:
+        """The links between the given groups in the session's current state."""
+        _only(query, set())
+        _only(body, {"session", "groups"})
+        _key, tab = self._session(body)
+        if tab.grouping is None:
+            raise ApiError(HTTPStatus.BAD_REQUEST, "the session is not in overview mode")
+        groups = body.get("groups")
+        if (
+            not isinstance(groups, list)
+            or len(groups) > MAX_GROUPS
+            or not all(isinstance(key, str) and len(key) <= MAX_TEXT for key in groups)
+        ):
+            raise ApiError(
+                HTTPStatus.BAD_REQUEST, f"field 'groups' must be a list of at most {MAX_GROUPS} ids"
+            )
+        return {"links": links(state_document(tab.session.current()), tab.grouping, groups)}
 
     def _state(self, query: Query, body: Body) -> Reply:
         _only(query, {"session"})
@@ -265,6 +291,7 @@ ROUTES: dict[tuple[str, str], Route] = {
     ("GET", "/api/catalog"): Api._catalog,
     ("POST", "/api/grouping"): Api._grouping,
     ("POST", "/api/group"): Api._group,
+    ("POST", "/api/links"): Api._links,
     ("POST", "/api/undo"): functools.partial(Api._step, step=Session.undo),
     ("POST", "/api/redo"): functools.partial(Api._step, step=Session.redo),
     ("POST", "/api/reset"): functools.partial(Api._step, step=Session.reset),

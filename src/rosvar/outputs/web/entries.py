@@ -29,11 +29,10 @@ from rosvar.configuration.graph import (
     topic_name,
 )
 from rosvar.diagnostics import Location
-from rosvar.interpreter.model import Raw
-from rosvar.ros import names
+from rosvar.interpreter.model import NodeDecl, Raw
 from rosvar.ros1.resolve import ResolutionError, test_fields
 from rosvar.ros1.validation import node_values
-from rosvar.ros2.conventions.namespaces import full_name, make_absolute, prefix_namespace, unnamed
+from rosvar.ros2.conventions.namespaces import unnamed
 from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, typed
 from rosvar.ros2.resolve import parameter_file
 from rosvar.workspace.interfaces.model import Role
@@ -91,16 +90,16 @@ def _error(content: ErrorContent, _values: Values, _parts: Sequence[Shown]) -> l
 
 
 def _ros2_fields(
-    text: Mapping[str, str | None], parameters: Sequence[tuple[str | None, str | None]]
+    node: NodeDecl,
+    text: Mapping[str, str | None],
+    parameters: Sequence[tuple[str | None, str | None]],
 ) -> Fields:
     """A ROS 2 node's name, namespace and parameters as ``ros2 launch`` composes them: the
     pushed namespace, the node's own, its parameters merged in order (``resolve_ros2``'s).
     A node with no name takes one from its executable at run time: it is drawn as
     ``⟨EXEC⟩`` in its namespace, its ``fqn`` null."""
-    pushed, own = text.get("ros_namespace"), text.get("namespace")
-    namespace = make_absolute(prefix_namespace(pushed, own)) or "/"
-    name = text.get("name")
-    fqn = None if name is None else full_name(pushed, own, name)
+    namespace = node.schema.namespace.text(text) or "/"
+    fqn = node.schema.full_name.text(text)
     sources: list[Source] = []
     for first, second in parameters:
         try:
@@ -111,7 +110,7 @@ def _ros2_fields(
         except ValueError:
             continue  # not a value yet (an arg still open) or not readable: not shown
     return {
-        "name": fqn or unnamed(namespace, text.get("exec")),
+        "name": fqn or unnamed(namespace, node.schema.executable.text(text)),
         "fqn": fqn,
         "namespace": namespace,
         "parameters": effective(fqn, sources),
@@ -139,24 +138,25 @@ def _node(content: NodeContent, values: Values, parts: Sequence[Shown]) -> list[
         pair = _present(PartKind.ENV, setting, values, parts, undetermined)
         if pair is not None:
             settings.append(list(pair))
-    namespace = text.get("namespace") or "/"
+    schema = node.schema
+    namespace = schema.namespace.text(text) or "/"
     extra: Fields = {}
     if node.is_test:
         try:
             extra = test_fields(text, node.location)
         except ResolutionError:
             extra = {}
-    if "ros_namespace" in raw:  # a ROS 2 node
+    if node.ros2:
         present = [
             _present(PartKind.PARAMETER, p, values, parts, undetermined) for p in content.parameters
         ]
-        extra = _ros2_fields(text, [p for p in present if p is not None])
+        extra = _ros2_fields(node, text, [p for p in present if p is not None])
     return [
         {
-            "name": names.ns_join(namespace, text.get("name") or ""),
+            "name": schema.full_name.text(text),
             "namespace": namespace,
-            "package": text.get("pkg"),
-            "type": text.get("type"),
+            "package": schema.package.text(text),
+            "type": schema.executable.text(text),
             **typed_fields,
             "remaps": sorted([list(p) for p in mapping.items()]),
             "env": sorted(settings),

@@ -16,9 +16,16 @@ from dataclasses import dataclass, field
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.workspace.interfaces import python2
-from rosvar.workspace.interfaces.model import Default, Entry, Expression, Extracted, Role
-from rosvar.workspace.interfaces.reading import read_text
-from rosvar.workspace.interfaces.values import Text, action_type
+from rosvar.workspace.interfaces.model import (
+    Default,
+    Entry,
+    Expression,
+    Extracted,
+    NamedBy,
+    Role,
+)
+from rosvar.workspace.interfaces.reading import SourceReader
+from rosvar.workspace.interfaces.values import ParamRef, Text, action_type
 
 _CALLS: dict[str, tuple[Role, str]] = {
     # callee → role, and the keyword naming the type argument (the second positional one)
@@ -48,6 +55,12 @@ _RCLPY_ACTIONS = {  # constructor → role; (node, type, name, ...)
 }
 _RCLPY_NODES = frozenset({"rclpy.node.Node", "rclpy.create_node"})
 """Calls that build an rclpy node: the first argument is its name."""
+_VALUE_ATTRIBUTES = frozenset(
+    {"value", "string_value", "get_parameter_value", "integer_value", "double_value"}
+)
+"""What rclpy's parameter objects give their value through."""
+MAX_DEPTH = 64
+"""Nested ``+`` and f-string parts of a name evaluated before it is given up as unknown."""
 _MODULE_ALIASES = {
     "actionlib.simple_action_server": "actionlib",
     "actionlib.simple_action_client": "actionlib",
@@ -121,29 +134,63 @@ class _Reader:
                 full = alias + full[len(module) :]
         return full
 
-    def text(self, node: ast.expr) -> Text:
+    def text(self, node: ast.expr, depth: int = 0) -> Text:
+        """The name ``node`` spells, its unknown parts symbolic."""
+        value = self.value(node, depth)
+        return value if isinstance(value, Text) else Text.unknown(_unparse(node))
+
+    def value(self, node: ast.expr, depth: int = 0) -> Text | ParamRef:
+        """A name, or the value of a parameter the script reads (``rospy.get_param("~topic",
+        "scan")``, rclpy's ``declare_parameter("topic", "scan").value``)."""
+        if depth > MAX_DEPTH:
+            return Text.unknown(_unparse(node))
         if isinstance(node, ast.Constant) and isinstance(node.value, str):
             return Text(node.value)
         if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
-            return self.text(node.left) + self.text(node.right)
+            return self.text(node.left, depth + 1) + self.text(node.right, depth + 1)
         if isinstance(node, ast.JoinedStr):
             result = Text("")
             for part in node.values:
                 if isinstance(part, ast.FormattedValue):
-                    result = result + self.text(part.value)
+                    result = result + self.text(part.value, depth + 1)
                 else:
-                    result = result + self.text(part)
+                    result = result + self.text(part, depth + 1)
             return result
+        read = self.param_read(node, depth)
+        if read is not None:
+            return read
         name = _binding_name(node)
         if name is not None and name not in self.active:
             values = self.scope.strings.get(name, [])
             if len(values) == 1:
                 self.active.add(name)
                 try:
-                    return self.text(values[0])
+                    return self.value(values[0], depth + 1)
                 finally:
                     self.active.discard(name)
-        return Text.unknown(ast.unparse(node))
+        return Text.unknown(_unparse(node))
+
+    def param_read(self, node: ast.expr, depth: int) -> ParamRef | None:
+        """``rospy.get_param(name[, default])``; rclpy's ``declare_parameter(name[,
+        value])`` and ``get_parameter(name)``, through ``.value`` or
+        ``.get_parameter_value().string_value``."""
+        while isinstance(node, ast.Attribute) and node.attr in _VALUE_ATTRIBUTES:
+            node = node.value
+            getter = node.func if isinstance(node, ast.Call) else None
+            if isinstance(getter, ast.Attribute) and getter.attr == "get_parameter_value":
+                node = getter.value
+        if not isinstance(node, ast.Call) or not node.args:
+            return None
+        callee = self.qualified(node.func)
+        method = node.func.attr if isinstance(node.func, ast.Attribute) else None
+        if callee != "rospy.get_param" and method not in ("declare_parameter", "get_parameter"):
+            return None
+        name = self.text(node.args[0], depth + 1)
+        given = node.args[1] if len(node.args) > 1 and method != "get_parameter" else None
+        if given is None:
+            given = next((k.value for k in node.keywords if k.arg in ("default", "value")), None)
+        default = self.text(given, depth + 1) if given is not None else None
+        return ParamRef(name, default.value if default is not None and default.static else None)
 
     def type_name(self, node: ast.expr | None, role: Role, ros2: bool = False) -> str | None:
         """The ROS type a class names (ROS 2's with its ``msg``/``srv``/``action`` part)."""
@@ -225,7 +272,18 @@ class _Reader:
         if name_node is None:
             return None
         location = Location(self.path, call.lineno, call.col_offset + 1)
-        name = self.text(name_node)
+        value = self.value(name_node)
+        if isinstance(value, ParamRef) and value.name.static and role is not Role.PARAMS:
+            return Entry(
+                role,
+                Text.unknown(value.name.value).value,
+                location,
+                type=self.type_name(second, role, ros2),
+                default=value.default,
+                static=False,
+                named_by=NamedBy(value.name.value),
+            )
+        name = value if isinstance(value, Text) else Text.unknown(_unparse(name_node))
         if not name.static:
             self.sink.warning(
                 "interface-symbolic-name",
@@ -242,31 +300,39 @@ class _Reader:
         return Entry(role, name.value, location, type=type_name, static=name.static)
 
 
+def _unparse(node: ast.expr) -> str:
+    """``node`` as written (``ast.unparse`` recurses: a deeper one is elided)."""
+    try:
+        return ast.unparse(node)
+    except RecursionError:
+        return "…"
+
+
 def _default(node: ast.expr | None) -> Default | None:
     if node is None:
         return None
     try:
         value = ast.literal_eval(node)
-    except (ValueError, SyntaxError, TypeError):
-        return Expression(ast.unparse(node))
+    except (ValueError, SyntaxError, TypeError, RecursionError):
+        return Expression(_unparse(node))
     if isinstance(value, bool | int | float | str):
         return value
-    return Expression(ast.unparse(node))
+    return Expression(_unparse(node))
 
 
-def extract(path: str, sink: DiagnosticSink) -> list[Entry]:
+def extract(path: str, sink: DiagnosticSink, files: SourceReader | None = None) -> list[Entry]:
     """The interface of the Python script at ``path`` (empty when it cannot be parsed)."""
-    return extract_node(path, sink).entries
+    return extract_node(path, sink, files).entries
 
 
-def extract_node(path: str, sink: DiagnosticSink) -> Extracted:
+def extract_node(path: str, sink: DiagnosticSink, files: SourceReader | None = None) -> Extracted:
     """:func:`extract`, with the name an rclpy node gives itself (ROS 2)."""
-    source = read_text(path)
+    source = (files or SourceReader(sink=sink)).text(path)
     if source is None:
         return Extracted([])
     try:
         tree, rewritten = python2.parse(source, path)
-    except (SyntaxError, ValueError) as error:
+    except (SyntaxError, ValueError, RecursionError, MemoryError) as error:
         line = getattr(error, "lineno", None) or 1
         sink.warning(
             "interface-unparsable", f"cannot parse the script: {error}", Location(path, line)

@@ -137,6 +137,11 @@ export class Client {
     return request("POST", "/api/group", { session: this.session, group, kind, page });
   }
 
+  // The links between groups (the closed boxes drawn) in the session's current state.
+  links(groups) {
+    return request("POST", "/api/links", { session: this.session, groups });
+  }
+
   async post(path, fields) {
     const version = this.held?.version;
     return this.receive(await request("POST", path, { session: this.session, version, ...fields }));
