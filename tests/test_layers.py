@@ -178,6 +178,9 @@ CORE_TO_DIALECT_PENDING = {
     "rosvar.outputs.commands.resolve -> rosvar.ros2.conventions.namespaces",
     "rosvar.outputs.commands.resolve -> rosvar.ros2.resolve",
     "rosvar.outputs.web.entries -> rosvar.ros1.resolve",
+    # issue 30 item 1 (h-engine): the graph loads what a typed text reaches as ROS 1's
+    # resolution loads it (the same conversions and checks), until one resolution serves both
+    "rosvar.configuration.graph -> rosvar.ros1.resolve",
     "rosvar.outputs.web.entries -> rosvar.ros1.validation",
     "rosvar.outputs.web.entries -> rosvar.ros2.conventions.namespaces",
     "rosvar.outputs.web.entries -> rosvar.ros2.conventions.parameters",

@@ -538,3 +538,43 @@ def test_real_ros2_repositories_together() -> None:
     assert not [path for path in workspace.launch_files if path.endswith(".launch")]
     assert workspace.diagnostics == []  # no package name is shared between the repositories
     assert workspace.find_share("husky_control") == str(ROS2_DATA / "husky" / "husky_control")
+
+
+@pytest.mark.parametrize("outputs", [("install",), ("build", "devel"), ("build", "install", "log")])
+def test_a_workspace_root_reads_its_source_not_its_builds(
+    tmp_path: Path, outputs: tuple[str, ...]
+) -> None:
+    """issue 30.6: at a workspace's root, a stale ``install/share`` copy of a package replaced
+    its ``src`` copy ("…is also at …; that first one is used")."""
+    ws = tmp_path / "ws"
+    source = make_package(ws / "src" / "robot", "robot")
+    kept = write(source / "launch" / "robot.launch")
+    for output in outputs:
+        stale = make_package(ws / output / "share" / "robot", "robot")
+        write(stale / "launch" / "robot.launch")
+        write(stale / "launch" / "old.launch")
+        write(ws / output / "lib" / "robot" / "x.launch")
+    workspace = discover([ws], ros_package_path="")
+    assert workspace.packages["robot"].path == str(source)
+    assert workspace.launch_files == [str(kept)]
+    assert codes(workspace) == ["workspace-outputs-skipped"]
+    [note] = workspace.diagnostics
+    assert note.severity is Severity.NOTE and note.location.file == str(ws)
+    assert note.message.startswith(", ".join(f"{o}/" for o in sorted(outputs)))
+
+
+def test_only_a_workspace_root_skips_such_folders(tmp_path: Path) -> None:
+    """A package's own ``build`` or ``log`` folder, or a folder named ``install`` where there
+    is no ``src`` beside it, is read as any other."""
+    install = make_package(tmp_path / "install" / "share" / "tool", "tool")
+    write(install / "launch" / "tool.launch")
+    pkg = make_package(tmp_path / "pkgs" / "p", "p")
+    inner = write(pkg / "log" / "log.launch")
+    workspace = discover([tmp_path], ros_package_path="")
+    assert set(workspace.packages) == {"tool", "p"}
+    assert str(inner) in workspace.launch_files
+    marked = tmp_path / "ws"
+    (marked / "src").mkdir(parents=True)
+    write(marked / ".catkin_workspace", "")
+    make_package(marked / "install" / "share" / "q", "q")
+    assert "q" not in discover([marked], ros_package_path="").packages

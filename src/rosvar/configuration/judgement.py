@@ -243,6 +243,12 @@ class Presences:
             touched.update(self._open)
         return touched
 
+    def presence(self, index: int, decisions: Decisions, typed: Typed) -> Presence:
+        """Condition ``index``'s presence under ``decisions`` and the texts ``typed``, judged
+        alone (a refusal's question, outside the steps' judgements)."""
+        [verdict] = self.derivation.presences([(self._bounds(index, typed), None)], decisions)
+        return verdict.presence
+
     def _bounds(self, index: int, typed: Typed) -> Bounds:
         """The bounds of a condition, decided further by the texts typed (for any file's
         args: whether a file is launched reads its includers')."""

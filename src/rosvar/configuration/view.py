@@ -20,11 +20,13 @@ from rosvar.configuration.graph import (
     NAMED,
     Element,
     ElementKind,
+    Failure,
     Fields,
     Render,
     Shown,
     Values,
     VariationalGraph,
+    failures,
 )
 from rosvar.configuration.judgement import Judged, Judgement, Presences, Typed
 from rosvar.configuration.lowering import Lowering
@@ -72,13 +74,18 @@ class Graph:
     errors: list[Fields] = field(default_factory=list)
 
 
+Failures = Mapping[int, tuple[Failure, ...]]
+"""Element index → where the strings typed for its file's args make roslaunch stop in it."""
+
+
 @dataclass(frozen=True)
 class Rendering:
     """The graph entries a view's presences show, kept to render longer lists'."""
 
     entries: list[list[Fields]]  # per element of the graph
     starts: list[int]  # per element: where its entries start in its kind's list
-    graph: Graph
+    lists: dict[str, list[Fields]]  # per kind: its elements' entries
+    graph: Graph  # the lists, and the failures of typed texts among the errors
 
 
 class View:
@@ -98,11 +105,13 @@ class View:
         texts: Mapping[str, str],
         typed: Typed,
         conflicts: list[ConflictState | None],
+        failures: Failures,
         before: View | None,
     ) -> None:
         self.decisions = decisions
         self.texts = texts  # arg id → its <other> text
         self.typed = typed
+        self.failures = failures
         self.conflicts = conflicts  # per pair of ``Conflicts``; None: gone
         self.before = before  # until rendered: the view it is judged and rendered from
         self.presences: Judgement | None = None  # set by ``Views.judgement``
@@ -202,6 +211,7 @@ class Views:
             renderings
         )
         self._entries: Memo[_Entry, list[Fields]] = Memo(renderings)
+        self._failure_entries: Memo[tuple[str, int, Failure, Shown], Fields] = Memo(renderings)
         self._symbolic = Values(lowering.concrete, lowering.host)  # no arg's string known
         self.initial = self._derive(derivation.initial, {}, None)
         self._views: PrefixCache[tuple[str, bool, str | None], View] = PrefixCache(
@@ -241,7 +251,92 @@ class Views:
             conflicts = self.conflicts.judge(
                 decisions, typed, self.describe, (before.decisions, before.typed, before.conflicts)
             )
-        return View(decisions, texts, typed, conflicts, before)
+        failures = self.failures(decisions, texts, before)
+        return View(decisions, texts, typed, conflicts, failures, before)
+
+    def failures(
+        self, decisions: Decisions, texts: Mapping[str, str], before: View | None = None
+    ) -> Failures:
+        """The elements whose strings make roslaunch stop: only a text typed for an
+        ``<other>`` value can (the model's own values were checked as it was interpreted,
+        each failure an error of the model under its condition). From ``before``, only the
+        elements reading an arg whose text or decided value changed are checked again."""
+        if before is None:
+            return self._check(decisions, texts, set(texts))
+        if not texts and not before.failures:
+            return before.failures
+        reach = {
+            a for a in texts.keys() | before.texts.keys() if texts.get(a) != before.texts.get(a)
+        }
+        if texts:
+            changed = decisions.decided.items() ^ before.decisions.decided.items()
+            reach.update(variable for variable, _value in changed)
+        return self._check(decisions, texts, reach, before.failures)
+
+    def stops(self, decisions: Decisions, texts: Mapping[str, str], arg: str) -> list[Failure]:
+        """The failures the text typed for ``arg`` brings into every product ``decisions``
+        leave (each present there)."""
+        typed = self._typed(texts)
+        return [
+            failure
+            for index, failed in self._check(decisions, texts, {arg}).items()
+            for failure in failed
+            if self.presences.presence(self._condition_of(index, failure), decisions, typed)
+            == Presence.PRESENT
+        ]
+
+    def _check(
+        self,
+        decisions: Decisions,
+        texts: Mapping[str, str],
+        reach: Iterable[str],
+        before: Failures | None = None,
+    ) -> Failures:
+        """``before`` with the elements reading an arg or value variable of ``reach`` checked
+        again under ``texts`` (the elements of a file with no text typed fail nowhere)."""
+        again = {index for key in reach for index in self._reading.get(key, ())}
+        if not again and before is not None:
+            return before
+        found = dict(before or {})
+        typed = self._typed(texts)
+        values: dict[str, Values] = {}
+        for index in again:
+            found.pop(index, None)
+            element = self.graph.elements[index]
+            mine = typed.get(element.entry)
+            if not mine or element.inputs.isdisjoint(mine):
+                continue
+            given = values.get(element.entry)
+            if given is None:
+                given = values[element.entry] = self._values(element.entry, decisions, texts)
+            failed = failures(element.content, given)
+            if failed:
+                found[index] = tuple(failed)
+        return found
+
+    def failure_entries(self, view: View, presences: Judgement) -> list[Fields]:
+        """The errors of ``view``'s failing elements that are not absent, each with the
+        presence of its element (or of the part it is in)."""
+        shown: list[Fields] = []
+        for index, failed in sorted(view.failures.items()):
+            element = self.graph.elements[index]
+            for number, failure in enumerate(failed):
+                condition = self._condition_of(index, failure)
+                where = presences.verdicts[condition].shown
+                if where[0] == Presence.ABSENT:
+                    continue
+                key = (element.id, number, failure, where)
+                entry = self._failure_entries.get(key)
+                if entry is None:
+                    [shown_error] = self.render(failure.error, self._symbolic, ())
+                    entry = self._failure_entries[key] = {
+                        **shown_error,
+                        "presence": where[0],
+                        "condition": where[1],
+                        "id": f"{element.id}!{number}",
+                    }
+                shown.append(entry)
+        return shown
 
     def judgement(self, view: View) -> Judgement:
         """``view``'s presences, judged on first use with those of the earlier views it is
@@ -339,7 +434,19 @@ class Views:
                     [(verdicts[c].verdict.presence, None) for c in parts],
                 )
             counts[element.kind][presence] += len(shown)
+        for index, failed in view.failures.items():
+            for failure in failed:
+                condition = self._condition_of(index, failure)
+                if verdicts[condition].verdict.presence == Presence.PRESENT:
+                    errors.extend(self.render(failure.error, self._symbolic, ()))
         return Summary(counts, errors)
+
+    def _condition_of(self, index: int, failure: Failure) -> int:
+        """The condition (of ``presences``) under which a failure of element ``index`` is
+        met: its element's, or its part's."""
+        if failure.part is None:
+            return self.presences.of_element[index]
+        return self.presences.of_parts[index][failure.part]
 
     def _given(
         self,
@@ -382,8 +489,11 @@ class Views:
                 moved.setdefault(self.graph.elements[index].kind, []).append(index)
             entries[index] = found
         lists, starts = self._lists(entries, earlier, moved)
-        graph = Graph(**{f"{kind}s": listed for kind, listed in lists.items()})
-        return Rendering(entries, starts, graph)
+        shown = {f"{kind}s": listed for kind, listed in lists.items()}
+        failing = self.failure_entries(view, presences)
+        if failing:
+            shown["errors"] = [*shown.get("errors", []), *failing]
+        return Rendering(entries, starts, lists, Graph(**shown))
 
     def _entries_of(
         self,
@@ -426,7 +536,7 @@ class Views:
         starts = [0] * len(entries) if before is None else before.starts
         for kind, indices in self._of_kind.items():
             if before is not None:
-                earlier = getattr(before.graph, f"{kind}s")
+                earlier = before.lists[kind]
                 changed = moved.get(kind, ())
                 if all(len(entries[i]) == len(before.entries[i]) for i in changed):
                     listed = list(earlier) if changed else earlier

@@ -361,6 +361,9 @@ def _main(argv: Sequence[str] | None) -> int:
 
         if not isinstance(error, ModelTooLarge):
             raise
+        from rosvar.outputs.commands.too_large import too_large_text
+
         # what needs the solver of a model listed but not solved
-        print(f"rosvar: the feature model is too large to solve: {error}", file=sys.stderr)
+        paths = getattr(options, "paths", [])
+        print(too_large_text(error, options.command, paths), file=sys.stderr)
         return EXIT_TOO_LARGE

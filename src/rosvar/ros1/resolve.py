@@ -15,12 +15,14 @@ from enum import StrEnum
 
 from rosvar.analyses.json_values import json_value
 from rosvar.diagnostics import Location
+from rosvar.files import Confinement
 from rosvar.interpreter.model import (
     DeferredValue,
     LaunchModel,
     NodeDecl,
     ParamDecl,
     Raw,
+    YamlDecl,
     anon_pattern,
 )
 from rosvar.interpreter.workspace_models import Analysis
@@ -134,10 +136,7 @@ class Restriction:
 
     def evaluate(self, value: Raw, location: Location, what: str) -> str:
         """A term's string under this configuration (roslaunch's failure if it has none)."""
-        try:
-            return evaluate(value, self.concrete, self.host)
-        except (TermError, LookupError, ValueError) as error:
-            raise ResolutionError("value-unknown", f"{what}: {error}", location) from None
+        return evaluated(value, self.concrete, self.host, location, what)
 
     def pick(self, choice: Choice[object], location: Location, what: str) -> object:
         for condition, leaf in choice:
@@ -238,10 +237,7 @@ def _restrict(
             value = r.pick(param.value, param.location, f"param {name}")
             if isinstance(value, DeferredValue):
                 concrete = r.evaluate(value.raw, param.location, f"param {name}")
-                try:
-                    value = value.convert(value.kind, concrete, value.ptype, r.confinement)
-                except ValueError as error:
-                    raise ResolutionError("param-invalid", str(error), param.location) from None
+                value = deferred_value(value, concrete, param.location, r.confinement)
             result.params[str(name)] = json_value(value)
         else:
             parts = [
@@ -250,12 +246,9 @@ def _restrict(
             ]
             body = r.evaluate(param.text, param.location, "<rosparam> body")
             scope_ns, command, ns, file, name = parts
-            try:
-                pairs = param.load(str(command), ns, file, name, body, str(scope_ns), r.confinement)
-            except ValueError as error:
-                raise ResolutionError(
-                    "rosparam-invalid", f"error loading <rosparam> tag: {error}", param.location
-                ) from None
+            pairs = rosparam_pairs(
+                param, (str(scope_ns), str(command), ns, file, name, body), r.confinement
+            )
             for key, value in pairs:
                 result.params[key] = json_value(value)
 
@@ -289,10 +282,7 @@ def _node(r: Restriction, node: object) -> dict[str, object]:
     assert isinstance(node, NodeDecl)
     location = node.location
     raw = {k: r.raw(v, location, f"<node> {k}") for k, v in node.fields.items()}
-    try:
-        typed = node_values(raw)
-    except ValueError as error:
-        raise ResolutionError("node-invalid", str(error), location) from None
+    typed = typed_node(raw, location)
     namespace = str(raw["namespace"])
     name = raw["name"] or ""
     remaps: dict[str, str] = {}
@@ -300,15 +290,7 @@ def _node(r: Restriction, node: object) -> dict[str, object]:
         if r.holds(remap.condition):
             source = r.raw(Choice.const(r.space, remap.source), location, "remap from")
             target = r.raw(Choice.const(r.space, remap.target), location, "remap to")
-            for label, text in (("from", source), ("to", target)):
-                if not text:
-                    raise ResolutionError(
-                        "remap-invalid", "remap from/to attributes cannot be empty", location
-                    )
-                if not names.is_legal_name(str(text)):
-                    raise ResolutionError(
-                        "remap-invalid", f"remap {label} [{text}] is not a valid ROS name", location
-                    )
+            check_remap(source, target, location)
             remaps.pop(str(source), None)
             remaps[str(source)] = str(target)
     env = [
@@ -334,6 +316,65 @@ def _node(r: Restriction, node: object) -> dict[str, object]:
     if node.is_test:
         entry.update(test_fields(raw, location))
     return entry
+
+
+def evaluated(
+    value: Raw, concrete: Mapping[Input, str], host: object, location: Location, what: str
+) -> str:
+    """A term's string with the inputs' ``concrete`` strings (roslaunch's failure if it has
+    none: an unknown package, a file not read)."""
+    try:
+        return evaluate(value, concrete, host)
+    except (TermError, LookupError, ValueError) as error:
+        raise ResolutionError("value-unknown", f"{what}: {error}", location) from None
+
+
+def deferred_value(
+    value: DeferredValue, text: str, location: Location, confinement: Confinement
+) -> object:
+    """A ``<param>`` value whose string became ``text``, typed as roslaunch types it."""
+    try:
+        return value.convert(value.kind, text, value.ptype, confinement)
+    except ValueError as error:
+        raise ResolutionError("param-invalid", str(error), location) from None
+
+
+RosparamTexts = tuple[str, str, str | None, str | None, str | None, str]
+"""A ``<rosparam>``'s strings: its scope's namespace, command, ns, file, param and body."""
+
+
+def rosparam_pairs(
+    param: YamlDecl, texts: RosparamTexts, confinement: Confinement
+) -> list[tuple[str, object]]:
+    """The params ``param`` sets with these strings, as roslaunch loads them."""
+    scope_ns, command, ns, file, name, body = texts
+    try:
+        return param.load(command, ns, file, name, body, scope_ns, confinement)
+    except ValueError as error:
+        raise ResolutionError(
+            "rosparam-invalid", f"error loading <rosparam> tag: {error}", param.location
+        ) from None
+
+
+def typed_node(raw: dict[str, str | None], location: Location) -> dict[str, object]:
+    """A node's typed fields (``respawn``, ``required``...) as roslaunch's ``Node`` holds them."""
+    try:
+        return node_values(raw)
+    except ValueError as error:
+        raise ResolutionError("node-invalid", str(error), location) from None
+
+
+def check_remap(source: str | None, target: str | None, location: Location) -> None:
+    """roslaunch's checks of a ``<remap>``'s names."""
+    for label, text in (("from", source), ("to", target)):
+        if not text:
+            raise ResolutionError(
+                "remap-invalid", "remap from/to attributes cannot be empty", location
+            )
+        if not names.is_legal_name(text):
+            raise ResolutionError(
+                "remap-invalid", f"remap {label} [{text}] is not a valid ROS name", location
+            )
 
 
 def test_fields(raw: Mapping[str, str | None], location: Location) -> dict[str, object]:

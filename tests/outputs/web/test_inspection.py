@@ -125,6 +125,15 @@ def test_a_query_the_parser_refuses_is_a_400_with_its_position(small: Live) -> N
     assert extra.status == 400
 
 
+def test_a_query_building_a_huge_nested_list_is_a_400(small: Live) -> None:
+    """issue 30.5: it built a million references to a list of a million, within the outer
+    sequence's bound, and compared them for minutes, every client waiting."""
+    session = small.open()["session"]
+    expression = "nodes[[[0] * 999999] * 999999 == [[1] * 999999] * 999999]"
+    reply = small.call("POST", "/api/query", {"session": session, "expression": expression})
+    assert reply.status == 400 and "longer than" in reply.json()["error"]
+
+
 def test_checks_follow_the_choices(small: Live) -> None:
     session = small.open()["session"]
     answer = checks(small, session)

@@ -5,6 +5,7 @@ files. Below the model and its solver, which both read them.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
 
@@ -76,8 +77,41 @@ class Constraint:
     unconditional: bool = False
 
 
+@dataclass(frozen=True)
+class ModelPart:
+    """Files the model's constraints link (includes, names declared in several of them),
+    which the solver would have to solve together: how many, and their packages, the
+    most files first (the package's folder: what to configure on its own)."""
+
+    files: int
+    package_count: int
+    packages: tuple[tuple[str, str, int], ...]  # the first few: name, folder, its files
+
+
 class ModelTooLarge(Exception):
-    """The solver's BDDs would outgrow their budget: the model is listed, not solved."""
+    """The solver's BDDs would outgrow their budget: the model is listed, not solved.
+
+    ``parts``: the largest groups of files its constraints link, when known (extraction
+    tells them): what a narrower analysis could take on its own."""
+
+    def __init__(self, message: str, parts: Sequence[ModelPart] = ()) -> None:
+        super().__init__(message)
+        self.parts = tuple(parts)
+
+
+def launched_conditions(
+    files: Sequence[FileFeature], requires: Sequence[Constraint]
+) -> dict[str, BDD]:
+    """File → when it is *launched*: selected, and not included by a selected file that
+    includes it there (its elements are then that file's)."""
+    by_id = {f.id: f for f in files}
+    launched = {f.file: f.variable for f in files}
+    for constraint in requires:
+        if constraint.kind != ConstraintKind.REQUIRES:
+            continue
+        source, target = (by_id[i] for i in constraint.files)
+        launched[target.file] &= ~(source.variable & constraint.condition)
+    return launched
 
 
 def name_of(variable: BDD) -> str:

@@ -30,6 +30,7 @@ from rosvar.analyses.feature_model.solver import Solver
 from rosvar.diagnostics import Diagnostic
 from rosvar.interpreter.model import LaunchModel
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.workspace.paths import real_path
 
 
 class CrossTree:
@@ -45,11 +46,13 @@ class CrossTree:
         files: Sequence[FileFeature],
         requires: list[Constraint],
         declarations: Mapping[tuple[str, str], list[Occurrence]],
+        products: bool = False,
     ) -> None:
         self.space = space
         self.files = files
         self.requires = requires
         self.declarations = declarations
+        self.products = products
 
     @cached_property
     def clashes(self) -> list[Clash]:
@@ -57,7 +60,7 @@ class CrossTree:
 
     @cached_property
     def constraints(self) -> list[Constraint]:
-        return self.requires + _excludes(self.space, self.files, self.clashes)
+        return self.requires + _excludes(self.space, self.files, self.clashes, self.products)
 
 
 @dataclass
@@ -88,11 +91,13 @@ class FeatureModel:
     @property
     def solver(self) -> Solver:
         if isinstance(self.solution, ModelTooLarge):
-            raise ModelTooLarge(*self.solution.args)
+            raise ModelTooLarge(str(self.solution), self.solution.parts)
         return self.solution
 
     def __post_init__(self) -> None:
-        self.cross_tree = CrossTree(self.space, self.files, self.requires, self.declarations)
+        self.cross_tree = CrossTree(
+            self.space, self.files, self.requires, self.declarations, self.products
+        )
 
     @property
     def clashes(self) -> list[Clash]:
@@ -123,13 +128,20 @@ class FeatureModel:
 
 
 def _excludes(
-    space: ConditionSpace, features: Sequence[FileFeature], found: Sequence[Clash]
+    space: ConditionSpace,
+    features: Sequence[FileFeature],
+    found: Sequence[Clash],
+    products: bool = False,
 ) -> list[Constraint]:
-    """One ``excludes`` constraint per pair of files whose declarations clash."""
+    """One ``excludes`` constraint per pair of files whose declarations clash (with
+    ``products``, the engine's model, also one per file loading two nodes of one name: the
+    file alone fails, ``internal_clashes``)."""
     by_file = {f.file: f for f in features}  # an occurrence's file is its model's file
     between: dict[tuple[str, str], list[Clash]] = {}
     for clash in found:
-        if clash.first.file != clash.second.file:
+        if clash.first.file != clash.second.file or (
+            products and clash.kind == DeclarationKind.NODE
+        ):
             key = tuple(sorted(clash.files))
             between.setdefault(key, []).append(clash)  # type: ignore[arg-type]
     constraints = []
@@ -139,13 +151,24 @@ def _excludes(
         for clash in pair_clashes:
             condition |= clash.condition
         names = sorted({f"{c.kind} {c.name}" for c in pair_clashes})
+        # the engine's model counts what a file loads from the files it includes too
+        written = all(
+            real_path(o.location.file) == real_path(o.file)
+            for c in pair_clashes
+            for o in (c.first, c.second)
+        )
+        verb = "declare" if written else "load"
         constraints.append(
             Constraint(
                 ConstraintKind.EXCLUDES,
                 (a.id, b.id),
                 ~(a.variable & b.variable & condition),
                 condition,
-                f"{a.id} and {b.id} both declare {', '.join(names[:3])}"
+                (
+                    f"{a.id} loads {', '.join(names[:3])} twice"
+                    if a is b
+                    else f"{a.id} and {b.id} both {verb} {', '.join(names[:3])}"
+                )
                 + (f" (+{len(names) - 3} more)" if len(names) > 3 else ""),
                 tuple(loc for c in pair_clashes for loc in (c.first.location, c.second.location)),
                 space.valid_implies(condition),

@@ -12,6 +12,7 @@ from rosvar.configuration.choices import Refusal, UserChoice
 from rosvar.configuration.conflicts import ConflictState
 from rosvar.configuration.engine import ConfigurationState, FeatureState
 from rosvar.configuration.view import Graph
+from rosvar.outputs.documents.diagnostics import diagnostic_document
 
 EXACT_INTEGER = 2**53
 """Larger counts of configurations are written as strings (JSON readers lose the digits)."""
@@ -36,6 +37,8 @@ def state_document(state: ConfigurationState, graph: Graph | None = None) -> dic
         "unselected": state.unselected,
         "launched": [launch.spelled for group in state.commands for launch in group],
         "untyped": state.untyped,
+        "launches": state.launches,
+        "unknown": [diagnostic_document(d) for d in state.unknown],
     }
 
 

@@ -6,7 +6,10 @@ text), and a bad request becomes an :class:`ApiError` with a 4xx status and a me
 A request that names the ``version`` of the state its tab holds is answered with a delta
 against it (:mod:`rosvar.outputs.web.sessions`); the others get the whole state.
 Engine calls are serialised by one lock: the BDD manager is not thread-safe, and the HTTP
-server answers each connection in its own thread.
+server runs API calls in several threads. A call waits for the engine at most
+``ENGINE_WAIT`` (its time budget), then is answered 503, which the page tries again: a slow
+step of one client never keeps another's request waiting without end. The catalog needs no
+engine: it is answered at once.
 """
 
 from __future__ import annotations
@@ -14,7 +17,6 @@ from __future__ import annotations
 import functools
 import threading
 from collections.abc import Callable, Mapping
-from functools import cached_property
 from http import HTTPStatus
 from typing import TypeVar
 
@@ -34,6 +36,8 @@ MAX_TEXT = 4096
 MAX_PAGE = 100_000
 MAX_GROUPS = 10_000
 """Most groups whose links one request asks for (the page asks for the boxes it draws)."""
+ENGINE_WAIT = 20.0
+"""Seconds a call waits for the engine, busy with another's, before it is answered 503."""
 StrEnumT = TypeVar("StrEnumT", Grouping, MemberKind)
 
 Body = Mapping[str, object]
@@ -115,6 +119,7 @@ class Api:
         self._kinds = {key: feature.kind for key, feature in features.items()}
         self._asking = _Asking()
         self._inspector = Inspector(configurator, self._lock, self._asking.any)
+        self._rows = catalog(configurator)  # the catalog's answer, served without the lock
 
     def handle(self, method: str, path: str, query: Query, body: Body) -> Reply:
         route = ROUTES.get((method, path))
@@ -122,10 +127,20 @@ class Api:
             if any(known == path for _, known in ROUTES):
                 raise ApiError(HTTPStatus.METHOD_NOT_ALLOWED, f"{method} not allowed on {path}")
             raise ApiError(HTTPStatus.NOT_FOUND, f"no such API: {path}")
+        if (method, path) in UNLOCKED:
+            return route(self, query, body)
         self._asking.count += 1  # the findings' listing gives way (Inspector)
         try:
-            with self._lock:
+            if not self._lock.acquire(timeout=ENGINE_WAIT):
+                raise ApiError(
+                    HTTPStatus.SERVICE_UNAVAILABLE,
+                    f"the engine is busy with another request (over {ENGINE_WAIT:.0f} s): "
+                    "try again",
+                )
+            try:
                 return route(self, query, body)
+            finally:
+                self._lock.release()
         finally:
             self._asking.count -= 1
 
@@ -147,10 +162,6 @@ class Api:
         """The feature tree's fixed part, for sessions in overview mode."""
         _only(query, set())
         return {"features": self._rows}
-
-    @cached_property
-    def _rows(self) -> list[list[object]]:
-        return catalog(self._configurator)
 
     def _grouping(self, query: Query, body: Body) -> Reply:
         """The state grouped another way (the session goes to overview mode)."""
@@ -307,3 +318,5 @@ ROUTES: dict[tuple[str, str], Route] = {
 """The route table: functions of the API, not its bound methods, which would make every
 :class:`Api` a reference cycle (freed by the cycle collector, CUDD's manager before the
 engine's diagrams)."""
+UNLOCKED = frozenset({("GET", "/api/catalog")})
+"""Routes answered without the engine (what they read is made once, at start)."""

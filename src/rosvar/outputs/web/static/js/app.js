@@ -4,7 +4,7 @@
 // while the previous one is still being answered is ignored (a double click is one choice);
 // the steps the page makes itself run one after another.
 
-import { ApiError, Client } from "./api.js";
+import { ApiError, Client, waiting } from "./api.js";
 import { Bar } from "./bar.js";
 import { DetailsPanel } from "./details.js";
 import { GraphView } from "./graph.js";
@@ -21,7 +21,7 @@ const bar = new Bar(
   {
     featuresLeft: $("features-left"), configurations: $("configurations"), completeness: $("completeness"),
     undo: $("undo"), redo: $("redo"), reset: $("reset"), finish: $("finish"),
-    message: $("message"), command: $("command"), copy: $("copy"),
+    message: $("message"), command: $("command"), copy: $("copy"), status: $("command-status"),
     notice: $("notice"), noticeText: $("notice-text"), noticeClose: $("notice-close"),
   },
   {
@@ -100,6 +100,8 @@ function act(call) {
   });
   return queue;
 }
+
+waiting.addEventListener("wait", () => bar.say("Waiting for the server: it is computing another client's step…"));
 
 function wireToolbars() {
   $("tree-filter").addEventListener("input", (event) => tree.filter(event.target.value));
