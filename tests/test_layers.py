@@ -164,14 +164,9 @@ CORE_TO_DIALECT_PENDING = {
     # nodes' namespaces, and the names of ROS 2 nodes the launch file does not name
     "rosvar.analyses.communication -> rosvar.ros2.conventions.namespaces",
     "rosvar.analyses.query.collections -> rosvar.ros2.conventions.namespaces",
-    # issue 29 item 1 (h-xacro): xacro's substitution args read through ROS 1's; they belong
-    # in the core (xacro is no launch dialect)
-    "rosvar.analyses.robot_description.evaluation -> rosvar.ros1.scope",
-    "rosvar.analyses.robot_description.evaluation -> rosvar.ros1.substitutions",
-    "rosvar.analyses.robot_description.reading -> rosvar.ros1.scope",
-    "rosvar.analyses.robot_description.xacro -> rosvar.ros1.scope",
-    "rosvar.analyses.robot_description.xacro -> rosvar.ros1.substitutions",
-    "rosvar.analyses.robot_description.xacro_tags -> rosvar.ros1.scope",
+    # the robot description's edges of one configuration use ROS 1's restriction until one
+    # resolution serves both dialects (issue 27 item 4, h-resolve)
+    "rosvar.analyses.robot_description.edges -> rosvar.ros1.resolve",
     # item 4 (one resolution for both dialects, h-resolve): the resolve command and the
     # graph's node entries still call each dialect's resolution and conventions
     "rosvar.outputs.commands.resolve -> rosvar.ros1.resolve",

@@ -171,7 +171,7 @@ class Interpretation(Generic[S]):
                 branches.append((atom, slot))
         return Choice.of(branches)
 
-    def new_anon(self, scope: S, anon_id: str) -> Choice[Raw]:
+    def new_anon(self, anon_id: str) -> Choice[Raw]:
         pc = self.pc
         current = self.anon_count
         # roslaunch's anonymous_name() screens '.', '-' and ':' out of names; the

@@ -3,10 +3,10 @@ by :mod:`rosvar.ros1.tags`."""
 
 from rosvar.frontends.xml import load_launch_file
 from rosvar.interpreter.semantics import Semantics
+from rosvar.interpreter.substitution_args import Substituter
 from rosvar.ros.version import RosVersion
 from rosvar.ros1.entry import walk_entry
 from rosvar.ros1.scope import Scope
-from rosvar.ros1.substitutions import Substituter
 
 ROS1: Semantics[Scope] = Semantics(RosVersion.ROS1, load_launch_file, Substituter, walk_entry)
 tag = ROS1.tag

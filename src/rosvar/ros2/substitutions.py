@@ -395,7 +395,7 @@ def _anon(host: Interpretation[Context], context: Context, args: list[Raw]) -> C
     if unset != host.space.false:
         with host.under(unset) as live:
             if live:
-                fresh = optional(host.new_anon(context, args[0]))
+                fresh = optional(host.new_anon(args[0]))
                 before = old if old is not None else Choice.const(host.space, None)
                 context.configurations[key] = ite(host.space, host.pc, fresh, before)
     return context.configurations[key].map(_present)

@@ -17,13 +17,12 @@ from analyses.robot_description.xacro_oracle import XacroFailed, run_xacro
 from rosvar.analyses.robot_description.document import Description, Node, concrete
 from rosvar.analyses.robot_description.reading import XacroReader
 from rosvar.interpreter.model import Raw
+from rosvar.interpreter.substitution_args import MISSING, Missing, PackageTable
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Input
 from rosvar.logic.terms import Hole, evaluate
-from rosvar.ros1.scope import MISSING, _Missing
-from rosvar.ros1.substitutions import PackageTable
 from rosvar.workspace import discover
 
 UNKNOWN = "unknown"
@@ -77,12 +76,12 @@ def expand(
     analysis = Analysis(workspace, env_values=env or {})
     space = analysis.space
     inputs: dict[str, ArgInput] = {}
-    choices: dict[str, Choice[Raw | _Missing]] = {}
+    choices: dict[str, Choice[Raw | Missing]] = {}
     for name, values in args.items():
         input_ = ArgInput(file, name)
         space.declare_input(input_, (*dict.fromkeys(values), UNSET, OTHER))
         inputs[name] = input_
-        branches: list[tuple[BDD, Raw | _Missing]] = []
+        branches: list[tuple[BDD, Raw | Missing]] = []
         for slot, atom in space.slot_atoms(input_):
             leaf = MISSING if slot is UNSET else Hole(input_) if slot is OTHER else str(slot)
             branches.append((atom, leaf))

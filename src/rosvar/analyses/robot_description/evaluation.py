@@ -6,7 +6,7 @@ is the float 0.5), several are joined into a string. ``${}`` goes through rosvar
 evaluator, with the properties the expression names as its symbols (each a :class:`Choice`:
 the expression is evaluated per combination of their values, within a bound); ``$()`` is
 roslaunch's substitution args, which xacro reuses, through the launch interpreter's
-:class:`~rosvar.ros1.substitutions.Substituter` with xacro's args. Failures are
+:class:`~rosvar.interpreter.substitution_args.Substituter` with xacro's args. Failures are
 ``Fail`` leaves; what rosvar does not evaluate is an unknown value, with a warning.
 """
 
@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
+from dataclasses import dataclass, field
 from typing import Final, Protocol
 
 from rosvar.analyses.robot_description.commands import parts
@@ -32,23 +33,34 @@ from rosvar.analyses.robot_description.symbols import ABSENT, Lazy, Table
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalFailed, EvalRefused, referenced_names
-from rosvar.logic.bdd import BDD
-from rosvar.logic.choice import Choice, Fail, combine
-from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.terms import Operand, concat, is_term
-from rosvar.ros1.scope import Scope, _Missing
-from rosvar.ros1.substitutions import (
+from rosvar.interpreter.substitution_args import (
     MAX_COMBINATIONS,
+    ArgValue,
+    Missing,
     Substituter,
     SubstitutionError,
     collect,
     too_complex,
 )
+from rosvar.logic.bdd import BDD
+from rosvar.logic.choice import Choice, Fail, combine
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.terms import Operand, concat, is_term
 
 XACRO_COMMANDS: Final = ("find", "env", "optenv", "dirname", "arg")
 """The ``$()`` commands xacro accepts (roslaunch's without ``anon``; ``eval`` when whole)."""
 MAX_TEXT_COMBINATIONS: Final = 1_000_000
 """Combinations of values all the texts of one description may compute together."""
+
+
+@dataclass(slots=True)
+class _XacroScope:
+    """Where a xacro text's ``$()`` is substituted: the document's args, no anon names."""
+
+    filename: str
+    args: dict[str, ArgValue]
+    anon: dict[str, ArgValue] = field(default_factory=dict)
+
 
 _TOKENS: Final = (
     ("dollars", re.compile(r"\$\$+[{(]")),
@@ -87,7 +99,7 @@ class Walk(Protocol):
 
     space: ConditionSpace
     pc: BDD
-    args: dict[str, Choice[Raw | _Missing]]
+    args: dict[str, Choice[Raw | Missing]]
 
     @property
     def location(self) -> Location: ...
@@ -158,7 +170,7 @@ class Evaluator:
                         )
             except SubstitutionError as error:
                 return self._fail(str(error))
-        scope = Scope(Choice.const(self.space, "/"), self.walk.filename, args=dict(self.walk.args))
+        scope = _XacroScope(self.walk.filename, dict(self.walk.args))
         resolved = self.substituter.resolve(text, scope)
         assert resolved is not None
         return resolved.map(_undefined_arg)

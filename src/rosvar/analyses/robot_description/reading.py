@@ -12,11 +12,11 @@ from rosvar.files import Confinement, FileRefused, read_file
 from rosvar.frontends.entity import ParseResult
 from rosvar.frontends.xml import parse_xml_bytes
 from rosvar.interpreter.model import Raw
+from rosvar.interpreter.substitution_args import Missing
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import Slot
-from rosvar.ros1.scope import _Missing
 
 
 class XacroReader:
@@ -54,7 +54,7 @@ class XacroReader:
     def expand(
         self,
         file: str,
-        args: Mapping[str, Choice[Raw | _Missing]],
+        args: Mapping[str, Choice[Raw | Missing]],
         condition: BDD,
         plain: bool = False,
     ) -> Description:

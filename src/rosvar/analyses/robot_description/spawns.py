@@ -38,12 +38,12 @@ from rosvar.interpreter.model import (
     ParamSource,
     Raw,
 )
+from rosvar.interpreter.substitution_args import MISSING, Missing
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, concat, is_term
 from rosvar.ros.version import RosVersion
-from rosvar.ros1.scope import MISSING, _Missing
 
 COMMAND_WRAPPERS: Final = (("__command__(", ")"), ("$(command ", ")"))
 """How a command's text is kept in a model: ROS 1's ``<param command>`` value, ROS 2's
@@ -298,7 +298,7 @@ class Spawns:
         self,
         key: tuple[object, ...],
         file: str,
-        args: Mapping[str, Choice[Raw | _Missing]],
+        args: Mapping[str, Choice[Raw | Missing]],
         condition: BDD,
         plain: bool,
     ) -> Description:
@@ -337,12 +337,12 @@ def _unwrapped(value: Text) -> Text | None:
     return None
 
 
-def _merged_args(space: ConditionSpace, group: list[_Source]) -> dict[str, Choice[Raw | _Missing]]:
+def _merged_args(space: ConditionSpace, group: list[_Source]) -> dict[str, Choice[Raw | Missing]]:
     """Each arg of the runs of one file as one choice over their conditions."""
     names = {name for source in group if source.command for name in source.command.args}
-    merged: dict[str, Choice[Raw | _Missing]] = {}
+    merged: dict[str, Choice[Raw | Missing]] = {}
     for name in sorted(names):
-        branches: list[tuple[BDD, Raw | _Missing]] = []
+        branches: list[tuple[BDD, Raw | Missing]] = []
         for source in group:
             assert source.command is not None
             branches.append((source.condition, source.command.args.get(name, MISSING)))

@@ -32,13 +32,12 @@ from rosvar.analyses.robot_description.symbols import ABSENT, Lazy, Table
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity, ParseResult
 from rosvar.interpreter.model import Raw
+from rosvar.interpreter.substitution_args import Missing, Substituter, too_complex
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, EnvInput, Slot
 from rosvar.logic.terms import Apply, Hole, Term, TermError, is_term, register
-from rosvar.ros1.scope import Scope, _Missing
-from rosvar.ros1.substitutions import Substituter, too_complex
 
 MAX_ELEMENTS: Final = 200_000
 """Elements one expansion may make (a macro that calls itself twice per level doubles them
@@ -128,7 +127,7 @@ class Expansion:
         self,
         reader: Files,
         file: str,
-        args: dict[str, Choice[Raw | _Missing]],
+        args: dict[str, Choice[Raw | Missing]],
         condition: BDD,
         plain: bool = False,
         root: Entity | None = None,
@@ -186,7 +185,7 @@ class Expansion:
                 branches.append((atom, slot))
         return Choice.of(branches)
 
-    def new_anon(self, scope: Scope, anon_id: str) -> Choice[Raw]:
+    def new_anon(self, anon_id: str) -> Choice[Raw]:
         raise AssertionError("xacro has no $(anon): refused before substitution")
 
     def note_unknown_package(self, name: str) -> None:

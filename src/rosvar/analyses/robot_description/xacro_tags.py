@@ -31,9 +31,9 @@ from rosvar.analyses.robot_description.xacro import (
 )
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.model import Raw
+from rosvar.interpreter.substitution_args import MISSING, Missing
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, ite
-from rosvar.ros1.scope import MISSING, _Missing
 
 
 @handler("insert_block")
@@ -301,7 +301,7 @@ def _arg(it: Expansion, entity: Entity, parent: XElement, macros: Table, symbols
     missing = current.where(lambda leaf: leaf is MISSING)
     with it.under(missing) as live:
         if live:
-            value: Choice[Raw | _Missing] = it.texts(default, symbols)
+            value: Choice[Raw | Missing] = it.texts(default, symbols)
             it.args[name] = ite(it.space, it.pc, value, current)
 
 

@@ -13,9 +13,10 @@ from rosvar.interpreter.interpretation import (
     split,
 )
 from rosvar.interpreter.model import IncludeDecl, Raw
+from rosvar.interpreter.substitution_args import MISSING
 from rosvar.logic.choice import Choice
 from rosvar.ros1.dialect import tag
-from rosvar.ros1.scope import MISSING, Scope
+from rosvar.ros1.scope import Scope
 from rosvar.ros1.tags.arg import declare, handle_arg
 from rosvar.ros1.tags.common import namespace_scope
 from rosvar.ros1.tags.env import handle_env

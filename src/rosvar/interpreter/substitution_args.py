@@ -1,6 +1,8 @@
 """Substitution args (``$(arg)``, ``$(find)``, ``$(eval)``, ...) over all configurations.
 
-The scanning and replacement rules are roslaunch's ``substitution_args``: a
+roslaunch's ``substitution_args``, which xacro reuses for its ``$()``: so the module is the
+core's, read by ROS 1's launch files and by robot descriptions of either ROS version. The
+scanning and replacement rules are roslaunch's: a
 first pass for ``env optenv dirname anon arg`` in order of appearance (each
 replacing every occurrence of its text), then a ``find`` pass over the result,
 and ``$(eval ...)`` only when it spans the whole attribute. Values are
@@ -13,7 +15,7 @@ import ast
 import functools
 import os
 from collections.abc import Callable, Sequence
-from typing import Protocol
+from typing import Final, Protocol
 
 from rosvar.interpreter.model import Raw
 from rosvar.logic.choice import Choice, Fail, combine
@@ -28,7 +30,6 @@ from rosvar.logic.terms import (
     is_term,
     register,
 )
-from rosvar.ros1.scope import MISSING, Scope, _Missing
 
 Value = Raw | Fail
 
@@ -44,6 +45,25 @@ MAX_TERM_DEPTH = 100
 """Nesting of a symbolic value; deeper ones would exhaust recursion when evaluated."""
 
 
+class Missing:
+    def __repr__(self) -> str:
+        return "<undefined>"
+
+
+MISSING: Final = Missing()
+"""Leaf of an arg or anon value in the configurations where it is not defined."""
+
+ArgValue = Choice[Raw | Missing]
+
+
+class Scope(Protocol):
+    """What substitution reads of the place a text is in: ROS 1's launch scope, xacro's."""
+
+    filename: str
+    args: dict[str, ArgValue]
+    anon: dict[str, ArgValue]
+
+
 class SubstitutionError(Exception):
     """The attribute text itself is malformed (roslaunch's ``SubstitutionException``)."""
 
@@ -57,7 +77,7 @@ class Host(Protocol):
 
     def env_value(self, name: str) -> Choice[Raw | None]: ...
 
-    def new_anon(self, scope: Scope, anon_id: str) -> Choice[Raw]: ...
+    def new_anon(self, anon_id: str) -> Choice[Raw]: ...
 
     def note_unknown_package(self, name: str) -> None: ...
 
@@ -422,12 +442,12 @@ class Substituter:
         known = scope.anon.get(anon_id)
         if known is not None and all(v is not MISSING for v in known.values()):
             return known  # type: ignore[return-value]
-        generated = self.host.new_anon(scope, anon_id)
+        generated = self.host.new_anon(anon_id)
         if known is None:
             scope.anon[anon_id] = generated
             return generated
         merged: Choice[Raw] = known.bind(
-            lambda v: generated if isinstance(v, _Missing) else Choice.const(self.space, v)
+            lambda v: generated if isinstance(v, Missing) else Choice.const(self.space, v)
         )
         scope.anon[anon_id] = merged
         return merged

@@ -7,9 +7,9 @@ from typing import TYPE_CHECKING
 
 import pytest
 
+from rosvar.interpreter import substitution_args as substitutions
 from rosvar.interpreter.model import DeferredValue, ParamDecl
 from rosvar.logic.terms import is_term
-from rosvar.ros1 import substitutions
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -129,7 +129,7 @@ def test_find_resolves_through_the_workspace(ws: LaunchWorkspace, tmp_path: Path
 
 
 def test_commands_are_registered_in_roslaunchs_order_and_only_once() -> None:
-    from rosvar.ros1.substitutions import COMMANDS, FIRST_PASS, command
+    from rosvar.interpreter.substitution_args import COMMANDS, FIRST_PASS, command
 
     assert COMMANDS == ("find", "env", "optenv", "dirname", "anon", "arg")
     handler = FIRST_PASS["env"]
