@@ -195,7 +195,7 @@ def test_no_import_from_a_layer_to_a_later_one() -> None:
         for source, targets in GRAPH.items()
         for target in targets
         # every module imports the package itself first: importing it names nothing new
-        if target != ROOT and layer_of(target, ROWS) > layer_of(source, ROWS)  # type: ignore[operator]
+        if target != ROOT and (layer_of(target, ROWS) or 0) > (layer_of(source, ROWS) or 0)
     }
     assert wrong == LATER_PENDING
 

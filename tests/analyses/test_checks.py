@@ -8,6 +8,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from json_view import read
 from rosvar.analyses.checks import Check, check_model, check_models
 from rosvar.analyses.communication import resolved_graph
 from rosvar.diagnostics import Severity
@@ -64,11 +65,11 @@ def _expected(
     resolution = resolve(analysis, [file], args)
     graph = resolved_graph(resolution.nodes, interfaces, resolution.scopes, resolution.params)
     found = set()
-    for topic in graph["topics"]:
+    for topic in read(graph["topics"]):
         name = str(topic["name"])
-        if len(topic["publishers"]) >= 2:  # type: ignore[arg-type]
+        if len(topic["publishers"]) >= 2:
             found.add((Check.MULTIPLE_PROVIDERS, name))
-        if len(topic["types"]) >= 2:  # type: ignore[arg-type]
+        if len(topic["types"]) >= 2:
             found.add((Check.TYPE_MISMATCH, name))
         if not topic["subscribers"]:
             found.add((Check.NO_SUBSCRIBER, name))

@@ -44,25 +44,18 @@ from rosvar.interpreter.workspace_models import Analysis
 from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 
-try:
-    from ..oracle.client import (
-        UNAVAILABLE_REASON,
-        RoslaunchOracle,
-        oracle_available,
-        requires_oracle,
-        shared_oracle,
-    )
-except ImportError:
-    # pytest's importlib mode imports this module as ``differential.harness`` (``tests/`` is no
-    # package), like ``tests/oracle`` as ``oracle``: reach the client the same way.
-    sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-    from oracle.client import (  # type: ignore[no-redef,import-not-found]
-        UNAVAILABLE_REASON,
-        RoslaunchOracle,
-        oracle_available,
-        requires_oracle,
-        shared_oracle,
-    )
+# ``tests/`` is no package: pytest (importlib mode) imports this module as
+# ``differential.harness``, ``python -m`` as ``tests.differential.harness``; either way the
+# oracle's client is ``oracle.client``, with ``tests/`` on the path
+if (TESTS := str(Path(__file__).resolve().parents[1])) not in sys.path:
+    sys.path.insert(0, TESTS)
+from oracle.client import (
+    UNAVAILABLE_REASON,
+    RoslaunchOracle,
+    oracle_available,
+    requires_oracle,
+    shared_oracle,
+)
 
 __all__ = [
     "AGREE",
@@ -76,6 +69,7 @@ __all__ = [
     "difference_class",
     "requires_oracle",
     "run_system",
+    "shared_oracle",
     "system_runs",
 ]
 
@@ -256,9 +250,12 @@ def _field_equal(name: str, ours: object, theirs: object) -> bool:
     if name == "filename" and isinstance(ours, str) and isinstance(theirs, str):
         return ours == theirs or os.path.realpath(ours) == os.path.realpath(theirs)
     if name in FLOAT_FIELDS:
+        numeric = (int, float, str)  # what float() takes
+        if not (isinstance(ours, numeric) and isinstance(theirs, numeric)):
+            return ours == theirs
         try:
-            a, b = float(ours), float(theirs)  # type: ignore[arg-type]
-        except (TypeError, ValueError):
+            a, b = float(ours), float(theirs)
+        except ValueError:
             return ours == theirs
         return a == b or math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-12)
     return _same(ours, theirs)

@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, Any
 
 import pytest
 
+from json_view import read
 from rosvar.ros1.resolve import resolve
 
 if TYPE_CHECKING:
@@ -47,10 +48,10 @@ def test_several_files_agree_with_roslaunch(ws: LaunchWorkspace) -> None:
     from oracle.client import shared_oracle
 
     moved, clash = shared_oracle().run(jobs)
-    ours = resolve(ws.analysis(), [base, extra], {"ns": "robot"}).to_json()
+    ours = read(resolve(ws.analysis(), [base, extra], {"ns": "robot"}).to_json())
     assert moved["ok"] and ours["ok"]
     assert moved["params"] == ours["params"]
-    assert [n["name"] for n in moved["nodes"]] == [n["name"] for n in ours["nodes"]]  # type: ignore[index]
+    assert [n["name"] for n in moved["nodes"]] == [n["name"] for n in ours["nodes"]]
     assert not clash["ok"] and "multiple nodes named [/driver]" in clash["error"]
 
 
@@ -86,12 +87,12 @@ def test_json_values(ws: LaunchWorkspace) -> None:
 
 def test_to_json_shape(ws: LaunchWorkspace) -> None:
     file = ws.launch("dup.launch", EXTRA + EXTRA)
-    document = ws.resolve(file).to_json()
+    document = read(ws.resolve(file).to_json())
     assert set(document) == {"ok", "nodes", "tests", "params", "conflicts", "errors"}
     assert document["ok"] is False
-    [conflict] = document["conflicts"]  # type: ignore[misc]
+    [conflict] = document["conflicts"]
     assert conflict["kind"] == "node-name"
     # lines: <launch>, blank, node, param, blank, node
     assert [(loc["line"], loc["col"]) for loc in conflict["locations"]] == [(3, 3), (6, 3)]
-    node = document["nodes"][0]  # type: ignore[index]
+    node = document["nodes"][0]
     assert {"name", "namespace", "package", "type", "filename", "line", "col"} <= set(node)

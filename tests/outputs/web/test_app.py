@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import json
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 from urllib.parse import urlsplit
 
@@ -18,6 +18,8 @@ import pytest
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
 from outputs.web.test_overview import expected_links, wired_configurator, wired_workspace
+from rosvar.configuration.choices import UserChoice
+from rosvar.configuration.engine import ConfigurationState
 from rosvar.outputs.web import api as api_module
 from rosvar.outputs.web.overview import SEPARATOR, Grouping, key_of, labels, packages
 
@@ -268,7 +270,8 @@ def present_nodes(state: dict[str, Any]) -> int:
 
 
 def file_named(state: dict[str, Any], name: str) -> str:
-    return next(k for k, f in state["features"].items() if f["kind"] == "file" and k.endswith(name))
+    files = [k for k, f in state["features"].items() if f["kind"] == "file"]
+    return str(next(k for k in files if k.endswith(name)))
 
 
 # -- the bundled example ------------------------------------------------------------------------
@@ -631,13 +634,15 @@ def test_a_slow_choice_of_one_client_keeps_no_other_waiting(
     engine = configurator(ws)
     original = engine.state
 
-    def state(choices: Any) -> Any:
-        if any(c.feature == "slow.launch" for c in choices) and not state.done:
-            state.done = True  # the first time only: a cold step of a large workspace
+    slowed = False
+
+    def state(choices: Sequence[UserChoice]) -> ConfigurationState:
+        nonlocal slowed
+        if any(c.feature == "slow.launch" for c in choices) and not slowed:
+            slowed = True  # the first time only: a cold step of a large workspace
             time.sleep(SLOW_S)
         return original(choices)
 
-    state.done = False  # type: ignore[attr-defined]
     monkeypatch.setattr(engine, "state", state)
     monkeypatch.setattr(api_module, "ENGINE_WAIT", 1.0)
     with running(engine) as live:

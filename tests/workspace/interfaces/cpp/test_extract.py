@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.diagnostics import Diagnostic, DiagnosticSink, Location
 from rosvar.workspace.interfaces.cpp.extract import extract_node
 from rosvar.workspace.interfaces.cpp.ros_types import ros_type
 from rosvar.workspace.interfaces.cpp.unit import Unit
@@ -64,7 +64,9 @@ class Other : public nodelet::Nodelet {
 """
 
 
-def _extract(tmp_path: Path, files: dict[str, str], entry: str, owner: str | None = None):
+def _extract(
+    tmp_path: Path, files: dict[str, str], entry: str, owner: str | None = None
+) -> tuple[list[Entry], list[Diagnostic]]:
     for name, text in files.items():
         (tmp_path / name).write_text(text)
     sources = [str(tmp_path / name) for name in files if name.endswith(".cpp")]
