@@ -30,7 +30,8 @@ def configurations(
     analysis: Analysis, file: str, given: list[dict[str, str]]
 ) -> Iterator[dict[str, str]]:
     """The given samples (those setting only declared arguments: the model's inputs), then
-    seeded samples of the domains' literal values, each argument also left out."""
+    samples of the domains' literal values seeded by the file's name, each argument also left
+    out."""
     model = analysis.model(file)
     yield from (sample for sample in given if set(sample) <= set(model.inputs))
     choices = [
@@ -38,7 +39,8 @@ def configurations(
         for name, domain in model.domains.items()
     ]
     combinations = list(itertools.islice(itertools.product(*choices), 10_000))
-    for combination in random.Random(file).sample(combinations, min(PER_FILE, len(combinations))):
+    rng = random.Random(Path(file).name)  # the same samples in every checkout (issue 30)
+    for combination in rng.sample(combinations, min(PER_FILE, len(combinations))):
         yield {name: slot for name, slot in combination if isinstance(slot, str)}  # not UNSET
 
 
