@@ -14,6 +14,7 @@ from rosvar.interpreter.dialect import dialect_of
 from rosvar.interpreter.domains import DomainTable
 from rosvar.interpreter.model import LaunchModel
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.terms import PackageTable
 from rosvar.workspace import Workspace
 
 Progress = Callable[[int, int, str], None]
@@ -42,6 +43,10 @@ class Analysis:
         )
         self._models: dict[str, LaunchModel] = {}
         self._labels: dict[str, str] | None = None
+
+    def package_table(self) -> PackageTable:
+        """The workspace's packages, as terms' ``$(find)`` reads them when evaluated."""
+        return PackageTable({name: p.path for name, p in self.workspace.packages.items()})
 
     def model(self, file: str) -> LaunchModel:
         """The model of ``file`` as an entry point (interpreted once, then cached)."""
