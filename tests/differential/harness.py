@@ -41,6 +41,7 @@ from typing import Any
 
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.documents.resolution import resolution_document
 from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 
@@ -563,7 +564,9 @@ def run_system(
             if case.crash is not None:
                 continue
             try:
-                case.ours = resolve(analysis, [case.file], case.config, rosvar_env).to_json()
+                case.ours = resolution_document(
+                    resolve(analysis, [case.file], case.config, rosvar_env)
+                )
             except Exception as error:
                 case.crash = _crash_line(error)
         results = pending.result()

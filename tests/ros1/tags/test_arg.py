@@ -59,7 +59,7 @@ def test_arg_without_default_has_an_unset_slot(ws: LaunchWorkspace) -> None:
     missing = ws.resolve(file, {})
     assert not missing.ok and missing.errors[0].code == "arg-undefined"
     given = ws.resolve(file, {"robot": "husky"})
-    assert given.ok and [n["name"] for n in given.nodes] == ["/husky_driver"]
+    assert given.ok and [n.name for n in given.nodes] == ["/husky_driver"]
 
 
 def test_value_arg_cannot_be_overridden(ws: LaunchWorkspace) -> None:

@@ -30,10 +30,10 @@ from rosvar.configuration.graph import (
 )
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import DeferredValue, NodeDecl, ParamSource, Raw
+from rosvar.interpreter.resolution import ResolutionError
 from rosvar.logic.terms import is_term
-from rosvar.ros1.resolve import ResolutionError, test_fields
+from rosvar.ros1.resolve import test_fields
 from rosvar.ros1.validation import node_values
-from rosvar.ros2.conventions.namespaces import unnamed
 from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, typed
 from rosvar.ros2.resolve import parameter_file
 from rosvar.workspace.interfaces.model import Role
@@ -111,7 +111,7 @@ def _ros2_fields(
         except ValueError:
             continue  # not a value yet (an arg still open) or not readable: not shown
     return {
-        "name": fqn or unnamed(namespace, node.schema.executable.text(text)),
+        "name": node.schema.label.text(text),
         "fqn": fqn,
         "namespace": namespace,
         "parameters": effective(fqn, sources),
