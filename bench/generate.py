@@ -502,23 +502,29 @@ def _ros2_plan(n_files: int, seed: int) -> list[_Ros2Plan]:
     return plans
 
 
-def _ros2_includes(plans: list[_Ros2Plan], plan: _Ros2Plan, rng: random.Random) -> list[_Ros2Plan]:
-    """One file a level down (so a level-L file roots an include tree L+1 deep), sometimes
-    one more further down; from this package or the previous one of its system."""
-    if plan.level == 0:
-        return []
+def _ros2_candidates(plans: list[_Ros2Plan], plan: _Ros2Plan) -> list[_Ros2Plan]:
+    """The files ``plan`` may include: those of its package and of the previous one of its
+    system (the system's last, for its first)."""
     number = plan.index // ROS2_FILES_PER_PACKAGE
     first = number - number % ROS2_PACKAGES_PER_SYSTEM
     packages_total = (len(plans) + ROS2_FILES_PER_PACKAGE - 1) // ROS2_FILES_PER_PACKAGE
     in_system = min(ROS2_PACKAGES_PER_SYSTEM, packages_total - first)
     previous = first + (number - first - 1) % in_system
-    candidates = [
+    return [
         other
         for package in dict.fromkeys((number, previous))
         for other in plans[
             package * ROS2_FILES_PER_PACKAGE : (package + 1) * ROS2_FILES_PER_PACKAGE
         ]
     ]
+
+
+def _ros2_includes(plans: list[_Ros2Plan], plan: _Ros2Plan, rng: random.Random) -> list[_Ros2Plan]:
+    """One file a level down (so a level-L file roots an include tree L+1 deep), sometimes
+    one more further down; from this package or the previous one of its system."""
+    if plan.level == 0:
+        return []
+    candidates = _ros2_candidates(plans, plan)
     below = [other for other in candidates if other.level == plan.level - 1]
     chosen = [rng.choice(below)]
     further = [other for other in candidates if other.level < plan.level - 1]
@@ -565,14 +571,20 @@ def _ros2_node(out: _Writer, rng: random.Random, depth: int, plan: _Ros2Plan, nu
     out.add(depth, "</node>")
 
 
-def _ros2_include(out: _Writer, rng: random.Random, plan: _Ros2Plan, target: _Ros2Plan) -> None:
+def _ros2_include(
+    out: _Writer, rng: random.Random, plan: _Ros2Plan, target: _Ros2Plan, flag: str = ""
+) -> None:
+    """``flag``: a computed boolean of the includer (the dense shape), which it passes to
+    about half of the included file's boolean args."""
     bools = [arg for arg in plan.args if arg.values == ("true", "false")]
     own = {arg.name for arg in plan.args}
     out.add(1, f'<include file="{target.share_path}"{_ros2_condition(rng, bools, 0.35)}>')
     for arg in target.args:
-        if arg.default is not None and rng.random() < 0.4:
-            continue  # the included file's default stays
-        if arg.name in own and rng.random() < 0.7:
+        if arg.default is not None and rng.random() < 0.4 and not flag:
+            continue  # the included file's default stays (the dense shape passes every arg)
+        if flag and arg.values == ("true", "false") and rng.random() < 0.5:
+            value = f"$(var {flag})"
+        elif arg.name in own and rng.random() < 0.7:
             value = f"$(var {arg.name})"
         else:
             value = rng.choice(arg.values)
@@ -580,7 +592,38 @@ def _ros2_include(out: _Writer, rng: random.Random, plan: _Ros2Plan, target: _Ro
     out.add(1, "</include>")
 
 
-def _ros2_launch(plans: list[_Ros2Plan], plan: _Ros2Plan, seed: int) -> str:
+@dataclass(frozen=True)
+class _Dense:
+    """What the dense shape gives a file: its includes (chosen for the whole workspace, to
+    reach its include count) and its ``$(eval)``s: 1 is a computed flag (a ``<let>``) passed
+    to the included files, 2 also a group's condition."""
+
+    includes: tuple[_Ros2Plan, ...]
+    evals: int
+
+
+FLAG = "active"  # the dense shape's computed <let>
+
+
+def _ros2_eval(rng: random.Random, plan: _Ros2Plan, joint: str, flag: str = "") -> str:
+    """A ``$(eval)`` of four of the file's args (a boolean one is true, ``joint`` each other
+    one differs from or equals one of its values), and of ``flag`` (a ``<let>``) if given."""
+    bools = [arg for arg in plan.args if arg.values == ("true", "false")] or list(plan.args)
+    first = rng.choice(bools)
+    second, third, fourth = rng.sample([arg for arg in plan.args if arg is not first], 3)
+    tests = [f"'$(var {flag})' == 'True'"] if flag else []
+    tests += [
+        f"'$(var {first.name})' == 'true'",
+        f"'$(var {second.name})' != '{second.values[0]}'",
+        f"'$(var {third.name})' == '{third.values[-1]}'",
+        f"'$(var {fourth.name})' != '{fourth.values[0]}'",
+    ]
+    return f"$(eval {f' {joint} '.join(tests)})"
+
+
+def _ros2_launch(
+    plans: list[_Ros2Plan], plan: _Ros2Plan, seed: int, dense: _Dense | None = None
+) -> str:
     rng = random.Random(f"ros2-file:{seed}:{plan.index}")
     args = {arg.name: arg for arg in plan.args}
     bools = [arg for arg in plan.args if arg.values == ("true", "false")]
@@ -600,13 +643,22 @@ def _ros2_launch(plans: list[_Ros2Plan], plan: _Ros2Plan, seed: int) -> str:
             out.add(1, f'<arg name="{arg.name}"{default}{described}/>')
     prefix = _ros2_value(rng, args, "robot_name", "robot")
     out.add(1, f'<let name="frame_prefix" value="{prefix}_"/>')
-    for target in _ros2_includes(plans, plan, rng):
+    flag = ""
+    if dense is not None:
+        flag = FLAG
+        out.add(1, f'<let name="{FLAG}" value="{_ros2_eval(rng, plan, "and")}"/>')
+    targets = _ros2_includes(plans, plan, rng) if dense is None else dense.includes
+    for target in targets:
         out.add(0, "")
-        _ros2_include(out, rng, plan, target)
+        _ros2_include(out, rng, plan, target, flag)
     number = 0
-    for _ in range(rng.randint(1, 2)):
+    for group in range(rng.randint(1, 2)):
         out.add(0, "")
-        out.add(1, f"<group{_ros2_condition(rng, bools, 0.5)}>")
+        if dense is not None and dense.evals > 1 and group == 0:
+            condition = f' if="{_ros2_eval(rng, plan, "or", FLAG)}"'
+        else:
+            condition = _ros2_condition(rng, bools, 0.5)
+        out.add(1, f"<group{condition}>")
         namespace = _ros2_value(rng, args, "namespace", f"ns_{plan.index % 9}")
         out.add(2, f'<push-ros-namespace namespace="{namespace}"/>')
         if rng.random() < 0.3:
@@ -671,6 +723,62 @@ def generate_ros2(root: Path, n_files: int = ROS2_FILES, seed: int = 0) -> list[
     ``root``; returns their paths."""
     plans = _ros2_plan(n_files, seed)
     texts = {plan.index: _ros2_launch(plans, plan, seed) for plan in plans}
+    return _write_ros2(root, plans, texts)
+
+
+ROS2_DENSE_INCLUDES_PER_FILE = 340 / 120  # issue 28's system: 340 includes in 120 files
+ROS2_DENSE_EVALS_PER_FILE = 180 / 120  # and 180 $(eval)s
+
+
+def _dense_includes(plans: list[_Ros2Plan], seed: int) -> dict[int, list[_Ros2Plan]]:
+    """Each file above level 0 includes one file a level down, then, in turns (deepest files
+    first), one more of its lower-level candidates until the workspace holds its count."""
+    total = round(len(plans) * ROS2_DENSE_INCLUDES_PER_FILE)
+    chosen: dict[int, list[_Ros2Plan]] = {}
+    spare: dict[int, list[_Ros2Plan]] = {}
+    deep = sorted((p for p in plans if p.level), key=lambda p: (-p.level, p.index))
+    for plan in deep:
+        rng = random.Random(f"ros2-dense:{seed}:{plan.index}")
+        first = _ros2_includes(plans, plan, rng)[0]
+        candidates = [
+            other
+            for other in _ros2_candidates(plans, plan)
+            if other.level < plan.level and other is not first
+        ]
+        # taken from the end: the files a level down first, so include trees are bushy
+        order = rng.sample(candidates, len(candidates))
+        order.sort(key=lambda other: other.level)
+        chosen[plan.index], spare[plan.index] = [first], order
+    count = len(deep)
+    while count < total and any(spare.values()):
+        for plan in deep:
+            if spare[plan.index] and count < total:
+                chosen[plan.index].append(spare[plan.index].pop())
+                count += 1
+    return chosen
+
+
+def generate_ros2_dense(root: Path, n_files: int = ROS2_FILES, seed: int = 0) -> list[Path]:
+    """The ROS 2 workspace of issue 28's slow system: :func:`generate_ros2`'s files with
+    denser include trees (340 includes in 120 files) and ``$(eval)``s (180) whose values
+    flow into the included files' args."""
+    plans = _ros2_plan(n_files, seed)
+    includes = _dense_includes(plans, seed)
+    evals = round(n_files * ROS2_DENSE_EVALS_PER_FILE) - n_files  # files with a second one
+    texts = {
+        plan.index: _ros2_launch(
+            plans,
+            plan,
+            seed,
+            _Dense(tuple(includes.get(plan.index, ())), 1 + (plan.index % 2 == 0 and evals > 0)),
+        )
+        for plan in plans
+    }
+    return _write_ros2(root, plans, texts)
+
+
+def _write_ros2(root: Path, plans: list[_Ros2Plan], texts: dict[int, str]) -> list[Path]:
+    n_files = len(plans)
     written: list[Path] = []
     for number in range((n_files + ROS2_FILES_PER_PACKAGE - 1) // ROS2_FILES_PER_PACKAGE):
         name = _ros2_package(number)
@@ -692,7 +800,12 @@ def generate_ros2(root: Path, n_files: int = ROS2_FILES, seed: int = 0) -> list[
     return written
 
 
-SHAPES = {"corpus": generate_workspace, "uniform": generate_uniform, "ros2": generate_ros2}
+SHAPES = {
+    "corpus": generate_workspace,
+    "uniform": generate_uniform,
+    "ros2": generate_ros2,
+    "ros2-dense": generate_ros2_dense,
+}
 
 
 def main() -> None:

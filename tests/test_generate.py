@@ -1,5 +1,6 @@
-"""The ROS 2 benchmark workspace of ``bench/generate.py --shape ros2`` has the issue's size
-and shape, and is a consistent ROS 2 workspace (what rosvar measures must be loadable)."""
+"""The ROS 2 benchmark workspaces of ``bench/generate.py --shape ros2`` and ``--shape
+ros2-dense`` have their issues' size and shape, and are consistent ROS 2 workspaces (what
+rosvar measures must be loadable)."""
 
 from __future__ import annotations
 
@@ -29,11 +30,29 @@ _VAR = re.compile(r"\$\(var (\w+)\)")
 _SHARE = re.compile(r"\$\(find-pkg-share (\w+)\)")
 
 
-@pytest.fixture(scope="module")
-def ros2_workspace(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    root = tmp_path_factory.mktemp("ros2") / "src"
-    generate.SHAPES["ros2"](root, generate.ROS2_FILES)
+@pytest.fixture(scope="module", params=["ros2", "ros2-dense"])
+def ros2_workspace(
+    tmp_path_factory: pytest.TempPathFactory, request: pytest.FixtureRequest
+) -> Path:
+    root = tmp_path_factory.mktemp(request.param) / "src"
+    generate.SHAPES[request.param](root, generate.ROS2_FILES)
     return root
+
+
+def _count(root: Path, text: str) -> int:
+    return sum(path.read_text().count(text) for path in root.glob("*/launch/*.launch.xml"))
+
+
+@pytest.mark.parametrize(
+    ("shape", "includes", "evals"), [("ros2", 150, 0), ("ros2-dense", 340, 180)]
+)
+def test_includes_and_evals(tmp_path: Path, shape: str, includes: int, evals: int) -> None:
+    """Issue 28's system holds 340 includes and 180 ``$(eval)``s in its 120 files; the
+    dense shape's flag (a computed ``<let>``) reaches the included files' args."""
+    generate.SHAPES[shape](tmp_path, generate.ROS2_FILES)
+    assert (_count(tmp_path, "<include "), _count(tmp_path, "$(eval ")) == (includes, evals)
+    passed = _count(tmp_path, f'value="$(var {generate.FLAG})"/>')
+    assert (passed > 0) == (shape == "ros2-dense")
 
 
 def _walk(entity: Entity) -> list[Entity]:
@@ -97,7 +116,8 @@ def test_consistent_and_deep(ros2_workspace: Path) -> None:
     assert max(depth(path) for path in includes) == generate.ROS2_MAX_LEVEL + 1
 
 
-def test_deterministic(tmp_path: Path) -> None:
-    first = generate.generate_ros2(tmp_path / "a", 30, seed=3)
-    second = generate.generate_ros2(tmp_path / "b", 30, seed=3)
+@pytest.mark.parametrize("shape", ["ros2", "ros2-dense"])
+def test_deterministic(tmp_path: Path, shape: str) -> None:
+    first = generate.SHAPES[shape](tmp_path / "a", 30, 3)
+    second = generate.SHAPES[shape](tmp_path / "b", 30, 3)
     assert [p.read_text() for p in first] == [p.read_text() for p in second]

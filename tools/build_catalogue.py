@@ -95,6 +95,19 @@ class Review:
     add: dict[str, list[Item]] = field(default_factory=dict)
     drop: dict[str, list[str]] = field(default_factory=dict)
     boundary: dict[str, list[str]] = field(default_factory=dict)
+    named: dict[str, dict[int, Item]] = field(default_factory=dict)
+    """Per role, the entries (by line) whose name is a parameter's value: their ``named_by``
+    (``{"parameter": "~imu{N}"}``) and ``default``."""
+    when: dict[str, dict[int, str]] = field(default_factory=dict)
+    """Per role, the entries (by line) that a condition on the node's parameters switches
+    on (``param('~use_control')``, as a hint's ``when:``)."""
+
+
+def _named(parameter: str, default: str | None = None, namespace: str = "") -> Item:
+    named: Item = {"parameter": parameter}
+    if namespace:
+        named["namespace"] = namespace
+    return {"named_by": named, "default": default}
 
 
 def _entry(name: str, kind: str | None, file: str, line: int) -> Item:
@@ -346,11 +359,51 @@ for _key, _review in {
     ),
 }.items():
     REVIEW[_key] = _review
+LOCALIZATION_INPUTS = {1107: "odom", 1224: "pose", 1301: "twist", 1471: "imu"}
+"""ros_filter.cpp: each sensor's topic is the value of ~odom0, ~odom1, ... (then ~pose0,
+~twist0, ~imu0), read in a loop until one is not set."""
 for _filter in ("ekf_localization_node", "ukf_localization_node"):
     REVIEW[("robot_localization", _filter)] = Review(
-        "set_pose (topic) is for people and tools resetting the filter",
+        "set_pose (topic) is for people and tools resetting the filter; each sensor topic "
+        "is the value of ~odomN/~poseN/~twistN/~imuN (one per parameter set); cmd_vel only "
+        "with ~use_control, stamped after ~stamped_control",
         boundary={"subscribes": ["set_pose"]},
+        named={
+            "subscribes": {
+                line: _named(f"~{kind}{{N}}") for line, kind in LOCALIZATION_INPUTS.items()
+            }
+        },
+        when={
+            "subscribes": {
+                1538: "param('~use_control') and param('~stamped_control')",
+                1542: "param('~use_control') and not param('~stamped_control')",
+            }
+        },
     )
+REVIEW[("robot_pose_ekf", "robot_pose_ekf")] = Review(
+    "each input only when its ~odom_used, ~imu_used, ~vo_used, ~gps_used says so "
+    "(odom_estimation_node.cpp)",
+    when={
+        "subscribes": {
+            112: "param('~odom_used')",
+            119: "param('~imu_used')",
+            126: "param('~vo_used')",
+            132: "param('~gps_used')",
+        }
+    },
+)
+REVIEW[("hector_mapping", "hector_mapping")] = Review(
+    REVIEW[("hector_mapping", "hector_mapping")].note
+    + "; the scan, system message and pose update topics are parameters' values",
+    boundary=REVIEW[("hector_mapping", "hector_mapping")].boundary,
+    named={
+        "subscribes": {
+            187: _named("~scan_topic", "scan"),
+            188: _named("~sys_msg_topic", "syscommand"),
+        },
+        "publishes": {190: _named("~pose_update_topic", "poseupdate")},
+    },
+)
 
 
 def _git(directory: str, *arguments: str) -> bytes:
@@ -380,7 +433,31 @@ def _reviewed(document: Item, review: Review, checkout: str) -> None:
             assert match, (document["executable"], role, name)
             for entry in match:
                 entry["boundary"] = True
+    _switched(document, review)
     document["review"] = review.note
+
+
+def _switched(document: Item, review: Review) -> None:
+    """Apply the review's ``named`` and ``when`` (matched by role and line: an entry the
+    extractor names by its parameter already keeps its line)."""
+    for role, by_line in review.named.items():
+        entries = document[role]
+        assert isinstance(entries, list)
+        for line, named in by_line.items():
+            match = [e for e in entries if e["line"] == line]
+            assert match, (document["executable"], role, line)
+            named_by = named["named_by"]
+            assert isinstance(named_by, dict)
+            for entry in match:
+                entry.update(named, name="{" + str(named_by["parameter"]) + "}", static=False)
+    for role, conditions in review.when.items():
+        entries = document[role]
+        assert isinstance(entries, list)
+        for line, condition in conditions.items():
+            match = [e for e in entries if e["line"] == line]
+            assert match, (document["executable"], role, line)
+            for entry in match:
+                entry["when"] = condition
 
 
 def build(mirrors: str) -> dict[str, object]:
@@ -426,11 +503,30 @@ def build(mirrors: str) -> dict[str, object]:
     return {"catalogue": nodes}
 
 
+def reapply(path: str) -> dict[str, object]:
+    """The catalogue at ``path`` with the review's ``named`` and ``when`` applied again
+    (they change no entry the extractor reads: no mirror is needed)."""
+    with open(path, encoding="utf-8") as handle:
+        document = json.load(handle)
+    for node in document["catalogue"]:
+        found = REVIEW.get((node["package"], node["executable"]))
+        if found is not None:
+            _switched(node, found)
+            node["review"] = found.note
+    return dict(document)
+
+
 def main() -> int:
     options = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     options.add_argument("--mirrors", default="/work/.mirror", help="folder of the mirrors")
+    options.add_argument(
+        "--reapply",
+        metavar="JSON",
+        help="apply the review's parameter names and conditions to a built catalogue",
+    )
     arguments = options.parse_args()
-    print(json.dumps(build(arguments.mirrors), indent=1, ensure_ascii=False))
+    built = reapply(arguments.reapply) if arguments.reapply else build(arguments.mirrors)
+    print(json.dumps(built, indent=1, ensure_ascii=False))
     return 0
 
 

@@ -48,6 +48,19 @@ class Diagnostic:
         return f"{self.location}: {self.severity.value}: {self.message} [{self.code}]"
 
 
+READ_AS_ROSLAUNCH = frozenset(
+    {"tag-unknown", "attribute-unknown", "node-name-illegal", "launch-nested-root"}
+)
+"""Codes of warnings about something roslaunch itself only warns of and reads past, as
+rosvar does: what the file loads is known all the same."""
+
+
+def leaves_unknown(diagnostic: Diagnostic) -> bool:
+    """Whether the file it is about loads something rosvar does not know: a warning or an
+    error (a part not followed, not read, or only known per configuration), not a note."""
+    return diagnostic.severity is not Severity.NOTE and diagnostic.code not in READ_AS_ROSLAUNCH
+
+
 @dataclass
 class DiagnosticSink:
     """Collects diagnostics in the order they are found, without duplicates."""

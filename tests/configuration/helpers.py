@@ -9,6 +9,7 @@ import re
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+from rosvar.analyses.conflicts import node_occurrences
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.choices import UserChoice
 from rosvar.configuration.command import given
@@ -73,10 +74,7 @@ def random_product(engine: Configurator, rng: random.Random) -> ConfigurationSta
     """
     chosen: list[UserChoice] = []
     while True:
-        state = engine.state(chosen)
-        if state.untyped:
-            chosen.append(UserChoice("set", state.untyped[0], f"typed{rng.randint(0, 9)}"))
-            continue
+        state = typed_in(engine, chosen, rng)
         if state.complete:
             return state
         open_ = [f for f in engine.catalog if state.features[f.id].state == "unselected"]
@@ -84,6 +82,68 @@ def random_product(engine: Configurator, rng: random.Random) -> ConfigurationSta
         feature = rng.choice(known or open_)
         action = "select" if feature.kind == "value" or rng.random() < 0.2 else "deselect"
         chosen.append(UserChoice(action, feature.id))
+
+
+def product_of_files(engine: Configurator, rng: random.Random, count: int) -> ConfigurationState:
+    """A complete product of ``count`` entry files picked at random (fewer when the others
+    are ruled out), finished with defaults as ``--finish`` does, every ``<other>`` value
+    left open typed: the products people build from a bringup and a few sensors. After the
+    first, files that load a node name a picked one loads are picked first: those are the
+    ones that can clash, through the files they include too (issue 30)."""
+    models = {f.id: engine.analysis.model(f.path) for f in engine.catalog.files}
+    loads = {
+        file: {o.name for node in model.nodes for o in node_occurrences(model, node)}
+        for file, model in models.items()
+    }
+    chosen: list[UserChoice] = []
+    names: set[str] = set()
+    picked = 0
+    while picked < count:
+        state = engine.state(chosen)
+        open_ = [f.id for f in engine.catalog.files if state.features[f.id].state == "unselected"]
+        if not open_:
+            break
+        near = [f for f in open_ if loads[f] & names]
+        file = rng.choice(near or open_)
+        chosen.append(UserChoice("select", file))
+        if len(engine.state(chosen).refused) == len(state.refused):
+            picked += 1
+            names |= loads[file]
+    chosen += engine.completion(chosen)
+    return typed_in(engine, chosen, rng)
+
+
+TEXTS = ("typed{}", "{}", "True", "{}.5")
+"""What is typed for an ``<other>`` value (``{}`` a random digit), the next one while the
+engine refuses it (every product left would fail by it): a word first, as people type
+names; ``True``, which is no known value where ``true`` is."""
+
+
+def typed_in(
+    engine: Configurator, chosen: list[UserChoice], rng: random.Random
+) -> ConfigurationState:
+    """The state after ``chosen`` with a text typed (appended) for every ``<other>`` value
+    that waits for one. Where every text is refused (an arg naming a folder: any other text
+    names a file that is not there), the choice of ``<other>`` is taken back, as a user
+    would, and the product finished with defaults again; where ``<other>`` was no choice,
+    the state is left waiting for a text (``untyped``)."""
+    state = engine.state(chosen)
+    attempt = 0
+    while state.untyped:
+        arg = state.untyped[0]
+        if attempt == len(TEXTS):
+            other = UserChoice("unselect", f"{arg}=<other>")
+            if other in chosen or other.feature not in {c.feature for c in chosen}:
+                return state
+            chosen.append(other)
+            chosen += engine.completion(chosen)
+            state, attempt = engine.state(chosen), 0
+            continue
+        chosen.append(UserChoice("set", arg, TEXTS[attempt].format(rng.randint(0, 9))))
+        refused = len(state.refused)
+        state = engine.state(chosen)
+        attempt = attempt + 1 if len(state.refused) > refused else 0
+    return state
 
 
 PRESENCE_FIELDS = ("presence", "condition", "id")
@@ -143,6 +203,7 @@ def same_as_resolve(analysis: Analysis, state: ConfigurationState) -> int:
         )
         ours = anon_free(product(state, [m.spelled for m in members]))
         assert ours["ok"] == resolution["ok"], state.command
+        assert resolution["ok"] or state.launches is not True, state.command
         if not resolution["ok"]:
             topics = None
             continue

@@ -54,3 +54,31 @@ def test_a_file_by_its_feature_model_id_or_any_path_and_near_misses_suggested(
         assert catalog.lookup(f"{text}:x=1").id == f"{spelled}:x=1"
     with pytest.raises(ChoiceError, match=r"did you mean '.*a\.launch:x'"):
         catalog.lookup(f"{spelled}:y")
+
+
+@pytest.mark.parametrize(
+    ("text", "near"),
+    [
+        ("control.launch", ["pkg/launch/control.xml"]),  # issue 30.6: "no feature", no hint
+        ("robot.launch", ["pkg/launch/robot.launch", "other/launch/robot.launch"]),
+        ("control.launch:use_teleop=true", ["pkg/launch/control.xml:use_teleop=true"]),
+        ("pkg/launch/control.xml:use_telop", ["pkg/launch/control.xml:use_teleop"]),
+        ("robto.launch", ["pkg/launch/robot.launch", "other/launch/robot.launch"]),
+    ],
+)
+def test_a_file_named_as_people_name_it_is_suggested(
+    ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch, text: str, near: list[str]
+) -> None:
+    ws.launch(
+        "control.xml",
+        '  <arg name="use_teleop" default="true"/>\n'
+        '  <node pkg="p" type="t" name="n" if="$(arg use_teleop)"/>',
+    )
+    ws.launch("robot.launch", '  <node pkg="p" type="t" name="r"/>')
+    ws.launch("robot.launch", '  <node pkg="p" type="t" name="s"/>', package="other")
+    monkeypatch.chdir(ws.root)
+    catalog = Catalog(extract(ws.analysis()))
+    with pytest.raises(ChoiceError) as refused:
+        catalog.lookup(text)
+    said = str(refused.value).partition("did you mean ")[2].rstrip("?").split(" or ")
+    assert {f"'{n}'" for n in near} <= set(said) and len(said) <= 3

@@ -10,8 +10,9 @@ import pytest
 from rosvar.analyses.feature_model.counting import CountedDiagram
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.feature_model.model import FeatureModel
-from rosvar.configuration.derivation import Derivation, Presence, PresenceVerdict
+from rosvar.configuration.derivation import Derivation
 from rosvar.configuration.lowering import Bounds
+from rosvar.configuration.presence import Presence, PresenceVerdict
 from rosvar.logic.bdd import BDD
 
 if TYPE_CHECKING:

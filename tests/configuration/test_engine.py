@@ -3,14 +3,21 @@
 from __future__ import annotations
 
 import gc
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 import pytest
 
-from configuration.helpers import choices, configurator, present, run, states
+from configuration.helpers import choices, configurator, present, run, same_as_resolve, states
+from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.feature_model.operations import count_configurations
-from rosvar.configuration.choices import ChoiceError
-from rosvar.configuration.engine import Configurator
+from rosvar.configuration.choices import ChoiceError, UserChoice
+from rosvar.configuration.engine import ConfigurationState, Configurator
+from rosvar.configuration.sat import Sat
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.documents.state import state_document
+from rosvar.outputs.web.entries import render
+from rosvar.workspace import discover
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -67,7 +74,10 @@ def test_refusal_names_the_earlier_choice_and_the_constraints(engine: Configurat
     assert refusal.choice.feature == "main.launch:cam"
     assert "select other_camera.launch" in refusal.reason
     assert "select main.launch" not in refusal.reason  # not needed for the contradiction
-    assert "includes" in refusal.reason and "both declare node /camera" in refusal.reason
+    # main.launch loads camera.launch's node: the clash is main's own (issue 30)
+    assert "main.launch and pkg/launch/other_camera.launch both load node /camera" in (
+        refusal.reason
+    )
     assert [c.feature for c in state.choices] == ["other_camera.launch", "main.launch"]
     assert states(state)["main.launch:cam=true"] == "deselected*"
 
@@ -197,14 +207,25 @@ def test_conflict_certain_possible_gone(ws: LaunchWorkspace) -> None:
     assert [c.condition for c in both.conflicts] == ["only for other values"]
 
 
-def test_a_certain_clash_is_certain_only_once_its_files_are_in(ws: LaunchWorkspace) -> None:
+def test_a_file_that_loads_a_node_twice_fails_alone(ws: LaunchWorkspace) -> None:
+    """roslaunch refuses it ("multiple nodes named"): the engine's model excludes it, and
+    the values that would make it happen."""
     ws.launch("a.launch", '  <node pkg="p" type="t" name="n"/>\n' * 2)
+    ws.launch(
+        "b.launch",
+        '  <arg name="twice" default="false"/>\n  <node pkg="p" type="t" name="m"/>\n'
+        '  <node pkg="p" type="t" name="m" if="$(arg twice)"/>\n',
+    )
     engine = configurator(ws)
-    [conflict] = run(engine).conflicts
-    assert (conflict.files, conflict.status) == (("a.launch", "a.launch"), "possible")
-    [conflict] = run(engine, "select a.launch").conflicts
-    assert conflict.status == "certain"
-    assert run(engine, "deselect a.launch").conflicts == []
+    assert states(run(engine))["a.launch"] == "deselected*"
+    [refusal] = run(engine, "select a.launch").refused
+    assert refusal.reason.endswith("pkg/launch/a.launch loads node /n twice")
+    b = run(engine, "select b.launch")
+    assert states(b)["b.launch:twice=true"] == "deselected*"
+    assert [c.condition for c in b.conflicts] == ["only for other values"]  # a typed 'true'
+    assert (
+        "b.launch loads node /m twice" in run(engine, "set b.launch:twice=true").refused[0].reason
+    )
 
 
 def test_configurations_are_counted_exactly_beyond_a_double(ws: LaunchWorkspace) -> None:
@@ -245,3 +266,125 @@ def test_an_arg_roslaunch_stops_without_is_asked_for_and_an_unused_one_left_off(
     typed = run(engine, "select a.launch", "set a.launch:out=screen")
     assert typed.complete and typed.command == "roslaunch pkg a.launch out:=screen"
     assert typed.graph.errors == []  # absent: not listed
+
+
+TYPED = """  <arg name="rate" default="5"/>
+  <arg name="fast" default="false"/>
+  <group if="$(arg fast)">
+    <param name="rate" type="int" value="$(arg rate)"/>
+    <param name="description" command="$(arg rate)"/>
+  </group>
+  <node pkg="pkg" type="t" name="n"/>
+"""
+
+
+def test_a_typed_text_every_product_left_fails_by_is_refused_with_where(
+    ws: LaunchWorkspace,
+) -> None:
+    """issue 30: ``initial_reset:=typed8`` made a product whose command roslaunch refuses."""
+    ws.launch("t.launch", TYPED)
+    engine = configurator(ws)
+    state = run(engine, "set t.launch:fast=true", "set t.launch:rate=abc")
+    [refusal] = state.refused
+    assert refusal.choice.value == "abc"
+    assert "roslaunch would stop at " in refusal.reason
+    assert "t.launch:5:5: invalid literal for int() with base 10: 'abc' [param-invalid]" in (
+        refusal.reason
+    )
+    assert "t.launch:rate" not in state.untyped and typed_failures(state) == []
+    assert run(engine, "set t.launch:fast=true", "set t.launch:rate=7").refused == []
+
+
+def test_a_typed_text_some_products_fail_by_is_their_error_under_its_condition(
+    ws: LaunchWorkspace,
+) -> None:
+    ws.launch("t.launch", TYPED)
+    engine = configurator(ws)
+    typed = run(engine, "set t.launch:rate=abc")
+    assert typed.refused == []
+    [error] = typed_failures(typed)
+    assert (error["line"], error["presence"], error["condition"]) == (5, "undetermined", "fast")
+    assert typed.summary.errors == []
+    chosen = choices("set t.launch:rate=abc", "set t.launch:fast=true")
+    failing = engine.state(chosen + engine.completion(chosen))
+    assert failing.complete and [e["presence"] for e in typed_failures(failing)] == ["present"]
+    assert [e["code"] for e in failing.summary.errors] == ["param-invalid"]
+    assert same_as_resolve(ws.analysis(), failing) == 0  # rosvar resolve refuses it too
+    loads = run(engine, "set t.launch:rate=abc", "set t.launch:fast=false")
+    assert typed_failures(loads) == [] and loads.summary.errors == []
+
+
+def typed_failures(state: ConfigurationState) -> list[dict[str, object]]:
+    """The errors of texts typed for ``<other>`` values that are not absent."""
+    return [e for e in state.graph.errors if e["code"] == "param-invalid"]
+
+
+def test_a_command_param_shows_what_roslaunch_loads_once_typed(ws: LaunchWorkspace) -> None:
+    ws.launch("t.launch", TYPED)
+    engine = configurator(ws)
+    chosen = choices("set t.launch:fast=true", "set t.launch:rate=12")
+    state = engine.state(chosen + engine.completion(chosen))
+    params = {p["name"]: p["value"] for p in state.graph.params if p["presence"] == "present"}
+    assert params == {"/rate": 12, "/description": "__command__(12)"}
+    assert same_as_resolve(ws.analysis(), state) == 1
+
+
+def test_what_rosvar_could_not_read_is_shown_while_its_file_is_in(ws: LaunchWorkspace) -> None:
+    """issue 30: a product rosvar could not read was offered as finished ("0 nodes") and the
+    notice of what it could not read was gone after the next click."""
+    ws.launch("a.launch", '  <include file="$(find nopkg)/launch/x.launch"/>')
+    ws.launch("b.launch", '  <node pkg="p" type="t" name="n"/>')
+    engine = configurator(ws)
+    assert run(engine).unknown == []
+    chosen = choices("select a.launch")
+    for state in (run(engine, "select a.launch"), engine.state(chosen + engine.completion(chosen))):
+        assert [(d.code, d.location.line) for d in state.unknown] == [
+            ("package-unknown", 2),
+            ("include-unknown", 2),
+        ]
+    finished = engine.state(chosen + engine.completion(chosen))
+    assert finished.complete and state_document(finished)["unknown"][0]["code"] == "package-unknown"
+    assert run(engine, "select b.launch", "deselect a.launch").unknown == []
+
+
+def test_a_finished_product_says_whether_it_launches(ws: LaunchWorkspace) -> None:
+    ws.launch("t.launch", TYPED)
+    engine = configurator(ws)
+    assert run(engine, "set t.launch:rate=abc").launches is None  # not finished
+    chosen = choices("set t.launch:rate=abc", "set t.launch:fast=true")
+    failing = engine.state(chosen + engine.completion(chosen))
+    assert failing.launches is False and state_document(failing)["launches"] is False
+    chosen = choices("set t.launch:rate=3", "set t.launch:fast=true")
+    assert engine.state(chosen + engine.completion(chosen)).launches is True
+
+
+def test_a_refusal_the_search_cannot_explain_in_its_budget_says_so(
+    engine: Configurator, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(Sat, "_limited", lambda _sat, _assumptions: None)
+    state = run(
+        engine, "select other_camera.launch", "select main.launch", "set main.launch:cam=true"
+    )
+    [refusal] = state.refused
+    assert refusal.reason.endswith(
+        "is impossible after select other_camera.launch: not explained (finding the "
+        "constraints why took too long)"
+    )
+
+
+def test_two_ordinary_clicks_on_husky_are_explained_at_once() -> None:
+    """issue 30.5: two selections that each took a second took over 120 s together, in the
+    BDD conjunctions of the refusal's explanation."""
+    corpus = Path(__file__).resolve().parents[3] / "shared" / "corpus"
+    if not (corpus / "husky").is_dir():
+        pytest.skip(f"corpus not found at {corpus}")
+    analysis = Analysis(discover([corpus / "husky"], deps=[corpus / "_external"]))
+    engine = Configurator(analysis, extract(analysis, products=True), render=render)
+    config = "husky_manipulation/husky_dual_gen3_moveit_config/launch/"
+    [gazebo, planning] = [
+        next(f.id for f in engine.catalog.files if f.path.endswith(config + name))
+        for name in ("gazebo.launch", "husky_dual_gen3_moveit_planning_execution.launch")
+    ]
+    [refusal] = engine.state([UserChoice("select", gazebo), UserChoice("select", planning)]).refused
+    assert refusal.reason.startswith(f"select {planning} is impossible after select {gazebo}: ")
+    assert "ros_controllers.launch both declare param /controller_list" in refusal.reason

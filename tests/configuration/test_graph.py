@@ -182,4 +182,4 @@ def test_complete_products_of_lizi_equal_resolve() -> None:
     engine = Configurator(analysis, extract(analysis, products=True), render=render)
     # most of Lizi's products fail in roslaunch (packages missing from the corpus, a
     # realsense include with unused args): they must fail for the engine too
-    _same_as_resolve(engine, analysis, seed=1, products=6, loading=1)
+    _same_as_resolve(engine, analysis, seed=4, products=6, loading=1)

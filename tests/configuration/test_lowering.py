@@ -7,8 +7,7 @@ from typing import TYPE_CHECKING
 
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.lowering import Bounds, Lowering
-from rosvar.logic.bdd import transfer
-from rosvar.logic.conditions import BDD
+from rosvar.logic.bdd import BDD, transfer
 from rosvar.logic.inputs import ArgInput
 
 if TYPE_CHECKING:

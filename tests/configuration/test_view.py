@@ -6,8 +6,8 @@ from collections import Counter
 from typing import TYPE_CHECKING
 
 from configuration.helpers import configurator, run
-from rosvar.configuration.derivation import Presence
 from rosvar.configuration.graph import ElementKind
+from rosvar.configuration.presence import Presence
 from rosvar.outputs.documents.state import graph_document
 
 if TYPE_CHECKING:

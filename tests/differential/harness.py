@@ -358,7 +358,7 @@ def _first_line(text: str) -> str:
 
 
 def compare(ours: Mapping[str, Any], theirs: Mapping[str, Any]) -> list[str]:
-    """Differences between rosvar's resolution (``to_json()``) and the oracle's result.
+    """Differences between rosvar's resolution (its JSON document) and the oracle's result.
 
     Empty when they agree. When both load, nodes and tests must match on the oracle's fields
     (``filename`` up to ``realpath``, ``respawn_delay``/``time_limit`` as floats) and the

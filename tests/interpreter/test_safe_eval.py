@@ -8,6 +8,7 @@ everything) and through :func:`evaluate`, and the results must agree.
 from __future__ import annotations
 
 import json
+import math
 import operator
 import random
 import subprocess
@@ -29,7 +30,9 @@ from rosvar.interpreter.safe_eval import (
     compared_literals,
     convert_auto,
     evaluate,
+    evaluate_value,
     referenced_args,
+    referenced_names,
 )
 
 ORACLE_PYTHON = "/usr/bin/python3"
@@ -923,3 +926,56 @@ def test_work_inside_callbacks_is_charged(expr: str) -> None:
 
 def test_big_integer_results_are_charged_but_small_ones_pass() -> None:
     assert evaluate("max([99]*1000, key=factorial)", ENV) == "99"
+
+
+# -- a symbols environment (xacro's ${}) -----------------------------------------------------
+
+
+def _symbols(values: Mapping[str, object]) -> EvalEnvironment:
+    def symbols(name: str) -> object:
+        return values[name]
+
+    return EvalEnvironment(
+        lookup_arg=lambda name: "arg value",
+        symbols=symbols,
+        namespaces={"math": {"pi": "pi", "floor": "floor"}, "python": {"len": "len"}},
+    )
+
+
+@pytest.mark.parametrize(
+    ("expr", "values", "expected"),
+    [
+        ("w * 2", {"w": 0.5}, 1.0),  # typed, not converted from text
+        ("flag and n > 1", {"flag": True, "n": 3}, True),
+        ("pi", {}, math.pi),  # a global where no property has the name
+        ("pi", {"pi": 3}, 3),  # a property hides the global
+        ("math.pi / 2", {}, math.pi / 2),
+        ("math.floor(2.5) + python.len('ab')", {}, 4),
+        ("[x * 2 for x in items]", {"items": [1, 2]}, [2, 4]),
+        ("'%s_link' % prefix", {"prefix": "base"}, "base_link"),
+    ],
+)
+def test_symbols_are_typed_properties(
+    expr: str, values: Mapping[str, object], expected: object
+) -> None:
+    assert evaluate_value(expr, _symbols(values)) == expected
+
+
+@pytest.mark.parametrize(
+    ("expr", "error"),
+    [
+        ("true", EvalFailed),  # xacro has no lower-case booleans, nor args by name
+        ("arg_name", EvalFailed),
+        ("math.tau", EvalRefused),  # a member the environment does not offer
+        ("other.x", EvalRefused),  # no namespace of that name
+        ("w.real", EvalRefused),
+    ],
+)
+def test_symbols_environment_knows_nothing_else(expr: str, error: type[Exception]) -> None:
+    with pytest.raises(error):
+        evaluate_value(expr, _symbols({"w": 1.5}))
+
+
+def test_referenced_names_include_calls_and_namespaces() -> None:
+    names = referenced_names("max(a, b) + math.pi + [c for c in d]", frozenset({"math"}))
+    assert names == {"max", "a", "b", "math", "d"}

@@ -5,8 +5,9 @@ from __future__ import annotations
 
 import random
 
+from rosvar.logic.atoms import register_predicate
 from rosvar.logic.bdd import BDD
-from rosvar.logic.conditions import ConditionSpace, register_predicate
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Input, Slot
 
 F = "/ws/pkg/launch/main.launch"

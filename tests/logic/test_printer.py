@@ -29,8 +29,9 @@ from logic.spaces import (
 )
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.logic.atoms import PREDICATES, FileAtom, PredicateAtom
 from rosvar.logic.bdd import BDD
-from rosvar.logic.conditions import PREDICATES, ConditionSpace, FileAtom, PredicateAtom
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Input
 from rosvar.logic.printer import Printer
 from rosvar.logic.terms import Hole

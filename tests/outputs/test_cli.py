@@ -434,6 +434,41 @@ def test_text_summary_tells_what_is_left(robot: str, capsys: pytest.CaptureFixtu
     assert code == EXIT_OK and out.splitlines()[-1] == "roslaunch pkg robot.launch speed:=1"
 
 
+def test_a_product_that_does_not_launch_exits_1_and_says_so(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """issue 30: a finished product whose command roslaunch refuses, offered as any other."""
+    ws.launch(
+        "t.launch",
+        '  <arg name="rate" default="5"/>\n  <arg name="fast" default="false"/>\n'
+        '  <param name="rate" type="int" value="$(arg rate)" if="$(arg fast)"/>',
+    )
+    monkeypatch.chdir(ws.root)
+    file = "pkg/launch/t.launch"
+    code, out, _err = run(capsys, "configure", ".", "--set", f"{file}:rate=abc", "--finish")
+    assert code == EXIT_OK and out.splitlines()[-1] == "roslaunch pkg t.launch rate:=abc"
+    code, out, _err = run(
+        capsys, "configure", ".", "--set", f"{file}:rate=abc", "--set", f"{file}:fast=true",
+        "--finish",
+    )  # fmt: skip
+    assert code == EXIT_FAILS
+    assert "error: " in out and "invalid literal for int() with base 10: 'abc'" in out
+    assert out.splitlines()[-2] == "roslaunch pkg t.launch rate:=abc fast:=true"
+    assert out.splitlines()[-1].startswith("this product does not launch")
+
+
+def test_what_rosvar_could_not_read_is_listed_at_every_step(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    ws.launch("a.launch", '  <include file="$(find nopkg)/launch/x.launch"/>')
+    monkeypatch.chdir(ws.root)
+    for extra in ([], ["--finish"]):
+        code, out, _err = run(capsys, "configure", ".", "--select", "pkg/launch/a.launch", *extra)
+        assert code == EXIT_FAILS  # roslaunch cannot load the include: the product fails
+        assert "not known: 2 places of the selected files that rosvar could not read" in out
+        assert "  pkg/launch/a.launch:2:3: warning: package 'nopkg' is not in" in out
+
+
 def test_usage_errors(robot: str, capsys: pytest.CaptureFixture[str]) -> None:
     code, _out, err = run(capsys, "configure", ".", "--select", "nowhere.launch")
     assert code == EXIT_USAGE and "no feature 'nowhere.launch'" in err
@@ -500,6 +535,33 @@ def test_a_model_too_large_to_solve(
         code, _out, err = run(capsys, *argv)
         assert code == EXIT_TOO_LARGE
         assert err.startswith("rosvar: the feature model is too large to solve: ")
+
+
+def test_a_model_too_large_says_its_largest_parts_and_a_narrower_command(
+    ws: LaunchWorkspace,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """issue 30.6: on a whole repository configure stopped after seconds with the reason
+    only; it names the packages the largest groups of linked files are in, and the
+    narrower command that works (one package, the rest as dependencies)."""
+    for package, files in (("big", 3), ("small", 1)):
+        for number in range(files):
+            ws.launch(f"f{number}.launch", '  <node pkg="p" type="t" name="same"/>', package)
+    ws.launch("alone.launch", '  <node pkg="p" type="t" name="other"/>', "lone")
+    monkeypatch.setattr(extraction, "LINK_BUDGET", 0)
+    monkeypatch.setattr(extraction, "LINKS_PER_FILE", 0)
+    monkeypatch.chdir(ws.root)
+    code, _out, err = run(capsys, "configure", ".")
+    assert code == EXIT_TOO_LARGE
+    lines = err.splitlines()
+    assert lines[0].startswith("rosvar: the feature model is too large to solve: 6 pairs")
+    assert lines[1:4] == [
+        "rosvar: its largest parts (files linked by includes and shared names):",
+        "  4 files of 2 packages: big (3), small (1)",
+        "  1 file of 1 package: lone (1)",
+    ]
+    assert lines[4].endswith("e.g. rosvar configure big --deps .")
 
 
 # -- readable summaries -------------------------------------------------------------------------

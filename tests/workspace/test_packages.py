@@ -496,19 +496,25 @@ def test_ament_prefix_path_from_the_environment(
 
 
 ROS2_DATA = Path(__file__).resolve().parents[1] / "data" / "ros2"
-# repository folder: packages, Python launch files, XML launch files (tests/data/ros2/README.md)
+# repository folder: packages, Python, XML and YAML launch files (tests/data/ros2/README.md)
 ROS2_REPOSITORIES = {
-    "husky": (10, 10, 0),
-    "clearpath_common": (11, 12, 0),
-    "ros2_control_demos": (20, 48, 5),
-    "slam_toolbox": (1, 6, 0),
-    "realsense-ros": (3, 9, 0),
-    "moveit2_tutorials": (1, 24, 0),
+    "husky": (10, 10, 0, 0),
+    "clearpath_common": (11, 12, 0, 0),
+    "ros2_control_demos": (20, 48, 5, 0),
+    "slam_toolbox": (1, 6, 0, 0),
+    "realsense-ros": (3, 9, 0, 0),
+    "moveit2_tutorials": (1, 24, 0, 0),
+    "Universal_Robots_ROS2_Driver": (6, 22, 0, 0),
+    "moveit2": (39, 7, 0, 0),
+    "ros_gz": (7, 24, 0, 0),
+    "image_pipeline": (9, 17, 0, 0),
+    "demos": (20, 12, 1, 1),
+    "autoware.universe": (238, 22, 236, 0),
 }
 
 
 @pytest.mark.parametrize(("repository", "counts"), ROS2_REPOSITORIES.items())
-def test_real_ros2_repositories(repository: str, counts: tuple[int, int, int]) -> None:
+def test_real_ros2_repositories(repository: str, counts: tuple[int, int, int, int]) -> None:
     workspace = discover([ROS2_DATA / repository], ros_package_path="", ament_prefix_path="")
     assert workspace.ros_version == RosVersion.ROS2
     assert workspace.diagnostics == []
@@ -517,17 +523,58 @@ def test_real_ros2_repositories(repository: str, counts: tuple[int, int, int]) -
         len(workspace.packages),
         formats.count(LaunchFormat.PYTHON),
         formats.count(LaunchFormat.XML),
+        formats.count(LaunchFormat.YAML),
     )
     assert found == counts
     assert all(package.ros_version == RosVersion.ROS2 for package in workspace.packages.values())
 
 
 def test_real_ros2_repositories_together() -> None:
-    """All six as one colcon workspace: every launch file of each, and the ROS 1 leftovers
-    (Husky's and MoveIt's ``*.launch``) still left out."""
+    """All of them as one colcon workspace: every launch file of each, and the ROS 1
+    leftovers (Husky's and MoveIt's ``*.launch``) still left out."""
     workspace = discover([ROS2_DATA], ros_package_path="", ament_prefix_path="")
     assert workspace.ros_version == RosVersion.ROS2
-    assert len(workspace.launch_files) == sum(p + x for _, p, x in ROS2_REPOSITORIES.values())
+    assert len(workspace.launch_files) == sum(sum(c[1:]) for c in ROS2_REPOSITORIES.values())
     assert not [path for path in workspace.launch_files if path.endswith(".launch")]
     assert workspace.diagnostics == []  # no package name is shared between the repositories
     assert workspace.find_share("husky_control") == str(ROS2_DATA / "husky" / "husky_control")
+
+
+@pytest.mark.parametrize("outputs", [("install",), ("build", "devel"), ("build", "install", "log")])
+def test_a_workspace_root_reads_its_source_not_its_builds(
+    tmp_path: Path, outputs: tuple[str, ...]
+) -> None:
+    """issue 30.6: at a workspace's root, a stale ``install/share`` copy of a package replaced
+    its ``src`` copy ("…is also at …; that first one is used")."""
+    ws = tmp_path / "ws"
+    source = make_package(ws / "src" / "robot", "robot")
+    kept = write(source / "launch" / "robot.launch")
+    for output in outputs:
+        stale = make_package(ws / output / "share" / "robot", "robot")
+        write(stale / "launch" / "robot.launch")
+        write(stale / "launch" / "old.launch")
+        write(ws / output / "lib" / "robot" / "x.launch")
+    workspace = discover([ws], ros_package_path="")
+    assert workspace.packages["robot"].path == str(source)
+    assert workspace.launch_files == [str(kept)]
+    assert codes(workspace) == ["workspace-outputs-skipped"]
+    [note] = workspace.diagnostics
+    assert note.severity is Severity.NOTE and note.location.file == str(ws)
+    assert note.message.startswith(", ".join(f"{o}/" for o in sorted(outputs)))
+
+
+def test_only_a_workspace_root_skips_such_folders(tmp_path: Path) -> None:
+    """A package's own ``build`` or ``log`` folder, or a folder named ``install`` where there
+    is no ``src`` beside it, is read as any other."""
+    install = make_package(tmp_path / "install" / "share" / "tool", "tool")
+    write(install / "launch" / "tool.launch")
+    pkg = make_package(tmp_path / "pkgs" / "p", "p")
+    inner = write(pkg / "log" / "log.launch")
+    workspace = discover([tmp_path], ros_package_path="")
+    assert set(workspace.packages) == {"tool", "p"}
+    assert str(inner) in workspace.launch_files
+    marked = tmp_path / "ws"
+    (marked / "src").mkdir(parents=True)
+    write(marked / ".catkin_workspace", "")
+    make_package(marked / "install" / "share" / "q", "q")
+    assert "q" not in discover([marked], ros_package_path="").packages

@@ -19,7 +19,9 @@ from dataclasses import dataclass
 from rosvar.analyses.communication import (
     SIDES,
     Channel,
+    Described,
     Edge,
+    Gap,
     entry_when,
     launched_units,
     model_edges,
@@ -50,6 +52,7 @@ class Check(enum.StrEnum):
     PARAM_UNSET = "param-unset"
     SYMBOLIC_NAME = "symbolic-name"
     WHEN_UNKNOWN = "when-unknown"
+    UNREAD = "unread"
 
 
 DESCRIPTIONS: dict[Check, str] = {
@@ -63,6 +66,8 @@ DESCRIPTIONS: dict[Check, str] = {
     Check.SYMBOLIC_NAME: "a name could not be resolved statically: the checks skip it",
     Check.WHEN_UNKNOWN: "a hinted entry's when: reads a parameter whose value is not known: "
     "the entry is kept there",
+    Check.UNREAD: "a part of the graph could not be read: a robot description xacro fails on "
+    "or that is read only in part, a Gazebo plugin of a library rosvar does not know",
 }
 
 PROVIDED = {Channel.TOPICS: "publish", Channel.SERVICES: "serve", Channel.ACTIONS: "serve"}
@@ -88,13 +93,16 @@ def check_models(
     models: Sequence[LaunchModel],
     interfaces: Interfaces,
     confinement: Confinement,
+    described: Described | None = None,
 ) -> list[Finding]:
     """The findings of every entry file; one found again through a file including another
-    (same check, name and places) is reported once, for the file that is included."""
+    (same check, name and places) is reported once, for the file that is included.
+    ``described``: the uses launch models make beyond their nodes' code (robot
+    descriptions, bridges)."""
     found: dict[tuple[object, ...], Finding] = {}
     included = _included(models)
     ordered = sorted(models, key=lambda m: real_path(m.file) not in included)
-    edges = {model.file: model_edges(space, model, interfaces) for model in ordered}
+    edges = {model.file: model_edges(space, model, interfaces, described) for model in ordered}
     partners: Partners = defaultdict(set)
     for file, found_edges in edges.items():
         for edge in found_edges:
@@ -102,7 +110,7 @@ def check_models(
                 partners[(edge.role, edge.name)].add(file)
     for model in ordered:
         for finding in check_model(
-            space, model, interfaces, confinement, edges[model.file], partners
+            space, model, interfaces, confinement, edges[model.file], partners, described
         ):
             key = (finding.check, finding.name, finding.locations)
             found.setdefault(key, finding)
@@ -130,14 +138,18 @@ def check_model(
     confinement: Confinement,
     edges: Sequence[Edge] | None = None,
     partners: Partners | None = None,
+    described: Described | None = None,
 ) -> list[Finding]:
     """The findings of one entry file (where it loads: a failing launch has no graph);
     ``confinement``: where the files its ``<rosparam>`` loads may be read; ``partners``:
     the uses of the workspace's other entry files (a missing partner there is a note)."""
     if edges is None:
-        edges = model_edges(space, model, interfaces)
-    checker = _Checker(space, model, model.loads, confinement, partners or defaultdict(set))
+        edges = model_edges(space, model, interfaces, described)
+    loads = model.loads if described is None else model.loads & ~described.fails(model)
+    checker = _Checker(space, model, loads, confinement, partners or defaultdict(set))
     checker.graph(edges)
+    if described is not None:
+        checker.gaps(described.gaps(model))
     checker.node_names()
     checker.params(interfaces)
     checker.whens(interfaces)
@@ -206,10 +218,23 @@ class _Checker:
             self.unmatched(channel, name, providers, users)
             self.types(name, named)
 
+    def gaps(self, gaps: Sequence[Gap]) -> None:
+        """What of the graph could not be read, where it matters (where the launch loads, and
+        a description xacro fails on: that is what makes the run fail)."""
+        loads, self.loads = self.loads, self.model.loads
+        for gap in gaps:
+            self.add(
+                Check.UNREAD, gap.severity, gap.name, gap.message, gap.condition, gap.locations
+            )
+        self.loads = loads
+
     def providers(self, channel: Channel, name: str, providers: Sequence[Edge]) -> None:
-        """At least two different nodes provide ``name``: a running count over the nodes."""
+        """At least two different nodes provide ``name``: a running count over the nodes.
+        Boundary outputs are meant to have many (every tf broadcaster publishes ``/tf``)."""
         per_node: dict[tuple[str, Location], BDD] = defaultdict(lambda: self.space.false)
         for edge in providers:
+            if edge.boundary:
+                continue
             per_node[(edge.node, edge.launch)] |= edge.condition
         if len(per_node) < 2:
             return

@@ -20,21 +20,32 @@ must give exactly those.
 from __future__ import annotations
 
 import enum
+import re
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
-from typing import TypeVar
+from typing import Protocol, TypeVar
 
-from rosvar.analyses.param_values import ROS2_PARAMETERS, ParamValues, param_default
+from rosvar.analyses.param_values import ROS2_PARAMETERS, ParamValues, Unknown, param_default
 from rosvar.analyses.when import When, concrete_holds, when_condition
-from rosvar.diagnostics import Location
+from rosvar.diagnostics import Location, Severity
 from rosvar.interpreter.model import LaunchModel, NodeDecl, NodeSchema, Raw
 from rosvar.interpreter.resolution import ResolvedNode
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.terms import Term
 from rosvar.ros import names
 from rosvar.ros.version import RosVersion
-from rosvar.workspace.interfaces.model import Default, Entry, Interfaces, NodeInterface, Role
+from rosvar.workspace.interfaces.model import (
+    INDEX,
+    Default,
+    Entry,
+    Interfaces,
+    NamedBy,
+    NodeInterface,
+    Role,
+)
+from rosvar.workspace.interfaces.values import Text
 
 _R = TypeVar("_R")
 
@@ -161,10 +172,40 @@ class Edge:
     source: Location  # the use in the node's source
     static: bool  # False: a part of the name is not known statically
     boundary: bool = False  # meant for something outside the launched nodes (Entry.boundary)
+    term: Term | None = None
+    """A name known per configuration (a robot description's value): evaluated in one."""
 
     @property
     def channel(self) -> Channel:
         return CHANNEL[self.role]
+
+
+@dataclass(frozen=True)
+class Gap:
+    """A part of the graph analysis could not read where ``condition`` holds (a robot
+    description xacro fails on, a Gazebo plugin of an unknown library): ``name`` says what."""
+
+    name: str
+    message: str
+    condition: BDD
+    locations: tuple[Location, ...]  # the first is where it is reported (the launching node)
+    severity: Severity
+    stops: bool = False  # the launch stops there (xacro failing on a robot description)
+
+
+class Described(Protocol):
+    """Uses that a launch model makes beyond its nodes' code: the Gazebo plugins of the robot
+    descriptions its spawners load, the topics its bridges' arguments name (edges of the
+    node that loads or runs them), and what of those could not be read."""
+
+    def edges(self, model: LaunchModel) -> list[Edge]: ...
+
+    def gaps(self, model: LaunchModel) -> list[Gap]: ...
+
+    def fails(self, model: LaunchModel) -> BDD:
+        """Where running what the model launches fails although the model loads (xacro on
+        a robot description: roslaunch stops, as ``ros2 launch`` does)."""
+        ...
 
 
 def find_interface(interfaces: Interfaces, unit: tuple[str, str]) -> NodeInterface | None:
@@ -172,13 +213,21 @@ def find_interface(interfaces: Interfaces, unit: tuple[str, str]) -> NodeInterfa
     return interfaces.find(package or None, executable)
 
 
-def model_edges(space: ConditionSpace, model: LaunchModel, interfaces: Interfaces) -> list[Edge]:
-    """Every edge the nodes of ``model`` can have (tests excluded: they run apart)."""
+def model_edges(
+    space: ConditionSpace,
+    model: LaunchModel,
+    interfaces: Interfaces,
+    described: Described | None = None,
+) -> list[Edge]:
+    """Every edge the nodes of ``model`` can have (tests excluded: they run apart), and
+    those ``described`` gives them (robot descriptions, bridges)."""
     edges: list[Edge] = []
     params = ParamValues(space, [(space.true, model)])
     for node in model.nodes:
         if not node.is_test:
             edges.extend(node_edges(space, model.file, node, interfaces, params))
+    if described is not None:
+        edges.extend(described.edges(model))
     return edges
 
 
@@ -214,9 +263,99 @@ def node_edges(
             used = condition
             if entry.when is not None:
                 used &= entry_when(params, node, launched, interface, entry.when).condition
-            for when, name in entry_names(launched, remaps, entry, used):
-                edges.append(_edge(file, launched, node, entry, name, when, static))
+            for taken, use in entry_uses(params, node, launched, interface, entry, used):
+                for when, name in entry_names(launched, remaps, use, taken):
+                    edges.append(_edge(file, launched, node, use, name, when, static))
     return edges
+
+
+def entry_uses(
+    params: ParamValues,
+    node: NodeDecl,
+    launched: LaunchedNode,
+    interface: NodeInterface,
+    entry: Entry,
+    used: BDD,
+) -> list[tuple[BDD, Entry]]:
+    """``entry`` under ``used``; one named by a parameter becomes one entry per value the
+    parameter takes (what the launched files set, else its default), each under its
+    condition: a value not known keeps the symbolic entry; an indexed parameter
+    (``~imu{N}``) gives one per such parameter set, none where unset."""
+    named = entry.named_by
+    if named is None:
+        return [(used, entry)]
+    defaults = _defaults(launched, interface)
+    lookup = _ros2_lookup(params.space, node) if node.ros2 else None
+    uses: list[tuple[BDD, Entry]] = []
+    for parameter in _named_parameters(params, node, launched, named):
+        resolved = launched.resolve(parameter)
+        default = entry.default if entry.default is not None else defaults.get(resolved)
+        if named.indexed:
+            default = None
+        values = (
+            lookup(parameter, default) if lookup is not None else params.values(resolved, default)
+        )
+        for condition, value in values:
+            taken = used & condition
+            if taken == params.space.false:
+                continue
+            if isinstance(value, str) and value:
+                name = Text(value).within(Text(named.namespace)).value
+                uses.append((taken, replace(entry, name=name, static=True, named_by=None)))
+            elif not named.indexed:
+                uses.append((taken, entry))
+    return uses
+
+
+def _named_parameters(
+    params: ParamValues, node: NodeDecl, launched: LaunchedNode, named: NamedBy
+) -> list[str]:
+    """The parameters that name a use: the one, or every one of an indexed name that the
+    launched files set (as the node writes it)."""
+    if not named.indexed:
+        return [named.parameter]
+    head, _, tail = named.parameter.partition(INDEX)
+    if node.ros2:
+        written = [p.name for p in node.parameters if isinstance(p.name, str)]
+        pattern = re.compile(re.escape(head.lstrip("~/")) + r"(\d+)" + re.escape(tail) + "$")
+        return sorted({n for n in written if pattern.match(n)})
+    marker = "__index__"
+    resolved = launched.resolve(head + marker + tail)
+    pattern = re.compile(re.escape(resolved).replace(marker, r"(\d+)") + "$")
+    return [
+        head + match.group(1) + tail
+        for name in params.names()
+        if (match := pattern.match(name)) is not None
+    ]
+
+
+def _ros2_lookup(
+    space: ConditionSpace, node: NodeDecl
+) -> Callable[[str, Default | None], Choice[object]]:
+    """A ROS 2 node's own parameters as its launch description gives them: the values
+    written for it (the last that holds wins), else the default; a parameter file may set
+    any of them (not read here: a value not known)."""
+
+    def lookup(name: str, default: Default | None) -> Choice[object]:
+        branches: list[tuple[BDD, object]] = []
+        remaining = space.true
+        for parameter in reversed(node.parameters):
+            if parameter.file is not None:
+                value: object = Unknown(f"a parameter file ({parameter.file}) may set it")
+            elif parameter.name == name.lstrip("~/"):
+                raw = parameter.value
+                value = raw if isinstance(raw, str) else Unknown(f"its value is {raw}")
+            else:
+                continue
+            taken = remaining & parameter.condition
+            if taken != space.false:
+                branches.append((taken, value))
+            remaining &= ~parameter.condition
+        if remaining != space.false:
+            branches.append((remaining, param_default(default)))
+        return Choice.of(branches, space.false)
+
+    return lookup
 
 
 def entry_when(
@@ -318,13 +457,20 @@ def restrict(edges: Iterable[Edge], holds: Callable[[BDD], bool]) -> list[Edge]:
 
 
 def resolved_graph(
-    nodes: Sequence[ResolvedNode], interfaces: Interfaces, params: Mapping[str, object]
+    nodes: Sequence[ResolvedNode],
+    interfaces: Interfaces,
+    params: Mapping[str, object],
+    more: Iterable[Edge] = (),
 ) -> ResolvedGraph:
     """The topics, services and actions of one configuration's nodes (``rosvar resolve``'s);
     a hinted entry's where its ``when:`` holds with the node's args and the parameter server
     (``params``). A ROS 2 node's parameters are its own: there a ``when:`` is not known, and
-    the entry is kept as the variational graph keeps it."""
-    uses: list[tuple[str, Role, str, str | None]] = []
+    the entry is kept as the variational graph keeps it. ``more``: edges of the configuration
+    beyond the nodes' interfaces (a spawned description's plugins, bridges:
+    :class:`Described`'s)."""
+    uses: list[tuple[str, Role, str, str | None]] = [
+        (edge.node, edge.role, edge.name, edge.type) for edge in more if edge.static
+    ]
     for node in nodes:
         launched = LaunchedNode.resolved(node)
         unit = launched.unit()
@@ -342,11 +488,51 @@ def resolved_graph(
                 value = _param_value(params, launched, interface)
                 if not concrete_holds(entry.when, node.scope, value):
                     continue
-            resolved = launched.resolve(entry.beside or entry.name)
-            name = table.get(resolved, resolved)
-            name = name if entry.beside is None else _beside(name)
-            uses.append((launched.full_name, entry.role, name, entry.type))
+            for use in _resolved_uses(node, launched, interface, entry, params):
+                resolved = launched.resolve(use.beside or use.name)
+                name = table.get(resolved, resolved)
+                name = name if use.beside is None else _beside(name)
+                uses.append((launched.full_name, use.role, name, use.type))
     return uses_graph(uses)
+
+
+def _resolved_uses(
+    node: ResolvedNode,
+    launched: LaunchedNode,
+    interface: NodeInterface,
+    entry: Entry,
+    params: Mapping[str, object],
+) -> list[Entry]:
+    """:func:`entry_uses` in one configuration: ROS 1's parameter server (``params``), or
+    a ROS 2 node's own parameters."""
+    named = entry.named_by
+    if named is None:
+        return [entry]
+    if node.parameters is not None:  # ROS 2: the node's own parameters, by their plain names
+        values: Mapping[str, object] = node.parameters
+        key: Callable[[str], str] = lambda parameter: parameter.lstrip("~/")  # noqa: E731
+    else:
+        values, key = params, launched.resolve
+    head, _, tail = named.parameter.partition(INDEX)
+    if named.indexed:
+        marker = "__index__"
+        pattern = re.compile(re.escape(key(head + marker + tail)).replace(marker, r"\d+") + "$")
+        chosen = [values[n] for n in sorted(values) if pattern.match(n)]
+    else:
+        resolved = launched.resolve(named.parameter)
+        default = entry.default
+        if default is None:
+            default = _defaults(launched, interface).get(resolved)
+        written = key(named.parameter)
+        chosen = [values[written] if written in values else param_default(default)]
+    found = []
+    for value in chosen:
+        if isinstance(value, str) and value:
+            name = Text(value).within(Text(named.namespace)).value
+            found.append(replace(entry, name=name, static=True, named_by=None))
+        elif not named.indexed:
+            found.append(entry)
+    return found
 
 
 def _param_value(

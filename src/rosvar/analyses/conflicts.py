@@ -6,6 +6,11 @@ files (quadratic), every declaration is put in a bucket keyed by its name; only
 declarations sharing a bucket are compared. A ``$(anon)`` name never clashes with another
 file's: roslaunch draws its random part anew for each file of a command line (each top-level
 file gets a fresh substitution context), so only a file's includes share it.
+
+The paper's model takes each file's own declarations (Algorithm 1's GETELEMENTS); the
+configuration engine's, what each file loads when it is on a command line
+(``declared_occurrences``' ``launched``): two launched files that include one file load its
+nodes twice, and roslaunch refuses them ("multiple nodes named").
 """
 
 from __future__ import annotations
@@ -76,13 +81,23 @@ def _clashes(node: NodeDecl) -> bool:
     return not node.is_test and not node.ros2
 
 
-def declared_occurrences(model: LaunchModel) -> Iterable[Occurrence]:
-    """Nodes and params written in ``model.file`` itself (Algorithm 1's GETELEMENTS)."""
+def declared_occurrences(model: LaunchModel, launched: BDD | None = None) -> Iterable[Occurrence]:
+    """Nodes and params written in ``model.file`` itself (Algorithm 1's GETELEMENTS).
+
+    With ``launched`` (when the file is launched: in the product and not included by another
+    file of it), the nodes are every node its model loads, wherever written, each under
+    ``launched``: a file included by two launched files is loaded by each."""
     own = _WrittenIn(model.file)
     anon = anon_pattern(model.anon_ids)
     found: list[Occurrence] = []
     for node in model.nodes:
-        if _clashes(node) and own(node.location.file):
+        if not _clashes(node):
+            continue
+        if launched is not None:
+            found.extend(
+                replace(o, condition=launched & o.condition) for o in node_occurrences(model, node)
+            )
+        elif own(node.location.file):
             found.extend(node_occurrences(model, node))
     for param in model.params:
         if not isinstance(param, ParamDecl) or not own(param.location.file):
@@ -138,24 +153,43 @@ def repeated_inclusions(model: LaunchModel) -> list[Clash]:
     return found
 
 
-def index(models: Iterable[LaunchModel]) -> dict[tuple[str, str], list[Occurrence]]:
-    """Every file's own declarations, by kind and resolved name."""
+def index(
+    models: Iterable[LaunchModel], launched: Mapping[str, BDD] | None = None
+) -> dict[tuple[str, str], list[Occurrence]]:
+    """Every file's own declarations, by kind and resolved name (with ``launched``, file →
+    when it is launched: the nodes each file loads, ``declared_occurrences``)."""
     buckets: dict[tuple[str, str], list[Occurrence]] = defaultdict(list)
     for model in models:
-        for occurrence in declared_occurrences(model):
+        when = None if launched is None else launched[model.file]
+        for occurrence in declared_occurrences(model, when):
             buckets[(occurrence.kind, occurrence.name)].append(occurrence)
     return buckets
 
 
+def internal_clashes(buckets: Mapping[tuple[str, str], Sequence[Occurrence]]) -> list[Clash]:
+    """``clashes`` of two node declarations one file loads (the file alone fails)."""
+    found: list[Clash] = []
+    for (kind, name), occurrences in buckets.items():
+        if kind != DeclarationKind.NODE or len(occurrences) < 2:
+            continue
+        by_file: dict[str, list[Occurrence]] = defaultdict(list)
+        for occurrence in occurrences:
+            by_file[occurrence.file].append(occurrence)
+        for mine in by_file.values():
+            found.extend(c for c in clashes({(kind, name): mine}) if c.files[0] == c.files[1])
+    return found
+
+
 def clashes(buckets: Mapping[tuple[str, str], Sequence[Occurrence]]) -> list[Clash]:
-    """Every pair of distinct declarations sharing a bucket and possibly present together."""
+    """Every pair of distinct declarations sharing a bucket and possibly present together (one
+    declaration loaded by two files is two)."""
     found: list[Clash] = []
     for (_, name), occurrences in buckets.items():
         if len(occurrences) < 2:
             continue
         for i, first in enumerate(occurrences):
             for second in occurrences[i + 1 :]:
-                if first.location == second.location:
+                if first.location == second.location and first.file == second.file:
                     continue
                 if (first.anonymous or second.anonymous) and first.file != second.file:
                     continue

@@ -14,11 +14,12 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import dataclass
 
-from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
+from rosvar.analyses.feature_model.features import ConstraintKind
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import load_launch_file
 from rosvar.interpreter.workspace_models import Analysis
-from rosvar.logic.conditions import SlotAtom
+from rosvar.logic.atoms import SlotAtom
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput
 
 TRUE_LITERALS = ("true", "1")

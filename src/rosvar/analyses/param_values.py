@@ -94,6 +94,11 @@ class ParamValues:
             if isinstance(name, str) and condition != self.space.false:
                 found.append(_Setting(condition, _canonical(name), value))
 
+    def names(self) -> list[str]:
+        """The names the launched files set statically (canonical, global)."""
+        self._settings()
+        return sorted(self._by_name)
+
     def values(self, name: str, default: Default | None) -> Choice[object]:
         """The values of the resolved ``name``: the last setting that holds wins, else the
         node's ``default`` (else :data:`UNSET`)."""

@@ -12,14 +12,17 @@ import os
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 
-from rosvar.analyses.feature_model.model import (
+from rosvar.analyses.feature_model.features import (
     ArgFeature,
     FeatureKind,
-    FeatureModel,
     FileFeature,
     ValueFeature,
 )
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.choices import ChoiceError
+
+NEAREST = 3
+"""Ids an unknown feature id is answered with, at most."""
 
 
 @dataclass(frozen=True)
@@ -117,9 +120,35 @@ class Catalog:
             if not sep2:
                 break
             file, rest = f"{file}:{head}", tail
-        near = difflib.get_close_matches(text, self.features, n=3, cutoff=0.6)
+        near = self._nearest(text)
         hint = f"; did you mean {' or '.join(repr(n) for n in near)}?" if near else ""
         raise ChoiceError(f"no feature {text!r}{hint}")
+
+    def _nearest(self, text: str) -> list[str]:
+        """Up to ``NEAREST`` ids near ``text``. People name a file by its name alone
+        (``control.launch``), or misspell it: its files are those of that name, else of that
+        name without its suffix (``control.xml``), else of a close name; with what ``text``
+        says after the file (``:ARG=VALUE``), or the features of the file closest to it.
+        Else ids close to ``text`` as a whole."""
+        file, sep, rest = text.partition(":")
+        name = os.path.basename(file)
+        names = {entry.id: os.path.basename(entry.id) for entry in self.files}
+        found = [i for i, n in names.items() if n == name]
+        if not found:
+            stem = name.split(".")[0]
+            found = [i for i, n in names.items() if n.split(".")[0] == stem]
+        if not found:
+            close = set(difflib.get_close_matches(name, set(names.values()), n=NEAREST))
+            found = [i for i, n in names.items() if n in close]
+        spelled: list[str] = []
+        for file_id in found:
+            whole = f"{file_id}{sep}{rest}"
+            if whole in self.features:
+                spelled.append(whole)
+                continue
+            own = [k for k in self.features if k.startswith(f"{file_id}:")]  # its args, values
+            spelled += difflib.get_close_matches(whole, own, NEAREST, 0.6) or [file_id]
+        return spelled[:NEAREST] or difflib.get_close_matches(text, self.features, NEAREST, 0.6)
 
     def values_of(self, arg_id: str) -> list[tuple[Feature, ValueFeature]]:
         return self.args[arg_id][1]

@@ -20,10 +20,11 @@ from enum import StrEnum
 from itertools import count
 
 from rosvar.analyses.conflicts import Clash, DeclarationKind
-from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
+from rosvar.analyses.feature_model.features import ConstraintKind, name_of
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.derivation import Decisions
+from rosvar.configuration.judgement import Typed
 from rosvar.configuration.lowering import Lowering
-from rosvar.configuration.presence import Typed
 from rosvar.logic.bdd import BDD, and_exists, conjoin, walked_support
 
 REQUIRES_LIMIT = 100_000
@@ -109,7 +110,7 @@ class Conflicts:
             pair = (solver.var(a.variable), solver.var(b.variable))
             both = pair[0] & pair[1]
             # the bounds are ``fixed`` copied with atoms quantified: no other variables
-            support = space.support(fixed) | {file.var for file in pair}
+            support = space.support(fixed) | {name_of(a.variable), name_of(b.variable)}
             touched = tuple(sorted({block_of[v] for v in support & members[component_of[a.id]]}))
             if touched not in withins:
                 withins[touched] = (
@@ -177,11 +178,12 @@ class Conflicts:
         return found
 
     def _bounds(self, pair: Clashing, typed: Typed) -> tuple[BDD, BDD]:
-        """The pair's ``possible`` and ``escapes``, decided by the texts typed for its files'
-        ``<other>`` values (a text that cannot clash rules the clash out)."""
+        """The pair's ``possible`` and ``escapes``, decided by the texts typed for ``<other>``
+        values (a text that cannot clash rules the clash out): its files' args, and those of
+        the files that include them (whether a file is launched reads its includers')."""
         if not pair.open:
             return pair.possible, pair.escapes
-        texts = {i: t for path in pair.paths for i, t in typed.get(path, {}).items()}
+        texts = {i: t for mine in typed.values() for i, t in mine.items()}
         if not texts:
             return pair.possible, pair.escapes
         bounds = self.lowering.decide(pair.condition, texts)
@@ -239,7 +241,10 @@ class Conflicts:
         if not self._meets(escapes, pair, cube):
             return ConflictState(pair.files, pair.names, Certainty.CERTAIN, None)
         decided = decisions.decided
+        # when both files are in: the clash is about them (a file's condition to be launched,
+        # not included by another file, stays)
         literals = {v: decided[v] for v in pair.variables if v in decided}
+        literals.update(dict.fromkeys(pair.file_variables, True))
         return ConflictState(
             pair.files, pair.names, Certainty.POSSIBLE, describe(pair.condition, literals)
         )

@@ -33,10 +33,11 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, replace
-from enum import StrEnum
 
-from rosvar.analyses.feature_model.model import FeatureModel, FileFeature, name_of
+from rosvar.analyses.feature_model.features import FileFeature, name_of
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.lowering import Bounds
+from rosvar.configuration.presence import Presence, PresenceVerdict
 from rosvar.configuration.sat import Sat
 from rosvar.logic.bdd import BDD, children_first, cofactor, cofactors, evaluate, walked_support
 from rosvar.memo import Memo
@@ -47,14 +48,6 @@ CACHED_REPAIRS = 4096  # repaired witnesses by witness and literals, dropped all
 MUTATED = 4  # the latest candidates a missing example is first sought from (``_mutated``)
 EXAMPLES = 64
 """Configurations found for presence judgements, kept to judge other conditions too."""
-
-
-class Presence(StrEnum):
-    """Whether a condition holds in every valid configuration left, in none, or in some."""
-
-    PRESENT = "present"
-    ABSENT = "absent"
-    UNDETERMINED = "undetermined"
 
 
 @dataclass(frozen=True)
@@ -81,23 +74,6 @@ class Decisions:
         when it agrees with the user literals."""
         mask, bits = self.fixed[component]
         return witness & mask == bits
-
-
-@dataclass(frozen=True)
-class PresenceVerdict:
-    """Presence of a condition at one step, and what it depended on.
-
-    ``values`` are the decided variables of its support. When restriction by them was not
-    enough, ``components`` are those whose literals the judgement read; an undetermined
-    one keeps ``witnesses`` (a valid configuration without it, one that may have it):
-    it stays undetermined while both agree with the user literals, or their repairs
-    (``repaired``) still show it so.
-    """
-
-    presence: Presence
-    values: Mapping[str, bool]
-    components: frozenset[int] = frozenset()
-    witnesses: tuple[int, int] | None = None
 
 
 class Derivation:
@@ -573,6 +549,7 @@ class Derivation:
         false, position = self.manager.false, self.position
         best: dict[BDD, tuple[int, int, int] | None] = {self.manager.true: (0, 0, 0), false: None}
         for node in children_first(goal, cofactors, best):
+            assert node.var is not None  # the constants are in ``best`` already
             bit = 1 << position[node.var]
             has = bool(witness & bit)
             found = None

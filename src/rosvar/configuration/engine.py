@@ -14,17 +14,20 @@ from dataclasses import dataclass, field, replace
 from enum import StrEnum
 from functools import cached_property
 
-from rosvar.analyses.feature_model.model import FeatureKind, FeatureModel
-from rosvar.analyses.feature_model.operations import explain
+from rosvar.analyses.feature_model.features import FeatureKind
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.catalog import Catalog, Feature
 from rosvar.configuration.choices import Action, ChoiceError, Refusal, UserChoice
 from rosvar.configuration.command import Launch, command_line, group
-from rosvar.configuration.conflicts import Conflicts, ConflictState
-from rosvar.configuration.derivation import Decisions, Derivation, Presence
-from rosvar.configuration.graph import Render, VariationalGraph
+from rosvar.configuration.conflicts import Certainty, Conflicts, ConflictState
+from rosvar.configuration.derivation import Decisions, Derivation
+from rosvar.configuration.graph import Fields, Render, VariationalGraph
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
+from rosvar.configuration.presence import Presence
+from rosvar.configuration.sat import Sat
 from rosvar.configuration.view import Graph, Summary, Views
+from rosvar.diagnostics import Diagnostic, leaves_unknown
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
 from rosvar.logic.inputs import OTHER, UNSET
 from rosvar.workspace.interfaces.model import Interfaces
@@ -77,6 +80,8 @@ class ConfigurationState:
     features: dict[str, FeatureState]
     conflicts: list[ConflictState]
     grapher: Callable[[], Graph] = field(repr=False)  # judged and rendered on first use
+    outliner: Callable[[], Graph] = field(repr=False)  # the same without conditions
+    describer: Callable[[Iterable[str]], dict[str, Fields]] = field(repr=False)
     summarizer: Callable[[], Summary] = field(repr=False)  # judged on first use
     complete: bool
     command: str | None
@@ -84,6 +89,9 @@ class ConfigurationState:
     unselected: int
     commands: list[list[Launch]] = field(default_factory=list)  # files sharing a command line
     untyped: list[str] = field(default_factory=list)  # args at <other> still without a text
+    unknown: list[Diagnostic] = field(default_factory=list)
+    """What rosvar could not read of the selected files (``diagnostics.leaves_unknown``):
+    the product's graph may lack what they load there."""
 
     @cached_property
     def graph(self) -> Graph:
@@ -91,9 +99,31 @@ class ConfigurationState:
         return self.grapher()
 
     @cached_property
+    def outline(self) -> Graph:
+        """The graph's elements with their presence, their conditions not described (None):
+        what is summarised needs no condition, and describing is most of rendering."""
+        return self.outliner()
+
+    def described(self, ids: Iterable[str]) -> dict[str, Fields]:
+        """The graph entries ``ids`` as ``graph`` has them, conditions described."""
+        return self.describer(ids)
+
+    @cached_property
     def summary(self) -> Summary:
         """The graph in numbers, judged on first use without describing conditions."""
         return self.summarizer()
+
+    @cached_property
+    def launches(self) -> bool | None:
+        """Whether the product's command loads: False when roslaunch would stop (an error
+        present) or refuse two nodes of one name (a certain conflict); None while there is
+        no command (incomplete, or an ``<other>`` value without its text) or while rosvar
+        could not read all of the product (``unknown``)."""
+        if not self.complete or self.command is None:
+            return None
+        if self.summary.errors or any(c.status == Certainty.CERTAIN for c in self.conflicts):
+            return False
+        return None if self.unknown else True
 
     @cached_property
     def configurations(self) -> int:
@@ -228,6 +258,11 @@ class Configurator:
             for feature in self.catalog
         }
         self._rows = {f.id: (f.id, f.variable, self._feature_states[f.id]) for f in self.catalog}
+        self._explaining: dict[int, tuple[Sat, list[int]]] = {}  # by component, made on need
+        self._unread = {  # launch file id → what of its model rosvar could not read
+            entry.id: [d for d in analysis.model(entry.path).diagnostics if leaves_unknown(d)]
+            for entry in self.catalog.files
+        }
         self._rows_of: dict[str, list[_Row]] = {}
         for row in self._rows.values():
             self._rows_of.setdefault(row[1], []).append(row)
@@ -283,6 +318,14 @@ class Configurator:
         if after is None:
             reason = self._reason(kept, entry)
             return replace(replay, refused=(*replay.refused, Refusal(choice, reason)))
+        if entry.arg is not None:  # a typed text: refused where every product left fails by it
+            stops = self.views.stops(after, _texts([*kept, entry]), entry.arg)
+            if stops:
+                because = "; ".join(
+                    f"{f.error.location}: {f.error.message} [{f.error.code}]" for f in stops
+                )
+                reason = f"{_show(choice)} is impossible: roslaunch would stop at {because}"
+                return replace(replay, refused=(*replay.refused, Refusal(choice, reason)))
         return _Replay(accepted, replay.refused, (*kept, entry), after)
 
     def completion(self, choices: Sequence[UserChoice]) -> list[UserChoice]:
@@ -354,7 +397,6 @@ class Configurator:
 
     def _reason(self, earlier: Sequence[_Effective], entry: _Effective) -> str:
         """The earlier choices and the constraints that together rule ``entry`` out."""
-        manager = self.derivation.manager
         component = self.derivation.component_of[entry.variable]
         kept = [e for e in earlier if self.derivation.component_of[e.variable] == component]
         position = 0
@@ -364,15 +406,25 @@ class Configurator:
                 position += 1
             else:
                 kept = trial
-        cube = manager.true
-        for e in [*kept, entry]:
-            atom = manager.var(e.variable)
-            cube &= atom if e.value else ~atom
-        because = explain(self.model, cube)
+        because = self._because(component, [*kept, entry])
         text = f"{_show(entry.choice)} is impossible"
         if kept:
             text += " after " + ", ".join(_show(e.choice) for e in kept)
         return f"{text}: {'; '.join(because)}"
+
+    def _because(self, component: int, literals: Sequence[_Effective]) -> list[str]:
+        """The cross-tree constraints that rule ``literals`` (of ``component``) out: a
+        minimal set, found by SAT within bounded work, or an honest "not explained"."""
+        found = self._explaining.get(component)
+        if found is None:
+            found = self._explaining[component] = Sat.explaining(self.model, component)
+        sat, numbers = found
+        core = sat.core([sat.atom(e.variable, e.value) for e in literals])
+        if core is None:
+            return ["not explained (finding the constraints why took too long)"]
+        return [self.model.constraints[numbers[i]].text for i in core] or [
+            "the feature tree itself"
+        ]
 
     # -- the answer ---------------------------------------------------------------------
     def _answer(self, replay: _Replay) -> ConfigurationState:
@@ -394,6 +446,8 @@ class Configurator:
             features=features,
             conflicts=self.conflicts.shown(view.conflicts, decisions),
             grapher=lambda: self.views.rendering(view).graph,
+            outliner=lambda: self.views.outline(view).graph,
+            describer=lambda ids: self.views.described(view, ids),
             summarizer=lambda: self.views.summary(view),
             complete=complete,
             command=command,
@@ -403,6 +457,14 @@ class Configurator:
             untyped=[
                 arg for arg, variable in self._others if decided.get(variable) and arg not in texts
             ],
+            unknown=list(
+                dict.fromkeys(
+                    diagnostic
+                    for entry in self.catalog.files
+                    if features[entry.id].state == Selection.SELECTED
+                    for diagnostic in self._unread[entry.id]
+                )
+            ),
         )
 
     def _features(

@@ -25,7 +25,8 @@ from rosvar.analyses.communication import (
     entry_when,
     find_interface,
 )
-from rosvar.analyses.feature_model.model import ConstraintKind, FeatureModel
+from rosvar.analyses.feature_model.features import launched_conditions
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.param_values import ParamValues
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
@@ -38,12 +39,20 @@ from rosvar.interpreter.model import (
     Raw,
     YamlDecl,
 )
+from rosvar.interpreter.resolution import ResolutionError, evaluated
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
+from rosvar.ros1.resolve import (
+    check_remap,
+    deferred_value,
+    rosparam_pairs,
+    test_fields,
+    typed_node,
+)
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
 Fields = dict[str, object]
@@ -71,6 +80,12 @@ class Values:
             return evaluate(raw, self.concrete, self.host)
         except (TermError, LookupError, ValueError):
             return str(raw)
+
+    def strict(self, raw: Raw | None, location: Location, what: str) -> str | None:
+        """The string of ``raw``, or :class:`ResolutionError` where roslaunch has none."""
+        if raw is None or isinstance(raw, str):
+            return raw
+        return evaluated(raw, self.concrete, self.host, location, what)
 
 
 class PartKind(StrEnum):
@@ -125,6 +140,33 @@ class NodeContent:
     parameters: list[Setting]
     node: NodeDecl
 
+    def failures(self, values: Values) -> list[Failure]:
+        """Where a ROS 1 node variant's strings make roslaunch stop, as ``rosvar resolve``
+        loads it: its fields, and each remap and environment setting (in its part, if any)."""
+        if self.node.ros2:
+            return []
+        where = self.node.location
+        found: list[Failure] = []
+        if values.knows(self.raw.values()):
+            try:
+                text = {k: values.strict(v, where, f"<node> {k}") for k, v in self.raw.items()}
+                typed_node(text, where)
+                if self.node.is_test:
+                    test_fields(text, where)
+            except ResolutionError as error:
+                found.append(Failure.of(None, error))
+        settings = [*((r, "remap") for r in self.remaps), *((e, "env") for e in self.env)]
+        for (first, second, part), label in settings:
+            if not values.knows((first, second)):
+                continue
+            try:
+                pair = (values.strict(first, where, label), values.strict(second, where, label))
+                if label == "remap":
+                    check_remap(*pair, where)
+            except ResolutionError as error:
+                found.append(Failure.of(part, error))
+        return found
+
 
 @dataclass(frozen=True, slots=True)
 class ParamContent:
@@ -135,6 +177,33 @@ class ParamContent:
     location: Location
     confinement: Confinement  # the files its conversion may read
 
+    @property
+    def raw(self) -> object:
+        """Its value's string, or the term of it."""
+        return self.value.raw if isinstance(self.value, DeferredValue) else self.value
+
+    def loaded(self, values: Values) -> object:
+        """The value roslaunch loads with ``values`` (the same conversion as ``rosvar
+        resolve``'s), or :class:`ResolutionError` where it stops (or a string is unknown)."""
+        value, where = self.value, self.location
+        what = f"param {values.text(cast(Raw, self.name))}"
+        if isinstance(value, DeferredValue):
+            text = values.strict(value.raw, where, what) or ""
+            return deferred_value(value, text, where, self.confinement)
+        if is_term(value):
+            return values.strict(cast(Raw, value), where, what)
+        return value
+
+    def failures(self, values: Values) -> list[Failure]:
+        if not values.knows([cast(Raw, self.name), cast(Raw, self.raw)]):
+            return []
+        try:
+            values.strict(cast(Raw, self.name), self.location, "param name")
+            self.loaded(values)
+        except ResolutionError as error:
+            return [Failure.of(None, error)]
+        return []
+
 
 @dataclass(frozen=True, slots=True)
 class YamlContent:
@@ -142,6 +211,30 @@ class YamlContent:
 
     param: YamlDecl
     confinement: Confinement
+
+    @property
+    def raws(self) -> tuple[Raw | None, ...]:
+        param = self.param
+        return (param.scope_ns, param.command, param.ns, param.file, param.param, param.text)
+
+    def pairs(self, values: Values) -> list[tuple[str, object]]:
+        """The params roslaunch sets with ``values`` (``rosvar resolve``'s load), or
+        :class:`ResolutionError` where it stops (or a string is unknown)."""
+        where = self.param.location
+        scope_ns, command, ns, file, name, body = (
+            values.strict(raw, where, "<rosparam>") for raw in self.raws
+        )
+        texts = (str(scope_ns), str(command), ns, file, name, body or "")
+        return rosparam_pairs(self.param, texts, self.confinement)
+
+    def failures(self, values: Values) -> list[Failure]:
+        if not values.knows(self.raws):
+            return []
+        try:
+            self.pairs(values)
+        except ResolutionError as error:
+            return [Failure.of(None, error)]
+        return []
 
 
 @dataclass(frozen=True, slots=True)
@@ -178,6 +271,21 @@ class ErrorContent:
     location: Location
 
 
+@dataclass(frozen=True, slots=True)
+class Failure:
+    """Where the strings typed for ``<other>`` values make roslaunch stop loading an element:
+    in one of its parts (its index), or in the element itself (``part`` None). A record,
+    not the exception: one kept would hold the frames it was raised in, and the diagrams
+    they reach."""
+
+    part: int | None
+    error: ErrorContent
+
+    @classmethod
+    def of(cls, part: int | None, error: ResolutionError) -> Failure:
+        return cls(part, ErrorContent(error.code, error.message, error.location))
+
+
 Content = (
     NodeContent
     | ParamContent
@@ -188,6 +296,14 @@ Content = (
     | ErrorContent
 )
 """What an element shows, in raw values and conditions; presentation renders it."""
+
+
+def failures(content: Content, values: Values) -> list[Failure]:
+    """Where ``content`` fails to load with ``values`` (every string it reads known, else
+    not yet): the contents roslaunch converts or checks say so; the others cannot fail."""
+    if isinstance(content, NodeContent | ParamContent | YamlContent):
+        return content.failures(values)
+    return []
 
 
 class Render(Protocol):
@@ -232,7 +348,7 @@ class VariationalGraph:
         self.space = analysis.space
         self.confinement = analysis.workspace.confinement()
         self.elements: list[Element] = []
-        self.launched: dict[str, BDD] = _launched(model)
+        self.launched: dict[str, BDD] = launched_conditions(model.files, model.requires)
         self.interfaces = interfaces
         self._topics: dict[tuple[str, str], _Topic] = {}
         self._shadows: dict[BDD, BDD] = {}
@@ -525,8 +641,8 @@ class VariationalGraph:
                 continue
             used = condition
             if entry.when is not None:
-                when = entry_when(self.params, node, launched, interface, entry.when)
-                used &= self.lowering.fix(when.condition)
+                hinted = entry_when(self.params, node, launched, interface, entry.when)
+                used &= self.lowering.fix(hinted.condition)
             for when, resolved in entry_names(launched, remaps, entry, used):
                 fixed, bounds = self.lowering.lower(when)
                 if "{" in resolved or not self.lowering.satisfiable(fixed):
@@ -548,18 +664,6 @@ class VariationalGraph:
                     self._served[channel, resolved] = (nodes, used | fixed)
                 if element.id not in nodes:
                     nodes.append(element.id)
-
-
-def _launched(model: FeatureModel) -> dict[str, BDD]:
-    """File → "selected and not included by a selected file that includes it there"."""
-    by_id = {f.id: f for f in model.files}
-    launched = {f.file: f.variable for f in model.files}
-    for constraint in model.constraints:
-        if constraint.kind != ConstraintKind.REQUIRES:
-            continue
-        source, target = (by_id[i] for i in constraint.files)
-        launched[target.file] &= ~(source.variable & constraint.condition)
-    return launched
 
 
 _Topic = tuple[list[str], BDD, tuple[Raw | None, Raw | None, Raw]]

@@ -17,8 +17,9 @@ from dataclasses import dataclass
 
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.logic.atoms import Atom, PredicateAtom, SlotAtom
 from rosvar.logic.bdd import BDD, transfer
-from rosvar.logic.conditions import Atom, PredicateAtom, SlotAtom, decide_predicate
+from rosvar.logic.conditions import decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import PackageTable, term_inputs
 from rosvar.memo import Memo

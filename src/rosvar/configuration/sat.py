@@ -15,6 +15,12 @@ components' formulas) becomes one clause per path of its BDD to FALSE. A goal (a
 bound) gets a *switch*: a fresh variable that implies it by the same clauses, assumed when
 the goal is asked for. A diagram with too many paths is translated by Tseitin's encoding
 instead: one variable per node, equivalent to it.
+
+A solver that explains refusals holds each cross-tree constraint behind a *selector* (a
+fresh variable that switches it on): the constraints that rule some literals out are then
+an unsatisfiable core of the selectors, made minimal by dropping them one at a time, each
+question within a budget of conflicts, so that an explanation costs bounded work however
+the constraints interlock (their BDD conjunctions took minutes on Husky).
 """
 
 from __future__ import annotations
@@ -43,6 +49,9 @@ PATHS = 256
 
 GROWTH = 2
 """Switches per feature variable after which the solver starts afresh."""
+EXPLANATION_CONFLICTS = 20_000
+"""Conflicts a question of an explanation may take (``Sat.core``): the corpus's take at
+most a few hundred; past it the explanation stops, the same on every machine."""
 
 Clause = list[int]
 
@@ -57,13 +66,22 @@ class Sat:
     about every file, so one solver for all would make its construction quadratic.
     """
 
-    def __init__(self, manager: Manager, variables: Sequence[str], offset: int, parts: list[BDD]):
+    def __init__(
+        self,
+        manager: Manager,
+        variables: Sequence[str],
+        offset: int,
+        parts: list[BDD],
+        guarded: Sequence[BDD] = (),
+    ):
+        """``guarded``: parts held behind a selector each, for ``core``."""
         self.manager = manager
         self._atoms = {variable: i + 1 for i, variable in enumerate(variables)}
         self._width = len(variables)
         self._offset = offset
         self._true = self._width + 1  # a variable every model sets: TRUE
         self._parts = parts
+        self._guarded = list(guarded)
         self._start()
 
     @classmethod
@@ -79,23 +97,36 @@ class Sat:
     def per_component(cls, model: FeatureModel) -> list[Sat]:
         """One solver per component, with the constraints and tree parts of its files
         (components are contiguous in the solver's order and share no variable)."""
-        solver = model.solver
-        component_of = solver.component_of
-        parts: list[list[BDD]] = [[] for _ in solver.components]
-        for constraint in solver.constraints:
-            support = walked_support(constraint)
-            for n in {component_of[v] for v in support} if support else range(len(parts)):
-                parts[n].append(constraint)  # a constant (FALSE) constraint goes to all
-        for file in model.files:
-            trees = solver.arg_trees(file)
-            variables = file.variable_names()
-            if variables:
-                parts[component_of[variables[0]]].extend(trees)
-        position = {v: i for i, v in enumerate(solver.variables)}
+        constraints = _constraints_by_component(model)
         return [
-            cls(solver.manager, c.variables, position[c.variables[0]] if c.variables else 0, mine)
-            for c, mine in zip(solver.components, parts, strict=True)
+            cls._of(model, n, [model.solver.constraints[c] for c in mine], ())
+            for n, mine in enumerate(constraints)
         ]
+
+    @classmethod
+    def explaining(cls, model: FeatureModel, component: int) -> tuple[Sat, list[int]]:
+        """A solver for the component whose constraints are guarded (``core``), and the
+        numbers of those constraints (in ``FeatureModel.constraints``), in its order."""
+        numbers = _constraints_by_component(model)[component]
+        guarded = [model.solver.constraints[n] for n in numbers]
+        return cls._of(model, component, [], guarded), numbers
+
+    @classmethod
+    def _of(
+        cls, model: FeatureModel, component: int, parts: list[BDD], guarded: Sequence[BDD]
+    ) -> Sat:
+        """The solver of ``component``: its files' tree parts, ``parts`` and ``guarded``."""
+        solver = model.solver
+        mine = solver.components[component]
+        trees = [
+            tree
+            for file in model.files
+            if (variables := file.variable_names())
+            and solver.component_of[variables[0]] == component
+            for tree in solver.arg_trees(file)
+        ]
+        offset = solver.variables.index(mine.variables[0]) if mine.variables else 0
+        return cls(solver.manager, mine.variables, offset, [*parts, *trees], guarded)
 
     def _start(self) -> None:
         """A fresh solver with the model's clauses: also once switches made too many
@@ -109,6 +140,7 @@ class Sat:
             if clauses is None:
                 clauses = [[self._literal(part)]]
             self._sat.append_formula(clauses)
+        self._selectors = [self._goal(part) for part in self._guarded]  # assumed: part on
         self._base = self._top
 
     def atom(self, variable: str, value: bool) -> int:
@@ -167,6 +199,7 @@ class Sat:
         """Clauses for every node under ``root`` not translated yet, children first."""
         nodes, clauses = self._nodes, []
         for node in children_first(root, _inner_children, nodes):
+            assert node.var is not None  # an inner node
             n, x = self._variable(), self._atoms[node.var]
             nodes[node] = n
             low, high = (self._literal(child) for child in cofactors(node))  # a regular node
@@ -179,6 +212,35 @@ class Sat:
                 [-n, high, low],
             ]
         self._sat.append_formula(clauses)
+
+    def core(self, atoms: Sequence[int]) -> list[int] | None:
+        """A minimal set of the guarded parts (their indices) that, with the other parts, no
+        configuration with the literals of ``atoms`` satisfies; None when a question ran
+        out of its budget (``EXPLANATION_CONFLICTS``) first, or some configuration does."""
+        on = {selector: index for index, selector in enumerate(self._selectors)}
+        kept = list(on)
+        answer = self._limited([*atoms, *kept])
+        if answer is not False:
+            return None
+        core = set(self._sat.get_core() or ())
+        kept = [literal for literal in kept if literal in core]
+        position = 0
+        while position < len(kept):  # deletion: drop each part the others do without
+            trial = kept[:position] + kept[position + 1 :]
+            answer = self._limited([*atoms, *trial])
+            if answer is None:
+                return None
+            if answer:
+                position += 1
+            else:
+                kept = trial
+        return sorted(on[literal] for literal in kept)
+
+    def _limited(self, assumptions: Sequence[int]) -> bool | None:
+        """``satisfiable`` within ``EXPLANATION_CONFLICTS`` conflicts (None: not known)."""
+        self._sat.conf_budget(EXPLANATION_CONFLICTS)
+        found = self._sat.solve_limited(assumptions=assumptions)
+        return None if found is None else bool(found)
 
     def satisfiable(self, assumptions: Sequence[int]) -> bool:
         """Some valid configuration satisfies every literal of ``assumptions``."""
@@ -229,3 +291,16 @@ def _false_paths(v: BDD, false: BDD, counts: dict[BDD, int]) -> int:
 
 def _inner_children(node: BDD) -> list[BDD]:
     return [regular(c) for c in cofactors(node) if c.var is not None]
+
+
+def _constraints_by_component(model: FeatureModel) -> list[list[int]]:
+    """The numbers of the cross-tree constraints (``Solver.constraints``) of each component
+    (a constant FALSE constraint goes to all)."""
+    solver = model.solver
+    component_of = solver.component_of
+    found: list[list[int]] = [[] for _ in solver.components]
+    for number, constraint in enumerate(solver.constraints):
+        support = walked_support(constraint)
+        for n in {component_of[v] for v in support} if support else range(len(found)):
+            found[n].append(number)
+    return found

@@ -15,20 +15,23 @@ from itertools import accumulate, chain
 
 from rosvar.configuration.catalog import Catalog, FileEntry
 from rosvar.configuration.conflicts import Conflicts, ConflictState
-from rosvar.configuration.derivation import Decisions, Derivation, Presence
+from rosvar.configuration.derivation import Decisions, Derivation
 from rosvar.configuration.graph import (
     NAMED,
     Element,
     ElementKind,
+    Failure,
     Fields,
     Render,
     Shown,
     Values,
     VariationalGraph,
+    failures,
 )
+from rosvar.configuration.judgement import Judged, Judgement, Presences, Typed
 from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
-from rosvar.configuration.presence import Judged, Judgement, Presences, Typed
+from rosvar.configuration.presence import Presence
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
@@ -71,13 +74,18 @@ class Graph:
     errors: list[Fields] = field(default_factory=list)
 
 
+Failures = Mapping[int, tuple[Failure, ...]]
+"""Element index → where the strings typed for its file's args make roslaunch stop in it."""
+
+
 @dataclass(frozen=True)
 class Rendering:
     """The graph entries a view's presences show, kept to render longer lists'."""
 
     entries: list[list[Fields]]  # per element of the graph
     starts: list[int]  # per element: where its entries start in its kind's list
-    graph: Graph
+    lists: dict[str, list[Fields]]  # per kind: its elements' entries
+    graph: Graph  # the lists, and the failures of typed texts among the errors
 
 
 class View:
@@ -87,7 +95,9 @@ class View:
     first asked for (``Views.judgement``), and their entries, which describe the conditions
     of undetermined ones, when the graph is (``Views.rendering``): a server is ready
     without judging every element of a large workspace up front, and ``configure``
-    prints its summary without describing them."""
+    prints its summary without describing them. The web page's overview reads the entries
+    without their conditions (``Views.outline``) and has the few it lists described
+    (``Views.described``): describing is most of rendering a large workspace's entries."""
 
     def __init__(
         self,
@@ -95,15 +105,18 @@ class View:
         texts: Mapping[str, str],
         typed: Typed,
         conflicts: list[ConflictState | None],
+        failures: Failures,
         before: View | None,
     ) -> None:
         self.decisions = decisions
         self.texts = texts  # arg id → its <other> text
         self.typed = typed
+        self.failures = failures
         self.conflicts = conflicts  # per pair of ``Conflicts``; None: gone
         self.before = before  # until rendered: the view it is judged and rendered from
         self.presences: Judgement | None = None  # set by ``Views.judgement``
         self.rendering: Rendering | None = None  # set by ``Views.rendering``
+        self.outline: Rendering | None = None  # set by ``Views.outline``
 
 
 @dataclass(frozen=True)
@@ -185,7 +198,9 @@ class Views:
                     for feature, _value in catalog.values_of(arg_id):
                         self._reading.setdefault(feature.variable, []).append(index)
                     self._reading.setdefault(arg_id, []).append(index)
-        index_of = {element.id: index for index, element in enumerate(graph.elements)}
+        self._index_of = index_of = {
+            element.id: index for index, element in enumerate(graph.elements)
+        }
         self._users: dict[int, list[int]] = {}  # topic → its nodes, node → its topics
         for index, element in enumerate(graph.elements):
             for node in element.nodes:
@@ -196,6 +211,7 @@ class Views:
             renderings
         )
         self._entries: Memo[_Entry, list[Fields]] = Memo(renderings)
+        self._failure_entries: Memo[tuple[str, int, Failure, Shown], Fields] = Memo(renderings)
         self._symbolic = Values(lowering.concrete, lowering.host)  # no arg's string known
         self.initial = self._derive(derivation.initial, {}, None)
         self._views: PrefixCache[tuple[str, bool, str | None], View] = PrefixCache(
@@ -235,7 +251,92 @@ class Views:
             conflicts = self.conflicts.judge(
                 decisions, typed, self.describe, (before.decisions, before.typed, before.conflicts)
             )
-        return View(decisions, texts, typed, conflicts, before)
+        failures = self.failures(decisions, texts, before)
+        return View(decisions, texts, typed, conflicts, failures, before)
+
+    def failures(
+        self, decisions: Decisions, texts: Mapping[str, str], before: View | None = None
+    ) -> Failures:
+        """The elements whose strings make roslaunch stop: only a text typed for an
+        ``<other>`` value can (the model's own values were checked as it was interpreted,
+        each failure an error of the model under its condition). From ``before``, only the
+        elements reading an arg whose text or decided value changed are checked again."""
+        if before is None:
+            return self._check(decisions, texts, set(texts))
+        if not texts and not before.failures:
+            return before.failures
+        reach = {
+            a for a in texts.keys() | before.texts.keys() if texts.get(a) != before.texts.get(a)
+        }
+        if texts:
+            changed = decisions.decided.items() ^ before.decisions.decided.items()
+            reach.update(variable for variable, _value in changed)
+        return self._check(decisions, texts, reach, before.failures)
+
+    def stops(self, decisions: Decisions, texts: Mapping[str, str], arg: str) -> list[Failure]:
+        """The failures the text typed for ``arg`` brings into every product ``decisions``
+        leave (each present there)."""
+        typed = self._typed(texts)
+        return [
+            failure
+            for index, failed in self._check(decisions, texts, {arg}).items()
+            for failure in failed
+            if self.presences.presence(self._condition_of(index, failure), decisions, typed)
+            == Presence.PRESENT
+        ]
+
+    def _check(
+        self,
+        decisions: Decisions,
+        texts: Mapping[str, str],
+        reach: Iterable[str],
+        before: Failures | None = None,
+    ) -> Failures:
+        """``before`` with the elements reading an arg or value variable of ``reach`` checked
+        again under ``texts`` (the elements of a file with no text typed fail nowhere)."""
+        again = {index for key in reach for index in self._reading.get(key, ())}
+        if not again and before is not None:
+            return before
+        found = dict(before or {})
+        typed = self._typed(texts)
+        values: dict[str, Values] = {}
+        for index in again:
+            found.pop(index, None)
+            element = self.graph.elements[index]
+            mine = typed.get(element.entry)
+            if not mine or element.inputs.isdisjoint(mine):
+                continue
+            given = values.get(element.entry)
+            if given is None:
+                given = values[element.entry] = self._values(element.entry, decisions, texts)
+            failed = failures(element.content, given)
+            if failed:
+                found[index] = tuple(failed)
+        return found
+
+    def failure_entries(self, view: View, presences: Judgement) -> list[Fields]:
+        """The errors of ``view``'s failing elements that are not absent, each with the
+        presence of its element (or of the part it is in)."""
+        shown: list[Fields] = []
+        for index, failed in sorted(view.failures.items()):
+            element = self.graph.elements[index]
+            for number, failure in enumerate(failed):
+                condition = self._condition_of(index, failure)
+                where = presences.verdicts[condition].shown
+                if where[0] == Presence.ABSENT:
+                    continue
+                key = (element.id, number, failure, where)
+                entry = self._failure_entries.get(key)
+                if entry is None:
+                    [shown_error] = self.render(failure.error, self._symbolic, ())
+                    entry = self._failure_entries[key] = {
+                        **shown_error,
+                        "presence": where[0],
+                        "condition": where[1],
+                        "id": f"{element.id}!{number}",
+                    }
+                shown.append(entry)
+        return shown
 
     def judgement(self, view: View) -> Judgement:
         """``view``'s presences, judged on first use with those of the earlier views it is
@@ -267,10 +368,47 @@ class Views:
             pending.append(later)
             later = later.before
         for later in reversed(pending):
-            later.rendering = self._rendering_of(later, later.before)
+            later.rendering = self._rendering_of(later, later.before, described=True)
             later.before = None
         assert view.rendering is not None
         return view.rendering
+
+    def outline(self, view: View) -> Rendering:
+        """``view``'s entries without their conditions (``condition`` None: not described),
+        from the earlier views' entries as ``rendering`` makes them (described or not). The
+        views it is derived from are kept (``rendering`` may still be asked for), at most
+        ``MIN_VIEWS`` of them."""
+        pending = []
+        later: View | None = view
+        while later is not None and later.outline is None and later.rendering is None:
+            pending.append(later)
+            later = later.before
+        for later in reversed(pending):
+            later.outline = self._rendering_of(later, later.before, described=False)
+        cut: View | None = view
+        for _ in range(MIN_VIEWS):
+            cut = None if cut is None else cut.before
+        if cut is not None:
+            cut.before = None
+        found = view.outline or view.rendering
+        assert found is not None
+        return found
+
+    def described(self, view: View, ids: Iterable[str]) -> dict[str, Fields]:
+        """The entries ``ids`` of ``view`` as ``rendering`` makes them (conditions described),
+        made for those alone."""
+        presences = self.judgement(view)
+        outline = self.outline(view)
+        values: dict[str, Values] = {}
+        found: dict[str, Fields] = {}
+        for id_ in ids:
+            index, number = self._index_of.get(id_), "0"
+            if index is None:  # a variant after the first: ELEMENT/NUMBER
+                element_id, _, number = id_.rpartition("/")
+                index = self._index_of[element_id]
+            entries = self._entries_of(index, presences, outline.entries, values, view, True)
+            found[id_] = entries[int(number)]
+        return found
 
     def summary(self, view: View) -> Summary:
         """How many entries of each kind ``view`` shows with each presence (a part's
@@ -286,7 +424,7 @@ class Views:
                 continue
             given = self._given(element, presence, values, view.decisions, view.texts)
             if presence == Presence.PRESENT and element.kind == ElementKind.ERROR:
-                shown = self._element_entries(element, judged, (), given, ())  # none described
+                shown = self._element_entries(element, judged.shown, (), given, ())
                 errors.extend(shown)
             else:
                 parts = self.presences.of_parts[index]
@@ -296,7 +434,19 @@ class Views:
                     [(verdicts[c].verdict.presence, None) for c in parts],
                 )
             counts[element.kind][presence] += len(shown)
+        for index, failed in view.failures.items():
+            for failure in failed:
+                condition = self._condition_of(index, failure)
+                if verdicts[condition].verdict.presence == Presence.PRESENT:
+                    errors.extend(self.render(failure.error, self._symbolic, ()))
         return Summary(counts, errors)
+
+    def _condition_of(self, index: int, failure: Failure) -> int:
+        """The condition (of ``presences``) under which a failure of element ``index`` is
+        met: its element's, or its part's."""
+        if failure.part is None:
+            return self.presences.of_element[index]
+        return self.presences.of_parts[index][failure.part]
 
     def _given(
         self,
@@ -315,40 +465,62 @@ class Views:
             found = values[element.entry] = self._values(element.entry, decisions, texts)
         return found
 
-    def _rendering_of(self, view: View, before: View | None) -> Rendering:
-        """``view``'s entries, from those of ``before`` (rendered) if any."""
-        decisions, texts = view.decisions, view.texts
+    def _rendering_of(self, view: View, before: View | None, described: bool) -> Rendering:
+        """``view``'s entries, from those of ``before`` (rendered, or outlined when not
+        ``described``) if any; ``described``: with their conditions."""
         presences = self.judgement(view)
-        if before is None:
-            earlier = None
+        earlier = None
+        if before is not None:
+            earlier = before.rendering if described else before.outline or before.rendering
+        if earlier is None:
             entries: list[list[Fields]] = [[] for _ in self.graph.elements]
             again: Iterable[int] = range(len(self.graph.elements))
         else:
-            earlier = before.rendering
-            assert earlier is not None and before.presences is not None
+            assert before is not None and before.presences is not None
             entries = list(earlier.entries)
-            again = self._rerendered(decisions, texts, before, before.presences, presences)
+            again = self._rerendered(
+                view.decisions, view.texts, before, before.presences, presences, described
+            )
         values: dict[str, Values] = {}
         moved: dict[ElementKind, list[int]] = {}  # per kind: the elements rendered anew
         for index in again:  # in graph order: a topic comes after its nodes
-            element = self.graph.elements[index]
-            judged = presences.verdicts[self.presences.of_element[index]]
-            parts = tuple(presences.verdicts[c].shown for c in self.presences.of_parts[index])
-            users = tuple(
-                self.graph.elements[n].id
-                for n in self._users.get(index, ())
-                if entries[n] and entries[n][0]["presence"] != Presence.ABSENT
-            )
-            given = self._given(element, judged.verdict.presence, values, decisions, texts)
-            found = self._element_entries(
-                element, judged, parts, given, users if element.kind in _USED else ()
-            )
+            found = self._entries_of(index, presences, entries, values, view, described)
             if found is not entries[index]:
-                moved.setdefault(element.kind, []).append(index)
+                moved.setdefault(self.graph.elements[index].kind, []).append(index)
             entries[index] = found
         lists, starts = self._lists(entries, earlier, moved)
-        graph = Graph(**{f"{kind}s": listed for kind, listed in lists.items()})
-        return Rendering(entries, starts, graph)
+        shown = {f"{kind}s": listed for kind, listed in lists.items()}
+        failing = self.failure_entries(view, presences)
+        if failing:
+            shown["errors"] = [*shown.get("errors", []), *failing]
+        return Rendering(entries, starts, lists, Graph(**shown))
+
+    def _entries_of(
+        self,
+        index: int,
+        presences: Judgement,
+        entries: list[list[Fields]],
+        values: dict[str, Values],
+        view: View,
+        described: bool,
+    ) -> list[Fields]:
+        """The entries of element ``index`` under ``presences`` (``entries``: those of the
+        elements before it, for a topic's nodes), described or not."""
+        element = self.graph.elements[index]
+        judged = presences.verdicts[self.presences.of_element[index]]
+        parts = tuple(
+            _shown(presences.verdicts[c], described) for c in self.presences.of_parts[index]
+        )
+        users = tuple(
+            self.graph.elements[n].id
+            for n in self._users.get(index, ())
+            if entries[n] and entries[n][0]["presence"] != Presence.ABSENT
+        )
+        presence = judged.verdict.presence
+        given = self._given(element, presence, values, view.decisions, view.texts)
+        return self._element_entries(
+            element, _shown(judged, described), parts, given, users if element.kind in _USED else ()
+        )
 
     def _lists(
         self,
@@ -364,7 +536,7 @@ class Views:
         starts = [0] * len(entries) if before is None else before.starts
         for kind, indices in self._of_kind.items():
             if before is not None:
-                earlier = getattr(before.graph, f"{kind}s")
+                earlier = before.lists[kind]
                 changed = moved.get(kind, ())
                 if all(len(entries[i]) == len(before.entries[i]) for i in changed):
                     listed = list(earlier) if changed else earlier
@@ -388,13 +560,15 @@ class Views:
         before: View,
         earlier: Judgement,
         presences: Judgement,
+        described: bool,
     ) -> list[int]:
-        """Elements whose verdict or read strings differ from ``before`` (and the topics of
-        nodes among them, whose lists of nodes may change), in graph order."""
+        """Elements whose verdict (its description too when ``described``) or read strings
+        differ from ``before`` (and the topics of nodes among them, whose lists of nodes may
+        change), in graph order."""
         again: set[int] = set()
         for condition in presences.judged:
             judged, was = presences.verdicts[condition], earlier.verdicts[condition]
-            if judged is not was and judged.shown != was.shown:
+            if judged is not was and _shown(judged, described) != _shown(was, described):
                 again.update(self._elements_of[condition])
         changed = decisions.decided.items() ^ before.decisions.decided.items()
         for variable, _value in changed:
@@ -428,7 +602,7 @@ class Views:
     def _element_entries(
         self,
         element: Element,
-        judged: Judged,
+        shown: Shown,
         parts: tuple[Shown, ...],
         given: Values | None,
         users: tuple[str, ...],
@@ -440,14 +614,14 @@ class Views:
         Made once per verdict and strings its terms read: the same entries serve every
         state that shows them (a session's later clicks, and other sessions, meet them
         again)."""
-        presence, condition = judged.shown
+        presence, condition = shown
         if presence == Presence.ABSENT and element.kind == ElementKind.ERROR:
             return []
         strings = frozenset((i, given.concrete.get(i)) for i in element.inputs) if given else None
         key = (element.id, presence, condition, strings, parts, users)
         entries = self._entries.get(key)
         if entries is None:
-            shown = self._fields(element, given, strings, parts)
+            variants = self._fields(element, given, strings, parts)
             extra: Fields = {"nodes": list(users)} if element.kind in _USED else {}
             entries = self._entries[key] = [
                 {
@@ -457,7 +631,7 @@ class Views:
                     "condition": condition,
                     "id": element.id if number == 0 else f"{element.id}/{number}",
                 }
-                for number, fields in enumerate(shown)
+                for number, fields in enumerate(variants)
             ]
         return entries
 
@@ -477,3 +651,8 @@ class Views:
             found = self.render(element.content, given or self._symbolic, parts)
             self._rendered[key] = found
         return found
+
+
+def _shown(judged: Judged, described: bool) -> Shown:
+    """What entries show of a verdict: its presence, and its condition when ``described``."""
+    return judged.shown if described else (judged.verdict.presence, None)

@@ -26,8 +26,8 @@ class Entity:
     children: list[Entity] = field(default_factory=list)
     text: str = ""
     typed: frozenset[str] = frozenset()
-    """Attributes written as typed values in YAML or Python, not as strings
-    (:mod:`rosvar.ros2.frontends.typed_text`); XML has none."""
+    """Attributes written as typed values in YAML or Python, not as strings (their frontends
+    write them as canonical text); XML has none."""
 
     def get(self, name: str) -> str | None:
         return self.attributes.get(name)

@@ -18,9 +18,10 @@ from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.lifted import apply, lift
 from rosvar.interpreter.model import Decision, ErrorEvent, Guard, LaunchModel, Raw
+from rosvar.logic.atoms import register_predicate
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
-from rosvar.logic.conditions import ConditionSpace, register_predicate
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
 from rosvar.logic.terms import Hole
 from rosvar.workspace import Workspace
@@ -115,7 +116,9 @@ class Interpretation(Generic[S]):
         # nodes after their manager, which CUDD reports as an error.
         self.substituter = substituter(self)
         inputs: dict[str, ArgInput] = {}
-        self.model = LaunchModel(file=file, space=space, inputs=inputs, domains={})
+        self.model = LaunchModel(
+            file=file, space=space, inputs=inputs, domains={}, loads=space.true
+        )
         self.default_machine: Choice[Raw | None] = Choice.const(space, None)
         self.anon_count: Choice[int] = Choice.const(space, 0)
         self.stack: list[str] = []
@@ -168,7 +171,7 @@ class Interpretation(Generic[S]):
                 branches.append((atom, slot))
         return Choice.of(branches)
 
-    def new_anon(self, scope: S, anon_id: str) -> Choice[Raw]:
+    def new_anon(self, anon_id: str) -> Choice[Raw]:
         pc = self.pc
         current = self.anon_count
         # roslaunch's anonymous_name() screens '.', '-' and ':' out of names; the

@@ -114,6 +114,7 @@ class NodeField:
             return fields[self.keys[0]]
         if not self.keys:  # a constant (:func:`constant_field`), in the fields' space
             false = next(iter(fields.values())).false
+            assert false is not None  # a field is a choice of its space
             return Choice.of([(~false, self.compute(()))], false)
         return combine([fields[key] for key in self.keys], self.compute)
 
@@ -337,7 +338,8 @@ class LaunchModel:
     where nothing set them yet, so the command line can (name -> the declaring file)."""
     anon_ids: set[str] = field(default_factory=set)  # bases of the $(anon) names generated
     anon_count: Choice[int] | None = None  # how many, per configuration
-    loads: BDD = None  # configurations in which roslaunch loads the file without error
+    loads: BDD = field(kw_only=True)
+    """The configurations in which the file loads without error (the walk's ``finish``)."""
 
 
 def anon_pattern(bases: Collection[str]) -> re.Pattern[str] | None:

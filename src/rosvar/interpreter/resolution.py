@@ -18,6 +18,7 @@ from typing import Protocol
 
 from rosvar.diagnostics import Diagnostic, Location
 from rosvar.interpreter.model import LaunchModel, Raw, anon_pattern
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import EnvInput, Input
@@ -178,16 +179,13 @@ class Restriction:
                 lambda m: f"{m.group(1)}_anon{int(m.group(2)) + offset}", text
             )
 
-    def holds(self, condition: object) -> bool:
+    def holds(self, condition: BDD) -> bool:
         return self.space.evaluate(condition, self.assignment)
 
     def evaluate(self, value: Raw, location: Location, what: str) -> str:
         """A term's string under this configuration (the launch tool's failure if it has
         none)."""
-        try:
-            return evaluate(value, self.concrete, self.host)
-        except (TermError, LookupError, ValueError) as error:
-            raise ResolutionError("value-unknown", f"{what}: {error}", location) from None
+        return evaluated(value, self.concrete, self.host, location, what)
 
     def pick(self, choice: Choice[object], location: Location, what: str) -> object:
         for condition, leaf in choice:
@@ -203,3 +201,14 @@ class Restriction:
         value = self.pick(choice, location, what)
         assert value is None or isinstance(value, str)
         return value
+
+
+def evaluated(
+    value: Raw, concrete: Mapping[Input, str], host: object, location: Location, what: str
+) -> str:
+    """A term's string with the inputs' ``concrete`` strings (the launch tool's failure if it
+    has none: an unknown package, a file not read)."""
+    try:
+        return evaluate(value, concrete, host)
+    except (TermError, LookupError, ValueError) as error:
+        raise ResolutionError("value-unknown", f"{what}: {error}", location) from None

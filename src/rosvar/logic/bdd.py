@@ -20,12 +20,87 @@ import sys
 from collections.abc import Callable, Collection, Container, Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from functools import cache
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, Protocol, cast
 
 import dd.cudd as _cudd
 
-BDD = Any  # dd.cudd.Function: dd ships no type information
-Manager = Any  # dd.cudd.BDD
+
+class BDD(Protocol):
+    """A diagram of ``dd.cudd`` (``dd.cudd.Function``) as rosvar uses it: ``dd`` ships no
+    type information, and without one every condition would go unchecked."""
+
+    @property
+    def var(self) -> str | None:
+        """The top variable (None at a constant)."""
+
+    @property
+    def low(self) -> BDD:
+        """The low child of the regular node."""
+
+    @property
+    def high(self) -> BDD:
+        """The high child of the regular node."""
+
+    @property
+    def negated(self) -> bool:
+        """Whether the edge to the node is complemented."""
+
+    @property
+    def level(self) -> int: ...
+
+    @property
+    def bdd(self) -> Manager:
+        """The manager the diagram lives in."""
+
+    @property
+    def dag_size(self) -> int: ...
+
+    def __and__(self, other: BDD, /) -> BDD: ...
+
+    def __or__(self, other: BDD, /) -> BDD: ...
+
+    def __invert__(self) -> BDD: ...
+
+    def __eq__(self, other: object, /) -> bool: ...
+
+    def __hash__(self) -> int: ...
+
+    def __int__(self) -> int:
+        """The address of the node in CUDD's memory (``read`` walks it)."""
+
+
+class Manager(Protocol):
+    """A ``dd.cudd`` manager (``dd.cudd.BDD``) as rosvar uses it."""
+
+    @property
+    def true(self) -> BDD: ...
+
+    @property
+    def false(self) -> BDD: ...
+
+    @property
+    def vars(self) -> Collection[str]:
+        """The declared variables."""
+
+    def var(self, name: str, /) -> BDD: ...
+
+    def declare(self, *names: str) -> None: ...
+
+    def insert_var(self, name: str, level: int, /) -> None: ...
+
+    def level_of_var(self, name: str, /) -> int: ...
+
+    def var_at_level(self, level: int, /) -> str: ...
+
+    def ite(self, g: BDD, u: BDD, v: BDD, /) -> BDD: ...
+
+    def cube(self, values: Mapping[str, bool], /) -> BDD: ...
+
+    def support(self, u: BDD, /) -> set[str]: ...
+
+    def configure(self, **settings: object) -> dict[str, Any]: ...
+
+
 Weight = tuple[int, int]  # (weight of false, weight of true)
 
 
@@ -37,9 +112,15 @@ def new_manager(memory: int, cache_limit: int, initial_cache: int | None = None)
     its formulas, and reordering would cost more than it saves, quadratically in the
     variables.
     """
-    manager = _cudd.BDD(memory, initial_cache)
+    manager: Manager = _cudd.BDD(memory, initial_cache)
     manager.configure(reordering=False, max_cache_hard=cache_limit)
     return manager
+
+
+def _names(manager: Manager) -> dict[int, str]:
+    """The variables' names by CUDD index: ``dd`` keeps them in a private table."""
+    names: dict[int, str] = cast(Any, manager)._var_with_index
+    return names
 
 
 class OutOfMemory(Exception):
@@ -68,13 +149,15 @@ def memory_bound(manager: Manager, budget: int) -> Iterator[None]:
 def restrict(u: BDD, care: BDD) -> BDD:
     """A function agreeing with ``u`` wherever ``care`` holds, usually smaller (CUDD's
     restrict, Coudert and Madre's generalised cofactor)."""
-    return _cudd.restrict(u, care)
+    restricted: BDD = _cudd.restrict(u, care)
+    return restricted
 
 
 def and_exists(u: BDD, v: BDD, variables: Collection[str]) -> BDD:
     """``∃ variables. u ∧ v`` without building the conjunction (CUDD's and-abstract): it
     stops at the first path to TRUE, so asking whether it is FALSE is cheap."""
-    return _cudd.and_exists(u, v, variables)
+    found: BDD = _cudd.and_exists(u, v, variables)
+    return found
 
 
 def cofactors(u: BDD) -> tuple[BDD, BDD]:
@@ -108,7 +191,8 @@ def cofactor(u: BDD, values: Mapping[str, bool]) -> BDD:
     for name, value in values.items():
         atom = manager.var(name)
         cube &= atom if value else ~atom
-    return _cudd.restrict(u, cube)
+    cofactored: BDD = _cudd.restrict(u, cube)
+    return cofactored
 
 
 def evaluate(u: BDD, value: Callable[[str], bool]) -> bool:
@@ -162,7 +246,7 @@ def walked_support(u: BDD) -> set[str]:
         stack.append(words[at + 3] & ~1)
     if len(seen) > 1 and not _LAYOUT_CHECKED:
         _check_layout(manager, ((int(u) - 2) & ~1) >> 3, words)
-    name_of = manager._var_with_index
+    name_of = _names(manager)
     return {name_of[index] for index in indices}
 
 
@@ -206,7 +290,7 @@ def layout(u: BDD) -> Layout:
     for at in found:
         low = words[at + 3]
         lows.append(2 * places[low & ~1] + (low & 1))
-    name_of = manager._var_with_index
+    name_of = _names(manager)
     names = [name_of[words[at] & 0xFFFFFFFF] for at in found]
     level_of = manager.level_of_var
     return Layout(
@@ -224,7 +308,7 @@ _LAYOUT_CHECKED = False  # once one node passed: the layout is CUDD's, the same 
 def _check_layout(manager: Manager, at: int, words: memoryview) -> None:
     """Check the layout ``layout`` reads on one of its nodes (``_indices`` explains it)."""
     global _LAYOUT_CHECKED
-    name = manager._var_with_index[words[at] & 0xFFFFFFFF]
+    name = _names(manager)[words[at] & 0xFFFFFFFF]
     true = int(manager.true) - 2
     node = (int(manager.var(name)) - 2) >> 3
     if (words[node] & 0xFFFFFFFF, words[node + 2], words[node + 3]) != (
@@ -264,6 +348,7 @@ def transfer(
     for function in children_first(u, cofactors, copies):
         low, high = cofactors(function)
         name = function.var
+        assert name is not None  # the constants are copied already
         copies[function] = (
             copies[high] | copies[low]
             if name in hidden

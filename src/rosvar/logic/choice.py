@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
-from typing import Any, Generic, TypeVar
+from typing import Any, Generic, TypeVar, cast
 
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
@@ -51,13 +51,14 @@ class Choice(Generic[T]):
 
     __slots__ = ("branches", "false")
 
-    def __init__(self, branches: tuple[tuple[BDD, T], ...], false: BDD) -> None:
-        """Branches already merged and possible; ``Choice.of`` makes any branches so."""
+    def __init__(self, branches: tuple[tuple[BDD, T], ...], false: BDD | None) -> None:
+        """Branches already merged and possible; ``Choice.of`` makes any branches so.
+        ``false``: the manager's false, None only for the empty combination of no choices."""
         self.branches = branches
         self.false = false
 
     @staticmethod
-    def of(branches: Iterable[tuple[BDD, U]], false: BDD = None) -> Choice[U]:
+    def of(branches: Iterable[tuple[BDD, U]], false: BDD | None = None) -> Choice[U]:
         """Equal leaves merged, impossible branches dropped; ``false`` (the manager's false)
         is needed only when ``branches`` may be empty."""
         if isinstance(branches, list) and len(branches) == 1:  # the common constant case
@@ -71,7 +72,7 @@ class Choice(Generic[T]):
         return Choice(tuple(branch for branch in merged if branch[0] != false), false)
 
     @staticmethod
-    def _of_possible(branches: list[tuple[BDD, U]], false: BDD) -> Choice[U]:
+    def _of_possible(branches: list[tuple[BDD, U]], false: BDD | None) -> Choice[U]:
         """The constructor for branches whose conditions are known not to be false (taken
         from a choice, or just checked): equal leaves merged, nothing compared again."""
         return Choice(_merged(branches) if len(branches) > 1 else tuple(branches), false)
@@ -189,7 +190,7 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
     if not choices:
         return Choice((), None)
     false = choices[0].false
-    joint = None  # conjunction of the single branches' conditions; None stands for true
+    joint: BDD | None = None  # conjunction of the single branches' conditions; None: true
     varying: list[int] = []
     leaves: list[Any] = []  # the varying operands' places are filled per combination below
     for index, choice in enumerate(choices):
@@ -204,13 +205,14 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
             joint = condition
         elif condition is not joint:  # constants share the space's true: nothing to do
             joint = joint & condition
-    if not varying:
+    if not varying:  # every operand a single branch: ``joint`` conjoins them all
+        assert joint is not None
         return Choice.of([(joint, function(leaves))], false)
     if joint is not None and joint.var is None and joint != false:  # true: nothing to conjoin
         joint = None
-    partial: list[tuple[BDD, list[V]]] = [(joint, leaves)]
+    partial: list[tuple[BDD | None, list[V]]] = [(joint, leaves)]
     for index in varying:
-        nxt: list[tuple[BDD, list[V]]] = []
+        nxt: list[tuple[BDD | None, list[V]]] = []
         for c1, vs in partial:
             for c2, v in choices[index].branches:
                 both = c2 if c1 is None else c1 & c2
@@ -219,4 +221,5 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
                     chosen[index] = v
                     nxt.append((both, chosen))
         partial = nxt
-    return Choice._of_possible([(c, function(vs)) for c, vs in partial], false)
+    conjoined = cast("list[tuple[BDD, list[V]]]", partial)  # each with a varying one's branch
+    return Choice._of_possible([(c, function(vs)) for c, vs in conjoined], false)

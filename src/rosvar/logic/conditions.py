@@ -9,18 +9,16 @@ t" (decided only when a configuration makes t concrete). Everything that asks
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, cast
+from collections.abc import Iterable, Mapping, Sequence
+from typing import Any
 
-from rosvar.logic.bdd import BDD, cofactor, evaluate, new_manager, walked_support
+from rosvar.logic.atoms import PREDICATES, Atom, FileAtom, PredicateAtom, SlotAtom
+from rosvar.logic.bdd import BDD, Manager, cofactor, evaluate, new_manager, walked_support
 from rosvar.logic.inputs import OTHER, UNSET, Input, Slot
+from rosvar.logic.printer import Printer
 from rosvar.logic.terms import Term, term_inputs
 from rosvar.logic.terms import evaluate as evaluate_term
 from rosvar.memo import Memo
-
-if TYPE_CHECKING:
-    from rosvar.logic.printer import Printer
 
 CACHE_ENTRIES = 1 << 16
 """Size of CUDD's computed table, fixed. CUDD's larger default start is slow to set up, and
@@ -47,41 +45,7 @@ def memory_estimate(files: int) -> int:
     return min(MAX_MEMORY, max(MIN_MEMORY, files * MEMORY_PER_FILE))
 
 
-@dataclass(frozen=True)
-class SlotAtom:
-    """Input ``input`` holds ``slot``."""
-
-    input: Input
-    slot: Slot
-
-
-@dataclass(frozen=True)
-class PredicateAtom:
-    """``test(term)`` holds; ``test`` names an entry of :data:`PREDICATES`."""
-
-    test: str
-    term: Term
-
-
-@dataclass(frozen=True)
-class FileAtom:
-    """Launch file ``file`` is part of the product (a feature of the feature model)."""
-
-    file: str
-    label: str
-
-
-Atom = SlotAtom | PredicateAtom | FileAtom
-Predicate = Callable[[str], bool]
-PREDICATES: dict[str, tuple[Predicate, str]] = {}
-
-
-def register_predicate(name: str, test: Predicate, display: str) -> None:
-    """Register a predicate over strings; ``display`` is a format with ``{}`` for the term."""
-    PREDICATES[name] = (test, display)
-
-
-def exactly_one(manager: Any, variables: Sequence[BDD]) -> BDD:
+def exactly_one(manager: Manager, variables: Sequence[BDD]) -> BDD:
     """Exactly one of ``variables`` holds (an xor-group), in ``manager``.
 
     Built in one pass (none so far / exactly one so far), not as the disjunction of one
@@ -212,7 +176,7 @@ class ConditionSpace:
         BDD that is large next to the number of variables.
         """
         if u.dag_size * SUPPORT_WALK_FACTOR > len(self._atoms):
-            return cast(set[str], self.bdd.support(u))
+            return self.bdd.support(u)
         return walked_support(u)
 
     def constrain(self, constraint: BDD) -> None:
@@ -356,8 +320,6 @@ class ConditionSpace:
         text = self._described.get(key)
         if text is None:
             if self._printer is None:
-                from rosvar.logic.printer import Printer  # it reads the space: not at the top
-
                 self._printer = Printer(self)
             text = self._described[key] = self._printer.describe(condition, qualify, known_only)
         return text

@@ -11,10 +11,10 @@ from __future__ import annotations
 import weakref
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import NamedTuple, cast
+from typing import NamedTuple, Protocol, cast
 
+from rosvar.logic.atoms import PREDICATES, Atom, FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.bdd import BDD, cofactors, layout, restrict
-from rosvar.logic.conditions import PREDICATES, ConditionSpace, FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.inputs import OTHER, ArgInput, EnvInput, Input, Slot
 from rosvar.memo import Memo
 
@@ -27,6 +27,35 @@ AND = "∧"
 OR = " ∨ "
 
 Domains = Mapping[Input, tuple[Slot, ...]]
+
+
+class Space(Protocol):
+    """What the printer reads of a condition space (``conditions.ConditionSpace``, which
+    owns its printer): its constants, atoms, domains and facts."""
+
+    @property
+    def true(self) -> BDD: ...
+
+    @property
+    def false(self) -> BDD: ...
+
+    def atom_of(self, name: str) -> Atom: ...
+
+    def domain(self, input_: Input) -> tuple[Slot, ...]: ...
+
+    def slot(self, input_: Input, slot: Slot) -> BDD: ...
+
+    def support(self, u: BDD) -> set[str]: ...
+
+    def facts(self) -> int: ...
+
+    def facts_of(self, name: str) -> Sequence[BDD]: ...
+
+    def care_over(self, variables: Iterable[str]) -> BDD: ...
+
+    def care_key(self, variables: Iterable[str]) -> frozenset[object]: ...
+
+    def care_inputs(self, variables: Iterable[str]) -> set[Input]: ...
 
 
 class _TooComplex(Exception):
@@ -58,9 +87,9 @@ class _FactShape(NamedTuple):
 
 
 class Printer:
-    """The readable form of the conditions of one space (``ConditionSpace.describe``)."""
+    """The readable form of the conditions of one space (``conditions.ConditionSpace.describe``)."""
 
-    def __init__(self, space: ConditionSpace) -> None:
+    def __init__(self, space: Space) -> None:
         # the space owns its printer: a strong reference back would make a cycle, and the
         # cycle collector may free CUDD's manager before the diagrams in it
         self.space = weakref.proxy(space)
@@ -303,7 +332,7 @@ class Printer:
         return OR.join(f"({r})" if AND in r else r for r in sorted(rendered))
 
 
-def _inputs_of(space: ConditionSpace, variables: Iterable[str]) -> set[Input]:
+def _inputs_of(space: Space, variables: Iterable[str]) -> set[Input]:
     return {
         atom.input
         for atom in (space.atom_of(name) for name in variables)
@@ -316,7 +345,7 @@ Literals = tuple[tuple[str, bool], ...]  # a cube over the BDD's variables
 
 
 def _cover(
-    space: ConditionSpace,
+    space: Space,
     target: BDD,
     care: BDD,
     domains: Domains,
@@ -350,6 +379,7 @@ def _isop(
     if found is not None:
         return found
     name = lower.var if upper.var is None or lower.level <= upper.level else upper.var
+    assert name is not None  # neither is a constant: those returned above
     lower_0, lower_1 = _split(lower, name)
     upper_0, upper_1 = _split(upper, name)
     cover_0, cubes_0 = _isop(lower_0 & ~upper_1, upper_0, memo, budget)
@@ -373,7 +403,7 @@ def _split(u: BDD, name: str) -> tuple[BDD, BDD]:
     return cofactors(u) if u.var == name else (u, u)
 
 
-def _grouped(space: ConditionSpace, literals: Literals, domains: Domains) -> Cube:
+def _grouped(space: Space, literals: Literals, domains: Domains) -> Cube:
     """A cube of atoms as one entry per input (its possible slots), predicate and file."""
     cube: Cube = {}
     negated: dict[Input, set[Slot]] = {}
@@ -392,7 +422,7 @@ def _grouped(space: ConditionSpace, literals: Literals, domains: Domains) -> Cub
 
 
 def _render_cube(
-    space: ConditionSpace,
+    space: Space,
     cube: Cube,
     qualify: bool,
     domains: Domains,

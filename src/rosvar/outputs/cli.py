@@ -357,10 +357,13 @@ def _main(argv: Sequence[str] | None) -> int:
     except BrokenPipeError:
         return EXIT_OK
     except Exception as error:
-        from rosvar.analyses.feature_model.model import ModelTooLarge  # imported if raised
+        from rosvar.analyses.feature_model.features import ModelTooLarge  # imported if raised
 
         if not isinstance(error, ModelTooLarge):
             raise
+        from rosvar.outputs.commands.too_large import too_large_text
+
         # what needs the solver of a model listed but not solved
-        print(f"rosvar: the feature model is too large to solve: {error}", file=sys.stderr)
+        paths = getattr(options, "paths", [])
+        print(too_large_text(error, options.command, paths), file=sys.stderr)
         return EXIT_TOO_LARGE

@@ -8,9 +8,10 @@ from collections.abc import Mapping
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.domains import entry_declarations
 from rosvar.interpreter.interpretation import Interpretation
+from rosvar.interpreter.substitution_args import MISSING
 from rosvar.logic.choice import Choice
 from rosvar.ros.names import settable
-from rosvar.ros1.scope import MISSING, Scope
+from rosvar.ros1.scope import Scope
 
 
 def walk_entry(

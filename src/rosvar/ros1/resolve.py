@@ -13,7 +13,15 @@ from collections.abc import Iterator, Mapping, Sequence
 
 from rosvar.analyses.json_values import json_value
 from rosvar.diagnostics import Location
-from rosvar.interpreter.model import DeferredValue, LaunchModel, NodeDecl, ParamDecl, Raw
+from rosvar.files import Confinement
+from rosvar.interpreter.model import (
+    DeferredValue,
+    LaunchModel,
+    NodeDecl,
+    ParamDecl,
+    Raw,
+    YamlDecl,
+)
 from rosvar.interpreter.resolution import (
     Conflict,
     ConflictKind,
@@ -108,10 +116,7 @@ def _restrict(
             value = r.pick(param.value, param.location, f"param {name}")
             if isinstance(value, DeferredValue):
                 concrete = r.evaluate(value.raw, param.location, f"param {name}")
-                try:
-                    value = value.convert(value.kind, concrete, value.ptype, r.confinement)
-                except ValueError as error:
-                    raise ResolutionError("param-invalid", str(error), param.location) from None
+                value = deferred_value(value, concrete, param.location, r.confinement)
             result.params[str(name)] = json_value(value)
         else:
             parts = [
@@ -120,12 +125,9 @@ def _restrict(
             ]
             body = r.evaluate(param.text, param.location, "<rosparam> body")
             scope_ns, command, ns, file, name = parts
-            try:
-                pairs = param.load(str(command), ns, file, name, body, str(scope_ns), r.confinement)
-            except ValueError as error:
-                raise ResolutionError(
-                    "rosparam-invalid", f"error loading <rosparam> tag: {error}", param.location
-                ) from None
+            pairs = rosparam_pairs(
+                param, (str(scope_ns), str(command), ns, file, name, body), r.confinement
+            )
             for key, value in pairs:
                 result.params[key] = json_value(value)
 
@@ -160,24 +162,13 @@ def _node(r: Restriction, node: NodeDecl) -> ResolvedNode:
     its remaps one per source (the last wins)."""
     location = node.location
     raw = {k: r.raw(v, location, f"<node> {k}") for k, v in node.fields.items()}
-    try:
-        typed = node_values(raw)
-    except ValueError as error:
-        raise ResolutionError("node-invalid", str(error), location) from None
+    typed = typed_node(raw, location)
     remaps: dict[str, str] = {}
     for remap in node.remaps:
         if r.holds(remap.condition):
             source = _text(r, remap.source, location, "remap from")
             target = _text(r, remap.target, location, "remap to")
-            for label, text in (("from", source), ("to", target)):
-                if not text:
-                    raise ResolutionError(
-                        "remap-invalid", "remap from/to attributes cannot be empty", location
-                    )
-                if not names.is_legal_name(text):
-                    raise ResolutionError(
-                        "remap-invalid", f"remap {label} [{text}] is not a valid ROS name", location
-                    )
+            check_remap(source, target, location)
             remaps.pop(source, None)
             remaps[source] = target
     env = [
@@ -210,6 +201,54 @@ def _text(r: Restriction, raw: Raw, location: Location, what: str) -> str:
     text = r.raw(Choice.const(r.space, raw), location, what)
     assert text is not None  # a raw string is never absent
     return text
+
+
+def deferred_value(
+    value: DeferredValue, text: str, location: Location, confinement: Confinement
+) -> object:
+    """A ``<param>`` value whose string became ``text``, typed as roslaunch types it."""
+    try:
+        return value.convert(value.kind, text, value.ptype, confinement)
+    except ValueError as error:
+        raise ResolutionError("param-invalid", str(error), location) from None
+
+
+RosparamTexts = tuple[str, str, str | None, str | None, str | None, str]
+"""A ``<rosparam>``'s strings: its scope's namespace, command, ns, file, param and body."""
+
+
+def rosparam_pairs(
+    param: YamlDecl, texts: RosparamTexts, confinement: Confinement
+) -> list[tuple[str, object]]:
+    """The params ``param`` sets with these strings, as roslaunch loads them."""
+    scope_ns, command, ns, file, name, body = texts
+    try:
+        return param.load(command, ns, file, name, body, scope_ns, confinement)
+    except ValueError as error:
+        raise ResolutionError(
+            "rosparam-invalid", f"error loading <rosparam> tag: {error}", param.location
+        ) from None
+
+
+def typed_node(raw: dict[str, str | None], location: Location) -> dict[str, object]:
+    """A node's typed fields (``respawn``, ``required``...) as roslaunch's ``Node`` holds them."""
+    try:
+        return node_values(raw)
+    except ValueError as error:
+        raise ResolutionError("node-invalid", str(error), location) from None
+
+
+def check_remap(source: str | None, target: str | None, location: Location) -> None:
+    """roslaunch's checks of a ``<remap>``'s names."""
+    for label, text in (("from", source), ("to", target)):
+        if not text:
+            raise ResolutionError(
+                "remap-invalid", "remap from/to attributes cannot be empty", location
+            )
+        if not names.is_legal_name(text):
+            raise ResolutionError(
+                "remap-invalid", f"remap {label} [{text}] is not a valid ROS name", location
+            )
 
 
 def test_fields(raw: Mapping[str, str | None], location: Location) -> dict[str, object]:

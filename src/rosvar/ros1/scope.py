@@ -11,23 +11,12 @@ children; an include starts from the args passed to it).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Final
 
 from rosvar.diagnostics import Location
 from rosvar.interpreter.model import EnvSetting, Raw, Remap
+from rosvar.interpreter.substitution_args import ArgValue
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
-
-
-class _Missing:
-    def __repr__(self) -> str:
-        return "<undefined>"
-
-
-MISSING: Final = _Missing()
-"""Leaf of an arg or anon value in the configurations where it is not defined."""
-
-ArgValue = Choice[Raw | _Missing]
 
 
 @dataclass(slots=True)

@@ -3,7 +3,8 @@
 The text is parsed as launch's frontend grammar does (substitutions nest; arguments are
 split at whitespace, quoted with ``'``/``"``; a backslash escapes the next character),
 then every substitution is computed over all configurations with :func:`combine`.
-Handlers live in :data:`SUBSTITUTIONS`, keyed by name.
+Handlers live in :data:`HANDLERS`, keyed by name: one for each substitution of the launch
+API's registry (:mod:`rosvar.ros2.api.substitutions`) rosvar computes, and rosvar's own.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
 from rosvar.logic.choice import Choice, Fail, combine, ite
 from rosvar.logic.terms import Apply, TermError, concat, register
+from rosvar.ros2.api.substitutions import SUBSTITUTIONS
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.frontends.python.text import PATH_JOIN, UNKNOWN
 
@@ -150,14 +152,21 @@ def command_line(text: str) -> list[Template]:
 
 
 Handler = Callable[[Interpretation[Context], Context, list[Raw]], Choice[Value]]
-SUBSTITUTIONS: dict[str, Handler] = {}
+HANDLERS: dict[str, Handler] = {}
+OWN = frozenset({PATH_JOIN, UNKNOWN})
+"""rosvar's own substitutions, which the Python frontend writes (no launch API name)."""
 
 
 def substitution(name: str) -> Callable[[Handler], Handler]:
-    """Register the handler of ``$(name ...)``; it gets the arguments' texts."""
+    """Register the handler of ``$(name ...)``; it gets the arguments' texts. A name the
+    launch API's registry does not know, or a second handler, is refused."""
+    if name not in SUBSTITUTIONS.by_name and name not in OWN:
+        raise ValueError(f"$({name}) is no substitution of the launch API's registry")
+    if name in HANDLERS:
+        raise ValueError(f"$({name}) has two handlers")
 
     def register(handler: Handler) -> Handler:
-        SUBSTITUTIONS[name] = handler
+        HANDLERS[name] = handler
         return handler
 
     return register
@@ -199,7 +208,7 @@ class Ros2Substituter:
     def _part(self, part: str | Call, context: Context) -> Choice[Value]:
         if isinstance(part, str):
             return Choice.const(self.space, part)
-        handler = SUBSTITUTIONS.get(part.name)
+        handler = HANDLERS.get(part.name)
         if handler is None:
             return Choice.const(
                 self.space, Fail(f"unknown substitution '{part.name}'", "substitution-unknown")
@@ -386,7 +395,7 @@ def _anon(host: Interpretation[Context], context: Context, args: list[Raw]) -> C
     if unset != host.space.false:
         with host.under(unset) as live:
             if live:
-                fresh = optional(host.new_anon(context, args[0]))
+                fresh = optional(host.new_anon(args[0]))
                 before = old if old is not None else Choice.const(host.space, None)
                 context.configurations[key] = ite(host.space, host.pc, fresh, before)
     return context.configurations[key].map(_present)

@@ -12,16 +12,15 @@ from __future__ import annotations
 
 import io
 import os
-import re
 from functools import lru_cache
 
 from rosvar.files import read_file
+from rosvar.workspace import python_setup
 from rosvar.workspace.interfaces.cmake import TargetKind, read_build
 from rosvar.workspace.packages import Package
 
 SCRIPT_FOLDERS = ("scripts", "nodes", "bin")
 _SKIP_SUFFIXES = (".png", ".jpg", ".dae", ".stl", ".STL", ".pgm", ".em", ".in")
-_CONSOLE_SCRIPT = re.compile(r"([\w.-]+)\s*=\s*([\w.]+):\w+")
 
 
 def executables(package: Package) -> frozenset[str]:
@@ -77,10 +76,6 @@ def _cmake(path: str, project: str) -> set[str]:
 
 def console_scripts(package_dir: str) -> dict[str, str]:
     """The ``console_scripts`` entry points of setup.py and setup.cfg: name → module."""
-    found: dict[str, str] = {}
-    for setup in ("setup.py", "setup.cfg"):
-        text = _read(os.path.join(package_dir, setup))
-        if "console_scripts" in text:
-            for match in _CONSOLE_SCRIPT.finditer(text.split("console_scripts", 1)[1]):
-                found.setdefault(match.group(1), match.group(2))
-    return found
+    return python_setup.console_scripts(
+        _read(os.path.join(package_dir, "setup.py")), _read(os.path.join(package_dir, "setup.cfg"))
+    )

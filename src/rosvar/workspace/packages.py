@@ -3,7 +3,11 @@
 ``$(find pkg)`` and ``<include>`` only mean something relative to a set of packages, so
 the crawl follows rospkg's rules (a ``package.xml`` makes a directory a package and
 ends the search for packages below it; ``CATKIN_IGNORE`` and hidden directories are
-skipped) while still listing the launch files that live inside packages.
+skipped) while still listing the launch files that live inside packages. At the root of a
+catkin or colcon workspace (a ``src`` folder beside its build's outputs), the outputs
+(``build``, ``devel``, ``install``, ``log``) are skipped: their copies of the packages are
+the source's, built at some time, and a stale ``install/share`` copy replaced the one in
+``src``.
 
 A workspace is ROS 1 or ROS 2 (:mod:`rosvar.workspace.ros_version`): its packages' build
 tools decide, and with them which files are launch files (:mod:`rosvar.workspace.launch_files`).
@@ -27,6 +31,11 @@ from rosvar.workspace.ros_version import majority, package_version
 EXECUTABLES_FILE = ".executables"
 IGNORE_MARKERS = ("CATKIN_IGNORE", "rospack_nosubdirs", "COLCON_IGNORE", "AMENT_IGNORE")
 SHARE_FOLDER = "share"
+SOURCE_FOLDER = "src"
+BUILD_OUTPUTS = ("build", "devel", "install", "log")
+"""What catkin_make, catkin build and colcon write beside a workspace's ``src``."""
+WORKSPACE_MARKERS = (".catkin_workspace", ".catkin_tools", ".colcon")
+"""Files or folders that make a directory a workspace root even before a build."""
 
 
 @dataclass(frozen=True)
@@ -250,6 +259,16 @@ class _Discovery:
             if not inside and PACKAGE_FILE in filenames:
                 self.add_package(dirpath)
                 inside = True
+            if not inside and _workspace_root(dirnames, filenames):
+                outputs = sorted(set(BUILD_OUTPUTS) & set(dirnames))
+                dirnames[:] = [name for name in dirnames if name not in BUILD_OUTPUTS]
+                if outputs:
+                    self.sink.note(
+                        "workspace-outputs-skipped",
+                        f"{', '.join(f'{o}/' for o in outputs)} of this workspace skipped: "
+                        f"its packages are read from {SOURCE_FOLDER}/",
+                        Location(dirpath),
+                    )
             if inside and not list_launch:
                 dirnames.clear()  # rospkg: a package is a leaf
                 continue
@@ -301,6 +320,15 @@ class _Discovery:
             Location(os.path.join(others[0].path, PACKAGE_FILE)),
         )
         return {p.path for p in others}
+
+
+def _workspace_root(dirnames: Sequence[str], filenames: Sequence[str]) -> bool:
+    """Whether a directory is a catkin or colcon workspace's root: a ``src`` folder beside
+    a build's outputs or a workspace tool's marker."""
+    if SOURCE_FOLDER not in dirnames:
+        return False
+    present = {*dirnames, *filenames}
+    return any(name in present for name in (*BUILD_OUTPUTS, *WORKSPACE_MARKERS))
 
 
 def discover(

@@ -15,7 +15,8 @@ import pytest
 
 from rosvar.analyses.feature_model.exclusions import declaring, excluding
 from rosvar.analyses.feature_model.extraction import extract
-from rosvar.analyses.feature_model.model import ArgFeature, Constraint, FeatureModel, FileFeature
+from rosvar.analyses.feature_model.features import ArgFeature, Constraint, FileFeature
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.operations import count_configurations
 from rosvar.logic.inputs import OTHER, ArgInput
 

@@ -6,7 +6,7 @@ import random
 
 import dd.cudd
 
-from rosvar.analyses.feature_model.model import ArgFeature, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.features import ArgFeature, FileFeature, ValueFeature
 from rosvar.analyses.feature_model.ordering import order, widest_cut
 from rosvar.logic.inputs import ArgInput
 

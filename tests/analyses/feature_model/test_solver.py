@@ -13,7 +13,8 @@ from rosvar.analyses.feature_model import extraction, operations
 from rosvar.analyses.feature_model import solver as solving
 from rosvar.analyses.feature_model.counting import CountedDiagram
 from rosvar.analyses.feature_model.extraction import extract
-from rosvar.analyses.feature_model.model import FeatureModel, ModelTooLarge
+from rosvar.analyses.feature_model.features import ModelTooLarge
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.operations import (
     core_and_dead,
     count_configurations,

@@ -167,6 +167,11 @@ def test_arg_values_restrict_the_question(robot: tuple[QueryEngine, str]) -> Non
         ("nodes[", "invalid Python expression"),
         ("for n in nodes where n.name return m", "return must name"),
         ("nodes[self.name * 100000000 == 'a']", "longer than"),
+        # issue 30.5: a million references to a list of a million, built at once in C, and
+        # compared element by element for minutes: what a sequence holds counts
+        ("nodes[[[0] * 999999] * 999999 == [[1] * 999999] * 999999]", "longer than"),
+        ("nodes[[['x' * 1000] * 1000] * 1000 == []]", "longer than"),
+        ("nodes[[[0] * 1000] * 1000 + [[0] * 1000] * 1 == []]", "longer than"),
     ],
 )
 def test_unsafe_or_invalid_queries_are_refused(

@@ -47,8 +47,7 @@ def _unavailable(reason: str) -> None:
 
 @pytest.fixture
 def browser() -> Iterator[Any]:
-    """A fresh headless Chromium per test: a browser kept across tests crashed its renderer
-    now and then late in a run on a loaded machine ("Target crashed")."""
+    """A fresh headless Chromium per test: no test inherits another's browser."""
     try:
         from playwright.sync_api import sync_playwright
     except ImportError:
@@ -57,15 +56,24 @@ def browser() -> Iterator[Any]:
         _unavailable(f"{CHROMIUM} not found (make setup installs Debian's chromium)")
     with sync_playwright() as playwright:
         chromium = playwright.chromium.launch(
-            executable_path=CHROMIUM, args=["--disable-dev-shm-usage", "--disable-gpu"]
+            executable_path=CHROMIUM,
+            # precise: the page's heap as it is, not rounded and cached (``page``)
+            args=["--disable-dev-shm-usage", "--disable-gpu", "--enable-precise-memory-info"],
         )
         yield chromium
         chromium.close()
 
 
+HEAP_BOUND_MB = 1024
+"""The page's JavaScript heap after a test, at most: Chromium stops a renderer whose heap
+reaches its limit (3.5 GB here), which a test sees as "Target crashed". The page once held
+Husky's whole states and reached it (4.3 GB); in overview mode it stays near 100 MB."""
+
+
 @pytest.fixture
 def page(browser: Any) -> Iterator[Any]:
-    """A fresh browser context (own sessionStorage) whose page errors fail the test."""
+    """A fresh browser context (own sessionStorage) whose page errors fail the test, as does
+    a JavaScript heap grown past ``HEAP_BOUND_MB``."""
     context = browser.new_context(viewport={"width": 1400, "height": 850})
     tab = context.new_page()
     errors: list[str] = []
@@ -74,8 +82,10 @@ def page(browser: Any) -> Iterator[Any]:
         "console", lambda message: errors.append(message.text) if message.type == "error" else None
     )
     yield tab
+    heap = tab.evaluate("performance.memory.usedJSHeapSize") / 2**20
     context.close()
     assert errors == [], f"errors in the page: {errors}"
+    assert heap < HEAP_BOUND_MB, f"the page's JavaScript heap is {heap:,.0f} MB"
 
 
 @pytest.fixture(scope="module")

@@ -8,13 +8,17 @@ included file, a node named after an arg follows the arg's value).
 from __future__ import annotations
 
 import json
+import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 from urllib.parse import urlsplit
 
+import pytest
+
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
-from outputs.web.test_overview import wired_configurator, wired_workspace
+from outputs.web.test_overview import expected_links, wired_configurator, wired_workspace
+from rosvar.outputs.web import api as api_module
 from rosvar.outputs.web.overview import SEPARATOR, Grouping, key_of, labels, packages
 
 if TYPE_CHECKING:
@@ -494,12 +498,14 @@ def test_many_topics_link_closed_boxes_and_only_open_groups_fetch_theirs(
         assert fetched_groups(answers) == set()  # nothing open
 
         def expected() -> dict[tuple[str, str], dict[str, list[int]]]:
+            """The whole state's names between the closed boxes drawn, pair by pair."""
             units = {u["id"] for u in app.units("group")}
             found: dict[tuple[str, str], dict[str, list[int]]] = {}
-            for link in app.state["graph"]["links"]:
-                kind, source, target = link["id"].split("\u0002")
+            grouping = Grouping(app.state["grouping"])
+            for link, count in expected_links(app.whole, grouping).items():
+                kind, source, target = link.split("\u0002")
                 if f"g:{source}" in units and f"g:{target}" in units:
-                    found.setdefault((f"g:{source}", f"g:{target}"), {})[kind] = link["count"]
+                    found.setdefault((f"g:{source}", f"g:{target}"), {})[kind] = count
             return found
 
         start = drawn_links(app)
@@ -519,6 +525,8 @@ def test_many_topics_link_closed_boxes_and_only_open_groups_fetch_theirs(
         assert base.endswith("drivers/base.launch")
         kinds = {body.get("kind") for path, body, _ in answers if path == "/api/group"}
         assert kinds == {"nodes", "topics", "services", "actions"}
+        [boxes] = [body["groups"] for path, body, _ in answers if path == "/api/links"]
+        assert sorted(boxes) == sorted(u["element"]["key"] for u in app.units("group"))
         assert len(app.units("topic")) == groups[base]["topics"][1] > 250
         assert drawn_links(app) == expected() != {}
         app.assert_shows_server_state()
@@ -568,6 +576,94 @@ def test_complete_product_gives_the_command(page: Any, examples: Live) -> None:
     assert page.locator("#completeness").inner_text() == "complete"
     page.click("#copy")
     page.locator("#copy", has_text="Copied ✓").wait_for(timeout=10_000)  # the clipboard is async
+
+
+def test_what_stops_the_product_stays_in_view_until_it_is_gone(
+    page: Any, ws: LaunchWorkspace
+) -> None:
+    """issue 30: on a bringup rosvar could not read, Finish showed "0 nodes" with Copy
+    enabled, and the notice of what it could not read was gone at the next click; a
+    product whose command roslaunch refuses was offered for copying."""
+    ws.launch("unread.launch", '  <param name="p" value="$(find nopkg)/p.yaml"/>')
+    ws.launch(
+        "t.launch",
+        '  <arg name="rate" default="5"/>\n  <arg name="fast" default="false"/>\n'
+        '  <param name="rate" type="int" value="$(arg rate)" if="$(arg fast)"/>',
+    )
+    with running(configurator(ws)) as live:
+        app = App(page, live)
+        status = page.locator("#command-status")
+        assert status.is_hidden()
+        app.choose("unread.launch", "select")
+        assert "rosvar could not read all of the selected files" in status.inner_text()
+        assert "nopkg" in status.inner_text()
+        app.wait_for_update(lambda: page.click("#finish"))  # another click: still said
+        assert app.state["complete"] and app.state["launches"] is None
+        assert status.is_visible() and "could not read" in status.inner_text()
+        assert page.locator("#copy").is_enabled()  # the command is right; what it loads unknown
+        app.wait_for_update(lambda: page.click("#undo"))
+        assert status.is_visible() and "could not read" in status.inner_text()
+        app.wait_for_update(lambda: page.click("#reset"))
+        assert status.is_hidden()
+        app.type_other("t.launch:rate", "abc")  # accepted: the param is in some products only
+        app.choose("t.launch:fast=true", "select")
+        app.wait_for_update(lambda: page.click("#finish"))
+        assert app.state["launches"] is False
+        assert "This product does not launch: roslaunch would stop at" in status.inner_text()
+        assert "invalid literal for int()" in status.inner_text()
+        assert page.locator("#copy").is_disabled()
+        assert page.locator("#command.fails").inner_text().startswith("roslaunch pkg t.launch")
+
+
+SLOW_S = 4.0
+
+
+def test_a_slow_choice_of_one_client_keeps_no_other_waiting(
+    page: Any, browser: Any, ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """issue 30.5: two clicks that took minutes froze every client. Here one client's choice
+    takes ``SLOW_S`` in the engine: meanwhile another client's page loads at once (its files
+    and the catalog need no engine), waits for its own steps no longer than the engine is
+    busy (with a budget shorter than that, it is told to wait and tries again), and both
+    pages end showing their own sessions' states."""
+    ws.launch("slow.launch", '  <node pkg="pkg" type="t" name="slow"/>')
+    ws.launch("quick.launch", '  <node pkg="pkg" type="t" name="quick"/>')
+    engine = configurator(ws)
+    original = engine.state
+
+    def state(choices: Any) -> Any:
+        if any(c.feature == "slow.launch" for c in choices) and not state.done:
+            state.done = True  # the first time only: a cold step of a large workspace
+            time.sleep(SLOW_S)
+        return original(choices)
+
+    state.done = False  # type: ignore[attr-defined]
+    monkeypatch.setattr(engine, "state", state)
+    monkeypatch.setattr(api_module, "ENGINE_WAIT", 1.0)
+    with running(engine) as live:
+        first = App(page, live)
+        other = browser.new_context(viewport={"width": 1400, "height": 850}).new_page()
+        first.reveal("slow.launch")
+        button = first.own_row("slow.launch").locator('.choose button[data-action="select"]')
+        arrived: dict[str, float] = {}
+        other.on("response", lambda r: arrived.setdefault(urlsplit(r.url).path, time.monotonic()))
+        started = time.monotonic()
+        button.click()  # answered in SLOW_S: not waited for here
+        second = App(other, live)  # the page, the catalog, then a session once the engine is free
+        assert arrived["/api/catalog"] - started < SLOW_S  # no engine needed: not kept waiting
+        assert arrived["/assets/js/app.js"] - started < SLOW_S
+        assert "Waiting for the server" in other.locator("#message").inner_text()
+        second.choose("quick.launch", "select")
+        answered = time.monotonic() - started
+        first.page.wait_for_function(
+            "() => window.rosvar.state.features['slow.launch'].state === 'selected'"
+        )
+        assert answered < SLOW_S + 5  # its own steps waited for the engine, no longer
+        assert first.state["features"]["quick.launch"]["state"] == "unselected"
+        assert second.state["features"]["slow.launch"]["state"] == "unselected"
+        assert second.state["features"]["quick.launch"]["state"] == "selected"
+        first.assert_shows_server_state()
+        second.assert_shows_server_state()
 
 
 def test_tabs_keep_their_own_sessions(page: Any, examples: Live) -> None:
@@ -635,6 +731,7 @@ def test_husky_clicks_update_the_page_in_place(page: Any, husky: Live) -> None:
 
 MAX_DRAWN = 150  # units a readable drawing holds; Husky has 985 nodes and 7,500 params
 LEGIBLE_ZOOM = 0.6  # 12 px labels at 7 px or more
+READABLE_ZOOM = 0.35  # a whole drawing of a hundred units: labels at 4 px, shapes and links clear
 
 
 def husky_file(app: App, name: str) -> str:
@@ -660,6 +757,54 @@ def overlapping(app: App) -> list[tuple[str, str]]:
     return pairs
 
 
+def beyond_the_canvas(app: App) -> dict[str, float]:
+    """How far (px) the drawn elements' bounding box, labels included, reaches past each side
+    of the canvas once the view stopped moving: empty when the whole drawing is in view."""
+    app.wait_for_layout()
+    app.page.wait_for_function("() => !window.rosvar.graph.cy.animated()")
+    box: dict[str, float] = app.page.evaluate(
+        """() => { const cy = window.rosvar.graph.cy;
+                   const b = cy.elements(':visible').renderedBoundingBox();
+                   return {left: -b.x1, top: -b.y1,
+                           right: b.x2 - cy.width(), bottom: b.y2 - cy.height()}; }"""
+    )  # fmt: skip
+    return {side: reach for side, reach in box.items() if reach > 0.5}
+
+
+def zoom(app: App) -> float:
+    return float(app.page.evaluate("window.rosvar.graph.cy.zoom()"))
+
+
+def test_husky_the_whole_drawing_is_in_view_until_the_user_moves_it(page: Any, husky: Live) -> None:
+    """The first view, Fit and the view after each choice show the whole drawn graph; once
+    the user zoomed, a choice leaves the view alone until the next Fit."""
+    page.set_viewport_size({"width": 1600, "height": 1000})
+    app = App(page, husky)
+    assert beyond_the_canvas(app) == {} and zoom(app) >= LEGIBLE_ZOOM
+    page.click("#fit")
+    assert beyond_the_canvas(app) == {}
+    app.choose(husky_file(app, "husky_playpen.launch"), "select")
+    assert app.units("node")  # its nodes drawn one by one, with their topics
+    assert beyond_the_canvas(app) == {} and zoom(app) >= READABLE_ZOOM
+    page.click("#fit")
+    assert beyond_the_canvas(app) == {}
+    canvas = page.locator("#graph").bounding_box()
+    page.mouse.move(canvas["x"] + canvas["width"] / 2, canvas["y"] + canvas["height"] / 2)
+    for _ in range(5):
+        page.mouse.wheel(0, -400)  # the user zooms in
+    page.wait_for_function("() => !window.rosvar.graph.cy.animated()")
+    zoomed = zoom(app)
+    assert beyond_the_canvas(app) != {}
+    runs = page.evaluate("window.rosvar.graph.layoutRuns")
+    app.choose(husky_file(app, "husky_empty_world.launch"), "deselect")
+    assert page.evaluate("window.rosvar.graph.layoutRuns") > runs  # units went: placed again
+    assert zoom(app) == zoomed  # the view stays where the user put it
+    page.click("#fit")
+    assert beyond_the_canvas(app) == {}
+    app.choose(husky_file(app, "husky_playpen.launch"), "select")  # withdrawn: fewer units
+    assert beyond_the_canvas(app) == {}
+
+
 def test_husky_overview_aggregates_and_opens_the_selected_files(page: Any, husky: Live) -> None:
     app = App(page, husky)
     app.assert_shows_server_state()
@@ -677,10 +822,22 @@ def test_husky_overview_aggregates_and_opens_the_selected_files(page: Any, husky
     assert own and {n["id"] for n in own} <= alone  # the selected file's nodes, one by one
     assert page.evaluate("window.rosvar.graph.layoutRuns") > runs  # placed again
     assert overlapping(app) == []
-    assert page.evaluate("window.rosvar.graph.cy.zoom()") >= LEGIBLE_ZOOM
+    assert beyond_the_canvas(app) == {} and zoom(app) >= READABLE_ZOOM
     # elements going away: the layout runs again (no holes) and the page still shows all
+    # (husky_empty_world.launch, which loads husky_playpen's nodes too, is out already)
+    assert server["features"][husky_file(app, "husky_empty_world.launch")]["state"] == "deselected"
     runs = page.evaluate("window.rosvar.graph.layoutRuns")
-    app.choose(husky_file(app, "husky_empty_world.launch"), "deselect")
+    left = next(
+        feature
+        for feature, state in server["features"].items()
+        if state["kind"] == "file"
+        and state["state"] == "unselected"
+        and any(
+            n["id"].startswith(f"{feature}|") and n["presence"] != "absent"
+            for n in server["graph"]["nodes"]
+        )
+    )
+    app.choose(left, "deselect")
     app.assert_shows_server_state()
     assert page.evaluate("window.rosvar.graph.layoutRuns") > runs
     assert overlapping(app) == []
@@ -732,7 +889,7 @@ def test_husky_params_and_namespaces_stay_bounded(page: Any, husky: Live) -> Non
     if len(largest["element"]["params"]) > 50:
         page.locator("#details button", has_text="more").click()
         assert rows.count() > 50
-    page.select_option("#group-by", "namespace")
+    app.wait_for_update(lambda: page.select_option("#group-by", "namespace"))
     app.assert_shows_server_state()
     assert drawn(app) <= MAX_DRAWN
     size = page.evaluate(

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import threading
+import time
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
@@ -45,6 +47,16 @@ def small(ws: LaunchWorkspace) -> Iterator[Live]:
         yield live
 
 
+def checks(live: Live, session: str) -> dict[str, Any]:
+    """The checks' answer once the findings are listed (the first question starts that)."""
+    for _ in range(600):
+        answer: dict[str, Any] = live.post("/api/checks", {"session": session})
+        if "pending" not in answer:
+            return answer
+        time.sleep(0.05)
+    raise AssertionError("the findings were not listed in 30 s")
+
+
 def ask(live: Live, session: str, expression: str) -> list[dict[str, Any]]:
     answer = live.post("/api/query", {"session": session, "expression": expression})
     assert answer["query"] == expression
@@ -82,7 +94,7 @@ def test_in_overview_mode_results_name_the_groups_of_their_entries(small: Live) 
     assert node["groups"] == [key_of(["a.launch"])]
     [topic] = ask(small, session, "topics[self.name == '/chatter']")
     assert topic["groups"] == [None]  # drawn one by one
-    findings = small.post("/api/checks", {"session": session})["findings"]
+    findings = checks(small, session)["findings"]
     for finding in findings:
         assert len(finding["groups"]) == len(finding["ids"])
         for id_, group in zip(finding["ids"], finding["groups"], strict=True):
@@ -113,9 +125,19 @@ def test_a_query_the_parser_refuses_is_a_400_with_its_position(small: Live) -> N
     assert extra.status == 400
 
 
+def test_a_query_building_a_huge_nested_list_is_a_400(small: Live) -> None:
+    """issue 30.5: it built a million references to a list of a million, within the outer
+    sequence's bound, and compared them for minutes, every client waiting."""
+    session = small.open()["session"]
+    expression = "nodes[[[0] * 999999] * 999999 == [[1] * 999999] * 999999]"
+    reply = small.call("POST", "/api/query", {"session": session, "expression": expression})
+    assert reply.status == 400 and "longer than" in reply.json()["error"]
+
+
 def test_checks_follow_the_choices(small: Live) -> None:
     session = small.open()["session"]
-    answer = small.post("/api/checks", {"session": session})
+    answer = checks(small, session)
+    assert answer["choices"] == []
     [unheard] = [f for f in answer["findings"] if f["check"] == "no-subscriber"]
     assert (unheard["name"], unheard["severity"]) == ("/chatter", "note")
     assert (unheard["presence"], unheard["condition"]) == ("undetermined", "¬listen")
@@ -130,7 +152,8 @@ def test_checks_follow_the_choices(small: Live) -> None:
     small.post("/api/choose", {"session": session, "action": "select", "feature": "a.launch"})
     feature = "a.launch:listen=true"
     small.post("/api/choose", {"session": session, "action": "select", "feature": feature})
-    after = small.post("/api/checks", {"session": session})
+    after = checks(small, session)
+    assert [c["feature"] for c in after["choices"]] == ["a.launch", feature]  # the state judged
     assert "/chatter" not in {f["name"] for f in after["findings"]}
 
 
@@ -144,10 +167,33 @@ def test_a_finding_reached_from_two_entry_files_is_shown_from_the_launched_one(
     with running(configurator(ws, interfaces=True)) as live:
         session = live.open()["session"]
         live.post("/api/choose", {"session": session, "action": "select", "feature": "z.launch"})
-        findings = live.post("/api/checks", {"session": session})["findings"]
+        findings = checks(live, session)["findings"]
     [unheard] = [f for f in findings if f["name"] == "/chatter" and "b.launch" in str(f)]
     assert (unheard["launch_file"], unheard["presence"]) == ("pkg/launch/z.launch", "present")
     assert findings[0] is unheard  # a note, but the only one present
+
+
+def test_findings_are_listed_off_the_click_path(
+    ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Listing the findings of every entry file takes seconds on a large workspace: it runs
+    beside the clicks, which are answered meanwhile, and a question asked before it is done
+    says how far it is."""
+    small_workspace(ws)
+    for name in ("b.launch", "c.launch"):
+        ws.launch(name, '  <node pkg="pkg" type="talker.py" name="talker"/>')
+    held = threading.Event()  # the listing waits after its first file until a click is answered
+    monkeypatch.setattr(inspection._Findings, "_pause", lambda _self: held.wait(30))
+    with running(configurator(ws, interfaces=True)) as live:
+        session = live.open()["session"]
+        first = live.post("/api/checks", {"session": session})
+        assert first["pending"][1] == 3 and first["choices"] == []
+        live.post("/api/choose", {"session": session, "action": "select", "feature": "a.launch"})
+        pending = live.post("/api/checks", {"session": session})
+        assert pending["pending"][0] < 3 and len(pending["choices"]) == 1
+        held.set()
+        answer = checks(live, session)
+        assert answer["choices"] == pending["choices"] and answer["total"] >= 1
 
 
 # -- the page ------------------------------------------------------------------------------------
@@ -167,14 +213,14 @@ def test_answers_list_the_first_results_and_count_them_all(
     """A large workspace's findings would make an answer of megabytes: the first are listed,
     the same as the whole list begins with, and all are counted."""
     session = small.open()["session"]
-    whole = small.post("/api/checks", {"session": session})
+    whole = checks(small, session)
     nodes = ask(small, session, "nodes")
     assert whole["total"] == len(whole["findings"]) >= 1 and len(nodes) >= 2
     monkeypatch.setattr(inspection, "LISTED", 1)
     answer = small.post("/api/query", {"session": session, "expression": "nodes"})
     assert answer["results"] == nodes[:1] and answer["total"] == len(nodes)
     monkeypatch.setattr(inspection, "LISTED", 0)
-    cut = small.post("/api/checks", {"session": session})
+    cut = checks(small, session)
     assert cut["findings"] == [] and (cut["total"], cut["counts"]) == (
         whole["total"],
         whole["counts"],
@@ -227,3 +273,44 @@ def test_the_checks_panel_lists_findings_and_marks_a_clicked_one(page: Any, smal
     app.choose("a.launch:listen=true", "select")
     page.wait_for_selector(f'body:not([data-checks="{answered}"])')
     assert finding.count() == 0 and red_units(app) == []
+
+
+def test_the_checks_panel_never_shows_the_counts_of_an_earlier_state(
+    page: Any, ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The counts of a state stay shown only until the next step: while the server judges
+    the new state (seconds on a large workspace) the panel says it is checking, then shows
+    the counts of the state the page shows."""
+    small_workspace(ws)
+    judged = inspection.Inspector.checks
+    gate = threading.Event()
+    gate.set()
+
+    def slow(self: inspection.Inspector, state: Any, *args: Any) -> dict[str, object]:
+        if state.complete:  # the finished state's checks wait (under the engine's lock)
+            gate.wait(30)
+        return judged(self, state, *args)
+
+    monkeypatch.setattr(inspection.Inspector, "checks", slow)
+    with running(configurator(ws, interfaces=True)) as live:
+        app = App(page, live)
+        page.wait_for_selector("body[data-checks]")
+        count = page.locator("#checks-count")
+        before = count.inner_text()
+        assert before == counted(checks(live, app.session))
+        gate.clear()
+        app.choose("a.launch", "select")
+        app.wait_for_update(lambda: page.click("#finish"))
+        assert count.inner_text() == "…" and page.locator("#checks-list.stale").count() == 1
+        answered = page.locator("body").get_attribute("data-checks")
+        gate.set()
+        page.wait_for_selector(f'body:not([data-checks="{answered}"])')
+        server = checks(live, app.session)
+        assert server["choices"] == app.server_state()["choices"]
+        assert count.inner_text() == counted(server) != before
+
+
+def counted(answer: dict[str, Any]) -> str:
+    """The checks' counts as the panel shows them."""
+    counts = answer["counts"]
+    return f"{counts['error']} errors · {counts['warning']} warnings · {counts['note']} notes"

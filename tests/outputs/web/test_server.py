@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import socket
+import threading
+import time
 from concurrent.futures import ThreadPoolExecutor
 
 import pytest
@@ -173,8 +176,41 @@ def test_many_concurrent_connections_are_all_answered(examples: Live) -> None:
 
 
 def test_idle_connections_are_closed(examples: Live, monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(server._Handler, "timeout", 0.5)
+    monkeypatch.setattr(server, "REQUEST_DEADLINE", 0.5)
     host, port = examples.server.server_address[:2]
     with socket.create_connection((str(host), port), timeout=30) as connection:
         connection.sendall(b"GET / HTTP/1.1\r\nHost: 127.0.0.1\r\n")  # never finished
         assert connection.recv(65536) == b""  # closed by the server, not left waiting
+
+
+def test_slowly_sending_clients_keep_no_other_waiting(examples: Live) -> None:
+    """issue 30.5: 30 connections that send a request a byte at a time held every thread of
+    the server (one per connection, each waiting on its socket): now an event loop reads
+    them, and a request must arrive whole within ``REQUEST_DEADLINE``."""
+    host, port = examples.server.server_address[:2]
+    slow = [socket.create_connection((str(host), port), timeout=30) for _ in range(30)]
+    stop = threading.Event()
+
+    def trickle() -> None:
+        line = b"GET / HTTP/1.1\r\nHost: 127.0.0.1\r\nX-Slow: " + b"x" * 1000
+        for byte in line:
+            if stop.is_set():
+                return
+            for connection in slow:
+                with contextlib.suppress(OSError):
+                    connection.send(bytes([byte]))
+            time.sleep(0.05)
+
+    sender = threading.Thread(target=trickle, daemon=True)
+    sender.start()
+    try:
+        time.sleep(0.5)
+        started = time.monotonic()
+        assert examples.call("GET", "/").status == 200
+        assert examples.call("POST", "/api/session", {}).status == 200
+        assert time.monotonic() - started < 5
+    finally:
+        stop.set()
+        sender.join()
+        for connection in slow:
+            connection.close()

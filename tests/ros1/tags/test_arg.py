@@ -167,7 +167,7 @@ def test_command_line_value_is_visible_outside_the_declaring_group(ws: LaunchWor
     """roslaunch puts every name:=value of the command line into the root context's args."""
     file = ws.launch("scopes.launch", SCOPES)
     resolution = ws.resolve(file, {"inner": "x"})
-    assert resolution.ok, resolution.to_json()
+    assert resolution.ok, resolution.errors
     assert resolution.params == {"/g/seen": "o-x", "/after": "x"}
 
 

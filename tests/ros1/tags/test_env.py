@@ -43,7 +43,7 @@ def test_environment_variables_are_inputs(ws: LaunchWorkspace) -> None:
 def test_env_settings_per_configuration(ws: LaunchWorkspace) -> None:
     file = ws.launch("env.launch", ENV)
     plain = ws.resolve(file, {}, {})
-    assert plain.ok, plain.to_json()
+    assert plain.ok, plain.errors
     nodes = {n.name: n for n in plain.nodes}
     assert nodes["/n"].env == [("LOG_LEVEL", "info"), ("OWN", "1")]
     assert nodes["/after"].env == [("LOG_LEVEL", "info")]

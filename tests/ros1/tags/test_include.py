@@ -57,7 +57,7 @@ def test_include_args_and_namespace(ws: LaunchWorkspace) -> None:
     ws.launch("sensor.launch", SENSOR)
     main = ws.launch("main.launch", MAIN)
     slow = ws.resolve(main, {})
-    assert slow.ok, slow.to_json()
+    assert slow.ok, slow.errors
     assert [n.name for n in slow.nodes] == ["/front/sensor"]
     assert slow.params == {"/front/sensor/rate": 10}
     fast = ws.resolve(main, {"fast": "true"})

@@ -54,7 +54,7 @@ def test_fig1_restrictions(ws: LaunchWorkspace) -> None:
 
     def names(args: dict[str, str]) -> list[object]:
         resolution = ws.resolve(file, args)
-        assert resolution.ok, resolution.to_json()
+        assert resolution.ok, resolution.errors
         return [n.name for n in resolution.nodes]
 
     assert names({}) == ["/teleop"]
@@ -165,7 +165,7 @@ def test_node_fields_are_conditional_values(ws: LaunchWorkspace) -> None:
     assert test.fields["test-name"].where(lambda v: v == "check_r1") != model.space.false
 
     resolution = ws.resolve(file, {"robot": "r2", "verbose": "true"})
-    assert resolution.ok, resolution.to_json()
+    assert resolution.ok, resolution.errors
     [entry] = resolution.nodes
     assert entry.name == "/r2/driver_r2"
     assert entry.namespace == "/r2/"

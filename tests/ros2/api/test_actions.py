@@ -3,19 +3,14 @@ names the real launch code exposes (read from its sources in ``../shared/ros2-or
 
 from __future__ import annotations
 
-import ast
-import re
-from pathlib import Path
-
 import pytest
 
+from ros2.api.upstream import UPSTREAM, exported_by_upstream, exposed_by_upstream
 from rosvar.interpreter.dialect import dialect_of
 from rosvar.ros.version import RosVersion
 from rosvar.ros2.api.actions import ACTIONS, Action, attributes
 from rosvar.ros2.api.registry import Registry
 from rosvar.ros2.dialect import ROS2, tag
-
-UPSTREAM = Path(__file__).resolve().parents[4] / "shared" / "ros2-oracle" / "upstream"
 
 
 def test_every_walked_action_has_a_handler_and_no_other_tag_has() -> None:
@@ -47,6 +42,8 @@ def test_aliases_and_tags_find_one_entry() -> None:
     assert ACTIONS.by_python["launch_ros", "ROSTimer"] is timer
     push = ACTIONS.by_name["push-ros-namespace"]
     assert ACTIONS.by_name["push_ros_namespace"] is push and push.tag == "push-ros-namespace"
+    assert ACTIONS.by_python["launch_ros", "PushROSNamespace"] is push
+    assert ACTIONS.by_python["launch_ros", "PushRosNamespace"] is push
 
 
 def test_attributes_are_the_arguments_and_the_xml_only_ones() -> None:
@@ -56,32 +53,11 @@ def test_attributes_are_the_arguments_and_the_xml_only_ones() -> None:
     assert "composable_node" in ACTIONS.by_name["node_container"].attributes
 
 
-def _upstream(pattern: str, package: str) -> set[str]:
-    found: set[str] = set()
-    for path in (UPSTREAM / package / package).rglob("*.py"):
-        found.update(re.findall(pattern, path.read_text(encoding="utf-8")))
-    return found
-
-
-def _exported(package: str) -> set[str]:
-    """The names a package's ``actions`` module exports (aliases included)."""
-    tree = ast.parse((UPSTREAM / package / package / "actions" / "__init__.py").read_text())
-    return {
-        alias.asname or alias.name
-        for node in tree.body
-        if isinstance(node, ast.ImportFrom)
-        for alias in node.names
-    }
-
-
 @pytest.mark.skipif(not UPSTREAM.is_dir(), reason="no ROS 2 oracle")
 def test_the_real_launch_exposes_every_tag_and_class() -> None:
-    exposed = _upstream(r"@expose_action\('([^']+)'\)", "launch") | _upstream(
-        r"@expose_action\('([^']+)'\)", "launch_ros"
-    )
+    exposed = exposed_by_upstream("action")
     walked = {n for a in ACTIONS if a.walked and not a.python_only for n in a.names}
     assert walked <= exposed, walked - exposed
-    classes = {("launch", n) for n in _exported("launch")}
-    classes |= {("launch_ros", n) for n in _exported("launch_ros")}
+    classes = exported_by_upstream("actions", "launch", "launch_ros")
     unknown = {k for k, a in ACTIONS.by_python.items() if a.walked} - classes
     assert unknown == set()

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from rosvar.workspace.interfaces.cmake import TargetKind, commands, read_build
+from rosvar.workspace.interfaces.cmake import TargetKind, read_build
+from rosvar.workspace.interfaces.cmake_script import commands
 
 CMAKE = """\
 cmake_minimum_required(VERSION 2.8.3)
@@ -47,7 +48,8 @@ def test_targets(tmp_path: Path) -> None:
 
 def test_commands_quotes_and_comments() -> None:
     text = 'set(A "x y" b) # set(B c)\n#[[ add_executable(no) ]]\nmessage(STATUS "(")\n'
-    assert list(commands(text)) == [("set", ["A", '"x y"', "b"]), ("message", ["STATUS", '"("'])]
+    found = [(c.name, list(c.arguments), c.line) for c in commands(text)]
+    assert found == [("set", ["A", '"x y"', "b"], 1), ("message", ["STATUS", '"("'], 3)]
 
 
 def test_output_name_and_source_without_suffix(tmp_path: Path) -> None:

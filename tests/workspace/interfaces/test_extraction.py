@@ -14,7 +14,7 @@ from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, NodeInterface, NodeKind, Role
 from workspace.interfaces.ros2_packages import write_ros2_packages
 
-CORPUS = Path("/work/shared/corpus")
+CORPUS = Path(__file__).resolve().parents[4] / "shared" / "corpus"  # ../shared of the checkout
 SCHEMA = Path(__file__).resolve().parents[3] / "docs" / "schema" / "interfaces.schema.json"
 needs_corpus = pytest.mark.skipif(not CORPUS.is_dir(), reason="corpus not available")
 
@@ -53,7 +53,9 @@ def test_kobuki_nodelet() -> None:
         "~debug/raw_data_stream": "std_msgs/String",
         "~debug/raw_control_command": "std_msgs/Int16MultiArray",
         "~odom": "nav_msgs/Odometry",  # odometry.cpp, Odometry::init(nh, name)
+        "/tf": "tf2_msgs/TFMessage",  # odometry.hpp, a tf::TransformBroadcaster member
     }
+    assert [e.boundary for e in node.of(Role.PUBLISHES) if e.name == "/tf"] == [True]
     subscribed = {e.name: e.type for e in node.of(Role.SUBSCRIBES)}
     assert subscribed["~commands/velocity"] == "geometry_msgs/Twist"
     assert subscribed["~commands/reset_odometry"] == "std_msgs/Empty"

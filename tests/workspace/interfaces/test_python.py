@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from rosvar.diagnostics import DiagnosticSink
-from rosvar.workspace.interfaces.model import Expression, Role
+from rosvar.workspace.interfaces.model import Expression, NamedBy, Role
 from rosvar.workspace.interfaces.python import extract, extract_node
 
 SCRIPT = """\
@@ -47,10 +47,12 @@ def test_script_interface(tmp_path: Path) -> None:
         ("params", "~rate", 10.0, 16),
         ("params", "/frame", None, 17),
         ("params", "~other", Expression("[1, 2]"), 18),
-        ("clients", "{rp.get_param('~service', 'x')}", "std_srvs/Trigger", 19),
+        ("clients", "{~service}", "std_srvs/Trigger", 19),  # the parameter's value
         ("params", "~service", "x", 19),
     ]
-    assert [(d.code, d.location.line) for d in sink.items] == [("interface-symbolic-name", 19)]
+    (client,) = [e for e in entries if e.role is Role.CLIENTS]
+    assert (client.named_by, client.default) == (NamedBy("~service"), "x")
+    assert sink.items == []
 
 
 def test_python2_script(tmp_path: Path) -> None:
@@ -101,3 +103,38 @@ def test_rclpy_node_by_keywords(tmp_path: Path) -> None:
         ("params", "speed", Expression("[1, 2]")),
     ]
     assert [d.code for d in sink.items] == ["interface-unknown-type"] * 2
+
+
+def test_rclpy_names_read_from_parameters(tmp_path: Path) -> None:
+    path = tmp_path / "node.py"
+    path.write_text(
+        "from rclpy.node import Node\nfrom std_msgs.msg import String\n"
+        "class Relay(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('relay')\n"
+        "        topic = self.declare_parameter('input', 'chatter').value\n"
+        "        self.create_subscription(String, topic, self.cb, 10)\n"
+        "        out = self.get_parameter('output').get_parameter_value().string_value\n"
+        "        self.create_publisher(String, out, 10)\n"
+    )
+    entries = extract(str(path), DiagnosticSink())
+    named = [(str(e.role), e.name, e.named_by, e.default) for e in entries if e.named_by]
+    assert named == [
+        ("subscribes", "{input}", NamedBy("input"), "chatter"),
+        ("publishes", "{output}", NamedBy("output"), None),
+    ]
+
+
+def test_the_nodes_own_name(tmp_path: Path) -> None:
+    """turtlebot3_server: ``SimpleActionServer(rospy.get_name(), ...)`` serves at the node's
+    own name, which ``~`` names."""
+    path = tmp_path / "server.py"
+    path.write_text(
+        "import rospy, actionlib\nfrom demo.msg import DoAction\n"
+        "actionlib.SimpleActionServer(rospy.get_name(), DoAction, None)\n"
+        "rospy.Publisher(rospy.get_name() + '/state', DoAction)\n"
+    )
+    assert [(str(e.role), e.name) for e in extract(str(path), DiagnosticSink())] == [
+        ("action_servers", "~"),
+        ("publishes", "~/state"),
+    ]

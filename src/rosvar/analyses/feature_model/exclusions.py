@@ -9,8 +9,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 
-from rosvar.analyses.conflicts import Occurrence
-from rosvar.analyses.feature_model.model import FileFeature, name_of
+from rosvar.analyses.conflicts import Clash, Occurrence
+from rosvar.analyses.feature_model.features import FileFeature, name_of
 from rosvar.logic.bdd import BDD, Manager, transfer
 from rosvar.logic.conditions import ConditionSpace
 
@@ -64,6 +64,7 @@ def exclusions(
     declaring: Iterable[Mapping[str, BDD]],
     kept: set[str],
     translate: Callable[[BDD], BDD],
+    internal: Iterable[Clash] = (),
 ) -> Iterator[tuple[list[str], BDD]]:
     """The excludes constraints, as one at-most-one per clashing name (plus rare pairs).
 
@@ -74,7 +75,8 @@ def exclusions(
     cheap. Where ``C_f`` mentions atoms that are not features, quantifying them
     out does not distribute over the names, so such files keep the pairwise
     constraint, restricted to those names: together this is the conjunction of
-    the pairwise ``excludes`` exactly.
+    the pairwise ``excludes`` exactly. ``internal`` clashes (one file loading two nodes of
+    one name) exclude their file under their condition.
     """
     dirty: dict[tuple[str, str], BDD] = {}
     literals: dict[tuple[str, BDD], BDD | None] = {}  # F ∧ C_F in the solver; None: unclean
@@ -100,6 +102,8 @@ def exclusions(
         if len(clean) >= 2:
             clean.sort(key=lambda item: manager.level_of_var(name_of(files[item[0]].variable)))
             yield [files[f].id for f, _x in clean], _at_most_one(manager, [x for _f, x in clean])
+    for clash in internal:
+        dirty[clash.files] = dirty.get(clash.files, space.false) | clash.condition
     for (first, second), condition in dirty.items():
         a, b = files[first], files[second]
         if condition != space.false:

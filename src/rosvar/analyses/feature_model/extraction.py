@@ -7,26 +7,31 @@ constraint. The solver is built at once, within its budgets (``solver.build``).
 
 from __future__ import annotations
 
+import itertools
+import os
 from collections.abc import Callable, Mapping, Sequence
 
-from rosvar.analyses.conflicts import Occurrence, index
-from rosvar.analyses.feature_model.model import (
+from rosvar.analyses.conflicts import Occurrence, index, internal_clashes
+from rosvar.analyses.feature_model.features import (
     ArgFeature,
     Constraint,
     ConstraintKind,
-    FeatureModel,
     FileFeature,
+    ModelPart,
     ModelTooLarge,
     ValueFeature,
+    launched_conditions,
     value_text,
 )
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.solver import build
 from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
 from rosvar.interpreter.workspace_models import Analysis, collector_paused
+from rosvar.logic.atoms import PredicateAtom, SlotAtom
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
-from rosvar.logic.conditions import ConditionSpace, PredicateAtom, SlotAtom
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import UNSET, ArgInput
 from rosvar.logic.terms import Apply, Hole, Operand, term_inputs
 from rosvar.workspace.paths import real_path
@@ -235,7 +240,7 @@ def extract(
                         space.valid_implies(when),
                     )
                 )
-    buckets = index(models)
+    buckets = index(models, launched_conditions(features, requires) if products else None)
     # a file included by several entry files reports its problems once per entry file: once here
     found = list(dict.fromkeys(d for model in models for d in model.diagnostics))
     feature_model = FeatureModel(
@@ -245,11 +250,17 @@ def extract(
         _check_links(buckets, len(features))
         cross_tree = feature_model.cross_tree
         feature_model.solution = build(
-            space, features, requires, buckets, lambda: cross_tree.constraints
+            space,
+            features,
+            requires,
+            buckets,
+            lambda: cross_tree.constraints,
+            internal_clashes(buckets) if products else (),
         )
     except ModelTooLarge as too_large:
         # kept without its traceback, whose frames hold the half-built BDDs
-        feature_model.solution = ModelTooLarge(*too_large.args)
+        parts = largest_parts(analysis, features, requires, buckets)
+        feature_model.solution = ModelTooLarge(str(too_large), parts)
         feature_model.diagnostics.append(
             Diagnostic(
                 "model-too-large",
@@ -274,7 +285,7 @@ after minutes. Real systems link a few files per file (the corpus at most 4, gen
 workspaces shaped like it 12), so a workspace of many systems gets a budget that grows
 with it; where every file shares names with a hundred others (the uniform shape, whose
 files at one position in every package declare the same names) the constraints form a
-grid whose diagram outgrows any budget (docs/performance.md, session 10).
+grid whose diagram outgrows any budget (docs/performance.md, "Feature model", budgets).
 """
 
 
@@ -285,6 +296,54 @@ def _check_links(buckets: Mapping[tuple[str, str], Sequence[Occurrence]], files:
     budget = LINK_BUDGET + LINKS_PER_FILE * files
     if links > budget:
         raise ModelTooLarge(f"{links:,} pairs of files declare a common name (budget {budget:,})")
+
+
+LARGEST_PARTS = 3
+"""The groups of linked files a model too large to solve is described by, at most."""
+PART_PACKAGES = 5
+"""The packages each of them is described by, at most (the most files first)."""
+
+
+def largest_parts(
+    analysis: Analysis,
+    features: Sequence[FileFeature],
+    requires: Sequence[Constraint],
+    buckets: Mapping[tuple[str, str], Sequence[Occurrence]],
+) -> list[ModelPart]:
+    """The largest groups of files that includes and shared names link: the components
+    the solver would build. Linear in the declarations (each name joins its files in a
+    chain), where listing the pairs that clash would not be."""
+    parent = {f.file: f.file for f in features}
+
+    def root(file: str) -> str:
+        while parent[file] != file:
+            parent[file] = parent[parent[file]]
+            file = parent[file]
+        return file
+
+    def join(files: Sequence[str]) -> None:
+        for first, second in itertools.pairwise(files):
+            parent[root(second)] = root(first)
+
+    by_id = {f.id: f.file for f in features}
+    for constraint in requires:
+        join([by_id[i] for i in constraint.files])
+    for occurrences in buckets.values():
+        join(sorted({o.file for o in occurrences if o.file in parent}))
+    groups: dict[str, list[str]] = {}
+    for file in parent:
+        groups.setdefault(root(file), []).append(file)
+    found = []
+    for files in sorted(groups.values(), key=len, reverse=True)[:LARGEST_PARTS]:
+        counts: dict[tuple[str, str], int] = {}
+        for file in files:
+            package = analysis.workspace.package_of(file)
+            key = (package.name, package.path) if package else ("", os.path.dirname(file))
+            counts[key] = counts.get(key, 0) + 1
+        ranked = sorted(counts.items(), key=lambda item: (-item[1], item[0]))
+        first = tuple((n, p, c) for (n, p), c in ranked[:PART_PACKAGES])
+        found.append(ModelPart(len(files), len(ranked), first))
+    return found
 
 
 def _unknown_values(features: Sequence[FileFeature]) -> list[Diagnostic]:

@@ -11,9 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from enum import StrEnum
 from functools import cached_property
-from typing import TYPE_CHECKING
 
 from rosvar.analyses.conflicts import (
     Clash,
@@ -22,81 +20,17 @@ from rosvar.analyses.conflicts import (
     clashes,
     repeated_inclusions,
 )
-from rosvar.diagnostics import Diagnostic, Location
+from rosvar.analyses.feature_model.features import (
+    Constraint,
+    ConstraintKind,
+    FileFeature,
+    ModelTooLarge,
+)
+from rosvar.analyses.feature_model.solver import Solver
+from rosvar.diagnostics import Diagnostic
 from rosvar.interpreter.model import LaunchModel
-from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
-
-if TYPE_CHECKING:
-    from rosvar.analyses.feature_model.solver import Solver
-
-
-class FeatureKind(StrEnum):
-    """A feature's level in the tree: a launch file, one of its args, one of an arg's values."""
-
-    FILE = "file"
-    ARG = "arg"
-    VALUE = "value"
-
-
-@dataclass
-class ValueFeature:
-    id: str
-    value: str
-    slot: Slot
-    default: bool
-    variable: BDD
-
-
-@dataclass
-class ArgFeature:
-    id: str
-    file: str
-    name: str
-    input: ArgInput
-    default: str | None
-    boolean: bool
-    location: Location | None
-    doc: str | None = None  # what the file says the arg is for (``doc``, ROS 2 ``description``)
-    values: list[ValueFeature] = field(default_factory=list)
-
-
-@dataclass
-class FileFeature:
-    id: str
-    file: str
-    variable: BDD
-    args: list[ArgFeature] = field(default_factory=list)
-
-    def variable_names(self) -> list[str]:
-        """The file's variable, then its args' values: a block of the solver's order (the
-        names are the same in the analysis' manager and the solver's)."""
-        return [name_of(self.variable)] + [name_of(v.variable) for a in self.args for v in a.values]
-
-
-class ConstraintKind(StrEnum):
-    """What a cross-tree constraint says: an include needs its file, clashing files exclude."""
-
-    REQUIRES = "requires"
-    EXCLUDES = "excludes"
-
-
-@dataclass
-class Constraint:
-    """A cross-tree constraint: ``formula`` must hold; ``text`` says why, for people."""
-
-    kind: ConstraintKind
-    files: tuple[str, ...]
-    formula: BDD
-    condition: BDD  # when it bites (include condition, clash condition)
-    text: str
-    locations: tuple[Location, ...] = ()
-    unconditional: bool = False
-
-
-class ModelTooLarge(Exception):
-    """The solver's BDDs would outgrow their budget: the model is listed, not solved."""
+from rosvar.workspace.paths import real_path
 
 
 class CrossTree:
@@ -112,11 +46,13 @@ class CrossTree:
         files: Sequence[FileFeature],
         requires: list[Constraint],
         declarations: Mapping[tuple[str, str], list[Occurrence]],
+        products: bool = False,
     ) -> None:
         self.space = space
         self.files = files
         self.requires = requires
         self.declarations = declarations
+        self.products = products
 
     @cached_property
     def clashes(self) -> list[Clash]:
@@ -124,7 +60,7 @@ class CrossTree:
 
     @cached_property
     def constraints(self) -> list[Constraint]:
-        return self.requires + _excludes(self.space, self.files, self.clashes)
+        return self.requires + _excludes(self.space, self.files, self.clashes, self.products)
 
 
 @dataclass
@@ -155,11 +91,13 @@ class FeatureModel:
     @property
     def solver(self) -> Solver:
         if isinstance(self.solution, ModelTooLarge):
-            raise ModelTooLarge(*self.solution.args)
+            raise ModelTooLarge(str(self.solution), self.solution.parts)
         return self.solution
 
     def __post_init__(self) -> None:
-        self.cross_tree = CrossTree(self.space, self.files, self.requires, self.declarations)
+        self.cross_tree = CrossTree(
+            self.space, self.files, self.requires, self.declarations, self.products
+        )
 
     @property
     def clashes(self) -> list[Clash]:
@@ -189,28 +127,21 @@ class FeatureModel:
         return ids
 
 
-def name_of(variable: BDD) -> str:
-    """The name of a feature variable: the same in the analysis' manager and the solver's."""
-    return str(variable.var)
-
-
-def value_text(slot: Slot, default_text: str | None) -> str:
-    """How a value feature shows ``slot``."""
-    if slot is OTHER:
-        return "<other>"
-    if slot is UNSET:
-        return f"<default: {default_text}>" if default_text else "<unset>"
-    return str(slot)
-
-
 def _excludes(
-    space: ConditionSpace, features: Sequence[FileFeature], found: Sequence[Clash]
+    space: ConditionSpace,
+    features: Sequence[FileFeature],
+    found: Sequence[Clash],
+    products: bool = False,
 ) -> list[Constraint]:
-    """One ``excludes`` constraint per pair of files whose declarations clash."""
+    """One ``excludes`` constraint per pair of files whose declarations clash (with
+    ``products``, the engine's model, also one per file loading two nodes of one name: the
+    file alone fails, ``internal_clashes``)."""
     by_file = {f.file: f for f in features}  # an occurrence's file is its model's file
     between: dict[tuple[str, str], list[Clash]] = {}
     for clash in found:
-        if clash.first.file != clash.second.file:
+        if clash.first.file != clash.second.file or (
+            products and clash.kind == DeclarationKind.NODE
+        ):
             key = tuple(sorted(clash.files))
             between.setdefault(key, []).append(clash)  # type: ignore[arg-type]
     constraints = []
@@ -220,13 +151,24 @@ def _excludes(
         for clash in pair_clashes:
             condition |= clash.condition
         names = sorted({f"{c.kind} {c.name}" for c in pair_clashes})
+        # the engine's model counts what a file loads from the files it includes too
+        written = all(
+            real_path(o.location.file) == real_path(o.file)
+            for c in pair_clashes
+            for o in (c.first, c.second)
+        )
+        verb = "declare" if written else "load"
         constraints.append(
             Constraint(
                 ConstraintKind.EXCLUDES,
                 (a.id, b.id),
                 ~(a.variable & b.variable & condition),
                 condition,
-                f"{a.id} and {b.id} both declare {', '.join(names[:3])}"
+                (
+                    f"{a.id} loads {', '.join(names[:3])} twice"
+                    if a is b
+                    else f"{a.id} and {b.id} both {verb} {', '.join(names[:3])}"
+                )
                 + (f" (+{len(names) - 3} more)" if len(names) > 3 else ""),
                 tuple(loc for c in pair_clashes for loc in (c.first.location, c.second.location)),
                 space.valid_implies(condition),

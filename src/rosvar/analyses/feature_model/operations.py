@@ -7,10 +7,12 @@ import os
 from dataclasses import dataclass
 from enum import StrEnum
 
-from rosvar.analyses.feature_model.model import FeatureModel, name_of, value_text
+from rosvar.analyses.feature_model.features import name_of, value_text
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.solver import Solver
+from rosvar.logic.atoms import FileAtom, SlotAtom
 from rosvar.logic.bdd import BDD, cofactors, conjoin, walked_support
-from rosvar.logic.conditions import ConditionSpace, FileAtom, SlotAtom
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
 
 
@@ -199,6 +201,7 @@ def _cheapest(space: ConditionSpace, u: BDD, memo: dict[BDD, Path]) -> Path:
     if u in memo:
         return memo[u]
     var = u.var
+    assert var is not None  # neither constant
     low, high = cofactors(u)
     low_cost, low_path = _cheapest(space, low, memo)
     high_cost, high_path = _cheapest(space, high, memo)

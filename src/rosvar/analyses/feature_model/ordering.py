@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Iterable, Mapping, Sequence
 
-from rosvar.analyses.feature_model.model import FileFeature
+from rosvar.analyses.feature_model.features import FileFeature
 
 FORCE_ROUNDS = 100
 FORCE_PATIENCE = 10  # rounds without a shorter span before FORCE stops
@@ -66,7 +66,7 @@ def _force(files: list[str], touching: Mapping[str, list[tuple[str, ...]]]) -> l
     constraints' sizes per round. A clashing name is one constraint over all the files
     declaring it, not a pull between each pair of them: taken pairwise, a name declared by
     ten files weighed as 45 links and dragged its files together at the cost of every
-    other constraint (docs/performance.md, session 13).
+    other constraint (docs/performance.md, "Feature model", variable order).
     """
     edges = list(dict.fromkeys(edge for f in files for edge in touching[f]))
     if not edges:

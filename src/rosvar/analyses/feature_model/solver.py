@@ -11,10 +11,10 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from functools import cached_property
 
-from rosvar.analyses.conflicts import Occurrence
+from rosvar.analyses.conflicts import Clash, Occurrence
 from rosvar.analyses.feature_model.counting import CountedDiagram
 from rosvar.analyses.feature_model.exclusions import declaring, excluding, exclusions
-from rosvar.analyses.feature_model.model import Constraint, FileFeature, ModelTooLarge, name_of
+from rosvar.analyses.feature_model.features import Constraint, FileFeature, ModelTooLarge, name_of
 from rosvar.analyses.feature_model.ordering import order, widest_cut
 from rosvar.logic import bdd
 from rosvar.logic.bdd import (
@@ -239,8 +239,8 @@ CUT_BUDGET = 300
 before the solver is not attempted. The corpus and the generated workspaces shaped like it
 stay below 110, whatever their size (systems side by side are ordered apart); workspaces
 whose files each clash with dozens of others cross it at a hundred files, and their
-diagrams outgrow the memory budget only after many seconds (docs/performance.md, session
-10)."""
+diagrams outgrow the memory budget only after many seconds (docs/performance.md, "Feature
+model", budgets)."""
 
 
 def build(
@@ -249,6 +249,7 @@ def build(
     requires: Sequence[Constraint],
     buckets: Mapping[tuple[str, str], Sequence[Occurrence]],
     constraints: Callable[[], Sequence[Constraint]],
+    internal: Sequence[Clash] = (),
 ) -> Solver:
     """The whole feature model over file and value variables only, one BDD per component.
 
@@ -258,7 +259,8 @@ def build(
     Exclusions enter per clashing name, not per pair of files (``exclusions``), and
     the pairs of files they link are found per name too (``excluding``): the
     pairwise ``excludes`` constraints (``constraints``, every cross-tree constraint)
-    are built only if asked for.
+    are built only if asked for. ``internal`` clashes exclude their file (the engine's
+    model: a file loading two nodes of one name fails alone).
     """
     files = {f.file: f for f in features}
     declared = declaring(space, files, buckets)
@@ -284,7 +286,9 @@ def build(
         for constraint in requires:
             linked.join(constraint.files)
             pieces.append((constraint.files[0], translate(constraint.formula)))
-        for members, exclusion in exclusions(space, manager, files, declared, kept, translate):
+        for members, exclusion in exclusions(
+            space, manager, files, declared, kept, translate, internal
+        ):
             linked.join(members)
             pieces.append((members[0], exclusion))
         grouped: dict[str, list[BDD]] = {}
@@ -355,4 +359,4 @@ def memory_bound(manager: Manager, files: int) -> Iterator[None]:
         with bdd.memory_bound(manager, MEMORY_BUDGET + MEMORY_PER_FILE * files):
             yield
     except bdd.OutOfMemory as error:
-        raise ModelTooLarge(*error.args) from error
+        raise ModelTooLarge(str(error)) from error

@@ -12,7 +12,14 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from rosvar.analyses.communication import JSON_SIDES, SIDES, Channel, Edge, model_edges
+from rosvar.analyses.communication import (
+    JSON_SIDES,
+    SIDES,
+    Channel,
+    Described,
+    Edge,
+    model_edges,
+)
 from rosvar.analyses.query.collections import (
     Collection,
     Element,
@@ -37,32 +44,37 @@ DOCS = {
 }
 
 
-def channel_collections(interfaces: Interfaces) -> dict[str, Collection]:
-    """``topics``, ``services`` and ``actions`` of the communication graph of ``interfaces``."""
+def channel_collections(
+    interfaces: Interfaces, described: Described | None = None
+) -> dict[str, Collection]:
+    """``topics``, ``services`` and ``actions`` of the communication graph of ``interfaces``
+    (and of what ``described`` adds: a spawned robot description's plugins, bridges)."""
     found = {}
     for channel in Channel:
         sides = JSON_SIDES[channel]
         remaps = ("remapped_by",) if channel == Channel.TOPICS else ()
         attributes = ("name", "types", *sides, *remaps, "launch_file")
-        provider = _provider(channel, interfaces)
+        provider = _provider(channel, interfaces, described)
         found[str(channel)] = Collection(str(channel), attributes, provider, DOCS[channel])
     return found
 
 
 def _provider(
-    channel: Channel, interfaces: Interfaces
+    channel: Channel, interfaces: Interfaces, described: Described | None
 ) -> Callable[[Analysis, LaunchModel], list[Element]]:
     def elements(analysis: Analysis, model: LaunchModel) -> list[Element]:
         space = analysis.space
         entry = analysis.label(model.file)
         nodes: dict[tuple[Location, str | None], Element] = {}
+        declared: dict[Location, Element] = {}  # a plugin's edge names its spawner's place
         for decl, node in node_elements(analysis, model):
             nodes[decl.location, node.name] = node
+            declared.setdefault(decl.location, node)
             if decl.value(decl.schema.name).values() == [None]:
                 # a ROS 2 node the launch file does not name: its code does (the edge's)
                 nodes[decl.location, None] = node
         named: dict[str, list[Edge]] = {}
-        for edge in model_edges(space, model, interfaces):
+        for edge in model_edges(space, model, interfaces, described):
             if edge.static and edge.channel == channel:
                 named.setdefault(edge.name, []).append(edge)
         remapped = {}
@@ -75,7 +87,11 @@ def _provider(
             presence = space.false
             for edge in edges:
                 presence |= edge.condition
-                user = nodes.get((edge.launch, edge.node)) or nodes.get((edge.launch, None))
+                user = (
+                    nodes.get((edge.launch, edge.node))
+                    or nodes.get((edge.launch, None))
+                    or declared.get(edge.launch)
+                )
                 if user is not None:
                     sides[SIDES[channel].index(edge.role)].append((edge.condition, user))
             location: Location | None = edges[0].launch if edges else None

@@ -261,7 +261,7 @@ def _launch_files(analysis: Analysis, model: LaunchModel) -> list[Element]:
     """The entry file itself: always present in its own model."""
     space = analysis.space
     entry = analysis.label(model.file)
-    loads = model.loads if model.loads is not None else space.true
+    loads = model.loads
     values: dict[str, Choice[object]] = {
         "name": _const(space, entry),
         "path": _const(space, model.file),

@@ -424,16 +424,37 @@ def _sequence(value: object) -> str | list[object] | tuple[object, ...] | dict[o
 
 def _bounded(function: Callable[[Any, Any], Any], left: object, right: object) -> object:
     """Arithmetic on plain values; sequences built by ``+`` and ``*`` stay below the bound,
-    and ``%`` is arithmetic only (string formatting could render anything)."""
+    counted with what they hold (``[[0] * 999999] * 999999`` is refused, not a list of
+    999999 references that any later step walks whole), and ``%`` is arithmetic only
+    (string formatting could render anything)."""
     if function is operator.mod and not isinstance(left, (int, float)):
         raise TypeError("% takes numbers")
     if function in (operator.add, operator.mul):
-        size = 1
+        size = 0
         for operand, other in ((left, right), (right, left)):
             if isinstance(operand, (str, list, tuple)):
-                size = len(operand) * (other if isinstance(other, int) else 1) + (
-                    len(other) if isinstance(other, (str, list, tuple)) else 0
-                )
+                if function is operator.mul and isinstance(other, int):
+                    size = _weight(operand) * max(other, 0)
+                else:
+                    size += _weight(operand)
         if size > MAX_SEQUENCE:
             raise QueryError(f"the query builds a sequence longer than {MAX_SEQUENCE:,}")
     return function(left, right)
+
+
+def _weight(value: object) -> int:
+    """How many elements (characters of a string) ``value`` holds, nested ones counted as
+    often as they appear; counting stops past ``MAX_SEQUENCE`` (bounded work)."""
+    total = 0
+    stack: list[object] = [value]
+    while stack and total <= MAX_SEQUENCE:
+        item = stack.pop()
+        if isinstance(item, str):
+            total += len(item)
+        elif isinstance(item, (list, tuple)):
+            total += len(item)
+            stack.extend(item[: MAX_SEQUENCE - total + 1])
+        elif isinstance(item, dict):
+            total += len(item)
+            stack.extend(list(item.values())[: MAX_SEQUENCE - total + 1])
+    return total

@@ -17,6 +17,10 @@ globals):
    sorted`` are allowed here; roslaunch would accept any builtin);
 4. otherwise the name is undefined (:class:`EvalFailed`).
 
+xacro's ``${}`` resolves names its own way (:attr:`EvalEnvironment.symbols`): the document's
+typed properties first, then ``math``/``python`` namespaces (``math.pi``), then ``True``,
+``False``, the builtins and math names; nothing else.
+
 So an arg named like a math name (``e``, ``pi``, ``log``) is only reachable as ``arg('e')``, and
 an arg named like a builtin (``len``) hides it.  Inside a comprehension body Python compiles free
 names as globals, so roslaunch sees only the comprehension's own variables and the builtins
@@ -35,6 +39,10 @@ the static whitelist check) and ``interpreter``; this module holds the public AP
 
 from __future__ import annotations
 
+import ast
+from collections.abc import Callable
+from typing import TypeVar
+
 from rosvar.interpreter.safe_eval.checking import _checked
 from rosvar.interpreter.safe_eval.errors import EvalFailed, EvalRefused
 from rosvar.interpreter.safe_eval.interpreter import _Interpreter, convert_auto
@@ -50,6 +58,8 @@ from rosvar.interpreter.safe_eval.limits import (
     MAX_WORK,
 )
 from rosvar.interpreter.safe_eval.names import EvalEnvironment
+
+_T = TypeVar("_T")
 
 __all__ = [
     "MAX_COMBINATORIC_ARGUMENT",
@@ -67,7 +77,9 @@ __all__ = [
     "compared_literals",
     "convert_auto",
     "evaluate",
+    "evaluate_value",
     "referenced_args",
+    "referenced_names",
 ]
 
 
@@ -81,6 +93,13 @@ def referenced_args(expr: str) -> frozenset[str]:
     """
     _tree, _source, analysis = _checked(expr)
     return frozenset(analysis.args)
+
+
+def referenced_names(expr: str, namespaces: frozenset[str] = frozenset()) -> frozenset[str]:
+    """Every free name the expression reads or calls (xacro's properties may shadow any of
+    them); raises :class:`EvalRefused` like :func:`referenced_args`."""
+    _tree, _source, analysis = _checked(expr, namespaces)
+    return frozenset(analysis.names)
 
 
 def compared_literals(expr: str) -> dict[str, set[str]]:
@@ -103,10 +122,22 @@ def evaluate(expr: str, env: EvalEnvironment) -> str:
     Raises :class:`EvalRefused` for disallowed expressions and exceeded resource guards, and
     :class:`EvalFailed` where roslaunch would raise at run time.
     """
-    tree, source, _analysis = _checked(expr)
+    return _evaluated(expr, env, _Interpreter.run)
+
+
+def evaluate_value(expr: str, env: EvalEnvironment) -> object:
+    """The value of ``expr`` itself, not its text (xacro's ``${}``): under the same
+    whitelist and guards as :func:`evaluate`."""
+    return _evaluated(expr, env, _Interpreter.value)
+
+
+def _evaluated(
+    expr: str, env: EvalEnvironment, run: Callable[[_Interpreter, ast.Expression], _T]
+) -> _T:
+    tree, source, _analysis = _checked(expr, frozenset(env.namespaces))
     interpreter = _Interpreter(env, source)
     try:
-        return interpreter.run(tree)
+        return run(interpreter, tree)
     except (EvalRefused, EvalFailed) as exc:
         if exc.col < 0:
             exc.col = source.prefix

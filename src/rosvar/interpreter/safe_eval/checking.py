@@ -59,11 +59,14 @@ class _Source:
 
 
 @functools.lru_cache(maxsize=4096)
-def _checked(expr: str) -> tuple[ast.Expression, _Source, _Analyser]:
+def _checked(
+    expr: str, namespaces: frozenset[str] = frozenset()
+) -> tuple[ast.Expression, _Source, _Analyser]:
     """Parsed and checked once per text (read-only afterwards): an expression is evaluated
-    for every combination of the values of the args it reads, in every includer."""
+    for every combination of the values of the args it reads, in every includer.
+    ``namespaces``: names whose members may be read (``math.pi``, xacro's)."""
     tree, source = _parse(expr)
-    return tree, source, _analyse(tree, source)
+    return tree, source, _analyse(tree, source, namespaces)
 
 
 def _parse(expr: str) -> tuple[ast.Expression, _Source]:
@@ -95,9 +98,11 @@ def _parse(expr: str) -> tuple[ast.Expression, _Source]:
 class _Analyser:
     """Whitelist check; also records the args an expression reads and the literals it compares."""
 
-    def __init__(self, source: _Source) -> None:
+    def __init__(self, source: _Source, namespaces: frozenset[str]) -> None:
         self._source = source
+        self._namespaces = namespaces
         self.args: set[str] = set()
+        self.names: set[str] = set()  # every free name read or called
         self.compared: dict[str, set[str]] = {}
 
     def _refuse(self, message: str, node: ast.AST) -> NoReturn:
@@ -115,8 +120,10 @@ class _Analyser:
                 self._refuse(f"{type(node.value).__name__} literals are not allowed", node)
         elif isinstance(node, ast.Name):
             self._check_identifier(node.id, node)
-            if bound is None and node.id not in _NOT_ARG_NAMES:
-                self.args.add(node.id)
+            if bound is None:
+                self.names.add(node.id)
+                if node.id not in _NOT_ARG_NAMES:
+                    self.args.add(node.id)
         elif isinstance(node, ast.BoolOp):
             for value in node.values:
                 self.visit(value, bound)
@@ -157,6 +164,8 @@ class _Analyser:
             self._visit_call(node, bound)
         elif isinstance(node, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
             self._visit_comprehension(node, bound)
+        elif isinstance(node, ast.Attribute) and self._member(node, bound):
+            self.visit(node.value, bound)
         elif isinstance(node, ast.Attribute):
             raise EvalRefused(
                 f"attribute access '.{node.attr}' is not allowed"
@@ -167,10 +176,24 @@ class _Analyser:
             message = REFUSED_NODES.get(type(node), f"{type(node).__name__} is not allowed")
             self._refuse(message, node)
 
+    def _member(self, node: ast.Attribute, bound: frozenset[str] | None) -> bool:
+        """Whether ``node`` reads a member of a namespace (not of a comprehension's name)."""
+        self._check_identifier(node.attr, node)
+        value = node.value
+        return (
+            isinstance(value, ast.Name)
+            and value.id in self._namespaces
+            and (bound is None or value.id not in bound)
+        )
+
     def _visit_call(self, node: ast.Call, bound: frozenset[str] | None) -> None:
         func = node.func
-        if isinstance(func, ast.Name):
+        if isinstance(func, ast.Attribute) and self._member(func, bound):
+            self.visit(func, bound)
+        elif isinstance(func, ast.Name):
             self._check_identifier(func.id, func)
+            if bound is None:
+                self.names.add(func.id)
             if func.id not in _CALLABLE_NAMES:
                 self._refuse(
                     f"calling '{func.id}' is not allowed (only whitelisted builtins, math"
@@ -249,8 +272,8 @@ class _Analyser:
                     self.compared.setdefault(name, set()).update(t for t in texts if t is not None)
 
 
-def _analyse(tree: ast.Expression, source: _Source) -> _Analyser:
-    analyser = _Analyser(source)
+def _analyse(tree: ast.Expression, source: _Source, namespaces: frozenset[str]) -> _Analyser:
+    analyser = _Analyser(source, namespaces)
     try:
         analyser.visit(tree.body, None)
     except RecursionError:

@@ -39,6 +39,7 @@ from rosvar.interpreter.safe_eval.names import (
     _MULT,
     _PYTHON_BUILTIN_NAMES,
     _SIZED,
+    _SYMBOL_GLOBALS,
     _UNARY_OPS,
     EvalEnvironment,
 )
@@ -106,6 +107,18 @@ class _Function(FunctionValue):
         return self._display
 
 
+class _Namespace:
+    """A namespace of the environment (``math``), whose members only are values."""
+
+    __slots__ = ("name",)
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+    def __repr__(self) -> str:
+        return f"<namespace {self.name}>"
+
+
 class _Interpreter:
     """Evaluates a checked AST; one instance per evaluation (it owns the iteration budget)."""
 
@@ -131,6 +144,14 @@ class _Interpreter:
             return value
         self._check_rendered(value)
         return self._guarded(tree.body, str, value)
+
+    def value(self, tree: ast.Expression) -> object:
+        """The expression's value itself (xacro keeps a lone ``${}``'s type); a function or
+        namespace as the text ``str()`` would give."""
+        value = self._eval(tree.body, None)
+        if isinstance(value, FunctionValue | _Namespace):
+            return repr(value)
+        return value
 
     # ----------------------------------------------------------------- helpers
 
@@ -221,6 +242,8 @@ class _Interpreter:
 
     def _lookup(self, node: ast.Name, scope: ChainMap[str, object] | None) -> object:
         name = node.id
+        if self._env.symbols is not None and (scope is None or name not in scope):
+            return self._symbol(node)
         if scope is not None:
             if name in scope:
                 return scope[name]
@@ -241,6 +264,45 @@ class _Interpreter:
             return convert_auto(raw)
         return self._builtin(node, f"arg '{name}' is not defined")
 
+    def _symbol(self, node: ast.Name) -> object:
+        """A name of a symbols environment: a property, a namespace, a global."""
+        assert self._env.symbols is not None
+        try:
+            return self._env.symbols(node.id)
+        except KeyError:
+            pass
+        if node.id in self._env.namespaces:
+            return _Namespace(node.id)
+        if node.id in _SYMBOL_GLOBALS:
+            return self._global(node.id)
+        raise EvalFailed(f"NameError: name '{node.id}' is not defined", self._col(node))
+
+    def _global(self, name: str) -> object:
+        """A global name's value (a bool, a math constant, a function)."""
+        if name in _BOOL_NAMES:
+            return _BOOL_NAMES[name]
+        value = _MATH_NAMES.get(name)
+        if value is not None and not callable(value):
+            return value
+        return self._function(name)
+
+    def _member(self, node: ast.Attribute, scope: ChainMap[str, object] | None) -> object:
+        """``ns.member`` of a namespace (the checker allows no other attribute)."""
+        receiver = self._eval(node.value, scope)
+        if not isinstance(receiver, _Namespace):
+            raise EvalFailed(
+                f"AttributeError: '{type(receiver).__name__}' object has no attribute "
+                f"'{node.attr}'",
+                self._source.attr_col(node),
+            )
+        name = self._env.namespaces[receiver.name].get(node.attr)
+        if name is None or not (name in self._env.functions or name in _SYMBOL_GLOBALS):
+            raise EvalRefused(
+                f"'{receiver.name}.{node.attr}' is not available to the evaluator",
+                self._source.attr_col(node),
+            )
+        return self._global(name)
+
     def _builtin(self, node: ast.Name, missing: str) -> object:
         if node.id in _BUILTIN_FUNCTIONS:
             return self._function(node.id)
@@ -259,6 +321,8 @@ class _Interpreter:
         """Display text and guarded implementation of a callable name."""
         if name == "arg":
             return "<function arg>", self._arg
+        if name in self._env.functions:
+            return f"<function {name}>", self._env.functions[name]
         if name in _HOST_FUNCTION_NAMES:
             host = self._env.functions.get(name)
             return f"<function {name}>", host if host is not None else self._unavailable(name)
@@ -437,6 +501,8 @@ class _Interpreter:
             return result
         if isinstance(node, ast.Call):
             return self._call(node, scope)
+        if isinstance(node, ast.Attribute):
+            return self._member(node, scope)
         if isinstance(node, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
             return self._comprehension(node, scope)
         raise EvalRefused(f"{type(node).__name__} is not allowed", self._col(node))
@@ -460,7 +526,7 @@ class _Interpreter:
 
     def _call(self, node: ast.Call, scope: ChainMap[str, object] | None) -> object:
         func = node.func
-        if isinstance(func, ast.Attribute):
+        if isinstance(func, ast.Attribute) and not self._names_member(func, scope):
             receiver = self._eval(func.value, scope)
             if not isinstance(receiver, str):  # Python looks the method up before the arguments
                 kind = type(receiver).__name__
@@ -482,6 +548,15 @@ class _Interpreter:
                 f"TypeError: '{type(callee).__name__}' object is not callable", self._col(node)
             )
         return self._guarded(node, callee, *args, **kwargs)
+
+    def _names_member(self, func: ast.Attribute, scope: ChainMap[str, object] | None) -> bool:
+        """Whether ``func`` is ``ns.member`` of a namespace rather than a str method."""
+        value = func.value
+        return (
+            isinstance(value, ast.Name)
+            and value.id in self._env.namespaces
+            and isinstance(self._eval(value, scope), _Namespace)
+        )
 
     def _arguments(
         self, node: ast.Call, scope: ChainMap[str, object] | None

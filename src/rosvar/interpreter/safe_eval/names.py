@@ -25,6 +25,14 @@ class EvalEnvironment:
 
     lookup_arg: Callable[[str], str]
     functions: Mapping[str, Callable[..., object]] = field(default_factory=dict)
+    symbols: Callable[[str], object] | None = None
+    """Set for xacro's ``${}``: a bare name is first the typed value this returns (a
+    property; ``KeyError`` when none is defined), then a namespace of ``namespaces``, then
+    one of :data:`_SYMBOL_GLOBALS`; roslaunch's names (args, ``true``, host functions) are
+    not names there, as in xacro's symbol table."""
+    namespaces: Mapping[str, Mapping[str, str]] = field(default_factory=dict)
+    """Namespaces whose members an expression reads as ``ns.member`` (xacro's ``math.pi``,
+    ``python.len``): each member stands for the global name it maps to."""
 
 
 _HOST_FUNCTION_NAMES: Final = frozenset({"arg", "env", "optenv", "find", "anon", "dirname"})
@@ -45,6 +53,9 @@ _BUILTIN_FUNCTIONS: Final[Mapping[str, Callable[..., object]]] = {
     )
 }  # fmt: skip
 _PYTHON_BUILTIN_NAMES: Final = frozenset(name for name in dir(builtins) if "__" not in name)
+#: The global names of a symbols environment (xacro's): no args, host functions or
+#: lower-case booleans.
+_SYMBOL_GLOBALS: Final = frozenset({"True", "False"}).union(_MATH_NAMES, _BUILTIN_FUNCTIONS)
 _STR_METHODS: Final = frozenset(
     {
         "lower", "upper", "strip", "lstrip", "rstrip", "startswith", "endswith", "replace",

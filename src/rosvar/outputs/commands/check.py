@@ -16,6 +16,7 @@ FAIL_LEVELS = {Severity.NOTE: 0, Severity.WARNING: 1, Severity.ERROR: 2}
 
 def cmd_check(options: argparse.Namespace) -> int:
     from rosvar.analyses.checks import check_models
+    from rosvar.analyses.robot_description.edges import Simulation
     from rosvar.outputs.documents.findings import finding_document
     from rosvar.outputs.sarif import sarif
 
@@ -24,7 +25,10 @@ def cmd_check(options: argparse.Namespace) -> int:
         return EXIT_INPUT
     interfaces = interfaces_of(analysis.workspace, options)
     models = analysis.all_models(progress)
-    findings = check_models(analysis.space, models, interfaces, analysis.workspace.confinement())
+    described = Simulation(analysis)
+    findings = check_models(
+        analysis.space, models, interfaces, analysis.workspace.confinement(), described
+    )
     if options.format == "sarif":
         print_json(sarif(findings, analysis.space))
     elif options.format == "json":

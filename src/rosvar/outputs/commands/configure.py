@@ -6,11 +6,12 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Sequence
+from dataclasses import replace
 from typing import TYPE_CHECKING, cast
 
 from rosvar.outputs.commands.exit_codes import EXIT_FAILS, EXIT_OK, EXIT_USAGE
 from rosvar.outputs.commands.loading import analysis_with_env, interfaces_of
-from rosvar.outputs.commands.terminal import building, print_json, progress
+from rosvar.outputs.commands.terminal import building, print_json, progress, relative_location
 from rosvar.ros.version import RosVersion
 
 if TYPE_CHECKING:
@@ -18,6 +19,8 @@ if TYPE_CHECKING:
 
 SHOWN_NAMES = 3
 """The clashing names a conflict's line shows at most (the nodes are always shown)."""
+SHOWN_UNKNOWN = 5
+"""The places rosvar could not read that the summary lists (``--json`` has them all)."""
 
 
 def cmd_configure(options: argparse.Namespace) -> int:
@@ -53,16 +56,16 @@ def cmd_configure(options: argparse.Namespace) -> int:
         print_json(state_document(state))
     else:
         _print_state(state, analysis.workspace.ros_version)
-    return EXIT_FAILS if state.refused else EXIT_OK
+    return EXIT_FAILS if state.refused or state.launches is False else EXIT_OK
 
 
 def _print_state(state: ConfigurationState, ros: RosVersion) -> None:
     """The summary of a configuration step, for people (a ROS 2 node holds its own
     parameters: they are counted on the nodes, not as the parameter server's)."""
-    from rosvar.analyses.feature_model.model import FeatureKind
-    from rosvar.configuration.derivation import Presence
+    from rosvar.analyses.feature_model.features import FeatureKind
     from rosvar.configuration.engine import Selection
     from rosvar.configuration.graph import ElementKind
+    from rosvar.configuration.presence import Presence
     from rosvar.outputs.describe import count_text
 
     features = state.features.values()
@@ -97,11 +100,14 @@ def _print_state(state: ConfigurationState, ros: RosVersion) -> None:
             f"conflict ({conflict.status}): {' and '.join(conflict.files)}: "
             f"{_clashing(conflict.names)}{when}"
         )
+    _print_unknown(state)
     if state.complete:
         print(
             state.command
             or "nothing to launch (no file selected, or an <other> value lacks its text)"
         )
+        if state.launches is False:
+            print("this product does not launch: roslaunch stops at the errors or conflicts above")
         return
     open_files = [k for k, f in files if f.state == Selection.UNSELECTED]
     open_args = [
@@ -126,3 +132,17 @@ def _clashing(names: Sequence[str]) -> str:
     if not left:
         return ", ".join(shown)
     return f"{', '.join(shown)} and {left} param{'s' if left > 1 else ''}"
+
+
+def _print_unknown(state: ConfigurationState) -> None:
+    """What rosvar could not read of the selected files, said at every step while it lasts:
+    the graph shown may lack what those places load."""
+    count = len(state.unknown)
+    if not count:
+        return
+    places = "place" if count == 1 else "places"
+    print(f"not known: {count} {places} of the selected files that rosvar could not read")
+    for diagnostic in state.unknown[:SHOWN_UNKNOWN]:
+        print(f"  {replace(diagnostic, location=relative_location(diagnostic.location))}")
+    if count > SHOWN_UNKNOWN:
+        print(f"  ... {count - SHOWN_UNKNOWN} more (use --json)")

@@ -143,7 +143,9 @@ def interfaces_of(
     from rosvar.workspace.interfaces.extraction import extract_interfaces
     from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
 
-    interfaces = extract_interfaces(workspace.packages.values() if packages is None else packages)
+    everything = workspace.packages.values()
+    chosen = everything if packages is None else packages
+    interfaces = extract_interfaces(chosen, workspace.confinement(), everything)
     hints = hints_of(options)
     interfaces.diagnostics.extend(hints.diagnostics)
     if getattr(options, "catalogue", True) and workspace.ros_version == RosVersion.ROS1:

@@ -20,6 +20,7 @@ def cmd_query(options: argparse.Namespace) -> int:
     from rosvar.analyses.query.channels import channel_collections
     from rosvar.analyses.query.evaluator import QueryEngine
     from rosvar.analyses.query.parser import QueryError
+    from rosvar.analyses.robot_description.edges import Simulation
     from rosvar.outputs.documents.query import result_document
 
     words = [*options.words, *options.mappings]
@@ -33,7 +34,8 @@ def cmd_query(options: argparse.Namespace) -> int:
         return EXIT_INPUT
     analysis.all_models(progress)  # interpreted once, with the progress shown
     interfaces = interfaces_of(analysis.workspace, options)
-    engine = QueryEngine(analysis, collections=channel_collections(interfaces))
+    simulation = Simulation(analysis)
+    engine = QueryEngine(analysis, collections=channel_collections(interfaces, simulation))
     warn_unknown_args(analysis, [m.file for m in engine.models], args)
     try:
         results = engine.run(expression, args)

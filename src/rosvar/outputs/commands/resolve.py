@@ -27,6 +27,7 @@ if TYPE_CHECKING:
 
 def cmd_resolve(options: argparse.Namespace) -> int:
     from rosvar.analyses.communication import resolved_graph
+    from rosvar.analyses.robot_description.edges import configuration_edges
     from rosvar.interpreter.workspace_models import Analysis
     from rosvar.outputs.documents.resolution import graph_document, resolution_document
 
@@ -52,12 +53,16 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         env_values={k: [v] for k, v in env.items()},
     )
     warn_unknown_args(analysis, files, args)
+    # before resolving: reading the descriptions declares the environment they read
+    simulated = configuration_edges(analysis, files, args, env)
     result = analysis.resolve(files, args, env)
+    if result.ok:
+        result.errors.extend(simulated.errors)
     interfaces = interfaces_of(workspace, options)
     for diagnostic in interfaces.diagnostics:
         if diagnostic.code == "hints-invalid":
             print(diagnostic, file=sys.stderr)
-    graph = resolved_graph(result.nodes, interfaces, result.params)
+    graph = resolved_graph(result.nodes, interfaces, result.params, simulated.edges)
     if options.json:
         print_json({**resolution_document(result), **graph_document(graph)})
     else:

@@ -11,11 +11,16 @@ def entry_document(entry: Entry) -> dict[str, object]:
     """One use of a name: a param's default (an expression as written), another role's
     type; the optional fields only where they say something."""
     document: dict[str, object] = {"name": entry.name}
-    if entry.role is Role.PARAMS:
+    if entry.role is not Role.PARAMS:
+        document["type"] = entry.type
+    if entry.named_by is not None:
+        named = {"parameter": entry.named_by.parameter}
+        if entry.named_by.namespace:
+            named["namespace"] = entry.named_by.namespace
+        document["named_by"] = named
+    if entry.role is Role.PARAMS or entry.named_by is not None:
         value = entry.default
         document["default"] = {"expression": value.text} if isinstance(value, Expression) else value
-    else:
-        document["type"] = entry.type
     document["file"] = entry.location.file
     document["line"] = entry.location.line
     document["origin"] = str(entry.origin)

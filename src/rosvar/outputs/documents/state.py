@@ -12,6 +12,7 @@ from rosvar.configuration.choices import Refusal, UserChoice
 from rosvar.configuration.conflicts import ConflictState
 from rosvar.configuration.engine import ConfigurationState, FeatureState
 from rosvar.configuration.view import Graph
+from rosvar.outputs.documents.diagnostics import diagnostic_document
 
 EXACT_INTEGER = 2**53
 """Larger counts of configurations are written as strings (JSON readers lose the digits)."""
@@ -20,12 +21,14 @@ _FEATURES: WeakKeyDictionary[FeatureState, dict[str, object]] = WeakKeyDictionar
 """Each feature state's document, kept while the engine keeps the state."""
 
 
-def state_document(state: ConfigurationState) -> dict[str, object]:
+def state_document(state: ConfigurationState, graph: Graph | None = None) -> dict[str, object]:
+    """``graph``: the state's graph as the document shows it (default: ``state.graph``, its
+    conditions described; the web page's overview reads ``state.outline``)."""
     count = state.configurations
     return {
         "features": {k: feature_document(v) for k, v in state.features.items()},
         "conflicts": [conflict_document(c) for c in state.conflicts],
-        "graph": graph_document(state.graph),
+        "graph": graph_document(state.graph if graph is None else graph),
         "complete": state.complete,
         "command": state.command,
         "refused": [refusal_document(r) for r in state.refused],
@@ -34,6 +37,8 @@ def state_document(state: ConfigurationState) -> dict[str, object]:
         "unselected": state.unselected,
         "launched": [launch.spelled for group in state.commands for launch in group],
         "untyped": state.untyped,
+        "launches": state.launches,
+        "unknown": [diagnostic_document(d) for d in state.unknown],
     }
 
 

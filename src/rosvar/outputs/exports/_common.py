@@ -10,13 +10,13 @@ import os
 from dataclasses import dataclass
 
 from rosvar.analyses.conflicts import Clash
-from rosvar.analyses.feature_model.model import (
+from rosvar.analyses.feature_model.features import (
     ArgFeature,
     FeatureKind,
-    FeatureModel,
     FileFeature,
     ValueFeature,
 )
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.operations import simplest_trigger
 from rosvar.logic.bdd import BDD
 

@@ -13,7 +13,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 
-from rosvar.analyses.feature_model.model import FeatureModel, FileFeature
+from rosvar.analyses.feature_model.features import FileFeature
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.logic.bdd import BDD, cofactors
 from rosvar.outputs.exports._common import Tree
 

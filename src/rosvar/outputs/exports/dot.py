@@ -9,13 +9,13 @@ its condition when it has one.
 
 from __future__ import annotations
 
-from rosvar.analyses.feature_model.model import (
+from rosvar.analyses.feature_model.features import (
     ArgFeature,
     ConstraintKind,
-    FeatureModel,
     FileFeature,
     ValueFeature,
 )
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.outputs.exports._common import Tree
 
 

@@ -11,7 +11,8 @@ from __future__ import annotations
 
 from xml.etree import ElementTree as ET
 
-from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature
+from rosvar.analyses.feature_model.features import ArgFeature, FileFeature
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.outputs.exports._common import Entry, Tree
 from rosvar.outputs.exports._formula import And, Formula, Implies, Not, Or, Var, exported
 

@@ -10,7 +10,8 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from rosvar.analyses.feature_model.model import ArgFeature, FeatureModel, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.features import ArgFeature, FileFeature, ValueFeature
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.operations import (
     VerdictKind,
     core_and_dead,

@@ -10,14 +10,14 @@ from __future__ import annotations
 from collections import Counter
 from dataclasses import replace
 
-from rosvar.analyses.feature_model.model import (
+from rosvar.analyses.feature_model.features import (
     ArgFeature,
     ConstraintKind,
     FeatureKind,
-    FeatureModel,
     FileFeature,
     ValueFeature,
 )
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.operations import core_and_dead, count_configurations
 from rosvar.diagnostics import Location, Severity
 from rosvar.outputs.describe import count_text

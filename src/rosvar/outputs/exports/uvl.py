@@ -8,7 +8,8 @@ itself, so that the names remain distinct and decode back with ``urllib.parse.un
 
 from __future__ import annotations
 
-from rosvar.analyses.feature_model.model import ArgFeature, FeatureKind, FeatureModel, ValueFeature
+from rosvar.analyses.feature_model.features import ArgFeature, FeatureKind, ValueFeature
+from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.outputs.exports._common import Tree
 from rosvar.outputs.exports._formula import exported, render
 

@@ -6,7 +6,10 @@ text), and a bad request becomes an :class:`ApiError` with a 4xx status and a me
 A request that names the ``version`` of the state its tab holds is answered with a delta
 against it (:mod:`rosvar.outputs.web.sessions`); the others get the whole state.
 Engine calls are serialised by one lock: the BDD manager is not thread-safe, and the HTTP
-server answers each connection in its own thread.
+server runs API calls in several threads. A call waits for the engine at most
+``ENGINE_WAIT`` (its time budget), then is answered 503, which the page tries again: a slow
+step of one client never keeps another's request waiting without end. The catalog needs no
+engine: it is answered at once.
 """
 
 from __future__ import annotations
@@ -14,24 +17,27 @@ from __future__ import annotations
 import functools
 import threading
 from collections.abc import Callable, Mapping
-from functools import cached_property
 from http import HTTPStatus
 from typing import TypeVar
 
-from rosvar.analyses.feature_model.model import FeatureKind
+from rosvar.analyses.feature_model.features import FeatureKind
 from rosvar.analyses.query.parser import QueryError
 from rosvar.configuration.choices import Action, ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.session import Session
 from rosvar.outputs.documents.state import state_document
 from rosvar.outputs.web.inspection import Inspector
-from rosvar.outputs.web.overview import Grouping, MemberKind, catalog, compact, members
+from rosvar.outputs.web.overview import Grouping, MemberKind, catalog, compact, links, members
 from rosvar.outputs.web.sessions import DEFAULT_CAPACITY, SessionStore, Tab
 
 MAX_TEXT = 4096
 """Longest accepted string field (feature ids and typed values are far shorter)."""
 
 MAX_PAGE = 100_000
+MAX_GROUPS = 10_000
+"""Most groups whose links one request asks for (the page asks for the boxes it draws)."""
+ENGINE_WAIT = 20.0
+"""Seconds a call waits for the engine, busy with another's, before it is answered 503."""
 StrEnumT = TypeVar("StrEnumT", Grouping, MemberKind)
 
 Body = Mapping[str, object]
@@ -89,6 +95,18 @@ def _only(fields: Mapping[str, object], allowed: set[str]) -> None:
         raise ApiError(HTTPStatus.BAD_REQUEST, f"unknown field(s): {', '.join(unknown)}")
 
 
+class _Asking:
+    """The requests in ``Api.handle``, answered or waiting for the lock: the findings' listing
+    gives way to them. Apart from the API: a closure over it would make it a reference
+    cycle (see ``ROUTES``)."""
+
+    def __init__(self) -> None:
+        self.count = 0
+
+    def any(self) -> bool:
+        return self.count > 0
+
+
 class Api:
     """Sessions of one :class:`Configurator`, reached through the route table."""
 
@@ -99,7 +117,9 @@ class Api:
         features = configurator.state([]).features  # the ids never change: known once
         configurator.derivation.prepare_counts()
         self._kinds = {key: feature.kind for key, feature in features.items()}
-        self._inspector = Inspector(configurator)
+        self._asking = _Asking()
+        self._inspector = Inspector(configurator, self._lock, self._asking.any)
+        self._rows = catalog(configurator)  # the catalog's answer, served without the lock
 
     def handle(self, method: str, path: str, query: Query, body: Body) -> Reply:
         route = ROUTES.get((method, path))
@@ -107,8 +127,22 @@ class Api:
             if any(known == path for _, known in ROUTES):
                 raise ApiError(HTTPStatus.METHOD_NOT_ALLOWED, f"{method} not allowed on {path}")
             raise ApiError(HTTPStatus.NOT_FOUND, f"no such API: {path}")
-        with self._lock:
+        if (method, path) in UNLOCKED:
             return route(self, query, body)
+        self._asking.count += 1  # the findings' listing gives way (Inspector)
+        try:
+            if not self._lock.acquire(timeout=ENGINE_WAIT):
+                raise ApiError(
+                    HTTPStatus.SERVICE_UNAVAILABLE,
+                    f"the engine is busy with another request (over {ENGINE_WAIT:.0f} s): "
+                    "try again",
+                )
+            try:
+                return route(self, query, body)
+            finally:
+                self._lock.release()
+        finally:
+            self._asking.count -= 1
 
     @property
     def sessions(self) -> int:
@@ -129,10 +163,6 @@ class Api:
         _only(query, set())
         return {"features": self._rows}
 
-    @cached_property
-    def _rows(self) -> list[list[object]]:
-        return catalog(self._configurator)
-
     def _grouping(self, query: Query, body: Body) -> Reply:
         """The state grouped another way (the session goes to overview mode)."""
         _only(query, set())
@@ -151,8 +181,28 @@ class Api:
             raise ApiError(HTTPStatus.BAD_REQUEST, "the session is not in overview mode")
         group = _text(body, "group")
         kind = MemberKind.NODES if "kind" not in body else _choice_of(body, "kind", MemberKind)
-        document = state_document(tab.session.current())
-        return members(document, tab.grouping, group, kind, _page(body))
+        state = tab.session.current()
+        document = state_document(state, state.outline)
+        return members(document, tab.grouping, group, kind, _page(body), state.described)
+
+    def _links(self, query: Query, body: Body) -> Reply:
+        """The links between the given groups in the session's current state."""
+        _only(query, set())
+        _only(body, {"session", "groups"})
+        _key, tab = self._session(body)
+        if tab.grouping is None:
+            raise ApiError(HTTPStatus.BAD_REQUEST, "the session is not in overview mode")
+        groups = body.get("groups")
+        if (
+            not isinstance(groups, list)
+            or len(groups) > MAX_GROUPS
+            or not all(isinstance(key, str) and len(key) <= MAX_TEXT for key in groups)
+        ):
+            raise ApiError(
+                HTTPStatus.BAD_REQUEST, f"field 'groups' must be a list of at most {MAX_GROUPS} ids"
+            )
+        state = tab.session.current()
+        return {"links": links(state_document(state, state.outline), tab.grouping, groups)}
 
     def _state(self, query: Query, body: Body) -> Reply:
         _only(query, {"session"})
@@ -236,8 +286,11 @@ class Api:
         return UserChoice(action, feature, _text(body, "value"))
 
     def _reply(self, key: str, tab: Tab, state: ConfigurationState, known: int | None) -> Reply:
+        """The state's document for the tab: whole, or in overview mode (its graph's
+        conditions not described: the summaries do not show them)."""
+        overview = tab.grouping is not None
         document = {
-            **state_document(state),
+            **state_document(state, state.outline if overview else None),
             "can_undo": tab.session.can_undo,
             "can_redo": tab.session.can_redo,
         }
@@ -255,6 +308,7 @@ ROUTES: dict[tuple[str, str], Route] = {
     ("GET", "/api/catalog"): Api._catalog,
     ("POST", "/api/grouping"): Api._grouping,
     ("POST", "/api/group"): Api._group,
+    ("POST", "/api/links"): Api._links,
     ("POST", "/api/undo"): functools.partial(Api._step, step=Session.undo),
     ("POST", "/api/redo"): functools.partial(Api._step, step=Session.redo),
     ("POST", "/api/reset"): functools.partial(Api._step, step=Session.reset),
@@ -264,3 +318,5 @@ ROUTES: dict[tuple[str, str], Route] = {
 """The route table: functions of the API, not its bound methods, which would make every
 :class:`Api` a reference cycle (freed by the cycle collector, CUDD's manager before the
 engine's diagrams)."""
+UNLOCKED = frozenset({("GET", "/api/catalog")})
+"""Routes answered without the engine (what they read is made once, at start)."""

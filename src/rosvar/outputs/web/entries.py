@@ -11,7 +11,6 @@ from typing import TypeVar, cast
 
 from rosvar.analyses.communication import JSON_SIDES, SIDES
 from rosvar.analyses.json_values import json_value
-from rosvar.configuration.derivation import Presence
 from rosvar.configuration.graph import (
     ChannelContent,
     Content,
@@ -28,10 +27,10 @@ from rosvar.configuration.graph import (
     YamlContent,
     topic_name,
 )
+from rosvar.configuration.presence import Presence
 from rosvar.diagnostics import Location
-from rosvar.interpreter.model import DeferredValue, NodeDecl, ParamSource, Raw
+from rosvar.interpreter.model import NodeDecl, Raw
 from rosvar.interpreter.resolution import ResolutionError
-from rosvar.logic.terms import is_term
 from rosvar.ros1.resolve import test_fields
 from rosvar.ros1.validation import node_values
 from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, typed
@@ -96,7 +95,7 @@ def _ros2_fields(
     parameters: Sequence[tuple[str | None, str | None]],
 ) -> Fields:
     """A ROS 2 node's name, namespace and parameters as ``ros2 launch`` composes them: the
-    pushed namespace, the node's own, its parameters merged in order (``resolve_ros2``'s).
+    pushed namespace, the node's own, its parameters merged in order (as ``rosvar resolve``'s).
     A node with no name takes one from its executable at run time: it is drawn as
     ``⟨EXEC⟩`` in its namespace, its ``fqn`` null."""
     namespace = node.schema.namespace.text(text) or "/"
@@ -189,39 +188,25 @@ def _present(
 
 @_renders(ParamContent)
 def _param(content: ParamContent, values: Values, _parts: Sequence[Shown]) -> list[Fields]:
-    value = content.value
-    shown: object = value
-    if isinstance(value, DeferredValue):
-        concrete = values.text(value.raw) or ""
-        try:
-            shown = json_value(
-                value.convert(ParamSource.VALUE, concrete, value.ptype, content.confinement)
-            )
-        except (ValueError, OSError):
-            shown = concrete
-    elif is_term(value):
-        shown = values.text(value)  # type: ignore[arg-type]
-    else:
-        shown = json_value(value)
+    try:
+        shown = json_value(content.loaded(values))
+    except ResolutionError:  # a string not known yet, or failing (the graph's errors say)
+        shown = values.text(cast(Raw, content.raw))
     name = values.text(cast(Raw, content.name))
     return [{"name": name, "value": shown, **_where(content.location)}]
 
 
 @_renders(YamlContent)
 def _yaml(content: YamlContent, values: Values, _parts: Sequence[Shown]) -> list[Fields]:
-    param = content.param
-    raws = (param.scope_ns, param.command, param.ns, param.file, param.param, param.text)
-    scope_ns, command, ns, file, name, body = (values.text(p) for p in raws)
-    symbolic = [{"name": f"{scope_ns} (YAML)", "value": "<yaml>", **_where(param.location)}]
-    if not values.knows(raws):
-        return symbolic
-    try:
-        pairs = param.load(
-            str(command), ns, file, name, body or "", str(scope_ns), content.confinement
-        )
-    except (ValueError, OSError):
-        return symbolic
-    return [{"name": key, "value": json_value(v), **_where(param.location)} for key, v in pairs]
+    where = _where(content.param.location)
+    if values.knows(content.raws):
+        try:
+            return [
+                {"name": key, "value": json_value(v), **where} for key, v in content.pairs(values)
+            ]
+        except ResolutionError:
+            pass  # failing: the graph's errors say where
+    return [{"name": f"{values.text(content.raws[0])} (YAML)", "value": "<yaml>", **where}]
 
 
 def _where(location: Location) -> Fields:

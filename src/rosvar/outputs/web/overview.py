@@ -15,7 +15,7 @@ summarised is exactly what the whole document would carry.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Collection, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
 from functools import lru_cache
@@ -214,20 +214,29 @@ def summaries(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str,
     ]
 
 
-def links(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str, object]]:
-    """The topics, services and actions between groups, aggregated: one link per kind and
-    pair of groups (any levels, neither holding the other) that a name connects, from a
-    group of a node feeding it (publisher, server) to a group of a node using it
-    (subscriber, client), with how many such names are present and possible: ``{"id":
-    KIND + LINK + FROM + LINK + TO, "count": [present, possible]}`` (the id says the rest:
-    a large workspace has thousands of links, whose keys are most of their bytes). A node
-    wired to a name without a side (a remap, no interface) is at both ends; a name none of
-    whose nodes has a side links each pair of groups once, from the smaller key to the
-    larger. Whatever groups the page draws closed, the links between two of its boxes count
-    each name once (per direction)."""
+def links(
+    document: Mapping[str, Any], grouping: Grouping, among: Collection[str]
+) -> list[dict[str, object]]:
+    """The topics, services and actions between the groups ``among`` (the boxes the page
+    draws closed), aggregated: one link per kind and pair of those groups (neither holding
+    the other) that a name connects, from a group of a node feeding it (publisher, server)
+    to a group of a node using it (subscriber, client), with how many such names are present
+    and possible: ``{"id": KIND + LINK + FROM + LINK + TO, "count": [present, possible]}``.
+    A node wired to a name without a side (a remap, no interface) is at both ends; a name
+    none of whose nodes has a side links each pair of groups once, from the smaller key to
+    the larger. Each name is counted once per link.
+
+    Asked for the boxes drawn, not sent with every state: every pair of groups at every
+    level is thousands of links (3,600 on Husky with ``_external`` as a root, 600 KB), most
+    of which change their counts at a step, and a page draws a few dozen boxes."""
+    wanted = set(among)
     graph = document["graph"]
     named = packages(document["features"])
-    chains = {str(e["id"]): _chain(grouping, e, named) for _kind, e in _nodes(graph)}
+    boxes: dict[str, tuple[str, ...]] = {}  # node id → the groups of ``among`` it is under
+    for _kind, entry in _nodes(graph):
+        chain = _chain(grouping, entry, named)
+        if wanted.intersection(chain):
+            boxes[str(entry["id"])] = tuple(key for key in chain if key in wanted)
     found: dict[tuple[MemberKind, str, str], list[int]] = {}
     for kind in CHANNELS:
         for entry in _possible(graph.get(kind, ())):
@@ -235,8 +244,7 @@ def links(document: Mapping[str, Any], grouping: Grouping) -> list[dict[str, obj
             sideless = {str(node) for node in entry.get("nodes", ())} - sided[0] - sided[1]
             directed = bool(sided[0] or sided[1])
             ends = [
-                {key for node in nodes | sideless for key in chains.get(node, ())}
-                for nodes in sided
+                {key for node in nodes | sideless for key in boxes.get(node, ())} for nodes in sided
             ]
             for source in ends[0]:
                 for target in ends[1]:
@@ -260,13 +268,20 @@ def _chain(grouping: Grouping, entry: Entry, named: Packages) -> tuple[str, ...]
 
 
 def members(
-    document: Mapping[str, Any], grouping: Grouping, group: str, kind: MemberKind, page: int
+    document: Mapping[str, Any],
+    grouping: Grouping,
+    group: str,
+    kind: MemberKind,
+    page: int,
+    described: Callable[[list[str]], Mapping[str, Entry]] | None = None,
 ) -> dict[str, object]:
     """A page of a group's members, sorted by name: whole graph entries. Nodes and params
     are its own (not its subgroups'); a page of nodes holds ``PAGE["nodes"]`` names with all
     their variants. Topics, services and actions are those of the nodes under it at any
     level, as its summary counts them, each with the ``groups`` and the ``names`` of its
-    ``nodes`` (the page draws them linked to whatever draws the nodes, a closed box too)."""
+    ``nodes`` (the page draws them linked to whatever draws the nodes, a closed box too).
+    ``described``: the entries of the ids given with their conditions described, for a
+    ``document`` whose entries have them not (the outline of the state)."""
     graph = document["graph"]
     named = packages(document["features"])
     if kind == MemberKind.NODES:
@@ -300,6 +315,9 @@ def members(
         found.sort(key=lambda e: (str(e.get("name")), str(e["id"])))
         listed = found[page * PAGE[kind] : (page + 1) * PAGE[kind]]
         total = len(found)
+    if described is not None:
+        whole = described([str(entry["id"]) for entry in listed])
+        listed = [{**entry, **whole[str(entry["id"])]} for entry in listed]
     pages = max(1, -(-total // PAGE[kind]))
     return {"group": group, "kind": kind, "page": page, "pages": pages, "members": listed}
 
@@ -360,8 +378,9 @@ def catalog(configurator: Configurator) -> list[list[object]]:
 
 def compact(document: Mapping[str, Any], grouping: Grouping) -> dict[str, Any]:
     """``document`` in overview mode: the features' states as one string (in the order of
-    :func:`catalog`), the graph as group summaries, the links between groups and the errors
-    roslaunch stops on, and how many topics, services and actions are possible."""
+    :func:`catalog`), the graph as group summaries and the errors roslaunch stops on, and how
+    many topics, services and actions are possible (the links between groups are asked for
+    apart: :func:`links`)."""
     graph = document["graph"]
     return {
         **document,
@@ -370,7 +389,6 @@ def compact(document: Mapping[str, Any], grouping: Grouping) -> dict[str, Any]:
         ),
         "graph": {
             "groups": summaries(document, grouping),
-            "links": links(document, grouping),
             "errors": [e for e in graph.get("errors", ()) if e["presence"] == PRESENT],
         },
         "channels": {

@@ -5,9 +5,10 @@ from __future__ import annotations
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import ArgDecl, Raw
+from rosvar.interpreter.substitution_args import MISSING, ArgValue
 from rosvar.logic.choice import Choice, ite
 from rosvar.ros1.dialect import tag
-from rosvar.ros1.scope import MISSING, ArgValue, Scope
+from rosvar.ros1.scope import Scope
 
 ATTRIBUTES = ("name", "value", "default", "doc")
 

@@ -6,9 +6,9 @@ from rosvar.frontends.entity import Entity
 from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import ClearParamDecl, Raw
+from rosvar.logic.atoms import PREDICATES, register_predicate
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
-from rosvar.logic.conditions import PREDICATES, register_predicate
 from rosvar.logic.terms import Apply, Hole
 from rosvar.ros1.scope import Scope
 

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from typing import cast
-
 from rosvar.files import FileRefused
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.booleans import bool_value
@@ -15,10 +13,10 @@ from rosvar.interpreter.interpretation import (
     split,
 )
 from rosvar.interpreter.model import IncludeDecl, Raw
-from rosvar.logic.bdd import BDD
+from rosvar.interpreter.substitution_args import MISSING
 from rosvar.logic.choice import Choice
 from rosvar.ros1.dialect import tag
-from rosvar.ros1.scope import MISSING, Scope
+from rosvar.ros1.scope import Scope
 from rosvar.ros1.tags.arg import declare, handle_arg
 from rosvar.ros1.tags.common import namespace_scope
 from rosvar.ros1.tags.env import handle_env
@@ -111,7 +109,7 @@ def _include(
         it.stack.pop()
     if not pass_all:
         for name, where in passed_where.items():
-            declared_here = cast(BDD, child.declared.get(name, it.space.false))
+            declared_here = child.declared.get(name, it.space.false)
             unused = where & ~declared_here
             it.fail(unused, "include-arg-unused", f"unused args [{name}] for include of [{file}]")
 

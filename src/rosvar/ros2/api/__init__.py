@@ -1,5 +1,7 @@
 """The launch API rosvar knows, one registration per name and a registry per kind, as
 launch's ``@expose_action`` and ``@expose_substitution`` expose each class to its frontends:
-an action's XML/YAML tag(s), its Python class name(s) and its attributes (``actions.py``).
-Every frontend and the attribute check read these registries; a new kind (substitutions,
-conditions, event handlers, description sources) is one more :class:`~.registry.Registry`."""
+actions with their XML/YAML tags, Python class names and attributes (``actions.py``),
+substitutions with their ``$(name)`` and Python callables (``substitutions.py``), conditions
+(``conditions.py``) and description sources (``sources.py``). Every frontend, the attribute
+check and the dialect's handlers read these registries; a new kind (event handlers) is one
+more :class:`~.registry.Registry`."""

@@ -230,7 +230,7 @@ expose(Action(("remap",), xml_only=("from", "to"), walked=False))
 expose(
     Action(
         ("push-ros-namespace", "push_ros_namespace"),
-        ("launch_ros.PushRosNamespace",),
+        ("launch_ros.PushROSNamespace", "launch_ros.PushRosNamespace"),
         attributes("namespace"),
     )
 )

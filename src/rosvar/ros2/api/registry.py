@@ -21,8 +21,8 @@ class Exposed(Protocol):
 
     @property
     def names(self) -> tuple[str, ...]:
-        """The frontend names (XML/YAML tags); the first is the one the Python frontend
-        writes."""
+        """The frontend names (XML/YAML tags, ``$(name)``s); the first is the one the Python
+        frontend writes; none for what has no name of its own (a condition is an attribute)."""
         ...
 
     @property
@@ -39,6 +39,7 @@ class Registry(Generic[T]):
 
     def __init__(self, kind: str) -> None:
         self.kind = kind
+        self.entries: list[T] = []
         self.by_name: dict[str, T] = {}
         self.by_python: dict[PythonName, T] = {}
 
@@ -52,10 +53,11 @@ class Registry(Generic[T]):
         for key in keys:
             if key in self.by_python:
                 raise ValueError(f"{self.kind} {'.'.join(key)} is exposed twice")
+        self.entries.append(entry)
         self.by_name.update(dict.fromkeys(entry.names, entry))
         self.by_python.update(dict.fromkeys(keys, entry))
         return entry
 
     def __iter__(self) -> Iterator[T]:
         """Each entry once, in registration order."""
-        return iter(dict.fromkeys(self.by_name.values()))
+        return iter(self.entries)

@@ -1,7 +1,8 @@
-"""Frontends by file suffix: every format is a thin adapter producing :class:`Entity` trees.
+"""ROS 2's frontends by file suffix (the dialect's loader): every format is a thin adapter
+producing :class:`Entity` trees.
 
-The XML parser serves both ROS 1 and ROS 2 files; YAML and Python are ROS 2's own formats,
-read into the same trees as the XML (the interpreter never knows which format it walks).
+XML is the shared reader ROS 1 uses as well; YAML and Python are ROS 2's own formats, read
+into the same trees as the XML (the interpreter never knows which format it walks).
 """
 
 from __future__ import annotations
@@ -11,8 +12,8 @@ from collections.abc import Callable
 
 from rosvar.frontends.entity import ParseResult
 from rosvar.frontends.xml import load_launch_file
+from rosvar.interpreter.dialect import Loader
 
-Loader = Callable[[str], ParseResult]
 FRONTENDS: dict[str, Loader] = {}
 
 

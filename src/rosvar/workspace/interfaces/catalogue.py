@@ -19,6 +19,7 @@ from rosvar.workspace.interfaces.model import (
     Default,
     Entry,
     Expression,
+    NamedBy,
     NodeInterface,
     NodeKind,
     Origin,
@@ -78,9 +79,18 @@ def _node(item: dict[str, Any]) -> NodeInterface:
                     static=entry.get("static", True),
                     boundary=entry.get("boundary", False),
                     beside=entry.get("beside"),
+                    when=entry.get("when"),
+                    named_by=_named_by(entry.get("named_by")),
                 )
             )
     return NodeInterface(item["package"], item["executable"], NodeKind(item["kind"]), entries)
+
+
+def _named_by(value: object) -> NamedBy | None:
+    """An entry's ``named_by``: ``{"parameter": "~imu{N}", "namespace": ""}``."""
+    if not isinstance(value, dict):
+        return None
+    return NamedBy(str(value["parameter"]), str(value.get("namespace", "")))
 
 
 def _default(value: object) -> Default | None:

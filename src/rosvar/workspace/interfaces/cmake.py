@@ -1,41 +1,47 @@
-"""Which sources make which executable: a small reader of a package's ``CMakeLists.txt``.
+"""Which sources make which executable: the targets a package's CMake files declare.
 
-Only what decides targets and their sources is read: ``set``/``list(APPEND)`` variables and
-``${VAR}`` expansion, ``file(GLOB)``, ``add_subdirectory``, ``add_executable``/``add_library``,
-``target_link_libraries`` (a library of the same package brings its sources along),
-``include_directories``, a target's ``OUTPUT_NAME`` (the name ``rosrun`` and launch files use)
-and the ``PROGRAMS`` of ``catkin_install_python``/``install``; for ament packages also
-``ament_auto_add_executable``/``ament_auto_add_library`` and the executable
-``rclcpp_components_register_node(... EXECUTABLE name)`` makes of a component.
-Conditions (``if``) are not evaluated: every branch's targets are kept, since any of them may
-be the one built.
+The language itself (variables, ``foreach``, the workspace's functions and macros,
+``include``, ``add_subdirectory``) is run by :mod:`rosvar.workspace.interfaces.cmake_script`;
+this module reads what its commands declare: targets (:data:`TARGET_COMMANDS`: CMake's own,
+ament_cmake_auto's, catkin_simple's, rosbuild's, FindCUDA's), ``target_link_libraries`` (a
+library of the same package brings its sources along), ``include_directories``, a target's
+``OUTPUT_NAME`` (the name ``rosrun`` and launch files use), the ``PROGRAMS`` of
+``catkin_install_python``/``install``, the scripts ``catkin_python_setup`` installs from
+``setup.py``, and the executable ``rclcpp_components_register_node(... EXECUTABLE name)``
+makes of a component. A function or macro another package of the workspace defines in its
+CMake extras (``cmake/*.cmake``) is known once ``find_package`` names that package, as
+CMake's package configuration would load it.
 """
 
 from __future__ import annotations
 
 import enum
-import glob
 import os
-import re
-from collections.abc import Iterator
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
-from rosvar.workspace.interfaces.reading import read_text
+from rosvar.diagnostics import DiagnosticSink
+from rosvar.workspace.interfaces.cmake_script import CMAKE_FILE, Command, Script
+from rosvar.workspace.interfaces.reading import SourceReader
+from rosvar.workspace.python_setup import setup_scripts
 
-CMAKE_FILE = "CMakeLists.txt"
-_VARIABLE = re.compile(r"\$\{([^${}]*)\}")
+__all__ = ["CMAKE_FILE", "Build", "Target", "TargetKind", "read_build"]
+
 _TARGET_OPTIONS = frozenset(
     {"WIN32", "MACOSX_BUNDLE", "EXCLUDE_FROM_ALL", "STATIC", "SHARED", "MODULE", "OBJECT"}
 )
 _SKIPPED_LIBRARIES = frozenset({"IMPORTED", "ALIAS", "INTERFACE"})
-# ament_cmake_auto's keywords; its targets' sources may also come from a DIRECTORY glob.
-_AUTO_OPTIONS = frozenset({"DIRECTORY", "NO_TARGET_LINK_LIBRARIES", "NO_TARGET_LINK_DEPENDENCIES"})
+_AUTO_OPTIONS = frozenset({"NO_TARGET_LINK_LIBRARIES", "NO_TARGET_LINK_DEPENDENCIES"})
+"""ament_cmake_auto's flags; its ``DIRECTORY dir`` adds the folder's sources."""
 _LINK_KEYWORDS = frozenset({"PUBLIC", "PRIVATE", "INTERFACE", "debug", "optimized", "general"})
 _INSTALL_KEYWORDS = frozenset(
     {"DESTINATION", "PERMISSIONS", "CONFIGURATIONS", "COMPONENT", "RENAME", "OPTIONAL"}
 )
 _SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".c", ".h", ".hpp", ".hh", ".hxx")
-"""What CMake appends to a source named without its suffix (``add_executable(x src/x)``)."""
+"""What CMake appends to a source named without its suffix (``add_executable(x src/x)``);
+also what ament_cmake_auto's ``DIRECTORY`` collects."""
+_EXTRAS_FOLDER = "cmake"
+COMPONENT_COMMAND = "rclcpp_components_register_node"
 
 
 class TargetKind(enum.StrEnum):
@@ -43,14 +49,29 @@ class TargetKind(enum.StrEnum):
     LIBRARY = "library"
 
 
-# The commands that declare a target, and the kind they declare.
-TARGET_COMMANDS: dict[str, TargetKind] = {
-    "add_executable": TargetKind.EXECUTABLE,
-    "add_library": TargetKind.LIBRARY,
-    "ament_auto_add_executable": TargetKind.EXECUTABLE,
-    "ament_auto_add_library": TargetKind.LIBRARY,
+@dataclass(frozen=True)
+class TargetCommand:
+    """A command that declares a target: its kind, and the keyword after which its
+    arguments are no longer sources (FindCUDA's ``OPTIONS``)."""
+
+    kind: TargetKind
+    end: str | None = None
+
+
+TARGET_COMMANDS: dict[str, TargetCommand] = {
+    "add_executable": TargetCommand(TargetKind.EXECUTABLE),
+    "add_library": TargetCommand(TargetKind.LIBRARY),
+    "ament_auto_add_executable": TargetCommand(TargetKind.EXECUTABLE),
+    "ament_auto_add_library": TargetCommand(TargetKind.LIBRARY),
+    "cs_add_executable": TargetCommand(TargetKind.EXECUTABLE),  # catkin_simple
+    "cs_add_library": TargetCommand(TargetKind.LIBRARY),
+    "rosbuild_add_executable": TargetCommand(TargetKind.EXECUTABLE),
+    "rosbuild_add_library": TargetCommand(TargetKind.LIBRARY),
+    "cuda_add_executable": TargetCommand(TargetKind.EXECUTABLE, end="OPTIONS"),
+    "cuda_add_library": TargetCommand(TargetKind.LIBRARY, end="OPTIONS"),
 }
-COMPONENT_COMMAND = "rclcpp_components_register_node"
+"""The commands that declare a target: CMake's own and the known wrappers of other tools
+(a workspace's own wrappers are expanded before they reach this table)."""
 
 
 @dataclass
@@ -96,185 +117,118 @@ class Build:
         return found
 
 
-def commands(text: str) -> Iterator[tuple[str, list[str]]]:
-    """The commands of a CMake file: lower-case name and raw arguments (quoted kept quoted)."""
-    position, size = 0, len(text)
-    while position < size:
-        char = text[position]
-        if char == "#":
-            if text.startswith("#[[", position) or text.startswith("#[=", position):
-                end = text.find("]]", position)
-                position = size if end < 0 else end + 2
-            else:
-                end = text.find("\n", position)
-                position = size if end < 0 else end
-            continue
-        match = re.compile(r"[A-Za-z_]\w*\s*\(").match(text, position)
-        if match is None:
-            position += 1
-            continue
-        name = match.group(0).split("(")[0].strip().lower()
-        arguments, position = _arguments(text, match.end())
-        yield name, arguments
-
-
-def _arguments(text: str, position: int) -> tuple[list[str], int]:
-    arguments: list[str] = []
-    depth, current, size = 0, "", len(text)
-    while position < size:
-        char = text[position]
-        if char == '"':
-            end = position + 1
-            while end < size and text[end] != '"':
-                end += 2 if text[end] == "\\" else 1
-            arguments.append(text[position : end + 1])
-            position = end + 1
-            continue
-        if char == "#" and not current:
-            end = text.find("\n", position)
-            position = size if end < 0 else end
-            continue
-        if char == "(":
-            depth += 1
-        elif char == ")":
-            if depth == 0:
-                if current:
-                    arguments.append(current)
-                return arguments, position + 1
-            depth -= 1
-        if char.isspace() or char in "()":
-            if current:
-                arguments.append(current)
-            current = ""
-        else:
-            current += char
-        position += 1
-    if current:
-        arguments.append(current)
-    return arguments, position
-
-
 class _Reader:
-    def __init__(self, package_dir: str, package_name: str) -> None:
+    """The handler of the commands the language leaves to it: what declares targets."""
+
+    def __init__(
+        self, package_dir: str, package_name: str, extras: Mapping[str, list[str]]
+    ) -> None:
         self.root = package_dir
-        self.variables = {
-            "PROJECT_NAME": package_name,
-            "PROJECT_SOURCE_DIR": package_dir,
-            "CMAKE_SOURCE_DIR": package_dir,
-            "CMAKE_CURRENT_SOURCE_DIR": package_dir,
-            "CMAKE_CURRENT_LIST_DIR": package_dir,
-        }
+        self.package = package_name
         self.build = Build()
-        self.visited: set[str] = set()
+        self.extras = extras
+        self.script: Script | None = None
 
-    def expand(self, word: str) -> list[str]:
-        quoted = word.startswith('"')
-        value = word[1:-1] if quoted else word
-        for _ in range(32):  # nested ${A_${B}} expand inside out
-            expanded = _VARIABLE.sub(lambda m: self.variables.get(m.group(1), ""), value)
-            if expanded == value:
-                break
-            value = expanded
-        if quoted:
-            return [value]
-        return [part for part in value.split(";") if part]
+    def command(self, command: Command, words: list[str], directory: str) -> None:
+        handler = _HANDLERS.get(command.name)
+        if handler is not None:
+            handler(self, command, words, directory)
+        elif command.name in TARGET_COMMANDS and words:
+            self.target(command, words, directory)
 
-    def unknown_variable(self, word: str) -> bool:
-        return any(name not in self.variables for name in _VARIABLE.findall(word))
-
-    def read(self, directory: str) -> None:
-        path = os.path.join(directory, CMAKE_FILE)
-        real = os.path.realpath(path)
-        if real in self.visited or not real.startswith(os.path.realpath(self.root)):
+    def target(self, command: Command, words: list[str], directory: str) -> None:
+        declaring = TARGET_COMMANDS[command.name]
+        if _SKIPPED_LIBRARIES & set(words[1:2]):
             return
-        self.visited.add(real)
-        text = read_text(path)
-        if text is None:
-            return
-        saved = self.variables["CMAKE_CURRENT_SOURCE_DIR"]
-        self.variables["CMAKE_CURRENT_SOURCE_DIR"] = directory
-        self.variables["CMAKE_CURRENT_LIST_DIR"] = directory
-        for name, raw in commands(text):
-            words = [part for word in raw for part in self.expand(word)]
-            self.command(name, words, directory)
-            if name in TARGET_COMMANDS and words and self.unknown_variable(raw[0]):
-                self.build.vague_names.add(words[0])
-        self.variables["CMAKE_CURRENT_SOURCE_DIR"] = saved
-        self.variables["CMAKE_CURRENT_LIST_DIR"] = saved
+        arguments = words[1:]
+        if declaring.end is not None and declaring.end in arguments:
+            arguments = arguments[: arguments.index(declaring.end)]
+        sources: list[str] = []
+        folder_next = False
+        for word in arguments:
+            if word == "DIRECTORY":
+                folder_next = True
+            elif folder_next:
+                sources.extend(_folder_sources(os.path.join(directory, word)))
+                folder_next = False
+            elif word not in _TARGET_OPTIONS and word not in _AUTO_OPTIONS:
+                sources.append(_source(directory, word))
+        declared = Target(words[0], declaring.kind, [])
+        self.build.targets.setdefault(words[0], declared).sources.extend(sources)
+        if self.script is not None and not self.script.known(command.arguments[0]):
+            self.build.vague_names.add(words[0])
 
-    def command(self, name: str, words: list[str], directory: str) -> None:
-        if name == "project" and words:
-            self.variables["PROJECT_NAME"] = words[0]
-        elif name == "set" and words:
-            values = [w for w in words[1:] if w not in ("CACHE", "PARENT_SCOPE")]
-            if "CACHE" in words[1:]:
-                values = words[1 : words.index("CACHE")]
-            self.variables[words[0]] = ";".join(values)
-        elif name == "list" and len(words) >= 2 and words[0] == "APPEND":
-            old = self.variables.get(words[1], "")
-            self.variables[words[1]] = ";".join([p for p in old.split(";") if p] + words[2:])
-        elif name == "file" and len(words) >= 2 and words[0] in ("GLOB", "GLOB_RECURSE"):
-            self.variables[words[1]] = ";".join(self.glob(words, directory))
-        elif name == "add_subdirectory" and words:
-            self.read(os.path.normpath(os.path.join(directory, words[0])))
-        elif name in TARGET_COMMANDS and words:
-            if _SKIPPED_LIBRARIES & set(words[1:2]):
-                return
-            sources = [
-                _source(directory, w)
-                for w in words[1:]
-                if w not in _TARGET_OPTIONS and w not in _AUTO_OPTIONS
-            ]
-            declared = Target(words[0], TARGET_COMMANDS[name], [])
-            self.build.targets.setdefault(words[0], declared).sources.extend(sources)
-        elif name == COMPONENT_COMMAND and "EXECUTABLE" in words[1:-1]:
-            # The executable runs the component library's plugin: its sources are the library's.
-            executable = words[words.index("EXECUTABLE", 1) + 1]
-            plugin = (
-                words[words.index("PLUGIN") + 1].strip('"') if "PLUGIN" in words[1:-1] else None
-            )
-            component = Target(
-                executable, TargetKind.EXECUTABLE, [], links=[words[0]], plugin=plugin
-            )
-            self.build.targets.setdefault(executable, component)
-        elif name == "target_link_libraries" and words:
-            target = self.build.targets.get(words[0])
-            if target is not None:
-                target.links.extend(w for w in words[1:] if w not in _LINK_KEYWORDS)
-        elif name == "set_target_properties" and "PROPERTIES" in words:
-            split = words.index("PROPERTIES")
-            properties = dict(zip(words[split + 1 :: 2], words[split + 2 :: 2], strict=False))
-            for word in words[:split]:
-                target = self.build.targets.get(word)
-                if target is not None and "OUTPUT_NAME" in properties:
-                    target.output_name = properties["OUTPUT_NAME"]
-        elif name == "include_directories":
-            for word in words:
-                if word not in ("BEFORE", "AFTER", "SYSTEM"):
-                    self.build.include_dirs.append(os.path.normpath(os.path.join(directory, word)))
-        elif name in ("catkin_install_python", "install") and words[:1] == ["PROGRAMS"]:
-            for word in words[1:]:
-                if word in _INSTALL_KEYWORDS:
-                    break
-                self.build.programs.append(os.path.normpath(os.path.join(directory, word)))
+    def find_package(self, _: Command, words: list[str], __: str) -> None:
+        """``find_package(pkg)`` (or a catkin ``COMPONENTS`` list) loads the CMake extras of
+        a workspace package: only their functions and macros are taken."""
+        for name in words:
+            for path in self.extras.get(name, ()):
+                if self.script is not None:
+                    self.script.define_from(path)
 
-    def glob(self, words: list[str], directory: str) -> list[str]:
-        rest = [w for w in words[2:] if w not in ("CONFIGURE_DEPENDS", "LIST_DIRECTORIES")]
-        relative: str | None = None
-        if rest[:1] == ["RELATIVE"] and len(rest) >= 2:
-            relative, rest = rest[1], rest[2:]
-        found: list[str] = []
-        for pattern in rest:
-            full = os.path.join(directory, pattern)
-            if (
-                words[0] == "GLOB_RECURSE"
-            ):  # CMake's recursive glob descends from the pattern's folder
-                folder, name = os.path.split(full)
-                full = os.path.join(folder, "**", name)
-            matches = glob.glob(full, recursive=True)
-            for match in sorted(matches):
-                found.append(os.path.relpath(match, relative) if relative else match)
-        return found
+
+def _register_component(reader: _Reader, _: Command, words: list[str], __: str) -> None:
+    """``rclcpp_components_register_node(lib PLUGIN "ns::Class" EXECUTABLE name)``: the
+    executable runs the component library's plugin, its sources are the library's."""
+    if "EXECUTABLE" not in words[1:-1]:
+        return
+    executable = words[words.index("EXECUTABLE", 1) + 1]
+    plugin = words[words.index("PLUGIN") + 1].strip('"') if "PLUGIN" in words[1:-1] else None
+    component = Target(executable, TargetKind.EXECUTABLE, [], links=[words[0]], plugin=plugin)
+    reader.build.targets.setdefault(executable, component)
+
+
+def _link(reader: _Reader, _: Command, words: list[str], __: str) -> None:
+    target = reader.build.targets.get(words[0]) if words else None
+    if target is not None:
+        target.links.extend(w for w in words[1:] if w not in _LINK_KEYWORDS)
+
+
+def _properties(reader: _Reader, _: Command, words: list[str], __: str) -> None:
+    if "PROPERTIES" not in words:
+        return
+    split = words.index("PROPERTIES")
+    properties = dict(zip(words[split + 1 :: 2], words[split + 2 :: 2], strict=False))
+    for word in words[:split]:
+        target = reader.build.targets.get(word)
+        if target is not None and "OUTPUT_NAME" in properties:
+            target.output_name = properties["OUTPUT_NAME"]
+
+
+def _include_directories(reader: _Reader, _: Command, words: list[str], directory: str) -> None:
+    for word in words:
+        if word not in ("BEFORE", "AFTER", "SYSTEM"):
+            reader.build.include_dirs.append(os.path.normpath(os.path.join(directory, word)))
+
+
+def _programs(reader: _Reader, _: Command, words: list[str], directory: str) -> None:
+    if words[:1] != ["PROGRAMS"]:
+        return
+    for word in words[1:]:
+        if word in _INSTALL_KEYWORDS:
+            break
+        reader.build.programs.append(os.path.normpath(os.path.join(directory, word)))
+
+
+def _python_setup(reader: _Reader, _: Command, __: list[str], directory: str) -> None:
+    """``catkin_python_setup()`` installs the ``scripts`` of the package's ``setup.py``."""
+    if reader.script is None:
+        return
+    text = reader.script.reader.text(os.path.join(directory, "setup.py"))
+    for script in setup_scripts(text or ""):
+        reader.build.programs.append(os.path.normpath(os.path.join(directory, script)))
+
+
+_HANDLERS: dict[str, Callable[[_Reader, Command, list[str], str], None]] = {
+    COMPONENT_COMMAND: _register_component,
+    "target_link_libraries": _link,
+    "set_target_properties": _properties,
+    "include_directories": _include_directories,
+    "install": _programs,
+    "catkin_install_python": _programs,
+    "catkin_python_setup": _python_setup,
+    "find_package": _Reader.find_package,
+}
 
 
 def _source(directory: str, word: str) -> str:
@@ -284,8 +238,49 @@ def _source(directory: str, word: str) -> str:
     return next((path + s for s in _SOURCE_SUFFIXES if os.path.isfile(path + s)), path)
 
 
-def read_build(package_dir: str, package_name: str) -> Build:
-    """The targets, Python programs and include folders of the package at ``package_dir``."""
-    reader = _Reader(os.path.abspath(package_dir), package_name)
-    reader.read(reader.root)
-    return reader.build
+def _folder_sources(folder: str) -> list[str]:
+    """The sources below ``folder``, as ament_cmake_auto's ``DIRECTORY`` globs them."""
+    found: list[str] = []
+    for root, dirs, files in os.walk(folder):
+        dirs.sort()
+        found.extend(os.path.join(root, f) for f in sorted(files) if f.endswith(_SOURCE_SUFFIXES))
+    return found
+
+
+def cmake_extras(package_dir: str) -> list[str]:
+    """The CMake files a package exports to its dependents (``cmake/*.cmake``, the
+    ``-extras.cmake.in`` ament and catkin configure)."""
+    folder = os.path.join(package_dir, _EXTRAS_FOLDER)
+    if not os.path.isdir(folder):
+        return []
+    return sorted(
+        os.path.join(folder, name)
+        for name in os.listdir(folder)
+        if name.endswith((".cmake", ".cmake.in"))
+    )
+
+
+def read_build(
+    package_dir: str,
+    package_name: str,
+    reader: SourceReader | None = None,
+    extras: Mapping[str, list[str]] | None = None,
+    sink: DiagnosticSink | None = None,
+) -> Build:
+    """The targets, Python programs and include folders of the package at ``package_dir``;
+    ``extras``: the CMake extras of the workspace's packages, by package name."""
+    root = os.path.abspath(package_dir)
+    handler = _Reader(root, package_name, extras or {})
+    script = Script(root, handler.command, reader or SourceReader(), sink)
+    handler.script = script
+    script.scopes.append(
+        {
+            "PROJECT_NAME": package_name,
+            "PROJECT_SOURCE_DIR": root,
+            "CMAKE_SOURCE_DIR": root,
+            "CMAKE_CURRENT_SOURCE_DIR": root,
+            "CMAKE_CURRENT_LIST_DIR": root,
+        }
+    )
+    script.run_file(os.path.join(root, CMAKE_FILE), root)
+    return handler.build

@@ -14,27 +14,46 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping, Sequence
 
 from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.files import Confinement
 from rosvar.ros.version import RosVersion
 from rosvar.workspace.executables import SCRIPT_FOLDERS, console_scripts
 from rosvar.workspace.interfaces import python
-from rosvar.workspace.interfaces.cmake import CMAKE_FILE, Build, TargetKind, read_build
-from rosvar.workspace.interfaces.cpp.extract import extract, extract_node
+from rosvar.workspace.interfaces.cmake import (
+    CMAKE_FILE,
+    Build,
+    TargetKind,
+    cmake_extras,
+    read_build,
+)
+from rosvar.workspace.interfaces.cpp.extract import extract_node
 from rosvar.workspace.interfaces.cpp.unit import Unit
 from rosvar.workspace.interfaces.model import Extracted, Interfaces, NodeInterface, NodeKind
 from rosvar.workspace.interfaces.nodelets import nodelet_classes
-from rosvar.workspace.interfaces.reading import read_source, read_text
+from rosvar.workspace.interfaces.python_modules import module_file
+from rosvar.workspace.interfaces.reading import SourceReader
 from rosvar.workspace.packages import Package
 
 _COMPONENT = re.compile(r"RCLCPP_COMPONENTS_REGISTER_NODE\s*\(\s*([\w:]+)\s*\)")
 
 
-def extract_package(package: Package, sink: DiagnosticSink) -> list[NodeInterface]:
-    """The nodes and nodelets of one package, in a stable order."""
-    build = read_build(package.path, package.name)
-    include_dirs = [*build.include_dirs, os.path.join(package.path, "include")]
+def extract_package(
+    package: Package,
+    sink: DiagnosticSink,
+    reader: SourceReader | None = None,
+    extras: Mapping[str, list[str]] | None = None,
+    headers: Sequence[str] = (),
+) -> list[NodeInterface]:
+    """The nodes and nodelets of one package, in a stable order; its files read through
+    ``reader``, the CMake ``extras`` of the workspace's packages known by name, the include
+    folders of the workspace's packages (``headers``) searched after the package's own: a
+    wrapper class a dependency defines in a header (``nav2_util::SimpleActionServer``) is
+    read where it is used."""
+    reader = reader or SourceReader(Confinement.of([package.path]), sink)
+    build = read_build(package.path, package.name, reader, extras, sink)
+    include_dirs = [*build.include_dirs, os.path.join(package.path, "include"), *headers]
     ros2 = package.ros_version is RosVersion.ROS2
     nodes: list[NodeInterface] = []
     where = Location(os.path.join(package.path, CMAKE_FILE))
@@ -45,21 +64,21 @@ def extract_package(package: Package, sink: DiagnosticSink) -> list[NodeInterfac
 
     for target in build.targets.values():
         if target.kind is TargetKind.EXECUTABLE:
-            unit = Unit.load(_cpp_sources(build.sources(target.name)), include_dirs)
+            unit = Unit.load(_cpp_sources(build.sources(target.name)), include_dirs, reader)
             entry, owner = ("main", None) if target.plugin is None else _constructor(target.plugin)
             node(
                 target.installed_name,
                 NodeKind.NODE,
-                extract_node(unit, entry, owner, sink, where),
+                extract_node(unit, entry, owner, sink, where, ros2),
             )
         elif ros2:
-            plugins = _components(target.sources)
+            plugins = _components(target.sources, reader)
             sources = _cpp_sources(build.sources(target.name)) if plugins else []
-            unit = Unit.load(sources, include_dirs)
+            unit = Unit.load(sources, include_dirs, reader)
             for plugin in plugins:
-                found = extract_node(unit, *_constructor(plugin), sink, where)
+                found = extract_node(unit, *_constructor(plugin), sink, where, ros2)
                 node(plugin, NodeKind.COMPONENT, found)
-    for nodelet in nodelet_classes(package.path, sink):
+    for nodelet in nodelet_classes(package.path, sink, reader):
         if nodelet.library not in build.targets:
             sink.warning(
                 "interface-no-library",
@@ -68,14 +87,16 @@ def extract_package(package: Package, sink: DiagnosticSink) -> list[NodeInterfac
             )
             nodes.append(NodeInterface(package.name, nodelet.name, NodeKind.NODELET))
             continue
-        unit = Unit.load(_cpp_sources(build.sources(nodelet.library)), include_dirs)
+        unit = Unit.load(_cpp_sources(build.sources(nodelet.library)), include_dirs, reader)
         owner = nodelet.type.rsplit("::", 1)[-1]
-        entries = extract(unit, "onInit", owner, sink, nodelet.location)
+        entries = extract_node(unit, "onInit", owner, sink, nodelet.location).entries
         nodes.append(NodeInterface(package.name, nodelet.name, NodeKind.NODELET, entries))
-    for script in _python_scripts(package.path, build):
-        node(os.path.basename(script), NodeKind.NODE, python.extract_node(script, sink))
+    python_roots = [package.path, os.path.join(package.path, "src")]
+    for script in _python_scripts(package.path, build, reader):
+        found = python.extract_node(script, sink, reader, python_roots)
+        node(os.path.basename(script), NodeKind.NODE, found)
     for executable, module in console_scripts(package.path).items():
-        path = _module_file(package.path, module)
+        path = module_file(python_roots, module)
         if path is None:
             sink.warning(
                 "interface-no-module",
@@ -83,7 +104,7 @@ def extract_package(package: Package, sink: DiagnosticSink) -> list[NodeInterfac
                 Location(os.path.join(package.path, "setup.py")),
             )
             continue
-        node(executable, NodeKind.NODE, python.extract_node(path, sink))
+        node(executable, NodeKind.NODE, python.extract_node(path, sink, reader, python_roots))
     return sorted(nodes, key=lambda node: node.executable)
 
 
@@ -93,11 +114,11 @@ def _constructor(plugin: str) -> tuple[str, str]:
     return name, name
 
 
-def _components(sources: list[str]) -> list[str]:
+def _components(sources: list[str], reader: SourceReader) -> list[str]:
     """The classes a library's sources register as components, as launch files name them."""
     found: list[str] = []
     for source in sources:
-        text = read_text(source) or ""
+        text = reader.text(source) or ""
         for match in _COMPONENT.finditer(text):
             plugin = match.group(1).lstrip(":")
             if plugin not in found:
@@ -105,23 +126,25 @@ def _components(sources: list[str]) -> list[str]:
     return found
 
 
-def _module_file(package_dir: str, module: str) -> str | None:
-    """The file of Python module ``module`` (dotted) in an ament_python package."""
-    relative = module.replace(".", os.sep)
-    for root in (package_dir, os.path.join(package_dir, "src")):
-        for candidate in (relative + ".py", os.path.join(relative, "__init__.py")):
-            path = os.path.join(root, candidate)
-            if os.path.isfile(path):
-                return path
-    return None
-
-
-def extract_interfaces(packages: Iterable[Package]) -> Interfaces:
-    """The interfaces of every package in ``packages`` (by package name)."""
+def extract_interfaces(
+    packages: Iterable[Package],
+    confinement: Confinement | None = None,
+    workspace: Iterable[Package] = (),
+) -> Interfaces:
+    """The interfaces of every package in ``packages`` (by package name), their files read
+    within ``confinement`` (by default, the packages' folders); the CMake functions and
+    macros of ``workspace``'s packages (and ``packages``') are known to their builds."""
+    chosen = sorted(packages, key=lambda p: p.name)
     sink = DiagnosticSink()
+    reader = SourceReader(confinement or Confinement.of(p.path for p in chosen), sink)
+    everything = {p.path: p for p in (*workspace, *chosen)}.values()
+    extras = {p.name: cmake_extras(p.path) for p in everything}
+    headers = [
+        folder for p in everything if os.path.isdir(folder := os.path.join(p.path, "include"))
+    ]
     nodes: list[NodeInterface] = []
-    for package in sorted(packages, key=lambda p: p.name):
-        nodes.extend(extract_package(package, sink))
+    for package in chosen:
+        nodes.extend(extract_package(package, sink, reader, extras, headers))
     return Interfaces(nodes, sink.items)
 
 
@@ -129,20 +152,20 @@ def _cpp_sources(sources: list[str]) -> list[str]:
     return [s for s in sources if not s.endswith((".c", ".cu", ".proto"))]
 
 
-def _python_scripts(package_dir: str, build: Build) -> list[str]:
+def _python_scripts(package_dir: str, build: Build, reader: SourceReader) -> list[str]:
     """Installed Python programs, and Python files in the usual script folders."""
-    found = {path for path in build.programs if os.path.isfile(path) and _is_python(path)}
+    found = {p for p in build.programs if os.path.isfile(p) and _is_python(p, reader)}
     for folder in SCRIPT_FOLDERS:
         directory = os.path.join(package_dir, folder)
         if os.path.isdir(directory):
             for entry in os.scandir(directory):
-                if entry.is_file() and _is_python(entry.path):
+                if entry.is_file() and _is_python(entry.path, reader):
                     found.add(entry.path)
     return sorted(found)
 
 
-def _is_python(path: str) -> bool:
+def _is_python(path: str, reader: SourceReader) -> bool:
     if path.endswith(".py"):
         return True
-    data = read_source(path)
+    data = reader.data(path)
     return data is not None and data.startswith(b"#!") and b"python" in data.split(b"\n", 1)[0]

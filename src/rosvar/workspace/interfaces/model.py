@@ -58,6 +58,28 @@ Default = bool | int | float | str | Expression
 
 
 @dataclass(frozen=True)
+class NamedBy:
+    """A name that is a parameter's value (``nh.param("path_topic", t, "plan");
+    nh.subscribe(t, ...)``): the graph takes the value each configuration gives
+    ``parameter`` (as the node resolves it: ``~path_topic``), else the entry's ``default``,
+    and resolves it within ``namespace`` (the node handle's, as written). A
+    ``parameter`` holding ``{N}`` stands for every parameter of that form the launch files
+    set (robot_localization's ``imu0``, ``imu1``, ...), each naming one use; one never set
+    gives none."""
+
+    parameter: str
+    namespace: str = ""
+
+    @property
+    def indexed(self) -> bool:
+        return INDEX in self.parameter
+
+
+INDEX = "{N}"
+"""In a parameter's name, any number (``~imu{N}``)."""
+
+
+@dataclass(frozen=True)
 class Entry:
     """One use of a name: ``type`` for topics, services and actions, ``default`` for params."""
 
@@ -75,6 +97,9 @@ class Entry:
     beside: str | None = None
     """image_transport's camera info: named after the image topic ``beside`` (as the node
     writes it) once that is remapped, so the graph derives this name, not ``name``."""
+    named_by: NamedBy | None = None
+    """The parameter whose value is the name (then ``default`` is that parameter's default
+    and ``name`` its symbolic form)."""
 
 
 @dataclass(frozen=True)

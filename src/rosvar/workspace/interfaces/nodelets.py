@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity, ParseResult
 from rosvar.frontends.xml import parse_xml_bytes, parse_xml_file
-from rosvar.workspace.interfaces.reading import read_source
+from rosvar.workspace.interfaces.reading import SourceReader
 
 PREFIX = "${prefix}"
 _DECLARATION = re.compile(rb"\s*<\?xml[^>]*\?>")
@@ -49,11 +49,13 @@ def plugin_files(package_dir: str) -> list[str]:
     return files
 
 
-def nodelet_classes(package_dir: str, sink: DiagnosticSink) -> list[NodeletClass]:
+def nodelet_classes(
+    package_dir: str, sink: DiagnosticSink, reader: SourceReader | None = None
+) -> list[NodeletClass]:
     """Every nodelet class exported by the package at ``package_dir``."""
     found = []
     for path in plugin_files(package_dir):
-        result = _parse_plugins(path)
+        result = _parse_plugins(path, reader or SourceReader(sink=sink))
         if result.root is None:
             sink.warning(
                 "nodelet-plugins-unreadable", "cannot read the nodelet plugins", Location(path)
@@ -72,12 +74,14 @@ def nodelet_classes(package_dir: str, sink: DiagnosticSink) -> list[NodeletClass
     return found
 
 
-def _parse_plugins(path: str) -> ParseResult:
+def _parse_plugins(path: str, reader: SourceReader) -> ParseResult:
     """The plugin file's tree; several top-level ``<library>`` elements are put under one
     root on their own lines, so that line numbers stay."""
-    result = parse_xml_file(path)
-    data = read_source(path)
-    if result.root is not None or data is None:
+    data = reader.data(path)
+    if data is None:
+        return ParseResult(None, [])
+    result = parse_xml_bytes(data, path)
+    if result.root is not None:
         return result
     declaration = _DECLARATION.match(data)
     head = declaration.end() if declaration else 0

@@ -47,7 +47,7 @@ def test_constants_concatenation_and_locals(tmp_path: Path) -> None:
 def test_handles_through_constructors_and_call_sites(tmp_path: Path) -> None:
     evaluator, use, arguments = _setup(tmp_path)
     assert evaluator.evaluate(arguments[1], use) == Handle(Text("~sensors"))
-    assert evaluator.evaluate(arguments[4], use) == Text("~y")  # resolved in pnh's namespace
+    assert evaluator.evaluate(arguments[4], use) == Text("~y", resolved=True)  # in pnh
 
 
 def test_parameters_bound_from_the_one_call_site(tmp_path: Path) -> None:

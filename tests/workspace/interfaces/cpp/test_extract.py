@@ -5,10 +5,10 @@ from __future__ import annotations
 from pathlib import Path
 
 from rosvar.diagnostics import DiagnosticSink, Location
-from rosvar.workspace.interfaces.cpp.extract import extract, extract_node
+from rosvar.workspace.interfaces.cpp.extract import extract_node
 from rosvar.workspace.interfaces.cpp.ros_types import ros_type
 from rosvar.workspace.interfaces.cpp.unit import Unit
-from rosvar.workspace.interfaces.model import Entry, Expression, Role
+from rosvar.workspace.interfaces.model import Entry, Expression, NamedBy, Role
 
 NODE = """\
 #include "talker.h"
@@ -69,7 +69,8 @@ def _extract(tmp_path: Path, files: dict[str, str], entry: str, owner: str | Non
         (tmp_path / name).write_text(text)
     sources = [str(tmp_path / name) for name in files if name.endswith(".cpp")]
     sink = DiagnosticSink()
-    entries = extract(Unit.load(sources, []), entry, owner, sink, Location("CMakeLists.txt"))
+    where = Location("CMakeLists.txt")
+    entries = extract_node(Unit.load(sources, []), entry, owner, sink, where).entries
     return entries, sink.items
 
 
@@ -289,7 +290,8 @@ int main(int argc, char** argv) {
 def test_variables_written_by_parameter_reads(tmp_path: Path) -> None:
     """robot_localization: ``std::string path = ""; nh.searchParam("tf_prefix", path);
     nh.getParam(path, prefix)`` reads a parameter whose name is only known at run time; a
-    topic initialised and then read from a parameter is the parameter's."""
+    topic initialised and then read from a parameter is named by the parameter, its
+    initialiser the default."""
     source = """\
 int main(int argc, char** argv) {
   ros::NodeHandle nh("~");
@@ -301,9 +303,11 @@ int main(int argc, char** argv) {
 }
 """
     entries, _ = _extract(tmp_path, {"p.cpp": source}, "main")
-    assert [(e.name, e.static) for e in entries if e.role is not Role.PARAMS] == [
-        ("~{topic}", False),
-        ("~odom", True),
+    assert [
+        (e.name, e.static, e.named_by, e.default) for e in entries if e.role is not Role.PARAMS
+    ] == [
+        ("~{~topic}", False, NamedBy("~topic", "~"), "scan"),
+        ("~odom", True, None, None),
     ]
     assert [e.name for e in entries if e.role is Role.PARAMS] == ["~{path}", "~topic"]
 

@@ -2,8 +2,10 @@
 
 A call is looked up by its package and its name (``launch_ros`` and ``Node`` for
 ``launch_ros.actions.Node`` as for ``launch_ros.actions.node.Node``), so that every import
-path of a name finds it. Substitutions, conditions and sources are registered here; actions
-in :mod:`~rosvar.ros2.frontends.python.actions`. A call to anything else is not followed.
+path of a name finds it. Substitutions, conditions and description sources are built here
+from the launch API's registries (:mod:`rosvar.ros2.api`), with the helpers that make text
+(``PathJoinSubstitution``, ``os.path``); actions in
+:mod:`~rosvar.ros2.frontends.python.actions`. A call to anything else is not followed.
 """
 
 from __future__ import annotations
@@ -13,6 +15,11 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.ros2.api.conditions import CONDITIONS
+from rosvar.ros2.api.conditions import Condition as ConditionEntry
+from rosvar.ros2.api.registry import python_name
+from rosvar.ros2.api.sources import SOURCES
+from rosvar.ros2.api.substitutions import SUBSTITUTIONS, Signature
 from rosvar.ros2.frontends.python.text import PATH_JOIN, Sub, Text, unknown
 from rosvar.ros2.frontends.python.values import (
     Condition,
@@ -90,10 +97,6 @@ REASONS: dict[tuple[str, str], str] = {
 """Why a known construct stays unknown, for its diagnostic."""
 
 
-def key(qualified: str) -> tuple[str, str]:
-    return qualified.partition(".")[0], qualified.rpartition(".")[2]
-
-
 def _register(package: str, *names: str) -> Callable[[Builder], Builder]:
     def register(builder: Builder) -> Builder:
         for name in names:
@@ -124,14 +127,16 @@ def join_path(head: Text, tail: Text) -> Text:
     return Text.of(head, separator, tail)
 
 
-def _substitution(name: str, *keywords: str, optional: int = 0) -> Builder:
-    """A substitution whose XML form takes the arguments ``keywords``, the last
-    ``optional`` of them only when given."""
+def _substitution(name: str, signature: Signature) -> Builder:
+    """A call of ``signature``, as ``$(name ...)`` of its arguments."""
 
     def build(call: Call) -> Value:
+        if signature.variadic:
+            return Text.of(Sub(name, tuple(call.text(arg) for arg in call.args)))
         args: list[Text] = []
+        keywords = signature.arguments
         for index, keyword in enumerate(keywords):
-            required = index < len(keywords) - optional
+            required = index < len(keywords) - signature.optional
             value = call.arg(index, keyword, _MISSING if required else None)
             if value is None and not required:
                 break
@@ -141,37 +146,11 @@ def _substitution(name: str, *keywords: str, optional: int = 0) -> Builder:
     return build
 
 
-for _package, _name, _xml, _keywords, _optional in (
-    ("launch", "LaunchConfiguration", "var", ("variable_name", "default"), 1),
-    ("launch", "EnvironmentVariable", "env", ("name", "default_value"), 1),
-    ("launch", "FindExecutable", "find-exec", ("name",), 0),
-    ("launch", "AnonName", "anon", ("name",), 0),
-    ("launch", "ThisLaunchFile", "filename", (), 0),
-    ("launch", "ThisLaunchFileDir", "dirname", (), 0),
-    ("launch", "EqualsSubstitution", "equals", ("left", "right"), 0),
-    ("launch", "NotEqualsSubstitution", "not-equals", ("left", "right"), 0),
-    ("launch", "AndSubstitution", "and", ("left", "right"), 0),
-    ("launch", "OrSubstitution", "or", ("left", "right"), 0),
-    ("launch", "NotSubstitution", "not", ("value",), 0),
-    ("launch", "IfElseSubstitution", "if", ("condition", "if_value", "else_value"), 0),
-    ("launch", "Command", "command", ("command", "on_stderr"), 1),
-    ("launch", "PythonExpression", "eval", ("expression",), 0),
-    ("launch_ros", "FindPackageShare", "find-pkg-share", ("package",), 0),
-    ("launch_ros", "FindPackagePrefix", "find-pkg-prefix", ("package",), 0),
-    ("launch_ros", "ExecutableInPackage", "exec-in-pkg", ("executable", "package"), 0),
-    ("launch_ros", "Parameter", "param", ("name",), 0),
-    ("ament_index_python", "get_package_share_directory", "find-pkg-share", ("package_name",), 0),
-    ("ament_index_python", "get_package_prefix", "find-pkg-prefix", ("package_name",), 0),
-    ("os", "getenv", "env", ("key", "default"), 1),
-    ("os", "get", "env", ("key", "default"), 1),  # os.environ.get
-):
-    CALLS[_package, _name] = _substitution(_xml, *_keywords, optional=_optional)
-
-
-@_register("launch", "AllSubstitution", "AnySubstitution")
-def _all_any(call: Call) -> Value:
-    name = "all" if call.name.endswith("AllSubstitution") else "any"
-    return Text.of(Sub(name, tuple(call.text(arg) for arg in call.args)))
+for _substitution_entry in SUBSTITUTIONS:
+    for _signature in _substitution_entry.signatures:
+        CALLS[python_name(_signature.qualified)] = _substitution(
+            _substitution_entry.names[0], _signature
+        )
 
 
 @_register("launch", "PathSubstitution")
@@ -213,29 +192,28 @@ def _dirname(call: Call) -> Value:
     return call.not_followed("os.path.dirname() of a computed path")
 
 
-def _condition(attribute: str, compare: str | None = None) -> Builder:
+def _condition(condition: ConditionEntry) -> Builder:
     def build(call: Call) -> Value:
-        if compare is None:
-            return Condition(attribute, call.text(call.arg(0, "predicate_expression")))
+        if condition.compare is None:
+            return Condition(condition.attribute, call.text(call.arg(0, "predicate_expression")))
         name = call.text(call.arg(0, "launch_configuration_name"))
         expected = call.text(call.arg(1, "expected_value"))
-        return Condition(attribute, Text.of(Sub(compare, (Text.of(Sub("var", (name,))), expected))))
+        compared = Sub(condition.compare, (Text.of(Sub("var", (name,))), expected))
+        return Condition(condition.attribute, Text.of(compared))
 
     return build
 
 
-CALLS["launch", "IfCondition"] = _condition("if")
-CALLS["launch", "UnlessCondition"] = _condition("unless")
-CALLS["launch", "LaunchConfigurationEquals"] = _condition("if", "equals")
-CALLS["launch", "LaunchConfigurationNotEquals"] = _condition("if", "not-equals")
-
-
-@_register("launch", "PythonLaunchDescriptionSource", "AnyLaunchDescriptionSource")
-@_register("launch", "FrontendLaunchDescriptionSource")
-@_register("launch_xml", "XMLLaunchDescriptionSource")
-@_register("launch_yaml", "YAMLLaunchDescriptionSource")
 def _source(call: Call) -> Value:
     return Source(call.text(call.arg(0, "launch_file_path")))
+
+
+for _condition_entry in CONDITIONS:
+    for _qualified in _condition_entry.python:
+        CALLS[python_name(_qualified)] = _condition(_condition_entry)
+for _source_entry in SOURCES:
+    for _qualified in _source_entry.python:
+        CALLS[python_name(_qualified)] = _source
 
 
 @_register("launch_ros", "ParameterValue")

@@ -21,6 +21,7 @@ from typing import Any
 from rosvar.arithmetic import ARITHMETIC, COMPARISONS
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
+from rosvar.ros2.api.registry import python_name
 from rosvar.ros2.frontends.python.actions import add_actions
 from rosvar.ros2.frontends.python.calls import (
     CALLS,
@@ -28,7 +29,6 @@ from rosvar.ros2.frontends.python.calls import (
     REASONS,
     Call,
     join_path,
-    key,
 )
 from rosvar.ros2.frontends.python.text import Sub, Text
 from rosvar.ros2.frontends.python.values import (
@@ -617,14 +617,14 @@ class Interpreter:
         if isinstance(callee, Method):
             return self.call_method(callee, args, kwargs, node)
         if isinstance(callee, Module):
-            builtin = BUILTINS.get(callee.qualified) or CALLING.get(key(callee.qualified))
+            builtin = BUILTINS.get(callee.qualified) or CALLING.get(python_name(callee.qualified))
             if builtin is not None:
                 return builtin(self, args, kwargs, node)
             call = Call(callee.qualified, args, kwargs, self.location(node), self.sink)
-            builder = CALLS.get(key(callee.qualified))
+            builder = CALLS.get(python_name(callee.qualified))
             if builder is not None:
                 return builder(call)
-            reason = REASONS.get(key(callee.qualified))
+            reason = REASONS.get(python_name(callee.qualified))
             return self.not_followed(reason or f"call to {callee.qualified}()", node)
         return self.not_followed(f"call of a {type(callee).__name__}", node)
 

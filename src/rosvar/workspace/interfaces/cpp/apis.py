@@ -10,6 +10,25 @@ import re
 
 from rosvar.workspace.interfaces.model import Role
 
+FRAMEWORK_CALLBACKS = (
+    "on_configure",
+    "on_activate",
+    "on_deactivate",
+    "on_cleanup",
+    "on_shutdown",
+    "on_error",
+)
+"""Methods the framework calls on a node object once it is built: a lifecycle node
+(``rclcpp_lifecycle::LifecycleNode``, nav2's) makes its interfaces in its transitions."""
+MAKERS = frozenset({"make_shared", "make_unique", "allocate_shared"})
+"""Calls that construct their first template argument with their arguments."""
+VALUE_GETTERS = frozenset({"c_str", "as_string", "get_value", "get", "value", "str"})
+"""Methods that give the value they are called on as text (``.c_str()``,
+``get_parameter("x").as_string()``)."""
+OUT_ARGUMENT_READS = frozenset(
+    {"searchParam", "getParam", "getParamCached", "get_parameter", "get_parameter_or"}
+)
+"""Reads that write a parameter's value into their second argument."""
 PRIVATE_HANDLES = frozenset({"getPrivateNodeHandle", "getMTPrivateNodeHandle"})
 PUBLIC_HANDLES = frozenset({"getNodeHandle", "getMTNodeHandle"})
 PARAM_READS = frozenset({"param", "getParam", "getParamCached"})
@@ -59,3 +78,26 @@ CONTROLLER_MANAGER_SERVICES = tuple(
     )
 )
 """What ros_control's ControllerManager serves (its constructor, controller_manager.cpp)."""
+
+TF_MESSAGE = "tf2_msgs/TFMessage"
+ROS2_TF_MESSAGE = "tf2_msgs/msg/TFMessage"
+TF_CLASSES: dict[str, tuple[Role, tuple[str, ...]]] = {
+    "TransformBroadcaster": (Role.PUBLISHES, ("/tf",)),
+    "StaticTransformBroadcaster": (Role.PUBLISHES, ("/tf_static",)),
+    "TransformListener": (Role.SUBSCRIBES, ("/tf", "/tf_static")),
+}
+"""tf's and tf2_ros's classes: the topics their construction uses."""
+WAIT_FOR_MESSAGE = frozenset({"ros::topic::waitForMessage", "rclcpp::wait_for_message"})
+"""Waiting for one message subscribes to its topic while it waits."""
+API_NAMES = frozenset(
+    {
+        *RCLCPP_CALLS,
+        RCLCPP_DECLARE,
+        *RCLCPP_READS,
+        "advertise",
+        "subscribe",
+        "advertiseService",
+        "serviceClient",
+    }
+)
+"""Names a project may give its own functions (a wrapper): such a call is the project's."""

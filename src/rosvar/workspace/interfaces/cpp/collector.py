@@ -7,16 +7,17 @@ read from the template argument or the callback's parameter.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from tree_sitter import Node
 
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.workspace.interfaces.cpp import apis, param_defaults, syntax
-from rosvar.workspace.interfaces.cpp.evaluator import Evaluator, Handle
+from rosvar.workspace.interfaces.cpp.evaluator import CallSite, Evaluator, Handle
 from rosvar.workspace.interfaces.cpp.unit import Function, Unit
-from rosvar.workspace.interfaces.model import Default, Entry, Expression, Role
-from rosvar.workspace.interfaces.values import Text, action_type
+from rosvar.workspace.interfaces.model import Default, Entry, Expression, NamedBy, Role
+from rosvar.workspace.interfaces.values import ParamRef, Text, action_type
 
 _NULLS = frozenset({"NULL", "nullptr", "0"})
 
@@ -33,6 +34,9 @@ class Collector:
     """rclcpp's parameter reads: kept where no declaration names the parameter."""
     node_names: list[Text] = field(default_factory=list)
     """The names rclcpp nodes are built with (``Node("talker")``)."""
+    ros2: bool = False
+    """A ROS 2 package: a node has one namespace, so whatever a call names the node by is it
+    (``message_filters::Subscriber<T> sub(this, "image")``)."""
 
     def add(
         self,
@@ -44,33 +48,90 @@ class Collector:
         type_name: str | None = None,
         default: Default | None = None,
     ) -> None:
-        location = Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1)
+        """The entries of one use: one per value its name takes at the call sites of the
+        function it is in (a wrapper's), placed at the call that gives the name."""
         if name_node is None:
             return
-        value = self.evaluator.evaluate(name_node, function)
-        name = value if isinstance(value, Text) else Text.unknown(syntax.text(name_node))
         namespace = handle.namespace if handle is not None else Text("")
-        resolved = name.within(namespace)
-        if not resolved.static:
+        for value, chain in self.evaluator.alternatives(name_node, function):
+            place = chain[-1].at if chain else at
+            file = chain[-1].caller.file if chain else function.file
+            location = Location(file, place.start_point[0] + 1, place.start_point[1] + 1)
+            kind = self._instantiated(type_name, role, function, chain)
+            if isinstance(value, ParamRef) and value.name.static and role is not Role.PARAMS:
+                named = NamedBy(value.name.value, namespace.value)
+                name = Text.unknown(value.name.value).within(namespace)
+                self.entries.append(
+                    Entry(
+                        role,
+                        name.value,
+                        location,
+                        type=kind,
+                        default=value.default,
+                        static=False,
+                        named_by=named,
+                    )
+                )
+                continue
+            written = value if isinstance(value, Text) else Text.unknown(syntax.text(name_node))
+            self._entry(role, written.within(namespace), location, kind, default)
+
+    def _entry(
+        self,
+        role: Role,
+        name: Text,
+        location: Location,
+        type_name: str | None = None,
+        default: Default | None = None,
+        boundary: bool = False,
+    ) -> None:
+        if not name.static:
             self.sink.warning(
                 "interface-symbolic-name",
-                f"{role} name not known statically: {resolved.value}",
+                f"{role} name not known statically: {name.value}",
                 location,
             )
         if type_name is None and role is not Role.PARAMS:
             self.sink.note(
-                "interface-unknown-type", f"{role} type not known: {resolved.value}", location
+                "interface-unknown-type", f"{role} type not known: {name.value}", location
             )
         self.entries.append(
             Entry(
                 role,
-                resolved.value,
+                name.value,
                 location,
                 type=type_name,
                 default=default,
-                static=resolved.static,
+                static=name.static,
+                boundary=boundary,
             )
         )
+
+    def _instantiated(
+        self, type_name: str | None, role: Role, function: Function, chain: tuple[CallSite, ...]
+    ) -> str | None:
+        """``type_name``, or, when it is a template parameter of ``function`` (or of its
+        class: ``ServiceT`` of ``ServiceClient<ServiceT>``), the type the construction or
+        call that gives the name instantiates it with (every one, when they agree)."""
+        if type_name is None or "/" in type_name or type_name not in function.templates:
+            return type_name
+        index = function.templates.index(type_name)
+        targets = (function.name, function.owner)
+        sites = [site for site in chain if site.name in targets]
+        if not sites:
+            owner = self.unit.functions.get(function.owner or "", [])
+            for target in (function, *(f for f in owner if f.owner == function.owner)):
+                sites.extend(self.evaluator.sites(target))
+        found = {
+            self.unit.message_type(site.templates[index])
+            for site in sites
+            if index < len(site.templates)
+        }
+        if len(found) != 1:
+            return None
+        message = found.pop()
+        actions = (Role.ACTION_SERVERS, Role.ACTION_CLIENTS)
+        return action_type(message) if message is not None and role in actions else message
 
     def scan(self, function: Function) -> None:
         for node in function.nodes(
@@ -119,6 +180,29 @@ class Collector:
             self.add(Role.SUBSCRIBES, handle, rest[0], function, at, message)
         elif base == "ControllerManager" and arguments:
             self._controller_manager(arguments[1:], function, at)
+        elif base in apis.TF_CLASSES and re.search(r"\btf2?(_ros)?::", compact):
+            self._tf(base, Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1))
+
+    def _tf(self, base: str, location: Location) -> None:
+        """tf's broadcasters publish ``/tf`` (the static one ``/tf_static``), for every tf
+        listener (a boundary use); a listener subscribes both."""
+        role, topics = apis.TF_CLASSES[base]
+        message = apis.ROS2_TF_MESSAGE if self.ros2 else apis.TF_MESSAGE
+        for topic in topics:
+            self._entry(role, Text(topic), location, message, boundary=role is Role.PUBLISHES)
+
+    def members(self, owner: str) -> None:
+        """The members a class's construction builds without arguments that make a use
+        (``tf::TransformBroadcaster br_;``): those no initialiser of the unit constructs."""
+        for name, (declaration, file) in self.unit.members.get(owner, {}).items():
+            type_node = declaration.child_by_field_name("type")
+            if type_node is None or name in self.unit.writes or "*" in syntax.text(declaration):
+                continue
+            compact = syntax.text(type_node).replace(" ", "")
+            base = syntax.last(compact.split("<")[0])
+            if base in apis.TF_CLASSES and re.search(r"\btf2?(_ros)?::", compact):
+                line, column = declaration.start_point
+                self._tf(base, Location(file, line + 1, column + 1))
 
     def _node_name(self, arguments: list[Node], function: Function) -> None:
         if arguments:
@@ -144,6 +228,8 @@ class Collector:
             first = self.evaluator.evaluate(arguments[0], function)
             if isinstance(first, Handle):
                 return first, arguments[1:]
+            if self.ros2 and not isinstance(first, Text | ParamRef):
+                return Handle(Text(""), rclcpp=True), arguments[1:]  # the node, however named
         return None, arguments
 
     def _call(self, node: Node, function: Function) -> None:
@@ -151,10 +237,16 @@ class Collector:
         if callee is None:
             return
         arguments = syntax.arguments(node)
+        if self._own(callee, function):
+            return  # the project's own function of an API's name (a wrapper): read inside
         if callee.type != "field_expression":
             name = syntax.text(callee).replace(" ", "")
             bare = name.split("<")[0]
-            if name in apis.FREE_PARAM_READS and arguments:
+            if callee.type == "qualified_identifier" and _node_method(bare):
+                bare = syntax.last(bare)  # rclcpp::Node::create_publisher<T>(...) in a wrapper
+            if bare in apis.WAIT_FOR_MESSAGE:
+                self._wait_for_message(bare, callee, arguments, function, node)
+            elif name in apis.FREE_PARAM_READS and arguments:
                 self._param(None, arguments, function, node, name.endswith("param"))
             elif bare in apis.RCLCPP_FREE_CALLS:
                 self._rclcpp_free(
@@ -164,7 +256,7 @@ class Collector:
                 pass  # a method of the rclcpp node the function belongs to
             elif apis.RCLCPP_NODE.search(name):
                 self._node_name(arguments, function)
-            elif syntax.last(bare) in ("make_shared", "make_unique"):
+            elif syntax.last(bare) in apis.MAKERS:
                 templates = syntax.template_arguments(callee)
                 if templates:
                     self._construction(templates[0], arguments, function, node)
@@ -200,6 +292,49 @@ class Collector:
             self.add(Role.CLIENTS, value, topic, function, node, self._first_type(templates))
         elif method in apis.PARAM_READS:
             self._param(value, arguments, function, node, method == "param")
+
+    def _own(self, callee: Node, function: Function) -> bool:
+        """Whether a call of an API's name (``create_publisher``) is of a function the
+        project defines: a method of the caller's class (or of the object's class) or a
+        free function of the unit."""
+        target = (
+            callee.child_by_field_name("argument") if callee.type == "field_expression" else None
+        )
+        name_node = callee.child_by_field_name("field") if target is not None else callee
+        if name_node is None or name_node.type not in (
+            "identifier",
+            "field_identifier",
+            "template_function",
+            "template_method",
+        ):
+            return False
+        name = syntax.last(syntax.text(name_node).split("<")[0].strip())
+        if name not in apis.API_NAMES:
+            return False
+        owners = {f.owner for f in self.unit.functions.get(name, ())}
+        if target is None or target.type == "this":
+            return function.owner in owners or (target is None and None in owners)
+        declared = self.unit.receiver_type(target, function)
+        return declared is not None and bool(owners & set(re.findall(r"\w+", declared)))
+
+    def _wait_for_message(
+        self, name: str, callee: Node, arguments: list[Node], function: Function, at: Node
+    ) -> None:
+        """``ros::topic::waitForMessage<T>("topic", nh)`` and rclcpp's
+        ``wait_for_message(msg, node, "topic")``: a subscription while it waits."""
+        templates = syntax.template_arguments(callee)
+        if name.startswith("rclcpp") and len(arguments) >= 3:
+            message = self._first_type(templates)
+            if message is None and arguments[0].type == "identifier":
+                variable = self.evaluator.local(syntax.text(arguments[0]), function)
+                message = self.unit.message_type(variable.type) if variable is not None else None
+            self.add(Role.SUBSCRIBES, None, arguments[2], function, at, message)
+        elif not name.startswith("rclcpp") and arguments:
+            handle = self.evaluator.evaluate(arguments[1], function) if len(arguments) > 1 else None
+            within = handle if isinstance(handle, Handle) else None
+            self.add(
+                Role.SUBSCRIBES, within, arguments[0], function, at, self._first_type(templates)
+            )
 
     def _rclcpp(
         self, method: str, callee: Node, arguments: list[Node], function: Function, at: Node
@@ -352,3 +487,13 @@ class Collector:
                     if signature:
                         return self.unit.message_type(signature[0])
         return None
+
+
+def _node_method(qualified: str) -> bool:
+    """``rclcpp::Node::create_publisher`` (a wrapper calling its base class's method)."""
+    parts = qualified.split("::")
+    return (
+        len(parts) >= 2
+        and parts[-2] in ("Node", "LifecycleNode")
+        and parts[-1] in apis.RCLCPP_CALLS
+    )

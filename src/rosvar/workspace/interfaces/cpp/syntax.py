@@ -41,6 +41,22 @@ def walk_all(node: Node) -> Iterator[Node]:
                 break
 
 
+def deeper_than(root: Node, limit: int) -> Node | None:
+    """The first node nested more than ``limit`` deep below ``root``, if any."""
+    cursor = root.walk()
+    depth = 0
+    while True:
+        if depth > limit:
+            return cursor.node
+        if cursor.goto_first_child():
+            depth += 1
+            continue
+        while not cursor.goto_next_sibling():
+            if not cursor.goto_parent():
+                return None
+            depth -= 1
+
+
 def walk(node: Node, types: set[str] | frozenset[str]) -> Iterator[Node]:
     """Every descendant of one of ``types``, in source order (including ``node``)."""
     return (current for current in walk_all(node) if current.type in types)
@@ -170,16 +186,38 @@ def parameter_type(parameter: Node) -> str:
 
 
 def template_arguments_text(type_text: str) -> list[str]:
-    if "<" not in type_text:
+    """The top-level template arguments of a type as written (``A<B<C>, D>`` → ``[B<C>,
+    D]``); none when it has no complete argument list (a comparison read as a type)."""
+    start, end = type_text.find("<"), type_text.rfind(">")
+    if start < 0 or end < start:
         return []
-    inner = type_text[type_text.index("<") + 1 : type_text.rindex(">")]
-    depth, parts, current = 0, [], ""
-    for char in inner:
+    depth, parts, begin = 0, [], start + 1
+    for index in range(start + 1, end):
+        char = type_text[index]
         if char == "," and depth == 0:
-            parts.append(current)
-            current = ""
-            continue
+            parts.append(type_text[begin:index])
+            begin = index + 1
         depth += char == "<"
         depth -= char == ">"
-        current += char
-    return [*parts, current]
+    return [*parts, type_text[begin:end]]
+
+
+def template_parameters(definition: Node) -> tuple[str, ...]:
+    """The template parameters a function definition is written under: its own
+    (``template <typename T> void f()``) or, for a method, its class template's."""
+    names: list[str] = []
+    node = definition.parent
+    while node is not None:
+        if node.type == "template_declaration":
+            parameters = node.child_by_field_name("parameters")
+            for parameter in parameters.named_children if parameters is not None else ():
+                name = next(
+                    (c for c in parameter.named_children if c.type == "type_identifier"), None
+                )
+                if name is not None:
+                    names.append(text(name))
+            break
+        if node.type == "translation_unit":
+            break
+        node = node.parent
+    return tuple(names)

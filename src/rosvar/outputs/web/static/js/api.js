@@ -24,16 +24,29 @@ export class ApiError extends Error {
   }
 }
 
+// Told while a request waits for the engine, busy with another client's step: its
+// "wait" events carry the server's message (the page says it).
+export const waiting = new EventTarget();
+const BUSY = 503;
+const BUSY_TRIES = 30;
+
 export async function request(method, path, body) {
   const options = { method, headers: {} };
   if (body !== undefined) {
     options.headers["Content-Type"] = "application/json";
     options.body = JSON.stringify(body);
   }
-  const response = await fetch(path, options);
-  const document = await response.json();
-  if (!response.ok) throw new ApiError(response.status, document.error || response.statusText);
-  return document;
+  for (let tries = 1; ; tries += 1) {
+    const response = await fetch(path, options);
+    const document = await response.json();
+    if (response.ok) return document;
+    if (response.status !== BUSY || tries === BUSY_TRIES) {
+      throw new ApiError(response.status, document.error || response.statusText);
+    }
+    waiting.dispatchEvent(new CustomEvent("wait", { detail: document.error }));
+    const seconds = Number(response.headers.get("Retry-After")) || 1;
+    await new Promise((resolve) => setTimeout(resolve, seconds * 1000));
+  }
 }
 
 // Resolves true when another open tab answers that it owns `id`.
@@ -122,6 +135,11 @@ export class Client {
   // topics, services or actions).
   members(group, kind, page) {
     return request("POST", "/api/group", { session: this.session, group, kind, page });
+  }
+
+  // The links between groups (the closed boxes drawn) in the session's current state.
+  links(groups) {
+    return request("POST", "/api/links", { session: this.session, groups });
   }
 
   async post(path, fields) {

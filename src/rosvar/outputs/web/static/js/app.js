@@ -4,7 +4,7 @@
 // while the previous one is still being answered is ignored (a double click is one choice);
 // the steps the page makes itself run one after another.
 
-import { ApiError, Client } from "./api.js";
+import { ApiError, Client, waiting } from "./api.js";
 import { Bar } from "./bar.js";
 import { DetailsPanel } from "./details.js";
 import { GraphView } from "./graph.js";
@@ -21,7 +21,7 @@ const bar = new Bar(
   {
     featuresLeft: $("features-left"), configurations: $("configurations"), completeness: $("completeness"),
     undo: $("undo"), redo: $("redo"), reset: $("reset"), finish: $("finish"),
-    message: $("message"), command: $("command"), copy: $("copy"),
+    message: $("message"), command: $("command"), copy: $("copy"), status: $("command-status"),
     notice: $("notice"), noticeText: $("notice-text"), noticeClose: $("notice-close"),
   },
   {
@@ -34,7 +34,7 @@ const bar = new Bar(
 const tree = new FeatureTree($("tree"), $("conflict-popup"), (action, feature, value) => {
   choose(() => client.choose(action, feature, value));
 });
-const graph = new GraphView($("graph"), (group, kind, page) => client.members(group, kind, page), (element, byUser) => {
+const graph = new GraphView($("graph"), (group, kind, page) => client.members(group, kind, page), (groups) => client.links(groups), (element, byUser) => {
   // a new selection opens the details; a step only refreshes them if they are open
   if (byUser || details.shown !== null) details.show(element, state);
   $("focus").disabled = !element;
@@ -47,7 +47,8 @@ const details = new DetailsPanel($("details"), $("details-body"), $("details-clo
 
 const session = () => client.session;
 const query = new QueryBox({ input: $("query"), status: $("query-status"), list: $("query-results") }, session, graph);
-const checks = new ChecksPanel({ toggle: $("checks-toggle"), count: $("checks-count"), panel: $("checks"), list: $("checks-list") }, session, graph);
+const checks = new ChecksPanel({ toggle: $("checks-toggle"), count: $("checks-count"), panel: $("checks"), list: $("checks-list") },
+                               session, () => state, graph, (error) => bar.say(`Checks: ${error.message}`, true));
 
 // changes: what changed since the state rendered before (Client.receive), null for all.
 async function render(next, changes = null) {
@@ -56,7 +57,7 @@ async function render(next, changes = null) {
   bar.update(state);
   await graph.update(state);
   query.update().catch((error) => bar.say(`Query: ${error.message}`, true));
-  checks.update().catch((error) => bar.say(`Checks: ${error.message}`, true));
+  checks.update();
   // body[data-step] counts rendered states: tests (and curious users) can wait for the next one
   document.body.dataset.step = String(Number(document.body.dataset.step ?? 0) + 1);
 }
@@ -100,12 +101,14 @@ function act(call) {
   return queue;
 }
 
+waiting.addEventListener("wait", () => bar.say("Waiting for the server: it is computing another client's step…"));
+
 function wireToolbars() {
   $("tree-filter").addEventListener("input", (event) => tree.filter(event.target.value));
   $("expand-all").addEventListener("click", () => tree.expand(true));
   $("collapse-all").addEventListener("click", () => tree.expand(false));
   $("graph-search").addEventListener("input", (event) => graph.search(event.target.value));
-  $("graph-search").addEventListener("keydown", (event) => { if (event.key === "Enter") graph.fit(); });
+  $("graph-search").addEventListener("keydown", (event) => { if (event.key === "Enter") graph.fitMatches(); });
   $("show-params").addEventListener("change", (event) => { graph.setOption("params", event.target.checked); });
   $("group-by").addEventListener("change", () => act(() => client.regroup()));
   $("overview").addEventListener("click", () => graph.overview());

@@ -1,5 +1,6 @@
 // The bar: counts, undo/redo/reset/finish, messages, the notice of a refused choice, and the
-// command with its copy button.
+// command with its copy button and, for as long as it lasts, what stops the product from
+// launching or from being known (a line under the command that no click clears).
 
 import { exactCount, readableCount, shortPath, shortenPaths } from "./names.js";
 
@@ -48,10 +49,16 @@ export class Bar {
     e.redo.disabled = !state.can_redo;
     e.finish.disabled = state.complete;
     const command = state.complete && state.command !== null;
+    const fails = command && state.launches === false;
     e.command.classList.toggle("pending", !command);
+    e.command.classList.toggle("fails", fails);
     e.command.textContent = command ? state.command : pendingText(state);
-    e.copy.disabled = !command;
+    e.copy.disabled = !command || fails;
     e.copy.textContent = "Copy";
+    const status = statusText(state, fails);
+    e.status.hidden = status === null;
+    e.status.textContent = status ?? "";
+    e.status.classList.toggle("fails", fails);
     const refused = state.refused ?? [];
     const stops = (state.graph.errors ?? []).filter((error) => error.presence === "present");
     if (refused.length) {
@@ -102,6 +109,28 @@ export class Bar {
     }
     this.elements.copy.textContent = "Copied ✓";
   }
+}
+
+// Why the finished product does not launch (the first error roslaunch stops at, or the first
+// certain clash), and what rosvar could not read of the selected files: null when neither.
+function statusText(state, fails) {
+  const lines = [];
+  if (fails) {
+    const stops = (state.graph.errors ?? []).filter((error) => error.presence === "present");
+    const clashes = (state.conflicts ?? []).filter((conflict) => conflict.status === "certain");
+    const first = stops.length
+      ? `roslaunch would stop at ${shortPath(stops[0].file)}:${stops[0].line}: ${stops[0].message}`
+      : `roslaunch refuses ${clashes[0].names.slice(0, 3).join(", ")} twice (${clashes[0].files.map(shortPath).join(" and ")})`;
+    const more = stops.length + clashes.length - 1;
+    lines.push(`This product does not launch: ${first}${more > 0 ? ` (and ${more} more)` : ""}.`);
+  }
+  const unknown = state.unknown ?? [];
+  if (unknown.length) {
+    const [first] = unknown;
+    const more = unknown.length > 1 ? ` (and ${unknown.length - 1} more place${unknown.length > 2 ? "s" : ""})` : "";
+    lines.push(`rosvar could not read all of the selected files: ${shortPath(first.file)}:${first.line}: ${first.message}${more}. What is shown may lack what they load.`);
+  }
+  return lines.length ? lines.join(" ") : null;
 }
 
 // What the command still waits for: open features, the text of an <other> value (a complete

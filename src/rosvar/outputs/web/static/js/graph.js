@@ -13,7 +13,7 @@
 // A state with more of these than LINKED_ABOVE (Husky with its dependencies as features:
 // thousands) would fetch megabytes of them per step to draw each one: then only those of the
 // groups drawn open are fetched, and two closed boxes are joined by one edge per direction
-// from the state's links between groups (how many names, of which kinds).
+// from the links between the boxes drawn (how many names, of which kinds; /api/links).
 //
 // Graph ids are stable across steps. When the drawn units appear or go the layout runs again
 // and every unit moves to its new place in an animation (new units grow from the box they
@@ -28,10 +28,10 @@ const LAYERED = { name: "dagre", rankDir: "LR", nodeSep: 14, rankSep: 110, anima
 const CELL = { width: 250, height: 80 }; // a grid cell: a unit and its two-line label
 const PAGE = 24; // members of an expanded group drawn at a time
 const ANIMATION_MS = 350;
-const ZOOM = { min: 0.6, max: 1.6 }; // the fit never goes below a zoom whose labels are legible
+const ZOOM = { legible: 0.6, max: 1.6 }; // grids are as wide as the view at a legible zoom; a fit zooms in up to max
 const PADDING = 30;
 const QUIET_LINKS_ABOVE = 20; // more links drawn than this: labels only on a selected or hovered box's links
-const LINKED_ABOVE = 250; // topics, services and actions drawn one by one at most (Husky's are), else links
+const LINKED_ABOVE = 100; // topics, services and actions drawn one by one at most, else links (Husky has 132)
 
 const STYLE = [
   { selector: "node", style: {
@@ -211,11 +211,12 @@ function groupTree(summaries) {
 }
 
 export class GraphView {
-  // members(group, kind, page) fetches a page of a group's members (the API's /api/group).
+  // members(group, kind, page) fetches a page of a group's members (the API's /api/group),
+  // links(groups) the links between groups (/api/links).
   // onSelect(element | null, byUser) is called with the selected unit's description
   // whenever the selection (byUser: true) or the selected unit's data (false) changes.
   // onDrawn() is called after every redraw.
-  constructor(container, members, onSelect, onDrawn = () => {}) {
+  constructor(container, members, links, onSelect, onDrawn = () => {}) {
     this.container = container;
     this.cy = cytoscape({ container, style: STYLE, minZoom: 0.05, maxZoom: 4, boxSelectionEnabled: false });
     this.options = { params: false };
@@ -227,6 +228,8 @@ export class GraphView {
     this.marked = new Map(); // who marks (a query, a finding) → [graph entry id, its group key]
     this.state = null;
     this.members = members;
+    this.links = links;
+    this.linking = []; // the links between the closed boxes drawn, as fetched
     this.fetched = new Map(); // "group kind page" → the answer's promise, for the state drawn
     this.channels = { topic: [], service: [], action: [] }; // every one, as fetched
     this.units = new Map(); // unit id → {names: lowercased member names} for the search
@@ -239,6 +242,9 @@ export class GraphView {
     this.layoutRuns = 0;
     this.layoutsDone = 0;
     this.container.dataset.layout = "done";
+    this.moved = false; // the user panned or zoomed since the view was last fitted to everything
+    this.settle = null; // what ends the running layout once the view is where it goes
+    this.cy.on("dragpan scrollzoom pinchzoom", () => { this.moved = true; });
     this.cy.on("select unselect", () => { this.markNear(); this.onSelect(this.selectedElement(), true); });
     this.cy.on("mouseover", "node", (event) => event.target.connectedEdges('[kind = "link"]').addClass("pointed"));
     this.cy.on("mouseout", "node", (event) => event.target.connectedEdges('[kind = "link"]').removeClass("pointed"));
@@ -389,10 +395,39 @@ export class GraphView {
     return found;
   }
 
+  // The groups drawn as closed boxes, as emit() in plan() draws them.
+  closed(root) {
+    const found = [];
+    const walk = (group) => {
+      for (const child of group.children.values()) {
+        if (this.opensWith(child) || this.isOpen(child)) walk(child);
+        else found.push(child.key);
+      }
+    };
+    walk(root);
+    return found;
+  }
+
+  // The links between the closed boxes in the state drawn, fetched once per set of boxes.
+  linksOf(keys) {
+    const key = `links ${keys.join("\u0003")}`;
+    if (!this.fetched.has(key)) {
+      const answer = this.links(keys);
+      answer.catch(() => this.fetched.delete(key));
+      this.fetched.set(key, answer);
+    }
+    return this.fetched.get(key);
+  }
+
   // Fetches what the drawing needs: the nodes (and params) of the open groups, the topics,
-  // services and actions of wired(root).
+  // services and actions of wired(root), and when linked the links between the closed boxes.
   async fetch(root) {
     const jobs = [];
+    this.linking = [];
+    if (this.linked()) {
+      const boxes = this.closed(root);
+      if (boxes.length > 1) jobs.push(this.linksOf(boxes).then((answer) => { this.linking = answer.links; }));
+    }
     // a group's own params and those of its subgroups holding no node
     const params = (into, group = into) => {
       if (group.own("params") > 0) jobs.push(this.pagesOf(group.key, "params").then((found) => into.params.push(...found)));
@@ -559,16 +594,16 @@ export class GraphView {
         }
       }
     }
-    if (this.linked()) this.linkEdges(state, drawn, wanted);
+    if (this.linked()) this.linkEdges(drawn, wanted);
     if (this.options.params) this.paramUnits(root, wanted, drawnNodes, unitOf, opened);
     return { wanted, unitOf, searchNames, boxOf };
   }
 
-  // One edge per direction between two closed boxes (`drawn`: the unit ids) that the state's
-  // links join, as thick as the names it stands for are many; dashed while none is present.
-  linkEdges(state, drawn, wanted) {
+  // One edge per direction between two closed boxes (`drawn`: the unit ids) that the links
+  // fetched join, as thick as the names it stands for are many; dashed while none is present.
+  linkEdges(drawn, wanted) {
     const edges = new Map(); // edge id → its element
-    for (const link of state.graph.links ?? []) {
+    for (const link of this.linking) {
       const [list, from, to] = link.id.split("\u0002"); // kind, group keys (overview.py's links)
       const [source, target] = [PREFIX.group + from, PREFIX.group + to];
       if (!drawn.has(source) || !drawn.has(target)) continue;
@@ -653,6 +688,7 @@ export class GraphView {
       this.markNear();
     });
     if (added.length || removed) this.layout(before);
+    else if (!this.moved && this.layoutsDone === this.layoutRuns) this.fit(); // labels may have changed
     if (this.focused && cy.getElementById(this.focused).empty()) this.focused = null;
     this.applyVisibility();
     this.onSelect(this.selectedElement(), false);
@@ -660,8 +696,8 @@ export class GraphView {
   }
 
   // Places every unit (layered where topics connect them, a grid for the rest), then moves
-  // them there from where they were (new ones from the box they came out of) and the view to
-  // the units that matter most: the elements drawn one by one, else everything. Links between
+  // them there from where they were (new ones from the box they came out of) and, unless the
+  // user moved the view since it was last fitted, the view to the whole drawing. Links between
   // closed boxes do not place them: layered, dozens of boxes joined every which way spread
   // over several screens; on the grid they stay in one view, the links drawn across it.
   layout(before) {
@@ -675,7 +711,7 @@ export class GraphView {
     let top = single.nonempty() ? this.grid(single, 0, 0, true) + CELL.height / 2 : 0;
     let left = 0;
     if (layered.nonempty()) {
-      layered.layout(LAYERED).run();
+      this.placeLayered(layered);
       const box = layered.boundingBox();
       for (const node of layered.nodes()) {
         const at = node.position();
@@ -687,6 +723,7 @@ export class GraphView {
     }
     this.grid(loose.difference(single), left, top);
     const target = new Map(cy.nodes().map((node) => [node.id(), { ...node.position() }]));
+    const drawing = cy.elements(":visible").boundingBox(); // where everything will be, labels too
     const origin = this.origin;
     this.origin = null;
     cy.batch(() => {
@@ -699,13 +736,106 @@ export class GraphView {
     cy.nodes().stop(true); // a layout still moving: its units start again from where they are
     const runs = ++this.layoutRuns;
     this.container.dataset.layout = "running";
-    const viewport = this.viewportFor(target);
     const finish = () => {
+      this.settle = null;
       this.layoutsDone = runs;
       if (runs === this.layoutRuns && !this.pending) this.container.dataset.layout = "done";
     };
+    this.settle = finish; // called by a view that stops this one's motion of the view
     for (const node of cy.nodes()) node.animate({ position: target.get(node.id()) }, { duration: ANIMATION_MS });
-    cy.animate({ ...viewport }, { duration: ANIMATION_MS, complete: finish });
+    const viewport = this.moved ? { pan: cy.pan(), zoom: cy.zoom() } : this.viewportFor(drawing);
+    cy.animate(viewport, { duration: ANIMATION_MS, complete: finish });
+  }
+
+  // Places the part topics connect: dagre's layers (data flowing left to right), or when a
+  // view shows these larger, three layers (the units that only feed names, the names, the
+  // rest), ordered by the mean place of their neighbours. Dagre's layers are as long as the
+  // longest chain of names and units (boxes feeding and using dozens of names make ten) and
+  // as tall as the most crowded (a node's topics and services); either way, layers are
+  // wrapped into side-by-side columns, at the height that the view shows at the largest zoom.
+  placeLayered(layered) {
+    layered.layout(LAYERED).run();
+    const byX = new Map(); // dagre centres a layer's nodes on one x
+    for (const node of layered.nodes()) {
+      const x = Math.round(node.position("x"));
+      if (!byX.has(x)) byX.set(x, []);
+      byX.get(x).push(node);
+    }
+    const flowing = this.wrapped([...byX.keys()].sort((a, b) => a - b)
+      .map((x) => byX.get(x).sort((a, b) => a.position("y") - b.position("y"))));
+    const compact = this.wrapped(this.threeLayers(layered));
+    const best = compact.zoom > flowing.zoom ? compact : flowing;
+    for (const [node, at] of best.places) node.position(at);
+  }
+
+  // Units feeding names only | the names | the others, each layer sorted by its neighbours'
+  // mean place in the previous one (a few sweeps each way).
+  threeLayers(layered) {
+    const channel = (node) => CHANNELS.some(([kind]) => kind === node.data("kind"));
+    const feedsOnly = (node) => node.connectedEdges().every((edge) => edge.source().same(node));
+    const nodes = layered.nodes().sort((a, b) => String(a.data("label")).localeCompare(String(b.data("label"))));
+    const layers = [nodes.filter((n) => !channel(n) && feedsOnly(n)), nodes.filter(channel),
+                    nodes.filter((n) => !channel(n) && !feedsOnly(n))].map((layer) => [...layer]);
+    const order = (layer, by) => {
+      const at = new Map(by.map((node, index) => [node.id(), index]));
+      const mean = new Map(layer.map((node, index) => {
+        const places = node.neighborhood("node").map((n) => at.get(n.id())).filter((i) => i !== undefined);
+        return [node.id(), places.length ? places.reduce((a, b) => a + b, 0) / places.length : index];
+      }));
+      layer.sort((a, b) => mean.get(a.id()) - mean.get(b.id()));
+    };
+    for (let sweep = 0; sweep < 3; sweep += 1) {
+      order(layers[1], [...layers[0], ...layers[2]]);
+      order(layers[0], layers[1]);
+      order(layers[2], layers[1]);
+    }
+    return layers.filter((layer) => layer.length);
+  }
+
+  // Layers (lists of nodes, top to bottom) wrapped into columns no taller than the height at
+  // which the view shows the drawing at the largest zoom: the places and that zoom.
+  wrapped(layers) {
+    const sizes = new Map(layers.flat().map((node) => {
+      const box = node.boundingBox();
+      return [node.id(), { w: box.w + LAYERED.nodeSep, h: box.h + LAYERED.nodeSep }];
+    }));
+    const place = (bound) => {
+      const places = new Map();
+      let left = 0;
+      let bottom = 0;
+      for (const layer of layers) {
+        const columns = [[]];
+        let height = 0;
+        for (const node of layer) {
+          const h = sizes.get(node.id()).h;
+          if (height + h > bound && columns.at(-1).length) { columns.push([]); height = 0; }
+          columns.at(-1).push(node);
+          height += h;
+        }
+        for (const column of columns) {
+          const width = Math.max(...column.map((node) => sizes.get(node.id()).w));
+          let y = 0;
+          for (const node of column) {
+            const h = sizes.get(node.id()).h;
+            places.set(node, { x: left + width / 2, y: y + h / 2 });
+            y += h;
+          }
+          bottom = Math.max(bottom, y);
+          left += width;
+        }
+        left += LAYERED.rankSep;
+      }
+      return { places, zoom: Math.min(this.cy.width() / left, this.cy.height() / bottom) };
+    };
+    const heights = [...sizes.values()].map((size) => size.h);
+    const lowest = Math.max(...heights);
+    const highest = heights.reduce((sum, h) => sum + h, 0);
+    let best = place(highest);
+    for (let step = 1; step < 25; step += 1) {
+      const tried = place(lowest + ((highest - lowest) * step) / 25);
+      if (tried.zoom > best.zoom) best = tried;
+    }
+    return best;
   }
 
   // Places nodes in a grid from (left, top), variants before boxes, by label; as many
@@ -718,7 +848,7 @@ export class GraphView {
     const order = nodes.sort((a, b) => (rank[a.data("kind")] - rank[b.data("kind")])
       || String(a.data("label")).localeCompare(String(b.data("label"))));
     const aspect = cy.width() / Math.max(1, cy.height());
-    const widest = Math.max(1, Math.floor((cy.width() - 2 * PADDING) / ZOOM.min / CELL.width));
+    const widest = Math.max(1, Math.floor((cy.width() - 2 * PADDING) / ZOOM.legible / CELL.width));
     const shaped = Math.ceil(Math.sqrt((order.length * aspect * CELL.height) / CELL.width));
     const cols = Math.max(1, Math.min(widest, wide ? order.length : shaped));
     order.forEach((node, index) => {
@@ -728,41 +858,23 @@ export class GraphView {
     return top + Math.ceil(order.length / cols) * CELL.height;
   }
 
-  // The zoom and pan that show `positions` (id → position) legibly: everything if it fits at
-  // a readable zoom, else the one-by-one elements (top left first).
-  viewportFor(positions, ids = null) {
+  // The zoom and pan that show a model bounding box whole, centred (zoomed in at most to
+  // ZOOM.max: a small drawing is not blown up).
+  viewportFor(box) {
     const cy = this.cy;
-    const chosen = ids ?? (() => {
-      const single = cy.nodes().filter((n) => ["node", "test", "params"].includes(n.data("kind"))).map((n) => n.id());
-      return single.length ? single : [...positions.keys()];
-    })();
-    const all = [...positions.keys()];
-    const box = (names) => {
-      const points = names.map((id) => positions.get(id)).filter(Boolean);
-      const xs = points.map((p) => p.x);
-      const ys = points.map((p) => p.y);
-      return { x1: Math.min(...xs) - CELL.width / 2, x2: Math.max(...xs) + CELL.width / 2,
-               y1: Math.min(...ys) - 30, y2: Math.max(...ys) + CELL.height - 20 };
-    };
-    const zoomFor = (b) => Math.min((cy.width() - 2 * PADDING) / (b.x2 - b.x1), (cy.height() - 2 * PADDING) / (b.y2 - b.y1));
-    if (!all.length) return { zoom: 1, pan: { x: 0, y: 0 } };
-    let b = box(all);
-    let zoom = zoomFor(b);
-    let most = ZOOM.max;
-    if (zoom < ZOOM.min) { // too much for one view: the first ones at a natural size, the rest below
-      b = box(chosen);
-      zoom = zoomFor(b);
-      most = 1;
-    }
-    zoom = Math.max(ZOOM.min, Math.min(most, zoom));
-    // centred when it fits, else its top left corner at the view's
-    const fitsX = (b.x2 - b.x1) * zoom <= cy.width() - 2 * PADDING;
-    const fitsY = (b.y2 - b.y1) * zoom <= cy.height() - 2 * PADDING;
-    const pan = {
-      x: fitsX ? cy.width() / 2 - zoom * (b.x1 + b.x2) / 2 : PADDING - zoom * b.x1,
-      y: fitsY ? cy.height() / 2 - zoom * (b.y1 + b.y2) / 2 : PADDING - zoom * b.y1,
-    };
-    return { zoom, pan };
+    if (!Number.isFinite(box.w) || box.w <= 0) return { zoom: cy.zoom(), pan: cy.pan() };
+    const fitting = Math.min((cy.width() - 2 * PADDING) / box.w, (cy.height() - 2 * PADDING) / box.h);
+    const zoom = Math.max(cy.minZoom(), Math.min(ZOOM.max, fitting));
+    return { zoom, pan: { x: cy.width() / 2 - zoom * (box.x1 + box.x2) / 2, y: cy.height() / 2 - zoom * (box.y1 + box.y2) / 2 } };
+  }
+
+  // Moves the view to show `elements` whole; `user`: the user asked for it (a search, a
+  // focus, a result), so layouts leave the view where it is until the next fit of everything.
+  view(elements, user) {
+    this.moved = user;
+    this.cy.stop(true);
+    this.settle?.(); // the layout's motion of the view was stopped: it is done all the same
+    this.cy.animate(this.viewportFor(elements.boundingBox()), { duration: ANIMATION_MS });
   }
 
   // -- navigation -----------------------------------------------------------------------------
@@ -771,12 +883,15 @@ export class GraphView {
     this.applyVisibility();
   }
 
-  // Fit the view to the search matches (or everything), at a legible zoom.
+  // Fits the view to everything drawn (the Fit button); layouts fit it again from now on.
   fit() {
+    this.view(this.cy.elements(":visible"), false);
+  }
+
+  // Fits the view to the search matches (Enter in the search box).
+  fitMatches() {
     const matches = this.cy.nodes(".match");
-    const shown = matches.nonempty() ? matches : this.cy.nodes(":visible");
-    const positions = new Map(shown.map((node) => [node.id(), { ...node.position() }]));
-    this.cy.animate(this.viewportFor(positions, [...positions.keys()]), { duration: ANIMATION_MS });
+    if (matches.nonempty()) this.view(matches, true);
   }
 
   focusSelected() {
@@ -784,7 +899,7 @@ export class GraphView {
     if (selected.empty()) return false;
     this.focused = selected[0].id();
     this.applyVisibility();
-    this.fit();
+    this.view(this.cy.elements(":visible"), true);
     return true;
   }
 
@@ -801,10 +916,7 @@ export class GraphView {
     this.marked.set(source, ids.map((id, at) => [id, groups[at]]));
     this.applyVisibility();
     const marked = this.cy.nodes(".queried");
-    if (fit && marked.nonempty()) {
-      const positions = new Map(marked.map((node) => [node.id(), { ...node.position() }]));
-      this.cy.animate(this.viewportFor(positions, [...positions.keys()]), { duration: ANIMATION_MS });
-    }
+    if (fit && marked.nonempty()) this.view(marked, true);
   }
 
   // The units drawing the marked graph entries (a box, when it holds one).

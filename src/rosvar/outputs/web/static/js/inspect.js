@@ -8,6 +8,8 @@ import { ApiError, request } from "./api.js";
 import { shortPath } from "./names.js";
 
 const TYPING_MS = 250; // a query is sent once the user pauses typing
+const ASK_AFTER_MS = 300; // checks are asked for once the user pauses clicking
+const PENDING_MS = 1000; // and again this often while the server lists the findings
 
 function item(className, ...children) {
   const node = document.createElement("li");
@@ -100,12 +102,16 @@ export class QueryBox {
 }
 
 export class ChecksPanel {
-  // elements: {toggle, count, panel, list}; session(): the tab's session id; graph: a GraphView.
-  constructor(elements, session, graph) {
+  // elements: {toggle, count, panel, list}; session(): the tab's session id; state(): the
+  // state shown; graph: a GraphView; failed(error): told when the server could not answer.
+  constructor(elements, session, state, graph, failed) {
     Object.assign(this, elements);
     this.session = session;
+    this.state = state;
     this.graph = graph;
+    this.failed = failed;
     this.latest = new Latest();
+    this.timer = null;
     this.chosen = null; // the key of the finding whose elements are drawn in red
     this.toggle.addEventListener("click", () => {
       this.panel.hidden = !this.panel.hidden;
@@ -113,12 +119,35 @@ export class ChecksPanel {
     });
   }
 
-  async update() {
+  // A new state: the counts of the one before are gone at once, and the server is asked once
+  // the user pauses (a click never waits behind the checks of the state before).
+  update() {
+    clearTimeout(this.timer);
+    this.latest.asked += 1; // an answer on its way is for an earlier state
+    this.count.textContent = "…";
+    this.count.title = "checking the current choices";
+    this.list.classList.add("stale"); // the findings of the state before, until the answer
+    this.timer = setTimeout(() => this.ask().catch(this.failed), ASK_AFTER_MS);
+  }
+
+  async ask() {
     if (!this.session()) return;
+    const asked = JSON.stringify(this.state().choices);
     const answer = await this.latest.ask("/api/checks", { session: this.session() });
-    if (answer === null) return;
+    // an answer for other choices than those shown (a step came meanwhile) is not shown
+    if (answer === null || JSON.stringify(answer.choices) !== asked) return;
+    if (asked !== JSON.stringify(this.state().choices)) return;
+    if (answer.pending) { // the findings are still being listed: ask again soon
+      const [done, files] = answer.pending;
+      this.count.textContent = `listing… ${Math.floor((100 * done) / Math.max(1, files))} %`;
+      this.count.title = `the checks have read ${done} of ${files} launch files`;
+      this.timer = setTimeout(() => this.ask().catch(this.failed), PENDING_MS);
+      return;
+    }
     const { error = 0, warning = 0, note = 0 } = answer.counts;
     this.count.textContent = `${error} errors · ${warning} warnings · ${note} notes`;
+    this.count.title = "";
+    this.list.classList.remove("stale");
     const keyOf = (finding) => `${finding.check} ${finding.name} ${JSON.stringify(finding.locations)}`;
     let chosen = null;
     this.list.replaceChildren(...answer.findings.map((finding) => {

@@ -1,0 +1,662 @@
+"""Substitution args (``$(arg)``, ``$(find)``, ``$(eval)``, ...) over all configurations.
+
+roslaunch's ``substitution_args``, which xacro reuses for its ``$()``: so the module is the
+core's, read by ROS 1's launch files and by robot descriptions of either ROS version. The
+scanning and replacement rules are roslaunch's: a
+first pass for ``env optenv dirname anon arg`` in order of appearance (each
+replacing every occurrence of its text), then a ``find`` pass over the result,
+and ``$(eval ...)`` only when it spans the whole attribute. Values are
+:class:`Choice` objects; what is unknown stays a :class:`Term`.
+"""
+
+from __future__ import annotations
+
+import ast
+import functools
+import os
+from collections.abc import Callable, Sequence
+from typing import Final, Protocol
+
+from rosvar.interpreter.model import Raw
+from rosvar.logic.choice import Choice, Fail, combine
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.terms import (
+    Apply,
+    Hole,
+    PackageTable,
+    Term,
+    TermError,
+    concat,
+    is_term,
+    register,
+)
+
+Value = Raw | Fail
+
+MAX_COMBINATIONS = 4096
+"""Combinations of operand values one attribute may compute (each varying ``$(arg)`` of a
+text multiplies them: a few lines could otherwise ask for 2^N strings)."""
+MAX_FILE_COMBINATIONS = 1_000_000
+"""Combinations all the attributes of one interpretation may compute together."""
+MAX_VALUE_SIZE = 1_000_000
+"""Characters (a term's operands counted each time they occur) of one value; args that
+concatenate the previous one twice would otherwise double it at every line."""
+MAX_TERM_DEPTH = 100
+"""Nesting of a symbolic value; deeper ones would exhaust recursion when evaluated."""
+
+
+class Missing:
+    def __repr__(self) -> str:
+        return "<undefined>"
+
+
+MISSING: Final = Missing()
+"""Leaf of an arg or anon value in the configurations where it is not defined."""
+
+ArgValue = Choice[Raw | Missing]
+
+
+class Scope(Protocol):
+    """What substitution reads of the place a text is in: ROS 1's launch scope, xacro's."""
+
+    filename: str
+    args: dict[str, ArgValue]
+    anon: dict[str, ArgValue]
+
+
+class SubstitutionError(Exception):
+    """The attribute text itself is malformed (roslaunch's ``SubstitutionException``)."""
+
+
+class Host(Protocol):
+    """What substitution needs from the running interpretation."""
+
+    space: ConditionSpace
+
+    def find_package(self, name: str) -> str | None: ...
+
+    def env_value(self, name: str) -> Choice[Raw | None]: ...
+
+    def new_anon(self, anon_id: str) -> Choice[Raw]: ...
+
+    def note_unknown_package(self, name: str) -> None: ...
+
+    def note_too_complex(self, message: str) -> None: ...
+
+
+@functools.lru_cache(maxsize=65536)
+def collect(text: str) -> tuple[str, ...]:
+    """The ``$(...)`` bodies of ``text``, by roslaunch's scanning state machine."""
+    out, dollar, lparen, inside = 0, 1, 2, 3
+    state = out
+    bodies: list[str] = []
+    buffer: list[str] = []
+    for ch in text:
+        if ch == "$":
+            if state == out:
+                state = dollar
+            elif state != dollar:
+                raise SubstitutionError(
+                    f"Dollar signs '$' cannot be inside of substitution args [{text}]"
+                )
+        elif ch == "(":
+            if state == dollar:
+                state = lparen
+            elif state != out:
+                raise SubstitutionError(
+                    f"Invalid left parenthesis '(' in substitution args [{text}]"
+                )
+        elif ch == ")":
+            if state == inside:
+                bodies.append("".join(buffer))
+                buffer.clear()
+            state = out
+        elif state == dollar:
+            state = out
+        elif state == lparen:
+            state = inside
+        if state == inside:
+            buffer.append(ch)
+    return tuple(bodies)
+
+
+@functools.lru_cache(maxsize=65536)
+def _split(body: str) -> tuple[str, ...]:
+    words = tuple(w for w in body.split(" ") if w)
+    if not words:
+        raise SubstitutionError(
+            f"Unknown substitution command [{body}]. Valid commands are {list(COMMANDS)}"
+        )
+    if words[0] not in COMMANDS:
+        raise SubstitutionError(
+            f"Unknown substitution command [{body}]. Valid commands are {list(COMMANDS)}"
+        )
+    return words
+
+
+@functools.lru_cache(maxsize=65536)
+def _segments(text: str, bodies: tuple[str, ...]) -> tuple[tuple[str, ...], tuple[str | int, ...]]:
+    """The distinct first-pass bodies of ``text``, and ``text`` cut at each of them.
+
+    An int segment stands for the value of that body; cutting at every occurrence is
+    roslaunch's ``replace()`` of all of them. Cached: the same texts recur in every
+    file that includes them.
+    """
+    segments: list[str | int] = [text]
+    distinct = tuple(dict.fromkeys(b for b in bodies if _split(b)[0] in FIRST_PASS))
+    for index, body in enumerate(distinct):
+        marker = f"$({body})"
+        next_segments: list[str | int] = []
+        for segment in segments:
+            if isinstance(segment, int):
+                next_segments.append(segment)
+                continue
+            pieces = segment.split(marker)
+            for k, piece in enumerate(pieces):
+                if k:
+                    next_segments.append(index)
+                next_segments.append(piece)
+        segments = next_segments
+    return distinct, tuple(segments)
+
+
+@functools.lru_cache(maxsize=65536)
+def _plan(
+    text: str,
+) -> tuple[tuple[str, ...], tuple[str | int, ...], bool, tuple[str, ...] | None]:
+    """How to resolve ``text``: its first-pass bodies and segments (as :func:`_segments`),
+    whether a find pass follows, and the args it reads when it reads nothing else (no
+    ``env``, ``anon`` nor ``dirname``): its value is then a function of theirs (and of the
+    workspace's packages). Raises :class:`SubstitutionError` for malformed text.
+    """
+    bodies = collect(text)
+    for body in bodies:
+        _split(body)
+    distinct, segments = _segments(text, bodies)
+    find = any(_split(b)[0] == "find" for b in bodies)
+    words = [_split(body) for body in distinct]
+    only_args = all(w[0] == "arg" and len(w) == 2 for w in words)
+    return distinct, segments, find, tuple(w[1] for w in words) if only_args else None
+
+
+# -- the find pass, on a concrete string (also used to evaluate terms later) ----------------
+def find_pass(text: str, lookup: Callable[[str], str | None]) -> str:
+    """roslaunch's second pass: every ``$(find pkg)`` plus the path that follows it."""
+    resolved = text
+    for body in collect(text):
+        words = _split(body)
+        if words[0] != "find":
+            continue
+        if len(words) != 2:
+            raise SubstitutionError(f"$(find pkg) command only accepts one argument [{body}]")
+        command = f"$({body})"
+        index = resolved.find(command)
+        if index < 0:
+            continue
+        before, after = resolved[:index], resolved[index + len(command) :]
+        space = after.find(" ")
+        path, after = (after, "") if space < 0 else (after[:space], after[space:])
+        if path.startswith("/"):
+            path = path[1:]
+        package_path = lookup(words[1])
+        if package_path is None:
+            raise LookupError(f"package '{words[1]}' not found")
+        if path:
+            package_path = os.path.join(package_path, path)
+        resolved = before + package_path + after
+    return resolved
+
+
+def _names_unknown_package(value: object) -> bool:
+    """Whether ``value`` is a find pass left symbolic because a package is not known."""
+    return (
+        isinstance(value, Apply)
+        and value.function == "find_pass"
+        and isinstance(value.operands[0], str)
+    )
+
+
+def _find_term(host: object, text: str) -> str:
+    if not isinstance(host, PackageTable):
+        raise LookupError("no package table to resolve $(find)")
+    return find_pass(text, host.paths.get)
+
+
+register("find_pass", _find_term)
+
+
+Command = Callable[["Substituter", str, tuple[str, ...], Scope], Choice[Value]]
+"""A first-pass command: the substituter, the whole body (for messages), its parameters."""
+FIRST_PASS: dict[str, Command] = {}
+"""The commands of roslaunch's first pass by name, in roslaunch's order; ``find`` is the
+second pass (:func:`find_pass`)."""
+
+
+def command(name: str) -> Callable[[Command], Command]:
+    """Register the first-pass command ``$(name ...)`` (extension by registry, like tags)."""
+
+    def register(handler: Command) -> Command:
+        if name in FIRST_PASS:
+            raise ValueError(f"substitution command {name!r} is registered twice")
+        FIRST_PASS[name] = handler
+        return handler
+
+    return register
+
+
+def _invalid(substituter: Substituter, message: str) -> Choice[Value]:
+    return Choice.const(substituter.space, Fail(message, "substitution-invalid"))
+
+
+@command("env")
+def _env(
+    substituter: Substituter, body: str, params: tuple[str, ...], scope: Scope
+) -> Choice[Value]:
+    if len(params) != 1:
+        return _invalid(substituter, f"$(env var) command only accepts one argument [{body}]")
+    name = params[0]
+    return substituter.host.env_value(name).map(
+        lambda v: Fail(f"environment variable '{name}' is not set", "env-unset") if v is None else v
+    )
+
+
+@command("optenv")
+def _optenv(
+    substituter: Substituter, body: str, params: tuple[str, ...], scope: Scope
+) -> Choice[Value]:
+    if not params:
+        return _invalid(substituter, f"$(optenv var) must specify an environment variable [{body}]")
+    default = " ".join(params[1:])
+    return substituter.host.env_value(params[0]).map(lambda v: default if v is None else v)
+
+
+@command("dirname")
+def _dirname(
+    substituter: Substituter, body: str, params: tuple[str, ...], scope: Scope
+) -> Choice[Value]:
+    return Choice.const(substituter.space, os.path.abspath(os.path.dirname(scope.filename)))
+
+
+@command("anon")
+def _anon(
+    substituter: Substituter, body: str, params: tuple[str, ...], scope: Scope
+) -> Choice[Value]:
+    if len(params) != 1:
+        if not params:
+            return _invalid(substituter, f"$(anon var) must specify a name [{body}]")
+        return _invalid(substituter, f"$(anon var) may only specify one name [{body}]")
+    return substituter.anon(params[0], scope)
+
+
+@command("arg")
+def _arg(
+    substituter: Substituter, body: str, params: tuple[str, ...], scope: Scope
+) -> Choice[Value]:
+    if len(params) != 1:
+        if not params:
+            return _invalid(substituter, f"$(arg var) must specify a variable name [{body}]")
+        return _invalid(substituter, f"$(arg var) may only specify one arg [{body}]")
+    return substituter.arg(params[0], scope)
+
+
+COMMANDS = ("find", *FIRST_PASS)
+
+
+class Substituter:
+    """Resolves attribute text in a scope, for all configurations at once."""
+
+    def __init__(self, host: Host) -> None:
+        self.host = host
+        self.space = host.space
+        # Values of texts that read args only (and packages), by text and the immutable
+        # choices of the args read: a file's texts recur in its elements and its includes'.
+        self._known: dict[tuple[object, ...], Choice[Value]] = {}
+        self.combinations = 0  # spent from MAX_FILE_COMBINATIONS
+
+    def _affordable(self, text: str, choices: Sequence[Choice[object]]) -> bool:
+        """Whether combining ``choices`` for ``text`` stays within the work limits (and,
+        if so, charge it); otherwise the caller makes ``text`` an unknown value."""
+        count = 1
+        for choice in choices:
+            count *= len(choice.branches)
+        if count <= 1:
+            return True
+        if count > MAX_COMBINATIONS:
+            reason = f"it has {count} combinations of values, over {MAX_COMBINATIONS}"
+        elif self.combinations + count > MAX_FILE_COMBINATIONS:
+            reason = f"the file's values need over {MAX_FILE_COMBINATIONS} combinations"
+        else:
+            self.combinations += count
+            return True
+        self.host.note_too_complex(f"{_short(text)} is not computed: {reason}")
+        return False
+
+    def resolve(self, text: str | None, scope: Scope) -> Choice[Value] | None:
+        if text is None:
+            return None
+        if "$" not in text:
+            return Choice.const(self.space, text)
+        try:
+            if text.startswith("$(eval ") and text.endswith(")"):
+                return self._eval(text[7:-1], scope)
+            distinct, segments, find, reads = _plan(text)
+        except SubstitutionError as error:
+            return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+        if reads is not None:
+            args = scope.args
+            key = (text, *[args.get(name) for name in reads])
+            known = self._known.get(key)
+            if known is None:
+                known = self._resolved(text, distinct, segments, find, scope)
+                if not any(map(_names_unknown_package, known.values())):
+                    self._known[key] = known  # (else its warning belongs to each place)
+            return known
+        return self._resolved(text, distinct, segments, find, scope)
+
+    def _resolved(
+        self,
+        text: str,
+        distinct: tuple[str, ...],
+        segments: tuple[str | int, ...],
+        find: bool,
+        scope: Scope,
+    ) -> Choice[Value]:
+        first = self._first_pass(text, distinct, segments, scope)
+        return first.map(self._apply_find) if find else first
+
+    def _apply_find(self, value: Value) -> Value:
+        if isinstance(value, Fail):
+            return value
+        if is_term(value):
+            return Apply("find_pass", (value,), display=str(value))
+        assert isinstance(value, str)
+        unknown: list[str] = []
+
+        def lookup(name: str) -> str | None:
+            path = self.host.find_package(name)
+            if path is None:
+                unknown.append(name)
+            return path
+
+        try:
+            return find_pass(value, lookup)
+        except SubstitutionError as error:
+            return Fail(str(error), "substitution-invalid")
+        except LookupError:
+            for name in unknown:
+                self.host.note_unknown_package(name)
+            return Apply("find_pass", (value,), display=value)
+
+    def _first_pass(
+        self,
+        text: str,
+        distinct: tuple[str, ...],
+        segments: tuple[str | int, ...],
+        scope: Scope,
+    ) -> Choice[Value]:
+        values = [self._command(body, scope) for body in distinct]
+        if not values:
+            return Choice.const(self.space, text)
+        if segments == ("", 0, ""):  # the whole text is one substitution: its value as is
+            return values[0]
+
+        if not self._affordable(text, values):
+            return Choice.const(self.space, too_complex(text))
+        oversized: list[str] = []
+
+        def join(leaves: list[Value]) -> Value:
+            for leaf in leaves:
+                if isinstance(leaf, Fail):
+                    return leaf
+            parts: list[Raw] = [
+                s if isinstance(s, str) else leaves[s]  # type: ignore[misc]
+                for s in segments
+            ]
+            size, depth = _measure(parts)
+            if size > MAX_VALUE_SIZE or depth > MAX_TERM_DEPTH:
+                oversized.append(f"over {MAX_VALUE_SIZE} characters or {MAX_TERM_DEPTH} levels")
+                return too_complex(text)
+            return concat(parts)
+
+        joined = combine(values, join)
+        if oversized:
+            self.host.note_too_complex(
+                f"{_short(text)} is not computed: its value would be {oversized[0]}"
+            )
+        return joined
+
+    def _command(self, body: str, scope: Scope) -> Choice[Value]:
+        words = _split(body)
+        return FIRST_PASS[words[0]](self, body, words[1:], scope)
+
+    def arg(self, name: str, scope: Scope) -> Choice[Value]:
+        value = scope.args.get(name)
+        if value is not None and all(v is not MISSING for _c, v in value.branches):
+            return value  # type: ignore[return-value]  # defined everywhere: no copy
+        missing = Fail(f"requires the '{name}' arg to be set", "arg-undefined")
+        if value is None:
+            return Choice.const(self.space, missing)
+        return value.map(lambda v: missing if v is MISSING else v)  # type: ignore[arg-type,return-value]
+
+    def anon(self, anon_id: str, scope: Scope) -> Choice[Value]:
+        known = scope.anon.get(anon_id)
+        if known is not None and all(v is not MISSING for v in known.values()):
+            return known  # type: ignore[return-value]
+        generated = self.host.new_anon(anon_id)
+        if known is None:
+            scope.anon[anon_id] = generated
+            return generated
+        merged: Choice[Raw] = known.bind(
+            lambda v: generated if isinstance(v, Missing) else Choice.const(self.space, v)
+        )
+        scope.anon[anon_id] = merged
+        return merged
+
+    # -- $(eval) ------------------------------------------------------------------------
+    def _eval(self, expression: str, scope: Scope) -> Choice[Value]:
+        # the evaluator is imported by the first file that needs it: most workspaces never do
+        from rosvar.interpreter.safe_eval import EvalRefused, referenced_args
+
+        space = self.space
+        if "__" in expression:
+            return Choice.const(
+                space,
+                Fail("$(eval ...) may not contain double underscore expressions", "eval-refused"),
+            )
+        try:
+            arg_names = sorted(referenced_args(expression))
+            env_names = sorted(_env_names(expression))
+        except EvalRefused as error:
+            return Choice.const(
+                space, Fail(f"$(eval {expression}): {error.message}", "eval-refused")
+            )
+        except _Undecidable as undecidable:
+            return Choice.const(
+                space, Fail(f"$(eval {expression}): {undecidable}", "eval-undecidable")
+            )
+        arg_choices = [scope.args.get(n, Choice.const(space, MISSING)) for n in arg_names]
+        env_choices = [self.host.env_value(n) for n in env_names]
+        filename = scope.filename
+        anon_values: dict[str, str] = {}
+
+        def run(leaves: list[object]) -> Value:
+            args = dict(zip(arg_names, leaves[: len(arg_names)], strict=True))
+            envs = dict(zip(env_names, leaves[len(arg_names) :], strict=True))
+            if any(is_term(v) for v in [*args.values(), *envs.values()]):
+                return Apply(
+                    "eval",
+                    (
+                        expression,
+                        tuple(arg_names),
+                        *(_operand(args[n]) for n in arg_names),
+                        tuple(env_names),
+                        *(_operand(envs[n]) for n in env_names),
+                        filename,
+                    ),
+                    display=f"$(eval {expression})",
+                )
+            return _run_eval(
+                expression,
+                {k: v for k, v in args.items() if isinstance(v, str)},
+                {k: v for k, v in envs.items() if isinstance(v, str)},
+                filename,
+                self.host.find_package,
+                lambda anon_id: anon_values.setdefault(anon_id, f"{anon_id}_anon"),
+            )
+
+        if not arg_choices and not env_choices:
+            return Choice.const(space, run([]))
+        choices: list[Choice[object]] = [*arg_choices, *env_choices]
+        if not self._affordable(f"$(eval {expression})", choices):
+            return Choice.const(space, too_complex(f"$(eval {expression})"))
+        return combine(choices, run)
+
+
+def too_complex(text: str) -> Apply:
+    """The unknown value of ``text`` when computing it would go beyond the work limits: a
+    term that no configuration can evaluate (``resolve`` reports ``value-unknown``)."""
+    return Apply("too_complex", (text,), display=f"⟨{_short(text)}⟩")
+
+
+def _too_complex_term(_host: object, text: str) -> str:
+    raise TermError(f"{_short(text)} was not computed: over rosvar's work limits")
+
+
+def _short(text: str) -> str:
+    """``text`` for a message (attribute texts can be megabytes long)."""
+    return text if len(text) <= 120 else f"{text[:117]}..."
+
+
+register("too_complex", _too_complex_term)
+
+
+def _measure(parts: Sequence[object]) -> tuple[int, int]:
+    """Characters and nesting of a concatenation of ``parts`` (shared operands of terms
+    counted each time, as showing or evaluating the value would)."""
+    size, depth = 0, 0
+    for part in parts:
+        if isinstance(part, str):
+            size += len(part)
+        elif isinstance(part, Hole | Apply):
+            part_size, part_depth = _term_measure(part)
+            size += part_size
+            depth = max(depth, part_depth + 1)
+    return size, depth
+
+
+@functools.lru_cache(maxsize=65536)
+def _term_measure(term: Hole | Apply) -> tuple[int, int]:
+    """A term's :func:`_measure` (recursing at most :data:`MAX_TERM_DEPTH` levels: deeper
+    terms are never built)."""
+    if isinstance(term, Hole):
+        return len(str(term)), 0
+    return _measure([o for o in term.operands if not isinstance(o, tuple)])
+
+
+class _Undecidable(Exception):
+    pass
+
+
+@functools.lru_cache(maxsize=4096)
+def _env_names(expression: str) -> frozenset[str]:
+    """Environment variables read by ``env('X')``/``optenv('X', ...)`` calls (cached: the
+    same expression is met in every includer)."""
+    tree = ast.parse(expression, mode="eval")
+    names: set[str] = set()
+    for node in ast.walk(tree):
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Name)
+            and node.func.id in ("env", "optenv")
+        ):
+            if (
+                node.args
+                and isinstance(node.args[0], ast.Constant)
+                and isinstance(node.args[0].value, str)
+            ):
+                names.add(node.args[0].value)
+            else:
+                raise _Undecidable("the environment variable name is not a literal")
+    return frozenset(names)
+
+
+def _operand(value: object) -> str | Term:
+    if value is MISSING or value is None:
+        return "\x00missing"
+    return value  # type: ignore[return-value]
+
+
+def _run_eval(
+    expression: str,
+    args: dict[str, str],
+    envs: dict[str, str],
+    filename: str,
+    find: Callable[[str], str | None],
+    anon: Callable[[str], str],
+) -> Value:
+    from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
+
+    def env(name: str) -> str:
+        if name not in envs:
+            raise EvalFailed(f"environment variable '{name}' is not set")
+        return envs[name]
+
+    def optenv(name: str, default: str = "") -> str:
+        return envs.get(name, default)
+
+    def find_function(name: str) -> str:
+        path = find(name)
+        if path is None:
+            raise EvalFailed(f"package '{name}' not found")
+        return path
+
+    def lookup(name: str) -> str:
+        return args[name]
+
+    environment = EvalEnvironment(
+        lookup_arg=lookup,
+        functions={
+            "env": env,
+            "optenv": optenv,
+            "find": find_function,
+            "anon": anon,
+            "dirname": lambda: os.path.abspath(os.path.dirname(filename)),
+        },
+    )
+    try:
+        return evaluate(expression, environment)
+    except EvalRefused as error:
+        return Fail(f"$(eval {expression}): {error.message}", "eval-refused")
+    except EvalFailed as failure:
+        return Fail(f"$(eval {expression}): {failure.message}", "eval-failed")
+
+
+def _eval_term(host: object, expression: str, *operands: object) -> str:
+    """Evaluate a deferred ``$(eval)`` once its inputs are concrete."""
+    arg_names = operands[0]
+    assert isinstance(arg_names, tuple)
+    n = len(arg_names)
+    arg_values = operands[1 : 1 + n]
+    env_names = operands[1 + n]
+    assert isinstance(env_names, tuple)
+    env_values = operands[2 + n : 2 + n + len(env_names)]
+    filename = operands[-1]
+    assert isinstance(filename, str)
+    args = {k: v for k, v in zip(arg_names, arg_values, strict=True) if v != "\x00missing"}
+    envs = {k: v for k, v in zip(env_names, env_values, strict=True) if v != "\x00missing"}
+    paths = host.paths if isinstance(host, PackageTable) else {}
+    result = _run_eval(
+        expression,
+        args,  # type: ignore[arg-type]
+        envs,  # type: ignore[arg-type]
+        filename,
+        paths.get,
+        lambda anon_id: f"{anon_id}_anon",
+    )
+    if isinstance(result, Fail):
+        raise ValueError(result.message)
+    assert isinstance(result, str)
+    return result
+
+
+register("eval", _eval_term)

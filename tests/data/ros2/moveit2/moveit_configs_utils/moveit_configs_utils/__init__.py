@@ -1,0 +1,1 @@
+from .moveit_configs_builder import MoveItConfigsBuilder, MoveItConfigs

@@ -1,0 +1,1 @@
+from .xacro import Xacro

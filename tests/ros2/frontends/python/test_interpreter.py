@@ -1,0 +1,168 @@
+"""The abstract interpreter of Python launch files, on its own: what it follows computes
+exactly what Python computes (the expressions below are evaluated by both), and what it does
+not follow is an unknown value with a diagnostic at its place, never a wrong value, within a
+bounded amount of work."""
+
+from __future__ import annotations
+
+import ast
+
+import pytest
+
+from rosvar.diagnostics import Diagnostic, DiagnosticSink
+from rosvar.ros2.frontends.python import interpreter
+from rosvar.ros2.frontends.python.interpreter import Interpreter, OutOfBudget
+from rosvar.ros2.frontends.python.values import Module, Unknown, Value
+
+
+def run(text: str) -> tuple[dict[str, Value], list[Diagnostic]]:
+    """The module-level names after reading ``text``, and the diagnostics."""
+    sink = DiagnosticSink()
+    scope = Interpreter("t.launch.py", text, sink).run_module(ast.parse(text))
+    return scope.names, sink.items
+
+
+FOLLOWED = [
+    "1 + 2 * 3",
+    "7 // 2 - 7 % 3",
+    "-7 // 2",
+    "7 / 2",
+    "0.1 + 0.2",
+    "3 - True",
+    "'a' + 'b' * 3",
+    "'é' * 2",
+    "'x' * 0",
+    "[1, 2] + [3]",
+    "(1, 2) * 2",
+    "1 < 2 <= 2 != 3",
+    "'a' < 'b'",
+    "[1] == [1]",
+    "'x' in 'xyz'",
+    "3 not in [1, 2]",
+    "None is None",
+    "0 or 'fallback'",
+    "'' and 'never'",
+    "[] or [1]",
+    "not []",
+    "-(-3)",
+    "'a' if 1 > 2 else 'b'",
+    "1 if [] else 2",
+    "'/'.join(['a', 'b'])",
+    "'{}-{}'.format('a', 1)",
+    "f'{1 + 1}x'",
+    "'A_b'.lower().replace('_', '-')",
+    "'a b  c'.split()",
+    "'a,b'.split(',')",
+    "' s '.strip()",
+    "'x'.startswith('x') and 'y'.endswith('y')",
+    "[i * 2 for i in range(4) if i != 2]",
+    "[x for x in 'ab']",
+    "{k: v for k, v in [('a', 1)]}",
+    "len('abc') + len([1])",
+    "str(3) + str(True)",
+    "int('7') + float('1.5')",
+    "bool('')",
+    "tuple([1, 2])",
+    "dict(a=1)['a']",
+    "list(range(3))[-1]",
+    "list(zip([1, 2], 'ab'))",
+    "list(enumerate('ab'))",
+    "'abcdef'[1:4]",
+    "'abc'[-1]",
+    "[1, 2, 3][::2]",
+    "[1, 2][True]",
+    "(1, [2])[1][0]",
+    "{'a': 1}.get('b', 2)",
+    "{'a': [1]}['a'] + [2]",
+    "list({'a': 1}.keys())",
+    "list({'a': 1}.values())",
+    "1e3",
+]
+
+
+@pytest.mark.parametrize("expression", FOLLOWED)
+def test_a_followed_expression_computes_what_python_computes(expression: str) -> None:
+    names, diagnostics = run(f"v = {expression}\n")
+    expected = eval(expression)  # the test's own constant expression, never a file's
+    assert (names["v"], type(names["v"])) == (expected, type(expected))
+    assert diagnostics == []
+
+
+NOT_FOLLOWED = {
+    "2 ** 10": "operator Pow",
+    "'%s-%d' % ('a', 1)": "'%' formatting",
+    "{'a': 1} | {'b': 2}": "operator BitOr",
+    "abs(-2)": "call to abs()",
+    "sorted([2, 1])": "call to sorted()",
+    "open('/etc/passwd').read()": "call to open()",
+    "__import__('os')": "call to __import__()",
+}
+
+
+@pytest.mark.parametrize("expression", sorted(NOT_FOLLOWED))
+def test_what_is_not_followed_is_unknown_with_a_diagnostic_at_its_place(expression: str) -> None:
+    names, diagnostics = run(f"x = 1\nv = {expression}\n")
+    assert isinstance(names["v"], Unknown) and NOT_FOLLOWED[expression] in names["v"].what
+    assert [(d.code, d.location.line, d.location.col) for d in diagnostics][:1] == [
+        ("python-not-followed", 2, 5)
+    ]
+
+
+def test_statements_loops_and_functions_are_followed() -> None:
+    names, diagnostics = run(
+        """
+def scaled(values, factor=2, *, offset=0):
+    result = []
+    for value in values:
+        if value == 3:
+            continue
+        if value > 4:
+            break
+        result.append(value * factor + offset)
+    return result
+
+total = 0
+for index, item in enumerate(scaled([1, 2, 3, 4, 5, 6], offset=1)):
+    total += index * item
+a, (b, c) = 'x', ['y', 'z']
+with_default = {}.get('missing', 'fallback')
+"""
+    )
+    assert names["total"] == sum(i * v for i, v in enumerate([3, 5, 9]))
+    assert (names["a"], names["b"], names["c"]) == ("x", "y", "z")
+    assert names["with_default"] == "fallback"
+    assert diagnostics == []
+
+
+def test_a_branch_on_an_unknown_value_is_reported_and_neither_is_taken() -> None:
+    names, diagnostics = run(
+        "import os\nx = 'before'\nif open('f'):\n    x = 'then'\nelse:\n    x = 'else'\n"
+    )
+    assert names["x"] == "before"
+    assert [d.message for d in diagnostics if d.location.line == 3] == [
+        "call to open() is not followed",
+        "an 'if' on a value not known statically (neither branch) is not followed",
+    ]
+    assert isinstance(names["os"], Module)
+
+
+def test_recursion_stops_at_the_call_depth(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(interpreter, "MAX_CALL_DEPTH", 5)
+    names, diagnostics = run("def f(n):\n    return f(n + 1)\n\nv = f(0)\n")
+    assert isinstance(names["v"], Unknown)
+    assert [d.message for d in diagnostics] == ["recursion of f() is not followed"]
+
+
+def test_the_step_budget_bounds_the_work(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(interpreter, "MAX_STEPS", 1000)
+    run("total = 0\nfor i in range(100):\n    total += i\n")  # within the budget
+    with pytest.raises(OutOfBudget):
+        run("total = 0\nfor i in range(10000):\n    total += i\n")
+
+
+def test_values_stay_within_the_length_and_size_bounds(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(interpreter, "MAX_LENGTH", 100)
+    names, diagnostics = run("short = 'ab' * 50\nlong = 'ab' * 51\nmany = list(range(101))\n")
+    assert names["short"] == "ab" * 50
+    assert isinstance(names["long"], Unknown) and isinstance(names["many"], Unknown)
+    assert len(diagnostics) == 2

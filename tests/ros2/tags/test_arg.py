@@ -1,0 +1,65 @@
+"""``<arg>`` (``DeclareLaunchArgument``) and ``<let>`` (``SetLaunchConfiguration``): global
+launch configurations, a default only where nothing is set, choices that fail the launch."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from ros2.tags.launches import launch
+from rosvar.logic.inputs import OTHER, UNSET
+
+MAIN = """<launch>
+  <arg name="mode" default="fast"><choice value="fast"/><choice value="slow"/></arg>
+  <arg name="robot"/>
+  <let name="label" value="$(var robot)_$(var mode)"/>
+  <node pkg="pkg" exec="driver" name="$(var label)"/>
+</launch>"""
+
+
+def test_defaults_choices_and_required_arguments_in_the_model(tmp_path: Path) -> None:
+    it = launch(tmp_path, MAIN, values={"robot": ["r1"], "mode": ["bad"]})
+    model = it.model
+    assert [a.name for a in model.args] == ["mode", "robot"]
+    (driver,) = model.nodes
+    named = {leaf: condition for condition, leaf in driver.field("name") if isinstance(leaf, str)}
+    r1 = it.given("robot", "r1")
+    assert it.same(named["r1_slow"], r1 & it.given("mode", "slow"))
+    assert it.same(named["r1_fast"], r1 & (it.given("mode", "fast") | it.given("mode", UNSET)))
+    fails = ~model.loads
+    assert it.implies(it.given("mode", "bad") | it.given("mode", OTHER), fails)  # no choice
+    assert it.implies(it.given("robot", UNSET), fails)  # no value, no default
+    assert it.implies(r1 & (it.given("mode", "slow") | it.given("mode", UNSET)), model.loads)
+
+
+@pytest.mark.oracle
+@pytest.mark.parametrize(
+    "arguments",
+    [{"robot": "r1"}, {"robot": "r1", "mode": "slow"}, {"robot": "r1", "mode": "bad"}, {}],
+)
+def test_given_defaulted_refused_and_missing_arguments_agree_with_ros2_launch(
+    tmp_path: Path, arguments: dict[str, str]
+) -> None:
+    it = launch(tmp_path, MAIN, values={"robot": ["r1"], "mode": ["bad"]})
+    it.matches_oracle(arguments)
+
+
+@pytest.mark.oracle
+def test_an_included_files_let_and_arg_reach_the_includer(tmp_path: Path) -> None:
+    it = launch(
+        tmp_path,
+        """<launch>
+          <let name="v" value="outer"/>
+          <include file="$(dirname)/inner.launch.xml"/>
+          <node pkg="pkg" exec="a" name="$(var v)_$(var w)"/>
+        </launch>""",
+        files={
+            "inner.launch.xml": """<launch>
+              <arg name="w" default="declared"/>
+              <let name="v" value="$(var v)_inner"/>
+            </launch>"""
+        },
+    )
+    assert it.matches_oracle({})["nodes"][0]["name"] == "outer_inner_declared"
+    it.matches_oracle({"w": "given"})
