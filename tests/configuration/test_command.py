@@ -8,6 +8,7 @@ from configuration.helpers import canonical, choices, configurator, product, run
 from json_view import read
 from rosvar.configuration.command import Launch, given, group
 from rosvar.configuration.engine import ConfigurationState
+from rosvar.outputs.documents.resolution import resolution_document
 from rosvar.ros.version import RosVersion
 from rosvar.ros1.resolve import resolve
 
@@ -90,8 +91,9 @@ def assert_resolves_the_same(ws: LaunchWorkspace, state: ConfigurationState) -> 
     """Each command line of a complete product loads what the product shows."""
     assert state.commands
     for members in state.commands:
-        resolved = resolve(ws.analysis(), [m.path for m in members], given(members))
-        resolution = read(resolved.to_json())
+        resolution = read(
+            resolution_document(resolve(ws.analysis(), [m.path for m in members], given(members)))
+        )
         ours = product(state, [m.spelled for m in members])
         assert ours["ok"] == resolution["ok"], state.command
         assert canonical(ours["nodes"]) == canonical(resolution["nodes"]), state.command

@@ -20,6 +20,7 @@ from json_view import read
 from rosvar.diagnostics import Location, Severity
 from rosvar.files import MAX_FILE_BYTES
 from rosvar.interpreter.model import LaunchModel
+from rosvar.outputs.documents.resolution import resolution_document
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -228,7 +229,7 @@ def test_bad_file_is_reported_and_the_rest_analysed(
     assert isinstance(matching[0].severity, Severity)
     assert not marker.exists()
     resolution = ws.resolve(entry)
-    document = read(resolution.to_json())
+    document = read(resolution_document(resolution))
     assert set(document) >= {"ok", "nodes", "params", "conflicts", "errors"}
     if matching[0].severity is Severity.ERROR:
         assert not resolution.ok

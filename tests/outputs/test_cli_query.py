@@ -13,7 +13,7 @@ from rosvar.outputs.commands.exit_codes import EXIT_OK, EXIT_USAGE
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
 
-from outputs.test_cli import schema_check
+from outputs.schemas import schema_check
 
 LAUNCH = """
   <arg name="robot" default="kobuki"/>
