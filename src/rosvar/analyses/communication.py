@@ -540,7 +540,7 @@ def _resolved_node(node: Mapping[str, object]) -> LaunchedNode:
         _text(node.get("package")),
         _text(node.get("type")),
         _text(node.get("namespace")),
-        str(node["name"]).rsplit(names.SEP, 1)[-1],
+        _text(node.get("name")).rsplit(names.SEP, 1)[-1],  # a ROS 2 process has none
         _text(node.get("args")),
         pairs,
     )
