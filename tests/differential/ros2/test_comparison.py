@@ -62,6 +62,17 @@ def test_anonymous_names_and_explained_errors_agree() -> None:
     )
     assert compare(oracle, rosvar) == []
     assert compare(oracle, _answer(_node(name="other_anon1")))
+    unread = {"code": "node-invalid", "message": "parameter file /deps/absent_pkg/a.yaml"}
+    assert compare(oracle, _answer(_node(name="talker_anon1"), errors=[unread])) == []
+
+
+def test_remappings_differ_in_order_only_where_the_order_matters() -> None:
+    rules = [["a", "x"], ["b", "y"]]
+    swapped = _answer(_node(remappings=rules[::-1]))
+    assert compare(_answer(_node(remappings=rules)), swapped) == []
+    shared = [["a", "x"], ["a", "y"]]
+    (cause,) = compare(_answer(_node(remappings=shared)), _answer(_node(remappings=shared[::-1])))
+    assert cause.category == "remappings differs"
 
 
 def test_the_oracles_json_is_repaired_where_a_renamed_path_ate_an_escape() -> None:
