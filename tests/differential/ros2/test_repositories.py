@@ -31,9 +31,9 @@ CONFIGS = 3
 FLOORS = {  # agreeing configurations of the default sample
     "Universal_Robots_ROS2_Driver": 3,
     "autoware.universe": 6,
-    "clearpath_common": 2,
+    "clearpath_common": 4,
     "demos": 4,
-    "husky": 3,
+    "husky": 4,
     "image_pipeline": 2,
     "moveit2": 0,
     "moveit2_tutorials": 0,
@@ -43,18 +43,18 @@ FLOORS = {  # agreeing configurations of the default sample
     "slam_toolbox": 13,
 }
 FULL_FLOORS = {  # agreeing configurations of the whole sample (--ros2-full)
-    "Universal_Robots_ROS2_Driver": 0,
-    "autoware.universe": 0,
-    "clearpath_common": 0,
-    "demos": 0,
-    "husky": 0,
-    "image_pipeline": 0,
+    "Universal_Robots_ROS2_Driver": 28,
+    "autoware.universe": 321,
+    "clearpath_common": 13,
+    "demos": 14,
+    "husky": 8,
+    "image_pipeline": 10,
     "moveit2": 0,
-    "moveit2_tutorials": 0,
+    "moveit2_tutorials": 1,
     "realsense-ros": 0,
-    "ros2_control_demos": 0,
-    "ros_gz": 0,
-    "slam_toolbox": 0,
+    "ros2_control_demos": 16,
+    "ros_gz": 51,
+    "slam_toolbox": 19,
 }
 
 
