@@ -18,6 +18,8 @@ from typing import Any
 
 import pytest
 
+from rosvar.interpreter.resolution import Resolution
+
 REPOSITORY = Path(__file__).resolve().parents[2]
 ORACLE = REPOSITORY.parent / "shared" / "ros2-oracle"
 VENV = REPOSITORY / ".oracle-ros2-venv"
@@ -92,6 +94,27 @@ def loads_repaired(text: str) -> dict[str, Any]:
             text = f"{text[:quote]}\\{text[quote:]}"
     result = json.loads(text)
     return result
+
+
+def rosvar_nodes(result: Resolution) -> dict[str, Any]:
+    """rosvar's resolved nodes as the oracle records them: :data:`KEYS`, named as the oracle
+    names them (``name`` the node's own, ``remappings`` in order); a process has only its
+    ``kind`` and ``cmd``."""
+    nodes = []
+    for node in result.nodes:
+        record = {key: node.attributes.get(key) for key in ("kind", "plugin", "container")}
+        record.update(arguments=node.attributes.get("arguments"), cmd=node.attributes.get("cmd"))
+        if node.attributes.get("kind") != "process":
+            record.update(
+                package=node.package,
+                executable=node.executable,
+                name=node.own_name,
+                namespace=node.namespace,
+                remappings=[list(pair) for pair in node.remaps],
+                parameters=node.parameters,
+            )
+        nodes.append(record)
+    return {"nodes": nodes}
 
 
 MISSING_EXECUTABLE = re.compile(r"/__missing_exec__/([^\s\\\"'/]+)")
