@@ -23,9 +23,10 @@ import ast
 import os
 import re
 import xml.etree.ElementTree as ElementTree
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import yaml
 
@@ -225,13 +226,22 @@ def _substitutions(reading: Reading, text: str) -> None:
         reading.conditions |= {whole.group(1)} if whole else set()
 
 
-def read_xml(text: str) -> Reading:
+def _parsed(text: str, parse: Callable[[str], Any], error: type[Exception]) -> tuple[Reading, Any]:
+    """A new reading with the text's substitutions, and its tree (None if it does not parse:
+    then the reading stays empty, as the file declares nothing ``ros2 launch`` could load)."""
     reading = Reading()
     try:
-        root = ElementTree.fromstring(text)
-    except ElementTree.ParseError:
-        return reading
+        tree = parse(text)
+    except error:
+        return reading, None
     _substitutions(reading, text)
+    return reading, tree
+
+
+def read_xml(text: str) -> Reading:
+    reading, root = _parsed(text, ElementTree.fromstring, ElementTree.ParseError)
+    if root is None:
+        return reading
     for element in root.iter():
         if element.tag == "let" and "name" in element.attrib:
             reading.sets.add(element.attrib["name"])
@@ -275,12 +285,7 @@ def _yaml_entries(node: object) -> Iterator[tuple[str, object]]:
 
 
 def read_yaml(text: str) -> Reading:
-    reading = Reading()
-    try:
-        document = yaml.safe_load(text)
-    except yaml.YAMLError:
-        return reading
-    _substitutions(reading, text)
+    reading, document = _parsed(text, yaml.safe_load, yaml.YAMLError)
     for tag, body in _yaml_entries(document):
         if not isinstance(body, dict):
             continue
