@@ -68,6 +68,7 @@ __all__ = [
     "compare",
     "configurations",
     "difference_class",
+    "message_pattern",
     "requires_oracle",
     "run_system",
     "shared_oracle",
@@ -391,6 +392,13 @@ _NORMALISE = (
 )
 
 
+def message_pattern(message: str) -> str:
+    """``message`` with its bracketed lists, quoted names, paths and numbers made alike."""
+    for regex, replacement in _NORMALISE:
+        message = regex.sub(replacement, message)
+    return message
+
+
 def difference_class(line: str) -> str:
     """The class of one difference line: its kind, and for failures a message pattern."""
     kind, _, detail = line.partition(": ")
@@ -398,9 +406,7 @@ def difference_class(line: str) -> str:
         pattern = detail
         if kind.startswith("rosvar failed"):
             pattern = re.sub(r" at \S+$", "", pattern)
-        for regex, replacement in _NORMALISE:
-            pattern = regex.sub(replacement, pattern)
-        return f"{kind}: {pattern[:100]}"
+        return f"{kind}: {message_pattern(pattern)[:100]}"
     return kind
 
 
