@@ -94,7 +94,7 @@ def generate_launch_description():
     </node>
   </group>
   <include file="$(find-pkg-share demo)/launch/sub.launch.py"
-           if="$(equals $(var mode) a)">
+           if="$(rosvar-configuration-equals mode a)">
     <arg name="robot" value="$(var ns robot)"/>
   </include>
   <executable cmd="ls -l" if="$(eval '$(var mode) == \\'b\\'')"/>

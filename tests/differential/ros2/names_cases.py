@@ -1,0 +1,97 @@
+"""Fixtures of the launch API's names (``rosvar.ros2.api``): each name in each frontend that
+has it, for :mod:`.test_fixtures` (rosvar's resolution) and :mod:`.test_variational` (the
+model restricted) to compare with the oracle."""
+
+from __future__ import annotations
+
+Case = tuple[dict[str, str], list[dict[str, str]]]
+
+_BOOLEAN_XML = """<launch>
+  <arg name="mode" default="a"/>
+  <arg name="on" default="true"/>
+  <arg name="gripper" default=""/>
+  <node pkg="pkg" exec="x" name="eq" if="$(equals $(var mode) a)"/>
+  <node pkg="pkg" exec="x" name="ne" if="$(not-equals $(var mode) a)"/>
+  <node pkg="pkg" exec="x" name="empty" if="$(equals $(var gripper) '')"/>
+  <node pkg="pkg" exec="x" name="num" if="$(equals $(var mode) 1.0)"/>
+  <node pkg="pkg" exec="x" name="t_$(not $(var on))_$(and $(var on) $(var on))_$(or $(var on) 0)"/>
+  <node pkg="pkg" exec="x" name="$(if $(var on) yes no)_$(if $(var on) only)"/>
+</launch>"""
+
+_BOOLEAN_YAML = """launch:
+- arg: {name: mode, default: a}
+- arg: {name: 'on', default: 'true'}
+- arg: {name: gripper, default: ''}
+- node: {pkg: pkg, exec: x, name: eq, if: $(equals $(var mode) a)}
+- node: {pkg: pkg, exec: x, name: ne, if: $(not-equals $(var mode) a)}
+- node: {pkg: pkg, exec: x, name: empty, if: "$(equals $(var gripper) '')"}
+- node: {pkg: pkg, exec: x, name: num, if: $(equals $(var mode) 1.0)}
+- node: {pkg: pkg, exec: x, name: t_$(not $(var on))_$(and $(var on) $(var on))_$(or $(var on) 0)}
+- node: {pkg: pkg, exec: x, name: $(if $(var on) yes no)_$(if $(var on) only)}
+"""
+
+_BOOLEAN_PY = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition, LaunchConfigurationEquals
+from launch.conditions import LaunchConfigurationNotEquals
+from launch.substitutions import AllSubstitution, AndSubstitution, AnySubstitution
+from launch.substitutions import EqualsSubstitution, IfElseSubstitution
+from launch.substitutions import LaunchConfiguration as V
+from launch.substitutions import NotSubstitution, OrSubstitution
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    on = V('on')
+    return LaunchDescription([
+        DeclareLaunchArgument('mode', default_value='a'),
+        DeclareLaunchArgument('on', default_value='true'),
+        DeclareLaunchArgument('gripper', default_value=''),
+        Node(package='pkg', executable='x', name='eq',
+             condition=LaunchConfigurationEquals('mode', 'a')),
+        Node(package='pkg', executable='x', name='ne',
+             condition=LaunchConfigurationNotEquals('mode', 'a')),
+        Node(package='pkg', executable='x', name='empty',
+             condition=IfCondition(EqualsSubstitution(V('gripper'), ''))),
+        Node(package='pkg', executable='x', name='num',
+             condition=IfCondition(EqualsSubstitution(V('mode'), '1.0'))),
+        Node(package='pkg', executable='x', name=[
+            't_', NotSubstitution(on), '_', AndSubstitution(on, on), '_', OrSubstitution(on, '0')
+        ]),
+        Node(package='pkg', executable='x', name=[
+            IfElseSubstitution(on, 'yes', 'no'), '_', IfElseSubstitution(on, 'only')
+        ]),
+        Node(package='pkg', executable='x', name=[
+            'u_', AllSubstitution(on, '1', 'yes'), '_', AnySubstitution('false', on), '_',
+            AllSubstitution(), AnySubstitution()
+        ]),
+    ])
+"""
+
+CASES: dict[str, Case] = {
+    "boolean-substitutions-and-equality-conditions": (
+        {
+            "main.launch.xml": _BOOLEAN_XML,
+            "main.launch.yaml": _BOOLEAN_YAML,
+            "main.launch.py": _BOOLEAN_PY,
+        },
+        [
+            {},
+            {"mode": "b", "on": "0", "gripper": "g"},
+            {"mode": "1", "on": "yes"},
+            {"mode": "A", "on": "Off", "gripper": "''"},
+            {"on": "maybe"},
+        ],
+    ),
+    "all-and-any-fail-in-xml-and-yaml": (
+        {
+            "main.launch.xml": """<launch>
+            <node pkg="pkg" exec="x" name="a" if="$(all true 1)"/>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- node: {pkg: pkg, exec: x, name: a, if: $(any true 1)}
+""",
+        },
+        [{}],
+    ),
+}
