@@ -30,6 +30,7 @@ from rosvar.ros2.context import Context
 from rosvar.ros2.frontends.python.text import CONFIGURATION_EQUALS, EMPTY
 from rosvar.ros2.substitutions import (
     EMPTY_ARGUMENT,
+    UNSUPPORTED,
     Handler,
     Value,
     configuration,
@@ -180,7 +181,7 @@ def _unparsable(name: str) -> Handler:
     def handler(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
         cls = {"all": "AllSubstitution", "any": "AnySubstitution"}[name]
         message = f"$({name}) fails in jazzy's frontends: {cls}() takes no 'args'"
-        return Choice.const(host.space, Fail(message, "substitution-unsupported"))
+        return Choice.const(host.space, Fail(message, UNSUPPORTED))
 
     return handler
 

@@ -22,10 +22,13 @@ from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefuse
 from rosvar.logic.choice import Choice, Fail, combine, ite
 from rosvar.logic.terms import Apply, TermError, concat, register
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS
+from rosvar.ros2.api.unmodelled import UNMODELLED
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.frontends.python.text import CONFIGURATION_EQUALS, EMPTY, PATH_JOIN, UNKNOWN
 
 Value = Raw | Fail
+UNSUPPORTED = "substitution-unsupported"
+"""The code of a launch substitution rosvar does not compute (reported with the reason)."""
 
 
 class SubstitutionSyntaxError(Exception):
@@ -215,6 +218,11 @@ class Ros2Substituter:
             return Choice.const(self.space, part)
         handler = HANDLERS.get(part.name)
         if handler is None:
+            reported = UNMODELLED.by_name.get(part.name)
+            if reported is not None:
+                return Choice.const(
+                    self.space, Fail(f"{reported.why()} is not modelled", UNSUPPORTED)
+                )
             return Choice.const(
                 self.space, Fail(f"unknown substitution '{part.name}'", "substitution-unknown")
             )

@@ -68,6 +68,24 @@ def generate_launch_description():
     ])
 """
 
+_EMIT_SHUTDOWN_PY = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, EmitEvent, TimerAction
+from launch.conditions import IfCondition
+from launch.events import Shutdown
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('stop', default_value='false'),
+        TimerAction(period=1.0, actions=[Node(package='pkg', executable='x', name='late')]),
+        EmitEvent(event=Shutdown(reason='asked'),
+                  condition=IfCondition(LaunchConfiguration('stop'))),
+        Node(package='pkg', executable='x', name='now'),
+    ])
+"""
+
 CASES: dict[str, Case] = {
     "boolean-substitutions-and-equality-conditions": (
         {
@@ -94,4 +112,5 @@ CASES: dict[str, Case] = {
         },
         [{}],
     ),
+    "emit-event-shutdown": ({"main.launch.py": _EMIT_SHUTDOWN_PY}, [{}, {"stop": "true"}]),
 }

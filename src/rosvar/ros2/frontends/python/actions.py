@@ -208,6 +208,19 @@ def _launch_description(call: Call) -> Value:
     return description
 
 
+def _emit_event(call: Call) -> Value:
+    """``EmitEvent(event=Shutdown(...))`` is the ``<shutdown>`` action (the event's class
+    shares the action's name, so it is built as that action), under the ``condition`` given;
+    other events are read only by event handlers and the launch service."""
+    event = call.arg(0, "event")
+    if not isinstance(event, Entity) or event.tag != "shutdown":
+        return call.not_followed(f"EmitEvent of a {type(event).__name__} (only Shutdown is)")
+    event.location = call.location
+    _set_condition(call, event, call.kwargs.get("condition"))
+    return event
+
+
 for _key, _spec in ACTIONS.by_python.items():
     CALLS[_key] = _action(_spec)
 CALLS["launch", "LaunchDescription"] = _launch_description
+CALLS["launch", "EmitEvent"] = _emit_event

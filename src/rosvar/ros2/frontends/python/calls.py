@@ -20,6 +20,7 @@ from rosvar.ros2.api.conditions import Condition as ConditionEntry
 from rosvar.ros2.api.registry import python_name
 from rosvar.ros2.api.sources import SOURCES
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS, Signature
+from rosvar.ros2.api.unmodelled import UNMODELLED
 from rosvar.ros2.frontends.python.text import (
     CONFIGURATION_EQUALS,
     EMPTY,
@@ -98,10 +99,9 @@ CALLS: dict[tuple[str, str], Builder] = {}
 """Known callables by (package, name)."""
 
 REASONS: dict[tuple[str, str], str] = {
-    ("launch", "RegisterEventHandler"): "RegisterEventHandler (actions run on events)",
-    ("launch", "LocalSubstitution"): "LocalSubstitution (a value of an event)",
+    key: entry.why(key[1]) for key, entry in UNMODELLED.by_python.items()
 }
-"""Why a known construct stays unknown, for its diagnostic."""
+"""Why a name of the launch API stays unknown, for its diagnostic."""
 
 
 def _register(package: str, *names: str) -> Callable[[Builder], Builder]:
