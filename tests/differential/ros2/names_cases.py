@@ -86,6 +86,56 @@ def generate_launch_description():
     ])
 """
 
+_TYPES_XML = """<launch>
+  <arg name="n" default="8"/>
+  <node pkg="pkg" exec="x" name="typed">
+    <param name="m" type="str" value="{a: 1, b: 2}"/>
+    <param name="i" type="int" value="7"/>
+    <param name="i2" type="float" value="$(var n)"/>
+    <param name="b" type="bool" value="1"/>
+    <param name="l" type="list_of_str" value="[a, '1']"/>
+    <param name="l2" type="list_of_int" value="[1, 2]"/>
+    <param name="y" type="yaml" value="[1, 2]"/>
+    <param name="Reg/Strategy" type="str" value="1"/>
+  </node>
+</launch>"""
+
+_TYPES_YAML = """launch:
+- arg: {name: n, default: '8'}
+- node:
+    pkg: pkg
+    exec: x
+    name: typed
+    param:
+    - {name: m, type: str, value: '{a: 1, b: 2}'}
+    - {name: i, type: int, value: 7}
+    - {name: i2, type: int, value: $(var n)}
+    - {name: b, type: bool, value: true}
+    - {name: l, type: list_of_str, value: [a, '1']}
+    - {name: y, type: yaml, value: '[1, 2]'}
+    - {name: Reg/Strategy, value: '1'}
+"""
+
+_TYPES_PY = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from launch_ros.parameter_descriptions import ParameterValue
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('n', default_value='8'),
+        Node(package='pkg', executable='x', name='typed', parameters=[{
+            'm': '{a: 1, b: 2}',
+            'i2': ParameterValue(LaunchConfiguration('n'), value_type=float),
+            'y': ParameterValue('[1, 2]', value_type=str),
+            'Reg/Strategy': '1',
+            'e': '',
+        }]),
+    ])
+"""
+
 CASES: dict[str, Case] = {
     "boolean-substitutions-and-equality-conditions": (
         {
@@ -113,4 +163,24 @@ CASES: dict[str, Case] = {
         [{}],
     ),
     "emit-event-shutdown": ({"main.launch.py": _EMIT_SHUTDOWN_PY}, [{}, {"stop": "true"}]),
+    "parameter-types": (
+        {
+            "main.launch.xml": _TYPES_XML,
+            "main.launch.yaml": _TYPES_YAML,
+            "main.launch.py": _TYPES_PY,
+        },
+        [{}, {"n": "9"}, {"n": "x"}],
+    ),
+    "parameter-type-of-a-typed-frontends-literal": (
+        {
+            "main.launch.yaml": """launch:
+- node:
+    pkg: pkg
+    exec: x
+    param:
+    - {name: i, type: int, value: '7'}
+"""
+        },
+        [{}],
+    ),
 }
