@@ -109,3 +109,24 @@ def test_launch_configuration_equals_compares_texts(
     names = {node["name"] for node in expected["nodes"]}
     assert "undefined" in names and "empty" not in names
     assert ("text" in names) == (arguments.get("mode") == "1.0")
+
+
+def test_an_unknown_python_value_in_a_condition_is_shown_readably(tmp_path: Path) -> None:
+    it = launch(
+        tmp_path,
+        """from launch import LaunchDescription
+from launch.conditions import IfCondition
+from launch_ros.actions import Node
+import helpers
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='pkg', executable='x', condition=IfCondition(helpers.enabled())),
+    ])
+""",
+        ".launch.py",
+    )
+    (node,) = it.model.nodes
+    shown = it.analysis.space.describe(node.condition)
+    assert "⟨call to helpers.enabled()⟩" in shown and "rosvar-unknown" not in shown

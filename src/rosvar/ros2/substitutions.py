@@ -382,7 +382,7 @@ def _unknown(host: Interpretation[Context], context: Context, args: list[Raw]) -
     """A value the Python frontend did not follow (it reported it): unknown, failing only
     where its text is needed, as an argument's value outside its domain."""
     what = args[0] if args and isinstance(args[0], str) else "value"
-    return Choice.const(host.space, Apply(UNKNOWN, (what,), f"$({UNKNOWN} {what})"))
+    return Choice.const(host.space, Apply(UNKNOWN, (what,), f"⟨{what}⟩"))
 
 
 def _not_followed(_host: object, what: str) -> str:
