@@ -23,6 +23,7 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros1.resolve import ResolutionError, Restriction
+from rosvar.ros2.api.event_handlers import EVENT_HANDLERS
 from rosvar.ros2.conventions import command_line
 from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, file_entries, typed
 from rosvar.ros2.launch import interpret
@@ -35,6 +36,9 @@ class Ros2Resolution:
     nodes: list[dict[str, object]] = field(default_factory=list)
     errors: list[dict[str, object]] = field(default_factory=list)
     warnings: list[dict[str, object]] = field(default_factory=list)
+    on_events: list[dict[str, object]] = field(default_factory=list)
+    """Nodes event handlers start after the launch started (a process's exit, its output,
+    a lifecycle transition, the shutdown): not started by the launch itself."""
 
     @property
     def ok(self) -> bool:
@@ -44,6 +48,7 @@ class Ros2Resolution:
         return {
             "ok": self.ok,
             "nodes": self.nodes,
+            "on_events": self.on_events,
             "errors": self.errors,
             "warnings": self.warnings,
         }
@@ -101,6 +106,10 @@ class Constant:
         return value
 
 
+LATER = frozenset(h.tag for h in EVENT_HANDLERS if not h.at_launch)
+"""The triggers of what starts after the launch started."""
+
+
 def restrict(model: LaunchModel, view: View) -> Ros2Resolution:
     """The present nodes and errors of ``model`` in the configuration ``view`` shows."""
     result = Ros2Resolution()
@@ -111,8 +120,11 @@ def restrict(model: LaunchModel, view: View) -> Ros2Resolution:
             )
     for decl in model.nodes:
         if view.holds(decl.condition):
+            later = decl.trigger.partition("(")[0] in LATER
             try:
-                result.nodes.append(_node(decl, view, result.warnings))
+                (result.on_events if later else result.nodes).append(
+                    _node(decl, view, result.warnings)
+                )
             except (ValueError, ResolutionError) as error:
                 result.errors.append(
                     {
@@ -200,6 +212,7 @@ def _node(decl: NodeDecl, view: View, warnings: list[dict[str, object]]) -> dict
         "arguments": None if text("plugin") else given.program,
         "plugin": text("plugin"),
         "container": text("container"),
+        "trigger": decl.trigger,
     }
 
 

@@ -136,6 +136,33 @@ def generate_launch_description():
     ])
 """
 
+_EVENTS_PY = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, LogInfo, RegisterEventHandler, TimerAction
+from launch.conditions import IfCondition
+from launch.event_handlers import OnProcessStart, OnProcessExit, OnShutdown
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    first = Node(package='pkg', executable='x', name='first',
+                 condition=IfCondition(LaunchConfiguration('go')))
+    late = Node(package='pkg', executable='x', name='late')
+    return LaunchDescription([
+        DeclareLaunchArgument('go', default_value='true'),
+        RegisterEventHandler(OnProcessStart(target_action=first, on_start=[
+            Node(package='pkg', executable='x', name='after_first'),
+            TimerAction(period=2.0, actions=[late]),
+        ])),
+        RegisterEventHandler(OnProcessStart(target_action=late, on_start=[
+            Node(package='pkg', executable='x', name='after_late')])),
+        RegisterEventHandler(OnProcessExit(target_action=first, on_exit=[
+            Node(package='pkg', executable='x', name='on_exit')])),
+        RegisterEventHandler(OnShutdown(on_shutdown=[LogInfo(msg='bye')])),
+        first,
+    ])
+"""
+
 CASES: dict[str, Case] = {
     "boolean-substitutions-and-equality-conditions": (
         {
@@ -183,4 +210,5 @@ CASES: dict[str, Case] = {
         },
         [{}],
     ),
+    "event-handlers": ({"main.launch.py": _EVENTS_PY}, [{}, {"go": "false"}]),
 }

@@ -87,21 +87,6 @@ unmodelled(
 )
 unmodelled(
     Kind.ACTION,
-    "its handler's actions run on events, which the walk does not follow",
-    "launch.RegisterEventHandler",
-)
-unmodelled(
-    Kind.EVENT_HANDLER,
-    "its actions run on an event of a process, which the walk does not follow",
-    "launch.OnProcessStart",
-    "launch.OnProcessExit",
-    "launch.OnProcessIO",
-    "launch.OnExecutionComplete",
-    "launch.OnShutdown",
-    "launch_ros.OnStateTransition",
-)
-unmodelled(
-    Kind.ACTION,
     "asks a lifecycle node for a transition at run time; the node itself is modelled",
     "launch_ros.LifecycleTransition",
 )

@@ -192,8 +192,12 @@ def _declare(
             env,
             ROS2_NODES,
             parameters=parameters,
+            trigger=context.trigger,
         )
     )
+    started = context.events.started
+    key = str(entity.location)
+    started[key] = started.get(key, it.space.false) | it.pc  # its start is an event
     return fields
 
 

@@ -364,6 +364,7 @@ def generate_launch_description():
     )
     assert tree == xml_shape(
         """<launch>
+  <on_process_exit><node pkg="hidden" exec="x"/></on_process_exit>
   <node pkg="demo" exec="$(rosvar-unknown 'call to yaml.safe_load()')"
         name="$(rosvar-unknown 'name \\'undefined_name\\'')"/>
   <node pkg="demo" exec="kept"/>
@@ -372,16 +373,6 @@ def generate_launch_description():
     assert [(str(d.location), d.message) for d in diagnostics] == [
         ("t.launch.py:18:29", "call to open() is not followed"),
         ("t.launch.py:18:14", "call to yaml.safe_load() is not followed"),
-        (
-            "t.launch.py:20:30",
-            "OnProcessExit (event handler: its actions run on an event of a process, which the "
-            "walk does not follow) is not followed",
-        ),
-        (
-            "t.launch.py:20:9",
-            "RegisterEventHandler (action: its handler's actions run on events, which the "
-            "walk does not follow) is not followed",
-        ),
         ("t.launch.py:21:61", "name 'undefined_name' is not followed"),
     ]
     assert set(codes(diagnostics)) == {"python-not-followed"}
