@@ -10,7 +10,7 @@ import pytest
 
 from differential.ros2.names_cases import CASES
 from ros2.tags.launches import launch
-from rosvar.ros2.resolve import resolve_ros2
+from rosvar.interpreter.workspace_models import Analysis
 
 MAIN = CASES["event-handlers"][0]["main.launch.py"]
 
@@ -24,10 +24,11 @@ def _kind(trigger: str) -> str:
 def test_triggers_are_the_oracles(tmp_path: Path, arguments: dict[str, str]) -> None:
     it = launch(tmp_path, MAIN, ".launch.py")
     expected = it.matches_oracle(arguments)
-    result = resolve_ros2(it.analysis.workspace, str(it.main), arguments)
-    ours = sorted((str(n["name"]), _kind(str(n["trigger"]))) for n in result.nodes)
+    known = Analysis(it.analysis.workspace, extra_values={k: [v] for k, v in arguments.items()})
+    result = known.resolve([str(it.main)], arguments)
+    ours = sorted((str(n.own_name), _kind(str(n.attributes["trigger"]))) for n in result.nodes)
     assert ours == sorted((n["name"], _kind(n["trigger"])) for n in expected["nodes"])
-    later = [(n["name"], _kind(str(n["trigger"]))) for n in result.on_events]
+    later = [(n.own_name, _kind(str(n.attributes["trigger"]))) for n in result.on_events]
     assert later == ([] if arguments else [("on_exit", "on_process_exit")])
 
 
