@@ -179,7 +179,11 @@ def _sources(
     for param in decl.parameters:
         if not r.holds(param.condition):
             continue
-        if param.file is not None:
+        if param.content is not None:  # allow_substs: the text substituted
+            text = r.evaluate(param.content, decl.location, "parameter file")
+            path = r.evaluate(param.file or "", decl.location, "parameter file")
+            sources.append(Source(entries=tuple(parameter_entries(text, path))))
+        elif param.file is not None:
             path = r.evaluate(param.file, decl.location, "parameter file")
             if param.globally:  # launch_ros asserts that a global parameter file exists
                 path = os.path.abspath(path)
@@ -209,6 +213,11 @@ def parameter_file(path: str) -> list[tuple[str, dict[str, object]]]:
         text = read_file(path).decode()
     except (FileRefused, OSError, UnicodeDecodeError) as error:
         raise ValueError(f"parameter file {path} is not readable: {error}") from None
+    return parameter_entries(text, path)
+
+
+def parameter_entries(text: str, path: str) -> list[tuple[str, dict[str, object]]]:
+    """The entries of a parameter file's text; ``ValueError`` when it is no such file."""
     try:
         return file_entries(yaml.safe_load(text))
     except yaml.YAMLError as error:

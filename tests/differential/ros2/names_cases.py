@@ -211,4 +211,38 @@ CASES: dict[str, Case] = {
         [{}],
     ),
     "event-handlers": ({"main.launch.py": _EVENTS_PY}, [{}, {"go": "false"}]),
+    "parameter-file-with-substitutions": (
+        {
+            "params.yaml": """/**:
+  ros__parameters:
+    rate: $(var rate)
+    frame: $(var robot)_base
+""",
+            "main.launch.xml": """<launch>
+  <arg name="rate" default="10"/>
+  <arg name="robot" default="r1"/>
+  <node pkg="pkg" exec="x" name="subst">
+    <param from="$(dirname)/params.yaml" allow_substs="true"/>
+  </node>
+  <node pkg="pkg" exec="x" name="plain"><param from="$(dirname)/params.yaml"/></node>
+</launch>""",
+            "main.launch.py": """import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch_ros.actions import Node
+from launch_ros.parameter_descriptions import ParameterFile
+
+
+def generate_launch_description():
+    path = os.path.join(os.path.dirname(__file__), 'params.yaml')
+    return LaunchDescription([
+        DeclareLaunchArgument('rate', default_value='10'),
+        DeclareLaunchArgument('robot', default_value='r1'),
+        Node(package='pkg', executable='x', name='subst',
+             parameters=[ParameterFile(path, allow_substs=True)]),
+    ])
+""",
+        },
+        [{}, {"rate": "2.5", "robot": "r2"}],
+    ),
 }

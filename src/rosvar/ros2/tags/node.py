@@ -9,7 +9,9 @@ Name composition and parameter files are left to resolution, which sees one conf
 
 from __future__ import annotations
 
+from rosvar.files import FileRefused, read_file
 from rosvar.frontends.entity import Entity
+from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import EnvSetting, NodeDecl, NodeParameter, Raw, Remap
 from rosvar.logic.choice import Choice, Fail, combine
@@ -191,6 +193,23 @@ def _typed_text(text: str, kind: str) -> str:
 register("ros2_typed_parameter", lambda _host, text, kind: _typed_text(text, kind))
 
 
+def _substituted_file(
+    it: Interpretation[Context], path: str, context: Context, out: list[NodeParameter]
+) -> None:
+    """``allow_substs``: the file's text with its substitutions performed in the context as
+    it is here, as launch_ros' ``ParameterFile`` does before the node reads it."""
+    try:
+        text = read_file(path).decode()
+    except (FileRefused, OSError, UnicodeDecodeError) as error:
+        it.fail(it.space.true, "param-invalid", f"parameter file {path} is not readable: {error}")
+        return
+    substituted = Ros2Substituter(it).resolve(text, context)
+    assert substituted is not None
+    value: Choice[Raw] = it.strip(substituted, f"parameter file {path}")
+    for condition, leaf in split(it, value):
+        out.append(NodeParameter(it.pc & condition, None, None, path, content=leaf))
+
+
 def _param(
     it: Interpretation[Context],
     entity: Entity,
@@ -200,8 +219,16 @@ def _param(
 ) -> None:
     source = it.attr(entity, "from", context)
     if source is not None:
+        label = "<param> attribute 'allow_substs'"
+        allow = bool_value(it, it.attr(entity, "allow_substs", context), False, label)
         for condition, file in split(it, source):
-            out.append(NodeParameter(it.pc & condition, None, None, file))
+            substs = allow.where(lambda leaf: leaf is True) & condition
+            if isinstance(file, str) and substs != it.space.false:
+                with it.under(substs):
+                    _substituted_file(it, file, context, out)
+            plain = condition & ~substs
+            if plain != it.space.false:
+                out.append(NodeParameter(it.pc & plain, None, None, file))
         return
     name = it.required(entity, "name", context)
     if name is None:
