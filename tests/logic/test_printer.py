@@ -52,6 +52,13 @@ def test_describe_booleans_as_literals() -> None:
     assert space.describe(teleop & ~space.slot(TELEOP, "false")) == "use_teleop"
 
 
+def test_an_empty_value_is_shown_quoted() -> None:
+    gripper = ArgInput("/w/a.launch.xml", "gripper")
+    space = make_space({gripper: ("", "g", "h", OTHER)})
+    assert space.describe(~space.slot(gripper, "")) == "gripper≠''"
+    assert space.describe(space.slot(gripper, "")) == "gripper=''"
+
+
 def test_describe_sets_and_exclusions() -> None:
     space = make_space()
     a, b = space.slot(MODEL, "a"), space.slot(MODEL, "b")
@@ -99,7 +106,7 @@ _PART = re.compile(r"^(?P<neg>¬?)(?P<name>[$\w]+)(?:(?P<op>=|≠|∈)(?P<rest>.
 
 def _slot_named(space: ConditionSpace, input_: Input, text: str) -> BDD:
     for slot in space.domain(input_):
-        if (slot if isinstance(slot, str) else repr(slot)) == text:
+        if (slot if isinstance(slot, str) else repr(slot)) == ("" if text == "''" else text):
             return space.slot(input_, slot)
     raise AssertionError(f"{text!r} is no slot of {input_}")
 

@@ -131,6 +131,9 @@ class Resolution:
     conflicts: list[Conflict] = field(default_factory=list)
     errors: list[ResolutionError] = field(default_factory=list)
     warnings: list[Diagnostic] = field(default_factory=list)
+    on_events: list[ResolvedNode] = field(default_factory=list)
+    """ROS 2: nodes that event handlers start after the launch started (a process's exit, its
+    output, a lifecycle transition, the shutdown), which the launch itself does not start."""
 
     @property
     def ok(self) -> bool:

@@ -39,7 +39,7 @@ from ament_index_python.packages import get_package_share_directory
 from launch import LaunchDescription
 from launch.actions import (DeclareLaunchArgument, GroupAction, IncludeLaunchDescription,
     SetEnvironmentVariable, SetLaunchConfiguration)
-from launch.conditions import IfCondition, UnlessCondition, LaunchConfigurationEquals
+from launch.conditions import IfCondition, UnlessCondition
 from launch.launch_description_sources import PythonLaunchDescriptionSource
 from launch.substitutions import (EnvironmentVariable, LaunchConfiguration,
     PathJoinSubstitution, PythonExpression, EqualsSubstitution)
@@ -78,7 +78,7 @@ def generate_launch_description():
         namespace=LaunchConfiguration('derived'),
         parameters=[PathJoinSubstitution([FindPackageShare('wpkg'), 'config', 'p.yaml'])],
         remappings=[('in', [ns, '/in'])],
-        condition=LaunchConfigurationEquals('mode', 'sim')))
+        condition=IfCondition(EqualsSubstitution(LaunchConfiguration('mode'), 'sim'))))
     ld.add_action(Node(package='wpkg', executable='real_only', name='real_only',
                        condition=IfCondition(EqualsSubstitution(mode, 'real'))))
     ld.add_action(Node(package='wpkg', executable='extra', name='extra',

@@ -114,6 +114,7 @@ def _ros2_fields(
         "fqn": fqn,
         "namespace": namespace,
         "parameters": effective(fqn, sources),
+        "trigger": node.trigger,
     }
 
 
