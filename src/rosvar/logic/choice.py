@@ -104,6 +104,11 @@ class Choice(Generic[T]):
     def __repr__(self) -> str:
         return f"Choice({[v for _, v in self.branches]!r})"
 
+    def key(self) -> tuple[tuple[BDD, object], ...]:
+        """The branches as a dictionary key: equal keys are the same branches (conditions
+        and leaves, as :func:`_key` tells leaves apart) in the same order."""
+        return tuple((condition, _key(leaf)) for condition, leaf in self.branches)
+
     def single(self) -> T | None:
         """The value when there is exactly one branch (whatever its condition)."""
         return self.branches[0][1] if len(self.branches) == 1 else None
