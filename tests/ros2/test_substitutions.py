@@ -7,14 +7,15 @@ from pathlib import Path
 
 import pytest
 
-from differential.ros2.test_fixtures import PACKAGE_XML
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.describe import describe_model
 from rosvar.ros2 import substitutions
-from rosvar.ros2.resolve import resolve_ros2
 from rosvar.ros2.substitutions import Call, SubstitutionSyntaxError, parse
 from rosvar.workspace import discover
+
+MANIFEST = """<package format="3"><name>p</name>
+<export><build_type>ament_cmake</build_type></export></package>"""
 
 
 def test_nested_and_quoted_arguments() -> None:
@@ -32,7 +33,7 @@ def test_malformed_text_is_refused(text: str) -> None:
 
 
 def test_anon_names_are_kept_per_id_and_scoped_by_groups(tmp_path: Path) -> None:
-    (tmp_path / "package.xml").write_text("<package format='3'><name>p</name></package>")
+    (tmp_path / "package.xml").write_text(MANIFEST)
     file = tmp_path / "a.launch.xml"
     file.write_text(
         """<launch>
@@ -42,8 +43,8 @@ def test_anon_names_are_kept_per_id_and_scoped_by_groups(tmp_path: Path) -> None
           <node pkg="p" exec="e" name="$(anon m)" namespace="z"/>
         </launch>"""
     )
-    result = resolve_ros2(discover([str(tmp_path)]), str(file), {})
-    names = [node["name"] for node in result.nodes]
+    result = Analysis(discover([str(tmp_path)])).resolve([str(file)])
+    names = [node.own_name for node in result.nodes]
     assert names[0] == names[1] and names[2] != names[3]
     assert all(str(name).startswith(("n_", "m_")) for name in names)
 
@@ -51,7 +52,7 @@ def test_anon_names_are_kept_per_id_and_scoped_by_groups(tmp_path: Path) -> None
 def test_find_exec_is_kept_as_its_text_with_a_warning(tmp_path: Path) -> None:
     """The PATH that ``$(find-exec)`` searches is the launching machine's: the value stays
     the substitution's text, inside a ``$(command)`` too, and the launch goes on."""
-    (tmp_path / "package.xml").write_text("<package format='3'><name>p</name></package>")
+    (tmp_path / "package.xml").write_text(MANIFEST)
     file = tmp_path / "a.launch.xml"
     file.write_text(
         """<launch><arg name="tool" default="xacro"/>
@@ -61,10 +62,10 @@ def test_find_exec_is_kept_as_its_text_with_a_warning(tmp_path: Path) -> None:
           <node pkg="p" exec="e" name="m" args="$(find-exec)"/>
         </launch>"""
     )
-    workspace = discover([str(tmp_path)])
-    result = resolve_ros2(workspace, str(file), {"tool": "ros2"})
-    assert result.nodes[0]["parameters"] == {"d": "$(command $(find-exec ros2) f.xacro)"}
-    assert [error["code"] for error in result.errors] == ["substitution-invalid"]
+    analysis = Analysis(discover([str(tmp_path)]), extra_values={"tool": ["ros2"]})
+    result = analysis.resolve([str(file)], {"tool": "ros2"})
+    assert result.nodes[0].parameters == {"d": "$(command $(find-exec ros2) f.xacro)"}
+    assert [error.code for error in result.errors] == ["substitution-invalid"]
 
 
 _TEXTS = (
@@ -98,7 +99,7 @@ def _random_file(rng: random.Random, includes: list[str], statements: int) -> st
         elif kind == 4:  # declared here, read before by an includer: an input of the entry
             lines.append('<arg name="q" default="z"/>')
         elif kind == 1:
-            lines.append(f'<node pkg="pkg" exec="e" name="n{index}" namespace="/{text}"/>')
+            lines.append(f'<node pkg="p" exec="e" name="n{index}" namespace="/{text}"/>')
         elif kind == 2 and includes:
             passed = f'<arg name="p" value="{rng.choice(_TEXTS)}"/>'
             target = rng.choice(includes)
@@ -106,7 +107,7 @@ def _random_file(rng: random.Random, includes: list[str], statements: int) -> st
                 f'<include file="$(dirname)/{target}" if="{rng.choice(_FLAGS)}">{passed}</include>'
             )
         else:
-            inner = f'<let name="c" value="{text}"/><node pkg="pkg" exec="e" name="g{index}"/>'
+            inner = f'<let name="c" value="{text}"/><node pkg="p" exec="e" name="g{index}"/>'
             lines.append(f'<group if="{rng.choice(_FLAGS)}">{inner}</group>')
     return "<launch>" + "".join(lines) + "</launch>"
 
@@ -121,7 +122,7 @@ def test_resolved_texts_are_reused_only_where_they_read_the_same(
     rng = random.Random(seed)
     package = tmp_path / "pkg"
     (package / "sub").mkdir(parents=True)
-    (package / "package.xml").write_text(PACKAGE_XML)
+    (package / "package.xml").write_text(MANIFEST)
     (package / "sub" / "leaf.launch.xml").write_text(_random_file(rng, [], 4))
     (package / "sub" / "mid.launch.xml").write_text(_random_file(rng, ["leaf.launch.xml"], 6))
     (package / "mid.launch.xml").write_text(_random_file(rng, ["sub/leaf.launch.xml"], 6))
@@ -141,7 +142,7 @@ def test_resolved_texts_are_reused_only_where_they_read_the_same(
 def _models(tmp_path: Path, files: dict[str, str]) -> dict[str, LaunchModel]:
     package = tmp_path / "pkg"
     package.mkdir()
-    (package / "package.xml").write_text(PACKAGE_XML)
+    (package / "package.xml").write_text(MANIFEST)
     for name, text in files.items():
         (package / name).write_text(f"<launch>{text}</launch>")
     models = Analysis(discover([str(package)])).all_models()
@@ -150,7 +151,7 @@ def _models(tmp_path: Path, files: dict[str, str]) -> dict[str, LaunchModel]:
 
 def test_a_name_read_through_a_substitution_is_read_again(tmp_path: Path) -> None:
     """``$(var $(var a))`` reads a configuration its text does not name: never reused."""
-    node = '<node pkg="pkg" exec="e" name="$(var $(var a) d)"/>'
+    node = '<node pkg="p" exec="e" name="$(var $(var a) d)"/>'
     lets = '<let name="a" value="x"/><let name="x" value="{}"/>'
     main = lets.format("one") + node + lets.format("two") + node
     model = _models(tmp_path, {"main.launch.xml": main})["main.launch.xml"]
@@ -161,7 +162,7 @@ def test_a_name_read_through_a_substitution_is_read_again(tmp_path: Path) -> Non
 def test_a_reused_text_still_reads_what_is_not_set(tmp_path: Path) -> None:
     """An included file's arg read before its declaration is an input of the entry file
     (``unset_reads``): also where the text was resolved before, by another entry file."""
-    read = '<node pkg="pkg" exec="e" name="$(var q d)"/>'
+    read = '<node pkg="p" exec="e" name="$(var q d)"/>'
     files = {
         "a.launch.xml": read,
         "leaf.launch.xml": '<arg name="q" default="z"/>',
