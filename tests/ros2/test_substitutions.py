@@ -8,7 +8,9 @@ from pathlib import Path
 import pytest
 
 from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.safe_eval import EvalEnvironment, evaluate
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.memo import Memo
 from rosvar.outputs.describe import describe_model
 from rosvar.ros2 import substitutions
 from rosvar.ros2.substitutions import Call, SubstitutionSyntaxError, parse
@@ -172,3 +174,26 @@ def test_a_reused_text_still_reads_what_is_not_set(tmp_path: Path) -> None:
     assert describe_model(models["a.launch.xml"])["nodes"][0]["name"] == "d"  # type: ignore[index]
     read_in_main = describe_model(models["main.launch.xml"])["nodes"][0]["name"]  # type: ignore[index]
     assert [value["value"] for value in read_in_main] == ["z", "d", "⟨q⟩"]
+
+
+def test_an_expression_is_evaluated_once_per_text(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """``$(eval)`` reads nothing but its text: one evaluation serves every file and
+    configuration meeting the same text, failures included."""
+    texts: list[str] = []
+
+    def counted(text: str, environment: EvalEnvironment) -> str:
+        texts.append(text)
+        return evaluate(text, environment)
+
+    monkeypatch.setattr(substitutions, "evaluate", counted)
+    monkeypatch.setattr(substitutions, "_evaluated", Memo[str, object]())
+    name = "$(eval &quot;'$(var a)' * 2&quot;)"
+    node = f'<node pkg="p" exec="e" name="{name}" namespace="/$(eval 1/0)"/>'
+    arg = '<arg name="a" default="x"><choice value="x"/><choice value="y"/></arg>'
+    models = _models(tmp_path, {"one.launch.xml": arg + node, "two.launch.xml": arg + node})
+    for model in models.values():
+        assert describe_model(model)["nodes"][0]["name"][0]["value"] == "xx"  # type: ignore[index]
+        assert "eval-failed" in [error.code for error in model.errors]
+    assert sorted(texts) == ["'x' * 2", "'y' * 2", "1/0"]
