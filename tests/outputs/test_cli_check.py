@@ -28,7 +28,7 @@ SOURCES = {
 LAUNCH = """
   <node pkg="pkg" type="talker.py" name="talker"/>
   <node pkg="pkg" type="listener.py" name="listener"/>
-  <node pkg="mystery" type="box" name="box"/>
+  <node pkg="mystery" type="box" name="box" ns="tools"/>
 """
 CLASH = '  <node pkg="pkg" type="talker.py" name="listener"/>\n'
 
@@ -56,10 +56,10 @@ def test_notes_are_hidden_unless_all(
     assert "note[" not in out
     assert "1 notes not shown (--all shows them)" in out  # /chatter has no subscriber
     assert "1 launched nodes have no known interfaces" in out
-    assert "/box" not in out
+    assert "/tools/box" not in out
     code, out, _err = run(capsys, "check", root, "--all")
     assert "note[no-subscriber]: /talker publishes /chatter" in out
-    assert "/box (mystery/box) at " in out
+    assert "/tools/box (mystery/box) at " in out
     assert out.splitlines()[-1] == "2 findings in 1 launch files: 0 errors, 1 warnings, 1 notes"
 
 
@@ -70,7 +70,7 @@ def test_json_lists_fingerprints_and_nodes_without_interfaces(
     _code, out, _err = run(capsys, "check", root, "--format", "json")
     document = json.loads(out)
     schema_check(document, "check.schema.json")
-    assert [u["names"] for u in document["uninterfaced"]] == [["/box"]]
+    assert [u["names"] for u in document["uninterfaced"]] == [["/tools/box"]]
     prints = {f["fingerprint"] for f in document["findings"]}
     assert len(prints) == 2
     moved = tmp_path / "elsewhere"  # another checkout, another line: the same fingerprints

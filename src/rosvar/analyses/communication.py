@@ -160,6 +160,9 @@ class Edge:
     boundary: bool = False  # meant for something outside the launched nodes (Entry.boundary)
     term: Term | None = None
     """A name known per configuration (a robot description's value): evaluated in one."""
+    uncertain: bool = False
+    """Kept only where its entry's ``when:`` reads a parameter whose value is not known: a
+    missing partner of it is a note, not a defect rosvar can see."""
 
     @property
     def channel(self) -> Channel:
@@ -222,7 +225,7 @@ def launched_units(
 ) -> Iterator[tuple[BDD, LaunchedNode, NodeInterface, bool]]:
     """Per branch of a ``<node>``'s fields: its condition, the node, the interface it runs
     and whether every field is known statically (nodes without a known interface skipped)."""
-    for condition, launched, values in _branches(space, node):
+    for condition, launched, values in node_branches(space, node):
         unit = launched.unit()
         interface = None if unit is None else find_interface(interfaces, unit)
         if interface is not None:
@@ -230,7 +233,7 @@ def launched_units(
             yield condition, launched.named(interface), interface, static
 
 
-def _branches(
+def node_branches(
     space: ConditionSpace, node: NodeDecl
 ) -> Iterator[tuple[BDD, LaunchedNode, list[Raw | None]]]:
     """Per branch of a ``<node>``'s fields that can hold: its condition, the node and the
@@ -268,7 +271,7 @@ def uninterfaced(
         for node in model.nodes:
             if node.is_test:
                 continue
-            for _condition, launched, _values in _branches(space, node):
+            for _condition, launched, _values in node_branches(space, node):
                 unit = launched.unit()
                 if unit is not None and find_interface(interfaces, unit) is None:
                     shown = "/".join(part for part in unit if part)
@@ -287,12 +290,18 @@ def node_edges(
         for entry in interface.entries:
             if entry.role not in CHANNEL:
                 continue
-            used = condition
+            parts = [(condition, False)]
             if entry.when is not None:
-                used &= entry_when(params, node, launched, interface, entry.when).condition
-            for taken, use in entry_uses(params, node, launched, interface, entry, used):
-                for when, name in entry_names(launched, remaps, use, taken):
-                    edges.append(_edge(file, launched, node, use, name, when, static))
+                when = entry_when(params, node, launched, interface, entry.when)
+                known = when.condition & ~when.unknown
+                parts = [(condition & known, False), (condition & when.unknown, True)]
+            for used, uncertain in parts:
+                if used == space.false:
+                    continue
+                for taken, use in entry_uses(params, node, launched, interface, entry, used):
+                    for at, name in entry_names(launched, remaps, use, taken):
+                        edge = _edge(file, launched, node, use, name, at, static)
+                        edges.append(replace(edge, uncertain=True) if uncertain else edge)
     return edges
 
 

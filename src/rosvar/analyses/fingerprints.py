@@ -12,12 +12,14 @@ from __future__ import annotations
 
 import hashlib
 import os
+import re
 from collections import Counter
 from collections.abc import Iterable, Sequence
 
 from rosvar.analyses.checks import Finding
 from rosvar.workspace.packages import Package
 
+_NUMBERS = re.compile(r"(:\d+)+$")
 VERSION = "rosvar/v1"
 """The key of the fingerprint among SARIF's ``partialFingerprints``; a new recipe gets a new one."""
 
@@ -34,20 +36,26 @@ class Fingerprints:
         """``file`` as ``package/path`` inside its package; a URL as it is; else its name."""
         if "://" in file:
             return file
+        if not os.path.isabs(file) and os.sep in file and " " in file:
+            # a described place ("the text of the parameter at /ws/pkg/f.launch:15:3")
+            return _NUMBERS.sub("", self._within(file))
         absolute = os.path.abspath(file)
         for root, name in self._roots:
             if absolute.startswith(root + os.sep):
                 return f"{name}/{os.path.relpath(absolute, root)}".replace(os.sep, "/")
         return os.path.basename(absolute)
 
+    def _within(self, text: str) -> str:
+        """``text`` with each package folder written as its package's name."""
+        for root, name in self._roots:
+            text = text.replace(root + os.sep, name + "/")
+        return text
+
     def of(self, finding: Finding) -> str:
-        message = finding.message
-        for root, name in self._roots:  # a message naming a file names it in its package
-            message = message.replace(root + os.sep, name + "/")
         parts = [
             str(finding.check),
             finding.name,
-            message,
+            self._within(finding.message),  # a message naming a file names it in its package
             self.relative(finding.file),
             *(self.relative(location.file) for location in finding.locations),
         ]
