@@ -52,7 +52,8 @@ def test_every_value_comes_out_as_a_witness(group: tuple[str, ...], value: str) 
 @pytest.mark.parametrize(
     "expression",
     ["dof + 1 == 2", "int(dof) == 2", "dof is True", "'a' in dof", "dof < 'b'", "arg(x) == 1",
-     "[dof for dof in 'ab'] == ['a']", "dof.lower() == 'a'", "dof == other"],
+     "[dof for dof in 'ab'] == ['a']", "dof.lower() == 'a'", "dof == other",
+     "dof == 6 and find('pkg') == ''", "dof == 1 or env('X') == '1'"],
 )  # fmt: skip
 def test_other_uses_of_the_arg_have_no_cells(expression: str) -> None:
     assert compared_constants(expression, "dof") is None

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from outputs.test_cli import schema_check
+from outputs.schemas import schema_check
 from rosvar.outputs.cli import main
 from rosvar.outputs.commands.exit_codes import EXIT_FAILS, EXIT_OK, EXIT_USAGE
 

@@ -20,7 +20,7 @@ from decimal import Decimal
 from rosvar.interpreter.safe_eval.checking import _checked
 from rosvar.interpreter.safe_eval.errors import EvalRefused
 from rosvar.interpreter.safe_eval.interpreter import convert_auto
-from rosvar.interpreter.safe_eval.names import _BOOL_NAMES, _NOT_ARG_NAMES
+from rosvar.interpreter.safe_eval.names import _BOOL_NAMES, _HOST_FUNCTION_NAMES, _NOT_ARG_NAMES
 
 Literal = bool | int | float | str
 _ORDER = (ast.Lt, ast.LtE, ast.Gt, ast.GtE)
@@ -45,6 +45,8 @@ def compared_constants(expression: str, arg: str) -> frozenset[Literal] | None:
             return None  # a comprehension's own names could shadow the arg
         if _is_arg_call(node) and _call_name(node) is None:
             return None  # a computed arg(x) may read it
+        if _host_call(node):
+            return None  # find(), env(): what the witnesses give depends on the machine
         if not _reads(node, arg):
             continue
         found = _comparison_literals(parents.get(id(node)), node)
@@ -76,6 +78,14 @@ def _number_text(number: float) -> str:
 
 def _is_arg_call(node: ast.AST) -> bool:
     return isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "arg"
+
+
+def _host_call(node: ast.AST) -> bool:
+    return (
+        isinstance(node, ast.Call)
+        and isinstance(node.func, ast.Name)
+        and node.func.id in _HOST_FUNCTION_NAMES - {"arg"}
+    )
 
 
 def _call_name(node: ast.AST) -> str | None:
