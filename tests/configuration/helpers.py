@@ -31,7 +31,7 @@ def configurator(
     """Feature ids read ``a.launch``, ``a.launch:x``, ``a.launch:x=1``; with ``interfaces``,
     the nodes' topics read from the workspace's sources."""
     analysis = ws.analysis()
-    model = extract(analysis, products=True)
+    model = extract(analysis, products=True, env=env)
     spelling = {os.path.realpath(f.file): os.path.basename(f.file) for f in model.files}
     found = extract_interfaces(analysis.workspace.packages.values()) if interfaces else None
     return Configurator(analysis, model, env, spelling, interfaces=found, render=render)

@@ -15,6 +15,7 @@ from rosvar.interpreter.domains import DomainTable
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.resolution import Resolution
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.terms import PackageTable
 from rosvar.workspace import Workspace
 
 Progress = Callable[[int, int, str], None]
@@ -45,6 +46,10 @@ class Analysis:
         """The args a command line gives values (``rosvar resolve``'s)."""
         self._models: dict[str, LaunchModel] = {}
         self._labels: dict[str, str] | None = None
+
+    def package_table(self) -> PackageTable:
+        """The workspace's packages, as terms' ``$(find)`` reads them when evaluated."""
+        return PackageTable({name: p.path for name, p in self.workspace.packages.items()})
 
     def model(self, file: str) -> LaunchModel:
         """The model of ``file`` as an entry point (interpreted once, then cached)."""
