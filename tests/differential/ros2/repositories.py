@@ -153,7 +153,7 @@ def cases(
     if files_limit is not None and len(files) > files_limit:
         step = len(files) / files_limit
         files = [files[int(index * step)] for index in range(files_limit)]
-    found = []
+    found: list[Case] = []
     for path in files:
         configs = sampled[path]
         if configs_limit is not None and len(configs) > configs_limit:
