@@ -13,6 +13,7 @@ import random
 import re
 from collections.abc import Iterable, Sequence
 from pathlib import Path
+from unittest.mock import patch
 
 import pytest
 
@@ -213,7 +214,7 @@ def test_conditions_of_one_shape_read_as_each_alone() -> None:
     other, third = "/ws/pkg/launch/other.launch", "/ws/pkg/launch/third.launch"
     copies = [list(DOMAINS)]
     copies.append([ArgInput(other, i.name) if isinstance(i, ArgInput) else i for i in DOMAINS])
-    renamed = {MODEL: ArgInput(third, "robot"), SIM: ArgInput(third, "sim")}
+    renamed: dict[Input, Input] = {MODEL: ArgInput(third, "robot"), SIM: ArgInput(third, "sim")}
     copies.append([renamed.get(i, i) for i in DOMAINS])
     domains = dict(DOMAINS)
     for inputs in copies[1:]:
@@ -372,12 +373,9 @@ def _check_descriptions(models: Sequence[LaunchModel]) -> tuple[int, list[str]]:
         seen[condition, qualify, known] = text
         return text
 
-    Printer.describe = recording  # type: ignore[method-assign]
-    try:
+    with patch.object(Printer, "describe", recording):
         for model in models:
             describe_model(model)
-    finally:
-        Printer.describe = describe  # type: ignore[method-assign]
     failures = []
     for (condition, qualify, known_only), text in seen.items():
         inputs = space.care_inputs(space.support(condition))

@@ -45,7 +45,7 @@ GOOD = """<launch>
   <param name="home" value="$(optenv ROBOT_HOME /nowhere)"/>
 </launch>
 """
-BAD = {
+BAD: dict[str, str | bytes] = {
     "malformed.launch": '<launch>\n  <node pkg="p" type="t" name="a"\n</launch>\n',
     "tag.launch": "<launch>\n  <bogus/>\n</launch>\n",
     "dtd.launch": '<?xml version="1.0"?>\n<!DOCTYPE launch [<!ENTITY a "b">]>\n<launch/>\n',

@@ -136,9 +136,6 @@ class Context:
 
 
 def optional(value: Choice[Raw]) -> Choice[Raw | None]:
-    """A value as a possibly-unset one (a configuration's or the namespace's type)."""
-    return value.map(_same)
-
-
-def _same(leaf: Raw) -> Raw | None:
-    return leaf
+    """A value as a possibly-unset one (a configuration's or the namespace's type): the
+    same choice, whose type only widens (no copy: every ``<arg>`` and ``<let>`` takes one)."""
+    return value

@@ -140,7 +140,12 @@ launch:
 - node: {pkg: wpkg, exec: sim, name: sim, if: $(equals $(var mode) sim)}
 """
 
-CONFIGURATIONS = ([], ["mode:=real", "use_extra:=true"], ["ns:=zz"], ["mode:=bad"])
+CONFIGURATIONS: tuple[list[str], ...] = (
+    [],
+    ["mode:=real", "use_extra:=true"],
+    ["ns:=zz"],
+    ["mode:=bad"],
+)
 
 
 def oracle(launch: Path, package_path: Path, arguments: list[str]) -> dict[str, Any]:
@@ -166,7 +171,7 @@ def oracle(launch: Path, package_path: Path, arguments: list[str]) -> dict[str, 
     return result
 
 
-def summary(result: dict[str, Any]) -> tuple[object, list[str]]:
+def summary(result: dict[str, Any]) -> tuple[tuple[bool, str | None], list[str]]:
     """What must agree: success, error, and each node but the file it came from."""
     ignored = {"launch_file", "cmd", "inline_parameters"}
     nodes = sorted(

@@ -147,7 +147,7 @@ def generate_launch_description():
     assert result.root is not None
     group = result.root.children[0]
     node = group.children[0]
-    assert (group.attributes, group.typed) == ({"scoped": "false"}, {"scoped"})
+    assert (group.attributes, group.typed) == ({"scoped": "false"}, frozenset({"scoped"}))
     assert node.typed == {"respawn"} and node.attributes["respawn"] == "true"
     values = [(p.attributes["value"], p.typed, p.get("type")) for p in node.children]
     assert values == [
