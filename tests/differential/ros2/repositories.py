@@ -51,7 +51,8 @@ from .samples import Config, read, sample
 DATA = Path(__file__).resolve().parents[2] / "data" / "ros2"
 SOURCES = Path(rosvar.__file__).resolve().parents[1]
 MISSING = "/__missing_pkg__/"
-TIMEOUT_S = 300
+TIMEOUT_S = 120
+"""rosvar's time per configuration: past it a configuration differs (issue 28 wants seconds)."""
 SEED = "ros2-repositories"
 
 # -- the repositories and their launch files ------------------------------------------------
