@@ -25,10 +25,13 @@ from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, TermError, concat, register
 from rosvar.memo import Memo
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS
+from rosvar.ros2.api.unmodelled import UNMODELLED
 from rosvar.ros2.context import Context, optional
-from rosvar.ros2.frontends.python.text import PATH_JOIN, UNKNOWN
+from rosvar.ros2.frontends.python.text import CONFIGURATION_EQUALS, EMPTY, PATH_JOIN, UNKNOWN
 
 Value = Raw | Fail
+UNSUPPORTED = "substitution-unsupported"
+"""The code of a launch substitution rosvar does not compute (reported with the reason)."""
 
 
 class SubstitutionSyntaxError(Exception):
@@ -156,8 +159,13 @@ def command_line(text: str) -> list[Template]:
 
 Handler = Callable[[Interpretation[Context], Context, list[Raw]], Choice[Value]]
 HANDLERS: dict[str, Handler] = {}
-OWN = frozenset({PATH_JOIN, UNKNOWN})
+OWN = frozenset({PATH_JOIN, UNKNOWN, CONFIGURATION_EQUALS, EMPTY})
 """rosvar's own substitutions, which the Python frontend writes (no launch API name)."""
+
+
+EMPTY_ARGUMENT: dict[str, str] = {}
+"""The text an empty quoted argument (``''``) is to a substitution, where not empty: launch's
+grammar gives it as an empty list, which some substitutions turn into text (``[]``)."""
 
 
 def substitution(name: str) -> Callable[[Handler], Handler]:
@@ -290,10 +298,19 @@ class Ros2Substituter:
             return Choice.const(self.space, part)
         handler = HANDLERS.get(part.name)
         if handler is None:
+            reported = UNMODELLED.by_name.get(part.name)
+            if reported is not None:
+                return Choice.const(
+                    self.space, Fail(f"{reported.why()} is not modelled", UNSUPPORTED)
+                )
             return Choice.const(
                 self.space, Fail(f"unknown substitution '{part.name}'", "substitution-unknown")
             )
-        arguments = [self.template(a, context) for a in part.arguments]
+        empty = EMPTY_ARGUMENT.get(part.name, "")
+        arguments = [
+            self.template(a, context) if a else Choice.const(self.space, empty)
+            for a in part.arguments
+        ]
         if not arguments:
             return handler(self.host, context, [])
         return combine(arguments, lambda leaves: leaves).bind(
@@ -340,13 +357,19 @@ def _var(host: Interpretation[Context], context: Context, args: list[Raw]) -> Ch
         if len(args) == 2
         else Fail(f"launch configuration '{name}' does not exist", "var-undefined")
     )
+    return configuration(host, context, name).map(lambda leaf: missing if leaf is None else leaf)
+
+
+def configuration(host: Interpretation[Context], context: Context, name: str) -> Choice[Raw | None]:
+    """The launch configuration ``name`` (None where it is undefined, which is recorded:
+    :attr:`Context.unset_reads`)."""
     value = context.configurations.get(name)
     if value is None:
         context.unset_reads.add(name)
-        return Choice.const(host.space, missing)
+        return Choice.const(host.space, None)
     if any(leaf is None for _condition, leaf in value.branches):
         context.unset_reads.add(name)
-    return value.map(lambda leaf: missing if leaf is None else leaf)
+    return value
 
 
 @substitution("env")
@@ -439,7 +462,7 @@ def _unknown(host: Interpretation[Context], context: Context, args: list[Raw]) -
     """A value the Python frontend did not follow (it reported it): unknown, failing only
     where its text is needed, as an argument's value outside its domain."""
     what = args[0] if args and isinstance(args[0], str) else "value"
-    return Choice.const(host.space, Apply(UNKNOWN, (what,), f"$({UNKNOWN} {what})"))
+    return Choice.const(host.space, Apply(UNKNOWN, (what,), f"⟨{what}⟩"))
 
 
 def _not_followed(_host: object, what: str) -> str:
