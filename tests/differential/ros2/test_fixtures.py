@@ -477,6 +477,64 @@ def generate_launch_description():
         },
         [{}, {"robot": "r2"}, {"mode": "sim", "robot": "r3"}],
     ),
+    "python-launch-time-values": (
+        {
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def setup(context):
+    imu = LaunchConfiguration('imu_topic').perform(context) != ''
+    voxel = LaunchConfiguration('voxel')
+    size = float(voxel.perform(context)) * 10.0
+    sim = context.launch_configurations['sim']
+    flag = sim.lower() in ('true', '1')
+    nodes = []
+    if imu:
+        nodes.append(Node(package='pkg', executable='imu', name='imu',
+                          parameters=[{'size': size, 'count': int(size) + 1}]))
+    if not flag and imu:
+        nodes.append(Node(package='pkg', executable='real', name='real'))
+    else:
+        nodes.append(Node(package='pkg', executable='other', name='other_' + sim.upper()))
+    speed = 'fast' if size > 1.0 else 'slow'
+    extra = Node(package='pkg', executable='x', name='extra')
+    if sim:  # a non-empty string is true, 'false' too
+        nodes.append(extra)
+    label = 'on' if flag else 'off'
+    if len(sim) > 3 and sim[0] != 'f':
+        label = label + '_long'
+    nodes.append(Node(package='pkg', executable='s', name=speed + '_' + label))
+    return nodes
+
+
+def pick(context):
+    if LaunchConfiguration('sim').perform(context) == 'true':
+        return [Node(package='pkg', executable='a', name='sim_node')]
+    name = f"real_{context.perform_substitution(LaunchConfiguration('voxel')).split('.')[0]}"
+    return [Node(package='pkg', executable='b', name=name)]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('imu_topic', default_value='imu'),
+        DeclareLaunchArgument('voxel', default_value='0.05'),
+        DeclareLaunchArgument('sim', default_value='false'),
+        OpaqueFunction(function=setup),
+        OpaqueFunction(function=pick),
+    ])
+""",
+        },
+        [
+            {},
+            {"imu_topic": ""},
+            {"voxel": "1e3", "sim": "true"},
+            {"sim": "1", "imu_topic": ""},
+            {"sim": "", "voxel": "7"},
+        ],
+    ),
     "append-env-after-before-or-alone": (
         {
             "main.launch.xml": """<launch>

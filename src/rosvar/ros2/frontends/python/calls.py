@@ -20,9 +20,11 @@ from rosvar.ros2.api.conditions import Condition as ConditionEntry
 from rosvar.ros2.api.registry import python_name
 from rosvar.ros2.api.sources import SOURCES
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS, Signature
+from rosvar.ros2.frontends.python import launch_time
 from rosvar.ros2.frontends.python.text import PATH_JOIN, Sub, Text, unknown
 from rosvar.ros2.frontends.python.values import (
     Condition,
+    Dynamic,
     Module,
     ParameterFile,
     ParameterValue,
@@ -72,6 +74,8 @@ class Call:
         """``value`` as launch normalizes a substitution argument: texts concatenated."""
         if isinstance(value, Text):
             return value
+        if isinstance(value, Dynamic):
+            return launch_time.as_text(value)
         if isinstance(value, str):
             return Text.of(value)
         if isinstance(value, list | tuple):

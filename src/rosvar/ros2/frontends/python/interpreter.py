@@ -3,7 +3,10 @@
 The file is never executed: its syntax tree is read statement by statement with abstract
 values (:mod:`~rosvar.ros2.frontends.python.values`). Constants, strings, lists, dicts,
 local variables, helper functions, loops over known sequences and ``if`` on known values
-are followed exactly; calls go to the launch API's registry
+are followed exactly; a value known at launch time only (``.perform(context)``) is a Python
+expression over substitutions (:mod:`~rosvar.ros2.frontends.python.launch_time`), and an
+``if`` on it reads both branches, each under its condition, as ``if=``/``unless=`` do;
+calls go to the launch API's registry
 (:mod:`~rosvar.ros2.frontends.python.calls`). Anything else (``OpaqueFunction``, files read,
 other modules called, unknown names, ``while``) becomes an :class:`Unknown` with a
 diagnostic at its ``file:line:col``, and the reading goes on. A step budget and a call
@@ -22,6 +25,7 @@ from rosvar.arithmetic import ARITHMETIC, COMPARISONS
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.registry import python_name
+from rosvar.ros2.frontends.python import launch_time
 from rosvar.ros2.frontends.python.actions import add_actions
 from rosvar.ros2.frontends.python.calls import (
     CALLS,
@@ -30,9 +34,12 @@ from rosvar.ros2.frontends.python.calls import (
     Call,
     join_path,
 )
+from rosvar.ros2.frontends.python.launch_time import OPERATORS, performed
 from rosvar.ros2.frontends.python.text import Sub, Text
 from rosvar.ros2.frontends.python.values import (
+    Condition,
     Description,
+    Dynamic,
     Function,
     Key,
     LaunchContext,
@@ -111,7 +118,7 @@ def size(value: Value) -> int:
 
 def truth(value: Value) -> bool | None:
     """Python's truth of ``value``; ``None`` when it is not known statically."""
-    if isinstance(value, Unknown | Module):  # a Module may be any value of another module
+    if isinstance(value, Unknown | Module | Dynamic):  # a Module: any value of another module
         return None
     if isinstance(value, (*_SCALARS, list, tuple, dict)):
         return bool(value)
@@ -127,13 +134,16 @@ class Interpreter:
         self.sink = sink
         self.steps = 0
         self.depth = 0
+        self.guards: list[Text] = []
+        """The Python tests of the launch-time ``if``s being read, innermost last."""
+        self.created: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
+        """Actions made under guards, with the guards (so a branch does not guard twice)."""
         self.statements: dict[type[ast.stmt], Callable[[Any, Scope], None]] = {
             ast.Expr: self._expression_statement,
             ast.Assign: self._assign,
             ast.AnnAssign: self._ann_assign,
             ast.AugAssign: self._aug_assign,
             ast.Return: self._return,
-            ast.If: self._if,
             ast.For: self._for,
             ast.FunctionDef: self._function_def,
             ast.Import: self._import,
@@ -200,9 +210,15 @@ class Interpreter:
             pass
         return scope
 
-    def block(self, body: list[ast.stmt], scope: Scope) -> None:
-        for statement in body:
+    def block(self, body: list[ast.stmt], scope: Scope, tail: bool = False) -> None:
+        """The statements of ``body``; ``tail`` when it is a function's body, whose rest an
+        ``if`` returning in one branch only reads in the other."""
+        for index, statement in enumerate(body):
             self.step()
+            if isinstance(statement, ast.If):
+                if self._if(statement, scope, body[index + 1 :] if tail else None):
+                    return
+                continue
             handler = self.statements.get(type(statement))
             if handler is None:
                 self.not_followed(f"a '{type(statement).__name__}' statement", statement)
@@ -226,6 +242,13 @@ class Interpreter:
             container = self.expr(target.value, scope)
             index = self.expr(target.slice, scope)
             if isinstance(container, dict) and isinstance(index, Key):
+                if self.guards:
+                    if index not in container:
+                        self.not_followed(
+                            "an item set under an 'if' on a launch-time value", target
+                        )
+                        return
+                    value = self.choose(self.guard(), value, container[index], target)
                 container[index] = value
                 return
             if (
@@ -262,12 +285,125 @@ class Interpreter:
     def _return(self, node: ast.Return, scope: Scope) -> None:
         raise _Return(None if node.value is None else self.expr(node.value, scope))
 
-    def _if(self, node: ast.If, scope: Scope) -> None:
-        test = truth(self.expr(node.test, scope))
+    def _if(self, node: ast.If, scope: Scope, rest: list[ast.stmt] | None) -> bool:
+        """Reads the ``if``; whether it read ``rest`` too (the rest of a function's body,
+        read in the branch that does not return, when one branch does)."""
+        value = self.expr(node.test, scope)
+        if isinstance(value, Dynamic):
+            return self._branches(value.source, node, scope, rest)
+        test = truth(value)
         if test is None:
             self.not_followed("an 'if' on a value not known statically (neither branch)", node)
         else:
-            self.block(node.body if test else node.orelse, scope)
+            self.block(node.body if test else node.orelse, scope, tail=rest is not None)
+        return False
+
+    def _branches(
+        self, test: Text, node: ast.If, scope: Scope, rest: list[ast.stmt] | None
+    ) -> bool:
+        """Both branches of an ``if`` on a launch-time value, each under its condition; the
+        names they set, and what they return, chosen by ``test`` after."""
+        before = dict(scope.names)
+        then = self._guarded(launch_time.truth(test), node.body, scope)
+        after_then = dict(scope.names)
+        scope.names = dict(before)
+        otherwise = self._guarded(launch_time.negated(test), node.orelse, scope)
+        returned = (then is not None, otherwise is not None)
+        if returned == (True, False) or returned == (False, True):
+            if rest is None:
+                value = self.not_followed(
+                    "a 'return' in one branch of an 'if' on a launch-time value, in a loop "
+                    "or a nested block",
+                    node,
+                )
+                raise _Return(value)
+            if then is None:  # the rest after the 'then' branch, under its test
+                scope.names = after_then
+                then = self._guarded(launch_time.truth(test), rest, scope) or _Return(None)
+            else:
+                otherwise = self._guarded(launch_time.negated(test), rest, scope) or _Return(None)
+        if then is not None and otherwise is not None:
+            raise _Return(self.choose(test, then.value, otherwise.value, node))
+        after_otherwise = scope.names
+        scope.names = {}
+        for name in {**after_then, **after_otherwise}:
+            if name not in after_then or name not in after_otherwise:
+                scope.names[name] = after_then.get(name, after_otherwise.get(name))
+            else:
+                scope.names[name] = self.choose(test, after_then[name], after_otherwise[name], node)
+        return rest is not None and returned != (False, False)
+
+    def _guarded(self, test: Text, body: list[ast.stmt], scope: Scope) -> _Return | None:
+        """``body`` read under ``test``; what it returns, if it does."""
+        self.guards.append(test)
+        try:
+            self.block(body, scope)
+        except _Return as returned:
+            return returned
+        except (_Break, _Continue):
+            self.not_followed(
+                "a 'break' or 'continue' under an 'if' on a launch-time value", body[0]
+            )
+        finally:
+            self.guards.pop()
+        return None
+
+    def guard(self) -> Text:
+        """The conjunction of the tests being read under."""
+        test = self.guards[0]
+        for other in self.guards[1:]:
+            test = Text.of("(", test, ") and (", other, ")")
+        return test
+
+    def choose(self, test: Text, then: Value, otherwise: Value, node: ast.AST) -> Value:
+        """``then`` where the Python ``test`` holds at launch time, else ``otherwise``."""
+        if then is otherwise or (_constant(then) and _constant(otherwise) and then == otherwise):
+            return then
+        sources = [_branch_source(then), _branch_source(otherwise)]
+        if sources[0] is not None and sources[1] is not None:
+            kinds = {launch_time.kind_of(then), launch_time.kind_of(otherwise)}
+            return launch_time.chosen(
+                test, sources[0], sources[1], kinds.pop() if len(kinds) == 1 else None
+            )
+        actions = [_actions(then), _actions(otherwise)]
+        if actions[0] is not None and actions[1] is not None:
+            self.guards.append(launch_time.truth(test))
+            children = [self.guarded_action(action, node) for action in actions[0]]
+            self.guards[-1] = launch_time.negated(test)
+            children += [self.guarded_action(action, node) for action in actions[1]]
+            self.guards.pop()
+            group = _group(children, None, self.location(node), self.sink)
+            return (
+                [group]
+                if isinstance(then, list | tuple) or isinstance(otherwise, list | tuple)
+                else group
+            )
+        return self.not_followed(
+            "a value that differs between the branches of an 'if' on a launch-time value", node
+        )
+
+    def guarded_action(self, action: Entity, node: ast.AST) -> Entity:
+        """``action`` under the guards being read (unless it was made under them)."""
+        if not self.guards:
+            return action
+        made = self.created.get(id(action))
+        guards = tuple(self.guards)
+        if made is not None and made[0] is action and made[1][: len(guards)] == guards:
+            return action
+        group = _group([action], self.guard(), self.location(node), self.sink)
+        self.created[id(group)] = (group, guards)
+        return group
+
+    def guarded_item(self, item: Value, node: ast.AST) -> Value:
+        """An item added to a list (or a description) under the guards being read."""
+        if not self.guards:
+            return item
+        if isinstance(item, Entity):
+            return self.guarded_action(item, node)
+        actions = _actions(item)
+        if actions is not None:
+            return [self.guarded_action(action, node) for action in actions]
+        return self.not_followed("an item added under an 'if' on a launch-time value", node)
 
     def _for(self, node: ast.For, scope: Scope) -> None:
         items = self.iterate(self.expr(node.iter, scope), node.iter)
@@ -375,6 +511,8 @@ class Interpreter:
         """``str(value)`` where it is known."""
         if isinstance(value, _SCALARS):
             return str(value)
+        if isinstance(value, Dynamic):
+            return launch_time.stringified(value)
         if isinstance(value, Text | Unknown):
             return value
         return self.not_followed(f"str() of a {type(value).__name__}", node)
@@ -388,9 +526,13 @@ class Interpreter:
         for part in parts:
             if isinstance(part, Unknown):
                 return part
-            if not isinstance(part, str | Text):
+            if isinstance(part, Dynamic):
+                part = launch_time.as_text(part)
+            elif not isinstance(part, str | Text):
                 return self.not_followed(f"a {type(part).__name__} in a string", node)
             texts.append(part)
+        if any(isinstance(part, Dynamic) for part in parts):
+            return launch_time.concatenated([Text.of(text) for text in texts])
         return Text.of(*texts)
 
     def binary(self, op: ast.operator, left: Value, right: Value, node: ast.AST) -> Value:
@@ -398,6 +540,8 @@ class Interpreter:
             return left
         if isinstance(right, Unknown):
             return right
+        if isinstance(left, Dynamic) or isinstance(right, Dynamic):
+            return self.launch_time_operation(OPERATORS.get(type(op)), left, right, node)
         if isinstance(op, ast.Add) and (isinstance(left, Text) or isinstance(right, Text)):
             return self.concatenate([left, right], node)
         if isinstance(op, ast.Div) and isinstance(left, Text) and isinstance(right, str | Text):
@@ -422,6 +566,24 @@ class Interpreter:
             return left + right
         return self.not_followed(f"operator {type(op).__name__}", node)
 
+    def launch_time_operation(
+        self, operator: str | None, left: Value, right: Value, node: ast.AST
+    ) -> Value:
+        """``left <operator> right`` where one is a launch-time value: a string joined
+        (``+``), any other operation an expression."""
+        kinds = (launch_time.kind_of(left), launch_time.kind_of(right))
+        strings = all(
+            isinstance(side, Text) or kind is str
+            for side, kind in zip((left, right), kinds, strict=True)
+        )
+        if operator == "+" and strings:
+            return self.concatenate([left, right], node)
+        sources = (launch_time.source(left), launch_time.source(right))
+        if operator is None or sources[0] is None or sources[1] is None:
+            return self.not_followed(f"operator {operator} on a launch-time value", node)
+        kind = launch_time.arithmetic_kind(operator, *kinds)
+        return launch_time.binary(operator, sources[0], sources[1], kind)
+
     @staticmethod
     def _too_large(op: ast.operator, left: Value, right: Value) -> bool:
         """Whether an operation on constants would build a result over the limits."""
@@ -440,6 +602,10 @@ class Interpreter:
 
     def _unary_op(self, node: ast.UnaryOp, scope: Scope) -> Value:
         operand = self.expr(node.operand, scope)
+        if isinstance(operand, Dynamic) and isinstance(node.op, ast.Not | ast.USub):
+            if isinstance(node.op, ast.Not):
+                return Dynamic(launch_time.negated(operand.source), bool)
+            return Dynamic(Text.of("-(", operand.source, ")"), operand.kind)
         if isinstance(node.op, ast.Not):
             test = truth(operand)
             return Unknown("not of an unknown value") if test is None else not test
@@ -449,19 +615,50 @@ class Interpreter:
 
     def _bool_op(self, node: ast.BoolOp, scope: Scope) -> Value:
         value: Value = None
+        launch_time_values: list[Value] = []  # from the first launch-time operand on
         for operand in node.values:
             value = self.expr(operand, scope)
+            if launch_time_values or isinstance(value, Dynamic):
+                launch_time_values.append(value)
+                continue
             test = truth(value)
             if test is None:
                 return Unknown("a condition not known statically")
             if test is isinstance(node.op, ast.Or):
                 return value
-        return value
+        if not launch_time_values:
+            return value
+        sources = [launch_time.source(item) for item in launch_time_values]
+        kinds = {launch_time.kind_of(item) for item in launch_time_values}
+        parts: list[str | Text] = []
+        for index, item_source in enumerate(sources):
+            if item_source is None:
+                return self.not_followed("a launch object in a launch-time condition", node)
+            word = " and " if isinstance(node.op, ast.And) else " or "
+            parts.extend([word, "(", item_source, ")"] if index else ["(", item_source, ")"])
+        return Dynamic(Text.of(*parts), kinds.pop() if len(kinds) == 1 else None)
 
     def _compare(self, node: ast.Compare, scope: Scope) -> Value:
-        left = self.expr(node.left, scope)
-        for op, comparator in zip(node.ops, node.comparators, strict=True):
-            right = self.expr(comparator, scope)
+        operands = [self.expr(operand, scope) for operand in (node.left, *node.comparators)]
+        if any(isinstance(operand, Dynamic) for operand in operands):
+            return self._launch_time_comparison(node, operands)
+        return self._compare_values(node, operands)
+
+    def _launch_time_comparison(self, node: ast.Compare, operands: list[Value]) -> Value:
+        """A comparison chain with a launch-time operand, as Python writes it."""
+        parts: list[str | Text] = []
+        for index, operand in enumerate(operands):
+            operand_source = launch_time.source(operand)
+            if operand_source is None:
+                return self.not_followed("a comparison of a launch-time value", node)
+            if index:
+                parts.append(f" {OPERATORS[type(node.ops[index - 1])]} ")
+            parts.extend(["(", operand_source, ")"])
+        return Dynamic(Text.of(*parts), bool)
+
+    def _compare_values(self, node: ast.Compare, operands: list[Value]) -> Value:
+        left = operands[0]
+        for op, right in zip(node.ops, operands[1:], strict=True):
             if not (_constant(left) or isinstance(left, dict)) or not (
                 _constant(right) or isinstance(right, dict)
             ):
@@ -475,7 +672,15 @@ class Interpreter:
         return True
 
     def _if_exp(self, node: ast.IfExp, scope: Scope) -> Value:
-        test = truth(self.expr(node.test, scope))
+        value = self.expr(node.test, scope)
+        if isinstance(value, Dynamic):
+            self.guards.append(launch_time.truth(value.source))
+            then = self.expr(node.body, scope)
+            self.guards[-1] = launch_time.negated(value.source)
+            otherwise = self.expr(node.orelse, scope)
+            self.guards.pop()
+            return self.choose(value.source, then, otherwise, node)
+        test = truth(value)
         if test is None:
             return self.not_followed("a conditional expression on an unknown value", node)
         return self.expr(node.body if test else node.orelse, scope)
@@ -520,12 +725,19 @@ class Interpreter:
             numbers = [bound for bound in bounds if bound is None or isinstance(bound, int)]
             if isinstance(container, str | list | tuple) and len(numbers) == len(bounds):
                 return container[slice(*numbers)]
+            if isinstance(container, Dynamic) and all(
+                bound is None or isinstance(bound, int) for bound in bounds
+            ):
+                written = ":".join("" if bound is None else str(bound) for bound in bounds)
+                return Dynamic(Text.of("(", container.source, f")[{written}]"), container.kind)
             return self.not_followed("a slice of a value not known statically", node)
         index = self.expr(node.slice, scope)
         if container == Module("os.environ") and isinstance(index, str | Text):
-            return Text.of(Sub("env", (Text.of(index),)))
+            return performed(Text.of(Sub("env", (Text.of(index),))))
         if container == Method(LaunchContext(), "launch_configurations"):
             return _configuration(self, node, index)
+        if isinstance(container, Dynamic) or isinstance(index, Dynamic):
+            return self._launch_time_item(container, index, node)
         try:
             if isinstance(container, dict) and isinstance(index, Key):
                 return container[index]
@@ -536,6 +748,13 @@ class Interpreter:
         if isinstance(container, Unknown):
             return container
         return self.not_followed("an item of a value not known statically", node)
+
+    def _launch_time_item(self, container: Value, index: Value, node: ast.AST) -> Value:
+        sources = (launch_time.source(container), launch_time.source(index))
+        if sources[0] is None or sources[1] is None:
+            return self.not_followed("an item of a launch-time value", node)
+        kind = str if launch_time.kind_of(container) in (str, list) else None
+        return Dynamic(Text.of("(", sources[0], ")[", sources[1], "]"), kind)
 
     def _attribute(self, node: ast.Attribute, scope: Scope) -> Value:
         owner = self.expr(node.value, scope)
@@ -587,7 +806,9 @@ class Interpreter:
             return list(value)
         if isinstance(value, dict):
             return list(value)
-        if not isinstance(value, Unknown):
+        if isinstance(value, Dynamic):
+            self.not_followed("iteration over a launch-time value (its length is not known)", node)
+        elif not isinstance(value, Unknown):
             self.not_followed(f"iteration over a {type(value).__name__}", node)
         return None
 
@@ -623,7 +844,8 @@ class Interpreter:
             call = Call(callee.qualified, args, kwargs, self.location(node), self.sink)
             builder = CALLS.get(python_name(callee.qualified))
             if builder is not None:
-                return builder(call)
+                made = builder(call)
+                return self.guarded_action(made, node) if isinstance(made, Entity) else made
             reason = REASONS.get(python_name(callee.qualified))
             return self.not_followed(reason or f"call to {callee.qualified}()", node)
         return self.not_followed(f"call of a {type(callee).__name__}", node)
@@ -660,7 +882,7 @@ class Interpreter:
             )
         self.depth += 1
         try:
-            self.block(function.node.body, scope)
+            self.block(function.node.body, scope, tail=True)
         except _Return as returned:
             return returned.value
         finally:
@@ -673,31 +895,37 @@ class Interpreter:
         receiver, name = method.receiver, method.name
         if isinstance(receiver, Description) and name in ("add_action", "add_entity") and args:
             call = Call(f"LaunchDescription.{name}", args, kwargs, self.location(node), self.sink)
-            add_actions(call, receiver.root, [args[0]])
+            add_actions(call, receiver.root, [self.guarded_item(args[0], node)])
             return None
         if isinstance(receiver, list) and name in ("append", "extend", "insert") and args:
             if name == "append":
-                receiver.append(args[0])
+                receiver.append(self.guarded_item(args[0], node))
             elif name == "insert" and len(args) == 2 and isinstance(args[0], int):
-                receiver.insert(args[0], args[1])
+                receiver.insert(args[0], self.guarded_item(args[1], node))
             else:
                 items = self.iterate(args[0], node)
                 if items is not None and len(receiver) + len(items) > MAX_LENGTH:
                     return self.not_followed(f"a list longer than {MAX_LENGTH}", node)
-                receiver.extend(items if items is not None else [Unknown("*unknown")])
+                for item in items if items is not None else [Unknown("*unknown")]:
+                    receiver.append(self.guarded_item(item, node))
             return None
         if isinstance(receiver, dict):
             return self._dict_method(receiver, name, args, node)
         if isinstance(receiver, list | tuple) and name == "copy":
             return list(receiver)
         if isinstance(receiver, Text) and name == "perform":
-            return receiver  # the value at launch time, which the text stands for
+            return performed(receiver)  # the value at launch time, which the text stands for
         if isinstance(receiver, LaunchContext) and name == "perform_substitution" and args:
-            return Call(name, args, kwargs, self.location(node), self.sink).text(args[0])
+            return performed(Call(name, args, kwargs, self.location(node), self.sink).text(args[0]))
         if receiver == Method(LaunchContext(), "launch_configurations") and name == "get" and args:
             return _configuration(self, node, *args[:2])
         if isinstance(receiver, str) and name in _STR_METHODS:
             return self._str_method(receiver, name, args, kwargs, node)
+        if isinstance(receiver, Dynamic) and name in launch_time.STRING_METHODS and not kwargs:
+            sources = [launch_time.source(arg) for arg in args]
+            given = [arg_source for arg_source in sources if arg_source is not None]
+            if len(given) == len(sources):
+                return launch_time.method(receiver, name, given)
         return self.not_followed(f"method {name}() of a {type(receiver).__name__}", node)
 
     def _dict_method(
@@ -768,6 +996,46 @@ class Interpreter:
         return self.not_followed(f"str.{name}() of values not known statically", node)
 
 
+def _branch_source(value: Value) -> Text | None:
+    """The Python source of a value a branch gives; a text of substitutions is the string
+    it gives at launch time."""
+    if isinstance(value, Text):
+        return launch_time.quoted(value)
+    return launch_time.source(value)
+
+
+def _actions(value: Value) -> list[Entity] | None:
+    """The actions ``value`` is (an action, a list of them, nothing); ``None`` if it is not."""
+    if value is None:
+        return []
+    if isinstance(value, Entity):
+        return [value]
+    if isinstance(value, Description):
+        return list(value.root.children)
+    if isinstance(value, list | tuple):
+        actions: list[Entity] = []
+        for item in value:
+            inner = _actions(item)
+            if inner is None:
+                return None
+            actions += inner
+        return actions
+    return None
+
+
+def _group(
+    actions: list[Entity], test: Text | None, location: Location, sink: DiagnosticSink
+) -> Entity:
+    """An unscoped group of ``actions``, as launch runs the actions a branch adds: in the
+    same launch configurations; under ``test`` if given."""
+    kwargs: dict[str, Value] = {"actions": list(actions), "scoped": False}
+    if test is not None:
+        kwargs["condition"] = Condition("if", launch_time.condition(test))
+    made = CALLS[("launch", "GroupAction")](Call("GroupAction", [], kwargs, location, sink))
+    assert isinstance(made, Entity)
+    return made
+
+
 def _str(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
@@ -785,6 +1053,8 @@ def _convert(kind: type[int] | type[float] | type[bool]) -> Builtin:
                 return interpreter.not_followed(f"{kind.__name__}() that fails ({error})", node)
         if not args:
             return kind()
+        if len(args) == 1 and isinstance(args[0], Dynamic):
+            return launch_time.call(kind.__name__, [args[0].source])
         return interpreter.not_followed(f"{kind.__name__}() of a value not known statically", node)
 
     return convert
@@ -795,6 +1065,8 @@ def _len(
 ) -> Value:
     if len(args) == 1 and isinstance(args[0], str | list | tuple | dict):
         return len(args[0])
+    if len(args) == 1 and isinstance(args[0], Dynamic):
+        return launch_time.call("len", [args[0].source])
     return interpreter.not_followed("len() of a value not known statically", node)
 
 
@@ -868,10 +1140,12 @@ def _configuration(
     if not isinstance(name, str):
         return interpreter.not_followed("a launch configuration named by a non-string", node)
     if default is None:
-        return Text.of(Sub("var", (Text.of(name),)))
+        return performed(Text.of(Sub("var", (Text.of(name),))))
+    if isinstance(default, Dynamic) and default.text is not None:
+        default = default.text
     if not isinstance(default, str | Text):
         return interpreter.not_followed("a launch configuration's non-string default", node)
-    return Text.of(Sub("var", (Text.of(name), Text.of(default))))
+    return performed(Text.of(Sub("var", (Text.of(name), Text.of(default)))))
 
 
 def _opaque_function(

@@ -23,6 +23,17 @@ class Unknown:
 
 
 @dataclass(frozen=True, slots=True)
+class Dynamic:
+    """A value known at launch time only: the Python ``source`` of an expression over
+    substitutions that gives it (:mod:`~rosvar.ros2.frontends.python.launch_time`), its type
+    where known, and its text where it is a string substitutions give directly."""
+
+    source: Text
+    kind: type | None
+    text: Text | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class Condition:
     """``IfCondition(x)`` and kin: the attribute (``if``/``unless``) and its text."""
 
@@ -110,6 +121,7 @@ Key = str | int | float | bool | None | Text
 Value = (
     Key
     | Unknown
+    | Dynamic
     | Condition
     | Module
     | Source
