@@ -40,6 +40,8 @@ class Dialect(Protocol):
     @property
     def loader(self) -> Loader: ...
 
+    def loader_for(self, workspace: Workspace) -> Loader: ...
+
     def interpret(
         self,
         workspace: Workspace,

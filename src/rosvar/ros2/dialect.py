@@ -13,7 +13,9 @@ from rosvar.ros2.entry import walk_entry
 from rosvar.ros2.frontends import registry
 from rosvar.ros2.substitutions import Ros2Substituter
 
-ROS2: Semantics[Context] = Semantics(RosVersion.ROS2, registry.load, Ros2Substituter, walk_entry)
+ROS2: Semantics[Context] = Semantics(
+    RosVersion.ROS2, registry.load, Ros2Substituter, walk_entry, bind=registry.workspace_loader
+)
 
 
 def tag(name: str) -> Callable[[Handler[Context]], Handler[Context]]:

@@ -13,7 +13,6 @@ from rosvar.ros2 import tags as _tags  # noqa: F401 - registers the handlers
 from rosvar.ros2.context import Context
 from rosvar.ros2.dialect import ROS2
 from rosvar.ros2.entry import walk_actions
-from rosvar.ros2.frontends import registry
 from rosvar.workspace import Workspace
 
 
@@ -35,7 +34,7 @@ def interpret(
         lambda _file, _name: (),
         lambda _name: (UNSET,),  # a variable not given is not set (a clean environment)
         file,
-        Snapshot(registry.load),
+        Snapshot(ROS2.loader_for(workspace)),
     )
     try:
         it.stack.append(file)

@@ -535,6 +535,101 @@ def generate_launch_description():
             {"sim": "", "voxel": "7"},
         ],
     ),
+    "python-workspace-modules": (
+        {
+            "pkg_helpers/__init__.py": "",
+            "pkg_helpers/launch.py": """from launch.action import Action
+from launch.substitution import Substitution
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+PREFIX = 'helper_'
+
+
+class LaunchConfigAsBool(Substitution):
+    def __init__(self, name):
+        super().__init__()
+        self.name = name
+
+    def perform(self, context):
+        value = LaunchConfiguration(self.name).perform(context)
+        return str(value.lower() in ('true', '1', 'yes'))
+
+
+class NodeBuilder:
+    def __init__(self, package):
+        self.package = package
+        self.nodes = []
+        self.count = 0
+
+    def add(self, executable):
+        self.count += 1
+        name = PREFIX + executable + str(self.count)
+        self.nodes.append(Node(package=self.package, executable=executable, name=name))
+        return self
+
+    def build(self):
+        return self.nodes
+
+
+class Base:
+    label = 'base'
+
+    def __init__(self, name):
+        self.name = name
+
+    def full(self):
+        return self.label + '_' + self.name
+
+
+class Derived(Base):
+    label = 'derived'
+
+    def __init__(self, name):
+        super().__init__(name + '_x')
+
+    def full(self):
+        return super().full() + '_d'
+
+
+class Extra(Action):
+    def __init__(self, name, **kwargs):
+        super().__init__(**kwargs)
+        self.name = name
+
+    def execute(self, context):
+        return [Node(package='pkg', executable='e', name=self.name)]
+
+
+def setup(context, suffix):
+    robot = LaunchConfiguration('robot').perform(context)
+    return [Node(package='pkg', executable='o', name=robot + suffix)]
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.conditions import IfCondition
+from launch_ros.actions import Node
+from pkg_helpers.launch import Derived, Extra, LaunchConfigAsBool, NodeBuilder
+import pkg_helpers.launch as helpers
+
+
+def generate_launch_description():
+    ld = LaunchDescription([
+        DeclareLaunchArgument('use_x', default_value='yes'),
+        DeclareLaunchArgument('robot', default_value='r1'),
+        Node(package='pkg', executable='x', name='x',
+             condition=IfCondition(LaunchConfigAsBool('use_x'))),
+        Node(package='pkg', executable='d', name=Derived('n').full()),
+        OpaqueFunction(function=helpers.setup, args=['_s']),
+        Extra('extra'),
+    ])
+    for node in NodeBuilder('pkg').add('a').add('b').build():
+        ld.add_action(node)
+    return ld
+""",
+        },
+        [{}, {"use_x": "no", "robot": "r2"}, {"use_x": "TRUE"}],
+    ),
     "append-env-after-before-or-alone": (
         {
             "main.launch.xml": """<launch>
@@ -760,6 +855,7 @@ def _workspace(tmp_path: Path, files: dict[str, str]) -> Path:
     package.mkdir(parents=True)
     (package / "package.xml").write_text(PACKAGE_XML)
     for name, text in files.items():
+        (package / name).parent.mkdir(parents=True, exist_ok=True)
         (package / name).write_text(text)
     return package
 

@@ -17,12 +17,15 @@ from __future__ import annotations
 
 import ast
 import builtins
+import contextlib
+import os
 import string
 from collections.abc import Callable, Iterator
 from typing import Any
 
 from rosvar.arithmetic import ARITHMETIC, COMPARISONS
 from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.files import read_file
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.registry import python_name
 from rosvar.ros2.frontends.python import launch_time
@@ -35,17 +38,23 @@ from rosvar.ros2.frontends.python.calls import (
     join_path,
 )
 from rosvar.ros2.frontends.python.launch_time import OPERATORS, performed
+from rosvar.ros2.frontends.python.modules import MAX_MODULE_BYTES, MAX_MODULES, ModulePath
 from rosvar.ros2.frontends.python.text import Sub, Text
 from rosvar.ros2.frontends.python.values import (
+    Class,
     Condition,
     Description,
     Dynamic,
     Function,
+    Instance,
     Key,
     LaunchContext,
     Method,
     Module,
+    ModuleScope,
     Scope,
+    SourceFile,
+    Super,
     Unknown,
     Value,
 )
@@ -59,6 +68,8 @@ MAX_LENGTH = 100_000
 MAX_INT_BITS = 4096
 """Largest integer the reading computes: repeated squaring must not exhaust memory."""
 
+MAX_IMPORT_DEPTH = 20
+"""Modules being read at once (a module importing another...): deeper imports stay symbolic."""
 MODULE_NAME = "__launch__"
 """``__name__`` while the file is read: launch imports it as a module, not as ``__main__``."""
 
@@ -128,10 +139,19 @@ def truth(value: Value) -> bool | None:
 class Interpreter:
     """Reads one file; diagnostics go to ``sink``."""
 
-    def __init__(self, filename: str, text: str, sink: DiagnosticSink) -> None:
+    def __init__(
+        self, filename: str, text: str, sink: DiagnosticSink, modules: ModulePath | None = None
+    ) -> None:
         self.filename = filename
-        self.lines = text.splitlines()
+        self.file = SourceFile(filename, text.splitlines())
+        """The file whose code is being read (a module's, in its functions)."""
         self.sink = sink
+        self.modules = modules
+        self.loaded: dict[str, ModuleScope | None] = {}
+        """Modules read (``None``: not found or not readable), by qualified name."""
+        self.loading = 0
+        self.paths: list[str] = [os.path.dirname(filename)]
+        """Directories searched for modules before the packages (``sys.path`` appends)."""
         self.steps = 0
         self.depth = 0
         self.guards: list[Text] = []
@@ -146,6 +166,7 @@ class Interpreter:
             ast.Return: self._return,
             ast.For: self._for,
             ast.FunctionDef: self._function_def,
+            ast.ClassDef: self._class_def,
             ast.Import: self._import,
             ast.ImportFrom: self._import_from,
             ast.Try: self._try,
@@ -185,9 +206,10 @@ class Interpreter:
     def location(self, node: ast.AST) -> Location:
         line = getattr(node, "lineno", 1)
         offset = getattr(node, "col_offset", 0)  # in UTF-8 bytes
-        text = self.lines[line - 1] if 0 < line <= len(self.lines) else ""
+        lines = self.file.lines
+        text = lines[line - 1] if 0 < line <= len(lines) else ""
         column = len(text.encode()[:offset].decode(errors="replace"))
-        return Location(self.filename, line, column + 1)
+        return Location(self.file.filename, line, column + 1)
 
     def not_followed(self, what: str, node: ast.AST) -> Unknown:
         self.sink.warning(NOT_FOLLOWED, f"{what} is not followed", self.location(node))
@@ -238,6 +260,14 @@ class Interpreter:
                 items = [value] * len(target.elts)
             for element, item in zip(target.elts, items, strict=True):
                 self.assign(element, item, scope)
+        elif isinstance(target, ast.Attribute):
+            owner = self.expr(target.value, scope)
+            if isinstance(owner, Instance):
+                owner.attributes[target.attr] = value
+            elif isinstance(owner, Class | ModuleScope):
+                owner.scope.names[target.attr] = value
+            elif not isinstance(owner, Unknown):
+                self.not_followed(f"assignment to an attribute of a {type(owner).__name__}", target)
         elif isinstance(target, ast.Subscript):
             container = self.expr(target.value, scope)
             index = self.expr(target.slice, scope)
@@ -441,23 +471,126 @@ class Interpreter:
         for argument, kw_default in zip(arguments.kwonlyargs, arguments.kw_defaults, strict=True):
             if kw_default is not None:
                 defaults[argument.arg] = self.expr(kw_default, scope)
-        scope.names[node.name] = Function(node, scope, defaults)
+        scope.names[node.name] = Function(node, scope, defaults, self.file)
+
+    def _class_def(self, node: ast.ClassDef, scope: Scope) -> None:
+        if node.decorator_list or node.keywords:
+            scope.names[node.name] = self.not_followed(f"decorated class {node.name}", node)
+            return
+        bases = [self.expr(base, scope) for base in node.bases]
+        cls = Class(node.name, bases, Scope(parent=scope))
+        with contextlib.suppress(_Return, _Break, _Continue):  # as Python, which refuses them
+            self.block(node.body, cls.scope)
+        for value in cls.scope.names.values():
+            if isinstance(value, Function):
+                value.owner = cls
+        scope.names[node.name] = cls
 
     def _import(self, node: ast.Import, scope: Scope) -> None:
         for alias in node.names:
             if alias.asname is not None:
-                scope.names[alias.asname] = Module(alias.name)
+                scope.names[alias.asname] = self.module(alias.name, node) or Module(alias.name)
             else:
                 top = alias.name.partition(".")[0]
-                scope.names[top] = Module(top)
+                self.module(alias.name, node)  # read the submodule too
+                scope.names[top] = self.module(top, node) or Module(top)
 
     def _import_from(self, node: ast.ImportFrom, scope: Scope) -> None:
         module = "." * node.level + (node.module or "")
+        if node.level:
+            module = self._absolute(node.level, node.module or "")
+        found = self.module(module, node) if module else None
         for alias in node.names:
             if alias.name == "*":
-                self.not_followed(f"'from {module} import *'", node)
+                if found is not None:
+                    scope.names.update(
+                        (name, value)
+                        for name, value in found.scope.names.items()
+                        if not name.startswith("_")
+                    )
+                else:
+                    self.not_followed(f"'from {module} import *'", node)
                 continue
-            scope.names[alias.asname or alias.name] = Module(f"{module}.{alias.name}")
+            name = alias.asname or alias.name
+            if found is not None and alias.name in found.scope.names:
+                scope.names[name] = found.scope.names[alias.name]
+            else:
+                submodule = self.module(f"{module}.{alias.name}", node) if found else None
+                scope.names[name] = submodule or Module(f"{module}.{alias.name}")
+
+    def _absolute(self, level: int, name: str) -> str:
+        """A relative import's module, named from the current module's package."""
+        found, package = False, ""
+        for qualified, module in self.loaded.items():
+            if module is not None and module.scope.names.get("__file__") == self.file.filename:
+                found, package = True, qualified
+                if not self.file.filename.endswith("__init__.py"):
+                    package = package.rpartition(".")[0]
+        if not found:
+            return "." * level + name  # the launch file itself is no package
+        for _ in range(level - 1):
+            package = package.rpartition(".")[0]
+        return f"{package}.{name}" if name else package
+
+    def directory(self, value: Value) -> str | None:
+        """The directory ``value`` names, where known statically."""
+        if isinstance(value, Dynamic):
+            value = value.text
+        if isinstance(value, str):
+            return value if os.path.isabs(value) else None
+        if not isinstance(value, Text) or not value.parts:
+            return None
+        first, rest = value.parts[0], value.parts[1:]
+        tail = "".join(part for part in rest if isinstance(part, str))
+        if len(tail) < len(rest) or not isinstance(first, Sub):
+            return None
+        if first.name == "dirname" and not first.args:
+            return os.path.dirname(self.file.filename) + tail
+        package = first.args[0].literal() if len(first.args) == 1 else None
+        if first.name == "find-pkg-share" and package and self.modules is not None:
+            found = self.modules.packages.get(package)
+            return None if found is None else found + tail
+        return None
+
+    def module(self, qualified: str, node: ast.AST) -> ModuleScope | None:
+        """The module ``qualified`` of the workspace, read once; ``None`` if it is none (it
+        stays a symbolic :class:`Module`) or cannot be read (reported)."""
+        if qualified in self.loaded:
+            return self.loaded[qualified]
+        if self.modules is None or qualified.startswith("."):
+            return None
+        path = self.modules.find(qualified, self.paths)
+        if path is None:
+            self.loaded[qualified] = None
+            return None
+        if len(self.loaded) >= MAX_MODULES or self.loading >= MAX_IMPORT_DEPTH:
+            self.not_followed(f"module {qualified} (beyond the bound on modules read)", node)
+            return None
+        where = self.location(node)
+        try:
+            if self.modules.confinement is not None:
+                self.modules.confinement.check(path)
+            text = read_file(path, limit=MAX_MODULE_BYTES).decode("utf-8-sig")
+            tree = ast.parse(text, path)
+        except (OSError, UnicodeDecodeError, SyntaxError, ValueError, RecursionError) as error:
+            self.sink.warning(
+                "python-module", f"module {qualified} ({path}) is not read: {error}", where
+            )
+            self.loaded[qualified] = None
+            return None
+        module = ModuleScope(qualified, Scope({"__name__": qualified, "__file__": path}))
+        self.loaded[qualified] = module  # before its body: an import cycle sees it partial
+        outer, guards = self.file, self.guards
+        self.file, self.guards = SourceFile(path, text.splitlines()), []
+        self.loading += 1
+        try:
+            self.block(tree.body, module.scope)
+        except (_Return, _Break, _Continue):
+            pass
+        finally:
+            self.file, self.guards = outer, guards
+            self.loading -= 1
+        return module
 
     def _try(self, node: ast.Try, scope: Scope) -> None:
         """The body as if it raised nothing (nothing read here raises)."""
@@ -762,6 +895,22 @@ class Interpreter:
             return Module(f"{owner.qualified}.{node.attr}")
         if isinstance(owner, Unknown):
             return owner
+        if isinstance(owner, ModuleScope):
+            if node.attr in owner.scope.names:
+                return owner.scope.names[node.attr]
+            qualified = f"{owner.qualified}.{node.attr}"
+            return self.module(qualified, node) or self.not_followed(f"name {qualified}", node)
+        if isinstance(owner, Instance) and node.attr in owner.attributes:
+            return owner.attributes[node.attr]
+        if isinstance(owner, Instance | Class | Super):
+            if isinstance(owner, Super):
+                found, value = _class_lookup(owner.owner, node.attr, after=True)
+            else:
+                found, value = _class_lookup(
+                    owner.cls if isinstance(owner, Instance) else owner, node.attr
+                )
+            if found and not isinstance(value, Function):
+                return value
         return Method(owner, node.attr)
 
     def _named_expr(self, node: ast.NamedExpr, scope: Scope) -> Value:
@@ -815,6 +964,12 @@ class Interpreter:
     # ------------------------------------------------------------------ calls
 
     def _call(self, node: ast.Call, scope: Scope) -> Value:
+        if isinstance(node.func, ast.Name) and node.func.id == "super" and not node.args:
+            found, owner = scope.lookup("__class__")
+            _, instance = scope.lookup("__self__")
+            if found and isinstance(owner, Class):
+                return Super(instance, owner)
+            return self.not_followed("super() outside a method", node)
         callee = self.expr(node.func, scope)
         args = self._elements(node.args, scope)
         kwargs: dict[str, Value] = {}
@@ -837,6 +992,8 @@ class Interpreter:
             return self.call_function(callee, args, kwargs, node)
         if isinstance(callee, Method):
             return self.call_method(callee, args, kwargs, node)
+        if isinstance(callee, Class):
+            return self.instantiate(callee, args, kwargs, node)
         if isinstance(callee, Module):
             builtin = BUILTINS.get(callee.qualified) or CALLING.get(python_name(callee.qualified))
             if builtin is not None:
@@ -858,6 +1015,8 @@ class Interpreter:
         arguments = function.node.args
         positional = [argument.arg for argument in (*arguments.posonlyargs, *arguments.args)]
         scope = Scope(dict(function.defaults), function.scope)
+        if function.owner is not None and args:  # for super(): the class and the instance
+            scope.names["__class__"], scope.names["__self__"] = function.owner, args[0]
         for name, value in zip(positional, args, strict=False):
             scope.names[name] = value
         if arguments.vararg is not None:
@@ -881,18 +1040,48 @@ class Interpreter:
                 f"{function.node.name}() without {', '.join(sorted(missing))}", node
             )
         self.depth += 1
+        outer, self.file = self.file, function.file
         try:
             self.block(function.node.body, scope, tail=True)
         except _Return as returned:
             return returned.value
         finally:
             self.depth -= 1
+            self.file = outer
         return None
+
+    def instantiate(
+        self, cls: Class, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        """An object of ``cls``, its ``__init__`` read; a launch ``Substitution`` subclass is
+        the text its ``perform`` gives, an ``Action`` subclass the actions its ``execute``
+        returns, read where it stands (as launch performs and executes them)."""
+        instance = Instance(cls)
+        found, init = _class_lookup(cls, "__init__")
+        if found and isinstance(init, Function):
+            self.call_function(init, [instance, *args], kwargs, node)
+        bases = _launch_bases(cls)
+        call = Call(cls.name, [], {}, self.location(node), self.sink)
+        found, perform = _class_lookup(cls, "perform")
+        if any(base.endswith("Substitution") for base in bases) and isinstance(perform, Function):
+            return call.text(self.call_function(perform, [instance, LaunchContext()], {}, node))
+        found, execute = _class_lookup(cls, "execute")
+        entity = ("Action", "LaunchDescriptionEntity")
+        if any(base.endswith(entity) for base in bases) and isinstance(execute, Function):
+            actions = self.call_function(execute, [instance, LaunchContext()], {}, node)
+            if isinstance(actions, Unknown):
+                return actions
+            return _group(
+                [] if actions is None else _actions(actions) or [], None, call.location, self.sink
+            )
+        return instance
 
     def call_method(
         self, method: Method, args: list[Value], kwargs: dict[str, Value], node: ast.AST
     ) -> Value:
         receiver, name = method.receiver, method.name
+        if isinstance(receiver, Instance | Class | Super):
+            return self._call_class_method(receiver, name, args, kwargs, node)
         if isinstance(receiver, Description) and name in ("add_action", "add_entity") and args:
             call = Call(f"LaunchDescription.{name}", args, kwargs, self.location(node), self.sink)
             add_actions(call, receiver.root, [self.guarded_item(args[0], node)])
@@ -927,6 +1116,29 @@ class Interpreter:
             if len(given) == len(sources):
                 return launch_time.method(receiver, name, given)
         return self.not_followed(f"method {name}() of a {type(receiver).__name__}", node)
+
+    def _call_class_method(
+        self,
+        receiver: Instance | Class | Super,
+        name: str,
+        args: list[Value],
+        kwargs: dict[str, Value],
+        node: ast.AST,
+    ) -> Value:
+        if isinstance(receiver, Super):
+            found, function = _class_lookup(receiver.owner, name, after=True)
+            bound = [receiver.instance]
+        else:
+            cls = receiver.cls if isinstance(receiver, Instance) else receiver
+            found, function = _class_lookup(cls, name)
+            bound = [receiver] if isinstance(receiver, Instance) else []
+        if isinstance(function, Function):
+            return self.call_function(function, [*bound, *args], kwargs, node)
+        if isinstance(receiver, Super) and name == "__init__":
+            return None  # a launch base class's constructor: nothing the reading needs
+        if found:
+            return self.invoke(function, args, kwargs, node)
+        return self.not_followed(f"method {name}() of {type(receiver).__name__.lower()}", node)
 
     def _dict_method(
         self, receiver: dict[Key, Value], name: str, args: list[Value], node: ast.AST
@@ -994,6 +1206,30 @@ class Interpreter:
                 return self.not_followed(f"str.{name}() that fails ({error})", node)
             return result
         return self.not_followed(f"str.{name}() of values not known statically", node)
+
+
+def _class_lookup(cls: Class, name: str, after: bool = False) -> tuple[bool, Value]:
+    """``name`` in ``cls`` or its bases (depth first, as Python's order for single bases);
+    ``after``: in its bases only (``super()``)."""
+    if not after and name in cls.scope.names:
+        return True, cls.scope.names[name]
+    for base in cls.bases:
+        if isinstance(base, Class):
+            found, value = _class_lookup(base, name)
+            if found:
+                return True, value
+    return False, None
+
+
+def _launch_bases(cls: Class) -> list[str]:
+    """The qualified names of the launch (or other symbolic) classes ``cls`` derives from."""
+    names: list[str] = []
+    for base in cls.bases:
+        if isinstance(base, Module):
+            names.append(base.qualified)
+        elif isinstance(base, Class):
+            names += _launch_bases(base)
+    return names
 
 
 def _branch_source(value: Value) -> Text | None:
@@ -1127,6 +1363,17 @@ def _zip(
     return [tuple(row) for row in zip(*(column or [] for column in columns), strict=False)]
 
 
+def _sys_path(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
+    """``sys.path.append(d)`` (``insert(i, d)``): later imports search ``d`` too, where it is
+    known (a literal, the file's directory, a package's share directory below)."""
+    directory = interpreter.directory(args[-1]) if args else None
+    if directory is not None:
+        interpreter.paths.append(directory)
+    return None
+
+
 def _print(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
@@ -1196,6 +1443,8 @@ BUILTINS: dict[str, Builtin] = {
     "enumerate": _enumerate,
     "zip": _zip,
     "print": _print,
+    "sys.path.append": _sys_path,
+    "sys.path.insert": _sys_path,
 }
 """Python's builtins the reading follows (a call of any other is not followed)."""
 

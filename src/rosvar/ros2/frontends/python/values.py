@@ -85,12 +85,56 @@ class Description:
 
 
 @dataclass(eq=False, slots=True)
+class SourceFile:
+    """A file being read (the launch file or a module), for the places of diagnostics."""
+
+    filename: str
+    lines: list[str]
+
+
+@dataclass(eq=False, slots=True)
 class Function:
-    """A function defined in the launch file, called by reading its body again."""
+    """A function defined in the launch file or a module it imports, called by reading its
+    body again; ``owner`` is the class whose body defines it (for ``super()``)."""
 
     node: ast.FunctionDef
     scope: Scope
     defaults: dict[str, Value]
+    file: SourceFile
+    owner: Class | None = None
+
+
+@dataclass(eq=False, slots=True)
+class ModuleScope:
+    """A module of the workspace, read by the same interpreter: its names."""
+
+    qualified: str
+    scope: Scope
+
+
+@dataclass(eq=False, slots=True)
+class Class:
+    """A class defined in the file or a module: its bases and its body's names."""
+
+    name: str
+    bases: list[Value]
+    scope: Scope
+
+
+@dataclass(eq=False, slots=True)
+class Instance:
+    """An object of a :class:`Class`, with the attributes its methods set."""
+
+    cls: Class
+    attributes: dict[str, Value] = field(default_factory=dict)
+
+
+@dataclass(eq=False, slots=True)
+class Super:
+    """``super()`` in a method of ``owner``: lookups start after it."""
+
+    instance: Value
+    owner: Class
 
 
 @dataclass(frozen=True, slots=True)
@@ -130,6 +174,10 @@ Value = (
     | LaunchContext
     | Description
     | Function
+    | ModuleScope
+    | Class
+    | Instance
+    | Super
     | Method
     | Entity
     | list["Value"]
