@@ -23,7 +23,7 @@ from rosvar.logic.choice import Choice, Fail, combine, ite
 from rosvar.logic.terms import Apply, TermError, concat, register
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS
 from rosvar.ros2.context import Context, optional
-from rosvar.ros2.frontends.python.text import PATH_JOIN, UNKNOWN
+from rosvar.ros2.frontends.python.text import PATH_JOIN, PYTHON_STRING, UNKNOWN
 
 Value = Raw | Fail
 
@@ -153,7 +153,7 @@ def command_line(text: str) -> list[Template]:
 
 Handler = Callable[[Interpretation[Context], Context, list[Raw]], Choice[Value]]
 HANDLERS: dict[str, Handler] = {}
-OWN = frozenset({PATH_JOIN, UNKNOWN})
+OWN = frozenset({PATH_JOIN, PYTHON_STRING, UNKNOWN})
 """rosvar's own substitutions, which the Python frontend writes (no launch API name)."""
 
 
@@ -352,6 +352,17 @@ def _path_join(host: Interpretation[Context], context: Context, args: list[Raw])
     for arg in args:  # an unknown value: joined as if relative, with no trailing '/'
         parts += ["/", arg]
     return Choice.const(host.space, concat(parts[1:]))
+
+
+@substitution(PYTHON_STRING)
+def _python_string(
+    host: Interpretation[Context], context: Context, args: list[Raw]
+) -> Choice[Value]:
+    """The Python frontend's launch-time string inside an expression: its ``repr``; an
+    unknown value stays unknown (the expression then fails where it is needed)."""
+    if len(args) != 1:
+        return _fail(host, f"$({PYTHON_STRING}) takes one argument", "substitution-invalid")
+    return Choice.const(host.space, repr(args[0]) if isinstance(args[0], str) else args[0])
 
 
 @substitution(UNKNOWN)

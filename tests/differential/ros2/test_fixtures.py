@@ -506,7 +506,9 @@ def setup(context):
     label = 'on' if flag else 'off'
     if len(sim) > 3 and sim[0] != 'f':
         label = label + '_long'
-    nodes.append(Node(package='pkg', executable='s', name=speed + '_' + label))
+    extra = {} if sim == 'true' else {'mode': 'm_' + sim, 'scale': size}
+    nodes.append(Node(package='pkg', executable='s', name=speed + '_' + label,
+                      parameters=[{'fixed': 1}, extra]))
     return nodes
 
 
@@ -533,6 +535,7 @@ def generate_launch_description():
             {"voxel": "1e3", "sim": "true"},
             {"sim": "1", "imu_topic": ""},
             {"sim": "", "voxel": "7"},
+            {"imu_topic": "it's \\ ''"},
         ],
     ),
     "python-workspace-modules": (

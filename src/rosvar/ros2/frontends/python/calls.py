@@ -24,6 +24,7 @@ from rosvar.ros2.frontends.python import launch_time
 from rosvar.ros2.frontends.python.text import PATH_JOIN, Sub, Text, unknown
 from rosvar.ros2.frontends.python.values import (
     Condition,
+    Conditional,
     Dynamic,
     Module,
     ParameterFile,
@@ -84,6 +85,9 @@ class Call:
             return Text.of(unknown(value.what))
         if isinstance(value, Source):
             return value.path
+        if isinstance(value, Conditional):
+            what = "a value that differs between the branches of an 'if' on a launch-time value"
+            return Text.of(unknown(self.not_followed(what).what))
         if value is None or isinstance(value, bool | int | float):
             return Text.of(typed_text(value))
         return Text.of(unknown(self.not_followed(f"{type(value).__name__} used as text").what))

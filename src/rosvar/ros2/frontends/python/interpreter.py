@@ -43,6 +43,7 @@ from rosvar.ros2.frontends.python.text import Sub, Text
 from rosvar.ros2.frontends.python.values import (
     Class,
     Condition,
+    Conditional,
     Description,
     Dynamic,
     Function,
@@ -408,9 +409,7 @@ class Interpreter:
                 if isinstance(then, list | tuple) or isinstance(otherwise, list | tuple)
                 else group
             )
-        return self.not_followed(
-            "a value that differs between the branches of an 'if' on a launch-time value", node
-        )
+        return Conditional(test, then, otherwise)
 
     def guarded_action(self, action: Entity, node: ast.AST) -> Entity:
         """``action`` under the guards being read (unless it was made under them)."""

@@ -8,16 +8,15 @@ configuration as it evaluates ``$(eval)``, through the same restricted evaluator
 as text is ``$(eval <source>)`` (``str()`` of the result, as ``PythonExpression`` gives);
 a branch on it is a condition ``$(eval 'bool(<source>)')``.
 
-A launch-time string enters the expression as a quoted literal around its substitutions, as
-``PythonExpression`` substitutes values into its text: a value holding a quote or a backslash
-reads differently (docs/known-differences.md).
+A launch-time string enters the expression as the ``repr`` of its value
+(``$(rosvar-python-string ...)``): a value holding quotes or backslashes is the string it is.
 """
 
 from __future__ import annotations
 
 import ast
 
-from rosvar.ros2.frontends.python.text import Sub, Text
+from rosvar.ros2.frontends.python.text import PYTHON_STRING, Sub, Text
 from rosvar.ros2.frontends.python.values import Dynamic, Value
 
 Kind = type | None
@@ -73,16 +72,12 @@ def performed(text: Text) -> Dynamic:
 
 
 def quoted(text: Text) -> Text:
-    """``text`` as a Python string literal of its launch-time value."""
-    parts: list[str | Sub] = ["'"]
-    for part in text.parts:
-        if isinstance(part, str):
-            escaped = part.replace("\\", "\\\\").replace("'", "\\'").replace("\n", "\\n")
-            parts.append(escaped)
-        else:
-            parts.append(part)
-    parts.append("'")
-    return Text.of(*parts)
+    """``text`` as a Python string literal of its launch-time value: its ``repr`` where it is
+    literal, else ``$(rosvar-python-string text)``, the ``repr`` of the value it gives."""
+    literal = text.literal()
+    if literal is not None:
+        return Text.of(repr(literal))
+    return Text.of(Sub(PYTHON_STRING, (text,)))
 
 
 def source(value: Value) -> Text | None:

@@ -19,6 +19,11 @@ PATH_JOIN = "rosvar-path-join"
 """The substitution standing for ``PathJoinSubstitution`` (``os.path.join`` of its
 arguments' values) where the join is not known from the text; XML has none."""
 
+PYTHON_STRING = "rosvar-python-string"
+"""The substitution giving its argument's value as a Python string literal (``repr``): a
+launch-time string inside a Python expression the interpreter evaluates, whatever quotes or
+backslashes the value holds; XML has none."""
+
 _PLAIN_ARGUMENT = re.compile(r"[^\s'\"\\$()]+")
 
 

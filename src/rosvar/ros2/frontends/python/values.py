@@ -34,6 +34,17 @@ class Dynamic:
 
 
 @dataclass(frozen=True, slots=True)
+class Conditional:
+    """``then`` where the Python ``test`` holds at launch time, else ``otherwise``: values of
+    the branches of an ``if`` on a launch-time value that are no Python expression (dicts of
+    parameters, unknown values); a node's parameters hold each under its condition."""
+
+    test: Text
+    then: Value
+    otherwise: Value
+
+
+@dataclass(frozen=True, slots=True)
 class Condition:
     """``IfCondition(x)`` and kin: the attribute (``if``/``unless``) and its text."""
 
@@ -166,6 +177,7 @@ Value = (
     Key
     | Unknown
     | Dynamic
+    | Conditional
     | Condition
     | Module
     | Source
