@@ -1373,6 +1373,38 @@ def _sys_path(
     return None
 
 
+def _copy(deep: bool) -> Builtin:
+    def copy(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        """``copy.copy``/``copy.deepcopy`` of lists, tuples and dicts (sharing kept, as
+        Python's memo keeps it; each copied container a step); anything else is itself
+        (immutable to the reading)."""
+        if len(args) != 1:
+            return interpreter.not_followed("copy() of other than one value", node)
+        copies: dict[int, Value] = {}
+
+        def copied(value: Value, depth: int) -> Value:
+            if not isinstance(value, list | tuple | dict) or (not deep and depth > 0):
+                return value
+            if id(value) in copies:
+                return copies[id(value)]
+            interpreter.step()
+            if isinstance(value, dict):
+                mapping: dict[Key, Value] = {}
+                copies[id(value)] = mapping
+                mapping.update((key, copied(item, depth + 1)) for key, item in value.items())
+                return mapping
+            items = [copied(item, depth + 1) for item in value]
+            result: Value = items if isinstance(value, list) else tuple(items)
+            copies[id(value)] = result
+            return result
+
+        return copied(args[0], 0)
+
+    return copy
+
+
 def _print(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
@@ -1442,6 +1474,8 @@ BUILTINS: dict[str, Builtin] = {
     "enumerate": _enumerate,
     "zip": _zip,
     "print": _print,
+    "copy.copy": _copy(deep=False),
+    "copy.deepcopy": _copy(deep=True),
     "sys.path.append": _sys_path,
     "sys.path.insert": _sys_path,
 }
