@@ -633,6 +633,43 @@ def generate_launch_description():
         },
         [{}, {"use_x": "no", "robot": "r2"}, {"use_x": "TRUE"}],
     ),
+    "python-reads-yaml-of-the-workspace": (
+        {
+            "config/params.yaml": """name: from_yaml
+node:
+  ros__parameters:
+    rate: 10
+    label: abc
+    gain: 2.5
+list: [1, 2, 3]
+""",
+            "main.launch.py": """import os
+
+import yaml
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    path = os.path.join(get_package_share_directory('pkg'), 'config', 'params.yaml')
+    with open(path, 'r') as f:
+        params = yaml.load(f, Loader=yaml.SafeLoader)
+    beside = os.path.join(os.path.dirname(__file__), 'config', 'params.yaml')
+    other = yaml.safe_load(open(beside).read())
+    node_params = params['node']['ros__parameters']
+    node_params['extra'] = LaunchConfiguration('extra')
+    return LaunchDescription([
+        DeclareLaunchArgument('extra', default_value='e'),
+        Node(package='pkg', executable='a', name=params['name'],
+             parameters=[node_params, {'k': other['list'][1] * 2}]),
+    ])
+""",
+        },
+        [{}, {"extra": "f"}],
+    ),
     "append-env-after-before-or-alone": (
         {
             "main.launch.xml": """<launch>

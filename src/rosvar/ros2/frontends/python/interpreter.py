@@ -28,7 +28,7 @@ from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.files import read_file
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.registry import python_name
-from rosvar.ros2.frontends.python import launch_time
+from rosvar.ros2.frontends.python import launch_time, reads
 from rosvar.ros2.frontends.python.actions import add_actions
 from rosvar.ros2.frontends.python.calls import (
     CALLS,
@@ -46,6 +46,7 @@ from rosvar.ros2.frontends.python.values import (
     Conditional,
     Description,
     Dynamic,
+    FileHandle,
     Function,
     Instance,
     Key,
@@ -531,8 +532,9 @@ class Interpreter:
             package = package.rpartition(".")[0]
         return f"{package}.{name}" if name else package
 
-    def directory(self, value: Value) -> str | None:
-        """The directory ``value`` names, where known statically."""
+    def path_of(self, value: Value) -> str | None:
+        """The absolute path ``value`` names, where known statically (a literal, the file's
+        directory, a package's share directory, each with a literal tail)."""
         if isinstance(value, Dynamic):
             value = value.text
         if isinstance(value, str):
@@ -601,7 +603,7 @@ class Interpreter:
         for item in node.items:
             value = self.expr(item.context_expr, scope)
             if item.optional_vars is not None:
-                if not isinstance(value, Unknown):
+                if not isinstance(value, Unknown | FileHandle):
                     value = self.not_followed("a 'with' context manager", item.context_expr)
                 self.assign(item.optional_vars, value, scope)
         self.block(node.body, scope)
@@ -1081,6 +1083,8 @@ class Interpreter:
         receiver, name = method.receiver, method.name
         if isinstance(receiver, Instance | Class | Super):
             return self._call_class_method(receiver, name, args, kwargs, node)
+        if isinstance(receiver, FileHandle) and name == "read" and not args:
+            return reads.text(self, receiver, node)
         if isinstance(receiver, Description) and name in ("add_action", "add_entity") and args:
             call = Call(f"LaunchDescription.{name}", args, kwargs, self.location(node), self.sink)
             add_actions(call, receiver.root, [self.guarded_item(args[0], node)])
@@ -1367,7 +1371,7 @@ def _sys_path(
 ) -> Value:
     """``sys.path.append(d)`` (``insert(i, d)``): later imports search ``d`` too, where it is
     known (a literal, the file's directory, a package's share directory below)."""
-    directory = interpreter.directory(args[-1]) if args else None
+    directory = interpreter.path_of(args[-1]) if args else None
     if directory is not None:
         interpreter.paths.append(directory)
     return None
@@ -1474,6 +1478,9 @@ BUILTINS: dict[str, Builtin] = {
     "enumerate": _enumerate,
     "zip": _zip,
     "print": _print,
+    "open": reads.open_file,
+    "yaml.safe_load": reads.load_yaml,
+    "yaml.load": reads.load_yaml,
     "copy.copy": _copy(deep=False),
     "copy.deepcopy": _copy(deep=True),
     "sys.path.append": _sys_path,

@@ -45,6 +45,13 @@ class Conditional:
 
 
 @dataclass(frozen=True, slots=True)
+class FileHandle:
+    """``open(path)`` of a file of the workspace, read where its text is used."""
+
+    path: str
+
+
+@dataclass(frozen=True, slots=True)
 class Condition:
     """``IfCondition(x)`` and kin: the attribute (``if``/``unless``) and its text."""
 
@@ -178,6 +185,7 @@ Value = (
     | Unknown
     | Dynamic
     | Conditional
+    | FileHandle
     | Condition
     | Module
     | Source
