@@ -152,3 +152,24 @@ def test_yaml_bombs_and_large_files_are_refused(tmp_path: Path) -> None:
     )
     assert isinstance(names["b"], Unknown) and isinstance(names["l"], Unknown)
     assert [d.code for d in diagnostics] == ["python-not-followed", "file-too-large"]
+
+
+def test_a_dataclass_is_made_of_its_fields(tmp_path: Path) -> None:
+    package(tmp_path, "pkg", {})
+    names, diagnostics = run(
+        tmp_path,
+        "from dataclasses import dataclass, field\n"
+        "@dataclass(slots=True)\n"
+        "class Configs:\n"
+        "    path: str = 'p'\n"
+        "    robot: dict = field(default_factory=dict)\n"
+        "    count: int = field(default=2)\n"
+        "    def total(self):\n"
+        "        return self.count + len(self.robot)\n"
+        "a = Configs()\n"
+        "b = Configs('q', {'x': 1}, count=5)\n"
+        "a.robot['k'] = 1\n"
+        "v = (a.path, a.total(), b.path, b.total(), Configs().robot)\n",
+    )
+    assert names["v"] == ("p", 3, "q", 6, {})
+    assert diagnostics == []

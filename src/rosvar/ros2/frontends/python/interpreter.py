@@ -44,6 +44,7 @@ from rosvar.ros2.frontends.python.values import (
     Class,
     Condition,
     Conditional,
+    DataField,
     Description,
     Dynamic,
     FileHandle,
@@ -474,13 +475,18 @@ class Interpreter:
         scope.names[node.name] = Function(node, scope, defaults, self.file)
 
     def _class_def(self, node: ast.ClassDef, scope: Scope) -> None:
-        if node.decorator_list or node.keywords:
+        decorators = [self.expr(_called(d), scope) for d in node.decorator_list]
+        if node.keywords or any(d != Module("dataclasses.dataclass") for d in decorators):
             scope.names[node.name] = self.not_followed(f"decorated class {node.name}", node)
             return
         bases = [self.expr(base, scope) for base in node.bases]
         cls = Class(node.name, bases, Scope(parent=scope))
+        body = node.body
+        if decorators:
+            cls.fields = [_data_field(statement) for statement in body if _annotated(statement)]
+            body = [s for s in body if not (_annotated(s) and _field_call(s) is not None)]
         with contextlib.suppress(_Return, _Break, _Continue):  # as Python, which refuses them
-            self.block(node.body, cls.scope)
+            self.block(body, cls.scope)
         for value in cls.scope.names.values():
             if isinstance(value, Function):
                 value.owner = cls
@@ -1061,6 +1067,8 @@ class Interpreter:
         found, init = _class_lookup(cls, "__init__")
         if found and isinstance(init, Function):
             self.call_function(init, [instance, *args], kwargs, node)
+        elif cls.fields is not None:
+            self._data_init(cls, cls.fields, instance, args, kwargs, node)
         bases = _launch_bases(cls)
         call = Call(cls.name, [], {}, self.location(node), self.sink)
         found, perform = _class_lookup(cls, "perform")
@@ -1119,6 +1127,33 @@ class Interpreter:
             if len(given) == len(sources):
                 return launch_time.method(receiver, name, given)
         return self.not_followed(f"method {name}() of a {type(receiver).__name__}", node)
+
+    def _data_init(
+        self,
+        cls: Class,
+        fields: list[DataField],
+        instance: Instance,
+        args: list[Value],
+        kwargs: dict[str, Value],
+        node: ast.AST,
+    ) -> None:
+        """The ``__init__`` a ``@dataclass`` makes: each field from its argument, or its
+        default (read in the class body's scope), or its factory called."""
+        if len(args) > len(fields) or set(kwargs) - {f.name for f in fields}:
+            self.not_followed(f"arguments of {cls.name}() that are not its fields", node)
+        for index, data in enumerate(fields):
+            if index < len(args):
+                value = args[index]
+            elif data.name in kwargs:
+                value = kwargs[data.name]
+            elif data.default is None:
+                value = self.not_followed(f"{cls.name}() without {data.name}", node)
+            elif data.factory:
+                factory = self.expr(data.default, cls.scope)
+                value = self.invoke(factory, [], {}, node)
+            else:
+                value = self.expr(data.default, cls.scope)
+            instance.attributes[data.name] = value
 
     def _call_class_method(
         self,
@@ -1209,6 +1244,35 @@ class Interpreter:
                 return self.not_followed(f"str.{name}() that fails ({error})", node)
             return result
         return self.not_followed(f"str.{name}() of values not known statically", node)
+
+
+def _called(decorator: ast.expr) -> ast.expr:
+    """The decorator's callee (``@dataclass(slots=True)``: ``dataclass``)."""
+    return decorator.func if isinstance(decorator, ast.Call) else decorator
+
+
+def _annotated(statement: ast.stmt) -> bool:
+    return isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name)
+
+
+def _field_call(statement: ast.stmt) -> ast.Call | None:
+    """``field(...)`` as an annotated assignment's value, if it is."""
+    value = statement.value if isinstance(statement, ast.AnnAssign) else None
+    if isinstance(value, ast.Call) and isinstance(value.func, ast.Name | ast.Attribute):
+        name = value.func.id if isinstance(value.func, ast.Name) else value.func.attr
+        return value if name == "field" else None
+    return None
+
+
+def _data_field(statement: ast.stmt) -> DataField:
+    assert isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name)
+    call = _field_call(statement)
+    if call is None:
+        return DataField(statement.target.id, statement.value, factory=False)
+    keywords = {keyword.arg: keyword.value for keyword in call.keywords}
+    if "default_factory" in keywords:
+        return DataField(statement.target.id, keywords["default_factory"], factory=True)
+    return DataField(statement.target.id, keywords.get("default"), factory=False)
 
 
 def _class_lookup(cls: Class, name: str, after: bool = False) -> tuple[bool, Value]:

@@ -132,11 +132,23 @@ class ModuleScope:
 
 @dataclass(eq=False, slots=True)
 class Class:
-    """A class defined in the file or a module: its bases and its body's names."""
+    """A class defined in the file or a module: its bases and its body's names; a
+    ``@dataclass``'s fields in order (``__init__`` is made of them), each with its default
+    or its ``default_factory`` (a factory is called for each object)."""
 
     name: str
     bases: list[Value]
     scope: Scope
+    fields: list[DataField] | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class DataField:
+    """One field of a ``@dataclass``: its name and default (``None``: required)."""
+
+    name: str
+    default: ast.expr | None
+    factory: bool
 
 
 @dataclass(eq=False, slots=True)
