@@ -481,6 +481,7 @@ def generate_launch_description():
         {
             "main.launch.py": """from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.conditions import IfCondition
 from launch.substitutions import LaunchConfiguration
 from launch_ros.actions import Node
 
@@ -506,6 +507,8 @@ def setup(context):
     label = 'on' if flag else 'off'
     if len(sim) > 3 and sim[0] != 'f':
         label = label + '_long'
+    if IfCondition(LaunchConfiguration('flag')).evaluate(context):
+        nodes.append(Node(package='pkg', executable='f', name='flagged'))
     extra = {} if sim == 'true' else {'mode': 'm_' + sim, 'scale': size}
     nodes.append(Node(package='pkg', executable='s', name=speed + '_' + label,
                       parameters=[{'fixed': 1}, extra]))
@@ -524,6 +527,7 @@ def generate_launch_description():
         DeclareLaunchArgument('imu_topic', default_value='imu'),
         DeclareLaunchArgument('voxel', default_value='0.05'),
         DeclareLaunchArgument('sim', default_value='false'),
+        DeclareLaunchArgument('flag', default_value='true'),
         OpaqueFunction(function=setup),
         OpaqueFunction(function=pick),
     ])
@@ -534,7 +538,7 @@ def generate_launch_description():
             {"imu_topic": ""},
             {"voxel": "1e3", "sim": "true"},
             {"sim": "1", "imu_topic": ""},
-            {"sim": "", "voxel": "7"},
+            {"sim": "", "voxel": "7", "flag": " False"},
             {"imu_topic": "it's \\ ''"},
         ],
     ),
@@ -643,14 +647,26 @@ node:
     gain: 2.5
 list: [1, 2, 3]
 """,
+            "config/star.yaml": """/**:
+  ros__parameters:
+    speed: 3.5
+    mode: fast
+""",
             "main.launch.py": """import os
 
 import yaml
 from ament_index_python.packages import get_package_share_directory
 from launch import LaunchDescription
-from launch.actions import DeclareLaunchArgument
-from launch.substitutions import LaunchConfiguration
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
 from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def setup(context):
+    with open(LaunchConfiguration('param_file').perform(context), 'r') as f:
+        named = yaml.safe_load(f)['/**']['ros__parameters']
+    return [Node(package='pkg', executable='b', name='b', parameters=[named])]
 
 
 def generate_launch_description():
@@ -663,8 +679,11 @@ def generate_launch_description():
     node_params['extra'] = LaunchConfiguration('extra')
     return LaunchDescription([
         DeclareLaunchArgument('extra', default_value='e'),
+        DeclareLaunchArgument('param_file', default_value=PathJoinSubstitution(
+            [FindPackageShare('pkg'), 'config', 'star.yaml'])),
         Node(package='pkg', executable='a', name=params['name'],
              parameters=[node_params, {'k': other['list'][1] * 2}]),
+        OpaqueFunction(function=setup),
     ])
 """,
         },

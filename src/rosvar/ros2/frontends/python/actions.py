@@ -23,6 +23,7 @@ from rosvar.ros2.frontends.python.values import (
     Conditional,
     Description,
     Key,
+    LaunchYaml,
     ParameterFile,
     ParameterValue,
     Unknown,
@@ -75,6 +76,10 @@ def _write_parameters(call: Call, entity: Entity, param: Param, value: Value) ->
     for item in _items(call, value, param.python):
         if isinstance(item, Conditional):
             _conditional_parameters(call, entity, param, item)
+        elif isinstance(item, LaunchYaml) and item.keys == ("/**", "ros__parameters"):
+            set_attribute(call, _child(call, entity, param.xml), "from", item.path)
+        elif isinstance(item, LaunchYaml):
+            call.not_followed("parameters of a YAML file named at launch time (not its '/**')")
         elif isinstance(item, dict):
             _named_parameters(call, entity, param.xml, item)
         elif isinstance(item, ParameterFile):

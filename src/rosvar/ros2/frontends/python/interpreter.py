@@ -52,6 +52,7 @@ from rosvar.ros2.frontends.python.values import (
     Instance,
     Key,
     LaunchContext,
+    LaunchYaml,
     Method,
     Module,
     ModuleScope,
@@ -878,6 +879,8 @@ class Interpreter:
             return _configuration(self, node, index)
         if isinstance(container, Dynamic) or isinstance(index, Dynamic):
             return self._launch_time_item(container, index, node)
+        if isinstance(container, LaunchYaml) and isinstance(index, str | int):
+            return LaunchYaml(container.path, (*container.keys, index))
         try:
             if isinstance(container, dict) and isinstance(index, Key):
                 return container[index]
@@ -1091,6 +1094,8 @@ class Interpreter:
         receiver, name = method.receiver, method.name
         if isinstance(receiver, Instance | Class | Super):
             return self._call_class_method(receiver, name, args, kwargs, node)
+        if isinstance(receiver, Condition) and name == "evaluate":
+            return launch_time.evaluated(receiver.attribute, receiver.text)
         if isinstance(receiver, FileHandle) and name == "read" and not args:
             return reads.text(self, receiver, node)
         if isinstance(receiver, Description) and name in ("add_action", "add_entity") and args:

@@ -176,3 +176,11 @@ def chosen(test: Text, then: Text, otherwise: Text, kind: Kind) -> Dynamic:
 def condition(test: Text) -> Text:
     """The ``if`` attribute text true where the Python ``test`` holds: ``True``/``False``."""
     return Text.of(Sub("eval", (truth(test),)))
+
+
+def evaluated(attribute: str, text: Text) -> Dynamic:
+    """``IfCondition(x).evaluate(context)`` (``UnlessCondition``): launch's truth of the text
+    (``true``/``1`` in any case, surrounding blanks ignored; another value, which launch
+    refuses, reads as false)."""
+    truthy = Text.of("(", quoted(text), ").strip().lower() in ('true', '1')")
+    return Dynamic(truthy if attribute == "if" else negated(truthy), bool)

@@ -17,7 +17,15 @@ import yaml
 
 from rosvar.bounded_yaml import check_limits
 from rosvar.files import FileRefused, read_file
-from rosvar.ros2.frontends.python.values import FileHandle, Key, Unknown, Value
+from rosvar.ros2.frontends.python.text import Text
+from rosvar.ros2.frontends.python.values import (
+    Dynamic,
+    FileHandle,
+    Key,
+    LaunchYaml,
+    Unknown,
+    Value,
+)
 
 if TYPE_CHECKING:
     from rosvar.ros2.frontends.python.interpreter import Interpreter
@@ -31,10 +39,13 @@ def open_file(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
     """``open(path)`` (``mode='r'``): a handle, the file read where its text is used."""
-    path = interpreter.path_of(args[0] if args else kwargs.get("file"))
+    given = args[0] if args else kwargs.get("file")
+    path = interpreter.path_of(given)
     mode = args[1] if len(args) > 1 else kwargs.get("mode", "r")
     if mode not in _READ_MODES:
         return interpreter.not_followed(f"open() in mode {mode!r}", node)
+    if path is None and isinstance(given, Dynamic) and given.text is not None:
+        return FileHandle(given.text)  # named at launch time
     if path is None:
         return interpreter.not_followed("open() of a path not known statically", node)
     return FileHandle(path)
@@ -42,6 +53,8 @@ def open_file(
 
 def text(interpreter: Interpreter, handle: FileHandle, node: ast.AST) -> Value:
     """The text of ``handle``'s file, read through the one gate."""
+    if isinstance(handle.path, Text):
+        return interpreter.not_followed("the text of a file named at launch time", node)
     modules = interpreter.modules
     if modules is None or modules.confinement is None:
         return interpreter.not_followed(f"a read of {handle.path} (no workspace)", node)
@@ -65,6 +78,8 @@ def load_yaml(
     """``yaml.safe_load(stream)`` (``yaml.load``, read safely whatever its loader) of a
     handle or a string."""
     stream = args[0] if args else kwargs.get("stream")
+    if isinstance(stream, FileHandle) and isinstance(stream.path, Text):
+        return LaunchYaml(stream.path)
     if isinstance(stream, FileHandle):
         stream = text(interpreter, stream, node)
     if isinstance(stream, Unknown):

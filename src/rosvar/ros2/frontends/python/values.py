@@ -46,9 +46,19 @@ class Conditional:
 
 @dataclass(frozen=True, slots=True)
 class FileHandle:
-    """``open(path)`` of a file of the workspace, read where its text is used."""
+    """``open(path)`` of a file of the workspace, read where its text is used; a path known
+    at launch time only is its text (the file is named by a launch configuration)."""
 
-    path: str
+    path: str | Text
+
+
+@dataclass(frozen=True, slots=True)
+class LaunchYaml:
+    """``yaml.safe_load`` of a file named at launch time, indexed by ``keys``: its
+    ``['/**']['ros__parameters']`` given as a node's parameters is that parameter file."""
+
+    path: Text
+    keys: tuple[Key, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -198,6 +208,7 @@ Value = (
     | Dynamic
     | Conditional
     | FileHandle
+    | LaunchYaml
     | Condition
     | Module
     | Source
