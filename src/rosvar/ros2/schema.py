@@ -7,8 +7,12 @@ runs over the whole tree at each load, under the path of the load.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
+from rosvar.diagnostics import Location
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation
+from rosvar.memo import Memo
 from rosvar.ros.version import RosVersion
 from rosvar.ros2.api.actions import ACTIONS
 from rosvar.ros2.context import Context
@@ -26,24 +30,28 @@ ALWAYS = frozenset({"if", "unless"})
 CONTAINERS = frozenset(name for action in ACTIONS if action.holds_actions for name in action.names)
 
 
+Problem = tuple[str, str, Location]
+"""A frontend failure: its code, message and place."""
+_problems: Memo[Entity, tuple[Problem, ...]] = Memo()
+"""Each parsed file's problems, found once: a file is checked at every include of it."""
+
+
 def check(it: Interpretation[Context], root: Entity) -> None:
     """Record the frontend's failure for every unknown element or attribute below ``root``."""
-    python = format_of(root.location.file, RosVersion.ROS2) is LaunchFormat.PYTHON
-    _check(it, root, PYTHON_ATTRIBUTES if python else ATTRIBUTES)
+    problems = _problems.get(root)
+    if problems is None:
+        python = format_of(root.location.file, RosVersion.ROS2) is LaunchFormat.PYTHON
+        problems = tuple(_check(root, PYTHON_ATTRIBUTES if python else ATTRIBUTES))
+        _problems[root] = problems
+    for code, message, location in problems:
+        it.fail(it.space.true, code, message, location)
 
 
-def _check(
-    it: Interpretation[Context], root: Entity, attributes: dict[str, frozenset[str]]
-) -> None:
+def _check(root: Entity, attributes: dict[str, frozenset[str]]) -> Iterator[Problem]:
     for entity in root.children:
         allowed = attributes.get(entity.tag)
         if allowed is None:
-            it.fail(
-                it.space.true,
-                "tag-unknown",
-                f"Unrecognized entity of the type: {entity.tag}",
-                entity.location,
-            )
+            yield "tag-unknown", f"Unrecognized entity of the type: {entity.tag}", entity.location
             continue
         container = entity.tag in CONTAINERS  # its children are actions, checked below
         children = [] if container else [child.tag for child in entity.children]
@@ -53,28 +61,26 @@ def _check(
             if name not in allowed and name not in ALWAYS
         )
         if unexpected:
-            it.fail(
-                it.space.true,
+            yield (
                 "attribute-unexpected",
                 f"Unexpected attribute(s) found in `{entity.tag}`: {set(unexpected)}",
                 entity.location,
             )
         elif container:
-            _check(it, entity, attributes)
+            yield from _check(entity, attributes)
         else:
-            _nested(it, entity)
+            yield from _nested(entity)
 
 
-def _nested(it: Interpretation[Context], entity: Entity) -> None:
+def _nested(entity: Entity) -> Iterator[Problem]:
     """Children of a leaf action (``<param>`` in a node, ``<arg>`` in an include...)."""
     for child in entity.children:
         allowed = ATTRIBUTES.get(child.tag, frozenset())
         unexpected = sorted(n for n in child.attributes if n not in allowed and n not in ALWAYS)
         if unexpected:
-            it.fail(
-                it.space.true,
+            yield (
                 "attribute-unexpected",
                 f"Unexpected attribute(s) found in `{child.tag}`: {set(unexpected)}",
                 child.location,
             )
-        _nested(it, child)
+        yield from _nested(child)

@@ -23,6 +23,13 @@ PYTHON_STRING = "rosvar-python-string"
 """The substitution giving its argument's value as a Python string literal (``repr``): a
 launch-time string inside a Python expression the interpreter evaluates, whatever quotes or
 backslashes the value holds; XML has none."""
+CONFIGURATION_EQUALS = "rosvar-configuration-equals"
+"""``LaunchConfigurationEquals(name, value)``: whether the launch configuration ``name`` is
+the text ``value`` (plain text equality; an undefined one equals only no value), which no
+frontend writes (``$(equals)`` compares booleans and numbers by value)."""
+EMPTY = "rosvar-empty"
+"""The empty text as an operand of ``$(equals)``: launch's grammar reads ``''`` there as the
+text ``[]``, which the Python frontend's ``''`` is not."""
 
 _PLAIN_ARGUMENT = re.compile(r"[^\s'\"\\$()]+")
 
