@@ -15,6 +15,9 @@ from rosvar.ros2.frontends.python.interpreter import Interpreter
 from rosvar.ros2.frontends.python.modules import ModulePath
 from rosvar.ros2.frontends.python.values import Module, Unknown, Value
 
+SHARE = "import os\nfrom ament_index_python.packages import get_package_share_directory as share\n"
+"""The imports of the launch files below that name a package's share directory."""
+
 
 def run(workspace: Path, text: str) -> tuple[dict[str, Value], list[Diagnostic]]:
     """Module-level names of ``text`` read as ``workspace/pkg/launch/t.launch.py``."""
@@ -101,8 +104,7 @@ def test_sys_path_appends_find_modules_of_a_share_directory(tmp_path: Path) -> N
     package(tmp_path, "other", {"launch/common.py": "NAME = 'found'\n"})
     names, _ = run(
         tmp_path,
-        "import os, sys\nfrom ament_index_python.packages import get_package_share_directory\n"
-        "sys.path.append(os.path.join(get_package_share_directory('other'), 'launch'))\n"
+        f"{SHARE}import sys\nsys.path.append(os.path.join(share('other'), 'launch'))\n"
         "import common\nv = common.NAME\n",
     )
     assert names["v"] == "found"
@@ -112,8 +114,7 @@ def test_yaml_of_the_workspace_is_read_into_values(tmp_path: Path) -> None:
     package(tmp_path, "pkg", {"config/p.yaml": "a: {b: [1, x]}\n"})
     names, diagnostics = run(
         tmp_path,
-        "import yaml, os\nfrom ament_index_python.packages import get_package_share_directory\n"
-        "path = os.path.join(get_package_share_directory('pkg'), 'config', 'p.yaml')\n"
+        f"{SHARE}import yaml\npath = os.path.join(share('pkg'), 'config', 'p.yaml')\n"
         "with open(path) as f:\n    v = yaml.safe_load(f)\n",
     )
     assert names["v"] == {"a": {"b": [1, "x"]}}

@@ -11,12 +11,14 @@ launch time only, a refused read, or YAML that fails stays unknown, reported.
 from __future__ import annotations
 
 import ast
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 import yaml
 
 from rosvar.bounded_yaml import check_limits
+from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.files import FileRefused, read_file
+from rosvar.ros2.frontends.python.modules import ModulePath
 from rosvar.ros2.frontends.python.text import Text
 from rosvar.ros2.frontends.python.values import (
     Dynamic,
@@ -27,8 +29,19 @@ from rosvar.ros2.frontends.python.values import (
     Value,
 )
 
-if TYPE_CHECKING:
-    from rosvar.ros2.frontends.python.interpreter import Interpreter
+
+class Interpreter(Protocol):
+    """What a read needs of the interpreter (which registers these builtins)."""
+
+    modules: ModulePath | None
+    sink: DiagnosticSink
+
+    def path_of(self, value: Value) -> str | None: ...
+
+    def not_followed(self, what: str, node: ast.AST) -> Unknown: ...
+
+    def location(self, node: ast.AST) -> Location: ...
+
 
 MAX_READ_BYTES = 1024 * 1024
 """Largest file a launch file's Python reads (a parameter file, a text)."""
