@@ -41,6 +41,8 @@ class Dialect(Protocol):
     @property
     def loader(self) -> Loader: ...
 
+    def loader_for(self, workspace: Workspace) -> Loader: ...
+
     @property
     def nodes(self) -> NodeSchema:
         """What its node declarations' fields mean (its node tags stamp them with it)."""

@@ -46,6 +46,12 @@ class Semantics(Generic[S]):
     resolver: Resolver
     checks: Checks | None = None
     tags: dict[str, Handler[S]] = field(default_factory=dict)
+    bind: Callable[[Workspace], Loader] | None = None
+    """The loader for one workspace's files, where a frontend reads more than the file (a
+    Python launch file's imports of the workspace's modules); ``loader`` otherwise."""
+
+    def loader_for(self, workspace: Workspace) -> Loader:
+        return self.loader if self.bind is None else self.bind(workspace)
 
     def tag(self, name: str) -> Callable[[Handler[S]], Handler[S]]:
         """Register the handler of ``<name>`` (extension by registry, not if-chains)."""

@@ -38,7 +38,7 @@ class Analysis:
         self.workspace = workspace
         self.space = ConditionSpace(len(workspace.launch_files))
         self.dialect = dialect_of(workspace.ros_version)
-        self.files = Snapshot(self.dialect.loader)
+        self.files = Snapshot(self.dialect.loader_for(workspace))
         self.domains = DomainTable(
             workspace, extra_values, env_values, extra_executables, files=self.files
         )

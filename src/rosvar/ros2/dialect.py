@@ -18,7 +18,13 @@ from rosvar.ros2.resolve import resolve
 from rosvar.ros2.substitutions import Ros2Substituter
 
 ROS2: Semantics[Context] = Semantics(
-    RosVersion.ROS2, registry.load, Ros2Substituter, walk_entry, ROS2_NODES, resolve
+    RosVersion.ROS2,
+    registry.load,
+    Ros2Substituter,
+    walk_entry,
+    ROS2_NODES,
+    resolve,
+    bind=registry.workspace_loader,
 )
 
 

@@ -27,7 +27,13 @@ from rosvar.memo import Memo
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS
 from rosvar.ros2.api.unmodelled import UNMODELLED
 from rosvar.ros2.context import Context, optional
-from rosvar.ros2.frontends.python.text import CONFIGURATION_EQUALS, EMPTY, PATH_JOIN, UNKNOWN
+from rosvar.ros2.frontends.python.text import (
+    CONFIGURATION_EQUALS,
+    EMPTY,
+    PATH_JOIN,
+    PYTHON_STRING,
+    UNKNOWN,
+)
 
 Value = Raw | Fail
 UNSUPPORTED = "substitution-unsupported"
@@ -159,7 +165,7 @@ def command_line(text: str) -> list[Template]:
 
 Handler = Callable[[Interpretation[Context], Context, list[Raw]], Choice[Value]]
 HANDLERS: dict[str, Handler] = {}
-OWN = frozenset({PATH_JOIN, UNKNOWN, CONFIGURATION_EQUALS, EMPTY})
+OWN = frozenset({PATH_JOIN, PYTHON_STRING, UNKNOWN, CONFIGURATION_EQUALS, EMPTY})
 """rosvar's own substitutions, which the Python frontend writes (no launch API name)."""
 
 
@@ -455,6 +461,17 @@ def _path_join(host: Interpretation[Context], context: Context, args: list[Raw])
     for arg in args:  # an unknown value: joined as if relative, with no trailing '/'
         parts += ["/", arg]
     return Choice.const(host.space, concat(parts[1:]))
+
+
+@substitution(PYTHON_STRING)
+def _python_string(
+    host: Interpretation[Context], context: Context, args: list[Raw]
+) -> Choice[Value]:
+    """The Python frontend's launch-time string inside an expression: its ``repr``; an
+    unknown value stays unknown (the expression then fails where it is needed)."""
+    if len(args) != 1:
+        return _fail(host, f"$({PYTHON_STRING}) takes one argument", "substitution-invalid")
+    return Choice.const(host.space, repr(args[0]) if isinstance(args[0], str) else args[0])
 
 
 @substitution(UNKNOWN)

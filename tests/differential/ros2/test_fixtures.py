@@ -479,6 +479,218 @@ def generate_launch_description():
         },
         [{}, {"robot": "r2"}, {"mode": "sim", "robot": "r3"}],
     ),
+    "python-launch-time-values": (
+        {
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def setup(context):
+    imu = LaunchConfiguration('imu_topic').perform(context) != ''
+    voxel = LaunchConfiguration('voxel')
+    size = float(voxel.perform(context)) * 10.0
+    sim = context.launch_configurations['sim']
+    flag = sim.lower() in ('true', '1')
+    nodes = []
+    if imu:
+        nodes.append(Node(package='pkg', executable='imu', name='imu',
+                          parameters=[{'size': size, 'count': int(size) + 1}]))
+    if not flag and imu:
+        nodes.append(Node(package='pkg', executable='real', name='real'))
+    else:
+        nodes.append(Node(package='pkg', executable='other', name='other_' + sim.upper()))
+    speed = 'fast' if size > 1.0 else 'slow'
+    extra = Node(package='pkg', executable='x', name='extra')
+    if sim:  # a non-empty string is true, 'false' too
+        nodes.append(extra)
+    label = 'on' if flag else 'off'
+    if len(sim) > 3 and sim[0] != 'f':
+        label = label + '_long'
+    if IfCondition(LaunchConfiguration('flag')).evaluate(context):
+        nodes.append(Node(package='pkg', executable='f', name='flagged'))
+    extra = {} if sim == 'true' else {'mode': 'm_' + sim, 'scale': size}
+    nodes.append(Node(package='pkg', executable='s', name=speed + '_' + label,
+                      parameters=[{'fixed': 1}, extra]))
+    return nodes
+
+
+def pick(context):
+    if LaunchConfiguration('sim').perform(context) == 'true':
+        return [Node(package='pkg', executable='a', name='sim_node')]
+    name = f"real_{context.perform_substitution(LaunchConfiguration('voxel')).split('.')[0]}"
+    return [Node(package='pkg', executable='b', name=name)]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('imu_topic', default_value='imu'),
+        DeclareLaunchArgument('voxel', default_value='0.05'),
+        DeclareLaunchArgument('sim', default_value='false'),
+        DeclareLaunchArgument('flag', default_value='true'),
+        OpaqueFunction(function=setup),
+        OpaqueFunction(function=pick),
+    ])
+""",
+        },
+        [
+            {},
+            {"imu_topic": ""},
+            {"voxel": "1e3", "sim": "true"},
+            {"sim": "1", "imu_topic": ""},
+            {"sim": "", "voxel": "7", "flag": " False"},
+            {"imu_topic": "it's \\ ''"},
+        ],
+    ),
+    "python-workspace-modules": (
+        {
+            "pkg_helpers/__init__.py": "",
+            "pkg_helpers/launch.py": """from launch.action import Action
+from launch.substitution import Substitution
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+PREFIX = 'helper_'
+
+
+class LaunchConfigAsBool(Substitution):
+    def __init__(self, name):
+        super().__init__()
+        self.name = name
+
+    def perform(self, context):
+        value = LaunchConfiguration(self.name).perform(context)
+        return str(value.lower() in ('true', '1', 'yes'))
+
+
+class NodeBuilder:
+    def __init__(self, package):
+        self.package = package
+        self.nodes = []
+        self.count = 0
+
+    def add(self, executable):
+        self.count += 1
+        name = PREFIX + executable + str(self.count)
+        self.nodes.append(Node(package=self.package, executable=executable, name=name))
+        return self
+
+    def build(self):
+        return self.nodes
+
+
+class Base:
+    label = 'base'
+
+    def __init__(self, name):
+        self.name = name
+
+    def full(self):
+        return self.label + '_' + self.name
+
+
+class Derived(Base):
+    label = 'derived'
+
+    def __init__(self, name):
+        super().__init__(name + '_x')
+
+    def full(self):
+        return super().full() + '_d'
+
+
+class Extra(Action):
+    def __init__(self, name, **kwargs):
+        super().__init__(**kwargs)
+        self.name = name
+
+    def execute(self, context):
+        return [Node(package='pkg', executable='e', name=self.name)]
+
+
+def setup(context, suffix):
+    robot = LaunchConfiguration('robot').perform(context)
+    return [Node(package='pkg', executable='o', name=robot + suffix)]
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.conditions import IfCondition
+from launch_ros.actions import Node
+from pkg_helpers.launch import Derived, Extra, LaunchConfigAsBool, NodeBuilder
+import pkg_helpers.launch as helpers
+
+
+def generate_launch_description():
+    ld = LaunchDescription([
+        DeclareLaunchArgument('use_x', default_value='yes'),
+        DeclareLaunchArgument('robot', default_value='r1'),
+        Node(package='pkg', executable='x', name='x',
+             condition=IfCondition(LaunchConfigAsBool('use_x'))),
+        Node(package='pkg', executable='d', name=Derived('n').full()),
+        OpaqueFunction(function=helpers.setup, args=['_s']),
+        Extra('extra'),
+    ])
+    for node in NodeBuilder('pkg').add('a').add('b').build():
+        ld.add_action(node)
+    return ld
+""",
+        },
+        [{}, {"use_x": "no", "robot": "r2"}, {"use_x": "TRUE"}],
+    ),
+    "python-reads-yaml-of-the-workspace": (
+        {
+            "config/params.yaml": """name: from_yaml
+node:
+  ros__parameters:
+    rate: 10
+    label: abc
+    gain: 2.5
+list: [1, 2, 3]
+""",
+            "config/star.yaml": """/**:
+  ros__parameters:
+    speed: 3.5
+    mode: fast
+""",
+            "main.launch.py": """import os
+
+import yaml
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def setup(context):
+    with open(LaunchConfiguration('param_file').perform(context), 'r') as f:
+        named = yaml.safe_load(f)['/**']['ros__parameters']
+    return [Node(package='pkg', executable='b', name='b', parameters=[named])]
+
+
+def generate_launch_description():
+    path = os.path.join(get_package_share_directory('pkg'), 'config', 'params.yaml')
+    with open(path, 'r') as f:
+        params = yaml.load(f, Loader=yaml.SafeLoader)
+    beside = os.path.join(os.path.dirname(__file__), 'config', 'params.yaml')
+    other = yaml.safe_load(open(beside).read())
+    node_params = params['node']['ros__parameters']
+    node_params['extra'] = LaunchConfiguration('extra')
+    return LaunchDescription([
+        DeclareLaunchArgument('extra', default_value='e'),
+        DeclareLaunchArgument('param_file', default_value=PathJoinSubstitution(
+            [FindPackageShare('pkg'), 'config', 'star.yaml'])),
+        Node(package='pkg', executable='a', name=params['name'],
+             parameters=[node_params, {'k': other['list'][1] * 2}]),
+        OpaqueFunction(function=setup),
+    ])
+""",
+        },
+        [{}, {"extra": "f"}],
+    ),
     "append-env-after-before-or-alone": (
         {
             "main.launch.xml": """<launch>
@@ -706,6 +918,7 @@ def _workspace(tmp_path: Path, files: dict[str, str]) -> Path:
     package.mkdir(parents=True)
     (package / "package.xml").write_text(PACKAGE_XML)
     for name, text in files.items():
+        (package / name).parent.mkdir(parents=True, exist_ok=True)
         (package / name).write_text(text)
     return package
 

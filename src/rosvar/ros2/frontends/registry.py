@@ -13,6 +13,8 @@ from collections.abc import Callable
 from rosvar.frontends.entity import ParseResult
 from rosvar.frontends.xml import load_launch_file
 from rosvar.interpreter.dialect import Loader
+from rosvar.ros2.frontends.python.modules import ModulePath
+from rosvar.workspace import Workspace
 
 FRONTENDS: dict[str, Loader] = {}
 
@@ -43,15 +45,36 @@ def _yaml_launch_file(path: str) -> ParseResult:
     return parse_yaml_launch_file(path)
 
 
-@frontend(".launch.py", ".py")
-def _python_launch_file(path: str) -> ParseResult:
+def _python_launch_file(path: str, modules: ModulePath | None = None) -> ParseResult:
     from rosvar.ros2.frontends.python.parser import parse_python_launch_file
 
-    return parse_python_launch_file(path)
+    return parse_python_launch_file(path, modules)
+
+
+frontend(".launch.py", ".py")(_python_launch_file)
+
+
+def _frontend(name: str) -> Loader:
+    best = max((s for s in FRONTENDS if name.endswith(s)), key=len, default=None)
+    return FRONTENDS[best] if best is not None else load_launch_file
 
 
 def load(path: str | os.PathLike[str]) -> ParseResult:
     """Parse ``path`` with the frontend of its longest registered suffix (XML otherwise)."""
     name = os.fspath(path)
-    best = max((s for s in FRONTENDS if name.endswith(s)), key=len, default=None)
-    return (FRONTENDS[best] if best is not None else load_launch_file)(name)
+    return _frontend(name)(name)
+
+
+def workspace_loader(workspace: Workspace) -> Loader:
+    """:func:`load` for ``workspace``'s files: a Python launch file's imports find the
+    modules of its packages (:mod:`rosvar.ros2.frontends.python.modules`)."""
+    packages = {name: package.path for name, package in workspace.packages.items()}
+    modules = ModulePath(packages, workspace.confinement())
+
+    def load_in(path: str) -> ParseResult:
+        frontend = _frontend(path)
+        if frontend is _python_launch_file:
+            return _python_launch_file(path, modules)
+        return frontend(path)
+
+    return load_in

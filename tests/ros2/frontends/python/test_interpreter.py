@@ -12,7 +12,8 @@ import pytest
 from rosvar.diagnostics import Diagnostic, DiagnosticSink
 from rosvar.ros2.frontends.python import interpreter
 from rosvar.ros2.frontends.python.interpreter import Interpreter, OutOfBudget
-from rosvar.ros2.frontends.python.values import Module, Unknown, Value
+from rosvar.ros2.frontends.python.text import render
+from rosvar.ros2.frontends.python.values import Dynamic, Module, Unknown, Value
 
 
 def run(text: str) -> tuple[dict[str, Value], list[Diagnostic]]:
@@ -94,7 +95,7 @@ NOT_FOLLOWED = {
     "{'a': 1} | {'b': 2}": "operator BitOr",
     "abs(-2)": "call to abs()",
     "sorted([2, 1])": "call to sorted()",
-    "open('/etc/passwd').read()": "call to open()",
+    "open('/etc/passwd').read()": "a read of /etc/passwd (no workspace)",
     "__import__('os')": "call to __import__()",
 }
 
@@ -140,7 +141,7 @@ def test_a_branch_on_an_unknown_value_is_reported_and_neither_is_taken() -> None
     )
     assert names["x"] == "before"
     assert [d.message for d in diagnostics if d.location.line == 3] == [
-        "call to open() is not followed",
+        "open() of a path not known statically is not followed",
         "an 'if' on a value not known statically (neither branch) is not followed",
     ]
     assert isinstance(names["os"], Module)
@@ -166,3 +167,34 @@ def test_values_stay_within_the_length_and_size_bounds(monkeypatch: pytest.Monke
     assert names["short"] == "ab" * 50
     assert isinstance(names["long"], Unknown) and isinstance(names["many"], Unknown)
     assert len(diagnostics) == 2
+
+
+def test_launch_time_values_are_expressions_and_what_they_cannot_be_is_reported() -> None:
+    names, diagnostics = run(
+        "from launch.substitutions import LaunchConfiguration as L\n"
+        "def f(context):\n"
+        "    v = L('x').perform(context)\n"
+        "    for c in v:\n"
+        "        pass\n"
+        "    for i in [1]:\n"
+        "        if v == 'a':\n"
+        "            return 1\n"
+        "    return 2\n"
+        "w = f(None)\n"
+        "n = float(L('y').perform(None)) * 2 > 1 and not L('z').perform(None)\n"
+    )
+    assert isinstance(names["w"], Unknown)
+    assert [(d.location.line, d.message) for d in diagnostics] == [
+        (4, "iteration over a launch-time value (its length is not known) is not followed"),
+        (
+            7,
+            "a 'return' in one branch of an 'if' on a launch-time value, in a loop or a nested "
+            "block is not followed",
+        ),
+    ]
+    n = names["n"]
+    assert isinstance(n, Dynamic) and n.kind is bool
+    assert render(n.source) == (
+        "(((float($(rosvar-python-string $(var y)))) * (2)) > (1)) and "
+        "(not ($(rosvar-python-string $(var z))))"
+    )

@@ -365,14 +365,13 @@ def generate_launch_description():
     assert tree == xml_shape(
         """<launch>
   <on_process_exit><node pkg="hidden" exec="x"/></on_process_exit>
-  <node pkg="demo" exec="$(rosvar-unknown 'call to yaml.safe_load()')"
+  <node pkg="demo" exec="$(rosvar-unknown 'a read of /etc/robot.yaml (no workspace)')"
         name="$(rosvar-unknown 'name \\'undefined_name\\'')"/>
   <node pkg="demo" exec="kept"/>
 </launch>"""
     )
     assert [(str(d.location), d.message) for d in diagnostics] == [
-        ("t.launch.py:18:29", "call to open() is not followed"),
-        ("t.launch.py:18:14", "call to yaml.safe_load() is not followed"),
+        ("t.launch.py:18:14", "a read of /etc/robot.yaml (no workspace) is not followed"),
         ("t.launch.py:21:61", "name 'undefined_name' is not followed"),
     ]
     assert set(codes(diagnostics)) == {"python-not-followed"}
@@ -425,7 +424,7 @@ def generate_launch_description():
     assert tree == xml_shape("<launch/>")
     assert [d.message for d in diagnostics] == [
         "call to os.system() is not followed",
-        "call to open() is not followed",
+        "open() in mode 'w' is not followed",
         "call to exec() is not followed",
         "call to __import__() is not followed",
     ]

@@ -16,12 +16,15 @@ from collections.abc import Callable
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.actions import ACTIONS, Action, Param, Slot
 from rosvar.ros2.api.event_handlers import EVENT_HANDLERS, EventHandler
+from rosvar.ros2.frontends.python import launch_time
 from rosvar.ros2.frontends.python.calls import CALLS, Call
-from rosvar.ros2.frontends.python.text import render
+from rosvar.ros2.frontends.python.text import Text, render, unknown
 from rosvar.ros2.frontends.python.values import (
     Condition,
+    Conditional,
     Description,
     Key,
+    LaunchYaml,
     ParameterFile,
     ParameterValue,
     Unknown,
@@ -72,7 +75,13 @@ def _write_command_line(call: Call, entity: Entity, param: Param, value: Value) 
 
 def _write_parameters(call: Call, entity: Entity, param: Param, value: Value) -> None:
     for item in _items(call, value, param.python):
-        if isinstance(item, dict):
+        if isinstance(item, Conditional):
+            _conditional_parameters(call, entity, param, item)
+        elif isinstance(item, LaunchYaml) and item.keys == ("/**", "ros__parameters"):
+            set_attribute(call, _child(call, entity, param.xml), "from", item.path)
+        elif isinstance(item, LaunchYaml):
+            call.not_followed("parameters of a YAML file named at launch time (not its '/**')")
+        elif isinstance(item, dict):
             _named_parameters(call, entity, param.xml, item)
         elif isinstance(item, ParameterFile):
             child = _child(call, entity, param.xml)
@@ -81,6 +90,21 @@ def _write_parameters(call: Call, entity: Entity, param: Param, value: Value) ->
                 set_attribute(call, child, "allow_substs", item.allow_substs)
         else:
             set_attribute(call, _child(call, entity, param.xml), "from", item)
+
+
+def _conditional_parameters(call: Call, entity: Entity, param: Param, item: Conditional) -> None:
+    """The parameters of each branch, each under its test (``{} if c else read(f)``)."""
+    tests = (launch_time.truth(item.test), launch_time.negated(item.test))
+    for branch, test in zip((item.then, item.otherwise), tests, strict=True):
+        start = len(entity.children)
+        _write_parameters(call, entity, param, branch if isinstance(branch, list) else [branch])
+        for child in entity.children[start:]:
+            if "if" in child.attributes or "unless" in child.attributes:
+                call.not_followed("parameters under nested 'if's on launch-time values")
+                child.attributes.pop("unless", None)
+                child.attributes["if"] = render(Text.of(unknown("nested condition")))
+            else:
+                child.attributes["if"] = render(launch_time.condition(test))
 
 
 def _named_parameters(call: Call, parent: Entity, tag: str, values: dict[Key, Value]) -> None:

@@ -21,6 +21,7 @@ from rosvar.ros2.api.registry import python_name
 from rosvar.ros2.api.sources import SOURCES
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS, Signature
 from rosvar.ros2.api.unmodelled import UNMODELLED
+from rosvar.ros2.frontends.python import launch_time
 from rosvar.ros2.frontends.python.text import (
     CONFIGURATION_EQUALS,
     EMPTY,
@@ -31,6 +32,8 @@ from rosvar.ros2.frontends.python.text import (
 )
 from rosvar.ros2.frontends.python.values import (
     Condition,
+    Conditional,
+    Dynamic,
     Module,
     ParameterFile,
     ParameterValue,
@@ -80,6 +83,8 @@ class Call:
         """``value`` as launch normalizes a substitution argument: texts concatenated."""
         if isinstance(value, Text):
             return value
+        if isinstance(value, Dynamic):
+            return launch_time.as_text(value)
         if isinstance(value, str):
             return Text.of(value)
         if isinstance(value, list | tuple):
@@ -88,6 +93,9 @@ class Call:
             return Text.of(unknown(value.what))
         if isinstance(value, Source):
             return value.path
+        if isinstance(value, Conditional):
+            what = "a value that differs between the branches of an 'if' on a launch-time value"
+            return Text.of(unknown(self.not_followed(what).what))
         if value is None or isinstance(value, bool | int | float):
             return Text.of(typed_text(value))
         return Text.of(unknown(self.not_followed(f"{type(value).__name__} used as text").what))

@@ -3,7 +3,10 @@
 The file is never executed: its syntax tree is read statement by statement with abstract
 values (:mod:`~rosvar.ros2.frontends.python.values`). Constants, strings, lists, dicts,
 local variables, helper functions, loops over known sequences and ``if`` on known values
-are followed exactly; calls go to the launch API's registry
+are followed exactly; a value known at launch time only (``.perform(context)``) is a Python
+expression over substitutions (:mod:`~rosvar.ros2.frontends.python.launch_time`), and an
+``if`` on it reads both branches, each under its condition, as ``if=``/``unless=`` do;
+calls go to the launch API's registry
 (:mod:`~rosvar.ros2.frontends.python.calls`). Anything else (``OpaqueFunction``, files read,
 other modules called, unknown names, ``while``) becomes an :class:`Unknown` with a
 diagnostic at its ``file:line:col``, and the reading goes on. A step budget and a call
@@ -14,14 +17,18 @@ from __future__ import annotations
 
 import ast
 import builtins
+import contextlib
+import os
 import string
 from collections.abc import Callable, Iterator
 from typing import Any
 
 from rosvar.arithmetic import ARITHMETIC, COMPARISONS
 from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.files import read_file
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.registry import python_name
+from rosvar.ros2.frontends.python import launch_time, reads
 from rosvar.ros2.frontends.python.actions import add_actions
 from rosvar.ros2.frontends.python.calls import (
     CALLS,
@@ -30,15 +37,28 @@ from rosvar.ros2.frontends.python.calls import (
     Call,
     join_path,
 )
+from rosvar.ros2.frontends.python.launch_time import OPERATORS, performed
+from rosvar.ros2.frontends.python.modules import MAX_MODULE_BYTES, MAX_MODULES, ModulePath
 from rosvar.ros2.frontends.python.text import Sub, Text
 from rosvar.ros2.frontends.python.values import (
+    Class,
+    Condition,
+    Conditional,
+    DataField,
     Description,
+    Dynamic,
+    FileHandle,
     Function,
+    Instance,
     Key,
     LaunchContext,
+    LaunchYaml,
     Method,
     Module,
+    ModuleScope,
     Scope,
+    SourceFile,
+    Super,
     Unknown,
     Value,
 )
@@ -52,6 +72,8 @@ MAX_LENGTH = 100_000
 MAX_INT_BITS = 4096
 """Largest integer the reading computes: repeated squaring must not exhaust memory."""
 
+MAX_IMPORT_DEPTH = 20
+"""Modules being read at once (a module importing another...): deeper imports stay symbolic."""
 MODULE_NAME = "__launch__"
 """``__name__`` while the file is read: launch imports it as a module, not as ``__main__``."""
 
@@ -111,7 +133,7 @@ def size(value: Value) -> int:
 
 def truth(value: Value) -> bool | None:
     """Python's truth of ``value``; ``None`` when it is not known statically."""
-    if isinstance(value, Unknown | Module):  # a Module may be any value of another module
+    if isinstance(value, Unknown | Module | Dynamic):  # a Module: any value of another module
         return None
     if isinstance(value, (*_SCALARS, list, tuple, dict)):
         return bool(value)
@@ -121,21 +143,34 @@ def truth(value: Value) -> bool | None:
 class Interpreter:
     """Reads one file; diagnostics go to ``sink``."""
 
-    def __init__(self, filename: str, text: str, sink: DiagnosticSink) -> None:
+    def __init__(
+        self, filename: str, text: str, sink: DiagnosticSink, modules: ModulePath | None = None
+    ) -> None:
         self.filename = filename
-        self.lines = text.splitlines()
+        self.file = SourceFile(filename, text.splitlines())
+        """The file whose code is being read (a module's, in its functions)."""
         self.sink = sink
+        self.modules = modules
+        self.loaded: dict[str, ModuleScope | None] = {}
+        """Modules read (``None``: not found or not readable), by qualified name."""
+        self.loading = 0
+        self.paths: list[str] = [os.path.dirname(filename)]
+        """Directories searched for modules before the packages (``sys.path`` appends)."""
         self.steps = 0
         self.depth = 0
+        self.guards: list[Text] = []
+        """The Python tests of the launch-time ``if``s being read, innermost last."""
+        self.created: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
+        """Actions made under guards, with the guards (so a branch does not guard twice)."""
         self.statements: dict[type[ast.stmt], Callable[[Any, Scope], None]] = {
             ast.Expr: self._expression_statement,
             ast.Assign: self._assign,
             ast.AnnAssign: self._ann_assign,
             ast.AugAssign: self._aug_assign,
             ast.Return: self._return,
-            ast.If: self._if,
             ast.For: self._for,
             ast.FunctionDef: self._function_def,
+            ast.ClassDef: self._class_def,
             ast.Import: self._import,
             ast.ImportFrom: self._import_from,
             ast.Try: self._try,
@@ -175,9 +210,10 @@ class Interpreter:
     def location(self, node: ast.AST) -> Location:
         line = getattr(node, "lineno", 1)
         offset = getattr(node, "col_offset", 0)  # in UTF-8 bytes
-        text = self.lines[line - 1] if 0 < line <= len(self.lines) else ""
+        lines = self.file.lines
+        text = lines[line - 1] if 0 < line <= len(lines) else ""
         column = len(text.encode()[:offset].decode(errors="replace"))
-        return Location(self.filename, line, column + 1)
+        return Location(self.file.filename, line, column + 1)
 
     def not_followed(self, what: str, node: ast.AST) -> Unknown:
         self.sink.warning(NOT_FOLLOWED, f"{what} is not followed", self.location(node))
@@ -200,9 +236,15 @@ class Interpreter:
             pass
         return scope
 
-    def block(self, body: list[ast.stmt], scope: Scope) -> None:
-        for statement in body:
+    def block(self, body: list[ast.stmt], scope: Scope, tail: bool = False) -> None:
+        """The statements of ``body``; ``tail`` when it is a function's body, whose rest an
+        ``if`` returning in one branch only reads in the other."""
+        for index, statement in enumerate(body):
             self.step()
+            if isinstance(statement, ast.If):
+                if self._if(statement, scope, body[index + 1 :] if tail else None):
+                    return
+                continue
             handler = self.statements.get(type(statement))
             if handler is None:
                 self.not_followed(f"a '{type(statement).__name__}' statement", statement)
@@ -222,10 +264,25 @@ class Interpreter:
                 items = [value] * len(target.elts)
             for element, item in zip(target.elts, items, strict=True):
                 self.assign(element, item, scope)
+        elif isinstance(target, ast.Attribute):
+            owner = self.expr(target.value, scope)
+            if isinstance(owner, Instance):
+                owner.attributes[target.attr] = value
+            elif isinstance(owner, Class | ModuleScope):
+                owner.scope.names[target.attr] = value
+            elif not isinstance(owner, Unknown):
+                self.not_followed(f"assignment to an attribute of a {type(owner).__name__}", target)
         elif isinstance(target, ast.Subscript):
             container = self.expr(target.value, scope)
             index = self.expr(target.slice, scope)
             if isinstance(container, dict) and isinstance(index, Key):
+                if self.guards:
+                    if index not in container:
+                        self.not_followed(
+                            "an item set under an 'if' on a launch-time value", target
+                        )
+                        return
+                    value = self.choose(self.guard(), value, container[index], target)
                 container[index] = value
                 return
             if (
@@ -262,12 +319,123 @@ class Interpreter:
     def _return(self, node: ast.Return, scope: Scope) -> None:
         raise _Return(None if node.value is None else self.expr(node.value, scope))
 
-    def _if(self, node: ast.If, scope: Scope) -> None:
-        test = truth(self.expr(node.test, scope))
+    def _if(self, node: ast.If, scope: Scope, rest: list[ast.stmt] | None) -> bool:
+        """Reads the ``if``; whether it read ``rest`` too (the rest of a function's body,
+        read in the branch that does not return, when one branch does)."""
+        value = self.expr(node.test, scope)
+        if isinstance(value, Dynamic):
+            return self._branches(value.source, node, scope, rest)
+        test = truth(value)
         if test is None:
             self.not_followed("an 'if' on a value not known statically (neither branch)", node)
         else:
-            self.block(node.body if test else node.orelse, scope)
+            self.block(node.body if test else node.orelse, scope, tail=rest is not None)
+        return False
+
+    def _branches(
+        self, test: Text, node: ast.If, scope: Scope, rest: list[ast.stmt] | None
+    ) -> bool:
+        """Both branches of an ``if`` on a launch-time value, each under its condition; the
+        names they set, and what they return, chosen by ``test`` after."""
+        before = dict(scope.names)
+        then = self._guarded(launch_time.truth(test), node.body, scope)
+        after_then = dict(scope.names)
+        scope.names = dict(before)
+        otherwise = self._guarded(launch_time.negated(test), node.orelse, scope)
+        returned = (then is not None, otherwise is not None)
+        if returned == (True, False) or returned == (False, True):
+            if rest is None:
+                value = self.not_followed(
+                    "a 'return' in one branch of an 'if' on a launch-time value, in a loop "
+                    "or a nested block",
+                    node,
+                )
+                raise _Return(value)
+            if then is None:  # the rest after the 'then' branch, under its test
+                scope.names = after_then
+                then = self._guarded(launch_time.truth(test), rest, scope) or _Return(None)
+            else:
+                otherwise = self._guarded(launch_time.negated(test), rest, scope) or _Return(None)
+        if then is not None and otherwise is not None:
+            raise _Return(self.choose(test, then.value, otherwise.value, node))
+        after_otherwise = scope.names
+        scope.names = {}
+        for name in {**after_then, **after_otherwise}:
+            if name not in after_then or name not in after_otherwise:
+                scope.names[name] = after_then.get(name, after_otherwise.get(name))
+            else:
+                scope.names[name] = self.choose(test, after_then[name], after_otherwise[name], node)
+        return rest is not None and returned != (False, False)
+
+    def _guarded(self, test: Text, body: list[ast.stmt], scope: Scope) -> _Return | None:
+        """``body`` read under ``test``; what it returns, if it does."""
+        self.guards.append(test)
+        try:
+            self.block(body, scope)
+        except _Return as returned:
+            return returned
+        except (_Break, _Continue):
+            self.not_followed(
+                "a 'break' or 'continue' under an 'if' on a launch-time value", body[0]
+            )
+        finally:
+            self.guards.pop()
+        return None
+
+    def guard(self) -> Text:
+        """The conjunction of the tests being read under."""
+        test = self.guards[0]
+        for other in self.guards[1:]:
+            test = Text.of("(", test, ") and (", other, ")")
+        return test
+
+    def choose(self, test: Text, then: Value, otherwise: Value, node: ast.AST) -> Value:
+        """``then`` where the Python ``test`` holds at launch time, else ``otherwise``."""
+        if then is otherwise or (_constant(then) and _constant(otherwise) and then == otherwise):
+            return then
+        sources = [_branch_source(then), _branch_source(otherwise)]
+        if sources[0] is not None and sources[1] is not None:
+            kinds = {launch_time.kind_of(then), launch_time.kind_of(otherwise)}
+            return launch_time.chosen(
+                test, sources[0], sources[1], kinds.pop() if len(kinds) == 1 else None
+            )
+        actions = [_actions(then), _actions(otherwise)]
+        if actions[0] is not None and actions[1] is not None:
+            self.guards.append(launch_time.truth(test))
+            children = [self.guarded_action(action, node) for action in actions[0]]
+            self.guards[-1] = launch_time.negated(test)
+            children += [self.guarded_action(action, node) for action in actions[1]]
+            self.guards.pop()
+            group = _group(children, None, self.location(node), self.sink)
+            return (
+                [group]
+                if isinstance(then, list | tuple) or isinstance(otherwise, list | tuple)
+                else group
+            )
+        return Conditional(test, then, otherwise)
+
+    def guarded_action(self, action: Entity, node: ast.AST) -> Entity:
+        """``action`` under the guards being read (unless it was made under them)."""
+        if not self.guards:
+            return action
+        made = self.created.get(id(action))
+        guards = tuple(self.guards)
+        if made is not None and made[0] is action and made[1][: len(guards)] == guards:
+            return action
+        group = _group([action], self.guard(), self.location(node), self.sink)
+        self.created[id(group)] = (group, guards)
+        return group
+
+    def guarded_item(self, item: Value, node: ast.AST) -> Value:
+        """An item added to a list (or a description) under the guards being read."""
+        if not self.guards:
+            return item
+        if isinstance(item, Entity):
+            return self.guarded_action(item, node)
+        actions = _actions(item)
+        if actions is not None:
+            return [self.guarded_action(action, node) for action in actions]
+        return self.not_followed("an item added under an 'if' on a launch-time value", node)
 
     def _for(self, node: ast.For, scope: Scope) -> None:
         items = self.iterate(self.expr(node.iter, scope), node.iter)
@@ -305,23 +473,132 @@ class Interpreter:
         for argument, kw_default in zip(arguments.kwonlyargs, arguments.kw_defaults, strict=True):
             if kw_default is not None:
                 defaults[argument.arg] = self.expr(kw_default, scope)
-        scope.names[node.name] = Function(node, scope, defaults)
+        scope.names[node.name] = Function(node, scope, defaults, self.file)
+
+    def _class_def(self, node: ast.ClassDef, scope: Scope) -> None:
+        decorators = [self.expr(_called(d), scope) for d in node.decorator_list]
+        if node.keywords or any(d != Module("dataclasses.dataclass") for d in decorators):
+            scope.names[node.name] = self.not_followed(f"decorated class {node.name}", node)
+            return
+        bases = [self.expr(base, scope) for base in node.bases]
+        cls = Class(node.name, bases, Scope(parent=scope))
+        body = node.body
+        if decorators:
+            cls.fields = [_data_field(statement) for statement in body if _annotated(statement)]
+            body = [s for s in body if not (_annotated(s) and _field_call(s) is not None)]
+        with contextlib.suppress(_Return, _Break, _Continue):  # as Python, which refuses them
+            self.block(body, cls.scope)
+        for value in cls.scope.names.values():
+            if isinstance(value, Function):
+                value.owner = cls
+        scope.names[node.name] = cls
 
     def _import(self, node: ast.Import, scope: Scope) -> None:
         for alias in node.names:
             if alias.asname is not None:
-                scope.names[alias.asname] = Module(alias.name)
+                scope.names[alias.asname] = self.module(alias.name, node) or Module(alias.name)
             else:
                 top = alias.name.partition(".")[0]
-                scope.names[top] = Module(top)
+                self.module(alias.name, node)  # read the submodule too
+                scope.names[top] = self.module(top, node) or Module(top)
 
     def _import_from(self, node: ast.ImportFrom, scope: Scope) -> None:
         module = "." * node.level + (node.module or "")
+        if node.level:
+            module = self._absolute(node.level, node.module or "")
+        found = self.module(module, node) if module else None
         for alias in node.names:
             if alias.name == "*":
-                self.not_followed(f"'from {module} import *'", node)
+                if found is not None:
+                    scope.names.update(
+                        (name, value)
+                        for name, value in found.scope.names.items()
+                        if not name.startswith("_")
+                    )
+                else:
+                    self.not_followed(f"'from {module} import *'", node)
                 continue
-            scope.names[alias.asname or alias.name] = Module(f"{module}.{alias.name}")
+            name = alias.asname or alias.name
+            if found is not None and alias.name in found.scope.names:
+                scope.names[name] = found.scope.names[alias.name]
+            else:
+                submodule = self.module(f"{module}.{alias.name}", node) if found else None
+                scope.names[name] = submodule or Module(f"{module}.{alias.name}")
+
+    def _absolute(self, level: int, name: str) -> str:
+        """A relative import's module, named from the current module's package."""
+        found, package = False, ""
+        for qualified, module in self.loaded.items():
+            if module is not None and module.scope.names.get("__file__") == self.file.filename:
+                found, package = True, qualified
+                if not self.file.filename.endswith("__init__.py"):
+                    package = package.rpartition(".")[0]
+        if not found:
+            return "." * level + name  # the launch file itself is no package
+        for _ in range(level - 1):
+            package = package.rpartition(".")[0]
+        return f"{package}.{name}" if name else package
+
+    def path_of(self, value: Value) -> str | None:
+        """The absolute path ``value`` names, where known statically (a literal, the file's
+        directory, a package's share directory, each with a literal tail)."""
+        if isinstance(value, Dynamic):
+            value = value.text
+        if isinstance(value, str):
+            return value if os.path.isabs(value) else None
+        if not isinstance(value, Text) or not value.parts:
+            return None
+        first, rest = value.parts[0], value.parts[1:]
+        tail = "".join(part for part in rest if isinstance(part, str))
+        if len(tail) < len(rest) or not isinstance(first, Sub):
+            return None
+        if first.name == "dirname" and not first.args:
+            return os.path.dirname(self.file.filename) + tail
+        package = first.args[0].literal() if len(first.args) == 1 else None
+        if first.name == "find-pkg-share" and package and self.modules is not None:
+            found = self.modules.packages.get(package)
+            return None if found is None else found + tail
+        return None
+
+    def module(self, qualified: str, node: ast.AST) -> ModuleScope | None:
+        """The module ``qualified`` of the workspace, read once; ``None`` if it is none (it
+        stays a symbolic :class:`Module`) or cannot be read (reported)."""
+        if qualified in self.loaded:
+            return self.loaded[qualified]
+        if self.modules is None or qualified.startswith("."):
+            return None
+        path = self.modules.find(qualified, self.paths)
+        if path is None:
+            self.loaded[qualified] = None
+            return None
+        if len(self.loaded) >= MAX_MODULES or self.loading >= MAX_IMPORT_DEPTH:
+            self.not_followed(f"module {qualified} (beyond the bound on modules read)", node)
+            return None
+        where = self.location(node)
+        try:
+            if self.modules.confinement is not None:
+                self.modules.confinement.check(path)
+            text = read_file(path, limit=MAX_MODULE_BYTES).decode("utf-8-sig")
+            tree = ast.parse(text, path)
+        except (OSError, UnicodeDecodeError, SyntaxError, ValueError, RecursionError) as error:
+            self.sink.warning(
+                "python-module", f"module {qualified} ({path}) is not read: {error}", where
+            )
+            self.loaded[qualified] = None
+            return None
+        module = ModuleScope(qualified, Scope({"__name__": qualified, "__file__": path}))
+        self.loaded[qualified] = module  # before its body: an import cycle sees it partial
+        outer, guards = self.file, self.guards
+        self.file, self.guards = SourceFile(path, text.splitlines()), []
+        self.loading += 1
+        try:
+            self.block(tree.body, module.scope)
+        except (_Return, _Break, _Continue):
+            pass
+        finally:
+            self.file, self.guards = outer, guards
+            self.loading -= 1
+        return module
 
     def _try(self, node: ast.Try, scope: Scope) -> None:
         """The body as if it raised nothing (nothing read here raises)."""
@@ -333,7 +610,7 @@ class Interpreter:
         for item in node.items:
             value = self.expr(item.context_expr, scope)
             if item.optional_vars is not None:
-                if not isinstance(value, Unknown):
+                if not isinstance(value, Unknown | FileHandle):
                     value = self.not_followed("a 'with' context manager", item.context_expr)
                 self.assign(item.optional_vars, value, scope)
         self.block(node.body, scope)
@@ -375,6 +652,8 @@ class Interpreter:
         """``str(value)`` where it is known."""
         if isinstance(value, _SCALARS):
             return str(value)
+        if isinstance(value, Dynamic):
+            return launch_time.stringified(value)
         if isinstance(value, Text | Unknown):
             return value
         return self.not_followed(f"str() of a {type(value).__name__}", node)
@@ -388,9 +667,13 @@ class Interpreter:
         for part in parts:
             if isinstance(part, Unknown):
                 return part
-            if not isinstance(part, str | Text):
+            if isinstance(part, Dynamic):
+                part = launch_time.as_text(part)
+            elif not isinstance(part, str | Text):
                 return self.not_followed(f"a {type(part).__name__} in a string", node)
             texts.append(part)
+        if any(isinstance(part, Dynamic) for part in parts):
+            return launch_time.concatenated([Text.of(text) for text in texts])
         return Text.of(*texts)
 
     def binary(self, op: ast.operator, left: Value, right: Value, node: ast.AST) -> Value:
@@ -398,6 +681,8 @@ class Interpreter:
             return left
         if isinstance(right, Unknown):
             return right
+        if isinstance(left, Dynamic) or isinstance(right, Dynamic):
+            return self.launch_time_operation(OPERATORS.get(type(op)), left, right, node)
         if isinstance(op, ast.Add) and (isinstance(left, Text) or isinstance(right, Text)):
             return self.concatenate([left, right], node)
         if isinstance(op, ast.Div) and isinstance(left, Text) and isinstance(right, str | Text):
@@ -422,6 +707,24 @@ class Interpreter:
             return left + right
         return self.not_followed(f"operator {type(op).__name__}", node)
 
+    def launch_time_operation(
+        self, operator: str | None, left: Value, right: Value, node: ast.AST
+    ) -> Value:
+        """``left <operator> right`` where one is a launch-time value: a string joined
+        (``+``), any other operation an expression."""
+        kinds = (launch_time.kind_of(left), launch_time.kind_of(right))
+        strings = all(
+            isinstance(side, Text) or kind is str
+            for side, kind in zip((left, right), kinds, strict=True)
+        )
+        if operator == "+" and strings:
+            return self.concatenate([left, right], node)
+        sources = (launch_time.source(left), launch_time.source(right))
+        if operator is None or sources[0] is None or sources[1] is None:
+            return self.not_followed(f"operator {operator} on a launch-time value", node)
+        kind = launch_time.arithmetic_kind(operator, *kinds)
+        return launch_time.binary(operator, sources[0], sources[1], kind)
+
     @staticmethod
     def _too_large(op: ast.operator, left: Value, right: Value) -> bool:
         """Whether an operation on constants would build a result over the limits."""
@@ -440,6 +743,10 @@ class Interpreter:
 
     def _unary_op(self, node: ast.UnaryOp, scope: Scope) -> Value:
         operand = self.expr(node.operand, scope)
+        if isinstance(operand, Dynamic) and isinstance(node.op, ast.Not | ast.USub):
+            if isinstance(node.op, ast.Not):
+                return Dynamic(launch_time.negated(operand.source), bool)
+            return Dynamic(Text.of("-(", operand.source, ")"), operand.kind)
         if isinstance(node.op, ast.Not):
             test = truth(operand)
             return Unknown("not of an unknown value") if test is None else not test
@@ -449,19 +756,50 @@ class Interpreter:
 
     def _bool_op(self, node: ast.BoolOp, scope: Scope) -> Value:
         value: Value = None
+        launch_time_values: list[Value] = []  # from the first launch-time operand on
         for operand in node.values:
             value = self.expr(operand, scope)
+            if launch_time_values or isinstance(value, Dynamic):
+                launch_time_values.append(value)
+                continue
             test = truth(value)
             if test is None:
                 return Unknown("a condition not known statically")
             if test is isinstance(node.op, ast.Or):
                 return value
-        return value
+        if not launch_time_values:
+            return value
+        sources = [launch_time.source(item) for item in launch_time_values]
+        kinds = {launch_time.kind_of(item) for item in launch_time_values}
+        parts: list[str | Text] = []
+        for index, item_source in enumerate(sources):
+            if item_source is None:
+                return self.not_followed("a launch object in a launch-time condition", node)
+            word = " and " if isinstance(node.op, ast.And) else " or "
+            parts.extend([word, "(", item_source, ")"] if index else ["(", item_source, ")"])
+        return Dynamic(Text.of(*parts), kinds.pop() if len(kinds) == 1 else None)
 
     def _compare(self, node: ast.Compare, scope: Scope) -> Value:
-        left = self.expr(node.left, scope)
-        for op, comparator in zip(node.ops, node.comparators, strict=True):
-            right = self.expr(comparator, scope)
+        operands = [self.expr(operand, scope) for operand in (node.left, *node.comparators)]
+        if any(isinstance(operand, Dynamic) for operand in operands):
+            return self._launch_time_comparison(node, operands)
+        return self._compare_values(node, operands)
+
+    def _launch_time_comparison(self, node: ast.Compare, operands: list[Value]) -> Value:
+        """A comparison chain with a launch-time operand, as Python writes it."""
+        parts: list[str | Text] = []
+        for index, operand in enumerate(operands):
+            operand_source = launch_time.source(operand)
+            if operand_source is None:
+                return self.not_followed("a comparison of a launch-time value", node)
+            if index:
+                parts.append(f" {OPERATORS[type(node.ops[index - 1])]} ")
+            parts.extend(["(", operand_source, ")"])
+        return Dynamic(Text.of(*parts), bool)
+
+    def _compare_values(self, node: ast.Compare, operands: list[Value]) -> Value:
+        left = operands[0]
+        for op, right in zip(node.ops, operands[1:], strict=True):
             if not (_constant(left) or isinstance(left, dict)) or not (
                 _constant(right) or isinstance(right, dict)
             ):
@@ -475,7 +813,15 @@ class Interpreter:
         return True
 
     def _if_exp(self, node: ast.IfExp, scope: Scope) -> Value:
-        test = truth(self.expr(node.test, scope))
+        value = self.expr(node.test, scope)
+        if isinstance(value, Dynamic):
+            self.guards.append(launch_time.truth(value.source))
+            then = self.expr(node.body, scope)
+            self.guards[-1] = launch_time.negated(value.source)
+            otherwise = self.expr(node.orelse, scope)
+            self.guards.pop()
+            return self.choose(value.source, then, otherwise, node)
+        test = truth(value)
         if test is None:
             return self.not_followed("a conditional expression on an unknown value", node)
         return self.expr(node.body if test else node.orelse, scope)
@@ -520,12 +866,21 @@ class Interpreter:
             numbers = [bound for bound in bounds if bound is None or isinstance(bound, int)]
             if isinstance(container, str | list | tuple) and len(numbers) == len(bounds):
                 return container[slice(*numbers)]
+            if isinstance(container, Dynamic) and all(
+                bound is None or isinstance(bound, int) for bound in bounds
+            ):
+                written = ":".join("" if bound is None else str(bound) for bound in bounds)
+                return Dynamic(Text.of("(", container.source, f")[{written}]"), container.kind)
             return self.not_followed("a slice of a value not known statically", node)
         index = self.expr(node.slice, scope)
         if container == Module("os.environ") and isinstance(index, str | Text):
-            return Text.of(Sub("env", (Text.of(index),)))
+            return performed(Text.of(Sub("env", (Text.of(index),))))
         if container == Method(LaunchContext(), "launch_configurations"):
             return _configuration(self, node, index)
+        if isinstance(container, Dynamic) or isinstance(index, Dynamic):
+            return self._launch_time_item(container, index, node)
+        if isinstance(container, LaunchYaml) and isinstance(index, str | int):
+            return LaunchYaml(container.path, (*container.keys, index))
         try:
             if isinstance(container, dict) and isinstance(index, Key):
                 return container[index]
@@ -537,12 +892,35 @@ class Interpreter:
             return container
         return self.not_followed("an item of a value not known statically", node)
 
+    def _launch_time_item(self, container: Value, index: Value, node: ast.AST) -> Value:
+        sources = (launch_time.source(container), launch_time.source(index))
+        if sources[0] is None or sources[1] is None:
+            return self.not_followed("an item of a launch-time value", node)
+        kind = str if launch_time.kind_of(container) in (str, list) else None
+        return Dynamic(Text.of("(", sources[0], ")[", sources[1], "]"), kind)
+
     def _attribute(self, node: ast.Attribute, scope: Scope) -> Value:
         owner = self.expr(node.value, scope)
         if isinstance(owner, Module):
             return Module(f"{owner.qualified}.{node.attr}")
         if isinstance(owner, Unknown):
             return owner
+        if isinstance(owner, ModuleScope):
+            if node.attr in owner.scope.names:
+                return owner.scope.names[node.attr]
+            qualified = f"{owner.qualified}.{node.attr}"
+            return self.module(qualified, node) or self.not_followed(f"name {qualified}", node)
+        if isinstance(owner, Instance) and node.attr in owner.attributes:
+            return owner.attributes[node.attr]
+        if isinstance(owner, Instance | Class | Super):
+            if isinstance(owner, Super):
+                found, value = _class_lookup(owner.owner, node.attr, after=True)
+            else:
+                found, value = _class_lookup(
+                    owner.cls if isinstance(owner, Instance) else owner, node.attr
+                )
+            if found and not isinstance(value, Function):
+                return value
         return Method(owner, node.attr)
 
     def _named_expr(self, node: ast.NamedExpr, scope: Scope) -> Value:
@@ -587,13 +965,21 @@ class Interpreter:
             return list(value)
         if isinstance(value, dict):
             return list(value)
-        if not isinstance(value, Unknown):
+        if isinstance(value, Dynamic):
+            self.not_followed("iteration over a launch-time value (its length is not known)", node)
+        elif not isinstance(value, Unknown):
             self.not_followed(f"iteration over a {type(value).__name__}", node)
         return None
 
     # ------------------------------------------------------------------ calls
 
     def _call(self, node: ast.Call, scope: Scope) -> Value:
+        if isinstance(node.func, ast.Name) and node.func.id == "super" and not node.args:
+            found, owner = scope.lookup("__class__")
+            _, instance = scope.lookup("__self__")
+            if found and isinstance(owner, Class):
+                return Super(instance, owner)
+            return self.not_followed("super() outside a method", node)
         callee = self.expr(node.func, scope)
         args = self._elements(node.args, scope)
         kwargs: dict[str, Value] = {}
@@ -616,6 +1002,8 @@ class Interpreter:
             return self.call_function(callee, args, kwargs, node)
         if isinstance(callee, Method):
             return self.call_method(callee, args, kwargs, node)
+        if isinstance(callee, Class):
+            return self.instantiate(callee, args, kwargs, node)
         if isinstance(callee, Module):
             builtin = BUILTINS.get(callee.qualified) or CALLING.get(python_name(callee.qualified))
             if builtin is not None:
@@ -623,7 +1011,8 @@ class Interpreter:
             call = Call(callee.qualified, args, kwargs, self.location(node), self.sink)
             builder = CALLS.get(python_name(callee.qualified))
             if builder is not None:
-                return builder(call)
+                made = builder(call)
+                return self.guarded_action(made, node) if isinstance(made, Entity) else made
             reason = REASONS.get(python_name(callee.qualified))
             return self.not_followed(reason or f"call to {callee.qualified}()", node)
         return self.not_followed(f"call of a {type(callee).__name__}", node)
@@ -636,6 +1025,8 @@ class Interpreter:
         arguments = function.node.args
         positional = [argument.arg for argument in (*arguments.posonlyargs, *arguments.args)]
         scope = Scope(dict(function.defaults), function.scope)
+        if function.owner is not None and args:  # for super(): the class and the instance
+            scope.names["__class__"], scope.names["__self__"] = function.owner, args[0]
         for name, value in zip(positional, args, strict=False):
             scope.names[name] = value
         if arguments.vararg is not None:
@@ -659,46 +1050,138 @@ class Interpreter:
                 f"{function.node.name}() without {', '.join(sorted(missing))}", node
             )
         self.depth += 1
+        outer, self.file = self.file, function.file
         try:
-            self.block(function.node.body, scope)
+            self.block(function.node.body, scope, tail=True)
         except _Return as returned:
             return returned.value
         finally:
             self.depth -= 1
+            self.file = outer
         return None
+
+    def instantiate(
+        self, cls: Class, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        """An object of ``cls``, its ``__init__`` read; a launch ``Substitution`` subclass is
+        the text its ``perform`` gives, an ``Action`` subclass the actions its ``execute``
+        returns, read where it stands (as launch performs and executes them)."""
+        instance = Instance(cls)
+        found, init = _class_lookup(cls, "__init__")
+        if found and isinstance(init, Function):
+            self.call_function(init, [instance, *args], kwargs, node)
+        elif cls.fields is not None:
+            self._data_init(cls, cls.fields, instance, args, kwargs, node)
+        bases = _launch_bases(cls)
+        call = Call(cls.name, [], {}, self.location(node), self.sink)
+        found, perform = _class_lookup(cls, "perform")
+        if any(base.endswith("Substitution") for base in bases) and isinstance(perform, Function):
+            return call.text(self.call_function(perform, [instance, LaunchContext()], {}, node))
+        found, execute = _class_lookup(cls, "execute")
+        entity = ("Action", "LaunchDescriptionEntity")
+        if any(base.endswith(entity) for base in bases) and isinstance(execute, Function):
+            actions = self.call_function(execute, [instance, LaunchContext()], {}, node)
+            if isinstance(actions, Unknown):
+                return actions
+            return _group(
+                [] if actions is None else _actions(actions) or [], None, call.location, self.sink
+            )
+        return instance
 
     def call_method(
         self, method: Method, args: list[Value], kwargs: dict[str, Value], node: ast.AST
     ) -> Value:
         receiver, name = method.receiver, method.name
+        if isinstance(receiver, Instance | Class | Super):
+            return self._call_class_method(receiver, name, args, kwargs, node)
+        if isinstance(receiver, Condition) and name == "evaluate":
+            return launch_time.evaluated(receiver.attribute, receiver.text)
+        if isinstance(receiver, FileHandle) and name == "read" and not args:
+            return reads.text(self, receiver, node)
         if isinstance(receiver, Description) and name in ("add_action", "add_entity") and args:
             call = Call(f"LaunchDescription.{name}", args, kwargs, self.location(node), self.sink)
-            add_actions(call, receiver.root, [args[0]])
+            add_actions(call, receiver.root, [self.guarded_item(args[0], node)])
             return None
         if isinstance(receiver, list) and name in ("append", "extend", "insert") and args:
             if name == "append":
-                receiver.append(args[0])
+                receiver.append(self.guarded_item(args[0], node))
             elif name == "insert" and len(args) == 2 and isinstance(args[0], int):
-                receiver.insert(args[0], args[1])
+                receiver.insert(args[0], self.guarded_item(args[1], node))
             else:
                 items = self.iterate(args[0], node)
                 if items is not None and len(receiver) + len(items) > MAX_LENGTH:
                     return self.not_followed(f"a list longer than {MAX_LENGTH}", node)
-                receiver.extend(items if items is not None else [Unknown("*unknown")])
+                for item in items if items is not None else [Unknown("*unknown")]:
+                    receiver.append(self.guarded_item(item, node))
             return None
         if isinstance(receiver, dict):
             return self._dict_method(receiver, name, args, node)
         if isinstance(receiver, list | tuple) and name == "copy":
             return list(receiver)
         if isinstance(receiver, Text) and name == "perform":
-            return receiver  # the value at launch time, which the text stands for
+            return performed(receiver)  # the value at launch time, which the text stands for
         if isinstance(receiver, LaunchContext) and name == "perform_substitution" and args:
-            return Call(name, args, kwargs, self.location(node), self.sink).text(args[0])
+            return performed(Call(name, args, kwargs, self.location(node), self.sink).text(args[0]))
         if receiver == Method(LaunchContext(), "launch_configurations") and name == "get" and args:
             return _configuration(self, node, *args[:2])
         if isinstance(receiver, str) and name in _STR_METHODS:
             return self._str_method(receiver, name, args, kwargs, node)
+        if isinstance(receiver, Dynamic) and name in launch_time.STRING_METHODS and not kwargs:
+            sources = [launch_time.source(arg) for arg in args]
+            given = [arg_source for arg_source in sources if arg_source is not None]
+            if len(given) == len(sources):
+                return launch_time.method(receiver, name, given)
         return self.not_followed(f"method {name}() of a {type(receiver).__name__}", node)
+
+    def _data_init(
+        self,
+        cls: Class,
+        fields: list[DataField],
+        instance: Instance,
+        args: list[Value],
+        kwargs: dict[str, Value],
+        node: ast.AST,
+    ) -> None:
+        """The ``__init__`` a ``@dataclass`` makes: each field from its argument, or its
+        default (read in the class body's scope), or its factory called."""
+        if len(args) > len(fields) or set(kwargs) - {f.name for f in fields}:
+            self.not_followed(f"arguments of {cls.name}() that are not its fields", node)
+        for index, data in enumerate(fields):
+            if index < len(args):
+                value = args[index]
+            elif data.name in kwargs:
+                value = kwargs[data.name]
+            elif data.default is None:
+                value = self.not_followed(f"{cls.name}() without {data.name}", node)
+            elif data.factory:
+                factory = self.expr(data.default, cls.scope)
+                value = self.invoke(factory, [], {}, node)
+            else:
+                value = self.expr(data.default, cls.scope)
+            instance.attributes[data.name] = value
+
+    def _call_class_method(
+        self,
+        receiver: Instance | Class | Super,
+        name: str,
+        args: list[Value],
+        kwargs: dict[str, Value],
+        node: ast.AST,
+    ) -> Value:
+        if isinstance(receiver, Super):
+            found, function = _class_lookup(receiver.owner, name, after=True)
+            bound = [receiver.instance]
+        else:
+            cls = receiver.cls if isinstance(receiver, Instance) else receiver
+            found, function = _class_lookup(cls, name)
+            bound = [receiver] if isinstance(receiver, Instance) else []
+        if isinstance(function, Function):
+            return self.call_function(function, [*bound, *args], kwargs, node)
+        if isinstance(receiver, Super) and name == "__init__":
+            return None  # a launch base class's constructor: nothing the reading needs
+        if found:
+            return self.invoke(function, args, kwargs, node)
+        return self.not_followed(f"method {name}() of {type(receiver).__name__.lower()}", node)
 
     def _dict_method(
         self, receiver: dict[Key, Value], name: str, args: list[Value], node: ast.AST
@@ -768,6 +1251,99 @@ class Interpreter:
         return self.not_followed(f"str.{name}() of values not known statically", node)
 
 
+def _called(decorator: ast.expr) -> ast.expr:
+    """The decorator's callee (``@dataclass(slots=True)``: ``dataclass``)."""
+    return decorator.func if isinstance(decorator, ast.Call) else decorator
+
+
+def _annotated(statement: ast.stmt) -> bool:
+    return isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name)
+
+
+def _field_call(statement: ast.stmt) -> ast.Call | None:
+    """``field(...)`` as an annotated assignment's value, if it is."""
+    value = statement.value if isinstance(statement, ast.AnnAssign) else None
+    if isinstance(value, ast.Call) and isinstance(value.func, ast.Name | ast.Attribute):
+        name = value.func.id if isinstance(value.func, ast.Name) else value.func.attr
+        return value if name == "field" else None
+    return None
+
+
+def _data_field(statement: ast.stmt) -> DataField:
+    assert isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name)
+    call = _field_call(statement)
+    if call is None:
+        return DataField(statement.target.id, statement.value, factory=False)
+    keywords = {keyword.arg: keyword.value for keyword in call.keywords}
+    if "default_factory" in keywords:
+        return DataField(statement.target.id, keywords["default_factory"], factory=True)
+    return DataField(statement.target.id, keywords.get("default"), factory=False)
+
+
+def _class_lookup(cls: Class, name: str, after: bool = False) -> tuple[bool, Value]:
+    """``name`` in ``cls`` or its bases (depth first, as Python's order for single bases);
+    ``after``: in its bases only (``super()``)."""
+    if not after and name in cls.scope.names:
+        return True, cls.scope.names[name]
+    for base in cls.bases:
+        if isinstance(base, Class):
+            found, value = _class_lookup(base, name)
+            if found:
+                return True, value
+    return False, None
+
+
+def _launch_bases(cls: Class) -> list[str]:
+    """The qualified names of the launch (or other symbolic) classes ``cls`` derives from."""
+    names: list[str] = []
+    for base in cls.bases:
+        if isinstance(base, Module):
+            names.append(base.qualified)
+        elif isinstance(base, Class):
+            names += _launch_bases(base)
+    return names
+
+
+def _branch_source(value: Value) -> Text | None:
+    """The Python source of a value a branch gives; a text of substitutions is the string
+    it gives at launch time."""
+    if isinstance(value, Text):
+        return launch_time.quoted(value)
+    return launch_time.source(value)
+
+
+def _actions(value: Value) -> list[Entity] | None:
+    """The actions ``value`` is (an action, a list of them, nothing); ``None`` if it is not."""
+    if value is None:
+        return []
+    if isinstance(value, Entity):
+        return [value]
+    if isinstance(value, Description):
+        return list(value.root.children)
+    if isinstance(value, list | tuple):
+        actions: list[Entity] = []
+        for item in value:
+            inner = _actions(item)
+            if inner is None:
+                return None
+            actions += inner
+        return actions
+    return None
+
+
+def _group(
+    actions: list[Entity], test: Text | None, location: Location, sink: DiagnosticSink
+) -> Entity:
+    """An unscoped group of ``actions``, as launch runs the actions a branch adds: in the
+    same launch configurations; under ``test`` if given."""
+    kwargs: dict[str, Value] = {"actions": list(actions), "scoped": False}
+    if test is not None:
+        kwargs["condition"] = Condition("if", launch_time.condition(test))
+    made = CALLS[("launch", "GroupAction")](Call("GroupAction", [], kwargs, location, sink))
+    assert isinstance(made, Entity)
+    return made
+
+
 def _str(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
@@ -785,6 +1361,8 @@ def _convert(kind: type[int] | type[float] | type[bool]) -> Builtin:
                 return interpreter.not_followed(f"{kind.__name__}() that fails ({error})", node)
         if not args:
             return kind()
+        if len(args) == 1 and isinstance(args[0], Dynamic):
+            return launch_time.call(kind.__name__, [args[0].source])
         return interpreter.not_followed(f"{kind.__name__}() of a value not known statically", node)
 
     return convert
@@ -795,6 +1373,8 @@ def _len(
 ) -> Value:
     if len(args) == 1 and isinstance(args[0], str | list | tuple | dict):
         return len(args[0])
+    if len(args) == 1 and isinstance(args[0], Dynamic):
+        return launch_time.call("len", [args[0].source])
     return interpreter.not_followed("len() of a value not known statically", node)
 
 
@@ -855,6 +1435,49 @@ def _zip(
     return [tuple(row) for row in zip(*(column or [] for column in columns), strict=False)]
 
 
+def _sys_path(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
+    """``sys.path.append(d)`` (``insert(i, d)``): later imports search ``d`` too, where it is
+    known (a literal, the file's directory, a package's share directory below)."""
+    directory = interpreter.path_of(args[-1]) if args else None
+    if directory is not None:
+        interpreter.paths.append(directory)
+    return None
+
+
+def _copy(deep: bool) -> Builtin:
+    def copy(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        """``copy.copy``/``copy.deepcopy`` of lists, tuples and dicts (sharing kept, as
+        Python's memo keeps it; each copied container a step); anything else is itself
+        (immutable to the reading)."""
+        if len(args) != 1:
+            return interpreter.not_followed("copy() of other than one value", node)
+        copies: dict[int, Value] = {}
+
+        def copied(value: Value, depth: int) -> Value:
+            if not isinstance(value, list | tuple | dict) or (not deep and depth > 0):
+                return value
+            if id(value) in copies:
+                return copies[id(value)]
+            interpreter.step()
+            if isinstance(value, dict):
+                mapping: dict[Key, Value] = {}
+                copies[id(value)] = mapping
+                mapping.update((key, copied(item, depth + 1)) for key, item in value.items())
+                return mapping
+            items = [copied(item, depth + 1) for item in value]
+            result: Value = items if isinstance(value, list) else tuple(items)
+            copies[id(value)] = result
+            return result
+
+        return copied(args[0], 0)
+
+    return copy
+
+
 def _print(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
@@ -868,10 +1491,12 @@ def _configuration(
     if not isinstance(name, str):
         return interpreter.not_followed("a launch configuration named by a non-string", node)
     if default is None:
-        return Text.of(Sub("var", (Text.of(name),)))
+        return performed(Text.of(Sub("var", (Text.of(name),))))
+    if isinstance(default, Dynamic) and default.text is not None:
+        default = default.text
     if not isinstance(default, str | Text):
         return interpreter.not_followed("a launch configuration's non-string default", node)
-    return Text.of(Sub("var", (Text.of(name), Text.of(default))))
+    return performed(Text.of(Sub("var", (Text.of(name), Text.of(default)))))
 
 
 def _opaque_function(
@@ -922,6 +1547,13 @@ BUILTINS: dict[str, Builtin] = {
     "enumerate": _enumerate,
     "zip": _zip,
     "print": _print,
+    "open": reads.open_file,
+    "yaml.safe_load": reads.load_yaml,
+    "yaml.load": reads.load_yaml,
+    "copy.copy": _copy(deep=False),
+    "copy.deepcopy": _copy(deep=True),
+    "sys.path.append": _sys_path,
+    "sys.path.insert": _sys_path,
 }
 """Python's builtins the reading follows (a call of any other is not followed)."""
 

@@ -20,9 +20,12 @@ from rosvar.ros2.frontends.python.interpreter import (
     OutOfBudget,
     entry_point,
 )
+from rosvar.ros2.frontends.python.modules import ModulePath
 
 
-def parse_python_launch_bytes(data: bytes, filename: str) -> ParseResult:
+def parse_python_launch_bytes(
+    data: bytes, filename: str, modules: ModulePath | None = None
+) -> ParseResult:
     """Read a ROS 2 Python launch file held in memory; never raises."""
     sink = DiagnosticSink()
     start = Location(filename, 1, 1)
@@ -41,7 +44,7 @@ def parse_python_launch_bytes(data: bytes, filename: str) -> ParseResult:
         reason = str(error) or "nested too deeply"
         sink.error("python-syntax", f"invalid Python: {reason}", start)
         return ParseResult(None, sink.items)
-    interpreter = Interpreter(filename, text, sink)
+    interpreter = Interpreter(filename, text, sink, modules)
     try:
         root = entry_point(interpreter, tree)
     except OutOfBudget:
@@ -53,9 +56,13 @@ def parse_python_launch_bytes(data: bytes, filename: str) -> ParseResult:
     return ParseResult(root, sink.items)
 
 
-def parse_python_launch_file(path: str | os.PathLike[str]) -> ParseResult:
-    """Read a ROS 2 Python launch file; Locations use ``path`` as given. Never raises."""
+def parse_python_launch_file(
+    path: str | os.PathLike[str], modules: ModulePath | None = None
+) -> ParseResult:
+    """Read a ROS 2 Python launch file; Locations use ``path`` as given; ``modules``: where
+    its imports find the workspace's modules (none: every import stays symbolic). Never
+    raises."""
     data = read_bytes(path)
     if isinstance(data, ParseResult):
         return data
-    return parse_python_launch_bytes(data, os.fspath(path))
+    return parse_python_launch_bytes(data, os.fspath(path), modules)

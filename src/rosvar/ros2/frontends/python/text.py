@@ -19,6 +19,10 @@ PATH_JOIN = "rosvar-path-join"
 """The substitution standing for ``PathJoinSubstitution`` (``os.path.join`` of its
 arguments' values) where the join is not known from the text; XML has none."""
 
+PYTHON_STRING = "rosvar-python-string"
+"""The substitution giving its argument's value as a Python string literal (``repr``): a
+launch-time string inside a Python expression the interpreter evaluates, whatever quotes or
+backslashes the value holds; XML has none."""
 CONFIGURATION_EQUALS = "rosvar-configuration-equals"
 """``LaunchConfigurationEquals(name, value)``: whether the launch configuration ``name`` is
 the text ``value`` (plain text equality; an undefined one equals only no value), which no

@@ -23,6 +23,45 @@ class Unknown:
 
 
 @dataclass(frozen=True, slots=True)
+class Dynamic:
+    """A value known at launch time only: the Python ``source`` of an expression over
+    substitutions that gives it (:mod:`~rosvar.ros2.frontends.python.launch_time`), its type
+    where known, and its text where it is a string substitutions give directly."""
+
+    source: Text
+    kind: type | None
+    text: Text | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Conditional:
+    """``then`` where the Python ``test`` holds at launch time, else ``otherwise``: values of
+    the branches of an ``if`` on a launch-time value that are no Python expression (dicts of
+    parameters, unknown values); a node's parameters hold each under its condition."""
+
+    test: Text
+    then: Value
+    otherwise: Value
+
+
+@dataclass(frozen=True, slots=True)
+class FileHandle:
+    """``open(path)`` of a file of the workspace, read where its text is used; a path known
+    at launch time only is its text (the file is named by a launch configuration)."""
+
+    path: str | Text
+
+
+@dataclass(frozen=True, slots=True)
+class LaunchYaml:
+    """``yaml.safe_load`` of a file named at launch time, indexed by ``keys``: its
+    ``['/**']['ros__parameters']`` given as a node's parameters is that parameter file."""
+
+    path: Text
+    keys: tuple[Key, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
 class Condition:
     """``IfCondition(x)`` and kin: the attribute (``if``/``unless``) and its text."""
 
@@ -74,12 +113,68 @@ class Description:
 
 
 @dataclass(eq=False, slots=True)
+class SourceFile:
+    """A file being read (the launch file or a module), for the places of diagnostics."""
+
+    filename: str
+    lines: list[str]
+
+
+@dataclass(eq=False, slots=True)
 class Function:
-    """A function defined in the launch file, called by reading its body again."""
+    """A function defined in the launch file or a module it imports, called by reading its
+    body again; ``owner`` is the class whose body defines it (for ``super()``)."""
 
     node: ast.FunctionDef
     scope: Scope
     defaults: dict[str, Value]
+    file: SourceFile
+    owner: Class | None = None
+
+
+@dataclass(eq=False, slots=True)
+class ModuleScope:
+    """A module of the workspace, read by the same interpreter: its names."""
+
+    qualified: str
+    scope: Scope
+
+
+@dataclass(eq=False, slots=True)
+class Class:
+    """A class defined in the file or a module: its bases and its body's names; a
+    ``@dataclass``'s fields in order (``__init__`` is made of them), each with its default
+    or its ``default_factory`` (a factory is called for each object)."""
+
+    name: str
+    bases: list[Value]
+    scope: Scope
+    fields: list[DataField] | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class DataField:
+    """One field of a ``@dataclass``: its name and default (``None``: required)."""
+
+    name: str
+    default: ast.expr | None
+    factory: bool
+
+
+@dataclass(eq=False, slots=True)
+class Instance:
+    """An object of a :class:`Class`, with the attributes its methods set."""
+
+    cls: Class
+    attributes: dict[str, Value] = field(default_factory=dict)
+
+
+@dataclass(eq=False, slots=True)
+class Super:
+    """``super()`` in a method of ``owner``: lookups start after it."""
+
+    instance: Value
+    owner: Class
 
 
 @dataclass(frozen=True, slots=True)
@@ -110,6 +205,10 @@ Key = str | int | float | bool | None | Text
 Value = (
     Key
     | Unknown
+    | Dynamic
+    | Conditional
+    | FileHandle
+    | LaunchYaml
     | Condition
     | Module
     | Source
@@ -118,6 +217,10 @@ Value = (
     | LaunchContext
     | Description
     | Function
+    | ModuleScope
+    | Class
+    | Instance
+    | Super
     | Method
     | Entity
     | list["Value"]
