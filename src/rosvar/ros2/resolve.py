@@ -15,8 +15,9 @@ from typing import Protocol
 
 import yaml
 
+from rosvar import bounded_yaml
 from rosvar.diagnostics import Location
-from rosvar.files import FileRefused, read_file
+from rosvar.files import Confinement, read_file
 from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
@@ -57,7 +58,7 @@ def resolve_ros2(
 ) -> Ros2Resolution:
     space = ConditionSpace()
     model = interpret(workspace, space, file, arguments, env or {})
-    return restrict(model, Constant(space))
+    return restrict(model, Constant(space), workspace.confinement())
 
 
 def resolve_variational(
@@ -65,7 +66,8 @@ def resolve_variational(
 ) -> Ros2Resolution:
     """The same, read off the file's model over every command line (``analysis.model``)."""
     model = analysis.model(file)
-    return restrict(model, Restriction(analysis, model, arguments, env))
+    view = Restriction(analysis, model, arguments, env)
+    return restrict(model, view, analysis.workspace.confinement())
 
 
 class View(Protocol):
@@ -101,8 +103,9 @@ class Constant:
         return value
 
 
-def restrict(model: LaunchModel, view: View) -> Ros2Resolution:
-    """The present nodes and errors of ``model`` in the configuration ``view`` shows."""
+def restrict(model: LaunchModel, view: View, confinement: Confinement) -> Ros2Resolution:
+    """The present nodes and errors of ``model`` in the configuration ``view`` shows (its
+    parameter files read within ``confinement``)."""
     result = Ros2Resolution()
     for error in model.errors:
         if view.holds(error.condition):
@@ -112,7 +115,7 @@ def restrict(model: LaunchModel, view: View) -> Ros2Resolution:
     for decl in model.nodes:
         if view.holds(decl.condition):
             try:
-                result.nodes.append(_node(decl, view, result.warnings))
+                result.nodes.append(_node(decl, view, confinement, result.warnings))
             except (ValueError, ResolutionError) as error:
                 result.errors.append(
                     {
@@ -124,7 +127,9 @@ def restrict(model: LaunchModel, view: View) -> Ros2Resolution:
     return result
 
 
-def _node(decl: NodeDecl, view: View, warnings: list[dict[str, object]]) -> dict[str, object]:
+def _node(
+    decl: NodeDecl, view: View, confinement: Confinement, warnings: list[dict[str, object]]
+) -> dict[str, object]:
     def text(key: str) -> str | None:
         value = view.pick(decl.field(key), decl.location, f"<node> attribute '{key}'")
         return None if value is None else str(value)
@@ -152,7 +157,7 @@ def _node(decl: NodeDecl, view: View, warnings: list[dict[str, object]]) -> dict
     sources: list[Source] = []
     for parameter in given.parameters:
         if isinstance(parameter, str):
-            sources.append(Source(entries=tuple(parameter_file(parameter))))
+            sources.append(Source(entries=tuple(parameter_file(parameter, confinement))))
         else:
             sources.append(Source(*parameter))
     for param in decl.parameters:
@@ -176,7 +181,7 @@ def _node(decl: NodeDecl, view: View, warnings: list[dict[str, object]]) -> dict
                     }
                 )
                 continue
-            sources.append(Source(entries=tuple(parameter_file(path))))
+            sources.append(Source(entries=tuple(parameter_file(path, confinement))))
         elif param.name is not None and param.value is not None:
             # global (-p) and inline (a generated file) parameters both apply to /**
             value = typed(known(param.value, "parameter value"))
@@ -203,13 +208,15 @@ def _node(decl: NodeDecl, view: View, warnings: list[dict[str, object]]) -> dict
     }
 
 
-def parameter_file(path: str) -> list[tuple[str, dict[str, object]]]:
-    """A parameter file's entries (node pattern, parameters); ``ValueError`` when unreadable."""
+def parameter_file(path: str, confinement: Confinement) -> list[tuple[str, dict[str, object]]]:
+    """A parameter file's entries (node pattern, parameters), read through the workspace's
+    gate and the bounded YAML loader; ``ValueError`` when refused or unreadable (a refused
+    file is never opened, so nothing of it is told)."""
     try:
-        text = read_file(path).decode()
-    except (FileRefused, OSError, UnicodeDecodeError) as error:
+        text = read_file(path, confinement).decode()
+    except (OSError, UnicodeDecodeError) as error:
         raise ValueError(f"parameter file {path} is not readable: {error}") from None
     try:
-        return file_entries(yaml.safe_load(text))
+        return file_entries(bounded_yaml.safe_load(text))
     except yaml.YAMLError as error:
         raise ValueError(f"parameter file {os.path.basename(path)}: {error}") from None

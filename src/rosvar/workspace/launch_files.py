@@ -37,6 +37,15 @@ class LaunchFormat(StrEnum):
     PYTHON = "python"
 
 
+INVALID_FILE = {
+    (RosVersion.ROS1, LaunchFormat.XML): "Invalid roslaunch XML syntax",
+    (RosVersion.ROS2, LaunchFormat.XML): "Invalid ROS 2 XML launch file",
+    (RosVersion.ROS2, LaunchFormat.YAML): "Invalid ROS 2 YAML launch file",
+    (RosVersion.ROS2, LaunchFormat.PYTHON): "Invalid ROS 2 Python launch file",
+}
+"""How an unreadable launch file is told, naming its format (roslaunch's own words)."""
+
+
 @dataclass(frozen=True)
 class _Rule:
     """Files named ``*SUFFIX`` (only in a ``launch/`` folder when ``in_launch_folder``) are

@@ -8,6 +8,7 @@ import os
 import sys
 from typing import TYPE_CHECKING
 
+from rosvar.diagnostics import Location
 from rosvar.outputs.commands.exit_codes import EXIT_FAILS, EXIT_INPUT, EXIT_OK, EXIT_USAGE
 from rosvar.outputs.commands.loading import (
     environment_of,
@@ -121,5 +122,6 @@ def _resolve_ros2(
                 print(f"  remap {source} -> {target}")
         _print_graph(graph)
         for error in result.errors:
-            print(f"error: {error['message']}")
+            at = Location(**error["location"])  # type: ignore[arg-type]
+            print(f"error: {shown_location(at)}: {error['message']}")
     return EXIT_OK if result.ok else EXIT_FAILS

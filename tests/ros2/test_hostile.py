@@ -1,0 +1,191 @@
+"""Hostile ROS 2 input, end to end: ``rosvar`` run in a subprocess whose memory and time
+this test bounds (``RLIMIT_AS``, a timeout), on small hostile files built here. Each case
+must end in a diagnostic naming the right format and place, never a traceback, never a
+value read from outside the workspace."""
+
+from __future__ import annotations
+
+import json
+import os
+import resource
+import subprocess
+import sys
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+import rosvar
+from differential.ros2.test_fixtures import PACKAGE_XML
+
+MEMORY = 1024 * 1024 * 1024
+"""Address space of one run: the hostile cases blew past a gigabyte."""
+SECONDS = 60.0
+"""Wall time of one run, far above what a bounded run takes on a loaded machine."""
+SECRET = "TOPSECRET"
+
+
+def _limit() -> None:
+    resource.setrlimit(resource.RLIMIT_AS, (MEMORY, MEMORY))
+
+
+def run(*args: str) -> subprocess.CompletedProcess[str]:
+    """``rosvar ARGS`` within :data:`MEMORY` and :data:`SECONDS`."""
+    source = str(Path(rosvar.__file__).parent.parent)
+    env = {**os.environ, "PYTHONPATH": source}
+    return subprocess.run(
+        [sys.executable, "-m", "rosvar", *args],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=SECONDS,
+        preexec_fn=_limit,
+        check=False,
+    )
+
+
+def workspace(tmp_path: Path, files: Mapping[str, str]) -> Path:
+    """A workspace ``ws`` of one package ``pkg`` holding ``files``, and a folder ``outside``
+    beside it with a parameter file (and a broken one) holding :data:`SECRET`."""
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    (outside / "secret.yaml").write_text(f"/**:\n  ros__parameters:\n    s: {SECRET}\n")
+    (outside / "broken.yaml").write_text(f"/**:\n  ros__parameters:\n    s: {SECRET}: [\n")
+    (outside / "out.launch.xml").write_text(f'<launch><node pkg="pkg" exec="{SECRET}"/></launch>')
+    package = tmp_path / "ws" / "pkg"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text(PACKAGE_XML)
+    for name, text in files.items():
+        (package / name).write_text(text)
+    return tmp_path / "ws"
+
+
+def resolve(ws: Path, launch: str) -> tuple[subprocess.CompletedProcess[str], dict[str, Any]]:
+    """``rosvar resolve --json`` of ``launch`` (below ``ws/pkg``), checked to end in a
+    document, not a traceback."""
+    done = run("resolve", str(ws), "--launch", str(ws / "pkg" / launch), "--json")
+    assert "Traceback" not in done.stderr, done.stderr[-2000:]
+    return done, json.loads(done.stdout)
+
+
+def error_codes(document: Mapping[str, Any]) -> list[str]:
+    return [str(e["code"]) for e in document["errors"]]
+
+
+PYTHON_HEAD = """from launch import LaunchDescription
+from launch.actions import GroupAction, SetLaunchConfiguration, DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+def generate_launch_description():
+"""
+
+
+def _reads(path: str, python: str) -> Mapping[str, str]:
+    """A node reading parameter file ``path`` (``python`` as the Python frontend's
+    expression) in each way ROS 2 files name one."""
+    return {
+        "launch/from.launch.xml": (
+            f'<launch><node pkg="pkg" exec="n"><param from="{path}"/></node></launch>'
+        ),
+        "launch/global.launch.xml": (
+            f'<launch><set_parameters_from_file filename="{path}"/>'
+            '<node pkg="pkg" exec="n"/></launch>'
+        ),
+        "launch/from.launch.yaml": (
+            f"launch:\n- node:\n    pkg: pkg\n    exec: n\n    param:\n    - from: '{path}'\n"
+        ),
+        "launch/from.launch.py": "import os\n"
+        + "from ament_index_python.packages import get_package_share_directory\n"
+        + PYTHON_HEAD
+        + f"    return LaunchDescription([Node(package='pkg', executable='n', "
+        f"parameters=[{python}])])\n",
+    }
+
+
+LAUNCHES = sorted(_reads("", ""))
+
+
+@pytest.mark.parametrize("name", ["secret.yaml", "broken.yaml"])
+@pytest.mark.parametrize("how", ["absolute", "dotdot"])
+@pytest.mark.parametrize("launch", LAUNCHES)
+def test_parameter_files_outside_the_workspace_are_not_read(
+    tmp_path: Path, launch: str, how: str, name: str
+) -> None:
+    if how == "absolute":
+        path = str(tmp_path / "outside" / name)
+        python = repr(path)
+    else:
+        path = f"$(find-pkg-share pkg)/../../outside/{name}"
+        python = (
+            f"os.path.join(get_package_share_directory('pkg'), '..', '..', 'outside', {name!r})"
+        )
+    ws = workspace(tmp_path, _reads(path, python))
+    done, document = resolve(ws, launch)
+    assert SECRET not in done.stdout + done.stderr
+    assert not document["ok"]
+    messages = [str(e["message"]) for e in document["errors"]]
+    assert any("outside the workspace" in m and name in m for m in messages), messages
+    for error in document["errors"]:
+        assert error["location"]["line"] > 0, error
+
+
+def test_a_launch_file_linked_from_outside_is_not_read(tmp_path: Path) -> None:
+    ws = workspace(tmp_path, {})
+    link = ws / "pkg" / "launch" / "link.launch.xml"
+    link.symlink_to(tmp_path / "outside" / "out.launch.xml")
+    done, document = resolve(ws, "launch/link.launch.xml")
+    assert SECRET not in done.stdout
+    assert error_codes(document) == ["file-outside-workspace"]
+    assert str(link) in str(document["errors"])
+    analyzed = run("analyze", str(ws), "--json")
+    assert SECRET not in analyzed.stdout and "Traceback" not in analyzed.stderr
+
+
+@pytest.mark.parametrize(
+    ("name", "text", "told", "line"),
+    [
+        ("bad.launch.py", "def generate_launch_description(:\n", "ROS 2 Python launch file", 1),
+        ("bad.launch.yaml", "launch:\n- arg: {name: a\n", "ROS 2 YAML launch file", 3),
+        ("bad.launch.xml", "<launch>\n<arg name='a'>\n</launch>", "ROS 2 XML launch file", 3),
+    ],
+)
+def test_errors_name_the_format_and_the_place(
+    tmp_path: Path, name: str, text: str, told: str, line: int
+) -> None:
+    ws = workspace(tmp_path, {f"launch/{name}": text})
+    _done, document = resolve(ws, f"launch/{name}")
+    (error,) = document["errors"]
+    assert told in error["message"] and "roslaunch" not in error["message"]
+    assert error["location"]["line"] == line
+
+
+BOMB = "a: &a [x,x,x,x,x,x,x,x,x]\n" + "".join(
+    f"{n}: &{n} [{', '.join([f'*{p}'] * 9)}]\n" for p, n in zip("abcdefg", "bcdefgh", strict=True)
+)
+
+
+@pytest.mark.parametrize(
+    ("text", "problem"),
+    [
+        (BOMB + "/**:\n  ros__parameters:\n    p: *h\n", "more than 100000 nodes"),
+        ("/**:\n  ros__parameters: &a\n    p: *a\n", "refers to a node that contains it"),
+        ("/**:\n  ros__parameters:\n    p: " + "[" * 4000 + "]" * 4000 + "\n", "nest"),
+        (
+            "/**:\n  ros__parameters:\n    p:\n"
+            + "".join("  " * (i + 3) + f"k{i}:\n" for i in range(3000))
+            + "  " * 3003
+            + "1\n",
+            "nest",
+        ),
+    ],
+)
+def test_parameter_files_are_read_within_the_yaml_limits(
+    tmp_path: Path, text: str, problem: str
+) -> None:
+    ws = workspace(tmp_path, _reads("$(find-pkg-share pkg)/params.yaml", ""))
+    (ws / "pkg" / "params.yaml").write_text(text)
+    _done, document = resolve(ws, "launch/from.launch.xml")
+    assert not document["ok"]
+    (error,) = document["errors"]
+    assert problem in error["message"] and error["location"]["line"] == 1
