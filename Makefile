@@ -6,6 +6,8 @@
 #   make test        set up what the tests need as well, then run ruff, mypy and the whole
 #                    pytest suite (the browser tests in a process of their own, away from the
 #                    analyses' memory); what CI runs
+#   make check       the tests' set-up, then the fast loop of everyday work: ruff, mypy and the
+#                    pytest suite without the browser tests and the slow ones
 #   make bench       the tests' set-up, then the benchmarks (they drive the browser too)
 #   make setup       only the set-up to run rosvar (idempotent; quick when already done)
 #   make test-setup  only the set-up of the tests (idempotent)
@@ -43,7 +45,7 @@ APT_ENV := env DEBIAN_FRONTEND=noninteractive
 SUDO := $(shell if [ "$$(id -u)" != 0 ] && command -v sudo >/dev/null 2>&1; then echo sudo; fi)
 
 .DEFAULT_GOAL := setup
-.PHONY: ros2-oracle setup test-setup system-packages test-system-packages bytecode demo test bench
+.PHONY: ros2-oracle setup test-setup system-packages test-system-packages bytecode demo lint check test bench
 
 # The ROS 2 launch oracle (the real ros2/launch, for the ROS 2 differential tests), when
 # ../shared/ros2-oracle is beside the repository; its setup.sh is idempotent.
@@ -107,10 +109,15 @@ demo: setup
 	$(VENV)/bin/rosvar analyze examples
 	$(VENV)/bin/rosvar serve $(DEMO_PATHS) --port $(DEMO_PORT)
 
-test: test-setup
+lint: test-setup
 	$(VPY) -m ruff check src tests bench tools docs/screenshot.py
 	$(VPY) -m ruff format --check .
 	$(VPY) -m mypy
+
+check: lint
+	$(VPY) -m pytest -q --ignore=tests/outputs/web -m "not slow"
+
+test: lint
 	$(VPY) -m pytest -q --ignore=tests/outputs/web
 	$(VPY) -m pytest -q tests/outputs/web
 

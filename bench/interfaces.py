@@ -15,7 +15,7 @@ import statistics
 import subprocess
 import sys
 
-CORPUS = "/work/shared/corpus"
+CORPUS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared", "corpus")
 SYSTEMS = ("kobuki", "turtlebot2", "lizi", "husky")
 TARGET_S = 2.0
 RUNS = 5

@@ -18,7 +18,7 @@ from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.documents.query import result_document
 from rosvar.workspace import discover
 
-CORPUS = "/work/shared/corpus"
+CORPUS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared", "corpus")
 TARGET_MS = 20.0
 RUNS = 50
 QUERIES = (

@@ -108,7 +108,7 @@ def test_restricted_graph_equals_resolved_graph(ws: LaunchWorkspace) -> None:
         assert expected["topics"]  # the test can fail: the graph is not empty
 
 
-CORPUS = Path("/work/shared/corpus")
+CORPUS = Path(__file__).resolve().parents[3] / "shared" / "corpus"  # ../shared of the checkout
 MAX_CONFIGURATIONS = 12
 
 

@@ -232,7 +232,7 @@ def test_queries_see_the_plugins_topics_published_by_the_spawner(ws: LaunchWorks
     assert publishers == {"/spawn"}  # the node that loads the plugin
 
 
-CORPUS = Path("/work/shared/corpus")
+CORPUS = Path(__file__).resolve().parents[4] / "shared" / "corpus"  # ../shared of the checkout
 HUSKY_SPAWN = CORPUS / "husky/husky/husky_gazebo/launch/spawn_husky.launch"
 HUSKY_CONFIGURATIONS = [
     ({}, {}),

@@ -202,7 +202,7 @@ def test_fixture_agrees_with_xacro(tmp_path: Path, fixture: str) -> None:
     assert expanded.description.root is not None  # the test can fail: something was expanded
 
 
-CORPUS = Path("/work/shared/corpus")
+CORPUS = Path(__file__).resolve().parents[4] / "shared" / "corpus"  # ../shared of the checkout
 MAX_CONFIGURATIONS = 40
 
 

@@ -14,7 +14,7 @@ from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, NodeInterface, NodeKind, Role
 from workspace.interfaces.ros2_packages import write_ros2_packages
 
-CORPUS = Path("/work/shared/corpus")
+CORPUS = Path(__file__).resolve().parents[4] / "shared" / "corpus"  # ../shared of the checkout
 SCHEMA = Path(__file__).resolve().parents[3] / "docs" / "schema" / "interfaces.schema.json"
 needs_corpus = pytest.mark.skipif(not CORPUS.is_dir(), reason="corpus not available")
 

@@ -39,11 +39,13 @@ from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, EnvInput, Slot
 from rosvar.logic.terms import Apply, Hole, Term, TermError, is_term, register
 
-MAX_ELEMENTS: Final = 200_000
+MAX_ELEMENTS: Final = 100_000
 """Elements one expansion may make (a macro that calls itself twice per level doubles them
-at each level)."""
-MAX_STEPS: Final = 2_000_000
-"""Elements one expansion may walk, macro bodies and blocks included."""
+at each level); the largest real descriptions make a few thousand."""
+MAX_STEPS: Final = 500_000
+"""Elements one expansion may walk, macro bodies and blocks included. Both budgets are the
+whole expansion's: once one is spent, the walk stops everywhere (the rest is unknown), as
+walking on without making anything would cost as much as making it."""
 MAX_MACRO_DEPTH: Final = 100
 """Macro calls nested in one another; xacro itself fails a little deeper, on Python's
 recursion limit, so a deeper expansion is reported and not followed."""
@@ -153,6 +155,7 @@ class Expansion:
         self.nesting = 0
         self.steps = 0
         self.made = 0
+        self.exhausted = False  # a budget of the whole expansion is spent
         self._location = Location(file)
         self._limited: set[str] = set()
         self.evaluator = Evaluator(self, Substituter(self))
@@ -364,7 +367,10 @@ class Expansion:
 
     def step(self) -> bool:
         self.steps += 1
+        if self.exhausted:
+            return False
         if self.steps > MAX_STEPS:
+            self.exhausted = True
             return self.limit(f"more than {MAX_STEPS} elements walked")
         return True
 
@@ -413,6 +419,7 @@ class Expansion:
             self.made += 1
             if self.made > MAX_ELEMENTS:
                 self.limit(f"more than {MAX_ELEMENTS} elements made")
+                self.exhausted = True  # the walk stops: see MAX_STEPS
                 return
             element = XElement(entity.tag, self.pc, entity.location)
             parent.children.append(element)
