@@ -189,3 +189,104 @@ def test_parameter_files_are_read_within_the_yaml_limits(
     assert not document["ok"]
     (error,) = document["errors"]
     assert problem in error["message"] and error["location"]["line"] == 1
+
+
+def analyze(ws: Path) -> dict[str, Any]:
+    """``rosvar analyze --json`` of ``ws``, checked to end in a document."""
+    done = run("analyze", str(ws), "--json")
+    assert "Traceback" not in done.stderr, done.stderr[-2000:]
+    document: dict[str, Any] = json.loads(done.stdout)
+    return document
+
+
+def diagnostic_codes(document: Mapping[str, Any]) -> set[str]:
+    return {d["code"] for file in document["files"] for d in file["diagnostics"]}
+
+
+DOUBLINGS = 40
+"""Each value twice the previous: 10 * 2^39 characters at the end."""
+
+
+def _doubling(launch: str) -> str:
+    last = f"v{DOUBLINGS - 1}"
+    if launch.endswith(".py"):
+        steps = "".join(
+            f"        SetLaunchConfiguration('v{i}', "
+            f"[LaunchConfiguration('v{i - 1}'), LaunchConfiguration('v{i - 1}')]),\n"
+            for i in range(1, DOUBLINGS)
+        )
+        return (
+            PYTHON_HEAD
+            + "    return LaunchDescription([SetLaunchConfiguration('v0', 'xxxxxxxxxx'),\n"
+            + steps
+            + f"        Node(package='pkg', executable='n', name=LaunchConfiguration('{last}'))])\n"
+        )
+    if launch.endswith(".yaml"):
+        steps = "".join(
+            f"- let: {{name: v{i}, value: '$(var v{i - 1})$(var v{i - 1})'}}\n"
+            for i in range(1, DOUBLINGS)
+        )
+        return (
+            "launch:\n- let: {name: v0, value: xxxxxxxxxx}\n"
+            + steps
+            + f"- node: {{pkg: pkg, exec: n, name: '$(var {last})'}}\n"
+        )
+    tag = "let" if "let" in launch else "arg"
+    value = "value" if tag == "let" else "default"
+    steps = "".join(
+        f'<{tag} name="v{i}" {value}="$(var v{i - 1})$(var v{i - 1})"/>'
+        for i in range(1, DOUBLINGS)
+    )
+    return (
+        f'<launch><{tag} name="v0" {value}="xxxxxxxxxx"/>{steps}'
+        f'<node pkg="pkg" exec="n" name="$(var {last})"/></launch>'
+    )
+
+
+def _choices(launch: str, count: int) -> str:
+    if launch.endswith(".py"):
+        declared = "".join(
+            f"        DeclareLaunchArgument('a{i}', default_value='x', choices=['x', 'y']),\n"
+            for i in range(count)
+        )
+        name = ", ".join(f"LaunchConfiguration('a{i}')" for i in range(count))
+        return (
+            PYTHON_HEAD
+            + f"    return LaunchDescription([\n{declared}"
+            + f"        Node(package='pkg', executable='n', name=[{name}])])\n"
+        )
+    declared = "".join(
+        f'<arg name="a{i}" default="x"><choice value="x"/><choice value="y"/></arg>'
+        for i in range(count)
+    )
+    name = "".join(f"$(var a{i})" for i in range(count))
+    return f'<launch>{declared}<node pkg="pkg" exec="n" name="{name}"/></launch>'
+
+
+@pytest.mark.parametrize(
+    "launch",
+    [
+        "launch/let.launch.xml",
+        "launch/arg.launch.xml",
+        "launch/let.launch.yaml",
+        "launch/set.launch.py",
+    ],
+)
+def test_doubling_values_are_bounded_in_every_frontend(tmp_path: Path, launch: str) -> None:
+    ws = workspace(tmp_path, {launch: _doubling(launch)})
+    _done, document = resolve(ws, launch)
+    assert not document["ok"]
+    assert "value-unknown" in error_codes(document) or "node-invalid" in error_codes(document)
+    assert "value-too-complex" in diagnostic_codes(analyze(ws))
+
+
+@pytest.mark.parametrize("count", [12, 20])
+@pytest.mark.parametrize("launch", ["launch/choices.launch.xml", "launch/choices.launch.py"])
+def test_concatenated_choices_are_bounded(tmp_path: Path, launch: str, count: int) -> None:
+    ws = workspace(tmp_path, {launch: _choices(launch, count)})
+    _done, document = resolve(ws, launch)
+    assert document["ok"] and document["nodes"][0]["name"] == "x" * count
+    for command in ("analyze", "features", "check"):
+        done = run(command, str(ws))
+        assert "Traceback" not in done.stderr, (command, done.stderr[-2000:])
+    assert "value-too-complex" in diagnostic_codes(analyze(ws))
