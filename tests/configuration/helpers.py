@@ -190,6 +190,11 @@ def canonical(entries: Sequence[Mapping[str, Any]]) -> list[str]:
     return sorted(json.dumps(e, sort_keys=True) for e in entries)
 
 
+def _unknowable(errors: Sequence[Mapping[str, Any]]) -> bool:
+    """Whether ``errors`` are all of values rosvar cannot know (a package not found)."""
+    return bool(errors) and all(error["code"] == "value-unknown" for error in errors)
+
+
 def same_as_resolve(analysis: Analysis, state: ConfigurationState) -> int:
     """A complete product's graph against ``rosvar resolve`` of its command lines: both must
     agree on whether each command line loads, and one that loads must give the graph's
@@ -201,6 +206,12 @@ def same_as_resolve(analysis: Analysis, state: ConfigurationState) -> int:
             resolve(analysis, [m.path for m in members], given(members)).to_json()
         )
         ours = anon_free(product(state, [m.spelled for m in members]))
+        if ours["ok"] and not resolution["ok"] and _unknowable(resolution["errors"]):
+            # what rosvar cannot see (a package outside the roots) stops roslaunch: the
+            # product says that parts of it are unknown, and never that it launches
+            assert state.unknown and state.launches is not True, state.command
+            topics = None
+            continue
         assert ours["ok"] == resolution["ok"], state.command
         assert resolution["ok"] or state.launches is not True, state.command
         if not resolution["ok"]:
