@@ -290,3 +290,29 @@ def test_concatenated_choices_are_bounded(tmp_path: Path, launch: str, count: in
         done = run(command, str(ws))
         assert "Traceback" not in done.stderr, (command, done.stderr[-2000:])
     assert "value-too-complex" in diagnostic_codes(analyze(ws))
+
+
+@pytest.mark.parametrize(
+    ("launch", "text"),
+    [
+        (
+            "launch/groups.launch.xml",
+            "<launch>\n" + "<group>" * 990 + '<node pkg="pkg" exec="n"/>' + "</group>" * 990,
+        ),
+        (
+            "launch/groups.launch.py",
+            PYTHON_HEAD
+            + "    g = Node(package='pkg', executable='n')\n"
+            + "    for i in range(5000):\n        g = GroupAction([g])\n"
+            + "    return LaunchDescription([g])\n",
+        ),
+    ],
+)
+def test_deep_groups_are_nesting_too_deep(tmp_path: Path, launch: str, text: str) -> None:
+    if launch.endswith(".xml"):
+        text += "\n</launch>"
+    ws = workspace(tmp_path, {launch: text})
+    _done, document = resolve(ws, launch)
+    assert error_codes(document) == ["nesting-too-deep"]
+    assert document["errors"][0]["location"]["line"] == (2 if launch.endswith(".xml") else 8)
+    assert "nesting-too-deep" in diagnostic_codes(analyze(ws))

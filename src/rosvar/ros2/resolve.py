@@ -30,6 +30,9 @@ from rosvar.ros2.launch import interpret
 from rosvar.ros2.tags.node import ProcessKind
 from rosvar.workspace import Workspace
 
+UNINTERPRETED = frozenset({"nesting-too-deep"})
+"""Diagnostics of parts the walk left out (a limit): no configuration can be told without them."""
+
 
 @dataclass
 class Ros2Resolution:
@@ -107,6 +110,12 @@ def restrict(model: LaunchModel, view: View, confinement: Confinement) -> Ros2Re
     """The present nodes and errors of ``model`` in the configuration ``view`` shows (its
     parameter files read within ``confinement``)."""
     result = Ros2Resolution()
+    for diagnostic in model.diagnostics:
+        if diagnostic.code in UNINTERPRETED:
+            where = diagnostic.location.to_json()
+            result.errors.append(
+                {"code": diagnostic.code, "message": diagnostic.message, "location": where}
+            )
     for error in model.errors:
         if view.holds(error.condition):
             result.errors.append(

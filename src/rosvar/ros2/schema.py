@@ -35,18 +35,25 @@ def check(it: Interpretation[Context], root: Entity) -> None:
 def _check(
     it: Interpretation[Context], root: Entity, attributes: dict[str, frozenset[str]]
 ) -> None:
-    for entity in root.children:
-        allowed = attributes.get(entity.tag)
+    """The check of every element below ``root``, in document order; a loop rather than a
+    recursion: a hostile file nests thousands of groups, and the walk itself stops at its
+    nesting limit (``nesting-too-deep``), not here."""
+    pending: list[tuple[Entity, bool]] = [(child, True) for child in reversed(root.children)]
+    while pending:
+        entity, action = pending.pop()
+        allowed = (attributes if action else ATTRIBUTES).get(entity.tag)
         if allowed is None:
-            it.fail(
-                it.space.true,
-                "tag-unknown",
-                f"Unrecognized entity of the type: {entity.tag}",
-                entity.location,
-            )
-            continue
-        container = entity.tag in CONTAINERS  # its children are actions, checked below
-        children = [] if container else [child.tag for child in entity.children]
+            if action:
+                it.fail(
+                    it.space.true,
+                    "tag-unknown",
+                    f"Unrecognized entity of the type: {entity.tag}",
+                    entity.location,
+                )
+                continue
+            allowed = frozenset()
+        container = action and entity.tag in CONTAINERS  # its children are actions
+        children = [] if container or not action else [child.tag for child in entity.children]
         unexpected = sorted(
             name
             for name in [*entity.attributes, *children]
@@ -59,22 +66,8 @@ def _check(
                 f"Unexpected attribute(s) found in `{entity.tag}`: {set(unexpected)}",
                 entity.location,
             )
-        elif container:
-            _check(it, entity, attributes)
-        else:
-            _nested(it, entity)
-
-
-def _nested(it: Interpretation[Context], entity: Entity) -> None:
-    """Children of a leaf action (``<param>`` in a node, ``<arg>`` in an include...)."""
-    for child in entity.children:
-        allowed = ATTRIBUTES.get(child.tag, frozenset())
-        unexpected = sorted(n for n in child.attributes if n not in allowed and n not in ALWAYS)
-        if unexpected:
-            it.fail(
-                it.space.true,
-                "attribute-unexpected",
-                f"Unexpected attribute(s) found in `{child.tag}`: {set(unexpected)}",
-                child.location,
-            )
-        _nested(it, child)
+            if action:
+                continue
+        # a container's children are actions; a leaf action's (``<param>`` in a node, ``<arg>``
+        # in an include...) are checked for their attributes only, at every depth
+        pending.extend((child, container) for child in reversed(entity.children))
