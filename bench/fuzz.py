@@ -32,6 +32,7 @@ from types import FrameType
 from rosvar.frontends import xml
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.describe import describe_model
+from rosvar.outputs.documents.resolution import resolution_document
 from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 
@@ -156,7 +157,9 @@ def _check(text: str, directory: Path, index: int) -> None:
     try:
         analysis = Analysis(discover([directory / "fuzz"], ros_package_path=""))
         json.dumps(describe_model(analysis.model(str(launch))), ensure_ascii=False)
-        json.dumps(resolve(analysis, [str(launch)], {}, {}).to_json(), ensure_ascii=False)
+        json.dumps(
+            resolution_document(resolve(analysis, [str(launch)], {}, {})), ensure_ascii=False
+        )
     finally:
         launch.unlink()
         xml.clear_cache()

@@ -20,8 +20,10 @@ from typing import Any
 import pytest
 
 from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.resolution import Resolution
 from rosvar.interpreter.workspace_models import Analysis
-from rosvar.ros1.resolve import Resolution, resolve
+from rosvar.outputs.documents.resolution import resolution_document
+from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 
 TESTS = Path(__file__).resolve().parent
@@ -140,7 +142,7 @@ class LaunchWorkspace:
             for label in sorted(chosen):
                 resolver = self.resolve if label == "shared" else self.resolve_fresh
                 ours = resolver(file, args, env)
-                differences = compare(ours.to_json(), theirs)
+                differences = compare(resolution_document(ours), theirs)
                 if differences:
                     problems.append(f"args={dict(args)} env={dict(env)} [{label}]: {differences}")
         assert problems == [], "\n".join(problems)

@@ -160,27 +160,16 @@ def test_the_layout_names_the_dialects_and_every_module() -> None:
 
 
 CORE_TO_DIALECT_PENDING = {
-    # issue 27 item 3 (typed node accessors through the dialect, h-resolve): ROS 2's resolved
-    # nodes' namespaces, and the names of ROS 2 nodes the launch file does not name
-    "rosvar.analyses.communication -> rosvar.ros2.conventions.namespaces",
-    "rosvar.analyses.query.collections -> rosvar.ros2.conventions.namespaces",
-    # the robot description's edges of one configuration use ROS 1's restriction until one
-    # resolution serves both dialects (issue 27 item 4, h-resolve)
-    "rosvar.analyses.robot_description.edges -> rosvar.ros1.resolve",
-    # item 4 (one resolution for both dialects, h-resolve): the resolve command and the
-    # graph's node entries still call each dialect's resolution and conventions
-    "rosvar.outputs.commands.resolve -> rosvar.ros1.resolve",
-    "rosvar.outputs.commands.resolve -> rosvar.ros2.conventions.namespaces",
-    "rosvar.outputs.commands.resolve -> rosvar.ros2.resolve",
+    # issue 27 items 4 and 5: the configuration graph's node entries (outputs/web) still
+    # render each dialect's own fields themselves (ROS 1's typed attributes and tests, ROS 2's
+    # merged parameters) instead of through the dialect
     "rosvar.outputs.web.entries -> rosvar.ros1.resolve",
     # issue 30 item 1 (h-engine): the graph loads what a typed text reaches as ROS 1's
     # resolution loads it (the same conversions and checks), until one resolution serves both
     "rosvar.configuration.graph -> rosvar.ros1.resolve",
     "rosvar.outputs.web.entries -> rosvar.ros1.validation",
-    "rosvar.outputs.web.entries -> rosvar.ros2.conventions.namespaces",
     "rosvar.outputs.web.entries -> rosvar.ros2.conventions.parameters",
     "rosvar.outputs.web.entries -> rosvar.ros2.resolve",
-    "rosvar.ros2.resolve -> rosvar.ros1.resolve",
 }
 """Imports other steps of issue 27 remove, listed so that nothing can join them: the tests
 fail on anything new, and on a listed import once it is gone (then strike it here)."""

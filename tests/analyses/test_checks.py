@@ -9,11 +9,12 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from rosvar.analyses.checks import Check, check_model, check_models
-from rosvar.analyses.communication import resolved_graph
+from rosvar.analyses.communication import Channel, resolved_graph
 from rosvar.diagnostics import Severity
+from rosvar.interpreter.resolution import Restriction
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.documents.findings import finding_document
-from rosvar.ros1.resolve import Restriction, resolve
+from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, Role
@@ -62,17 +63,17 @@ def _expected(
 ) -> set[tuple[Check, str]]:
     """The findings of one configuration, from its resolution."""
     resolution = resolve(analysis, [file], args)
-    graph = resolved_graph(resolution.nodes, interfaces, resolution.scopes, resolution.params)
+    graph = resolved_graph(resolution.nodes, interfaces, resolution.params)
     found = set()
-    for topic in graph["topics"]:
-        name = str(topic["name"])
-        if len(topic["publishers"]) >= 2:  # type: ignore[arg-type]
+    for topic in graph[Channel.TOPICS]:
+        name = topic.name
+        if len(topic.providers) >= 2:
             found.add((Check.MULTIPLE_PROVIDERS, name))
-        if len(topic["types"]) >= 2:  # type: ignore[arg-type]
+        if len(topic.types) >= 2:
             found.add((Check.TYPE_MISMATCH, name))
-        if not topic["subscribers"]:
+        if not topic.users:
             found.add((Check.NO_SUBSCRIBER, name))
-        if not topic["publishers"]:
+        if not topic.providers:
             found.add((Check.NO_PROVIDER, name))
     if "/reader/rate" not in resolution.params:
         found.add((Check.PARAM_UNSET, "/reader/rate"))

@@ -9,20 +9,19 @@ from typing import TYPE_CHECKING
 import pytest
 
 from rosvar.analyses.communication import (
-    JSON_SIDES,
     Channel,
     Edge,
     LaunchedNode,
-    graph_json,
     model_edges,
     resolved_graph,
     restrict,
+    uses_graph,
 )
 from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.resolution import Restriction
 from rosvar.interpreter.workspace_models import Analysis
-from rosvar.ros1.resolve import Restriction, resolve
-from rosvar.ros2.resolve import resolve_ros2
-from rosvar.ros2.tags.node import ROS2_NODES
+from rosvar.ros1.resolve import resolve
+from rosvar.ros2.nodes import ROS2_NODES
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.catalogue import load_catalogue
 from rosvar.workspace.interfaces.extraction import extract_interfaces
@@ -101,11 +100,9 @@ def test_restricted_graph_equals_resolved_graph(ws: LaunchWorkspace) -> None:
         kept = restrict(edges, restriction.holds)
         assert all(e.static for e in kept)
         uses = [(e.node, e.role, e.name, e.type) for e in kept]
-        expected = resolved_graph(
-            resolution.nodes, interfaces, resolution.scopes, resolution.params
-        )
-        assert graph_json(uses) == expected
-        assert expected["topics"]  # the test can fail: the graph is not empty
+        expected = resolved_graph(resolution.nodes, interfaces, resolution.params)
+        assert uses_graph(uses) == expected
+        assert expected[Channel.TOPICS]  # the test can fail: the graph is not empty
 
 
 CORPUS = Path(__file__).resolve().parents[3] / "shared" / "corpus"  # ../shared of the checkout
@@ -138,8 +135,8 @@ def test_corpus_restriction_equals_resolution(system: str) -> None:
                 continue
             kept = restrict(edges, Restriction(analysis, model, args, {}).holds)
             uses = [(e.node, e.role, e.name, e.type) for e in kept]
-            assert graph_json(uses) == resolved_graph(
-                resolution.nodes, interfaces, resolution.scopes, resolution.params
+            assert uses_graph(uses) == resolved_graph(
+                resolution.nodes, interfaces, resolution.params
             ), (file, args)
             compared += bool(kept)
     assert compared >= 10  # configurations with a graph were compared
@@ -205,9 +202,7 @@ def test_camera_info_lies_beside_the_remapped_image(ws: LaunchWorkspace) -> None
         resolution = resolve(analysis, [file], {"relay": relay})
         kept = restrict(edges, Restriction(analysis, model, {"relay": relay}, {}).holds)
         uses = [(e.node, e.role, e.name, e.type) for e in kept]
-        assert graph_json(uses) == resolved_graph(
-            resolution.nodes, interfaces, resolution.scopes, resolution.params
-        )
+        assert uses_graph(uses) == resolved_graph(resolution.nodes, interfaces, resolution.params)
 
 
 ROS2_LAUNCH = """\
@@ -251,12 +246,9 @@ def test_ros2_graph_is_the_interfaces_resolved(tmp_path: Path) -> None:
     where the launch file gives none, ``~/x`` below the node, the first matching remap
     (the global ``set_remap`` before the node's own), a composable node's plugin."""
     analysis, file, interfaces, _edges = _ros2_setup(tmp_path)
-    nodes = resolve_ros2(analysis.workspace, file, {}).nodes
-    graph = resolved_graph(nodes, interfaces)
+    graph = resolved_graph(analysis.resolve([file]).nodes, interfaces, {})
     pairs = {
-        str(channel): {
-            e["name"]: tuple(e[side] for side in JSON_SIDES[channel]) for e in graph[channel]
-        }
+        str(channel): {e.name: (list(e.providers), list(e.users)) for e in graph[channel]}
         for channel in Channel
     }
     talker, ear, front, second = "/r1/arm/talker", "/r1/ear", "/cam/front", "/second"
@@ -291,15 +283,15 @@ def test_ros2_restricted_graph_equals_resolved_graph(tmp_path: Path) -> None:
     model = analysis.model(file)
     for robot, relay in itertools.product(["r1", "r2"], ["true", "false"]):
         args = {"robot": robot, "relay": relay}
-        resolution = resolve_ros2(analysis.workspace, file, args)
+        resolution = analysis.resolve([file], args)
         assert resolution.ok
         kept = restrict(edges, Restriction(analysis, model, args, {}).holds)
         assert all(e.static for e in kept)
         uses = [(e.node, e.role, e.name, e.type) for e in kept]
-        expected = resolved_graph(resolution.nodes, interfaces)
-        assert graph_json(uses) == expected
-        assert any(t["name"] == f"/{robot}/chatter" for t in expected["topics"])
-        relayed = any(t["name"] == "/relayed" for t in expected["topics"])
+        expected = resolved_graph(resolution.nodes, interfaces, resolution.params)
+        assert uses_graph(uses) == expected
+        assert any(t.name == f"/{robot}/chatter" for t in expected[Channel.TOPICS])
+        relayed = any(t.name == "/relayed" for t in expected[Channel.TOPICS])
         assert relayed == (relay == "true")
 
 

@@ -8,11 +8,17 @@ import itertools
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from rosvar.analyses.communication import graph_json, model_edges, resolved_graph, restrict
+from rosvar.analyses.communication import (
+    Channel,
+    model_edges,
+    resolved_graph,
+    restrict,
+    uses_graph,
+)
 from rosvar.diagnostics import Location
+from rosvar.interpreter.resolution import Restriction
 from rosvar.interpreter.workspace_models import Analysis
-from rosvar.ros1.resolve import Restriction, resolve
-from rosvar.ros2.resolve import resolve_ros2
+from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import (
@@ -78,11 +84,9 @@ def test_restricted_graph_equals_resolved_graph(ws: LaunchWorkspace) -> None:
         restriction = Restriction(analysis, model, args, {})
         kept = restrict(edges, restriction.holds)
         uses = [(e.node, e.role, e.name, e.type) for e in kept]
-        expected = resolved_graph(
-            resolution.nodes, interfaces, resolution.scopes, resolution.params
-        )
-        assert graph_json(uses) == expected
-        topics = {t["name"] for t in expected["topics"]}
+        expected = resolved_graph(resolution.nodes, interfaces, resolution.params)
+        assert uses_graph(uses) == expected
+        topics = {t.name for t in expected[Channel.TOPICS]}
         assert ("/planner/plan" in topics) == (plan == "true")
         assert f"/robot/{imu}" in topics
 
@@ -168,10 +172,10 @@ def test_a_ros2_nodes_own_parameters_name_its_uses(tmp_path: Path) -> None:
     assert {e.name for e in edges} == {"/r1/chatter", "/remote/chatter"}
     for remote in ("true", "false"):
         args = {"remote": remote}
-        resolution = resolve_ros2(analysis.workspace, file, args)
+        resolution = analysis.resolve([file], args)
         kept = restrict(edges, Restriction(analysis, model, args, {}).holds)
         uses = [(e.node, e.role, e.name, e.type) for e in kept]
-        expected = resolved_graph(resolution.nodes, interfaces)
-        assert graph_json(uses) == expected
-        [topic] = expected["topics"]
-        assert topic["name"] == ("/remote/chatter" if remote == "true" else "/r1/chatter")
+        expected = resolved_graph(resolution.nodes, interfaces, resolution.params)
+        assert uses_graph(uses) == expected
+        [topic] = expected[Channel.TOPICS]
+        assert topic.name == ("/remote/chatter" if remote == "true" else "/r1/chatter")

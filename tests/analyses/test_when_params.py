@@ -10,24 +10,26 @@ import pytest
 from configuration.helpers import choices
 from rosvar.analyses.checks import Check, check_model
 from rosvar.analyses.communication import (
+    Channel,
     Edge,
     entry_when,
-    graph_json,
     launched_units,
     model_edges,
     resolved_graph,
     restrict,
+    uses_graph,
 )
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.when import params_read, refusal, refusals
 from rosvar.configuration.engine import Configurator
 from rosvar.diagnostics import Severity
+from rosvar.interpreter.resolution import Restriction
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER
 from rosvar.outputs.web.entries import render
-from rosvar.ros1.resolve import Restriction, resolve
+from rosvar.ros1.resolve import resolve
 from rosvar.workspace.hints import load_hints
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, Role
@@ -151,9 +153,9 @@ def test_restriction_equals_resolution(ws: LaunchWorkspace) -> None:
         resolution = resolve(analysis, [file], args)
         assert resolution.ok
         kept = restrict(edges, Restriction(analysis, model, args, {}).holds)
-        graph = resolved_graph(resolution.nodes, interfaces, resolution.scopes, resolution.params)
-        assert graph_json([(e.node, e.role, e.name, e.type) for e in kept]) == graph
-        seen.add(tuple(topic["name"] for topic in graph["topics"]))
+        graph = resolved_graph(resolution.nodes, interfaces, resolution.params)
+        assert uses_graph([(e.node, e.role, e.name, e.type) for e in kept]) == graph
+        seen.add(tuple(topic.name for topic in graph[Channel.TOPICS]))
     assert len(seen) == 4  # imu and fused each present and absent
 
 
@@ -173,8 +175,8 @@ def test_resolve_gives_the_topics_of_the_parameter(
 ) -> None:
     analysis, model, file, interfaces = _setup(ws)
     resolution = resolve(analysis, [file], args)
-    graph = resolved_graph(resolution.nodes, interfaces, resolution.scopes, resolution.params)
-    names = {topic["name"] for topic in graph["topics"]}
+    graph = resolved_graph(resolution.nodes, interfaces, resolution.params)
+    names = {topic.name for topic in graph[Channel.TOPICS]}
     assert names == {"/robot/odom", "/robot/debug"} | ({"/robot/imu"} if imu else set())
     kept = restrict(
         model_edges(analysis.space, model, interfaces), Restriction(analysis, model, args, {}).holds

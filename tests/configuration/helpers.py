@@ -15,6 +15,7 @@ from rosvar.configuration.choices import UserChoice
 from rosvar.configuration.command import given
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.documents.resolution import resolution_document
 from rosvar.outputs.web.entries import render
 from rosvar.ros import names
 from rosvar.ros1.resolve import resolve
@@ -30,7 +31,7 @@ def configurator(
     """Feature ids read ``a.launch``, ``a.launch:x``, ``a.launch:x=1``; with ``interfaces``,
     the nodes' topics read from the workspace's sources."""
     analysis = ws.analysis()
-    model = extract(analysis, products=True)
+    model = extract(analysis, products=True, env=env)
     spelling = {os.path.realpath(f.file): os.path.basename(f.file) for f in model.files}
     found = extract_interfaces(analysis.workspace.packages.values()) if interfaces else None
     return Configurator(analysis, model, env, spelling, interfaces=found, render=render)
@@ -203,7 +204,7 @@ def same_as_resolve(analysis: Analysis, state: ConfigurationState) -> int:
     topics: set[str] | None = set() if state.commands else None  # None: not compared
     for members in state.commands:
         resolution = anon_free(
-            resolve(analysis, [m.path for m in members], given(members)).to_json()
+            resolution_document(resolve(analysis, [m.path for m in members], given(members)))
         )
         ours = anon_free(product(state, [m.spelled for m in members]))
         if ours["ok"] and not resolution["ok"] and _unknowable(resolution["errors"]):

@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 from configuration.helpers import canonical, choices, configurator, product, run
 from rosvar.configuration.command import Launch, given, group
 from rosvar.configuration.engine import ConfigurationState
+from rosvar.outputs.documents.resolution import resolution_document
 from rosvar.ros.version import RosVersion
 from rosvar.ros1.resolve import resolve
 
@@ -89,7 +90,9 @@ def assert_resolves_the_same(ws: LaunchWorkspace, state: ConfigurationState) -> 
     """Each command line of a complete product loads what the product shows."""
     assert state.commands
     for members in state.commands:
-        resolution = resolve(ws.analysis(), [m.path for m in members], given(members)).to_json()
+        resolution = resolution_document(
+            resolve(ws.analysis(), [m.path for m in members], given(members))
+        )
         ours = product(state, [m.spelled for m in members])
         assert ours["ok"] == resolution["ok"], state.command
         assert canonical(ours["nodes"]) == canonical(resolution["nodes"]), state.command

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from configuration.helpers import configurator, run
+from configuration.helpers import configurator, run, states
 from configuration.test_judgement import FILES as PRESENCE_FILES
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration import conflicts
@@ -101,3 +101,23 @@ def test_a_typed_text_that_cannot_clash_rules_the_clash_out(ws: LaunchWorkspace)
     [open_] = run(engine, "select a.launch:on=<other>").conflicts
     assert open_.status == "possible"
     assert run(engine, "set a.launch:on=no").conflicts == []
+
+
+def test_a_clash_an_unset_environment_makes_excludes_the_pair(ws: LaunchWorkspace) -> None:
+    """turtlebot_world.launch includes ``$(optenv TURTLEBOT_BASE kobuki).launch.xml``: with
+    the variable unset (the product's command sets none) it loads kobuki's nodes, which
+    create's file loads too, so the two files are never one product (the engine's solver
+    once quantified the environment out: a value of it that nobody sets avoided the clash)."""
+    ws.launch(
+        "world.launch", '  <include file="$(find pkg)/launch/$(optenv BASE kobuki).launch"/>\n'
+    )
+    ws.launch("kobuki.launch", '  <node pkg="pkg" type="mux" name="mux"/>\n')
+    ws.launch("create.launch", '  <node pkg="pkg" type="mux" name="mux"/>\n')
+    state = run(configurator(ws), "select world.launch")
+    assert states(state)["create.launch"] == "deselected*"
+    # with BASE=create, world.launch loads create's file itself: no clash, and create.launch
+    # is no product of its own next to it
+    state = run(
+        configurator(ws, env={"BASE": "create"}), "select world.launch", "select create.launch"
+    )
+    assert state.refused == []

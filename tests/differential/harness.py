@@ -41,6 +41,7 @@ from typing import Any
 
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.documents.resolution import resolution_document
 from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 
@@ -357,7 +358,7 @@ def _first_line(text: str) -> str:
 
 
 def compare(ours: Mapping[str, Any], theirs: Mapping[str, Any]) -> list[str]:
-    """Differences between rosvar's resolution (``to_json()``) and the oracle's result.
+    """Differences between rosvar's resolution (its JSON document) and the oracle's result.
 
     Empty when they agree. When both load, nodes and tests must match on the oracle's fields
     (``filename`` up to ``realpath``, ``respawn_delay``/``time_limit`` as floats) and the
@@ -563,7 +564,9 @@ def run_system(
             if case.crash is not None:
                 continue
             try:
-                case.ours = resolve(analysis, [case.file], case.config, rosvar_env).to_json()
+                case.ours = resolution_document(
+                    resolve(analysis, [case.file], case.config, rosvar_env)
+                )
             except Exception as error:
                 case.crash = _crash_line(error)
         results = pending.result()

@@ -106,7 +106,7 @@ def compare_products(
             discover(roots, ros_package_path=""), env_values={k: [v] for k, v in env.items()}
         )
         engine = Configurator(
-            analysis, extract(analysis, files=run.files(), products=True), env, render=render
+            analysis, extract(analysis, files=run.files(), products=True, env=env), render=render
         )
         rng = random.Random(f"{SEED}:{run.name}")
         cases = []

@@ -19,6 +19,7 @@ import pytest
 from rosvar.diagnostics import Location, Severity
 from rosvar.frontends import xml
 from rosvar.interpreter.model import LaunchModel
+from rosvar.outputs.documents.resolution import resolution_document
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -227,7 +228,7 @@ def test_bad_file_is_reported_and_the_rest_analysed(
     assert isinstance(matching[0].severity, Severity)
     assert not marker.exists()
     resolution = ws.resolve(entry)
-    document = resolution.to_json()
+    document = resolution_document(resolution)
     assert set(document) >= {"ok", "nodes", "params", "conflicts", "errors"}
     if matching[0].severity is Severity.ERROR:
         assert not resolution.ok

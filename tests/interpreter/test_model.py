@@ -76,6 +76,7 @@ def test_a_schema_reads_only_the_fields_it_launches() -> None:
             name=plain,
             namespace=NodeField(("namespace",)),
             full_name=plain,
+            label=plain,
             args=plain,
             plugin=constant_field(None),
             launched=("name",),

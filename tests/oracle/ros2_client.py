@@ -18,6 +18,8 @@ from typing import Any
 
 import pytest
 
+from rosvar.interpreter.resolution import Resolution
+
 REPOSITORY = Path(__file__).resolve().parents[2]
 ORACLE = REPOSITORY.parent / "shared" / "ros2-oracle"
 VENV = REPOSITORY / ".oracle-ros2-venv"
@@ -67,6 +69,27 @@ def run_oracle(
         raise RuntimeError(f"the ROS 2 oracle failed: {done.stderr[-2000:]}")
     result: dict[str, Any] = json.loads(done.stdout)
     return result
+
+
+def rosvar_nodes(result: Resolution) -> dict[str, Any]:
+    """rosvar's resolved nodes as the oracle records them: :data:`KEYS`, named as the oracle
+    names them (``name`` the node's own, ``remappings`` in order); a process has only its
+    ``kind`` and ``cmd``."""
+    nodes = []
+    for node in result.nodes:
+        record = {key: node.attributes.get(key) for key in ("kind", "plugin", "container")}
+        record.update(arguments=node.attributes.get("arguments"), cmd=node.attributes.get("cmd"))
+        if node.attributes.get("kind") != "process":
+            record.update(
+                package=node.package,
+                executable=node.executable,
+                name=node.own_name,
+                namespace=node.namespace,
+                remappings=[list(pair) for pair in node.remaps],
+                parameters=node.parameters,
+            )
+        nodes.append(record)
+    return {"nodes": nodes}
 
 
 MISSING_EXECUTABLE = re.compile(r"/__missing_exec__/([^\s\\\"'/]+)")

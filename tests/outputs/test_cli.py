@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 import pytest
 
 import rosvar
+from outputs.schemas import schema_check
 from rosvar.analyses.feature_model import extraction
 from rosvar.outputs.cli import main, parser
 from rosvar.outputs.commands.exit_codes import (
@@ -34,7 +35,6 @@ from workspace.interfaces.ros2_packages import MANIFEST, write_ros2_packages
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
 
-SCHEMAS = Path(__file__).resolve().parents[2] / "docs" / "schema"
 
 GOOD = """<launch>
   <arg name="use_teleop" default="true"/>
@@ -60,14 +60,6 @@ def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
     code = main(list(argv))
     out, err = capsys.readouterr()
     return code, out, err
-
-
-def schema_check(document: object, name: str) -> None:
-    jsonschema = pytest.importorskip("jsonschema")
-    path = SCHEMAS / name
-    if not path.is_file():
-        pytest.skip(f"no schema {path}")
-    jsonschema.validate(document, json.loads(path.read_text()))
 
 
 @pytest.fixture
@@ -193,9 +185,11 @@ def test_resolve_a_ros2_file(tmp_path: Path, capsys: pytest.CaptureFixture[str])
     code, out, _err = run(
         capsys, "resolve", "--launch", str(package / "a.launch.xml"), "ns:=/s", "--json"
     )
-    node, unnamed = json.loads(out)["nodes"]
-    assert (node["fqn"], node["parameters"]) == ("/s/n", {"k": 1})
-    assert (unnamed["name"], unnamed["fqn"], unnamed["namespace"]) == (None, None, "/s")
+    resolved = json.loads(out)
+    schema_check(resolved, "resolve.schema.json")  # one shape for ROS 1 and ROS 2
+    node, unnamed = resolved["nodes"]
+    assert (node["name"], node["fqn"], node["parameters"]) == ("/s/n", "/s/n", {"k": 1})
+    assert (unnamed["name"], unnamed["fqn"], unnamed["namespace"]) == ("/s/⟨anonymous⟩", None, "/s")
     # the configured product's graph has the same nodes, drawn with ROS 2's fields
     file = str(package / "a.launch.xml")
     code, out, _err = run(
@@ -878,3 +872,25 @@ def test_resolve_reads_the_hints_when(
     assert topics == {"true": ["/chatter"], "false": [], "": []}  # unset: the default, false
     _code, out, _err = run(capsys, "resolve", str(ws.root), "--launch", file, "loud:=true")
     assert "/chatter" in out  # without hints: the source's publisher
+
+
+def test_resolve_prints_a_ros2_process_and_the_warnings(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """One printer for both ROS versions: a process is listed as its program names it, and
+    what ``ros2 launch`` warns of is printed where it is written."""
+    package = ament_package(tmp_path / "p")
+    file = package / "a.launch.xml"
+    file.write_text(
+        """<launch>
+        <node pkg="p" exec="e" name="n"><param from="/nonexistent.yaml"/></node>
+        <executable cmd="/usr/bin/sleep 5"/>
+        </launch>"""
+    )
+    code, out, _err = run(capsys, "resolve", str(tmp_path), "--launch", str(file))
+    assert code == EXIT_OK
+    assert out.splitlines() == [
+        "node  /n  (p/e)",
+        "node  /⟨sleep⟩  (-//usr/bin/sleep)",
+        f"warning: {file}:2:9: Parameter file path is not a file: /nonexistent.yaml",
+    ]

@@ -65,3 +65,16 @@ def test_an_included_files_arguments_are_inputs_where_the_include_does_not_set_t
     assert list(model.inputs) == ["y", "x"]  # ros2 launch sets x:=... before loading
     assert [a.name for a in model.args] == ["y", "x"]
     assert [os.path.realpath(f) for f in model.settable.values()] == [str(tmp_path / "inner.xml")]
+
+
+def test_a_given_argument_no_file_declares_is_set_all_the_same(tmp_path: Path) -> None:
+    """``ros2 launch a.launch.xml g:=x`` sets ``g`` before loading, declared or not: given a
+    value, the model knows it as an input from the start (``rosvar resolve``'s analysis);
+    without one, reading it fails, as in ros2 launch."""
+    plain, file = analysis(tmp_path, '<launch><node pkg="p" exec="e" name="$(var g)"/></launch>')
+    assert "g" not in plain.model(file).inputs
+    assert [e.code for e in plain.resolve([file]).errors] == ["var-undefined"]
+    given = Analysis(plain.workspace, extra_values={"g": ["x"]})
+    assert "g" in given.model(file).inputs
+    assert [n.name for n in given.resolve([file], {"g": "x"}).nodes] == ["/x"]
+    assert not given.resolve([file]).ok  # left out: not set

@@ -6,9 +6,12 @@ from pathlib import Path
 
 import pytest
 
-from rosvar.ros2.resolve import resolve_ros2
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.ros2.substitutions import Call, SubstitutionSyntaxError, parse
 from rosvar.workspace import discover
+
+MANIFEST = """<package format="3"><name>p</name>
+<export><build_type>ament_cmake</build_type></export></package>"""
 
 
 def test_nested_and_quoted_arguments() -> None:
@@ -26,7 +29,7 @@ def test_malformed_text_is_refused(text: str) -> None:
 
 
 def test_anon_names_are_kept_per_id_and_scoped_by_groups(tmp_path: Path) -> None:
-    (tmp_path / "package.xml").write_text("<package format='3'><name>p</name></package>")
+    (tmp_path / "package.xml").write_text(MANIFEST)
     file = tmp_path / "a.launch.xml"
     file.write_text(
         """<launch>
@@ -36,8 +39,8 @@ def test_anon_names_are_kept_per_id_and_scoped_by_groups(tmp_path: Path) -> None
           <node pkg="p" exec="e" name="$(anon m)" namespace="z"/>
         </launch>"""
     )
-    result = resolve_ros2(discover([str(tmp_path)]), str(file), {})
-    names = [node["name"] for node in result.nodes]
+    result = Analysis(discover([str(tmp_path)])).resolve([str(file)])
+    names = [node.own_name for node in result.nodes]
     assert names[0] == names[1] and names[2] != names[3]
     assert all(str(name).startswith(("n_", "m_")) for name in names)
 
@@ -45,7 +48,7 @@ def test_anon_names_are_kept_per_id_and_scoped_by_groups(tmp_path: Path) -> None
 def test_find_exec_is_kept_as_its_text_with_a_warning(tmp_path: Path) -> None:
     """The PATH that ``$(find-exec)`` searches is the launching machine's: the value stays
     the substitution's text, inside a ``$(command)`` too, and the launch goes on."""
-    (tmp_path / "package.xml").write_text("<package format='3'><name>p</name></package>")
+    (tmp_path / "package.xml").write_text(MANIFEST)
     file = tmp_path / "a.launch.xml"
     file.write_text(
         """<launch><arg name="tool" default="xacro"/>
@@ -55,7 +58,7 @@ def test_find_exec_is_kept_as_its_text_with_a_warning(tmp_path: Path) -> None:
           <node pkg="p" exec="e" name="m" args="$(find-exec)"/>
         </launch>"""
     )
-    workspace = discover([str(tmp_path)])
-    result = resolve_ros2(workspace, str(file), {"tool": "ros2"})
-    assert result.nodes[0]["parameters"] == {"d": "$(command $(find-exec ros2) f.xacro)"}
-    assert [error["code"] for error in result.errors] == ["substitution-invalid"]
+    analysis = Analysis(discover([str(tmp_path)]), extra_values={"tool": ["ros2"]})
+    result = analysis.resolve([str(file)], {"tool": "ros2"})
+    assert result.nodes[0].parameters == {"d": "$(command $(find-exec ros2) f.xacro)"}
+    assert [error.code for error in result.errors] == ["substitution-invalid"]

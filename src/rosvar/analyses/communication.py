@@ -12,8 +12,8 @@ namespaces and the global remaps (``<set_remap>``, before the node's own) count 
 configurations, and each remap has its own condition: each use of a name becomes *edges*,
 one per resolved name, each with the condition under which the node has it.
 
-The same resolution, fed with one configuration's concrete node (:func:`resolved_graph`),
-gives ``rosvar resolve`` its topics: restricting the variational edges to a configuration
+The same resolution, fed with one configuration's nodes (:func:`resolved_graph`), gives
+``rosvar resolve`` its topics: restricting the variational edges to a configuration
 must give exactly those.
 """
 
@@ -29,13 +29,13 @@ from rosvar.analyses.param_values import ROS2_PARAMETERS, ParamValues, Unknown, 
 from rosvar.analyses.when import When, concrete_holds, when_condition
 from rosvar.diagnostics import Location, Severity
 from rosvar.interpreter.model import LaunchModel, NodeDecl, NodeSchema, Raw
+from rosvar.interpreter.resolution import ResolvedNode
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Term
 from rosvar.ros import names
 from rosvar.ros.version import RosVersion
-from rosvar.ros2.conventions.namespaces import make_absolute
 from rosvar.workspace.interfaces.model import (
     INDEX,
     Default,
@@ -105,6 +105,20 @@ class LaunchedNode:
             (),
             _text(schema.plugin.text(texts)),
             ros2=schema.version is RosVersion.ROS2,
+        )
+
+    @staticmethod
+    def resolved(node: ResolvedNode) -> LaunchedNode:
+        """A node one configuration starts (``rosvar resolve``'s)."""
+        return LaunchedNode(
+            node.package or "",
+            node.executable or "",
+            node.namespace or names.SEP,
+            node.own_name or "",
+            node.args,
+            node.remaps,
+            node.plugin or "",
+            node.ros2,
         )
 
     def named(self, interface: NodeInterface) -> LaunchedNode:
@@ -443,23 +457,22 @@ def restrict(edges: Iterable[Edge], holds: Callable[[BDD], bool]) -> list[Edge]:
 
 
 def resolved_graph(
-    nodes: Sequence[Mapping[str, object]],
+    nodes: Sequence[ResolvedNode],
     interfaces: Interfaces,
-    scopes: Sequence[Mapping[str, str]] | None = None,
-    params: Mapping[str, object] | None = None,
+    params: Mapping[str, object],
     more: Iterable[Edge] = (),
-) -> dict[str, list[dict[str, object]]]:
-    """``topics``, ``services`` and ``actions`` of resolved nodes (``rosvar resolve``'s, ROS
-    1's or ROS 2's); a hinted entry's where its ``when:`` holds with the node's args
-    (``scopes``, one per node) and ROS 1's parameter server (``params``). Without them (ROS 2,
-    whose nodes keep their own parameters) a ``when:`` is not known, and the entry is kept as
-    the variational graph keeps it. ``more``: edges of the configuration beyond the nodes'
-    interfaces (a spawned description's plugins, bridges: :class:`Described`'s)."""
+) -> ResolvedGraph:
+    """The topics, services and actions of one configuration's nodes (``rosvar resolve``'s);
+    a hinted entry's where its ``when:`` holds with the node's args and the parameter server
+    (``params``). A ROS 2 node's parameters are its own: there a ``when:`` is not known, and
+    the entry is kept as the variational graph keeps it. ``more``: edges of the configuration
+    beyond the nodes' interfaces (a spawned description's plugins, bridges:
+    :class:`Described`'s)."""
     uses: list[tuple[str, Role, str, str | None]] = [
         (edge.node, edge.role, edge.name, edge.type) for edge in more if edge.static
     ]
-    for index, node in enumerate(nodes):
-        launched = _resolved_node(node)
+    for node in nodes:
+        launched = LaunchedNode.resolved(node)
         unit = launched.unit()
         interface = None if unit is None else find_interface(interfaces, unit)
         if interface is None:
@@ -471,33 +484,32 @@ def resolved_graph(
         for entry in interface.entries:
             if entry.role not in CHANNEL:
                 continue
-            if entry.when is not None and scopes is not None and params is not None:
+            if entry.when is not None and node.parameters is None:
                 value = _param_value(params, launched, interface)
-                if not concrete_holds(entry.when, scopes[index], value):
+                if not concrete_holds(entry.when, node.scope, value):
                     continue
             for use in _resolved_uses(node, launched, interface, entry, params):
                 resolved = launched.resolve(use.beside or use.name)
                 name = table.get(resolved, resolved)
                 name = name if use.beside is None else _beside(name)
                 uses.append((launched.full_name, use.role, name, use.type))
-    return graph_json(uses)
+    return uses_graph(uses)
 
 
 def _resolved_uses(
-    node: Mapping[str, object],
+    node: ResolvedNode,
     launched: LaunchedNode,
     interface: NodeInterface,
     entry: Entry,
-    params: Mapping[str, object] | None,
+    params: Mapping[str, object],
 ) -> list[Entry]:
     """:func:`entry_uses` in one configuration: ROS 1's parameter server (``params``), or
     a ROS 2 node's own parameters."""
     named = entry.named_by
     if named is None:
         return [entry]
-    own = node.get("parameters")
-    if params is None:  # ROS 2: the node's own parameters, by their plain names
-        values: Mapping[str, object] = own if isinstance(own, Mapping) else {}
+    if node.parameters is not None:  # ROS 2: the node's own parameters, by their plain names
+        values: Mapping[str, object] = node.parameters
         key: Callable[[str], str] = lambda parameter: parameter.lstrip("~/")  # noqa: E731
     else:
         values, key = params, launched.resolve
@@ -523,29 +535,6 @@ def _resolved_uses(
     return found
 
 
-def _resolved_node(node: Mapping[str, object]) -> LaunchedNode:
-    """A node of ``rosvar resolve`` (ROS 2's carry their ``executable``, their namespace
-    already composed)."""
-    remaps = node.get("remappings" if "executable" in node else "remaps") or []
-    assert isinstance(remaps, list)
-    pairs = [(str(a), str(b)) for a, b in remaps]
-    if "executable" in node:
-        namespace = make_absolute(_text(node.get("namespace")) or None) or names.SEP
-        name, plugin = _text(node.get("name")), _text(node.get("plugin"))
-        executable = _text(node.get("executable"))
-        return LaunchedNode(
-            _text(node.get("package")), executable, namespace, name, "", pairs, plugin, True
-        )
-    return LaunchedNode(
-        _text(node.get("package")),
-        _text(node.get("type")),
-        _text(node.get("namespace")),
-        str(node["name"]).rsplit(names.SEP, 1)[-1],
-        _text(node.get("args")),
-        pairs,
-    )
-
-
 def _param_value(
     params: Mapping[str, object], launched: LaunchedNode, interface: NodeInterface
 ) -> Callable[[str], object]:
@@ -562,14 +551,26 @@ def _param_value(
     return value
 
 
-def graph_json(
-    uses: Iterable[tuple[str, Role, str, str | None]],
-) -> dict[str, list[dict[str, object]]]:
-    """Uses (node, role, name, type) grouped by channel and name, sorted."""
-    document: dict[str, list[dict[str, object]]] = {}
+@dataclass(frozen=True)
+class NameUses:
+    """One resolved name of a channel in one configuration: the types the nodes' sources
+    give it (more than one is a mismatch), the nodes feeding it and those using it."""
+
+    name: str
+    types: tuple[str, ...]
+    providers: tuple[str, ...]
+    users: tuple[str, ...]
+
+
+ResolvedGraph = dict[Channel, list[NameUses]]
+"""One configuration's communication graph: each channel's names, sorted."""
+
+
+def uses_graph(uses: Iterable[tuple[str, Role, str, str | None]]) -> ResolvedGraph:
+    """Uses (node, role, name, type) grouped by channel and name."""
+    graph: ResolvedGraph = {}
     for channel in Channel:
         provide, use = SIDES[channel]
-        provided, used = JSON_SIDES[channel]
         grouped: dict[str, tuple[set[str], set[str], set[str]]] = {}
         for node, role, name, type_ in uses:
             if role not in (provide, use):
@@ -578,8 +579,8 @@ def graph_json(
             if type_ is not None:
                 types.add(type_)
             (providers if role is provide else users).add(node)
-        document[str(channel)] = [
-            {"name": name, "types": sorted(t), provided: sorted(p), used: sorted(u)}
+        graph[channel] = [
+            NameUses(name, tuple(sorted(t)), tuple(sorted(p)), tuple(sorted(u)))
             for name, (t, p, u) in sorted(grouped.items())
         ]
-    return document
+    return graph

@@ -170,9 +170,12 @@ class Configurator:
         """``model`` from ``extract(analysis, products=True)``; ``progress``: told how far
         the build is (a large workspace takes a while); ``interfaces`` wire the nodes to
         their topics; ``render``: the graph's entries as the presentation shows them
-        (``rosvar.outputs.web.entries.render``)."""
+        (``rosvar.outputs.web.entries.render``); ``env``, if given, must be the model's
+        (``extract(..., env=)``: the solver fixes the environment as the graph does)."""
         if not model.products:
             raise ValueError("the configurator needs extract(..., products=True)")
+        if env is not None and dict(env) != dict(model.environment):
+            raise ValueError("the configurator's env must be the model's: extract(..., env=)")
         self._build(analysis, model, env, spelling, progress or _silent, interfaces, render)
 
     @collector_paused()  # a long-lived heap: left young, the collector rescanned it each step
@@ -191,7 +194,7 @@ class Configurator:
         self.catalog = Catalog(model, spelling)
         progress("solver", 0, 1)
         self.derivation = Derivation(model)
-        self.lowering = Lowering(analysis, model, env or {})
+        self.lowering = Lowering(analysis, model, model.environment)
         file_ids = {entry.path: entry.id for entry in self.catalog.files}
         self.graph = VariationalGraph(
             analysis,

@@ -39,6 +39,7 @@ from rosvar.interpreter.model import (
     Raw,
     YamlDecl,
 )
+from rosvar.interpreter.resolution import ResolutionError, evaluated
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
@@ -46,10 +47,8 @@ from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
 from rosvar.ros1.resolve import (
-    ResolutionError,
     check_remap,
     deferred_value,
-    evaluated,
     rosparam_pairs,
     test_fields,
     typed_node,

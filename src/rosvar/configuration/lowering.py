@@ -21,7 +21,7 @@ from rosvar.logic.atoms import Atom, PredicateAtom, SlotAtom
 from rosvar.logic.bdd import BDD, transfer
 from rosvar.logic.conditions import decide_predicate
 from rosvar.logic.inputs import EnvInput, Input
-from rosvar.logic.terms import PackageTable, term_inputs
+from rosvar.logic.terms import term_inputs
 from rosvar.memo import Memo
 
 _NONE: frozenset[str] = frozenset()
@@ -50,9 +50,7 @@ class Lowering:
         space = analysis.space
         self.space = space
         self.manager = model.solver.manager
-        self.host = PackageTable(
-            {name: package.path for name, package in analysis.workspace.packages.items()}
-        )
+        self.host = analysis.package_table()
         solver_variables = set(model.solver.variables)
         self.feature_inputs: set[Input] = {arg.input for file in model.files for arg in file.args}
         self.concrete: dict[Input, str] = {}

@@ -19,7 +19,8 @@ from rosvar.ros.version import RosVersion
 if TYPE_CHECKING:
     from rosvar.frontends.entity import ParseResult
     from rosvar.frontends.xml import Snapshot
-    from rosvar.interpreter.model import LaunchModel
+    from rosvar.interpreter.model import LaunchModel, NodeSchema
+    from rosvar.interpreter.resolution import Resolver
     from rosvar.logic.conditions import ConditionSpace
     from rosvar.logic.inputs import Slot
     from rosvar.workspace import Workspace
@@ -39,6 +40,16 @@ class Dialect(Protocol):
 
     @property
     def loader(self) -> Loader: ...
+
+    @property
+    def nodes(self) -> NodeSchema:
+        """What its node declarations' fields mean (its node tags stamp them with it)."""
+        ...
+
+    @property
+    def resolver(self) -> Resolver:
+        """What its launch tool starts in one configuration, read off the models."""
+        ...
 
     def interpret(
         self,

@@ -140,6 +140,9 @@ class NodeSchema:
     None where neither is given)."""
     full_name: NodeField
     """Its namespace joined with its name (None without a name)."""
+    label: NodeField
+    """The name people see: the full name, or (ROS 2, where its code names the node)
+    ``⟨EXEC⟩`` in its namespace."""
     args: NodeField
     plugin: NodeField
     """A ROS 2 composable node's class."""
@@ -148,7 +151,7 @@ class NodeSchema:
 
     def __post_init__(self) -> None:
         accessors = (self.package, self.executable, self.name, self.namespace)
-        for accessor in (*accessors, self.full_name, self.args, self.plugin):
+        for accessor in (*accessors, self.full_name, self.label, self.args, self.plugin):
             missing = set(accessor.keys) - set(self.launched)
             if missing:
                 raise ValueError(f"{self.version.label} node fields {missing} are not launched")

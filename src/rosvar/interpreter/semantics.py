@@ -16,7 +16,8 @@ from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.dialect import Loader
 from rosvar.interpreter.interpretation import Handler, Interpretation, Substituter
-from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.model import LaunchModel, NodeSchema
+from rosvar.interpreter.resolution import Resolver
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import Slot
 from rosvar.ros.version import RosVersion
@@ -34,13 +35,15 @@ before being declared (to know from the start in another interpretation)."""
 @dataclass
 class Semantics(Generic[S]):
     """One ROS's launch semantics: its frontends, substitution language, tag handlers
-    (registered by :meth:`tag`) and entry walk. Implements
+    (registered by :meth:`tag`), entry walk, node schema and resolution. Implements
     :class:`~rosvar.interpreter.dialect.Dialect`."""
 
     version: RosVersion
     loader: Loader
     substituter: Callable[[Interpretation[S]], Substituter[S]]
     entry: EntryWalk[S]
+    nodes: NodeSchema
+    resolver: Resolver
     tags: dict[str, Handler[S]] = field(default_factory=dict)
 
     def tag(self, name: str) -> Callable[[Handler[S]], Handler[S]]:

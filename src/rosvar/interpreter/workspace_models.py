@@ -13,7 +13,9 @@ from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.dialect import dialect_of
 from rosvar.interpreter.domains import DomainTable
 from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.resolution import Resolution
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.terms import PackageTable
 from rosvar.workspace import Workspace
 
 Progress = Callable[[int, int, str], None]
@@ -40,14 +42,32 @@ class Analysis:
         self.domains = DomainTable(
             workspace, extra_values, env_values, extra_executables, files=self.files
         )
+        self._given = frozenset(extra_values or ())
+        """The args a command line gives values (``rosvar resolve``'s)."""
         self._models: dict[str, LaunchModel] = {}
         self._labels: dict[str, str] | None = None
+
+    def package_table(self) -> PackageTable:
+        """The workspace's packages, as terms' ``$(find)`` reads them when evaluated."""
+        return PackageTable({name: p.path for name, p in self.workspace.packages.items()})
 
     def model(self, file: str) -> LaunchModel:
         """The model of ``file`` as an entry point (interpreted once, then cached)."""
         if file not in self._models:
             self._models[file] = self._interpret(file)
         return self._models[file]
+
+    def resolve(
+        self,
+        files: Sequence[str],
+        args: Mapping[str, str] | None = None,
+        env: Mapping[str, str] | None = None,
+    ) -> Resolution:
+        """What the workspace's launch tool starts for ``files`` and the command line's
+        ``name:=value`` ``args``, in environment ``env`` (other variables unset): its
+        dialect's resolution, restricting the models."""
+        resolver = dialect_of(self.workspace.ros_version).resolver
+        return resolver(self, files, args or {}, env or {})
 
     def all_models(self, progress: Progress | None = None) -> list[LaunchModel]:
         """Every launch file's model, in this process (the callers keep working on them)."""
@@ -105,11 +125,15 @@ class Analysis:
         undeclared: dict[str, str] = {}
         for _ in range(MAX_PASSES):
             model, late = self._interpret_with(file, undeclared)
-            if not late:
+            # ROS 2: a given name:=value that no file declares is set all the same
+            # (ros2 launch sets every one before loading): the entry file's, from the start
+            unknown = self._given - model.inputs.keys() - model.settable.keys() - undeclared.keys()
+            if not late and not unknown:
                 break
             # ROS 2: args included files declare are inputs from their declaration; one read
             # before it needs them from the start, as the command line sets them
             undeclared |= {name: model.settable[name] for name in late}
+            undeclared |= dict.fromkeys(unknown, file)
         return model
 
     def _interpret_with(

@@ -1,17 +1,15 @@
-"""Restrict the variational model to one configuration: what roslaunch would load.
+"""``roslaunch FILE... name:=value``: what ROS 1 would load, read off the files' models.
 
-Nothing is interpreted again: every presence condition is evaluated under the
-configuration's atom assignment, every conditional value picks its branch, and
-terms are evaluated with the concrete inputs. The result has roslaunch's shape
-(nodes, params, errors) plus conflicts (duplicate node names) with both
-locations.
+Each file's variational model is restricted to the configuration
+(:class:`~rosvar.interpreter.resolution.Restriction`), in command-line order: the first
+error stops it, as roslaunch stops; nodes (and tests) are typed as roslaunch's ``Node``
+holds them, parameters set on the server, and two nodes of one full name are a conflict
+with both locations.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, field
-from enum import StrEnum
+from collections.abc import Iterator, Mapping, Sequence
 
 from rosvar.analyses.json_values import json_value
 from rosvar.diagnostics import Location
@@ -23,139 +21,23 @@ from rosvar.interpreter.model import (
     ParamDecl,
     Raw,
     YamlDecl,
-    anon_pattern,
 )
-from rosvar.interpreter.workspace_models import Analysis
-from rosvar.logic.bdd import BDD
+from rosvar.interpreter.resolution import (
+    Conflict,
+    ConflictKind,
+    Models,
+    Resolution,
+    ResolutionError,
+    ResolvedNode,
+    Restriction,
+)
 from rosvar.logic.choice import Choice
-from rosvar.logic.inputs import ArgInput, EnvInput, Input
-from rosvar.logic.terms import Apply, Hole, PackageTable, TermError, evaluate
 from rosvar.ros import names
 from rosvar.ros1.validation import node_values
 
 
-class ResolutionError(Exception):
-    """roslaunch would fail in this configuration."""
-
-    def __init__(self, code: str, message: str, location: Location) -> None:
-        super().__init__(message)
-        self.code = code
-        self.message = message
-        self.location = location
-
-
-class ConflictKind(StrEnum):
-    """Why roslaunch cannot have two elements together."""
-
-    NODE_NAME = "node-name"  # two nodes with one full name
-
-
-@dataclass
-class Conflict:
-    """Two elements of one configuration that roslaunch cannot both have."""
-
-    kind: ConflictKind
-    name: str
-    locations: list[Location]
-
-    def to_json(self) -> dict[str, object]:
-        return {
-            "kind": self.kind,
-            "name": self.name,
-            "locations": [loc.to_json() for loc in self.locations],
-        }
-
-
-@dataclass
-class Resolution:
-    nodes: list[dict[str, object]] = field(default_factory=list)
-    tests: list[dict[str, object]] = field(default_factory=list)
-    params: dict[str, object] = field(default_factory=dict)
-    conflicts: list[Conflict] = field(default_factory=list)
-    errors: list[ResolutionError] = field(default_factory=list)
-    scopes: list[Mapping[str, str]] = field(default_factory=list)
-    """Per node, the texts of the args its scope sees (for a hint's ``when:``)."""
-
-    @property
-    def ok(self) -> bool:
-        return not self.errors and not self.conflicts
-
-    def to_json(self) -> dict[str, object]:
-        return {
-            "ok": self.ok,
-            "nodes": sorted(self.nodes, key=lambda n: str(n["name"])),
-            "tests": sorted(self.tests, key=lambda n: str(n["name"])),
-            "params": dict(sorted(self.params.items())),
-            "conflicts": [c.to_json() for c in self.conflicts],
-            "errors": [
-                {"code": e.code, "message": e.message, **e.location.to_json()} for e in self.errors
-            ],
-        }
-
-
-class Restriction:
-    """One model under one configuration."""
-
-    def __init__(
-        self,
-        analysis: Analysis,
-        model: LaunchModel,
-        args: Mapping[str, str],
-        env: Mapping[str, str],
-    ) -> None:
-        self.space = analysis.space
-        self.model = model
-        values: dict[Input, str | None] = {}
-        for name, input_ in model.inputs.items():
-            values[input_] = args.get(name, model.unset_defaults.get(name))
-        for other in self.space.inputs():
-            if isinstance(other, EnvInput):
-                values[other] = env.get(other.name)
-        self.concrete: dict[Input, str] = {k: v for k, v in values.items() if v is not None}
-        self.confinement = analysis.workspace.confinement()
-        self.host = PackageTable(
-            {name: package.path for name, package in analysis.workspace.packages.items()}
-        )
-        self.assignment = self.space.assignment(values, self.host)
-        self._shift: Callable[[str], str] | None = None
-
-    def shift_anon(self, offset: int) -> None:
-        """Number this file's ``$(anon)`` names after those of the files loaded before it.
-
-        roslaunch draws one random name per id; the deterministic ``{id}_anon{n}``
-        stand-in must keep counting across the files of one command line.
-        """
-        pattern = anon_pattern(self.model.anon_ids)
-        if offset and pattern is not None:
-            self._shift = lambda text: pattern.sub(
-                lambda m: f"{m.group(1)}_anon{int(m.group(2)) + offset}", text
-            )
-
-    def holds(self, condition: BDD) -> bool:
-        return self.space.evaluate(condition, self.assignment)
-
-    def evaluate(self, value: Raw, location: Location, what: str) -> str:
-        """A term's string under this configuration (roslaunch's failure if it has none)."""
-        return evaluated(value, self.concrete, self.host, location, what)
-
-    def pick(self, choice: Choice[object], location: Location, what: str) -> object:
-        for condition, leaf in choice:
-            if self.holds(condition):
-                if isinstance(leaf, Hole | Apply):
-                    leaf = self.evaluate(leaf, location, what)
-                if isinstance(leaf, str) and self._shift is not None:
-                    return self._shift(leaf)
-                return leaf
-        raise ResolutionError("value-undefined", f"{what} has no value here", location)
-
-    def raw(self, choice: Choice[Raw | None], location: Location, what: str) -> str | None:
-        value = self.pick(choice, location, what)
-        assert value is None or isinstance(value, str)
-        return value
-
-
 def resolve(
-    analysis: Analysis,
+    models: Models,
     files: Sequence[str],
     args: Mapping[str, str] | None = None,
     env: Mapping[str, str] | None = None,
@@ -168,8 +50,8 @@ def resolve(
     machines: set[str] = set()
     anon_offset = 0
     for file in files:
-        model = analysis.model(file)
-        restriction = Restriction(analysis, model, args, env or {})
+        model = models.model(file)
+        restriction = Restriction(models, model, args, env or {})
         restriction.shift_anon(anon_offset)
         try:
             _restrict(restriction, model, result, seen_nodes)
@@ -189,11 +71,9 @@ def resolve(
             result.errors.append(error)
             return result
     for node in result.nodes:  # roslaunch's assign_machines(), after every file is loaded
-        machine = node.get("machine")
+        machine = node.attributes.get("machine")
         if machine and machine not in machines:
-            location = Location(
-                str(node["filename"]), int(str(node["line"])), int(str(node["col"]))
-            )
+            location = Location(node.filename, node.location.line, node.location.col)
             result.errors.append(
                 ResolutionError("machine-unknown", f"ERROR: unknown machine [{machine}]", location)
             )
@@ -220,7 +100,7 @@ def _restrict(
         if node.is_test:
             result.tests.append(entry)
             continue
-        full = str(entry["name"])
+        full = entry.name
         if full in seen:
             result.conflicts.append(
                 Conflict(ConflictKind.NODE_NAME, full, [seen[full], node.location])
@@ -228,7 +108,6 @@ def _restrict(
         else:
             seen[full] = node.location
         result.nodes.append(entry)
-        result.scopes.append(_Scope(r, node))
     for param in model.params:
         if not r.holds(param.condition):
             continue
@@ -278,55 +157,50 @@ class _Scope(Mapping[str, str]):
         return len(self._node.args)
 
 
-def _node(r: Restriction, node: object) -> dict[str, object]:
-    assert isinstance(node, NodeDecl)
+def _node(r: Restriction, node: NodeDecl) -> ResolvedNode:
+    """The node (or test) as roslaunch's ``Node`` holds it: its typed attributes checked,
+    its remaps one per source (the last wins)."""
     location = node.location
     raw = {k: r.raw(v, location, f"<node> {k}") for k, v in node.fields.items()}
     typed = typed_node(raw, location)
-    namespace = str(raw["namespace"])
-    name = raw["name"] or ""
     remaps: dict[str, str] = {}
     for remap in node.remaps:
         if r.holds(remap.condition):
-            source = r.raw(Choice.const(r.space, remap.source), location, "remap from")
-            target = r.raw(Choice.const(r.space, remap.target), location, "remap to")
+            source = _text(r, remap.source, location, "remap from")
+            target = _text(r, remap.target, location, "remap to")
             check_remap(source, target, location)
-            remaps.pop(str(source), None)
-            remaps[str(source)] = str(target)
+            remaps.pop(source, None)
+            remaps[source] = target
     env = [
-        [
-            r.raw(Choice.const(r.space, e.name), location, "env"),
-            r.raw(Choice.const(r.space, e.value), location, "env"),
-        ]
+        (_text(r, e.name, location, "env"), _text(r, e.value, location, "env"))
         for e in node.env
         if r.holds(e.condition)
     ]
-    entry: dict[str, object] = {
-        "name": names.ns_join(namespace, name),
-        "namespace": namespace,
-        "package": raw["pkg"],
-        "type": raw["type"],
-        **typed,
-        "remaps": sorted([list(p) for p in remaps.items()]),
-        "env": sorted(env),
-        "filename": node.filename,
-        "line": location.line,
-        "col": location.col,
-    }
-    if node.is_test:
-        entry.update(test_fields(raw, location))
-    return entry
+    schema = node.schema
+    return ResolvedNode(
+        name=schema.full_name.text(raw) or "",
+        own_name=schema.name.text(raw),
+        namespace=schema.namespace.text(raw),
+        package=schema.package.text(raw),
+        executable=schema.executable.text(raw),
+        args=str(typed["args"]),
+        plugin=schema.plugin.text(raw),
+        remaps=sorted(remaps.items()),
+        env=sorted(env),
+        location=location,
+        filename=node.filename,
+        version=schema.version,
+        attributes=typed,
+        test=test_fields(raw, location) if node.is_test else None,
+        scope=_Scope(r, node),
+    )
 
 
-def evaluated(
-    value: Raw, concrete: Mapping[Input, str], host: object, location: Location, what: str
-) -> str:
-    """A term's string with the inputs' ``concrete`` strings (roslaunch's failure if it has
-    none: an unknown package, a file not read)."""
-    try:
-        return evaluate(value, concrete, host)
-    except (TermError, LookupError, ValueError) as error:
-        raise ResolutionError("value-unknown", f"{what}: {error}", location) from None
+def _text(r: Restriction, raw: Raw, location: Location, what: str) -> str:
+    """A remap's or an ``<env>``'s string in the configuration."""
+    text = r.raw(Choice.const(r.space, raw), location, what)
+    assert text is not None  # a raw string is never absent
+    return text
 
 
 def deferred_value(
@@ -392,6 +266,3 @@ def test_fields(raw: Mapping[str, str | None], location: Location) -> dict[str, 
         "retry": retry,
         "output": "log",
     }
-
-
-__all__ = ["ArgInput", "Conflict", "Resolution", "ResolutionError", "resolve"]

@@ -1,6 +1,7 @@
 """The ROS 2 dialect: its frontends (by file suffix), its substitution language, the launch
-context as its scope; its tag registry is filled by :mod:`rosvar.ros2.tags`, a handler for
-each action of the launch API's registry (:mod:`rosvar.ros2.api.actions`)."""
+context as its scope, what a node declaration means and the resolution of one command line;
+its tag registry is filled by :mod:`rosvar.ros2.tags`, a handler for each action of the launch
+API's registry (:mod:`rosvar.ros2.api.actions`)."""
 
 from collections.abc import Callable
 
@@ -11,9 +12,13 @@ from rosvar.ros2.api.actions import ACTIONS
 from rosvar.ros2.context import Context
 from rosvar.ros2.entry import walk_entry
 from rosvar.ros2.frontends import registry
+from rosvar.ros2.nodes import ROS2_NODES
+from rosvar.ros2.resolve import resolve
 from rosvar.ros2.substitutions import Ros2Substituter
 
-ROS2: Semantics[Context] = Semantics(RosVersion.ROS2, registry.load, Ros2Substituter, walk_entry)
+ROS2: Semantics[Context] = Semantics(
+    RosVersion.ROS2, registry.load, Ros2Substituter, walk_entry, ROS2_NODES, resolve
+)
 
 
 def tag(name: str) -> Callable[[Handler[Context]], Handler[Context]]:

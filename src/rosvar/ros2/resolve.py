@@ -1,179 +1,184 @@
-"""``ros2 launch FILE name:=value``: the nodes ROS 2 would start, in the oracle's shape.
+"""``ros2 launch FILE name:=value``: what ROS 2 would start, read off the file's model.
 
-The model of a ROS 2 file interpreted with given arguments holds constant values; this
-picks the present elements, composes names (pushed namespace, node namespace) and merges
-parameters (global ones, files and inline ones in command-line order).
+The file's model over every command line is restricted to the given arguments, as ROS 1's
+resolution does (:class:`~rosvar.interpreter.resolution.Restriction`): the present nodes are
+picked, their names composed (the pushed namespace, the node's own, its ``--ros-args``
+renames) and their parameters merged (the ``--ros-args`` ones, then global ones, files and
+inline ones, in command-line order).
 """
 
 from __future__ import annotations
 
 import os
 import shlex
-from collections.abc import Mapping
-from dataclasses import dataclass, field
-from typing import Protocol
+from collections.abc import Mapping, Sequence
 
 import yaml
 
 from rosvar import bounded_yaml
-from rosvar.diagnostics import Location
+from rosvar.diagnostics import Diagnostic, Severity
 from rosvar.files import Confinement, read_file
-from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
-from rosvar.interpreter.workspace_models import Analysis
-from rosvar.logic.bdd import BDD
-from rosvar.logic.choice import Choice
-from rosvar.logic.conditions import ConditionSpace
-from rosvar.ros1.resolve import ResolutionError, Restriction
+from rosvar.interpreter import resolution
+from rosvar.interpreter.model import NodeDecl, NodeField, Raw
+from rosvar.interpreter.resolution import Resolution, ResolutionError, ResolvedNode, Restriction
 from rosvar.ros2.conventions import command_line
+from rosvar.ros2.conventions.namespaces import unnamed
 from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, file_entries, typed
-from rosvar.ros2.launch import interpret
-from rosvar.ros2.tags.node import ProcessKind
-from rosvar.workspace import Workspace
+from rosvar.ros2.nodes import ProcessKind
 
 UNINTERPRETED = frozenset({"nesting-too-deep"})
 """Diagnostics of parts the walk left out (a limit): no configuration can be told without them."""
 
 
-@dataclass
-class Ros2Resolution:
-    nodes: list[dict[str, object]] = field(default_factory=list)
-    errors: list[dict[str, object]] = field(default_factory=list)
-    warnings: list[dict[str, object]] = field(default_factory=list)
-
-    @property
-    def ok(self) -> bool:
-        return not self.errors
-
-    def to_json(self) -> dict[str, object]:
-        return {
-            "ok": self.ok,
-            "nodes": self.nodes,
-            "errors": self.errors,
-            "warnings": self.warnings,
-        }
-
-
-def resolve_ros2(
-    workspace: Workspace,
-    file: str,
-    arguments: Mapping[str, str],
-    env: Mapping[str, str] | None = None,
-) -> Ros2Resolution:
-    space = ConditionSpace()
-    model = interpret(workspace, space, file, arguments, env or {})
-    return restrict(model, Constant(space), workspace.confinement())
-
-
-def resolve_variational(
-    analysis: Analysis, file: str, arguments: Mapping[str, str], env: Mapping[str, str]
-) -> Ros2Resolution:
-    """The same, read off the file's model over every command line (``analysis.model``)."""
-    model = analysis.model(file)
-    view = Restriction(analysis, model, arguments, env)
-    return restrict(model, view, analysis.workspace.confinement())
-
-
-class View(Protocol):
-    """One configuration of a model: which conditions hold, what values are."""
-
-    def holds(self, condition: BDD) -> bool: ...
-
-    def pick(self, choice: Choice[object], location: Location, what: str) -> object: ...
-
-    def evaluate(self, value: Raw, location: Location, what: str) -> str: ...
-
-
-class Constant:
-    """The view of a model interpreted with fixed arguments: values are constants, and the
-    only inputs, the environment variables read, are not set."""
-
-    def __init__(self, space: ConditionSpace) -> None:
-        self.space = space
-        self.assignment = space.assignment({})
-
-    def holds(self, condition: BDD) -> bool:
-        return self.space.evaluate(condition, self.assignment)
-
-    def pick(self, choice: Choice[object], location: Location, what: str) -> object:
-        value = next((leaf for condition, leaf in choice if self.holds(condition)), None)
-        if value is not None and not isinstance(value, str):
-            raise ValueError(f"{what} is not known")
-        return value
-
-    def evaluate(self, value: Raw, location: Location, what: str) -> str:
-        if not isinstance(value, str):
-            raise ValueError(f"{what} is not known")
-        return value
-
-
-def restrict(model: LaunchModel, view: View, confinement: Confinement) -> Ros2Resolution:
-    """The present nodes and errors of ``model`` in the configuration ``view`` shows (its
-    parameter files read within ``confinement``)."""
-    result = Ros2Resolution()
-    for diagnostic in model.diagnostics:
-        if diagnostic.code in UNINTERPRETED:
-            where = diagnostic.location.to_json()
-            result.errors.append(
-                {"code": diagnostic.code, "message": diagnostic.message, "location": where}
-            )
-    for error in model.errors:
-        if view.holds(error.condition):
-            result.errors.append(
-                {"code": error.code, "message": error.message, "location": error.location.to_json()}
-            )
-    for decl in model.nodes:
-        if view.holds(decl.condition):
-            try:
-                result.nodes.append(_node(decl, view, confinement, result.warnings))
-            except (ValueError, ResolutionError) as error:
-                result.errors.append(
-                    {
-                        "code": "node-invalid",
-                        "message": str(error),
-                        "location": decl.location.to_json(),
-                    }
-                )
+def resolve(
+    models: resolution.Models, files: Sequence[str], args: Mapping[str, str], env: Mapping[str, str]
+) -> Resolution:
+    """What ``ros2 launch FILE name:=value...`` starts for each of ``files`` (each launched
+    on its own: ``ros2 launch`` takes one file), in environment ``env``."""
+    result = Resolution()
+    for file in files:
+        model = models.model(file)
+        restriction = Restriction(models, model, args, env)
+        for diagnostic in model.diagnostics:
+            if diagnostic.code in UNINTERPRETED:
+                where = diagnostic.location
+                result.errors.append(ResolutionError(diagnostic.code, diagnostic.message, where))
+        for error in model.errors:
+            if restriction.holds(error.condition):
+                result.errors.append(ResolutionError(error.code, error.message, error.location))
+        for decl in model.nodes:
+            if restriction.holds(decl.condition):
+                try:
+                    result.nodes.append(_node(decl, restriction, result.warnings))
+                except (ValueError, ResolutionError) as error:
+                    result.errors.append(ResolutionError("node-invalid", str(error), decl.location))
     return result
 
 
-def _node(
-    decl: NodeDecl, view: View, confinement: Confinement, warnings: list[dict[str, object]]
-) -> dict[str, object]:
+def _node(decl: NodeDecl, r: Restriction, warnings: list[Diagnostic]) -> ResolvedNode:
+    """The process ``decl`` starts, named and given its parameters as launch_ros and rcl
+    do."""
+    schema = decl.schema
+
     def text(key: str) -> str | None:
-        value = view.pick(decl.field(key), decl.location, f"<node> attribute '{key}'")
+        choice = decl.field(key)
+        if not r.holds(choice.covered()):  # it failed here: the model's error says why
+            return None
+        value = r.pick(choice, decl.location, f"<node> attribute '{key}'")
         return None if value is None else str(value)
 
+    def read(accessor: NodeField) -> str | None:
+        return accessor.text({key: text(key) for key in accessor.keys})
+
     def known(value: Raw, what: str) -> str:
-        return view.evaluate(value, decl.location, what)
+        return r.evaluate(value, decl.location, what)
 
     kind = text("kind")
     if kind == ProcessKind.PROCESS:
-        return {"kind": kind, "cmd": shlex.split(text("cmd") or "")}
+        cmd = shlex.split(text("cmd") or "")
+        program = cmd[0] if cmd else None
+        attributes = _attributes(kind, None, None, None, None, cmd)
+        return ResolvedNode(
+            name=unnamed(None, os.path.basename(program or "")),
+            own_name=None,
+            namespace=None,
+            package=None,
+            executable=program,
+            args=shlex.join(cmd[1:]),
+            plugin=None,
+            remaps=[],
+            env=_env(decl, r),
+            location=decl.location,
+            filename=decl.filename,
+            version=schema.version,
+            attributes=attributes,
+        )
     argv = shlex.split(text("args") or "")
     ros_args = text("ros_args")
     if ros_args is not None:
         argv += ["--ros-args", *shlex.split(ros_args)]
     given = command_line.parse(argv)  # before launch_ros's own --ros-args section
-    name = given.name or text("name")
-    if given.namespace is not None:
-        namespace: str | None = given.namespace
-    else:
-        texts = {key: text(key) for key in decl.schema.namespace.keys}
-        namespace = decl.schema.namespace.text(texts)
-    fqn = None
-    if name is not None:
-        fqn = (namespace or "").rstrip("/") + "/" + name
+    name = given.name or read(schema.name)
+    namespace = given.namespace if given.namespace is not None else read(schema.namespace)
+    fqn = None if name is None else (namespace or "").rstrip("/") + "/" + name
+    parameters = effective(fqn, _sources(decl, r, given, kind, warnings))
+    remaps = list(given.remaps)
+    remaps += [
+        (known(remap.source, "remapping"), known(remap.target, "remapping"))
+        for remap in decl.remaps
+        if r.holds(remap.condition)
+    ]
+    executable, plugin = read(schema.executable), read(schema.plugin)
+    arguments = None if plugin else given.program
+    return ResolvedNode(
+        name=fqn or unnamed(namespace, executable),
+        own_name=name,
+        namespace=namespace,
+        package=read(schema.package),
+        executable=executable,
+        args=text("args") or "",
+        plugin=plugin,
+        remaps=remaps,
+        env=_env(decl, r),
+        location=decl.location,
+        filename=decl.filename,
+        version=schema.version,
+        attributes=_attributes(kind, fqn, plugin, text("container"), arguments, None),
+        parameters=parameters,
+    )
+
+
+def _attributes(
+    kind: str | None,
+    fqn: str | None,
+    plugin: str | None,
+    container: str | None,
+    arguments: list[str] | None,
+    cmd: list[str] | None,
+) -> dict[str, object]:
+    """What only a ROS 2 process has, named as the oracle names it: what it is (``kind``: a
+    node, a lifecycle node, a container, a composable node, a process), its fully qualified
+    name (None where its code names it), a composable node's class and container, the
+    program's own arguments (not a composable node's), a process's command."""
+    return {
+        "kind": kind,
+        "fqn": fqn,
+        "plugin": plugin,
+        "container": container,
+        "arguments": arguments,
+        "cmd": cmd,
+    }
+
+
+def _env(decl: NodeDecl, r: Restriction) -> list[tuple[str, str]]:
+    """The ``<env>`` settings of the process, in order."""
+    return [
+        (r.evaluate(e.name, decl.location, "env"), r.evaluate(e.value, decl.location, "env"))
+        for e in decl.env
+        if r.holds(e.condition)
+    ]
+
+
+def _sources(
+    decl: NodeDecl,
+    r: Restriction,
+    given: command_line.RosArguments,
+    kind: str | None,
+    warnings: list[Diagnostic],
+) -> list[Source]:
+    """The node's parameter sources in the order rcl reads them: its ``--ros-args`` ones,
+    then the global ones and its own (files and inline values)."""
     sources: list[Source] = []
     for parameter in given.parameters:
         if isinstance(parameter, str):
-            sources.append(Source(entries=tuple(parameter_file(parameter, confinement))))
+            sources.append(Source(entries=tuple(parameter_file(parameter, r.confinement))))
         else:
             sources.append(Source(*parameter))
     for param in decl.parameters:
-        if not view.holds(param.condition):
+        if not r.holds(param.condition):
             continue
         if param.file is not None:
-            path = known(param.file, "parameter file")
+            path = r.evaluate(param.file, decl.location, "parameter file")
             if param.globally:  # launch_ros asserts that a global parameter file exists
                 path = os.path.abspath(path)
                 if not os.path.isfile(path):
@@ -182,39 +187,18 @@ def _node(
                     )
             elif kind != ProcessKind.COMPOSABLE_NODE and not os.path.isfile(path):
                 # launch_ros leaves a node's missing file out, with a warning
+                message = f"Parameter file path is not a file: {path}"
                 warnings.append(
-                    {
-                        "code": "parameter-file-missing",
-                        "message": f"Parameter file path is not a file: {path}",
-                        "location": decl.location.to_json(),
-                    }
+                    Diagnostic("parameter-file-missing", Severity.WARNING, message, decl.location)
                 )
                 continue
-            sources.append(Source(entries=tuple(parameter_file(path, confinement))))
+            sources.append(Source(entries=tuple(parameter_file(path, r.confinement))))
         elif param.name is not None and param.value is not None:
             # global (-p) and inline (a generated file) parameters both apply to /**
-            value = typed(known(param.value, "parameter value"))
-            entry = {known(param.name, "parameter name"): value}
+            value = typed(r.evaluate(param.value, decl.location, "parameter value"))
+            entry = {r.evaluate(param.name, decl.location, "parameter name"): value}
             sources.append(Source(entries=((ALL_NODES, entry),)))
-    remaps = [[source, target] for source, target in given.remaps]
-    remaps += [
-        [known(r.source, "remapping"), known(r.target, "remapping")]
-        for r in decl.remaps
-        if view.holds(r.condition)
-    ]
-    return {
-        "kind": kind,
-        "package": text("pkg"),
-        "executable": text("exec"),
-        "name": name,
-        "namespace": namespace,
-        "fqn": fqn,
-        "remappings": remaps,
-        "parameters": effective(fqn, sources),
-        "arguments": None if text("plugin") else given.program,
-        "plugin": text("plugin"),
-        "container": text("container"),
-    }
+    return sources
 
 
 def parameter_file(path: str, confinement: Confinement) -> list[tuple[str, dict[str, object]]]:

@@ -13,11 +13,11 @@ from rosvar.analyses.communication import Edge, model_edges
 from rosvar.analyses.robot_description.document import XElement
 from rosvar.analyses.robot_description.edges import Simulation, configuration_edges
 from rosvar.diagnostics import Location, Severity
+from rosvar.interpreter.resolution import Restriction
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.ros1.resolve import Restriction
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Role
@@ -278,13 +278,13 @@ def test_husky_plugins_restricted_are_the_real_xacros(tmp_path: Path) -> None:
         restricted = configuration_edges(analysis, [str(HUSKY_SPAWN)], args, env)
         ours = {(e.role, e.name, e.type) for e in restricted.edges}
         resolution = resolve(analysis, [str(HUSKY_SPAWN)], args, env)
-        [spawner] = [n for n in resolution.nodes if n["type"] == "spawn_model"]
-        command = str(resolution.params[f"{spawner['namespace']}robot_description"])
+        [spawner] = [n for n in resolution.nodes if n.executable == "spawn_model"]
+        command = str(resolution.params[f"{spawner.namespace}robot_description"])
         run = xacro_command(split(command.removeprefix("__command__(").removesuffix(")")))
         assert run is not None and isinstance(run.file, str)
         printed = run_xacro(run.file, {k: str(v) for k, v in run.args.items()}, env, packages)
         assert not isinstance(printed, XacroFailed), (args, env)
-        spawning = Spawning(str(spawner["namespace"]), None, "husky")
+        spawning = Spawning(str(spawner.namespace), None, "husky")
         uses, _unread = plugin_uses(
             analysis.space, _element(printed, analysis.space), RosVersion.ROS1, spawning
         )

@@ -12,9 +12,8 @@ import json
 import sys
 from pathlib import Path
 
-from oracle.ros2_client import canonical_nodes, run_oracle
+from oracle.ros2_client import canonical_nodes, rosvar_nodes, run_oracle
 from rosvar.interpreter.workspace_models import Analysis
-from rosvar.ros2.resolve import resolve_variational
 from rosvar.workspace import discover
 
 from .test_variational import DATA, configurations
@@ -49,12 +48,12 @@ def main(repositories: list[str]) -> None:
                 if not expected["ok"]:
                     continue
                 loaded += 1
-                result = resolve_variational(analysis, file, arguments, {})
+                result = analysis.resolve([file], arguments)
                 if not result.ok:
                     differences.append(f"{arguments}: rosvar fails: {result.errors[0]}")
                     continue
                 difference = first_difference(
-                    canonical_nodes(expected), canonical_nodes(result.to_json())
+                    canonical_nodes(expected), canonical_nodes(rosvar_nodes(result))
                 )
                 if difference:
                     differences.append(f"{arguments}: {difference}")

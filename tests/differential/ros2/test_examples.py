@@ -7,8 +7,14 @@ import itertools
 
 import pytest
 
-from oracle.ros2_client import ORACLE, canonical_nodes, requires_ros2_oracle, run_oracle
-from rosvar.ros2.resolve import resolve_ros2
+from oracle.ros2_client import (
+    ORACLE,
+    canonical_nodes,
+    requires_ros2_oracle,
+    rosvar_nodes,
+    run_oracle,
+)
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
 pytestmark = requires_ros2_oracle
@@ -38,6 +44,9 @@ def test_example_matches_the_oracle(suffix: str, arguments: dict[str, str]) -> N
     file = PACKAGES / "demo_pkg" / "launch" / f"top{suffix}"
     expected = run_oracle(file, arguments, [PACKAGES], strict=False)
     assert expected["ok"] and not expected["unresolved_includes"]
-    result = resolve_ros2(discover([str(PACKAGES)]), str(file), arguments)
+    analysis = Analysis(
+        discover([str(PACKAGES)]), extra_values={k: [v] for k, v in arguments.items()}
+    )  # the given values as known slots, as `rosvar resolve` makes them
+    result = analysis.resolve([str(file)], arguments)
     assert result.ok, result.errors
-    assert canonical_nodes(result.to_json()) == canonical_nodes(expected)
+    assert canonical_nodes(rosvar_nodes(result)) == canonical_nodes(expected)

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from oracle.ros2_client import canonical_nodes, requires_ros2_oracle, run_oracle
-from rosvar.ros2.resolve import resolve_ros2
+from oracle.ros2_client import canonical_nodes, requires_ros2_oracle, rosvar_nodes, run_oracle
+from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
 pytestmark = requires_ros2_oracle
@@ -714,8 +714,10 @@ def test_fixture_matches_the_oracle(case: str, tmp_path: Path) -> None:
     for main, arguments in itertools.product(entries(package), samples):
         strict = case not in LENIENT
         expected = run_oracle(main, arguments, [package.parent], strict=strict)
-        result = resolve_ros2(workspace, str(main), arguments)
+        # the given values as known slots of the model, as `rosvar resolve` makes them
+        analysis = Analysis(workspace, extra_values={k: [v] for k, v in arguments.items()})
+        result = analysis.resolve([str(main)], arguments)
         assert result.ok == expected["ok"], (main.name, arguments, expected.get("error"))
         if result.ok:
-            nodes = canonical_nodes(result.to_json())
+            nodes = canonical_nodes(rosvar_nodes(result))
             assert nodes == canonical_nodes(expected), (main.name, arguments)

@@ -11,10 +11,15 @@ from pathlib import Path
 
 import pytest
 
-from oracle.ros2_client import ORACLE, canonical_nodes, requires_ros2_oracle, run_oracle
+from oracle.ros2_client import (
+    ORACLE,
+    canonical_nodes,
+    requires_ros2_oracle,
+    rosvar_nodes,
+    run_oracle,
+)
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.inputs import OTHER, UNSET
-from rosvar.ros2.resolve import resolve_variational
 from rosvar.workspace import discover
 
 from .test_fixtures import CASES, LENIENT, _workspace, entries
@@ -46,10 +51,10 @@ def check(
     analysis: Analysis, file: Path, arguments: Mapping[str, str], packages: Path, strict: bool
 ) -> None:
     expected = run_oracle(file, arguments, [packages], strict=strict)
-    result = resolve_variational(analysis, str(file), arguments, {})
+    result = analysis.resolve([str(file)], arguments)
     assert result.ok == expected["ok"], (arguments, expected.get("error"), result.errors)
     if result.ok:
-        assert canonical_nodes(result.to_json()) == canonical_nodes(expected), arguments
+        assert canonical_nodes(rosvar_nodes(result)) == canonical_nodes(expected), arguments
 
 
 @pytest.mark.parametrize("case", sorted(CASES))

@@ -59,7 +59,7 @@ def test_arg_without_default_has_an_unset_slot(ws: LaunchWorkspace) -> None:
     missing = ws.resolve(file, {})
     assert not missing.ok and missing.errors[0].code == "arg-undefined"
     given = ws.resolve(file, {"robot": "husky"})
-    assert given.ok and [n["name"] for n in given.nodes] == ["/husky_driver"]
+    assert given.ok and [n.name for n in given.nodes] == ["/husky_driver"]
 
 
 def test_value_arg_cannot_be_overridden(ws: LaunchWorkspace) -> None:
@@ -167,7 +167,7 @@ def test_command_line_value_is_visible_outside_the_declaring_group(ws: LaunchWor
     """roslaunch puts every name:=value of the command line into the root context's args."""
     file = ws.launch("scopes.launch", SCOPES)
     resolution = ws.resolve(file, {"inner": "x"})
-    assert resolution.ok, resolution.to_json()
+    assert resolution.ok, resolution.errors
     assert resolution.params == {"/g/seen": "o-x", "/after": "x"}
 
 

@@ -43,15 +43,15 @@ def test_environment_variables_are_inputs(ws: LaunchWorkspace) -> None:
 def test_env_settings_per_configuration(ws: LaunchWorkspace) -> None:
     file = ws.launch("env.launch", ENV)
     plain = ws.resolve(file, {}, {})
-    assert plain.ok, plain.to_json()
-    nodes = {n["name"]: n for n in plain.nodes}
-    assert nodes["/n"]["env"] == [["LOG_LEVEL", "info"], ["OWN", "1"]]
-    assert nodes["/after"]["env"] == [["LOG_LEVEL", "info"]]
+    assert plain.ok, plain.errors
+    nodes = {n.name: n for n in plain.nodes}
+    assert nodes["/n"].env == [("LOG_LEVEL", "info"), ("OWN", "1")]
+    assert nodes["/after"].env == [("LOG_LEVEL", "info")]
     named = ws.resolve(
         file, {}, {"WITH_NAME": "true", "ROBOT_NAME": "rob", "ROBOT_NS": "r2", "ROBOT_LOG": "dbg"}
     )
-    nodes = {n["name"]: n for n in named.nodes}
-    assert nodes["/r2/n"]["env"] == [["LOG_LEVEL", "dbg"], ["OWN", "1"], ["ROBOT", "rob"]]
+    nodes = {n.name: n for n in named.nodes}
+    assert nodes["/r2/n"].env == [("LOG_LEVEL", "dbg"), ("OWN", "1"), ("ROBOT", "rob")]
     unset = ws.resolve(file, {}, {"WITH_NAME": "true"})
     assert not unset.ok and unset.errors[0].code == "env-unset"
 

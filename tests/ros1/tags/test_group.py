@@ -52,13 +52,13 @@ def test_group_namespaces(ws: LaunchWorkspace) -> None:
     namespaces = nodes_by_name(model)["controller"].fields["namespace"]
     assert "/r1/arm/" in namespaces.values()
     resolution = ws.resolve(file, {"robot": "r2"})
-    assert sorted(n["name"] for n in resolution.nodes) == [
+    assert sorted(n.name for n in resolution.nodes) == [
         "/global/tf",
         "/r2/arm/controller",
         "/r2/base",
     ]
     no_arm = ws.resolve(file, {"arm": "false"})
-    assert sorted(n["name"] for n in no_arm.nodes) == ["/r1/base", "/r1/no_arm"]
+    assert sorted(n.name for n in no_arm.nodes) == ["/r1/base", "/r1/no_arm"]
 
 
 @pytest.mark.oracle
@@ -135,7 +135,7 @@ def test_empty_clear_params_is_ignored(ws: LaunchWorkspace) -> None:
     )
     model = ws.model(file)
     assert model.clear_params == [] and model.errors == []
-    assert [n["name"] for n in ws.resolve(file).nodes] == ["/a/n"]
+    assert [n.name for n in ws.resolve(file).nodes] == ["/a/n"]
 
 
 @pytest.mark.oracle

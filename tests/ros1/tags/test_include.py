@@ -57,11 +57,11 @@ def test_include_args_and_namespace(ws: LaunchWorkspace) -> None:
     ws.launch("sensor.launch", SENSOR)
     main = ws.launch("main.launch", MAIN)
     slow = ws.resolve(main, {})
-    assert slow.ok, slow.to_json()
-    assert [n["name"] for n in slow.nodes] == ["/front/sensor"]
+    assert slow.ok, slow.errors
+    assert [n.name for n in slow.nodes] == ["/front/sensor"]
     assert slow.params == {"/front/sensor/rate": 10}
     fast = ws.resolve(main, {"fast": "true"})
-    assert sorted(n["name"] for n in fast.nodes) == ["/front/debugger", "/front/sensor"]
+    assert sorted(n.name for n in fast.nodes) == ["/front/debugger", "/front/sensor"]
     assert fast.params == {"/front/sensor/rate": 50}
     off = ws.resolve(main, {"use_sensor": "false", "fast": "true"})
     assert off.ok and off.nodes == [] and off.params == {}
@@ -93,7 +93,7 @@ def test_included_file_chosen_by_an_arg(ws: LaunchWorkspace) -> None:
     nodes = nodes_by_name(model)
     assert space.describe(nodes["husky_base"].condition) == "robot=husky"
     assert space.describe(nodes["jackal_base"].condition) == "robot=jackal"
-    assert [n["name"] for n in ws.resolve(main, {"robot": "jackal"}).nodes] == ["/jackal_base"]
+    assert [n.name for n in ws.resolve(main, {"robot": "jackal"}).nodes] == ["/jackal_base"]
     missing = ws.resolve(main, {"robot": "nope"})
     assert not missing.ok
 
@@ -124,7 +124,7 @@ def test_pass_all_args_and_unused_args(ws: LaunchWorkspace) -> None:
     passing = ws.launch("pass.launch", PASS_ALL)
     resolution = ws.resolve(passing, {"rate": "3"})
     assert resolution.ok and resolution.params == {"/sensor/rate": 3}
-    assert sorted(n["name"] for n in resolution.nodes) == ["/debugger", "/sensor"]
+    assert sorted(n.name for n in resolution.nodes) == ["/debugger", "/sensor"]
     unused = ws.launch("unused.launch", UNUSED)
     model = ws.model(unused)
     assert [e.code for e in model.errors] == ["include-arg-unused"]
@@ -152,7 +152,7 @@ def test_including_twice_conflicts_only_in_the_same_namespace(ws: LaunchWorkspac
     assert ws.resolve(main, {}).ok
     renamed = ws.resolve(main, {"second_ns": "rear"})
     assert renamed.ok
-    assert sorted(n["name"] for n in renamed.nodes) == ["/rear/sensor", "/sensor"]
+    assert sorted(n.name for n in renamed.nodes) == ["/rear/sensor", "/sensor"]
     clash = ws.resolve(main, {"second_ns": "/"})
     assert [c.name for c in clash.conflicts] == ["/sensor"]
 

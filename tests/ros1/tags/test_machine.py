@@ -33,9 +33,11 @@ def test_default_machine_is_conditional(ws: LaunchWorkspace) -> None:
     assert nodes["before"].fields["machine"].values() == [None]  # only later nodes
     assert nodes["viewer"].fields["machine"].values() == ["local"]
 
-    machine_of = {n["name"]: n["machine"] for n in ws.resolve(file, {"remote": "true"}).nodes}
+    machine_of = {
+        n.name: n.attributes["machine"] for n in ws.resolve(file, {"remote": "true"}).nodes
+    }
     assert machine_of == {"/before": None, "/driver": "robot", "/viewer": "local"}
-    machine_of = {n["name"]: n["machine"] for n in ws.resolve(file, {}).nodes}
+    machine_of = {n.name: n.attributes["machine"] for n in ws.resolve(file, {}).nodes}
     assert machine_of == {"/before": None, "/driver": None, "/viewer": "local"}
 
 

@@ -9,7 +9,7 @@ import pytest
 from rosvar.interpreter.model import LaunchModel, NodeDecl
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
-from rosvar.ros1.resolve import Restriction
+from rosvar.outputs.documents.resolution import resolution_document
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -54,8 +54,8 @@ def test_fig1_restrictions(ws: LaunchWorkspace) -> None:
 
     def names(args: dict[str, str]) -> list[object]:
         resolution = ws.resolve(file, args)
-        assert resolution.ok, resolution.to_json()
-        return [n["name"] for n in resolution.nodes]
+        assert resolution.ok, resolution.errors
+        return [n.name for n in resolution.nodes]
 
     assert names({}) == ["/teleop"]
     assert names({"use_teleop": "true"}) == ["/teleop"]
@@ -99,8 +99,8 @@ def test_same_named_nodes_stay_two_declarations(ws: LaunchWorkspace) -> None:
     for args in ({}, {"sim": "true"}, {"sim": "false"}):
         resolution = ws.resolve(file, args)
         assert resolution.ok and resolution.conflicts == []
-        assert [n["name"] for n in resolution.nodes] == ["/controller"]
-    assert ws.resolve(file, {"sim": "true"}).nodes[0]["type"] == "sim_controller"
+        assert [n.name for n in resolution.nodes] == ["/controller"]
+    assert ws.resolve(file, {"sim": "true"}).nodes[0].executable == "sim_controller"
 
 
 DUPLICATE_SOMETIMES = """
@@ -125,7 +125,7 @@ def test_duplicate_names_conflict_only_where_both_are_present(ws: LaunchWorkspac
     assert conflict.kind == "node-name" and conflict.name == "/driver"
     assert [loc.line for loc in conflict.locations] == [4, 5]  # <launch>, blank line, <arg>
     assert {loc.file for loc in conflict.locations} == {file}
-    document = clash.to_json()
+    document = resolution_document(clash)
     assert document["ok"] is False and document["conflicts"][0]["name"] == "/driver"
 
 
@@ -165,18 +165,18 @@ def test_node_fields_are_conditional_values(ws: LaunchWorkspace) -> None:
     assert test.fields["test-name"].where(lambda v: v == "check_r1") != model.space.false
 
     resolution = ws.resolve(file, {"robot": "r2", "verbose": "true"})
-    assert resolution.ok, resolution.to_json()
+    assert resolution.ok, resolution.errors
     [entry] = resolution.nodes
-    assert entry["name"] == "/r2/driver_r2"
-    assert entry["namespace"] == "/r2/"
-    assert entry["args"] == "--robot r2"
-    assert entry["respawn"] is True and entry["required"] is False
-    assert entry["remaps"] == [["cmd", "/r2/cmd_vel"]]
-    assert entry["env"] == [["ROBOT", "r2"]]
+    assert entry.name == "/r2/driver_r2"
+    assert entry.namespace == "/r2/"
+    assert entry.args == "--robot r2"
+    assert entry.attributes["respawn"] is True and entry.attributes["required"] is False
+    assert entry.remaps == [("cmd", "/r2/cmd_vel")]
+    assert entry.env == [("ROBOT", "r2")]
     assert resolution.params == {"/r2/driver_r2/rate": 10}
     [test_entry] = resolution.tests
-    assert test_entry["test_name"] == "check_r2"
-    assert (test_entry["time_limit"], test_entry["retry"]) == (12.0, 2)
+    assert test_entry.test is not None and test_entry.test["test_name"] == "check_r2"
+    assert (test_entry.test["time_limit"], test_entry.test["retry"]) == (12.0, 2)
 
 
 @pytest.mark.oracle
@@ -236,43 +236,3 @@ def test_anonymous_names_agree_with_roslaunch(ws: LaunchWorkspace) -> None:
     file = ws.launch("anon.launch", ANON)
     [result] = ws.assert_agrees(file, [{}])
     assert len(result["nodes"]) == 3
-
-
-TYPED = """
-  <arg name="robot" default="r1"/>
-  <arg name="sub" default="arm"/>
-  <group ns="$(arg robot)">
-    <node pkg="pkg" type="driver" name="driver" ns="$(arg sub)" args="--robot $(arg robot)"/>
-  </group>
-"""
-
-
-@pytest.mark.oracle
-def test_typed_fields_in_a_configuration_are_what_roslaunch_launches(
-    ws: LaunchWorkspace,
-) -> None:
-    """Each typed field, over every configuration, restricted to one (given values that are
-    ``<other>`` slots of the shared model: terms evaluated) is roslaunch's value."""
-    file = ws.launch("typed.launch", TYPED)
-    model = ws.model(file)
-    [node] = model.nodes
-    schema = node.schema
-    accessors = {
-        "name": schema.full_name,
-        "namespace": schema.namespace,
-        "package": schema.package,
-        "type": schema.executable,
-        "args": schema.args,
-    }
-    configs = [{}, {"robot": "r2"}, {"robot": "r2", "sub": "x"}, {"sub": "/abs"}]
-    results = ws.oracle(file, [(config, {}) for config in configs])
-    for config, theirs in zip(configs, results, strict=True):
-        restriction = Restriction(ws.analysis(), model, config, {})
-        assert theirs["ok"] and restriction.holds(node.condition)
-        ours = {
-            key: restriction.pick(node.value(accessor), node.location, key)
-            for key, accessor in accessors.items()
-        }
-        [expected] = theirs["nodes"]
-        assert ours == {key: expected[key] for key in accessors}, config
-    assert schema.name.of({"name": "driver"}) == "driver"

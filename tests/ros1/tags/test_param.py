@@ -137,7 +137,7 @@ def test_textfile_and_binfile(ws: LaunchWorkspace) -> None:
         '  <param name="gone" textfile="$(find pkg)/config/missing.txt" if="$(eval 1 == 2)"/>',
     )
     resolution = ws.resolve(file)
-    assert resolution.ok, resolution.to_json()
+    assert resolution.ok, resolution.errors
     assert resolution.params == {"/text": "hello\n", "/blob": {"__binary__": "AAH/"}}
 
 

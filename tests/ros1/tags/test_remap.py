@@ -51,13 +51,13 @@ def test_remaps_carry_conditions(ws: LaunchWorkspace) -> None:
 
 def test_remaps_per_configuration(ws: LaunchWorkspace) -> None:
     file = ws.launch("remaps.launch", REMAPS)
-    nodes = {n["name"]: n for n in ws.resolve(file, {"sim": "true", "scan": "/base_scan"}).nodes}
-    assert nodes["/g/inner"]["remaps"] == [
-        ["cmd_vel", "/sim/cmd_vel"],
-        ["odom", "/odometry/filtered"],
-        ["scan", "/base_scan"],
+    nodes = {n.name: n for n in ws.resolve(file, {"sim": "true", "scan": "/base_scan"}).nodes}
+    assert nodes["/g/inner"].remaps == [
+        ("cmd_vel", "/sim/cmd_vel"),
+        ("odom", "/odometry/filtered"),
+        ("scan", "/base_scan"),
     ]
-    assert nodes["/outer"]["remaps"] == [["cmd_vel", "/sim/cmd_vel"]]
+    assert nodes["/outer"].remaps == [("cmd_vel", "/sim/cmd_vel")]
 
 
 @pytest.mark.oracle

@@ -41,7 +41,7 @@ def test_inline_yaml_is_unrolled(ws: LaunchWorkspace) -> None:
     # the substituted block depends on the args: known values unrolled, others deferred
     assert any(isinstance(p, YamlDecl) for p in model.params)
     resolution = ws.resolve_fresh(file, {"gain": "0.5", "controller": "pd"})
-    assert resolution.ok, resolution.to_json()
+    assert resolution.ok, resolution.errors
     assert resolution.params["/pd/gain"] == 0.5
     assert resolution.params["/pd/name"] == "pd"
     assert "/list" not in resolution.params

@@ -1,7 +1,7 @@
 """Inline ROS 2 launch files for the tests of the tags: one package in a throw-away workspace,
 its model over every command line, and rosvar against the real ros2/launch (the oracle) for
-given launch arguments: both the interpretation of one command line and the variational
-model restricted to it must start what the oracle starts, or fail where it fails."""
+given launch arguments: the variational model restricted to them (``rosvar resolve``'s
+resolution) must start what the oracle starts, or fail where it fails."""
 
 from __future__ import annotations
 
@@ -13,13 +13,12 @@ from typing import Any
 import pytest
 
 from differential.ros2.test_fixtures import PACKAGE_XML
-from oracle.ros2_client import ORACLE, canonical_nodes, run_oracle
+from oracle.ros2_client import ORACLE, canonical_nodes, rosvar_nodes, run_oracle
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.inputs import Slot
 from rosvar.ros.version import RosVersion
-from rosvar.ros2.resolve import resolve_ros2, resolve_variational
 from rosvar.workspace import discover
 
 
@@ -54,20 +53,18 @@ class Launch:
         return self.analysis.space.slot(self.model.inputs[name], value)
 
     def matches_oracle(self, arguments: Mapping[str, str], strict: bool = True) -> dict[str, Any]:
-        """The oracle's result for ``arguments``, after checking rosvar's two readings agree
-        with it (success and the nodes started, or failure)."""
+        """The oracle's result for ``arguments``, after checking that rosvar's model
+        restricted to them agrees with it (success and the nodes started, or failure)."""
         if not ORACLE.is_dir():
             pytest.skip(f"the ROS 2 oracle {ORACLE} is absent")
         expected = run_oracle(self.main, arguments, [self.main.parent.parent], strict=strict)
         workspace = self.analysis.workspace
-        fixed = resolve_ros2(workspace, str(self.main), arguments)
         # the given values are known values of the model, as `rosvar resolve` makes them
         known = Analysis(workspace, extra_values={k: [v] for k, v in arguments.items()})
-        restricted = resolve_variational(known, str(self.main), arguments, {})
-        for result in (fixed, restricted):
-            assert result.ok == expected["ok"], (arguments, expected.get("error"), result.errors)
-            if result.ok:
-                assert canonical_nodes(result.to_json()) == canonical_nodes(expected), arguments
+        result = known.resolve([str(self.main)], arguments)
+        assert result.ok == expected["ok"], (arguments, expected.get("error"), result.errors)
+        if result.ok:
+            assert canonical_nodes(rosvar_nodes(result)) == canonical_nodes(expected), arguments
         return expected
 
 

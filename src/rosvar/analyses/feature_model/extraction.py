@@ -12,6 +12,7 @@ import os
 from collections.abc import Callable, Mapping, Sequence
 
 from rosvar.analyses.conflicts import Occurrence, index, internal_clashes
+from rosvar.analyses.feature_model.environment import fixed_environment
 from rosvar.analyses.feature_model.features import (
     ArgFeature,
     Constraint,
@@ -155,12 +156,14 @@ def extract(
     progress: Callable[[int, int, str], None] | None = None,
     *,
     products: bool = False,
+    env: Mapping[str, str] | None = None,
 ) -> FeatureModel:
     """Algorithm 1 over ``files`` (default: every launch file of the workspace).
 
     ``products``: the model of the products the configuration engine builds, where a file
     loaded by an include takes its args from the include, so its own are at their defaults
-    (:func:`_given_by_include`); the paper's model leaves them free.
+    (:func:`_given_by_include`), and the environment is ``env`` (a variable not given is
+    unset, :mod:`.environment`); the paper's model leaves both free.
     """
     space = analysis.space
     chosen = list(files if files is not None else analysis.workspace.launch_files)
@@ -243,8 +246,16 @@ def extract(
     buckets = index(models, launched_conditions(features, requires) if products else None)
     # a file included by several entry files reports its problems once per entry file: once here
     found = list(dict.fromkeys(d for model in models for d in model.diagnostics))
+    environment = dict(env or {})
     feature_model = FeatureModel(
-        space, features, requires, buckets, models, [*found, *_unknown_values(features)], products
+        space,
+        features,
+        requires,
+        buckets,
+        models,
+        [*found, *_unknown_values(features)],
+        products,
+        environment,
     )
     try:
         _check_links(buckets, len(features))
@@ -256,6 +267,7 @@ def extract(
             buckets,
             lambda: cross_tree.constraints,
             internal_clashes(buckets) if products else (),
+            fixed_environment(space, environment, analysis.package_table()) if products else None,
         )
     except ModelTooLarge as too_large:
         # kept without its traceback, whose frames hold the half-built BDDs

@@ -80,6 +80,7 @@ class FeatureModel:
     launch_models: list[LaunchModel]
     diagnostics: list[Diagnostic] = field(default_factory=list)
     products: bool = False  # built for the configuration engine (``extract``'s ``products``)
+    environment: Mapping[str, str] = field(default_factory=dict)  # the products' (``env``)
     solution: Solver | ModelTooLarge = field(init=False)
     cross_tree: CrossTree = field(init=False)
 

@@ -250,6 +250,7 @@ def build(
     buckets: Mapping[tuple[str, str], Sequence[Occurrence]],
     constraints: Callable[[], Sequence[Constraint]],
     internal: Sequence[Clash] = (),
+    fixed: Mapping[str, bool] | None = None,
 ) -> Solver:
     """The whole feature model over file and value variables only, one BDD per component.
 
@@ -260,7 +261,8 @@ def build(
     the pairs of files they link are found per name too (``excluding``): the
     pairwise ``excludes`` constraints (``constraints``, every cross-tree constraint)
     are built only if asked for. ``internal`` clashes exclude their file (the engine's
-    model: a file loading two nodes of one name fails alone).
+    model: a file loading two nodes of one name fails alone). ``fixed`` atoms (the engine's
+    environment, :mod:`.environment`) are substituted before the rest is quantified out.
     """
     files = {f.file: f for f in features}
     declared = declaring(space, files, buckets)
@@ -278,7 +280,13 @@ def build(
     manager.declare(*keep)  # a fresh manager in the chosen order (reordering in place is slow)
 
     def translate(formula: BDD) -> BDD:
-        return transfer(formula, manager, {n for n in space.support(formula) if n not in kept})
+        support = space.support(formula)
+        if fixed:
+            values = {n: fixed[n] for n in support if n in fixed}
+            if values:
+                formula = space.cofactor(formula, values)
+                support = space.support(formula)
+        return transfer(formula, manager, {n for n in support if n not in kept})
 
     with memory_bound(manager, len(features)):
         linked = _Links([f.id for f in features])

@@ -24,7 +24,6 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
-from rosvar.ros2.conventions.namespaces import unnamed
 
 
 class Kind(StrEnum):
@@ -165,19 +164,18 @@ def _namespace(node: NodeDecl) -> Choice[object]:
 
 
 def _shown_names(node: NodeDecl) -> Iterator[tuple[BDD, str | None, str]]:
-    """Each variant of a node's full name (None where not known) with its text for people:
-    a ROS 2 node without a name is ``⟨EXEC⟩`` in its namespace, per executable, as
-    ``rosvar resolve`` prints it."""
+    """Each variant of a node's full name (None where not known) with its text for people (a
+    term shows the inputs it awaits); a ROS 2 node without a name is shown by its label,
+    ``⟨EXEC⟩`` in its namespace, per executable, as ``rosvar resolve`` prints it."""
     schema = node.schema
     for condition, name in node.value(schema.full_name):
         if name is not None:
             yield condition, name if isinstance(name, str) else None, _shown(name)
             continue
-        where = combine([node.value(schema.namespace), node.value(schema.executable)], tuple)
-        for when, (namespace, executable) in where:
+        for when, label in node.value(schema.label):
             both = condition & when
             if both != both.bdd.false:
-                yield both, None, unnamed(_shown(namespace or ""), _shown(executable or ""))
+                yield both, None, _shown(label)
 
 
 def _nodes(analysis: Analysis, model: LaunchModel) -> Iterator[Element]:

@@ -24,12 +24,12 @@ from rosvar.analyses.robot_description.reading import XacroReader
 from rosvar.analyses.robot_description.spawns import Spawn, Spawns
 from rosvar.diagnostics import Location, Severity
 from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.resolution import ResolutionError, Restriction
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.atoms import SlotAtom
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER
-from rosvar.ros1.resolve import ResolutionError, Restriction
 
 PARTIAL_CODES = frozenset({"xacro-unsupported", "xacro-too-large", "package-unknown"})
 

@@ -36,7 +36,7 @@ def cmd_configure(options: argparse.Namespace) -> int:
     analysis, env = loaded
     try:
         choices = [UserChoice.parse(action, text) for action, text in options.choices]
-        model = extract(analysis, progress=progress, products=True)
+        model = extract(analysis, progress=progress, products=True, env=env)
         interfaces = interfaces_of(analysis.workspace, options)
         configurator = Configurator(
             analysis,

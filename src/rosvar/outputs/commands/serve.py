@@ -25,7 +25,7 @@ def cmd_serve(options: argparse.Namespace) -> int:
     started = time.perf_counter()
     files = len(analysis.workspace.launch_files)
     print(f"rosvar: analysing {files} launch files ...", file=sys.stderr, flush=True)
-    model = extract(analysis, progress=progress, products=True)
+    model = extract(analysis, progress=progress, products=True, env=env)
     interfaces = interfaces_of(analysis.workspace, options)
     configurator = Configurator(
         analysis,

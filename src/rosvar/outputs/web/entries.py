@@ -31,9 +31,9 @@ from rosvar.configuration.presence import Presence
 from rosvar.diagnostics import Location
 from rosvar.files import Confinement
 from rosvar.interpreter.model import NodeDecl, Raw
-from rosvar.ros1.resolve import ResolutionError, test_fields
+from rosvar.interpreter.resolution import ResolutionError
+from rosvar.ros1.resolve import test_fields
 from rosvar.ros1.validation import node_values
-from rosvar.ros2.conventions.namespaces import unnamed
 from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, typed
 from rosvar.ros2.resolve import parameter_file
 from rosvar.workspace.interfaces.model import Role
@@ -97,7 +97,7 @@ def _ros2_fields(
     parameters: Sequence[tuple[str | None, str | None]],
 ) -> Fields:
     """A ROS 2 node's name, namespace and parameters as ``ros2 launch`` composes them: the
-    pushed namespace, the node's own, its parameters merged in order (``resolve_ros2``'s).
+    pushed namespace, the node's own, its parameters merged in order (as ``rosvar resolve``'s).
     A node with no name takes one from its executable at run time: it is drawn as
     ``⟨EXEC⟩`` in its namespace, its ``fqn`` null."""
     namespace = node.schema.namespace.text(text) or "/"
@@ -112,7 +112,7 @@ def _ros2_fields(
         except ValueError:
             continue  # not a value yet (an arg still open) or not readable: not shown
     return {
-        "name": fqn or unnamed(namespace, node.schema.executable.text(text)),
+        "name": node.schema.label.text(text),
         "fqn": fqn,
         "namespace": namespace,
         "parameters": effective(fqn, sources),

@@ -2,25 +2,12 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed
-from rosvar.interpreter.lifted import apply
-from rosvar.interpreter.model import (
-    EnvSetting,
-    NodeDecl,
-    NodeField,
-    NodeSchema,
-    ParamDecl,
-    Raw,
-    Remap,
-    constant_field,
-)
-from rosvar.logic.choice import Choice, Fail, combine
+from rosvar.interpreter.model import EnvSetting, NodeDecl, ParamDecl, Raw, Remap
+from rosvar.logic.choice import Choice, combine
 from rosvar.ros.names import is_legal_name
-from rosvar.ros.version import RosVersion
-from rosvar.ros1.dialect import tag
+from rosvar.ros1.dialect import ROS1, tag
 from rosvar.ros1.scope import Scope
 from rosvar.ros1.tags.common import namespace_scope
 from rosvar.ros1.tags.env import handle_env
@@ -47,27 +34,6 @@ NODE_ATTRIBUTES = (
 TEST_ATTRIBUTES = (*NODE_ATTRIBUTES, "test-name", "time-limit", "retry")
 
 
-def _full_name(values: Sequence[Raw | None]) -> Raw | None:
-    """roslaunch's ``ns_join`` of the node's namespace and name."""
-    namespace, name = values
-    if namespace is None or name is None:
-        return None
-    joined = apply("ns_join", (namespace, name))
-    return None if isinstance(joined, Fail) else joined
-
-
-ROS1_NODES = NodeSchema(
-    RosVersion.ROS1,
-    package=NodeField(("pkg",)),
-    executable=NodeField(("type",)),
-    name=NodeField(("name",)),
-    namespace=NodeField(("namespace",)),  # the ``ns`` attribute under its scope's, global
-    full_name=NodeField(("namespace", "name"), _full_name),
-    args=NodeField(("args",)),
-    plugin=constant_field(None),
-    launched=("pkg", "type", "namespace", "name", "args"),
-)
-"""A ``<node>``'s typed fields."""
 OPTIONAL = (
     "machine",
     "args",
@@ -190,7 +156,7 @@ def _node(it: Interpretation[Scope], entity: Entity, scope: Scope, is_test: bool
             fields=fields,
             remaps=remaps,
             env=[EnvSetting(e.condition, e.name, e.value) for e in env],
-            schema=ROS1_NODES,
+            schema=ROS1.nodes,
             args=child.args,
         )
     )

@@ -9,42 +9,20 @@ Name composition and parameter files are left to resolution, which sees one conf
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from enum import StrEnum
-
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split
-from rosvar.interpreter.model import (
-    EnvSetting,
-    NodeDecl,
-    NodeField,
-    NodeParameter,
-    NodeSchema,
-    Raw,
-    Remap,
-)
+from rosvar.interpreter.model import EnvSetting, NodeDecl, NodeParameter, Raw, Remap
 from rosvar.logic.choice import Choice, Fail, combine
-from rosvar.logic.terms import Apply, is_term, register
-from rosvar.ros.version import RosVersion
+from rosvar.logic.terms import is_term
 from rosvar.ros2.context import Context, optional
-from rosvar.ros2.conventions.namespaces import full_name, make_absolute, prefix_namespace
-from rosvar.ros2.dialect import tag
+from rosvar.ros2.dialect import ROS2, tag
+from rosvar.ros2.nodes import ProcessKind
 from rosvar.ros2.substitutions import Ros2Substituter
 
 FIELDS = (
     "pkg", "exec", "cmd", "plugin", "name", "namespace", "args", "ros_args", "launch-prefix",
     "output",
 )  # fmt: skip
-
-
-class ProcessKind(StrEnum):
-    """What a declaration starts (the oracle's ``kind``)."""
-
-    NODE = "node"
-    LIFECYCLE_NODE = "lifecycle_node"
-    PROCESS = "process"
-    CONTAINER = "container"
-    COMPOSABLE_NODE = "composable_node"
 
 
 KINDS = {
@@ -60,51 +38,6 @@ model holds them as one ``shlex``-quoted text."""
 NESTED = ("composable_node", "extra_arg")  # handled by their parent, not as settings
 
 
-def _texts(values: Sequence[Raw | None]) -> list[str | None] | None:
-    """The values when all are known (strings or absent)."""
-    texts = [value for value in values if value is None or isinstance(value, str)]
-    return texts if len(texts) == len(values) else None
-
-
-def _namespace(values: Sequence[Raw | None]) -> Raw | None:
-    """launch_ros's: the pushed namespace, then the node's own (under it when relative),
-    absolute."""
-    texts = _texts(values)
-    if texts is not None:
-        return make_absolute(prefix_namespace(*texts))
-    pushed, own = values
-    return Apply("ros2_namespace", (pushed or "", own or ""))
-
-
-def _full_name(values: Sequence[Raw | None]) -> Raw | None:
-    """The fully qualified name; None without a name (its code names it)."""
-    texts = _texts(values)
-    if texts is not None:
-        pushed_text, own_text, name_text = texts
-        return None if name_text is None else full_name(pushed_text, own_text, name_text)
-    pushed, own, name = values
-    return None if name is None else Apply("ros2_full_name", (pushed or "", own or "", name))
-
-
-register(
-    "ros2_namespace", lambda _host, pushed, own: make_absolute(prefix_namespace(pushed, own)) or "/"
-)
-register("ros2_full_name", lambda _host, pushed, own, name: full_name(pushed, own, name))
-
-ROS2_NODES = NodeSchema(
-    RosVersion.ROS2,
-    package=NodeField(("pkg",)),
-    executable=NodeField(("exec",)),
-    name=NodeField(("name",)),
-    namespace=NodeField(("ros_namespace", "namespace"), _namespace),
-    full_name=NodeField(("ros_namespace", "namespace", "name"), _full_name),
-    args=NodeField(("args",)),
-    plugin=NodeField(("plugin",)),
-    launched=("pkg", "exec", "namespace", "name", "args", "ros_namespace", "plugin"),
-)
-"""A node's (a process's, a composable node's) typed fields."""
-
-
 @tag("node")
 @tag("lifecycle_node")
 @tag("executable")
@@ -113,7 +46,7 @@ ROS2_NODES = NodeSchema(
 def node(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     it.required(entity, REQUIRED[entity.tag], context)
     fields = _declare(it, entity, context, KINDS[entity.tag], None)
-    named = ROS2_NODES.full_name.over(fields)
+    named = ROS2.nodes.full_name.over(fields)
     container = it.strip(named.map(_container_name), "<node_container> name")
     _composables(it, entity, context, container)
 
@@ -188,7 +121,7 @@ def _declare(
             fields,
             remaps,
             env,
-            ROS2_NODES,
+            ROS2.nodes,
             parameters=parameters,
         )
     )

@@ -9,10 +9,10 @@ import pytest
 
 from oracle.ros2_client import requires_ros2_oracle, run_oracle
 from rosvar.interpreter.model import NodeDecl
+from rosvar.interpreter.resolution import Restriction
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.terms import Apply, is_term
-from rosvar.ros1.resolve import Restriction
-from rosvar.ros2.tags.node import ROS2_NODES
+from rosvar.ros2.nodes import ROS2_NODES
 from rosvar.workspace import discover
 
 PACKAGE_XML = """<package format="3"><name>pkg</name>
@@ -60,7 +60,10 @@ def test_namespaces_compose_as_launch_ros_does(
     values = {"ros_namespace": pushed, "namespace": own, "name": "n"}
     assert ROS2_NODES.namespace.of(values) == namespace
     assert ROS2_NODES.full_name.of(values) == full
-    assert ROS2_NODES.full_name.of({**values, "name": None}) is None  # its code names it
+    assert ROS2_NODES.label.of({**values, "exec": "e"}) == full
+    unnamed = {**values, "name": None, "exec": "e"}
+    assert ROS2_NODES.full_name.of(unnamed) is None  # its code names it
+    assert ROS2_NODES.label.of(unnamed) == (namespace or "").rstrip("/") + "/⟨e⟩"
 
 
 def test_unknown_parts_compose_into_a_term(tmp_path: Path) -> None:
@@ -72,6 +75,9 @@ def test_unknown_parts_compose_into_a_term(tmp_path: Path) -> None:
     terms = [leaf for _c, leaf in node.value(ROS2_NODES.full_name) if is_term(leaf)]
     assert terms and all(isinstance(term, Apply) for term in terms)
     assert any(str(term) == "/r1/⟨own⟩/driver" for term in terms)
+    unnamed = _named(model.nodes, None)
+    labels = {str(label) for _c, label in unnamed.value(ROS2_NODES.label)}
+    assert labels == {"/r1/⟨unnamed⟩", "/r2/⟨unnamed⟩", "/⟨unnamed⟩"}  # pushed r1, r2 or /
     for own, expected in (("/abs", "/abs/driver"), ("x/", "/r2/x/driver")):
         restriction = Restriction(analysis, model, {"ns": "r2", "own": own}, {})
         name = restriction.pick(node.value(ROS2_NODES.full_name), node.location, "name")
@@ -111,6 +117,6 @@ def test_typed_fields_in_a_configuration_are_what_ros2_launch_starts(
     assert sorted(ours, key=str) == sorted(theirs, key=str)
 
 
-def _named(nodes: list[NodeDecl], name: str) -> NodeDecl:
+def _named(nodes: list[NodeDecl], name: str | None) -> NodeDecl:
     [node] = [n for n in nodes if name in n.fields["name"].values()]
     return node
