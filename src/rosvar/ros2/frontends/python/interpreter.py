@@ -51,6 +51,8 @@ MAX_LENGTH = 100_000
 """Longest string, text or list the reading builds (``*``, ``+``, ``join``, ``range``...)."""
 MAX_INT_BITS = 4096
 """Largest integer the reading computes: repeated squaring must not exhaust memory."""
+CHARS_PER_STEP = 64
+"""Characters of a string built that cost one step (a string is copied a word at a time)."""
 
 MODULE_NAME = "__launch__"
 """``__name__`` while the file is read: launch imports it as a module, not as ``__main__``."""
@@ -109,6 +111,77 @@ def size(value: Value) -> int:
     return 1
 
 
+class Expansion:
+    """The size of values with every shared part counted each time it occurs, as walking
+    them (their launch elements, a parameter dict) would meet it: ``[[s] * n] * n`` is
+    n * n, ``GroupAction([g, g])`` nested k deep 2^k. Each object's size is computed once
+    per question; a launch element's is remembered (by its identity and number of children:
+    elements are built once, descriptions only grow), so that a chain of k nested groups
+    costs k, not k^2."""
+
+    def __init__(self) -> None:
+        self._elements: dict[tuple[int, int], int] = {}
+        self._kept: list[Entity] = []  # ids stay unique while their objects live
+
+    def cost(self, value: object, limit: int) -> int:
+        """The expanded size of ``value`` less that of the launch elements built before that
+        it holds, each credited once (they were charged when built: a chain of k groups
+        costs k, two copies of one group are one group more); counting stops past
+        ``limit``, so the work done is at most the size found."""
+        sizes: dict[int, int] = {}
+        keep: list[object] = []
+        credited: set[int] = set()
+        credit = 0
+
+        def measure(item: object) -> int:
+            nonlocal credit
+            if isinstance(item, str):
+                return 1 + len(item) // CHARS_PER_STEP
+            if not isinstance(item, list | tuple | dict | Entity | Text | Description):
+                return 1
+            element = (id(item), len(item.children)) if isinstance(item, Entity) else None
+            known = sizes.get(id(item)) if element is None else self._elements.get(element)
+            if known is not None:
+                if element is not None and id(item) not in credited:
+                    credited.add(id(item))
+                    credit += known
+                return known
+            keep.append(item)
+            sizes[id(item)] = limit + credit + 1  # a container holding itself is too large
+            total = 1
+            for part in _parts(item):
+                total += measure(part)
+                if total > limit + credit:
+                    return total  # not remembered: a later question may allow more
+            sizes[id(item)] = total
+            if element is not None and isinstance(item, Entity):
+                self._elements[element] = total
+                self._kept.append(item)
+            return total
+
+        return measure(value) - credit
+
+
+def _parts(item: object) -> Iterator[object]:
+    if isinstance(item, dict):
+        for key, value in item.items():
+            yield key
+            yield value
+    elif isinstance(item, Entity):
+        yield from item.attributes.values()
+        yield from item.children
+    elif isinstance(item, Text):
+        yield from item.parts
+    elif isinstance(item, Description):
+        yield item.root
+    elif isinstance(item, list | tuple):
+        yield from item
+
+
+_REFERENCES = (ast.Name, ast.Attribute, ast.Constant)
+"""Expressions that only refer to a value already built: nothing to charge."""
+
+
 def truth(value: Value) -> bool | None:
     """Python's truth of ``value``; ``None`` when it is not known statically."""
     if isinstance(value, Unknown | Module):  # a Module may be any value of another module
@@ -126,6 +199,8 @@ class Interpreter:
         self.lines = text.splitlines()
         self.sink = sink
         self.steps = 0
+        self.statement: ast.stmt | None = None
+        self.expansion = Expansion()
         self.depth = 0
         self.statements: dict[type[ast.stmt], Callable[[Any, Scope], None]] = {
             ast.Expr: self._expression_statement,
@@ -188,6 +263,14 @@ class Interpreter:
         if self.steps > MAX_STEPS:
             raise OutOfBudget
 
+    def charge(self, value: object) -> None:
+        """Count the expanded size of a value an operation built or walked, so that work
+        multiplied by sharing or by long operands (``l == l``, ``l[:]``, ``s.split()``)
+        is bounded by the same budget as the statements."""
+        self.steps += self.expansion.cost(value, MAX_STEPS - self.steps) - 1
+        if self.steps > MAX_STEPS:
+            raise OutOfBudget
+
     # ------------------------------------------------------------------ statements
 
     def run_module(self, tree: ast.Module) -> Scope:
@@ -203,6 +286,7 @@ class Interpreter:
     def block(self, body: list[ast.stmt], scope: Scope) -> None:
         for statement in body:
             self.step()
+            self.statement = statement  # where a budget runs out
             handler = self.statements.get(type(statement))
             if handler is None:
                 self.not_followed(f"a '{type(statement).__name__}' statement", statement)
@@ -345,7 +429,10 @@ class Interpreter:
         handler = self.expressions.get(type(node))
         if handler is None:
             return self.not_followed(f"a '{type(node).__name__}' expression", node)
-        return handler(node, scope)
+        value = handler(node, scope)
+        if not isinstance(node, _REFERENCES):
+            self.charge(value)
+        return value
 
     def _constant(self, node: ast.Constant, scope: Scope) -> Value:
         if isinstance(node.value, _SCALARS):
@@ -462,6 +549,7 @@ class Interpreter:
         left = self.expr(node.left, scope)
         for op, comparator in zip(node.ops, node.comparators, strict=True):
             right = self.expr(comparator, scope)
+            self.charge((left, right))  # a comparison walks both
             if not (_constant(left) or isinstance(left, dict)) or not (
                 _constant(right) or isinstance(right, dict)
             ):

@@ -45,7 +45,9 @@ def parse_python_launch_bytes(data: bytes, filename: str) -> ParseResult:
     try:
         root = entry_point(interpreter, tree)
     except OutOfBudget:
-        sink.error("python-budget", f"reading the file takes more than {MAX_STEPS} steps", start)
+        statement = interpreter.statement
+        where = start if statement is None else interpreter.location(statement)
+        sink.error("python-budget", f"reading the file takes more than {MAX_STEPS} steps", where)
         return ParseResult(None, sink.items)
     except RecursionError:
         sink.error("python-budget", "expressions nested too deeply to read", start)
