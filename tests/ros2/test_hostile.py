@@ -318,3 +318,46 @@ def test_deep_groups_are_nesting_too_deep(tmp_path: Path, launch: str, text: str
     assert error_codes(document) == ["nesting-too-deep"]
     assert document["errors"][0]["line"] == (2 if launch.endswith(".xml") else 8)
     assert "nesting-too-deep" in diagnostic_codes(analyze(ws))
+
+
+def _statements(count: int) -> str:
+    return (
+        PYTHON_HEAD
+        + "    x = 0\n"
+        + "    x = x + 1\n" * count
+        + "    return LaunchDescription([])\n"
+    )
+
+
+@pytest.mark.parametrize(
+    ("count", "code"), [(180_000, "file-too-large"), (40_000, "python-budget")]
+)
+def test_large_python_files_are_refused_before_parsing(
+    tmp_path: Path, count: int, code: str
+) -> None:
+    """Over 1 MiB, or 100,000 tokens: refused with a diagnostic in every command, as an
+    entry file and as an included one, before ``ast.parse`` spends seconds and gigabytes."""
+    include = (
+        "from launch.actions import IncludeLaunchDescription\n"
+        "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
+        + PYTHON_HEAD
+        + "    here = os.path.dirname(__file__)\n"
+        + "    return LaunchDescription([IncludeLaunchDescription(\n"
+        "        PythonLaunchDescriptionSource(os.path.join(here, 'big.py')))])\n"
+    )
+    ws = workspace(
+        tmp_path,
+        {
+            "launch/big.launch.py": _statements(count),
+            "launch/big.py": _statements(count),
+            "launch/includer.launch.py": "import os\n" + include,
+        },
+    )
+    _done, document = resolve(ws, "launch/big.launch.py")
+    (error,) = document["errors"]
+    assert "Python launch file" in error["message"] and error["line"] == 1
+    _done, document = resolve(ws, "launch/includer.launch.py")
+    (error,) = document["errors"]
+    assert "big.py" in error["message"] and error["line"] > 1
+    assert code in diagnostic_codes(analyze(ws))
+    assert code in run("features", str(ws)).stdout
