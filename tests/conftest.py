@@ -36,6 +36,25 @@ from differential.harness import compare  # noqa: E402
 collect_ignore = ["data"]
 from oracle.client import shared_oracle  # noqa: E402
 
+
+def pytest_addoption(parser: pytest.Parser) -> None:
+    parser.addoption(
+        "--ros2-full",
+        action="store_true",
+        help="also run the whole real-repository ROS 2 differential (tests marked ros2_full)",
+    )
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """The whole real-repository differential (most of an hour) only on request."""
+    if config.getoption("--ros2-full"):
+        return
+    skip = pytest.mark.skip(reason="the whole ROS 2 differential: run with --ros2-full")
+    for item in items:
+        if "ros2_full" in item.keywords:
+            item.add_marker(skip)
+
+
 PACKAGE_XML = """<?xml version="1.0"?>
 <package format="2">
   <name>{name}</name>

@@ -8,7 +8,6 @@ from pathlib import Path
 
 import pytest
 
-from rosvar import files
 from rosvar.files import Confinement, FileCode, FileRefused, read_file
 
 
@@ -79,7 +78,7 @@ def _fstat_says(monkeypatch: pytest.MonkeyPatch, size: int) -> None:
         fields[6] = size  # st_size
         return os.stat_result(fields)
 
-    monkeypatch.setattr(files.os, "fstat", fstat)
+    monkeypatch.setattr(os, "fstat", fstat)
 
 
 def test_file_grown_after_stat_is_read_whole(

@@ -160,13 +160,9 @@ def test_the_layout_names_the_dialects_and_every_module() -> None:
 
 
 CORE_TO_DIALECT_PENDING = {
-    # issue 27 items 4 and 5: the configuration graph's node entries (outputs/web) still
-    # render each dialect's own fields themselves (ROS 1's typed attributes and tests, ROS 2's
-    # merged parameters) instead of through the dialect
-    "rosvar.outputs.web.entries -> rosvar.ros1.resolve",
-    # issue 30 item 1 (h-engine): the graph loads what a typed text reaches as ROS 1's
-    # resolution loads it (the same conversions and checks), until one resolution serves both
-    "rosvar.configuration.graph -> rosvar.ros1.resolve",
+    # issue 27 item 5: the configuration graph's node entries (outputs/web) still render each
+    # dialect's own fields themselves (ROS 1's typed attributes, ROS 2's merged parameters)
+    # instead of through the dialect
     "rosvar.outputs.web.entries -> rosvar.ros1.validation",
     "rosvar.outputs.web.entries -> rosvar.ros2.conventions.parameters",
     "rosvar.outputs.web.entries -> rosvar.ros2.resolve",
@@ -184,7 +180,7 @@ def test_no_import_from_a_layer_to_a_later_one() -> None:
         for source, targets in GRAPH.items()
         for target in targets
         # every module imports the package itself first: importing it names nothing new
-        if target != ROOT and layer_of(target, ROWS) > layer_of(source, ROWS)  # type: ignore[operator]
+        if target != ROOT and (layer_of(target, ROWS) or 0) > (layer_of(source, ROWS) or 0)
     }
     assert wrong == LATER_PENDING
 

@@ -101,6 +101,11 @@ class Review:
     when: dict[str, dict[int, str]] = field(default_factory=dict)
     """Per role, the entries (by line) that a condition on the node's parameters switches
     on (``param('~use_control')``, as a hint's ``when:``)."""
+    defaults: dict[int, object] = field(default_factory=dict)
+    """The parameter reads (by line) the extractor took for required whose code, read by
+    hand, goes on when the parameter is unset: what it falls back to (a literal, or
+    ``{"expression": ...}`` for what the code keeps or computes). ``param-unset`` reports
+    required reads only (docs/checks.md)."""
 
 
 def _named(parameter: str, default: str | None = None, namespace: str = "") -> Item:
@@ -181,7 +186,9 @@ REVIEW: dict[tuple[str, str], Review] = {
     ("move_base", "move_base"): Review(
         f"added /tf and /tf_static ({TF2_LISTENER}); the costmaps' and planners' plugins "
         "(loaded at run time) are not read; move_base_simple/goal is rviz's 2D Nav Goal, "
-        "~current_goal, goal and recovery_status are for people",
+        "~current_goal, goal and recovery_status are for people; without "
+        "~recovery_behaviors it loads its default recovery behaviours",
+        defaults={1022: {"expression": "loadDefaultRecoveryBehaviors()"}},
         boundary={
             "subscribes": ["move_base_simple/goal"],
             "publishes": ["~current_goal", "move_base/goal", "move_base/recovery_status"],
@@ -263,7 +270,9 @@ REVIEW: dict[tuple[str, str], Review] = {
     ),
     ("topic_tools", "relay"): Review(
         "the topics are the command line's (relay IN_TOPIC [OUT_TOPIC]), of any type; "
-        "dropped a publisher reached by name in ShapeShifter::advertise",
+        "dropped a publisher reached by name in ShapeShifter::advertise; ~lazy is read by "
+        "getParam into g_lazy, which keeps false when it is unset",
+        defaults={169: False},
         add={
             "subscribes": [
                 {**_entry("{argv[1]}", None, RELAY, 58), "static": False},
@@ -366,7 +375,9 @@ for _filter in ("ekf_localization_node", "ukf_localization_node"):
     REVIEW[("robot_localization", _filter)] = Review(
         "set_pose (topic) is for people and tools resetting the filter; each sensor topic "
         "is the value of ~odomN/~poseN/~twistN/~imuN (one per parameter set); cmd_vel only "
-        "with ~use_control, stamped after ~stamped_control",
+        "with ~use_control, stamped after ~stamped_control; ~control_config only matters "
+        "with ~use_control, and the filter warns and ignores the control term without it",
+        defaults={888: {"expression": "control term ignored"}},
         boundary={"subscribes": ["set_pose"]},
         named={
             "subscribes": {
@@ -380,6 +391,17 @@ for _filter in ("ekf_localization_node", "ukf_localization_node"):
             }
         },
     )
+REVIEW[("teleop_twist_joy", "teleop_node")] = Review(
+    "~scale_linear, ~scale_linear_turbo, ~scale_angular and ~scale_angular_turbo are read "
+    "by getParam into maps whose result is dropped: unset, a map stays empty and its axes "
+    "move at scale 0 (teleop_twist_joy.cpp)",
+    defaults={line: {"expression": "{}"} for line in (79, 80, 91, 92)},
+)
+REVIEW[("interactive_marker_twist_server", "marker_server")] = Review(
+    "~linear_scale, ~max_positive_linear_velocity and ~max_negative_linear_velocity are read "
+    "by getParam into maps whose result is dropped: unset, a map stays empty",
+    defaults={line: {"expression": "{}"} for line in (56, 57, 58)},
+)
 REVIEW[("robot_pose_ekf", "robot_pose_ekf")] = Review(
     "each input only when its ~odom_used, ~imu_used, ~vo_used, ~gps_used says so "
     "(odom_estimation_node.cpp)",
@@ -450,6 +472,13 @@ def _switched(document: Item, review: Review) -> None:
             assert isinstance(named_by, dict)
             for entry in match:
                 entry.update(named, name="{" + str(named_by["parameter"]) + "}", static=False)
+    params = document["params"]
+    assert isinstance(params, list)
+    for line, fallback in review.defaults.items():
+        match = [e for e in params if e["line"] == line]
+        assert match, (document["executable"], "params", line)
+        for entry in match:
+            entry["default"] = fallback
     for role, conditions in review.when.items():
         entries = document[role]
         assert isinstance(entries, list)

@@ -198,3 +198,41 @@ def test_ros2_nodes_of_one_name_are_a_warning_and_two_providers(tmp_path: Path) 
         ("/r1/reset", "2 nodes serve /r1/reset: /r1/ear ×2")
     ]
     assert all(analysis.space.describe(f.condition) == "ns=r1" for f in served)
+
+
+def _findings(ws: LaunchWorkspace, body: str, check: Check) -> list[tuple[str, Severity, str]]:
+    for name, text in SOURCES.items():
+        ws.write(f"scripts/{name}", text)
+    file = ws.launch("system.launch", body)
+    analysis = ws.analysis()
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    confinement = analysis.workspace.confinement()
+    found = check_models(analysis.space, [analysis.model(file)], interfaces, confinement)
+    return [(f.name, f.severity, f.message) for f in found if f.check is check]
+
+
+def test_a_parameter_set_in_other_configurations_is_a_note(ws: LaunchWorkspace) -> None:
+    """MoveIt's demo.launch: ``load_robot_description:=false`` leaves the description to what
+    runs beside; a read no launch file ever sets stays a warning."""
+    body = """<arg name="load" default="true"/>
+      <param name="reader/rate" value="2" if="$(arg load)"/>
+      <node pkg="pkg" type="reader.py" name="reader"/>"""
+    [(name, severity, message)] = _findings(ws, body, Check.PARAM_UNSET)
+    assert (name, severity) == ("/reader/rate", Severity.NOTE)
+    assert message.endswith("in these configurations (it does in others)")
+    body = '<node pkg="pkg" type="reader.py" name="reader"/>'
+    assert [s for _n, s, _m in _findings(ws, body, Check.PARAM_UNSET)] == [Severity.WARNING]
+
+
+def test_a_node_without_interface_beside_a_missing_partner_makes_a_note(
+    ws: LaunchWorkspace,
+) -> None:
+    """Husky's navsat.launch: the GPS driver in /gps, whose interface rosvar does not know,
+    publishes the gps/fix navsat_transform reads; one in another namespace says nothing."""
+    body = """<node pkg="pkg" type="reader.py" name="reader"/>
+      <node pkg="driver" type="gps" name="gps" ns="reader"/>"""
+    [(name, severity, message)] = _findings(ws, body, Check.NO_PROVIDER)
+    assert (name, severity) == ("/reader/input", Severity.NOTE)
+    assert message.endswith("(unless /reader/gps, whose interface rosvar does not know, does)")
+    body = body.replace('ns="reader"', 'ns="elsewhere"')
+    assert [s for _n, s, _m in _findings(ws, body, Check.NO_PROVIDER)] == [Severity.WARNING]

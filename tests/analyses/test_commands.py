@@ -142,3 +142,45 @@ def test_features_rejects_an_unknown_format(
     with pytest.raises(SystemExit) as stop:
         run(capsys, "features", str(small.root), "--format", "no-such-format")
     assert stop.value.code == 2
+
+
+def test_metrics_count_the_args_of_ros2_files_in_every_format(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Each file is read by its dialect's frontend (before, the ROS 1 XML reader read them
+    and counted 0 args)."""
+    package = tmp_path / "ws" / "pkg"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="3"><name>pkg</name><version>0.0.0</version><description>d'
+        '</description><maintainer email="a@b.c">m</maintainer><license>BSD</license>'
+        "<export><build_type>ament_cmake</build_type></export></package>"
+    )
+    (package / "launch" / "a.launch.py").write_text(
+        "from launch import LaunchDescription\n"
+        "from launch.actions import DeclareLaunchArgument\n"
+        "from launch.conditions import IfCondition\n"
+        "from launch.substitutions import LaunchConfiguration as V\n"
+        "from launch_ros.actions import Node\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([\n"
+        "        DeclareLaunchArgument('use_cam', default_value='false'),\n"
+        "        DeclareLaunchArgument('robot', default_value='r1'),\n"
+        "        Node(package='pkg', executable='t', name='cam',\n"
+        "             condition=IfCondition(V('use_cam'))),\n"
+        "        Node(package='pkg', executable='t', name=V('robot')),\n"
+        "    ])\n"
+    )
+    (package / "launch" / "b.launch.yaml").write_text(
+        "launch:\n- arg: {name: mode, default: a}\n- node: {pkg: pkg, exec: t, name: $(var mode)}\n"
+    )
+    code, out, _ = run(capsys, "metrics", str(package.parent), "--json")
+    assert code == 0
+    metrics = json.loads(out)
+    assert (metrics["LF"], metrics["A"], metrics["ACG"], metrics["AS"], metrics["IF"]) == (
+        2,
+        3,
+        3,
+        2,
+        1,
+    )

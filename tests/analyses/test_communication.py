@@ -276,6 +276,21 @@ def test_ros2_graph_is_the_interfaces_resolved(tmp_path: Path) -> None:
     }
 
 
+def test_ros2_processes_add_nothing_to_the_graph(tmp_path: Path) -> None:
+    """An ``<executable>`` (``ExecuteProcess``) has no name nor package: no interface, no
+    failure (Universal Robots' ``ur_control.launch.py`` starts ``socat`` so)."""
+    analysis, file, interfaces, _edges = _ros2_setup(tmp_path)
+    with_process = Path(file).with_name("with_process.launch.xml")
+    with_process.write_text(
+        f'<launch><include file="{file}"/><executable cmd="socat pty,link=/tmp/tty tcp:ur:54321"/>'
+        "</launch>"
+    )
+    nodes = analysis.resolve([str(with_process)]).nodes
+    alone = analysis.resolve([file]).nodes
+    assert len(nodes) == len(alone) + 1
+    assert resolved_graph(nodes, interfaces, {}) == resolved_graph(alone, interfaces, {})
+
+
 def test_ros2_restricted_graph_equals_resolved_graph(tmp_path: Path) -> None:
     """Differential, as for ROS 1: the variational edges of a configuration are the graph of
     the nodes ``ros2 launch`` would start (``rosvar resolve``'s)."""

@@ -6,7 +6,7 @@ import os
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from rosvar.analyses.conflicts import (
     DeclarationKind,
@@ -19,6 +19,7 @@ from rosvar.analyses.conflicts import (
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.diagnostics import Location
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
@@ -47,8 +48,8 @@ def occurrences(space: ConditionSpace, names: list[str], calls: list[int]) -> li
             name,
             f"/f{i}.launch",
             Location(f"/f{i}.launch", 1, 1),
-            Counted(space.true, calls),
-        )  # type: ignore[arg-type]
+            cast(BDD, Counted(space.true, calls)),  # a BDD that counts its conjunctions
+        )
         for i, name in enumerate(names)
     ]
 

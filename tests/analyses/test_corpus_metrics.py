@@ -62,7 +62,7 @@ def result(system: str) -> Result:
 
 def manifest_launch_files(directory: Path) -> list[str]:
     """MANIFEST.md's LF rule: ``.launch`` among a file name's suffixes (no hidden folders)."""
-    found = []
+    found: list[str] = []
     for folder, dirs, files in os.walk(directory):
         dirs[:] = [d for d in dirs if not d.startswith(".")]
         found.extend(os.path.join(folder, f) for f in files if ".launch" in f)

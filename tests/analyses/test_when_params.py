@@ -27,7 +27,7 @@ from rosvar.diagnostics import Severity
 from rosvar.interpreter.resolution import Restriction
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.inputs import OTHER
+from rosvar.logic.inputs import OTHER, Slot
 from rosvar.outputs.web.entries import render
 from rosvar.ros1.resolve import resolve
 from rosvar.workspace.hints import load_hints
@@ -116,7 +116,7 @@ def test_the_edge_holds_where_the_parameter_satisfies_the_when(ws: LaunchWorkspa
     space = analysis.space
     conditions = _conditions(space, model_edges(space, model, interfaces))
 
-    def arg(name: str, value: str = "true") -> BDD:
+    def arg(name: str, value: Slot = "true") -> BDD:
         return space.slot(model.inputs[name], value)
 
     # every arg at a value analysis knows (typed texts: below)
@@ -193,7 +193,7 @@ def test_the_configure_graph_follows_the_parameter(ws: LaunchWorkspace) -> None:
 
     def imu(*words: str) -> str:
         state = engine.state(choices(*unset, *words))
-        return {t["name"]: t["presence"] for t in state.graph.topics}["/robot/imu"]
+        return {t["name"]: str(t["presence"]) for t in state.graph.topics}["/robot/imu"]
 
     assert imu("set a.launch:off=false") == "undetermined"  # off.launch itself may set it
     assert imu("set a.launch:off=false", "deselect off.launch") == "present"  # the default

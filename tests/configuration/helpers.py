@@ -9,9 +9,10 @@ import re
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+from json_view import read
 from rosvar.analyses.conflicts import node_occurrences
 from rosvar.analyses.feature_model.extraction import extract
-from rosvar.configuration.choices import UserChoice
+from rosvar.configuration.choices import Action, UserChoice
 from rosvar.configuration.command import given
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.interpreter.workspace_models import Analysis
@@ -80,7 +81,7 @@ def random_product(engine: Configurator, rng: random.Random) -> ConfigurationSta
         open_ = [f for f in engine.catalog if state.features[f.id].state == "unselected"]
         known = [f for f in open_ if f.value != "<other>"]
         feature = rng.choice(known or open_)
-        action = "select" if feature.kind == "value" or rng.random() < 0.2 else "deselect"
+        action = Action.SELECT if feature.kind == "value" or rng.random() < 0.2 else Action.DESELECT
         chosen.append(UserChoice(action, feature.id))
 
 
@@ -105,7 +106,7 @@ def product_of_files(engine: Configurator, rng: random.Random, count: int) -> Co
             break
         near = [f for f in open_ if loads[f] & names]
         file = rng.choice(near or open_)
-        chosen.append(UserChoice("select", file))
+        chosen.append(UserChoice(Action.SELECT, file))
         if len(engine.state(chosen).refused) == len(state.refused):
             picked += 1
             names |= loads[file]
@@ -132,14 +133,14 @@ def typed_in(
     while state.untyped:
         arg = state.untyped[0]
         if attempt == len(TEXTS):
-            other = UserChoice("unselect", f"{arg}=<other>")
+            other = UserChoice(Action.UNSELECT, f"{arg}=<other>")
             if other in chosen or other.feature not in {c.feature for c in chosen}:
                 return state
             chosen.append(other)
             chosen += engine.completion(chosen)
             state, attempt = engine.state(chosen), 0
             continue
-        chosen.append(UserChoice("set", arg, TEXTS[attempt].format(rng.randint(0, 9))))
+        chosen.append(UserChoice(Action.SET, arg, TEXTS[attempt].format(rng.randint(0, 9))))
         refused = len(state.refused)
         state = engine.state(chosen)
         attempt = attempt + 1 if len(state.refused) > refused else 0
@@ -230,9 +231,9 @@ def same_as_resolve(analysis: Analysis, state: ConfigurationState) -> int:
         compared += 1
     # an entry's id is its element's, or the element's with /N for its variant N
     present = {
-        re.sub(r"/\d+$", "", n["id"]) for n in state.graph.nodes if n["presence"] == "present"
+        re.sub(r"/\d+$", "", str(n["id"])) for n in state.graph.nodes if n["presence"] == "present"
     }
-    shown = [t for t in state.graph.topics if t["presence"] == "present"]
+    shown = [read(t) for t in state.graph.topics if t["presence"] == "present"]
     assert all(set(t["nodes"]) <= present for t in shown), state.command
     if topics is not None:
         assert {anon_free(t["name"]) for t in shown} == topics, state.command

@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from configuration.helpers import canonical, choices, configurator, product, run
+from json_view import read
 from rosvar.configuration.command import Launch, given, group
 from rosvar.configuration.engine import ConfigurationState
 from rosvar.outputs.documents.resolution import resolution_document
@@ -90,8 +91,8 @@ def assert_resolves_the_same(ws: LaunchWorkspace, state: ConfigurationState) -> 
     """Each command line of a complete product loads what the product shows."""
     assert state.commands
     for members in state.commands:
-        resolution = resolution_document(
-            resolve(ws.analysis(), [m.path for m in members], given(members))
+        resolution = read(
+            resolution_document(resolve(ws.analysis(), [m.path for m in members], given(members)))
         )
         ours = product(state, [m.spelled for m in members])
         assert ours["ok"] == resolution["ok"], state.command

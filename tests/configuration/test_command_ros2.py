@@ -49,3 +49,25 @@ def test_a_ros2_product_is_a_ros2_launch_command_the_oracle_loads(
     assert expected["ok"]
     present = {n["name"] for n in state["graph"]["nodes"] if n["presence"] == "present"}
     assert present == {n["fqn"] for n in expected["nodes"]} == {f"/{'ab'[on == 'false']}_slow"}
+
+
+def test_the_graph_marks_the_nodes_event_handlers_start(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from differential.ros2.names_cases import CASES
+
+    package = tmp_path / "pkg"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text(ROS2_MANIFEST)
+    (package / "launch" / "main.launch.py").write_text(CASES["event-handlers"][0]["main.launch.py"])
+    feature = "pkg/launch/main.launch.py"
+    assert main(["configure", str(tmp_path), "--select", feature, "--json"]) == 0
+    state = json.loads(capsys.readouterr().out)
+    triggers = {n["name"]: n["trigger"].partition("(")[0] for n in state["graph"]["nodes"]}
+    assert triggers == {
+        "/first": "launch",
+        "/after_first": "on_process_start",
+        "/late": "timer@2s",
+        "/after_late": "on_process_start",
+        "/on_exit": "on_process_exit",
+    }

@@ -67,8 +67,9 @@ def test_decisions_agree_with_the_built_formula(ws: LaunchWorkspace) -> None:
                 assert decisions.decided.get(variable) is expected, variable
             # judged with the verdicts of the step before as hints (their witnesses repaired)
             asked = [(Bounds(c, c), e) for c, e in zip(conditions, earlier, strict=True)]
-            earlier = list(derivation.presences(asked, decisions))
-            for condition, verdict in zip(conditions, earlier, strict=True):
+            verdicts = derivation.presences(asked, decisions)
+            earlier = list(verdicts)
+            for condition, verdict in zip(conditions, verdicts, strict=True):
                 expected_presence = (
                     Presence.PRESENT if (restricted & ~condition) == manager.false
                     else Presence.ABSENT if (restricted & condition) == manager.false

@@ -16,6 +16,7 @@ from configuration.helpers import (
     run,
     same_as_resolve,
 )
+from json_view import read
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
 from rosvar.interpreter.workspace_models import Analysis
@@ -40,7 +41,7 @@ def test_a_node_named_after_an_arg_has_one_variant_per_value(ws: LaunchWorkspace
     state = run(configurator(ws), "select a.launch")
     variants = {(n["name"], n["condition"]) for n in state.graph.nodes}
     assert variants == {("/kobuki", "robot=kobuki"), ("/⟨robot⟩", "only for other values")}
-    ids = [n["id"] for n in state.graph.nodes]
+    ids = [str(n["id"]) for n in state.graph.nodes]
     assert len(set(ids)) == 2 and all(i.startswith("a.launch|a.launch:") for i in ids)
     [topic] = [t for t in state.graph.topics if t["name"] == "/kobuki/in"]
     assert topic["nodes"] == [ids[0]] and topic["presence"] == "undetermined"
@@ -65,7 +66,7 @@ def test_interfaces_wire_nodes_to_their_topics_edge_by_edge(ws: LaunchWorkspace)
     )
     engine = configurator(ws, interfaces=True)
     state = engine.state(choices("select a.launch"))
-    topics = {t["name"]: t for t in state.graph.topics}
+    topics = {t["name"]: read(t) for t in state.graph.topics}
     [node] = state.graph.nodes
     [edge] = topics["/chatter"]["publishers"]
     assert edge == {"node": node["id"], "presence": "undetermined", "condition": "¬relay"}
@@ -97,15 +98,15 @@ def test_services_and_actions_have_servers_and_clients_edge_by_edge(ws: LaunchWo
     )
     engine = configurator(ws, interfaces=True)
     state = engine.state(choices("select a.launch"))
-    ids = {n["name"]: n["id"] for n in state.graph.nodes}
-    [service] = state.graph.services
+    ids = {str(n["name"]): str(n["id"]) for n in state.graph.nodes}
+    [service] = read(state.graph.services)
     assert service["name"] == "/ns/reset" and service["types"] == ["std_srvs/Empty"]
     assert service["servers"] == [{"node": ids["/ns/server"], "presence": "present",
                                    "condition": None}]  # fmt: skip
     assert service["clients"] == [{"node": ids["/client"], "presence": "undetermined",
                                    "condition": "call"}]  # fmt: skip
     assert sorted(service["nodes"]) == sorted(ids.values())
-    [action] = state.graph.actions
+    [action] = read(state.graph.actions)
     assert (action["name"], action["servers"][0]["node"], action["clients"]) == (
         "/ns/move", ids["/ns/server"], [],
     )  # fmt: skip
@@ -133,13 +134,13 @@ def test_conditional_remaps_on_independent_args_are_parts_not_variants(
     state = run(engine, "select a.launch")
     schema = json.loads((REPO / "docs" / "schema" / "configure.schema.json").read_text())
     pytest.importorskip("jsonschema").validate(state_document(state), schema)
-    [node] = state.graph.nodes
+    [node] = read(state.graph.nodes)
     assert node["remaps"] == [] and node["env"] == []
     assert {(u["kind"], u["condition"]) for u in node["undetermined"]} == {
         *(("remap", f"c{i}") for i in range(24)),
         *(("env", f"¬c{i}") for i in range(24)),
     }
-    [later] = run(engine, "select a.launch", "select a.launch:c3=true").graph.nodes
+    [later] = read(run(engine, "select a.launch", "select a.launch:c3=true").graph.nodes)
     assert later["remaps"] == [["in3", "on3"]]
     assert len(later["undetermined"]) == 46 and ["E3", "off"] not in later["env"]
     _same_as_resolve(engine, ws.analysis(), seed=2, products=4, loading=4)

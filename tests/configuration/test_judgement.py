@@ -12,7 +12,7 @@ import random
 from typing import TYPE_CHECKING
 
 from configuration.helpers import configurator
-from rosvar.configuration.choices import UserChoice
+from rosvar.configuration.choices import Action, UserChoice
 from rosvar.outputs.documents.state import conflict_document, graph_document
 
 if TYPE_CHECKING:
@@ -58,5 +58,9 @@ def test_carried_presences_equal_presences_judged_at_once(ws: LaunchWorkspace) -
             if not known:
                 break
             feature = rng.choice(known)
-            action = "select" if feature.kind == "value" else rng.choice(("select", "deselect"))
+            action = (
+                Action.SELECT
+                if feature.kind == "value"
+                else rng.choice((Action.SELECT, Action.DESELECT))
+            )
             chosen.append(UserChoice(action, feature.id))

@@ -28,6 +28,7 @@ from typing import Any
 import pytest
 
 from configuration.helpers import TEXTS, same_as_resolve, typed_in
+from json_view import read
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.choices import Action, UserChoice
 from rosvar.configuration.conflicts import Certainty, ConflictState
@@ -158,7 +159,7 @@ def assert_no_placeholder(state: ConfigurationState) -> None:
     if state.untyped:
         return  # an <other> value without its text yet is shown as ⟨arg⟩
     texts: list[Any] = []
-    for node in [*state.graph.nodes, *state.graph.tests]:
+    for node in read([*state.graph.nodes, *state.graph.tests]):
         if node["presence"] == "present":
             texts += [node["name"], node["namespace"], *(t for _s, t in node["remaps"])]
     texts += [p["name"] for p in state.graph.params if p["presence"] == "present"]
@@ -182,8 +183,8 @@ class ClashOracle:
         trees = [part for file in model.files for part in solver.arg_trees(file)]
         self.sat = Sat(solver.manager, solver.variables, 0, [*requires, *trees])
         by_path = {entry.path: entry for entry in engine.catalog.files}
-        self.clashes: dict[tuple[str, str], BDD] = {}  # files → condition
-        grouped: dict[tuple[str, str], BDD] = {}
+        self.clashes: dict[tuple[str, ...], BDD] = {}  # two files → condition
+        grouped: dict[tuple[str, ...], BDD] = {}
         for clash in model.clashes:
             if clash.first.file == clash.second.file and clash.kind != "node":
                 continue  # the engine's conflicts: between files, or two nodes of one file
@@ -206,7 +207,7 @@ class ClashOracle:
             both = manager.true
             for file in files:
                 both &= manager.var(file.variable)
-            condition = self.clashes[tuple(sorted(conflict.files))]  # type: ignore[index]
+            condition = self.clashes[tuple(sorted(conflict.files))]
             bounds = self.engine.lowering.decide(condition, self.typed(state))
             may, must = bounds.may, bounds.must
             if conflict.status == Certainty.CERTAIN:
@@ -222,7 +223,7 @@ class ClashOracle:
         for choice in state.choices:
             if choice.action == Action.SET and choice.value is not None:
                 arg, values = self.engine.catalog.args[choice.feature]
-                [other] = [f for f, v in values if v.slot is OTHER] or [None]
+                other = next((f for f, v in values if v.slot is OTHER), None)
                 known = {v.value for _f, v in values if v.slot is not OTHER}
                 if other is not None and choice.value not in known:
                     texts[arg.input] = choice.value

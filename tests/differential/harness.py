@@ -45,25 +45,18 @@ from rosvar.outputs.documents.resolution import resolution_document
 from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 
-try:
-    from ..oracle.client import (
-        UNAVAILABLE_REASON,
-        RoslaunchOracle,
-        oracle_available,
-        requires_oracle,
-        shared_oracle,
-    )
-except ImportError:
-    # pytest's importlib mode imports this module as ``differential.harness`` (``tests/`` is no
-    # package), like ``tests/oracle`` as ``oracle``: reach the client the same way.
-    sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-    from oracle.client import (  # type: ignore[no-redef,import-not-found]
-        UNAVAILABLE_REASON,
-        RoslaunchOracle,
-        oracle_available,
-        requires_oracle,
-        shared_oracle,
-    )
+# ``tests/`` is no package: pytest (importlib mode) imports this module as
+# ``differential.harness``, ``python -m`` as ``tests.differential.harness``; either way the
+# oracle's client is ``oracle.client``, with ``tests/`` on the path
+if (TESTS := str(Path(__file__).resolve().parents[1])) not in sys.path:
+    sys.path.insert(0, TESTS)
+from oracle.client import (
+    UNAVAILABLE_REASON,
+    RoslaunchOracle,
+    oracle_available,
+    requires_oracle,
+    shared_oracle,
+)
 
 __all__ = [
     "AGREE",
@@ -75,8 +68,10 @@ __all__ = [
     "compare",
     "configurations",
     "difference_class",
+    "message_pattern",
     "requires_oracle",
     "run_system",
+    "shared_oracle",
     "system_runs",
 ]
 
@@ -257,9 +252,12 @@ def _field_equal(name: str, ours: object, theirs: object) -> bool:
     if name == "filename" and isinstance(ours, str) and isinstance(theirs, str):
         return ours == theirs or os.path.realpath(ours) == os.path.realpath(theirs)
     if name in FLOAT_FIELDS:
+        numeric = (int, float, str)  # what float() takes
+        if not (isinstance(ours, numeric) and isinstance(theirs, numeric)):
+            return ours == theirs
         try:
-            a, b = float(ours), float(theirs)  # type: ignore[arg-type]
-        except (TypeError, ValueError):
+            a, b = float(ours), float(theirs)
+        except ValueError:
             return ours == theirs
         return a == b or math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-12)
     return _same(ours, theirs)
@@ -394,6 +392,13 @@ _NORMALISE = (
 )
 
 
+def message_pattern(message: str) -> str:
+    """``message`` with its bracketed lists, quoted names, paths and numbers made alike."""
+    for regex, replacement in _NORMALISE:
+        message = regex.sub(replacement, message)
+    return message
+
+
 def difference_class(line: str) -> str:
     """The class of one difference line: its kind, and for failures a message pattern."""
     kind, _, detail = line.partition(": ")
@@ -401,9 +406,7 @@ def difference_class(line: str) -> str:
         pattern = detail
         if kind.startswith("rosvar failed"):
             pattern = re.sub(r" at \S+$", "", pattern)
-        for regex, replacement in _NORMALISE:
-            pattern = regex.sub(replacement, pattern)
-        return f"{kind}: {pattern[:100]}"
+        return f"{kind}: {message_pattern(pattern)[:100]}"
     return kind
 
 

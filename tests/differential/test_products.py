@@ -19,7 +19,7 @@ import pytest
 
 from configuration.helpers import anon_free, product, product_of_files, random_product
 from rosvar.analyses.feature_model.extraction import extract
-from rosvar.configuration.choices import UserChoice
+from rosvar.configuration.choices import Action, UserChoice
 from rosvar.configuration.command import given
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.interpreter.workspace_models import Analysis
@@ -77,10 +77,10 @@ def test_files_that_include_one_file_are_not_a_product_roslaunch_refuses_them() 
         next(f for f in engine.catalog.files if f.path == os.path.join(gazebo, name))
         for name in ("husky_playpen.launch", "husky_empty_world.launch")
     ]
-    state = engine.state([UserChoice("select", playpen.id)])
+    state = engine.state([UserChoice(Action.SELECT, playpen.id)])
     assert state.features[empty.id].state == "deselected" and state.features[empty.id].derived
     [refusal] = engine.state(
-        [UserChoice("select", playpen.id), UserChoice("select", empty.id)]
+        [UserChoice(Action.SELECT, playpen.id), UserChoice(Action.SELECT, empty.id)]
     ).refused
     assert "both load node /base_controller_spawner, node /ekf_localization, node /gazebo" in (
         refusal.reason

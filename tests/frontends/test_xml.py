@@ -10,8 +10,8 @@ import pytest
 
 from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.frontends import xml
+from rosvar.frontends.entity import ParseResult
 from rosvar.frontends.xml import (
-    ParseResult,
     is_launch_root,
     load_launch_file,
     parse_launch_bytes,

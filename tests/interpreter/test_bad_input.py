@@ -16,8 +16,9 @@ from typing import TYPE_CHECKING
 
 import pytest
 
+from json_view import read
 from rosvar.diagnostics import Location, Severity
-from rosvar.frontends import xml
+from rosvar.files import MAX_FILE_BYTES
 from rosvar.interpreter.model import LaunchModel
 from rosvar.outputs.documents.resolution import resolution_document
 
@@ -228,7 +229,7 @@ def test_bad_file_is_reported_and_the_rest_analysed(
     assert isinstance(matching[0].severity, Severity)
     assert not marker.exists()
     resolution = ws.resolve(entry)
-    document = resolution_document(resolution)
+    document = read(resolution_document(resolution))
     assert set(document) >= {"ok", "nodes", "params", "conflicts", "errors"}
     if matching[0].severity is Severity.ERROR:
         assert not resolution.ok
@@ -330,7 +331,7 @@ def test_file_over_the_size_limit_is_refused_unread(ws: LaunchWorkspace) -> None
     good = ws.write("launch/good.launch", GOOD)
     huge = ws.write("launch/huge.launch", b"")
     with open(huge, "r+b") as handle:  # sparse: nothing is written, nothing must be read
-        handle.truncate(xml.MAX_FILE_BYTES + 1)
+        handle.truncate(MAX_FILE_BYTES + 1)
     start = time.perf_counter()
     models = {m.file: m for m in ws.analysis().all_models()}
     assert time.perf_counter() - start < 5
@@ -350,7 +351,7 @@ def test_large_file_under_the_limit_is_analysed(ws: LaunchWorkspace) -> None:
     lines = "".join(f'  <param name="p{i}" value="{i}"/>\n' for i in range(count))
     good = ws.write("launch/good.launch", GOOD)
     big = ws.launch("big.launch", lines + '  <node pkg="pkg" type="t" name="last"/>')
-    assert 0.9e6 < os.path.getsize(big) < xml.MAX_FILE_BYTES
+    assert 0.9e6 < os.path.getsize(big) < MAX_FILE_BYTES
     start = time.perf_counter()
     models = {m.file: m for m in ws.analysis().all_models()}
     elapsed = time.perf_counter() - start

@@ -11,13 +11,13 @@ from logic.spaces import make_space
 from rosvar.interpreter.model import NodeField, NodeSchema, Raw, constant_field
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.inputs import ArgInput, Input, Slot
+from rosvar.logic.inputs import ArgInput, Input
 from rosvar.ros.version import RosVersion
 
 F = "/ws/pkg/launch/main.launch"
 NS = ArgInput(F, "ns")
 NAME = ArgInput(F, "name")
-DOMAINS: dict[Input, tuple[Slot, ...]] = {NS: ("/", "/a/"), NAME: ("x", "y")}
+DOMAINS: dict[Input, tuple[str, ...]] = {NS: ("/", "/a/"), NAME: ("x", "y")}
 
 
 def joined(values: Sequence[Raw | None]) -> Raw | None:

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 import pytest
 
 from rosvar.interpreter import substitution_args as substitutions
-from rosvar.interpreter.model import DeferredValue, ParamDecl
+from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
 from rosvar.logic.terms import is_term
 
 if TYPE_CHECKING:
@@ -44,7 +44,7 @@ def test_substitutions_per_configuration(ws: LaunchWorkspace) -> None:
         "/anon_a": params["/anon_a"],
         "/anon_b": params["/anon_a"],  # one anon name per id in a context
     }
-    assert params["/anon_a"].startswith("x_")
+    assert str(params["/anon_a"]).startswith("x_")
     assert ws.resolve(file, {}, {"ROBOT_COLOUR": "red"}).params["/opt"] == "red"
 
 
@@ -138,8 +138,8 @@ def test_commands_are_registered_in_roslaunchs_order_and_only_once() -> None:
     assert FIRST_PASS["env"] is handler
 
 
-def _codes(model: object) -> list[str]:
-    return [d.code for d in model.diagnostics]  # type: ignore[attr-defined]
+def _codes(model: LaunchModel) -> list[str]:
+    return [d.code for d in model.diagnostics]
 
 
 @pytest.mark.parametrize("count", [12, 18, 40])
@@ -151,6 +151,7 @@ def test_many_varying_args_in_one_attribute_become_an_unknown_value(
     file = ws.launch("many.launch", f'{args}<param name="p" value="{text}"/>')
     model = ws.model(file)
     [param] = model.params
+    assert isinstance(param, ParamDecl)
     if 2**count <= substitutions.MAX_COMBINATIONS:  # within the budget: computed exactly
         assert _codes(model) == [] and len(param.value.branches) == 2**count
         return
@@ -170,7 +171,9 @@ def test_values_doubling_or_nesting_along_a_chain_are_bounded(
     lines.append('<param name="p" value="$(arg a159)"/>')
     model = ws.model(ws.launch("chain.launch", "".join(lines)))
     assert "value-too-complex" in _codes(model)
-    for _condition, leaf in model.params[0].value.branches:
+    [param] = model.params
+    assert isinstance(param, ParamDecl)
+    for _condition, leaf in param.value.branches:
         shown = leaf.raw if isinstance(leaf, DeferredValue) else leaf
         assert len(str(shown)) <= substitutions.MAX_VALUE_SIZE
 

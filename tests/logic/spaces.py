@@ -4,6 +4,7 @@ shared by the tests of conditions and of their readable form."""
 from __future__ import annotations
 
 import random
+from collections.abc import Mapping
 
 from rosvar.logic.atoms import register_predicate
 from rosvar.logic.bdd import BDD
@@ -28,7 +29,7 @@ DOMAINS: dict[Input, tuple[Slot, ...]] = {
 register_predicate("test_nonempty", lambda text: text != "", "{} is set")
 
 
-def make_space(domains: dict[Input, tuple[Slot, ...]] = DOMAINS) -> ConditionSpace:
+def make_space(domains: Mapping[Input, tuple[Slot, ...]] = DOMAINS) -> ConditionSpace:
     space = ConditionSpace()
     for input_, domain in domains.items():
         space.declare_input(input_, domain)

@@ -14,13 +14,13 @@ import dd.cudd
 import pytest
 
 from rosvar.logic import bdd
-from rosvar.logic.bdd import BDD
+from rosvar.logic.bdd import BDD, Manager
 
 NAMES = [f"x{number}" for number in range(12)]
 OPERATORS = ("and", "or", "xor")
 
 
-def random_formula(manager: dd.cudd.BDD, rng: random.Random, names: list[str] = NAMES) -> BDD:
+def random_formula(manager: Manager, rng: random.Random, names: list[str] = NAMES) -> BDD:
     formula = manager.true if rng.random() < 0.5 else manager.false
     for _ in range(rng.randint(0, 10)):
         left, right = (manager.var(rng.choice(names)) for _ in range(2))
@@ -31,8 +31,8 @@ def random_formula(manager: dd.cudd.BDD, rng: random.Random, names: list[str] = 
     return ~formula if rng.random() < 0.3 else formula
 
 
-def fresh(names: list[str] = NAMES) -> dd.cudd.BDD:
-    manager = dd.cudd.BDD()
+def fresh(names: list[str] = NAMES) -> Manager:
+    manager: Manager = dd.cudd.BDD()
     manager.declare(*names)
     return manager
 

@@ -227,11 +227,16 @@ def test_combine_agrees_with_per_configuration_values(space: ConditionSpace) -> 
 
 
 def test_combine_keeps_failures_as_leaves(space: ConditionSpace) -> None:
-    failing = Choice.of([(x_is(space, "a"), Fail("boom")), (~x_is(space, "a"), "ok")])
-    combined = combine(
-        [failing, Choice.const(space, "!")],
-        lambda vs: vs[0] if isinstance(vs[0], Fail) else vs[0] + vs[1],
+    failing: Choice[str | Fail] = Choice.of(
+        [(x_is(space, "a"), Fail("boom")), (~x_is(space, "a"), "ok")]
     )
+    suffix: Choice[str | Fail] = Choice.const(space, "!")
+
+    def joined(values: list[str | Fail]) -> str | Fail:
+        first, second = values
+        return first if isinstance(first, Fail) else f"{first}{second}"
+
+    combined = combine([failing, suffix], joined)
     assert combined.where(lambda v: isinstance(v, Fail)) == x_is(space, "a")
     assert combined.where(lambda v: v == "ok!") == ~x_is(space, "a")
 

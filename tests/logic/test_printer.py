@@ -13,6 +13,7 @@ import random
 import re
 from collections.abc import Iterable, Sequence
 from pathlib import Path
+from unittest.mock import patch
 
 import pytest
 
@@ -49,6 +50,13 @@ def test_describe_booleans_as_literals() -> None:
     assert space.describe(space.slot(TELEOP, "false")) == "¬use_teleop"
     assert space.describe(teleop | space.slot(SIM, "true")) == "sim ∨ use_teleop"
     assert space.describe(teleop & ~space.slot(TELEOP, "false")) == "use_teleop"
+
+
+def test_an_empty_value_is_shown_quoted() -> None:
+    gripper = ArgInput("/w/a.launch.xml", "gripper")
+    space = make_space({gripper: ("", "g", "h", OTHER)})
+    assert space.describe(~space.slot(gripper, "")) == "gripper≠''"
+    assert space.describe(space.slot(gripper, "")) == "gripper=''"
 
 
 def test_describe_sets_and_exclusions() -> None:
@@ -98,7 +106,7 @@ _PART = re.compile(r"^(?P<neg>¬?)(?P<name>[$\w]+)(?:(?P<op>=|≠|∈)(?P<rest>.
 
 def _slot_named(space: ConditionSpace, input_: Input, text: str) -> BDD:
     for slot in space.domain(input_):
-        if (slot if isinstance(slot, str) else repr(slot)) == text:
+        if (slot if isinstance(slot, str) else repr(slot)) == ("" if text == "''" else text):
             return space.slot(input_, slot)
     raise AssertionError(f"{text!r} is no slot of {input_}")
 
@@ -206,7 +214,7 @@ def test_conditions_of_one_shape_read_as_each_alone() -> None:
     other, third = "/ws/pkg/launch/other.launch", "/ws/pkg/launch/third.launch"
     copies = [list(DOMAINS)]
     copies.append([ArgInput(other, i.name) if isinstance(i, ArgInput) else i for i in DOMAINS])
-    renamed = {MODEL: ArgInput(third, "robot"), SIM: ArgInput(third, "sim")}
+    renamed: dict[Input, Input] = {MODEL: ArgInput(third, "robot"), SIM: ArgInput(third, "sim")}
     copies.append([renamed.get(i, i) for i in DOMAINS])
     domains = dict(DOMAINS)
     for inputs in copies[1:]:
@@ -365,12 +373,9 @@ def _check_descriptions(models: Sequence[LaunchModel]) -> tuple[int, list[str]]:
         seen[condition, qualify, known] = text
         return text
 
-    Printer.describe = recording  # type: ignore[method-assign]
-    try:
+    with patch.object(Printer, "describe", recording):
         for model in models:
             describe_model(model)
-    finally:
-        Printer.describe = describe  # type: ignore[method-assign]
     failures = []
     for (condition, qualify, known_only), text in seen.items():
         inputs = space.care_inputs(space.support(condition))

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 import pytest
 
-from rosvar.logic.inputs import ArgInput
+from rosvar.logic.inputs import ArgInput, Input
 from rosvar.logic.terms import Apply, Hole, TermError, concat, evaluate, is_term, term_inputs
 
 ROBOT = ArgInput("a.launch", "robot")
@@ -29,7 +31,7 @@ def test_concat_stays_a_string_without_terms_and_merges_neighbours() -> None:
     ],
 )
 def test_a_concatenation_evaluates_to_its_parts_filled_in(
-    parts: list[str | Hole], texts: dict[ArgInput, str]
+    parts: list[str | Hole], texts: Mapping[Input, str]
 ) -> None:
     term = concat(list(parts))
     filled = "".join(p if isinstance(p, str) else texts[p.input] for p in parts)

@@ -31,6 +31,10 @@ KEYS = (
 """The fields of a node compared with rosvar's; ``cmd`` only for a process (``<executable>``),
 whose other fields are None (a node's holds the install path the oracle makes up)."""
 
+ENVIRONMENT = {"PATH": "/usr/bin:/bin", "HOME": str(VENV), "PYTHONDONTWRITEBYTECODE": "1"}
+"""The oracle's whole environment (a launch file's ``$(env HOME)`` reads it): rosvar's
+``--env`` must give the same to compare."""
+
 requires_ros2_oracle = [
     pytest.mark.oracle,
     pytest.mark.skipif(not ORACLE.is_dir(), reason=f"the ROS 2 oracle {ORACLE} is absent"),
@@ -63,11 +67,32 @@ def run_oracle(
         command += ["--package-path", os.fspath(path)]
     for name, value in (env or {}).items():
         command += ["--env", f"{name}={value}"]
-    clean = {"PATH": "/usr/bin:/bin", "HOME": str(VENV), "PYTHONDONTWRITEBYTECODE": "1"}
-    done = subprocess.run(command, capture_output=True, text=True, env=clean, timeout=120)
+    done = subprocess.run(command, capture_output=True, text=True, env=ENVIRONMENT, timeout=120)
     if not done.stdout.strip():
         raise RuntimeError(f"the ROS 2 oracle failed: {done.stderr[-2000:]}")
-    result: dict[str, Any] = json.loads(done.stdout)
+    return loads_repaired(done.stdout)
+
+
+GENERATED = re.compile(r'<generated:\d+>"')
+"""The oracle names its generated files ``<generated:N>`` by replacing their path in its JSON
+text up to the next quote, which also swallows the backslash of an escaped quote that ends
+a path inside a message (a YAML error naming the file): that quote must be escaped again."""
+
+
+def loads_repaired(text: str) -> dict[str, Any]:
+    """The oracle's JSON, with the quotes its file renaming unescaped escaped again, each at
+    the place where the text stops being valid JSON (bounded: once per renamed file)."""
+    for _ in range(text.count("<generated:") + 1):
+        try:
+            result: dict[str, Any] = json.loads(text)
+            return result
+        except json.JSONDecodeError as error:
+            broken = list(GENERATED.finditer(text, 0, error.pos + 1))
+            if not broken:
+                raise
+            quote = broken[-1].end() - 1
+            text = f"{text[:quote]}\\{text[quote:]}"
+    result = json.loads(text)
     return result
 
 

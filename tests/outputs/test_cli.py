@@ -45,7 +45,7 @@ GOOD = """<launch>
   <param name="home" value="$(optenv ROBOT_HOME /nowhere)"/>
 </launch>
 """
-BAD = {
+BAD: dict[str, str | bytes] = {
     "malformed.launch": '<launch>\n  <node pkg="p" type="t" name="a"\n</launch>\n',
     "tag.launch": "<launch>\n  <bogus/>\n</launch>\n",
     "dtd.launch": '<?xml version="1.0"?>\n<!DOCTYPE launch [<!ENTITY a "b">]>\n<launch/>\n',
@@ -164,6 +164,23 @@ def ament_package(package: Path) -> Path:
         "<export><build_type>ament_cmake</build_type></export></package>"
     )
     return package
+
+
+def test_resolve_prints_a_ros2_error_at_its_place(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    package = ament_package(tmp_path / "p")
+    (package / "a.launch.xml").write_text(
+        '<launch>\n  <node pkg="p" exec="e" name="n">\n    <param from="$(var f)"/>\n'
+        "  </node>\n</launch>\n"
+    )
+    monkeypatch.chdir(tmp_path)
+    code, out, _err = run(capsys, "resolve", str(tmp_path), "--launch", "p", "a.launch.xml")
+    assert code == EXIT_FAILS
+    assert out.splitlines()[-1] == (
+        "error: p/a.launch.xml:3:5: <param> attribute 'from': "
+        "launch configuration 'f' does not exist"
+    )
 
 
 def test_resolve_a_ros2_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:

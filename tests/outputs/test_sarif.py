@@ -54,6 +54,6 @@ def test_fail_on(ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]) -> Non
     text = capsys.readouterr().out
     assert "error[type-mismatch]" in text and "when count; e.g. system.launch:count=true" in text
     ws.launch("system.launch", LAUNCH.replace('if="$(arg count)"', 'if="false"'))
-    assert main(["check", root, "--fail-on", "warning"]) == EXIT_OK  # a note is left
+    assert main(["check", root, "--fail-on", "warning", "--all"]) == EXIT_OK  # a note is left
     assert "note[no-subscriber]" in capsys.readouterr().out
     assert main(["check", root, "--fail-on", "note"]) == EXIT_FAILS

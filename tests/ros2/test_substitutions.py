@@ -2,11 +2,17 @@
 
 from __future__ import annotations
 
+import random
 from pathlib import Path
 
 import pytest
 
+from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.safe_eval import EvalEnvironment, evaluate
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.memo import Memo
+from rosvar.outputs.describe import describe_model
+from rosvar.ros2 import substitutions
 from rosvar.ros2.substitutions import Call, SubstitutionSyntaxError, parse
 from rosvar.workspace import discover
 
@@ -62,3 +68,132 @@ def test_find_exec_is_kept_as_its_text_with_a_warning(tmp_path: Path) -> None:
     result = analysis.resolve([str(file)], {"tool": "ros2"})
     assert result.nodes[0].parameters == {"d": "$(command $(find-exec ros2) f.xacro)"}
     assert [error.code for error in result.errors] == ["substitution-invalid"]
+
+
+_TEXTS = (
+    "lit",
+    "$(var a)",
+    "$(var c)",
+    "$(var p q)",
+    "$(var a)_$(var c)",
+    "$(eval '$(var a)' == 'x')",
+    "$(eval '$(var b)' == 'true' and '$(var p q)' != 'r')",
+    "$(dirname)/f",
+    "$(filename)",
+    "$(var undefined)",
+    "$(var $(var a) d)",
+    "$(var q d)",
+    "$(anon n)",
+)
+_FLAGS = ("$(var b)", "$(eval '$(var a)' == 'y')", "$(eval '$(var p true)' == 'true')", "true")
+
+
+def _random_file(rng: random.Random, includes: list[str], statements: int) -> str:
+    """A launch file of ``<let>``s, nodes and includes whose texts read the same launch
+    configurations under values that change between them (and between includers)."""
+    lines = ['<arg name="a" default="x"><choice value="x"/><choice value="y"/></arg>']
+    lines.append('<arg name="b" default="true"/>')
+    for index in range(statements):
+        text = rng.choice(_TEXTS)
+        kind = rng.randrange(5)
+        if kind == 0:
+            lines.append(f'<let name="{rng.choice("acpxy")}" value="{text}"/>')
+        elif kind == 4:  # declared here, read before by an includer: an input of the entry
+            lines.append('<arg name="q" default="z"/>')
+        elif kind == 1:
+            lines.append(f'<node pkg="p" exec="e" name="n{index}" namespace="/{text}"/>')
+        elif kind == 2 and includes:
+            passed = f'<arg name="p" value="{rng.choice(_TEXTS)}"/>'
+            target = rng.choice(includes)
+            lines.append(
+                f'<include file="$(dirname)/{target}" if="{rng.choice(_FLAGS)}">{passed}</include>'
+            )
+        else:
+            inner = f'<let name="c" value="{text}"/><node pkg="p" exec="e" name="g{index}"/>'
+            lines.append(f'<group if="{rng.choice(_FLAGS)}">{inner}</group>')
+    return "<launch>" + "".join(lines) + "</launch>"
+
+
+@pytest.mark.parametrize("seed", range(24))
+def test_resolved_texts_are_reused_only_where_they_read_the_same(
+    tmp_path: Path, seed: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The memo of resolved texts changes no model: random include trees (texts reading
+    configurations that includers and ``<let>``s set differently, ``$(dirname)`` in two
+    folders, substitutions it does not keep) analysed with it and without it."""
+    rng = random.Random(seed)
+    package = tmp_path / "pkg"
+    (package / "sub").mkdir(parents=True)
+    (package / "package.xml").write_text(MANIFEST)
+    (package / "sub" / "leaf.launch.xml").write_text(_random_file(rng, [], 4))
+    (package / "sub" / "mid.launch.xml").write_text(_random_file(rng, ["leaf.launch.xml"], 6))
+    (package / "mid.launch.xml").write_text(_random_file(rng, ["sub/leaf.launch.xml"], 6))
+    includes = ["mid.launch.xml", "sub/mid.launch.xml", "sub/leaf.launch.xml"]
+    (package / "main.launch.xml").write_text(_random_file(rng, includes, 16))
+    workspace = discover([str(package)])
+
+    def models() -> list[dict[str, object]]:
+        return [describe_model(model) for model in Analysis(workspace).all_models()]
+
+    memoised = models()
+    with monkeypatch.context() as patched:
+        patched.setattr(substitutions, "_reads", lambda _text: None)
+        assert models() == memoised
+
+
+def _models(tmp_path: Path, files: dict[str, str]) -> dict[str, LaunchModel]:
+    package = tmp_path / "pkg"
+    package.mkdir()
+    (package / "package.xml").write_text(MANIFEST)
+    for name, text in files.items():
+        (package / name).write_text(f"<launch>{text}</launch>")
+    models = Analysis(discover([str(package)])).all_models()
+    return {Path(model.file).name: model for model in models}
+
+
+def test_a_name_read_through_a_substitution_is_read_again(tmp_path: Path) -> None:
+    """``$(var $(var a))`` reads a configuration its text does not name: never reused."""
+    node = '<node pkg="p" exec="e" name="$(var $(var a) d)"/>'
+    lets = '<let name="a" value="x"/><let name="x" value="{}"/>'
+    main = lets.format("one") + node + lets.format("two") + node
+    model = _models(tmp_path, {"main.launch.xml": main})["main.launch.xml"]
+    names = [describe_model(model)["nodes"][i]["name"] for i in (0, 1)]  # type: ignore[index]
+    assert names == ["one", "two"]
+
+
+def test_a_reused_text_still_reads_what_is_not_set(tmp_path: Path) -> None:
+    """An included file's arg read before its declaration is an input of the entry file
+    (``unset_reads``): also where the text was resolved before, by another entry file."""
+    read = '<node pkg="p" exec="e" name="$(var q d)"/>'
+    files = {
+        "a.launch.xml": read,
+        "leaf.launch.xml": '<arg name="q" default="z"/>',
+        "main.launch.xml": read + '<include file="$(dirname)/leaf.launch.xml"/>',
+    }
+    models = _models(tmp_path, files)
+    assert describe_model(models["a.launch.xml"])["nodes"][0]["name"] == "d"  # type: ignore[index]
+    read_in_main = describe_model(models["main.launch.xml"])["nodes"][0]["name"]  # type: ignore[index]
+    assert [value["value"] for value in read_in_main] == ["z", "d", "⟨q⟩"]
+
+
+def test_an_expression_is_evaluated_once_per_text(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """``$(eval)`` reads nothing but its text: one evaluation serves every file and
+    configuration meeting the same text, failures included."""
+    texts: list[str] = []
+
+    def counted(text: str, environment: EvalEnvironment) -> str:
+        texts.append(text)
+        return evaluate(text, environment)
+
+    monkeypatch.setattr(substitutions, "evaluate", counted)
+    monkeypatch.setattr(substitutions, "_evaluated", Memo[str, object]())
+    name = "$(eval &quot;'$(var a)' * 2&quot;)"
+    node = f'<node pkg="p" exec="e" name="{name}" namespace="/$(eval 1/0)"/>'
+    arg = '<arg name="a" default="x"><choice value="x"/><choice value="y"/></arg>'
+    models = _models(tmp_path, {"one.launch.xml": arg + node, "two.launch.xml": arg + node})
+    for model in models.values():
+        assert describe_model(model)["nodes"][0]["name"][0]["value"] == "xx"  # type: ignore[index]
+        assert "eval-failed" in [error.code for error in model.errors]
+    assert sorted(texts) == ["'x' * 2", "'y' * 2", "1/0"]

@@ -23,8 +23,10 @@ from rosvar.analyses.communication import (
     Edge,
     Gap,
     entry_when,
+    find_interface,
     launched_units,
     model_edges,
+    node_branches,
 )
 from rosvar.analyses.conflicts import Occurrence, clashes, node_occurrences
 from rosvar.analyses.param_values import ParamValues
@@ -109,6 +111,9 @@ def check_models(
             if edge.static:
                 partners[(edge.role, edge.name)].add(file)
     for model in ordered:
+        for name, _condition in setters(model, confinement):
+            partners[(Role.PARAMS, name)].add(model.file)
+    for model in ordered:
         for finding in check_model(
             space, model, interfaces, confinement, edges[model.file], partners, described
         ):
@@ -128,7 +133,8 @@ def _included(models: Iterable[LaunchModel]) -> set[str]:
 
 
 Partners = defaultdict[tuple[Role, str], set[str]]
-"""The entry files whose nodes use a resolved name in a role (an edge in some configuration)."""
+"""The entry files whose nodes use a resolved name in a role (an edge in some configuration),
+and (``Role.PARAMS``) that set a parameter name."""
 
 
 def check_model(
@@ -147,6 +153,7 @@ def check_model(
         edges = model_edges(space, model, interfaces, described)
     loads = model.loads if described is None else model.loads & ~described.fails(model)
     checker = _Checker(space, model, loads, confinement, partners or defaultdict(set))
+    checker.unknown = _unknown_nodes(space, model, interfaces)
     checker.graph(edges)
     if described is not None:
         checker.gaps(described.gaps(model))
@@ -166,6 +173,7 @@ class _Checker:
         partners: Partners,
     ) -> None:
         self.partners = partners
+        self.unknown: list[tuple[str, str, BDD]] = []  # nodes without an interface: name, ns
         self.confinement = confinement
         self.space = space
         self.model = model
@@ -263,11 +271,13 @@ class _Checker:
         provide, use = SIDES[channel]
         elsewhere = self._elsewhere(provide, name)
         for edge in users:  # from a person, a tool or another launch file: a note
+            unsure = " (it uses it only if a parameter rosvar cannot know says so)"
+            reason = elsewhere or (unsure if edge.uncertain else self._unseen(name, edge))
             self.add(
                 Check.NO_PROVIDER,
-                Severity.NOTE if edge.boundary or elsewhere else Severity.WARNING,
+                Severity.NOTE if edge.boundary or reason else Severity.WARNING,
                 name,
-                f"{edge.node} {USED[channel]} {name}, which no launched node provides" + elsewhere,
+                f"{edge.node} {USED[channel]} {name}, which no launched node provides" + reason,
                 edge.condition & ~provided,
                 (edge.launch, edge.source),
             )
@@ -285,6 +295,24 @@ class _Checker:
                 edge.condition & ~used,
                 (edge.launch, edge.source),
             )
+
+    def _unseen(self, name: str, edge: Edge) -> str:
+        """A launched node without a known interface in the namespace of ``name``, beside
+        ``edge``'s node: it may well be the partner (the GPS driver of ``/gps`` publishing
+        ``fix``), which rosvar cannot see."""
+        namespace = names.make_global_ns(name.rsplit(names.SEP, 1)[0] or names.SEP)
+        beside = sorted(
+            {
+                node
+                for node, node_ns, condition in self.unknown
+                if node_ns == namespace and self.space.satisfiable(condition & edge.condition)
+            }
+        )
+        if not beside:
+            return ""
+        if len(beside) == 1:
+            return f" (unless {beside[0]}, whose interface rosvar does not know, does)"
+        return f" (unless one of {', '.join(beside)}, whose interfaces rosvar does not know, does)"
 
     def _elsewhere(self, role: Role, name: str) -> str:
         """Where other entry files of the workspace use ``name`` in ``role``: launch files
@@ -352,11 +380,17 @@ class _Checker:
             for edge_node, condition, reads in _param_reads(self.space, node, interfaces):
                 for name, entry_location in reads:
                     set_here = self.any(c for set_name, c in setters if _covers(set_name, name))
+                    # set in other configurations, or by another entry file: a choice to
+                    # leave it to what runs beside (MoveIt's load_robot_description:=false)
+                    elsewhere = self._set_elsewhere(name)
+                    if set_here != self.space.false:
+                        elsewhere = " in these configurations (it does in others)"
                     self.add(
                         Check.PARAM_UNSET,
-                        Severity.WARNING,
+                        Severity.NOTE if elsewhere else Severity.WARNING,
                         name,
-                        f"{edge_node} reads {name}, which has no default and no launch file sets",
+                        f"{edge_node} reads {name}, which has no default and no launch file sets"
+                        + elsewhere,
                         condition & ~set_here,
                         (node.location, entry_location),
                     )
@@ -386,17 +420,48 @@ class _Checker:
                     )
 
     def setters(self) -> list[tuple[str, BDD]]:
-        found: list[tuple[str, BDD]] = []
-        for param in self.model.params:
-            if isinstance(param, ParamDecl):
-                found.extend(
-                    (name, param.condition & c) for c, name in param.name if isinstance(name, str)
-                )
-            else:
-                found.extend(
-                    (name, param.condition) for name in _yaml_names(param, self.confinement)
-                )
-        return found
+        return setters(self.model, self.confinement)
+
+    def _set_elsewhere(self, name: str) -> str:
+        """Where other entry files of the workspace set the parameter ``name`` (or a namespace
+        around it): launch files meant to run together, one loading the robot description."""
+        files = set()
+        for (role, set_name), found in self.partners.items():
+            if role is Role.PARAMS and _covers(set_name, name):
+                files |= found
+        files.discard(self.model.file)
+        if not files:
+            return ""
+        first, *more = sorted(files)
+        return f" here ({os.path.basename(first)}{f' and {len(more)} more' if more else ''} does)"
+
+
+def setters(model: LaunchModel, confinement: Confinement) -> list[tuple[str, BDD]]:
+    """The parameter names the ``<param>``s and ``<rosparam>``s of ``model`` set, each with
+    its condition (a ``<rosparam>`` known only per configuration: its namespace)."""
+    found: list[tuple[str, BDD]] = []
+    for param in model.params:
+        if isinstance(param, ParamDecl):
+            found.extend(
+                (name, param.condition & c) for c, name in param.name if isinstance(name, str)
+            )
+        else:
+            found.extend((name, param.condition) for name in _yaml_names(param, confinement))
+    return found
+
+
+def _unknown_nodes(
+    space: ConditionSpace, model: LaunchModel, interfaces: Interfaces
+) -> list[tuple[str, str, BDD]]:
+    """The nodes of ``model`` whose interface is unknown: full name, namespace, condition."""
+    found = []
+    for node in model.nodes:
+        for condition, launched, _values in node_branches(space, node):
+            unit = launched.unit()
+            if not node.is_test and unit is not None and find_interface(interfaces, unit) is None:
+                namespace = names.make_global_ns(launched.namespace)
+                found.append((launched.full_name, namespace, condition))
+    return found
 
 
 def _nodes(edges: Sequence[Edge]) -> str:

@@ -174,6 +174,9 @@ class Edge:
     boundary: bool = False  # meant for something outside the launched nodes (Entry.boundary)
     term: Term | None = None
     """A name known per configuration (a robot description's value): evaluated in one."""
+    uncertain: bool = False
+    """Kept only where its entry's ``when:`` reads a parameter whose value is not known: a
+    missing partner of it is a note, not a defect rosvar can see."""
 
     @property
     def channel(self) -> Channel:
@@ -236,17 +239,58 @@ def launched_units(
 ) -> Iterator[tuple[BDD, LaunchedNode, NodeInterface, bool]]:
     """Per branch of a ``<node>``'s fields: its condition, the node, the interface it runs
     and whether every field is known statically (nodes without a known interface skipped)."""
-    keys = node.schema.launched
-    for condition, values in combine([node.field(key) for key in keys], list):
-        condition &= node.condition
-        if condition == space.false:
-            continue
-        launched = LaunchedNode.of(node.schema, dict(zip(keys, values, strict=True)))
+    for condition, launched, values in node_branches(space, node):
         unit = launched.unit()
         interface = None if unit is None else find_interface(interfaces, unit)
         if interface is not None:
             static = all(value is None or isinstance(value, str) for value in values)
             yield condition, launched.named(interface), interface, static
+
+
+def node_branches(
+    space: ConditionSpace, node: NodeDecl
+) -> Iterator[tuple[BDD, LaunchedNode, list[Raw | None]]]:
+    """Per branch of a ``<node>``'s fields that can hold: its condition, the node and the
+    fields' values."""
+    keys = node.schema.launched
+    for condition, values in combine([node.field(key) for key in keys], list):
+        condition &= node.condition
+        if condition != space.false:
+            yield (
+                condition,
+                LaunchedNode.of(node.schema, dict(zip(keys, values, strict=True))),
+                values,
+            )
+
+
+@dataclass(frozen=True, order=True)
+class Uninterfaced:
+    """A launched ``<node>`` whose interface nothing gives (no source, catalogue entry or
+    hint), with the full names it can have."""
+
+    unit: str  # package/executable (a nodelet's or component's class)
+    location: Location
+    names: tuple[str, ...]
+
+
+def uninterfaced(
+    space: ConditionSpace, models: Iterable[LaunchModel], interfaces: Interfaces
+) -> list[Uninterfaced]:
+    """The nodes of ``models`` without a known interface: they have no edges, so the checks
+    and the graph say nothing about their topics (a node of a file several entry files
+    include is listed once; tests excluded, and nodelet managers, whose interface is what
+    they load)."""
+    found: dict[tuple[str, Location], set[str]] = {}
+    for model in models:
+        for node in model.nodes:
+            if node.is_test:
+                continue
+            for _condition, launched, _values in node_branches(space, node):
+                unit = launched.unit()
+                if unit is not None and find_interface(interfaces, unit) is None:
+                    shown = "/".join(part for part in unit if part)
+                    found.setdefault((shown, node.location), set()).add(launched.full_name)
+    return sorted(Uninterfaced(u, at, tuple(sorted(n))) for (u, at), n in found.items())
 
 
 def node_edges(
@@ -260,12 +304,18 @@ def node_edges(
         for entry in interface.entries:
             if entry.role not in CHANNEL:
                 continue
-            used = condition
+            parts = [(condition, False)]
             if entry.when is not None:
-                used &= entry_when(params, node, launched, interface, entry.when).condition
-            for taken, use in entry_uses(params, node, launched, interface, entry, used):
-                for when, name in entry_names(launched, remaps, use, taken):
-                    edges.append(_edge(file, launched, node, use, name, when, static))
+                when = entry_when(params, node, launched, interface, entry.when)
+                known = when.condition & ~when.unknown
+                parts = [(condition & known, False), (condition & when.unknown, True)]
+            for used, uncertain in parts:
+                if used == space.false:
+                    continue
+                for taken, use in entry_uses(params, node, launched, interface, entry, used):
+                    for at, name in entry_names(launched, remaps, use, taken):
+                        edge = _edge(file, launched, node, use, name, at, static)
+                        edges.append(replace(edge, uncertain=True) if uncertain else edge)
     return edges
 
 

@@ -17,7 +17,6 @@ from dataclasses import dataclass
 from rosvar.analyses.feature_model.features import ConstraintKind
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.frontends.entity import Entity
-from rosvar.frontends.xml import load_launch_file
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.atoms import SlotAtom
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput
@@ -77,7 +76,7 @@ def compute(analysis: Analysis, model: FeatureModel) -> Metrics:
     a = acg = as_ = as_d = as_v = 0
     decided: Counter[ArgInput] = Counter()
     for feature in model.files:
-        root = load_launch_file(feature.file).root
+        root = analysis.files.load(feature.file).root  # the dialect's frontend for the file
         settable = command_line_args(root) if root is not None else set()
         a += len(settable)
         features = {arg.name: arg for arg in feature.args if arg.name in settable}

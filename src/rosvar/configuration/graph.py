@@ -31,6 +31,7 @@ from rosvar.analyses.param_values import ParamValues
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.diagnostics import Location
 from rosvar.files import Confinement
+from rosvar.interpreter.dialect import dialect_of
 from rosvar.interpreter.model import (
     DeferredValue,
     LaunchModel,
@@ -39,20 +40,18 @@ from rosvar.interpreter.model import (
     Raw,
     YamlDecl,
 )
-from rosvar.interpreter.resolution import ResolutionError, evaluated
+from rosvar.interpreter.resolution import (
+    ResolutionError,
+    deferred_value,
+    evaluated,
+    rosparam_pairs,
+)
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import TermError, evaluate, is_term, term_inputs
 from rosvar.ros import names
-from rosvar.ros1.resolve import (
-    check_remap,
-    deferred_value,
-    rosparam_pairs,
-    test_fields,
-    typed_node,
-)
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
 Fields = dict[str, object]
@@ -142,18 +141,20 @@ class NodeContent:
     confinement: Confinement  # where its parameter files may be read
 
     def failures(self, values: Values) -> list[Failure]:
-        """Where a ROS 1 node variant's strings make roslaunch stop, as ``rosvar resolve``
-        loads it: its fields, and each remap and environment setting (in its part, if any)."""
-        if self.node.ros2:
+        """Where a node variant's strings make its launch tool stop, as ``rosvar resolve``
+        loads it (its dialect's checks): its fields, and each remap and environment setting
+        (in its part, if any)."""
+        checks = dialect_of(self.node.schema.version).checks
+        if checks is None:
             return []
         where = self.node.location
         found: list[Failure] = []
         if values.knows(self.raw.values()):
             try:
                 text = {k: values.strict(v, where, f"<node> {k}") for k, v in self.raw.items()}
-                typed_node(text, where)
+                checks.node(text, where)
                 if self.node.is_test:
-                    test_fields(text, where)
+                    checks.test(text, where)
             except ResolutionError as error:
                 found.append(Failure.of(None, error))
         settings = [*((r, "remap") for r in self.remaps), *((e, "env") for e in self.env)]
@@ -163,7 +164,7 @@ class NodeContent:
             try:
                 pair = (values.strict(first, where, label), values.strict(second, where, label))
                 if label == "remap":
-                    check_remap(*pair, where)
+                    checks.remap(*pair, where)
             except ResolutionError as error:
                 found.append(Failure.of(part, error))
         return found

@@ -20,7 +20,7 @@ if TYPE_CHECKING:
     from rosvar.frontends.entity import ParseResult
     from rosvar.frontends.xml import Snapshot
     from rosvar.interpreter.model import LaunchModel, NodeSchema
-    from rosvar.interpreter.resolution import Resolver
+    from rosvar.interpreter.resolution import Checks, Resolver
     from rosvar.logic.conditions import ConditionSpace
     from rosvar.logic.inputs import Slot
     from rosvar.workspace import Workspace
@@ -49,6 +49,12 @@ class Dialect(Protocol):
     @property
     def resolver(self) -> Resolver:
         """What its launch tool starts in one configuration, read off the models."""
+        ...
+
+    @property
+    def checks(self) -> Checks | None:
+        """What its launch tool checks of a node's strings (None: nothing the graph checks
+        of a typed text)."""
         ...
 
     def interpret(

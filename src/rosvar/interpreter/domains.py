@@ -2,10 +2,11 @@
 
 An input's domain is a finite list of slots: the literal values the launch
 files themselves suggest (the default, literals passed by including files,
-``true``/``false`` where the arg is tested by ``if``/``unless``, literals an
-``$(eval)`` compares it with), ``UNSET`` when leaving the arg out differs from
-every literal, and ``OTHER`` for anything else a user may type. The domain
-never changes the semantics, only how finely conditions are split.
+``true``/``false`` where the arg is tested by ``if``/``unless`` or ROS 2's boolean
+substitutions, literals an ``$(eval)`` or ROS 2's ``$(equals)`` compares it with),
+``UNSET`` when leaving the arg out differs from every literal, and ``OTHER`` for
+anything else a user may type. The domain never changes the semantics, only how
+finely conditions are split.
 """
 
 from __future__ import annotations
@@ -32,6 +33,20 @@ _WHOLE_ARG = {
 """An ``if``/``unless`` testing one arg: ``$(arg x)`` in ROS 1, ``$(var x)`` in ROS 2."""
 _FIND = re.compile(r"\$\(find\s+([^\s)]+)\s*\)")
 _ONE_ARG = re.compile(r"([^$]*)\$\(arg\s+([^\s)]+)\s*\)([^$]*)")
+_VAR = r"\$\(var\s+([\w/-]+)\s*\)"
+_LITERAL = r"('[^']*'|\"[^\"]*\"|[^\s()'\"$]+)"
+_ROS2_COMPARED = (
+    re.compile(rf"\$\((?:not-)?equals\s+{_VAR}\s+{_LITERAL}\s*\)"),
+    re.compile(rf"\$\(rosvar-configuration-equals\s+([\w/-]+)\s+{_LITERAL}\s*\)"),
+    re.compile(rf"\$\((?:not-)?equals\s+{_LITERAL}\s+{_VAR}\s*\)"),
+)
+"""``$(equals $(var x) a)`` (either order, ``not-equals`` too; ``LaunchConfigurationEquals``
+as the Python frontend writes it): ``x`` compared with ``a``."""
+_ROS2_BOOLEAN_OPERANDS = re.compile(
+    r"\$\((?:not|and|or|all|any|if)\s+((?:[^()$]|\$(?!\()|\$\(var\s[^()]*\))*)"
+)
+"""The operands of launch's boolean substitutions (up to a nested one other than ``$(var)``):
+an arg among them is tested as ``true``/``false``."""
 PARAM_TYPES = ("str", "string", "int", "double", "bool", "boolean", "yaml", "auto")
 
 
@@ -114,6 +129,8 @@ def file_facts(root: Entity, version: RosVersion = RosVersion.ROS1) -> dict[str,
             if match and match.group(1) in facts:
                 facts[match.group(1)].tested = True
         for text in element.attributes.values():
+            if version is RosVersion.ROS2 and "$(" in text:
+                _ros2_tests(text, facts)
             if text.startswith("$(eval ") and text.endswith(")"):
                 try:
                     compared = compared_literals(text[7:-1])
@@ -123,6 +140,22 @@ def file_facts(root: Entity, version: RosVersion = RosVersion.ROS1) -> dict[str,
                     if name in facts:
                         facts[name].literals.update(values)
     return dict(facts)
+
+
+def _ros2_tests(text: str, facts: dict[str, ArgFacts]) -> None:
+    """What launch's boolean substitutions say of an arg: the literals ``$(equals)``
+    compares it with, and ``true``/``false`` where it is an operand of ``$(not)``,
+    ``$(and)``, ``$(if)``..."""
+    for pattern in _ROS2_COMPARED:
+        for match in pattern.finditer(text):
+            first, second = match.group(1), match.group(2)
+            name, literal = (second, first) if first not in facts else (first, second)
+            if name in facts:
+                facts[name].literals.add(literal.strip("'\"") if literal[0] in "'\"" else literal)
+    for match in _ROS2_BOOLEAN_OPERANDS.finditer(text):
+        for name in re.findall(_VAR, match.group(1)):
+            if name in facts:
+                facts[name].tested = True
 
 
 def _patterns(element: Entity, facts: dict[str, ArgFacts]) -> None:

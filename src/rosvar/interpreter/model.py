@@ -174,6 +174,9 @@ class NodeDecl:
     # outside the launch files about the node: a hinted interface entry's ``when:``
     args: Mapping[str, Choice[object]] = field(default_factory=dict)
     parameters: list[NodeParameter] = field(default_factory=list)  # ROS 2: in order
+    trigger: str = "launch"
+    """ROS 2: what starts it: the launch, a timer (``timer@2s``), an event handler
+    (``on_process_start(FILE:LINE:COL)``, the place of the action it waits for)."""
 
     def field(self, key: str) -> Choice[Raw | None]:
         return self.fields[key]
@@ -199,6 +202,9 @@ class NodeParameter:
     file: Raw | None = None
     globally: bool = False
     """Set for every later node (``<set_parameter>``, ``<set_parameters_from_file>``)."""
+    content: Raw | None = None
+    """A parameter file given ``allow_substs``: its text with the launch's substitutions
+    performed (launch_ros writes it to a file of its own), read instead of ``file``."""
 
 
 @dataclass(slots=True)

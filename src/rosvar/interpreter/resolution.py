@@ -17,7 +17,8 @@ from enum import StrEnum
 from typing import Protocol
 
 from rosvar.diagnostics import Diagnostic, Location
-from rosvar.interpreter.model import LaunchModel, Raw, anon_pattern
+from rosvar.files import Confinement
+from rosvar.interpreter.model import DeferredValue, LaunchModel, Raw, YamlDecl, anon_pattern
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
@@ -67,6 +68,20 @@ class ConflictKind(StrEnum):
     """Why roslaunch cannot have two elements together."""
 
     NODE_NAME = "node-name"  # two nodes with one full name
+
+
+@dataclass(frozen=True)
+class Checks:
+    """What a dialect's launch tool checks of a node's strings while loading it, as its
+    resolution checks them (:class:`ResolutionError` where it stops): the configuration
+    graph checks the texts a user types with them."""
+
+    node: Callable[[Mapping[str, str | None], Location], dict[str, object]]
+    """A node's typed attributes."""
+    test: Callable[[Mapping[str, str | None], Location], dict[str, object]]
+    """A test's own attributes."""
+    remap: Callable[[str | None, str | None, Location], None]
+    """A remap's two names."""
 
 
 @dataclass
@@ -131,6 +146,9 @@ class Resolution:
     conflicts: list[Conflict] = field(default_factory=list)
     errors: list[ResolutionError] = field(default_factory=list)
     warnings: list[Diagnostic] = field(default_factory=list)
+    on_events: list[ResolvedNode] = field(default_factory=list)
+    """ROS 2: nodes that event handlers start after the launch started (a process's exit, its
+    output, a lifecycle transition, the shutdown), which the launch itself does not start."""
 
     @property
     def ok(self) -> bool:
@@ -212,3 +230,30 @@ def evaluated(
         return evaluate(value, concrete, host)
     except (TermError, LookupError, ValueError) as error:
         raise ResolutionError("value-unknown", f"{what}: {error}", location) from None
+
+
+def deferred_value(
+    value: DeferredValue, text: str, location: Location, confinement: Confinement
+) -> object:
+    """A ``<param>`` value whose string became ``text``, typed as its launch tool types it."""
+    try:
+        return value.convert(value.kind, text, value.ptype, confinement)
+    except ValueError as error:
+        raise ResolutionError("param-invalid", str(error), location) from None
+
+
+RosparamTexts = tuple[str, str, str | None, str | None, str | None, str]
+"""A ``<rosparam>``'s strings: its scope's namespace, command, ns, file, param and body."""
+
+
+def rosparam_pairs(
+    param: YamlDecl, texts: RosparamTexts, confinement: Confinement
+) -> list[tuple[str, object]]:
+    """The params ``param`` sets with these strings, as roslaunch loads them."""
+    scope_ns, command, ns, file, name, body = texts
+    try:
+        return param.load(command, ns, file, name, body, scope_ns, confinement)
+    except ValueError as error:
+        raise ResolutionError(
+            "rosparam-invalid", f"error loading <rosparam> tag: {error}", param.location
+        ) from None

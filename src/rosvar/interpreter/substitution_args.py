@@ -14,12 +14,14 @@ from __future__ import annotations
 import ast
 import functools
 import os
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Hashable, Iterable, Sequence
 from typing import Final, Protocol
 
 from rosvar.interpreter.model import Raw
+from rosvar.logic.cells import Cells, register_cells
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.inputs import Input
 from rosvar.logic.terms import (
     Apply,
     Hole,
@@ -29,6 +31,7 @@ from rosvar.logic.terms import (
     concat,
     is_term,
     register,
+    term_inputs,
 )
 
 Value = Raw | Fail
@@ -685,3 +688,37 @@ def _eval_term(host: object, expression: str, *operands: object) -> str:
 
 
 register("eval", _eval_term)
+
+
+def _eval_constants(term: Apply, input_: Input) -> frozenset[Hashable] | None:
+    """What a deferred ``$(eval)`` compares ``input_``'s value with, when that is all it does
+    with it (:mod:`rosvar.interpreter.safe_eval.cells`); None otherwise."""
+    from rosvar.interpreter.safe_eval.cells import compared_constants
+
+    expression, arg_names = term.operands[0], term.operands[1]
+    assert isinstance(expression, str) and isinstance(arg_names, tuple)
+    values = term.operands[2 : 2 + len(arg_names)]
+    hole = Hole(input_)
+    readers = [name for name, value in zip(arg_names, values, strict=True) if value == hole]
+    if not readers or any(
+        term_inputs(value) and value != hole
+        for value in term.operands[2:]
+        if not isinstance(value, str | tuple)
+    ):
+        return None  # the input is also read through a text built from it
+    constants: set[Hashable] = set()
+    for name in readers:
+        found = compared_constants(expression, name)
+        if found is None:
+            return None
+        constants |= found
+    return frozenset(constants)
+
+
+def _eval_witnesses(constants: Iterable[Hashable]) -> tuple[str, ...]:
+    from rosvar.interpreter.safe_eval.cells import Literal, witnesses
+
+    return witnesses(c for c in constants if isinstance(c, Literal))
+
+
+register_cells("eval", Cells(_eval_constants, _eval_witnesses))

@@ -68,6 +68,9 @@ class BDD(Protocol):
     def __int__(self) -> int:
         """The address of the node in CUDD's memory (``read`` walks it)."""
 
+    def __len__(self) -> int:
+        """The nodes of the diagram."""
+
 
 class Manager(Protocol):
     """A ``dd.cudd`` manager (``dd.cudd.BDD``) as rosvar uses it."""
@@ -99,6 +102,20 @@ class Manager(Protocol):
     def support(self, u: BDD, /) -> set[str]: ...
 
     def configure(self, **settings: object) -> dict[str, Any]: ...
+
+    # ``dd``'s own answers, which the tests take as references for rosvar's walks
+    def apply(self, op: str, u: BDD, v: BDD | None = None, /) -> BDD: ...
+
+    def let(self, definitions: Mapping[str, bool], u: BDD, /) -> BDD: ...
+
+    def exist(self, qvars: Collection[str], u: BDD, /) -> BDD: ...
+
+    def count(self, u: BDD, /, nvars: int | None = None) -> float: ...
+
+    def statistics(self) -> dict[str, Any]: ...
+
+    def __len__(self) -> int:
+        """The nodes the manager holds."""
 
 
 Weight = tuple[int, int]  # (weight of false, weight of true)

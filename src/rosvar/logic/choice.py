@@ -104,6 +104,11 @@ class Choice(Generic[T]):
     def __repr__(self) -> str:
         return f"Choice({[v for _, v in self.branches]!r})"
 
+    def key(self) -> tuple[tuple[BDD, object], ...]:
+        """The branches as a dictionary key: equal keys are the same branches (conditions
+        and leaves, as :func:`_key` tells leaves apart) in the same order."""
+        return tuple((condition, _key(leaf)) for condition, leaf in self.branches)
+
     def single(self) -> T | None:
         """The value when there is exactly one branch (whatever its condition)."""
         return self.branches[0][1] if len(self.branches) == 1 else None
@@ -112,7 +117,11 @@ class Choice(Generic[T]):
         return [v for _, v in self.branches]
 
     def map(self, function: Callable[[T], U]) -> Choice[U]:
-        return Choice._of_possible([(c, function(v)) for c, v in self.branches], self.false)
+        """``function`` of each leaf; this choice itself where it changes no leaf."""
+        branches = [(c, function(v)) for c, v in self.branches]
+        if all(new is old for (_, new), (_, old) in zip(branches, self.branches, strict=True)):
+            return cast("Choice[U]", self)
+        return Choice._of_possible(branches, self.false)
 
     def bind(self, function: Callable[[T], Choice[U]]) -> Choice[U]:
         """Apply a conditional function to each branch and flatten."""

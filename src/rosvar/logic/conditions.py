@@ -14,9 +14,10 @@ from typing import Any
 
 from rosvar.logic.atoms import PREDICATES, Atom, FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.bdd import BDD, Manager, cofactor, evaluate, new_manager, walked_support
+from rosvar.logic.cells import CELLS
 from rosvar.logic.inputs import OTHER, UNSET, Input, Slot
 from rosvar.logic.printer import Printer
-from rosvar.logic.terms import Term, term_inputs
+from rosvar.logic.terms import Apply, Term, term_inputs
 from rosvar.logic.terms import evaluate as evaluate_term
 from rosvar.memo import Memo
 
@@ -27,6 +28,10 @@ it is used: interpretation fills a small part of this size, and a larger table o
 page faults; the feature model's quantification in this manager does as many steps with it
 as with a larger one (docs/performance.md)."""
 SUPPORT_WALK_FACTOR = 16  # a node visited in Python costs about as much as 16 variables in dd
+MAX_CELL_GROUP = 24
+"""Predicates over one input related by one fact over all of them (its size grows with
+their number times their cells); a later one is related to each earlier one by a fact of
+its own (pairs, enough for a clash between two nodes)."""
 MEMORY_PER_FILE = 512 << 10
 MIN_MEMORY = 64 << 20
 MAX_MEMORY = 1 << 30
@@ -85,6 +90,8 @@ class ConditionSpace:
         self._described: Memo[tuple[BDD, bool, bool, int], str] = Memo()
         self._satisfiable: Memo[tuple[BDD, int], bool] = Memo()  # by condition and facts
         self._printer: Printer | None = None
+        # predicates over terms of one input whose cells are known, by input and function
+        self._cell_groups: dict[tuple[Input, str], list[tuple[PredicateAtom, frozenset[Any]]]] = {}
         # Choice.const's constants of this space, by text: choices are immutable, and the
         # same literal is met again in every file that includes the one it is written in.
         self.constants: dict[object, Any] = {}
@@ -165,7 +172,44 @@ class ConditionSpace:
             for input_ in term_inputs(term)
             for name in self._slot_names.get(input_, {}).values()
         ]
-        return self._new_var(atom, max(levels) + 1 if levels else None)
+        variable = self._new_var(atom, max(levels) + 1 if levels else None)
+        self._relate(atom)
+        return variable
+
+    def _relate(self, atom: PredicateAtom) -> None:
+        """Add as a fact which predicates over the input of ``atom``'s term can hold
+        together, when its function's cells say so (:mod:`rosvar.logic.cells`)."""
+        term = atom.term
+        cells = CELLS.get(term.function) if isinstance(term, Apply) else None
+        inputs = term_inputs(term)
+        if cells is None or len(inputs) != 1:
+            return
+        assert isinstance(term, Apply)
+        (input_,) = inputs
+        constants = cells.constants(term, input_)
+        if constants is None:
+            return
+        group = self._cell_groups.setdefault((input_, term.function), [])
+        group.append((atom, constants))
+        related = [group] if len(group) <= MAX_CELL_GROUP else [[g, group[-1]] for g in group[:-1]]
+        for members in related:
+            if len(members) < 2:
+                continue
+            values = cells.witnesses(frozenset().union(*(c for _a, c in members)))
+            seen = {
+                tuple(decide_predicate(a, {input_: value}, None) for a, _c in members)
+                for value in values
+            }
+            if len(seen) == 1 << len(members):
+                continue
+            variables = [self.bdd.var(self._var_of[a]) for a, _c in members]
+            possible = self.false
+            for combination in seen:
+                cube = self.true
+                for variable, holds in zip(variables, combination, strict=True):
+                    cube &= variable if holds else ~variable
+                possible |= cube
+            self.constrain(~self.slot(input_, OTHER) | possible)
 
     def support(self, u: BDD) -> set[str]:
         """The variables ``u`` depends on, in time linear in the size of ``u``.

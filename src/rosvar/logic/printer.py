@@ -514,7 +514,10 @@ def _merge_pair(a: Cube, b: Cube, domains: Domains) -> Cube | None:
 
 
 def _slot_text(slot: Slot) -> str:
-    return slot if isinstance(slot, str) else repr(slot)
+    """A slot as the condition shows it: the empty text as ``''``, not as nothing."""
+    if isinstance(slot, str):
+        return slot or "''"
+    return repr(slot)
 
 
 def _render_slots(

@@ -77,7 +77,8 @@ EXAMPLES = {
     ),
     "check": (
         "rosvar check ../shared/corpus/kobuki --deps ../shared/corpus/_external\n"
-        "  rosvar check examples --format sarif --fail-on warning > rosvar.sarif"
+        "  rosvar check examples --format sarif --fail-on warning > rosvar.sarif\n"
+        "  rosvar check examples --baseline-rev origin/main --fail-on warning"
     ),
 }
 
@@ -171,7 +172,22 @@ def _add_check(commands: argparse._SubParsersAction[argparse.ArgumentParser]) ->
         "--fail-on",
         choices=[s.value for s in FAIL_LEVELS],
         default=Severity.ERROR.value,
-        help="exit with 1 when a finding is at least this severe (default: error)",
+        help="exit with 1 when a (new, with a baseline) finding is at least this severe "
+        "(default: error)",
+    )
+    check.add_argument(
+        "--all", action="store_true", help="text: also the notes and the nodes without interfaces"
+    )
+    baseline = check.add_mutually_exclusive_group()
+    baseline.add_argument(
+        "--baseline",
+        metavar="FILE",
+        help="report only the findings not in FILE (an earlier --format json or sarif output)",
+    )
+    baseline.add_argument(
+        "--baseline-rev",
+        metavar="REV",
+        help="report only the findings the workspace did not have at git revision REV",
     )
     check.set_defaults(run=cmd_check)
 

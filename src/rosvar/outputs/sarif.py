@@ -12,6 +12,7 @@ from pathlib import Path
 
 from rosvar import __version__
 from rosvar.analyses.checks import DESCRIPTIONS, Check, Finding
+from rosvar.analyses.fingerprints import VERSION
 from rosvar.diagnostics import Location
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.outputs.documents.findings import finding_document
@@ -21,8 +22,13 @@ SCHEMA = (
 )
 
 
-def sarif(findings: Sequence[Finding], space: ConditionSpace) -> dict[str, object]:
+def sarif(
+    findings: Sequence[Finding], space: ConditionSpace, fingerprints: Sequence[str] = ()
+) -> dict[str, object]:
+    """The SARIF log of ``findings``; ``fingerprints`` (one per finding, when given) are
+    their ``partialFingerprints``, which code scanning and ``--baseline`` match runs by."""
     rules = list(Check)
+    prints: list[str | None] = [*fingerprints] or [None] * len(findings)
     return {
         "$schema": SCHEMA,
         "version": "2.1.0",
@@ -38,15 +44,21 @@ def sarif(findings: Sequence[Finding], space: ConditionSpace) -> dict[str, objec
                         ],
                     }
                 },
-                "results": [_result(f, space, rules.index(f.check)) for f in findings],
+                "results": [
+                    _result(f, space, rules.index(f.check), p)
+                    for f, p in zip(findings, prints, strict=True)
+                ],
             }
         ],
     }
 
 
-def _result(finding: Finding, space: ConditionSpace, rule: int) -> dict[str, object]:
+def _result(
+    finding: Finding, space: ConditionSpace, rule: int, fingerprint: str | None
+) -> dict[str, object]:
     document = finding_document(finding, space)
     primary, *related = finding.locations
+    prints = {} if fingerprint is None else {"partialFingerprints": {VERSION: fingerprint}}
     return {
         "ruleId": str(finding.check),
         "ruleIndex": rule,
@@ -56,6 +68,7 @@ def _result(finding: Finding, space: ConditionSpace, rule: int) -> dict[str, obj
         "relatedLocations": [
             {"id": index, **_location(location)} for index, location in enumerate(related)
         ],
+        **prints,
         "properties": {
             "launchFile": finding.file,
             "condition": document["condition"],

@@ -13,16 +13,9 @@ from collections.abc import Iterator, Mapping, Sequence
 
 from rosvar.analyses.json_values import json_value
 from rosvar.diagnostics import Location
-from rosvar.files import Confinement
-from rosvar.interpreter.model import (
-    DeferredValue,
-    LaunchModel,
-    NodeDecl,
-    ParamDecl,
-    Raw,
-    YamlDecl,
-)
+from rosvar.interpreter.model import DeferredValue, LaunchModel, NodeDecl, ParamDecl, Raw
 from rosvar.interpreter.resolution import (
+    Checks,
     Conflict,
     ConflictKind,
     Models,
@@ -30,6 +23,8 @@ from rosvar.interpreter.resolution import (
     ResolutionError,
     ResolvedNode,
     Restriction,
+    deferred_value,
+    rosparam_pairs,
 )
 from rosvar.logic.choice import Choice
 from rosvar.ros import names
@@ -203,34 +198,7 @@ def _text(r: Restriction, raw: Raw, location: Location, what: str) -> str:
     return text
 
 
-def deferred_value(
-    value: DeferredValue, text: str, location: Location, confinement: Confinement
-) -> object:
-    """A ``<param>`` value whose string became ``text``, typed as roslaunch types it."""
-    try:
-        return value.convert(value.kind, text, value.ptype, confinement)
-    except ValueError as error:
-        raise ResolutionError("param-invalid", str(error), location) from None
-
-
-RosparamTexts = tuple[str, str, str | None, str | None, str | None, str]
-"""A ``<rosparam>``'s strings: its scope's namespace, command, ns, file, param and body."""
-
-
-def rosparam_pairs(
-    param: YamlDecl, texts: RosparamTexts, confinement: Confinement
-) -> list[tuple[str, object]]:
-    """The params ``param`` sets with these strings, as roslaunch loads them."""
-    scope_ns, command, ns, file, name, body = texts
-    try:
-        return param.load(command, ns, file, name, body, scope_ns, confinement)
-    except ValueError as error:
-        raise ResolutionError(
-            "rosparam-invalid", f"error loading <rosparam> tag: {error}", param.location
-        ) from None
-
-
-def typed_node(raw: dict[str, str | None], location: Location) -> dict[str, object]:
+def typed_node(raw: Mapping[str, str | None], location: Location) -> dict[str, object]:
     """A node's typed fields (``respawn``, ``required``...) as roslaunch's ``Node`` holds them."""
     try:
         return node_values(raw)
@@ -266,3 +234,7 @@ def test_fields(raw: Mapping[str, str | None], location: Location) -> dict[str, 
         "retry": retry,
         "output": "log",
     }
+
+
+ROS1_CHECKS = Checks(node=typed_node, test=test_fields, remap=check_remap)
+"""roslaunch's checks of a node's strings, for the typed texts of the configuration graph."""

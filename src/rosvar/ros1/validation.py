@@ -7,6 +7,7 @@ same functions once terms become concrete, so both fail alike.
 from __future__ import annotations
 
 import functools
+from collections.abc import Mapping
 
 from rosvar.interpreter.booleans import bool_attribute
 from rosvar.logic.terms import is_term
@@ -56,7 +57,7 @@ def node_problem(
     return None
 
 
-def node_values(fields: dict[str, str | None]) -> dict[str, object]:
+def node_values(fields: Mapping[str, str | None]) -> dict[str, object]:
     """Typed node fields as roslaunch's ``Node`` holds them (raises ValueError)."""
     problem = node_problem(
         fields.get("name"),

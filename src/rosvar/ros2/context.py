@@ -52,6 +52,28 @@ class Timer:
 
 
 @dataclass(slots=True)
+class Handler:
+    """A registered event handler (``RegisterEventHandler``): its actions run when its event
+    comes, in the context as it is then, as a timer's."""
+
+    tag: str
+    target: str | None  # where the action it waits for was written; None: any
+    condition: BDD
+    actions: list[Entity]
+    label: str  # the trigger its actions are marked with: on_process_start(...)
+
+
+@dataclass(slots=True)
+class Events:
+    """The event handlers registered and the processes started, shared by every copy of a
+    context: launch's handlers are global."""
+
+    handlers: list[Handler] = field(default_factory=list)
+    started: dict[str, BDD] = field(default_factory=dict)
+    """Where each process action (by where it was written) started, and on what trigger."""
+
+
+@dataclass(slots=True)
 class Context:
     """Launch configurations and the ROS-specific state kept beside them."""
 
@@ -69,6 +91,10 @@ class Context:
     """Over every command line (the variational model): any ``name:=value`` may be given."""
     unset_reads: set[str] = field(default_factory=set)  # shared by every copy
     """Launch configurations ``$(var)`` read where they were not set."""
+    events: Events = field(default_factory=Events)  # shared by every copy
+    trigger: str = "launch"
+    """What runs the actions being visited: the launch, a timer, an event (as the oracle's
+    ``trigger``)."""
 
     def scoped(self) -> Context:
         """A copy for a scoped group (``PushLaunchConfigurations``).
@@ -89,6 +115,8 @@ class Context:
             self.now,
             self.open_command_line,
             self.unset_reads,
+            self.events,
+            self.trigger,
         )
 
     def reset(self) -> None:
@@ -108,9 +136,6 @@ class Context:
 
 
 def optional(value: Choice[Raw]) -> Choice[Raw | None]:
-    """A value as a possibly-unset one (a configuration's or the namespace's type)."""
-    return value.map(_same)
-
-
-def _same(leaf: Raw) -> Raw | None:
-    return leaf
+    """A value as a possibly-unset one (a configuration's or the namespace's type): the
+    same choice, whose type only widens (no copy: every ``<arg>`` and ``<let>`` takes one)."""
+    return value

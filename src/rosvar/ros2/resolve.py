@@ -21,6 +21,7 @@ from rosvar.files import Confinement, read_file
 from rosvar.interpreter import resolution
 from rosvar.interpreter.model import NodeDecl, NodeField, Raw
 from rosvar.interpreter.resolution import Resolution, ResolutionError, ResolvedNode, Restriction
+from rosvar.ros2.api.event_handlers import EVENT_HANDLERS
 from rosvar.ros2.conventions import command_line
 from rosvar.ros2.conventions.namespaces import unnamed
 from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, file_entries, typed
@@ -28,6 +29,8 @@ from rosvar.ros2.nodes import ProcessKind
 
 UNINTERPRETED = frozenset({"nesting-too-deep"})
 """Diagnostics of parts the walk left out (a limit): no configuration can be told without them."""
+LATER = frozenset(h.tag for h in EVENT_HANDLERS if not h.at_launch)
+"""The triggers of what starts after the launch started."""
 
 
 def resolve(
@@ -48,8 +51,11 @@ def resolve(
                 result.errors.append(ResolutionError(error.code, error.message, error.location))
         for decl in model.nodes:
             if restriction.holds(decl.condition):
+                later = decl.trigger.partition("(")[0] in LATER
                 try:
-                    result.nodes.append(_node(decl, restriction, result.warnings))
+                    (result.on_events if later else result.nodes).append(
+                        _node(decl, restriction, result.warnings)
+                    )
                 except (ValueError, ResolutionError) as error:
                     result.errors.append(ResolutionError("node-invalid", str(error), decl.location))
     return result
@@ -77,7 +83,7 @@ def _node(decl: NodeDecl, r: Restriction, warnings: list[Diagnostic]) -> Resolve
     if kind == ProcessKind.PROCESS:
         cmd = shlex.split(text("cmd") or "")
         program = cmd[0] if cmd else None
-        attributes = _attributes(kind, None, None, None, None, cmd)
+        attributes = _attributes(kind, None, None, None, None, cmd, decl.trigger)
         return ResolvedNode(
             name=unnamed(None, os.path.basename(program or "")),
             own_name=None,
@@ -123,7 +129,7 @@ def _node(decl: NodeDecl, r: Restriction, warnings: list[Diagnostic]) -> Resolve
         location=decl.location,
         filename=decl.filename,
         version=schema.version,
-        attributes=_attributes(kind, fqn, plugin, text("container"), arguments, None),
+        attributes=_attributes(kind, fqn, plugin, text("container"), arguments, None, decl.trigger),
         parameters=parameters,
     )
 
@@ -135,11 +141,13 @@ def _attributes(
     container: str | None,
     arguments: list[str] | None,
     cmd: list[str] | None,
+    trigger: str,
 ) -> dict[str, object]:
     """What only a ROS 2 process has, named as the oracle names it: what it is (``kind``: a
     node, a lifecycle node, a container, a composable node, a process), its fully qualified
     name (None where its code names it), a composable node's class and container, the
-    program's own arguments (not a composable node's), a process's command."""
+    program's own arguments (not a composable node's), a process's command, and what starts
+    it (``trigger``: ``launch``, ``timer@2s``, ``on_process_start(FILE:LINE:COL)``...)."""
     return {
         "kind": kind,
         "fqn": fqn,
@@ -147,6 +155,7 @@ def _attributes(
         "container": container,
         "arguments": arguments,
         "cmd": cmd,
+        "trigger": trigger,
     }
 
 
@@ -177,7 +186,11 @@ def _sources(
     for param in decl.parameters:
         if not r.holds(param.condition):
             continue
-        if param.file is not None:
+        if param.content is not None:  # allow_substs: the text substituted
+            text = r.evaluate(param.content, decl.location, "parameter file")
+            path = r.evaluate(param.file or "", decl.location, "parameter file")
+            sources.append(Source(entries=tuple(parameter_entries(text, path))))
+        elif param.file is not None:
             path = r.evaluate(param.file, decl.location, "parameter file")
             if param.globally:  # launch_ros asserts that a global parameter file exists
                 path = os.path.abspath(path)
@@ -209,6 +222,11 @@ def parameter_file(path: str, confinement: Confinement) -> list[tuple[str, dict[
         text = read_file(path, confinement).decode()
     except (OSError, UnicodeDecodeError) as error:
         raise ValueError(f"parameter file {path} is not readable: {error}") from None
+    return parameter_entries(text, path)
+
+
+def parameter_entries(text: str, path: str) -> list[tuple[str, dict[str, object]]]:
+    """The entries of a parameter file's text; ``ValueError`` when it is no such file."""
     try:
         return file_entries(bounded_yaml.safe_load(text))
     except yaml.YAMLError as error:

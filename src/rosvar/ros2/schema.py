@@ -7,8 +7,12 @@ runs over the whole tree at each load, under the path of the load.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
+from rosvar.diagnostics import Location
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation
+from rosvar.memo import Memo
 from rosvar.ros.version import RosVersion
 from rosvar.ros2.api.actions import ACTIONS
 from rosvar.ros2.context import Context
@@ -26,17 +30,26 @@ ALWAYS = frozenset({"if", "unless"})
 CONTAINERS = frozenset(name for action in ACTIONS if action.holds_actions for name in action.names)
 
 
+Problem = tuple[str, str, Location]
+"""A frontend failure: its code, message and place."""
+_problems: Memo[Entity, tuple[Problem, ...]] = Memo()
+"""Each parsed file's problems, found once: a file is checked at every include of it."""
+
+
 def check(it: Interpretation[Context], root: Entity) -> None:
     """Record the frontend's failure for every unknown element or attribute below ``root``."""
-    python = format_of(root.location.file, RosVersion.ROS2) is LaunchFormat.PYTHON
-    _check(it, root, PYTHON_ATTRIBUTES if python else ATTRIBUTES)
+    problems = _problems.get(root)
+    if problems is None:
+        python = format_of(root.location.file, RosVersion.ROS2) is LaunchFormat.PYTHON
+        problems = tuple(_check(root, PYTHON_ATTRIBUTES if python else ATTRIBUTES))
+        _problems[root] = problems
+    for code, message, location in problems:
+        it.fail(it.space.true, code, message, location)
 
 
-def _check(
-    it: Interpretation[Context], root: Entity, attributes: dict[str, frozenset[str]]
-) -> None:
-    """The check of every element below ``root``, in document order; a loop rather than a
-    recursion: a hostile file nests thousands of groups, and the walk itself stops at its
+def _check(root: Entity, attributes: dict[str, frozenset[str]]) -> Iterator[Problem]:
+    """The problems of every element below ``root``, in document order; a loop rather than
+    a recursion: a hostile file nests thousands of groups, and the walk itself stops at its
     nesting limit (``nesting-too-deep``), not here."""
     pending: list[tuple[Entity, bool]] = [(child, True) for child in reversed(root.children)]
     while pending:
@@ -44,8 +57,7 @@ def _check(
         allowed = (attributes if action else ATTRIBUTES).get(entity.tag)
         if allowed is None:
             if action:
-                it.fail(
-                    it.space.true,
+                yield (
                     "tag-unknown",
                     f"Unrecognized entity of the type: {entity.tag}",
                     entity.location,
@@ -60,8 +72,7 @@ def _check(
             if name not in allowed and name not in ALWAYS
         )
         if unexpected:
-            it.fail(
-                it.space.true,
+            yield (
                 "attribute-unexpected",
                 f"Unexpected attribute(s) found in `{entity.tag}`: {set(unexpected)}",
                 entity.location,

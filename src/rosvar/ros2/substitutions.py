@@ -13,6 +13,7 @@ import functools
 import os
 import posixpath
 import shlex
+import weakref
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
@@ -21,12 +22,17 @@ from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
 from rosvar.interpreter.substitution_args import ValueBudget, too_complex
 from rosvar.logic.choice import Choice, Fail, combine, ite
+from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, TermError, concat, register
+from rosvar.memo import Memo
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS
+from rosvar.ros2.api.unmodelled import UNMODELLED
 from rosvar.ros2.context import Context, optional
-from rosvar.ros2.frontends.python.text import PATH_JOIN, UNKNOWN
+from rosvar.ros2.frontends.python.text import CONFIGURATION_EQUALS, EMPTY, PATH_JOIN, UNKNOWN
 
 Value = Raw | Fail
+UNSUPPORTED = "substitution-unsupported"
+"""The code of a launch substitution rosvar does not compute (reported with the reason)."""
 
 
 class SubstitutionSyntaxError(Exception):
@@ -154,8 +160,13 @@ def command_line(text: str) -> list[Template]:
 
 Handler = Callable[[Interpretation[Context], Context, list[Raw]], Choice[Value]]
 HANDLERS: dict[str, Handler] = {}
-OWN = frozenset({PATH_JOIN, UNKNOWN})
+OWN = frozenset({PATH_JOIN, UNKNOWN, CONFIGURATION_EQUALS, EMPTY})
 """rosvar's own substitutions, which the Python frontend writes (no launch API name)."""
+
+
+EMPTY_ARGUMENT: dict[str, str] = {}
+"""The text an empty quoted argument (``''``) is to a substitution, where not empty: launch's
+grammar gives it as an empty list, which some substitutions turn into text (``[]``)."""
 
 
 def substitution(name: str) -> Callable[[Handler], Handler]:
@@ -173,6 +184,60 @@ def substitution(name: str) -> Callable[[Handler], Handler]:
     return register
 
 
+PURE = frozenset(
+    {"var", "eval", "find-pkg-share", "find-pkg-prefix", "dirname", "filename", PATH_JOIN, UNKNOWN}
+)
+"""Substitutions whose value follows from their arguments, the launch configurations they
+name and the file's name (the workspace is the space's): a text made only of them is
+resolved once per distinct value of what it reads (:meth:`Ros2Substituter.resolve`)."""
+RESOLVED_CAPACITY = 20_000
+"""Resolved texts kept per condition space (:class:`~rosvar.memo.Memo`)."""
+RESOLVED_BRANCHES = 16
+"""Only values of at most this many branches are kept: larger ones are cross products of
+values that vary a lot, which no other read met again (docs/performance.md)."""
+_resolved: weakref.WeakKeyDictionary[
+    ConditionSpace, Memo[object, tuple[Choice[Value], frozenset[str]]]
+] = weakref.WeakKeyDictionary()
+
+
+@dataclass(frozen=True)
+class Reads:
+    """What a text made of :data:`PURE` substitutions reads besides its own text."""
+
+    names: tuple[str, ...]  # launch configurations, by ``$(var NAME)`` with a literal name
+    filename: bool  # ``$(dirname)`` or ``$(filename)``
+
+
+@functools.lru_cache(maxsize=16384)
+def _reads(text: str) -> Reads | None:
+    """What ``text`` (already parsed) reads, or None where a substitution may do more than
+    read: a name that is itself substituted, ``$(anon)`` (sets a configuration), ``$(env)``
+    (declares an input), ``$(command)``, ``$(find-exec)`` (warn where they are)."""
+    names: list[str] = []
+    filename = False
+    pending: list[Template] = [parse(text)]
+    while pending:
+        for part in pending.pop():
+            if isinstance(part, str):
+                continue
+            if part.name not in PURE:
+                return None
+            if part.name == "var":
+                name = part.arguments[0] if part.arguments else ()
+                if len(name) != 1 or not isinstance(name[0], str):
+                    return None
+                if name[0] not in names:
+                    names.append(name[0])
+            filename = filename or part.name in ("dirname", "filename")
+            pending.extend(part.arguments)
+    return Reads(tuple(names), filename)
+
+
+def _content(value: Choice[Raw | None] | None) -> object:
+    """A configuration's value as a key: equal keys, the same branches in the same order."""
+    return None if value is None else value.key()
+
+
 class Ros2Substituter:
     """Resolves attribute text in a :class:`Context`, for all configurations at once."""
 
@@ -188,15 +253,36 @@ class Ros2Substituter:
             template = parse(text)
         except SubstitutionSyntaxError as error:
             return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
-        return self.template(template, context, text)
+        reads = _reads(text)
+        if reads is None:
+            return self.template(template, context, text)
+        key = (
+            text,
+            context.filename if reads.filename else None,
+            tuple(_content(context.configurations.get(name)) for name in reads.names),
+        )
+        memo = _resolved.get(self.space)
+        if memo is None:
+            memo = _resolved[self.space] = Memo(RESOLVED_CAPACITY)
+        known = memo.get(key)
+        if known is not None:
+            context.unset_reads |= known[1]
+            return known[0]
+        unset_reads, context.unset_reads = context.unset_reads, set()
+        try:
+            value = self.template(template, context, text)
+            if len(value.branches) <= RESOLVED_BRANCHES:
+                memo[key] = (value, frozenset(context.unset_reads))
+        finally:
+            unset_reads |= context.unset_reads
+            context.unset_reads = unset_reads
+        return value
 
     def template(self, template: Template, context: Context, text: str) -> Choice[Value]:
         """The value of ``template``, a part of ``text`` (which messages name)."""
         parts = [self._part(part, context, text) for part in template]
         if not parts:
             return Choice.const(self.space, "")
-        if len(parts) == 1:
-            return parts[0]
         return self.budget.join(text, parts)
 
     def command_line(self, text: str, context: Context) -> Choice[Value]:
@@ -216,10 +302,19 @@ class Ros2Substituter:
             return Choice.const(self.space, part)
         handler = HANDLERS.get(part.name)
         if handler is None:
+            reported = UNMODELLED.by_name.get(part.name)
+            if reported is not None:
+                return Choice.const(
+                    self.space, Fail(f"{reported.why()} is not modelled", UNSUPPORTED)
+                )
             return Choice.const(
                 self.space, Fail(f"unknown substitution '{part.name}'", "substitution-unknown")
             )
-        arguments = [self.template(a, context, text) for a in part.arguments]
+        empty = EMPTY_ARGUMENT.get(part.name, "")
+        arguments = [
+            self.template(a, context, text) if a else Choice.const(self.space, empty)
+            for a in part.arguments
+        ]
         if not arguments:
             return handler(self.host, context, [])
         if not self.budget.affordable(text, arguments):
@@ -260,13 +355,19 @@ def _var(host: Interpretation[Context], context: Context, args: list[Raw]) -> Ch
         if len(args) == 2
         else Fail(f"launch configuration '{name}' does not exist", "var-undefined")
     )
+    return configuration(host, context, name).map(lambda leaf: missing if leaf is None else leaf)
+
+
+def configuration(host: Interpretation[Context], context: Context, name: str) -> Choice[Raw | None]:
+    """The launch configuration ``name`` (None where it is undefined, which is recorded:
+    :attr:`Context.unset_reads`)."""
     value = context.configurations.get(name)
     if value is None:
         context.unset_reads.add(name)
-        return Choice.const(host.space, missing)
+        return Choice.const(host.space, None)
     if any(leaf is None for _condition, leaf in value.branches):
         context.unset_reads.add(name)
-    return value.map(lambda leaf: missing if leaf is None else leaf)
+    return value
 
 
 @substitution("env")
@@ -359,7 +460,7 @@ def _unknown(host: Interpretation[Context], context: Context, args: list[Raw]) -
     """A value the Python frontend did not follow (it reported it): unknown, failing only
     where its text is needed, as an argument's value outside its domain."""
     what = args[0] if args and isinstance(args[0], str) else "value"
-    return Choice.const(host.space, Apply(UNKNOWN, (what,), f"$({UNKNOWN} {what})"))
+    return Choice.const(host.space, Apply(UNKNOWN, (what,), f"⟨{what}⟩"))
 
 
 def _not_followed(_host: object, what: str) -> str:
@@ -373,10 +474,23 @@ register(UNKNOWN, _not_followed)
 def _eval(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     if len(args) != 1 or not isinstance(args[0], str):
         return _fail(host, "$(eval) takes one argument", "substitution-invalid")
-    try:
-        return Choice.const(host.space, evaluate(args[0], EvalEnvironment(_no_arg)))
-    except (EvalFailed, EvalRefused) as error:
-        return _fail(host, f"$(eval {args[0]}): {error}", "eval-failed")
+    value = _evaluated.get(args[0])
+    if value is None:
+        try:
+            value = evaluate(args[0], EvalEnvironment(_no_arg))
+        except (EvalFailed, EvalRefused) as error:
+            value = Fail(f"$(eval {args[0]}): {error}", "eval-failed")
+        _evaluated[args[0]] = value
+    return Choice.const(host.space, value)
+
+
+EVALUATED_CAPACITY = 65_536
+"""Expression texts whose value :data:`_evaluated` keeps."""
+_evaluated: Memo[str, str | Fail] = Memo(EVALUATED_CAPACITY)
+"""``$(eval)``'s value (or failure) by text: it reads nothing else (no launch configuration
+but through ``$(var)``, already substituted), and one text is met once per combination of
+the values it was made of, in every includer (autoware.universe: 37,000 texts evaluated
+148,000 times, more than the parser's cache holds)."""
 
 
 def _no_arg(name: str) -> str:

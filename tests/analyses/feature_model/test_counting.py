@@ -9,12 +9,12 @@ import dd.cudd
 import pytest
 
 from rosvar.analyses.feature_model import counting
-from rosvar.analyses.feature_model.counting import CountedDiagram, Weight, moduli
+from rosvar.analyses.feature_model.counting import CountedDiagram, moduli
 from rosvar.logic import bdd
-from rosvar.logic.bdd import BDD
+from rosvar.logic.bdd import BDD, Manager, Weight
 
 
-def declared(count: int) -> tuple[dd.cudd.BDD, list[str]]:
+def declared(count: int) -> tuple[Manager, list[str]]:
     """A manager with the variables ``x0`` … ``x{count - 1}``, in that order."""
     manager = dd.cudd.BDD()
     names = [f"x{i}" for i in range(count)]
@@ -22,7 +22,7 @@ def declared(count: int) -> tuple[dd.cudd.BDD, list[str]]:
     return manager, names
 
 
-def enumerated(manager: dd.cudd.BDD, formula: BDD, weights: dict[str, Weight]) -> int:
+def enumerated(manager: Manager, formula: BDD, weights: dict[str, Weight]) -> int:
     """The weighted count by listing every assignment of ``weights``' variables."""
     names = sorted(weights)
     total = 0
@@ -36,7 +36,7 @@ def enumerated(manager: dd.cudd.BDD, formula: BDD, weights: dict[str, Weight]) -
     return total
 
 
-def random_formula(manager: dd.cudd.BDD, rng: random.Random, names: list[str]) -> BDD:
+def random_formula(manager: Manager, rng: random.Random, names: list[str]) -> BDD:
     """A conjunction of random clauses (their negations too, for complemented edges)."""
     formula = manager.true
     for _ in range(rng.randint(0, 6)):
@@ -238,7 +238,7 @@ def test_counts_by_levels_equal_those_node_by_node(
     assert found[0][0] == counted_exactly(manager, formula, first)
 
 
-def counted_exactly(manager: dd.cudd.BDD, formula: BDD, weights: dict[str, Weight]) -> int:
+def counted_exactly(manager: Manager, formula: BDD, weights: dict[str, Weight]) -> int:
     """The weighted count by Shannon expansion over the variables in order (each function
     and variable once): another computation than ``CountedDiagram``'s."""
     order = sorted(weights, key=manager.level_of_var)

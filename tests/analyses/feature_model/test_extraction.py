@@ -18,7 +18,8 @@ from rosvar.analyses.feature_model.extraction import extract
 from rosvar.analyses.feature_model.features import ArgFeature, Constraint, FileFeature
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.operations import count_configurations
-from rosvar.logic.inputs import OTHER, ArgInput
+from rosvar.logic.bdd import BDD
+from rosvar.logic.inputs import OTHER, ArgInput, Input
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -51,9 +52,9 @@ def constraints(model: FeatureModel, kind: str) -> list[Constraint]:
     return [c for c in model.constraints if c.kind == kind]
 
 
-def holds(ws: LaunchWorkspace, model: FeatureModel, condition: object, **values: str) -> bool:
+def holds(ws: LaunchWorkspace, model: FeatureModel, condition: BDD, **values: str) -> bool:
     """Truth of ``condition`` when each ``FILE__ARG=value`` is given (other args not given)."""
-    given: dict[ArgInput, str | None] = {}
+    given: dict[Input, str | None] = {}
     for key, value in values.items():
         file, name = key.split("__")
         given[ArgInput(str(ws.root / "pkg" / "launch" / f"{file}.launch"), name)] = value

@@ -19,6 +19,7 @@ from rosvar.analyses.feature_model.operations import (
     core_and_dead,
     count_configurations,
 )
+from rosvar.logic.bdd import BDD, Manager
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -88,16 +89,16 @@ def test_count_under_choices_is_the_product_over_components(ws: LaunchWorkspace)
     assert 0 < solver.count(choices) < solver.count()
 
 
-def unweighted_count(manager: dd.cudd.BDD, formula: dd.cudd.Function, nvars: int) -> int:
+def unweighted_count(manager: Manager, formula: BDD, nvars: int) -> int:
     """Satisfying assignments of the ``nvars`` first levels, in Python integers: the plain
     recursion over the whole diagram, without the weights and stand-ins under test."""
     return _below(manager, {}, formula, 0, nvars)
 
 
 def _below(
-    manager: dd.cudd.BDD,
-    memo: dict[dd.cudd.Function, int],
-    edge: dd.cudd.Function,
+    manager: Manager,
+    memo: dict[BDD, int],
+    edge: BDD,
     level: int,
     nvars: int,
 ) -> int:
@@ -240,11 +241,11 @@ def test_the_memory_bound_grows_with_the_files(monkeypatch: pytest.MonkeyPatch) 
 def test_memory_bound_turns_the_refusal_of_cudd_into_model_too_large(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    manager = dd.cudd.BDD()
+    manager: Manager = dd.cudd.BDD()
     names = [f"x{number}" for number in range(3000)]
     manager.declare(*names)
 
-    def parity() -> dd.cudd.Function:
+    def parity() -> BDD:
         result = manager.false
         for name in names:  # about two nodes per variable: many more than one node chunk
             result = manager.apply("xor", result, manager.var(name))

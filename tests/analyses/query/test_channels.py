@@ -6,6 +6,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from rosvar.analyses.query.channels import channel_collections
+from rosvar.analyses.query.collections import ElementSet
 from rosvar.analyses.query.evaluator import QueryEngine
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
@@ -88,7 +89,9 @@ def test_ros2_nodes_and_their_topics(tmp_path: Path) -> None:
     assert _answers(engine, "nodes[self.namespace == '/r1']") == {"/r1/ear": "ns=r1"}
     assert _answers(engine, "nodes[self.name == '/top']") == {"/top": "true"}
     [talker] = engine.run("topics[self.name == '/r1/arm/chatter']")
-    [(_when, publisher)] = talker.element.attribute("publishers").values()[0].members
+    [publishing] = talker.element.attribute("publishers").values()
+    assert isinstance(publishing, ElementSet)
+    [(_when, publisher)] = publishing.members
     assert publisher.attribute("namespace").values() == ["/r1/arm"]
     assert _answers(engine, "topics[self.name == '/r1/chatter']") == {"/r1/chatter": "ns=r1"}
     # the unnamed talker is shown as resolve and the page show it: its executable, in brackets

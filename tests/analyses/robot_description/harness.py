@@ -17,12 +17,12 @@ from analyses.robot_description.xacro_oracle import XacroFailed, run_xacro
 from rosvar.analyses.robot_description.document import Description, Node, concrete
 from rosvar.analyses.robot_description.reading import XacroReader
 from rosvar.interpreter.model import Raw
-from rosvar.interpreter.substitution_args import MISSING, Missing, PackageTable
+from rosvar.interpreter.substitution_args import MISSING, Missing
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Input
-from rosvar.logic.terms import Hole, evaluate
+from rosvar.logic.terms import Hole, PackageTable, evaluate
 from rosvar.workspace import discover
 
 UNKNOWN = "unknown"

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from analyses.robot_description.harness import differences, expand, one_at_a_time, pairs
+from analyses.robot_description.harness import Config, differences, expand, one_at_a_time, pairs
 
 PACKAGE_XML = """<?xml version="1.0"?>
 <package format="2"><name>{name}</name><version>0.0.0</version><description>t</description>
@@ -196,7 +196,7 @@ def test_fixture_agrees_with_xacro(tmp_path: Path, fixture: str) -> None:
     configurations = pairs(args, env)
     for mode in ("known values", "other values"):
         expanded = expand([root], entry, args, env if mode == "known values" else {})
-        unknown: list[object] = []
+        unknown: list[Config] = []
         assert differences(expanded, configurations, unknown) == [], mode
         assert unknown == [] or fixture == "includes, elements and attributes", unknown
     assert expanded.description.root is not None  # the test can fail: something was expanded
@@ -234,7 +234,7 @@ def test_corpus_files_agree_with_xacro(system: str) -> None:
         elsewhere = any(d.code == "package-unknown" for d in expanded.description.diagnostics)
         for mode in ("known values", "other values"):
             expanded = expand(roots, file, values, variables if mode == "known values" else {})
-            unknown: list[object] = []
+            unknown: list[Config] = []
             assert differences(expanded, configurations, unknown) == [], (file, mode)
             assert elsewhere or len(unknown) * 10 <= len(configurations), (file, unknown)
             compared += len(configurations) - len(unknown)

@@ -14,6 +14,8 @@ from oracle.ros2_client import canonical_nodes, requires_ros2_oracle, rosvar_nod
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
+from .names_cases import CASES as NAMES_CASES
+
 pytestmark = requires_ros2_oracle
 
 PACKAGE_XML = """<?xml version="1.0"?>
@@ -687,6 +689,8 @@ def generate_launch_description():
     ),
 }
 
+
+CASES.update(NAMES_CASES)
 
 LENIENT = frozenset({"find-exec-not-searched"})
 """Fixtures the oracle loads leniently: ``$(find-exec)`` of a program not on its ``PATH``."""

@@ -19,7 +19,7 @@ from oracle.ros2_client import (
     run_oracle,
 )
 from rosvar.interpreter.workspace_models import Analysis
-from rosvar.logic.inputs import OTHER, UNSET
+from rosvar.logic.inputs import OTHER
 from rosvar.workspace import discover
 
 from .test_fixtures import CASES, LENIENT, _workspace, entries
@@ -35,7 +35,8 @@ def configurations(
     analysis: Analysis, file: str, given: list[dict[str, str]]
 ) -> Iterator[dict[str, str]]:
     """The given samples (those setting only declared arguments: the model's inputs), then
-    seeded samples of the domains' literal values, each argument also left out."""
+    samples of the domains' literal values seeded by the file's name, each argument also left
+    out."""
     model = analysis.model(file)
     yield from (sample for sample in given if set(sample) <= set(model.inputs))
     choices = [
@@ -43,8 +44,9 @@ def configurations(
         for name, domain in model.domains.items()
     ]
     combinations = list(itertools.islice(itertools.product(*choices), 10_000))
-    for combination in random.Random(file).sample(combinations, min(PER_FILE, len(combinations))):
-        yield {name: slot for name, slot in combination if slot is not UNSET}
+    rng = random.Random(Path(file).name)  # the same samples in every checkout (issue 30)
+    for combination in rng.sample(combinations, min(PER_FILE, len(combinations))):
+        yield {name: slot for name, slot in combination if isinstance(slot, str)}  # not UNSET
 
 
 def check(

@@ -130,13 +130,13 @@ def _cardinality(manager: Any, children: list[Any], low: int, high: int) -> Any:
 
 
 def _transformations() -> Any:
-    from flamapy.metamodels.fm_metamodel import transformations  # type: ignore[import-untyped]
+    from flamapy.metamodels.fm_metamodel import transformations
 
     return transformations
 
 
 def _operations() -> Any:
-    from flamapy.core.models import ast  # type: ignore[import-untyped]
+    from flamapy.core.models import ast
 
     return ast.ASTOperation
 

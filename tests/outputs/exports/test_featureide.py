@@ -33,7 +33,7 @@ def schema() -> Any:
 
 
 def validate(schema: Any, text: str) -> None:
-    from lxml import etree  # type: ignore[import-untyped]
+    from lxml import etree
 
     document = etree.fromstring(text.encode("utf-8"))
     assert schema.validate(document), schema.error_log

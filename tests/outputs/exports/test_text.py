@@ -59,7 +59,9 @@ def test_examples(examples_model: FeatureModel) -> None:
 
 def test_corpus(model: FeatureModel) -> None:
     report = text.write(model)
-    assert f"  {count_text(count_configurations(model))} valid configurations\n" in report
+    count = count_configurations(model)
+    assert count is not None
+    assert f"  {count_text(count)} valid configurations\n" in report
     for file in model.files:
         assert f"\n    {file.id}\n" in report
     assert report.count("\n    simplest trigger: ") == len(conflicts(model))

@@ -19,7 +19,7 @@ def states(reply: dict[str, Any]) -> dict[str, tuple[str, bool]]:
 
 
 def first_of(reply: dict[str, Any], kind: str) -> str:
-    return next(key for key, f in reply["features"].items() if f["kind"] == kind)
+    return str(next(key for key, f in reply["features"].items() if f["kind"] == kind))
 
 
 def test_new_session_has_the_engine_state(examples: Live, examples_engine: Configurator) -> None:
@@ -247,16 +247,16 @@ def test_memory_stays_bounded_over_many_distinct_clicks(monkeypatch: pytest.Monk
     api = Api(engine, capacity=2)
     args = list(engine.catalog.args)
     managers = (engine.derivation.manager, engine.analysis.space.bdd)
+    session = ""
 
     def click(number: int) -> None:
         nonlocal session
         if number % 20 == 0:
-            session = api.handle("POST", "/api/session", {}, {})["session"]
+            session = str(api.handle("POST", "/api/session", {}, {})["session"])
         feature = args[number % len(args)]
         body = {"session": session, "action": "set", "feature": feature, "value": f"v{number}"}
         api.handle("POST", "/api/choose", {}, body)
 
-    session = ""
     for number in range(300):  # past every bound
         click(number)
     tracemalloc.start()

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import json
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 from urllib.parse import urlsplit
 
@@ -18,6 +18,8 @@ import pytest
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
 from outputs.web.test_overview import expected_links, wired_configurator, wired_workspace
+from rosvar.configuration.choices import UserChoice
+from rosvar.configuration.engine import ConfigurationState
 from rosvar.outputs.web import api as api_module
 from rosvar.outputs.web.overview import SEPARATOR, Grouping, key_of, labels, packages
 
@@ -268,7 +270,8 @@ def present_nodes(state: dict[str, Any]) -> int:
 
 
 def file_named(state: dict[str, Any], name: str) -> str:
-    return next(k for k, f in state["features"].items() if f["kind"] == "file" and k.endswith(name))
+    files = [k for k, f in state["features"].items() if f["kind"] == "file"]
+    return str(next(k for k in files if k.endswith(name)))
 
 
 # -- the bundled example ------------------------------------------------------------------------
@@ -631,13 +634,15 @@ def test_a_slow_choice_of_one_client_keeps_no_other_waiting(
     engine = configurator(ws)
     original = engine.state
 
-    def state(choices: Any) -> Any:
-        if any(c.feature == "slow.launch" for c in choices) and not state.done:
-            state.done = True  # the first time only: a cold step of a large workspace
+    slowed = False
+
+    def state(choices: Sequence[UserChoice]) -> ConfigurationState:
+        nonlocal slowed
+        if any(c.feature == "slow.launch" for c in choices) and not slowed:
+            slowed = True  # the first time only: a cold step of a large workspace
             time.sleep(SLOW_S)
         return original(choices)
 
-    state.done = False  # type: ignore[attr-defined]
     monkeypatch.setattr(engine, "state", state)
     monkeypatch.setattr(api_module, "ENGINE_WAIT", 1.0)
     with running(engine) as live:
@@ -775,6 +780,21 @@ def zoom(app: App) -> float:
     return float(app.page.evaluate("window.rosvar.graph.cy.zoom()"))
 
 
+def unselected_with_nodes(server: dict[str, Any]) -> str:
+    """A file still open that loads nodes not absent: deselecting it takes units away (one
+    that a selected file's conflicts deselected already would change nothing)."""
+    return next(
+        str(feature)
+        for feature, state in server["features"].items()
+        if state["kind"] == "file"
+        and state["state"] == "unselected"
+        and any(
+            n["id"].startswith(f"{feature}|") and n["presence"] != "absent"
+            for n in server["graph"]["nodes"]
+        )
+    )
+
+
 def test_husky_the_whole_drawing_is_in_view_until_the_user_moves_it(page: Any, husky: Live) -> None:
     """The first view, Fit and the view after each choice show the whole drawn graph; once
     the user zoomed, a choice leaves the view alone until the next Fit."""
@@ -796,7 +816,7 @@ def test_husky_the_whole_drawing_is_in_view_until_the_user_moves_it(page: Any, h
     zoomed = zoom(app)
     assert beyond_the_canvas(app) != {}
     runs = page.evaluate("window.rosvar.graph.layoutRuns")
-    app.choose(husky_file(app, "husky_empty_world.launch"), "deselect")
+    app.choose(unselected_with_nodes(app.assert_shows_server_state()), "deselect")
     assert page.evaluate("window.rosvar.graph.layoutRuns") > runs  # units went: placed again
     assert zoom(app) == zoomed  # the view stays where the user put it
     page.click("#fit")
@@ -827,17 +847,7 @@ def test_husky_overview_aggregates_and_opens_the_selected_files(page: Any, husky
     # (husky_empty_world.launch, which loads husky_playpen's nodes too, is out already)
     assert server["features"][husky_file(app, "husky_empty_world.launch")]["state"] == "deselected"
     runs = page.evaluate("window.rosvar.graph.layoutRuns")
-    left = next(
-        feature
-        for feature, state in server["features"].items()
-        if state["kind"] == "file"
-        and state["state"] == "unselected"
-        and any(
-            n["id"].startswith(f"{feature}|") and n["presence"] != "absent"
-            for n in server["graph"]["nodes"]
-        )
-    )
-    app.choose(left, "deselect")
+    app.choose(unselected_with_nodes(server), "deselect")
     app.assert_shows_server_state()
     assert page.evaluate("window.rosvar.graph.layoutRuns") > runs
     assert overlapping(app) == []

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import random
+from collections.abc import Callable
 from typing import Any
 
 import pytest
@@ -140,7 +141,7 @@ def test_a_delta_against_another_version_is_refused() -> None:
 def random_lists(rng: random.Random) -> tuple[list[dict[str, Any]], list[dict[str, Any]]]:
     """Two lists of entries as states give them: some dropped, added, changed (a field more,
     less or other), or all moved; or, as most steps do, only changed in place."""
-    changes = [
+    changes: list[Callable[[dict[str, Any]], dict[str, Any]]] = [
         lambda e: e,
         lambda e: {**e, "presence": "present", "condition": None},
         lambda e: {**e, "x": -1},

@@ -11,10 +11,11 @@ from typing import TYPE_CHECKING, Any
 
 import pytest
 
+from json_view import read
 from outputs.web.live import REPO, Live, running
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.engine import Configurator
-from rosvar.configuration.view import Views
+from rosvar.configuration.view import Rendering, View, Views
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.documents.state import state_document
 from rosvar.outputs.web.delta import patch
@@ -63,8 +64,10 @@ def test_ros2_package_groups_are_named_as_the_tree_names_packages() -> None:
     holds ``ros2_control_demo_example_2``) and its launch files in ``bringup/launch``: the
     boxes are the packages the tree shows, not one ``bringup`` of every example."""
     analysis = Analysis(discover([str(ROS2_DATA / "ros2_control_demos")]))
-    document = state_document(
-        Configurator(analysis, extract(analysis, products=True), render=render).state([])
+    document = read(
+        state_document(
+            Configurator(analysis, extract(analysis, products=True), render=render).state([])
+        )
     )
     tops = {g["label"] for g in summaries(document, Grouping.PACKAGE) if g["parent"] == ""}
     tree = {f["package"] for f in document["features"].values() if f["kind"] == "file"}
@@ -167,12 +170,12 @@ def test_overview_mode_describes_the_conditions_of_what_it_sends_only(
     _external: 3.5 of 5.5 s of CPU for the first state), and the summaries show none: an
     overview session renders no state whole, and the entries it sends (members, the ids the
     checks name) are those of the whole state, conditions described."""
-    rendered: list[object] = []
+    rendered: list[View] = []
     whole_rendering = Views.rendering
 
-    def rendering(self: Views, view: object) -> object:
+    def rendering(self: Views, view: View) -> Rendering:
         rendered.append(view)
-        return whole_rendering(self, view)  # type: ignore[arg-type]
+        return whole_rendering(self, view)
 
     monkeypatch.setattr(Views, "rendering", rendering)
     tab = wired.post("/api/session", {"overview": "file"})

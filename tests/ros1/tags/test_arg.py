@@ -10,7 +10,7 @@ from rosvar.interpreter.model import LaunchModel, ParamDecl
 from rosvar.logic.inputs import OTHER, UNSET
 
 if TYPE_CHECKING:
-    from conftest import LaunchWorkspace
+    from conftest import Config, LaunchWorkspace
 
 
 def param_values(model: LaunchModel) -> dict[str, list[object]]:
@@ -88,6 +88,7 @@ def test_conditional_declarations_give_conditional_defaults(ws: LaunchWorkspace)
     assert UNSET in model.domains["world"]
     assert {"empty", "lab"} <= set(model.domains["world"])
     [param] = model.params
+    assert isinstance(param, ParamDecl)
     lab = param.value.where(lambda v: v == "lab")
     assert model.space.describe(lab) == "world=lab ∨ (¬sim ∧ world=<unset>)"
     assert ws.resolve(file, {}).params == {"/world": "lab"}
@@ -140,7 +141,7 @@ def test_args_declared_in_a_group_stay_in_it(ws: LaunchWorkspace) -> None:
 
 @pytest.mark.oracle
 def test_arg_scopes_and_errors_agree_with_roslaunch(ws: LaunchWorkspace) -> None:
-    cases = {
+    cases: dict[str, tuple[str, list[Config]]] = {
         "value.launch": (
             '<arg name="mode" value="fixed"/><param name="mode" value="$(arg mode)"/>',
             [{}, {"mode": "other"}],

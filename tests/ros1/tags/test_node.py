@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 import pytest
 
+from json_view import read
 from rosvar.interpreter.model import LaunchModel, NodeDecl
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
@@ -125,7 +126,7 @@ def test_duplicate_names_conflict_only_where_both_are_present(ws: LaunchWorkspac
     assert conflict.kind == "node-name" and conflict.name == "/driver"
     assert [loc.line for loc in conflict.locations] == [4, 5]  # <launch>, blank line, <arg>
     assert {loc.file for loc in conflict.locations} == {file}
-    document = resolution_document(clash)
+    document = read(resolution_document(clash))
     assert document["ok"] is False and document["conflicts"][0]["name"] == "/driver"
 
 

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 
 import pytest
 
-from rosvar.interpreter.model import DeferredValue
+from rosvar.interpreter.model import DeferredValue, ParamDecl
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
@@ -28,7 +28,7 @@ TYPED = """
 def test_values_are_typed_per_configuration(ws: LaunchWorkspace) -> None:
     file = ws.launch("typed.launch", TYPED)
     model = ws.model(file)
-    params = {str(p.name.single()): p for p in model.params}
+    params = {str(p.name.single()): p for p in model.params if isinstance(p, ParamDecl)}
     auto = params["/auto"].value.values()
     assert 1 in auto and any(isinstance(v, DeferredValue) for v in auto)
     assert params["/fixed"].value.values() == [3.5]
@@ -221,7 +221,7 @@ def test_files_outside_the_workspace_are_not_read(ws: LaunchWorkspace, kind: str
     assert model.errors == []
     codes = [d.code for d in model.diagnostics]
     assert codes == ["file-outside-workspace"] * len(paths)
-    shown = repr([p.value for p in model.params])
+    shown = repr([p.value for p in model.params if isinstance(p, ParamDecl)])
     assert "hunter2" not in shown and "root:" not in shown
     resolution = ws.resolve(file)
     [error] = resolution.errors
@@ -241,7 +241,7 @@ def test_allow_outside_reads_them_but_never_system_trees(tmp_path: Path) -> None
     )
     workspace = discover([tmp_path / "ws"], ros_package_path="", allow_outside=True)
     model = Analysis(workspace).model(str(launch))
-    values = {p.name.single(): p.value.single() for p in model.params}
+    values = {p.name.single(): p.value.single() for p in model.params if isinstance(p, ParamDecl)}
     assert values["/a"] == "visible"
     assert "below /proc" in str([d.message for d in model.diagnostics])
 

@@ -8,6 +8,7 @@ import pytest
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
+    from rosvar.logic.bdd import BDD
 
 REMAPS = """
   <arg name="sim" default="false"/>
@@ -32,7 +33,7 @@ def test_remaps_carry_conditions(ws: LaunchWorkspace) -> None:
     nodes = {str(n.fields["name"].single()): n for n in model.nodes}
     given = model.inputs["sim"]
 
-    def holds_when(condition: object) -> set[str]:
+    def holds_when(condition: BDD) -> set[str]:
         return {
             value
             for value in ("true", "false", "1", "0")

@@ -26,7 +26,8 @@ def test_python_names_find_their_substitution() -> None:
     assert SUBSTITUTIONS.by_python["launch_ros", "FindPackageShare"] is share
     assert SUBSTITUTIONS.by_python["ament_index_python", "get_package_share_directory"] is share
     assert SUBSTITUTIONS.by_python["os", "getenv"] is SUBSTITUTIONS.by_name["env"]
-    assert CONDITIONS.by_python["launch", "LaunchConfigurationEquals"].compare == "equals"
+    assert CONDITIONS.by_python["launch", "LaunchConfigurationEquals"].compares
+    assert CONDITIONS.by_python["launch", "LaunchConfigurationNotEquals"].attribute == "unless"
     assert CONDITIONS.by_python["launch", "UnlessCondition"].attribute == "unless"
     xml = SOURCES.by_python["launch_xml", "XMLLaunchDescriptionSource"]
     assert SOURCES.by_python["launch", "PythonLaunchDescriptionSource"] is xml

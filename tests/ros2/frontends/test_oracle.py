@@ -39,7 +39,7 @@ from ament_index_python.packages import get_package_share_directory
 from launch import LaunchDescription
 from launch.actions import (DeclareLaunchArgument, GroupAction, IncludeLaunchDescription,
     SetEnvironmentVariable, SetLaunchConfiguration)
-from launch.conditions import IfCondition, UnlessCondition, LaunchConfigurationEquals
+from launch.conditions import IfCondition, UnlessCondition
 from launch.launch_description_sources import PythonLaunchDescriptionSource
 from launch.substitutions import (EnvironmentVariable, LaunchConfiguration,
     PathJoinSubstitution, PythonExpression, EqualsSubstitution)
@@ -78,7 +78,7 @@ def generate_launch_description():
         namespace=LaunchConfiguration('derived'),
         parameters=[PathJoinSubstitution([FindPackageShare('wpkg'), 'config', 'p.yaml'])],
         remappings=[('in', [ns, '/in'])],
-        condition=LaunchConfigurationEquals('mode', 'sim')))
+        condition=IfCondition(EqualsSubstitution(LaunchConfiguration('mode'), 'sim'))))
     ld.add_action(Node(package='wpkg', executable='real_only', name='real_only',
                        condition=IfCondition(EqualsSubstitution(mode, 'real'))))
     ld.add_action(Node(package='wpkg', executable='extra', name='extra',
@@ -140,7 +140,12 @@ launch:
 - node: {pkg: wpkg, exec: sim, name: sim, if: $(equals $(var mode) sim)}
 """
 
-CONFIGURATIONS = ([], ["mode:=real", "use_extra:=true"], ["ns:=zz"], ["mode:=bad"])
+CONFIGURATIONS: tuple[list[str], ...] = (
+    [],
+    ["mode:=real", "use_extra:=true"],
+    ["ns:=zz"],
+    ["mode:=bad"],
+)
 
 
 def oracle(launch: Path, package_path: Path, arguments: list[str]) -> dict[str, Any]:
@@ -166,7 +171,7 @@ def oracle(launch: Path, package_path: Path, arguments: list[str]) -> dict[str, 
     return result
 
 
-def summary(result: dict[str, Any]) -> tuple[object, list[str]]:
+def summary(result: dict[str, Any]) -> tuple[tuple[bool, str | None], list[str]]:
     """What must agree: success, error, and each node but the file it came from."""
     ignored = {"launch_file", "cmd", "inline_parameters"}
     nodes = sorted(

@@ -63,3 +63,24 @@ def test_an_included_files_let_and_arg_reach_the_includer(tmp_path: Path) -> Non
     )
     assert it.matches_oracle({})["nodes"][0]["name"] == "outer_inner_declared"
     it.matches_oracle({"w": "given"})
+
+
+@pytest.mark.oracle
+@pytest.mark.parametrize("arguments", [{"path": "/given.yaml"}, {}])
+def test_a_default_is_evaluated_only_where_no_value_is_given(
+    tmp_path: Path, arguments: dict[str, str]
+) -> None:
+    """A default naming an absent package fails the launch only when it is used
+    (autoware's ``voxel_grid_based_euclidean_cluster.launch.py``, which its includer
+    always gives a path)."""
+    it = launch(
+        tmp_path,
+        """<launch>
+  <arg name="path" default="$(find-pkg-share absent_pkg)/config.yaml"/>
+  <node pkg="pkg" exec="driver" name="driver" args="$(var path)"/>
+</launch>""",
+        values={"path": ["/given.yaml"]},
+    )
+    assert it.implies(it.given("path", "/given.yaml"), it.model.loads)
+    assert it.implies(it.given("path", UNSET), ~it.model.loads)
+    it.matches_oracle(arguments)

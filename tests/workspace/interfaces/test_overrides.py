@@ -112,7 +112,7 @@ def test_catalogue_fills_only_missing_nodes() -> None:
 
 
 def _item(package: str, publishes: list[dict[str, object]]) -> dict[str, object]:
-    roles = {str(role): [] for role in Role}
+    roles: dict[str, list[dict[str, object]]] = {str(role): [] for role in Role}
     return {
         "package": package,
         "executable": package,

@@ -75,7 +75,7 @@ def test_a_source_outside_the_workspace_is_not_read(tmp_path: Path) -> None:
     assert all(e.name != "secret" for n in interfaces.nodes for e in n.entries)
     # given a wider confinement (--allow-outside-workspace), it is read
     widened = extract_interfaces(
-        discover([tmp_path / "ws"]).packages.values(), Confinement.of([tmp_path])
+        discover([tmp_path / "ws"]).packages.values(), Confinement.of([str(tmp_path)])
     )
     node = widened.find("demo", "node")
     assert node is not None and [e.name for e in node.of(Role.PUBLISHES)] == ["secret"]

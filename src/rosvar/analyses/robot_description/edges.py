@@ -17,6 +17,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
 from rosvar.analyses.communication import Edge, Gap
+from rosvar.analyses.controllers import controller_edges
 from rosvar.analyses.robot_description.bridges import Bridges
 from rosvar.analyses.robot_description.document import Description
 from rosvar.analyses.robot_description.plugins import plugin_uses
@@ -76,6 +77,7 @@ class Simulation:
             self._spawned[model.file] = spawns
             edges, bridge_gaps = self.bridges.of(model)
             gaps.extend(bridge_gaps)
+            edges.extend(controller_edges(self.space, model))
             for spawn in spawns:
                 edges.extend(self._spawn_edges(model, spawn, gaps))
                 gaps.extend(_description_gaps(self.space, spawn))

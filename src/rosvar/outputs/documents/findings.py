@@ -3,7 +3,10 @@ each condition described, with an example configuration that triggers it."""
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 from rosvar.analyses.checks import Finding
+from rosvar.analyses.communication import Uninterfaced
 from rosvar.analyses.feature_model.operations import simplest_trigger
 from rosvar.logic.conditions import ConditionSpace
 
@@ -19,3 +22,8 @@ def finding_document(finding: Finding, space: ConditionSpace) -> dict[str, objec
         "example": simplest_trigger(space, finding.condition),
         "locations": [location.to_json() for location in finding.locations],
     }
+
+
+def uninterfaced_documents(nodes: Iterable[Uninterfaced]) -> list[dict[str, object]]:
+    """The nodes without a known interface, as ``check`` and ``query`` list them in JSON."""
+    return [{"names": list(u.names), "executable": u.unit, **u.location.to_json()} for u in nodes]

@@ -20,6 +20,8 @@ def resolution_document(result: Resolution) -> dict[str, object]:
     }
     if result.warnings:
         document["warnings"] = [_finding(warning) for warning in result.warnings]
+    if result.on_events:
+        document["on_events"] = [node_document(node) for node in result.on_events]
     return document
 
 

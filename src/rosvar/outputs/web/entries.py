@@ -30,9 +30,9 @@ from rosvar.configuration.graph import (
 from rosvar.configuration.presence import Presence
 from rosvar.diagnostics import Location
 from rosvar.files import Confinement
+from rosvar.interpreter.dialect import dialect_of
 from rosvar.interpreter.model import NodeDecl, Raw
 from rosvar.interpreter.resolution import ResolutionError
-from rosvar.ros1.resolve import test_fields
 from rosvar.ros1.validation import node_values
 from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, typed
 from rosvar.ros2.resolve import parameter_file
@@ -116,6 +116,7 @@ def _ros2_fields(
         "fqn": fqn,
         "namespace": namespace,
         "parameters": effective(fqn, sources),
+        "trigger": node.trigger,
     }
 
 
@@ -143,9 +144,10 @@ def _node(content: NodeContent, values: Values, parts: Sequence[Shown]) -> list[
     schema = node.schema
     namespace = schema.namespace.text(text) or "/"
     extra: Fields = {}
-    if node.is_test:
+    checks = dialect_of(schema.version).checks
+    if node.is_test and checks is not None:
         try:
-            extra = test_fields(text, node.location)
+            extra = checks.test(text, node.location)
         except ResolutionError:
             extra = {}
     if node.ros2:

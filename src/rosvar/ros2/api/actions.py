@@ -16,6 +16,7 @@ import enum
 import functools
 from dataclasses import dataclass
 
+from rosvar.ros2.api.event_handlers import EVENT_HANDLERS
 from rosvar.ros2.api.registry import Registry
 
 
@@ -253,3 +254,7 @@ expose(
         holds_actions=True,
     )
 )
+
+# -- event handlers, as RegisterEventHandler registers them (ros2/api/event_handlers.py) -----
+for _handler in EVENT_HANDLERS:
+    expose(Action(_handler.names, xml_only=("target",), holds_actions=True, python_only=True))

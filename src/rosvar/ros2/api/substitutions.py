@@ -15,13 +15,15 @@ from rosvar.ros2.api.registry import Registry
 @dataclass(frozen=True)
 class Signature:
     """A Python callable of a substitution: its qualified name and its arguments' names in
-    the order of the ``$(...)`` form, the last ``optional`` of them only when given;
-    ``variadic``: its positional arguments are the operands, as many as given."""
+    the order of the ``$(...)`` form, the last ``optional`` of them only when given, the
+    last ones with a ``default`` text written as it when not given (the ``$(...)`` form needs
+    them); ``variadic``: its positional arguments are the operands, as many as given."""
 
     qualified: str
     arguments: tuple[str, ...] = ()
     optional: int = 0
     variadic: bool = False
+    defaults: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -65,7 +67,12 @@ expose("or", Signature("launch.OrSubstitution", ("left", "right")))
 expose("not", Signature("launch.NotSubstitution", ("value",)))
 expose("all", Signature("launch.AllSubstitution", variadic=True))
 expose("any", Signature("launch.AnySubstitution", variadic=True))
-expose("if", Signature("launch.IfElseSubstitution", ("condition", "if_value", "else_value")))
+expose(
+    "if",
+    Signature(
+        "launch.IfElseSubstitution", ("condition", "if_value", "else_value"), defaults=("", "")
+    ),
+)
 expose("command", Signature("launch.Command", ("command", "on_stderr"), optional=1))
 expose("eval", Signature("launch.PythonExpression", ("expression",)))
 

@@ -32,6 +32,59 @@ def typed(text: str) -> object:
     return value
 
 
+MAX_TYPED_TEXT = 1 << 16
+"""Longer texts are not coerced to a type (YAML reads them unbounded)."""
+
+PARAMETER_TYPES = (
+    "str",
+    "bool",
+    "float",
+    "int",
+    "list_of_str",
+    "list_of_bool",
+    "list_of_float",
+    "list_of_int",
+    "yaml",
+)
+"""launch's type identifiers of a parameter (``<param type>``)."""
+_SCALARS: dict[str, type] = {"str": str, "bool": bool, "float": float, "int": int}
+
+
+def _yaml(text: str) -> object:
+    if len(text) > MAX_TYPED_TEXT:
+        raise ValueError(f"a value over {MAX_TYPED_TEXT} characters is not converted")
+    try:
+        return yaml.safe_load(text)
+    except yaml.YAMLError:
+        raise ValueError(f"Failed to convert '{text}' using yaml rules") from None
+
+
+def coerce(text: str, type_name: str) -> object:
+    """launch's ``coerce_to_type(text, type)`` for a type identifier: ``str`` keeps the
+    text, ``int``/``float`` convert as Python does, ``bool`` reads ``1``/``0`` and YAML's
+    booleans, ``list_of_X`` a YAML list of ``X``s, ``yaml`` what YAML reads. Raises
+    ``ValueError`` where launch does."""
+    if type_name not in PARAMETER_TYPES:
+        raise ValueError(f"Got invalid type identifier '{type_name}'")
+    if type_name == "yaml":
+        return typed(text)
+    item_name = type_name.removeprefix("list_of_")
+    wanted = _SCALARS[item_name]
+    if item_name != type_name:
+        value = _yaml(text) if text else text
+        if not isinstance(value, list) or not all(isinstance(v, wanted) for v in value):
+            raise ValueError(f"Cannot convert value '{text}' to a list of '{wanted}'")
+        return value
+    if wanted is str:
+        return text
+    if wanted is not bool:
+        return wanted(text)
+    value = _yaml({"1": "true", "0": "false"}.get(text, text)) if text else text
+    if not isinstance(value, bool):
+        raise ValueError(f"Cannot convert value '{text}' to '{wanted}'")
+    return value
+
+
 def flatten(values: Mapping[object, object], prefix: str = "") -> dict[str, object]:
     """Nested parameter maps as dotted names."""
     out: dict[str, object] = {}

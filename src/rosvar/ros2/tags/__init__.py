@@ -2,6 +2,7 @@
 
 from rosvar.ros2.tags import (  # noqa: F401 - imported for registration
     arg,
+    events,
     group,
     include,
     inert,

@@ -26,13 +26,13 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     old = context.configurations.get(name)
     if context.open_command_line and len(it.stack) > 1 and name not in it.model.inputs:
         old = _given(it, context, name, old)
-    default = it.attr(entity, "default", context)
     unset = old.where(lambda leaf: leaf is None) if old is not None else it.space.true
-    if default is None:
+    if entity.get("default") is None:
         it.fail(unset, "arg-required", f"Required launch argument '{name}' was not provided")
     else:
-        with it.under(unset) as live:
-            if live:
+        with it.under(unset) as live:  # launch evaluates a default only where it applies
+            default = it.attr(entity, "default", context) if live else None
+            if default is not None:
                 context.configurations[name] = assign(it, old, optional(default))
     value = context.configurations.get(name)
     allowed = [c.get("value") or "" for c in entity.children if c.tag == "choice"]

@@ -9,13 +9,17 @@ Name composition and parameter files are left to resolution, which sees one conf
 
 from __future__ import annotations
 
+from rosvar.files import FileRefused, read_file
 from rosvar.frontends.entity import Entity
+from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import EnvSetting, NodeDecl, NodeParameter, Raw, Remap
 from rosvar.logic.choice import Choice, Fail, combine
-from rosvar.logic.terms import is_term
+from rosvar.logic.terms import Apply, is_term, register
 from rosvar.ros2.context import Context, optional
+from rosvar.ros2.conventions.parameters import PARAMETER_TYPES, coerce
 from rosvar.ros2.dialect import ROS2, tag
+from rosvar.ros2.frontends.typed_text import typed_text
 from rosvar.ros2.nodes import ProcessKind
 from rosvar.ros2.substitutions import Ros2Substituter
 
@@ -123,8 +127,12 @@ def _declare(
             env,
             ROS2.nodes,
             parameters=parameters,
+            trigger=context.trigger,
         )
     )
+    started = context.events.started
+    key = str(entity.location)
+    started[key] = started.get(key, it.space.false) | it.pc  # its start is an event
     return fields
 
 
@@ -156,6 +164,52 @@ def _env(
         out.append(EnvSetting(it.pc & condition, n, v))
 
 
+def _untyped_literal(entity: Entity) -> bool:
+    """A YAML or Python parameter whose value is a string without substitutions: launch
+    takes it as it is, where XML coerces the text (``ParameterValue('7', value_type=int)``
+    and ``{value: '7', type: int}`` fail, ``<param value="7" type="int"/>`` is 7)."""
+    text = entity.get("value")
+    typed_frontend = entity.location.file.endswith((".py", ".yaml", ".yml"))
+    return typed_frontend and text is not None and "value" not in entity.typed and "$(" not in text
+
+
+def _typed(leaf: Raw, kind: str) -> Raw | Fail:
+    """A value of ``<param type=kind>`` as launch coerces it, written as the canonical YAML
+    text that ROS 2's reading of a parameter value gives back as that value (a ``str`` one
+    quoted: ``'1'``); a value known per configuration only is coerced when it is known."""
+    if not isinstance(leaf, str):
+        return Apply("ros2_typed_parameter", (leaf, kind))
+    try:
+        return _typed_text(leaf, kind)
+    except ValueError as error:
+        return Fail(str(error), "param-invalid")
+
+
+def _typed_text(text: str, kind: str) -> str:
+    value = coerce(text, kind)
+    return text if kind == "yaml" else typed_text(value)  # type: ignore[arg-type]
+
+
+register("ros2_typed_parameter", lambda _host, text, kind: _typed_text(text, kind))
+
+
+def _substituted_file(
+    it: Interpretation[Context], path: str, context: Context, out: list[NodeParameter]
+) -> None:
+    """``allow_substs``: the file's text with its substitutions performed in the context as
+    it is here, as launch_ros' ``ParameterFile`` does before the node reads it."""
+    try:
+        text = read_file(path).decode()
+    except (FileRefused, OSError, UnicodeDecodeError) as error:
+        it.fail(it.space.true, "param-invalid", f"parameter file {path} is not readable: {error}")
+        return
+    substituted = Ros2Substituter(it).resolve(text, context)
+    assert substituted is not None
+    value: Choice[Raw] = it.strip(substituted, f"parameter file {path}")
+    for condition, leaf in split(it, value):
+        out.append(NodeParameter(it.pc & condition, None, None, path, content=leaf))
+
+
 def _param(
     it: Interpretation[Context],
     entity: Entity,
@@ -165,21 +219,37 @@ def _param(
 ) -> None:
     source = it.attr(entity, "from", context)
     if source is not None:
+        label = "<param> attribute 'allow_substs'"
+        allow = bool_value(it, it.attr(entity, "allow_substs", context), False, label)
         for condition, file in split(it, source):
-            out.append(NodeParameter(it.pc & condition, None, None, file))
+            substs = allow.where(lambda leaf: leaf is True) & condition
+            if isinstance(file, str) and substs != it.space.false:
+                with it.under(substs):
+                    _substituted_file(it, file, context, out)
+            plain = condition & ~substs
+            if plain != it.space.false:
+                out.append(NodeParameter(it.pc & plain, None, None, file))
         return
     name = it.required(entity, "name", context)
     if name is None:
         return
     nested = [child for child in entity.children if child.tag == "param"]
     value = it.attr(entity, "value", context)
+    kind = entity.get("type")  # launch reads the identifier as it is written
+    problem = None
     if nested and value is not None:
-        it.fail(
-            it.space.true,
-            "param-invalid",
-            "nested parameters and value attributes are mutually exclusive",
-        )
+        problem = "nested parameters and value attributes are mutually exclusive"
+    elif kind is not None and kind not in PARAMETER_TYPES:
+        problem = f"Got invalid type identifier '{kind}'"
+    elif kind is not None and nested:
+        problem = "nested parameters and type attributes are mutually exclusive"
+    elif kind not in (None, "str", "yaml") and _untyped_literal(entity):
+        problem = f"value='{entity.get('value')}' is not an instance of {kind}"
+    if problem is not None:
+        it.fail(it.space.true, "param-invalid", problem)
         return
+    if kind == "yaml" and _untyped_literal(entity):
+        kind = "str"  # a YAML or Python string stays one
     for condition, key in split(it, name):
         with it.under(condition):
             if not isinstance(key, str):
@@ -195,4 +265,8 @@ def _param(
                 )
             else:
                 for v_condition, leaf in split(it, value):
-                    out.append(NodeParameter(it.pc & v_condition, prefix + key, leaf))
+                    result = _typed(leaf, kind) if kind else leaf
+                    if isinstance(result, Fail):
+                        it.fail(v_condition, result.code, result.message)
+                    else:
+                        out.append(NodeParameter(it.pc & v_condition, prefix + key, result))

@@ -96,7 +96,7 @@ def generate_launch_description():
     </node>
   </group>
   <include file="$(find-pkg-share demo)/launch/sub.launch.py"
-           if="$(equals $(var mode) a)">
+           if="$(rosvar-configuration-equals mode a)">
     <arg name="robot" value="$(var ns robot)"/>
   </include>
   <executable cmd="ls -l" if="$(eval '$(var mode) == \\'b\\'')"/>
@@ -149,7 +149,7 @@ def generate_launch_description():
     assert result.root is not None
     group = result.root.children[0]
     node = group.children[0]
-    assert (group.attributes, group.typed) == ({"scoped": "false"}, {"scoped"})
+    assert (group.attributes, group.typed) == ({"scoped": "false"}, frozenset({"scoped"}))
     assert node.typed == {"respawn"} and node.attributes["respawn"] == "true"
     values = [(p.attributes["value"], p.typed, p.get("type")) for p in node.children]
     assert values == [
@@ -366,6 +366,7 @@ def generate_launch_description():
     )
     assert tree == xml_shape(
         """<launch>
+  <on_process_exit><node pkg="hidden" exec="x"/></on_process_exit>
   <node pkg="demo" exec="$(rosvar-unknown 'call to yaml.safe_load()')"
         name="$(rosvar-unknown 'name \\'undefined_name\\'')"/>
   <node pkg="demo" exec="kept"/>
@@ -374,8 +375,6 @@ def generate_launch_description():
     assert [(str(d.location), d.message) for d in diagnostics] == [
         ("t.launch.py:18:29", "call to open() is not followed"),
         ("t.launch.py:18:14", "call to yaml.safe_load() is not followed"),
-        ("t.launch.py:20:30", "call to launch.event_handlers.OnProcessExit() is not followed"),
-        ("t.launch.py:20:9", "RegisterEventHandler (actions run on events) is not followed"),
         ("t.launch.py:21:61", "name 'undefined_name' is not followed"),
     ]
     assert set(codes(diagnostics)) == {"python-not-followed"}

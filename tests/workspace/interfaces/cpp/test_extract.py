@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.diagnostics import Diagnostic, DiagnosticSink, Location
 from rosvar.workspace.interfaces.cpp.extract import extract_node
 from rosvar.workspace.interfaces.cpp.ros_types import ros_type
 from rosvar.workspace.interfaces.cpp.unit import Unit
@@ -64,7 +64,9 @@ class Other : public nodelet::Nodelet {
 """
 
 
-def _extract(tmp_path: Path, files: dict[str, str], entry: str, owner: str | None = None):
+def _extract(
+    tmp_path: Path, files: dict[str, str], entry: str, owner: str | None = None
+) -> tuple[list[Entry], list[Diagnostic]]:
     for name, text in files.items():
         (tmp_path / name).write_text(text)
     sources = [str(tmp_path / name) for name in files if name.endswith(".cpp")]
@@ -88,7 +90,7 @@ def test_executable_interface(tmp_path: Path) -> None:
         ("params", "~ns/rate", 10.0, 7),
         ("publishes", "~out", "std_msgs/String", 13),
         ("params", "~frame", "base_link", 16),
-        ("params", "/global", None, 17),
+        ("params", "/global", Expression("value"), 17),
         ("publishes", "~camera/image_raw", "sensor_msgs/Image", 19),
         ("publishes", "~camera/camera_info", "sensor_msgs/CameraInfo", 19),
         ("action_clients", "move_base", "move_base_msgs/MoveBase", 20),
@@ -129,7 +131,7 @@ def test_missing_entry_reads_everything(tmp_path: Path) -> None:
     entries, diagnostics = _extract(tmp_path, {"f.cpp": source}, "main")
     assert [e.name for e in entries] == ["{n}/p"]
     assert "interface-no-entry" in [d.code for d in diagnostics]
-    assert entries[0].default is None
+    assert entries[0].default == Expression("x")  # dropped: x keeps its value
 
 
 def test_default_expression_kept_as_written(tmp_path: Path) -> None:
@@ -314,7 +316,9 @@ int main(int argc, char** argv) {
 
 def test_a_tested_read_has_the_code_as_default(tmp_path: Path) -> None:
     """slam_gmapping: ``if(!private_nh_.getParam("throttle_scans", t)) t = 1;`` handles an
-    unset parameter; a read whose result is dropped, or whose unset branch fails, does not."""
+    unset parameter; so does a read whose result is dropped (topic_tools' relay:
+    ``pnh.getParam("lazy", g_lazy);`` leaves ``g_lazy`` as it was); one whose unset branch
+    fails does not."""
     source = """\
 int main(int argc, char** argv) {
   ros::NodeHandle nh("~");
@@ -330,7 +334,7 @@ int main(int argc, char** argv) {
         ("~throttle_scans", Expression('!nh.getParam("throttle_scans", throttle)')),
         ("~frame", Expression('nh.getParam("frame", frame) && nh.getParam("rate", rate)')),
         ("~rate", Expression('nh.getParam("frame", frame) && nh.getParam("rate", rate)')),
-        ("~port", None),
+        ("~port", Expression("port")),
         ("~device", None),  # kobuki_node: required, the unset branch fails
         ("~baud", None),
     ]

@@ -15,6 +15,7 @@ from collections.abc import Callable
 
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.actions import ACTIONS, Action, Param, Slot
+from rosvar.ros2.api.event_handlers import EVENT_HANDLERS, EventHandler
 from rosvar.ros2.frontends.python.calls import CALLS, Call
 from rosvar.ros2.frontends.python.text import render
 from rosvar.ros2.frontends.python.values import (
@@ -208,6 +209,57 @@ def _launch_description(call: Call) -> Value:
     return description
 
 
+def _emit_event(call: Call) -> Value:
+    """``EmitEvent(event=Shutdown(...))`` is the ``<shutdown>`` action (the event's class
+    shares the action's name, so it is built as that action), under the ``condition`` given;
+    other events are read only by event handlers and the launch service."""
+    event = call.arg(0, "event")
+    if not isinstance(event, Entity) or event.tag != "shutdown":
+        return call.not_followed(f"EmitEvent of a {type(event).__name__} (only Shutdown is)")
+    event.location = call.location
+    _set_condition(call, event, call.kwargs.get("condition"))
+    return event
+
+
+def _register_event_handler(call: Call) -> Value:
+    """``RegisterEventHandler(handler)``: the handler's element (its tag and actions), under
+    the ``condition`` given."""
+    handler = call.arg(0, "event_handler")
+    if not isinstance(handler, Entity) or handler.tag not in EVENT_HANDLERS.by_name:
+        return call.not_followed(f"RegisterEventHandler of a {type(handler).__name__}")
+    _set_condition(call, handler, call.kwargs.get("condition"))
+    return handler
+
+
+def _event_handler(spec: EventHandler) -> Callable[[Call], Value]:
+    """An event handler as ``<tag target=...>`` holding its actions; ``target`` is where the
+    action it waits for was written (the walk finds its processes by it)."""
+
+    def build(call: Call) -> Value:
+        entity = Entity(spec.tag, {}, call.location)
+        if spec.target is not None:
+            target = call.kwargs.get(spec.target)
+            if isinstance(target, Entity):
+                entity.attributes["target"] = str(target.location)
+            elif target is not None:
+                call.not_followed(f"{spec.target} of a {type(target).__name__}")
+        for name in spec.actions:
+            actions = call.kwargs.get(name)
+            if actions is None:
+                continue
+            if isinstance(actions, Entity | Description | list | tuple):
+                add_actions(call, entity, [actions])
+            else:  # a function of the event: run by launch, never by rosvar
+                call.not_followed(f"{name} given as a {type(actions).__name__}")
+        return entity
+
+    return build
+
+
 for _key, _spec in ACTIONS.by_python.items():
     CALLS[_key] = _action(_spec)
 CALLS["launch", "LaunchDescription"] = _launch_description
+CALLS["launch", "EmitEvent"] = _emit_event
+CALLS["launch", "RegisterEventHandler"] = _register_event_handler
+for _key, _handler_spec in EVENT_HANDLERS.by_python.items():
+    CALLS[_key] = _event_handler(_handler_spec)

@@ -20,7 +20,15 @@ from rosvar.ros2.api.conditions import Condition as ConditionEntry
 from rosvar.ros2.api.registry import python_name
 from rosvar.ros2.api.sources import SOURCES
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS, Signature
-from rosvar.ros2.frontends.python.text import PATH_JOIN, Sub, Text, unknown
+from rosvar.ros2.api.unmodelled import UNMODELLED
+from rosvar.ros2.frontends.python.text import (
+    CONFIGURATION_EQUALS,
+    EMPTY,
+    PATH_JOIN,
+    Sub,
+    Text,
+    unknown,
+)
 from rosvar.ros2.frontends.python.values import (
     Condition,
     Module,
@@ -91,10 +99,9 @@ CALLS: dict[tuple[str, str], Builder] = {}
 """Known callables by (package, name)."""
 
 REASONS: dict[tuple[str, str], str] = {
-    ("launch", "RegisterEventHandler"): "RegisterEventHandler (actions run on events)",
-    ("launch", "LocalSubstitution"): "LocalSubstitution (a value of an event)",
+    key: entry.why(key[1]) for key, entry in UNMODELLED.by_python.items()
 }
-"""Why a known construct stays unknown, for its diagnostic."""
+"""Why a name of the launch API stays unknown, for its diagnostic."""
 
 
 def _register(package: str, *names: str) -> Callable[[Builder], Builder]:
@@ -127,6 +134,9 @@ def join_path(head: Text, tail: Text) -> Text:
     return Text.of(head, separator, tail)
 
 
+COMPARISONS = frozenset({"equals", "not-equals"})
+
+
 def _substitution(name: str, signature: Signature) -> Builder:
     """A call of ``signature``, as ``$(name ...)`` of its arguments."""
 
@@ -135,12 +145,18 @@ def _substitution(name: str, signature: Signature) -> Builder:
             return Text.of(Sub(name, tuple(call.text(arg) for arg in call.args)))
         args: list[Text] = []
         keywords = signature.arguments
+        defaulted = len(keywords) - len(signature.defaults)
         for index, keyword in enumerate(keywords):
             required = index < len(keywords) - signature.optional
-            value = call.arg(index, keyword, _MISSING if required else None)
+            default = signature.defaults[index - defaulted] if index >= defaulted else None
+            value = call.arg(
+                index, keyword, default if default is not None else (_MISSING if required else None)
+            )
             if value is None and not required:
                 break
             args.append(call.text(value))
+        if name in COMPARISONS:  # '' is the text [] there
+            args = [arg if arg.parts else Text.of(Sub(EMPTY)) for arg in args]
         return Text.of(Sub(name, tuple(args)))
 
     return build
@@ -151,6 +167,27 @@ for _substitution_entry in SUBSTITUTIONS:
         CALLS[python_name(_signature.qualified)] = _substitution(
             _substitution_entry.names[0], _signature
         )
+
+
+def _fold(operator: str, empty: str) -> Builder:
+    """``AllSubstitution``/``AnySubstitution`` as nested ``$(and)``/``$(or)``, which read
+    each operand as the same ``bool`` (jazzy's XML and YAML frontends fail on ``$(all)``
+    and ``$(any)``: the Python class is the only way to them)."""
+
+    def build(call: Call) -> Value:
+        operands = [call.text(arg) for arg in call.args]
+        if not operands:
+            return Text.of(empty)
+        result = Text.of(Sub(operator, (operands[-1], Text.of(empty))))
+        for operand in reversed(operands[:-1]):
+            result = Text.of(Sub(operator, (operand, result)))
+        return result
+
+    return build
+
+
+CALLS["launch", "AllSubstitution"] = _fold("and", "true")
+CALLS["launch", "AnySubstitution"] = _fold("or", "false")
 
 
 @_register("launch", "PathSubstitution")
@@ -194,12 +231,12 @@ def _dirname(call: Call) -> Value:
 
 def _condition(condition: ConditionEntry) -> Builder:
     def build(call: Call) -> Value:
-        if condition.compare is None:
+        if not condition.compares:
             return Condition(condition.attribute, call.text(call.arg(0, "predicate_expression")))
         name = call.text(call.arg(0, "launch_configuration_name"))
-        expected = call.text(call.arg(1, "expected_value"))
-        compared = Sub(condition.compare, (Text.of(Sub("var", (name,))), expected))
-        return Condition(condition.attribute, Text.of(compared))
+        expected = call.arg(1, "expected_value")
+        operands = (name,) if expected is None else (name, call.text(expected))
+        return Condition(condition.attribute, Text.of(Sub(CONFIGURATION_EQUALS, operands)))
 
     return build
 

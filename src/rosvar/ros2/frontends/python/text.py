@@ -19,6 +19,14 @@ PATH_JOIN = "rosvar-path-join"
 """The substitution standing for ``PathJoinSubstitution`` (``os.path.join`` of its
 arguments' values) where the join is not known from the text; XML has none."""
 
+CONFIGURATION_EQUALS = "rosvar-configuration-equals"
+"""``LaunchConfigurationEquals(name, value)``: whether the launch configuration ``name`` is
+the text ``value`` (plain text equality; an undefined one equals only no value), which no
+frontend writes (``$(equals)`` compares booleans and numbers by value)."""
+EMPTY = "rosvar-empty"
+"""The empty text as an operand of ``$(equals)``: launch's grammar reads ``''`` there as the
+text ``[]``, which the Python frontend's ``''`` is not."""
+
 _PLAIN_ARGUMENT = re.compile(r"[^\s'\"\\$()]+")
 
 

@@ -462,6 +462,8 @@ class Collector:
             init = self.unit.constants.get(written) if variable is None else variable.init
             if init is not None:
                 default = param_defaults.default(init, self.evaluator, function)
+        if default is None and len(arguments) >= 2 and param_defaults.dropped(at):
+            default = Expression(syntax.text(arguments[1]))  # it keeps the value it had
         self.add(Role.PARAMS, handle, arguments[0], function, at, default=default)
 
     def _first_type(self, templates: list[str]) -> str | None:

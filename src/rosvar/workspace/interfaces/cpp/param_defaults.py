@@ -36,6 +36,13 @@ def result_test(call: Node) -> Node | None:
     return node
 
 
+def dropped(call: Node) -> bool:
+    """Whether ``call``'s result is dropped (``nh.getParam("x", v);``): unset, the parameter
+    leaves ``v`` as it was, so the code goes on with that value."""
+    parent = call.parent
+    return parent is not None and parent.type == "expression_statement"
+
+
 def guard_of(call: Node, name: Node) -> Node | None:
     """The condition of an enclosing ``if`` that asks whether parameter ``name`` is set
     (``if (nh.hasParam("x")) nh.getParam("x", v);``)."""

@@ -67,6 +67,7 @@ const STYLE = [
   { selector: 'edge[kind = "link"].quiet.near, edge[kind = "link"].quiet.pointed, edge[kind = "link"].quiet:selected',
     style: { "text-opacity": 1, "text-background-opacity": 0.8, "z-index": 10 } },
   { selector: ".undetermined", style: { "border-style": "dashed", "line-style": "dashed", "background-opacity": 0.7 } },
+  { selector: "node.on-event", style: { "border-style": "double", "border-width": 4, "border-color": "#7b4fc9" } },
   { selector: "node.conflict", style: { "border-color": "#b42318", "border-width": 4, color: "#b42318" } },
   { selector: "node.match", style: { "border-color": "#2f6fdb", "border-width": 4 } },
   { selector: "node.queried", style: { "border-color": "#d7191c", "border-width": 5, color: "#d7191c", "font-weight": "bold" } },
@@ -480,7 +481,8 @@ export class GraphView {
       const id = PREFIX[kind] + item.id;
       const clash = clashing.has(clashName(kind, item.name));
       const label = `${clash ? "⚠ " : ""}${item.name}${hint ? `\n${hint}` : ""}`;
-      wanted.push({ group: "nodes", classes: [item.presence, clash ? "conflict" : ""].join(" "),
+      const onEvent = String(item.trigger ?? "").startsWith("on_"); // an event handler starts it
+      wanted.push({ group: "nodes", classes: [item.presence, clash ? "conflict" : "", onEvent ? "on-event" : ""].join(" "),
                     data: { id, kind, label, owner: item.id, element: { kind, ...item, group: group.key, groupName: group.label, variant } } });
       unitOf.set(item.id, id);
       searchNames.set(id, [String(item.name).toLowerCase()]);
