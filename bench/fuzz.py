@@ -34,11 +34,19 @@ from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.describe import describe_model
 from rosvar.outputs.documents.resolution import resolution_document
 from rosvar.ros1.resolve import resolve
+from rosvar.ros2.resolve import resolve as resolve_ros2
 from rosvar.workspace import discover
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = (ROOT.parent / "shared" / "corpus").resolve()
 PACKAGE_XML = "<package><name>fuzz</name></package>\n"
+ROS2_DATA = ROOT / "tests" / "data" / "ros2"
+ROS2_PACKAGE_XML = (
+    '<package format="3"><name>fuzz</name><version>0.0.0</version><description>d</description>'
+    '<maintainer email="a@b.c">m</maintainer><license>BSD</license>'
+    "<export><build_type>ament_cmake</build_type></export></package>\n"
+)
+ROS2_SUFFIXES = (".launch.xml", ".launch.yaml", ".launch.py")
 
 HOSTILE = (
     '<param name="h" type="yaml" value="&amp;a [*a]"/>',
@@ -69,6 +77,44 @@ HOSTILE = (
     "&#0;\x00\ufffe",
 )
 """Snippets spliced into mutants: the reported inputs of issue 16 and their neighbours."""
+
+_DOUBLING = 40
+HOSTILE_ROS2 = {
+    ".launch.xml": (
+        '<let name="v0" value="ab"/>'
+        + "".join(
+            f'<let name="v{i}" value="$(var v{i - 1})$(var v{i - 1})"/>'
+            for i in range(1, _DOUBLING)
+        ),
+        '<arg name="w0" default="ab"/>'
+        + "".join(
+            f'<arg name="w{i}" default="$(var w{i - 1})$(var w{i - 1})"/>'
+            for i in range(1, _DOUBLING)
+        ),
+        "<group>" * 990 + '<node pkg="fuzz" exec="n"/>' + "</group>" * 990,
+        '<node pkg="fuzz" exec="n"><param from="/etc/passwd"/></node>',
+        '<set_parameters_from_file filename="$(find-pkg-share fuzz)/../../../etc/x.yaml"/>',
+        '<include file="/etc/x.launch.xml"/>',
+    ),
+    ".launch.yaml": (
+        "- let: {name: v0, value: ab}\n"
+        + "".join(
+            f"- let: {{name: v{i}, value: '$(var v{i - 1})$(var v{i - 1})'}}\n"
+            for i in range(1, _DOUBLING)
+        ),
+        "- node: {pkg: fuzz, exec: n, param: [{from: /etc/passwd}]}",
+        "- group: " + "[" * 200 + "]" * 200,
+    ),
+    ".launch.py": (
+        "    s = 'x' * 1000\n    l = [[s] * 99999] * 99999",
+        "    d = {'a': 1}\n    for i in range(40):\n        d = {'x': d, 'y': d}",
+        "    l = list(range(99999))\n    for i in range(99999):\n        m = l == l[:]",
+        "    g = GroupAction([])\n    for i in range(30):\n        g = GroupAction([g, g])",
+        "    import os\n    os.system('touch /tmp/rosvar-fuzz-ran')",
+        "    open('/etc/passwd').read()",
+    ),
+}
+"""Snippets spliced into ROS 2 mutants, by format: the inputs of issue 28's item 8."""
 
 
 def _lines(text: str, rng: random.Random) -> tuple[list[str], int]:
@@ -120,10 +166,40 @@ MUTATIONS: tuple[Callable[[str, random.Random], str], ...] = (
 )
 
 
-def mutate(text: str, rng: random.Random) -> str:
+def mutate(text: str, rng: random.Random, suffix: str = "") -> str:
     for _ in range(rng.randint(1, 4)):
-        text = rng.choice(MUTATIONS)(text, rng)
+        if suffix and rng.random() < 0.2:
+            lines, at = _lines(text, rng)
+            lines.insert(at, rng.choice(HOSTILE_ROS2[suffix]) + "\n")
+            text = "".join(lines)
+        elif suffix:
+            text = rng.choice(MUTATIONS[1:])(text, rng)
+        else:
+            text = rng.choice(MUTATIONS)(text, rng)
     return text
+
+
+YAML_SEED = """launch:
+- arg: {name: a, default: x}
+- let: {name: b, value: '$(var a)'}
+- node: {pkg: fuzz, exec: n, name: '$(var b)', param: [{name: p, value: 1}]}
+- group:
+  - push_ros_namespace: {namespace: '$(var a)'}
+  - node: {pkg: fuzz, exec: m, if: '$(var a)'}
+"""
+"""The test data holds no YAML launch file: this one stands for the format."""
+
+
+def ros2_seeds() -> list[tuple[str, str]]:
+    """The ROS 2 launch files of the test data, (suffix, text), sorted, and a YAML one."""
+    found: list[tuple[str, str]] = [(".launch.yaml", YAML_SEED)]
+    for path in sorted(ROS2_DATA.rglob("*")):
+        suffix = next((s for s in ROS2_SUFFIXES if path.name.endswith(s)), None)
+        if suffix is None and path.name.endswith("_launch.py"):
+            suffix = ".launch.py"
+        if suffix is not None and path.is_file() and path.stat().st_size < 100_000:
+            found.append((suffix, path.read_text(errors="replace")))
+    return found
 
 
 def seeds(limit: int | None = None) -> list[str]:
@@ -165,25 +241,50 @@ def _check(text: str, directory: Path, index: int) -> None:
         xml.clear_cache()
 
 
+def _check_ros2(text: str, suffix: str, directory: Path, index: int) -> None:
+    """Analyse and resolve one ROS 2 mutant as the CLI would."""
+    launch = directory / "fuzz" / "launch" / f"m{index}{suffix}"
+    launch.write_text(text, errors="replace")
+    try:
+        analysis = Analysis(discover([directory / "fuzz"], ros_package_path=""))
+        json.dumps(describe_model(analysis.model(str(launch))), ensure_ascii=False)
+        resolved = resolve_ros2(analysis, [str(launch)], {}, {})
+        json.dumps(resolution_document(resolved), ensure_ascii=False)
+    finally:
+        launch.unlink()
+        xml.clear_cache()
+
+
 def campaign(
-    count: int, seed: int, time_limit: float = 20.0, texts: Sequence[str] | None = None
+    count: int,
+    seed: int,
+    time_limit: float = 20.0,
+    texts: Sequence[str] | None = None,
+    ros2: bool = False,
 ) -> Report:
-    """Run ``count`` mutants from ``seed``; failures are collected, never raised."""
+    """Run ``count`` mutants from ``seed`` (of the ROS 2 test data's launch files, XML, YAML
+    and Python, if ``ros2``); failures are collected, never raised."""
     rng = random.Random(seed)
-    pool = list(texts if texts is not None else seeds())
+    pool: list[tuple[str, str]] = (
+        ros2_seeds() if ros2 else [("", t) for t in (texts if texts is not None else seeds())]
+    )
     report = Report()
     directory = Path(tempfile.mkdtemp(prefix="rosvar-fuzz-"))
     (directory / "fuzz" / "launch").mkdir(parents=True)
-    (directory / "fuzz" / "package.xml").write_text(PACKAGE_XML)
+    (directory / "fuzz" / "package.xml").write_text(ROS2_PACKAGE_XML if ros2 else PACKAGE_XML)
     previous = signal.signal(signal.SIGALRM, _alarm)
     start = time.perf_counter()
     try:
         for index in range(count):
-            text = mutate(rng.choice(pool), rng)
+            suffix, seed_text = rng.choice(pool)
+            text = mutate(seed_text, rng, suffix)
             began = time.perf_counter()
             signal.setitimer(signal.ITIMER_REAL, time_limit)
             try:
-                _check(text, directory, index)
+                if suffix:
+                    _check_ros2(text, suffix, directory, index)
+                else:
+                    _check(text, directory, index)
             except _TimeOut:
                 report.failures.append((text, f"time-out after {time_limit} s"))
             except Exception:
@@ -212,11 +313,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     options.add_argument("--seed", type=int, default=1)
     options.add_argument("--time-limit", type=float, default=20.0, help="seconds per mutant")
     options.add_argument("--out", type=Path, default=Path("fuzz-failures"))
+    options.add_argument("--ros2", action="store_true", help="mutate the ROS 2 test data")
     args = options.parse_args(argv)
     texts = seeds()
     total = Report()
     for batch, size in enumerate(_batches(args.mutants, 1000)):
-        report = campaign(size, args.seed * 1_000_003 + batch, args.time_limit, texts)
+        report = campaign(size, args.seed * 1_000_003 + batch, args.time_limit, texts, args.ros2)
         total.mutants += report.mutants
         total.failures += report.failures
         total.slowest = max(total.slowest, report.slowest)

@@ -41,3 +41,24 @@ def test_the_hostile_snippets_are_spliced_in() -> None:
     assert {snippet for snippet in fuzz.HOSTILE if any(snippet in m for m in mutants)} == set(
         fuzz.HOSTILE
     )
+
+
+ROS2_MUTANTS = 100
+
+
+@pytest.mark.skipif(not fuzz.ROS2_DATA.is_dir(), reason="the ROS 2 test data is absent")
+def test_mutants_of_ros2_launch_files_never_break_rosvar(tmp_path: Path) -> None:
+    """XML, YAML and Python mutants of the ROS 2 test data, hostile snippets of issue 28
+    spliced in (a helper calling ``os.system`` among them: it must never run)."""
+    ran = Path("/tmp/rosvar-fuzz-ran")
+    ran.unlink(missing_ok=True)
+    before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    report = fuzz.campaign(ROS2_MUTANTS, seed=28, time_limit=30.0, ros2=True)
+    assert report.mutants == ROS2_MUTANTS
+    assert report.failures == [], report.failures[0][1]
+    assert report.peak_rss_mb - before < MEMORY_GROWTH_MB
+    assert not ran.exists()
+
+
+def test_every_ros2_format_is_mutated() -> None:
+    assert {suffix for suffix, _text in fuzz.ros2_seeds()} == set(fuzz.ROS2_SUFFIXES)

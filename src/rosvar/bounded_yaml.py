@@ -23,6 +23,13 @@ class YamlLimitError(yaml.YAMLError):
     """The YAML text is well-formed so far but goes beyond a limit (or refers to itself)."""
 
 
+def safe_load(text: str) -> object:
+    """``yaml.safe_load(text)`` within the limits of :func:`check_limits`: every YAML text
+    rosvar reads into values (parameter files, ``-p`` values) goes through here."""
+    check_limits(text)
+    return yaml.load(text, Loader=_Parser)
+
+
 def check_limits(text: str) -> None:
     """Raise :class:`YamlLimitError` (or the parser's ``YAMLError``) if ``text`` nests
     deeper than :data:`MAX_DEPTH`, expands to more than :data:`MAX_NODES` nodes, or has an

@@ -138,6 +138,7 @@ class NodeContent:
     env: list[Setting]
     parameters: list[Setting]
     node: NodeDecl
+    confinement: Confinement  # where its parameter files may be read
 
     def failures(self, values: Values) -> list[Failure]:
         """Where a node variant's strings make its launch tool stop, as ``rosvar resolve``
@@ -522,7 +523,7 @@ class VariationalGraph:
                 new_id,
                 model.file,
                 condition,
-                NodeContent(raw, remaps, env, parameters, node),
+                NodeContent(raw, remaps, env, parameters, node, self.confinement),
                 _needs(
                     *raw.values(),
                     *(p for pair in remaps + env + parameters for p in pair[:2]),

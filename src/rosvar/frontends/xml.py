@@ -229,12 +229,13 @@ def parse_launch_bytes(data: bytes, filename: str) -> ParseResult:
     return ParseResult(launch, [*result.diagnostics, warning])
 
 
-def read_bytes(path: str | os.PathLike[str]) -> bytes | ParseResult:
-    """A whole regular file within the size limit (:func:`rosvar.files.read_file`), or the
-    refusal as a :class:`ParseResult`; shared by every frontend."""
+def read_bytes(path: str | os.PathLike[str], limit: int | None = None) -> bytes | ParseResult:
+    """A whole regular file within the size limit (:func:`rosvar.files.read_file`; a
+    frontend may ask for less), or the refusal as a :class:`ParseResult`; shared by every
+    frontend."""
     name = os.fspath(path)
     try:
-        return read_file(name, limit=MAX_FILE_BYTES)
+        return read_file(name, limit=MAX_FILE_BYTES if limit is None else limit)
     except FileRefused as refused:
         message = refused.message
         if refused.code == FileCode.UNREADABLE:

@@ -14,6 +14,7 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import Any, Concatenate, Generic, ParamSpec, Protocol, TypeVar
 
 from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.files import FileRefused
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.lifted import apply, lift
@@ -25,6 +26,7 @@ from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
 from rosvar.logic.terms import Hole
 from rosvar.workspace import Workspace
+from rosvar.workspace.launch_files import INVALID_FILE
 
 V = TypeVar("V")
 P = ParamSpec("P")
@@ -385,21 +387,41 @@ class Interpretation(Generic[S]):
             self._location = saved
 
     def load(self, path: str) -> Entity | None:
-        """Parse a launch file (cached); parse problems become errors at the current tag."""
+        """Parse a launch file (cached) if the workspace's read gate lets it through (after
+        symlinks: a link to a file outside is not read). A refusal is an error naming the
+        path, a parse problem one in the words of the file's format; both at the including
+        tag, or for the entry file where its own diagnostic places the problem."""
+        try:
+            self.workspace.confinement().check(path)
+        except FileRefused as refused:
+            self.fail(
+                self.space.true,
+                refused.code,
+                f"launch file {path}: {refused.message}",
+                self._placed(path, []),
+            )
+            return None
         result = self.files.load(path)
         for diagnostic in result.diagnostics:
             self.sink.add(diagnostic)
         if result.root is None:
             messages = "; ".join(d.message for d in result.diagnostics) or "unreadable"
+            invalid = INVALID_FILE[self.workspace.ros_version, self.workspace.launch_format(path)]
             self.fail(
                 self.space.true,
                 "launch-invalid",
-                f"Invalid roslaunch XML syntax in {path}: {messages}",
+                f"{invalid} in {path}: {messages}",
+                self._placed(path, [d.location for d in result.diagnostics]),
             )
             return None
         if path not in self.model.files:
             self.model.files.append(path)
         return result.root
+
+    def _placed(self, path: str, found: list[Location]) -> Location:
+        if self.location.line > 0:  # an include
+            return self.location
+        return next((where for where in found if where.line > 0), Location(path, 1, 1))
 
 
 class _At(Generic[S]):

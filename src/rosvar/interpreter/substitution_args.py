@@ -314,25 +314,7 @@ class Substituter:
         # Values of texts that read args only (and packages), by text and the immutable
         # choices of the args read: a file's texts recur in its elements and its includes'.
         self._known: dict[tuple[object, ...], Choice[Value]] = {}
-        self.combinations = 0  # spent from MAX_FILE_COMBINATIONS
-
-    def _affordable(self, text: str, choices: Sequence[Choice[object]]) -> bool:
-        """Whether combining ``choices`` for ``text`` stays within the work limits (and,
-        if so, charge it); otherwise the caller makes ``text`` an unknown value."""
-        count = 1
-        for choice in choices:
-            count *= len(choice.branches)
-        if count <= 1:
-            return True
-        if count > MAX_COMBINATIONS:
-            reason = f"it has {count} combinations of values, over {MAX_COMBINATIONS}"
-        elif self.combinations + count > MAX_FILE_COMBINATIONS:
-            reason = f"the file's values need over {MAX_FILE_COMBINATIONS} combinations"
-        else:
-            self.combinations += count
-            return True
-        self.host.note_too_complex(f"{_short(text)} is not computed: {reason}")
-        return False
+        self.budget = ValueBudget(host.space, host.note_too_complex)
 
     def resolve(self, text: str | None, scope: Scope) -> Choice[Value] | None:
         if text is None:
@@ -403,30 +385,10 @@ class Substituter:
         if segments == ("", 0, ""):  # the whole text is one substitution: its value as is
             return values[0]
 
-        if not self._affordable(text, values):
-            return Choice.const(self.space, too_complex(text))
-        oversized: list[str] = []
+        def parts(leaves: Sequence[Raw]) -> list[Raw]:
+            return [s if isinstance(s, str) else leaves[s] for s in segments]
 
-        def join(leaves: list[Value]) -> Value:
-            for leaf in leaves:
-                if isinstance(leaf, Fail):
-                    return leaf
-            parts: list[Raw] = [
-                s if isinstance(s, str) else leaves[s]  # type: ignore[misc]
-                for s in segments
-            ]
-            size, depth = _measure(parts)
-            if size > MAX_VALUE_SIZE or depth > MAX_TERM_DEPTH:
-                oversized.append(f"over {MAX_VALUE_SIZE} characters or {MAX_TERM_DEPTH} levels")
-                return too_complex(text)
-            return concat(parts)
-
-        joined = combine(values, join)
-        if oversized:
-            self.host.note_too_complex(
-                f"{_short(text)} is not computed: its value would be {oversized[0]}"
-            )
-        return joined
+        return self.budget.join(text, values, parts)
 
     def _command(self, body: str, scope: Scope) -> Choice[Value]:
         words = _split(body)
@@ -510,9 +472,72 @@ class Substituter:
         if not arg_choices and not env_choices:
             return Choice.const(space, run([]))
         choices: list[Choice[object]] = [*arg_choices, *env_choices]
-        if not self._affordable(f"$(eval {expression})", choices):
+        if not self.budget.affordable(f"$(eval {expression})", choices):
             return Choice.const(space, too_complex(f"$(eval {expression})"))
         return combine(choices, run)
+
+
+class ValueBudget:
+    """The bounds on the values one interpretation computes, the same for every dialect and
+    frontend: combinations of operand values per text (:data:`MAX_COMBINATIONS`) and per
+    file (:data:`MAX_FILE_COMBINATIONS`), and the size of every concatenation built
+    (:data:`MAX_VALUE_SIZE`, :data:`MAX_TERM_DEPTH`). Past them a value is
+    :func:`too_complex`, with one ``value-too-complex`` note."""
+
+    def __init__(self, space: ConditionSpace, note: Callable[[str], None]) -> None:
+        self.space = space
+        self.note = note
+        self.combinations = 0  # spent from MAX_FILE_COMBINATIONS
+
+    def affordable(self, text: str, choices: Sequence[Choice[object]]) -> bool:
+        """Whether combining ``choices`` for ``text`` stays within the work limits (and,
+        if so, charge it); otherwise the caller makes ``text`` an unknown value."""
+        count = 1
+        for choice in choices:
+            count *= len(choice.branches)
+        if count <= 1:
+            return True
+        if count > MAX_COMBINATIONS:
+            reason = f"it has {count} combinations of values, over {MAX_COMBINATIONS}"
+        elif self.combinations + count > MAX_FILE_COMBINATIONS:
+            reason = f"the file's values need over {MAX_FILE_COMBINATIONS} combinations"
+        else:
+            self.combinations += count
+            return True
+        self.note(f"{_short(text)} is not computed: {reason}")
+        return False
+
+    def join(
+        self,
+        text: str,
+        choices: Sequence[Choice[Value]],
+        parts: Callable[[Sequence[Raw]], Sequence[Raw]] = list,
+    ) -> Choice[Value]:
+        """The concatenation of ``parts`` of the leaves, in every combination of
+        ``choices`` (a failing leaf fails it), or :func:`too_complex` beyond the bounds."""
+        if not self.affordable(text, choices):
+            return Choice.const(self.space, too_complex(text))
+        oversized = False
+
+        def concatenate(leaves: list[Value]) -> Value:
+            nonlocal oversized
+            for leaf in leaves:
+                if isinstance(leaf, Fail):
+                    return leaf
+            joined = parts(leaves)  # type: ignore[arg-type]  # no Fail left
+            size, depth = _measure(joined)
+            if size > MAX_VALUE_SIZE or depth > MAX_TERM_DEPTH:
+                oversized = True
+                return too_complex(text)
+            return concat(list(joined))
+
+        result = combine(choices, concatenate)
+        if oversized:
+            self.note(
+                f"{_short(text)} is not computed: its value would be over {MAX_VALUE_SIZE} "
+                f"characters or {MAX_TERM_DEPTH} levels"
+            )
+        return result
 
 
 def too_complex(text: str) -> Apply:

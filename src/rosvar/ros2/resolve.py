@@ -15,8 +15,9 @@ from collections.abc import Mapping, Sequence
 
 import yaml
 
+from rosvar import bounded_yaml
 from rosvar.diagnostics import Diagnostic, Severity
-from rosvar.files import FileRefused, read_file
+from rosvar.files import Confinement, read_file
 from rosvar.interpreter import resolution
 from rosvar.interpreter.model import NodeDecl, NodeField, Raw
 from rosvar.interpreter.resolution import Resolution, ResolutionError, ResolvedNode, Restriction
@@ -33,6 +34,8 @@ from rosvar.ros2.conventions.parameters import (
 )
 from rosvar.ros2.nodes import ProcessKind
 
+UNINTERPRETED = frozenset({"nesting-too-deep"})
+"""Diagnostics of parts the walk left out (a limit): no configuration can be told without them."""
 LATER = frozenset(h.tag for h in EVENT_HANDLERS if not h.at_launch)
 """The triggers of what starts after the launch started."""
 
@@ -46,6 +49,10 @@ def resolve(
     for file in files:
         model = models.model(file)
         restriction = Restriction(models, model, args, env)
+        for diagnostic in model.diagnostics:
+            if diagnostic.code in UNINTERPRETED:
+                where = diagnostic.location
+                result.errors.append(ResolutionError(diagnostic.code, diagnostic.message, where))
         for error in model.errors:
             if restriction.holds(error.condition):
                 result.errors.append(ResolutionError(error.code, error.message, error.location))
@@ -180,7 +187,7 @@ def _sources(
     sources: list[Source] = []
     for parameter in given.parameters:
         if isinstance(parameter, str):
-            sources.append(Source(entries=tuple(parameter_file(parameter))))
+            sources.append(Source(entries=tuple(parameter_file(parameter, r.confinement))))
         else:
             sources.append(Source(*parameter))
     for param in decl.parameters:
@@ -205,7 +212,7 @@ def _sources(
                     Diagnostic("parameter-file-missing", Severity.WARNING, message, decl.location)
                 )
                 continue
-            sources.append(Source(entries=tuple(parameter_file(path))))
+            sources.append(Source(entries=tuple(parameter_file(path, r.confinement))))
         elif param.name is not None and param.value is not None:
             # global (-p) and inline (a generated file) parameters both apply to /**
             text = r.evaluate(param.value, decl.location, "parameter value")
@@ -215,11 +222,13 @@ def _sources(
     return sources
 
 
-def parameter_file(path: str) -> list[tuple[str, dict[str, object]]]:
-    """A parameter file's entries (node pattern, parameters); ``ValueError`` when unreadable."""
+def parameter_file(path: str, confinement: Confinement) -> list[tuple[str, dict[str, object]]]:
+    """A parameter file's entries (node pattern, parameters), read through the workspace's
+    gate and the bounded YAML loader; ``ValueError`` when refused or unreadable (a refused
+    file is never opened, so nothing of it is told)."""
     try:
-        text = read_file(path).decode()
-    except (FileRefused, OSError, UnicodeDecodeError) as error:
+        text = read_file(path, confinement).decode()
+    except (OSError, UnicodeDecodeError) as error:
         raise ValueError(f"parameter file {path} is not readable: {error}") from None
     return parameter_entries(text, path)
 
@@ -227,6 +236,6 @@ def parameter_file(path: str) -> list[tuple[str, dict[str, object]]]:
 def parameter_entries(text: str, path: str) -> list[tuple[str, dict[str, object]]]:
     """The entries of a parameter file's text; ``ValueError`` when it is no such file."""
     try:
-        return file_entries(yaml.safe_load(text))
+        return file_entries(bounded_yaml.safe_load(text))
     except yaml.YAMLError as error:
         raise ValueError(f"parameter file {os.path.basename(path)}: {error}") from None

@@ -48,13 +48,24 @@ def check(it: Interpretation[Context], root: Entity) -> None:
 
 
 def _check(root: Entity, attributes: dict[str, frozenset[str]]) -> Iterator[Problem]:
-    for entity in root.children:
-        allowed = attributes.get(entity.tag)
+    """The problems of every element below ``root``, in document order; a loop rather than
+    a recursion: a hostile file nests thousands of groups, and the walk itself stops at its
+    nesting limit (``nesting-too-deep``), not here."""
+    pending: list[tuple[Entity, bool]] = [(child, True) for child in reversed(root.children)]
+    while pending:
+        entity, action = pending.pop()
+        allowed = (attributes if action else ATTRIBUTES).get(entity.tag)
         if allowed is None:
-            yield "tag-unknown", f"Unrecognized entity of the type: {entity.tag}", entity.location
-            continue
-        container = entity.tag in CONTAINERS  # its children are actions, checked below
-        children = [] if container else [child.tag for child in entity.children]
+            if action:
+                yield (
+                    "tag-unknown",
+                    f"Unrecognized entity of the type: {entity.tag}",
+                    entity.location,
+                )
+                continue
+            allowed = frozenset()
+        container = action and entity.tag in CONTAINERS  # its children are actions
+        children = [] if container or not action else [child.tag for child in entity.children]
         unexpected = sorted(
             name
             for name in [*entity.attributes, *children]
@@ -66,21 +77,8 @@ def _check(root: Entity, attributes: dict[str, frozenset[str]]) -> Iterator[Prob
                 f"Unexpected attribute(s) found in `{entity.tag}`: {set(unexpected)}",
                 entity.location,
             )
-        elif container:
-            yield from _check(entity, attributes)
-        else:
-            yield from _nested(entity)
-
-
-def _nested(entity: Entity) -> Iterator[Problem]:
-    """Children of a leaf action (``<param>`` in a node, ``<arg>`` in an include...)."""
-    for child in entity.children:
-        allowed = ATTRIBUTES.get(child.tag, frozenset())
-        unexpected = sorted(n for n in child.attributes if n not in allowed and n not in ALWAYS)
-        if unexpected:
-            yield (
-                "attribute-unexpected",
-                f"Unexpected attribute(s) found in `{child.tag}`: {set(unexpected)}",
-                child.location,
-            )
-        yield from _nested(child)
+            if action:
+                continue
+        # a container's children are actions; a leaf action's (``<param>`` in a node, ``<arg>``
+        # in an include...) are checked for their attributes only, at every depth
+        pending.extend((child, container) for child in reversed(entity.children))

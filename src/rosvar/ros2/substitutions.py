@@ -20,6 +20,7 @@ from dataclasses import dataclass
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
+from rosvar.interpreter.substitution_args import ValueBudget, too_complex
 from rosvar.logic.choice import Choice, Fail, combine, ite
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, TermError, concat, register
@@ -249,6 +250,7 @@ class Ros2Substituter:
     def __init__(self, host: Interpretation[Context]) -> None:
         self.host = host
         self.space = host.space
+        self.budget = ValueBudget(host.space, host.note_too_complex)
 
     def resolve(self, text: str | None, context: Context) -> Choice[Value] | None:
         if text is None:
@@ -259,7 +261,7 @@ class Ros2Substituter:
             return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
         reads = _reads(text)
         if reads is None:
-            return self.template(template, context)
+            return self.template(template, context, text)
         key = (
             text,
             context.filename if reads.filename else None,
@@ -274,7 +276,7 @@ class Ros2Substituter:
             return known[0]
         unset_reads, context.unset_reads = context.unset_reads, set()
         try:
-            value = self.template(template, context)
+            value = self.template(template, context, text)
             if len(value.branches) <= RESOLVED_BRANCHES:
                 memo[key] = (value, frozenset(context.unset_reads))
         finally:
@@ -282,11 +284,12 @@ class Ros2Substituter:
             context.unset_reads = unset_reads
         return value
 
-    def template(self, template: Template, context: Context) -> Choice[Value]:
-        parts = [self._part(part, context) for part in template]
+    def template(self, template: Template, context: Context, text: str) -> Choice[Value]:
+        """The value of ``template``, a part of ``text`` (which messages name)."""
+        parts = [self._part(part, context, text) for part in template]
         if not parts:
             return Choice.const(self.space, "")
-        return combine(parts, _concatenate)
+        return self.budget.join(text, parts)
 
     def command_line(self, text: str, context: Context) -> Choice[Value]:
         """A command line's arguments (:func:`command_line`), each resolved, as one
@@ -297,9 +300,10 @@ class Ros2Substituter:
             return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
         if not arguments:
             return Choice.const(self.space, "")
-        return combine([self.template(a, context) for a in arguments], _quote)
+        words = [self.template(a, context, text) for a in arguments]
+        return self.budget.join(text, words, _quoted)
 
-    def _part(self, part: str | Call, context: Context) -> Choice[Value]:
+    def _part(self, part: str | Call, context: Context, text: str) -> Choice[Value]:
         if isinstance(part, str):
             return Choice.const(self.space, part)
         handler = HANDLERS.get(part.name)
@@ -314,11 +318,13 @@ class Ros2Substituter:
             )
         empty = EMPTY_ARGUMENT.get(part.name, "")
         arguments = [
-            self.template(a, context) if a else Choice.const(self.space, empty)
+            self.template(a, context, text) if a else Choice.const(self.space, empty)
             for a in part.arguments
         ]
         if not arguments:
             return handler(self.host, context, [])
+        if not self.budget.affordable(text, arguments):
+            return Choice.const(self.space, too_complex(text))
         return combine(arguments, lambda leaves: leaves).bind(
             lambda leaves: _call(handler, self.host, context, leaves)
         )
@@ -333,20 +339,12 @@ def _call(
     return handler(host, context, list(leaves))  # type: ignore[arg-type]  # Fails returned
 
 
-def _concatenate(leaves: Sequence[Value]) -> Value:
-    for leaf in leaves:
-        if isinstance(leaf, Fail):
-            return leaf
-    return concat(list(leaves))  # type: ignore[arg-type]  # no Fail left: texts and terms
-
-
-def _quote(leaves: Sequence[Value]) -> Value:
+def _quoted(leaves: Sequence[Raw]) -> list[Raw]:
+    """Command-line words joined by spaces, each quoted (a term, an unknown value, not)."""
     words: list[Raw] = []
     for leaf in leaves:
-        if isinstance(leaf, Fail):
-            return leaf
         words += [" ", shlex.quote(leaf) if isinstance(leaf, str) else leaf]
-    return concat(words[1:])  # a term (an unknown value) stays unquoted
+    return words[1:]
 
 
 def _fail(host: Interpretation[Context], message: str, code: str) -> Choice[Value]:

@@ -15,7 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from enum import StrEnum
 
-from rosvar.files import read_file
+from rosvar.files import open_regular
 from rosvar.frontends.xml import is_launch_root
 from rosvar.ros.version import RosVersion
 
@@ -24,7 +24,8 @@ LAUNCH_FOLDER = "launch"
 # ``ros2 launch`` loads a Python file by calling this function; files without it are
 # helper modules or launch tests (``generate_test_description``).
 PYTHON_ENTRY = b"generate_launch_description"
-# A launch file's Python source is small; a larger one is not read to find out.
+# How much of a file is read to find out whether it is a launch file: its beginning (a file
+# too large to read is still found, and its reading says why it is not read).
 MAX_PYTHON_PROBE_BYTES = 1024 * 1024
 _YAML_ROOT = re.compile(rb"^launch\s*:", re.MULTILINE)
 
@@ -35,6 +36,15 @@ class LaunchFormat(StrEnum):
     XML = "xml"
     YAML = "yaml"
     PYTHON = "python"
+
+
+INVALID_FILE = {
+    (RosVersion.ROS1, LaunchFormat.XML): "Invalid roslaunch XML syntax",
+    (RosVersion.ROS2, LaunchFormat.XML): "Invalid ROS 2 XML launch file",
+    (RosVersion.ROS2, LaunchFormat.YAML): "Invalid ROS 2 YAML launch file",
+    (RosVersion.ROS2, LaunchFormat.PYTHON): "Invalid ROS 2 Python launch file",
+}
+"""How an unreadable launch file is told, naming its format (roslaunch's own words)."""
 
 
 @dataclass(frozen=True)
@@ -53,18 +63,21 @@ class _Rule:
         return name.endswith(self.suffixes) and (in_folder or not self.in_launch_folder)
 
 
-def _has_yaml_launch_root(path: str) -> bool:
+def _beginning(path: str) -> bytes:
+    """The first :data:`MAX_PYTHON_PROBE_BYTES` of a regular file; empty if unreadable."""
     try:
-        return _YAML_ROOT.search(read_file(path, limit=MAX_PYTHON_PROBE_BYTES)) is not None
-    except OSError:
-        return False
+        with open_regular(path) as handle:
+            return handle.read(MAX_PYTHON_PROBE_BYTES)
+    except (OSError, ValueError):
+        return b""
+
+
+def _has_yaml_launch_root(path: str) -> bool:
+    return _YAML_ROOT.search(_beginning(path)) is not None
 
 
 def _defines_launch_description(path: str) -> bool:
-    try:
-        return PYTHON_ENTRY in read_file(path, limit=MAX_PYTHON_PROBE_BYTES)
-    except OSError:
-        return False
+    return PYTHON_ENTRY in _beginning(path)
 
 
 # The first rule that names a file decides; its confirmation may still refuse.

@@ -29,6 +29,7 @@ from rosvar.configuration.graph import (
 )
 from rosvar.configuration.presence import Presence
 from rosvar.diagnostics import Location
+from rosvar.files import Confinement
 from rosvar.interpreter.dialect import dialect_of
 from rosvar.interpreter.model import NodeDecl, Raw
 from rosvar.interpreter.resolution import ResolutionError
@@ -91,6 +92,7 @@ def _error(content: ErrorContent, _values: Values, _parts: Sequence[Shown]) -> l
 
 def _ros2_fields(
     node: NodeDecl,
+    confinement: Confinement,
     text: Mapping[str, str | None],
     parameters: Sequence[tuple[str | None, str | None]],
 ) -> Fields:
@@ -104,7 +106,7 @@ def _ros2_fields(
     for first, second in parameters:
         try:
             if not first:
-                sources.append(Source(entries=tuple(parameter_file(second or ""))))
+                sources.append(Source(entries=tuple(parameter_file(second or "", confinement))))
             else:
                 sources.append(Source(entries=((ALL_NODES, {first: typed(second or "")}),)))
         except ValueError:
@@ -152,7 +154,7 @@ def _node(content: NodeContent, values: Values, parts: Sequence[Shown]) -> list[
         present = [
             _present(PartKind.PARAMETER, p, values, parts, undetermined) for p in content.parameters
         ]
-        extra = _ros2_fields(node, text, [p for p in present if p is not None])
+        extra = _ros2_fields(node, content.confinement, text, [p for p in present if p is not None])
     return [
         {
             "name": schema.full_name.text(text),

@@ -10,6 +10,8 @@ from dataclasses import dataclass, field
 
 import yaml
 
+from rosvar import bounded_yaml
+
 REMAP = frozenset({"-r", "--remap"})
 PARAM = frozenset({"-p", "--param"})
 PARAMS_FILE = "--params-file"
@@ -69,6 +71,6 @@ def parse(argv: Sequence[str]) -> RosArguments:
 def _value(text: str) -> object:
     """``-p``'s value: YAML, or the text where it is not YAML."""
     try:
-        return yaml.safe_load(text)
+        return bounded_yaml.safe_load(text)
     except yaml.YAMLError:
         return text

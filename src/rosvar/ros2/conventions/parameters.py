@@ -9,6 +9,8 @@ from dataclasses import dataclass
 
 import yaml
 
+from rosvar import bounded_yaml
+
 ALL_NODES = "/**"
 
 
@@ -20,7 +22,7 @@ def typed(text: str) -> object:
     if not text:
         return text
     try:
-        value = yaml.safe_load(text)
+        value = bounded_yaml.safe_load(text)
     except yaml.YAMLError:
         return text
     if value is None or isinstance(value, dict):

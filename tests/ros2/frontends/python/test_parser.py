@@ -6,6 +6,8 @@ from __future__ import annotations
 import random
 from pathlib import Path
 
+import pytest
+
 from ros2.frontends.trees import Shape, demo_launch, shape, xml_shape
 from rosvar.diagnostics import Diagnostic, Location
 from rosvar.ros2.frontends.python.parser import parse_python_launch_bytes, parse_python_launch_file
@@ -578,9 +580,33 @@ def test_values_stay_within_the_size_limits() -> None:
         "l = [1]\n    for i in range(60):\n        l.extend(l)",
         "n = 3\n    for i in range(60):\n        n = n * n",
         "s = 'a' * 100000\n    s = s.replace('a', s)",
-        "s = 'a' * 100000\n    s = ''.join([s] * 100000)",
     ]:
         source = f"def generate_launch_description():\n    {body}\n    return LaunchDescription()\n"
         tree, diagnostics = read(source, IMPORTS)
         assert tree == xml_shape("<launch/>"), body
         assert codes(diagnostics) == ["python-not-followed"], body
+
+
+@pytest.mark.parametrize(
+    "body",
+    [
+        "s = 'a' * 100000\n    s = ''.join([s] * 100000)",
+        "s = 'x' * 1000\n    l = [[s] * 99999] * 99999",
+        "s = 'x' * 99999\n    d = {str(i): s + str(i) for i in range(99999)}",
+        "l = list(range(99999))\n    for i in range(99999):\n        l == l",
+        "l = list(range(99999))\n    for i in range(99999):\n        m = l[:]",
+        "s = 'a ' * 99999\n    for i in range(99999):\n        m = s.split()",
+        "d = {'a': 1}\n    for i in range(40):\n        d = {'x': d, 'y': d}",
+        "g = Node(package='p', executable='e')\n    for i in range(30):\n"
+        "        g = GroupAction([g, g])",
+    ],
+)
+def test_the_budget_counts_what_each_operation_builds(body: str) -> None:
+    """Sequences built from shared parts, and loops of operations each walking a long
+    value, are charged by the size they walk or expand to: the budget runs out, at the
+    statement where it does, instead of minutes or gigabytes."""
+    source = f"def generate_launch_description():\n    {body}\n    return LaunchDescription()\n"
+    tree, diagnostics = read(source, IMPORTS)
+    assert tree is None
+    (budget,) = [d for d in diagnostics if d.code == "python-budget"]
+    assert budget.location.line > 1

@@ -71,6 +71,8 @@ MAX_LENGTH = 100_000
 """Longest string, text or list the reading builds (``*``, ``+``, ``join``, ``range``...)."""
 MAX_INT_BITS = 4096
 """Largest integer the reading computes: repeated squaring must not exhaust memory."""
+CHARS_PER_STEP = 64
+"""Characters of a string built that cost one step (a string is copied a word at a time)."""
 
 MAX_IMPORT_DEPTH = 20
 """Modules being read at once (a module importing another...): deeper imports stay symbolic."""
@@ -131,6 +133,77 @@ def size(value: Value) -> int:
     return 1
 
 
+class Expansion:
+    """The size of values with every shared part counted each time it occurs, as walking
+    them (their launch elements, a parameter dict) would meet it: ``[[s] * n] * n`` is
+    n * n, ``GroupAction([g, g])`` nested k deep 2^k. Each object's size is computed once
+    per question; a launch element's is remembered (by its identity and number of children:
+    elements are built once, descriptions only grow), so that a chain of k nested groups
+    costs k, not k^2."""
+
+    def __init__(self) -> None:
+        self._elements: dict[tuple[int, int], int] = {}
+        self._kept: list[Entity] = []  # ids stay unique while their objects live
+
+    def cost(self, value: object, limit: int) -> int:
+        """The expanded size of ``value`` less that of the launch elements built before that
+        it holds, each credited once (they were charged when built: a chain of k groups
+        costs k, two copies of one group are one group more); counting stops past
+        ``limit``, so the work done is at most the size found."""
+        sizes: dict[int, int] = {}
+        keep: list[object] = []
+        credited: set[int] = set()
+        credit = 0
+
+        def measure(item: object) -> int:
+            nonlocal credit
+            if isinstance(item, str):
+                return 1 + len(item) // CHARS_PER_STEP
+            if not isinstance(item, list | tuple | dict | Entity | Text | Description):
+                return 1
+            element = (id(item), len(item.children)) if isinstance(item, Entity) else None
+            known = sizes.get(id(item)) if element is None else self._elements.get(element)
+            if known is not None:
+                if element is not None and id(item) not in credited:
+                    credited.add(id(item))
+                    credit += known
+                return known
+            keep.append(item)
+            sizes[id(item)] = limit + credit + 1  # a container holding itself is too large
+            total = 1
+            for part in _parts(item):
+                total += measure(part)
+                if total > limit + credit:
+                    return total  # not remembered: a later question may allow more
+            sizes[id(item)] = total
+            if element is not None and isinstance(item, Entity):
+                self._elements[element] = total
+                self._kept.append(item)
+            return total
+
+        return measure(value) - credit
+
+
+def _parts(item: object) -> Iterator[object]:
+    if isinstance(item, dict):
+        for key, value in item.items():
+            yield key
+            yield value
+    elif isinstance(item, Entity):
+        yield from item.attributes.values()
+        yield from item.children
+    elif isinstance(item, Text):
+        yield from item.parts
+    elif isinstance(item, Description):
+        yield item.root
+    elif isinstance(item, list | tuple):
+        yield from item
+
+
+_REFERENCES = (ast.Name, ast.Attribute, ast.Constant)
+"""Expressions that only refer to a value already built: nothing to charge."""
+
+
 def truth(value: Value) -> bool | None:
     """Python's truth of ``value``; ``None`` when it is not known statically."""
     if isinstance(value, Unknown | Module | Dynamic):  # a Module: any value of another module
@@ -157,6 +230,8 @@ class Interpreter:
         self.paths: list[str] = [os.path.dirname(filename)]
         """Directories searched for modules before the packages (``sys.path`` appends)."""
         self.steps = 0
+        self.statement: ast.stmt | None = None
+        self.expansion = Expansion()
         self.depth = 0
         self.guards: list[Text] = []
         """The Python tests of the launch-time ``if``s being read, innermost last."""
@@ -224,6 +299,14 @@ class Interpreter:
         if self.steps > MAX_STEPS:
             raise OutOfBudget
 
+    def charge(self, value: object) -> None:
+        """Count the expanded size of a value an operation built or walked, so that work
+        multiplied by sharing or by long operands (``l == l``, ``l[:]``, ``s.split()``)
+        is bounded by the same budget as the statements."""
+        self.steps += self.expansion.cost(value, MAX_STEPS - self.steps) - 1
+        if self.steps > MAX_STEPS:
+            raise OutOfBudget
+
     # ------------------------------------------------------------------ statements
 
     def run_module(self, tree: ast.Module) -> Scope:
@@ -241,6 +324,7 @@ class Interpreter:
         ``if`` returning in one branch only reads in the other."""
         for index, statement in enumerate(body):
             self.step()
+            self.statement = statement  # where a budget runs out
             if isinstance(statement, ast.If):
                 if self._if(statement, scope, body[index + 1 :] if tail else None):
                     return
@@ -622,7 +706,10 @@ class Interpreter:
         handler = self.expressions.get(type(node))
         if handler is None:
             return self.not_followed(f"a '{type(node).__name__}' expression", node)
-        return handler(node, scope)
+        value = handler(node, scope)
+        if not isinstance(node, _REFERENCES):
+            self.charge(value)
+        return value
 
     def _constant(self, node: ast.Constant, scope: Scope) -> Value:
         if isinstance(node.value, _SCALARS):
@@ -800,6 +887,7 @@ class Interpreter:
     def _compare_values(self, node: ast.Compare, operands: list[Value]) -> Value:
         left = operands[0]
         for op, right in zip(node.ops, operands[1:], strict=True):
+            self.charge((left, right))  # a comparison walks both
             if not (_constant(left) or isinstance(left, dict)) or not (
                 _constant(right) or isinstance(right, dict)
             ):
