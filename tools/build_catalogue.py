@@ -106,6 +106,9 @@ class Review:
     hand, goes on when the parameter is unset: what it falls back to (a literal, or
     ``{"expression": ...}`` for what the code keeps or computes). ``param-unset`` reports
     required reads only (docs/checks.md)."""
+    loads: str | None = None
+    """The nodelet class (of the catalogue) the node loads in-process under its own name
+    (``nodelet::Loader``): the node has the class's entries too, its own read first."""
 
 
 def _named(parameter: str, default: str | None = None, namespace: str = "") -> Item:
@@ -414,6 +417,27 @@ REVIEW[("robot_pose_ekf", "robot_pose_ekf")] = Review(
         }
     },
 )
+for _node, _nodelet in (
+    ("pointcloud_to_laserscan_node", "pointcloud_to_laserscan_nodelet"),
+    ("laserscan_to_pointcloud_node", "laserscan_to_pointcloud_nodelet"),
+):
+    REVIEW[("pointcloud_to_laserscan", _node)] = Review(
+        f"runs the nodelet pointcloud_to_laserscan/{_nodelet} in-process under the node's "
+        f"own name (nodelet::Loader in src/{_node}.cpp): its topics and parameters",
+        loads=f"pointcloud_to_laserscan/{_nodelet}",
+    )
+OPENNI_DRIVER = "openni_camera/src/nodelets/driver.cpp"
+REVIEW[("openni_camera", "openni_camera/driver")] = Review(
+    "depth images go to depth/ or, with ~depth_registration (dynamic_reconfigure, default "
+    "false in cfg/OpenNI.cfg), to depth_registered/ (publishDepthImage), never both",
+    add={"params": [_param("~depth_registration", False, "openni_camera/cfg/OpenNI.cfg", 24)]},
+    when={
+        "publishes": {
+            199: "not param('~depth_registration')",
+            203: "param('~depth_registration')",
+        }
+    },
+)
 REVIEW[("hector_mapping", "hector_mapping")] = Review(
     REVIEW[("hector_mapping", "hector_mapping")].note
     + "; the scan, system message and pose update topics are parameters' values",
@@ -457,6 +481,35 @@ def _reviewed(document: Item, review: Review, checkout: str) -> None:
                 entry["boundary"] = True
     _switched(document, review)
     document["review"] = review.note
+
+
+def _added(document: Item, review: Review) -> None:
+    """Apply the review's ``add`` to a built catalogue's node, once (an entry of that role,
+    name and line already there is kept)."""
+    for role, added in review.add.items():
+        entries = document[role]
+        assert isinstance(entries, list)
+        for entry in added:
+            if not any((e["name"], e["line"]) == (entry["name"], entry["line"]) for e in entries):
+                entries.append(dict(entry))
+
+
+def _loaded(nodes: list[Item]) -> None:
+    """Give each node whose review ``loads`` a nodelet class that class's entries (those of
+    a role and name the node has already left out: a node and its nodelet both read
+    ``~concurrency_level``)."""
+    by_unit = {(node["package"], node["executable"]): node for node in nodes}
+    for node in nodes:
+        review = REVIEW.get((str(node["package"]), str(node["executable"])))
+        if review is None or review.loads is None:
+            continue
+        nodelet = by_unit[(node["package"], review.loads)]
+        for role in ROLES:
+            entries = node[role]
+            loaded = nodelet[role]
+            assert isinstance(entries, list) and isinstance(loaded, list)
+            names = {entry["name"] for entry in entries}
+            entries.extend(dict(entry) for entry in loaded if entry["name"] not in names)
 
 
 def _switched(document: Item, review: Review) -> None:
@@ -529,19 +582,23 @@ def build(mirrors: str) -> dict[str, object]:
                         if role == "publishes" and entry["name"] in BOUNDARY_TOPICS:
                             entry["boundary"] = True
                 nodes.append(document)
+    _loaded(nodes)
     return {"catalogue": nodes}
 
 
 def reapply(path: str) -> dict[str, object]:
-    """The catalogue at ``path`` with the review's ``named`` and ``when`` applied again
-    (they change no entry the extractor reads: no mirror is needed)."""
+    """The catalogue at ``path`` with the review's additions, ``named``, ``when``,
+    ``defaults`` and ``loads`` applied again (they change no entry the extractor reads: no
+    mirror is needed)."""
     with open(path, encoding="utf-8") as handle:
         document = json.load(handle)
     for node in document["catalogue"]:
         found = REVIEW.get((node["package"], node["executable"]))
         if found is not None:
+            _added(node, found)
             _switched(node, found)
             node["review"] = found.note
+    _loaded(document["catalogue"])
     return dict(document)
 
 
