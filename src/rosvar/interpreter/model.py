@@ -202,6 +202,9 @@ class NodeParameter:
     file: Raw | None = None
     globally: bool = False
     """Set for every later node (``<set_parameter>``, ``<set_parameters_from_file>``)."""
+    kind: str | None = None
+    """ROS 2's ``<param type>`` (``str``, ``int``, ...): how launch coerces the value's text
+    (none: by YAML rules)."""
     content: Raw | None = None
     """A parameter file given ``allow_substs``: its text with the launch's substitutions
     performed (launch_ros writes it to a file of its own), read instead of ``file``."""

@@ -23,7 +23,14 @@ from rosvar.interpreter.resolution import Resolution, ResolutionError, ResolvedN
 from rosvar.ros2.api.event_handlers import EVENT_HANDLERS
 from rosvar.ros2.conventions import command_line
 from rosvar.ros2.conventions.namespaces import unnamed
-from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, file_entries, typed
+from rosvar.ros2.conventions.parameters import (
+    ALL_NODES,
+    Source,
+    coerce,
+    effective,
+    file_entries,
+    typed,
+)
 from rosvar.ros2.nodes import ProcessKind
 
 LATER = frozenset(h.tag for h in EVENT_HANDLERS if not h.at_launch)
@@ -201,7 +208,8 @@ def _sources(
             sources.append(Source(entries=tuple(parameter_file(path))))
         elif param.name is not None and param.value is not None:
             # global (-p) and inline (a generated file) parameters both apply to /**
-            value = typed(r.evaluate(param.value, decl.location, "parameter value"))
+            text = r.evaluate(param.value, decl.location, "parameter value")
+            value = typed(text) if param.kind is None else coerce(text, param.kind)
             entry = {r.evaluate(param.name, decl.location, "parameter name"): value}
             sources.append(Source(entries=((ALL_NODES, entry),)))
     return sources

@@ -15,11 +15,10 @@ from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import EnvSetting, NodeDecl, NodeParameter, Raw, Remap
 from rosvar.logic.choice import Choice, Fail, combine
-from rosvar.logic.terms import Apply, is_term, register
+from rosvar.logic.terms import is_term
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.conventions.parameters import PARAMETER_TYPES, coerce
 from rosvar.ros2.dialect import ROS2, tag
-from rosvar.ros2.frontends.typed_text import typed_text
 from rosvar.ros2.nodes import ProcessKind
 from rosvar.ros2.substitutions import Ros2Substituter
 
@@ -173,24 +172,16 @@ def _untyped_literal(entity: Entity) -> bool:
     return typed_frontend and text is not None and "value" not in entity.typed and "$(" not in text
 
 
-def _typed(leaf: Raw, kind: str) -> Raw | Fail:
-    """A value of ``<param type=kind>`` as launch coerces it, written as the canonical YAML
-    text that ROS 2's reading of a parameter value gives back as that value (a ``str`` one
-    quoted: ``'1'``); a value known per configuration only is coerced when it is known."""
+def _coercion(leaf: Raw, kind: str) -> Fail | None:
+    """Why launch refuses ``leaf`` as a value of ``<param type=kind>``, if it does (a value
+    known per configuration only is coerced when it is known, by ``resolve``)."""
     if not isinstance(leaf, str):
-        return Apply("ros2_typed_parameter", (leaf, kind))
+        return None
     try:
-        return _typed_text(leaf, kind)
+        coerce(leaf, kind)
     except ValueError as error:
         return Fail(str(error), "param-invalid")
-
-
-def _typed_text(text: str, kind: str) -> str:
-    value = coerce(text, kind)
-    return text if kind == "yaml" else typed_text(value)  # type: ignore[arg-type]
-
-
-register("ros2_typed_parameter", lambda _host, text, kind: _typed_text(text, kind))
+    return None
 
 
 def _substituted_file(
@@ -265,8 +256,10 @@ def _param(
                 )
             else:
                 for v_condition, leaf in split(it, value):
-                    result = _typed(leaf, kind) if kind else leaf
-                    if isinstance(result, Fail):
-                        it.fail(v_condition, result.code, result.message)
+                    refused = _coercion(leaf, kind) if kind else None
+                    if refused is not None:
+                        it.fail(v_condition, refused.code, refused.message)
                     else:
-                        out.append(NodeParameter(it.pc & v_condition, prefix + key, result))
+                        out.append(
+                            NodeParameter(it.pc & v_condition, prefix + key, leaf, kind=kind)
+                        )
