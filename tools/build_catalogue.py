@@ -378,9 +378,10 @@ for _filter in ("ekf_localization_node", "ukf_localization_node"):
     REVIEW[("robot_localization", _filter)] = Review(
         "set_pose (topic) is for people and tools resetting the filter; each sensor topic "
         "is the value of ~odomN/~poseN/~twistN/~imuN (one per parameter set); cmd_vel only "
-        "with ~use_control, stamped after ~stamped_control; ~control_config only matters "
-        "with ~use_control, and the filter warns and ignores the control term without it",
-        defaults={888: {"expression": "control term ignored"}},
+        "with ~use_control, stamped after ~stamped_control; ~control_config is read only "
+        "with ~use_control: unset then, the filter logs an error and turns the control term "
+        "off (useControl_ = false), and cmd_vel is not subscribed either",
+        defaults={888: {"expression": "useControl_ = false"}},
         boundary={"subscribes": ["set_pose"]},
         named={
             "subscribes": {
@@ -401,9 +402,15 @@ REVIEW[("teleop_twist_joy", "teleop_node")] = Review(
     defaults={line: {"expression": "{}"} for line in (79, 80, 91, 92)},
 )
 REVIEW[("interactive_marker_twist_server", "marker_server")] = Review(
-    "~linear_scale, ~max_positive_linear_velocity and ~max_negative_linear_velocity are read "
-    "by getParam into maps whose result is dropped: unset, a map stays empty",
-    defaults={line: {"expression": "{}"} for line in (56, 57, 58)},
+    "unset, ~linear_scale (tested by getParam) sends the constructor to the reads of "
+    "~linear_scale, ~max_positive_linear_velocity and ~max_negative_linear_velocity as "
+    "doubles, defaults 1.0, 1.0, -1.0; set (a map), it is read again as that map and the "
+    "two velocity maps are read by getParam whose result is dropped: unset, they stay empty",
+    defaults={
+        56: {"expression": "linear_drive_scale_map"},
+        57: {"expression": "{}"},
+        58: {"expression": "{}"},
+    },
 )
 REVIEW[("robot_pose_ekf", "robot_pose_ekf")] = Review(
     "each input only when its ~odom_used, ~imu_used, ~vo_used, ~gps_used says so "
