@@ -60,6 +60,7 @@ SOURCES: list[tuple[str, str, list[str]]] = [
     ("ros-visualization/interactive_marker_twist_server", "kinetic-devel", [""]),
     ("ros-drivers/openni2_camera", "ros1", ["openni2_camera"]),
     ("ros-drivers/openni_camera", "ros1", ["openni_camera"]),
+    ("yujinrobot/yujin_ocs", "devel", ["yocs_cmd_vel_mux", "yocs_velocity_smoother"]),
 ]
 
 SKIPPED = [":(exclude,glob)**/test/**", ":(exclude,glob)**/*.bag"]
@@ -433,6 +434,25 @@ for _node, _nodelet in (
         f"own name (nodelet::Loader in src/{_node}.cpp): its topics and parameters",
         loads=f"pointcloud_to_laserscan/{_nodelet}",
     )
+REVIEW[("yocs_cmd_vel_mux", "yocs_cmd_vel_mux/CmdVelMuxNodelet")] = Review(
+    "the output topic is the YAML's publisher (default ~output) and the inputs its "
+    "subscribers: the file ~yaml_cfg_file names (or dynamic_reconfigure's yaml_cfg_data), "
+    "read at run time, so both stay symbolic; ~active (latched) tells people which input "
+    "drives",
+    boundary={"publishes": ["~active"]},
+)
+REVIEW[("yocs_velocity_smoother", "yocs_velocity_smoother/VelocitySmootherNodelet")] = Review(
+    "~odometry and ~robot_cmd_vel are always subscribed but their messages are used only "
+    "with ~robot_feedback 1 (odometry) or 2 (commands), default 0: modelled as uses with "
+    "that condition, so an unused feedback input is no missing partner; unset "
+    "~speed_lim_v/w or ~accel_lim_v/w stop the nodelet (ROS_ERROR, init fails)",
+    when={
+        "subscribes": {
+            318: "param('~robot_feedback') == 1",
+            319: "param('~robot_feedback') == 2",
+        }
+    },
+)
 OPENNI_DRIVER = "openni_camera/src/nodelets/driver.cpp"
 REVIEW[("openni_camera", "openni_camera/driver")] = Review(
     "depth images go to depth/ or, with ~depth_registration (dynamic_reconfigure, default "
@@ -551,46 +571,69 @@ def _switched(document: Item, review: Review) -> None:
 
 def build(mirrors: str) -> dict[str, object]:
     nodes: list[Item] = []
-    for repository, branch, folders in SOURCES:
-        directory = os.path.join(mirrors, repository.replace("/", "+"), "repo")
-        commit = _git(directory, "rev-parse", branch).decode().strip()
-        for (source, package, executable), review in EXTRA.items():
-            if source == repository:
-                extra: Item = {"package": package, "executable": executable, "kind": "node"}
-                extra.update({role: [] for role in ROLES})
-                _reviewed(extra, review, "")
-                extra.update(repository=repository, commit=commit)
-                nodes.append(extra)
-        with tempfile.TemporaryDirectory() as checkout:
-            paths = [folder for folder in folders if folder] or ["."]
-            archive = _git(directory, "archive", "--format=tar", commit, *paths, *SKIPPED)
-            subprocess.run(["tar", "-x", "-C", checkout], input=archive, check=True)
-            roots = [os.path.join(checkout, folder) for folder in folders]
-            packages = discover(roots, ros_package_path="").packages.values()
-            interfaces = extract_interfaces(packages)
-            for diagnostic in interfaces.diagnostics:
-                print(f"{repository}: {diagnostic}", file=sys.stderr)
-            for node in interfaces.nodes:
-                unreviewed = (node.package, node.executable) not in REVIEW
-                if unreviewed and (TEST_EXECUTABLE.search(node.executable) or not node.entries):
-                    continue
-                document = node_document(node)
-                review = REVIEW.get((node.package, node.executable))
-                if review is not None:
-                    _reviewed(document, review, checkout)
-                document["repository"] = repository
-                document["commit"] = commit
-                for role in ROLES:
-                    entries = document[role]
-                    assert isinstance(entries, list)
-                    for entry in entries:
-                        entry["file"] = os.path.relpath(entry["file"], checkout)
-                        entry.pop("origin", None)
-                        if role == "publishes" and entry["name"] in BOUNDARY_TOPICS:
-                            entry["boundary"] = True
-                nodes.append(document)
+    for source in SOURCES:
+        nodes.extend(_repository(mirrors, *source))
     _loaded(nodes)
     return {"catalogue": nodes}
+
+
+def splice(path: str, mirrors: str, repository: str) -> dict[str, object]:
+    """The catalogue at ``path`` with the nodes of ``repository`` built again from its
+    mirror (the others kept as they are: their mirrors are not needed); a repository new to
+    the catalogue adds its nodes at the end."""
+    with open(path, encoding="utf-8") as handle:
+        nodes: list[Item] = json.load(handle)["catalogue"]
+    (source,) = [source for source in SOURCES if source[0] == repository]
+    built = _repository(mirrors, *source)
+    at = [i for i, node in enumerate(nodes) if node["repository"] == repository]
+    kept = [node for node in nodes if node["repository"] != repository]
+    position = at[0] if at else len(kept)
+    nodes = kept[:position] + built + kept[position:]
+    _loaded(nodes)
+    return {"catalogue": nodes}
+
+
+def _repository(mirrors: str, repository: str, branch: str, folders: list[str]) -> list[Item]:
+    """The nodes of one repository's branch, extracted and reviewed."""
+    nodes: list[Item] = []
+    directory = os.path.join(mirrors, repository.replace("/", "+"), "repo")
+    commit = _git(directory, "rev-parse", branch).decode().strip()
+    for (source, package, executable), review in EXTRA.items():
+        if source == repository:
+            extra: Item = {"package": package, "executable": executable, "kind": "node"}
+            extra.update({role: [] for role in ROLES})
+            _reviewed(extra, review, "")
+            extra.update(repository=repository, commit=commit)
+            nodes.append(extra)
+    with tempfile.TemporaryDirectory() as checkout:
+        paths = [folder for folder in folders if folder] or ["."]
+        archive = _git(directory, "archive", "--format=tar", commit, *paths, *SKIPPED)
+        subprocess.run(["tar", "-x", "-C", checkout], input=archive, check=True)
+        roots = [os.path.join(checkout, folder) for folder in folders]
+        packages = discover(roots, ros_package_path="").packages.values()
+        interfaces = extract_interfaces(packages)
+        for diagnostic in interfaces.diagnostics:
+            print(f"{repository}: {diagnostic}", file=sys.stderr)
+        for node in interfaces.nodes:
+            unreviewed = (node.package, node.executable) not in REVIEW
+            if unreviewed and (TEST_EXECUTABLE.search(node.executable) or not node.entries):
+                continue
+            document = node_document(node)
+            review = REVIEW.get((node.package, node.executable))
+            if review is not None:
+                _reviewed(document, review, checkout)
+            document["repository"] = repository
+            document["commit"] = commit
+            for role in ROLES:
+                entries = document[role]
+                assert isinstance(entries, list)
+                for entry in entries:
+                    entry["file"] = os.path.relpath(entry["file"], checkout)
+                    entry.pop("origin", None)
+                    if role == "publishes" and entry["name"] in BOUNDARY_TOPICS:
+                        entry["boundary"] = True
+            nodes.append(document)
+    return nodes
 
 
 def reapply(path: str) -> dict[str, object]:
@@ -617,8 +660,20 @@ def main() -> int:
         metavar="JSON",
         help="apply the review's parameter names and conditions to a built catalogue",
     )
+    options.add_argument(
+        "--only",
+        nargs=2,
+        metavar=("REPOSITORY", "JSON"),
+        help="build one repository of SOURCES again into a built catalogue (other mirrors "
+        "not needed)",
+    )
     arguments = options.parse_args()
-    built = reapply(arguments.reapply) if arguments.reapply else build(arguments.mirrors)
+    if arguments.only:
+        built = splice(arguments.only[1], arguments.mirrors, arguments.only[0])
+    elif arguments.reapply:
+        built = reapply(arguments.reapply)
+    else:
+        built = build(arguments.mirrors)
     print(json.dumps(built, indent=1, ensure_ascii=False))
     return 0
 

@@ -70,6 +70,9 @@ def test_the_corpus_most_launched_third_party_nodes_are_there() -> None:
         ("depth_image_proc", "depth_image_proc/point_cloud_xyzrgb"),
         ("image_proc", "image_proc/rectify"),
         ("depthimage_to_laserscan", "depthimage_to_laserscan/DepthImageToLaserScanNodelet"),
+        ("pointcloud_to_laserscan", "pointcloud_to_laserscan_node"),
+        ("yocs_cmd_vel_mux", "yocs_cmd_vel_mux/CmdVelMuxNodelet"),
+        ("yocs_velocity_smoother", "yocs_velocity_smoother/VelocitySmootherNodelet"),
     ):
         assert _node(package, executable).entries, (package, executable)
 
@@ -193,3 +196,23 @@ def test_openni_depth_output_follows_depth_registration(ws: LaunchWorkspace) -> 
         assert ("/other", name) not in held  # unset: the source's default, false
     assert held[("/other", "/depth/image_raw")] == space.true
     assert held[("/driver", "/projector/camera_info")] == space.true
+
+
+def test_yocs_nodelets() -> None:
+    mux = _node("yocs_cmd_vel_mux", "yocs_cmd_vel_mux/CmdVelMuxNodelet")
+    assert [(e.name, e.static) for e in mux.of(Role.PUBLISHES) if not e.boundary] == [
+        ("~{output_topic_name}", False)  # the YAML file's, read at run time
+    ]
+    smoother = _node("yocs_velocity_smoother", "yocs_velocity_smoother/VelocitySmootherNodelet")
+    assert _uses(smoother, Role.SUBSCRIBES) == {
+        ("~odometry", "nav_msgs/Odometry"),
+        ("~robot_cmd_vel", "geometry_msgs/Twist"),
+        ("~raw_cmd_vel", "geometry_msgs/Twist"),
+    }
+    assert _uses(smoother, Role.PUBLISHES) == {("~smooth_cmd_vel", "geometry_msgs/Twist")}
+    when = {e.name: e.when for e in smoother.of(Role.SUBSCRIBES)}
+    assert when == {
+        "~odometry": "param('~robot_feedback') == 1",
+        "~robot_cmd_vel": "param('~robot_feedback') == 2",
+        "~raw_cmd_vel": None,
+    }
