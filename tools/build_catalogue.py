@@ -60,6 +60,7 @@ SOURCES: list[tuple[str, str, list[str]]] = [
     ("ros-visualization/interactive_marker_twist_server", "kinetic-devel", [""]),
     ("ros-drivers/openni2_camera", "ros1", ["openni2_camera"]),
     ("ros-drivers/openni_camera", "ros1", ["openni_camera"]),
+    ("yujinrobot/yujin_ocs", "devel", ["yocs_cmd_vel_mux", "yocs_velocity_smoother"]),
 ]
 
 SKIPPED = [":(exclude,glob)**/test/**", ":(exclude,glob)**/*.bag"]
@@ -106,6 +107,9 @@ class Review:
     hand, goes on when the parameter is unset: what it falls back to (a literal, or
     ``{"expression": ...}`` for what the code keeps or computes). ``param-unset`` reports
     required reads only (docs/checks.md)."""
+    loads: str | None = None
+    """The nodelet class (of the catalogue) the node loads in-process under its own name
+    (``nodelet::Loader``): the node has the class's entries too, its own read first."""
 
 
 def _named(parameter: str, default: str | None = None, namespace: str = "") -> Item:
@@ -375,9 +379,10 @@ for _filter in ("ekf_localization_node", "ukf_localization_node"):
     REVIEW[("robot_localization", _filter)] = Review(
         "set_pose (topic) is for people and tools resetting the filter; each sensor topic "
         "is the value of ~odomN/~poseN/~twistN/~imuN (one per parameter set); cmd_vel only "
-        "with ~use_control, stamped after ~stamped_control; ~control_config only matters "
-        "with ~use_control, and the filter warns and ignores the control term without it",
-        defaults={888: {"expression": "control term ignored"}},
+        "with ~use_control, stamped after ~stamped_control; ~control_config is read only "
+        "with ~use_control: unset then, the filter logs an error and turns the control term "
+        "off (useControl_ = false), and cmd_vel is not subscribed either",
+        defaults={888: {"expression": "useControl_ = false"}},
         boundary={"subscribes": ["set_pose"]},
         named={
             "subscribes": {
@@ -398,9 +403,15 @@ REVIEW[("teleop_twist_joy", "teleop_node")] = Review(
     defaults={line: {"expression": "{}"} for line in (79, 80, 91, 92)},
 )
 REVIEW[("interactive_marker_twist_server", "marker_server")] = Review(
-    "~linear_scale, ~max_positive_linear_velocity and ~max_negative_linear_velocity are read "
-    "by getParam into maps whose result is dropped: unset, a map stays empty",
-    defaults={line: {"expression": "{}"} for line in (56, 57, 58)},
+    "unset, ~linear_scale (tested by getParam) sends the constructor to the reads of "
+    "~linear_scale, ~max_positive_linear_velocity and ~max_negative_linear_velocity as "
+    "doubles, defaults 1.0, 1.0, -1.0; set (a map), it is read again as that map and the "
+    "two velocity maps are read by getParam whose result is dropped: unset, they stay empty",
+    defaults={
+        56: {"expression": "linear_drive_scale_map"},
+        57: {"expression": "{}"},
+        58: {"expression": "{}"},
+    },
 )
 REVIEW[("robot_pose_ekf", "robot_pose_ekf")] = Review(
     "each input only when its ~odom_used, ~imu_used, ~vo_used, ~gps_used says so "
@@ -411,6 +422,46 @@ REVIEW[("robot_pose_ekf", "robot_pose_ekf")] = Review(
             119: "param('~imu_used')",
             126: "param('~vo_used')",
             132: "param('~gps_used')",
+        }
+    },
+)
+for _node, _nodelet in (
+    ("pointcloud_to_laserscan_node", "pointcloud_to_laserscan_nodelet"),
+    ("laserscan_to_pointcloud_node", "laserscan_to_pointcloud_nodelet"),
+):
+    REVIEW[("pointcloud_to_laserscan", _node)] = Review(
+        f"runs the nodelet pointcloud_to_laserscan/{_nodelet} in-process under the node's "
+        f"own name (nodelet::Loader in src/{_node}.cpp): its topics and parameters",
+        loads=f"pointcloud_to_laserscan/{_nodelet}",
+    )
+REVIEW[("yocs_cmd_vel_mux", "yocs_cmd_vel_mux/CmdVelMuxNodelet")] = Review(
+    "the output topic is the YAML's publisher (default ~output) and the inputs its "
+    "subscribers: the file ~yaml_cfg_file names (or dynamic_reconfigure's yaml_cfg_data), "
+    "read at run time, so both stay symbolic; ~active (latched) tells people which input "
+    "drives",
+    boundary={"publishes": ["~active"]},
+)
+REVIEW[("yocs_velocity_smoother", "yocs_velocity_smoother/VelocitySmootherNodelet")] = Review(
+    "~odometry and ~robot_cmd_vel are always subscribed but their messages are used only "
+    "with ~robot_feedback 1 (odometry) or 2 (commands), default 0: modelled as uses with "
+    "that condition, so an unused feedback input is no missing partner; unset "
+    "~speed_lim_v/w or ~accel_lim_v/w stop the nodelet (ROS_ERROR, init fails)",
+    when={
+        "subscribes": {
+            318: "param('~robot_feedback') == 1",
+            319: "param('~robot_feedback') == 2",
+        }
+    },
+)
+OPENNI_DRIVER = "openni_camera/src/nodelets/driver.cpp"
+REVIEW[("openni_camera", "openni_camera/driver")] = Review(
+    "depth images go to depth/ or, with ~depth_registration (dynamic_reconfigure, default "
+    "false in cfg/OpenNI.cfg), to depth_registered/ (publishDepthImage), never both",
+    add={"params": [_param("~depth_registration", False, "openni_camera/cfg/OpenNI.cfg", 24)]},
+    when={
+        "publishes": {
+            199: "not param('~depth_registration')",
+            203: "param('~depth_registration')",
         }
     },
 )
@@ -459,6 +510,35 @@ def _reviewed(document: Item, review: Review, checkout: str) -> None:
     document["review"] = review.note
 
 
+def _added(document: Item, review: Review) -> None:
+    """Apply the review's ``add`` to a built catalogue's node, once (an entry of that role,
+    name and line already there is kept)."""
+    for role, added in review.add.items():
+        entries = document[role]
+        assert isinstance(entries, list)
+        for entry in added:
+            if not any((e["name"], e["line"]) == (entry["name"], entry["line"]) for e in entries):
+                entries.append(dict(entry))
+
+
+def _loaded(nodes: list[Item]) -> None:
+    """Give each node whose review ``loads`` a nodelet class that class's entries (those of
+    a role and name the node has already left out: a node and its nodelet both read
+    ``~concurrency_level``)."""
+    by_unit = {(node["package"], node["executable"]): node for node in nodes}
+    for node in nodes:
+        review = REVIEW.get((str(node["package"]), str(node["executable"])))
+        if review is None or review.loads is None:
+            continue
+        nodelet = by_unit[(node["package"], review.loads)]
+        for role in ROLES:
+            entries = node[role]
+            loaded = nodelet[role]
+            assert isinstance(entries, list) and isinstance(loaded, list)
+            names = {entry["name"] for entry in entries}
+            entries.extend(dict(entry) for entry in loaded if entry["name"] not in names)
+
+
 def _switched(document: Item, review: Review) -> None:
     """Apply the review's ``named`` and ``when`` (matched by role and line: an entry the
     extractor names by its parameter already keeps its line)."""
@@ -491,57 +571,84 @@ def _switched(document: Item, review: Review) -> None:
 
 def build(mirrors: str) -> dict[str, object]:
     nodes: list[Item] = []
-    for repository, branch, folders in SOURCES:
-        directory = os.path.join(mirrors, repository.replace("/", "+"), "repo")
-        commit = _git(directory, "rev-parse", branch).decode().strip()
-        for (source, package, executable), review in EXTRA.items():
-            if source == repository:
-                extra: Item = {"package": package, "executable": executable, "kind": "node"}
-                extra.update({role: [] for role in ROLES})
-                _reviewed(extra, review, "")
-                extra.update(repository=repository, commit=commit)
-                nodes.append(extra)
-        with tempfile.TemporaryDirectory() as checkout:
-            paths = [folder for folder in folders if folder] or ["."]
-            archive = _git(directory, "archive", "--format=tar", commit, *paths, *SKIPPED)
-            subprocess.run(["tar", "-x", "-C", checkout], input=archive, check=True)
-            roots = [os.path.join(checkout, folder) for folder in folders]
-            packages = discover(roots, ros_package_path="").packages.values()
-            interfaces = extract_interfaces(packages)
-            for diagnostic in interfaces.diagnostics:
-                print(f"{repository}: {diagnostic}", file=sys.stderr)
-            for node in interfaces.nodes:
-                unreviewed = (node.package, node.executable) not in REVIEW
-                if unreviewed and (TEST_EXECUTABLE.search(node.executable) or not node.entries):
-                    continue
-                document = node_document(node)
-                review = REVIEW.get((node.package, node.executable))
-                if review is not None:
-                    _reviewed(document, review, checkout)
-                document["repository"] = repository
-                document["commit"] = commit
-                for role in ROLES:
-                    entries = document[role]
-                    assert isinstance(entries, list)
-                    for entry in entries:
-                        entry["file"] = os.path.relpath(entry["file"], checkout)
-                        entry.pop("origin", None)
-                        if role == "publishes" and entry["name"] in BOUNDARY_TOPICS:
-                            entry["boundary"] = True
-                nodes.append(document)
+    for source in SOURCES:
+        nodes.extend(_repository(mirrors, *source))
+    _loaded(nodes)
     return {"catalogue": nodes}
 
 
+def splice(path: str, mirrors: str, repository: str) -> dict[str, object]:
+    """The catalogue at ``path`` with the nodes of ``repository`` built again from its
+    mirror (the others kept as they are: their mirrors are not needed); a repository new to
+    the catalogue adds its nodes at the end."""
+    with open(path, encoding="utf-8") as handle:
+        nodes: list[Item] = json.load(handle)["catalogue"]
+    (source,) = [source for source in SOURCES if source[0] == repository]
+    built = _repository(mirrors, *source)
+    at = [i for i, node in enumerate(nodes) if node["repository"] == repository]
+    kept = [node for node in nodes if node["repository"] != repository]
+    position = at[0] if at else len(kept)
+    nodes = kept[:position] + built + kept[position:]
+    _loaded(nodes)
+    return {"catalogue": nodes}
+
+
+def _repository(mirrors: str, repository: str, branch: str, folders: list[str]) -> list[Item]:
+    """The nodes of one repository's branch, extracted and reviewed."""
+    nodes: list[Item] = []
+    directory = os.path.join(mirrors, repository.replace("/", "+"), "repo")
+    commit = _git(directory, "rev-parse", branch).decode().strip()
+    for (source, package, executable), review in EXTRA.items():
+        if source == repository:
+            extra: Item = {"package": package, "executable": executable, "kind": "node"}
+            extra.update({role: [] for role in ROLES})
+            _reviewed(extra, review, "")
+            extra.update(repository=repository, commit=commit)
+            nodes.append(extra)
+    with tempfile.TemporaryDirectory() as checkout:
+        paths = [folder for folder in folders if folder] or ["."]
+        archive = _git(directory, "archive", "--format=tar", commit, *paths, *SKIPPED)
+        subprocess.run(["tar", "-x", "-C", checkout], input=archive, check=True)
+        roots = [os.path.join(checkout, folder) for folder in folders]
+        packages = discover(roots, ros_package_path="").packages.values()
+        interfaces = extract_interfaces(packages)
+        for diagnostic in interfaces.diagnostics:
+            print(f"{repository}: {diagnostic}", file=sys.stderr)
+        for node in interfaces.nodes:
+            unreviewed = (node.package, node.executable) not in REVIEW
+            if unreviewed and (TEST_EXECUTABLE.search(node.executable) or not node.entries):
+                continue
+            document = node_document(node)
+            review = REVIEW.get((node.package, node.executable))
+            if review is not None:
+                _reviewed(document, review, checkout)
+            document["repository"] = repository
+            document["commit"] = commit
+            for role in ROLES:
+                entries = document[role]
+                assert isinstance(entries, list)
+                for entry in entries:
+                    entry["file"] = os.path.relpath(entry["file"], checkout)
+                    entry.pop("origin", None)
+                    if role == "publishes" and entry["name"] in BOUNDARY_TOPICS:
+                        entry["boundary"] = True
+            nodes.append(document)
+    return nodes
+
+
 def reapply(path: str) -> dict[str, object]:
-    """The catalogue at ``path`` with the review's ``named`` and ``when`` applied again
-    (they change no entry the extractor reads: no mirror is needed)."""
+    """The catalogue at ``path`` with the review's additions, ``named``, ``when``,
+    ``defaults`` and ``loads`` applied again (they change no entry the extractor reads: no
+    mirror is needed)."""
     with open(path, encoding="utf-8") as handle:
         document = json.load(handle)
     for node in document["catalogue"]:
         found = REVIEW.get((node["package"], node["executable"]))
         if found is not None:
+            _added(node, found)
             _switched(node, found)
             node["review"] = found.note
+    _loaded(document["catalogue"])
     return dict(document)
 
 
@@ -553,8 +660,20 @@ def main() -> int:
         metavar="JSON",
         help="apply the review's parameter names and conditions to a built catalogue",
     )
+    options.add_argument(
+        "--only",
+        nargs=2,
+        metavar=("REPOSITORY", "JSON"),
+        help="build one repository of SOURCES again into a built catalogue (other mirrors "
+        "not needed)",
+    )
     arguments = options.parse_args()
-    built = reapply(arguments.reapply) if arguments.reapply else build(arguments.mirrors)
+    if arguments.only:
+        built = splice(arguments.only[1], arguments.mirrors, arguments.only[0])
+    elif arguments.reapply:
+        built = reapply(arguments.reapply)
+    else:
+        built = build(arguments.mirrors)
     print(json.dumps(built, indent=1, ensure_ascii=False))
     return 0
 

@@ -160,3 +160,24 @@ def test_baseline_rev_outside_git_is_an_error(
     code, _out, err = run(capsys, "check", root, "--baseline-rev", "HEAD")
     assert code == EXIT_USAGE
     assert "is not inside a git repository" in err
+
+
+def test_interfaces_missing_lists_launched_nodes_without_interface(
+    ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str]
+) -> None:
+    root = _workspace(
+        ws,
+        '  <node pkg="mystery" type="box" name="box2"/>\n'
+        '  <node pkg="robot_state_publisher" type="robot_state_publisher" name="rsp"/>\n'
+        '  <node pkg="pkg" type="absent" name="absent"/>\n',
+    )
+    code, out, _err = run(capsys, "interfaces", root, "--missing")
+    assert code == EXIT_OK
+    assert out.splitlines() == ["   2  mystery/box  (third-party)", "   1  pkg/absent  (workspace)"]
+    code, out, _err = run(capsys, "interfaces", root, "--missing", "--json")
+    rows = json.loads(out)["missing"]
+    assert [(r["executable"], r["launches"], r["third_party"]) for r in rows] == [
+        ("mystery/box", 2, True),
+        ("pkg/absent", 1, False),
+    ]
+    assert sorted(site.rsplit(":", 1)[1] for site in rows[0]["launched_at"]) == ["5", "6"]

@@ -132,6 +132,12 @@ def _add_interfaces(commands: argparse._SubParsersAction[argparse.ArgumentParser
         action="store_true",
         help="also list the bundled third-party nodes no source below PATH defines",
     )
+    interfaces.add_argument(
+        "--missing",
+        action="store_true",
+        help="instead, the executables the launch files below PATH run that no source, "
+        "catalogue entry or hint describes, most launched first",
+    )
     interfaces.set_defaults(run=cmd_interfaces)
 
 

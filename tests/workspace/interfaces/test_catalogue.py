@@ -6,10 +6,16 @@ from __future__ import annotations
 import json
 import re
 from importlib import resources
+from typing import TYPE_CHECKING
 
+from rosvar.analyses.communication import model_edges
 from rosvar.workspace.interfaces.catalogue import DATA, load_catalogue
 from rosvar.workspace.interfaces.model import Interfaces, NodeInterface, NodeKind, Origin, Role
 from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
+
+if TYPE_CHECKING:
+    from conftest import LaunchWorkspace
+    from rosvar.logic.bdd import BDD
 
 SOURCE_URL = re.compile(r"^https://github\.com/[\w.-]+/[\w.-]+/blob/[0-9a-f]{40}/\S+$")
 
@@ -64,6 +70,9 @@ def test_the_corpus_most_launched_third_party_nodes_are_there() -> None:
         ("depth_image_proc", "depth_image_proc/point_cloud_xyzrgb"),
         ("image_proc", "image_proc/rectify"),
         ("depthimage_to_laserscan", "depthimage_to_laserscan/DepthImageToLaserScanNodelet"),
+        ("pointcloud_to_laserscan", "pointcloud_to_laserscan_node"),
+        ("yocs_cmd_vel_mux", "yocs_cmd_vel_mux/CmdVelMuxNodelet"),
+        ("yocs_velocity_smoother", "yocs_velocity_smoother/VelocitySmootherNodelet"),
     ):
         assert _node(package, executable).entries, (package, executable)
 
@@ -146,3 +155,64 @@ def test_looked_up_lazily_and_never_changed_by_hints() -> None:
     assert hinted is not None and {e.name for e in hinted.of(Role.PUBLISHES)} == {"joy", "x"}
     assert {e.name for e in _node("joy", "joy_node").of(Role.PUBLISHES)} == {"joy"}
     assert len(interfaces.listed()) == len(load_catalogue().nodes())
+
+
+def test_a_node_that_loads_a_nodelet_has_its_entries() -> None:
+    node = _node("pointcloud_to_laserscan", "pointcloud_to_laserscan_node")
+    assert _uses(node, Role.SUBSCRIBES) == {("cloud_in", "sensor_msgs/PointCloud2")}
+    assert _uses(node, Role.PUBLISHES) == {("scan", "sensor_msgs/LaserScan")}
+    params = {e.name: e.default for e in node.of(Role.PARAMS)}
+    assert params["~concurrency_level"] == 0  # the node's own read, not the nodelet's 1
+    assert params["~range_max"] is not None
+
+
+def test_openni_depth_output_follows_depth_registration(ws: LaunchWorkspace) -> None:
+    ws.launch(
+        "camera.launch",
+        '<arg name="reg" default="false"/>\n'
+        '<node pkg="nodelet" type="nodelet" name="driver" args="load openni_camera/driver m">\n'
+        '  <param name="depth_registration" value="$(arg reg)"/>\n'
+        "</node>\n"
+        '<node pkg="nodelet" type="nodelet" name="other" args="load openni_camera/driver m"/>',
+    )
+    analysis = ws.analysis(extra_values={"reg": ["true"]})
+    model = analysis.model(analysis.workspace.launch_files[0])
+    interfaces = Interfaces([])
+    add_catalogue(interfaces, load_catalogue())
+    space = analysis.space
+    held: dict[tuple[str, str], BDD] = {}
+    for edge in model_edges(space, model, interfaces):
+        key = (edge.node, edge.name)
+        held[key] = held.get(key, space.false) | edge.condition
+    off = space.slot(model.inputs["reg"], "false")
+    on = space.slot(model.inputs["reg"], "true")
+    depth = held[("/driver", "/depth/image_raw")]
+    assert space.satisfiable(depth & off)
+    assert not space.satisfiable(depth & on)
+    for name in ("/depth_registered/image_raw", "/depth_registered/camera_info"):
+        registered = held[("/driver", name)]
+        assert space.satisfiable(registered & on)
+        assert not space.satisfiable(registered & off)
+        assert ("/other", name) not in held  # unset: the source's default, false
+    assert held[("/other", "/depth/image_raw")] == space.true
+    assert held[("/driver", "/projector/camera_info")] == space.true
+
+
+def test_yocs_nodelets() -> None:
+    mux = _node("yocs_cmd_vel_mux", "yocs_cmd_vel_mux/CmdVelMuxNodelet")
+    assert [(e.name, e.static) for e in mux.of(Role.PUBLISHES) if not e.boundary] == [
+        ("~{output_topic_name}", False)  # the YAML file's, read at run time
+    ]
+    smoother = _node("yocs_velocity_smoother", "yocs_velocity_smoother/VelocitySmootherNodelet")
+    assert _uses(smoother, Role.SUBSCRIBES) == {
+        ("~odometry", "nav_msgs/Odometry"),
+        ("~robot_cmd_vel", "geometry_msgs/Twist"),
+        ("~raw_cmd_vel", "geometry_msgs/Twist"),
+    }
+    assert _uses(smoother, Role.PUBLISHES) == {("~smooth_cmd_vel", "geometry_msgs/Twist")}
+    when = {e.name: e.when for e in smoother.of(Role.SUBSCRIBES)}
+    assert when == {
+        "~odometry": "param('~robot_feedback') == 1",
+        "~robot_cmd_vel": "param('~robot_feedback') == 2",
+        "~raw_cmd_vel": None,
+    }
