@@ -317,6 +317,13 @@ class ConditionSpace:
         """True when every valid configuration satisfies ``condition``."""
         return bool((self.care(condition) & ~condition) == self.false)
 
+    def held(self, input_: Input, value: str | None) -> Slot:
+        """The slot of ``input_`` that ``value`` holds (``None``: unset; a value outside the
+        domain: ``OTHER``)."""
+        if value is None:
+            return UNSET
+        return value if value in self._domains[input_] else OTHER
+
     def assignment(
         self,
         values: Mapping[Input, str | None],
@@ -330,13 +337,11 @@ class ConditionSpace:
         """
         concrete: dict[Input, str] = {}
         chosen: dict[Input, Slot] = {}
-        for input_, slots in self._domains.items():
+        for input_ in self._domains:
             value = values.get(input_)
-            if value is None:
-                chosen[input_] = UNSET
-            else:
+            if value is not None:
                 concrete[input_] = value
-                chosen[input_] = value if value in slots else OTHER
+            chosen[input_] = self.held(input_, value)
         result: dict[str, bool] = {}
         for atom, name in self._var_of.items():
             if isinstance(atom, SlotAtom):

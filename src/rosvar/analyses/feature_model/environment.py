@@ -14,7 +14,7 @@ from collections.abc import Mapping
 
 from rosvar.logic.atoms import PredicateAtom
 from rosvar.logic.conditions import ConditionSpace, decide_predicate
-from rosvar.logic.inputs import OTHER, UNSET, EnvInput, Input
+from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import term_inputs
 
 
@@ -32,10 +32,8 @@ def fixed_environment(
         value = env.get(input_.name)
         if value is not None:
             concrete[input_] = value
-        slots = space.slot_atoms(input_)
-        known = {slot for slot, _variable in slots}
-        held = UNSET if value is None else value if value in known else OTHER
-        for slot, variable in slots:
+        held = space.held(input_, value)
+        for slot, variable in space.slot_atoms(input_):
             fixed[str(variable.var)] = slot == held
     for atom in space.atoms():
         if isinstance(atom, PredicateAtom) and _reads_only_environment(atom):
