@@ -252,11 +252,19 @@ def test_a_node_without_interface_beside_a_missing_partner_makes_a_note(
 
 def test_a_parameter_nobody_reads_needs_every_read_known(ws: LaunchWorkspace) -> None:
     """A node that reads a name only known at run time may read the one set: no finding;
-    nor for a node whose interface rosvar does not have."""
+    nor for a node whose interface rosvar does not have, nor in the namespace of a
+    dynamic_reconfigure server (its config's parameters)."""
     ws.write("scripts/dynamic.py", HEADER + "import sys\nrospy.get_param(sys.argv[1])\n")
+    ws.write(
+        "scripts/tuned.py",
+        HEADER
+        + "from dynamic_reconfigure.server import Server\n"
+        + 'Server(object, None)\nrospy.get_param("~rate", 1)\n',
+    )
     body = """<node pkg="pkg" type="reader.py" name="reader"><param name="rat" value="1"/></node>
       <node pkg="pkg" type="dynamic.py" name="dynamic"><param name="x" value="1"/></node>
-      <node pkg="other" type="box" name="box"><param name="x" value="1"/></node>"""
+      <node pkg="other" type="box" name="box"><param name="x" value="1"/></node>
+      <node pkg="pkg" type="tuned.py" name="tuned"><param name="kp" value="1"/></node>"""
     found = _findings(ws, body, Check.PARAM_UNREAD)
     assert found == [
         (
