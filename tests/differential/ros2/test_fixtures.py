@@ -874,6 +874,51 @@ def generate_launch_description():
         },
         [{}, {"dir": "/opt", "ns": "r1"}, {"ns": "/abs"}],
     ),
+    "package-executables-and-file-contents": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="exe" default="talker"/>
+            <arg name="file" default="robot.urdf"/>
+            <executable cmd="$(exec-in-pkg $(var exe) pkg) --depth 1" name="monitor"/>
+            <node pkg="pkg" exec="x" name="x">
+              <param name="robot_description"
+                     value="$(file-content $(find-pkg-share pkg)/$(var file))"/>
+            </node>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- arg: {name: exe, default: talker}
+- arg: {name: file, default: robot.urdf}
+- executable: {cmd: "$(exec-in-pkg $(var exe) pkg) --depth 1", name: monitor}
+- node:
+    pkg: pkg
+    exec: x
+    name: x
+    param:
+    - {name: robot_description, value: "$(file-content $(find-pkg-share pkg)/$(var file))"}
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, ExecuteProcess
+from launch.substitutions import FileContent, LaunchConfiguration as V, PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import ExecutableInPackage, FindPackageShare
+
+
+def generate_launch_description():
+    urdf = FileContent(PathJoinSubstitution([FindPackageShare('pkg'), V('file')]))
+    return LaunchDescription([
+        DeclareLaunchArgument('exe', default_value='talker'),
+        DeclareLaunchArgument('file', default_value='robot.urdf'),
+        ExecuteProcess(cmd=[ExecutableInPackage(V('exe'), 'pkg'), '--depth', '1'],
+                       name='monitor'),
+        Node(package='pkg', executable='x', name='x',
+             parameters=[{'robot_description': urdf}]),
+    ])
+""",
+            "robot.urdf": '<robot name="r">\n  <link name="base"/>\n</robot>\n',
+            "other.urdf": "<robot name='o'/>",
+        },
+        [{}, {"exe": "listener", "file": "other.urdf"}],
+    ),
     "actions-that-start-nothing": (
         {
             "main.launch.xml": """<launch>
