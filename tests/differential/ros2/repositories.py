@@ -102,17 +102,20 @@ def _is_launch_file(path: Path, dot_launch: bool) -> bool:
     return mark in path.read_text(encoding="utf-8", errors="replace")
 
 
+MOVEIT_DEPS = ("launch_param_builder", "xacro")
+"""What ``moveit_configs_utils`` imports (``launch_param_builder``, which imports ``xacro``)."""
+
 REPOSITORIES = {
     r.name: r
     for r in (
-        Repository("Universal_Robots_ROS2_Driver", deps=("moveit2",)),  # moveit_configs_utils
+        Repository("Universal_Robots_ROS2_Driver", deps=("moveit2", *MOVEIT_DEPS)),
         Repository("autoware.universe"),
         Repository("clearpath_common"),
         Repository("demos"),
         Repository("husky"),
         Repository("image_pipeline"),
-        Repository("moveit2"),
-        Repository("moveit2_tutorials"),
+        Repository("moveit2", deps=MOVEIT_DEPS),
+        Repository("moveit2_tutorials", deps=("moveit2", *MOVEIT_DEPS)),
         Repository("realsense-ros"),
         Repository("ros2_control_demos"),
         Repository("ros_gz", dot_launch=True),
