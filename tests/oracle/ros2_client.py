@@ -70,7 +70,43 @@ def run_oracle(
     done = subprocess.run(command, capture_output=True, text=True, env=ENVIRONMENT, timeout=120)
     if not done.stdout.strip():
         raise RuntimeError(f"the ROS 2 oracle failed: {done.stderr[-2000:]}")
-    return loads_repaired(done.stdout)
+    return restored_lists(loads_repaired(done.stdout))
+
+
+UNREAD_TUPLE = "tag:yaml.org,2002:python/tuple"
+"""What the oracle's merging says of a parameter file launch_ros wrote from a dict holding a
+list: launch_ros dumps the list as a Python tuple, which rcl reads as an array but the
+oracle's own merging (``yaml.safe_load``, its code, not ROS's) refuses, losing the dict."""
+
+
+def restored_lists(result: dict[str, Any]) -> dict[str, Any]:
+    """The oracle's nodes with the parameters of the dicts its merging could not read back
+    (:data:`UNREAD_TUPLE`) merged again, in the order the dicts were given: a dict holding
+    a list is the one it lost; a later dict it read keeps its values."""
+    for node in result.get("nodes", []):
+        if not any(UNREAD_TUPLE in error for error in node.get("parameter_errors") or []):
+            continue
+        lost: dict[str, Any] = {}
+        for given in node.get("inline_parameters") or []:
+            flat = _flattened(given)
+            if any(isinstance(value, list) for value in flat.values()):
+                lost.update(flat)
+            else:
+                for key in flat:
+                    lost.pop(key, None)
+        node["parameters"] = {**(node.get("parameters") or {}), **lost}
+    return result
+
+
+def _flattened(parameters: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
+    """Nested parameter dicts as rcl names them (``a.b``)."""
+    flat: dict[str, Any] = {}
+    for key, value in parameters.items():
+        if isinstance(value, Mapping):
+            flat.update(_flattened(value, f"{prefix}{key}."))
+        else:
+            flat[f"{prefix}{key}"] = value
+    return flat
 
 
 GENERATED = re.compile(r'<generated:\d+>"')

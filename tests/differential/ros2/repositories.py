@@ -43,7 +43,7 @@ from pathlib import Path
 from typing import Any
 
 import rosvar
-from oracle.ros2_client import ENVIRONMENT, ORACLE, canonical_nodes, run_oracle
+from oracle.ros2_client import ENVIRONMENT, ORACLE, canonical_nodes, restored_lists, run_oracle
 
 from ..harness import message_pattern
 from .samples import Config, read, sample
@@ -214,9 +214,8 @@ class OracleCache:
             return run_oracle(case.file, case.arguments, repository.package_paths, strict=False)
         key = json.dumps([self._digest(repository), str(case.file), case.config])
         path = self.directory / f"{hashlib.sha256(key.encode()).hexdigest()}.json"
-        if path.is_file():
-            cached: dict[str, Any] = json.loads(path.read_text(encoding="utf-8"))
-            return cached
+        if path.is_file():  # kept as the client gave it (its repairs run again: idempotent)
+            return restored_lists(json.loads(path.read_text(encoding="utf-8")))
         answer = run_oracle(case.file, case.arguments, repository.package_paths, strict=False)
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(json.dumps(answer), encoding="utf-8")

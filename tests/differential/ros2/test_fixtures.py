@@ -919,6 +919,35 @@ def generate_launch_description():
         },
         [{}, {"exe": "listener", "file": "other.urdf"}],
     ),
+    "list-parameters": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="first" default="a"/>
+            <node pkg="pkg" exec="x" name="x">
+              <param name="rate" value="1"/>
+              <param name="names" value="[$(var first), b]"/>
+              <param name="numbers" value="[1, 2]"/>
+              <param name="group.flags" value="[true, false]"/>
+              <param name="rate" value="2"/>
+            </node>
+          </launch>""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration as V
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('first', default_value='a'),
+        Node(package='pkg', executable='x', name='x',
+             parameters=[{'rate': 1}, {'names': [V('first'), 'b'], 'numbers': [1, 2]},
+                         {'group': {'flags': [True, False]}}, {'rate': 2}]),
+    ])
+""",
+        },
+        [{}, {"first": "c"}],
+    ),
     "actions-that-start-nothing": (
         {
             "main.launch.xml": """<launch>
