@@ -43,7 +43,14 @@ from pathlib import Path
 from typing import Any
 
 import rosvar
-from oracle.ros2_client import ENVIRONMENT, ORACLE, canonical_nodes, restored_lists, run_oracle
+from oracle.ros2_client import (
+    ENVIRONMENT,
+    ORACLE,
+    canonical_nodes,
+    restored_lists,
+    rosvar_nodes,
+    run_oracle,
+)
 
 from ..harness import message_pattern
 from .samples import Config, read, sample
@@ -256,28 +263,13 @@ def run_rosvar(case: Case, deps: Path | None) -> tuple[dict[str, Any] | None, st
 
 
 def oracle_shape(document: Mapping[str, Any]) -> dict[str, Any]:
-    """``rosvar resolve --json`` (one shape for both ROS versions, docs/json-schema.md) in
-    the oracle's: a node's own name (None where its code names it), ``executable``,
-    ``remappings``; an error's place as ``location``."""
-    nodes = []
-    for node in document.get("nodes", []):
-        record = {key: node.get(key) for key in ("kind", "plugin", "container", "arguments", "cmd")}
-        if node.get("kind") != "process":
-            fqn = node.get("fqn")
-            record.update(
-                package=node.get("package"),
-                executable=node.get("type"),
-                name=None if fqn is None else str(fqn).rsplit("/", 1)[-1],
-                namespace=node.get("namespace"),
-                remappings=[list(pair) for pair in node.get("remaps", [])],
-                parameters=node.get("parameters"),
-            )
-        nodes.append(record)
+    """``rosvar resolve --json`` in the oracle's shape: its nodes as :func:`rosvar_nodes`
+    makes them, an error's place as ``location``."""
     errors = [
         {**error, "location": {k: error.get(k) for k in ("file", "line", "col")}}
         for error in document.get("errors") or []
     ]
-    return {**document, "nodes": nodes, "errors": errors}
+    return {**document, **rosvar_nodes(document), "errors": errors}
 
 
 def run_case(case: Case, oracle: OracleCache) -> Outcome:

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from oracle.ros2_client import canonical_nodes, requires_ros2_oracle, rosvar_nodes, run_oracle
+from oracle.ros2_client import canonical_nodes, requires_ros2_oracle, resolution_nodes, run_oracle
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
@@ -1010,5 +1010,21 @@ def test_fixture_matches_the_oracle(case: str, tmp_path: Path) -> None:
         result = analysis.resolve([str(main)], arguments)
         assert result.ok == expected["ok"], (main.name, arguments, expected.get("error"))
         if result.ok:
-            nodes = canonical_nodes(rosvar_nodes(result))
+            nodes = canonical_nodes(resolution_nodes(result))
             assert nodes == canonical_nodes(expected), (main.name, arguments)
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_the_json_names_nodes_as_the_resolution(case: str, tmp_path: Path) -> None:
+    """The comparison reads rosvar's nodes from the ``resolve --json`` document, which names
+    a node by its fully qualified name only: the last part of it is the resolution's own
+    name of the node (None where its code names it) on every fixture."""
+    files, samples = CASES[case]
+    package = _workspace(tmp_path, files)
+    workspace = discover([str(package.parent)])
+    for main, arguments in itertools.product(entries(package), samples):
+        analysis = Analysis(workspace, extra_values={k: [v] for k, v in arguments.items()})
+        result = analysis.resolve([str(main)], arguments)
+        nodes = [node for node in result.sorted_nodes() if node.attributes["kind"] != "process"]
+        named = [n for n in resolution_nodes(result)["nodes"] if n["kind"] != "process"]
+        assert [n["name"] for n in named] == [n.own_name for n in nodes], (main.name, arguments)
