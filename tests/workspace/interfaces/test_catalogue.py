@@ -6,10 +6,14 @@ from __future__ import annotations
 import json
 import re
 from importlib import resources
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
+
+import jsonschema
+import pytest
 
 from rosvar.analyses.communication import model_edges
-from rosvar.workspace.interfaces.catalogue import DATA, load_catalogue
+from rosvar.ros.version import RosVersion
+from rosvar.workspace.interfaces.catalogue import SCHEMA, data_file, load_catalogue
 from rosvar.workspace.interfaces.model import Interfaces, NodeInterface, NodeKind, Origin, Role
 from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
 
@@ -18,6 +22,13 @@ if TYPE_CHECKING:
     from rosvar.logic.bdd import BDD
 
 SOURCE_URL = re.compile(r"^https://github\.com/[\w.-]+/[\w.-]+/blob/[0-9a-f]{40}/\S+$")
+
+
+def _items(version: RosVersion) -> list[dict[str, Any]]:
+    """The catalogue's data as shipped."""
+    data = resources.files("rosvar.workspace.interfaces").joinpath(data_file(version))
+    items: list[dict[str, Any]] = json.loads(data.read_text("utf-8"))["catalogue"]
+    return items
 
 
 def _node(package: str, executable: str) -> NodeInterface:
@@ -30,8 +41,9 @@ def _uses(node: NodeInterface, role: Role) -> set[tuple[str, str | None]]:
     return {(entry.name, entry.type) for entry in node.of(role)}
 
 
-def test_every_entry_says_where_it_comes_from() -> None:
-    nodes = load_catalogue().nodes()
+@pytest.mark.parametrize("version", list(RosVersion))
+def test_every_entry_says_where_it_comes_from(version: RosVersion) -> None:
+    nodes = load_catalogue(version).nodes()
     assert len(nodes) > 50
     for node in nodes:
         for entry in node.entries:
@@ -40,11 +52,46 @@ def test_every_entry_says_where_it_comes_from() -> None:
             assert entry.location.line > 0
 
 
-def test_every_node_records_its_repository_and_commit() -> None:
-    data = resources.files("rosvar.workspace.interfaces").joinpath(DATA).read_text("utf-8")
-    for item in json.loads(data)["catalogue"]:
+@pytest.mark.parametrize("version", list(RosVersion))
+def test_every_node_records_its_repository_and_commit(version: RosVersion) -> None:
+    for item in _items(version):
         assert re.fullmatch(r"[\w.-]+/[\w.-]+", item["repository"]), item["executable"]
         assert re.fullmatch(r"[0-9a-f]{40}", item["commit"]), item["executable"]
+
+
+def _schema() -> dict[str, Any]:
+    """The catalogue's JSON Schema, shipped beside the data."""
+    data = resources.files("rosvar.workspace.interfaces").joinpath(SCHEMA)
+    schema: dict[str, Any] = json.loads(data.read_text("utf-8"))
+    return schema
+
+
+@pytest.mark.parametrize("version", list(RosVersion))
+def test_every_entry_satisfies_the_schema(version: RosVersion) -> None:
+    validator = jsonschema.Draft202012Validator(_schema())
+    validator.check_schema(_schema())
+    errors = [
+        f"{'/'.join(map(str, error.absolute_path))}: {error.message}"
+        for error in validator.iter_errors({"catalogue": _items(version)})
+    ]
+    assert errors == []
+
+
+def test_the_schema_refuses_what_the_loader_could_not_trace() -> None:
+    """An entry without its line, a node without its commit, a kind that is no NodeKind,
+    a default that is neither a literal nor an expression: each is an error."""
+    validator = jsonschema.Draft202012Validator(_schema())
+    node = next(item for item in _items(RosVersion.ROS2) if item["publishes"])
+    entry = node["publishes"][0]
+    for broken in (
+        {**node, "publishes": [{key: value for key, value in entry.items() if key != "line"}]},
+        {key: value for key, value in node.items() if key != "commit"},
+        {**node, "kind": "plugin"},
+        {**node, "params": [{"name": "x", "default": {"value": 1}, "file": "a.cpp", "line": 1}]},
+        {**node, "publishes": [{**entry, "file": "/tmp/checkout/a.cpp"}]},
+    ):
+        assert not validator.is_valid({"catalogue": [broken]}), broken
+    assert validator.is_valid({"catalogue": [node]})
 
 
 def test_the_corpus_most_launched_third_party_nodes_are_there() -> None:
