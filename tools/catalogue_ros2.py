@@ -25,6 +25,7 @@ SOURCES: list[Source] = [
     # first, and the navigation stack's servers those systems bring up
     Source("ros/robot_state_publisher", "humble", [""]),
     Source("ros-controls/ros2_control", "humble", ["controller_manager"]),
+    Source("ros-controls/ros2_controllers", "humble", ["ros2_controllers_test_nodes"]),
     Source("ros2/rviz", "humble", []),
     Source(
         "ros/joint_state_publisher", "ros2", ["joint_state_publisher", "joint_state_publisher_gui"]

@@ -5,14 +5,18 @@ from __future__ import annotations
 
 import json
 import re
+from collections import Counter
 from importlib import resources
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import jsonschema
 import pytest
 
 from rosvar.analyses.communication import model_edges
+from rosvar.outputs.cli import main
 from rosvar.ros.version import RosVersion
+from rosvar.workspace.interfaces import catalogue
 from rosvar.workspace.interfaces.catalogue import SCHEMA, data_file, load_catalogue
 from rosvar.workspace.interfaces.model import Interfaces, NodeInterface, NodeKind, Origin, Role
 from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
@@ -92,6 +96,49 @@ def test_the_schema_refuses_what_the_loader_could_not_trace() -> None:
     ):
         assert not validator.is_valid({"catalogue": [broken]}), broken
     assert validator.is_valid({"catalogue": [node]})
+
+
+MOST_LAUNCHED = 8
+"""How many of a data set's most launched third-party executables must have entries."""
+CORPUS = Path(__file__).resolve().parents[4] / "shared" / "corpus"  # ../shared of the checkout
+ROS2_DATA = Path(__file__).resolve().parents[2] / "data" / "ros2"
+
+
+def _missing(roots: list[Path], capsys: pytest.CaptureFixture[str]) -> Counter[str]:
+    """``rosvar interfaces ROOT --missing``'s third-party executables (``pkg/exec``, a
+    nodelet's ``pkg/Class``, a component's ``pkg/ns::Class``), launches summed over
+    ``roots``."""
+    launches: Counter[str] = Counter()
+    for root in roots:
+        capsys.readouterr()
+        assert main(["interfaces", str(root), "--missing", "--json"]) == 0
+        for row in json.loads(capsys.readouterr().out)["missing"]:
+            if row["third_party"]:
+                launches[row["executable"]] += row["launches"]
+    return launches
+
+
+@pytest.mark.parametrize(
+    "data",
+    [
+        pytest.param([CORPUS], id="corpus"),
+        pytest.param(sorted(p for p in ROS2_DATA.iterdir() if p.is_dir()), id="ros2"),
+    ],
+)
+def test_the_most_launched_third_party_executables_have_entries(
+    data: list[Path], capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Ranked by ``interfaces --missing`` without the catalogue (every launched executable
+    no source or hint describes), the most launched ones are not missing with it."""
+    if not all(root.is_dir() for root in data):
+        pytest.skip("the corpus is not beside the repository")
+    still_missing = _missing(data, capsys)
+    with monkeypatch.context() as patch:
+        patch.setattr(catalogue, "load_catalogue", lambda version: catalogue.Catalogue([]))
+        launched = _missing(data, capsys)
+    most = [unit for unit, _count in launched.most_common(MOST_LAUNCHED)]
+    assert len(most) == MOST_LAUNCHED
+    assert [unit for unit in most if unit in still_missing] == []
 
 
 def test_the_corpus_most_launched_third_party_nodes_are_there() -> None:
