@@ -14,7 +14,7 @@ import difflib
 import enum
 import os
 from collections import Counter, defaultdict
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
 from rosvar.analyses.communication import (
@@ -40,6 +40,7 @@ from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, YamlDecl
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
+from rosvar.ros.version import RosVersion
 from rosvar.workspace.interfaces.model import Interfaces, Origin, Role
 from rosvar.workspace.paths import real_path
 
@@ -57,6 +58,7 @@ class Check(enum.StrEnum):
     PARAM_UNSET = "param-unset"
     PARAM_UNREAD = "param-unread"
     REMAP_UNUSED = "remap-unused"
+    PARAM_FILE_UNMATCHED = "param-file-unmatched"
     SYMBOLIC_NAME = "symbolic-name"
     WHEN_UNKNOWN = "when-unknown"
     UNREAD = "unread"
@@ -74,6 +76,8 @@ DESCRIPTIONS: dict[Check, str] = {
     "misspelt name: the node runs on its default)",
     Check.REMAP_UNUSED: "a node's remap renames a name the node never uses (a typo, or "
     "another node's name: the node keeps its own)",
+    Check.PARAM_FILE_UNMATCHED: "a ROS 2 node is given a parameter file with no entry for its "
+    "name: the node gets none of its parameters",
     Check.SYMBOLIC_NAME: "a name could not be resolved statically: the checks skip it",
     Check.WHEN_UNKNOWN: "a hinted entry's when: reads a parameter whose value is not known: "
     "the entry is kept there",
@@ -97,6 +101,37 @@ class Finding:
     file: str
     condition: BDD
     locations: tuple[Location, ...]  # the first is where the problem is reported
+
+
+@dataclass(frozen=True)
+class Found:
+    """A finding before it is placed in its entry file: what a dialect's own checks make
+    (:data:`MODEL_CHECKS`)."""
+
+    check: Check
+    severity: Severity
+    name: str
+    message: str
+    condition: BDD
+    locations: tuple[Location, ...]
+
+
+ModelCheck = Callable[[ConditionSpace, LaunchModel, Confinement], Iterable[Found]]
+"""A check of an entry file's nodes that only their dialect's launch semantics can make
+(ROS 2's parameter files, matched to the nodes as rcl matches them)."""
+MODEL_CHECKS: dict[RosVersion, list[ModelCheck]] = defaultdict(list)
+"""The dialects' own checks, by the ROS of the nodes they check (filled by the dialects: the
+core names neither)."""
+
+
+def model_check(version: RosVersion) -> Callable[[ModelCheck], ModelCheck]:
+    """Register a check of the entry files whose nodes are of ``version``."""
+
+    def register(check: ModelCheck) -> ModelCheck:
+        MODEL_CHECKS[version].append(check)
+        return check
+
+    return register
 
 
 def check_models(
@@ -170,6 +205,7 @@ def check_model(
     checker.params(interfaces)
     checker.unread(interfaces)
     checker.remaps(interfaces)
+    checker.dialects()
     checker.whens(interfaces)
     return checker.findings
 
@@ -468,6 +504,21 @@ class _Checker:
                         "renames nothing" + (f" (it uses {near})" if near else ""),
                         condition & remap.condition,
                         (remap.location or node.location, node.location),
+                    )
+
+    def dialects(self) -> None:
+        """The checks its nodes' dialect adds (:data:`MODEL_CHECKS`)."""
+        versions = {node.schema.version for node in self.model.nodes}
+        for version in sorted(versions):
+            for check in MODEL_CHECKS.get(version, ()):
+                for found in check(self.space, self.model, self.confinement):
+                    self.add(
+                        found.check,
+                        found.severity,
+                        found.name,
+                        found.message,
+                        found.condition,
+                        found.locations,
                     )
 
     def whens(self, interfaces: Interfaces) -> None:
