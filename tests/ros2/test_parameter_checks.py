@@ -67,3 +67,59 @@ def test_a_parameter_file_for_no_launched_node(
         "/imu_filter gets none of the parameters of imu.yaml: its entries are for "
         "/imu_filter_node, which no launched node is"
     )
+
+
+CMAKE = """cmake_minimum_required(VERSION 3.8)
+project(demo)
+find_package(ament_cmake REQUIRED)
+add_executable(reader src/reader.cpp)
+add_executable(open src/open.cpp)
+ament_package()
+"""
+READER = """#include <rclcpp/rclcpp.hpp>
+class Reader : public rclcpp::Node {
+ public:
+  Reader() : Node("reader") { declare_parameter("number_particles", 200); }
+};
+int main(int argc, char** argv) { rclcpp::spin(std::make_shared<Reader>()); }
+"""
+OPEN = """#include <rclcpp/rclcpp.hpp>
+int main(int argc, char** argv) {
+  auto options = rclcpp::NodeOptions().allow_undeclared_parameters(true);
+  auto node = std::make_shared<rclcpp::Node>("open", options);
+  node->declare_parameter("x", 1);
+}
+"""
+UNDECLARED = """<launch>
+  <node pkg="demo" exec="reader" name="reader">
+    <param name="particles" value="300"/>
+    <param name="use_sim_time" value="true"/>
+    <param name="number_particles" value="100"/>
+  </node>
+  <node pkg="demo" exec="open" name="open"><param name="y" value="1"/></node>
+</launch>
+"""
+
+
+def test_a_parameter_the_node_never_declares(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """rclcpp keeps a parameter the node never declares out of it: a misspelt name is a
+    warning, unless the node takes undeclared parameters (or rclcpp declares it)."""
+    package = tmp_path / "demo"
+    (package / "src").mkdir(parents=True)
+    (package / "launch").mkdir()
+    (package / "package.xml").write_text(MANIFEST.replace("bringup", "demo"))
+    (package / "CMakeLists.txt").write_text(CMAKE)
+    (package / "src" / "reader.cpp").write_text(READER)
+    (package / "src" / "open.cpp").write_text(OPEN)
+    (package / "launch" / "demo.launch.xml").write_text(UNDECLARED)
+    main(["check", str(tmp_path), "--format", "json"])
+    found = json.loads(capsys.readouterr().out)["findings"]
+    assert [(f["name"], f["message"]) for f in found if f["check"] == "param-unread"] == [
+        (
+            "/reader/particles",
+            "/reader is given the parameter particles, which it never declares (it declares "
+            "number_particles): the node never sees it",
+        )
+    ]

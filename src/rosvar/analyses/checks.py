@@ -116,7 +116,7 @@ class Found:
     locations: tuple[Location, ...]
 
 
-ModelCheck = Callable[[ConditionSpace, LaunchModel, Confinement], Iterable[Found]]
+ModelCheck = Callable[[ConditionSpace, LaunchModel, Interfaces, Confinement], Iterable[Found]]
 """A check of an entry file's nodes that only their dialect's launch semantics can make
 (ROS 2's parameter files, matched to the nodes as rcl matches them)."""
 MODEL_CHECKS: dict[RosVersion, list[ModelCheck]] = defaultdict(list)
@@ -205,7 +205,7 @@ def check_model(
     checker.params(interfaces)
     checker.unread(interfaces)
     checker.remaps(interfaces)
-    checker.dialects()
+    checker.dialects(interfaces)
     checker.whens(interfaces)
     return checker.findings
 
@@ -494,7 +494,7 @@ class _Checker:
                     source = launched.resolve(str(remap.source))
                     if any(source == u or source.startswith(u + names.SEP) for u in used):
                         continue
-                    near = _nearest(source, used)
+                    near = nearest(source, used)
                     target = remap.target if isinstance(remap.target, str) else "…"
                     self.add(
                         Check.REMAP_UNUSED,
@@ -506,12 +506,12 @@ class _Checker:
                         (remap.location or node.location, node.location),
                     )
 
-    def dialects(self) -> None:
+    def dialects(self, interfaces: Interfaces) -> None:
         """The checks its nodes' dialect adds (:data:`MODEL_CHECKS`)."""
         versions = {node.schema.version for node in self.model.nodes}
         for version in sorted(versions):
             for check in MODEL_CHECKS.get(version, ()):
-                for found in check(self.space, self.model, self.confinement):
+                for found in check(self.space, self.model, interfaces, self.confinement):
                     self.add(
                         found.check,
                         found.severity,
@@ -605,7 +605,7 @@ def _nodes(edges: Sequence[Edge]) -> str:
     return ", ".join(sorted({e.node for e in edges}))
 
 
-def _nearest(name: str, used: Iterable[str]) -> str | None:
+def nearest(name: str, used: Iterable[str]) -> str | None:
     """The used name whose last part is closest to ``name``'s (a typo, or the right name in
     another namespace)."""
     last = {u.rsplit(names.SEP, 1)[-1]: u for u in sorted(used)}
