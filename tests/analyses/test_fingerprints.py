@@ -1,5 +1,6 @@
 """Fingerprints survive another checkout: a finding that names a file (an `unread` robot
-description) keeps its fingerprint when the workspace moves and when lines move above it."""
+description) keeps its fingerprint when the workspace moves and when lines move above it,
+wherever its files lie (in a package, or only under a workspace root)."""
 
 from __future__ import annotations
 
@@ -8,7 +9,11 @@ import shutil
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from rosvar.analyses.checks import Check, Finding
+from rosvar.analyses.fingerprints import Fingerprints
+from rosvar.diagnostics import Location, Severity
 from rosvar.outputs.cli import main
+from rosvar.workspace.packages import Package
 
 if TYPE_CHECKING:
     import pytest
@@ -44,3 +49,29 @@ def test_a_finding_naming_a_file_keeps_its_fingerprint_elsewhere(
     launch = next(moved.rglob("sim.launch"))
     launch.write_text(launch.read_text().replace("<launch>", "<launch>\n\n<!-- moved -->\n"))
     assert _prints(moved, capsys) == here
+
+
+def _finding(root: Path, condition: object) -> Finding:
+    missing = str(root / "robot_description" / "urdf" / "robot.urdf.xacro")  # no package.xml
+    launch = str(root / "bringup" / "launch" / "sim.launch.py")
+    return Finding(
+        Check.UNREAD,
+        Severity.WARNING,
+        missing,
+        f"xacro fails on {missing}: cannot read it",
+        launch,
+        condition,  # type: ignore[arg-type]  # the fingerprint never reads the condition
+        (Location(launch, 3, 1), Location(missing, 0, 0)),
+    )
+
+
+def _print(root: Path) -> str:
+    root.mkdir(parents=True, exist_ok=True)
+    packages = [Package("bringup", str(root / "bringup"), None)]
+    return Fingerprints(packages, [str(root)]).of(_finding(root, None))
+
+
+def test_a_file_outside_every_package_is_named_from_its_root(tmp_path: Path) -> None:
+    here, there = tmp_path / "checkout", tmp_path / "elsewhere" / "clone"
+    assert _print(here) == _print(there)
+    assert _print(here) != Fingerprints([], []).of(_finding(here, None))  # a root places it

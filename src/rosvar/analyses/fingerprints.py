@@ -3,8 +3,9 @@
 A fingerprint must survive what does not change the finding: another checkout path or
 machine, another run, an unrelated edit that moves lines. So it is made of the finding's
 check, its resolved name, its message (built from resolved names) and its files, each
-relative to its package (``husky_control/launch/control.launch``), never of line numbers
-or absolute paths. Two findings alike in all of these share a fingerprint: a baseline
+relative to its package (``husky_control/launch/control.launch``; outside every package,
+to the workspace root given in that place of the command line), never of line numbers or
+absolute paths. Two findings alike in all of these share a fingerprint: a baseline
 counts them (:func:`new_findings`).
 """
 
@@ -25,12 +26,14 @@ VERSION = "rosvar/v1"
 
 
 class Fingerprints:
-    """The fingerprints of findings of one workspace (its packages place the files)."""
+    """The fingerprints of findings of one workspace (its packages place the files, else
+    its roots: a file a launch names that no package holds)."""
 
-    def __init__(self, packages: Iterable[Package]) -> None:
-        self._roots = sorted(
-            ((os.path.abspath(p.path), p.name) for p in packages), key=lambda r: -len(r[0])
-        )
+    def __init__(self, packages: Iterable[Package], roots: Sequence[str] = ()) -> None:
+        places = [(os.path.abspath(p.path), p.name) for p in packages]
+        folders = [root if os.path.isdir(root) else os.path.dirname(root) for root in roots]
+        places += [(os.path.abspath(f), f"<root{i}>") for i, f in enumerate(folders)]
+        self._roots = sorted(places, key=lambda r: -len(r[0]))  # the innermost place first
 
     def relative(self, file: str) -> str:
         """``file`` as ``package/path`` inside its package; a URL as it is; else its name."""

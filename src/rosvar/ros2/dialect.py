@@ -14,7 +14,7 @@ from rosvar.ros2.context import Context
 from rosvar.ros2.entry import walk_entry
 from rosvar.ros2.frontends import registry
 from rosvar.ros2.nodes import ROS2_NODES
-from rosvar.ros2.resolve import resolve
+from rosvar.ros2.resolve import node_fields, resolve
 from rosvar.ros2.substitutions import Ros2Substituter
 
 ROS2: Semantics[Context] = Semantics(
@@ -24,6 +24,7 @@ ROS2: Semantics[Context] = Semantics(
     walk_entry,
     ROS2_NODES,
     resolve,
+    node_fields,
     bind=registry.workspace_loader,
 )
 

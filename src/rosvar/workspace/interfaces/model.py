@@ -52,9 +52,16 @@ class Expression:
 
     text: str
 
+    def __str__(self) -> str:
+        return self.text
+
 
 Default = bool | int | float | str | Expression
 """A parameter's default: a literal's value, or the expression that computes it."""
+RECONFIGURED = Expression("its dynamic_reconfigure config's defaults")
+"""What a dynamic_reconfigure server reads: every parameter of its ``.cfg`` (which the
+extractor does not read) in its namespace, each with the default written there; so its
+namespace counts as read, and with defaults."""
 
 
 @dataclass(frozen=True)

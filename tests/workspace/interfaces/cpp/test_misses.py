@@ -11,7 +11,7 @@ from pathlib import Path
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.workspace.interfaces.cpp.extract import extract_node
 from rosvar.workspace.interfaces.cpp.unit import Unit
-from rosvar.workspace.interfaces.model import Entry, NamedBy, Role
+from rosvar.workspace.interfaces.model import RECONFIGURED, Entry, NamedBy, Role
 
 
 def _entries(
@@ -261,3 +261,26 @@ int main() { Chain t; }
         ("subscribes", "scan", "sensor_msgs/LaserScan", 4),
         ("publishes", "~filtered", "sensor_msgs/LaserScan", 5),
     ]
+
+
+def test_a_dynamic_reconfigure_server_reads_its_namespace(tmp_path: Path) -> None:
+    """Its config's parameters, each with the ``.cfg``'s default: the whole namespace counts
+    as read (``param-unread`` stays quiet there, ``param-unset`` too)."""
+    source = """\
+class Node {
+ public:
+  Node() : pnh_("~") {
+    server_.reset(new dynamic_reconfigure::Server<pkg::Config>(ros::NodeHandle(pnh_, "pid")));
+  }
+  ros::NodeHandle pnh_;
+  boost::shared_ptr<dynamic_reconfigure::Server<pkg::Config>> server_;
+  dynamic_reconfigure::Server<pkg::LimitsConfig> limits_;
+};
+int main() { Node node; }
+"""
+    reads = [
+        (e.name, e.default, e.location.line)
+        for e in _entries(tmp_path, source, ros2=False)
+        if e.role is Role.PARAMS
+    ]
+    assert sorted(reads) == [("~", RECONFIGURED, 8), ("~pid", RECONFIGURED, 4)]

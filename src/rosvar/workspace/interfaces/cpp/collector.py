@@ -16,7 +16,14 @@ from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.workspace.interfaces.cpp import apis, param_defaults, syntax
 from rosvar.workspace.interfaces.cpp.evaluator import CallSite, Evaluator, Handle
 from rosvar.workspace.interfaces.cpp.unit import Function, Unit
-from rosvar.workspace.interfaces.model import Default, Entry, Expression, NamedBy, Role
+from rosvar.workspace.interfaces.model import (
+    RECONFIGURED,
+    Default,
+    Entry,
+    Expression,
+    NamedBy,
+    Role,
+)
 from rosvar.workspace.interfaces.values import ParamRef, Text, action_type
 
 _NULLS = frozenset({"NULL", "nullptr", "0"})
@@ -178,10 +185,21 @@ class Collector:
             self.add(role, handle, rest[0], function, at, action_type(message) if message else None)
         elif base == "Subscriber" and "message_filters" in compact and handle is not None and rest:
             self.add(Role.SUBSCRIBES, handle, rest[0], function, at, message)
-        elif base == "ControllerManager" and arguments:
+        elif base == "ControllerManager" and arguments and not self.ros2:
+            # ROS 2's (ros2_control_node) is a node whose services its own code makes
             self._controller_manager(arguments[1:], function, at)
         elif base in apis.TF_CLASSES and re.search(r"\btf2?(_ros)?::", compact):
             self._tf(base, Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1))
+        elif base == "Server" and "dynamic_reconfigure::" in compact:
+            self._reconfigure(
+                handle, Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1)
+            )
+
+    def _reconfigure(self, handle: Handle | None, location: Location) -> None:
+        """A dynamic_reconfigure server reads its config's parameters in its node handle's
+        namespace (``ros::NodeHandle("~")`` by default)."""
+        namespace = Text("~") if handle is None else handle.namespace
+        self._entry(Role.PARAMS, namespace, location, default=RECONFIGURED)
 
     def _tf(self, base: str, location: Location) -> None:
         """tf's broadcasters publish ``/tf`` (the static one ``/tf_static``), for every tf
@@ -200,9 +218,11 @@ class Collector:
                 continue
             compact = syntax.text(type_node).replace(" ", "")
             base = syntax.last(compact.split("<")[0])
+            line, column = declaration.start_point
             if base in apis.TF_CLASSES and re.search(r"\btf2?(_ros)?::", compact):
-                line, column = declaration.start_point
                 self._tf(base, Location(file, line + 1, column + 1))
+            elif base == "Server" and "dynamic_reconfigure::" in compact:
+                self._reconfigure(None, Location(file, line + 1, column + 1))
 
     def _node_name(self, arguments: list[Node], function: Function) -> None:
         if arguments:
