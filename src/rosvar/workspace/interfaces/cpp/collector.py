@@ -185,7 +185,8 @@ class Collector:
             self.add(role, handle, rest[0], function, at, action_type(message) if message else None)
         elif base == "Subscriber" and "message_filters" in compact and handle is not None and rest:
             self.add(Role.SUBSCRIBES, handle, rest[0], function, at, message)
-        elif base == "ControllerManager" and arguments:
+        elif base == "ControllerManager" and arguments and not self.ros2:
+            # ROS 2's (ros2_control_node) is a node whose services its own code makes
             self._controller_manager(arguments[1:], function, at)
         elif base in apis.TF_CLASSES and re.search(r"\btf2?(_ros)?::", compact):
             self._tf(base, Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1))
