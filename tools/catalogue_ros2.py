@@ -24,7 +24,9 @@ SOURCES: list[Source] = [
     # third-party package a launch file of tests/data/ros2 starts a node of, most launched
     # first, and the navigation stack's servers those systems bring up
     Source("ros/robot_state_publisher", "humble", [""]),
-    Source("ros-controls/ros2_control", "humble", ["controller_manager"]),
+    # jazzy: the release ros2_control_demos and Universal_Robots_ROS2_Driver launch (its
+    # manager subscribes robot_description, humble's ~/robot_description)
+    Source("ros-controls/ros2_control", "jazzy", ["controller_manager"]),
     Source("ros-controls/ros2_controllers", "humble", ["ros2_controllers_test_nodes"]),
     Source("ros2/rviz", "humble", []),
     Source(
@@ -55,13 +57,13 @@ SOURCES: list[Source] = [
 CM_SERVICES = "controller_manager/controller_manager/controller_manager_services.py"
 CM_CLIENTS = {
     # controller_manager_services.py: the service each call names, below the manager
-    "configure_controller": 162,
-    "list_controllers": 174,
-    "list_hardware_components": 200,
-    "load_controller": 229,
-    "set_hardware_component_state": 265,
-    "switch_controller": 294,
-    "unload_controller": 308,
+    "configure_controller": 176,
+    "list_controllers": 188,
+    "list_hardware_components": 214,
+    "load_controller": 243,
+    "set_hardware_component_state": 279,
+    "switch_controller": 305,
+    "unload_controller": 319,
 }
 SPAWNED_CLIENT = (
     "{f'{namespace}/{service_name}' if not service_name.startswith('/') else service_name}"
@@ -169,6 +171,16 @@ SLAM_TOOLBOX = Review(
         },
     },
 )
+INITIAL_POSE = "initialpose is rviz2's 2D Pose Estimate (people's input)"
+SLAM_LOCALIZATION = Review(
+    SLAM_TOOLBOX.note + "; " + INITIAL_POSE,
+    named=SLAM_TOOLBOX.named,
+    boundary={"subscribes": ["initialpose"]},
+)
+AMCL = Review(
+    INITIAL_POSE + "; particle_cloud is for people (rviz2)",
+    boundary={"subscribes": ["initialpose"], "publishes": ["particle_cloud"]},
+)
 LOCALIZATION_INPUTS = {1157: "odom", 1294: "pose", 1389: "twist", 1597: "imu"}
 """ros_filter.cpp: each sensor's topic is the value of odom0, odom1, ... (then pose0,
 twist0, imu0), declared and read in a loop until one is not set."""
@@ -192,6 +204,11 @@ SPAWN_ENTITY = "gazebo_ros/scripts/spawn_entity.py"
 RVIZ_CONFIG = "rviz_common/default.rviz"
 
 REVIEW: dict[tuple[str, str], Review] = {
+    ("controller_manager", "ros2_control_node"): Review(
+        "~/activity tells tools (rqt_controller_manager) what the controllers do; the "
+        "controllers (plugins the spawners load) and their topics are not included",
+        boundary={"publishes": ["~/activity"]},
+    ),
     ("controller_manager", "spawner"): _manager_clients(
         "loads, configures and starts the controllers named on the command line",
         ["list_controllers", "load_controller", "configure_controller", "switch_controller"],
@@ -260,6 +277,14 @@ REVIEW: dict[tuple[str, str], Review] = {
     ("nav2_behaviors", "behavior_server::BehaviorServer"): BEHAVIORS,
     ("nav2_bt_navigator", "bt_navigator"): BT_NAVIGATOR,
     ("nav2_bt_navigator", "nav2_bt_navigator::BtNavigator"): BT_NAVIGATOR,
+    ("nav2_amcl", "amcl"): AMCL,
+    ("nav2_amcl", "nav2_amcl::AmclNode"): AMCL,
+    ("slam_toolbox", "slam_toolbox::LocalizationSlamToolbox"): Review(
+        INITIAL_POSE, boundary={"subscribes": ["initialpose"]}
+    ),
+    ("slam_toolbox", "slam_toolbox::MapAndLocalizationSlamToolbox"): Review(
+        INITIAL_POSE, boundary={"subscribes": ["initialpose"]}
+    ),
     ("robot_localization", "ekf_node"): FILTER,
     ("robot_localization", "ukf_node"): FILTER,
     ("joy", "joy_node"): JOY,
@@ -272,10 +297,10 @@ for _executable in (
     "async_slam_toolbox_node",
     "sync_slam_toolbox_node",
     "lifelong_slam_toolbox_node",
-    "localization_slam_toolbox_node",
-    "map_and_localization_slam_toolbox_node",
 ):
     REVIEW[("slam_toolbox", _executable)] = SLAM_TOOLBOX
+for _executable in ("localization_slam_toolbox_node", "map_and_localization_slam_toolbox_node"):
+    REVIEW[("slam_toolbox", _executable)] = SLAM_LOCALIZATION
 
 EXTRA: dict[tuple[str, str, str], Review] = {
     ("ros2/rviz", "rviz2", "rviz2"): Review(
