@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from catalogue_review import Review, Source, by_parameter, use
 
 NAV2 = [
@@ -120,7 +122,9 @@ BT_NAVIGATOR = Review(
     "navigate_through_poses); goal_pose is rviz2's Goal tool; the behaviour tree (default "
     "XML) calls the planner, controller and behaviour servers' actions (the BT plugins' "
     "default names); its costmap-clearing services (served by the costmaps inside the "
-    "planner and controller servers, not modelled) are left out",
+    "planner and controller servers, not modelled) are left out; the node is bt_navigator "
+    "(bt_navigator.cpp; the behaviour tree's helper node is another)",
+    node_name="bt_navigator",
     add={
         "action_servers": [
             use(
@@ -160,6 +164,11 @@ BT_NAVIGATOR = Review(
     },
     drop={"action_servers": ["{action_name}"]},
 )
+CONTROLLER_SERVER = Review(
+    "the speed limit (speed_limit_topic, default speed_limit) is an optional input: nav2's "
+    "speed costmap filter or an application publishes it",
+    boundary={"subscribes": ["{speed_limit_topic}"]},
+)
 SLAM_TOOLBOX = Review(
     "the map and scan topics are the parameters map_name (default /map) and scan_topic "
     "(default /scan), declared with a member's value as default (slam_toolbox_common.cpp)",
@@ -187,7 +196,8 @@ twist0, imu0), declared and read in a loop until one is not set."""
 FILTER = Review(
     "set_pose (topic) is for people and tools resetting the filter; each sensor topic is "
     "the value of odomN/poseN/twistN/imuN (one per parameter set); cmd_vel only with "
-    "use_control",
+    "use_control; the node's name is the first NodeOptions argument (ekf_node.cpp: "
+    "ekf_filter_node, ukf_node.cpp: ukf_filter_node)",
     boundary={"subscribes": ["set_pose"]},
     named={
         "subscribes": {
@@ -277,6 +287,8 @@ REVIEW: dict[tuple[str, str], Review] = {
     ("nav2_behaviors", "behavior_server::BehaviorServer"): BEHAVIORS,
     ("nav2_bt_navigator", "bt_navigator"): BT_NAVIGATOR,
     ("nav2_bt_navigator", "nav2_bt_navigator::BtNavigator"): BT_NAVIGATOR,
+    ("nav2_controller", "controller_server"): CONTROLLER_SERVER,
+    ("nav2_controller", "nav2_controller::ControllerServer"): CONTROLLER_SERVER,
     ("nav2_amcl", "amcl"): AMCL,
     ("nav2_amcl", "nav2_amcl::AmclNode"): AMCL,
     ("slam_toolbox", "slam_toolbox::LocalizationSlamToolbox"): Review(
@@ -285,8 +297,8 @@ REVIEW: dict[tuple[str, str], Review] = {
     ("slam_toolbox", "slam_toolbox::MapAndLocalizationSlamToolbox"): Review(
         INITIAL_POSE, boundary={"subscribes": ["initialpose"]}
     ),
-    ("robot_localization", "ekf_node"): FILTER,
-    ("robot_localization", "ukf_node"): FILTER,
+    ("robot_localization", "ekf_node"): replace(FILTER, node_name="ekf_filter_node"),
+    ("robot_localization", "ukf_node"): replace(FILTER, node_name="ukf_filter_node"),
     ("joy", "joy_node"): JOY,
     ("joy", "joy::Joy"): JOY,
     ("joy", "game_controller_node"): JOY,
