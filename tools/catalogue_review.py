@@ -51,7 +51,7 @@ class Review:
     class): the node has its entries too, its own read first."""
 
 
-def by_parameter(parameter: str, default: str | None = None, namespace: str = "") -> Item:
+def by_parameter(parameter: str, default: object = None, namespace: str = "") -> Item:
     named: Item = {"parameter": parameter}
     if namespace:
         named["namespace"] = namespace

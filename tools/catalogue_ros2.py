@@ -36,6 +36,7 @@ SOURCES: list[Source] = [
     ),
     Source("ros2/geometry2", "humble", ["tf2_ros"]),
     Source("ros2/rclcpp", "humble", ["rclcpp_components"]),
+    Source("ros-tooling/topic_tools", "humble", ["topic_tools"]),
     Source("ros-drivers/joystick_drivers", "ros2", ["joy", "joy_linux"]),
     Source("ros2/teleop_twist_joy", "foxy", [""]),
     Source("ros-teleop/twist_mux", "rolling", [""]),
@@ -164,6 +165,29 @@ BT_NAVIGATOR = Review(
     },
     drop={"action_servers": ["{action_name}"]},
 )
+TOOL_BASE = "topic_tools/src/tool_base_node.cpp"
+RELAY = Review(
+    "relays input_topic (required) to output_topic (default input_topic + '_relay') with a "
+    "generic subscription and publisher of the input's type (tool_base_node.cpp), which "
+    "the extractor does not read: added by hand; the relay executable also takes them "
+    "from its command line (relay IN [OUT], relay.cpp), which stays symbolic",
+    add={
+        "subscribes": [
+            {
+                **use("{input_topic}", None, TOOL_BASE, 56),
+                **by_parameter("input_topic"),
+                "static": False,
+            }
+        ],
+        "publishes": [
+            {
+                **use("{output_topic}", None, TOOL_BASE, 40),
+                **by_parameter("output_topic", {"expression": 'input_topic_ + "_relay"'}),
+                "static": False,
+            }
+        ],
+    },
+)
 CONTROLLER_SERVER = Review(
     "the speed limit (speed_limit_topic, default speed_limit) is an optional input: nav2's "
     "speed costmap filter or an application publishes it",
@@ -287,6 +311,8 @@ REVIEW: dict[tuple[str, str], Review] = {
     ("nav2_behaviors", "behavior_server::BehaviorServer"): BEHAVIORS,
     ("nav2_bt_navigator", "bt_navigator"): BT_NAVIGATOR,
     ("nav2_bt_navigator", "nav2_bt_navigator::BtNavigator"): BT_NAVIGATOR,
+    ("topic_tools", "relay"): RELAY,
+    ("topic_tools", "topic_tools::RelayNode"): RELAY,
     ("nav2_controller", "controller_server"): CONTROLLER_SERVER,
     ("nav2_controller", "nav2_controller::ControllerServer"): CONTROLLER_SERVER,
     ("nav2_amcl", "amcl"): AMCL,
