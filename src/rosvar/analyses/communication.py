@@ -443,10 +443,13 @@ def entry_names(
     image_transport's camera info lies beside its image topic as remapped."""
     if entry.beside is None:
         return remapped(node, remaps, entry.name, when)
-    return [(c, _beside(image)) for c, image in remapped(node, remaps, entry.beside, when)]
+    return [
+        (c, camera_info_beside(image)) for c, image in remapped(node, remaps, entry.beside, when)
+    ]
 
 
-def _beside(image: str) -> str:
+def camera_info_beside(image: str) -> str:
+    """image_transport's camera info topic: beside its image topic (once remapped)."""
     return names.ns_join(image.rsplit(names.SEP, 1)[0] or names.SEP, "camera_info")
 
 
@@ -542,7 +545,7 @@ def resolved_graph(
             for use in _resolved_uses(node, launched, interface, entry, params):
                 resolved = launched.resolve(use.beside or use.name)
                 name = table.get(resolved, resolved)
-                name = name if use.beside is None else _beside(name)
+                name = name if use.beside is None else camera_info_beside(name)
                 uses.append((launched.full_name, use.role, name, use.type))
     return uses_graph(uses)
 
