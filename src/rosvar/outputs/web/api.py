@@ -9,8 +9,7 @@ Engine calls are serialised by one lock: the BDD manager is not thread-safe, and
 server runs API calls in several threads. They run with the cyclic collector paused, as the
 engine's steps do: what a call keeps (verdicts, views, documents) joins the engine's heap,
 and CPython, which counts only what its own young collections promote, ran full collections
-of that heap (1.1 M objects on Husky with ``_external``, 0.4-0.6 s each) inside the calls:
-three in a page's first state and its first choice. A call waits for the engine at most
+of that whole heap inside the calls (docs/performance.md). A call waits for the engine at most
 ``ENGINE_WAIT`` (its time budget), then is answered 503, which the page tries again: a slow
 step of one client never keeps another's request waiting without end. The catalog needs no
 engine: it is answered at once.
