@@ -24,9 +24,14 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
         it.fail(it.space.true, "attribute-missing", "<arg> tag is missing required 'name'")
         return
     old = context.configurations.get(name)
-    if context.open_command_line and len(it.stack) > 1 and name not in it.model.inputs:
-        old = _given(it, context, name, old)
-    unset = old.where(lambda leaf: leaf is None) if old is not None else it.space.true
+    if context.open_command_line and len(it.stack) > 1:
+        if name not in it.model.inputs:
+            old = _given(it, context, name, old)
+        elif name in it.model.settable and (old is None or old.where(_unset) != it.space.false):
+            # declared again outside the scope of its first declaration, which set the
+            # command line's value: the next interpretation knows it from the start
+            context.unset_reads.add(name)
+    unset = old.where(_unset) if old is not None else it.space.true
     if entity.get("default") is None:
         it.fail(unset, "arg-required", f"Required launch argument '{name}' was not provided")
     else:
@@ -61,6 +66,10 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     )
 
 
+def _unset(leaf: Raw | None) -> bool:
+    return leaf is None
+
+
 def _given(
     it: Interpretation[Context], context: Context, name: str, old: Configuration | None
 ) -> Configuration | None:
@@ -68,7 +77,7 @@ def _given(
     ``name:=value``, if given, before loading, so where nothing set it since, the declaration
     sees the command line's value. It becomes an input here; a read of it before (or outside
     the scope it is set in) makes the next interpretation know it from the start."""
-    unset = old.where(lambda leaf: leaf is None) if old is not None else it.space.true
+    unset = old.where(_unset) if old is not None else it.space.true
     if unset == it.space.false or "$" in name:
         return old
     it.model.settable[name] = context.filename
