@@ -471,9 +471,11 @@ def _file_content(
 ) -> Choice[Value]:
     """The text of the file, read through the workspace's gate (launch reads it when the
     substitution is performed; a file outside the workspace is refused, never opened)."""
-    if len(args) != 1 or not isinstance(args[0], str):
+    if len(args) != 1:
         return _fail(host, "$(file-content) takes a path", "substitution-invalid")
     path = args[0]
+    if not isinstance(path, str):
+        return _fail(host, "$(file-content) of a path that is not known", "value-unknown")
     if not os.path.isabs(path):
         return _fail(
             host,

@@ -948,6 +948,31 @@ def generate_launch_description():
         },
         [{}, {"first": "c"}],
     ),
+    "undeclared-argument-declared-by-each-include": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="roi" default="true"/>
+            <let name="input" value="roi" if="$(var roi)"/>
+            <let name="input" value="plain" unless="$(var roi)"/>
+            <group><include file="$(dirname)/sub.launch.xml"/></group>
+            <group>
+              <push-ros-namespace namespace="fusion"/>
+              <include file="$(dirname)/sub.launch.xml">
+                <arg name="in" value="$(var input)"/>
+              </include>
+            </group>
+          </launch>""",
+            "sub.launch.xml": """<launch>
+            <arg name="in" default="x"/>
+            <arg name="model_path" default="$(dirname)/m.onnx"/>
+            <node pkg="pkg" exec="x" name="n">
+              <param name="model_path" value="$(var model_path)"/>
+              <param name="in" value="$(var in)"/>
+            </node>
+          </launch>""",
+        },
+        [{}, {"model_path": "given"}, {"model_path": "given", "roi": "false"}],
+    ),
     "actions-that-start-nothing": (
         {
             "main.launch.xml": """<launch>

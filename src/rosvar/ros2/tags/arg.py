@@ -28,15 +28,12 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     old = context.get(name)
     unset = _unset(it, old)
     included = len(it.stack) > 1
-    if (
-        unset != it.space.false
-        and context.open_command_line
-        and included
-        and "$" not in name
-        and not is_input(it, context, name)
-    ):
-        old = _given(it, context, name, old, unset)
-        unset = _unset(it, old)
+    if unset != it.space.false and context.open_command_line and included and "$" not in name:
+        if not is_input(it, context, name):
+            old = _given(it, context, name, old, unset)
+            unset = _unset(it, old)
+        else:  # declared before, where it was set: the next interpretation sets it first
+            context.unset_reads.add(name)
     if entity.get("default") is None:
         it.fail(unset, "arg-required", f"Required launch argument '{name}' was not provided")
     else:
