@@ -507,6 +507,12 @@ class ValueBudget:
         self.note(f"{_short(text)} is not computed: {reason}")
         return False
 
+    def spares(self, combinations: int) -> bool:
+        """Whether work that spent ``combinations`` from here on would meet no limit: each
+        of its texts within :data:`MAX_COMBINATIONS`, the file within
+        :data:`MAX_FILE_COMBINATIONS` (memos replay such work, and spend as much)."""
+        return self.combinations + combinations + MAX_COMBINATIONS <= MAX_FILE_COMBINATIONS
+
     def join(
         self,
         text: str,
