@@ -10,6 +10,7 @@ API's registry (:mod:`rosvar.ros2.api.substitutions`) rosvar computes, and rosva
 from __future__ import annotations
 
 import functools
+import math
 import os
 import posixpath
 import shlex
@@ -597,7 +598,7 @@ def _evaluation(text: str) -> str | Fail:
     value = _evaluated.get(text)
     if value is None:
         try:
-            value = evaluate(text, EvalEnvironment(_no_arg))
+            value = evaluate(text, PYTHON_EXPRESSION)
         except (EvalFailed, EvalRefused) as error:
             value = Fail(f"$(eval {text}): {error}", "eval-failed")
         _evaluated[text] = value
@@ -625,6 +626,16 @@ the values it was made of, in every includer (autoware.universe: 37,000 texts ev
 
 def _no_arg(name: str) -> str:
     raise KeyError(name)  # ROS 2 expressions read launch configurations only through $(var)
+
+
+PYTHON_EXPRESSION = EvalEnvironment(
+    _no_arg,
+    symbols=_no_arg,
+    namespaces={"math": {name: name for name in dir(math) if "__" not in name}},
+)
+"""What ``PythonExpression`` evaluates in: ``eval(text, {}, locals)`` whose locals are the
+``math`` module and its names (its default ``python_modules``), under Python's builtins; no
+roslaunch names (``true``, ``arg``, ``env``: a ``NameError`` in ROS 2)."""
 
 
 @substitution("anon")
