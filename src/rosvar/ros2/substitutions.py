@@ -267,12 +267,9 @@ class Ros2Substituter:
     def __init__(self, host: Interpretation[Context]) -> None:
         self.host = host
         self.space = host.space
-        self.budget = ValueBudget(host.space, self._note)
-        self.notes = 0  # value-too-complex notes made: a value that made one is not kept
-
-    def _note(self, message: str) -> None:
-        self.notes += 1
-        self.host.note_too_complex(message)
+        # the host's method, not one of this object: a cycle through the budget would hold
+        # the analysis's conditions until a collection freed them after their manager
+        self.budget = ValueBudget(host.space, host.note_too_complex)
 
     def resolve(self, text: str | None, context: Context) -> Choice[Value] | None:
         if text is None:
@@ -298,10 +295,10 @@ class Ros2Substituter:
             context.unset_reads |= known[1]
             return known[0]
         unset_reads, context.unset_reads = context.unset_reads, set()
-        notes, spent = self.notes, self.budget.combinations
+        notes, spent = self.budget.notes, self.budget.combinations
         try:
             value = self.template(template, context, text)
-            if len(value.branches) <= RESOLVED_BRANCHES and self.notes == notes:
+            if len(value.branches) <= RESOLVED_BRANCHES and self.budget.notes == notes:
                 spent = self.budget.combinations - spent
                 memo[key] = (value, frozenset(context.unset_reads), spent)
         finally:
