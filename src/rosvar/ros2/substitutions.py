@@ -17,11 +17,12 @@ import weakref
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from rosvar.files import FileCode, FileRefused, read_file
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
 from rosvar.interpreter.substitution_args import ValueBudget, too_complex
-from rosvar.logic.choice import Choice, Fail, combine, ite
+from rosvar.logic.choice import Choice, Fail, combine_bind, ite
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, TermError, concat, register
 from rosvar.memo import Memo
@@ -191,7 +192,17 @@ def substitution(name: str) -> Callable[[Handler], Handler]:
 
 
 PURE = frozenset(
-    {"var", "eval", "find-pkg-share", "find-pkg-prefix", "dirname", "filename", PATH_JOIN, UNKNOWN}
+    {
+        "var",
+        "eval",
+        "find-pkg-share",
+        "find-pkg-prefix",
+        "exec-in-pkg",
+        "dirname",
+        "filename",
+        PATH_JOIN,
+        UNKNOWN,
+    }
 )
 """Substitutions whose value follows from their arguments, the launch configurations they
 name and the file's name (the workspace is the space's): a text made only of them is
@@ -202,8 +213,11 @@ RESOLVED_BRANCHES = 16
 """Only values of at most this many branches are kept: larger ones are cross products of
 values that vary a lot, which no other read met again (docs/performance.md)."""
 _resolved: weakref.WeakKeyDictionary[
-    ConditionSpace, Memo[object, tuple[Choice[Value], frozenset[str]]]
+    ConditionSpace, Memo[object, tuple[Choice[Value], frozenset[str], int]]
 ] = weakref.WeakKeyDictionary()
+"""Each value with the unset names it read and the combinations it spent of the file's
+budget (a reuse spends them too, so that the budget is the same whatever was resolved
+before; a value that met a limit is not kept)."""
 
 
 @dataclass(frozen=True)
@@ -250,6 +264,8 @@ class Ros2Substituter:
     def __init__(self, host: Interpretation[Context]) -> None:
         self.host = host
         self.space = host.space
+        # the host's method, not one of this object: a cycle through the budget would hold
+        # the analysis's conditions until a collection freed them after their manager
         self.budget = ValueBudget(host.space, host.note_too_complex)
 
     def resolve(self, text: str | None, context: Context) -> Choice[Value] | None:
@@ -265,20 +281,23 @@ class Ros2Substituter:
         key = (
             text,
             context.filename if reads.filename else None,
-            tuple(_content(context.configurations.get(name)) for name in reads.names),
+            tuple(_content(context.get(name)) for name in reads.names),
         )
         memo = _resolved.get(self.space)
         if memo is None:
             memo = _resolved[self.space] = Memo(RESOLVED_CAPACITY)
         known = memo.get(key)
-        if known is not None:
+        if known is not None and self.budget.spares(known[2]):
+            self.budget.combinations += known[2]
             context.unset_reads |= known[1]
             return known[0]
         unset_reads, context.unset_reads = context.unset_reads, set()
+        notes, spent = self.budget.notes, self.budget.combinations
         try:
             value = self.template(template, context, text)
-            if len(value.branches) <= RESOLVED_BRANCHES:
-                memo[key] = (value, frozenset(context.unset_reads))
+            if len(value.branches) <= RESOLVED_BRANCHES and self.budget.notes == notes:
+                spent = self.budget.combinations - spent
+                memo[key] = (value, frozenset(context.unset_reads), spent)
         finally:
             unset_reads |= context.unset_reads
             context.unset_reads = unset_reads
@@ -325,9 +344,7 @@ class Ros2Substituter:
             return handler(self.host, context, [])
         if not self.budget.affordable(text, arguments):
             return Choice.const(self.space, too_complex(text))
-        return combine(arguments, lambda leaves: leaves).bind(
-            lambda leaves: _call(handler, self.host, context, leaves)
-        )
+        return combine_bind(arguments, lambda leaves: _call(handler, self.host, context, leaves))
 
 
 def _call(
@@ -367,7 +384,7 @@ def _var(host: Interpretation[Context], context: Context, args: list[Raw]) -> Ch
 def configuration(host: Interpretation[Context], context: Context, name: str) -> Choice[Raw | None]:
     """The launch configuration ``name`` (None where it is undefined, which is recorded:
     :attr:`Context.unset_reads`)."""
-    value = context.configurations.get(name)
+    value = context.get(name)
     if value is None:
         context.unset_reads.add(name)
         return Choice.const(host.space, None)
@@ -395,23 +412,47 @@ def _env(host: Interpretation[Context], context: Context, args: list[Raw]) -> Ch
     return value.map(pick)
 
 
-def _package(host: Interpretation[Context], args: list[Raw], what: str) -> Choice[Value]:
+def _package(
+    host: Interpretation[Context], args: list[Raw], what: str, prefix: bool = False
+) -> Choice[Value]:
     if len(args) != 1 or not isinstance(args[0], str):
         return _fail(host, f"$({what}) takes one argument", "substitution-invalid")
-    path = host.find_package(args[0])
+    path = _prefix(host, args[0]) if prefix else host.find_package(args[0])
     if path is None:
         return _fail(host, f"package '{args[0]}' not found", "package-not-found")
     return Choice.const(host.space, path)
 
 
+def _prefix(host: Interpretation[Context], package: str) -> str | None:
+    """An installed package's install prefix; a source package's folder stands for it, as for
+    its share folder (its ``lib/`` is what ``colcon build`` would install)."""
+    return host.workspace.find_prefix(package) or host.find_package(package)
+
+
 @substitution("find-pkg-share")
-def _share(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+def _find_share(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     return _package(host, args, "find-pkg-share")  # the source folder stands for the share
 
 
 @substitution("find-pkg-prefix")
-def _prefix(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
-    return _package(host, args, "find-pkg-prefix")
+def _find_prefix(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+    return _package(host, args, "find-pkg-prefix", prefix=True)
+
+
+@substitution("exec-in-pkg")
+def _exec_in_pkg(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+    """``lib/PACKAGE/EXECUTABLE`` below the package's prefix: launch also checks that the
+    built executable is there, which a source workspace cannot show, so that is left to
+    the install."""
+    if len(args) != 2 or not all(isinstance(arg, str) for arg in args):
+        return _fail(
+            host, "$(exec-in-pkg) takes an executable and a package", "substitution-invalid"
+        )
+    executable, package = str(args[0]), str(args[1])
+    prefix = _prefix(host, package)
+    if prefix is None:
+        return _fail(host, f"package '{package}' not found", "package-not-found")
+    return Choice.const(host.space, posixpath.join(prefix, "lib", package, executable))
 
 
 @substitution("dirname")
@@ -422,6 +463,32 @@ def _dirname(host: Interpretation[Context], context: Context, args: list[Raw]) -
 @substitution("filename")
 def _filename(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     return Choice.const(host.space, os.path.abspath(context.filename))
+
+
+@substitution("file-content")
+def _file_content(
+    host: Interpretation[Context], context: Context, args: list[Raw]
+) -> Choice[Value]:
+    """The text of the file, read through the workspace's gate (launch reads it when the
+    substitution is performed; a file outside the workspace is refused, never opened)."""
+    if len(args) != 1 or not isinstance(args[0], str):
+        return _fail(host, "$(file-content) takes a path", "substitution-invalid")
+    path = args[0]
+    if not os.path.isabs(path):
+        return _fail(
+            host,
+            f"$(file-content {path}): a relative path reads the launching directory, not known",
+            UNSUPPORTED,
+        )
+    try:
+        text = read_file(path, host.workspace.confinement()).decode()
+    except FileRefused as error:
+        return _fail(host, f"$(file-content {path}): {error}", error.code)
+    except (OSError, UnicodeDecodeError) as error:
+        return _fail(
+            host, f"$(file-content {path}): file not readable: {error}", FileCode.UNREADABLE
+        )
+    return Choice.const(host.space, text)
 
 
 @substitution("command")
@@ -521,7 +588,7 @@ def _anon(host: Interpretation[Context], context: Context, args: list[Raw]) -> C
     if len(args) != 1 or not isinstance(args[0], str):
         return _fail(host, "$(anon) takes one argument", "substitution-invalid")
     key = "anon" + args[0]
-    old = context.configurations.get(key)
+    old = context.get(key)
     unset = host.space.true if old is None else old.where(lambda leaf: leaf is None)
     if unset != host.space.false:
         with host.under(unset) as live:
