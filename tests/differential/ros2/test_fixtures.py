@@ -998,6 +998,37 @@ def generate_launch_description():
         },
         [{}, {"a": "2"}],
     ),
+    "values-over-the-work-limits-once-bound": (
+        {
+            "params.yaml": "/**:\n  ros__parameters:\n    first: $(var a0)\n    joined: "
+            + "".join(f"$(var a{i})" for i in range(14))
+            + "\n",
+            "main.launch.xml": "<launch>"
+            + "".join(f'<arg name="a{i}" default="x"/>' for i in range(14))
+            + '<node pkg="pkg" exec="x" name="n{}" args="{}">'.format(
+                "".join(f"$(var a{i})" for i in range(14)),
+                " ".join(f"$(var a{i})" for i in range(14)),
+            )
+            + '<param from="$(dirname)/params.yaml" allow_substs="true"/></node></launch>',
+            "main.launch.py": """import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration as V
+from launch_ros.actions import Node
+from launch_ros.parameter_descriptions import ParameterFile
+
+
+def generate_launch_description():
+    path = os.path.join(os.path.dirname(__file__), 'params.yaml')
+    names = [f'a{i}' for i in range(14)]
+    return LaunchDescription([DeclareLaunchArgument(n, default_value='x') for n in names] + [
+        Node(package='pkg', executable='x', name=['n'] + [V(n) for n in names],
+             parameters=[ParameterFile(path, allow_substs=True)]),
+    ])
+""",
+        },
+        [{}, {"a1": "y", "a13": "z"}, {"a0": "7"}],
+    ),
 }
 
 

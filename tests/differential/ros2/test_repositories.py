@@ -21,7 +21,7 @@ import pytest
 
 from oracle.ros2_client import requires_ros2_oracle
 
-from .repositories import REPOSITORIES, OracleCache, Report, cases, run
+from .repositories import REPOSITORIES, Case, OracleCache, Report, Status, cases, run, run_case
 
 pytestmark = requires_ros2_oracle
 
@@ -80,6 +80,23 @@ def test_sample_agrees_at_least_as_before(repository: str, request: pytest.Fixtu
     chosen = cases(REPOSITORIES[repository], FILES, CONFIGS)
     assert chosen, "no launch file found"
     _check(run(chosen, _cache(request)), repository, FLOORS[repository])
+
+
+def test_values_over_the_work_limits_are_computed_in_one_configuration(
+    request: pytest.FixtureRequest,
+) -> None:
+    """Universal Robots' controllers file (``allow_substs``) and robot description (a xacro
+    command line) combine too many values over all configurations; in one (the README's
+    ``ur_type:=ur5e``) each is computed again: the nodes that read them agree."""
+    repository = REPOSITORIES["Universal_Robots_ROS2_Driver"]
+    file = repository.root / "ur_robot_driver" / "launch" / "ur_control.launch.py"
+    outcome = run_case(
+        Case(repository.name, file, (("ur_type", "ur5e"), ("robot_ip", "sample"))), _cache(request)
+    )
+    assert outcome.status is not Status.ORACLE_FAILS, outcome.causes
+    assert not any("work limits" in cause.detail for cause in outcome.causes), outcome.causes
+    readers = ("/ros2_control_node ", "/robot_state_publisher ")
+    assert not [c for c in outcome.causes if c.detail.startswith(readers)], outcome.causes
 
 
 @pytest.mark.slow
