@@ -159,21 +159,6 @@ def test_the_layout_names_the_dialects_and_every_module() -> None:
     assert [m for m in GRAPH if layer_of(m, ROWS) is None] == []
 
 
-CORE_TO_DIALECT_PENDING = {
-    # issue 27 item 5: the configuration graph's node entries (outputs/web) still render each
-    # dialect's own fields themselves (ROS 1's typed attributes, ROS 2's merged parameters)
-    # instead of through the dialect
-    "rosvar.outputs.web.entries -> rosvar.ros1.validation",
-    "rosvar.outputs.web.entries -> rosvar.ros2.conventions.parameters",
-    "rosvar.outputs.web.entries -> rosvar.ros2.resolve",
-}
-"""Imports other steps of issue 27 remove, listed so that nothing can join them: the tests
-fail on anything new, and on a listed import once it is gone (then strike it here)."""
-LATER_PENDING = {
-    item for item in CORE_TO_DIALECT_PENDING if item.startswith("rosvar.analyses.")
-}  # the analyses' row comes before the dialects'
-
-
 def test_no_import_from_a_layer_to_a_later_one() -> None:
     wrong = {
         f"{source} -> {target}"
@@ -182,7 +167,7 @@ def test_no_import_from_a_layer_to_a_later_one() -> None:
         # every module imports the package itself first: importing it names nothing new
         if target != ROOT and (layer_of(target, ROWS) or 0) > (layer_of(source, ROWS) or 0)
     }
-    assert wrong == LATER_PENDING
+    assert wrong == set()
 
 
 def test_no_import_cycle() -> None:
@@ -197,7 +182,7 @@ def test_the_core_imports_no_dialect() -> None:
         for dialect in DIALECTS
         if _in(target, dialect) and not _in(source, dialect) and source != REGISTRATION
     }
-    assert wrong == CORE_TO_DIALECT_PENDING
+    assert wrong == set()
 
 
 # -- the checks themselves can fail --------------------------------------------------------

@@ -14,6 +14,7 @@ from rosvar.diagnostics import Severity
 from rosvar.interpreter.resolution import Restriction
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.documents.findings import finding_document
+from rosvar.ros import names
 from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
@@ -44,10 +45,19 @@ LAUNCH = """
   <node pkg="pkg" type="counter.py" name="counter" if="$(arg wrong)"/>
   <node pkg="pkg" type="reader.py" name="reader">
     <param name="rate" value="1" if="$(arg two)"/>
+    <param name="gian" value="2" if="$(arg wrong)"/>
+    <remap from="inptu" to="chatter" if="$(arg wrong)"/>
   </node>
   <node pkg="pkg" type="listener.py" name="listener" if="$(arg two)"/>
 """
 ARGS = ("two", "listen", "wrong")
+READS = {"reader": ("rate", "gain")}
+USES = {  # the names each script uses (SOURCES), resolved in a node of name NODE in /
+    "talker.py": {"/chatter"},
+    "listener.py": {"/chatter"},
+    "counter.py": {"/chatter"},
+    "reader.py": {"/NODE/rate", "/NODE/gain", "/NODE/input"},
+}
 
 
 def _setup(ws: LaunchWorkspace) -> tuple[Analysis, str, Interfaces]:
@@ -77,6 +87,17 @@ def _expected(
             found.add((Check.NO_PROVIDER, name))
     if "/reader/rate" not in resolution.params:
         found.add((Check.PARAM_UNSET, "/reader/rate"))
+    launched = {node.own_name for node in resolution.nodes}
+    for started in resolution.nodes:
+        own_name, executable = started.own_name or "", started.executable or ""
+        uses = {use.replace("NODE", own_name) for use in USES[executable]}
+        for source, _target in started.remaps:
+            if names.ns_join("/", source) not in uses:
+                found.add((Check.REMAP_UNUSED, names.ns_join("/", source)))
+    for name in resolution.params:  # only reader.py reads parameters (SOURCES)
+        node, _, own = name.removeprefix("/").partition("/")
+        if node in launched and own not in READS.get(node, ()):
+            found.add((Check.PARAM_UNREAD, name))
     found |= {(Check.NODE_NAME_CLASH, c.name) for c in resolution.conflicts}
     return found
 
@@ -112,6 +133,16 @@ def test_findings_are_readable(ws: LaunchWorkspace) -> None:
     [unset] = [f for f in findings if f.check is Check.PARAM_UNSET]
     assert analysis.space.describe(unset.condition) == "¬two"
     assert not any(f.name == "/reader/gain" for f in findings)  # it has a default
+    [misspelt] = [f for f in findings if f.check is Check.PARAM_UNREAD]
+    assert (
+        misspelt.message == "/reader/gian is set for /reader, which never reads it (it reads ~gain)"
+    )
+    assert analysis.space.describe(misspelt.condition) == "wrong"
+    [renaming] = [f for f in findings if f.check is Check.REMAP_UNUSED]
+    assert renaming.message == (
+        "/reader never uses /inptu: its remap to chatter renames nothing (it uses /reader/input)"
+    )
+    assert [at.line for at in renaming.locations] == [15, 12]  # the <remap>, then its <node>
     [unfed] = [f for f in findings if f.check is Check.NO_PROVIDER]
     assert unfed.name == "/reader/input"
     assert analysis.space.describe(unfed.condition) in ("¬listen ∨ ¬two", "¬two ∨ ¬listen")
@@ -236,3 +267,28 @@ def test_a_node_without_interface_beside_a_missing_partner_makes_a_note(
     assert message.endswith("(unless /reader/gps, whose interface rosvar does not know, does)")
     body = body.replace('ns="reader"', 'ns="elsewhere"')
     assert [s for _n, s, _m in _findings(ws, body, Check.NO_PROVIDER)] == [Severity.WARNING]
+
+
+def test_a_parameter_nobody_reads_needs_every_read_known(ws: LaunchWorkspace) -> None:
+    """A node that reads a name only known at run time may read the one set: no finding;
+    nor for a node whose interface rosvar does not have, nor in the namespace of a
+    dynamic_reconfigure server (its config's parameters)."""
+    ws.write("scripts/dynamic.py", HEADER + "import sys\nrospy.get_param(sys.argv[1])\n")
+    ws.write(
+        "scripts/tuned.py",
+        HEADER
+        + "from dynamic_reconfigure.server import Server\n"
+        + 'Server(object, None)\nrospy.get_param("~rate", 1)\n',
+    )
+    body = """<node pkg="pkg" type="reader.py" name="reader"><param name="rat" value="1"/></node>
+      <node pkg="pkg" type="dynamic.py" name="dynamic"><param name="x" value="1"/></node>
+      <node pkg="other" type="box" name="box"><param name="x" value="1"/></node>
+      <node pkg="pkg" type="tuned.py" name="tuned"><param name="kp" value="1"/></node>"""
+    found = _findings(ws, body, Check.PARAM_UNREAD)
+    assert found == [
+        (
+            "/reader/rat",
+            Severity.WARNING,
+            "/reader/rat is set for /reader, which never reads it (it reads ~rate)",
+        )
+    ]

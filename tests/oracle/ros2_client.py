@@ -19,6 +19,7 @@ from typing import Any
 import pytest
 
 from rosvar.interpreter.resolution import Resolution
+from rosvar.outputs.documents.resolution import resolution_document
 
 REPOSITORY = Path(__file__).resolve().parents[2]
 ORACLE = REPOSITORY.parent / "shared" / "ros2-oracle"
@@ -70,7 +71,43 @@ def run_oracle(
     done = subprocess.run(command, capture_output=True, text=True, env=ENVIRONMENT, timeout=120)
     if not done.stdout.strip():
         raise RuntimeError(f"the ROS 2 oracle failed: {done.stderr[-2000:]}")
-    return loads_repaired(done.stdout)
+    return restored_lists(loads_repaired(done.stdout))
+
+
+UNREAD_TUPLE = "tag:yaml.org,2002:python/tuple"
+"""What the oracle's merging says of a parameter file launch_ros wrote from a dict holding a
+list: launch_ros dumps the list as a Python tuple, which rcl reads as an array but the
+oracle's own merging (``yaml.safe_load``, its code, not ROS's) refuses, losing the dict."""
+
+
+def restored_lists(result: dict[str, Any]) -> dict[str, Any]:
+    """The oracle's nodes with the parameters of the dicts its merging could not read back
+    (:data:`UNREAD_TUPLE`) merged again, in the order the dicts were given: a dict holding
+    a list is the one it lost; a later dict it read keeps its values."""
+    for node in result.get("nodes", []):
+        if not any(UNREAD_TUPLE in error for error in node.get("parameter_errors") or []):
+            continue
+        lost: dict[str, Any] = {}
+        for given in node.get("inline_parameters") or []:
+            flat = _flattened(given)
+            if any(isinstance(value, list) for value in flat.values()):
+                lost.update(flat)
+            else:
+                for key in flat:
+                    lost.pop(key, None)
+        node["parameters"] = {**(node.get("parameters") or {}), **lost}
+    return result
+
+
+def _flattened(parameters: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
+    """Nested parameter dicts as rcl names them (``a.b``)."""
+    flat: dict[str, Any] = {}
+    for key, value in parameters.items():
+        if isinstance(value, Mapping):
+            flat.update(_flattened(value, f"{prefix}{key}."))
+        else:
+            flat[f"{prefix}{key}"] = value
+    return flat
 
 
 GENERATED = re.compile(r'<generated:\d+>"')
@@ -96,25 +133,32 @@ def loads_repaired(text: str) -> dict[str, Any]:
     return result
 
 
-def rosvar_nodes(result: Resolution) -> dict[str, Any]:
-    """rosvar's resolved nodes as the oracle records them: :data:`KEYS`, named as the oracle
-    names them (``name`` the node's own, ``remappings`` in order); a process has only its
-    ``kind`` and ``cmd``."""
+def rosvar_nodes(document: Mapping[str, Any]) -> dict[str, Any]:
+    """``rosvar resolve --json``'s nodes (``docs/json-schema.md``; in-process, the same
+    document from :func:`~rosvar.outputs.documents.resolution.resolution_document`) as the
+    oracle records them: :data:`KEYS`, a node's own name from its fully qualified one (None
+    where its code names it), ``executable``, ``remappings`` in order; a process has only
+    its ``kind``, ``cmd`` and what it shares with nodes."""
     nodes = []
-    for node in result.nodes:
-        record = {key: node.attributes.get(key) for key in ("kind", "plugin", "container")}
-        record.update(arguments=node.attributes.get("arguments"), cmd=node.attributes.get("cmd"))
-        if node.attributes.get("kind") != "process":
+    for node in document.get("nodes", []):
+        record = {key: node.get(key) for key in ("kind", "plugin", "container", "arguments", "cmd")}
+        if node.get("kind") != "process":
+            fqn = node.get("fqn")
             record.update(
-                package=node.package,
-                executable=node.executable,
-                name=node.own_name,
-                namespace=node.namespace,
-                remappings=[list(pair) for pair in node.remaps],
-                parameters=node.parameters,
+                package=node.get("package"),
+                executable=node.get("type"),
+                name=None if fqn is None else str(fqn).rsplit("/", 1)[-1],
+                namespace=node.get("namespace"),
+                remappings=[list(pair) for pair in node.get("remaps", [])],
+                parameters=node.get("parameters"),
             )
         nodes.append(record)
     return {"nodes": nodes}
+
+
+def resolution_nodes(result: Resolution) -> dict[str, Any]:
+    """In-process, rosvar's nodes by the same route: the ``resolve --json`` document."""
+    return rosvar_nodes(resolution_document(result))
 
 
 MISSING_EXECUTABLE = re.compile(r"/__missing_exec__/([^\s\\\"'/]+)")

@@ -70,6 +70,58 @@ def test_find_exec_is_kept_as_its_text_with_a_warning(tmp_path: Path) -> None:
     assert [error.code for error in result.errors] == ["substitution-invalid"]
 
 
+def test_package_paths_of_an_installed_package_are_below_its_prefix(tmp_path: Path) -> None:
+    """``$(find-pkg-prefix)`` and ``$(exec-in-pkg)`` of an installed package are its install
+    prefix and ``lib/<package>`` there; a source package's folder stands for its prefix."""
+    (tmp_path / "ws" / "package.xml").parent.mkdir()
+    (tmp_path / "ws" / "package.xml").write_text(MANIFEST)
+    installed = tmp_path / "opt" / "share" / "q"
+    installed.mkdir(parents=True)
+    (installed / "package.xml").write_text(MANIFEST.replace("<name>p<", "<name>q<"))
+    file = tmp_path / "ws" / "a.launch.xml"
+    file.write_text(
+        """<launch>
+          <executable cmd="$(exec-in-pkg run q) $(find-pkg-prefix q)" name="a"/>
+          <executable cmd="$(exec-in-pkg run p) $(find-pkg-prefix p)" name="b"/>
+        </launch>"""
+    )
+    workspace = discover([str(tmp_path / "ws")], deps=[str(tmp_path / "opt" / "share")])
+    result = Analysis(workspace).resolve([str(file)])
+    prefix, source = tmp_path / "opt", tmp_path / "ws"
+    assert [node.attributes["cmd"] for node in result.nodes] == [
+        [f"{prefix}/lib/q/run", str(prefix)],
+        [f"{source}/lib/p/run", str(source)],
+    ]
+
+
+def test_file_content_is_read_only_inside_the_workspace(tmp_path: Path) -> None:
+    """``$(file-content)`` reads through the workspace's gate: a file outside it is refused
+    and nothing of it is told; a relative path (the launching directory's) is not known: the
+    parameter is left out."""
+    (tmp_path / "ws").mkdir()
+    (tmp_path / "ws" / "package.xml").write_text(MANIFEST)
+    (tmp_path / "ws" / "robot.urdf").write_text("<robot name='r'/>")
+    (tmp_path / "secret.txt").write_text("SECRET")
+    file = tmp_path / "ws" / "a.launch.xml"
+    file.write_text(
+        """<launch><node pkg="p" exec="e" name="n">
+          <param name="inside" value="$(file-content $(find-pkg-share p)/robot.urdf)"/>
+        </node>
+        <node pkg="p" exec="e" name="m">
+          <param name="outside" value="$(file-content $(dirname)/../secret.txt)"/></node>
+        <node pkg="p" exec="e" name="k">
+          <param name="relative" value="$(file-content robot.urdf)"/></node>
+        </launch>"""
+    )
+    result = Analysis(discover([str(tmp_path / "ws")])).resolve([str(file)])
+    assert [node.parameters for node in result.nodes] == [{"inside": "<robot name='r'/>"}, {}, {}]
+    assert [error.code for error in result.errors] == [
+        "file-outside-workspace",
+        "substitution-unsupported",
+    ]
+    assert "SECRET" not in repr(result.errors)
+
+
 _TEXTS = (
     "lit",
     "$(var a)",

@@ -510,6 +510,8 @@ ROS2_REPOSITORIES = {
     "image_pipeline": (9, 17, 0, 0),
     "demos": (20, 12, 1, 1),
     "autoware.universe": (238, 22, 236, 0),
+    "launch_param_builder": (1, 0, 0, 0),
+    "xacro": (1, 0, 0, 0),
 }
 
 

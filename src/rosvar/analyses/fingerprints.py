@@ -3,8 +3,9 @@
 A fingerprint must survive what does not change the finding: another checkout path or
 machine, another run, an unrelated edit that moves lines. So it is made of the finding's
 check, its resolved name, its message (built from resolved names) and its files, each
-relative to its package (``husky_control/launch/control.launch``), never of line numbers
-or absolute paths. Two findings alike in all of these share a fingerprint: a baseline
+relative to its package (``husky_control/launch/control.launch``; outside every package,
+to the workspace root given in that place of the command line), never of line numbers or
+absolute paths. Two findings alike in all of these share a fingerprint: a baseline
 counts them (:func:`new_findings`).
 """
 
@@ -25,12 +26,14 @@ VERSION = "rosvar/v1"
 
 
 class Fingerprints:
-    """The fingerprints of findings of one workspace (its packages place the files)."""
+    """The fingerprints of findings of one workspace (its packages place the files, else
+    its roots: a file a launch names that no package holds)."""
 
-    def __init__(self, packages: Iterable[Package]) -> None:
-        self._roots = sorted(
-            ((os.path.abspath(p.path), p.name) for p in packages), key=lambda r: -len(r[0])
-        )
+    def __init__(self, packages: Iterable[Package], roots: Sequence[str] = ()) -> None:
+        places = [(os.path.abspath(p.path), p.name) for p in packages]
+        folders = [root if os.path.isdir(root) else os.path.dirname(root) for root in roots]
+        places += [(os.path.abspath(f), f"<root{i}>") for i, f in enumerate(folders)]
+        self._roots = sorted(places, key=lambda r: -len(r[0]))  # the innermost place first
 
     def relative(self, file: str) -> str:
         """``file`` as ``package/path`` inside its package; a URL as it is; else its name."""
@@ -38,12 +41,16 @@ class Fingerprints:
             return file
         if not os.path.isabs(file) and os.sep in file and " " in file:
             # a described place ("the text of the parameter at /ws/pkg/f.launch:15:3")
-            return _NUMBERS.sub("", self._within(file))
+            return self._place(file)
         absolute = os.path.abspath(file)
         for root, name in self._roots:
             if absolute.startswith(root + os.sep):
                 return f"{name}/{os.path.relpath(absolute, root)}".replace(os.sep, "/")
         return os.path.basename(absolute)
+
+    def _place(self, text: str) -> str:
+        """``text`` with its package folders as package names and no trailing ``:line:col``."""
+        return _NUMBERS.sub("", self._within(text))
 
     def _within(self, text: str) -> str:
         """``text`` with each package folder written as its package's name."""
@@ -54,7 +61,7 @@ class Fingerprints:
     def of(self, finding: Finding) -> str:
         parts = [
             str(finding.check),
-            finding.name,
+            self._place(finding.name),  # an `unread` finding names a file or a place in one
             self._within(finding.message),  # a message naming a file names it in its package
             self.relative(finding.file),
             *(self.relative(location.file) for location in finding.locations),

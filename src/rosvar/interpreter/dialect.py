@@ -20,7 +20,7 @@ if TYPE_CHECKING:
     from rosvar.frontends.entity import ParseResult
     from rosvar.frontends.xml import Snapshot
     from rosvar.interpreter.model import LaunchModel, NodeSchema
-    from rosvar.interpreter.resolution import Checks, Resolver
+    from rosvar.interpreter.resolution import Checks, NodeFields, Resolver
     from rosvar.logic.conditions import ConditionSpace
     from rosvar.logic.inputs import Slot
     from rosvar.workspace import Workspace
@@ -57,6 +57,12 @@ class Dialect(Protocol):
     def checks(self) -> Checks | None:
         """What its launch tool checks of a node's strings (None: nothing the graph checks
         of a typed text)."""
+        ...
+
+    @property
+    def node_fields(self) -> NodeFields:
+        """What its launch tool holds of a node in one configuration, beyond what every
+        dialect has (the configuration graph's entries show it)."""
         ...
 
     def interpret(

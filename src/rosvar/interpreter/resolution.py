@@ -18,7 +18,14 @@ from typing import Protocol
 
 from rosvar.diagnostics import Diagnostic, Location
 from rosvar.files import Confinement
-from rosvar.interpreter.model import DeferredValue, LaunchModel, Raw, YamlDecl, anon_pattern
+from rosvar.interpreter.model import (
+    DeferredValue,
+    LaunchModel,
+    NodeDecl,
+    Raw,
+    YamlDecl,
+    anon_pattern,
+)
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
@@ -82,6 +89,17 @@ class Checks:
     """A test's own attributes."""
     remap: Callable[[str | None, str | None, Location], None]
     """A remap's two names."""
+
+
+NodeFields = Callable[
+    [NodeDecl, Mapping[str, str | None], Sequence[tuple[str | None, str | None]], Confinement],
+    dict[str, object],
+]
+"""What a dialect's launch tool holds of a node, beyond what every dialect has, given the
+strings of one configuration: the node's fields and its parameter settings in order (``(name,
+value)``, or ``(None, file)``), read inside the workspace's confinement. What is not valid
+(yet: an arg still open) is left out, as the configuration graph's errors say why. The graph's
+entries show a node with it."""
 
 
 @dataclass

@@ -17,7 +17,7 @@ from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.dialect import Loader
 from rosvar.interpreter.interpretation import Handler, Interpretation, Substituter
 from rosvar.interpreter.model import LaunchModel, NodeSchema
-from rosvar.interpreter.resolution import Checks, Resolver
+from rosvar.interpreter.resolution import Checks, NodeFields, Resolver
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import Slot
 from rosvar.ros.version import RosVersion
@@ -44,6 +44,7 @@ class Semantics(Generic[S]):
     entry: EntryWalk[S]
     nodes: NodeSchema
     resolver: Resolver
+    node_fields: NodeFields
     checks: Checks | None = None
     tags: dict[str, Handler[S]] = field(default_factory=dict)
     bind: Callable[[Workspace], Loader] | None = None

@@ -486,8 +486,13 @@ class ValueBudget:
 
     def __init__(self, space: ConditionSpace, note: Callable[[str], None]) -> None:
         self.space = space
-        self.note = note
+        self._note = note
         self.combinations = 0  # spent from MAX_FILE_COMBINATIONS
+        self.notes = 0  # notes made: a memo keeps no value that made one
+
+    def note(self, message: str) -> None:
+        self.notes += 1
+        self._note(message)
 
     def affordable(self, text: str, choices: Sequence[Choice[object]]) -> bool:
         """Whether combining ``choices`` for ``text`` stays within the work limits (and,

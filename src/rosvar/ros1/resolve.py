@@ -10,9 +10,11 @@ with both locations.
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping, Sequence
+from contextlib import suppress
 
 from rosvar.analyses.json_values import json_value
 from rosvar.diagnostics import Location
+from rosvar.files import Confinement
 from rosvar.interpreter.model import DeferredValue, LaunchModel, NodeDecl, ParamDecl, Raw
 from rosvar.interpreter.resolution import (
     Checks,
@@ -234,6 +236,24 @@ def test_fields(raw: Mapping[str, str | None], location: Location) -> dict[str, 
         "retry": retry,
         "output": "log",
     }
+
+
+def node_fields(
+    node: NodeDecl,
+    raw: Mapping[str, str | None],
+    _parameters: Sequence[tuple[str | None, str | None]],
+    _confinement: Confinement,
+) -> dict[str, object]:
+    """A node's (a test's) typed fields as roslaunch's ``Node`` (``Test``) holds them, those
+    that are valid; its parameters are the graph's own elements in ROS 1."""
+    try:
+        fields = node_values(raw)
+    except ValueError:
+        fields = {}
+    if node.is_test:
+        with suppress(ResolutionError):
+            fields.update(test_fields(raw, node.location))
+    return fields
 
 
 ROS1_CHECKS = Checks(node=typed_node, test=test_fields, remap=check_remap)

@@ -8,13 +8,16 @@ from collections.abc import Callable
 from rosvar.interpreter.interpretation import Handler
 from rosvar.interpreter.semantics import Semantics
 from rosvar.ros.version import RosVersion
-from rosvar.ros2 import boolean_substitutions  # noqa: F401 - registers their handlers
+from rosvar.ros2 import (
+    boolean_substitutions,  # noqa: F401 - registers their handlers
+    parameter_checks,  # noqa: F401 - registers ROS 2's own checks
+)
 from rosvar.ros2.api.actions import ACTIONS
 from rosvar.ros2.context import Context
 from rosvar.ros2.entry import walk_entry
 from rosvar.ros2.frontends import registry
 from rosvar.ros2.nodes import ROS2_NODES
-from rosvar.ros2.resolve import resolve
+from rosvar.ros2.resolve import node_fields, resolve
 from rosvar.ros2.substitutions import Ros2Substituter
 
 ROS2: Semantics[Context] = Semantics(
@@ -24,6 +27,7 @@ ROS2: Semantics[Context] = Semantics(
     walk_entry,
     ROS2_NODES,
     resolve,
+    node_fields,
     bind=registry.workspace_loader,
 )
 

@@ -25,13 +25,13 @@ where it stands.
 from __future__ import annotations
 
 import copy
-import weakref
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Generic, TypeVar
 
 from rosvar.diagnostics import Diagnostic, DiagnosticSink
 from rosvar.frontends.entity import Entity
+from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.interpretation import (
     MAX_INCLUDE_DEPTH,
     MAX_INCLUDES,
@@ -48,7 +48,6 @@ from rosvar.interpreter.model import (
 )
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, leaf_key
-from rosvar.logic.conditions import ConditionSpace
 from rosvar.memo import Memo
 from rosvar.ros2.context import Configuration, Context, GlobalParam, GlobalRemap, Probe
 from rosvar.ros2.substitutions import Ros2Substituter
@@ -178,15 +177,13 @@ class _Walks:
     kept: int = 0
 
 
-_tables: weakref.WeakKeyDictionary[ConditionSpace, Memo[object, _Walks]] = (
-    weakref.WeakKeyDictionary()
-)
-
-
-def _table(space: ConditionSpace) -> Memo[object, _Walks]:
-    table = _tables.get(space)
-    if table is None:
-        table = _tables[space] = Memo(CAPACITY)
+def _table(files: Snapshot) -> Memo[object, _Walks]:
+    """The analysis's table of recorded walks, kept with the files it read: keyed by the
+    parsed files, it must not outlive them, and a table on the condition space made a
+    cycle with it, whose collection freed BDD nodes after their manager."""
+    table = files.tables.get(__name__)
+    if not isinstance(table, Memo):
+        table = files.tables[__name__] = Memo(CAPACITY)
     return table
 
 
@@ -285,7 +282,7 @@ def walk_included(
     if substituter is None:
         _walk(it, root, context, file, path)
         return
-    table = _table(it.space)
+    table = _table(it.files)
     key = _fixed(root, file, it, context)
     walks = table.get(key)
     if walks is None or walks.entity is not root:

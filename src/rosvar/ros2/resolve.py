@@ -239,3 +239,33 @@ def parameter_entries(text: str, path: str) -> list[tuple[str, dict[str, object]
         return file_entries(bounded_yaml.safe_load(text))
     except yaml.YAMLError as error:
         raise ValueError(f"parameter file {os.path.basename(path)}: {error}") from None
+
+
+def node_fields(
+    node: NodeDecl,
+    text: Mapping[str, str | None],
+    parameters: Sequence[tuple[str | None, str | None]],
+    confinement: Confinement,
+) -> dict[str, object]:
+    """A node's name, namespace and parameters as ``ros2 launch`` composes them: the pushed
+    namespace, the node's own, its parameters merged in order (as :func:`resolve`'s). A node
+    with no name takes one from its executable at run time: it is shown as ``⟨EXEC⟩`` in its
+    namespace, its ``fqn`` null. A parameter not known yet (an arg still open) or a file not
+    readable is left out."""
+    fqn = node.schema.full_name.text(text)
+    sources: list[Source] = []
+    for first, second in parameters:
+        try:
+            if not first:
+                sources.append(Source(entries=tuple(parameter_file(second or "", confinement))))
+            else:
+                sources.append(Source(entries=((ALL_NODES, {first: typed(second or "")}),)))
+        except ValueError:
+            continue
+    return {
+        "name": node.schema.label.text(text),
+        "fqn": fqn,
+        "namespace": node.schema.namespace.text(text) or "/",
+        "parameters": effective(fqn, sources),
+        "trigger": node.trigger,
+    }

@@ -17,6 +17,7 @@ import weakref
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+from rosvar.files import FileCode, FileRefused, read_file
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
@@ -191,7 +192,17 @@ def substitution(name: str) -> Callable[[Handler], Handler]:
 
 
 PURE = frozenset(
-    {"var", "eval", "find-pkg-share", "find-pkg-prefix", "dirname", "filename", PATH_JOIN, UNKNOWN}
+    {
+        "var",
+        "eval",
+        "find-pkg-share",
+        "find-pkg-prefix",
+        "exec-in-pkg",
+        "dirname",
+        "filename",
+        PATH_JOIN,
+        UNKNOWN,
+    }
 )
 """Substitutions whose value follows from their arguments, the launch configurations they
 name and the file's name (the workspace is the space's): a text made only of them is
@@ -253,12 +264,9 @@ class Ros2Substituter:
     def __init__(self, host: Interpretation[Context]) -> None:
         self.host = host
         self.space = host.space
-        self.budget = ValueBudget(host.space, self._note)
-        self.notes = 0  # value-too-complex notes made: a value that made one is not kept
-
-    def _note(self, message: str) -> None:
-        self.notes += 1
-        self.host.note_too_complex(message)
+        # the host's method, not one of this object: a cycle through the budget would hold
+        # the analysis's conditions until a collection freed them after their manager
+        self.budget = ValueBudget(host.space, host.note_too_complex)
 
     def resolve(self, text: str | None, context: Context) -> Choice[Value] | None:
         if text is None:
@@ -284,10 +292,10 @@ class Ros2Substituter:
             context.unset_reads |= known[1]
             return known[0]
         unset_reads, context.unset_reads = context.unset_reads, set()
-        notes, spent = self.notes, self.budget.combinations
+        notes, spent = self.budget.notes, self.budget.combinations
         try:
             value = self.template(template, context, text)
-            if len(value.branches) <= RESOLVED_BRANCHES and self.notes == notes:
+            if len(value.branches) <= RESOLVED_BRANCHES and self.budget.notes == notes:
                 spent = self.budget.combinations - spent
                 memo[key] = (value, frozenset(context.unset_reads), spent)
         finally:
@@ -404,23 +412,47 @@ def _env(host: Interpretation[Context], context: Context, args: list[Raw]) -> Ch
     return value.map(pick)
 
 
-def _package(host: Interpretation[Context], args: list[Raw], what: str) -> Choice[Value]:
+def _package(
+    host: Interpretation[Context], args: list[Raw], what: str, prefix: bool = False
+) -> Choice[Value]:
     if len(args) != 1 or not isinstance(args[0], str):
         return _fail(host, f"$({what}) takes one argument", "substitution-invalid")
-    path = host.find_package(args[0])
+    path = _prefix(host, args[0]) if prefix else host.find_package(args[0])
     if path is None:
         return _fail(host, f"package '{args[0]}' not found", "package-not-found")
     return Choice.const(host.space, path)
 
 
+def _prefix(host: Interpretation[Context], package: str) -> str | None:
+    """An installed package's install prefix; a source package's folder stands for it, as for
+    its share folder (its ``lib/`` is what ``colcon build`` would install)."""
+    return host.workspace.find_prefix(package) or host.find_package(package)
+
+
 @substitution("find-pkg-share")
-def _share(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+def _find_share(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     return _package(host, args, "find-pkg-share")  # the source folder stands for the share
 
 
 @substitution("find-pkg-prefix")
-def _prefix(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
-    return _package(host, args, "find-pkg-prefix")
+def _find_prefix(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+    return _package(host, args, "find-pkg-prefix", prefix=True)
+
+
+@substitution("exec-in-pkg")
+def _exec_in_pkg(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+    """``lib/PACKAGE/EXECUTABLE`` below the package's prefix: launch also checks that the
+    built executable is there, which a source workspace cannot show, so that is left to
+    the install."""
+    if len(args) != 2 or not all(isinstance(arg, str) for arg in args):
+        return _fail(
+            host, "$(exec-in-pkg) takes an executable and a package", "substitution-invalid"
+        )
+    executable, package = str(args[0]), str(args[1])
+    prefix = _prefix(host, package)
+    if prefix is None:
+        return _fail(host, f"package '{package}' not found", "package-not-found")
+    return Choice.const(host.space, posixpath.join(prefix, "lib", package, executable))
 
 
 @substitution("dirname")
@@ -431,6 +463,32 @@ def _dirname(host: Interpretation[Context], context: Context, args: list[Raw]) -
 @substitution("filename")
 def _filename(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     return Choice.const(host.space, os.path.abspath(context.filename))
+
+
+@substitution("file-content")
+def _file_content(
+    host: Interpretation[Context], context: Context, args: list[Raw]
+) -> Choice[Value]:
+    """The text of the file, read through the workspace's gate (launch reads it when the
+    substitution is performed; a file outside the workspace is refused, never opened)."""
+    if len(args) != 1 or not isinstance(args[0], str):
+        return _fail(host, "$(file-content) takes a path", "substitution-invalid")
+    path = args[0]
+    if not os.path.isabs(path):
+        return _fail(
+            host,
+            f"$(file-content {path}): a relative path reads the launching directory, not known",
+            UNSUPPORTED,
+        )
+    try:
+        text = read_file(path, host.workspace.confinement()).decode()
+    except FileRefused as error:
+        return _fail(host, f"$(file-content {path}): {error}", error.code)
+    except (OSError, UnicodeDecodeError) as error:
+        return _fail(
+            host, f"$(file-content {path}): file not readable: {error}", FileCode.UNREADABLE
+        )
+    return Choice.const(host.space, text)
 
 
 @substitution("command")

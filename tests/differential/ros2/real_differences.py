@@ -12,7 +12,7 @@ import json
 import sys
 from pathlib import Path
 
-from oracle.ros2_client import canonical_nodes, rosvar_nodes, run_oracle
+from oracle.ros2_client import canonical_nodes, resolution_nodes, run_oracle
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
@@ -53,7 +53,8 @@ def main(repositories: list[str]) -> None:
                     differences.append(f"{arguments}: rosvar fails: {result.errors[0]}")
                     continue
                 difference = first_difference(
-                    canonical_nodes(expected), canonical_nodes(rosvar_nodes(result))
+                    canonical_nodes(expected),
+                    canonical_nodes(resolution_nodes(result)),
                 )
                 if difference:
                     differences.append(f"{arguments}: {difference}")

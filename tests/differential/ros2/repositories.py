@@ -43,7 +43,14 @@ from pathlib import Path
 from typing import Any
 
 import rosvar
-from oracle.ros2_client import ENVIRONMENT, ORACLE, canonical_nodes, run_oracle
+from oracle.ros2_client import (
+    ENVIRONMENT,
+    ORACLE,
+    canonical_nodes,
+    restored_lists,
+    rosvar_nodes,
+    run_oracle,
+)
 
 from ..harness import message_pattern
 from .samples import Config, read, sample
@@ -102,17 +109,20 @@ def _is_launch_file(path: Path, dot_launch: bool) -> bool:
     return mark in path.read_text(encoding="utf-8", errors="replace")
 
 
+MOVEIT_DEPS = ("launch_param_builder", "xacro")
+"""What ``moveit_configs_utils`` imports (``launch_param_builder``, which imports ``xacro``)."""
+
 REPOSITORIES = {
     r.name: r
     for r in (
-        Repository("Universal_Robots_ROS2_Driver", deps=("moveit2",)),  # moveit_configs_utils
+        Repository("Universal_Robots_ROS2_Driver", deps=("moveit2", *MOVEIT_DEPS)),
         Repository("autoware.universe"),
         Repository("clearpath_common"),
         Repository("demos"),
         Repository("husky"),
         Repository("image_pipeline"),
-        Repository("moveit2"),
-        Repository("moveit2_tutorials"),
+        Repository("moveit2", deps=MOVEIT_DEPS),
+        Repository("moveit2_tutorials", deps=("moveit2", *MOVEIT_DEPS)),
         Repository("realsense-ros"),
         Repository("ros2_control_demos"),
         Repository("ros_gz", dot_launch=True),
@@ -211,9 +221,8 @@ class OracleCache:
             return run_oracle(case.file, case.arguments, repository.package_paths, strict=False)
         key = json.dumps([self._digest(repository), str(case.file), case.config])
         path = self.directory / f"{hashlib.sha256(key.encode()).hexdigest()}.json"
-        if path.is_file():
-            cached: dict[str, Any] = json.loads(path.read_text(encoding="utf-8"))
-            return cached
+        if path.is_file():  # kept as the client gave it (its repairs run again: idempotent)
+            return restored_lists(json.loads(path.read_text(encoding="utf-8")))
         answer = run_oracle(case.file, case.arguments, repository.package_paths, strict=False)
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(json.dumps(answer), encoding="utf-8")
@@ -254,28 +263,13 @@ def run_rosvar(case: Case, deps: Path | None) -> tuple[dict[str, Any] | None, st
 
 
 def oracle_shape(document: Mapping[str, Any]) -> dict[str, Any]:
-    """``rosvar resolve --json`` (one shape for both ROS versions, docs/json-schema.md) in
-    the oracle's: a node's own name (None where its code names it), ``executable``,
-    ``remappings``; an error's place as ``location``."""
-    nodes = []
-    for node in document.get("nodes", []):
-        record = {key: node.get(key) for key in ("kind", "plugin", "container", "arguments", "cmd")}
-        if node.get("kind") != "process":
-            fqn = node.get("fqn")
-            record.update(
-                package=node.get("package"),
-                executable=node.get("type"),
-                name=None if fqn is None else str(fqn).rsplit("/", 1)[-1],
-                namespace=node.get("namespace"),
-                remappings=[list(pair) for pair in node.get("remaps", [])],
-                parameters=node.get("parameters"),
-            )
-        nodes.append(record)
+    """``rosvar resolve --json`` in the oracle's shape: its nodes as :func:`rosvar_nodes`
+    makes them, an error's place as ``location``."""
     errors = [
         {**error, "location": {k: error.get(k) for k in ("file", "line", "col")}}
         for error in document.get("errors") or []
     ]
-    return {**document, "nodes": nodes, "errors": errors}
+    return {**document, **rosvar_nodes(document), "errors": errors}
 
 
 def run_case(case: Case, oracle: OracleCache) -> Outcome:

@@ -11,7 +11,7 @@ from oracle.ros2_client import (
     ORACLE,
     canonical_nodes,
     requires_ros2_oracle,
-    rosvar_nodes,
+    resolution_nodes,
     run_oracle,
 )
 from rosvar.interpreter.workspace_models import Analysis
@@ -49,4 +49,4 @@ def test_example_matches_the_oracle(suffix: str, arguments: dict[str, str]) -> N
     )  # the given values as known slots, as `rosvar resolve` makes them
     result = analysis.resolve([str(file)], arguments)
     assert result.ok, result.errors
-    assert canonical_nodes(rosvar_nodes(result)) == canonical_nodes(expected)
+    assert canonical_nodes(resolution_nodes(result)) == canonical_nodes(expected)

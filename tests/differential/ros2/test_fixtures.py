@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from oracle.ros2_client import canonical_nodes, requires_ros2_oracle, rosvar_nodes, run_oracle
+from oracle.ros2_client import canonical_nodes, requires_ros2_oracle, resolution_nodes, run_oracle
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
@@ -874,6 +874,80 @@ def generate_launch_description():
         },
         [{}, {"dir": "/opt", "ns": "r1"}, {"ns": "/abs"}],
     ),
+    "package-executables-and-file-contents": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="exe" default="talker"/>
+            <arg name="file" default="robot.urdf"/>
+            <executable cmd="$(exec-in-pkg $(var exe) pkg) --depth 1" name="monitor"/>
+            <node pkg="pkg" exec="x" name="x">
+              <param name="robot_description"
+                     value="$(file-content $(find-pkg-share pkg)/$(var file))"/>
+            </node>
+          </launch>""",
+            "main.launch.yaml": """launch:
+- arg: {name: exe, default: talker}
+- arg: {name: file, default: robot.urdf}
+- executable: {cmd: "$(exec-in-pkg $(var exe) pkg) --depth 1", name: monitor}
+- node:
+    pkg: pkg
+    exec: x
+    name: x
+    param:
+    - {name: robot_description, value: "$(file-content $(find-pkg-share pkg)/$(var file))"}
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, ExecuteProcess
+from launch.substitutions import FileContent, LaunchConfiguration as V, PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import ExecutableInPackage, FindPackageShare
+
+
+def generate_launch_description():
+    urdf = FileContent(PathJoinSubstitution([FindPackageShare('pkg'), V('file')]))
+    return LaunchDescription([
+        DeclareLaunchArgument('exe', default_value='talker'),
+        DeclareLaunchArgument('file', default_value='robot.urdf'),
+        ExecuteProcess(cmd=[ExecutableInPackage(V('exe'), 'pkg'), '--depth', '1'],
+                       name='monitor'),
+        Node(package='pkg', executable='x', name='x',
+             parameters=[{'robot_description': urdf}]),
+    ])
+""",
+            "robot.urdf": '<robot name="r">\n  <link name="base"/>\n</robot>\n',
+            "other.urdf": "<robot name='o'/>",
+        },
+        [{}, {"exe": "listener", "file": "other.urdf"}],
+    ),
+    "list-parameters": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="first" default="a"/>
+            <node pkg="pkg" exec="x" name="x">
+              <param name="rate" value="1"/>
+              <param name="names" value="[$(var first), b]"/>
+              <param name="numbers" value="[1, 2]"/>
+              <param name="group.flags" value="[true, false]"/>
+              <param name="rate" value="2"/>
+            </node>
+          </launch>""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration as V
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('first', default_value='a'),
+        Node(package='pkg', executable='x', name='x',
+             parameters=[{'rate': 1}, {'names': [V('first'), 'b'], 'numbers': [1, 2]},
+                         {'group': {'flags': [True, False]}}, {'rate': 2}]),
+    ])
+""",
+        },
+        [{}, {"first": "c"}],
+    ),
     "actions-that-start-nothing": (
         {
             "main.launch.xml": """<launch>
@@ -936,5 +1010,21 @@ def test_fixture_matches_the_oracle(case: str, tmp_path: Path) -> None:
         result = analysis.resolve([str(main)], arguments)
         assert result.ok == expected["ok"], (main.name, arguments, expected.get("error"))
         if result.ok:
-            nodes = canonical_nodes(rosvar_nodes(result))
+            nodes = canonical_nodes(resolution_nodes(result))
             assert nodes == canonical_nodes(expected), (main.name, arguments)
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_the_json_names_nodes_as_the_resolution(case: str, tmp_path: Path) -> None:
+    """The comparison reads rosvar's nodes from the ``resolve --json`` document, which names
+    a node by its fully qualified name only: the last part of it is the resolution's own
+    name of the node (None where its code names it) on every fixture."""
+    files, samples = CASES[case]
+    package = _workspace(tmp_path, files)
+    workspace = discover([str(package.parent)])
+    for main, arguments in itertools.product(entries(package), samples):
+        analysis = Analysis(workspace, extra_values={k: [v] for k, v in arguments.items()})
+        result = analysis.resolve([str(main)], arguments)
+        nodes = [node for node in result.sorted_nodes() if node.attributes["kind"] != "process"]
+        named = [n for n in resolution_nodes(result)["nodes"] if n["kind"] != "process"]
+        assert [n["name"] for n in named] == [n.own_name for n in nodes], (main.name, arguments)

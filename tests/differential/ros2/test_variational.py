@@ -15,7 +15,7 @@ from oracle.ros2_client import (
     ORACLE,
     canonical_nodes,
     requires_ros2_oracle,
-    rosvar_nodes,
+    resolution_nodes,
     run_oracle,
 )
 from rosvar.interpreter.workspace_models import Analysis
@@ -56,7 +56,7 @@ def check(
     result = analysis.resolve([str(file)], arguments)
     assert result.ok == expected["ok"], (arguments, expected.get("error"), result.errors)
     if result.ok:
-        assert canonical_nodes(rosvar_nodes(result)) == canonical_nodes(expected), arguments
+        assert canonical_nodes(resolution_nodes(result)) == canonical_nodes(expected), arguments
 
 
 @pytest.mark.parametrize("case", sorted(CASES))

@@ -142,17 +142,11 @@ def test_frontend_substitutions_not_modelled_fail_with_their_reason(tmp_path: Pa
     it = launch(
         tmp_path,
         """<launch>
-  <node pkg="pkg" exec="x" name="a" args="$(file-content /etc/hostname)"/>
   <node pkg="pkg" exec="x" name="b" args="$(log_dir)"/>
 </launch>""",
     )
     errors = [(e.code, e.message) for e in it.model.errors]
     assert errors == [
-        (
-            "substitution-unsupported",
-            "<node> attribute 'args': $(file-content) (substitution: the text of a file read "
-            "at launch time, which rosvar does not read) is not modelled",
-        ),
         (
             "substitution-unsupported",
             "<node> attribute 'args': $(launch_log_dir) (substitution: the launch's log folder "

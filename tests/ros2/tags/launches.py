@@ -13,7 +13,7 @@ from typing import Any
 import pytest
 
 from differential.ros2.test_fixtures import PACKAGE_XML
-from oracle.ros2_client import ORACLE, canonical_nodes, rosvar_nodes, run_oracle
+from oracle.ros2_client import ORACLE, canonical_nodes, resolution_nodes, run_oracle
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
@@ -64,7 +64,7 @@ class Launch:
         result = known.resolve([str(self.main)], arguments)
         assert result.ok == expected["ok"], (arguments, expected.get("error"), result.errors)
         if result.ok:
-            assert canonical_nodes(rosvar_nodes(result)) == canonical_nodes(expected), arguments
+            assert canonical_nodes(resolution_nodes(result)) == canonical_nodes(expected), arguments
         return expected
 
 

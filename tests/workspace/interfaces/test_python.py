@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from rosvar.diagnostics import DiagnosticSink
-from rosvar.workspace.interfaces.model import Expression, NamedBy, Role
+from rosvar.workspace.interfaces.model import RECONFIGURED, Expression, NamedBy, Role
 from rosvar.workspace.interfaces.python import extract, extract_node
 
 SCRIPT = """\
@@ -138,3 +138,14 @@ def test_the_nodes_own_name(tmp_path: Path) -> None:
         ("action_servers", "~"),
         ("publishes", "~/state"),
     ]
+
+
+def test_a_dynamic_reconfigure_server_reads_its_namespace(tmp_path: Path) -> None:
+    path = tmp_path / "node.py"
+    path.write_text(
+        "import rospy\nfrom dynamic_reconfigure.server import Server\n"
+        "from pkg.cfg import PidConfig\n"
+        "Server(PidConfig, None)\nServer(PidConfig, None, namespace='~pid')\n"
+    )
+    reads = [(e.name, e.default, e.location.line) for e in extract(str(path), DiagnosticSink())]
+    assert reads == [("~", RECONFIGURED, 4), ("~pid", RECONFIGURED, 5)]

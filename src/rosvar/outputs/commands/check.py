@@ -51,7 +51,10 @@ def checked(options: argparse.Namespace, paths: Sequence[str] | None = None) -> 
     findings = check_models(
         analysis.space, models, interfaces, analysis.workspace.confinement(), Simulation(analysis)
     )
-    prints = Fingerprints(analysis.workspace.packages.values())
+    workspace = analysis.workspace
+    prints = Fingerprints(
+        workspace.packages.values(), [*workspace.roots, *workspace.dependency_roots]
+    )
     unknown = uninterfaced(analysis.space, models, interfaces)
     return Checked(analysis, len(models), findings, [prints.of(f) for f in findings], unknown)
 

@@ -5,7 +5,7 @@ content. The engine keeps contents in raw values and conditions, and takes
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 from functools import singledispatch
 from typing import TypeVar, cast
 
@@ -29,13 +29,9 @@ from rosvar.configuration.graph import (
 )
 from rosvar.configuration.presence import Presence
 from rosvar.diagnostics import Location
-from rosvar.files import Confinement
 from rosvar.interpreter.dialect import dialect_of
-from rosvar.interpreter.model import NodeDecl, Raw
+from rosvar.interpreter.model import Raw
 from rosvar.interpreter.resolution import ResolutionError
-from rosvar.ros1.validation import node_values
-from rosvar.ros2.conventions.parameters import ALL_NODES, Source, effective, typed
-from rosvar.ros2.resolve import parameter_file
 from rosvar.workspace.interfaces.model import Role
 
 C = TypeVar("C", bound=Content)
@@ -90,44 +86,10 @@ def _error(content: ErrorContent, _values: Values, _parts: Sequence[Shown]) -> l
     return [{"code": content.code, "message": content.message, **content.location.to_json()}]
 
 
-def _ros2_fields(
-    node: NodeDecl,
-    confinement: Confinement,
-    text: Mapping[str, str | None],
-    parameters: Sequence[tuple[str | None, str | None]],
-) -> Fields:
-    """A ROS 2 node's name, namespace and parameters as ``ros2 launch`` composes them: the
-    pushed namespace, the node's own, its parameters merged in order (as ``rosvar resolve``'s).
-    A node with no name takes one from its executable at run time: it is drawn as
-    ``⟨EXEC⟩`` in its namespace, its ``fqn`` null."""
-    namespace = node.schema.namespace.text(text) or "/"
-    fqn = node.schema.full_name.text(text)
-    sources: list[Source] = []
-    for first, second in parameters:
-        try:
-            if not first:
-                sources.append(Source(entries=tuple(parameter_file(second or "", confinement))))
-            else:
-                sources.append(Source(entries=((ALL_NODES, {first: typed(second or "")}),)))
-        except ValueError:
-            continue  # not a value yet (an arg still open) or not readable: not shown
-    return {
-        "name": node.schema.label.text(text),
-        "fqn": fqn,
-        "namespace": namespace,
-        "parameters": effective(fqn, sources),
-        "trigger": node.trigger,
-    }
-
-
 @_renders(NodeContent)
 def _node(content: NodeContent, values: Values, parts: Sequence[Shown]) -> list[Fields]:
     node, raw = content.node, content.raw
     text = {k: values.text(v) for k, v in raw.items()}
-    try:
-        typed_fields: Fields = node_values(text)
-    except ValueError:
-        typed_fields = {}
     undetermined: list[Fields] = []
     mapping: dict[str, str] = {}
     for remap in content.remaps:
@@ -141,34 +103,26 @@ def _node(content: NodeContent, values: Values, parts: Sequence[Shown]) -> list[
         pair = _present(PartKind.ENV, setting, values, parts, undetermined)
         if pair is not None:
             settings.append(list(pair))
+    present = [
+        _present(PartKind.PARAMETER, p, values, parts, undetermined) for p in content.parameters
+    ]
     schema = node.schema
-    namespace = schema.namespace.text(text) or "/"
-    extra: Fields = {}
-    checks = dialect_of(schema.version).checks
-    if node.is_test and checks is not None:
-        try:
-            extra = checks.test(text, node.location)
-        except ResolutionError:
-            extra = {}
-    if node.ros2:
-        present = [
-            _present(PartKind.PARAMETER, p, values, parts, undetermined) for p in content.parameters
-        ]
-        extra = _ros2_fields(node, content.confinement, text, [p for p in present if p is not None])
+    own = dialect_of(schema.version).node_fields(
+        node, text, [p for p in present if p is not None], content.confinement
+    )
     return [
         {
             "name": schema.full_name.text(text),
-            "namespace": namespace,
+            "namespace": schema.namespace.text(text) or "/",
             "package": schema.package.text(text),
             "type": schema.executable.text(text),
-            **typed_fields,
+            **own,
             "remaps": sorted([list(p) for p in mapping.items()]),
             "env": sorted(settings),
             **({"undetermined": undetermined} if undetermined else {}),
             "filename": node.filename,
             "line": node.location.line,
             "col": node.location.col,
-            **extra,
         }
     ]
 

@@ -116,18 +116,6 @@ unmodelled(
 )
 unmodelled(
     Kind.SUBSTITUTION,
-    "the text of a file read at launch time, which rosvar does not read",
-    "launch.FileContent",
-    names=("file-content",),
-)
-unmodelled(
-    Kind.SUBSTITUTION,
-    "the path of an executable in a package's install space (lib/<package>), which a "
-    "source workspace does not have",
-    names=("exec-in-pkg",),
-)
-unmodelled(
-    Kind.SUBSTITUTION,
     "a global parameter's value as SetParameter left it, not followed",
     names=("param",),
 )

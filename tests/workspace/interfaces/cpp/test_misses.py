@@ -11,7 +11,7 @@ from pathlib import Path
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.workspace.interfaces.cpp.extract import extract_node
 from rosvar.workspace.interfaces.cpp.unit import Unit
-from rosvar.workspace.interfaces.model import Entry, NamedBy, Role
+from rosvar.workspace.interfaces.model import RECONFIGURED, Entry, Expression, NamedBy, Role
 
 
 def _entries(
@@ -242,6 +242,29 @@ int main() { rclcpp::spin(std::make_shared<Smoother>()); }
     ]
 
 
+def test_a_parameter_value_declared_is_its_default(tmp_path: Path) -> None:
+    """nav2's ``declare_parameter(name, rclcpp::ParameterValue(value))``: the default is the
+    value (a string the graph can name a topic by), not the constructor's text."""
+    source = """\
+class Server : public rclcpp::Node {
+ public:
+  Server() : Node("controller_server") {
+    declare_parameter("speed_limit_topic", rclcpp::ParameterValue("speed_limit"));
+    declare_parameter("min_x_velocity_threshold", rclcpp::ParameterValue(0.0001));
+    declare_parameter("publish_zero_velocity", rclcpp::ParameterValue(true));
+    declare_parameter("ids", rclcpp::ParameterValue(default_ids_));
+  }
+};
+int main() { rclcpp::spin(std::make_shared<Server>()); }
+"""
+    assert [(e.name, e.default) for e in _entries(tmp_path, source)] == [
+        ("speed_limit_topic", "speed_limit"),
+        ("min_x_velocity_threshold", 0.0001),
+        ("publish_zero_velocity", True),
+        ("ids", Expression("default_ids_")),
+    ]
+
+
 def test_default_arguments_of_a_constructor(tmp_path: Path) -> None:
     """laser_filters: ``ScanToScanFilterChain(const ros::NodeHandle& nh = {}, const
     ros::NodeHandle& pnh = {"~"})`` built as ``ScanToScanFilterChain t;``."""
@@ -261,3 +284,26 @@ int main() { Chain t; }
         ("subscribes", "scan", "sensor_msgs/LaserScan", 4),
         ("publishes", "~filtered", "sensor_msgs/LaserScan", 5),
     ]
+
+
+def test_a_dynamic_reconfigure_server_reads_its_namespace(tmp_path: Path) -> None:
+    """Its config's parameters, each with the ``.cfg``'s default: the whole namespace counts
+    as read (``param-unread`` stays quiet there, ``param-unset`` too)."""
+    source = """\
+class Node {
+ public:
+  Node() : pnh_("~") {
+    server_.reset(new dynamic_reconfigure::Server<pkg::Config>(ros::NodeHandle(pnh_, "pid")));
+  }
+  ros::NodeHandle pnh_;
+  boost::shared_ptr<dynamic_reconfigure::Server<pkg::Config>> server_;
+  dynamic_reconfigure::Server<pkg::LimitsConfig> limits_;
+};
+int main() { Node node; }
+"""
+    reads = [
+        (e.name, e.default, e.location.line)
+        for e in _entries(tmp_path, source, ros2=False)
+        if e.role is Role.PARAMS
+    ]
+    assert sorted(reads) == [("~", RECONFIGURED, 8), ("~pid", RECONFIGURED, 4)]
