@@ -215,6 +215,9 @@ def combine_bind(
     out: list[tuple[BDD, U]] = []
     for condition, leaves in _crossed(choices):
         for inner, value in function(leaves):
+            if inner.var is None:  # a constant's branch, true (a choice keeps no false one)
+                out.append((condition, value))
+                continue
             joint = condition & inner
             if joint != false:
                 out.append((joint, value))
