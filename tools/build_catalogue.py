@@ -514,7 +514,9 @@ def _loaded(nodes: list[Item], edition: Edition) -> None:
 
 def _switched(document: Item, review: Review) -> None:
     """Apply the review's ``named`` and ``when`` (matched by role and line: an entry the
-    extractor names by its parameter already keeps its line)."""
+    extractor names by its parameter already keeps its line) and its ``node_name``."""
+    if review.node_name is not None:
+        document["node_name"] = review.node_name
     for role, by_line in review.named.items():
         entries = document[role]
         assert isinstance(entries, list)

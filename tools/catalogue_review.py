@@ -42,13 +42,16 @@ class Review:
     hand, goes on when the parameter is unset: what it falls back to (a literal, or
     ``{"expression": ...}`` for what the code keeps or computes). ``param-unset`` reports
     required reads only (docs/checks.md)."""
+    node_name: str | None = None
+    """ROS 2: the name the code gives the node, where the extractor found several (a
+    library's helper nodes) or a name passed in ``NodeOptions`` arguments."""
     loads: tuple[str, str] | None = None
     """The (package, executable) of the catalogue whose code the node runs in-process under
     its own name (a nodelet class through ``nodelet::Loader``, another package's node
     class): the node has its entries too, its own read first."""
 
 
-def by_parameter(parameter: str, default: str | None = None, namespace: str = "") -> Item:
+def by_parameter(parameter: str, default: object = None, namespace: str = "") -> Item:
     named: Item = {"parameter": parameter}
     if namespace:
         named["namespace"] = namespace

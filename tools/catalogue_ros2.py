@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from catalogue_review import Review, Source, by_parameter, use
 
 NAV2 = [
@@ -24,7 +26,9 @@ SOURCES: list[Source] = [
     # third-party package a launch file of tests/data/ros2 starts a node of, most launched
     # first, and the navigation stack's servers those systems bring up
     Source("ros/robot_state_publisher", "humble", [""]),
-    Source("ros-controls/ros2_control", "humble", ["controller_manager"]),
+    # jazzy: the release ros2_control_demos and Universal_Robots_ROS2_Driver launch (its
+    # manager subscribes robot_description, humble's ~/robot_description)
+    Source("ros-controls/ros2_control", "jazzy", ["controller_manager"]),
     Source("ros-controls/ros2_controllers", "humble", ["ros2_controllers_test_nodes"]),
     Source("ros2/rviz", "humble", []),
     Source(
@@ -32,6 +36,7 @@ SOURCES: list[Source] = [
     ),
     Source("ros2/geometry2", "humble", ["tf2_ros"]),
     Source("ros2/rclcpp", "humble", ["rclcpp_components"]),
+    Source("ros-tooling/topic_tools", "humble", ["topic_tools"]),
     Source("ros-drivers/joystick_drivers", "ros2", ["joy", "joy_linux"]),
     Source("ros2/teleop_twist_joy", "foxy", [""]),
     Source("ros-teleop/twist_mux", "rolling", [""]),
@@ -55,13 +60,13 @@ SOURCES: list[Source] = [
 CM_SERVICES = "controller_manager/controller_manager/controller_manager_services.py"
 CM_CLIENTS = {
     # controller_manager_services.py: the service each call names, below the manager
-    "configure_controller": 162,
-    "list_controllers": 174,
-    "list_hardware_components": 200,
-    "load_controller": 229,
-    "set_hardware_component_state": 265,
-    "switch_controller": 294,
-    "unload_controller": 308,
+    "configure_controller": 176,
+    "list_controllers": 188,
+    "list_hardware_components": 214,
+    "load_controller": 243,
+    "set_hardware_component_state": 279,
+    "switch_controller": 305,
+    "unload_controller": 319,
 }
 SPAWNED_CLIENT = (
     "{f'{namespace}/{service_name}' if not service_name.startswith('/') else service_name}"
@@ -118,7 +123,9 @@ BT_NAVIGATOR = Review(
     "navigate_through_poses); goal_pose is rviz2's Goal tool; the behaviour tree (default "
     "XML) calls the planner, controller and behaviour servers' actions (the BT plugins' "
     "default names); its costmap-clearing services (served by the costmaps inside the "
-    "planner and controller servers, not modelled) are left out",
+    "planner and controller servers, not modelled) are left out; the node is bt_navigator "
+    "(bt_navigator.cpp; the behaviour tree's helper node is another)",
+    node_name="bt_navigator",
     add={
         "action_servers": [
             use(
@@ -158,6 +165,34 @@ BT_NAVIGATOR = Review(
     },
     drop={"action_servers": ["{action_name}"]},
 )
+TOOL_BASE = "topic_tools/src/tool_base_node.cpp"
+RELAY = Review(
+    "relays input_topic (required) to output_topic (default input_topic + '_relay') with a "
+    "generic subscription and publisher of the input's type (tool_base_node.cpp), which "
+    "the extractor does not read: added by hand; the relay executable also takes them "
+    "from its command line (relay IN [OUT], relay.cpp), which stays symbolic",
+    add={
+        "subscribes": [
+            {
+                **use("{input_topic}", None, TOOL_BASE, 56),
+                **by_parameter("input_topic"),
+                "static": False,
+            }
+        ],
+        "publishes": [
+            {
+                **use("{output_topic}", None, TOOL_BASE, 40),
+                **by_parameter("output_topic", {"expression": 'input_topic_ + "_relay"'}),
+                "static": False,
+            }
+        ],
+    },
+)
+CONTROLLER_SERVER = Review(
+    "the speed limit (speed_limit_topic, default speed_limit) is an optional input: nav2's "
+    "speed costmap filter or an application publishes it",
+    boundary={"subscribes": ["{speed_limit_topic}"]},
+)
 SLAM_TOOLBOX = Review(
     "the map and scan topics are the parameters map_name (default /map) and scan_topic "
     "(default /scan), declared with a member's value as default (slam_toolbox_common.cpp)",
@@ -169,13 +204,24 @@ SLAM_TOOLBOX = Review(
         },
     },
 )
+INITIAL_POSE = "initialpose is rviz2's 2D Pose Estimate (people's input)"
+SLAM_LOCALIZATION = Review(
+    SLAM_TOOLBOX.note + "; " + INITIAL_POSE,
+    named=SLAM_TOOLBOX.named,
+    boundary={"subscribes": ["initialpose"]},
+)
+AMCL = Review(
+    INITIAL_POSE + "; particle_cloud is for people (rviz2)",
+    boundary={"subscribes": ["initialpose"], "publishes": ["particle_cloud"]},
+)
 LOCALIZATION_INPUTS = {1157: "odom", 1294: "pose", 1389: "twist", 1597: "imu"}
 """ros_filter.cpp: each sensor's topic is the value of odom0, odom1, ... (then pose0,
 twist0, imu0), declared and read in a loop until one is not set."""
 FILTER = Review(
     "set_pose (topic) is for people and tools resetting the filter; each sensor topic is "
     "the value of odomN/poseN/twistN/imuN (one per parameter set); cmd_vel only with "
-    "use_control",
+    "use_control; the node's name is the first NodeOptions argument (ekf_node.cpp: "
+    "ekf_filter_node, ukf_node.cpp: ukf_filter_node)",
     boundary={"subscribes": ["set_pose"]},
     named={
         "subscribes": {
@@ -192,6 +238,11 @@ SPAWN_ENTITY = "gazebo_ros/scripts/spawn_entity.py"
 RVIZ_CONFIG = "rviz_common/default.rviz"
 
 REVIEW: dict[tuple[str, str], Review] = {
+    ("controller_manager", "ros2_control_node"): Review(
+        "~/activity tells tools (rqt_controller_manager) what the controllers do; the "
+        "controllers (plugins the spawners load) and their topics are not included",
+        boundary={"publishes": ["~/activity"]},
+    ),
     ("controller_manager", "spawner"): _manager_clients(
         "loads, configures and starts the controllers named on the command line",
         ["list_controllers", "load_controller", "configure_controller", "switch_controller"],
@@ -260,8 +311,20 @@ REVIEW: dict[tuple[str, str], Review] = {
     ("nav2_behaviors", "behavior_server::BehaviorServer"): BEHAVIORS,
     ("nav2_bt_navigator", "bt_navigator"): BT_NAVIGATOR,
     ("nav2_bt_navigator", "nav2_bt_navigator::BtNavigator"): BT_NAVIGATOR,
-    ("robot_localization", "ekf_node"): FILTER,
-    ("robot_localization", "ukf_node"): FILTER,
+    ("topic_tools", "relay"): RELAY,
+    ("topic_tools", "topic_tools::RelayNode"): RELAY,
+    ("nav2_controller", "controller_server"): CONTROLLER_SERVER,
+    ("nav2_controller", "nav2_controller::ControllerServer"): CONTROLLER_SERVER,
+    ("nav2_amcl", "amcl"): AMCL,
+    ("nav2_amcl", "nav2_amcl::AmclNode"): AMCL,
+    ("slam_toolbox", "slam_toolbox::LocalizationSlamToolbox"): Review(
+        INITIAL_POSE, boundary={"subscribes": ["initialpose"]}
+    ),
+    ("slam_toolbox", "slam_toolbox::MapAndLocalizationSlamToolbox"): Review(
+        INITIAL_POSE, boundary={"subscribes": ["initialpose"]}
+    ),
+    ("robot_localization", "ekf_node"): replace(FILTER, node_name="ekf_filter_node"),
+    ("robot_localization", "ukf_node"): replace(FILTER, node_name="ukf_filter_node"),
     ("joy", "joy_node"): JOY,
     ("joy", "joy::Joy"): JOY,
     ("joy", "game_controller_node"): JOY,
@@ -272,10 +335,10 @@ for _executable in (
     "async_slam_toolbox_node",
     "sync_slam_toolbox_node",
     "lifelong_slam_toolbox_node",
-    "localization_slam_toolbox_node",
-    "map_and_localization_slam_toolbox_node",
 ):
     REVIEW[("slam_toolbox", _executable)] = SLAM_TOOLBOX
+for _executable in ("localization_slam_toolbox_node", "map_and_localization_slam_toolbox_node"):
+    REVIEW[("slam_toolbox", _executable)] = SLAM_LOCALIZATION
 
 EXTRA: dict[tuple[str, str, str], Review] = {
     ("ros2/rviz", "rviz2", "rviz2"): Review(

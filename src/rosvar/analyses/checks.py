@@ -13,8 +13,9 @@ from __future__ import annotations
 import difflib
 import enum
 import os
+import re
 from collections import Counter, defaultdict
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
 from rosvar.analyses.communication import (
@@ -36,10 +37,11 @@ from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.when import params_read
 from rosvar.diagnostics import Location, Severity
 from rosvar.files import Confinement
-from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, YamlDecl
+from rosvar.interpreter.model import ErrorEvent, LaunchModel, NodeDecl, ParamDecl, YamlDecl
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
+from rosvar.ros.version import RosVersion
 from rosvar.workspace.interfaces.model import Interfaces, Origin, Role
 from rosvar.workspace.paths import real_path
 
@@ -57,6 +59,8 @@ class Check(enum.StrEnum):
     PARAM_UNSET = "param-unset"
     PARAM_UNREAD = "param-unread"
     REMAP_UNUSED = "remap-unused"
+    PARAM_FILE_UNMATCHED = "param-file-unmatched"
+    LOAD_ERROR = "load-error"
     SYMBOLIC_NAME = "symbolic-name"
     WHEN_UNKNOWN = "when-unknown"
     UNREAD = "unread"
@@ -74,6 +78,10 @@ DESCRIPTIONS: dict[Check, str] = {
     "misspelt name: the node runs on its default)",
     Check.REMAP_UNUSED: "a node's remap renames a name the node never uses (a typo, or "
     "another node's name: the node keeps its own)",
+    Check.PARAM_FILE_UNMATCHED: "a ROS 2 node is given a parameter file with no entry for its "
+    "name: the node gets none of its parameters",
+    Check.LOAD_ERROR: "the launch tool refuses the entry file, for a mistake in the launch "
+    "files' own text (an arg declared twice, an include given an arg it does not declare)",
     Check.SYMBOLIC_NAME: "a name could not be resolved statically: the checks skip it",
     Check.WHEN_UNKNOWN: "a hinted entry's when: reads a parameter whose value is not known: "
     "the entry is kept there",
@@ -97,6 +105,63 @@ class Finding:
     file: str
     condition: BDD
     locations: tuple[Location, ...]  # the first is where the problem is reported
+
+
+OWN_ERRORS = frozenset(
+    {
+        "arg-duplicate",
+        "arg-value-and-default",
+        "attribute-missing",
+        "ifunless-both",
+        "include-arg-unused",
+        "include-arg-undefined",
+        "include-cycle",
+        "machine-env",
+        "env-invalid",
+    }
+)
+"""Errors of the launch files' own text: they stop the launch whatever values the command
+line gives (docs/diagnostics.md lists each). Not a malformed substitution: ROS 2 counts a
+substitution's arguments after the values are in, so a typed text with a space makes one."""
+ARG_ERRORS = frozenset({"arg-duplicate", "arg-value-and-default", "include-arg-unused"})
+"""Errors about one arg: a finding is named after it."""
+_SUBJECT = re.compile(r"'([^']+)'|\[([^\]]+)\]")
+
+
+def _syntax(error: ErrorEvent) -> bool:
+    """An ``$(eval)`` that is no Python expression: a mistake of the text too."""
+    return error.code == "eval-refused" and "invalid Python expression" in error.message
+
+
+@dataclass(frozen=True)
+class Found:
+    """A finding before it is placed in its entry file: what a dialect's own checks make
+    (:data:`MODEL_CHECKS`)."""
+
+    check: Check
+    severity: Severity
+    name: str
+    message: str
+    condition: BDD
+    locations: tuple[Location, ...]
+
+
+ModelCheck = Callable[[ConditionSpace, LaunchModel, Interfaces, Confinement], Iterable[Found]]
+"""A check of an entry file's nodes that only their dialect's launch semantics can make
+(ROS 2's parameter files, matched to the nodes as rcl matches them)."""
+MODEL_CHECKS: dict[RosVersion, list[ModelCheck]] = defaultdict(list)
+"""The dialects' own checks, by the ROS of the nodes they check (filled by the dialects: the
+core names neither)."""
+
+
+def model_check(version: RosVersion) -> Callable[[ModelCheck], ModelCheck]:
+    """Register a check of the entry files whose nodes are of ``version``."""
+
+    def register(check: ModelCheck) -> ModelCheck:
+        MODEL_CHECKS[version].append(check)
+        return check
+
+    return register
 
 
 def check_models(
@@ -164,12 +229,14 @@ def check_model(
     checker = _Checker(space, model, loads, confinement, partners or defaultdict(set))
     checker.unknown = _unknown_nodes(space, model, interfaces)
     checker.graph(edges)
+    checker.errors()
     if described is not None:
         checker.gaps(described.gaps(model))
     checker.node_names()
     checker.params(interfaces)
     checker.unread(interfaces)
     checker.remaps(interfaces)
+    checker.dialects(interfaces)
     checker.whens(interfaces)
     return checker.findings
 
@@ -236,6 +303,26 @@ class _Checker:
             self.providers(channel, name, providers)
             self.unmatched(channel, name, providers, users)
             self.types(name, named)
+
+    def errors(self) -> None:
+        """Where the launch tool refuses the entry file for a mistake of the files' own text
+        (:data:`OWN_ERRORS`), whatever the command line gives: its condition and place.
+        Errors a typed value, an unset variable or a missing arg makes are the command
+        line's, which ``resolve`` and the configuration engine report."""
+        loads, self.loads = self.loads, self.space.true
+        for error in self.model.errors:
+            if error.code not in OWN_ERRORS and not _syntax(error):
+                continue
+            subject = _SUBJECT.search(error.message) if error.code in ARG_ERRORS else None
+            self.add(
+                Check.LOAD_ERROR,
+                Severity.ERROR,
+                next(g for g in subject.groups() if g) if subject else error.code,
+                f"the launch tool refuses the launch here: {error.message}",
+                error.condition,
+                (error.location,),
+            )
+        self.loads = loads
 
     def gaps(self, gaps: Sequence[Gap]) -> None:
         """What of the graph could not be read, where it matters (where the launch loads, and
@@ -458,7 +545,7 @@ class _Checker:
                     source = launched.resolve(str(remap.source))
                     if any(source == u or source.startswith(u + names.SEP) for u in used):
                         continue
-                    near = _nearest(source, used)
+                    near = nearest(source, used)
                     target = remap.target if isinstance(remap.target, str) else "…"
                     self.add(
                         Check.REMAP_UNUSED,
@@ -468,6 +555,21 @@ class _Checker:
                         "renames nothing" + (f" (it uses {near})" if near else ""),
                         condition & remap.condition,
                         (remap.location or node.location, node.location),
+                    )
+
+    def dialects(self, interfaces: Interfaces) -> None:
+        """The checks its nodes' dialect adds (:data:`MODEL_CHECKS`)."""
+        versions = {node.schema.version for node in self.model.nodes}
+        for version in sorted(versions):
+            for check in MODEL_CHECKS.get(version, ()):
+                for found in check(self.space, self.model, interfaces, self.confinement):
+                    self.add(
+                        found.check,
+                        found.severity,
+                        found.name,
+                        found.message,
+                        found.condition,
+                        found.locations,
                     )
 
     def whens(self, interfaces: Interfaces) -> None:
@@ -554,7 +656,7 @@ def _nodes(edges: Sequence[Edge]) -> str:
     return ", ".join(sorted({e.node for e in edges}))
 
 
-def _nearest(name: str, used: Iterable[str]) -> str | None:
+def nearest(name: str, used: Iterable[str]) -> str | None:
     """The used name whose last part is closest to ``name``'s (a typo, or the right name in
     another namespace)."""
     last = {u.rsplit(names.SEP, 1)[-1]: u for u in sorted(used)}

@@ -314,3 +314,38 @@ def test_yocs_nodelets() -> None:
         "~robot_cmd_vel": "param('~robot_feedback') == 2",
         "~raw_cmd_vel": None,
     }
+
+
+def test_ros2_nodes_meet_their_partners(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """nav2's navigator calls the planner's, controller's and behaviours' actions and the
+    spawner the manager's services, all by the names the catalogue gives them (the nodes'
+    own names: ``bt_navigator``, ``controller_manager``); rviz2's tools are boundary uses.
+    What is left: joint_state_broadcaster's ``joint_states`` (ROS 2 controllers are not
+    modelled)."""
+    package = tmp_path / "p"
+    package.mkdir()
+    (package / "package.xml").write_text(
+        "<package format='3'><name>p</name>"
+        "<export><build_type>ament_cmake</build_type></export></package>"
+    )
+    nodes = [
+        ("controller_manager", "ros2_control_node"),
+        ("controller_manager", "spawner"),
+        ("nav2_bt_navigator", "bt_navigator"),
+        ("nav2_planner", "planner_server"),
+        ("nav2_controller", "controller_server"),
+        ("nav2_behaviors", "behavior_server"),
+        ("robot_state_publisher", "robot_state_publisher"),
+        ("rviz2", "rviz2"),
+    ]
+    (package / "a.launch.xml").write_text(
+        "<launch>"
+        + "".join(f'<node pkg="{p}" exec="{e}" args="joint_state_broadcaster"/>' for p, e in nodes)
+        + "</launch>"
+    )
+    assert main(["check", str(tmp_path), "--format", "json"]) == 0
+    findings = json.loads(capsys.readouterr().out)["findings"]
+    warned = {(f["check"], f["name"]) for f in findings if f["severity"] != "note"}
+    assert warned == {("no-provider", "/joint_states")}
+    unmet = {f["name"] for f in findings if f["check"] == "no-provider"}
+    assert unmet == {"/joint_states", "/speed_limit"}  # nav2's optional speed limit: a note
