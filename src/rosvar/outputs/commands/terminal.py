@@ -54,7 +54,9 @@ def print_json(document: object) -> None:
 
 def shown_path(path: str) -> str:
     """A path for people: relative to the current directory, unless the absolute one is
-    shorter (a file far from it)."""
+    shorter (a file far from it); an empty path (a place no file holds) as it is."""
+    if not path:
+        return path
     relative = os.path.relpath(path)
     absolute = os.path.abspath(path)
     return relative if len(relative) <= len(absolute) else absolute
