@@ -19,113 +19,65 @@ import re
 import subprocess
 import sys
 import tempfile
-from dataclasses import dataclass, field
 
+import catalogue_ros2
+from catalogue_review import ROLES, Edition, Item, Review, Source, by_parameter, read, use
+
+from rosvar.files import Confinement
 from rosvar.outputs.documents.interfaces import node_document
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 
-SOURCES: list[tuple[str, str, list[str]]] = [
+SOURCES: list[Source] = [
     # repository, ROS 1 branch (melodic's where there is one: the corpus's systems are
     # melodic), folders holding the packages ("" = the repository's root): every package a
     # launch file of the corpus (its four systems and _external) starts a node of, most
     # launched first, whose sources the corpus does not hold
-    ("ros/robot_state_publisher", "melodic-devel", [""]),
-    (
+    Source("ros/robot_state_publisher", "melodic-devel", [""]),
+    Source(
         "ros/joint_state_publisher",
         "kinetic-devel",
         ["joint_state_publisher", "joint_state_publisher_gui"],
     ),
-    ("ros-simulation/gazebo_ros_pkgs", "melodic-devel", ["gazebo_ros"]),
-    ("ros-planning/navigation", "melodic-devel", ["amcl", "map_server", "move_base"]),
-    ("ros-perception/slam_gmapping", "melodic-devel", ["gmapping"]),
-    ("ros-drivers/joystick_drivers", "melodic-devel", ["joy"]),
-    ("ros/diagnostics", "noetic-devel", ["diagnostic_aggregator"]),
-    ("ros/geometry", "melodic-devel", ["tf"]),
-    ("ros/geometry2", "melodic-devel", ["tf2_ros"]),
-    ("ros/ros_comm", "melodic-devel", ["tools/topic_tools"]),
-    ("ros-controls/ros_control", "melodic-devel", ["controller_manager"]),
-    ("ros-perception/image_pipeline", "melodic", ["image_proc", "depth_image_proc"]),
-    ("ros-perception/image_common", "noetic-devel", ["image_transport"]),
-    ("ros-planning/robot_pose_ekf", "master", [""]),
-    ("ros-perception/depthimage_to_laserscan", "melodic-devel", [""]),
-    ("ros-perception/pointcloud_to_laserscan", "lunar-devel", [""]),
-    ("cra-ros-pkg/robot_localization", "melodic-devel", [""]),
-    ("ros-teleop/twist_mux", "melodic-devel", [""]),
-    ("ros-teleop/teleop_twist_joy", "melodic-devel", [""]),
-    ("ros-drivers/urg_node", "melodic-devel", [""]),
-    ("CCNYRoboticsLab/imu_tools", "melodic", ["imu_filter_madgwick"]),
-    ("ros-perception/imu_pipeline", "noetic-devel", ["imu_transformer"]),
-    ("tu-darmstadt-ros-pkg/hector_slam", "melodic-devel", ["hector_mapping"]),
-    ("ros-visualization/interactive_marker_twist_server", "kinetic-devel", [""]),
-    ("ros-drivers/openni2_camera", "ros1", ["openni2_camera"]),
-    ("ros-drivers/openni_camera", "ros1", ["openni_camera"]),
-    ("yujinrobot/yujin_ocs", "devel", ["yocs_cmd_vel_mux", "yocs_velocity_smoother"]),
+    Source("ros-simulation/gazebo_ros_pkgs", "melodic-devel", ["gazebo_ros"]),
+    Source("ros-planning/navigation", "melodic-devel", ["amcl", "map_server", "move_base"]),
+    Source("ros-perception/slam_gmapping", "melodic-devel", ["gmapping"]),
+    Source("ros-drivers/joystick_drivers", "melodic-devel", ["joy"]),
+    Source("ros/diagnostics", "noetic-devel", ["diagnostic_aggregator"]),
+    Source("ros/geometry", "melodic-devel", ["tf"]),
+    Source("ros/geometry2", "melodic-devel", ["tf2_ros"]),
+    Source("ros/ros_comm", "melodic-devel", ["tools/topic_tools"]),
+    Source("ros-controls/ros_control", "melodic-devel", ["controller_manager"]),
+    Source("ros-perception/image_pipeline", "melodic", ["image_proc", "depth_image_proc"]),
+    Source("ros-perception/image_common", "noetic-devel", ["image_transport"]),
+    Source("ros-planning/robot_pose_ekf", "master", [""]),
+    Source("ros-perception/depthimage_to_laserscan", "melodic-devel", [""]),
+    Source("ros-perception/pointcloud_to_laserscan", "lunar-devel", [""]),
+    Source("cra-ros-pkg/robot_localization", "melodic-devel", [""]),
+    Source("ros-teleop/twist_mux", "melodic-devel", [""]),
+    Source("ros-teleop/teleop_twist_joy", "melodic-devel", [""]),
+    Source("ros-drivers/urg_node", "melodic-devel", [""]),
+    Source("CCNYRoboticsLab/imu_tools", "melodic", ["imu_filter_madgwick"]),
+    Source("ros-perception/imu_pipeline", "noetic-devel", ["imu_transformer"]),
+    Source("tu-darmstadt-ros-pkg/hector_slam", "melodic-devel", ["hector_mapping"]),
+    Source("ros-visualization/interactive_marker_twist_server", "kinetic-devel", [""]),
+    Source("ros-drivers/openni2_camera", "ros1", ["openni2_camera"]),
+    Source("ros-drivers/openni_camera", "ros1", ["openni_camera"]),
+    Source("yujinrobot/yujin_ocs", "devel", ["yocs_cmd_vel_mux", "yocs_velocity_smoother"]),
+    Source("ros-visualization/rviz", "melodic-devel", []),
 ]
 
-SKIPPED = [":(exclude,glob)**/test/**", ":(exclude,glob)**/*.bag"]
-"""Tests are no launched nodes; large files may be absent from a mirror."""
+SKIPPED = [
+    f":(exclude,glob)**/{pattern}"
+    for pattern in ("test/**", "*.bag", "*.gif", "*.png", "*.jpg", "*.pgm", "*.pcd", "*.stl")
+]
+"""Tests are no launched nodes; large files (recordings, images, maps, meshes) may be
+absent from a mirror."""
 BOUNDARY_TOPICS = frozenset({"/tf", "/tf_static"})
 """Published for tf's listeners: nearly every node and rviz hold one, modelled only where
 reviewed; a publication of these is a boundary use in every node."""
 TEST_EXECUTABLE = re.compile(r"(^|[_-])(r?test|unittest)|^test|_test$|(^|_)test_")
 """Test programs built outside ``test/`` (``tf2_ros_test_listener``, ``gmapping-rtest``)."""
-
-ROLES = (
-    "publishes",
-    "subscribes",
-    "services",
-    "clients",
-    "action_servers",
-    "action_clients",
-    "params",
-)
-
-Item = dict[str, object]
-
-
-@dataclass(frozen=True)
-class Review:
-    """What reading a node's sources by hand changed: ``note`` says what and why (it is
-    written to the catalogue), ``add`` holds entries the extractor cannot see, each with the
-    file and line that make it, ``drop`` the names (per role) it took wrongly, ``boundary``
-    the names (per role) meant for something outside the launched nodes (people and their
-    tools, diagnostics monitors; see BOUNDARY_TOPICS for tf)."""
-
-    note: str
-    add: dict[str, list[Item]] = field(default_factory=dict)
-    drop: dict[str, list[str]] = field(default_factory=dict)
-    boundary: dict[str, list[str]] = field(default_factory=dict)
-    named: dict[str, dict[int, Item]] = field(default_factory=dict)
-    """Per role, the entries (by line) whose name is a parameter's value: their ``named_by``
-    (``{"parameter": "~imu{N}"}``) and ``default``."""
-    when: dict[str, dict[int, str]] = field(default_factory=dict)
-    """Per role, the entries (by line) that a condition on the node's parameters switches
-    on (``param('~use_control')``, as a hint's ``when:``)."""
-    defaults: dict[int, object] = field(default_factory=dict)
-    """The parameter reads (by line) the extractor took for required whose code, read by
-    hand, goes on when the parameter is unset: what it falls back to (a literal, or
-    ``{"expression": ...}`` for what the code keeps or computes). ``param-unset`` reports
-    required reads only (docs/checks.md)."""
-    loads: str | None = None
-    """The nodelet class (of the catalogue) the node loads in-process under its own name
-    (``nodelet::Loader``): the node has the class's entries too, its own read first."""
-
-
-def _named(parameter: str, default: str | None = None, namespace: str = "") -> Item:
-    named: Item = {"parameter": parameter}
-    if namespace:
-        named["namespace"] = namespace
-    return {"named_by": named, "default": default}
-
-
-def _entry(name: str, kind: str | None, file: str, line: int) -> Item:
-    return {"name": name, "type": kind, "file": file, "line": line}
-
-
-def _param(name: str, default: object, file: str, line: int) -> Item:
-    return {"name": name, "default": default, "file": file, "line": line}
-
 
 TF = "tf2_msgs/TFMessage"
 RSP = Review(
@@ -133,10 +85,10 @@ RSP = Review(
     "(urdf::Model::initParam)",
     add={
         "publishes": [
-            _entry("/tf", TF, "src/robot_state_publisher.cpp", 102),
-            _entry("/tf_static", TF, "src/robot_state_publisher.cpp", 124),
+            use("/tf", TF, "src/robot_state_publisher.cpp", 102),
+            use("/tf_static", TF, "src/robot_state_publisher.cpp", 124),
         ],
-        "params": [_param("robot_description", None, "src/joint_state_listener_node.cpp", 64)],
+        "params": [read("robot_description", None, "src/joint_state_listener_node.cpp", 64)],
     },
 )
 JSP_MODULE = "joint_state_publisher/src/joint_state_publisher/__init__.py"
@@ -144,22 +96,22 @@ JSP = Review(
     "the script imports its package's module, which the extractor does not read; entries "
     "from that module by hand: each parameter is read as ~name, else name (its get_param)",
     add={
-        "publishes": [_entry("joint_states", "sensor_msgs/JointState", JSP_MODULE, 175)],
+        "publishes": [use("joint_states", "sensor_msgs/JointState", JSP_MODULE, 175)],
         "subscribes": [
-            {**_entry("{source}", "sensor_msgs/JointState", JSP_MODULE, 173), "static": False}
+            {**use("{source}", "sensor_msgs/JointState", JSP_MODULE, 173), "static": False}
         ],
         "params": [
-            _param("robot_description", None, JSP_MODULE, 143),
-            _param("~dependent_joints", {"expression": "{}"}, JSP_MODULE, 149),
-            _param("~use_mimic_tags", True, JSP_MODULE, 150),
-            _param("~use_smallest_joint_limits", True, JSP_MODULE, 151),
-            _param("~zeros", {"expression": "None"}, JSP_MODULE, 153),
-            _param("~publish_default_positions", True, JSP_MODULE, 155),
-            _param("~publish_default_velocities", False, JSP_MODULE, 156),
-            _param("~publish_default_efforts", False, JSP_MODULE, 157),
-            _param("~source_list", {"expression": "[]"}, JSP_MODULE, 170),
-            _param("~rate", 10, JSP_MODULE, 211),
-            _param("~delta", 0.0, JSP_MODULE, 214),
+            read("robot_description", None, JSP_MODULE, 143),
+            read("~dependent_joints", {"expression": "{}"}, JSP_MODULE, 149),
+            read("~use_mimic_tags", True, JSP_MODULE, 150),
+            read("~use_smallest_joint_limits", True, JSP_MODULE, 151),
+            read("~zeros", {"expression": "None"}, JSP_MODULE, 153),
+            read("~publish_default_positions", True, JSP_MODULE, 155),
+            read("~publish_default_velocities", False, JSP_MODULE, 156),
+            read("~publish_default_efforts", False, JSP_MODULE, 157),
+            read("~source_list", {"expression": "[]"}, JSP_MODULE, 170),
+            read("~rate", 10, JSP_MODULE, 211),
+            read("~delta", 0.0, JSP_MODULE, 214),
         ],
     },
 )
@@ -177,12 +129,12 @@ REVIEW: dict[tuple[str, str], Review] = {
         f"/tf and /tf_static ({TF2_LISTENER}) and the static_map client "
         "(ros::service::call, used when ~use_map_topic is false)",
         add={
-            "publishes": [_entry("/tf", TF, "amcl/src/amcl_node.cpp", 1475)],
+            "publishes": [use("/tf", TF, "amcl/src/amcl_node.cpp", 1475)],
             "subscribes": [
-                _entry("/tf", TF, "amcl/src/amcl_node.cpp", 471),
-                _entry("/tf_static", TF, "amcl/src/amcl_node.cpp", 471),
+                use("/tf", TF, "amcl/src/amcl_node.cpp", 471),
+                use("/tf_static", TF, "amcl/src/amcl_node.cpp", 471),
             ],
-            "clients": [_entry("static_map", "nav_msgs/GetMap", "amcl/src/amcl_node.cpp", 850)],
+            "clients": [use("static_map", "nav_msgs/GetMap", "amcl/src/amcl_node.cpp", 850)],
         },
         drop={"publishes": ["base_scan", "/tf"], "subscribes": ["initialpose@666"]},
         boundary={"subscribes": ["initialpose"], "publishes": ["particlecloud"]},
@@ -199,24 +151,24 @@ REVIEW: dict[tuple[str, str], Review] = {
         },
         add={
             "subscribes": [
-                _entry("/tf", TF, "move_base/src/move_base_node.cpp", 36),
-                _entry("/tf_static", TF, "move_base/src/move_base_node.cpp", 36),
+                use("/tf", TF, "move_base/src/move_base_node.cpp", 36),
+                use("/tf_static", TF, "move_base/src/move_base_node.cpp", 36),
             ]
         },
     ),
     ("gmapping", "slam_gmapping"): Review(
         "added /tf (tf::TransformBroadcaster) and its tf::TransformListener's /tf, /tf_static",
         add={
-            "publishes": [_entry("/tf", TF, "gmapping/src/slam_gmapping.cpp", 802)],
+            "publishes": [use("/tf", TF, "gmapping/src/slam_gmapping.cpp", 802)],
             "subscribes": [
-                _entry("/tf", TF, "gmapping/src/slam_gmapping.h", 70),
-                _entry("/tf_static", TF, "gmapping/src/slam_gmapping.h", 70),
+                use("/tf", TF, "gmapping/src/slam_gmapping.h", 70),
+                use("/tf_static", TF, "gmapping/src/slam_gmapping.h", 70),
             ],
         },
     ),
     ("tf", "static_transform_publisher"): Review(
         "added /tf (tf::TransformBroadcaster)",
-        add={"publishes": [_entry("/tf", TF, "tf/src/static_transform_publisher.cpp", 57)]},
+        add={"publishes": [use("/tf", TF, "tf/src/static_transform_publisher.cpp", 57)]},
     ),
     ("tf2_ros", "static_transform_publisher"): Review(
         "dropped /tf, /tf_static and ~tf2_frames: the library's TransformListener and Buffer "
@@ -227,7 +179,7 @@ REVIEW: dict[tuple[str, str], Review] = {
         "the controller manager's services, as named without --namespace",
         add={
             "clients": [
-                _entry(
+                use(
                     f"controller_manager/{verb}_controller",
                     f"controller_manager_msgs/{verb.capitalize()}Controller",
                     "controller_manager/scripts/spawner",
@@ -249,19 +201,19 @@ REVIEW: dict[tuple[str, str], Review] = {
         "the model is read from the parameter that -param names",
         add={
             "subscribes": [
-                _entry("/gazebo/model_states", "gazebo_msgs/ModelStates", SPAWN_MODEL, 102)
+                use("/gazebo/model_states", "gazebo_msgs/ModelStates", SPAWN_MODEL, 102)
             ],
             "clients": [
-                _entry("/gazebo/spawn_sdf_model", "gazebo_msgs/SpawnModel", GAZEBO_INTERFACE, 18),
-                _entry("/gazebo/spawn_urdf_model", "gazebo_msgs/SpawnModel", GAZEBO_INTERFACE, 30),
-                _entry(
+                use("/gazebo/spawn_sdf_model", "gazebo_msgs/SpawnModel", GAZEBO_INTERFACE, 18),
+                use("/gazebo/spawn_urdf_model", "gazebo_msgs/SpawnModel", GAZEBO_INTERFACE, 30),
+                use(
                     "/gazebo/set_model_configuration",
                     "gazebo_msgs/SetModelConfiguration",
                     GAZEBO_INTERFACE,
                     44,
                 ),
-                _entry("/gazebo/unpause_physics", "std_srvs/Empty", SPAWN_MODEL, 210),
-                _entry("/gazebo/delete_model", "gazebo_msgs/DeleteModel", SPAWN_MODEL, 230),
+                use("/gazebo/unpause_physics", "std_srvs/Empty", SPAWN_MODEL, 210),
+                use("/gazebo/delete_model", "gazebo_msgs/DeleteModel", SPAWN_MODEL, 230),
             ],
         },
         drop={
@@ -279,10 +231,10 @@ REVIEW: dict[tuple[str, str], Review] = {
         defaults={169: False},
         add={
             "subscribes": [
-                {**_entry("{argv[1]}", None, RELAY, 58), "static": False},
+                {**use("{argv[1]}", None, RELAY, 58), "static": False},
             ],
             "publishes": [
-                {**_entry("{argv[2]}", None, RELAY, 99), "static": False},
+                {**use("{argv[2]}", None, RELAY, 99), "static": False},
             ],
         },
         drop={"publishes": ["{nh}/{opts}"]},
@@ -327,6 +279,21 @@ GAZEBO = [
     ("std_srvs/Empty", "unpause_physics", 507),
 ]
 EXTRA: dict[tuple[str, str, str], Review] = {
+    ("ros-visualization/rviz", "rviz", "rviz"): Review(
+        "a visualiser: what it subscribes depends on the displays of its configuration "
+        "(not modelled); its default configuration's tools publish a pose estimate, a goal "
+        "and clicked points, made by people (boundary uses)",
+        add={
+            "publishes": [
+                {**use(name, kind, "default.rviz", line), "boundary": True}
+                for name, kind, line in (
+                    ("/initialpose", "geometry_msgs/PoseWithCovarianceStamped", 63),
+                    ("/move_base_simple/goal", "geometry_msgs/PoseStamped", 65),
+                    ("/clicked_point", "geometry_msgs/PointStamped", 68),
+                )
+            ]
+        },
+    ),
     # (repository, package, executable): nodes the extractor cannot find at all, by hand
     ("ros-simulation/gazebo_ros_pkgs", "gazebo_ros", "gzserver"): Review(
         "a shell script that runs Gazebo with gazebo_ros_api_plugin (a Gazebo plugin, no "
@@ -336,13 +303,13 @@ EXTRA: dict[tuple[str, str, str], Review] = {
         "a robot's URDF (gazebo_ros_control, sensors) are not included",
         add={
             "services": [
-                _entry("~" + name, kind.replace("gazebo_ros/", "gazebo_msgs/"), API_PLUGIN, line)
+                use("~" + name, kind.replace("gazebo_ros/", "gazebo_msgs/"), API_PLUGIN, line)
                 for kind, name, line in GAZEBO
             ],
             "publishes": [
-                _entry("/clock", "rosgraph_msgs/Clock", API_PLUGIN, 208),
-                _entry("~link_states", "gazebo_msgs/LinkStates", API_PLUGIN, 400),
-                _entry("~model_states", "gazebo_msgs/ModelStates", API_PLUGIN, 409),
+                use("/clock", "rosgraph_msgs/Clock", API_PLUGIN, 208),
+                use("~link_states", "gazebo_msgs/LinkStates", API_PLUGIN, 400),
+                use("~model_states", "gazebo_msgs/ModelStates", API_PLUGIN, 409),
             ],
         },
         # /clock is read by every node under use_sim_time (inside roscpp/rospy)
@@ -386,7 +353,7 @@ for _filter in ("ekf_localization_node", "ukf_localization_node"):
         boundary={"subscribes": ["set_pose"]},
         named={
             "subscribes": {
-                line: _named(f"~{kind}{{N}}") for line, kind in LOCALIZATION_INPUTS.items()
+                line: by_parameter(f"~{kind}{{N}}") for line, kind in LOCALIZATION_INPUTS.items()
             }
         },
         when={
@@ -432,7 +399,7 @@ for _node, _nodelet in (
     REVIEW[("pointcloud_to_laserscan", _node)] = Review(
         f"runs the nodelet pointcloud_to_laserscan/{_nodelet} in-process under the node's "
         f"own name (nodelet::Loader in src/{_node}.cpp): its topics and parameters",
-        loads=f"pointcloud_to_laserscan/{_nodelet}",
+        loads=("pointcloud_to_laserscan", f"pointcloud_to_laserscan/{_nodelet}"),
     )
 REVIEW[("yocs_cmd_vel_mux", "yocs_cmd_vel_mux/CmdVelMuxNodelet")] = Review(
     "the output topic is the YAML's publisher (default ~output) and the inputs its "
@@ -457,7 +424,7 @@ OPENNI_DRIVER = "openni_camera/src/nodelets/driver.cpp"
 REVIEW[("openni_camera", "openni_camera/driver")] = Review(
     "depth images go to depth/ or, with ~depth_registration (dynamic_reconfigure, default "
     "false in cfg/OpenNI.cfg), to depth_registered/ (publishDepthImage), never both",
-    add={"params": [_param("~depth_registration", False, "openni_camera/cfg/OpenNI.cfg", 24)]},
+    add={"params": [read("~depth_registration", False, "openni_camera/cfg/OpenNI.cfg", 24)]},
     when={
         "publishes": {
             199: "not param('~depth_registration')",
@@ -471,12 +438,18 @@ REVIEW[("hector_mapping", "hector_mapping")] = Review(
     boundary=REVIEW[("hector_mapping", "hector_mapping")].boundary,
     named={
         "subscribes": {
-            187: _named("~scan_topic", "scan"),
-            188: _named("~sys_msg_topic", "syscommand"),
+            187: by_parameter("~scan_topic", "scan"),
+            188: by_parameter("~sys_msg_topic", "syscommand"),
         },
-        "publishes": {190: _named("~pose_update_topic", "poseupdate")},
+        "publishes": {190: by_parameter("~pose_update_topic", "poseupdate")},
     },
 )
+
+
+EDITIONS = {
+    "ros1": Edition(SOURCES, REVIEW, EXTRA),
+    "ros2": Edition(catalogue_ros2.SOURCES, catalogue_ros2.REVIEW, catalogue_ros2.EXTRA),
+}
 
 
 def _git(directory: str, *arguments: str) -> bytes:
@@ -521,16 +494,16 @@ def _added(document: Item, review: Review) -> None:
                 entries.append(dict(entry))
 
 
-def _loaded(nodes: list[Item]) -> None:
-    """Give each node whose review ``loads`` a nodelet class that class's entries (those of
-    a role and name the node has already left out: a node and its nodelet both read
-    ``~concurrency_level``)."""
+def _loaded(nodes: list[Item], edition: Edition) -> None:
+    """Give each node whose review ``loads`` a nodelet class (or another package's node
+    class) that one's entries (those of a role and name the node has already left out: a
+    node and its nodelet both read ``~concurrency_level``)."""
     by_unit = {(node["package"], node["executable"]): node for node in nodes}
     for node in nodes:
-        review = REVIEW.get((str(node["package"]), str(node["executable"])))
+        review = edition.review.get((str(node["package"]), str(node["executable"])))
         if review is None or review.loads is None:
             continue
-        nodelet = by_unit[(node["package"], review.loads)]
+        nodelet = by_unit[review.loads]
         for role in ROLES:
             entries = node[role]
             loaded = nodelet[role]
@@ -541,7 +514,9 @@ def _loaded(nodes: list[Item]) -> None:
 
 def _switched(document: Item, review: Review) -> None:
     """Apply the review's ``named`` and ``when`` (matched by role and line: an entry the
-    extractor names by its parameter already keeps its line)."""
+    extractor names by its parameter already keeps its line) and its ``node_name``."""
+    if review.node_name is not None:
+        document["node_name"] = review.node_name
     for role, by_line in review.named.items():
         entries = document[role]
         assert isinstance(entries, list)
@@ -569,57 +544,68 @@ def _switched(document: Item, review: Review) -> None:
                 entry["when"] = condition
 
 
-def build(mirrors: str) -> dict[str, object]:
+def build(mirrors: str, edition: Edition) -> dict[str, object]:
     nodes: list[Item] = []
-    for source in SOURCES:
-        nodes.extend(_repository(mirrors, *source))
-    _loaded(nodes)
+    for source in edition.sources:
+        nodes.extend(_repository(mirrors, source, edition))
+    _loaded(nodes, edition)
     return {"catalogue": nodes}
 
 
-def splice(path: str, mirrors: str, repository: str) -> dict[str, object]:
+def splice(path: str, mirrors: str, repository: str, edition: Edition) -> dict[str, object]:
     """The catalogue at ``path`` with the nodes of ``repository`` built again from its
     mirror (the others kept as they are: their mirrors are not needed); a repository new to
     the catalogue adds its nodes at the end."""
     with open(path, encoding="utf-8") as handle:
         nodes: list[Item] = json.load(handle)["catalogue"]
-    (source,) = [source for source in SOURCES if source[0] == repository]
-    built = _repository(mirrors, *source)
+    (source,) = [source for source in edition.sources if source.repository == repository]
+    built = _repository(mirrors, source, edition)
     at = [i for i, node in enumerate(nodes) if node["repository"] == repository]
     kept = [node for node in nodes if node["repository"] != repository]
     position = at[0] if at else len(kept)
     nodes = kept[:position] + built + kept[position:]
-    _loaded(nodes)
+    _loaded(nodes, edition)
     return {"catalogue": nodes}
 
 
-def _repository(mirrors: str, repository: str, branch: str, folders: list[str]) -> list[Item]:
+def _repository(mirrors: str, source: Source, edition: Edition) -> list[Item]:
     """The nodes of one repository's branch, extracted and reviewed."""
     nodes: list[Item] = []
+    repository = source.repository
     directory = os.path.join(mirrors, repository.replace("/", "+"), "repo")
-    commit = _git(directory, "rev-parse", branch).decode().strip()
-    for (source, package, executable), review in EXTRA.items():
-        if source == repository:
+    commit = _git(directory, "rev-parse", source.branch).decode().strip()
+    for (origin, package, executable), review in edition.extra.items():
+        if origin == repository:
             extra: Item = {"package": package, "executable": executable, "kind": "node"}
             extra.update({role: [] for role in ROLES})
             _reviewed(extra, review, "")
             extra.update(repository=repository, commit=commit)
             nodes.append(extra)
+    if not source.folders:  # only nodes no source defines (rviz)
+        return nodes
     with tempfile.TemporaryDirectory() as checkout:
+        folders = [*source.folders, *source.headers]
         paths = [folder for folder in folders if folder] or ["."]
         archive = _git(directory, "archive", "--format=tar", commit, *paths, *SKIPPED)
         subprocess.run(["tar", "-x", "-C", checkout], input=archive, check=True)
-        roots = [os.path.join(checkout, folder) for folder in folders]
-        packages = discover(roots, ros_package_path="").packages.values()
-        interfaces = extract_interfaces(packages)
+        roots = [os.path.join(checkout, folder) for folder in source.folders]
+        headers = [os.path.join(checkout, folder) for folder in source.headers]
+        workspace = discover(roots + headers, ros_package_path="", ament_prefix_path="")
+        catalogued = [
+            package
+            for package in workspace.packages.values()
+            if not any(os.path.commonpath([package.path, folder]) == folder for folder in headers)
+        ]
+        everything = workspace.packages.values()
+        interfaces = extract_interfaces(catalogued, Confinement.of([checkout]), everything)
         for diagnostic in interfaces.diagnostics:
             print(f"{repository}: {diagnostic}", file=sys.stderr)
         for node in interfaces.nodes:
-            unreviewed = (node.package, node.executable) not in REVIEW
+            unreviewed = (node.package, node.executable) not in edition.review
             if unreviewed and (TEST_EXECUTABLE.search(node.executable) or not node.entries):
                 continue
             document = node_document(node)
-            review = REVIEW.get((node.package, node.executable))
+            review = edition.review.get((node.package, node.executable))
             if review is not None:
                 _reviewed(document, review, checkout)
             document["repository"] = repository
@@ -636,19 +622,19 @@ def _repository(mirrors: str, repository: str, branch: str, folders: list[str]) 
     return nodes
 
 
-def reapply(path: str) -> dict[str, object]:
+def reapply(path: str, edition: Edition) -> dict[str, object]:
     """The catalogue at ``path`` with the review's additions, ``named``, ``when``,
     ``defaults`` and ``loads`` applied again (they change no entry the extractor reads: no
     mirror is needed)."""
     with open(path, encoding="utf-8") as handle:
         document = json.load(handle)
     for node in document["catalogue"]:
-        found = REVIEW.get((node["package"], node["executable"]))
+        found = edition.review.get((node["package"], node["executable"]))
         if found is not None:
             _added(node, found)
             _switched(node, found)
             node["review"] = found.note
-    _loaded(document["catalogue"])
+    _loaded(document["catalogue"], edition)
     return dict(document)
 
 
@@ -667,13 +653,20 @@ def main() -> int:
         help="build one repository of SOURCES again into a built catalogue (other mirrors "
         "not needed)",
     )
+    options.add_argument(
+        "--ros",
+        choices=sorted(EDITIONS),
+        default="ros1",
+        help="the catalogue to build (catalogue/ros1.json, catalogue/ros2.json)",
+    )
     arguments = options.parse_args()
+    edition = EDITIONS[arguments.ros]
     if arguments.only:
-        built = splice(arguments.only[1], arguments.mirrors, arguments.only[0])
+        built = splice(arguments.only[1], arguments.mirrors, arguments.only[0], edition)
     elif arguments.reapply:
-        built = reapply(arguments.reapply)
+        built = reapply(arguments.reapply, edition)
     else:
-        built = build(arguments.mirrors)
+        built = build(arguments.mirrors, edition)
     print(json.dumps(built, indent=1, ensure_ascii=False))
     return 0
 

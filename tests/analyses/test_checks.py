@@ -14,6 +14,7 @@ from rosvar.diagnostics import Severity
 from rosvar.interpreter.resolution import Restriction
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.documents.findings import finding_document
+from rosvar.ros import names
 from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
@@ -45,11 +46,18 @@ LAUNCH = """
   <node pkg="pkg" type="reader.py" name="reader">
     <param name="rate" value="1" if="$(arg two)"/>
     <param name="gian" value="2" if="$(arg wrong)"/>
+    <remap from="inptu" to="chatter" if="$(arg wrong)"/>
   </node>
   <node pkg="pkg" type="listener.py" name="listener" if="$(arg two)"/>
 """
 ARGS = ("two", "listen", "wrong")
 READS = {"reader": ("rate", "gain")}
+USES = {  # the names each script uses (SOURCES), resolved in a node of name NODE in /
+    "talker.py": {"/chatter"},
+    "listener.py": {"/chatter"},
+    "counter.py": {"/chatter"},
+    "reader.py": {"/NODE/rate", "/NODE/gain", "/NODE/input"},
+}
 
 
 def _setup(ws: LaunchWorkspace) -> tuple[Analysis, str, Interfaces]:
@@ -80,6 +88,12 @@ def _expected(
     if "/reader/rate" not in resolution.params:
         found.add((Check.PARAM_UNSET, "/reader/rate"))
     launched = {node.own_name for node in resolution.nodes}
+    for started in resolution.nodes:
+        own_name, executable = started.own_name or "", started.executable or ""
+        uses = {use.replace("NODE", own_name) for use in USES[executable]}
+        for source, _target in started.remaps:
+            if names.ns_join("/", source) not in uses:
+                found.add((Check.REMAP_UNUSED, names.ns_join("/", source)))
     for name in resolution.params:  # only reader.py reads parameters (SOURCES)
         node, _, own = name.removeprefix("/").partition("/")
         if node in launched and own not in READS.get(node, ()):
@@ -124,6 +138,11 @@ def test_findings_are_readable(ws: LaunchWorkspace) -> None:
         misspelt.message == "/reader/gian is set for /reader, which never reads it (it reads ~gain)"
     )
     assert analysis.space.describe(misspelt.condition) == "wrong"
+    [renaming] = [f for f in findings if f.check is Check.REMAP_UNUSED]
+    assert renaming.message == (
+        "/reader never uses /inptu: its remap to chatter renames nothing (it uses /reader/input)"
+    )
+    assert [at.line for at in renaming.locations] == [15, 12]  # the <remap>, then its <node>
     [unfed] = [f for f in findings if f.check is Check.NO_PROVIDER]
     assert unfed.name == "/reader/input"
     assert analysis.space.describe(unfed.condition) in ("¬listen ∨ ¬two", "¬two ∨ ¬listen")

@@ -231,7 +231,8 @@ def test_resolve_a_ros2_file(tmp_path: Path, capsys: pytest.CaptureFixture[str])
 def test_query_and_check_on_a_ros2_workspace(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    """A ROS 2 node's executable is its ``exec``; the ROS 1 catalogue does not apply."""
+    """A ROS 2 node's executable is its ``exec``; the ROS 2 catalogue, not ROS 1's, gives
+    its interface (ROS 2's joy publishes ``joy``, its feedback input a boundary use)."""
     package = ament_package(tmp_path / "p")
     (package / "a.launch.xml").write_text(
         """<launch><arg name="joy" default="true"/>
@@ -245,7 +246,11 @@ def test_query_and_check_on_a_ros2_workspace(
     assert result["name"] == "/joy" and result["example"] == {"a.launch.xml:joy": "true"}
     code, out, _err = run(capsys, "check", str(tmp_path), "--format", "json")
     assert code == EXIT_OK
-    assert json.loads(out)["findings"] == []  # joy's ROS 1 interface is not ROS 2's
+    findings = json.loads(out)["findings"]
+    assert {(f["check"], f["severity"], f["name"]) for f in findings} == {
+        ("no-provider", "note", "/joy/set_feedback"),
+        ("no-subscriber", "note", "/joy"),
+    }
 
 
 def test_resolve_warns_of_an_arg_no_file_reads(

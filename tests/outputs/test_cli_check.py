@@ -181,3 +181,27 @@ def test_interfaces_missing_lists_launched_nodes_without_interface(
         ("pkg/absent", 1, False),
     ]
     assert sorted(site.rsplit(":", 1)[1] for site in rows[0]["launched_at"]) == ["5", "6"]
+
+
+def test_interfaces_missing_in_a_ros2_workspace(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """ROS 2's catalogue describes rviz2 and the component containers (their loading
+    services); a process that names no package executable (``gzserver``) is no node."""
+    package = tmp_path / "p"
+    package.mkdir()
+    (package / "package.xml").write_text(
+        "<package format='3'><name>p</name>"
+        "<export><build_type>ament_cmake</build_type></export></package>"
+    )
+    (package / "a.launch.xml").write_text(
+        "<launch>\n"
+        '  <node pkg="rviz2" exec="rviz2"/>\n'
+        '  <node pkg="rclcpp_components" exec="component_container" name="c"/>\n'
+        '  <executable cmd="gzserver -s libgazebo_ros_factory.so"/>\n'
+        '  <node pkg="mystery" exec="box"/>\n'
+        "</launch>\n"
+    )
+    code, out, _err = run(capsys, "interfaces", str(tmp_path), "--missing")
+    assert code == EXIT_OK
+    assert out.splitlines() == ["   1  mystery/box  (third-party)"]

@@ -14,15 +14,17 @@ import difflib
 import enum
 import os
 from collections import Counter, defaultdict
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 
 from rosvar.analyses.communication import (
+    CHANNEL,
     SIDES,
     Channel,
     Described,
     Edge,
     Gap,
+    camera_info_beside,
     entry_when,
     find_interface,
     launched_units,
@@ -38,6 +40,7 @@ from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, YamlDecl
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
+from rosvar.ros.version import RosVersion
 from rosvar.workspace.interfaces.model import Interfaces, Origin, Role
 from rosvar.workspace.paths import real_path
 
@@ -54,6 +57,8 @@ class Check(enum.StrEnum):
     NODE_NAME_CLASH = "node-name-clash"
     PARAM_UNSET = "param-unset"
     PARAM_UNREAD = "param-unread"
+    REMAP_UNUSED = "remap-unused"
+    PARAM_FILE_UNMATCHED = "param-file-unmatched"
     SYMBOLIC_NAME = "symbolic-name"
     WHEN_UNKNOWN = "when-unknown"
     UNREAD = "unread"
@@ -69,6 +74,10 @@ DESCRIPTIONS: dict[Check, str] = {
     Check.PARAM_UNSET: "a node reads a parameter without a default that no launch file sets",
     Check.PARAM_UNREAD: "a launch file sets a parameter of a node that never reads it (a "
     "misspelt name: the node runs on its default)",
+    Check.REMAP_UNUSED: "a node's remap renames a name the node never uses (a typo, or "
+    "another node's name: the node keeps its own)",
+    Check.PARAM_FILE_UNMATCHED: "a ROS 2 node is given a parameter file with no entry for its "
+    "name: the node gets none of its parameters",
     Check.SYMBOLIC_NAME: "a name could not be resolved statically: the checks skip it",
     Check.WHEN_UNKNOWN: "a hinted entry's when: reads a parameter whose value is not known: "
     "the entry is kept there",
@@ -92,6 +101,37 @@ class Finding:
     file: str
     condition: BDD
     locations: tuple[Location, ...]  # the first is where the problem is reported
+
+
+@dataclass(frozen=True)
+class Found:
+    """A finding before it is placed in its entry file: what a dialect's own checks make
+    (:data:`MODEL_CHECKS`)."""
+
+    check: Check
+    severity: Severity
+    name: str
+    message: str
+    condition: BDD
+    locations: tuple[Location, ...]
+
+
+ModelCheck = Callable[[ConditionSpace, LaunchModel, Interfaces, Confinement], Iterable[Found]]
+"""A check of an entry file's nodes that only their dialect's launch semantics can make
+(ROS 2's parameter files, matched to the nodes as rcl matches them)."""
+MODEL_CHECKS: dict[RosVersion, list[ModelCheck]] = defaultdict(list)
+"""The dialects' own checks, by the ROS of the nodes they check (filled by the dialects: the
+core names neither)."""
+
+
+def model_check(version: RosVersion) -> Callable[[ModelCheck], ModelCheck]:
+    """Register a check of the entry files whose nodes are of ``version``."""
+
+    def register(check: ModelCheck) -> ModelCheck:
+        MODEL_CHECKS[version].append(check)
+        return check
+
+    return register
 
 
 def check_models(
@@ -164,6 +204,8 @@ def check_model(
     checker.node_names()
     checker.params(interfaces)
     checker.unread(interfaces)
+    checker.remaps(interfaces)
+    checker.dialects(interfaces)
     checker.whens(interfaces)
     return checker.findings
 
@@ -424,6 +466,61 @@ class _Checker:
                     (location, node_location),
                 )
 
+    def remaps(self, interfaces: Interfaces) -> None:
+        """A node's own ``<remap>`` of a name it never uses (nor a name below it: an action's
+        topics, a transport's), where its every use is known: read off the workspace's
+        sources, each name static. The remap renames nothing, so the node keeps its own
+        name (a typo, or the name another node uses)."""
+        for node in self.model.nodes:
+            own = [r for r in node.remaps if r.location is not None and isinstance(r.source, str)]
+            if node.is_test or not own:
+                continue
+            for condition, launched, interface, static in launched_units(
+                self.space, node, interfaces
+            ):
+                entries = interface.entries
+                known = all(
+                    e.static and e.origin is Origin.SOURCE and e.named_by is None for e in entries
+                )
+                if not static or not known or not any(e.role in CHANNEL for e in entries):
+                    continue
+                used = {launched.resolve(e.name) for e in entries}
+                used |= {
+                    camera_info_beside(launched.resolve(e.beside))
+                    for e in entries
+                    if e.beside is not None
+                }
+                for remap in own:
+                    source = launched.resolve(str(remap.source))
+                    if any(source == u or source.startswith(u + names.SEP) for u in used):
+                        continue
+                    near = nearest(source, used)
+                    target = remap.target if isinstance(remap.target, str) else "…"
+                    self.add(
+                        Check.REMAP_UNUSED,
+                        Severity.WARNING,
+                        source,
+                        f"{launched.full_name} never uses {source}: its remap to {target} "
+                        "renames nothing" + (f" (it uses {near})" if near else ""),
+                        condition & remap.condition,
+                        (remap.location or node.location, node.location),
+                    )
+
+    def dialects(self, interfaces: Interfaces) -> None:
+        """The checks its nodes' dialect adds (:data:`MODEL_CHECKS`)."""
+        versions = {node.schema.version for node in self.model.nodes}
+        for version in sorted(versions):
+            for check in MODEL_CHECKS.get(version, ()):
+                for found in check(self.space, self.model, interfaces, self.confinement):
+                    self.add(
+                        found.check,
+                        found.severity,
+                        found.name,
+                        found.message,
+                        found.condition,
+                        found.locations,
+                    )
+
     def whens(self, interfaces: Interfaces) -> None:
         """Hinted entries kept where their ``when:`` reads a parameter whose value analysis
         cannot know (unset without a default, a typed text, an unknown ``<rosparam>``)."""
@@ -506,6 +603,14 @@ def _unknown_nodes(
 
 def _nodes(edges: Sequence[Edge]) -> str:
     return ", ".join(sorted({e.node for e in edges}))
+
+
+def nearest(name: str, used: Iterable[str]) -> str | None:
+    """The used name whose last part is closest to ``name``'s (a typo, or the right name in
+    another namespace)."""
+    last = {u.rsplit(names.SEP, 1)[-1]: u for u in sorted(used)}
+    near = difflib.get_close_matches(name.rsplit(names.SEP, 1)[-1], list(last), n=1)
+    return last[near[0]] if near else None
 
 
 def _reads(reads: Iterable[str], name: str) -> bool:

@@ -278,8 +278,9 @@ def uninterfaced(
 ) -> list[Uninterfaced]:
     """The nodes of ``models`` without a known interface: they have no edges, so the checks
     and the graph say nothing about their topics (a node of a file several entry files
-    include is listed once; tests excluded, and nodelet managers, whose interface is what
-    they load)."""
+    include is listed once; tests excluded, nodelet managers, whose interface is what they
+    load, and processes that name no executable of a package: ROS 2's ``ExecuteProcess``
+    of a command such as ``gzserver``)."""
     found: dict[tuple[str, Location], set[str]] = {}
     for model in models:
         for node in model.nodes:
@@ -287,7 +288,7 @@ def uninterfaced(
                 continue
             for _condition, launched, _values in node_branches(space, node):
                 unit = launched.unit()
-                if unit is not None and find_interface(interfaces, unit) is None:
+                if unit is not None and unit[1] and find_interface(interfaces, unit) is None:
                     shown = "/".join(part for part in unit if part)
                     found.setdefault((shown, node.location), set()).add(launched.full_name)
     return sorted(Uninterfaced(u, at, tuple(sorted(n))) for (u, at), n in found.items())
@@ -442,10 +443,13 @@ def entry_names(
     image_transport's camera info lies beside its image topic as remapped."""
     if entry.beside is None:
         return remapped(node, remaps, entry.name, when)
-    return [(c, _beside(image)) for c, image in remapped(node, remaps, entry.beside, when)]
+    return [
+        (c, camera_info_beside(image)) for c, image in remapped(node, remaps, entry.beside, when)
+    ]
 
 
-def _beside(image: str) -> str:
+def camera_info_beside(image: str) -> str:
+    """image_transport's camera info topic: beside its image topic (once remapped)."""
     return names.ns_join(image.rsplit(names.SEP, 1)[0] or names.SEP, "camera_info")
 
 
@@ -541,7 +545,7 @@ def resolved_graph(
             for use in _resolved_uses(node, launched, interface, entry, params):
                 resolved = launched.resolve(use.beside or use.name)
                 name = table.get(resolved, resolved)
-                name = name if use.beside is None else _beside(name)
+                name = name if use.beside is None else camera_info_beside(name)
                 uses.append((launched.full_name, use.role, name, use.type))
     return uses_graph(uses)
 

@@ -41,12 +41,16 @@ class Fingerprints:
             return file
         if not os.path.isabs(file) and os.sep in file and " " in file:
             # a described place ("the text of the parameter at /ws/pkg/f.launch:15:3")
-            return _NUMBERS.sub("", self._within(file))
+            return self._place(file)
         absolute = os.path.abspath(file)
         for root, name in self._roots:
             if absolute.startswith(root + os.sep):
                 return f"{name}/{os.path.relpath(absolute, root)}".replace(os.sep, "/")
         return os.path.basename(absolute)
+
+    def _place(self, text: str) -> str:
+        """``text`` with its package folders as package names and no trailing ``:line:col``."""
+        return _NUMBERS.sub("", self._within(text))
 
     def _within(self, text: str) -> str:
         """``text`` with each package folder written as its package's name."""
@@ -57,7 +61,7 @@ class Fingerprints:
     def of(self, finding: Finding) -> str:
         parts = [
             str(finding.check),
-            self._within(finding.name),  # a name may be a file's
+            self._place(finding.name),  # an `unread` finding names a file or a place in one
             self._within(finding.message),  # a message naming a file names it in its package
             self.relative(finding.file),
             *(self.relative(location.file) for location in finding.locations),

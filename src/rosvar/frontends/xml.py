@@ -307,11 +307,14 @@ class Snapshot:
     than the rest of the lookup. The results are shared: read-only, diagnostics included.
     """
 
-    __slots__ = ("_loaded", "_loader")
+    __slots__ = ("_loaded", "_loader", "tables")
 
     def __init__(self, loader: Callable[[str], ParseResult] | None = None) -> None:
         self._loaded: dict[str, ParseResult] = {}
         self._loader = loader or load_launch_file  # ROS 2 passes the frontend registry's
+        self.tables: dict[str, object] = {}
+        """What the walks over these files keep of them (the ROS 2 include memo, keyed by
+        the parsed files): it lives as long as they do, and no longer."""
 
     def load(self, path: str) -> ParseResult:
         result = self._loaded.get(path)

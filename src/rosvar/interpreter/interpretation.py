@@ -125,6 +125,7 @@ class Interpretation(Generic[S]):
         self.anon_count: Choice[int] = Choice.const(space, 0)
         self.stack: list[str] = []
         self.depth = 0
+        self.deepest = 0  # the deepest nesting walked (a replayed walk must fit in MAX_NESTING)
         self.included = 0  # includes followed, up to MAX_INCLUDES
         self._location = Location(file)
 
@@ -374,6 +375,8 @@ class Interpretation(Generic[S]):
         saved = self._location
         tags = self.tags
         self.depth += 1
+        if self.depth > self.deepest:
+            self.deepest = self.depth
         try:
             for child in children:
                 handler = tags.get(child.tag)

@@ -73,6 +73,10 @@ class Remap:
     condition: BDD
     source: Raw
     target: Raw
+    location: Location | None = None
+    """Where a node's own ``<remap>`` is written; None for one it inherits (a group's, a
+    global one), which renames for every node under it: a node that never uses its name is
+    then no mistake."""
 
 
 @dataclass(slots=True)

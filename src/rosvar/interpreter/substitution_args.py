@@ -486,8 +486,13 @@ class ValueBudget:
 
     def __init__(self, space: ConditionSpace, note: Callable[[str], None]) -> None:
         self.space = space
-        self.note = note
+        self._note = note
         self.combinations = 0  # spent from MAX_FILE_COMBINATIONS
+        self.notes = 0  # notes made: a memo keeps no value that made one
+
+    def note(self, message: str) -> None:
+        self.notes += 1
+        self._note(message)
 
     def affordable(self, text: str, choices: Sequence[Choice[object]]) -> bool:
         """Whether combining ``choices`` for ``text`` stays within the work limits (and,
@@ -506,6 +511,12 @@ class ValueBudget:
             return True
         self.note(f"{_short(text)} is not computed: {reason}")
         return False
+
+    def spares(self, combinations: int) -> bool:
+        """Whether work that spent ``combinations`` from here on would meet no limit: each
+        of its texts within :data:`MAX_COMBINATIONS`, the file within
+        :data:`MAX_FILE_COMBINATIONS` (memos replay such work, and spend as much)."""
+        return self.combinations + combinations + MAX_COMBINATIONS <= MAX_FILE_COMBINATIONS
 
     def join(
         self,

@@ -33,7 +33,7 @@ _SELF_KEYED = frozenset({str, Hole, Apply})
 compare their class), and the most common leaves."""
 
 
-def _key(leaf: object) -> object:
+def leaf_key(leaf: object) -> object:
     """Merge key: equal *and* of the same type (0, False and 0.0 are different params)."""
     if type(leaf) in _SELF_KEYED:  # other keys are tuples, never equal to these
         return leaf
@@ -42,7 +42,7 @@ def _key(leaf: object) -> object:
     except TypeError:
         return ("unhashable", type(leaf).__name__, repr(leaf))
     if isinstance(leaf, tuple):
-        return (tuple, tuple(_key(item) for item in leaf))
+        return (tuple, tuple(leaf_key(item) for item in leaf))
     return (type(leaf), leaf)
 
 
@@ -107,7 +107,7 @@ class Choice(Generic[T]):
     def key(self) -> tuple[tuple[BDD, object], ...]:
         """The branches as a dictionary key: equal keys are the same branches (conditions
         and leaves, as :func:`_key` tells leaves apart) in the same order."""
-        return tuple((condition, _key(leaf)) for condition, leaf in self.branches)
+        return tuple((condition, leaf_key(leaf)) for condition, leaf in self.branches)
 
     def single(self) -> T | None:
         """The value when there is exactly one branch (whatever its condition)."""
@@ -164,7 +164,7 @@ def _merged(branches: Iterable[tuple[BDD, V]]) -> tuple[tuple[BDD, V], ...]:
     merged: dict[object, tuple[BDD, V]] = {}
     for branch in branches:
         leaf = branch[1]
-        key = leaf if type(leaf) in _SELF_KEYED else _key(leaf)
+        key = leaf if type(leaf) in _SELF_KEYED else leaf_key(leaf)
         known = merged.get(key)
         merged[key] = branch if known is None else (known[0] | branch[0], leaf)
     return tuple(merged.values())
@@ -198,6 +198,32 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
     """
     if not choices:
         return Choice((), None)
+    return Choice._of_possible(
+        [(c, function(leaves)) for c, leaves in _crossed(choices)], choices[0].false
+    )
+
+
+def combine_bind(
+    choices: Sequence[Choice[V]], function: Callable[[list[V]], Choice[U]]
+) -> Choice[U]:
+    """``combine(choices, tuple).bind(...)`` without the intermediate choice: the
+    combinations of merged operands are distinct, so merging them (by their leaves' keys)
+    only cost time."""
+    if not choices:
+        return Choice((), None)
+    false = choices[0].false
+    out: list[tuple[BDD, U]] = []
+    for condition, leaves in _crossed(choices):
+        for inner, value in function(leaves):
+            joint = condition & inner
+            if joint != false:
+                out.append((joint, value))
+    return Choice._of_possible(out, false)
+
+
+def _crossed(choices: Sequence[Choice[V]]) -> list[tuple[BDD, list[V]]]:
+    """The jointly possible combinations of the (non-empty) ``choices``' leaves, in the
+    order of a nested loop over the operands, first outermost."""
     false = choices[0].false
     joint: BDD | None = None  # conjunction of the single branches' conditions; None: true
     varying: list[int] = []
@@ -216,7 +242,7 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
             joint = joint & condition
     if not varying:  # every operand a single branch: ``joint`` conjoins them all
         assert joint is not None
-        return Choice.of([(joint, function(leaves))], false)
+        return [] if joint == false else [(joint, leaves)]
     if joint is not None and joint.var is None and joint != false:  # true: nothing to conjoin
         joint = None
     partial: list[tuple[BDD | None, list[V]]] = [(joint, leaves)]
@@ -230,5 +256,4 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
                     chosen[index] = v
                     nxt.append((both, chosen))
         partial = nxt
-    conjoined = cast("list[tuple[BDD, list[V]]]", partial)  # each with a varying one's branch
-    return Choice._of_possible([(c, function(vs)) for c, vs in conjoined], false)
+    return cast("list[tuple[BDD, list[V]]]", partial)  # each with a varying one's branch

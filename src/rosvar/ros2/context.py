@@ -10,6 +10,7 @@ same rule (with a twist, see :meth:`Context.scoped`).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from enum import Enum, auto
 
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.model import Raw
@@ -73,6 +74,33 @@ class Events:
     """Where each process action (by where it was written) started, and on what trigger."""
 
 
+class Probe(Enum):
+    """What a walk reads of the state before it, besides its context's fixed parts (the
+    include memo's keys: :mod:`rosvar.ros2.include_memo`)."""
+
+    CONFIGURATION = auto()  # a launch configuration's value
+    INPUT = auto()  # whether the entry file's model has the name as an input
+    LISTED = auto()  # whether an included file's declaration of it is listed in the model
+    NAMES = auto()  # the names of every launch configuration set (``<reset>`` reads them)
+
+
+@dataclass(slots=True)
+class Recording:
+    """What the included files' walks being recorded (:mod:`rosvar.ros2.include_memo`) read
+    and met, shared by every copy of a context: each walk takes the part of the logs from
+    its start."""
+
+    walks: int = 0  # walks being recorded (nested ones included): the logs are kept
+    reads: list[tuple[Probe, str, object]] = field(default_factory=list)
+    """Each read, with what it saw (a configuration's value, or the probe's answer)."""
+    included: list[str] = field(default_factory=list)
+    """The real path of each file an include named, as the cycle check saw it."""
+    loaded: list[str] = field(default_factory=list)
+    """Each launch file an include loaded, as the model lists it."""
+    deepest_check: int = -1
+    """The longest include stack an include's depth limit was checked at (-1: none)."""
+
+
 @dataclass(slots=True)
 class Context:
     """Launch configurations and the ROS-specific state kept beside them."""
@@ -95,6 +123,16 @@ class Context:
     trigger: str = "launch"
     """What runs the actions being visited: the launch, a timer, an event (as the oracle's
     ``trigger``)."""
+    recording: Recording = field(default_factory=Recording)  # shared by every copy
+
+    def get(self, name: str) -> Configuration | None:
+        """The launch configuration ``name`` (None where never set): the one door through
+        which walks read them, so that a walk being recorded knows what it read."""
+        value = self.configurations.get(name)
+        recording = self.recording
+        if recording.walks:
+            recording.reads.append((Probe.CONFIGURATION, name, value))
+        return value
 
     def scoped(self) -> Context:
         """A copy for a scoped group (``PushLaunchConfigurations``).
@@ -117,6 +155,7 @@ class Context:
             self.unset_reads,
             self.events,
             self.trigger,
+            self.recording,
         )
 
     def reset(self) -> None:

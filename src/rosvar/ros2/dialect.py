@@ -8,7 +8,10 @@ from collections.abc import Callable
 from rosvar.interpreter.interpretation import Handler
 from rosvar.interpreter.semantics import Semantics
 from rosvar.ros.version import RosVersion
-from rosvar.ros2 import boolean_substitutions  # noqa: F401 - registers their handlers
+from rosvar.ros2 import (
+    boolean_substitutions,  # noqa: F401 - registers their handlers
+    parameter_checks,  # noqa: F401 - registers ROS 2's own checks
+)
 from rosvar.ros2.api.actions import ACTIONS
 from rosvar.ros2.context import Context
 from rosvar.ros2.entry import walk_entry

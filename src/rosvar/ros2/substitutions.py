@@ -22,7 +22,7 @@ from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
 from rosvar.interpreter.substitution_args import ValueBudget, too_complex
-from rosvar.logic.choice import Choice, Fail, combine, ite
+from rosvar.logic.choice import Choice, Fail, combine_bind, ite
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, TermError, concat, register
 from rosvar.memo import Memo
@@ -213,8 +213,11 @@ RESOLVED_BRANCHES = 16
 """Only values of at most this many branches are kept: larger ones are cross products of
 values that vary a lot, which no other read met again (docs/performance.md)."""
 _resolved: weakref.WeakKeyDictionary[
-    ConditionSpace, Memo[object, tuple[Choice[Value], frozenset[str]]]
+    ConditionSpace, Memo[object, tuple[Choice[Value], frozenset[str], int]]
 ] = weakref.WeakKeyDictionary()
+"""Each value with the unset names it read and the combinations it spent of the file's
+budget (a reuse spends them too, so that the budget is the same whatever was resolved
+before; a value that met a limit is not kept)."""
 
 
 @dataclass(frozen=True)
@@ -261,6 +264,8 @@ class Ros2Substituter:
     def __init__(self, host: Interpretation[Context]) -> None:
         self.host = host
         self.space = host.space
+        # the host's method, not one of this object: a cycle through the budget would hold
+        # the analysis's conditions until a collection freed them after their manager
         self.budget = ValueBudget(host.space, host.note_too_complex)
 
     def resolve(self, text: str | None, context: Context) -> Choice[Value] | None:
@@ -276,20 +281,23 @@ class Ros2Substituter:
         key = (
             text,
             context.filename if reads.filename else None,
-            tuple(_content(context.configurations.get(name)) for name in reads.names),
+            tuple(_content(context.get(name)) for name in reads.names),
         )
         memo = _resolved.get(self.space)
         if memo is None:
             memo = _resolved[self.space] = Memo(RESOLVED_CAPACITY)
         known = memo.get(key)
-        if known is not None:
+        if known is not None and self.budget.spares(known[2]):
+            self.budget.combinations += known[2]
             context.unset_reads |= known[1]
             return known[0]
         unset_reads, context.unset_reads = context.unset_reads, set()
+        notes, spent = self.budget.notes, self.budget.combinations
         try:
             value = self.template(template, context, text)
-            if len(value.branches) <= RESOLVED_BRANCHES:
-                memo[key] = (value, frozenset(context.unset_reads))
+            if len(value.branches) <= RESOLVED_BRANCHES and self.budget.notes == notes:
+                spent = self.budget.combinations - spent
+                memo[key] = (value, frozenset(context.unset_reads), spent)
         finally:
             unset_reads |= context.unset_reads
             context.unset_reads = unset_reads
@@ -336,9 +344,7 @@ class Ros2Substituter:
             return handler(self.host, context, [])
         if not self.budget.affordable(text, arguments):
             return Choice.const(self.space, too_complex(text))
-        return combine(arguments, lambda leaves: leaves).bind(
-            lambda leaves: _call(handler, self.host, context, leaves)
-        )
+        return combine_bind(arguments, lambda leaves: _call(handler, self.host, context, leaves))
 
 
 def _call(
@@ -378,7 +384,7 @@ def _var(host: Interpretation[Context], context: Context, args: list[Raw]) -> Ch
 def configuration(host: Interpretation[Context], context: Context, name: str) -> Choice[Raw | None]:
     """The launch configuration ``name`` (None where it is undefined, which is recorded:
     :attr:`Context.unset_reads`)."""
-    value = context.configurations.get(name)
+    value = context.get(name)
     if value is None:
         context.unset_reads.add(name)
         return Choice.const(host.space, None)
@@ -584,7 +590,7 @@ def _anon(host: Interpretation[Context], context: Context, args: list[Raw]) -> C
     if len(args) != 1 or not isinstance(args[0], str):
         return _fail(host, "$(anon) takes one argument", "substitution-invalid")
     key = "anon" + args[0]
-    old = context.configurations.get(key)
+    old = context.get(key)
     unset = host.space.true if old is None else old.where(lambda leaf: leaf is None)
     if unset != host.space.false:
         with host.under(unset) as live:

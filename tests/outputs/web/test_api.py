@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 from pathlib import Path
 from typing import Any
 
@@ -11,6 +12,7 @@ from outputs.web.live import Live, configurator, running
 from rosvar.analyses.feature_model import counting
 from rosvar.configuration.engine import Configurator
 from rosvar.outputs.documents.state import state_document
+from rosvar.outputs.web import api
 from rosvar.outputs.web.api import MAX_TEXT, Api
 
 
@@ -199,6 +201,32 @@ def test_a_new_api_prepares_the_counts(
     assert not any("_residues" in vars(diagram) for diagram in diagrams)
     Api(examples_engine)
     assert all("_residues" in vars(diagram) for diagram in diagrams)
+
+
+def test_calls_run_with_the_collector_paused(
+    examples_engine: Configurator, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A call's documents are made with the cyclic collector paused (it ran full
+    collections of the engine's heap inside the calls) and it runs again afterwards."""
+    made: list[bool] = []
+
+    def document(*args: Any) -> dict[str, object]:
+        made.append(gc.isenabled())
+        return state_document(*args)
+
+    monkeypatch.setattr(api, "state_document", document)
+    enabled = gc.isenabled()
+    gc.enable()
+    try:
+        served = Api(examples_engine)
+        key = str(served.handle("POST", "/api/session", {}, {})["session"])
+        served.handle("POST", "/api/session", {}, {"overview": "package"})
+        served.handle("GET", "/api/state", {"session": key}, {})
+        assert made == [False, False, False]
+        assert gc.isenabled()
+    finally:
+        if not enabled:
+            gc.disable()
 
 
 def test_a_ros2_workspace_is_served_with_its_ros2_launch_command(tmp_path: Path) -> None:

@@ -12,6 +12,7 @@ import pytest
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
 from outputs.web.test_app import App
+from rosvar.configuration.session import Session
 from rosvar.outputs.web import inspection
 from rosvar.outputs.web.overview import key_of
 
@@ -314,3 +315,32 @@ def counted(answer: dict[str, Any]) -> str:
     """The checks' counts as the panel shows them."""
     counts = answer["counts"]
     return f"{counts['error']} errors · {counts['warning']} warnings · {counts['note']} notes"
+
+
+def test_no_checks_are_asked_while_a_step_is_answered(
+    page: Any, ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The checks are asked again every second while the findings are listed; a question
+    sent during a step would be answered under the engine's lock before the step's own
+    requests (the graph's members): none is sent from the click until the step's state."""
+    small_workspace(ws)
+    monkeypatch.setattr(inspection._Findings, "listed", lambda self: None)  # listed forever
+    applied = Session.apply
+
+    def slow(self: Session, choice: Any) -> Any:
+        time.sleep(2.5)  # several of the page's questions while listing
+        return applied(self, choice)
+
+    monkeypatch.setattr(Session, "apply", slow)
+    with running(configurator(ws, interfaces=True)) as live:
+        app = App(page, live)
+        page.wait_for_selector("#checks-count:has-text('listing')")
+        events: list[str] = []
+        page.on("request", lambda request: events.append(f"asked {request.url}"))
+        page.on("response", lambda response: events.append(f"answered {response.url}"))
+        app.choose("a.launch", "select")
+        page.wait_for_timeout(1500)  # the checks are asked again once the state is shown
+        asked = events.index(f"asked {live.url}api/choose")
+        answered = events.index(f"answered {live.url}api/choose")
+        assert not [e for e in events[asked:answered] if e.endswith("/api/checks")]
+        assert f"asked {live.url}api/checks" in events[answered:]

@@ -5,11 +5,19 @@ from __future__ import annotations
 
 import json
 import re
+from collections import Counter
 from importlib import resources
-from typing import TYPE_CHECKING
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import jsonschema
+import pytest
 
 from rosvar.analyses.communication import model_edges
-from rosvar.workspace.interfaces.catalogue import DATA, load_catalogue
+from rosvar.outputs.cli import main
+from rosvar.ros.version import RosVersion
+from rosvar.workspace.interfaces import catalogue
+from rosvar.workspace.interfaces.catalogue import SCHEMA, data_file, load_catalogue
 from rosvar.workspace.interfaces.model import Interfaces, NodeInterface, NodeKind, Origin, Role
 from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
 
@@ -18,6 +26,13 @@ if TYPE_CHECKING:
     from rosvar.logic.bdd import BDD
 
 SOURCE_URL = re.compile(r"^https://github\.com/[\w.-]+/[\w.-]+/blob/[0-9a-f]{40}/\S+$")
+
+
+def _items(version: RosVersion) -> list[dict[str, Any]]:
+    """The catalogue's data as shipped."""
+    data = resources.files("rosvar.workspace.interfaces").joinpath(data_file(version))
+    items: list[dict[str, Any]] = json.loads(data.read_text("utf-8"))["catalogue"]
+    return items
 
 
 def _node(package: str, executable: str) -> NodeInterface:
@@ -30,8 +45,9 @@ def _uses(node: NodeInterface, role: Role) -> set[tuple[str, str | None]]:
     return {(entry.name, entry.type) for entry in node.of(role)}
 
 
-def test_every_entry_says_where_it_comes_from() -> None:
-    nodes = load_catalogue().nodes()
+@pytest.mark.parametrize("version", list(RosVersion))
+def test_every_entry_says_where_it_comes_from(version: RosVersion) -> None:
+    nodes = load_catalogue(version).nodes()
     assert len(nodes) > 50
     for node in nodes:
         for entry in node.entries:
@@ -40,11 +56,93 @@ def test_every_entry_says_where_it_comes_from() -> None:
             assert entry.location.line > 0
 
 
-def test_every_node_records_its_repository_and_commit() -> None:
-    data = resources.files("rosvar.workspace.interfaces").joinpath(DATA).read_text("utf-8")
-    for item in json.loads(data)["catalogue"]:
+@pytest.mark.parametrize("version", list(RosVersion))
+def test_every_node_records_its_repository_and_commit(version: RosVersion) -> None:
+    for item in _items(version):
         assert re.fullmatch(r"[\w.-]+/[\w.-]+", item["repository"]), item["executable"]
         assert re.fullmatch(r"[0-9a-f]{40}", item["commit"]), item["executable"]
+
+
+def _schema() -> dict[str, Any]:
+    """The catalogue's JSON Schema, shipped beside the data."""
+    data = resources.files("rosvar.workspace.interfaces").joinpath(SCHEMA)
+    schema: dict[str, Any] = json.loads(data.read_text("utf-8"))
+    return schema
+
+
+@pytest.mark.parametrize("version", list(RosVersion))
+def test_every_entry_satisfies_the_schema(version: RosVersion) -> None:
+    validator = jsonschema.Draft202012Validator(_schema())
+    validator.check_schema(_schema())
+    errors = [
+        f"{'/'.join(map(str, error.absolute_path))}: {error.message}"
+        for error in validator.iter_errors({"catalogue": _items(version)})
+    ]
+    assert errors == []
+
+
+def test_the_schema_refuses_what_the_loader_could_not_trace() -> None:
+    """An entry without its line, a node without its commit, a kind that is no NodeKind,
+    a default that is neither a literal nor an expression: each is an error."""
+    validator = jsonschema.Draft202012Validator(_schema())
+    node = next(item for item in _items(RosVersion.ROS2) if item["publishes"])
+    entry = node["publishes"][0]
+    for broken in (
+        {**node, "publishes": [{key: value for key, value in entry.items() if key != "line"}]},
+        {key: value for key, value in node.items() if key != "commit"},
+        {**node, "kind": "plugin"},
+        {**node, "params": [{"name": "x", "default": {"value": 1}, "file": "a.cpp", "line": 1}]},
+        {**node, "publishes": [{**entry, "file": "/tmp/checkout/a.cpp"}]},
+    ):
+        assert not validator.is_valid({"catalogue": [broken]}), broken
+    assert validator.is_valid({"catalogue": [node]})
+
+
+MOST_LAUNCHED = 8
+"""How many of a data set's most launched third-party executables must have entries."""
+CORPUS = Path(__file__).resolve().parents[4] / "shared" / "corpus"  # ../shared of the checkout
+ROS2_DATA = Path(__file__).resolve().parents[2] / "data" / "ros2"
+
+
+def _missing(roots: list[Path], capsys: pytest.CaptureFixture[str]) -> Counter[str]:
+    """``rosvar interfaces ROOT --missing``'s third-party executables (``pkg/exec``, a
+    nodelet's ``pkg/Class``, a component's ``pkg/ns::Class``), launches summed over
+    ``roots`` (those that hold launch files)."""
+    launches: Counter[str] = Counter()
+    for root in roots:
+        capsys.readouterr()
+        code = main(["interfaces", str(root), "--missing", "--json"])
+        out, err = capsys.readouterr()
+        if code != 0:  # a dependency's data only (launch_param_builder): nothing launched
+            assert "no launch files found" in err, err
+            continue
+        for row in json.loads(out)["missing"]:
+            if row["third_party"]:
+                launches[row["executable"]] += row["launches"]
+    return launches
+
+
+@pytest.mark.parametrize(
+    "data",
+    [
+        pytest.param([CORPUS], id="corpus"),
+        pytest.param(sorted(p for p in ROS2_DATA.iterdir() if p.is_dir()), id="ros2"),
+    ],
+)
+def test_the_most_launched_third_party_executables_have_entries(
+    data: list[Path], capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Ranked by ``interfaces --missing`` without the catalogue (every launched executable
+    no source or hint describes), the most launched ones are not missing with it."""
+    if not all(root.is_dir() for root in data):
+        pytest.skip("the corpus is not beside the repository")
+    still_missing = _missing(data, capsys)
+    with monkeypatch.context() as patch:
+        patch.setattr(catalogue, "load_catalogue", lambda version: catalogue.Catalogue([]))
+        launched = _missing(data, capsys)
+    most = [unit for unit, _count in launched.most_common(MOST_LAUNCHED)]
+    assert len(most) == MOST_LAUNCHED
+    assert [unit for unit in most if unit in still_missing] == []
 
 
 def test_the_corpus_most_launched_third_party_nodes_are_there() -> None:
@@ -216,3 +314,38 @@ def test_yocs_nodelets() -> None:
         "~robot_cmd_vel": "param('~robot_feedback') == 2",
         "~raw_cmd_vel": None,
     }
+
+
+def test_ros2_nodes_meet_their_partners(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """nav2's navigator calls the planner's, controller's and behaviours' actions and the
+    spawner the manager's services, all by the names the catalogue gives them (the nodes'
+    own names: ``bt_navigator``, ``controller_manager``); rviz2's tools are boundary uses.
+    What is left: joint_state_broadcaster's ``joint_states`` (ROS 2 controllers are not
+    modelled)."""
+    package = tmp_path / "p"
+    package.mkdir()
+    (package / "package.xml").write_text(
+        "<package format='3'><name>p</name>"
+        "<export><build_type>ament_cmake</build_type></export></package>"
+    )
+    nodes = [
+        ("controller_manager", "ros2_control_node"),
+        ("controller_manager", "spawner"),
+        ("nav2_bt_navigator", "bt_navigator"),
+        ("nav2_planner", "planner_server"),
+        ("nav2_controller", "controller_server"),
+        ("nav2_behaviors", "behavior_server"),
+        ("robot_state_publisher", "robot_state_publisher"),
+        ("rviz2", "rviz2"),
+    ]
+    (package / "a.launch.xml").write_text(
+        "<launch>"
+        + "".join(f'<node pkg="{p}" exec="{e}" args="joint_state_broadcaster"/>' for p, e in nodes)
+        + "</launch>"
+    )
+    assert main(["check", str(tmp_path), "--format", "json"]) == 0
+    findings = json.loads(capsys.readouterr().out)["findings"]
+    warned = {(f["check"], f["name"]) for f in findings if f["severity"] != "note"}
+    assert warned == {("no-provider", "/joint_states")}
+    unmet = {f["name"] for f in findings if f["check"] == "no-provider"}
+    assert unmet == {"/joint_states", "/speed_limit"}  # nav2's optional speed limit: a note

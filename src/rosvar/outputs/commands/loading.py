@@ -12,7 +12,6 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from rosvar.outputs.commands.exit_codes import EXIT_INPUT, EXIT_USAGE
-from rosvar.ros.version import RosVersion
 
 if TYPE_CHECKING:
     from rosvar.interpreter.workspace_models import Analysis
@@ -136,9 +135,8 @@ def hints_of(options: argparse.Namespace) -> Hints:
 def interfaces_of(
     workspace: Workspace, options: argparse.Namespace, packages: Iterable[Package] | None = None
 ) -> Interfaces:
-    """The interfaces of ``packages`` (the workspace's), the catalogue's when
-    ``options.catalogue`` and the workspace is ROS 1 (the catalogue's nodes are ROS 1
-    builds), then the hints' entries."""
+    """The interfaces of ``packages`` (the workspace's), the catalogue of the workspace's
+    ROS version when ``options.catalogue``, then the hints' entries."""
     from rosvar.workspace.interfaces.catalogue import load_catalogue
     from rosvar.workspace.interfaces.extraction import extract_interfaces
     from rosvar.workspace.interfaces.overrides import add_catalogue, apply_hints
@@ -148,7 +146,7 @@ def interfaces_of(
     interfaces = extract_interfaces(chosen, workspace.confinement(), everything)
     hints = hints_of(options)
     interfaces.diagnostics.extend(hints.diagnostics)
-    if getattr(options, "catalogue", True) and workspace.ros_version == RosVersion.ROS1:
-        add_catalogue(interfaces, load_catalogue())
+    if getattr(options, "catalogue", True):
+        add_catalogue(interfaces, load_catalogue(workspace.ros_version))
     apply_hints(interfaces, hints.nodes)
     return interfaces

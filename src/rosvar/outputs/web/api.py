@@ -6,7 +6,10 @@ text), and a bad request becomes an :class:`ApiError` with a 4xx status and a me
 A request that names the ``version`` of the state its tab holds is answered with a delta
 against it (:mod:`rosvar.outputs.web.sessions`); the others get the whole state.
 Engine calls are serialised by one lock: the BDD manager is not thread-safe, and the HTTP
-server runs API calls in several threads. A call waits for the engine at most
+server runs API calls in several threads. They run with the cyclic collector paused, as the
+engine's steps do: what a call keeps (verdicts, views, documents) joins the engine's heap,
+and CPython, which counts only what its own young collections promote, ran full collections
+of that whole heap inside the calls (docs/performance.md). A call waits for the engine at most
 ``ENGINE_WAIT`` (its time budget), then is answered 503, which the page tries again: a slow
 step of one client never keeps another's request waiting without end. The catalog needs no
 engine: it is answered at once.
@@ -25,6 +28,7 @@ from rosvar.analyses.query.parser import QueryError
 from rosvar.configuration.choices import Action, ChoiceError, UserChoice
 from rosvar.configuration.engine import ConfigurationState, Configurator
 from rosvar.configuration.session import Session
+from rosvar.interpreter.workspace_models import collector_paused
 from rosvar.outputs.documents.state import state_document
 from rosvar.outputs.web.inspection import Inspector
 from rosvar.outputs.web.overview import Grouping, MemberKind, catalog, compact, links, members
@@ -138,7 +142,8 @@ class Api:
                     "try again",
                 )
             try:
-                return route(self, query, body)
+                with collector_paused():  # (the module's docstring says why)
+                    return route(self, query, body)
             finally:
                 self._lock.release()
         finally:

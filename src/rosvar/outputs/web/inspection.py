@@ -35,6 +35,7 @@ from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.presence import Presence, PresenceVerdict
 from rosvar.configuration.view import Graph
 from rosvar.diagnostics import Severity
+from rosvar.interpreter.workspace_models import collector_paused
 from rosvar.logic.bdd import BDD
 from rosvar.outputs.documents.state import choice_document
 from rosvar.outputs.web.overview import Grouping, Packages, key_of, labels
@@ -246,7 +247,7 @@ class _Findings:
         confinement = analysis.workspace.confinement()
         try:
             for path in self._paths:
-                with self._lock:
+                with self._lock, collector_paused():  # as the API's calls (api.py)
                     self._found.extend(
                         check_model(analysis.space, analysis.model(path), interfaces, confinement)
                     )

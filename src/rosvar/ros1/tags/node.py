@@ -111,7 +111,7 @@ def _node(it: Interpretation[Scope], entity: Entity, scope: Scope, is_test: bool
     for sub in entity.children:
         with it.at(sub):
             if sub.tag == "remap":
-                add_remaps(it, sub, scope, own_remaps)
+                add_remaps(it, sub, scope, own_remaps, own=True)
             elif sub.tag == "param":
                 handle_param(it, sub, param_scope, force_local=True)
             elif sub.tag == "rosparam":

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+from dataclasses import replace
 
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed, split
@@ -17,10 +18,10 @@ ATTRIBUTES = ("from", "to")
 
 @processed
 def add_remaps(
-    it: Interpretation[Scope], entity: Entity, scope: Scope, remaps: list[Remap]
+    it: Interpretation[Scope], entity: Entity, scope: Scope, remaps: list[Remap], own: bool = False
 ) -> None:
     """Add to ``remaps`` what a ``<remap>`` adds on the current path (``_remap_tag`` +
-    ``add_remap``): a scope's own, or a node's."""
+    ``add_remap``): a scope's, or a node's ``own`` (located)."""
     it.check_attributes(entity, ATTRIBUTES)
     sources = it.required(entity, "from", scope)
     targets = it.required(entity, "to", scope)
@@ -34,7 +35,7 @@ def add_remaps(
             with it.under(condition):
                 pair = _canonical_pair(it, source, target)
             if pair is not None:
-                add_remap(remaps, Remap(condition, *pair))
+                add_remap(remaps, Remap(condition, *pair, it.location if own else None))
 
 
 @functools.lru_cache(maxsize=65536)
@@ -71,7 +72,7 @@ def add_remap(remaps: list[Remap], new: Remap) -> None:
     kept = []
     for remap in remaps:
         if remap.source == new.source:
-            remap = Remap(remap.condition & ~new.condition, remap.source, remap.target)
+            remap = replace(remap, condition=remap.condition & ~new.condition)
             if remap.condition == remap.condition.bdd.false:
                 continue
         kept.append(remap)

@@ -9,11 +9,13 @@ from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed
-from rosvar.interpreter.model import ArgDecl, Raw
+from rosvar.interpreter.model import ArgDecl
+from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, ite
 from rosvar.ros2.context import Configuration, Context, optional
 from rosvar.ros2.dialect import tag
-from rosvar.ros2.tags.common import assign
+from rosvar.ros2.include_memo import is_input, is_listed
+from rosvar.ros2.tags.common import assign, set_configuration
 
 
 @tag("arg")
@@ -23,15 +25,15 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     if not name:
         it.fail(it.space.true, "attribute-missing", "<arg> tag is missing required 'name'")
         return
-    old = context.configurations.get(name)
-    if context.open_command_line and len(it.stack) > 1:
-        if name not in it.model.inputs:
-            old = _given(it, context, name, old)
-        elif name in it.model.settable and (old is None or old.where(_unset) != it.space.false):
-            # declared again outside the scope of its first declaration, which set the
-            # command line's value: the next interpretation knows it from the start
+    old = context.get(name)
+    unset = _unset(it, old)
+    included = len(it.stack) > 1
+    if unset != it.space.false and context.open_command_line and included and "$" not in name:
+        if not is_input(it, context, name):
+            old = _given(it, context, name, old, unset)
+            unset = _unset(it, old)
+        else:  # declared before, where it was set: the next interpretation sets it first
             context.unset_reads.add(name)
-    unset = old.where(_unset) if old is not None else it.space.true
     if entity.get("default") is None:
         it.fail(unset, "arg-required", f"Required launch argument '{name}' was not provided")
     else:
@@ -39,7 +41,7 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
             default = it.attr(entity, "default", context) if live else None
             if default is not None:
                 context.configurations[name] = assign(it, old, optional(default))
-    value = context.configurations.get(name)
+    value = context.get(name)
     allowed = [c.get("value") or "" for c in entity.children if c.tag == "choice"]
     if allowed and value is not None:
         bad = value.where(lambda leaf: isinstance(leaf, str) and leaf not in allowed)
@@ -48,10 +50,7 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
             "arg-choice",
             f"argument '{name}' must be one of {allowed}",
         )
-    included = len(it.stack) > 1  # an included file's: listed if it is an input (see _given)
-    if included and (
-        name not in it.model.settable or any(arg.name == name for arg in it.model.args)
-    ):
+    if included and not is_listed(it, context, name):  # listed once, if an input (_given)
         return
     it.model.args.append(
         ArgDecl(
@@ -66,20 +65,23 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     )
 
 
-def _unset(leaf: Raw | None) -> bool:
-    return leaf is None
+def _unset(it: Interpretation[Context], value: Configuration | None) -> BDD:
+    """Where ``value`` is not set."""
+    return value.where(lambda leaf: leaf is None) if value is not None else it.space.true
 
 
 def _given(
-    it: Interpretation[Context], context: Context, name: str, old: Configuration | None
-) -> Configuration | None:
-    """An included file's argument the entry file does not declare: ``ros2 launch`` set
-    ``name:=value``, if given, before loading, so where nothing set it since, the declaration
-    sees the command line's value. It becomes an input here; a read of it before (or outside
-    the scope it is set in) makes the next interpretation know it from the start."""
-    unset = old.where(_unset) if old is not None else it.space.true
-    if unset == it.space.false or "$" in name:
-        return old
+    it: Interpretation[Context],
+    context: Context,
+    name: str,
+    old: Configuration | None,
+    unset: BDD,
+) -> Configuration:
+    """An included file's argument the entry file does not declare, where nothing set it
+    (``unset``): ``ros2 launch`` set ``name:=value``, if given, before loading, so there the
+    declaration sees the command line's value. It becomes an input here; a read of it before
+    (or outside the scope it is set in) makes the next interpretation know it from the
+    start."""
     it.model.settable[name] = context.filename
     given = it.entry_args(it.model.file, [name], None, {name: context.filename})[name]
     before = old if old is not None else Choice.const(it.space, None)
@@ -100,6 +102,4 @@ def let(it: Interpretation[Context], entity: Entity, context: Context) -> None:
             continue
         with it.under(condition) as live:
             if live:
-                old = context.configurations.get(key)
-                new: Choice[Raw | None] = optional(value)
-                context.configurations[key] = assign(it, old, new)
+                set_configuration(it, context, key, optional(value))

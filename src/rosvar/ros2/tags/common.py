@@ -16,3 +16,15 @@ def assign(
     if it.pc == it.space.true:
         return new
     return ite(it.space, it.pc, new, before)
+
+
+def set_configuration(
+    it: Interpretation[Context], context: Context, name: str, new: Choice[Raw | None]
+) -> None:
+    """Set the launch configuration ``name`` to ``new`` on the current path: its value
+    before is read only where it stays somewhere (a recorded walk reads no more than it
+    needs: :mod:`rosvar.ros2.include_memo`)."""
+    if it.pc == it.space.true:
+        context.configurations[name] = new
+    else:
+        context.configurations[name] = assign(it, context.get(name), new)

@@ -15,7 +15,7 @@ from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.ros2.dialect import tag
-from rosvar.ros2.tags.common import assign
+from rosvar.ros2.tags.common import assign, set_configuration
 
 
 def _flag(
@@ -59,9 +59,7 @@ def _keep(
     for keep in keeps:
         name, value = keep.get("name"), it.attr(keep, "value", source)
         if name and value is not None:
-            target.configurations[name] = assign(
-                it, target.configurations.get(name), optional(value)
-            )
+            set_configuration(it, target, name, optional(value))
 
 
 @tag("push-ros-namespace")

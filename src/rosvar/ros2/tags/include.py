@@ -21,7 +21,8 @@ from rosvar.logic.choice import Choice
 from rosvar.ros2 import schema
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.dialect import tag
-from rosvar.ros2.tags.common import assign
+from rosvar.ros2.include_memo import walk_included
+from rosvar.ros2.tags.common import set_configuration
 from rosvar.workspace.paths import real_path
 
 
@@ -41,7 +42,7 @@ def include(it: Interpretation[Context], entity: Entity, context: Context) -> No
             if name and value is not None:
                 passed.append((name, value))
     for name, value in passed:
-        context.configurations[name] = assign(it, context.configurations.get(name), optional(value))
+        set_configuration(it, context, name, optional(value))
     for condition, file in split(it, files):
         with it.under(condition):
             _include(it, entity, context, file)
@@ -54,6 +55,8 @@ def _include(it: Interpretation[Context], entity: Entity, context: Context, file
         it.fail(it.space.true, "include-unknown", f"included file {file} is not known")
         return
     path = real_path(file)
+    if context.recording.walks:
+        context.recording.included.append(path)
     if path in it.stack:
         it.fail(it.space.true, "include-cycle", f"include cycle: {file} includes itself")
         return
@@ -62,6 +65,8 @@ def _include(it: Interpretation[Context], entity: Entity, context: Context, file
     except FileRefused as refused:
         it.fail(it.space.true, refused.code, f"included file {file}: {refused.message}")
         return
+    recording = context.recording
+    recording.deepest_check = max(recording.deepest_check, len(it.stack))
     if it.included >= MAX_INCLUDES or len(it.stack) >= MAX_INCLUDE_DEPTH:
         it.fail(it.space.true, "include-too-many", f"too many includes: {file} not followed")
         return
@@ -72,11 +77,7 @@ def _include(it: Interpretation[Context], entity: Entity, context: Context, file
     )
     if root is None:
         return
+    if context.recording.walks:
+        context.recording.loaded.append(file)
     schema.check(it, root)
-    it.stack.append(path)
-    filename, context.filename = context.filename, file
-    try:
-        it.walk(root.children, context)
-    finally:
-        context.filename = filename
-        it.stack.pop()
+    walk_included(it, root, context, file, path)

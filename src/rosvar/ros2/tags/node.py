@@ -150,7 +150,7 @@ def _remap(it: Interpretation[Context], entity: Entity, context: Context, out: l
     if source is None or target is None:
         return
     for condition, (s, t) in split(it, combine([source, target], tuple)):
-        out.append(Remap(it.pc & condition, s, t))
+        out.append(Remap(it.pc & condition, s, t, it.location))
 
 
 def _env(

@@ -17,7 +17,8 @@ from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.terms import concat
 from rosvar.ros2.context import Context, GlobalParam, GlobalRemap, optional
 from rosvar.ros2.dialect import tag
-from rosvar.ros2.tags.common import assign
+from rosvar.ros2.include_memo import configuration_names
+from rosvar.ros2.tags.common import assign, set_configuration
 
 
 @tag("set_remap")
@@ -66,12 +67,13 @@ def reset(it: Interpretation[Context], entity: Entity, context: Context) -> None
             name, value = it.required(keep, "name", context), it.required(keep, "value", context)
         if name is not None and value is not None:
             kept.append((name, value))
+    configuration_names(it, context)  # what it forgets depends on what is set
     if it.pc == it.space.true:
         context.reset()
     else:  # only where this path runs: each value and each global remap or parameter
         none = Choice.const(it.space, None)
         context.configurations = {
-            key: assign(it, old, none) for key, old in context.configurations.items()
+            key: assign(it, context.get(key), none) for key in list(context.configurations)
         }
         if context.namespace is not None:
             context.namespace = assign(it, context.namespace, none)
@@ -87,9 +89,7 @@ def reset(it: Interpretation[Context], entity: Entity, context: Context) -> None
                 continue
             with it.under(condition) as live:
                 if live:
-                    context.configurations[key] = assign(
-                        it, context.configurations.get(key), optional(value)
-                    )
+                    set_configuration(it, context, key, optional(value))
 
 
 @tag("set_env")

@@ -58,6 +58,15 @@ class Expression:
 
 Default = bool | int | float | str | Expression
 """A parameter's default: a literal's value, or the expression that computes it."""
+UNDECLARED_PARAMETERS = frozenset(
+    {"allow_undeclared_parameters", "automatically_declare_parameters_from_overrides"}
+)
+"""rclcpp's ``NodeOptions`` (rclpy's ``Node`` keywords) that make a node take parameters it
+never declares."""
+ANY_PARAMETER = "{any parameter}"
+"""The name of what a ROS 2 node that takes undeclared parameters reads (rclcpp's
+``allow_undeclared_parameters``, ``automatically_declare_parameters_from_overrides``): not
+known statically, so no parameter it is given counts as unread."""
 RECONFIGURED = Expression("its dynamic_reconfigure config's defaults")
 """What a dynamic_reconfigure server reads: every parameter of its ``.cfg`` (which the
 extractor does not read) in its namespace, each with the default written there; so its

@@ -18,7 +18,9 @@ from dataclasses import dataclass, field
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.workspace.interfaces import python2, python_modules
 from rosvar.workspace.interfaces.model import (
+    ANY_PARAMETER,
     RECONFIGURED,
+    UNDECLARED_PARAMETERS,
     Default,
     Entry,
     Expression,
@@ -313,6 +315,21 @@ class _Reader:
         second = call.args[1] if len(call.args) > 1 else keywords.get(keyword)
         return self.make(call, role, name_node, second)
 
+    def undeclared_entry(self, call: ast.Call) -> Entry | None:
+        """rclpy's ``Node(..., allow_undeclared_parameters=True)`` (or
+        ``automatically_declare_parameters_from_overrides=True``), a subclass's ``super()``
+        call included: the node takes parameters it never declares."""
+        for keyword in call.keywords:
+            value = keyword.value
+            if (
+                keyword.arg in UNDECLARED_PARAMETERS
+                and isinstance(value, ast.Constant)
+                and value.value
+            ):
+                location = Location(self.path, call.lineno, call.col_offset + 1)
+                return Entry(Role.PARAMS, ANY_PARAMETER, location, static=False)
+        return None
+
     def reconfigure_entry(self, call: ast.Call) -> Entry | None:
         """``dynamic_reconfigure.server.Server(Config, callback, namespace="~")`` reads its
         config's parameters in that namespace."""
@@ -479,6 +496,8 @@ def extract_node(
             entries.extend(module_reader.tf_entries(call))
             if (server := module_reader.reconfigure_entry(call)) is not None:
                 entries.append(server)
+            if (undeclared := module_reader.undeclared_entry(call)) is not None:
+                entries.append(undeclared)
             if (entry := module_reader.entry(call)) is not None:
                 entries.append(entry)
     return Extracted(entries, names.pop() if len(names) == 1 else None)

@@ -387,6 +387,26 @@ int main(int argc, char** argv) {
     ) in services[6:]
 
 
+def test_ros2_controller_manager_is_no_ros1_one(tmp_path: Path) -> None:
+    """ros2_control_node builds ``ControllerManager(executor, name)``, a node that makes its
+    own services: ros_control's rule (services below ``controller_manager`` of a node
+    handle) does not apply."""
+    source = """\
+int main(int argc, char** argv) {
+  std::string manager_node_name = "controller_manager";
+  auto cm = std::make_shared<controller_manager::ControllerManager>(executor, manager_node_name);
+  controller_manager::ControllerManager ros1(&robot, nh);
+}
+"""
+    (tmp_path / "c.cpp").write_text(source)
+    unit = Unit.load([str(tmp_path / "c.cpp")], [])
+    where = Location("CMakeLists.txt")
+    ros2 = extract_node(unit, "main", None, DiagnosticSink(), where, ros2=True).entries
+    ros1 = extract_node(unit, "main", None, DiagnosticSink(), where).entries
+    assert ros2 == []
+    assert len(ros1) == 12  # the same source read as ROS 1: both constructions serve
+
+
 def test_service_type_from_a_request_typedef(tmp_path: Path) -> None:
     """openni2_camera: ``getSerialCb(openni2_camera::GetSerialRequest& req, ...)``."""
     source = """\

@@ -11,7 +11,7 @@ from pathlib import Path
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.workspace.interfaces.cpp.extract import extract_node
 from rosvar.workspace.interfaces.cpp.unit import Unit
-from rosvar.workspace.interfaces.model import RECONFIGURED, Entry, NamedBy, Role
+from rosvar.workspace.interfaces.model import RECONFIGURED, Entry, Expression, NamedBy, Role
 
 
 def _entries(
@@ -239,6 +239,29 @@ int main() { rclcpp::spin(std::make_shared<Smoother>()); }
         ("{odom_topic}", NamedBy("odom_topic"), None),  # the declaration's default: the graph's
         ("{scan_topic}", NamedBy("scan_topic"), "scan"),
         ("{out_topic}", NamedBy("out_topic"), "cmd_vel_smoothed"),
+    ]
+
+
+def test_a_parameter_value_declared_is_its_default(tmp_path: Path) -> None:
+    """nav2's ``declare_parameter(name, rclcpp::ParameterValue(value))``: the default is the
+    value (a string the graph can name a topic by), not the constructor's text."""
+    source = """\
+class Server : public rclcpp::Node {
+ public:
+  Server() : Node("controller_server") {
+    declare_parameter("speed_limit_topic", rclcpp::ParameterValue("speed_limit"));
+    declare_parameter("min_x_velocity_threshold", rclcpp::ParameterValue(0.0001));
+    declare_parameter("publish_zero_velocity", rclcpp::ParameterValue(true));
+    declare_parameter("ids", rclcpp::ParameterValue(default_ids_));
+  }
+};
+int main() { rclcpp::spin(std::make_shared<Server>()); }
+"""
+    assert [(e.name, e.default) for e in _entries(tmp_path, source)] == [
+        ("speed_limit_topic", "speed_limit"),
+        ("min_x_velocity_threshold", 0.0001),
+        ("publish_zero_velocity", True),
+        ("ids", Expression("default_ids_")),
     ]
 
 

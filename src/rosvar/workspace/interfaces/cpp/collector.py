@@ -17,7 +17,9 @@ from rosvar.workspace.interfaces.cpp import apis, param_defaults, syntax
 from rosvar.workspace.interfaces.cpp.evaluator import CallSite, Evaluator, Handle
 from rosvar.workspace.interfaces.cpp.unit import Function, Unit
 from rosvar.workspace.interfaces.model import (
+    ANY_PARAMETER,
     RECONFIGURED,
+    UNDECLARED_PARAMETERS,
     Default,
     Entry,
     Expression,
@@ -185,7 +187,8 @@ class Collector:
             self.add(role, handle, rest[0], function, at, action_type(message) if message else None)
         elif base == "Subscriber" and "message_filters" in compact and handle is not None and rest:
             self.add(Role.SUBSCRIBES, handle, rest[0], function, at, message)
-        elif base == "ControllerManager" and arguments:
+        elif base == "ControllerManager" and arguments and not self.ros2:
+            # ROS 2's (ros2_control_node) is a node whose services its own code makes
             self._controller_manager(arguments[1:], function, at)
         elif base in apis.TF_CLASSES and re.search(r"\btf2?(_ros)?::", compact):
             self._tf(base, Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1))
@@ -251,6 +254,20 @@ class Collector:
                 return Handle(Text(""), rclcpp=True), arguments[1:]  # the node, however named
         return None, arguments
 
+    def _undeclared(
+        self, callee: Node, arguments: list[Node], function: Function, at: Node
+    ) -> None:
+        """``NodeOptions().allow_undeclared_parameters(true)`` (or
+        ``automatically_declare_parameters_from_overrides(true)``): the node takes parameters
+        it never declares."""
+        field_ = callee.child_by_field_name("field")
+        called = field_ if callee.type == "field_expression" else callee
+        if called is None or syntax.last(syntax.text(called)) not in UNDECLARED_PARAMETERS:
+            return
+        if arguments and syntax.text(arguments[0]) == "true":
+            location = Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1)
+            self.entries.append(Entry(Role.PARAMS, ANY_PARAMETER, location, static=False))
+
     def _call(self, node: Node, function: Function) -> None:
         callee = node.child_by_field_name("function")
         if callee is None:
@@ -258,6 +275,7 @@ class Collector:
         arguments = syntax.arguments(node)
         if self._own(callee, function):
             return  # the project's own function of an API's name (a wrapper): read inside
+        self._undeclared(callee, arguments, function, node)
         if callee.type != "field_expression":
             name = syntax.text(callee).replace(" ", "")
             bare = name.split("<")[0]

@@ -67,6 +67,9 @@ def _fails(node: Node) -> bool:
 def default(node: Node | None, evaluator: Evaluator, function: Function) -> Default | None:
     if node is None:
         return None
+    held = _parameter_value(node)
+    if held is not None:
+        return default(held, evaluator, function)
     text = syntax.text(node)
     if node.type in ("true", "false"):
         return node.type == "true"
@@ -83,3 +86,18 @@ def default(node: Node | None, evaluator: Evaluator, function: Function) -> Defa
     if isinstance(value, Text) and value.static:
         return value.value
     return Expression(text)
+
+
+def _parameter_value(node: Node) -> Node | None:
+    """The value ``rclcpp::ParameterValue(value)`` holds (nav2 declares its parameters so:
+    ``declare_parameter("speed_limit_topic", rclcpp::ParameterValue("speed_limit"))``)."""
+    if node.type != "call_expression":
+        return None
+    callee, arguments = node.child_by_field_name("function"), node.child_by_field_name("arguments")
+    if callee is None or arguments is None or arguments.named_child_count != 1:
+        return None
+    return (
+        arguments.named_children[0]
+        if syntax.last(syntax.text(callee)) == "ParameterValue"
+        else None
+    )

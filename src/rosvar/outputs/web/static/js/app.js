@@ -83,6 +83,7 @@ function act(call) {
     document.body.classList.add("busy");
     bar.say("");
     bar.dismiss();
+    checks.hold();
     try {
       const answer = await call();
       await render(answer.state, answer.changes);
@@ -92,6 +93,7 @@ function act(call) {
         bar.say("Your session had expired: started over.", true);
       } else {
         bar.say(`Error: ${error.message}`, true);
+        checks.update(); // the state shown is still the one before: its checks are asked again
       }
     } finally {
       pending -= 1;

@@ -130,6 +130,13 @@ export class ChecksPanel {
     this.timer = setTimeout(() => this.ask().catch(this.failed), ASK_AFTER_MS);
   }
 
+  // A step is being answered: no question until its state (update), for the engine would
+  // answer it first, before the step's own requests (one in flight cannot be called back).
+  hold() {
+    clearTimeout(this.timer);
+    this.latest.asked += 1;
+  }
+
   async ask() {
     if (!this.session()) return;
     const asked = JSON.stringify(this.state().choices);

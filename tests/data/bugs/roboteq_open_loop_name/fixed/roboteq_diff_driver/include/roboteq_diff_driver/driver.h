@@ -1,0 +1,3 @@
+
+// Placeholder for future driver class header file
+

@@ -1,0 +1,359 @@
+"""The ROS 2 catalogue's sources and review (``tools/build_catalogue.py --ros ros2``)."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from catalogue_review import Review, Source, by_parameter, use
+
+NAV2 = [
+    "nav2_amcl",
+    "nav2_behaviors",
+    "nav2_bt_navigator",
+    "nav2_collision_monitor",
+    "nav2_controller",
+    "nav2_lifecycle_manager",
+    "nav2_map_server",
+    "nav2_planner",
+    "nav2_smoother",
+    "nav2_velocity_smoother",
+    "nav2_waypoint_follower",
+]
+
+SOURCES: list[Source] = [
+    # repository, branch (humble's where there is one: the release the repositories of
+    # tests/data/ros2 target, else the ROS 2 branch the mirror holds), the packages: every
+    # third-party package a launch file of tests/data/ros2 starts a node of, most launched
+    # first, and the navigation stack's servers those systems bring up
+    Source("ros/robot_state_publisher", "humble", [""]),
+    # jazzy: the release ros2_control_demos and Universal_Robots_ROS2_Driver launch (its
+    # manager subscribes robot_description, humble's ~/robot_description)
+    Source("ros-controls/ros2_control", "jazzy", ["controller_manager"]),
+    Source("ros-controls/ros2_controllers", "humble", ["ros2_controllers_test_nodes"]),
+    Source("ros2/rviz", "humble", []),
+    Source(
+        "ros/joint_state_publisher", "ros2", ["joint_state_publisher", "joint_state_publisher_gui"]
+    ),
+    Source("ros2/geometry2", "humble", ["tf2_ros"]),
+    Source("ros2/rclcpp", "humble", ["rclcpp_components"]),
+    Source("ros-tooling/topic_tools", "humble", ["topic_tools"]),
+    Source("ros-drivers/joystick_drivers", "ros2", ["joy", "joy_linux"]),
+    Source("ros2/teleop_twist_joy", "foxy", [""]),
+    Source("ros-teleop/twist_mux", "rolling", [""]),
+    Source("cra-ros-pkg/robot_localization", "humble-devel", [""]),
+    Source("ros-visualization/interactive_marker_twist_server", "humble-devel", [""]),
+    Source("gazebosim/ros_gz", "humble", ["ros_gz_bridge", "ros_gz_sim"]),
+    Source("ros-simulation/gazebo_ros_pkgs", "ros2", ["gazebo_ros"]),
+    Source("IntelRealSense/realsense-ros", "ros2-master", ["realsense2_camera"]),
+    Source("ros-perception/image_pipeline", "humble", ["image_proc", "depth_image_proc"]),
+    Source("ros-perception/pointcloud_to_laserscan", "humble", [""]),
+    Source("ros-perception/depthimage_to_laserscan", "ros2", [""]),
+    Source("SteveMacenski/slam_toolbox", "humble", [""]),
+    Source(
+        "ros-navigation/navigation2",
+        "humble",
+        NAV2,
+        ["nav2_util", "nav2_behavior_tree", "nav2_costmap_2d", "nav2_core"],
+    ),
+]
+
+CM_SERVICES = "controller_manager/controller_manager/controller_manager_services.py"
+CM_CLIENTS = {
+    # controller_manager_services.py: the service each call names, below the manager
+    "configure_controller": 176,
+    "list_controllers": 188,
+    "list_hardware_components": 214,
+    "load_controller": 243,
+    "set_hardware_component_state": 279,
+    "switch_controller": 305,
+    "unload_controller": 319,
+}
+SPAWNED_CLIENT = (
+    "{f'{namespace}/{service_name}' if not service_name.startswith('/') else service_name}"
+)
+
+
+def _manager_clients(note: str, services: list[str]) -> Review:
+    """A controller_manager script that calls the manager's services: named as without
+    ``-c``/``--namespace`` (the manager ``controller_manager`` in the script's namespace,
+    which is what a relative name resolves to)."""
+    kinds = {name: "".join(word.title() for word in name.split("_")) for name in services}
+    kinds["switch_controller"] = "SwitchController"
+    return Review(
+        note + "; the manager's services, as named without -c/--namespace (the manager "
+        "controller_manager in the script's namespace)",
+        add={
+            "clients": [
+                use(
+                    f"controller_manager/{name}",
+                    f"controller_manager_msgs/srv/{kinds[name]}",
+                    CM_SERVICES,
+                    CM_CLIENTS[name],
+                )
+                for name in services
+            ]
+        },
+        drop={"clients": [SPAWNED_CLIENT]},
+    )
+
+
+TIMED_BEHAVIOR = "nav2_behaviors/include/nav2_behaviors/timed_behavior.hpp"
+BEHAVIORS = Review(
+    "each behaviour plugin (behavior_plugins, default spin, backup, drive_on_heading, wait: "
+    "behavior_server.cpp) serves an action named after it and publishes cmd_vel "
+    "(TimedBehavior); the costmap and footprint subscriptions (nav2_costmap_2d's "
+    "subscribers, a compiled library) and plugins other than the defaults are not read",
+    add={
+        "action_servers": [
+            use(name, f"nav2_msgs/action/{kind}", TIMED_BEHAVIOR, 124)
+            for name, kind in (
+                ("spin", "Spin"),
+                ("backup", "BackUp"),
+                ("drive_on_heading", "DriveOnHeading"),
+                ("wait", "Wait"),
+            )
+        ],
+        "publishes": [use("cmd_vel", "geometry_msgs/msg/Twist", TIMED_BEHAVIOR, 130)],
+    },
+)
+NAVIGATORS = "nav2_bt_navigator/include/nav2_bt_navigator/navigators"
+BT_XML = "nav2_bt_navigator/behavior_trees/navigate_to_pose_w_replanning_and_recovery.xml"
+BT_NAVIGATOR = Review(
+    "the navigators' action servers are named by getName() (navigate_to_pose, "
+    "navigate_through_poses); goal_pose is rviz2's Goal tool; the behaviour tree (default "
+    "XML) calls the planner, controller and behaviour servers' actions (the BT plugins' "
+    "default names); its costmap-clearing services (served by the costmaps inside the "
+    "planner and controller servers, not modelled) are left out; the node is bt_navigator "
+    "(bt_navigator.cpp; the behaviour tree's helper node is another)",
+    node_name="bt_navigator",
+    add={
+        "action_servers": [
+            use(
+                "navigate_to_pose",
+                "nav2_msgs/action/NavigateToPose",
+                NAVIGATORS + "/navigate_to_pose.hpp",
+                75,
+            ),
+            use(
+                "navigate_through_poses",
+                "nav2_msgs/action/NavigateThroughPoses",
+                NAVIGATORS + "/navigate_through_poses.hpp",
+                64,
+            ),
+        ],
+        "subscribes": [
+            {
+                **use(
+                    "goal_pose",
+                    "geometry_msgs/msg/PoseStamped",
+                    "nav2_bt_navigator/src/navigators/navigate_to_pose.cpp",
+                    50,
+                ),
+                "boundary": True,
+            }
+        ],
+        "action_clients": [
+            use(name, f"nav2_msgs/action/{kind}", BT_XML, line)
+            for name, kind, line in (
+                ("compute_path_to_pose", "ComputePathToPose", 13),
+                ("follow_path", "FollowPath", 18),
+                ("spin", "Spin", 29),
+                ("wait", "Wait", 30),
+                ("backup", "BackUp", 31),
+            )
+        ],
+    },
+    drop={"action_servers": ["{action_name}"]},
+)
+TOOL_BASE = "topic_tools/src/tool_base_node.cpp"
+RELAY = Review(
+    "relays input_topic (required) to output_topic (default input_topic + '_relay') with a "
+    "generic subscription and publisher of the input's type (tool_base_node.cpp), which "
+    "the extractor does not read: added by hand; the relay executable also takes them "
+    "from its command line (relay IN [OUT], relay.cpp), which stays symbolic",
+    add={
+        "subscribes": [
+            {
+                **use("{input_topic}", None, TOOL_BASE, 56),
+                **by_parameter("input_topic"),
+                "static": False,
+            }
+        ],
+        "publishes": [
+            {
+                **use("{output_topic}", None, TOOL_BASE, 40),
+                **by_parameter("output_topic", {"expression": 'input_topic_ + "_relay"'}),
+                "static": False,
+            }
+        ],
+    },
+)
+CONTROLLER_SERVER = Review(
+    "the speed limit (speed_limit_topic, default speed_limit) is an optional input: nav2's "
+    "speed costmap filter or an application publishes it",
+    boundary={"subscribes": ["{speed_limit_topic}"]},
+)
+SLAM_TOOLBOX = Review(
+    "the map and scan topics are the parameters map_name (default /map) and scan_topic "
+    "(default /scan), declared with a member's value as default (slam_toolbox_common.cpp)",
+    named={
+        "publishes": {211: by_parameter("map_name", "/map")},
+        "subscribes": {
+            41: by_parameter("map_name", "/map"),
+            234: by_parameter("scan_topic", "/scan"),
+        },
+    },
+)
+INITIAL_POSE = "initialpose is rviz2's 2D Pose Estimate (people's input)"
+SLAM_LOCALIZATION = Review(
+    SLAM_TOOLBOX.note + "; " + INITIAL_POSE,
+    named=SLAM_TOOLBOX.named,
+    boundary={"subscribes": ["initialpose"]},
+)
+AMCL = Review(
+    INITIAL_POSE + "; particle_cloud is for people (rviz2)",
+    boundary={"subscribes": ["initialpose"], "publishes": ["particle_cloud"]},
+)
+LOCALIZATION_INPUTS = {1157: "odom", 1294: "pose", 1389: "twist", 1597: "imu"}
+"""ros_filter.cpp: each sensor's topic is the value of odom0, odom1, ... (then pose0,
+twist0, imu0), declared and read in a loop until one is not set."""
+FILTER = Review(
+    "set_pose (topic) is for people and tools resetting the filter; each sensor topic is "
+    "the value of odomN/poseN/twistN/imuN (one per parameter set); cmd_vel only with "
+    "use_control; the node's name is the first NodeOptions argument (ekf_node.cpp: "
+    "ekf_filter_node, ukf_node.cpp: ukf_filter_node)",
+    boundary={"subscribes": ["set_pose"]},
+    named={
+        "subscribes": {
+            line: by_parameter(f"{kind}{{N}}") for line, kind in LOCALIZATION_INPUTS.items()
+        }
+    },
+    when={"subscribes": {1673: "param('use_control')"}},
+)
+JOY = Review(
+    "joy/set_feedback (force feedback) is an optional input",
+    boundary={"subscribes": ["joy/set_feedback"]},
+)
+SPAWN_ENTITY = "gazebo_ros/scripts/spawn_entity.py"
+RVIZ_CONFIG = "rviz_common/default.rviz"
+
+REVIEW: dict[tuple[str, str], Review] = {
+    ("controller_manager", "ros2_control_node"): Review(
+        "~/activity tells tools (rqt_controller_manager) what the controllers do; the "
+        "controllers (plugins the spawners load) and their topics are not included",
+        boundary={"publishes": ["~/activity"]},
+    ),
+    ("controller_manager", "spawner"): _manager_clients(
+        "loads, configures and starts the controllers named on the command line",
+        ["list_controllers", "load_controller", "configure_controller", "switch_controller"],
+    ),
+    ("controller_manager", "unspawner"): _manager_clients(
+        "stops and unloads the controllers named on the command line",
+        ["switch_controller", "unload_controller"],
+    ),
+    ("controller_manager", "hardware_spawner"): _manager_clients(
+        "activates or configures the hardware components named on the command line",
+        ["list_hardware_components", "set_hardware_component_state"],
+    ),
+    ("twist_mux", "twist_mux"): Review(
+        "each entry of the parameters topics.* (a Twist input) and locks.* (a Bool lock) "
+        "is a subscription to its topic (topic_handle.hpp): one symbolic use per kind; the "
+        "Twist one is added (the extractor kept one of the two {topic} uses)",
+        add={
+            "subscribes": [
+                {
+                    **use(
+                        "{topic}",
+                        "geometry_msgs/msg/Twist",
+                        "include/twist_mux/topic_handle.hpp",
+                        172,
+                    ),
+                    "static": False,
+                }
+            ]
+        },
+    ),
+    ("gazebo_ros", "spawn_entity.py"): Review(
+        "Gazebo's services and topics as named with the default -gazebo_namespace '' "
+        "(global); gzserver runs as a process (ExecuteProcess with the gazebo_ros_factory "
+        "plugin), not a node, so these are boundary uses",
+        add={
+            "subscribes": [
+                {
+                    **use("/model_states", "gazebo_msgs/msg/ModelStates", SPAWN_ENTITY, 129),
+                    "boundary": True,
+                }
+            ],
+            "clients": [
+                {**use(f"/{name}", kind, SPAWN_ENTITY, line), "boundary": True}
+                for name, kind, line in (
+                    ("unpause_physics", "std_srvs/srv/Empty", 246),
+                    ("spawn_entity", "gazebo_msgs/srv/SpawnEntity", 276),
+                    ("delete_entity", "gazebo_msgs/srv/DeleteEntity", 301),
+                )
+            ],
+        },
+        drop={
+            "subscribes": ["{'%s/model_states' % self.args.gazebo_namespace}"],
+            "clients": [
+                "{'%s/unpause_physics' % self.args.gazebo_namespace}",
+                "{'%s/spawn_entity' % self.args.gazebo_namespace}",
+                "{'%s/delete_entity' % self.args.gazebo_namespace}",
+            ],
+        },
+    ),
+    ("joint_state_publisher_gui", "joint_state_publisher_gui"): Review(
+        "runs joint_state_publisher's JointStatePublisher class (another package) with a "
+        "window of sliders: that node's topics and parameters",
+        loads=("joint_state_publisher", "joint_state_publisher"),
+    ),
+    ("nav2_behaviors", "behavior_server"): BEHAVIORS,
+    ("nav2_behaviors", "behavior_server::BehaviorServer"): BEHAVIORS,
+    ("nav2_bt_navigator", "bt_navigator"): BT_NAVIGATOR,
+    ("nav2_bt_navigator", "nav2_bt_navigator::BtNavigator"): BT_NAVIGATOR,
+    ("topic_tools", "relay"): RELAY,
+    ("topic_tools", "topic_tools::RelayNode"): RELAY,
+    ("nav2_controller", "controller_server"): CONTROLLER_SERVER,
+    ("nav2_controller", "nav2_controller::ControllerServer"): CONTROLLER_SERVER,
+    ("nav2_amcl", "amcl"): AMCL,
+    ("nav2_amcl", "nav2_amcl::AmclNode"): AMCL,
+    ("slam_toolbox", "slam_toolbox::LocalizationSlamToolbox"): Review(
+        INITIAL_POSE, boundary={"subscribes": ["initialpose"]}
+    ),
+    ("slam_toolbox", "slam_toolbox::MapAndLocalizationSlamToolbox"): Review(
+        INITIAL_POSE, boundary={"subscribes": ["initialpose"]}
+    ),
+    ("robot_localization", "ekf_node"): replace(FILTER, node_name="ekf_filter_node"),
+    ("robot_localization", "ukf_node"): replace(FILTER, node_name="ukf_filter_node"),
+    ("joy", "joy_node"): JOY,
+    ("joy", "joy::Joy"): JOY,
+    ("joy", "game_controller_node"): JOY,
+    ("joy", "joy::GameController"): JOY,
+    ("joy_linux", "joy_linux_node"): JOY,
+}
+for _executable in (
+    "async_slam_toolbox_node",
+    "sync_slam_toolbox_node",
+    "lifelong_slam_toolbox_node",
+):
+    REVIEW[("slam_toolbox", _executable)] = SLAM_TOOLBOX
+for _executable in ("localization_slam_toolbox_node", "map_and_localization_slam_toolbox_node"):
+    REVIEW[("slam_toolbox", _executable)] = SLAM_LOCALIZATION
+
+EXTRA: dict[tuple[str, str, str], Review] = {
+    ("ros2/rviz", "rviz2", "rviz2"): Review(
+        "a visualiser: what it subscribes depends on the displays of its configuration "
+        "(not modelled); its default configuration's tools publish a pose estimate, a goal "
+        "and clicked points, made by people (boundary uses)",
+        add={
+            "publishes": [
+                {**use(name, kind, RVIZ_CONFIG, line), "boundary": True}
+                for name, kind, line in (
+                    ("/initialpose", "geometry_msgs/msg/PoseWithCovarianceStamped", 64),
+                    ("/goal_pose", "geometry_msgs/msg/PoseStamped", 66),
+                    ("/clicked_point", "geometry_msgs/msg/PointStamped", 69),
+                )
+            ]
+        },
+    ),
+}
