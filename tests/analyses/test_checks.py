@@ -108,8 +108,15 @@ def test_conditions_agree_with_every_configuration(ws: LaunchWorkspace) -> None:
     findings = check_model(analysis.space, model, interfaces, analysis.workspace.confinement())
     kinds = {f.check for f in findings}
     # every check has a case here (when-unknown: in test_when_params, with hints; unread:
-    # in robot_description/test_edges)
-    assert kinds == set(Check) - {Check.SYMBOLIC_NAME, Check.WHEN_UNKNOWN, Check.UNREAD}
+    # in robot_description/test_edges; ROS 2's in tests/ros2; load-error below: a launch
+    # that fails has no graph to compare)
+    assert kinds == set(Check) - {
+        Check.SYMBOLIC_NAME,
+        Check.WHEN_UNKNOWN,
+        Check.UNREAD,
+        Check.PARAM_FILE_UNMATCHED,
+        Check.LOAD_ERROR,
+    }
     for values in itertools.product(["true", "false"], repeat=len(ARGS)):
         args = dict(zip(ARGS, values, strict=True))
         holds = Restriction(analysis, model, args, {}).holds
@@ -292,3 +299,40 @@ def test_a_parameter_nobody_reads_needs_every_read_known(ws: LaunchWorkspace) ->
             "/reader/rat is set for /reader, which never reads it (it reads ~rate)",
         )
     ]
+
+
+def test_a_mistake_of_the_files_text_is_a_load_error_where_roslaunch_refuses(
+    ws: LaunchWorkspace,
+) -> None:
+    """fetch_navigation's keepout: an include given one arg twice under a condition. The
+    finding holds exactly where resolve (roslaunch's semantics) refuses the file; an error a
+    typed value makes (a non-boolean ``if``) is the command line's, not a finding."""
+    ws.launch("inc.launch", '<arg name="map_topic" default="map"/>')
+    body = """<arg name="keepout" default="false"/>
+      <arg name="flag" default="true"/>
+      <include file="$(find pkg)/launch/inc.launch">
+        <arg name="map_topic" value="map"/>
+        <arg name="map_topic" value="keepout_map" if="$(arg keepout)"/>
+      </include>
+      <node pkg="pkg" type="talker.py" name="talker" if="$(arg flag)"/>"""
+    found = _findings(ws, body, Check.LOAD_ERROR)
+    assert found == [
+        (
+            "map_topic",
+            Severity.ERROR,
+            "the launch tool refuses the launch here: arg 'map_topic' has already been declared",
+        )
+    ]
+    analysis = ws.analysis()
+    file = str(ws.root / "pkg" / "launch" / "system.launch")
+    model = analysis.model(file)
+    confinement = analysis.workspace.confinement()
+    [error] = [
+        f
+        for f in check_models(analysis.space, [model], Interfaces(), confinement)
+        if f.check is Check.LOAD_ERROR
+    ]
+    for keepout in ("true", "false"):
+        args = {"keepout": keepout}
+        holds = Restriction(analysis, model, args, {}).holds(error.condition)
+        assert holds == bool(resolve(analysis, [file], args).errors), keepout

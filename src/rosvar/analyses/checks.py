@@ -13,6 +13,7 @@ from __future__ import annotations
 import difflib
 import enum
 import os
+import re
 from collections import Counter, defaultdict
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
@@ -36,7 +37,7 @@ from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.when import params_read
 from rosvar.diagnostics import Location, Severity
 from rosvar.files import Confinement
-from rosvar.interpreter.model import LaunchModel, NodeDecl, ParamDecl, YamlDecl
+from rosvar.interpreter.model import ErrorEvent, LaunchModel, NodeDecl, ParamDecl, YamlDecl
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
@@ -59,6 +60,7 @@ class Check(enum.StrEnum):
     PARAM_UNREAD = "param-unread"
     REMAP_UNUSED = "remap-unused"
     PARAM_FILE_UNMATCHED = "param-file-unmatched"
+    LOAD_ERROR = "load-error"
     SYMBOLIC_NAME = "symbolic-name"
     WHEN_UNKNOWN = "when-unknown"
     UNREAD = "unread"
@@ -78,6 +80,8 @@ DESCRIPTIONS: dict[Check, str] = {
     "another node's name: the node keeps its own)",
     Check.PARAM_FILE_UNMATCHED: "a ROS 2 node is given a parameter file with no entry for its "
     "name: the node gets none of its parameters",
+    Check.LOAD_ERROR: "the launch tool refuses the entry file, for a mistake in the launch "
+    "files' own text (an arg declared twice, an include given an arg it does not declare)",
     Check.SYMBOLIC_NAME: "a name could not be resolved statically: the checks skip it",
     Check.WHEN_UNKNOWN: "a hinted entry's when: reads a parameter whose value is not known: "
     "the entry is kept there",
@@ -101,6 +105,32 @@ class Finding:
     file: str
     condition: BDD
     locations: tuple[Location, ...]  # the first is where the problem is reported
+
+
+OWN_ERRORS = frozenset(
+    {
+        "arg-duplicate",
+        "arg-value-and-default",
+        "attribute-missing",
+        "ifunless-both",
+        "include-arg-unused",
+        "include-arg-undefined",
+        "include-cycle",
+        "machine-env",
+        "env-invalid",
+    }
+)
+"""Errors of the launch files' own text: they stop the launch whatever values the command
+line gives (docs/diagnostics.md lists each). Not a malformed substitution: ROS 2 counts a
+substitution's arguments after the values are in, so a typed text with a space makes one."""
+ARG_ERRORS = frozenset({"arg-duplicate", "arg-value-and-default", "include-arg-unused"})
+"""Errors about one arg: a finding is named after it."""
+_SUBJECT = re.compile(r"'([^']+)'|\[([^\]]+)\]")
+
+
+def _syntax(error: ErrorEvent) -> bool:
+    """An ``$(eval)`` that is no Python expression: a mistake of the text too."""
+    return error.code == "eval-refused" and "invalid Python expression" in error.message
 
 
 @dataclass(frozen=True)
@@ -199,6 +229,7 @@ def check_model(
     checker = _Checker(space, model, loads, confinement, partners or defaultdict(set))
     checker.unknown = _unknown_nodes(space, model, interfaces)
     checker.graph(edges)
+    checker.errors()
     if described is not None:
         checker.gaps(described.gaps(model))
     checker.node_names()
@@ -272,6 +303,26 @@ class _Checker:
             self.providers(channel, name, providers)
             self.unmatched(channel, name, providers, users)
             self.types(name, named)
+
+    def errors(self) -> None:
+        """Where the launch tool refuses the entry file for a mistake of the files' own text
+        (:data:`OWN_ERRORS`), whatever the command line gives: its condition and place.
+        Errors a typed value, an unset variable or a missing arg makes are the command
+        line's, which ``resolve`` and the configuration engine report."""
+        loads, self.loads = self.loads, self.space.true
+        for error in self.model.errors:
+            if error.code not in OWN_ERRORS and not _syntax(error):
+                continue
+            subject = _SUBJECT.search(error.message) if error.code in ARG_ERRORS else None
+            self.add(
+                Check.LOAD_ERROR,
+                Severity.ERROR,
+                next(g for g in subject.groups() if g) if subject else error.code,
+                f"the launch tool refuses the launch here: {error.message}",
+                error.condition,
+                (error.location,),
+            )
+        self.loads = loads
 
     def gaps(self, gaps: Sequence[Gap]) -> None:
         """What of the graph could not be read, where it matters (where the launch loads, and
