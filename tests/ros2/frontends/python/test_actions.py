@@ -131,3 +131,19 @@ def test_a_container_object_as_target_is_named_as_launch_ros_names_it(
     else:  # the oracle says what launch_ros does
         containers = {node["name"]: node.get("container") for node in expected["nodes"]}
         assert containers["b"] == "/pushed/inner/own_box"
+
+
+@pytest.mark.oracle
+@pytest.mark.parametrize("arguments", [{}, {"shared": "true"}])
+def test_an_action_given_a_value_chosen_at_launch_time_is_made_in_each_branch(
+    tmp_path: Path, arguments: dict[str, str]
+) -> None:
+    """``target = name if c else container``: where the name is chosen the container (not
+    launched) is never asked for its name, as in launch_ros."""
+    chosen_only = TARGET.replace(
+        "[PushRosNamespace('pushed'), container, load, direct]", "[container, load]"
+    )
+    it = launch(tmp_path, chosen_only, ".launch.py")
+    expected = it.matches_oracle(arguments)
+    containers = {node["name"]: node.get("container") for node in expected["nodes"]}
+    assert containers["a"] == ("/other_box" if arguments else "/inner/own_box")

@@ -12,7 +12,9 @@ from __future__ import annotations
 
 import shlex
 from collections.abc import Callable
+from dataclasses import replace
 
+from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.actions import ACTIONS, Action, Param, Slot
 from rosvar.ros2.api.event_handlers import EVENT_HANDLERS, EventHandler
@@ -213,6 +215,9 @@ def _set_condition(call: Call, entity: Entity, condition: Value) -> None:
 
 def _action(spec: Action) -> Callable[[Call], Value]:
     def build(call: Call) -> Value:
+        branching = _branching(spec, call)
+        if branching is not None:
+            return _branches(build, *branching)
         entity = Entity(spec.tag, {}, call.location)
         given: list[tuple[Param, Value]] = []
         by_name = {param.python: param for param in spec.params}
@@ -244,6 +249,48 @@ def _action(spec: Action) -> Callable[[Call], Value]:
         return entity
 
     return build
+
+
+def _branching(spec: Action, call: Call) -> tuple[Call, Conditional, Call, Call] | None:
+    """An attribute given a value that differs by the branches of an ``if`` on a launch-time
+    value: the value, and the call as each branch makes it."""
+    by_name = {param.python: param for param in spec.params}
+    for index, (param, value) in enumerate(zip(spec.params, call.args, strict=False)):
+        if param.slot is Slot.ATTRIBUTE and isinstance(value, Conditional):
+            args = (list(call.args), list(call.args))
+            args[0][index], args[1][index] = value.then, value.otherwise
+            return call, value, replace(call, args=args[0]), replace(call, args=args[1])
+    for name, value in call.kwargs.items():
+        given = by_name.get(name)
+        if given is not None and given.slot is Slot.ATTRIBUTE and isinstance(value, Conditional):
+            then = replace(call, kwargs={**call.kwargs, name: value.then})
+            return call, value, then, replace(call, kwargs={**call.kwargs, name: value.otherwise})
+    return None
+
+
+def _branches(
+    build: Callable[[Call], Value], call: Call, value: Conditional, then: Call, otherwise: Call
+) -> Value:
+    """The action each branch makes, each under its test (as if the action were written in
+    both branches): a value chosen at launch time is only computed where it is chosen (a
+    container's name where it is launched)."""
+    groups: list[Value] = []
+    tests = (launch_time.truth(value.test), launch_time.negated(value.test))
+    for branch, test in zip((then, otherwise), tests, strict=True):
+        condition = Condition("if", launch_time.condition(test))
+        kwargs: dict[str, Value] = {"actions": [build(branch)], "scoped": False}
+        groups.append(
+            _group(Call("GroupAction", [], kwargs | {"condition": condition}, *_at(call)))
+        )
+    return _group(Call("GroupAction", [], {"actions": groups, "scoped": False}, *_at(call)))
+
+
+def _at(call: Call) -> tuple[Location, DiagnosticSink]:
+    return call.location, call.sink
+
+
+def _group(call: Call) -> Value:
+    return CALLS["launch", "GroupAction"](call)
 
 
 def _launch_description(call: Call) -> Value:
