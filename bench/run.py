@@ -954,7 +954,8 @@ def _cpu_s(process: subprocess.Popen[bytes]) -> float:
 def measure_browser_choice(workload: Workload, roots: list[str], outcome: Outcome) -> bool:
     """A choice in the browser on Husky with ``_external`` as a second root (issue 30): the
     page of ``rosvar serve`` in headless Chromium (Debian's, through Playwright, as the
-    browser tests), ``husky_playpen.launch`` selected in the tree; seconds from the click
+    browser tests), ``husky_playpen.launch`` selected in the tree once the page is at rest
+    (its first view drawn, its checks listed and answered); seconds from the click
     until the page shows the new state and its graph is laid out, the server's CPU seconds
     meanwhile (a busy machine stretches the wall time), and the bytes of the answers it
     fetched for it. Skipped (with a note) without Playwright or Chromium."""
@@ -981,6 +982,7 @@ def measure_browser_choice(workload: Workload, roots: list[str], outcome: Outcom
             page.set_default_timeout(BROWSER_WAIT_S * 1000)
             page.goto(address)
             page.wait_for_selector('body[data-step] #graph[data-layout="done"]')
+            page.wait_for_selector("body[data-checks]")  # at rest: the findings listed
             features = page.evaluate("window.rosvar.state.features")
             file = next(k for k, f in features.items() if k.endswith(BROWSER_CHOICE))
             row = page.locator(f'.feature[data-id="{file}"]').first

@@ -158,7 +158,33 @@ def test_many_varying_args_in_one_attribute_become_an_unknown_value(
     assert _codes(model) == ["value-too-complex"]
     value = param.value.single()
     assert isinstance(value, DeferredValue) and is_term(value.raw)
-    [error] = ws.resolve(file, {}).errors
+    # one configuration computes it again, that value alone, from its operands' branches
+    assert ws.resolve(file, {}).params == {"/p": "x" * count}
+    given = {"a1": "y", f"a{count - 1}": "zz"}
+    assert ws.resolve(file, given).params == {"/p": "xy" + "x" * (count - 3) + "zz"}
+
+
+MANY = "".join(f'<arg name="a{i}" default="x"/>' for i in range(18)) + (
+    '<param name="p" value="{}"/>'.format("".join(f"$(arg a{i})" for i in range(18)))
+    + '<param name="e" value="$(eval {})"/>'.format("+".join(f"arg('a{i}')" for i in range(18)))
+    + '<node pkg="pkg" type="n" name="$(arg a0)$(arg a1)n"'
+    + ' args="{}"/>'.format(" ".join(f"$(arg a{i})" for i in range(18)))
+)
+
+
+@pytest.mark.oracle
+def test_values_over_the_work_limits_agree_with_roslaunch_once_bound(ws: LaunchWorkspace) -> None:
+    file = ws.launch("many.launch", MANY)
+    assert _codes(ws.model(file)).count("value-too-complex") == 3  # p, e and the node's args
+    configs = [{}, {"a1": "y", "a17": "zz"}, {"a0": "1", "a5": "2"}, {"a3": "has space"}]
+    ws.assert_agrees(file, configs)
+
+
+def test_a_value_over_the_bounds_in_its_configuration_stays_unknown(ws: LaunchWorkspace) -> None:
+    lines = ['<arg name="a0" default="xy"/>']
+    lines += [f'<arg name="a{i}" default="$(arg a{i - 1})$(arg a{i - 1})"/>' for i in range(1, 40)]
+    file = ws.launch("chain.launch", "".join(lines) + '<param name="p" value="$(arg a39)"/>')
+    [error] = ws.resolve(file, {"a0": "z"}).errors  # 2^39 characters even here
     assert error.code == "value-unknown" and "work limits" in str(error)
 
 
@@ -185,8 +211,10 @@ def test_file_budget_bounds_many_attributes_each_within_the_limit(
     args = "".join(f'<arg name="a{i}" default="x"/>' for i in range(5))
     text = "".join(f"$(arg a{i})" for i in range(5))  # 32 combinations each
     params = "".join(f'<param name="p{i}" value="{text}{i}"/>' for i in range(5))
-    model = ws.model(ws.launch("budget.launch", args + params))
-    assert _codes(model).count("value-too-complex") == 2  # 3 x 32 fit in 100, not more
+    file = ws.launch("budget.launch", args + params)
+    assert _codes(ws.model(file)).count("value-too-complex") == 2  # 3 x 32 fit in 100, not more
+    resolved = ws.resolve(file, {"a2": "y"}).params
+    assert resolved == {f"/p{i}": f"xxyxx{i}" for i in range(5)}
 
 
 def test_eval_over_many_varying_args_is_bounded(ws: LaunchWorkspace) -> None:

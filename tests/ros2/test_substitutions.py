@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from ros2.tags.launches import launch
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.safe_eval import EvalEnvironment, evaluate
 from rosvar.interpreter.workspace_models import Analysis
@@ -249,3 +250,30 @@ def test_an_expression_is_evaluated_once_per_text(
         assert describe_model(model)["nodes"][0]["name"][0]["value"] == "xx"  # type: ignore[index]
         assert "eval-failed" in [error.code for error in model.errors]
     assert sorted(texts) == ["'x' * 2", "'y' * 2", "1/0"]
+
+
+PYTHON_EXPRESSIONS = """<launch><arg name="names" default="a_b_a"/><arg name="pick" default="0"/>
+  <node pkg="pkg" exec="e" name="n$(eval 'len(set(\\'$(var names)\\'.split(\\'_\\')))')"/>
+  <node pkg="pkg" exec="e"
+        name="s$(eval 'sorted(set(\\'$(var names)\\'.split(\\'_\\')))[$(var pick)]')"/>
+  <node pkg="pkg" exec="e" name="m$(eval 'int(math.floor(pi * 100))')"/>
+  <node pkg="pkg" exec="e" name="t$(eval 'len(tuple(frozenset(\\'$(var names)\\')))')"/>
+  <node pkg="pkg" exec="e" name="b$(eval 'any(c == \\'b\\' for c in \\'$(var names)\\')')"
+        if="$(eval 'all(c != \\'z\\' for c in \\'$(var names)\\')')"/>
+  <node pkg="pkg" exec="e" name="x" if="$(eval 'true')"/>
+</launch>"""
+
+
+@pytest.mark.oracle
+@pytest.mark.parametrize("arguments", [{}, {"names": "c_d", "pick": "1"}, {"names": "z"}])
+def test_python_expressions_see_what_ros2_launch_gives_them(
+    tmp_path: Path, arguments: dict[str, str]
+) -> None:
+    """``$(eval)`` as ``PythonExpression`` evaluates it: Python's builtins (``set``,
+    ``tuple``, ``any``...), ``math``'s names bare and as ``math.X``; ``true`` is no name
+    there (the launch fails, unlike roslaunch's ``$(eval)``)."""
+    it = launch(tmp_path, PYTHON_EXPRESSIONS)
+    assert not it.matches_oracle(arguments)["ok"]  # $(eval 'true'): a NameError
+    it = launch(tmp_path / "ok", PYTHON_EXPRESSIONS.replace("'true'", "'True'"))
+    expected = it.matches_oracle(arguments)
+    assert expected["ok"] and len(expected["nodes"]) >= 4

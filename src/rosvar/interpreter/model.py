@@ -222,6 +222,9 @@ class ParamDecl:
     location: Location
     name: Choice[Raw]
     value: Choice[object]
+    textfile: Choice[Raw] | None = None
+    """The file a ``textfile`` param reads, per configuration: where its text is written
+    (a robot description's findings name lines of it)."""
 
 
 class RosparamLoad(Protocol):

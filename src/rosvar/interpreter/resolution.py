@@ -11,6 +11,7 @@ server, conflicts, errors and warnings.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
@@ -29,6 +30,7 @@ from rosvar.interpreter.model import (
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.given_up import Bindings
 from rosvar.logic.inputs import EnvInput, Input
 from rosvar.logic.terms import Apply, Hole, PackageTable, TermError, evaluate
 from rosvar.ros.version import RosVersion
@@ -197,10 +199,11 @@ class Restriction:
                 values[other] = env.get(other.name)
         self.concrete: dict[Input, str] = {k: v for k, v in values.items() if v is not None}
         self.confinement = models.workspace.confinement()
-        self.host = PackageTable(
-            {name: package.path for name, package in models.workspace.packages.items()}
-        )
-        self.assignment = self.space.assignment(values, self.host)
+        packages = {name: package.path for name, package in models.workspace.packages.items()}
+        self.assignment = self.space.assignment(values, PackageTable(packages))
+        self.host = Bindings(packages, functools.partial(_holds, self.space, self.assignment))
+        """Terms evaluate with the packages; values over the work limits are computed again
+        with the conditions that hold (:mod:`~rosvar.logic.given_up`)."""
         self._shift: Callable[[str], str] | None = None
 
     def shift_anon(self, offset: int) -> None:
@@ -216,7 +219,7 @@ class Restriction:
             )
 
     def holds(self, condition: BDD) -> bool:
-        return self.space.evaluate(condition, self.assignment)
+        return self.host.holds(condition)
 
     def evaluate(self, value: Raw, location: Location, what: str) -> str:
         """A term's string under this configuration (the launch tool's failure if it has
@@ -239,6 +242,11 @@ class Restriction:
         return value
 
 
+def _holds(space: ConditionSpace, assignment: Mapping[str, bool], condition: BDD) -> bool:
+    """:meth:`Restriction.holds` without the restriction (which holds its bindings)."""
+    return space.evaluate(condition, assignment)
+
+
 def evaluated(
     value: Raw, concrete: Mapping[Input, str], host: object, location: Location, what: str
 ) -> str:
@@ -246,7 +254,9 @@ def evaluated(
     has none: an unknown package, a file not read)."""
     try:
         return evaluate(value, concrete, host)
-    except (TermError, LookupError, ValueError) as error:
+    except TermError as error:
+        raise ResolutionError(error.code, f"{what}: {error}", location) from None
+    except (LookupError, ValueError) as error:
         raise ResolutionError("value-unknown", f"{what}: {error}", location) from None
 
 

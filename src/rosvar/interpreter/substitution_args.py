@@ -21,12 +21,12 @@ from rosvar.interpreter.model import Raw
 from rosvar.logic.cells import Cells, register_cells
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.given_up import Combination, GivenUp
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import (
     Apply,
     Hole,
     PackageTable,
-    Term,
     TermError,
     concat,
     is_term,
@@ -444,22 +444,13 @@ class Substituter:
         filename = scope.filename
         anon_values: dict[str, str] = {}
 
+        deferred = functools.partial(_deferred_eval, expression, arg_names, env_names, filename)
+
         def run(leaves: list[object]) -> Value:
+            if any(is_term(v) for v in leaves):
+                return deferred(leaves)
             args = dict(zip(arg_names, leaves[: len(arg_names)], strict=True))
             envs = dict(zip(env_names, leaves[len(arg_names) :], strict=True))
-            if any(is_term(v) for v in [*args.values(), *envs.values()]):
-                return Apply(
-                    "eval",
-                    (
-                        expression,
-                        tuple(arg_names),
-                        *(_operand(args[n]) for n in arg_names),
-                        tuple(env_names),
-                        *(_operand(envs[n]) for n in env_names),
-                        filename,
-                    ),
-                    display=f"$(eval {expression})",
-                )
             return _run_eval(
                 expression,
                 {k: v for k, v in args.items() if isinstance(v, str)},
@@ -473,7 +464,7 @@ class Substituter:
             return Choice.const(space, run([]))
         choices: list[Choice[object]] = [*arg_choices, *env_choices]
         if not self.budget.affordable(f"$(eval {expression})", choices):
-            return Choice.const(space, too_complex(f"$(eval {expression})"))
+            return Choice.const(space, too_complex(f"$(eval {expression})", choices, deferred))
         return combine(choices, run)
 
 
@@ -526,24 +517,11 @@ class ValueBudget:
     ) -> Choice[Value]:
         """The concatenation of ``parts`` of the leaves, in every combination of
         ``choices`` (a failing leaf fails it), or :func:`too_complex` beyond the bounds."""
+        concatenate = functools.partial(_concatenated, text, parts)
         if not self.affordable(text, choices):
-            return Choice.const(self.space, too_complex(text))
-        oversized = False
-
-        def concatenate(leaves: list[Value]) -> Value:
-            nonlocal oversized
-            for leaf in leaves:
-                if isinstance(leaf, Fail):
-                    return leaf
-            joined = parts(leaves)  # type: ignore[arg-type]  # no Fail left
-            size, depth = _measure(joined)
-            if size > MAX_VALUE_SIZE or depth > MAX_TERM_DEPTH:
-                oversized = True
-                return too_complex(text)
-            return concat(list(joined))
-
+            return Choice.const(self.space, too_complex(text, choices, concatenate))
         result = combine(choices, concatenate)
-        if oversized:
+        if any(_oversized(leaf, text) for leaf in result.values()):
             self.note(
                 f"{_short(text)} is not computed: its value would be over {MAX_VALUE_SIZE} "
                 f"characters or {MAX_TERM_DEPTH} levels"
@@ -551,10 +529,40 @@ class ValueBudget:
         return result
 
 
-def too_complex(text: str) -> Apply:
+def _concatenated(
+    text: str, parts: Callable[[Sequence[Raw]], Sequence[Raw]], leaves: list[Value]
+) -> Value:
+    """``parts`` of one leaf of each operand of ``text`` joined (a failing leaf fails it),
+    or :func:`too_complex` when the value would be over :data:`MAX_VALUE_SIZE` characters
+    or :data:`MAX_TERM_DEPTH` levels."""
+    for leaf in leaves:
+        if isinstance(leaf, Fail):
+            return leaf
+    joined = parts(leaves)  # type: ignore[arg-type]  # no Fail left
+    size, depth = _measure(joined)
+    if size > MAX_VALUE_SIZE or depth > MAX_TERM_DEPTH:
+        return too_complex(text)
+    return concat(list(joined))
+
+
+def _oversized(leaf: Value, text: str) -> bool:
+    """Whether ``leaf`` is the value :func:`_concatenated` gives ``text`` over the bounds."""
+    return type(leaf) is Apply and leaf.function == "too_complex" and leaf.operands == (text,)
+
+
+def too_complex(
+    text: str,
+    choices: Sequence[Choice[object]] = (),
+    combination: Combination | None = None,
+) -> Apply:
     """The unknown value of ``text`` when computing it would go beyond the work limits: a
-    term that no configuration can evaluate (``resolve`` reports ``value-unknown``)."""
-    return Apply("too_complex", (text,), display=f"⟨{_short(text)}⟩")
+    term no configuration can evaluate, unless ``combination`` of one leaf of each of
+    ``choices`` computes it: then a configuration's resolution does (:mod:`~rosvar.logic.given_up`),
+    and reports ``value-unknown`` only where that too is over the bounds."""
+    display = f"⟨{_short(text)}⟩"
+    if combination is None:
+        return Apply("too_complex", (text,), display=display)
+    return GivenUp(text, display, choices, combination)
 
 
 def _too_complex_term(_host: object, text: str) -> str:
@@ -619,10 +627,30 @@ def _env_names(expression: str) -> frozenset[str]:
     return frozenset(names)
 
 
-def _operand(value: object) -> str | Term:
-    if value is MISSING or value is None:
-        return "\x00missing"
-    return value  # type: ignore[return-value]
+def _deferred_eval(
+    expression: str,
+    arg_names: Sequence[str],
+    env_names: Sequence[str],
+    filename: str,
+    leaves: list[object],
+) -> Apply:
+    """``$(eval expression)`` of one value of each arg and environment variable it reads
+    (``leaves``, in that order), as the term :func:`_eval_term` evaluates once they are
+    concrete (an undefined one is missing)."""
+    operands = [v if isinstance(v, str) or is_term(v) else "\x00missing" for v in leaves]
+    count = len(arg_names)
+    return Apply(
+        "eval",
+        (
+            expression,
+            tuple(arg_names),
+            *operands[:count],  # type: ignore[arg-type]  # strings and terms
+            tuple(env_names),
+            *operands[count:],  # type: ignore[arg-type]
+            filename,
+        ),
+        display=f"$(eval {expression})",
+    )
 
 
 def _run_eval(

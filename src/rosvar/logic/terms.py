@@ -15,7 +15,12 @@ from rosvar.logic.inputs import Input
 
 
 class TermError(Exception):
-    """Evaluating a term failed the way roslaunch would fail at that point."""
+    """Evaluating a term failed the way roslaunch would fail at that point (``code``: the
+    diagnostic a resolution reports it with)."""
+
+    def __init__(self, message: str, code: str = "value-unknown") -> None:
+        super().__init__(message)
+        self.code = code
 
 
 class Hole:
@@ -87,6 +92,16 @@ class Apply:
         if self._text is None:
             self._text = self._shown()
         return self._text
+
+    def evaluated(self, inputs: Mapping[Input, str], host: object) -> str:
+        """The function applied to the operands' strings (a kind of term that computes
+        otherwise overrides it: :class:`~rosvar.logic.given_up.GivenUp`)."""
+        operands = [o if isinstance(o, tuple) else evaluate(o, inputs, host) for o in self.operands]
+        try:
+            function = FUNCTIONS[self.function]
+        except KeyError:
+            raise TermError(f"unknown term function {self.function}") from None
+        return function(host, *operands)
 
     def _shown(self) -> str:
         if self.display:
@@ -168,9 +183,4 @@ def evaluate(value: Operand, inputs: Mapping[Input, str], host: object = None) -
             return inputs[value.input]
         except KeyError:
             raise TermError(f"no value for {value.input}") from None
-    operands = [o if isinstance(o, tuple) else evaluate(o, inputs, host) for o in value.operands]
-    try:
-        function = FUNCTIONS[value.function]
-    except KeyError:
-        raise TermError(f"unknown term function {value.function}") from None
-    return function(host, *operands)
+    return value.evaluated(inputs, host)

@@ -10,6 +10,7 @@ API's registry (:mod:`rosvar.ros2.api.substitutions`) rosvar computes, and rosva
 from __future__ import annotations
 
 import functools
+import math
 import os
 import posixpath
 import shlex
@@ -32,10 +33,12 @@ from rosvar.ros2.context import Context, optional
 from rosvar.ros2.frontends.python.text import (
     CONFIGURATION_EQUALS,
     EMPTY,
+    NODE_NAME,
     PATH_JOIN,
     PYTHON_STRING,
     UNKNOWN,
 )
+from rosvar.ros2.nodes import ROS2_NODES
 
 Value = Raw | Fail
 UNSUPPORTED = "substitution-unsupported"
@@ -167,7 +170,7 @@ def command_line(text: str) -> list[Template]:
 
 Handler = Callable[[Interpretation[Context], Context, list[Raw]], Choice[Value]]
 HANDLERS: dict[str, Handler] = {}
-OWN = frozenset({PATH_JOIN, PYTHON_STRING, UNKNOWN, CONFIGURATION_EQUALS, EMPTY})
+OWN = frozenset({PATH_JOIN, PYTHON_STRING, UNKNOWN, CONFIGURATION_EQUALS, EMPTY, NODE_NAME})
 """rosvar's own substitutions, which the Python frontend writes (no launch API name)."""
 
 
@@ -471,9 +474,11 @@ def _file_content(
 ) -> Choice[Value]:
     """The text of the file, read through the workspace's gate (launch reads it when the
     substitution is performed; a file outside the workspace is refused, never opened)."""
-    if len(args) != 1 or not isinstance(args[0], str):
+    if len(args) != 1:
         return _fail(host, "$(file-content) takes a path", "substitution-invalid")
     path = args[0]
+    if not isinstance(path, str):
+        return _fail(host, "$(file-content) of a path that is not known", "value-unknown")
     if not os.path.isabs(path):
         return _fail(
             host,
@@ -532,11 +537,36 @@ def _path_join(host: Interpretation[Context], context: Context, args: list[Raw])
 def _python_string(
     host: Interpretation[Context], context: Context, args: list[Raw]
 ) -> Choice[Value]:
-    """The Python frontend's launch-time string inside an expression: its ``repr``; an
-    unknown value stays unknown (the expression then fails where it is needed)."""
+    """The Python frontend's launch-time string inside an expression: its ``repr``; a value
+    known only once the command line gives it (a term) is a term too."""
     if len(args) != 1:
         return _fail(host, f"$({PYTHON_STRING}) takes one argument", "substitution-invalid")
-    return Choice.const(host.space, repr(args[0]) if isinstance(args[0], str) else args[0])
+    if isinstance(args[0], str):
+        return Choice.const(host.space, repr(args[0]))
+    return Choice.const(host.space, Apply(PYTHON_STRING, (args[0],), f"repr({args[0]})"))
+
+
+register(PYTHON_STRING, lambda _host, value: repr(value))
+
+
+@substitution(NODE_NAME)
+def _node_name(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+    """The Python frontend's container object given as a target: the fully qualified name of
+    the node declared at the place named, as launch_ros reads it off the executed action
+    (the pushed namespace there, then its own); where it was not launched, launch fails."""
+    if len(args) != 1:
+        return _fail(host, f"$({NODE_NAME}) takes a place", "substitution-invalid")
+    name = _fail(host, "a container's name read where it was not launched", "value-unknown")
+    for node in host.model.nodes:
+        if str(node.location) == args[0]:
+            name = ite(
+                host.space, node.condition, node.value(ROS2_NODES.full_name).map(_named), name
+            )
+    return name
+
+
+def _named(name: Raw | None) -> Value:
+    return Fail("a container with no name", "value-unknown") if name is None else name
 
 
 @substitution(UNKNOWN)
@@ -556,16 +586,32 @@ register(UNKNOWN, _not_followed)
 
 @substitution("eval")
 def _eval(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
-    if len(args) != 1 or not isinstance(args[0], str):
+    if len(args) != 1:
         return _fail(host, "$(eval) takes one argument", "substitution-invalid")
-    value = _evaluated.get(args[0])
+    if not isinstance(args[0], str):  # a term: evaluated once the command line gives it
+        return Choice.const(host.space, Apply("ros2-eval", (args[0],), f"$(eval {args[0]})"))
+    return Choice.const(host.space, _evaluation(args[0]))
+
+
+def _evaluation(text: str) -> str | Fail:
+    value = _evaluated.get(text)
     if value is None:
         try:
-            value = evaluate(args[0], EvalEnvironment(_no_arg))
+            value = evaluate(text, PYTHON_EXPRESSION)
         except (EvalFailed, EvalRefused) as error:
-            value = Fail(f"$(eval {args[0]}): {error}", "eval-failed")
-        _evaluated[args[0]] = value
-    return Choice.const(host.space, value)
+            value = Fail(f"$(eval {text}): {error}", "eval-failed")
+        _evaluated[text] = value
+    return value
+
+
+def _eval_term(_host: object, text: object) -> str:
+    value = _evaluation(str(text))
+    if isinstance(value, Fail):
+        raise TermError(value.message)
+    return value
+
+
+register("ros2-eval", _eval_term)
 
 
 EVALUATED_CAPACITY = 65_536
@@ -579,6 +625,16 @@ the values it was made of, in every includer (autoware.universe: 37,000 texts ev
 
 def _no_arg(name: str) -> str:
     raise KeyError(name)  # ROS 2 expressions read launch configurations only through $(var)
+
+
+PYTHON_EXPRESSION = EvalEnvironment(
+    _no_arg,
+    symbols=_no_arg,
+    namespaces={"math": {name: name for name in dir(math) if "__" not in name}},
+)
+"""What ``PythonExpression`` evaluates in: ``eval(text, {}, locals)`` whose locals are the
+``math`` module and its names (its default ``python_modules``), under Python's builtins; no
+roslaunch names (``true``, ``arg``, ``env``: a ``NameError`` in ROS 2)."""
 
 
 @substitution("anon")

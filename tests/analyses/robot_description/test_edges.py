@@ -21,7 +21,7 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
-from rosvar.workspace.interfaces.model import Role
+from rosvar.workspace.interfaces.model import Interfaces, Role
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -116,6 +116,24 @@ def test_a_simulated_sensor_is_the_missing_partner(ws: LaunchWorkspace) -> None:
     unread = [f for f in findings if f.check is Check.UNREAD]
     assert any("libgazebo_ros_mystery.so" in f.message for f in unread)
     assert all(f.severity is Severity.NOTE for f in unread)
+
+
+def test_a_description_read_with_textfile_is_located_in_its_file(ws: LaunchWorkspace) -> None:
+    """Findings of a ``textfile`` description name lines of the file read, not of the
+    parameter's text at the launch file's place."""
+    urdf = ws.write("urdf/robot.urdf", ROBOT.replace("$(arg prefix)scan", "scan"))
+    command = "command=\"$(find xacro)/xacro '$(find pkg)/urdf/robot.urdf.xacro' "
+    command += 'laser:=$(arg laser)"'
+    launch = LAUNCH.replace(command, 'textfile="$(find pkg)/urdf/robot.urdf"')
+    assert launch != LAUNCH
+    ws.launch("sim.launch", launch)
+    analysis = ws.analysis()
+    models = [analysis.model(f) for f in analysis.workspace.launch_files]
+    findings = check_models(
+        analysis.space, models, Interfaces(), analysis.workspace.confinement(), Simulation(analysis)
+    )
+    [unread] = [f for f in findings if f.check is Check.UNREAD and "mystery" in f.message]
+    assert unread.locations[1:] == (Location(urdf, 20, 5),)  # its <plugin>
 
 
 def test_xacro_failing_is_a_warning_where_the_launch_stops(ws: LaunchWorkspace) -> None:

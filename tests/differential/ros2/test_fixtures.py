@@ -948,6 +948,31 @@ def generate_launch_description():
         },
         [{}, {"first": "c"}],
     ),
+    "undeclared-argument-declared-by-each-include": (
+        {
+            "main.launch.xml": """<launch>
+            <arg name="roi" default="true"/>
+            <let name="input" value="roi" if="$(var roi)"/>
+            <let name="input" value="plain" unless="$(var roi)"/>
+            <group><include file="$(dirname)/sub.launch.xml"/></group>
+            <group>
+              <push-ros-namespace namespace="fusion"/>
+              <include file="$(dirname)/sub.launch.xml">
+                <arg name="in" value="$(var input)"/>
+              </include>
+            </group>
+          </launch>""",
+            "sub.launch.xml": """<launch>
+            <arg name="in" default="x"/>
+            <arg name="model_path" default="$(dirname)/m.onnx"/>
+            <node pkg="pkg" exec="x" name="n">
+              <param name="model_path" value="$(var model_path)"/>
+              <param name="in" value="$(var in)"/>
+            </node>
+          </launch>""",
+        },
+        [{}, {"model_path": "given"}, {"model_path": "given", "roi": "false"}],
+    ),
     "actions-that-start-nothing": (
         {
             "main.launch.xml": """<launch>
@@ -972,6 +997,37 @@ def generate_launch_description():
 """,
         },
         [{}, {"a": "2"}],
+    ),
+    "values-over-the-work-limits-once-bound": (
+        {
+            "params.yaml": "/**:\n  ros__parameters:\n    first: $(var a0)\n    joined: "
+            + "".join(f"$(var a{i})" for i in range(14))
+            + "\n",
+            "main.launch.xml": "<launch>"
+            + "".join(f'<arg name="a{i}" default="x"/>' for i in range(14))
+            + '<node pkg="pkg" exec="x" name="n{}" args="{}">'.format(
+                "".join(f"$(var a{i})" for i in range(14)),
+                " ".join(f"$(var a{i})" for i in range(14)),
+            )
+            + '<param from="$(dirname)/params.yaml" allow_substs="true"/></node></launch>',
+            "main.launch.py": """import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration as V
+from launch_ros.actions import Node
+from launch_ros.parameter_descriptions import ParameterFile
+
+
+def generate_launch_description():
+    path = os.path.join(os.path.dirname(__file__), 'params.yaml')
+    names = [f'a{i}' for i in range(14)]
+    return LaunchDescription([DeclareLaunchArgument(n, default_value='x') for n in names] + [
+        Node(package='pkg', executable='x', name=['n'] + [V(n) for n in names],
+             parameters=[ParameterFile(path, allow_substs=True)]),
+    ])
+""",
+        },
+        [{}, {"a1": "y", "a13": "z"}, {"a0": "7"}],
     ),
 }
 

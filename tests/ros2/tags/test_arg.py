@@ -45,6 +45,36 @@ def test_given_defaulted_refused_and_missing_arguments_agree_with_ros2_launch(
     it.matches_oracle(arguments)
 
 
+CHOSEN = """<launch>
+  <arg name="prefix" default=""/>
+  <arg name="mode" default="$(var prefix)fast"><choice value="fast"/><choice value="slow"/></arg>
+  <node pkg="pkg" exec="driver" name="$(var mode)"/>
+</launch>"""
+CHOSEN_ARGUMENTS = [
+    ({}, True),
+    ({"prefix": "z"}, False),
+    ({"mode": "z"}, False),
+    ({"mode": "slow"}, True),
+]
+
+
+def test_a_value_only_a_configuration_knows_is_checked_against_the_choices(tmp_path: Path) -> None:
+    it = launch(tmp_path, CHOSEN)
+    assert it.implies(it.given("mode", OTHER), ~it.model.loads)  # no choice is <other>
+    # a default that only the prefix makes: told once the prefix is known
+    assert not it.implies(it.given("prefix", OTHER), ~it.model.loads)
+    for arguments, ok in CHOSEN_ARGUMENTS:
+        assert it.analysis.resolve([str(it.main)], arguments).ok is ok, arguments
+
+
+@pytest.mark.oracle
+@pytest.mark.parametrize(("arguments", "ok"), CHOSEN_ARGUMENTS)
+def test_values_outside_the_choices_agree_with_ros2_launch(
+    tmp_path: Path, arguments: dict[str, str], ok: bool
+) -> None:
+    assert launch(tmp_path, CHOSEN).matches_oracle(arguments)["ok"] is ok
+
+
 @pytest.mark.oracle
 def test_an_included_files_let_and_arg_reach_the_includer(tmp_path: Path) -> None:
     it = launch(

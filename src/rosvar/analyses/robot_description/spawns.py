@@ -104,6 +104,8 @@ class _Source:
     file: Raw | None = None
     text: str | None = None
     location: Location | None = None
+    origin: str | None = None
+    """The file the text was read from (a ``textfile``), None for a value written inline."""
 
 
 class Spawns:
@@ -196,10 +198,13 @@ class Spawns:
                 taken = remaining & param.condition & branch
                 if not self.space.satisfiable(taken):
                     continue
+                files: Choice[Raw | None] = param.textfile or Choice.const(self.space, None)
                 for value_branch, value in param.value:
-                    where = taken & value_branch
-                    if self.space.satisfiable(where):
-                        sources.extend(self._value(value, where, param.location))
+                    for file_branch, origin in files:
+                        where = taken & value_branch & file_branch
+                        if self.space.satisfiable(where):
+                            read = origin if isinstance(origin, str) else None
+                            sources.extend(self._value(value, where, param.location, read))
                 remaining &= ~(param.condition & branch)
         return sources
 
@@ -221,8 +226,11 @@ class Spawns:
                         sources.extend(self._value(parameter.value, where, node.location))
         return sources
 
-    def _value(self, value: object, condition: BDD, location: Location) -> list[_Source]:
-        """A parameter's value as a description's source."""
+    def _value(
+        self, value: object, condition: BDD, location: Location, origin: str | None = None
+    ) -> list[_Source]:
+        """A parameter's value as a description's source (``origin``: the file its text was
+        read from)."""
         if isinstance(value, DeferredValue):
             if value.kind is not ParamSource.COMMAND:
                 return []
@@ -232,7 +240,7 @@ class Spawns:
         command = _unwrapped(self._found(value))  # type: ignore[arg-type]
         if command is None:
             if isinstance(value, str) and value.lstrip().startswith("<"):
-                return [_Source(condition, text=value, location=location)]
+                return [_Source(condition, text=value, location=location, origin=origin)]
             return []
         try:
             run = xacro_command(split(command))
@@ -309,11 +317,12 @@ class Spawns:
 
     def _text(self, source: _Source) -> Description:
         assert source.text is not None and source.location is not None
-        key = (source.text, source.condition)
+        key = (source.text, source.condition, source.origin)
         found = self._expanded.get(key)
         if found is None:
-            # lines count in the parameter's text, not in the launch file that sets it
-            label = f"the text of the parameter at {source.location}"
+            # lines count in the parameter's text: the file it was read from, if any, else
+            # not the launch file that sets it
+            label = source.origin or f"the text of the parameter at {source.location}"
             found = self.reader.expand_text(source.text, label, source.condition)
             self._expanded[key] = found
         return found

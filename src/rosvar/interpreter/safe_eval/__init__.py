@@ -14,7 +14,7 @@ globals):
 1. ``arg anon dirname true false True False env optenv find`` and every name of :mod:`math`;
 2. otherwise the launch arg of that name, converted with :func:`convert_auto`;
 3. otherwise a Python builtin (only ``list dict map str float int bool len abs min max round
-   sorted`` are allowed here; roslaunch would accept any builtin);
+   sorted set frozenset tuple any all`` are allowed here; roslaunch would accept any builtin);
 4. otherwise the name is undefined (:class:`EvalFailed`).
 
 xacro's ``${}`` resolves names its own way (:attr:`EvalEnvironment.symbols`): the document's

@@ -50,6 +50,7 @@ _BUILTIN_FUNCTIONS: Final[Mapping[str, Callable[..., object]]] = {
     for name in (
         "list", "dict", "map", "str", "float", "int",  # roslaunch's own __builtins__ list
         "bool", "len", "abs", "min", "max", "round", "sorted",
+        "set", "frozenset", "tuple", "any", "all",  # ros2/launch's PythonExpression's too
     )
 }  # fmt: skip
 _PYTHON_BUILTIN_NAMES: Final = frozenset(name for name in dir(builtins) if "__" not in name)
@@ -100,5 +101,7 @@ _SIZED: Final = (str, list, tuple, dict, set, frozenset)
 _CHEAP_FUNCTIONS: Final = frozenset({"len", "bool"})
 #: Calls that compare or hash every element of an iterable argument: an iterator is
 #: materialised first so that its elements can be weighed (they consume it entirely anyway).
-_CONSUMING_FUNCTIONS: Final = frozenset({"sorted", "min", "max", "dict"})
+_CONSUMING_FUNCTIONS: Final = frozenset(
+    {"sorted", "min", "max", "dict", "set", "frozenset", "tuple"}
+)
 _END: Final = object()

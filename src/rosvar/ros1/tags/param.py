@@ -129,7 +129,8 @@ def handle_param(
             else:
                 joined = it.lift("ns_join", scope.ns, Choice.const(it.space, name))
                 full = it.lift("canonicalize", joined)
-                it.model.params.append(ParamDecl(it.pc, entity.location, full, value))
+                textfile = raw if kind == ParamSource.TEXTFILE else None
+                it.model.params.append(ParamDecl(it.pc, entity.location, full, value, textfile))
 
 
 @tag("param")

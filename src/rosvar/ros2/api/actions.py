@@ -30,6 +30,7 @@ class Slot(enum.StrEnum):
     NAMED_VALUES = "named-values"  # a dict or (name, value) pairs: <env name value>...
     VALUES = "values"  # a list: <choice value>
     ACTIONS = "actions"  # actions (or descriptions) as children
+    DESCRIPTIONS = "descriptions"  # composable node descriptions, each under its condition
 
 
 @dataclass(frozen=True, slots=True)
@@ -191,7 +192,7 @@ expose(Action(("node",), ("launch_ros.Node",), _NODE, _NODE_XML))
 expose(
     Action(("lifecycle_node",), ("launch_ros.LifecycleNode",), _NODE, _NODE_XML, python_only=True)
 )
-_DESCRIPTIONS = Param("composable_node_descriptions", "composable_node", Slot.ACTIONS)
+_DESCRIPTIONS = Param("composable_node_descriptions", "composable_node", Slot.DESCRIPTIONS)
 expose(
     Action(
         ("node_container",),

@@ -12,6 +12,7 @@ from rosvar.interpreter.interpretation import Interpretation, processed
 from rosvar.interpreter.model import ArgDecl
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, ite
+from rosvar.logic.terms import Apply, Hole, register
 from rosvar.ros2.context import Configuration, Context, optional
 from rosvar.ros2.dialect import tag
 from rosvar.ros2.include_memo import is_input, is_listed
@@ -28,15 +29,12 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     old = context.get(name)
     unset = _unset(it, old)
     included = len(it.stack) > 1
-    if (
-        unset != it.space.false
-        and context.open_command_line
-        and included
-        and "$" not in name
-        and not is_input(it, context, name)
-    ):
-        old = _given(it, context, name, old, unset)
-        unset = _unset(it, old)
+    if unset != it.space.false and context.open_command_line and included and "$" not in name:
+        if not is_input(it, context, name):
+            old = _given(it, context, name, old, unset)
+            unset = _unset(it, old)
+        else:  # declared before, where it was set: the next interpretation sets it first
+            context.unset_reads.add(name)
     if entity.get("default") is None:
         it.fail(unset, "arg-required", f"Required launch argument '{name}' was not provided")
     else:
@@ -47,9 +45,8 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     value = context.get(name)
     allowed = [c.get("value") or "" for c in entity.children if c.tag == "choice"]
     if allowed and value is not None:
-        bad = value.where(lambda leaf: isinstance(leaf, str) and leaf not in allowed)
         it.fail(
-            bad,
+            _outside(it, value, allowed),
             "arg-choice",
             f"argument '{name}' must be one of {allowed}",
         )
@@ -66,6 +63,27 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
             it.model.inputs.get(name),
         )
     )
+
+
+def _outside(it: Interpretation[Context], value: Configuration, allowed: list[str]) -> BDD:
+    """Where ``value`` is none of ``allowed``: a string outside them, an input's ``<other>``
+    value where its domain holds them all, another term where its string is not among them
+    once configured (a predicate ``resolve`` decides)."""
+    bad = it.space.false
+    for condition, leaf in value:
+        if isinstance(leaf, str):
+            if leaf not in allowed:
+                bad |= condition
+        elif isinstance(leaf, Hole) and set(allowed) <= set(it.space.domain(leaf.input)):
+            bad |= condition
+        elif isinstance(leaf, Apply):
+            one_of = Apply(ONE_OF, (leaf, tuple(allowed)), display=f"{leaf} in {allowed}")
+            bad |= condition & ~it.space.predicate("true", one_of)
+    return bad
+
+
+ONE_OF = "ros2-one-of"
+register(ONE_OF, lambda _host, text, allowed: "true" if text in allowed else "false")
 
 
 def _unset(it: Interpretation[Context], value: Configuration | None) -> BDD:

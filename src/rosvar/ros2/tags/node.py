@@ -15,7 +15,6 @@ from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import EnvSetting, NodeDecl, NodeParameter, Raw, Remap
 from rosvar.logic.choice import Choice, Fail, combine
-from rosvar.logic.terms import is_term
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.conventions.parameters import PARAMETER_TYPES, coerce
 from rosvar.ros2.dialect import ROS2, tag
@@ -50,7 +49,7 @@ def node(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     it.required(entity, REQUIRED[entity.tag], context)
     fields = _declare(it, entity, context, KINDS[entity.tag], None)
     named = ROS2.nodes.full_name.over(fields)
-    container = it.strip(named.map(_container_name), "<node_container> name")
+    container = it.strip(named, "<node_container> name")  # a term: known once configured
     _composables(it, entity, context, container)
 
 
@@ -70,11 +69,6 @@ def _composables(
             with it.at(child), it.under(it.condition_of(child, context)) as live:
                 if live:
                     _declare(it, child, context, ProcessKind.COMPOSABLE_NODE, container)
-
-
-def _container_name(name: Raw | None) -> Raw | Fail | None:
-    """What a ``<load_composable_node>`` of the container names as its target."""
-    return Fail("a container's name is not known", "value-unknown") if is_term(name) else name
 
 
 def _declare(

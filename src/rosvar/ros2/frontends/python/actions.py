@@ -159,6 +159,24 @@ def _write_actions(call: Call, entity: Entity, param: Param, value: Value) -> No
     add_actions(call, entity, value)
 
 
+def _write_descriptions(call: Call, entity: Entity, param: Param, value: Value) -> None:
+    """Composable node descriptions as children. A description the reading put under an
+    ``if`` on a launch-time value carries it as its own ``if`` (launch_ros evaluates each
+    description's condition); the unconditioned group that gathers the branches' values is
+    their descriptions in order, since a container holds no group."""
+    holder = Entity(entity.tag, {}, call.location)
+    add_actions(call, holder, value)
+    pending = list(reversed(holder.children))
+    while pending:
+        child = pending.pop()
+        if child.tag != "group":
+            entity.children.append(child)
+        elif set(child.attributes) <= {"scoped"}:
+            pending.extend(reversed(child.children))
+        else:
+            call.not_followed("a group of composable node descriptions")
+
+
 WRITERS: dict[Slot, Callable[[Call, Entity, Param, Value], None]] = {
     Slot.ATTRIBUTE: _write_attribute,
     Slot.COMMAND_LINE: _write_command_line,
@@ -167,6 +185,7 @@ WRITERS: dict[Slot, Callable[[Call, Entity, Param, Value], None]] = {
     Slot.NAMED_VALUES: _write_named_values,
     Slot.VALUES: _write_values,
     Slot.ACTIONS: _write_actions,
+    Slot.DESCRIPTIONS: _write_descriptions,
 }
 
 

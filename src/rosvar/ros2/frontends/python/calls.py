@@ -15,6 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.conditions import CONDITIONS
 from rosvar.ros2.api.conditions import Condition as ConditionEntry
 from rosvar.ros2.api.registry import python_name
@@ -25,6 +26,7 @@ from rosvar.ros2.frontends.python import launch_time
 from rosvar.ros2.frontends.python.text import (
     CONFIGURATION_EQUALS,
     EMPTY,
+    NODE_NAME,
     PATH_JOIN,
     Sub,
     Text,
@@ -93,9 +95,14 @@ class Call:
             return Text.of(unknown(value.what))
         if isinstance(value, Source):
             return value.path
-        if isinstance(value, Conditional):
-            what = "a value that differs between the branches of an 'if' on a launch-time value"
-            return Text.of(unknown(self.not_followed(what).what))
+        if isinstance(value, Conditional):  # the text of the branch taken
+            then, otherwise = (self.text(value.then), self.text(value.otherwise))
+            chosen = launch_time.chosen(
+                value.test, launch_time.quoted(then), launch_time.quoted(otherwise), str
+            )
+            return launch_time.as_text(chosen)
+        if isinstance(value, Entity) and value.tag == "node_container":  # a target's name
+            return Text.of(Sub(NODE_NAME, (Text.of(str(value.location)),)))
         if value is None or isinstance(value, bool | int | float):
             return Text.of(typed_text(value))
         return Text.of(unknown(self.not_followed(f"{type(value).__name__} used as text").what))

@@ -39,7 +39,7 @@ from rosvar.ros2.frontends.python.calls import (
 )
 from rosvar.ros2.frontends.python.launch_time import OPERATORS, performed
 from rosvar.ros2.frontends.python.modules import MAX_MODULE_BYTES, MAX_MODULES, ModulePath
-from rosvar.ros2.frontends.python.text import Sub, Text
+from rosvar.ros2.frontends.python.text import Sub, Text, render
 from rosvar.ros2.frontends.python.values import (
     Class,
     Condition,
@@ -78,6 +78,8 @@ MAX_IMPORT_DEPTH = 20
 """Modules being read at once (a module importing another...): deeper imports stay symbolic."""
 MODULE_NAME = "__launch__"
 """``__name__`` while the file is read: launch imports it as a module, not as ``__main__``."""
+DESCRIPTION = "composable_node"
+"""The tag of a composable node description, which carries its own condition."""
 
 
 class _Return(Exception):
@@ -237,6 +239,9 @@ class Interpreter:
         """The Python tests of the launch-time ``if``s being read, innermost last."""
         self.created: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
         """Actions made under guards, with the guards (so a branch does not guard twice)."""
+        self.descriptions: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
+        """Composable node descriptions made conditional, by id: the description as written
+        and the tests of its condition."""
         self.statements: dict[type[ast.stmt], Callable[[Any, Scope], None]] = {
             ast.Expr: self._expression_statement,
             ast.Assign: self._assign,
@@ -506,9 +511,26 @@ class Interpreter:
         guards = tuple(self.guards)
         if made is not None and made[0] is action and made[1][: len(guards)] == guards:
             return action
+        if action.tag == DESCRIPTION and not {"if", "unless"} & set(action.attributes):
+            return self._guarded_description(action, guards)
         group = _group([action], self.guard(), self.location(node), self.sink)
         self.created[id(group)] = (group, guards)
         return group
+
+    def _guarded_description(self, action: Entity, guards: tuple[Text, ...]) -> Entity:
+        """A composable node description under ``guards`` (and those it was made under):
+        a copy with that condition as its own, since a container holds no group."""
+        original, before = self.descriptions.get(id(action), (action, ()))
+        tests = before + tuple(test for test in guards if test not in before)
+        conjunction = tests[0]
+        for test in tests[1:]:
+            conjunction = Text.of("(", conjunction, ") and (", test, ")")
+        attributes = {**original.attributes, "if": render(launch_time.condition(conjunction))}
+        copy = Entity(original.tag, attributes, original.location, original.children)
+        copy.text, copy.typed = original.text, original.typed
+        self.created[id(copy)] = (copy, guards)
+        self.descriptions[id(copy)] = (original, tests)
+        return copy
 
     def guarded_item(self, item: Value, node: ast.AST) -> Value:
         """An item added to a list (or a description) under the guards being read."""

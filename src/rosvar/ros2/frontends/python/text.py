@@ -27,6 +27,10 @@ CONFIGURATION_EQUALS = "rosvar-configuration-equals"
 """``LaunchConfigurationEquals(name, value)``: whether the launch configuration ``name`` is
 the text ``value`` (plain text equality; an undefined one equals only no value), which no
 frontend writes (``$(equals)`` compares booleans and numbers by value)."""
+NODE_NAME = "rosvar-node-name"
+"""``$(rosvar-node-name FILE:LINE:COL)``: the fully qualified name of the node declared at that
+place, as launch_ros's ``node_name`` of a ``ComposableNodeContainer`` object given as a
+``LoadComposableNodes`` target (XML names the target as text)."""
 EMPTY = "rosvar-empty"
 """The empty text as an operand of ``$(equals)``: launch's grammar reads ``''`` there as the
 text ``[]``, which the Python frontend's ``''`` is not."""

@@ -1,0 +1,71 @@
+"""Values the variational analysis gave up on, computed again in one configuration.
+
+A value that combines too many operand values across all configurations (the bounds of
+:class:`~rosvar.interpreter.substitution_args.ValueBudget`) is left unknown, yet in one
+configuration each operand has one value and the combination is a single one. A
+:class:`GivenUp` term keeps the operands' choices and the combination; evaluated with a
+configuration's :class:`Bindings` (a resolution's), it picks each operand's branch that holds
+and combines those leaves once, under the same bounds. Without bindings (a configuration
+graph whose inputs are only partly known), it stays unknown as before.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from rosvar.logic.bdd import BDD
+from rosvar.logic.choice import Choice, Fail
+from rosvar.logic.inputs import Input
+from rosvar.logic.terms import Apply, Operand, PackageTable, TermError, evaluate
+
+Combination = Callable[[list[Any]], Operand | Fail]
+"""The value of one leaf of each operand (a failing one: the launch tool's failure)."""
+
+
+@dataclass(frozen=True)
+class Bindings(PackageTable):
+    """A host that knows one configuration: the packages, and which conditions hold."""
+
+    holds: Callable[[BDD], bool]
+
+
+class GivenUp(Apply):
+    """``too_complex(text)``: a value over the work limits, with what computes it in one
+    configuration (``choices``, one leaf of each given to ``combination``).
+
+    Equal only to itself: two give-ups of one text may combine different operands.
+    """
+
+    __slots__ = ("choices", "combination")
+
+    def __init__(
+        self, text: str, display: str, choices: Sequence[Choice[object]], combination: Combination
+    ) -> None:
+        super().__init__("too_complex", (text,), display=display)
+        self.choices = tuple(choices)
+        self.combination = combination
+
+    def __eq__(self, other: object) -> bool:
+        return other is self
+
+    def __hash__(self) -> int:
+        return self._hash
+
+    def evaluated(self, inputs: Mapping[Input, str], host: object) -> str:
+        if not isinstance(host, Bindings):
+            return super().evaluated(inputs, host)
+        leaves: list[object] = []
+        for choice in self.choices:
+            leaf = next((leaf for condition, leaf in choice if host.holds(condition)), _NONE)
+            if leaf is _NONE:
+                raise TermError(f"{self.display} has no value in this configuration")
+            leaves.append(leaf)
+        value = self.combination(leaves)
+        if isinstance(value, Fail):
+            raise TermError(value.message, value.code)
+        return evaluate(value, inputs, host)
+
+
+_NONE = object()

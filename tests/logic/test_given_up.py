@@ -1,0 +1,88 @@
+"""Values over the work limits, computed again in one configuration (``GivenUp``, ``Bindings``)."""
+
+from __future__ import annotations
+
+import gc
+from collections.abc import Iterator
+
+import pytest
+
+from rosvar.logic.choice import Choice, Fail
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.given_up import Bindings, GivenUp
+from rosvar.logic.inputs import OTHER, ArgInput, Input, Slot
+from rosvar.logic.terms import Apply, Hole, TermError, concat, evaluate
+
+F = "/ws/pkg/launch/main.launch"
+X = ArgInput(F, "x")
+Y = ArgInput(F, "y")
+DOMAINS: dict[Input, tuple[Slot, ...]] = {X: ("a", "b", OTHER), Y: ("true", "false")}
+
+
+@pytest.fixture
+def space() -> Iterator[ConditionSpace]:
+    s = ConditionSpace()
+    for input_, domain in DOMAINS.items():
+        s.declare_input(input_, domain)
+    yield s
+    gc.collect()  # the raised errors' frames hold terms, and their BDDs, in cycles
+
+
+def _choices(space: ConditionSpace) -> list[Choice[object]]:
+    x = Choice.of(
+        [(space.slot(X, "a"), "a"), (space.slot(X, "b"), "b"), (space.slot(X, OTHER), Hole(X))]
+    )
+    y = Choice.of([(space.slot(Y, "true"), "!"), (space.slot(Y, "false"), Fail("no", "y-no"))])
+    return [x, y]
+
+
+def _joined(leaves: list[object]) -> object:
+    for leaf in leaves:
+        if isinstance(leaf, Fail):
+            return leaf
+    return concat(["<", *leaves, ">"])  # type: ignore[list-item]
+
+
+def _bindings(space: ConditionSpace, values: dict[Input, str | None]) -> Bindings:
+    assignment = space.assignment(values)
+    return Bindings({}, lambda condition: space.evaluate(condition, assignment))
+
+
+def test_a_configuration_combines_the_leaves_that_hold_there(space: ConditionSpace) -> None:
+    term = GivenUp("$(arg x)$(arg y)", "⟨…⟩", _choices(space), _joined)  # type: ignore[arg-type]
+    bindings = _bindings(space, {X: "b", Y: "true"})
+    assert evaluate(term, {X: "b", Y: "true"}, bindings) == "<b!>"
+    # a leaf that is itself a term is evaluated with the configuration's strings
+    other = _bindings(space, {X: "zzz", Y: "true"})
+    assert evaluate(concat(["[", term, "]"]), {X: "zzz", Y: "true"}, other) == "[<zzz!>]"
+
+
+def test_a_failing_leaf_is_the_launch_tools_failure(space: ConditionSpace) -> None:
+    term = GivenUp("t", "⟨t⟩", _choices(space), _joined)  # type: ignore[arg-type]
+    with pytest.raises(TermError) as raised:
+        evaluate(term, {X: "a", Y: "false"}, _bindings(space, {X: "a", Y: "false"}))
+    assert (str(raised.value), raised.value.code) == ("no", "y-no")
+
+
+def test_without_a_configuration_it_stays_over_the_work_limits(space: ConditionSpace) -> None:
+    # importing the interpreter registers the too_complex function all give-ups share
+    from rosvar.interpreter import substitution_args
+
+    term = GivenUp("t", "⟨t⟩", _choices(space), _joined)  # type: ignore[arg-type]
+    with pytest.raises(TermError, match="work limits"):
+        evaluate(term, {X: "a", Y: "true"}, None)
+    assert substitution_args.too_complex("t") == Apply("too_complex", ("t",), display="⟨t⟩")
+
+
+def test_an_operand_undefined_in_the_configuration_is_reported(space: ConditionSpace) -> None:
+    only_a = Choice.of([(space.slot(X, "a"), "a")])
+    term = GivenUp("t", "⟨t⟩", [only_a], _joined)  # type: ignore[arg-type]
+    with pytest.raises(TermError, match="no value in this configuration"):
+        evaluate(term, {X: "b"}, _bindings(space, {X: "b", Y: None}))
+
+
+def test_each_give_up_is_equal_only_to_itself(space: ConditionSpace) -> None:
+    one = GivenUp("t", "⟨t⟩", _choices(space), _joined)  # type: ignore[arg-type]
+    two = GivenUp("t", "⟨t⟩", _choices(space), _joined)  # type: ignore[arg-type]
+    assert one == one and one != two and one != Apply("too_complex", ("t",), display="⟨t⟩")
+    assert len(Choice.of([(space.slot(X, "a"), one), (space.slot(X, "b"), two)])) == 2

@@ -1,0 +1,133 @@
+"""Launch actions of Python launch files as their XML elements (``actions.py``), where the
+Python computes them from launch-time values: composable node descriptions chosen by an
+``if`` on such a value, and a container object given as a ``LoadComposableNodes`` target.
+Each is checked against the real ros2/launch (the oracle) for several command lines."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from ros2.tags.launches import launch
+
+HEADER = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.conditions import IfCondition, UnlessCondition
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import ComposableNodeContainer, LoadComposableNodes, PushRosNamespace
+from launch_ros.descriptions import ComposableNode
+"""
+
+BRANCHES = (
+    HEADER
+    + """
+
+def setup(context):
+    split = LaunchConfiguration('split').perform(context).lower() == 'true'
+    shared = ComposableNode(package='pkg', plugin='p::Crop', name='crop')
+    if not split:
+        one = ComposableNode(package='pkg', plugin='p::Both', name='both')
+        parts = [one]
+    else:
+        parts = [
+            ComposableNode(package='pkg', plugin='p::Sync', name='sync'),
+            ComposableNode(package='pkg', plugin='p::Concat', name='concat'),
+        ]
+        if LaunchConfiguration('extra').perform(context) == 'yes':
+            parts.append(ComposableNode(package='pkg', plugin='p::Extra', name='extra'))
+    return [ComposableNodeContainer(
+        name='box', namespace='ns', package='pkg',
+        executable='component_container', composable_node_descriptions=parts + [shared])]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('split', default_value='true'),
+        DeclareLaunchArgument('extra', default_value='no'),
+        OpaqueFunction(function=setup),
+    ])
+"""
+)
+
+
+@pytest.mark.oracle
+@pytest.mark.parametrize(
+    "arguments",
+    [{}, {"split": "False"}, {"split": "TRUE", "extra": "yes"}, {"split": "no", "extra": "yes"}],
+)
+def test_descriptions_chosen_by_a_launch_time_if_agree_with_ros2_launch(
+    tmp_path: Path, arguments: dict[str, str]
+) -> None:
+    it = launch(tmp_path, BRANCHES, ".launch.py", values={"split": ["False", "TRUE", "no"]})
+    assert not [d for d in it.model.diagnostics if d.code == "python-not-followed"]
+    it.matches_oracle(arguments)
+
+
+def test_each_description_chosen_by_a_branch_is_present_under_its_test(tmp_path: Path) -> None:
+    """(Where an argument has a value no file names, the tests are terms that ``resolve``
+    evaluates.)"""
+    values = {"split": ["False", "TRUE"], "extra": ["yes"]}
+    it = launch(tmp_path, BRANCHES, ".launch.py", values=values)
+    present = {}
+    for node in it.model.nodes:
+        for condition, plugin in node.field("plugin"):
+            if isinstance(plugin, str):
+                present[plugin] = node.condition & condition
+    true, false = it.given("split", "true") | it.given("split", "TRUE"), it.given("split", "False")
+    assert it.implies(false, present["p::Both"]) and it.never(true & present["p::Both"])
+    for plugin in ("p::Sync", "p::Concat"):
+        assert it.implies(true, present[plugin]) and it.never(false & present[plugin])
+    extra = it.given("extra", "yes")
+    assert it.implies(true & extra, present["p::Extra"])
+    known = extra | it.given("extra", "no")
+    assert it.never(present["p::Extra"] & known & (false | true & it.given("extra", "no")))
+    assert it.same(present["p::Crop"], it.analysis.space.true)
+
+
+TARGET = (
+    HEADER
+    + """
+
+def setup(context):
+    container = ComposableNodeContainer(
+        name='own_box', namespace='inner', package='pkg',
+        executable='component_container', composable_node_descriptions=[],
+        condition=UnlessCondition(LaunchConfiguration('shared')))
+    target = (
+        LaunchConfiguration('shared_name')
+        if IfCondition(LaunchConfiguration('shared')).evaluate(context)
+        else container
+    )
+    load = LoadComposableNodes(
+        composable_node_descriptions=[ComposableNode(package='pkg', plugin='p::A', name='a')],
+        target_container=target)
+    direct = LoadComposableNodes(
+        composable_node_descriptions=[ComposableNode(package='pkg', plugin='p::B', name='b')],
+        target_container=container)
+    return [PushRosNamespace('pushed'), container, load, direct]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('shared', default_value='false'),
+        DeclareLaunchArgument('shared_name', default_value='/other_box'),
+        OpaqueFunction(function=setup),
+    ])
+"""
+)
+
+
+@pytest.mark.oracle
+@pytest.mark.parametrize("arguments", [{}, {"shared": "true"}, {"shared_name": "/third"}])
+def test_a_container_object_as_target_is_named_as_launch_ros_names_it(
+    tmp_path: Path, arguments: dict[str, str]
+) -> None:
+    it = launch(tmp_path, TARGET, ".launch.py")
+    assert not [d for d in it.model.diagnostics if d.code == "python-not-followed"]
+    expected = it.matches_oracle(arguments)
+    if arguments.get("shared") == "true":  # the container is not launched: its name fails
+        assert not expected["ok"]
+    else:  # the oracle says what launch_ros does
+        containers = {node["name"]: node.get("container") for node in expected["nodes"]}
+        assert containers["b"] == "/pushed/inner/own_box"
