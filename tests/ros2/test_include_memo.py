@@ -15,6 +15,7 @@ from rosvar.interpreter import interpretation, substitution_args
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.choice import Choice
+from rosvar.logic.given_up import GivenUp
 from rosvar.ros2 import include_memo
 from rosvar.ros2.tags import include
 from rosvar.workspace import discover
@@ -137,6 +138,8 @@ def _plain(value: object) -> object:
     ``==`` (diagrams of one space compare as diagrams)."""
     if isinstance(value, Choice):
         return ("choice", tuple((condition, _plain(leaf)) for condition, leaf in value))
+    if isinstance(value, GivenUp):  # equal only to itself: by its text and operands
+        return ("given up", value.operands, _plain(value.choices))
     if dataclasses.is_dataclass(value) and not isinstance(value, type):
         fields = dataclasses.fields(value)
         return (type(value).__name__, tuple(_plain(getattr(value, f.name)) for f in fields))
