@@ -43,9 +43,7 @@ FLOORS = {  # agreeing configurations of the default sample
     "slam_toolbox": 13,
 }
 FULL_FLOORS = {  # agreeing configurations of the whole sample (--ros2-full)
-    # Universal Robots was 28: resolve now gives up on its robot description and controller
-    # files (docs/known-differences.md, "Real repositories through the command line")
-    "Universal_Robots_ROS2_Driver": 8,
+    "Universal_Robots_ROS2_Driver": 28,
     "autoware.universe": 336,
     "clearpath_common": 13,
     "demos": 19,
