@@ -277,12 +277,13 @@ def test_resolve_conflict_and_error_exit_1(
     file = good_file(workspace)
     code, out, _err = run(capsys, "resolve", str(workspace.root), "two:=true", "--launch", file)
     assert code == EXIT_FAILS
-    assert f"conflict: node-name /teleop at {file}:4:3, {file}:5:3" in out
+    at = shown_path(file)  # as the output spells it, wherever the checkout is
+    assert f"conflict: node-name /teleop at {at}:4:3, {at}:5:3" in out
     code, out, _err = run(
         capsys, "resolve", str(workspace.root), "use_teleop:=maybe", "--launch", file
     )
     assert code == EXIT_FAILS
-    assert out.startswith(f"error: {file}:4:3: ") and "not a 'bool' type" in out
+    assert out.startswith(f"error: {at}:4:3: ") and "not a 'bool' type" in out
     bad = str(workspace.root / "pkg" / "launch" / "malformed.launch")
     code, out, _err = run(capsys, "resolve", str(workspace.root), "--launch", bad)
     assert code == EXIT_FAILS and "malformed XML" in out
@@ -654,7 +655,7 @@ def test_analyze_reports_a_shared_file_s_problem_once(
         ws.launch(name, '  <include file="$(find pkg)/launch/shared.launch"/>')
     _code, out, _err = run(capsys, "analyze", str(ws.root))
     shown = [line for line in out.splitlines() if "[tag-unknown]" in line]
-    assert len(shown) == 1 and shared in shown[0]
+    assert len(shown) == 1 and shown_path(shared) in shown[0]
     assert "\n1 diagnostics (0 errors)" in out
 
 
@@ -918,5 +919,6 @@ def test_resolve_prints_a_ros2_process_and_the_warnings(
     assert out.splitlines() == [
         "node  /n  (p/e)",
         "node  /⟨sleep⟩  (-//usr/bin/sleep)",
-        f"warning: {file}:2:9: Parameter file path is not a file: /nonexistent.yaml",
+        f"warning: {shown_path(str(file))}:2:9: Parameter file path is not a file: "
+        "/nonexistent.yaml",
     ]
