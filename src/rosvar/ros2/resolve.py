@@ -247,8 +247,9 @@ def node_fields(
     parameters: Sequence[tuple[str | None, str | None]],
     confinement: Confinement,
 ) -> dict[str, object]:
-    """A node's name, namespace and parameters as ``ros2 launch`` composes them: the pushed
-    namespace, the node's own, its parameters merged in order (as :func:`resolve`'s). A node
+    """A node's name, namespace, arguments and parameters as ``ros2 launch`` composes them:
+    the pushed namespace, the node's own, its parameters merged in order (as
+    :func:`resolve`'s). A node
     with no name takes one from its executable at run time: it is shown as ``⟨EXEC⟩`` in its
     namespace, its ``fqn`` null. A parameter not known yet (an arg still open) or a file not
     readable is left out."""
@@ -266,6 +267,7 @@ def node_fields(
         "name": node.schema.label.text(text),
         "fqn": fqn,
         "namespace": node.schema.namespace.text(text) or "/",
+        "args": text.get("args") or "",
         "parameters": effective(fqn, sources),
         "trigger": node.trigger,
     }
