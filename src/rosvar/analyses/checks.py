@@ -42,7 +42,7 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
 from rosvar.ros.version import RosVersion
-from rosvar.workspace.interfaces.model import Interfaces, Origin, Role
+from rosvar.workspace.interfaces.model import Entry, Interfaces, Origin, Role
 from rosvar.workspace.paths import real_path
 
 ROS2_BOTH_START = " (ros2 launch starts both: their parameter services and private names collide)"
@@ -530,9 +530,7 @@ class _Checker:
                 self.space, node, interfaces
             ):
                 entries = interface.entries
-                known = all(
-                    e.static and e.origin is Origin.SOURCE and e.named_by is None for e in entries
-                )
+                known = read_off_sources(entries) and all(e.named_by is None for e in entries)
                 if not static or not known or not any(e.role in CHANNEL for e in entries):
                     continue
                 used = {launched.resolve(e.name) for e in entries}
@@ -664,6 +662,12 @@ def nearest(name: str, used: Iterable[str]) -> str | None:
     return last[near[0]] if near else None
 
 
+def read_off_sources(entries: Iterable[Entry]) -> bool:
+    """Whether rosvar knows these uses exactly: each read off the workspace's sources (a
+    catalogue entry may list only the ones that matter) and each name static."""
+    return all(e.static and e.origin is Origin.SOURCE for e in entries)
+
+
 def _reads(reads: Iterable[str], name: str) -> bool:
     return any(_covers(read, name) for read in reads)
 
@@ -701,7 +705,7 @@ def _readers(
             if not static or launched.ros2:
                 continue
             params = interface.of(Role.PARAMS)
-            every = all(e.static and e.origin is Origin.SOURCE for e in params) and any(
+            every = read_off_sources(params) and any(
                 e.origin is Origin.SOURCE for e in interface.entries
             )
             reads = [launched.resolve(e.name) for e in params if e.static]

@@ -13,7 +13,7 @@ from __future__ import annotations
 import os
 from collections.abc import Iterator
 
-from rosvar.analyses.checks import Check, Found, model_check, nearest
+from rosvar.analyses.checks import Check, Found, model_check, nearest, read_off_sources
 from rosvar.analyses.communication import launched_units, node_branches
 from rosvar.diagnostics import Severity
 from rosvar.files import Confinement
@@ -22,7 +22,7 @@ from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros.version import RosVersion
 from rosvar.ros2.conventions.parameters import matches
 from rosvar.ros2.resolve import parameter_entries, parameter_file
-from rosvar.workspace.interfaces.model import Interfaces, Origin, Role
+from rosvar.workspace.interfaces.model import Interfaces, Role
 
 
 @model_check(RosVersion.ROS2)
@@ -76,7 +76,7 @@ def undeclared_parameters(
         files = [(p, _entries(p, confinement)) for p in own if p.file is not None]
         for condition, launched, interface, static in launched_units(space, node, interfaces):
             declared = interface.of(Role.PARAMS)
-            known = all(e.static and e.origin is Origin.SOURCE for e in declared)
+            known = read_off_sources(declared)
             if not static or not known or not declared:
                 continue
             fqn = launched.full_name
