@@ -36,6 +36,7 @@ from rosvar.ros2.frontends.python.calls import (
     REASONS,
     Call,
     join_path,
+    substitution_method,
 )
 from rosvar.ros2.frontends.python.launch_time import OPERATORS, performed
 from rosvar.ros2.frontends.python.modules import MAX_MODULE_BYTES, MAX_MODULES, ModulePath
@@ -1230,6 +1231,10 @@ class Interpreter:
             return list(receiver)
         if isinstance(receiver, Text) and name == "perform":
             return performed(receiver)  # the value at launch time, which the text stands for
+        method_of = substitution_method(receiver, name) if isinstance(receiver, Text) else None
+        if method_of is not None:
+            call = Call(name, args, kwargs, self.location(node), self.sink)
+            return method_of(call)
         if isinstance(receiver, LaunchContext) and name == "perform_substitution" and args:
             return performed(Call(name, args, kwargs, self.location(node), self.sink).text(args[0]))
         if receiver == Method(LaunchContext(), "launch_configurations") and name == "get" and args:
