@@ -27,4 +27,55 @@ def generate_launch_description():
         },
         [{}],
     ),
+    "python-subclassed-launch-actions": (
+        {
+            "pkg_helpers/__init__.py": "",
+            "pkg_helpers/launch_utils.py": """from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition, UnlessCondition
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+class DeclareBooleanLaunchArg(DeclareLaunchArgument):
+    def __init__(self, name, *, default_value=False, description=None, **kwargs):
+        super().__init__(
+            name,
+            default_value=str(default_value),
+            description=description,
+            choices=['true', 'false', 'True', 'False'],
+            **kwargs,
+        )
+
+
+class PlainNode(Node):
+    pass
+
+
+class DebugNode(Node):
+    def __init__(self, flag, **kwargs):
+        super().__init__(condition=IfCondition(LaunchConfiguration(flag)), **kwargs)
+        self.flag = flag
+
+
+def add_debuggable(ld, executable):
+    ld.add_action(Node(package='pkg', executable=executable,
+                       condition=UnlessCondition(LaunchConfiguration('debug'))))
+    ld.add_action(DebugNode('debug', package='pkg', executable=executable,
+                            name='debug_' + executable))
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from pkg_helpers.launch_utils import DeclareBooleanLaunchArg, PlainNode, add_debuggable
+
+
+def generate_launch_description():
+    ld = LaunchDescription()
+    ld.add_action(DeclareBooleanLaunchArg('debug', default_value=False))
+    ld.add_action(DeclareBooleanLaunchArg('extra', default_value=True))
+    add_debuggable(ld, 'talker')
+    ld.add_action(PlainNode(package='pkg', executable='listener', name='plain'))
+    return ld
+""",
+        },
+        [{}, {"debug": "true"}, {"debug": "False", "extra": "false"}],
+    ),
 }
