@@ -12,7 +12,7 @@ import pytest
 from rosvar.diagnostics import Diagnostic, DiagnosticSink
 from rosvar.ros2.frontends.python import interpreter
 from rosvar.ros2.frontends.python.interpreter import Interpreter, OutOfBudget
-from rosvar.ros2.frontends.python.text import render
+from rosvar.ros2.frontends.python.text import Text, render
 from rosvar.ros2.frontends.python.values import Dynamic, Module, Unknown, Value
 
 
@@ -207,7 +207,8 @@ def test_find_package_find_is_the_named_packages_directory() -> None:
         "b = FindPackagePrefix('x').find(package_name='z')\n"
         "c = FindPackageShare('x').describe()\n"
     )
-    assert render(names["a"]) == "$(find-pkg-share y)"
-    assert render(names["b"]) == "$(find-pkg-prefix z)"
+    a, b = names["a"], names["b"]
+    assert isinstance(a, Text) and render(a) == "$(find-pkg-share y)"
+    assert isinstance(b, Text) and render(b) == "$(find-pkg-prefix z)"
     assert isinstance(names["c"], Unknown)
     assert [d.message for d in diagnostics] == ["method describe() of a Text is not followed"]
