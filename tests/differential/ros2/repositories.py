@@ -53,7 +53,7 @@ from oracle.ros2_client import (
 )
 
 from ..harness import message_pattern
-from .samples import Config, read, sample
+from .samples import Config, Origin, read, sample
 
 DATA = Path(__file__).resolve().parents[2] / "data" / "ros2"
 SOURCES = Path(rosvar.__file__).resolve().parents[1]
@@ -133,11 +133,13 @@ REPOSITORIES = {
 
 @dataclass(frozen=True)
 class Case:
-    """One configuration of one launch file: ``config`` holds the ``name:=value`` pairs."""
+    """One configuration of one launch file: ``config`` holds the ``name:=value`` pairs,
+    ``origins`` the sampler's rules that named it."""
 
     repository: str
     file: Path
     config: tuple[tuple[str, str], ...]
+    origins: frozenset[Origin] = field(default=frozenset(), compare=False)
 
     @property
     def relative(self) -> str:
@@ -170,7 +172,9 @@ def cases(
         if configs_limit is not None and len(configs) > configs_limit:
             rest = random.Random(f"{SEED}:{path.relative_to(DATA).as_posix()}")
             configs = [configs[0], *rest.sample(configs[1:], configs_limit - 1)]
-        found.extend(Case(repository.name, path, tuple(c.items())) for c in configs)
+        found.extend(
+            Case(repository.name, path, tuple(c.config.items()), c.origins) for c in configs
+        )
     return found
 
 
@@ -468,7 +472,18 @@ class Report:
         loaded = self.loaded()
         share = f"{100 * self.agreeing() / loaded:.1f} %" if loaded else "-"
         lines.append(f"all: {self.agreeing()} of {loaded} agree ({share})")
-        return lines
+        return [*lines, self.origins()]
+
+    def origins(self) -> str:
+        """How many configurations each rule of the sampler named, loaded and agreeing (a
+        configuration two rules name counts for both)."""
+        parts = []
+        for origin in Origin:
+            named = [o for o in self.outcomes if origin in o.case.origins]
+            loaded = [o for o in named if o.status is not Status.ORACLE_FAILS]
+            agree = sum(o.status is Status.AGREE for o in loaded)
+            parts.append(f"{origin} {len(named)} ({len(loaded)} loaded, {agree} agree)")
+        return "sampled: " + "; ".join(parts)
 
     def render(self, examples: int = 1) -> str:
         lines = self.summary()
@@ -486,6 +501,7 @@ class Report:
                 "repository": o.case.repository,
                 "file": o.case.relative,
                 "arguments": o.case.arguments,
+                "origins": sorted(o.case.origins),
                 "status": str(o.status),
                 "causes": [{"category": c.category, "detail": c.detail} for c in o.causes],
             }
