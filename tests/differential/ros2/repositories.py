@@ -318,8 +318,11 @@ def _pattern(text: str) -> str:
 
 def _explained(error: Mapping[str, Any], expected: Mapping[str, Any]) -> bool:
     """A rosvar error the oracle's lenient reading explains: a missing package or a file in
-    it, an include the oracle could not resolve either, a robot description's xacro (which
-    rosvar expands and the oracle, running no command, never does)."""
+    it, an include the oracle could not resolve either (named by the message, or the file
+    the error is in: a package rosvar finds where the oracle's index does not, Clearpath's
+    ``project_bringup`` inside another package, whose files the oracle never reads), a
+    robot description's xacro (which rosvar expands and the oracle, running no command,
+    never does)."""
     message = str(error.get("message", ""))
     if error.get("code") == "launch-stops" and message.startswith("xacro fails"):
         return True  # the oracle runs no command: a robot description's xacro is rosvar's
@@ -327,7 +330,16 @@ def _explained(error: Mapping[str, Any], expected: Mapping[str, Any]) -> bool:
     if any(f"'{name}'" in message or f"/{name}/" in message for name in names):
         return True  # the package, or a file of it (rosvar's stand-in is empty)
     includes = [str(i.get("location", i)) for i in expected.get("unresolved_includes") or []]
-    return any(os.path.basename(path) in message for path in includes if path)
+    if any(os.path.basename(path) in message for path in includes if path):
+        return True
+    file = str((error.get("location") or {}).get("file") or "")
+    unread = [
+        path[path.index(f"/{name}/") :]
+        for path in includes
+        for name in names
+        if f"/{name}/" in path
+    ]
+    return bool(file) and any(file.endswith(tail) for tail in unread)
 
 
 def _label(node: Mapping[str, Any]) -> str:
