@@ -26,6 +26,13 @@ def run(text: str) -> tuple[dict[str, Value], list[Diagnostic]]:
     return {name: reader.settled(value) for name, value in scope.names.items()}, sink.items
 
 
+def followed(text: str) -> dict[str, Value]:
+    """The names after reading ``text``, which must be followed without a diagnostic."""
+    names, diagnostics = run(text)
+    assert not diagnostics
+    return names
+
+
 def branches(value: Value) -> tuple[Value, Value]:
     assert isinstance(value, Conditional), value
     return value.then, value.otherwise
@@ -47,8 +54,7 @@ def branches(value: Value) -> tuple[Value, Value]:
 def test_a_list_changed_in_one_branch_is_the_choice_of_both(
     statements: str, then: list[int], otherwise: list[int]
 ) -> None:
-    names, diagnostics = run(FLAG + f"a = [1, 2]\nb = a\nif flag:\n    {statements}\n")
-    assert not diagnostics
+    names = followed(FLAG + f"a = [1, 2]\nb = a\nif flag:\n    {statements}\n")
     assert branches(names["a"]) == (then, otherwise)
     assert names["b"] is names["a"]  # aliasing kept
 
@@ -67,8 +73,7 @@ def test_dicts_and_attributes_changed_in_branches() -> None:
         "if flag:\n    d.update({'burst': True})\n    o.mode = 'b'\n    same['k'] = 2\n"
         "else:\n    d.setdefault('slow', 1)\n    del d['rate']\n"
     )
-    names, diagnostics = run(text)
-    assert not diagnostics
+    names = followed(text)
     assert branches(names["d"]) == ({"rate": 1, "burst": True}, {"slow": 1})
     assert isinstance(names["same"], dict) and isinstance(names["same"]["k"], Dynamic)
     assert isinstance(names["o"].attributes["mode"], Dynamic)  # type: ignore[union-attr]
@@ -80,8 +85,7 @@ def test_nested_ifs_and_a_conditional_expression_each_keep_their_copy() -> None:
         "if flag:\n    a.append(2)\n    if other:\n        a.append(3)\n"
         "a.append(4) if other else a.append(5)\n"
     )
-    names, diagnostics = run(text)
-    assert not diagnostics
+    names = followed(text)
 
     def leaves(value: Value) -> list[Value]:
         if isinstance(value, Conditional):
@@ -94,10 +98,7 @@ def test_nested_ifs_and_a_conditional_expression_each_keep_their_copy() -> None:
 
 
 def test_a_launch_time_value_removed_is_chosen_item_by_item() -> None:
-    names, diagnostics = run(
-        "import os\nv = os.environ['V']\na = ['x', 'y']\na.remove(v)\nn = len(a)\n"
-    )
-    assert not diagnostics
+    names = followed("import os\nv = os.environ['V']\na = ['x', 'y']\na.remove(v)\nn = len(a)\n")
     without_x, rest = branches(names["a"])
     without_y, missing = branches(rest)
     assert (without_x, without_y) == (["y"], ["x"])
@@ -111,8 +112,7 @@ def test_operations_on_a_chosen_list_are_made_in_each_branch() -> None:
         "joined = ' '.join(a)\nlonger = a + ['z']\nfirst = a[-1]\nhas = 'y' in a\n"
         "upper = [s.upper() for s in a]\nlooped = []\nfor s in a:\n    looped.append(s * 2)\n"
     )
-    names, diagnostics = run(text)
-    assert not diagnostics
+    names = followed(text)
     for name in ("joined", "first", "has"):
         assert isinstance(names[name], Dynamic), name
     assert branches(names["longer"]) == (["x", "y", "z"], ["x", "z"])
