@@ -19,7 +19,7 @@ from rosvar import bounded_yaml
 from rosvar.diagnostics import Diagnostic, Severity, leaves_unknown
 from rosvar.files import Confinement, read_file
 from rosvar.interpreter import resolution
-from rosvar.interpreter.model import LaunchModel, NodeDecl, NodeField, Raw
+from rosvar.interpreter.model import LaunchModel, NodeDecl, NodeField, NodeParameter, Raw
 from rosvar.interpreter.resolution import Resolution, ResolutionError, ResolvedNode, Restriction
 from rosvar.ros2.api.event_handlers import EVENT_HANDLERS
 from rosvar.ros2.conventions import command_line
@@ -258,6 +258,26 @@ def parameter_file(path: str, confinement: Confinement) -> list[tuple[str, dict[
     except (OSError, UnicodeDecodeError) as error:
         raise ValueError(f"parameter file {path} is not readable: {error}") from None
     return parameter_entries(text, path)
+
+
+def given_entries(
+    parameter: NodeParameter, confinement: Confinement
+) -> list[tuple[str, dict[str, object]]] | None:
+    """The entries of a node's parameter file whose text is known (read inside the
+    workspace's confinement; ``allow_substs``: its substituted text); None where it is not
+    (a path or text known only per configuration, a file refused or unreadable: the model's
+    diagnostics say so)."""
+    path = parameter.file
+    if path is None or not isinstance(path, str):
+        return None
+    try:
+        if parameter.content is None:
+            return parameter_file(path, confinement)
+        if isinstance(parameter.content, str):
+            return parameter_entries(parameter.content, path)
+    except ValueError:
+        pass
+    return None
 
 
 def parameter_entries(text: str, path: str) -> list[tuple[str, dict[str, object]]]:
