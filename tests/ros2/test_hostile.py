@@ -378,11 +378,14 @@ recurse."""
     [
         f'<node pkg="pkg" exec="n"><param name="p" value="{DEEP}" type="list_of_int"/></node>',
         f'<node pkg="pkg" exec="n" name="$(not {DEEP})"/>',
+        '<node pkg="pkg" exec="n" name="' + "$(var " * 3000 + "x" + ")" * 3000 + '"/>',
+        '<executable cmd="' + "$(not " * 3000 + "true" + ")" * 3000 + '"/>',
     ],
 )
-def test_deep_typed_texts_are_read_within_the_yaml_limits(tmp_path: Path, node: str) -> None:
-    """Every YAML reading of a value goes through the bounded loader, typed texts too: a
-    RecursionError traceback in every command before."""
+def test_deep_texts_are_read_within_the_limits(tmp_path: Path, node: str) -> None:
+    """Every YAML reading of a value goes through the bounded loader, typed texts too, and
+    substitutions nest 100 levels at most: a RecursionError traceback in every command
+    before."""
     ws = workspace(tmp_path, {"launch/deep.launch.xml": f"<launch>{node}</launch>"})
     _done, document = resolve(ws, "launch/deep.launch.xml")
     assert not document["ok"]

@@ -22,7 +22,7 @@ from rosvar.files import FileCode, FileRefused, read_file
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
-from rosvar.interpreter.substitution_args import ValueBudget, too_complex
+from rosvar.interpreter.substitution_args import MAX_TERM_DEPTH, ValueBudget, too_complex
 from rosvar.logic.choice import Choice, Fail, combine_bind, ite
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, TermError, concat, register
@@ -60,10 +60,15 @@ class Call:
 Template = tuple[str | Call, ...]
 
 
+class SubstitutionTooDeep(SubstitutionSyntaxError):
+    """Substitutions nested deeper than any value may be (the parser recurses)."""
+
+
 class _Parser:
     def __init__(self, text: str) -> None:
         self.text = text
         self.at = 0
+        self.depth = 0
 
     def template(self, stop: str = "") -> Template:
         parts: list[str | Call] = []
@@ -89,6 +94,17 @@ class _Parser:
         return tuple(parts)
 
     def call(self) -> Call:
+        if self.depth >= MAX_TERM_DEPTH:
+            raise SubstitutionTooDeep(
+                f"substitutions nested more than {MAX_TERM_DEPTH} levels deep are not read"
+            )
+        self.depth += 1
+        try:
+            return self._call()
+        finally:
+            self.depth -= 1
+
+    def _call(self) -> Call:
         self.at += 2
         start = self.at
         text = self.text
@@ -128,6 +144,13 @@ class _Parser:
 def parse(text: str) -> Template:
     """``text`` as a template; raises :class:`SubstitutionSyntaxError`."""
     return _Parser(text).template()
+
+
+def _invalid(error: SubstitutionSyntaxError) -> Fail:
+    """A text outside the grammar fails as launch's parser does; one over the nesting limit
+    is rosvar's limit on hostile input."""
+    code = "nesting-too-deep" if isinstance(error, SubstitutionTooDeep) else "substitution-invalid"
+    return Fail(str(error), code)
 
 
 def command_line(text: str) -> list[Template]:
@@ -277,7 +300,7 @@ class Ros2Substituter:
         try:
             template = parse(text)
         except SubstitutionSyntaxError as error:
-            return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+            return Choice.const(self.space, _invalid(error))
         reads = _reads(text)
         if reads is None:
             return self.template(template, context, text)
@@ -319,7 +342,7 @@ class Ros2Substituter:
         try:
             arguments = command_line(text)
         except SubstitutionSyntaxError as error:
-            return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+            return Choice.const(self.space, _invalid(error))
         if not arguments:
             return Choice.const(self.space, "")
         words = [self.template(a, context, text) for a in arguments]
