@@ -37,6 +37,7 @@ from rosvar.ros2.frontends.python.values import (
     Condition,
     Conditional,
     Dynamic,
+    FilePath,
     Module,
     ParameterFile,
     ParameterValue,
@@ -96,6 +97,8 @@ class Call:
             return Text.of(unknown(value.what))
         if isinstance(value, Source):
             return value.path
+        if isinstance(value, FilePath):
+            return path_text(value)
         if isinstance(value, Conditional):  # the text of the branch taken
             then, otherwise = (self.text(value.then), self.text(value.otherwise))
             chosen = launch_time.chosen(
@@ -107,6 +110,13 @@ class Call:
         if value is None or isinstance(value, bool | int | float):
             return Text.of(typed_text(value))
         return Text.of(unknown(self.not_followed(f"{type(value).__name__} used as text").what))
+
+
+def path_text(path: FilePath) -> Text:
+    """The text of a ``pathlib`` path."""
+    if path.head is None:
+        return Text.of(path.tail or ".")
+    return Text.of(path.head, "/", path.tail) if path.tail else path.head
 
 
 Builder = Callable[[Call], Value]
@@ -178,11 +188,23 @@ def _substitution(name: str, signature: Signature) -> Builder:
     return build
 
 
+def _performed(builder: Builder) -> Builder:
+    """A function giving the string a substitution gives (``get_package_share_directory``):
+    a ``str`` at launch time, not a substitution object (``isinstance(p, str)`` holds)."""
+
+    def build(call: Call) -> Value:
+        made = builder(call)
+        return launch_time.performed(made) if isinstance(made, Text) else made
+
+    return build
+
+
 for _substitution_entry in SUBSTITUTIONS:
     for _signature in _substitution_entry.signatures:
-        CALLS[python_name(_signature.qualified)] = _substitution(
-            _substitution_entry.names[0], _signature
-        )
+        _builder = _substitution(_substitution_entry.names[0], _signature)
+        if _signature.function:
+            _builder = _performed(_builder)
+        CALLS[python_name(_signature.qualified)] = _builder
 
 
 def _fold(operator: str, empty: str) -> Builder:
@@ -294,6 +316,18 @@ def substitution_method(receiver: Text, name: str) -> Builder | None:
         return None
     method = SUBSTITUTION_METHODS.get((substitution.name, name))
     return None if method is None else functools.partial(method, substitution)
+
+
+@_register("launch", "normalize_to_list_of_substitutions")
+def _normalized(call: Call) -> Value:
+    """launch's ``normalize_to_list_of_substitutions(subs)``: the text they give."""
+    return call.text(call.arg(0, "subs"))
+
+
+@_register("launch", "perform_substitutions")
+def _performed_substitutions(call: Call) -> Value:
+    """launch's ``perform_substitutions(context, subs)``: their string at launch time."""
+    return launch_time.performed(call.text(call.arg(1, "subs")))
 
 
 @_register("launch_ros", "ParameterValue")

@@ -28,7 +28,7 @@ from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.files import read_file
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.registry import python_name
-from rosvar.ros2.frontends.python import launch_time, reads
+from rosvar.ros2.frontends.python import launch_time, paths, patterns, reads, xacro_calls
 from rosvar.ros2.frontends.python.actions import add_actions
 from rosvar.ros2.frontends.python.calls import (
     CALLS,
@@ -36,6 +36,7 @@ from rosvar.ros2.frontends.python.calls import (
     REASONS,
     Call,
     join_path,
+    path_text,
     substitution_method,
 )
 from rosvar.ros2.frontends.python.launch_time import OPERATORS, performed
@@ -49,19 +50,23 @@ from rosvar.ros2.frontends.python.values import (
     Description,
     Dynamic,
     FileHandle,
+    FilePath,
     Function,
     Instance,
     Key,
     LaunchContext,
     LaunchYaml,
+    Match,
     Method,
     Module,
     ModuleScope,
+    Pattern,
     Scope,
     SourceFile,
     Super,
     Unknown,
     Value,
+    XacroDocument,
 )
 
 MAX_STEPS = 500_000
@@ -80,6 +85,8 @@ MAX_IMPORT_DEPTH = 20
 MODULE_NAME = "__launch__"
 """``__name__`` while the file is read: launch imports it as a module, not as ``__main__``."""
 DESCRIPTION = "composable_node"
+REGISTERING = frozenset({("launch", "expose_substitution"), ("launch", "expose_action")})
+"""Class decorators of launch that register the class with the frontends and return it."""
 """The tag of a composable node description, which carries its own condition."""
 
 
@@ -365,6 +372,8 @@ class Interpreter:
         elif isinstance(target, ast.Subscript):
             container = self.expr(target.value, scope)
             index = self.expr(target.slice, scope)
+            if isinstance(container, dict):
+                index = _dict_key(index)
             if isinstance(container, dict) and isinstance(index, Key):
                 if self.guards:
                     if index not in container:
@@ -584,6 +593,11 @@ class Interpreter:
 
     def _class_def(self, node: ast.ClassDef, scope: Scope) -> None:
         decorators = [self.expr(_called(d), scope) for d in node.decorator_list]
+        decorators = [
+            d
+            for d in decorators
+            if not (isinstance(d, Module) and python_name(d.qualified) in REGISTERING)
+        ]
         if node.keywords or any(d != Module("dataclasses.dataclass") for d in decorators):
             scope.names[node.name] = self.not_followed(f"decorated class {node.name}", node)
             return
@@ -651,6 +665,10 @@ class Interpreter:
         directory, a package's share directory, each with a literal tail)."""
         if isinstance(value, Dynamic):
             value = value.text
+        if isinstance(value, FilePath):
+            value = path_text(value)
+        if isinstance(value, Text) and value.literal() is not None:
+            value = value.literal()
         if isinstance(value, str):
             return value if os.path.isabs(value) else None
         if not isinstance(value, Text) or not value.parts:
@@ -766,6 +784,8 @@ class Interpreter:
             return launch_time.stringified(value)
         if isinstance(value, Text | Unknown):
             return value
+        if isinstance(value, FilePath):
+            return paths.as_string(value)
         return self.not_followed(f"str() of a {type(value).__name__}", node)
 
     def concatenate(self, parts: list[Value], node: ast.AST) -> Value:
@@ -795,6 +815,10 @@ class Interpreter:
             return self.launch_time_operation(OPERATORS.get(type(op)), left, right, node)
         if isinstance(op, ast.Add) and (isinstance(left, Text) or isinstance(right, Text)):
             return self.concatenate([left, right], node)
+        if isinstance(op, ast.Div) and (isinstance(left, FilePath) or isinstance(right, FilePath)):
+            parts = (paths.of_value(left), paths.of_value(right))
+            if parts[0] is not None and parts[1] is not None:
+                return paths.join(parts[0], parts[1])  # pathlib's '/'
         if isinstance(op, ast.Div) and isinstance(left, Text) and isinstance(right, str | Text):
             return join_path(left, Text.of(right))  # PathSubstitution(...) / 'config'
 
@@ -960,7 +984,7 @@ class Interpreter:
                 else:
                     self.not_followed("'**' of a value that is not a known dict", value_node)
                 continue
-            name = self.expr(key_node, scope)
+            name = _dict_key(self.expr(key_node, scope))
             if isinstance(name, Key):
                 result[name] = value
             else:
@@ -984,6 +1008,8 @@ class Interpreter:
                 return Dynamic(Text.of("(", container.source, f")[{written}]"), container.kind)
             return self.not_followed("a slice of a value not known statically", node)
         index = self.expr(node.slice, scope)
+        if isinstance(container, Module) and container.qualified.startswith("typing."):
+            return container  # a type annotation (Union[str, int]): nothing launched
         if container == Module("os.environ") and isinstance(index, str | Text):
             return performed(Text.of(Sub("env", (Text.of(index),))))
         if container == Method(LaunchContext(), "launch_configurations"):
@@ -1016,6 +1042,8 @@ class Interpreter:
             return Module(f"{owner.qualified}.{node.attr}")
         if isinstance(owner, Unknown):
             return owner
+        if isinstance(owner, FilePath) and node.attr not in paths.METHODS:
+            return paths.attribute(self, owner, node.attr, node)
         if isinstance(owner, ModuleScope):
             if node.attr in owner.scope.names:
                 return owner.scope.names[node.attr]
@@ -1227,6 +1255,14 @@ class Interpreter:
             return launch_time.evaluated(receiver.attribute, receiver.text)
         if isinstance(receiver, FileHandle) and name == "read" and not args:
             return reads.text(self, receiver, node)
+        if isinstance(receiver, FilePath) and name in paths.METHODS:
+            return paths.METHODS[name](self, receiver, args, node)
+        if isinstance(receiver, Pattern) and name in patterns.METHODS:
+            return patterns.METHODS[name](self, receiver, args, node)
+        if isinstance(receiver, Match):
+            return patterns.match_method(self, receiver, name, args, node)
+        if isinstance(receiver, XacroDocument) and name in ("toxml", "toprettyxml"):
+            return xacro_calls.document_text(receiver)
         if isinstance(receiver, Description) and name in ("add_action", "add_entity") and args:
             call = Call(f"LaunchDescription.{name}", args, kwargs, self.location(node), self.sink)
             add_actions(call, receiver.root, [self.guarded_item(args[0], node)])
@@ -1385,6 +1421,14 @@ class Interpreter:
                 return self.not_followed(f"str.{name}() that fails ({error})", node)
             return result
         return self.not_followed(f"str.{name}() of values not known statically", node)
+
+
+def _dict_key(value: Value) -> Value:
+    """A launch-time string as a dict's key is the text of its substitutions (moveit's
+    ``Xacro.perform`` keys its mappings by ``perform_substitutions(...)``)."""
+    if isinstance(value, Dynamic) and value.kind is str and value.text is not None:
+        return value.text
+    return value
 
 
 def _called(decorator: ast.expr) -> ast.expr:
@@ -1617,7 +1661,94 @@ def _copy(deep: bool) -> Builtin:
 def _print(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
+    """``print`` and ``logging``'s messages: nothing the launch is made of."""
     return None
+
+
+_TYPES: dict[str, type] = {
+    "str": str,
+    "int": int,
+    "float": float,
+    "bool": bool,
+    "dict": dict,
+    "list": list,
+    "tuple": tuple,
+}
+_PATH_TYPES = frozenset({"pathlib.Path", "pathlib.PurePath", "pathlib.PosixPath"})
+
+
+def _is_instance(value: Value, kind: Value) -> bool | None:
+    """``isinstance(value, kind)`` for one type; ``None`` where not known."""
+    if isinstance(kind, Class):
+        if not isinstance(value, Instance):
+            return False if isinstance(value, _SCALARS) else None
+        return kind is value.cls or _derives(value.cls, kind)
+    if not isinstance(kind, Module):
+        return None
+    if kind.qualified in _PATH_TYPES:
+        return isinstance(value, FilePath)
+    python_type = _TYPES.get(kind.qualified)
+    if python_type is None:
+        return None
+    if isinstance(value, (*_SCALARS, list, tuple, dict)):
+        return isinstance(value, python_type)
+    if isinstance(value, Dynamic):
+        return None if value.kind is None else issubclass(value.kind, python_type)
+    if isinstance(value, Text):  # a substitution object, or the string of a literal
+        return python_type is str if value.literal() is not None else False
+    if isinstance(value, Unknown | Module | Instance):
+        return None
+    return False  # a launch object or a path
+
+
+def _derives(cls: Class, base: Class) -> bool:
+    return any(b is base or (isinstance(b, Class) and _derives(b, base)) for b in cls.bases)
+
+
+def _isinstance(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
+    """``isinstance(value, T)`` (``T`` a builtin type, a path, a class of the file or its
+    modules, or a tuple of them); a text of substitutions is a substitution object."""
+    if len(args) != 2 or kwargs:
+        return interpreter.not_followed("isinstance() of other than two arguments", node)
+    kinds = args[1] if isinstance(args[1], tuple) else (args[1],)
+    answers = [_is_instance(args[0], kind) for kind in kinds]
+    if True in answers:
+        return True
+    if None in answers:
+        return interpreter.not_followed("isinstance() of a value or type not known", node)
+    return False
+
+
+def _quantifier(everything: bool) -> Builtin:
+    def quantify(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        """``all(items)``/``any(items)``, stopping where Python stops."""
+        items = interpreter.iterate(args[0], node) if len(args) == 1 else None
+        if items is None:
+            return Unknown("all() or any() of unknown items")
+        for item in items:
+            test = truth(item)
+            if test is None:
+                return interpreter.not_followed("all() or any() of values not known", node)
+            if test is not everything:
+                return test
+        return everything
+
+    return quantify
+
+
+def _path_function(function: paths.PathMethod) -> Builtin:
+    def call(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        if len(args) != 1:
+            return interpreter.not_followed("os.path of other than one path", node)
+        return function(interpreter, args[0], [], node)
+
+    return call
 
 
 def _configuration(
@@ -1690,6 +1821,19 @@ BUILTINS: dict[str, Builtin] = {
     "copy.deepcopy": _copy(deep=True),
     "sys.path.append": _sys_path,
     "sys.path.insert": _sys_path,
+    "isinstance": _isinstance,
+    "all": _quantifier(True),
+    "any": _quantifier(False),
+    "pathlib.Path": paths.construct,
+    "pathlib.PurePath": paths.construct,
+    "pathlib.PosixPath": paths.construct,
+    "pathlib.Path.home": paths.home,
+    "os.path.expanduser": paths.expanduser,
+    **{name: _path_function(function) for name, function in paths.FUNCTIONS.items()},
+    "re.compile": patterns.compile_pattern,
+    **{f"re.{name}": patterns.module_function(name) for name in patterns.METHODS},
+    "xacro.process_file": xacro_calls.process_file,
+    **{f"logging.{level}": _print for level in ("debug", "info", "warning", "error")},
 }
 """Python's builtins the reading follows (a call of any other is not followed)."""
 
