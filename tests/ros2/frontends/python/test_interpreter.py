@@ -212,3 +212,59 @@ def test_find_package_find_is_the_named_packages_directory() -> None:
     assert isinstance(b, Text) and render(b) == "$(find-pkg-prefix z)"
     assert isinstance(names["c"], Unknown)
     assert [d.message for d in diagnostics] == ["method describe() of a Text is not followed"]
+
+
+RAISING = """
+class NotFound(KeyError):
+    pass
+
+def load(name):
+    if name == 'missing':
+        raise NotFound(name)
+    return name
+
+def first(*names):
+    for name in names:
+        try:
+            return load(name)
+        except (ValueError, NotFound) as error:
+            last = error
+        finally:
+            pass
+    return None
+
+def builtin():
+    try:
+        raise KeyError('k')
+    except LookupError:
+        return 'caught'
+
+def passes():
+    try:
+        load('missing')
+    except ValueError:
+        return 'wrong'
+
+try:
+    v = (first('missing', 'found'), first('missing'), builtin())
+except Exception:
+    v = 'never'
+"""
+
+
+def test_raise_is_caught_by_the_handler_of_its_class_or_a_base() -> None:
+    names, diagnostics = run(RAISING)
+    scope: dict[str, object] = {}
+    exec(RAISING, scope)  # the oracle: Python itself, on a file that launches nothing
+    assert names["v"] == scope["v"] == ("found", None, "caught")
+    assert diagnostics == []
+
+
+def test_an_exception_nothing_catches_fails_the_file_at_its_raise() -> None:
+    text = RAISING + "\ndef generate_launch_description():\n    return passes()\n"
+    sink = DiagnosticSink()
+    reader = Interpreter("t.launch.py", text, sink)
+    assert interpreter.entry_point(reader, ast.parse(text)) is None
+    assert [(d.code, d.message, d.location.line) for d in sink.items] == [
+        ("python-launch-raises", "the file raises NotFound, which nothing catches", 7)
+    ]

@@ -104,6 +104,16 @@ class _Continue(Exception):
     pass
 
 
+class _Raise(Exception):
+    """An exception the file raises: ``value`` (an object of its class, or a builtin
+    exception's name as a :class:`Module`), raised at ``location``."""
+
+    def __init__(self, value: Value, location: Location) -> None:
+        super().__init__()
+        self.value = value
+        self.location = location
+
+
 class OutOfBudget(Exception):
     """The file needs more than :data:`MAX_STEPS` steps."""
 
@@ -263,6 +273,7 @@ class Interpreter:
             ast.ImportFrom: self._import_from,
             ast.Try: self._try,
             ast.With: self._with,
+            ast.Raise: self._raise,
             ast.Break: self._break,
             ast.Continue: self._continue,
             ast.Pass: lambda node, scope: None,
@@ -725,11 +736,52 @@ class Interpreter:
             self.loading -= 1
         return module
 
+    def _raise(self, node: ast.Raise, scope: Scope) -> None:
+        """``raise E(...)``: the exception, caught by an ``except`` of its class or a base."""
+        if self.guards:
+            self.not_followed("a 'raise' under an 'if' on a launch-time value", node)
+            return
+        exception: Value = None
+        if node.exc is not None:
+            called = node.exc.func if isinstance(node.exc, ast.Call) else node.exc
+            kind = self.expr(called, scope)
+            exception = kind if _builtin_exception(kind) else self.expr(node.exc, scope)
+        raise _Raise(exception, self.location(node))
+
     def _try(self, node: ast.Try, scope: Scope) -> None:
-        """The body as if it raised nothing (nothing read here raises)."""
-        self.block(node.body, scope)
-        self.block(node.orelse, scope)
-        self.block(node.finalbody, scope)
+        """The body; where it raises, the first handler catching the exception, as Python."""
+        try:
+            try:
+                self.block(node.body, scope)
+            except _Raise as raised:
+                handler = self._handler(node.handlers, raised.value, scope)
+                if handler is None:
+                    raise
+                if handler.name is not None:
+                    scope.names[handler.name] = raised.value
+                self.block(handler.body, scope)
+            else:
+                self.block(node.orelse, scope)
+        finally:
+            self.block(node.finalbody, scope)
+
+    def _handler(
+        self, handlers: list[ast.ExceptHandler], exception: Value, scope: Scope
+    ) -> ast.ExceptHandler | None:
+        for handler in handlers:
+            if handler.type is None:
+                return handler
+            kinds = self.expr(handler.type, scope)
+            answers = [
+                _catches(kind, exception)
+                for kind in (kinds if isinstance(kinds, tuple) else (kinds,))
+            ]
+            if True in answers:
+                return handler
+            if None in answers:
+                self.not_followed("an 'except' of an exception not known statically", handler)
+                return None
+        return None
 
     def _with(self, node: ast.With, scope: Scope) -> None:
         for item in node.items:
@@ -1423,6 +1475,31 @@ class Interpreter:
         return self.not_followed(f"str.{name}() of values not known statically", node)
 
 
+def _builtin_exception(kind: Value) -> bool:
+    """Whether ``kind`` is one of Python's exception classes (``KeyError``)."""
+    if not isinstance(kind, Module):
+        return False
+    found = getattr(builtins, kind.qualified, None)
+    return isinstance(found, type) and issubclass(found, BaseException)
+
+
+def _catches(kind: Value, exception: Value) -> bool | None:
+    """Whether ``except kind`` catches ``exception``; ``None`` where not known."""
+    if isinstance(exception, Instance):
+        if isinstance(kind, Class):
+            return kind is exception.cls or _derives(exception.cls, kind)
+        names = [Module(name) for name in _launch_bases(exception.cls)]
+        return any(_catches(kind, name) for name in names if _builtin_exception(name))
+    if _builtin_exception(exception) and isinstance(exception, Module):
+        if isinstance(kind, Class):
+            return False
+        if _builtin_exception(kind) and isinstance(kind, Module):
+            return issubclass(
+                getattr(builtins, exception.qualified), getattr(builtins, kind.qualified)
+            )
+    return None
+
+
 def _dict_key(value: Value) -> Value:
     """A launch-time string as a dict's key is the text of its substitutions (moveit's
     ``Xacro.perform`` keys its mappings by ``perform_substitutions(...)``)."""
@@ -1840,6 +1917,18 @@ BUILTINS: dict[str, Builtin] = {
 
 def entry_point(interpreter: Interpreter, tree: ast.Module) -> Entity | None:
     """The ``launch`` element ``generate_launch_description()`` returns, or ``None``."""
+    try:
+        return _entry_point(interpreter, tree)
+    except _Raise as raised:  # as launch, which fails to load the file
+        what = raised.value.cls.name if isinstance(raised.value, Instance) else None
+        if isinstance(raised.value, Module):
+            what = raised.value.qualified
+        message = f"the file raises {what or 'an exception'}, which nothing catches"
+        interpreter.sink.error("python-launch-raises", message, raised.location)
+        return None
+
+
+def _entry_point(interpreter: Interpreter, tree: ast.Module) -> Entity | None:
     scope = interpreter.run_module(tree)
     found, function = scope.lookup("generate_launch_description")
     where = Location(interpreter.filename, 1, 1)
