@@ -151,4 +151,26 @@ def generate_launch_description():
         },
         [{}, {"rate": "2.5"}],
     ),
+    "python-getenv-branches": (
+        {
+            "main.launch.py": """import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    nodes = [DeclareLaunchArgument('robot', default_value='r1')]
+    if os.getenv('ROSVAR_TEST_SIM', 'false') == 'true':
+        nodes.append(Node(package='pkg', executable='sim', name='sim'))
+    else:
+        robot = os.environ.get('ROSVAR_TEST_ROBOT', 'r0')
+        nodes.append(Node(package='pkg', executable='real', name=f'real_{robot}',
+                          parameters=[{'robot': LaunchConfiguration('robot')}]))
+    return LaunchDescription(nodes)
+""",
+        },
+        [{}, {"robot": "r2"}],
+    ),
 }

@@ -25,8 +25,8 @@ class Signature:
     variadic: bool = False
     defaults: tuple[str, ...] = ()
     function: bool = False
-    """A function returning the string the substitution gives (``ament_index_python``'s),
-    not a substitution object."""
+    """A function returning the string the substitution gives (``ament_index_python``'s,
+    ``os.getenv``), not a substitution object."""
 
 
 @dataclass(frozen=True)
@@ -56,8 +56,8 @@ expose(
 expose(
     "env",
     Signature("launch.EnvironmentVariable", ("name", "default_value"), optional=1),
-    Signature("os.getenv", ("key", "default"), optional=1),
-    Signature("os.get", ("key", "default"), optional=1),  # os.environ.get
+    Signature("os.getenv", ("key", "default"), optional=1, function=True),
+    Signature("os.get", ("key", "default"), optional=1, function=True),  # os.environ.get
 )
 expose("find-exec", Signature("launch.FindExecutable", ("name",)))
 expose("anon", Signature("launch.AnonName", ("name",)))
