@@ -173,4 +173,49 @@ def generate_launch_description():
         },
         [{}, {"robot": "r2"}],
     ),
+    "python-file-named-by-an-argument": (
+        {
+            "config/fusion.param.yaml": """/**:
+  ros__parameters:
+    topics: [/sensing/lidar/top/points, /sensing/lidar/left/points]
+    shared: {resolution: 0.5, length: [150.0, 120.0]}
+""",
+            "main.launch.py": """import yaml
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def load(context, name):
+    path = LaunchConfiguration(name).perform(context)
+    with open(path, 'r') as f:
+        return yaml.safe_load(f)['/**']['ros__parameters']
+
+
+def setup(context):
+    config = load(context, 'config_file')
+    nodes = []
+    for i in range(len(config['topics'])):
+        frame = config['topics'][i].split('/')[-2]
+        shared = dict(config['shared'])
+        shared['length'] = max(shared['length'])
+        nodes.append(Node(package='pkg', executable='grid', name='grid_' + frame,
+                          namespace=frame, parameters=[shared, {'index': i}],
+                          remappings=[('input', config['topics'][i])]))
+    return nodes
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('config_file', default_value=get_package_share_directory('pkg')
+                              + '/config/fusion.param.yaml'),
+        DeclareLaunchArgument('flag', default_value='false'),
+        OpaqueFunction(function=setup),
+    ])
+""",
+        },
+        [{}, {"flag": "true"}],
+    ),
 }

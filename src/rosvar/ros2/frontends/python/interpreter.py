@@ -39,6 +39,7 @@ from rosvar.ros2.frontends.python.calls import (
     path_text,
     substitution_method,
 )
+from rosvar.ros2.frontends.python.default_files import DefaultFiles
 from rosvar.ros2.frontends.python.launch_time import OPERATORS, performed
 from rosvar.ros2.frontends.python.modules import MAX_MODULE_BYTES, MAX_MODULES, ModulePath
 from rosvar.ros2.frontends.python.text import Sub, Text, render
@@ -258,6 +259,8 @@ class Interpreter:
         self.created: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
         """Actions made under guards, with the guards (so a branch does not guard twice)."""
         self.descriptions: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
+        self.default_files = DefaultFiles()
+        """Launch arguments' defaults, for the files a function opens by them."""
         """Composable node descriptions made conditional, by id: the description as written
         and the tests of its condition."""
         self.statements: dict[type[ast.stmt], Callable[[Any, Scope], None]] = {
@@ -1203,6 +1206,10 @@ class Interpreter:
             builder = CALLS.get(python_name(callee.qualified))
             if builder is not None:
                 made = builder(call)
+                if isinstance(made, Entity) and made.tag == "arg":
+                    self.default_files.declare(
+                        args[0] if args else kwargs.get("name"), call.arg(1, "default_value", None)
+                    )
                 return self.guarded_action(made, node) if isinstance(made, Entity) else made
             reason = REASONS.get(python_name(callee.qualified))
             return self.not_followed(reason or f"call to {callee.qualified}()", node)
@@ -1817,6 +1824,26 @@ def _quantifier(everything: bool) -> Builtin:
     return quantify
 
 
+def _ordering(name: str) -> Builtin:
+    def order(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        """``min``/``max`` (of arguments or one sequence) and ``sorted`` of constants."""
+        items = interpreter.iterate(args[0], node) if len(args) == 1 else list(args)
+        if items is None or kwargs or (not items and name != "sorted"):
+            return interpreter.not_followed(f"{name}() of values not known statically", node)
+        if not all(_constant(item) for item in items):
+            return interpreter.not_followed(f"{name}() of values not known statically", node)
+        interpreter.charge(items)
+        try:
+            result: Value = getattr(builtins, name)(items)
+        except TypeError as error:
+            return interpreter.not_followed(f"{name}() that fails ({error})", node)
+        return result
+
+    return order
+
+
 def _path_function(function: paths.PathMethod) -> Builtin:
     def call(
         interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
@@ -1858,18 +1885,38 @@ def _opaque_function(
         return call.not_followed("OpaqueFunction arguments not known statically")
     if not all(isinstance(name, str) for name in named):
         return call.not_followed("OpaqueFunction keyword names not known statically")
-    actions = interpreter.call_function(
-        function, [LaunchContext(), *given], {str(k): v for k, v in named.items()}, node
+    arguments = [LaunchContext(), *given]
+    keywords = {str(k): v for k, v in named.items()}
+    files = interpreter.default_files
+    wanted, files.wanted = files.wanted, set()
+    actions = interpreter.call_function(function, arguments, keywords, node)
+    opened, files.wanted = files.wanted, wanted | files.wanted
+    test = None if files.assuming else files.assume(opened, interpreter.path_of)
+    if test is None:
+        return actions if isinstance(actions, Unknown) else _function_group(call, actions, None)
+    try:  # again, each file its default names read (the first reading holds elsewhere)
+        assumed = interpreter.call_function(function, arguments, keywords, node)
+    finally:
+        files.assuming = {}
+    return _function_group(
+        call,
+        [
+            _function_group(call, assumed, Condition("if", test)),
+            _function_group(call, actions, Condition("unless", test)),
+        ],
+        None,
     )
-    if isinstance(actions, Unknown):
-        return actions
-    group = Call(
-        "GroupAction",
-        [],
-        {"actions": [] if actions is None else actions, "scoped": False},
-        call.location,
-        call.sink,
-    )
+
+
+def _function_group(call: Call, actions: Value, condition: Condition | None) -> Value:
+    """The unscoped group of the actions a function returns (none if unknown), under
+    ``condition`` if given."""
+    if isinstance(actions, Unknown) or actions is None:
+        actions = []
+    kwargs: dict[str, Value] = {"actions": actions, "scoped": False}
+    if condition is not None:
+        kwargs["condition"] = condition
+    group = Call("GroupAction", [], kwargs, call.location, call.sink)
     return CALLS[("launch", "GroupAction")](group)
 
 
@@ -1899,6 +1946,9 @@ BUILTINS: dict[str, Builtin] = {
     "sys.path.append": _sys_path,
     "sys.path.insert": _sys_path,
     "isinstance": _isinstance,
+    "min": _ordering("min"),
+    "max": _ordering("max"),
+    "sorted": _ordering("sorted"),
     "all": _quantifier(True),
     "any": _quantifier(False),
     "pathlib.Path": paths.construct,

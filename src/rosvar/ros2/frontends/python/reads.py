@@ -18,6 +18,7 @@ import yaml
 from rosvar.bounded_yaml import check_limits
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.files import FileRefused, read_file
+from rosvar.ros2.frontends.python.default_files import DefaultFiles
 from rosvar.ros2.frontends.python.modules import ModulePath
 from rosvar.ros2.frontends.python.text import Text
 from rosvar.ros2.frontends.python.values import (
@@ -35,6 +36,7 @@ class Interpreter(Protocol):
 
     modules: ModulePath | None
     sink: DiagnosticSink
+    default_files: DefaultFiles
 
     def path_of(self, value: Value) -> str | None: ...
 
@@ -58,7 +60,8 @@ def open_file(
     if mode not in _READ_MODES:
         return interpreter.not_followed(f"open() in mode {mode!r}", node)
     if path is None and isinstance(given, Dynamic) and given.text is not None:
-        return FileHandle(given.text)  # named at launch time
+        path = interpreter.default_files.opened(given.text, interpreter.path_of)
+        return FileHandle(given.text if path is None else path)  # named at launch time
     if path is None:
         return interpreter.not_followed("open() of a path not known statically", node)
     return FileHandle(path)
