@@ -14,6 +14,7 @@ from oracle.ros2_client import canonical_nodes, requires_ros2_oracle, resolution
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
+from .helpers_cases import CASES as HELPERS_CASES
 from .names_cases import CASES as NAMES_CASES
 
 pytestmark = requires_ros2_oracle
@@ -1150,6 +1151,7 @@ def generate_launch_description():
 
 
 CASES.update(NAMES_CASES)
+CASES.update(HELPERS_CASES)
 
 LENIENT = frozenset({"find-exec-not-searched"})
 """Fixtures the oracle loads leniently: ``$(find-exec)`` of a program not on its ``PATH``."""

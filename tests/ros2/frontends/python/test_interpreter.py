@@ -12,7 +12,7 @@ import pytest
 from rosvar.diagnostics import Diagnostic, DiagnosticSink
 from rosvar.ros2.frontends.python import interpreter
 from rosvar.ros2.frontends.python.interpreter import Interpreter, OutOfBudget
-from rosvar.ros2.frontends.python.text import render
+from rosvar.ros2.frontends.python.text import Text, render
 from rosvar.ros2.frontends.python.values import Dynamic, Module, Unknown, Value
 
 
@@ -197,3 +197,17 @@ def test_launch_time_values_are_expressions_and_what_they_cannot_be_is_reported(
         "(((float($(rosvar-python-string $(var y)))) * (2)) > (1)) and "
         "(not ($(rosvar-python-string $(var z))))"
     )
+
+
+def test_find_package_find_is_the_named_packages_directory() -> None:
+    names, diagnostics = run(
+        "from launch_ros.substitutions import FindPackagePrefix, FindPackageShare\n"
+        "a = FindPackageShare('x').find('y')\n"
+        "b = FindPackagePrefix('x').find(package_name='z')\n"
+        "c = FindPackageShare('x').describe()\n"
+    )
+    a, b = names["a"], names["b"]
+    assert isinstance(a, Text) and render(a) == "$(find-pkg-share y)"
+    assert isinstance(b, Text) and render(b) == "$(find-pkg-prefix z)"
+    assert isinstance(names["c"], Unknown)
+    assert [d.message for d in diagnostics] == ["method describe() of a Text is not followed"]

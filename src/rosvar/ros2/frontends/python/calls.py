@@ -10,6 +10,7 @@ from the launch API's registries (:mod:`rosvar.ros2.api`), with the helpers that
 
 from __future__ import annotations
 
+import functools
 import posixpath
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -268,6 +269,33 @@ for _condition_entry in CONDITIONS:
 for _source_entry in SOURCES:
     for _qualified in _source_entry.python:
         CALLS[python_name(_qualified)] = _source
+
+
+SubstitutionMethod = Callable[[Sub, Call], Value]
+
+SUBSTITUTION_METHODS: dict[tuple[str, str], SubstitutionMethod] = {}
+"""Methods of a substitution object a launch file calls, by (``$(name)``, method): the
+object is the text of that one substitution."""
+
+
+def _find(substitution: Sub, call: Call) -> Value:
+    """launch_ros's ``FindPackageShare(p).find(name)`` (``FindPackagePrefix``): the
+    directory of package ``name``, as ``get_package_share_directory(name)`` gives it (the
+    object's own package plays no part)."""
+    return Text.of(Sub(substitution.name, (call.text(call.arg(0, "package_name")),)))
+
+
+for _found in ("find-pkg-share", "find-pkg-prefix"):
+    SUBSTITUTION_METHODS[_found, "find"] = _find
+
+
+def substitution_method(receiver: Text, name: str) -> Builder | None:
+    """The method ``name`` of the substitution object ``receiver`` is, if it is one."""
+    substitution = receiver.parts[0] if len(receiver.parts) == 1 else None
+    if not isinstance(substitution, Sub):
+        return None
+    method = SUBSTITUTION_METHODS.get((substitution.name, name))
+    return None if method is None else functools.partial(method, substitution)
 
 
 @_register("launch_ros", "ParameterValue")

@@ -38,6 +38,7 @@ from rosvar.ros2.frontends.python.calls import (
     REASONS,
     Call,
     join_path,
+    substitution_method,
 )
 from rosvar.ros2.frontends.python.launch_time import OPERATORS, performed
 from rosvar.ros2.frontends.python.modules import MAX_MODULE_BYTES, MAX_MODULES, ModulePath
@@ -1571,6 +1572,8 @@ class Interpreter:
             self.call_function(init, [instance, *args], kwargs, node)
         elif cls.fields is not None:
             self._data_init(cls, cls.fields, instance, args, kwargs, node)
+        else:
+            instance.made = self._base_init(cls, args, kwargs, node)
         bases = _launch_bases(cls)
         call = Call(cls.name, [], {}, self.location(node), self.sink)
         found, perform = _class_lookup(cls, "perform")
@@ -1586,7 +1589,23 @@ class Interpreter:
             return _group(
                 [] if actions is None else _actions(actions) or [], None, call.location, self.sink
             )
+        if instance.made is not None:  # an action or substitution of launch, as its base
+            return instance.made
         return instance
+
+    def _base_init(
+        self, cls: Class, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        """What the constructor of the launch class ``cls`` derives from makes of ``args``
+        (its ``super().__init__(...)``, or the class's own call without an ``__init__``):
+        a subclass of ``DeclareLaunchArgument`` declares the argument, of ``Node`` is that
+        node; ``None`` where the base is no launch action or substitution."""
+        for base in _launch_bases(cls):
+            builder = CALLS.get(python_name(base))
+            if builder is not None:
+                made = builder(Call(cls.name, args, kwargs, self.location(node), self.sink))
+                return self.guarded_action(made, node) if isinstance(made, Entity) else made
+        return None
 
     def call_method(
         self, method: Method, args: list[Value], kwargs: dict[str, Value], node: ast.AST
@@ -1617,6 +1636,10 @@ class Interpreter:
             return self._dict_method(receiver, name, args, kwargs, node)
         if isinstance(receiver, Text) and name == "perform":
             return performed(receiver)  # the value at launch time, which the text stands for
+        method_of = substitution_method(receiver, name) if isinstance(receiver, Text) else None
+        if method_of is not None:
+            call = Call(name, args, kwargs, self.location(node), self.sink)
+            return method_of(call)
         if isinstance(receiver, LaunchContext) and name == "perform_substitution" and args:
             return performed(Call(name, args, kwargs, self.location(node), self.sink).text(args[0]))
         if receiver == Method(LaunchContext(), "launch_configurations") and name == "get" and args:
@@ -1675,7 +1698,10 @@ class Interpreter:
         if isinstance(function, Function):
             return self.call_function(function, [*bound, *args], kwargs, node)
         if isinstance(receiver, Super) and name == "__init__":
-            return None  # a launch base class's constructor: nothing the reading needs
+            made = self._base_init(receiver.owner, args, kwargs, node)
+            if isinstance(receiver.instance, Instance) and made is not None:
+                receiver.instance.made = made
+            return None
         if found:
             return self.invoke(function, args, kwargs, node)
         return self.not_followed(f"method {name}() of {type(receiver).__name__.lower()}", node)

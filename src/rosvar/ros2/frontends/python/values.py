@@ -167,6 +167,9 @@ class Instance:
 
     cls: Class
     attributes: dict[str, Value] = field(default_factory=dict)
+    made: Value = None
+    """What the launch class it derives from made of its constructor's arguments (the
+    ``super().__init__(...)`` of a ``DeclareLaunchArgument`` subclass: that ``<arg>``)."""
 
 
 @dataclass(eq=False, slots=True)
