@@ -545,6 +545,80 @@ def generate_launch_description():
             {"imu_topic": "it's \\ ''"},
         ],
     ),
+    "python-values-changed-under-launch-time-ifs": (
+        {
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+class Options:
+    def __init__(self):
+        self.mode = 'plain'
+
+
+def spawner(controllers, active=True):
+    flags = ['--inactive'] if not active else []
+    return Node(package='pkg', executable='spawner', name='spawn_' + ('a' if active else 'i'),
+                arguments=['--cm', '/cm'] + flags + controllers)
+
+
+def setup(context):
+    chosen = LaunchConfiguration('chosen').perform(context)
+    active = ['state', 'io']
+    inactive = ['scaled', 'plain', 'fwd']
+    if LaunchConfiguration('activate').perform(context) == 'true':
+        active.append(chosen)
+        inactive.remove(chosen)
+    if LaunchConfiguration('mock').perform(context) == 'true':
+        active.remove('io')
+    params = {'rate': 10}
+    remaps = [('in', 'raw')]
+    options = Options()
+    if LaunchConfiguration('fast').perform(context) == 'true':
+        params['rate'] = 100
+        params.update({'burst': True})
+        remaps += [('out', 'fast_out')]
+        options.mode = 'fast'
+    else:
+        params.setdefault('slow', 1)
+        del params['rate']
+    names = ['n1']
+    names.append('n2') if chosen == 'plain' else names.extend(['n3', 'n4'])
+    nodes = [
+        spawner(active),
+        spawner(inactive, active=False),
+        Node(package='pkg', executable='tuned', name='tuned_' + options.mode,
+             parameters=[params, {'active': active}], remappings=remaps,
+             arguments=[' '.join(active), str(len(inactive))]),
+    ]
+    for name in names:
+        nodes.append(Node(package='pkg', executable='n', name=name))
+    return nodes
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('chosen', default_value='scaled'),
+        DeclareLaunchArgument('activate', default_value='true'),
+        DeclareLaunchArgument('mock', default_value='false'),
+        DeclareLaunchArgument('fast', default_value='false'),
+        OpaqueFunction(function=setup),
+    ])
+""",
+        },
+        [
+            {},
+            {"activate": "false"},
+            {"chosen": "plain"},
+            {"chosen": "fwd", "mock": "true"},
+            {"fast": "true"},
+            {"chosen": "plain", "fast": "true", "activate": "false", "mock": "true"},
+            {"chosen": "other"},
+            {"chosen": "other", "activate": "false"},
+        ],
+    ),
     "python-workspace-modules": (
         {
             "pkg_helpers/__init__.py": "",
