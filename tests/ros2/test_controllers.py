@@ -226,3 +226,21 @@ def test_controllers_topics_have_their_publishers_in_the_repositories(
     assert not {name for name in unfed if name.endswith("joint_states")}
     spawned = [f for f in findings if ": controller joint_state_broadcaster" in str(f["message"])]
     assert spawned  # the broadcasters are in the graph (their outputs' notes name them)
+
+
+OPTIONS = """<launch>
+  <node pkg="controller_manager" exec="spawner"
+        args="imu -t imu_sensor_broadcaster/IMUSensorBroadcaster -n arm --unload-on-kill"/>
+  <node pkg="controller_manager" exec="spawner" args="joint_state_broadcaster -c"/>
+  <node pkg="controller_manager" exec="spawner" args="joint_state_broadcaster --controller"/>
+</launch>
+"""
+
+
+def test_the_spawner_s_options_as_its_argparse_reads_them(tmp_path: Path) -> None:
+    """Humble's --controller-type gives the type, the deprecated --namespace the spawner's
+    namespace (the manager's, then); a command line the spawner's argparse refuses (an
+    option without its value, an ambiguous abbreviation) loads nothing."""
+    file = _workspace(tmp_path, OPTIONS)
+    _analysis, edges = _edges(tmp_path, file)
+    assert {(e.node, e.name) for e in edges} == {("/spawner_imu: controller imu", "/arm/imu/imu")}

@@ -6,11 +6,12 @@ the manager ``MANAGER`` (default ``controller_manager``, relative to the spawner
 namespace) to load, configure and activate each controller ``NAME``. The manager
 (``ros2_control_node``) gives each a node of its name in the manager's namespace, with the
 manager's remaps (but those of ``robot_description``) and then the spawner's
-``--controller-ros-args``. A controller's type is the manager's parameter ``NAME.type``:
-from the manager's parameters, or set by the spawner from the entry of a ``--param-file``
-for the controller (``NAME``, ``/NS/NAME``, ``/**/NAME``: its ``type``), which comes last.
-Where a parameter file rosvar cannot read may set it, or the manager is not one the entry
-file launches (Gazebo's, another launch's), the type is not known: the core then takes a
+``--controller-ros-args``. A controller's type is the manager's parameter ``NAME.type``,
+which the spawner sets from the ``type`` of the controller's entry in its parameter files
+(``/NS/NAME``, ``/**/NAME``, ``/**``; a bare ``NAME`` only in the root namespace). The
+controller's node reads its parameters from the manager's files, then the spawner's. Where
+a file rosvar cannot read may set one, or the manager is not one the entry file launches
+(Gazebo's, another launch's), the value is not known: for the type, the core then takes a
 controller named after a type's package (``joint_state_broadcaster``) for that type.
 """
 
@@ -21,6 +22,7 @@ import itertools
 import shlex
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, replace
+from typing import NoReturn
 
 from rosvar.analyses.communication import LaunchedNode, node_branches
 from rosvar.analyses.controllers import Controller, Parameters, spawned
@@ -124,7 +126,7 @@ class _Loads:
         self.space = space
         self.confinement = confinement
         self.spawn = spawn
-        self.namespace = namespace or names.SEP
+        self.namespace = names.SEP + namespace.lstrip(names.SEP)  # as the spawner makes it
         self.manager = names.canonicalize_name(names.ns_join(self.namespace, spawn.manager))
         self.files = [(space.true, self._file(path)) for path in spawn.param_files]
         self.files += [  # the spawner's own parameter files count too (Jazzy)
@@ -333,10 +335,18 @@ def _remaps(ros_args: Sequence[str]) -> Iterator[tuple[str, str]]:
             yield source, target
 
 
+class _Parser(argparse.ArgumentParser):
+    """An ``argparse`` parser that raises where the spawner's would print and exit (it
+    does so for an ambiguous abbreviation even without ``exit_on_error``)."""
+
+    def error(self, message: str) -> NoReturn:
+        raise argparse.ArgumentError(None, message)
+
+
 def _parser() -> argparse.ArgumentParser:
     """The spawner's options (Jazzy's ``parse_native_args``, with Humble's
     ``--controller-type`` and ``--stopped``)."""
-    parser = argparse.ArgumentParser(add_help=False, exit_on_error=False)
+    parser = _Parser(add_help=False, exit_on_error=False)
     parser.add_argument("controller_names", nargs="*")
     parser.add_argument("-c", "--controller-manager", default=MANAGER_NAME)
     parser.add_argument("-p", "--param-file", action="append", default=[])
