@@ -110,6 +110,9 @@ class Derivation:
                 for file in files:
                     self._crossing[file].append((constraint, reads, files))
         self._necessary: Memo[BDD, tuple[int, int]] = Memo()
+        self._component_sets: dict[frozenset[int], frozenset[int]] = {}
+        """Each set of components ``_restricted`` names once (nearly always one component:
+        Husky + ``_external`` names 30,000 times a few)."""
         self._implications: Memo[tuple[int, int], tuple[int, int]] = Memo()
         """Each distinct value of ``_necessary`` once: its integers are as wide as the
         positions (Husky + ``_external``: 15,566 values, 5,462 distinct, 600 bytes each)."""
@@ -317,7 +320,8 @@ class Derivation:
             # only an <other> text decides it, or one open variable (it takes both values)
             return Presence.UNDETERMINED, must, may, frozenset()
         # conditions over several components are rare (no constraint links their files)
-        return None, must, may, frozenset(self.component_of[v] for v in open_)
+        components = frozenset(self.component_of[v] for v in open_)
+        return None, must, may, self._component_sets.setdefault(components, components)
 
     def carries(self, bounds: Bounds, before: tuple[int, int], after: tuple[int, int]) -> bool:
         """The witnesses ``before`` of an undetermined verdict of ``bounds`` (one without
