@@ -65,6 +65,7 @@ SOURCES: list[Source] = [
     Source("ros-drivers/openni_camera", "ros1", ["openni_camera"]),
     Source("yujinrobot/yujin_ocs", "devel", ["yocs_cmd_vel_mux", "yocs_velocity_smoother"]),
     Source("ros-visualization/rviz", "melodic-devel", []),
+    Source("ros-controls/ros_controllers", "melodic-devel", []),
 ]
 
 SKIPPED = [
@@ -278,6 +279,10 @@ GAZEBO = [
     ("std_srvs/Empty", "pause_physics", 498),
     ("std_srvs/Empty", "unpause_physics", 507),
 ]
+JOINT_STATE_CONTROLLER = "joint_state_controller/JointStateController"
+JSC_SOURCE = "joint_state_controller/src/joint_state_controller.cpp"
+DIFF_DRIVE_CONTROLLER = "diff_drive_controller/DiffDriveController"
+DIFF_DRIVE_SOURCE = "diff_drive_controller/src/diff_drive_controller.cpp"
 EXTRA: dict[tuple[str, str, str], Review] = {
     ("ros-visualization/rviz", "rviz", "rviz"): Review(
         "a visualiser: what it subscribes depends on the displays of its configuration "
@@ -295,6 +300,25 @@ EXTRA: dict[tuple[str, str, str], Review] = {
         },
     ),
     # (repository, package, executable): nodes the extractor cannot find at all, by hand
+    ("ros-controls/ros_controllers", "joint_state_controller", JOINT_STATE_CONTROLLER): Review(
+        "a controller type (a plugin the controller manager loads, named in its parameter "
+        "NAME/type), read by hand: joint_states in the manager's namespace",
+        add={"publishes": [use("joint_states", "sensor_msgs/JointState", JSC_SOURCE, 57)]},
+        kind="controller",
+    ),
+    ("ros-controls/ros_controllers", "diff_drive_controller", DIFF_DRIVE_CONTROLLER): Review(
+        "a controller type (a plugin the controller manager loads, named in its parameter "
+        "NAME/type), read by hand: its node handle is the controller's name (~ names), the "
+        "odometry's transform goes to /tf",
+        add={
+            "subscribes": [use("~cmd_vel", "geometry_msgs/Twist", DIFF_DRIVE_SOURCE, 355)],
+            "publishes": [
+                use("~odom", "nav_msgs/Odometry", DIFF_DRIVE_SOURCE, 705),
+                {**use("/tf", "tf2_msgs/TFMessage", DIFF_DRIVE_SOURCE, 727), "boundary": True},
+            ],
+        },
+        kind="controller",
+    ),
     ("ros-simulation/gazebo_ros_pkgs", "gazebo_ros", "gzserver"): Review(
         "a shell script that runs Gazebo with gazebo_ros_api_plugin (a Gazebo plugin, no "
         "node source); the plugin creates its services through AdvertiseServiceOptions, "
@@ -576,7 +600,7 @@ def _repository(mirrors: str, source: Source, edition: Edition) -> list[Item]:
     commit = _git(directory, "rev-parse", source.branch).decode().strip()
     for (origin, package, executable), review in edition.extra.items():
         if origin == repository:
-            extra: Item = {"package": package, "executable": executable, "kind": "node"}
+            extra: Item = {"package": package, "executable": executable, "kind": review.kind}
             extra.update({role: [] for role in ROLES})
             _reviewed(extra, review, "")
             extra.update(repository=repository, commit=commit)

@@ -49,6 +49,10 @@ class Review:
     """The (package, executable) of the catalogue whose code the node runs in-process under
     its own name (a nodelet class through ``nodelet::Loader``, another package's node
     class): the node has its entries too, its own read first."""
+    kind: str = "node"
+    """What an extra item (one no source defines) is: ``controller`` for a controller type,
+    a plugin the controller manager loads (its ``executable`` the type, as the manager's
+    parameter ``NAME.type`` names it)."""
 
 
 def by_parameter(parameter: str, default: object = None, namespace: str = "") -> Item:

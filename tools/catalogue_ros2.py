@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from catalogue_review import Review, Source, by_parameter, use
+from catalogue_review import Review, Source, by_parameter, read, use
 
 NAV2 = [
     "nav2_amcl",
@@ -357,3 +357,255 @@ EXTRA: dict[tuple[str, str, str], Review] = {
         },
     ),
 }
+
+# ros2_controllers' controller types (humble): plugins of the controller manager, not
+# nodes. Each runs as a node named after the controller, in the manager's namespace, so its
+# ~/ names lie below the controller's name. Commands are the robot's inputs for whatever
+# application or person drives it, and the state topics are outputs for tools: boundary uses.
+CONTROLLERS = "ros-controls/ros2_controllers"
+CONTROLLER_NOTE = (
+    "a controller type (a plugin the controller manager loads, named in its parameter "
+    "NAME.type), read by hand: {}"
+)
+
+
+def _controller(note: str, **add: list[dict[str, object]]) -> Review:
+    return Review(CONTROLLER_NOTE.format(note), add=add, kind="controller")
+
+
+def _boundary(name: str, kind: str, file: str, line: int) -> dict[str, object]:
+    return {**use(name, kind, file, line), "boundary": True}
+
+
+def _when(entry: dict[str, object], condition: str) -> dict[str, object]:
+    return {**entry, "when": condition}
+
+
+FORWARD = "forward_command_controller/src/forward_controllers_base.cpp"
+FORWARD_REVIEW = _controller(
+    "subscribes ~/commands (forward_controllers_base.cpp)",
+    subscribes=[_boundary("~/commands", "std_msgs/msg/Float64MultiArray", FORWARD, 61)],
+)
+JSB = "joint_state_broadcaster/src/joint_state_broadcaster.cpp"
+JTC = "joint_trajectory_controller/src/joint_trajectory_controller.cpp"
+JTC_STATE = "control_msgs/msg/JointTrajectoryControllerState"
+DIFF_DRIVE = "diff_drive_controller/src/diff_drive_controller.cpp"
+DIFF_DRIVE_PARAMETERS = "diff_drive_controller/src/diff_drive_controller_parameter.yaml"
+GRIPPER = "gripper_controllers/include/gripper_controllers/gripper_action_controller_impl.hpp"
+GRIPPER_REVIEW = _controller(
+    "serves the action ~/gripper_cmd",
+    action_servers=[use("~/gripper_cmd", "control_msgs/action/GripperCommand", GRIPPER, 300)],
+)
+STEERING = "steering_controllers_library/src/steering_controllers_library.cpp"
+STEERING_PARAMETERS = "steering_controllers_library/src/steering_controllers_library.yaml"
+STEERING_REVIEW = _controller(
+    "steering_controllers_library's names: ~/reference (TwistStamped) where "
+    "use_stamped_vel (default false), else ~/reference_unstamped",
+    subscribes=[
+        _when(
+            _boundary("~/reference", "geometry_msgs/msg/TwistStamped", STEERING, 121),
+            "param('use_stamped_vel')",
+        ),
+        _when(
+            _boundary("~/reference_unstamped", "geometry_msgs/msg/Twist", STEERING, 127),
+            "not param('use_stamped_vel')",
+        ),
+    ],
+    publishes=[
+        use("~/odometry", "nav_msgs/msg/Odometry", STEERING, 141),
+        _boundary("~/tf_odometry", "tf2_msgs/msg/TFMessage", STEERING, 173),
+        _boundary("~/controller_state", "control_msgs/msg/SteeringControllerStatus", STEERING, 197),
+    ],
+    params=[read("use_stamped_vel", False, STEERING_PARAMETERS, 123)],
+)
+PID = "pid_controller/src/pid_controller.cpp"
+for _package, _type, _review in (
+    ("forward_command_controller", "ForwardCommandController", FORWARD_REVIEW),
+    ("forward_command_controller", "MultiInterfaceForwardCommandController", FORWARD_REVIEW),
+    ("position_controllers", "JointGroupPositionController", FORWARD_REVIEW),
+    ("velocity_controllers", "JointGroupVelocityController", FORWARD_REVIEW),
+    ("effort_controllers", "JointGroupEffortController", FORWARD_REVIEW),
+    ("gripper_controllers", "position_controllers/GripperActionController", GRIPPER_REVIEW),
+    ("gripper_controllers", "effort_controllers/GripperActionController", GRIPPER_REVIEW),
+    ("ackermann_steering_controller", "AckermannSteeringController", STEERING_REVIEW),
+    ("bicycle_steering_controller", "BicycleSteeringController", STEERING_REVIEW),
+    ("tricycle_steering_controller", "TricycleSteeringController", STEERING_REVIEW),
+):
+    _name = _type if "/" in _type else f"{_package}/{_type}"
+    EXTRA[(CONTROLLERS, _package, _name)] = _review
+EXTRA.update(
+    {
+        (
+            CONTROLLERS,
+            "joint_state_broadcaster",
+            "joint_state_broadcaster/JointStateBroadcaster",
+        ): _controller(
+            "joint_states in the manager's namespace (~/joint_states where use_local_topics, "
+            "default false, a read-only parameter: not modelled); dynamic_joint_states is for "
+            "tools",
+            publishes=[
+                use("joint_states", "sensor_msgs/msg/JointState", JSB, 151),
+                _boundary("dynamic_joint_states", "control_msgs/msg/DynamicJointState", JSB, 161),
+            ],
+        ),
+        (
+            CONTROLLERS,
+            "joint_trajectory_controller",
+            "joint_trajectory_controller/JointTrajectoryController",
+        ): _controller(
+            "the action and service are named NAME/follow_joint_trajectory and "
+            "NAME/query_state after the node's name: ~/ names",
+            subscribes=[
+                _boundary("~/joint_trajectory", "trajectory_msgs/msg/JointTrajectory", JTC, 843)
+            ],
+            publishes=[
+                _boundary("~/controller_state", JTC_STATE, JTC, 881),
+                _boundary("~/state", JTC_STATE, JTC, 858),
+            ],
+            services=[use("~/query_state", "control_msgs/srv/QueryTrajectoryState", JTC, 947)],
+            action_servers=[
+                use(
+                    "~/follow_joint_trajectory",
+                    "control_msgs/action/FollowJointTrajectory",
+                    JTC,
+                    935,
+                )
+            ],
+        ),
+        (
+            CONTROLLERS,
+            "diff_drive_controller",
+            "diff_drive_controller/DiffDriveController",
+        ): _controller(
+            "~/cmd_vel (TwistStamped) where use_stamped_vel (default true), else "
+            "~/cmd_vel_unstamped (Twist); ~/cmd_vel_out where publish_limited_velocity; the "
+            "odometry's transform on /tf",
+            subscribes=[
+                _when(
+                    _boundary("~/cmd_vel", "geometry_msgs/msg/TwistStamped", DIFF_DRIVE, 348),
+                    "param('use_stamped_vel')",
+                ),
+                _when(
+                    _boundary("~/cmd_vel_unstamped", "geometry_msgs/msg/Twist", DIFF_DRIVE, 372),
+                    "not param('use_stamped_vel')",
+                ),
+            ],
+            publishes=[
+                use("~/odom", "nav_msgs/msg/Odometry", DIFF_DRIVE, 392),
+                _boundary("/tf", "tf2_msgs/msg/TFMessage", DIFF_DRIVE, 447),
+                _when(
+                    _boundary("~/cmd_vel_out", "geometry_msgs/msg/TwistStamped", DIFF_DRIVE, 332),
+                    "param('publish_limited_velocity')",
+                ),
+            ],
+            params=[
+                read("use_stamped_vel", True, DIFF_DRIVE_PARAMETERS, 114),
+                read("publish_limited_velocity", False, DIFF_DRIVE_PARAMETERS, 104),
+            ],
+        ),
+        (
+            CONTROLLERS,
+            "imu_sensor_broadcaster",
+            "imu_sensor_broadcaster/IMUSensorBroadcaster",
+        ): _controller(
+            "publishes ~/imu",
+            publishes=[
+                use(
+                    "~/imu",
+                    "sensor_msgs/msg/Imu",
+                    "imu_sensor_broadcaster/src/imu_sensor_broadcaster.cpp",
+                    53,
+                )
+            ],
+        ),
+        (
+            CONTROLLERS,
+            "force_torque_sensor_broadcaster",
+            "force_torque_sensor_broadcaster/ForceTorqueSensorBroadcaster",
+        ): _controller(
+            "publishes ~/wrench",
+            publishes=[
+                use(
+                    "~/wrench",
+                    "geometry_msgs/msg/WrenchStamped",
+                    "force_torque_sensor_broadcaster/src/force_torque_sensor_broadcaster.cpp",
+                    92,
+                )
+            ],
+        ),
+        (CONTROLLERS, "pose_broadcaster", "pose_broadcaster/PoseBroadcaster"): _controller(
+            "publishes ~/pose, and /tf where its tf.enable (default true)",
+            publishes=[
+                use(
+                    "~/pose",
+                    "geometry_msgs/msg/PoseStamped",
+                    "pose_broadcaster/src/pose_broadcaster.cpp",
+                    89,
+                ),
+                _boundary(
+                    "/tf", "tf2_msgs/msg/TFMessage", "pose_broadcaster/src/pose_broadcaster.cpp", 97
+                ),
+            ],
+        ),
+        (
+            CONTROLLERS,
+            "range_sensor_broadcaster",
+            "range_sensor_broadcaster/RangeSensorBroadcaster",
+        ): _controller(
+            "publishes ~/range",
+            publishes=[
+                use(
+                    "~/range",
+                    "sensor_msgs/msg/Range",
+                    "range_sensor_broadcaster/src/range_sensor_broadcaster.cpp",
+                    64,
+                )
+            ],
+        ),
+        (CONTROLLERS, "pid_controller", "pid_controller/PidController"): _controller(
+            "~/measured_state where use_external_measured_states (default false)",
+            subscribes=[
+                _boundary("~/reference", "control_msgs/msg/MultiDOFCommand", PID, 171),
+                _when(
+                    _boundary("~/measured_state", "control_msgs/msg/MultiDOFCommand", PID, 188),
+                    "param('use_external_measured_states')",
+                ),
+            ],
+            publishes=[
+                _boundary("~/controller_state", "control_msgs/msg/MultiDOFStateStamped", PID, 221)
+            ],
+            services=[use("~/set_feedforward_control", "std_srvs/srv/SetBool", PID, 215)],
+            params=[
+                read(
+                    "use_external_measured_states",
+                    False,
+                    "pid_controller/src/pid_controller.yaml",
+                    40,
+                )
+            ],
+        ),
+        (
+            CONTROLLERS,
+            "gpio_controllers",
+            "gpio_controllers/GpioCommandController",
+        ): _controller(
+            "subscribes ~/commands, publishes ~/gpio_states",
+            subscribes=[
+                _boundary(
+                    "~/commands",
+                    "control_msgs/msg/DynamicInterfaceGroupValues",
+                    "gpio_controllers/src/gpio_command_controller.cpp",
+                    75,
+                )
+            ],
+            publishes=[
+                _boundary(
+                    "~/gpio_states",
+                    "control_msgs/msg/DynamicInterfaceGroupValues",
+                    "gpio_controllers/src/gpio_command_controller.cpp",
+                    80,
+                )
+            ],
+        ),
+    }
+)

@@ -336,3 +336,30 @@ def test_a_mistake_of_the_files_text_is_a_load_error_where_roslaunch_refuses(
         args = {"keepout": keepout}
         holds = Restriction(analysis, model, args, {}).holds(error.condition)
         assert holds == bool(resolve(analysis, [file], args).errors), keepout
+
+
+def test_a_file_rosvar_cannot_read_is_an_unread_error_once(ws: LaunchWorkspace) -> None:
+    """A malformed included file (or one over a limit on hostile input) hides what it would
+    launch: the checks say so at its place, once for every file including it, instead of
+    passing with no finding."""
+    ws.launch("broken.launch", '<node pkg="pkg" type="talker.py" name="t">')
+    ws.launch("other.launch", '<include file="$(find pkg)/launch/broken.launch"/>')
+    found = _findings(ws, '<include file="$(find pkg)/launch/broken.launch"/>', Check.UNREAD)
+    assert found == [
+        (
+            "xml-malformed",
+            Severity.ERROR,
+            "rosvar could not read this, the checks do not see it: malformed XML: mismatched tag",
+        )
+    ]
+    analysis = ws.analysis()
+    models = [analysis.model(file) for file in analysis.workspace.launch_files]
+    confinement = analysis.workspace.confinement()
+    unread = [
+        f
+        for f in check_models(analysis.space, models, Interfaces(), confinement)
+        if f.check is Check.UNREAD
+    ]
+    assert [(f.locations[0].file, f.locations[0].line) for f in unread] == [
+        (str(ws.root / "pkg" / "launch" / "broken.launch"), 3)
+    ]

@@ -7,10 +7,14 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from rosvar.analyses.controllers import controller_edges
-from rosvar.workspace.interfaces.model import Role
+from rosvar.ros.version import RosVersion
+from rosvar.workspace.interfaces.catalogue import load_catalogue
+from rosvar.workspace.interfaces.model import Interfaces, Role
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
+
+CATALOGUE = Interfaces(fallback=load_catalogue(RosVersion.ROS1))
 
 CONTROL = """
 joint_publisher:
@@ -35,7 +39,7 @@ def test_a_spawner_s_controllers_have_the_names_of_their_types(ws: LaunchWorkspa
     )
     analysis = ws.analysis()
     model = analysis.model(file)
-    edges = controller_edges(analysis.space, model)
+    edges = controller_edges(analysis.space, model, CATALOGUE, analysis.workspace.confinement())
     by_name = {
         (e.role, e.name, analysis.space.describe(e.condition)) for e in edges if not e.boundary
     }
@@ -56,4 +60,7 @@ def test_a_controller_of_no_known_type_or_without_type_has_no_edges(ws: LaunchWo
               args="arm_controller untyped_controller"/>""",
     )
     analysis = ws.analysis()
-    assert controller_edges(analysis.space, analysis.model(file)) == []
+    model = analysis.model(file)
+    assert (
+        controller_edges(analysis.space, model, CATALOGUE, analysis.workspace.confinement()) == []
+    )

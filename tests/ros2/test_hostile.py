@@ -335,8 +335,9 @@ def _statements(count: int) -> str:
 def test_large_python_files_are_refused_before_parsing(
     tmp_path: Path, count: int, code: str
 ) -> None:
-    """Over 1 MiB, or 100,000 tokens: refused with a diagnostic in every command, as an
-    entry file and as an included one, before ``ast.parse`` spends seconds and gigabytes."""
+    """Over 1 MiB, or 100,000 tokens: refused with a diagnostic in every command (``check``:
+    an ``unread`` finding, ``metrics``: on stderr), as an entry file and as an included one,
+    before ``ast.parse`` spends seconds and gigabytes."""
     include = (
         "from launch.actions import IncludeLaunchDescription\n"
         "from launch.launch_description_sources import PythonLaunchDescriptionSource\n"
@@ -361,3 +362,7 @@ def test_large_python_files_are_refused_before_parsing(
     assert "big.py" in error["message"] and error["line"] > 1
     assert code in diagnostic_codes(analyze(ws))
     assert code in run("features", str(ws)).stdout
+    checked = run("check", str(ws), "--format", "json")
+    unread = [f for f in json.loads(checked.stdout)["findings"] if f["check"] == "unread"]
+    assert [f["name"] for f in unread] == [code, code], unread  # big.launch.py, big.py
+    assert f"[{code}]" in run("metrics", str(ws)).stderr

@@ -85,8 +85,9 @@ DESCRIPTIONS: dict[Check, str] = {
     Check.SYMBOLIC_NAME: "a name could not be resolved statically: the checks skip it",
     Check.WHEN_UNKNOWN: "a hinted entry's when: reads a parameter whose value is not known: "
     "the entry is kept there",
-    Check.UNREAD: "a part of the graph could not be read: a robot description xacro fails on "
-    "or that is read only in part, a Gazebo plugin of a library rosvar does not know",
+    Check.UNREAD: "a part of the graph could not be read: a launch file rosvar could not read "
+    "(malformed, or over a limit on hostile input), a robot description xacro fails on or that "
+    "is read only in part, a Gazebo plugin of a library rosvar does not know",
 }
 
 PROVIDED = {Channel.TOPICS: "publish", Channel.SERVICES: "serve", Channel.ACTIONS: "serve"}
@@ -230,6 +231,7 @@ def check_model(
     checker.unknown = _unknown_nodes(space, model, interfaces)
     checker.graph(edges)
     checker.errors()
+    checker.unreadable()
     if described is not None:
         checker.gaps(described.gaps(model))
     checker.node_names()
@@ -322,6 +324,24 @@ class _Checker:
                 error.condition,
                 (error.location,),
             )
+        self.loads = loads
+
+    def unreadable(self) -> None:
+        """What rosvar could not read of the entry file or the files it includes: malformed,
+        or over a limit on hostile input (too large, too many steps, nested too deep). The
+        checks see nothing of it: without this, such a workspace would pass with no
+        finding. As the diagnostic, wherever the file is included."""
+        loads, self.loads = self.loads, self.space.true
+        for diagnostic in self.model.diagnostics:
+            if diagnostic.severity is Severity.ERROR:
+                self.add(
+                    Check.UNREAD,
+                    Severity.ERROR,
+                    diagnostic.code,
+                    f"rosvar could not read this, the checks do not see it: {diagnostic.message}",
+                    self.space.true,
+                    (diagnostic.location,),
+                )
         self.loads = loads
 
     def gaps(self, gaps: Sequence[Gap]) -> None:

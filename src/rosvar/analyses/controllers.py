@@ -1,120 +1,175 @@
-"""ros_control controllers: the topics of the controllers a ``controller_manager`` spawner
-loads, as edges of the spawner.
+"""Controllers: the names the controllers a controller manager loads use, as edges of the
+spawner that has them loaded.
 
-Controllers are plugins of the controller manager (``gazebo_ros_control`` in simulation, the
-robot's hardware node otherwise), not nodes: the launch files name them only in the
-spawner's arguments, and their type in the parameter ``NS/CONTROLLER/type``. A controller
-of a known type uses the names below: ``joint_state_controller`` publishes the manager
-namespace's ``joint_states``, ``diff_drive_controller`` subscribes ``CONTROLLER/cmd_vel`` and
-publishes ``CONTROLLER/odom``. Without them every ``robot_state_publisher`` would miss its
-``joint_states`` and every odometry filter its ``odom``.
+Controllers are plugins of a controller manager (ROS 1: ``gazebo_ros_control`` or the
+robot's hardware node; ROS 2: ``ros2_control_node``), not nodes: the launch files name them
+only in a spawner's arguments, and their type in a parameter of the manager. Each dialect
+reads which controllers its spawners have loaded, and where (:data:`SPAWNED`, filled by the
+dialects: the core names neither); the names a controller type uses are its catalogue entry
+(kind ``controller``), resolved as those of a node named after the controller in the
+manager's namespace, with the manager's remaps. Without them every ``robot_state_publisher``
+would miss its ``joint_states`` and every odometry filter its ``odom``.
 """
 
 from __future__ import annotations
 
+from collections import defaultdict
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 
-from rosvar.analyses.communication import Edge, node_branches
-from rosvar.analyses.param_values import ParamValues, Unknown
-from rosvar.diagnostics import Location
-from rosvar.interpreter.model import LaunchModel
+from rosvar.analyses.communication import CHANNEL, Edge, LaunchedNode, entry_names
+from rosvar.analyses.when import when_condition
+from rosvar.files import Confinement
+from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.logic.bdd import BDD
+from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.ros import names
-from rosvar.workspace.interfaces.model import Role
+from rosvar.ros.version import RosVersion
+from rosvar.workspace.interfaces.model import (
+    Default,
+    Entry,
+    Interfaces,
+    NodeInterface,
+    NodeKind,
+    Role,
+)
 
-SPAWNERS = {("controller_manager", "spawner"), ("controller_manager", "controller_manager")}
-"""The executables that load controllers named in their arguments (``controller_manager
-spawn NAME`` for the second)."""
-NOT_CONTROLLERS = frozenset({"spawn", "load", "start", "stop", "unload", "kill", "list"})
+Parameters = Callable[[str, Default | None], Choice[object]]
+"""A controller's parameter values (by name, with the default its type's entry gives), each
+with its condition; a value not known is :class:`~rosvar.analyses.param_values.Unknown`."""
 
 
 @dataclass(frozen=True)
-class ControllerUse:
-    """A name a controller type uses: ``{controller}`` stands for the controller's name; a
-    relative name lies in the controller manager's namespace."""
+class Controller:
+    """A controller a spawner has a manager load, where ``condition`` holds: its node's
+    ``name`` and ``namespace`` (the manager's), its ``type`` (None: no parameter rosvar can
+    read says it, so a name that is a type's package, ``joint_state_broadcaster``, is taken
+    for that type), the remaps its node takes, in the order they are tried, and its
+    parameters (None: not read, so a use a parameter switches on is kept, uncertain)."""
 
-    role: Role
+    condition: BDD
     name: str
-    type: str
-    boundary: bool = False
+    type: str | None
+    namespace: str
+    remaps: tuple[tuple[BDD, Raw, Raw], ...]
+    spawner: str  # the spawner's resolved name
+    declaration: NodeDecl  # the spawner's (its args are the scope of a use's when:)
+    ros2: bool
+    parameters: Parameters | None = None
 
 
-SOURCE = "https://github.com/ros-controls/ros_controllers/blob/noetic-devel"
-CONTROLLERS: dict[str, tuple[ControllerUse, ...]] = {
-    "joint_state_controller/JointStateController": (
-        ControllerUse(Role.PUBLISHES, "joint_states", "sensor_msgs/JointState"),
-    ),
-    "diff_drive_controller/DiffDriveController": (
-        ControllerUse(Role.SUBSCRIBES, "{controller}/cmd_vel", "geometry_msgs/Twist"),
-        ControllerUse(Role.PUBLISHES, "{controller}/odom", "nav_msgs/Odometry"),
-        ControllerUse(Role.PUBLISHES, "/tf", "tf2_msgs/TFMessage", boundary=True),
-    ),
-}
-"""Controller types and the names they use (registry: ``CONTROLLERS[type] = ...``)."""
-LOCATIONS = {
-    "joint_state_controller/JointStateController": Location(
-        f"{SOURCE}/joint_state_controller/src/joint_state_controller.cpp", 0, 0
-    ),
-    "diff_drive_controller/DiffDriveController": Location(
-        f"{SOURCE}/diff_drive_controller/src/diff_drive_controller.cpp", 0, 0
-    ),
-}
+Spawned = Callable[[ConditionSpace, LaunchModel, Confinement], Iterable[Controller]]
+"""The controllers the spawners of an entry file have loaded, as its dialect reads them."""
+SPAWNED: dict[RosVersion, list[Spawned]] = defaultdict(list)
+"""By the ROS of the spawners (filled by the dialects)."""
 
 
-def controller_edges(space: ConditionSpace, model: LaunchModel) -> list[Edge]:
-    """The edges of the controllers the spawners of ``model`` load, where their type
-    parameter names a known controller type."""
-    values = ParamValues(space, [(space.true, model)])
+def spawned(version: RosVersion) -> Callable[[Spawned], Spawned]:
+    """Register how the spawners of ``version`` name their controllers."""
+
+    def register(reader: Spawned) -> Spawned:
+        SPAWNED[version].append(reader)
+        return reader
+
+    return register
+
+
+def controller_edges(
+    space: ConditionSpace, model: LaunchModel, interfaces: Interfaces, confinement: Confinement
+) -> list[Edge]:
+    """The edges of the controllers the spawners of ``model`` have loaded, where their type
+    is a known controller type (``confinement``: where parameter files may be read)."""
+    types = _Types(interfaces)
     edges = []
-    for node in model.nodes:
-        if node.is_test:
-            continue
-        for condition, launched, _values in node_branches(space, node):
-            if (launched.package, launched.type) not in SPAWNERS:
-                continue
-            namespace = launched.namespace
-            for controller in launched.args.split():
-                if controller.startswith("-") or controller in NOT_CONTROLLERS:
-                    continue
-                kind = names.ns_join(names.ns_join(namespace, controller), "type")
-                for value, typed in _types(values, kind).items():
-                    uses = CONTROLLERS.get(value)
-                    where = condition & typed
-                    if uses is None or where == space.false:
-                        continue
-                    for use in uses:
-                        name = names.ns_join(namespace, use.name.format(controller=controller))
-                        edges.append(
-                            Edge(
-                                model.file,
-                                f"{launched.full_name}: controller {controller}",
-                                use.role,
-                                names.canonicalize_name(name),
-                                use.type,
-                                where,
-                                node.location,
-                                LOCATIONS[value],
-                                True,
-                                use.boundary,
-                            )
-                        )
+    for version in sorted({node.schema.version for node in model.nodes}):
+        for reader in SPAWNED.get(version, ()):
+            for controller in reader(space, model, confinement):
+                interface = types.of(controller)
+                if interface is not None:
+                    edges.extend(_edges(space, model.file, controller, interface))
     return edges
 
 
-def _types(values: ParamValues, name: str) -> dict[str, BDD]:
-    """The controller types the parameter ``name`` holds, each with its condition. Where a
-    value is unknown (a ``<rosparam>`` known only per configuration may set anything below
-    its namespace) and the launch files give one type, that type is taken: such files tune
-    controllers (a wheel multiplier), they do not retype them."""
-    found: dict[str, BDD] = {}
-    unknown = values.space.false
-    for condition, value in values.values(name, None):
-        if isinstance(value, str):
-            found[value] = found.get(value, values.space.false) | condition
-        elif isinstance(value, Unknown):
-            unknown |= condition
-    if len(found) == 1:
-        (only,) = found
-        found[only] |= unknown
-    return found
+def _edges(
+    space: ConditionSpace, file: str, controller: Controller, interface: NodeInterface
+) -> list[Edge]:
+    """A controller's uses of names, as a node of its name in the manager's namespace."""
+    node = LaunchedNode(
+        interface.package,
+        interface.executable,
+        controller.namespace,
+        controller.name,
+        "",
+        (),
+        ros2=controller.ros2,
+    )
+    label = f"{controller.spawner}: controller {controller.name}"
+    edges = []
+    defaults = {e.name.removeprefix("~/"): e.default for e in interface.of(Role.PARAMS) if e.static}
+    for entry in interface.entries:
+        if entry.role not in CHANNEL:
+            continue
+        for present, uncertain in _present(space, controller, entry, defaults):
+            for condition, name in entry_names(node, controller.remaps, entry, present):
+                edges.append(
+                    Edge(
+                        file,
+                        label,
+                        entry.role,
+                        name,
+                        entry.type,
+                        condition,
+                        controller.declaration.location,
+                        entry.location,
+                        entry.static and "{" not in name,
+                        entry.boundary,
+                        uncertain=uncertain,
+                    )
+                )
+    return edges
+
+
+def _present(
+    space: ConditionSpace,
+    controller: Controller,
+    entry: Entry,
+    defaults: Mapping[str, Default | None],
+) -> list[tuple[BDD, bool]]:
+    """Where the controller has ``entry``, and whether only because a parameter its
+    ``when:`` reads is not known (uncertain: a missing partner of it is a note)."""
+    parameters = controller.parameters
+    if entry.when is None:
+        return [(controller.condition, False)]
+    if parameters is None:
+        return [(controller.condition, True)]
+
+    def lookup(name: str) -> Choice[object]:
+        return parameters(name, defaults.get(name.removeprefix("~/")))
+
+    when = when_condition(space, controller.declaration, entry.when, lookup)
+    parts = [
+        (controller.condition & when.condition & ~when.unknown, False),
+        (controller.condition & when.unknown, True),
+    ]
+    return [(condition, uncertain) for condition, uncertain in parts if condition != space.false]
+
+
+class _Types:
+    """The controller types of the interfaces, looked up by type, or by package for a
+    controller whose type is not known (listed once, on the first such one)."""
+
+    def __init__(self, interfaces: Interfaces) -> None:
+        self.interfaces = interfaces
+        self._by_package: dict[str, list[NodeInterface]] | None = None
+
+    def of(self, controller: Controller) -> NodeInterface | None:
+        if controller.type is not None:
+            found = self.interfaces.find(None, controller.type)
+            return found if found is not None and found.kind is NodeKind.CONTROLLER else None
+        if self._by_package is None:
+            self._by_package = defaultdict(list)
+            for node in self.interfaces.listed():
+                if node.kind is NodeKind.CONTROLLER:
+                    self._by_package[node.package].append(node)
+        named = self._by_package.get(controller.name, [])
+        return named[0] if len(named) == 1 else None

@@ -5,6 +5,7 @@ from rosvar.frontends.xml import load_launch_file
 from rosvar.interpreter.semantics import Semantics
 from rosvar.interpreter.substitution_args import Substituter
 from rosvar.ros.version import RosVersion
+from rosvar.ros1 import controllers  # noqa: F401 - registers its spawners' controllers
 from rosvar.ros1.entry import walk_entry
 from rosvar.ros1.nodes import ROS1_NODES
 from rosvar.ros1.resolve import ROS1_CHECKS, node_fields, resolve

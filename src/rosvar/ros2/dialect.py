@@ -10,6 +10,7 @@ from rosvar.interpreter.semantics import Semantics
 from rosvar.ros.version import RosVersion
 from rosvar.ros2 import (
     boolean_substitutions,  # noqa: F401 - registers their handlers
+    controllers,  # noqa: F401 - registers its spawners' controllers
     parameter_checks,  # noqa: F401 - registers ROS 2's own checks
 )
 from rosvar.ros2.api.actions import ACTIONS

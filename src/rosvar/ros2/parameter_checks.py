@@ -21,7 +21,7 @@ from rosvar.interpreter.model import LaunchModel, NodeParameter
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros.version import RosVersion
 from rosvar.ros2.conventions.parameters import matches
-from rosvar.ros2.resolve import parameter_entries, parameter_file
+from rosvar.ros2.resolve import given_entries
 from rosvar.workspace.interfaces.model import Interfaces, Role
 
 
@@ -122,16 +122,4 @@ def _declares(names: set[str], name: str) -> bool:
 def _entries(
     parameter: NodeParameter, confinement: Confinement
 ) -> list[tuple[str, dict[str, object]]]:
-    """The entries of a parameter file whose text is known (read inside the workspace's
-    confinement; ``allow_substs``: its substituted text), else none."""
-    path = parameter.file
-    if path is None or not isinstance(path, str):
-        return []
-    try:
-        if parameter.content is None:
-            return parameter_file(path, confinement)
-        if isinstance(parameter.content, str):
-            return parameter_entries(parameter.content, path)
-    except ValueError:
-        pass  # refused or unreadable: the model's diagnostics say so
-    return []
+    return given_entries(parameter, confinement) or []

@@ -16,10 +16,10 @@ from collections.abc import Mapping, Sequence
 import yaml
 
 from rosvar import bounded_yaml
-from rosvar.diagnostics import Diagnostic, Severity
+from rosvar.diagnostics import Diagnostic, Severity, leaves_unknown
 from rosvar.files import Confinement, read_file
 from rosvar.interpreter import resolution
-from rosvar.interpreter.model import NodeDecl, NodeField, Raw
+from rosvar.interpreter.model import LaunchModel, NodeDecl, NodeField, NodeParameter, Raw
 from rosvar.interpreter.resolution import Resolution, ResolutionError, ResolvedNode, Restriction
 from rosvar.ros2.api.event_handlers import EVENT_HANDLERS
 from rosvar.ros2.conventions import command_line
@@ -38,6 +38,9 @@ UNINTERPRETED = frozenset({"nesting-too-deep"})
 """Diagnostics of parts the walk left out (a limit): no configuration can be told without them."""
 LATER = frozenset(h.tag for h in EVENT_HANDLERS if not h.at_launch)
 """The triggers of what starts after the launch started."""
+SETTLED = frozenset({"value-too-complex", "package-unknown"})
+"""Warnings of the model that one configuration settles: a value computed again with its
+concrete values, a package that, where it matters, fails as ``value-unknown``."""
 
 
 def resolve(
@@ -53,6 +56,7 @@ def resolve(
             if diagnostic.code in UNINTERPRETED:
                 where = diagnostic.location
                 result.errors.append(ResolutionError(diagnostic.code, diagnostic.message, where))
+        result.warnings.extend(_unfollowed(model, restriction))
         for error in model.errors:
             if restriction.holds(error.condition):
                 result.errors.append(ResolutionError(error.code, error.message, error.location))
@@ -66,6 +70,29 @@ def resolve(
                 except (ValueError, ResolutionError) as error:
                     result.errors.append(ResolutionError("node-invalid", str(error), decl.location))
     return result
+
+
+def _unfollowed(model: LaunchModel, r: Restriction) -> list[Diagnostic]:
+    """What rosvar did not follow in the files this configuration loads (the Python
+    frontend's ``python-not-followed``, a module or a read refused...), as ``analyze`` lists
+    it: a node whose parameters a helper rewrote would otherwise seem to have none. A
+    launch file included only in other configurations says nothing; a module's diagnostics
+    are kept wherever it was imported."""
+    loaded = {model.file}
+    for include in model.includes:
+        if r.holds(include.condition):
+            try:
+                loaded.add(r.raw(include.file, include.location, "<include> file") or "")
+            except ResolutionError:
+                continue  # the include's own error says it
+    return [
+        diagnostic
+        for diagnostic in model.diagnostics
+        if diagnostic.severity is Severity.WARNING
+        and leaves_unknown(diagnostic)
+        and diagnostic.code not in SETTLED
+        and (diagnostic.location.file in loaded or diagnostic.location.file not in model.files)
+    ]
 
 
 def _node(decl: NodeDecl, r: Restriction, warnings: list[Diagnostic]) -> ResolvedNode:
@@ -231,6 +258,26 @@ def parameter_file(path: str, confinement: Confinement) -> list[tuple[str, dict[
     except (OSError, UnicodeDecodeError) as error:
         raise ValueError(f"parameter file {path} is not readable: {error}") from None
     return parameter_entries(text, path)
+
+
+def given_entries(
+    parameter: NodeParameter, confinement: Confinement
+) -> list[tuple[str, dict[str, object]]] | None:
+    """The entries of a node's parameter file whose text is known (read inside the
+    workspace's confinement; ``allow_substs``: its substituted text); None where it is not
+    (a path or text known only per configuration, a file refused or unreadable: the model's
+    diagnostics say so)."""
+    path = parameter.file
+    if path is None or not isinstance(path, str):
+        return None
+    try:
+        if parameter.content is None:
+            return parameter_file(path, confinement)
+        if isinstance(parameter.content, str):
+            return parameter_entries(parameter.content, path)
+    except ValueError:
+        pass
+    return None
 
 
 def parameter_entries(text: str, path: str) -> list[tuple[str, dict[str, object]]]:

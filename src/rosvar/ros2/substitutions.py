@@ -18,6 +18,9 @@ import weakref
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
+import yaml
+
+from rosvar.bounded_yaml import check_limits
 from rosvar.files import FileCode, FileRefused, read_file
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
@@ -36,6 +39,7 @@ from rosvar.ros2.frontends.python.text import (
     NODE_NAME,
     PATH_JOIN,
     PYTHON_STRING,
+    PYTHON_YAML,
     UNKNOWN,
 )
 from rosvar.ros2.nodes import ROS2_NODES
@@ -170,7 +174,9 @@ def command_line(text: str) -> list[Template]:
 
 Handler = Callable[[Interpretation[Context], Context, list[Raw]], Choice[Value]]
 HANDLERS: dict[str, Handler] = {}
-OWN = frozenset({PATH_JOIN, PYTHON_STRING, UNKNOWN, CONFIGURATION_EQUALS, EMPTY, NODE_NAME})
+OWN = frozenset(
+    {PATH_JOIN, PYTHON_STRING, PYTHON_YAML, UNKNOWN, CONFIGURATION_EQUALS, EMPTY, NODE_NAME}
+)
 """rosvar's own substitutions, which the Python frontend writes (no launch API name)."""
 
 
@@ -547,6 +553,50 @@ def _python_string(
 
 
 register(PYTHON_STRING, lambda _host, value: repr(value))
+
+
+@substitution(PYTHON_YAML)
+def _python_yaml(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+    """The Python frontend's ``yaml.load`` of a launch-time string inside an expression: the
+    loaded value as a Python literal; a text that is no YAML of plain values fails, as the
+    file's ``yaml.load`` raises (or gives what the expression cannot use)."""
+    if len(args) != 1:
+        return _fail(host, f"$({PYTHON_YAML}) takes one argument", "substitution-invalid")
+    if isinstance(args[0], str):
+        return Choice.const(host.space, _yaml_literal(args[0]))
+    return Choice.const(host.space, Apply(PYTHON_YAML, (args[0],), f"yaml({args[0]})"))
+
+
+def _yaml_literal(text: str) -> str | Fail:
+    try:
+        check_limits(text)
+        loaded = yaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+    except yaml.YAMLError as error:
+        return Fail(f"yaml.load() of {text!r}: {error}", "eval-failed")
+    if not _plain(loaded):
+        return Fail(f"yaml.load() of {text!r} gives other than plain values", "eval-failed")
+    return repr(loaded)
+
+
+def _plain(value: object) -> bool:
+    """Whether ``value`` is made of what a Python literal writes back (no dates, bytes)."""
+    if value is None or isinstance(value, str | bool | int | float):
+        return True
+    if isinstance(value, list):
+        return all(_plain(item) for item in value)
+    if isinstance(value, dict):
+        return all(_plain(key) and _plain(item) for key, item in value.items())
+    return False
+
+
+def _yaml_term(_host: object, text: object) -> str:
+    value = _yaml_literal(str(text))
+    if isinstance(value, Fail):
+        raise TermError(value.message)
+    return value
+
+
+register(PYTHON_YAML, _yaml_term)
 
 
 @substitution(NODE_NAME)

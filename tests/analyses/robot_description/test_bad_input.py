@@ -120,7 +120,11 @@ def test_unknown_plugin_library_and_topic_are_notes_and_the_check_goes_on(tmp_pa
     analysis = Analysis(discover([root], ros_package_path=""))
     models = [analysis.model(f) for f in analysis.workspace.launch_files]
     findings = check_models(
-        analysis.space, models, Interfaces(), analysis.workspace.confinement(), Simulation(analysis)
+        analysis.space,
+        models,
+        Interfaces(),
+        analysis.workspace.confinement(),
+        Simulation(analysis, Interfaces()),
     )
     kinds = {(f.check, f.locations[0].line) for f in findings}
     assert (Check.UNREAD, 6) in kinds  # the library is only known per value of lib

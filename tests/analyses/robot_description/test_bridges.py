@@ -18,7 +18,7 @@ from rosvar.analyses.robot_description.edges import Simulation
 from rosvar.diagnostics import Severity
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
-from rosvar.workspace.interfaces.model import Role
+from rosvar.workspace.interfaces.model import Interfaces, Role
 
 
 @pytest.mark.parametrize(
@@ -120,7 +120,7 @@ def test_bridges_are_edges_of_their_node(tmp_path: Path) -> None:
     (package / "launch" / "sim.launch.xml").write_text(LAUNCH)
     (package / "config" / "bridge.yaml").write_text(CONFIG)
     analysis = Analysis(discover([tmp_path / "ws"], ros_package_path=""))
-    simulation = Simulation(analysis)
+    simulation = Simulation(analysis, Interfaces())
     model = analysis.model(str(package / "launch" / "sim.launch.xml"))
     edges = {(e.node, e.role, e.name, e.type) for e in simulation.edges(model)}
     assert edges == {

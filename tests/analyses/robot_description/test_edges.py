@@ -73,7 +73,7 @@ def _setup(ws: LaunchWorkspace) -> tuple[list[Edge], Simulation]:
     file = ws.launch("sim.launch", LAUNCH)
     analysis = ws.analysis()
     interfaces = extract_interfaces(analysis.workspace.packages.values())
-    described = Simulation(analysis)
+    described = Simulation(analysis, interfaces)
     return model_edges(analysis.space, analysis.model(file), interfaces, described), described
 
 
@@ -104,7 +104,7 @@ def test_a_simulated_sensor_is_the_missing_partner(ws: LaunchWorkspace) -> None:
     _setup(ws)
     analysis = ws.analysis()
     interfaces = extract_interfaces(analysis.workspace.packages.values())
-    described = Simulation(analysis)
+    described = Simulation(analysis, interfaces)
     models = [analysis.model(f) for f in analysis.workspace.launch_files]
     findings = check_models(
         analysis.space, models, interfaces, analysis.workspace.confinement(), described
@@ -130,7 +130,11 @@ def test_a_description_read_with_textfile_is_located_in_its_file(ws: LaunchWorks
     analysis = ws.analysis()
     models = [analysis.model(f) for f in analysis.workspace.launch_files]
     findings = check_models(
-        analysis.space, models, Interfaces(), analysis.workspace.confinement(), Simulation(analysis)
+        analysis.space,
+        models,
+        Interfaces(),
+        analysis.workspace.confinement(),
+        Simulation(analysis, Interfaces()),
     )
     [unread] = [f for f in findings if f.check is Check.UNREAD and "mystery" in f.message]
     assert unread.locations[1:] == (Location(urdf, 20, 5),)  # its <plugin>
@@ -143,7 +147,7 @@ def test_xacro_failing_is_a_warning_where_the_launch_stops(ws: LaunchWorkspace) 
     ws.write("scripts/listener.py", LISTENER)
     file = ws.launch("sim.launch", launch)
     analysis = ws.analysis(extra_values={"ns": ["bad"]})
-    described = Simulation(analysis)
+    described = Simulation(analysis, Interfaces())
     model = analysis.model(file)
     fails = described.fails(model)
     for ns, expected in (("bad", True), ("/", False), ("good", False)):
@@ -215,7 +219,7 @@ def test_ros2_spawners_read_robot_state_publishers_description(tmp_path: Path) -
     (package / "launch" / "sim.launch.xml").write_text(ROS2_XML)
     (package / "launch" / "sim.launch.py").write_text(ROS2_PYTHON)
     analysis = Analysis(discover([tmp_path / "ws"], ros_package_path=""))
-    simulation = Simulation(analysis)
+    simulation = Simulation(analysis, Interfaces())
     found = {}
     for name in ("sim.launch.xml", "sim.launch.py"):
         model = analysis.model(str(package / "launch" / name))
@@ -243,7 +247,7 @@ def test_queries_see_the_plugins_topics_published_by_the_spawner(ws: LaunchWorks
     _setup(ws)
     analysis = ws.analysis()
     interfaces = extract_interfaces(analysis.workspace.packages.values())
-    collections = channel_collections(interfaces, Simulation(analysis))
+    collections = channel_collections(interfaces, Simulation(analysis, interfaces))
     engine = QueryEngine(analysis, collections=collections)
     [scan] = engine.run("topics[self.name == '/scan']")
     [publishing] = scan.element.attribute("publishers").values()
@@ -290,13 +294,13 @@ def test_husky_plugins_restricted_are_the_real_xacros(tmp_path: Path) -> None:
 
     workspace = discover([CORPUS / "husky"], deps=[CORPUS / "_external"], ros_package_path="")
     analysis = Analysis(workspace)
-    simulation = Simulation(analysis)
+    simulation = Simulation(analysis, Interfaces())
     model = analysis.model(str(HUSKY_SPAWN))
     simulation.edges(model)
     packages = {name: package.path for name, package in workspace.packages.items()}
     compared = 0
     for args, env in HUSKY_CONFIGURATIONS:
-        restricted = configuration_edges(analysis, [str(HUSKY_SPAWN)], args, env)
+        restricted = configuration_edges(analysis, [str(HUSKY_SPAWN)], args, env, Interfaces())
         ours = {  # the controllers' edges come from the spawner's args, not from xacro
             (e.role, e.name, e.type) for e in restricted.edges if ": controller " not in e.node
         }

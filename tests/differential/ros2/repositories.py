@@ -53,7 +53,7 @@ from oracle.ros2_client import (
 )
 
 from ..harness import message_pattern
-from .samples import Config, read, sample
+from .samples import Config, Origin, read, sample
 
 DATA = Path(__file__).resolve().parents[2] / "data" / "ros2"
 SOURCES = Path(rosvar.__file__).resolve().parents[1]
@@ -133,11 +133,13 @@ REPOSITORIES = {
 
 @dataclass(frozen=True)
 class Case:
-    """One configuration of one launch file: ``config`` holds the ``name:=value`` pairs."""
+    """One configuration of one launch file: ``config`` holds the ``name:=value`` pairs,
+    ``origins`` the sampler's rules that named it."""
 
     repository: str
     file: Path
     config: tuple[tuple[str, str], ...]
+    origins: frozenset[Origin] = field(default=frozenset(), compare=False)
 
     @property
     def relative(self) -> str:
@@ -170,7 +172,9 @@ def cases(
         if configs_limit is not None and len(configs) > configs_limit:
             rest = random.Random(f"{SEED}:{path.relative_to(DATA).as_posix()}")
             configs = [configs[0], *rest.sample(configs[1:], configs_limit - 1)]
-        found.extend(Case(repository.name, path, tuple(c.items())) for c in configs)
+        found.extend(
+            Case(repository.name, path, tuple(c.config.items()), c.origins) for c in configs
+        )
     return found
 
 
@@ -314,8 +318,11 @@ def _pattern(text: str) -> str:
 
 def _explained(error: Mapping[str, Any], expected: Mapping[str, Any]) -> bool:
     """A rosvar error the oracle's lenient reading explains: a missing package or a file in
-    it, an include the oracle could not resolve either, a robot description's xacro (which
-    rosvar expands and the oracle, running no command, never does)."""
+    it, an include the oracle could not resolve either (named by the message, or the file
+    the error is in: a package rosvar finds where the oracle's index does not, Clearpath's
+    ``project_bringup`` inside another package, whose files the oracle never reads), a
+    robot description's xacro (which rosvar expands and the oracle, running no command,
+    never does)."""
     message = str(error.get("message", ""))
     if error.get("code") == "launch-stops" and message.startswith("xacro fails"):
         return True  # the oracle runs no command: a robot description's xacro is rosvar's
@@ -323,7 +330,16 @@ def _explained(error: Mapping[str, Any], expected: Mapping[str, Any]) -> bool:
     if any(f"'{name}'" in message or f"/{name}/" in message for name in names):
         return True  # the package, or a file of it (rosvar's stand-in is empty)
     includes = [str(i.get("location", i)) for i in expected.get("unresolved_includes") or []]
-    return any(os.path.basename(path) in message for path in includes if path)
+    if any(os.path.basename(path) in message for path in includes if path):
+        return True
+    file = str((error.get("location") or {}).get("file") or "")
+    unread = [
+        path[path.index(f"/{name}/") :]
+        for path in includes
+        for name in names
+        if f"/{name}/" in path
+    ]
+    return bool(file) and any(file.endswith(tail) for tail in unread)
 
 
 def _label(node: Mapping[str, Any]) -> str:
@@ -468,7 +484,18 @@ class Report:
         loaded = self.loaded()
         share = f"{100 * self.agreeing() / loaded:.1f} %" if loaded else "-"
         lines.append(f"all: {self.agreeing()} of {loaded} agree ({share})")
-        return lines
+        return [*lines, self.origins()]
+
+    def origins(self) -> str:
+        """How many configurations each rule of the sampler named, loaded and agreeing (a
+        configuration two rules name counts for both)."""
+        parts = []
+        for origin in Origin:
+            named = [o for o in self.outcomes if origin in o.case.origins]
+            loaded = [o for o in named if o.status is not Status.ORACLE_FAILS]
+            agree = sum(o.status is Status.AGREE for o in loaded)
+            parts.append(f"{origin} {len(named)} ({len(loaded)} loaded, {agree} agree)")
+        return "sampled: " + "; ".join(parts)
 
     def render(self, examples: int = 1) -> str:
         lines = self.summary()
@@ -486,6 +513,7 @@ class Report:
                 "repository": o.case.repository,
                 "file": o.case.relative,
                 "arguments": o.case.arguments,
+                "origins": sorted(o.case.origins),
                 "status": str(o.status),
                 "causes": [{"category": c.category, "detail": c.detail} for c in o.causes],
             }

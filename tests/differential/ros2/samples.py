@@ -12,9 +12,10 @@ repository's other launch files pass when they include the file. A configuration
 3. each other value of a ``choices`` list, alone;
 4. the literal arguments of each include of the file found in the repository, together.
 
-Duplicates are dropped, the first kept. What cannot be read literally (a default computed by
-a substitution, an argument declared in a loop) is left out: apart from :data:`PLACEHOLDER`,
-the sample only names values that the repository itself writes.
+Duplicates are dropped, the first kept, with every rule that named it (:class:`Origin`: a
+passed set equal to the defaults counts for both). What cannot be read literally (a default
+computed by a substitution, an argument declared in a loop) is left out: apart from
+:data:`PLACEHOLDER`, the sample only names values that the repository itself writes.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ import re
 import xml.etree.ElementTree as ElementTree
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
+from enum import StrEnum
 from pathlib import Path
 from typing import Any
 
@@ -377,13 +379,30 @@ def guess(name: str, conditions: set[str], files: Mapping[str, Path]) -> str:
     return PLACEHOLDER
 
 
+class Origin(StrEnum):
+    """Why a configuration is in the sample (the module's four rules)."""
+
+    DEFAULTS = "defaults"
+    FLIPPED = "boolean flipped"
+    CHOICE = "other choice"
+    PASSED = "passed by an includer"
+
+
+@dataclass(frozen=True)
+class Sample:
+    """One sampled configuration and every rule that named it."""
+
+    config: Config
+    origins: frozenset[Origin]
+
+
 def configurations(
     reading: Reading,
     passed: Sequence[Config],
     given: Sequence[str] = (),
     conditions: set[str] | None = None,
     files: Mapping[str, Path] | None = None,
-) -> list[Config]:
+) -> list[Sample]:
     """The sample of :mod:`this module <samples>` for one file (defaults first); ``given``
     are the undeclared names a user gives, ``conditions`` the names tested as conditions
     (in the repository), ``files`` its files by name."""
@@ -395,23 +414,23 @@ def configurations(
         argument = declared.get(name, Argument(name, True))
         named = [config[name] for config in passed if name in config] + argument.choices
         base[name] = named[0] if named else guess(name, conditions, files)
-    candidates: list[Config] = [base]
+    candidates: list[tuple[Config, Origin]] = [(base, Origin.DEFAULTS)]
     for name in sorted(set(declared) | set(base)):
         argument = declared.get(name, Argument(name, True))
         value = base.get(name, argument.default)
         if value in BOOLEANS:
-            candidates.append({**base, name: BOOLEANS[value]})
-        candidates += [{**base, name: c} for c in argument.choices if c != value]
+            candidates.append(({**base, name: BOOLEANS[value]}, Origin.FLIPPED))
+        candidates += [({**base, name: c}, Origin.CHOICE) for c in argument.choices if c != value]
     for config in passed:
         known = {k: v for k, v in config.items() if k in declared}
-        candidates.append({**base, **known})
-    unique: dict[tuple[tuple[str, str], ...], Config] = {}
-    for config in candidates:
-        unique.setdefault(tuple(sorted(config.items())), config)
-    return list(unique.values())
+        candidates.append(({**base, **known}, Origin.PASSED))
+    unique: dict[tuple[tuple[str, str], ...], tuple[Config, set[Origin]]] = {}
+    for config, origin in candidates:
+        unique.setdefault(tuple(sorted(config.items())), (config, set()))[1].add(origin)
+    return [Sample(config, frozenset(origins)) for config, origins in unique.values()]
 
 
-def sample(readings: Mapping[Path, Reading], root: Path) -> dict[Path, list[Config]]:
+def sample(readings: Mapping[Path, Reading], root: Path) -> dict[Path, list[Sample]]:
     """The configurations of every launch file of one repository (below ``root``)."""
     passed = passed_values(readings)
     missing = undeclared(readings)

@@ -66,6 +66,18 @@ def test_anonymous_names_and_explained_errors_agree() -> None:
     assert compare(oracle, _answer(_node(name="talker_anon1"), errors=[unread])) == []
 
 
+def test_errors_inside_an_include_the_oracle_could_not_read_are_explained() -> None:
+    """The oracle's index lacks a package rosvar finds (one inside another package): an
+    error in the included file is not held against rosvar; one elsewhere still is."""
+    include = {"location": "/deps/inner_pkg/launch/device.launch.py", "reason": "missing package"}
+    oracle = _answer(missing_packages=["inner_pkg"], unresolved_includes=[include])
+    inside = {"file": "/ws/outer/inner_pkg/launch/device.launch.py", "line": 3, "col": 1}
+    error = {"code": "value-unknown", "message": "a container's name is not known"}
+    assert compare(oracle, _answer(errors=[{**error, "location": inside}])) == []
+    elsewhere = {**inside, "file": "/ws/outer/other_pkg/launch/device.launch.py"}
+    assert compare(oracle, _answer(errors=[{**error, "location": elsewhere}]))
+
+
 def test_remappings_differ_in_order_only_where_the_order_matters() -> None:
     rules = [["a", "x"], ["b", "y"]]
     swapped = _answer(_node(remappings=rules[::-1]))

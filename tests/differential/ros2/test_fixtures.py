@@ -14,6 +14,7 @@ from oracle.ros2_client import canonical_nodes, requires_ros2_oracle, resolution
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
 
+from .helpers_cases import CASES as HELPERS_CASES
 from .names_cases import CASES as NAMES_CASES
 
 pytestmark = requires_ros2_oracle
@@ -544,6 +545,123 @@ def generate_launch_description():
             {"imu_topic": "it's \\ ''"},
         ],
     ),
+    "python-values-changed-under-launch-time-ifs": (
+        {
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+class Options:
+    def __init__(self):
+        self.mode = 'plain'
+
+
+def spawner(controllers, active=True):
+    flags = ['--inactive'] if not active else []
+    return Node(package='pkg', executable='spawner', name='spawn_' + ('a' if active else 'i'),
+                arguments=['--cm', '/cm'] + flags + controllers)
+
+
+def setup(context):
+    chosen = LaunchConfiguration('chosen').perform(context)
+    active = ['state', 'io']
+    inactive = ['scaled', 'plain', 'fwd']
+    if LaunchConfiguration('activate').perform(context) == 'true':
+        active.append(chosen)
+        inactive.remove(chosen)
+    if LaunchConfiguration('mock').perform(context) == 'true':
+        active.remove('io')
+    params = {'rate': 10}
+    remaps = [('in', 'raw')]
+    options = Options()
+    if LaunchConfiguration('fast').perform(context) == 'true':
+        params['rate'] = 100
+        params.update({'burst': True})
+        remaps += [('out', 'fast_out')]
+        options.mode = 'fast'
+    else:
+        params.setdefault('slow', 1)
+        del params['rate']
+    names = ['n1']
+    names.append('n2') if chosen == 'plain' else names.extend(['n3', 'n4'])
+    nodes = [
+        spawner(active),
+        spawner(inactive, active=False),
+        Node(package='pkg', executable='tuned', name='tuned_' + options.mode,
+             parameters=[params, {'active': active}], remappings=remaps,
+             arguments=[' '.join(active), str(len(inactive))]),
+    ]
+    for name in names:
+        nodes.append(Node(package='pkg', executable='n', name=name))
+    return nodes
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('chosen', default_value='scaled'),
+        DeclareLaunchArgument('activate', default_value='true'),
+        DeclareLaunchArgument('mock', default_value='false'),
+        DeclareLaunchArgument('fast', default_value='false'),
+        OpaqueFunction(function=setup),
+    ])
+""",
+        },
+        [
+            {},
+            {"activate": "false"},
+            {"chosen": "plain"},
+            {"chosen": "fwd", "mock": "true"},
+            {"fast": "true"},
+            {"chosen": "plain", "fast": "true", "activate": "false", "mock": "true"},
+            {"chosen": "other"},
+            {"chosen": "other", "activate": "false"},
+        ],
+    ),
+    "python-loops-over-launch-time-lists": (
+        {
+            "main.launch.py": """import yaml
+from itertools import chain
+
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node, PushRosNamespace
+
+
+def per_camera(namespace):
+    return [GroupAction([PushRosNamespace(namespace),
+                         Node(package='pkg', executable='detect', name='detector')]),
+            Node(package='pkg', executable='relay', name='relay_' + namespace)]
+
+
+def setup(context):
+    cameras = yaml.load(LaunchConfiguration('cameras').perform(context),
+                        Loader=yaml.FullLoader)
+    nodes = list(chain(*[per_camera(camera) for camera in cameras]))
+    for index, topic in enumerate(['a', 'b']):
+        nodes.append(Node(package='pkg', executable='t', name=f'fixed_{index}_{topic}'))
+    for word in LaunchConfiguration('words').perform(context).split(','):
+        nodes.append(Node(package='pkg', executable='w', name='word_' + word.strip()))
+    return nodes
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('cameras', default_value='[camera6, camera7]'),
+        DeclareLaunchArgument('words', default_value='x'),
+        OpaqueFunction(function=setup),
+    ])
+""",
+        },
+        [
+            {},
+            {"cameras": "[]"},
+            {"cameras": "['c1']", "words": "p, q,r"},
+            {"cameras": "[a, b, c, d, e, f, g, h]", "words": "only"},
+        ],
+    ),
     "python-workspace-modules": (
         {
             "pkg_helpers/__init__.py": "",
@@ -1033,6 +1151,7 @@ def generate_launch_description():
 
 
 CASES.update(NAMES_CASES)
+CASES.update(HELPERS_CASES)
 
 LENIENT = frozenset({"find-exec-not-searched"})
 """Fixtures the oracle loads leniently: ``$(find-exec)`` of a program not on its ``PATH``."""

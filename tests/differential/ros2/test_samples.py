@@ -7,6 +7,7 @@ from pathlib import Path
 
 from .samples import (
     PLACEHOLDER,
+    Origin,
     Reading,
     configurations,
     passed_values,
@@ -78,11 +79,13 @@ def test_python_declarations_and_includes(tmp_path: Path) -> None:
     assert outer.arguments["robot_ip"].required
     assert outer.arguments["computed"].default is None
     assert not outer.arguments["computed"].required
-    assert configurations(outer, []) == [
+    sampled = configurations(outer, [])
+    assert [s.config for s in sampled] == [
         {"robot_ip": PLACEHOLDER},
         {"robot_ip": PLACEHOLDER, "mode": "slow"},
         {"robot_ip": PLACEHOLDER, "use_sim": "True"},
     ]
+    assert [s.origins for s in sampled] == [{Origin.DEFAULTS}, {Origin.CHOICE}, {Origin.FLIPPED}]
 
 
 def test_values_passed_by_includers_and_choices(tmp_path: Path) -> None:
@@ -91,16 +94,26 @@ def test_values_passed_by_includers_and_choices(tmp_path: Path) -> None:
     assert passed["inner.launch.xml"] == [{"model": "ur5e"}]  # LaunchConfiguration left out
     assert passed["leaf.launch.yaml"] == [{"flag": "true"}]  # $(var model) left out
     inner = readings[tmp_path / "inner.launch.xml"]
-    assert configurations(inner, passed["inner.launch.xml"]) == [
+    sampled = configurations(inner, passed["inner.launch.xml"])
+    assert [s.config for s in sampled] == [
         {"model": "ur5e"},
         {"model": "ur5e", "debug": "false"},
         {"model": "ur5e", "level": "1"},
     ]
+    # the includer's set is the defaults (model is required and takes the passed value)
+    assert sampled[0].origins == {Origin.DEFAULTS, Origin.PASSED}
     leaf = readings[tmp_path / "leaf.launch.yaml"]
-    assert configurations(leaf, passed["leaf.launch.yaml"]) == [
+    sampled = configurations(leaf, passed["leaf.launch.yaml"])
+    assert [s.config for s in sampled] == [
         {"name": PLACEHOLDER},
         {"name": PLACEHOLDER, "flag": "true"},
         {"name": PLACEHOLDER, "nested": "False"},
+    ]
+    # flag=true is both the flipped default and what the includer passes
+    assert [s.origins for s in sampled] == [
+        {Origin.DEFAULTS},
+        {Origin.FLIPPED, Origin.PASSED},
+        {Origin.FLIPPED},
     ]
 
 
@@ -143,7 +156,7 @@ def test_configurations_read_but_never_declared_are_given(tmp_path: Path) -> Non
     }
     parameters = str(tmp_path / "config" / "ekf.param.yaml")
     base = {"ekf_param_path": parameters, "use_gui": "true", "vehicle_model": PLACEHOLDER}
-    assert sample(readings, tmp_path)[tmp_path / "bringup.launch.xml"] == [
+    assert [s.config for s in sample(readings, tmp_path)[tmp_path / "bringup.launch.xml"]] == [
         base,
         {**base, "use_gui": "false"},
     ]

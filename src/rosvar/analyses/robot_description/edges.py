@@ -31,17 +31,21 @@ from rosvar.logic.atoms import SlotAtom
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER
+from rosvar.workspace.interfaces.model import Interfaces
 
 PARTIAL_CODES = frozenset({"xacro-unsupported", "xacro-too-large", "package-unknown"})
 
 
 class Simulation:
     """What a simulation adds to the graph of the launch models of one analysis, read once
-    per model: the plugins of the descriptions their spawners load, their bridges."""
+    per model: the plugins of the descriptions their spawners load, their bridges, the
+    controllers their spawners load (their types' uses from ``interfaces``)."""
 
-    def __init__(self, analysis: Analysis) -> None:
+    def __init__(self, analysis: Analysis, interfaces: Interfaces) -> None:
         workspace = analysis.workspace
         self.space = analysis.space
+        self.interfaces = interfaces
+        self.confinement = workspace.confinement()
         self.reader = XacroReader(
             analysis.space, workspace.find, analysis.domains.env_domain, workspace.confinement()
         )
@@ -77,7 +81,7 @@ class Simulation:
             self._spawned[model.file] = spawns
             edges, bridge_gaps = self.bridges.of(model)
             gaps.extend(bridge_gaps)
-            edges.extend(controller_edges(self.space, model))
+            edges.extend(controller_edges(self.space, model, self.interfaces, self.confinement))
             for spawn in spawns:
                 edges.extend(self._spawn_edges(model, spawn, gaps))
                 gaps.extend(_description_gaps(self.space, spawn))
@@ -200,12 +204,16 @@ class ConfigurationEdges:
 
 
 def configuration_edges(
-    analysis: Analysis, files: Sequence[str], args: Mapping[str, str], env: Mapping[str, str]
+    analysis: Analysis,
+    files: Sequence[str],
+    args: Mapping[str, str],
+    env: Mapping[str, str],
+    interfaces: Interfaces,
 ) -> ConfigurationEdges:
     """The variational edges of ``files`` restricted to the configuration ``args``/``env``
     (``rosvar resolve``'s), read before the restriction is made: reading a description
     declares the environment variables it reads."""
-    simulation = Simulation(analysis)
+    simulation = Simulation(analysis, interfaces)
     models = [analysis.model(file) for file in files]
     for model in models:
         simulation.edges(model)

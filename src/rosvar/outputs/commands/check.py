@@ -49,7 +49,11 @@ def checked(options: argparse.Namespace, paths: Sequence[str] | None = None) -> 
     interfaces = interfaces_of(analysis.workspace, options)
     models = analysis.all_models(progress)
     findings = check_models(
-        analysis.space, models, interfaces, analysis.workspace.confinement(), Simulation(analysis)
+        analysis.space,
+        models,
+        interfaces,
+        analysis.workspace.confinement(),
+        Simulation(analysis, interfaces),
     )
     workspace = analysis.workspace
     prints = Fingerprints(

@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import argparse
+import sys
 
+from rosvar.diagnostics import Severity
 from rosvar.outputs.commands.exit_codes import EXIT_INPUT, EXIT_OK
 from rosvar.outputs.commands.loading import analysis_of
 from rosvar.outputs.commands.terminal import print_json, progress
@@ -29,7 +31,11 @@ def cmd_metrics(options: argparse.Namespace) -> int:
         analysis = analysis_of(options, paths=[path])
         if analysis is None:
             return EXIT_INPUT
-        rows[path] = metrics_document(compute(analysis, extract(analysis, progress=progress)))
+        features = extract(analysis, progress=progress)
+        for diagnostic in features.diagnostics:
+            if diagnostic.severity is Severity.ERROR:  # a file not read counts for nothing
+                print(f"rosvar: {diagnostic}", file=sys.stderr)
+        rows[path] = metrics_document(compute(analysis, features))
     if options.json:
         print_json(next(iter(rows.values())) if len(rows) == 1 else rows)
         return EXIT_OK

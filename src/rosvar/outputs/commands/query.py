@@ -37,7 +37,7 @@ def cmd_query(options: argparse.Namespace) -> int:
         return EXIT_INPUT
     analysis.all_models(progress)  # interpreted once, with the progress shown
     interfaces = interfaces_of(analysis.workspace, options)
-    simulation = Simulation(analysis)
+    simulation = Simulation(analysis, interfaces)
     engine = QueryEngine(analysis, collections=channel_collections(interfaces, simulation))
     warn_unknown_args(analysis, [m.file for m in engine.models], args)
     try:

@@ -53,15 +53,15 @@ def cmd_resolve(options: argparse.Namespace) -> int:
         env_values={k: [v] for k, v in env.items()},
     )
     warn_unknown_args(analysis, files, args)
-    # before resolving: reading the descriptions declares the environment they read
-    simulated = configuration_edges(analysis, files, args, env)
-    result = analysis.resolve(files, args, env)
-    if result.ok:
-        result.errors.extend(simulated.errors)
     interfaces = interfaces_of(workspace, options)
     for diagnostic in interfaces.diagnostics:
         if diagnostic.code == "hints-invalid":
             print(diagnostic, file=sys.stderr)
+    # before resolving: reading the descriptions declares the environment they read
+    simulated = configuration_edges(analysis, files, args, env, interfaces)
+    result = analysis.resolve(files, args, env)
+    if result.ok:
+        result.errors.extend(simulated.errors)
     graph = resolved_graph(result.nodes, interfaces, result.params, simulated.edges)
     if options.json:
         print_json({**resolution_document(result), **graph_document(graph)})

@@ -18,11 +18,13 @@ from rosvar.diagnostics import Diagnostic, Location
 
 
 class NodeKind(enum.StrEnum):
-    """How a launch file starts the code: a process, or a class loaded into a manager."""
+    """How a launch file starts the code: a process, or a class loaded into a manager (a
+    nodelet manager, a component container, a controller manager)."""
 
     NODE = "node"
     NODELET = "nodelet"
     COMPONENT = "component"  # ROS 2: a class a container loads (``plugin``)
+    CONTROLLER = "controller"  # a controller type a controller manager loads (NAME/type)
 
 
 class Role(enum.StrEnum):

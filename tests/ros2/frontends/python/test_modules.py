@@ -10,10 +10,11 @@ import pytest
 
 from rosvar.diagnostics import Diagnostic, DiagnosticSink
 from rosvar.files import Confinement
+from rosvar.frontends.entity import Entity
 from rosvar.ros2.frontends.python import interpreter
 from rosvar.ros2.frontends.python.interpreter import Interpreter
 from rosvar.ros2.frontends.python.modules import ModulePath
-from rosvar.ros2.frontends.python.values import Module, Unknown, Value
+from rosvar.ros2.frontends.python.values import Instance, Module, Unknown, Value
 
 SHARE = "import os\nfrom ament_index_python.packages import get_package_share_directory as share\n"
 """The imports of the launch files below that name a package's share directory."""
@@ -173,4 +174,44 @@ def test_a_dataclass_is_made_of_its_fields(tmp_path: Path) -> None:
         "v = (a.path, a.total(), b.path, b.total(), Configs().robot)\n",
     )
     assert names["v"] == ("p", 3, "q", 6, {})
+    assert diagnostics == []
+
+
+def test_a_subclass_of_a_launch_action_is_that_action_with_its_super_arguments(
+    tmp_path: Path,
+) -> None:
+    package(
+        tmp_path,
+        "helpers",
+        {
+            "helpers_py/__init__.py": (
+                "from launch.actions import DeclareLaunchArgument\n"
+                "from launch_ros.actions import Node\n"
+                "class Flag(DeclareLaunchArgument):\n"
+                "    def __init__(self, name, *, default_value=False, **kwargs):\n"
+                "        super().__init__(name, default_value=str(default_value), **kwargs)\n"
+                "class Plain(Node):\n"
+                "    pass\n"
+                "class Helper:\n"
+                "    def __init__(self):\n"
+                "        super().__init__()\n"
+            )
+        },
+    )
+    package(tmp_path, "pkg", {})
+    names, diagnostics = run(
+        tmp_path,
+        "from helpers_py import Flag, Plain, Helper\n"
+        "a = Flag('debug', default_value=True, description='d')\n"
+        "n = Plain(package='p', executable='e')\n"
+        "h = Helper()\n",
+    )
+    arg, node = names["a"], names["n"]
+    assert isinstance(arg, Entity) and isinstance(node, Entity)
+    assert (arg.tag, arg.attributes) == (
+        "arg",
+        {"name": "debug", "default": "True", "description": "d"},
+    )
+    assert (node.tag, node.attributes) == ("node", {"pkg": "p", "exec": "e"})
+    assert isinstance(names["h"], Instance)
     assert diagnostics == []

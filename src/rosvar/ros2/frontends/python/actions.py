@@ -25,6 +25,7 @@ from rosvar.ros2.frontends.python.values import (
     Condition,
     Conditional,
     Description,
+    Dynamic,
     Key,
     LaunchYaml,
     ParameterFile,
@@ -127,9 +128,16 @@ def _named_parameters(call: Call, parent: Entity, tag: str, values: dict[Key, Va
             child.attributes["value"] = typed_text(items)
             child.typed = child.typed | {"value"}
         else:
+            if isinstance(value, Conditional):  # a list chosen at launch time: its Python
+                chosen = launch_time.source(value)  # expression, as a parameter's value
+                value = value if chosen is None else Dynamic(chosen, None)
             set_attribute(call, child, "value", value)
             if isinstance(value, str) and reads_as_other_value(value):
                 child.attributes["type"] = "str"  # a literal stays a string, unlike XML's
+            elif isinstance(value, Dynamic) and value.kind is str:
+                # a launch-time Python string (`.perform(context)`, `str(x)`) too: launch_ros
+                # reads by YAML rules only the substitutions it performs itself
+                child.attributes["type"] = "str"
 
 
 def _write_pairs(call: Call, entity: Entity, param: Param, value: Value) -> None:
@@ -252,17 +260,17 @@ def _action(spec: Action) -> Callable[[Call], Value]:
 
 
 def _branching(spec: Action, call: Call) -> tuple[Call, Conditional, Call, Call] | None:
-    """An attribute given a value that differs by the branches of an ``if`` on a launch-time
-    value: the value, and the call as each branch makes it."""
-    by_name = {param.python: param for param in spec.params}
-    for index, (param, value) in enumerate(zip(spec.params, call.args, strict=False)):
-        if param.slot is Slot.ATTRIBUTE and isinstance(value, Conditional):
+    """An argument given a value that differs by the branches of an ``if`` on a launch-time
+    value (an attribute, a whole list of arguments or parameters): the value, and the call
+    as each branch makes it."""
+    for index, value in enumerate(call.args[: len(spec.params)]):
+        if isinstance(value, Conditional):
             args = (list(call.args), list(call.args))
             args[0][index], args[1][index] = value.then, value.otherwise
             return call, value, replace(call, args=args[0]), replace(call, args=args[1])
+    names = {param.python for param in spec.params}
     for name, value in call.kwargs.items():
-        given = by_name.get(name)
-        if given is not None and given.slot is Slot.ATTRIBUTE and isinstance(value, Conditional):
+        if name in names and isinstance(value, Conditional):
             then = replace(call, kwargs={**call.kwargs, name: value.then})
             return call, value, then, replace(call, kwargs={**call.kwargs, name: value.otherwise})
     return None

@@ -10,6 +10,7 @@ from the launch API's registries (:mod:`rosvar.ros2.api`), with the helpers that
 
 from __future__ import annotations
 
+import functools
 import posixpath
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -36,6 +37,7 @@ from rosvar.ros2.frontends.python.values import (
     Condition,
     Conditional,
     Dynamic,
+    FilePath,
     Module,
     ParameterFile,
     ParameterValue,
@@ -95,17 +97,28 @@ class Call:
             return Text.of(unknown(value.what))
         if isinstance(value, Source):
             return value.path
+        if isinstance(value, FilePath):
+            return path_text(value)
         if isinstance(value, Conditional):  # the text of the branch taken
             then, otherwise = (self.text(value.then), self.text(value.otherwise))
             chosen = launch_time.chosen(
                 value.test, launch_time.quoted(then), launch_time.quoted(otherwise), str
             )
             return launch_time.as_text(chosen)
+        if isinstance(value, Entity) and value.tag == "group" and len(value.children) == 1:
+            return self.text(value.children[0])  # an action put under an 'if': itself
         if isinstance(value, Entity) and value.tag == "node_container":  # a target's name
             return Text.of(Sub(NODE_NAME, (Text.of(str(value.location)),)))
         if value is None or isinstance(value, bool | int | float):
             return Text.of(typed_text(value))
         return Text.of(unknown(self.not_followed(f"{type(value).__name__} used as text").what))
+
+
+def path_text(path: FilePath) -> Text:
+    """The text of a ``pathlib`` path."""
+    if path.head is None:
+        return Text.of(path.tail or ".")
+    return Text.of(path.head, "/", path.tail) if path.tail else path.head
 
 
 Builder = Callable[[Call], Value]
@@ -177,11 +190,23 @@ def _substitution(name: str, signature: Signature) -> Builder:
     return build
 
 
+def _performed(builder: Builder) -> Builder:
+    """A function giving the string a substitution gives (``get_package_share_directory``):
+    a ``str`` at launch time, not a substitution object (``isinstance(p, str)`` holds)."""
+
+    def build(call: Call) -> Value:
+        made = builder(call)
+        return launch_time.performed(made) if isinstance(made, Text) else made
+
+    return build
+
+
 for _substitution_entry in SUBSTITUTIONS:
     for _signature in _substitution_entry.signatures:
-        CALLS[python_name(_signature.qualified)] = _substitution(
-            _substitution_entry.names[0], _signature
-        )
+        _builder = _substitution(_substitution_entry.names[0], _signature)
+        if _signature.function:
+            _builder = _performed(_builder)
+        CALLS[python_name(_signature.qualified)] = _builder
 
 
 def _fold(operator: str, empty: str) -> Builder:
@@ -266,6 +291,45 @@ for _condition_entry in CONDITIONS:
 for _source_entry in SOURCES:
     for _qualified in _source_entry.python:
         CALLS[python_name(_qualified)] = _source
+
+
+SubstitutionMethod = Callable[[Sub, Call], Value]
+
+SUBSTITUTION_METHODS: dict[tuple[str, str], SubstitutionMethod] = {}
+"""Methods of a substitution object a launch file calls, by (``$(name)``, method): the
+object is the text of that one substitution."""
+
+
+def _find(substitution: Sub, call: Call) -> Value:
+    """launch_ros's ``FindPackageShare(p).find(name)`` (``FindPackagePrefix``): the
+    directory of package ``name``, as ``get_package_share_directory(name)`` gives it (the
+    object's own package plays no part)."""
+    return Text.of(Sub(substitution.name, (call.text(call.arg(0, "package_name")),)))
+
+
+for _found in ("find-pkg-share", "find-pkg-prefix"):
+    SUBSTITUTION_METHODS[_found, "find"] = _find
+
+
+def substitution_method(receiver: Text, name: str) -> Builder | None:
+    """The method ``name`` of the substitution object ``receiver`` is, if it is one."""
+    substitution = receiver.parts[0] if len(receiver.parts) == 1 else None
+    if not isinstance(substitution, Sub):
+        return None
+    method = SUBSTITUTION_METHODS.get((substitution.name, name))
+    return None if method is None else functools.partial(method, substitution)
+
+
+@_register("launch", "normalize_to_list_of_substitutions")
+def _normalized(call: Call) -> Value:
+    """launch's ``normalize_to_list_of_substitutions(subs)``: the text they give."""
+    return call.text(call.arg(0, "subs"))
+
+
+@_register("launch", "perform_substitutions")
+def _performed_substitutions(call: Call) -> Value:
+    """launch's ``perform_substitutions(context, subs)``: their string at launch time."""
+    return launch_time.performed(call.text(call.arg(1, "subs")))
 
 
 @_register("launch_ros", "ParameterValue")

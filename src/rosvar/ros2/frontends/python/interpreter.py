@@ -18,6 +18,7 @@ from __future__ import annotations
 import ast
 import builtins
 import contextlib
+import functools
 import os
 import string
 from collections.abc import Callable, Iterator
@@ -28,15 +29,19 @@ from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.files import read_file
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.registry import python_name
-from rosvar.ros2.frontends.python import launch_time, reads
+from rosvar.ros2.frontends.python import launch_time, paths, patterns, reads, xacro_calls
 from rosvar.ros2.frontends.python.actions import add_actions
+from rosvar.ros2.frontends.python.branches import Forwarding, Journal, Mutable, put
 from rosvar.ros2.frontends.python.calls import (
     CALLS,
     NOT_FOLLOWED,
     REASONS,
     Call,
     join_path,
+    path_text,
+    substitution_method,
 )
+from rosvar.ros2.frontends.python.default_files import DefaultFiles
 from rosvar.ros2.frontends.python.launch_time import OPERATORS, performed
 from rosvar.ros2.frontends.python.modules import MAX_MODULE_BYTES, MAX_MODULES, ModulePath
 from rosvar.ros2.frontends.python.text import Sub, Text, render
@@ -48,19 +53,23 @@ from rosvar.ros2.frontends.python.values import (
     Description,
     Dynamic,
     FileHandle,
+    FilePath,
     Function,
     Instance,
     Key,
     LaunchContext,
     LaunchYaml,
+    Match,
     Method,
     Module,
     ModuleScope,
+    Pattern,
     Scope,
     SourceFile,
     Super,
     Unknown,
     Value,
+    XacroDocument,
 )
 
 MAX_STEPS = 500_000
@@ -74,11 +83,17 @@ MAX_INT_BITS = 4096
 CHARS_PER_STEP = 64
 """Characters of a string built that cost one step (a string is copied a word at a time)."""
 
+MAX_UNROLLED = 8
+"""Items of a launch-time list (its length known at launch time only) a loop over it reads,
+each under its own test; an item beyond them is an unknown value."""
+
 MAX_IMPORT_DEPTH = 20
 """Modules being read at once (a module importing another...): deeper imports stay symbolic."""
 MODULE_NAME = "__launch__"
 """``__name__`` while the file is read: launch imports it as a module, not as ``__main__``."""
 DESCRIPTION = "composable_node"
+REGISTERING = frozenset({("launch", "expose_substitution"), ("launch", "expose_action")})
+"""Class decorators of launch that register the class with the frontends and return it."""
 """The tag of a composable node description, which carries its own condition."""
 
 
@@ -94,6 +109,16 @@ class _Break(Exception):
 
 class _Continue(Exception):
     pass
+
+
+class _Raise(Exception):
+    """An exception the file raises: ``value`` (an object of its class, or a builtin
+    exception's name as a :class:`Module`), raised at ``location``."""
+
+    def __init__(self, value: Value, location: Location) -> None:
+        super().__init__()
+        self.value = value
+        self.location = location
 
 
 class OutOfBudget(Exception):
@@ -237,9 +262,15 @@ class Interpreter:
         self.depth = 0
         self.guards: list[Text] = []
         """The Python tests of the launch-time ``if``s being read, innermost last."""
+        self.journals: list[Journal] = []
+        """The mutable values changed by each launch-time branch being read, innermost last."""
+        self.forwarding = Forwarding()
+        """Mutable values that stand for a choice of values (see :mod:`.branches`)."""
         self.created: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
         """Actions made under guards, with the guards (so a branch does not guard twice)."""
         self.descriptions: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
+        self.default_files = DefaultFiles()
+        """Launch arguments' defaults, for the files a function opens by them."""
         """Composable node descriptions made conditional, by id: the description as written
         and the tests of its condition."""
         self.statements: dict[type[ast.stmt], Callable[[Any, Scope], None]] = {
@@ -247,6 +278,7 @@ class Interpreter:
             ast.Assign: self._assign,
             ast.AnnAssign: self._ann_assign,
             ast.AugAssign: self._aug_assign,
+            ast.Delete: self._delete,
             ast.Return: self._return,
             ast.For: self._for,
             ast.FunctionDef: self._function_def,
@@ -255,6 +287,7 @@ class Interpreter:
             ast.ImportFrom: self._import_from,
             ast.Try: self._try,
             ast.With: self._with,
+            ast.Raise: self._raise,
             ast.Break: self._break,
             ast.Continue: self._continue,
             ast.Pass: lambda node, scope: None,
@@ -299,10 +332,54 @@ class Interpreter:
         self.sink.warning(NOT_FOLLOWED, f"{what} is not followed", self.location(node))
         return Unknown(what)
 
-    def step(self) -> None:
-        self.steps += 1
+    def step(self, count: int = 1) -> None:
+        self.steps += count
         if self.steps > MAX_STEPS:
             raise OutOfBudget
+
+    def touch(self, value: Mutable) -> None:
+        """Called before ``value`` changes in place: a branch being read keeps its content
+        (the copy counted against the budget)."""
+        if self.journals:
+            self.step(1 + len(value.attributes if isinstance(value, Instance) else value))
+            self.journals[-1].touch(value, self.forwarding)
+
+    def resolved(self, value: Value) -> Value:
+        """The value a mutable value stands for since a launch-time branch changed it."""
+        return self.forwarding.resolved(value)
+
+    def settled(self, value: Value) -> Value:
+        """``value`` with every value inside it that a launch-time branch changed into a
+        choice replaced by that choice (new lists, dicts and choices where one changed;
+        each container a step): what leaves the reading, to the launch API, holds no
+        stale value."""
+        done: dict[int, Value] = {}
+
+        def settle(item: Value) -> Value:
+            item = self.resolved(item)
+            if not isinstance(item, list | tuple | dict | Conditional):
+                return item
+            if id(item) in done:
+                return done[id(item)]
+            done[id(item)] = item  # a container holding itself stays itself
+            self.step()
+            result: Value = item
+            if isinstance(item, Conditional):
+                sides = settle(item.then), settle(item.otherwise)
+                if sides[0] is not item.then or sides[1] is not item.otherwise:
+                    result = Conditional(item.test, sides[0], sides[1])
+            elif isinstance(item, dict):
+                pairs = {key: settle(inner) for key, inner in item.items()}
+                if any(pairs[key] is not inner for key, inner in item.items()):
+                    result = pairs
+            else:
+                items = [settle(inner) for inner in item]
+                if any(new is not old for new, old in zip(items, item, strict=True)):
+                    result = items if isinstance(item, list) else tuple(items)
+            done[id(item)] = result
+            return result
+
+        return settle(value)
 
     def charge(self, value: object) -> None:
         """Count the expanded size of a value an operation built or walked, so that work
@@ -346,7 +423,7 @@ class Interpreter:
         elif isinstance(target, ast.Tuple | ast.List):
             items: list[Value]
             if isinstance(value, list | tuple) and len(value) == len(target.elts):
-                items = list(value)
+                items = [self.resolved(item) for item in value]
             else:
                 if not isinstance(value, Unknown):
                     value = self.not_followed("unpacking of a value of unknown length", target)
@@ -356,34 +433,82 @@ class Interpreter:
         elif isinstance(target, ast.Attribute):
             owner = self.expr(target.value, scope)
             if isinstance(owner, Instance):
+                self.touch(owner)
                 owner.attributes[target.attr] = value
             elif isinstance(owner, Class | ModuleScope):
                 owner.scope.names[target.attr] = value
+            elif isinstance(owner, Conditional):
+                self.distribute(
+                    [owner], lambda values: self._set_attribute(values[0], target, value), target
+                )
             elif not isinstance(owner, Unknown):
                 self.not_followed(f"assignment to an attribute of a {type(owner).__name__}", target)
         elif isinstance(target, ast.Subscript):
             container = self.expr(target.value, scope)
             index = self.expr(target.slice, scope)
-            if isinstance(container, dict) and isinstance(index, Key):
-                if self.guards:
-                    if index not in container:
-                        self.not_followed(
-                            "an item set under an 'if' on a launch-time value", target
-                        )
-                        return
-                    value = self.choose(self.guard(), value, container[index], target)
-                container[index] = value
-                return
-            if (
-                isinstance(container, list)
-                and isinstance(index, int)
-                and (-len(container) <= index < len(container))
-            ):
-                container[index] = value
-                return
-            self.not_followed("assignment to an item of an unknown container", target)
+            self.distribute(
+                [container, index],
+                lambda values: self._set_item(values[0], values[1], value, target),
+                target,
+            )
         else:
             self.not_followed(f"assignment to a '{type(target).__name__}'", target)
+
+    def _set_attribute(self, owner: Value, target: ast.Attribute, value: Value) -> Value:
+        if isinstance(owner, Instance):
+            self.touch(owner)
+            owner.attributes[target.attr] = value
+        elif not isinstance(owner, Unknown):
+            self.not_followed(f"assignment to an attribute of a {type(owner).__name__}", target)
+        return None
+
+    def _set_item(self, container: Value, index: Value, value: Value, target: ast.AST) -> Value:
+        """``container[index] = value``."""
+        if isinstance(container, dict):
+            index = _dict_key(index)
+        if isinstance(container, dict) and isinstance(index, Key):
+            self.touch(container)
+            container[index] = value
+            return None
+        if isinstance(container, list) and isinstance(index, int) and _within(container, index):
+            self.touch(container)
+            container[index] = value
+            return None
+        if not isinstance(container, Unknown):
+            self.not_followed("assignment to an item of an unknown container", target)
+        return None
+
+    def _delete(self, node: ast.Delete, scope: Scope) -> None:
+        """``del name``, ``del d[key]``, ``del l[i]``."""
+        for target in node.targets:
+            if isinstance(target, ast.Name):
+                scope.names.pop(target.id, None)
+            elif isinstance(target, ast.Subscript) and not isinstance(target.slice, ast.Slice):
+                self._delete_subscript(target, scope)
+            else:
+                self.not_followed(f"'del' of a '{type(target).__name__}'", target)
+
+    def _delete_subscript(self, target: ast.Subscript, scope: Scope) -> None:
+        container = self.expr(target.value, scope)
+        index = self.expr(target.slice, scope)
+        self.distribute(
+            [container, index],
+            lambda values: self._delete_item(values[0], values[1], target),
+            target,
+        )
+
+    def _delete_item(self, container: Value, index: Value, target: ast.AST) -> Value:
+        if isinstance(container, dict) and isinstance(index, Key) and index in container:
+            self.touch(container)
+            del container[index]
+            return None
+        if isinstance(container, list) and isinstance(index, int) and _within(container, index):
+            self.touch(container)
+            del container[index]
+            return None
+        if not isinstance(container, Unknown):
+            self.not_followed("'del' of an item not known statically", target)
+        return None
 
     def _expression_statement(self, node: ast.Expr, scope: Scope) -> None:
         self.expr(node.value, scope)
@@ -399,11 +524,21 @@ class Interpreter:
 
     def _aug_assign(self, node: ast.AugAssign, scope: Scope) -> None:
         current = self.expr(node.target, scope)
-        value = self.binary(node.op, current, self.expr(node.value, scope), node)
-        if isinstance(current, list) and isinstance(value, list):
-            current[:] = value  # += extends the list in place
-            value = current
+        right = self.expr(node.value, scope)
+        if isinstance(current, list | Conditional) and isinstance(node.op, ast.Add):
+            extended = self.distribute(  # += extends the list in place
+                [current], lambda values: self._extend(values[0], right, node), node
+            )
+            if not isinstance(extended, Unknown):
+                return
+        value = self.binary(node.op, current, right, node)
         self.assign(node.target, value, scope)
+
+    def _extend(self, receiver: Value, items: Value, node: ast.AST) -> Value:
+        """``receiver += items`` on a list: the list extended; anything else, unknown."""
+        if not isinstance(receiver, list):
+            return Unknown("not a list")
+        return self.call_method(Method(receiver, "extend"), [items], {}, node)
 
     def _return(self, node: ast.Return, scope: Scope) -> None:
         raise _Return(None if node.value is None else self.expr(node.value, scope))
@@ -411,9 +546,16 @@ class Interpreter:
     def _if(self, node: ast.If, scope: Scope, rest: list[ast.stmt] | None) -> bool:
         """Reads the ``if``; whether it read ``rest`` too (the rest of a function's body,
         read in the branch that does not return, when one branch does)."""
-        value = self.expr(node.test, scope)
+        value = self.tested(self.expr(node.test, scope), node.test)
         if isinstance(value, Dynamic):
-            return self._branches(value.source, node, scope, rest)
+            return self._branches(
+                value.source,
+                lambda: self.block(node.body, scope),
+                lambda: self.block(node.orelse, scope),
+                node,
+                scope,
+                rest,
+            )
         test = truth(value)
         if test is None:
             self.not_followed("an 'if' on a value not known statically (neither branch)", node)
@@ -421,30 +563,62 @@ class Interpreter:
             self.block(node.body if test else node.orelse, scope, tail=rest is not None)
         return False
 
+    def tested(self, value: Value, node: ast.AST) -> Value:
+        """The truth of a value chosen at launch time (a launch-time boolean), else itself."""
+        if not isinstance(value, Conditional):
+            return value
+
+        def truth_of(values: list[Value]) -> Value:
+            test = truth(values[0])
+            return Unknown("a condition not known statically") if test is None else test
+
+        return self.distribute([value], truth_of, node)
+
     def _branches(
-        self, test: Text, node: ast.If, scope: Scope, rest: list[ast.stmt] | None
+        self,
+        test: Text,
+        then_run: Callable[[], None],
+        otherwise_run: Callable[[], None],
+        node: ast.AST,
+        scope: Scope,
+        rest: list[ast.stmt] | None,
     ) -> bool:
-        """Both branches of an ``if`` on a launch-time value, each under its condition; the
-        names they set, and what they return, chosen by ``test`` after."""
+        """Both branches of an ``if`` on a launch-time value, each under its condition and
+        on its own copy of what it changes (:mod:`.branches`); the names they set, the
+        values they change and what they return, chosen by ``test`` after."""
         before = dict(scope.names)
-        then = self._guarded(launch_time.truth(test), node.body, scope)
+        then, then_journal, _ = self._branch(launch_time.truth(test), then_run, node)
         after_then = dict(scope.names)
         scope.names = dict(before)
-        otherwise = self._guarded(launch_time.negated(test), node.orelse, scope)
+        otherwise, otherwise_journal, _ = self._branch(
+            launch_time.negated(test), otherwise_run, node
+        )
         returned = (then is not None, otherwise is not None)
         if returned == (True, False) or returned == (False, True):
             if rest is None:
+                self.merge(test, then_journal, otherwise_journal, node)
                 value = self.not_followed(
                     "a 'return' in one branch of an 'if' on a launch-time value, in a loop "
                     "or a nested block",
                     node,
                 )
                 raise _Return(value)
+            tail = rest
             if then is None:  # the rest after the 'then' branch, under its test
                 scope.names = after_then
-                then = self._guarded(launch_time.truth(test), rest, scope) or _Return(None)
+                then, _, _ = self._branch(
+                    launch_time.truth(test), lambda: self.block(tail, scope), node, then_journal
+                )
+                then = then or _Return(None)
             else:
-                otherwise = self._guarded(launch_time.negated(test), rest, scope) or _Return(None)
+                otherwise, _, _ = self._branch(
+                    launch_time.negated(test),
+                    lambda: self.block(tail, scope),
+                    node,
+                    otherwise_journal,
+                )
+                otherwise = otherwise or _Return(None)
+        self.merge(test, then_journal, otherwise_journal, node)
         if then is not None and otherwise is not None:
             raise _Return(self.choose(test, then.value, otherwise.value, node))
         after_otherwise = scope.names
@@ -456,19 +630,94 @@ class Interpreter:
                 scope.names[name] = self.choose(test, after_then[name], after_otherwise[name], node)
         return rest is not None and returned != (False, False)
 
-    def _guarded(self, test: Text, body: list[ast.stmt], scope: Scope) -> _Return | None:
-        """``body`` read under ``test``; what it returns, if it does."""
+    def _branch(
+        self,
+        test: Text,
+        run: Callable[[], Value],
+        node: ast.AST,
+        journal: Journal | None = None,
+    ) -> tuple[_Return | None, Journal, Value]:
+        """``run`` read under ``test``, on its own copy of what it changes (``journal``:
+        reading on in a branch read before); what it returns (``return``), the journal of
+        the values it changed (put back as they were) and the value ``run`` gives."""
+        journal = Journal() if journal is None else journal
+        journal.reopen(self.forwarding)
         self.guards.append(test)
+        self.journals.append(journal)
+        returned: _Return | None = None
+        value: Value = None
         try:
-            self.block(body, scope)
-        except _Return as returned:
-            return returned
+            value = run()
+        except _Return as raised:
+            returned = raised
         except (_Break, _Continue):
             self.not_followed(
-                "a 'break' or 'continue' under an 'if' on a launch-time value", body[0]
+                "a 'break' or 'continue' under an 'if' on a launch-time value",
+                self.statement or node,
             )
         finally:
             self.guards.pop()
+            self.journals.pop()
+            journal.close(self.forwarding)
+        return returned, journal, value
+
+    def merge(self, test: Text, then: Journal, otherwise: Journal, node: ast.AST) -> None:
+        """Each value either branch changed holds the choice of the two branches' contents
+        under ``test`` (a branch that did not change it leaves what it held before)."""
+        changed = {**otherwise.before, **then.before}
+        for key, (value, before) in changed.items():
+            self.touch(value)  # an enclosing branch keeps what it held before
+            then_items, then_to = then.after.get(key, before)
+            other_items, other_to = otherwise.after.get(key, before)
+            if then_to is None and other_to is None:
+                merged = self._merged(test, value, then_items, other_items, node)
+                if merged is not None:
+                    put(value, (merged, None), self.forwarding)
+                    continue
+            sides = [
+                _whole(items, to) for items, to in ((then_items, then_to), (other_items, other_to))
+            ]
+            self.forwarding.forward(value, self.choose(test, sides[0], sides[1], node))
+
+    def _merged(
+        self,
+        test: Text,
+        value: Mutable,
+        then: list[Value] | dict[Key, Value] | dict[str, Value],
+        otherwise: list[Value] | dict[Key, Value] | dict[str, Value],
+        node: ast.AST,
+    ) -> list[Value] | dict[Key, Value] | dict[str, Value] | None:
+        """The items of ``value`` chosen item by item, where the branches' contents have the
+        same shape (lists of one length, dicts of the same keys, any attributes); a list
+        whose branches add or remove launch actions only keeps both branches' actions, each
+        under its test; ``None`` where the whole value must be chosen."""
+        if isinstance(then, list) and isinstance(otherwise, list):
+            if len(then) == len(otherwise):
+                return [self.choose(test, a, b, node) for a, b in zip(then, otherwise, strict=True)]
+            start = 0
+            while start < min(len(then), len(otherwise)) and _same(then[start], otherwise[start]):
+                start += 1
+            end = 0
+            while end < min(len(then), len(otherwise)) - start and _same(
+                then[-1 - end], otherwise[-1 - end]
+            ):
+                end += 1
+            middles = (then[start : len(then) - end], otherwise[start : len(otherwise) - end])
+            if _actions(middles[0]) is None or _actions(middles[1]) is None:
+                return None
+            chosen = [
+                *self._guarded_items(launch_time.truth(test), middles[0], node),
+                *self._guarded_items(launch_time.negated(test), middles[1], node),
+            ]
+            return [*then[:start], *chosen, *then[len(then) - end :]]
+        if isinstance(then, dict) and isinstance(otherwise, dict):
+            if set(then) != set(otherwise) and not isinstance(value, Instance):
+                return None
+            missing = Unknown("an attribute set in one branch of a launch-time 'if' only")
+            return {
+                key: self.choose(test, then.get(key, missing), otherwise.get(key, missing), node)
+                for key in dict.fromkeys([*then, *otherwise])
+            }
         return None
 
     def guard(self) -> Text:
@@ -479,29 +728,61 @@ class Interpreter:
         return test
 
     def choose(self, test: Text, then: Value, otherwise: Value, node: ast.AST) -> Value:
-        """``then`` where the Python ``test`` holds at launch time, else ``otherwise``."""
-        if then is otherwise or (_constant(then) and _constant(otherwise) and then == otherwise):
+        """``then`` where the Python ``test`` holds at launch time, else ``otherwise``: a
+        Python expression where both have one (scalars), the actions of both each under
+        its test, else a :class:`Conditional` (lists, dicts: each branch's value whole)."""
+        if then is otherwise:  # one object, maybe changed by the branches: itself
             return then
-        sources = [_branch_source(then), _branch_source(otherwise)]
-        if sources[0] is not None and sources[1] is not None:
-            kinds = {launch_time.kind_of(then), launch_time.kind_of(otherwise)}
-            return launch_time.chosen(
-                test, sources[0], sources[1], kinds.pop() if len(kinds) == 1 else None
-            )
+        then, otherwise = self.resolved(then), self.resolved(otherwise)
+        if _same(then, otherwise):
+            return then
         actions = [_actions(then), _actions(otherwise)]
         if actions[0] is not None and actions[1] is not None:
-            self.guards.append(launch_time.truth(test))
-            children = [self.guarded_action(action, node) for action in actions[0]]
-            self.guards[-1] = launch_time.negated(test)
-            children += [self.guarded_action(action, node) for action in actions[1]]
-            self.guards.pop()
+            children = self.each_guarded(test, actions[0], actions[1], node)
             group = _group(children, None, self.location(node), self.sink)
             return (
                 [group]
                 if isinstance(then, list | tuple) or isinstance(otherwise, list | tuple)
                 else group
             )
+        sources = [_branch_source(then), _branch_source(otherwise)]
+        containers = isinstance(then, list | tuple | dict | Conditional) or isinstance(
+            otherwise, list | tuple | dict | Conditional
+        )
+        if sources[0] is not None and sources[1] is not None and not containers:
+            kinds = {launch_time.kind_of(then), launch_time.kind_of(otherwise)}
+            return launch_time.chosen(
+                test, sources[0], sources[1], kinds.pop() if len(kinds) == 1 else None
+            )
         return Conditional(test, then, otherwise)
+
+    def each_guarded(
+        self, test: Text, then: list[Entity], otherwise: list[Entity], node: ast.AST
+    ) -> list[Entity]:
+        """The actions of both branches, each under its branch's test."""
+        self.guards.append(launch_time.truth(test))
+        try:
+            children = [self.guarded_action(action, node) for action in then]
+            self.guards[-1] = launch_time.negated(test)
+            return children + [self.guarded_action(action, node) for action in otherwise]
+        finally:
+            self.guards.pop()
+
+    def _guarded_items(self, test: Text, items: list[Value], node: ast.AST) -> list[Value]:
+        """``items`` (actions, lists of them) under ``test``, as they are nested."""
+        self.guards.append(test)
+        try:
+            return [self._guarded_item(item, node) for item in items]
+        finally:
+            self.guards.pop()
+
+    def _guarded_item(self, item: Value, node: ast.AST) -> Value:
+        if isinstance(item, Entity):
+            return self.guarded_action(item, node)
+        if isinstance(item, list | tuple):
+            inner = [self._guarded_item(part, node) for part in item]
+            return inner if isinstance(item, list) else tuple(inner)
+        return self.guarded_item(item, node)
 
     def guarded_action(self, action: Entity, node: ast.AST) -> Entity:
         """``action`` under the guards being read (unless it was made under them)."""
@@ -533,18 +814,39 @@ class Interpreter:
         return copy
 
     def guarded_item(self, item: Value, node: ast.AST) -> Value:
-        """An item added to a list (or a description) under the guards being read."""
+        """An item added to a list (or a description) under the guards being read: actions
+        under them (the branch's list may be kept whole); any other value as it is (the
+        branch changes its own copy of the list)."""
         if not self.guards:
             return item
         if isinstance(item, Entity):
             return self.guarded_action(item, node)
-        actions = _actions(item)
-        if actions is not None:
-            return [self.guarded_action(action, node) for action in actions]
-        return self.not_followed("an item added under an 'if' on a launch-time value", node)
+        if isinstance(item, Description):
+            return [self.guarded_action(action, node) for action in item.root.children]
+        return item
 
     def _for(self, node: ast.For, scope: Scope) -> None:
-        items = self.iterate(self.expr(node.iter, scope), node.iter)
+        self._loop(node, self.expr(node.iter, scope), scope)
+
+    def _loop(self, node: ast.For, iterable: Value, scope: Scope) -> None:
+        """The loop over ``iterable``; over a value chosen at launch time, the loop over
+        each branch's value, each under its test, as an ``if`` would read them."""
+        if isinstance(iterable, Conditional):
+            then, otherwise = self.resolved(iterable.then), self.resolved(iterable.otherwise)
+            self._branches(
+                iterable.test,
+                lambda: self._loop(node, then, scope),
+                lambda: self._loop(node, otherwise, scope),
+                node,
+                scope,
+                None,
+            )
+            return
+        if isinstance(iterable, Dynamic):
+            self.unrolled(iterable, functools.partial(self._body, node, scope), node, scope)
+            self.block(node.orelse, scope)
+            return
+        items = self.iterate(iterable, node.iter)
         if items is None:
             return
         for item in items:
@@ -556,6 +858,31 @@ class Interpreter:
             except _Continue:
                 continue
         self.block(node.orelse, scope)
+
+    def _body(self, node: ast.For, scope: Scope, item: Value) -> None:
+        """The loop's body for one item of a launch-time list."""
+        self.assign(node.target, item, scope)
+        try:
+            self.block(node.body, scope)
+        except _Continue:
+            pass
+        except _Break:
+            self.not_followed("a 'break' in a loop over a launch-time list", node)
+
+    def unrolled(
+        self, iterable: Dynamic, run: Callable[[Value], None], node: ast.AST, scope: Scope
+    ) -> None:
+        """A loop over a launch-time list of unknown length (``yaml.load`` or ``split`` of
+        a launch configuration): ``run`` of each of its first :data:`MAX_UNROLLED` items,
+        each as an ``if len(x) > i`` would read it; an item beyond them is unknown, so that
+        what is made of it fails where it is needed, in the configurations that give it."""
+        kind = str if iterable.kind is list else None
+        for index in range(MAX_UNROLLED + 1):
+            test = Text.of("len(", iterable.source, f") > {index}")
+            item: Value = Dynamic(Text.of("(", iterable.source, f")[{index}]"), kind)
+            if index == MAX_UNROLLED:
+                item = Unknown(f"an item beyond the first {MAX_UNROLLED} of a launch-time list")
+            self._branches(test, functools.partial(run, item), lambda: None, node, scope, None)
 
     def _break(self, node: ast.Break, scope: Scope) -> None:
         raise _Break
@@ -583,6 +910,11 @@ class Interpreter:
 
     def _class_def(self, node: ast.ClassDef, scope: Scope) -> None:
         decorators = [self.expr(_called(d), scope) for d in node.decorator_list]
+        decorators = [
+            d
+            for d in decorators
+            if not (isinstance(d, Module) and python_name(d.qualified) in REGISTERING)
+        ]
         if node.keywords or any(d != Module("dataclasses.dataclass") for d in decorators):
             scope.names[node.name] = self.not_followed(f"decorated class {node.name}", node)
             return
@@ -650,6 +982,10 @@ class Interpreter:
         directory, a package's share directory, each with a literal tail)."""
         if isinstance(value, Dynamic):
             value = value.text
+        if isinstance(value, FilePath):
+            value = path_text(value)
+        if isinstance(value, Text) and value.literal() is not None:
+            value = value.literal()
         if isinstance(value, str):
             return value if os.path.isabs(value) else None
         if not isinstance(value, Text) or not value.parts:
@@ -706,11 +1042,52 @@ class Interpreter:
             self.loading -= 1
         return module
 
+    def _raise(self, node: ast.Raise, scope: Scope) -> None:
+        """``raise E(...)``: the exception, caught by an ``except`` of its class or a base."""
+        if self.guards:
+            self.not_followed("a 'raise' under an 'if' on a launch-time value", node)
+            return
+        exception: Value = None
+        if node.exc is not None:
+            called = node.exc.func if isinstance(node.exc, ast.Call) else node.exc
+            kind = self.expr(called, scope)
+            exception = kind if _builtin_exception(kind) else self.expr(node.exc, scope)
+        raise _Raise(exception, self.location(node))
+
     def _try(self, node: ast.Try, scope: Scope) -> None:
-        """The body as if it raised nothing (nothing read here raises)."""
-        self.block(node.body, scope)
-        self.block(node.orelse, scope)
-        self.block(node.finalbody, scope)
+        """The body; where it raises, the first handler catching the exception, as Python."""
+        try:
+            try:
+                self.block(node.body, scope)
+            except _Raise as raised:
+                handler = self._handler(node.handlers, raised.value, scope)
+                if handler is None:
+                    raise
+                if handler.name is not None:
+                    scope.names[handler.name] = raised.value
+                self.block(handler.body, scope)
+            else:
+                self.block(node.orelse, scope)
+        finally:
+            self.block(node.finalbody, scope)
+
+    def _handler(
+        self, handlers: list[ast.ExceptHandler], exception: Value, scope: Scope
+    ) -> ast.ExceptHandler | None:
+        for handler in handlers:
+            if handler.type is None:
+                return handler
+            kinds = self.expr(handler.type, scope)
+            answers = [
+                _catches(kind, exception)
+                for kind in (kinds if isinstance(kinds, tuple) else (kinds,))
+            ]
+            if True in answers:
+                return handler
+            if None in answers:
+                self.not_followed("an 'except' of an exception not known statically", handler)
+                return None
+        return None
 
     def _with(self, node: ast.With, scope: Scope) -> None:
         for item in node.items:
@@ -728,10 +1105,32 @@ class Interpreter:
         handler = self.expressions.get(type(node))
         if handler is None:
             return self.not_followed(f"a '{type(node).__name__}' expression", node)
-        value = handler(node, scope)
+        value = self.resolved(handler(node, scope))
         if not isinstance(node, _REFERENCES):
             self.charge(value)
         return value
+
+    def distribute(
+        self, values: list[Value], operation: Callable[[list[Value]], Value], node: ast.AST
+    ) -> Value:
+        """``operation`` of ``values``, where one is chosen at launch time (a
+        :class:`Conditional`): the operation of each branch's value, under its test, then
+        their choice."""
+        for index, value in enumerate(values):
+            if isinstance(value, Conditional):
+                branches = []
+                for test, side in (
+                    (launch_time.truth(value.test), value.then),
+                    (launch_time.negated(value.test), value.otherwise),
+                ):
+                    self.guards.append(test)
+                    try:
+                        chosen = [*values[:index], self.resolved(side), *values[index + 1 :]]
+                        branches.append(self.distribute(chosen, operation, node))
+                    finally:
+                        self.guards.pop()
+                return self.choose(value.test, branches[0], branches[1], node)
+        return operation(values)
 
     def _constant(self, node: ast.Constant, scope: Scope) -> Value:
         if isinstance(node.value, _SCALARS):
@@ -765,6 +1164,10 @@ class Interpreter:
             return launch_time.stringified(value)
         if isinstance(value, Text | Unknown):
             return value
+        if isinstance(value, FilePath):
+            return paths.as_string(value)
+        if isinstance(value, Conditional):
+            return self.distribute([value], lambda values: self.stringify(values[0], node), node)
         return self.not_followed(f"str() of a {type(value).__name__}", node)
 
     def concatenate(self, parts: list[Value], node: ast.AST) -> Value:
@@ -786,6 +1189,10 @@ class Interpreter:
         return Text.of(*texts)
 
     def binary(self, op: ast.operator, left: Value, right: Value, node: ast.AST) -> Value:
+        if isinstance(left, Conditional) or isinstance(right, Conditional):
+            return self.distribute(
+                [left, right], lambda values: self.binary(op, values[0], values[1], node), node
+            )
         if isinstance(left, Unknown):
             return left
         if isinstance(right, Unknown):
@@ -794,6 +1201,10 @@ class Interpreter:
             return self.launch_time_operation(OPERATORS.get(type(op)), left, right, node)
         if isinstance(op, ast.Add) and (isinstance(left, Text) or isinstance(right, Text)):
             return self.concatenate([left, right], node)
+        if isinstance(op, ast.Div) and (isinstance(left, FilePath) or isinstance(right, FilePath)):
+            parts = (paths.of_value(left), paths.of_value(right))
+            if parts[0] is not None and parts[1] is not None:
+                return paths.join(parts[0], parts[1])  # pathlib's '/'
         if isinstance(op, ast.Div) and isinstance(left, Text) and isinstance(right, str | Text):
             return join_path(left, Text.of(right))  # PathSubstitution(...) / 'config'
 
@@ -852,6 +1263,8 @@ class Interpreter:
 
     def _unary_op(self, node: ast.UnaryOp, scope: Scope) -> Value:
         operand = self.expr(node.operand, scope)
+        if isinstance(node.op, ast.Not):
+            operand = self.tested(operand, node.operand)
         if isinstance(operand, Dynamic) and isinstance(node.op, ast.Not | ast.USub):
             if isinstance(node.op, ast.Not):
                 return Dynamic(launch_time.negated(operand.source), bool)
@@ -890,6 +1303,9 @@ class Interpreter:
 
     def _compare(self, node: ast.Compare, scope: Scope) -> Value:
         operands = [self.expr(operand, scope) for operand in (node.left, *node.comparators)]
+        return self.distribute(operands, lambda values: self._compared(node, values), node)
+
+    def _compared(self, node: ast.Compare, operands: list[Value]) -> Value:
         if any(isinstance(operand, Dynamic) for operand in operands):
             return self._launch_time_comparison(node, operands)
         return self._compare_values(node, operands)
@@ -923,18 +1339,21 @@ class Interpreter:
         return True
 
     def _if_exp(self, node: ast.IfExp, scope: Scope) -> Value:
-        value = self.expr(node.test, scope)
+        value = self.tested(self.expr(node.test, scope), node.test)
         if isinstance(value, Dynamic):
-            self.guards.append(launch_time.truth(value.source))
-            then = self.expr(node.body, scope)
-            self.guards[-1] = launch_time.negated(value.source)
-            otherwise = self.expr(node.orelse, scope)
-            self.guards.pop()
-            return self.choose(value.source, then, otherwise, node)
-        test = truth(value)
-        if test is None:
+            test = value.source
+            _, then_journal, then = self._branch(
+                launch_time.truth(test), lambda: self.expr(node.body, scope), node
+            )
+            _, otherwise_journal, otherwise = self._branch(
+                launch_time.negated(test), lambda: self.expr(node.orelse, scope), node
+            )
+            self.merge(test, then_journal, otherwise_journal, node)
+            return self.choose(test, then, otherwise, node)
+        known = truth(value)
+        if known is None:
             return self.not_followed("a conditional expression on an unknown value", node)
-        return self.expr(node.body if test else node.orelse, scope)
+        return self.expr(node.body if known else node.orelse, scope)
 
     def _elements(self, nodes: list[ast.expr], scope: Scope) -> list[Value]:
         items: list[Value] = []
@@ -959,7 +1378,7 @@ class Interpreter:
                 else:
                     self.not_followed("'**' of a value that is not a known dict", value_node)
                 continue
-            name = self.expr(key_node, scope)
+            name = _dict_key(self.expr(key_node, scope))
             if isinstance(name, Key):
                 result[name] = value
             else:
@@ -973,16 +1392,30 @@ class Interpreter:
                 None if part is None else self.expr(part, scope)
                 for part in (node.slice.lower, node.slice.upper, node.slice.step)
             ]
-            numbers = [bound for bound in bounds if bound is None or isinstance(bound, int)]
-            if isinstance(container, str | list | tuple) and len(numbers) == len(bounds):
-                return container[slice(*numbers)]
-            if isinstance(container, Dynamic) and all(
-                bound is None or isinstance(bound, int) for bound in bounds
-            ):
-                written = ":".join("" if bound is None else str(bound) for bound in bounds)
-                return Dynamic(Text.of("(", container.source, f")[{written}]"), container.kind)
-            return self.not_followed("a slice of a value not known statically", node)
+            return self.distribute(
+                [container, *bounds], lambda values: self._slice(values[0], values[1:], node), node
+            )
         index = self.expr(node.slice, scope)
+        if isinstance(container, Module) and container.qualified.startswith("typing."):
+            return container  # a type annotation (Union[str, int]): nothing launched
+        return self.distribute(
+            [container, index], lambda values: self._item(values[0], values[1], node), node
+        )
+
+    def _slice(self, container: Value, bounds: list[Value], node: ast.AST) -> Value:
+        """``container[lower:upper:step]``."""
+        numbers = [bound for bound in bounds if bound is None or isinstance(bound, int)]
+        if isinstance(container, str | list | tuple) and len(numbers) == len(bounds):
+            return container[slice(*numbers)]
+        if isinstance(container, Dynamic) and all(
+            bound is None or isinstance(bound, int) for bound in bounds
+        ):
+            written = ":".join("" if bound is None else str(bound) for bound in bounds)
+            return Dynamic(Text.of("(", container.source, f")[{written}]"), container.kind)
+        return self.not_followed("a slice of a value not known statically", node)
+
+    def _item(self, container: Value, index: Value, node: ast.AST) -> Value:
+        """``container[index]``."""
         if container == Module("os.environ") and isinstance(index, str | Text):
             return performed(Text.of(Sub("env", (Text.of(index),))))
         if container == Method(LaunchContext(), "launch_configurations"):
@@ -1015,6 +1448,8 @@ class Interpreter:
             return Module(f"{owner.qualified}.{node.attr}")
         if isinstance(owner, Unknown):
             return owner
+        if isinstance(owner, FilePath) and node.attr not in paths.METHODS:
+            return paths.attribute(self, owner, node.attr, node)
         if isinstance(owner, ModuleScope):
             if node.attr in owner.scope.names:
                 return owner.scope.names[node.attr]
@@ -1041,10 +1476,35 @@ class Interpreter:
     def _comprehension(
         self, node: ast.ListComp | ast.GeneratorExp | ast.SetComp | ast.DictComp, scope: Scope
     ) -> Value:
+        """The comprehension; over a value chosen at launch time, that of each branch's
+        value, chosen."""
+        first = node.generators[0]
+        iterable = self.expr(first.iter, scope)
+        if isinstance(iterable, Dynamic) and not isinstance(node, ast.DictComp):
+            results: list[Value] = []
+
+            def add(item: Value) -> None:
+                items = self._comprehended(node, [item], scope)
+                if isinstance(items, list):
+                    self.touch(results)
+                    results.extend(items)
+
+            self.unrolled(iterable, add, node, scope)
+            return self.resolved(results)
+        return self.distribute(
+            [iterable], lambda values: self._comprehended(node, values[0], scope), node
+        )
+
+    def _comprehended(
+        self,
+        node: ast.ListComp | ast.GeneratorExp | ast.SetComp | ast.DictComp,
+        iterable: Value,
+        scope: Scope,
+    ) -> Value:
         inner = Scope(parent=scope)
         results: list[Value] = []
         pairs: dict[Key, Value] = {}
-        for _ in self._generate(node.generators, inner):
+        for _ in self._generate(node.generators, inner, (iterable,)):
             if isinstance(node, ast.DictComp):
                 name = self.expr(node.key, inner)
                 if isinstance(name, Key):
@@ -1055,12 +1515,19 @@ class Interpreter:
                 results.append(self.expr(node.elt, inner))
         return pairs if isinstance(node, ast.DictComp) else results
 
-    def _generate(self, generators: list[ast.comprehension], scope: Scope) -> Iterator[None]:
+    def _generate(
+        self,
+        generators: list[ast.comprehension],
+        scope: Scope,
+        iterable: tuple[Value] | None = None,
+    ) -> Iterator[None]:
+        """The bindings of the comprehension's generators; ``iterable``: the first's value."""
         if not generators:
             yield None
             return
         first, rest = generators[0], generators[1:]
-        items = self.iterate(self.expr(first.iter, scope), first.iter)
+        given = self.expr(first.iter, scope) if iterable is None else iterable[0]
+        items = self.iterate(given, first.iter)
         for item in items or []:
             self.assign(first.target, item, scope)
             tests = [truth(self.expr(test, scope)) for test in first.ifs]
@@ -1071,7 +1538,9 @@ class Interpreter:
                 yield from self._generate(rest, scope)
 
     def iterate(self, value: Value, node: ast.AST) -> list[Value] | None:
-        if isinstance(value, list | tuple | str):
+        if isinstance(value, list | tuple):
+            return [self.resolved(item) for item in value]
+        if isinstance(value, str):
             return list(value)
         if isinstance(value, dict):
             return list(value)
@@ -1117,11 +1586,19 @@ class Interpreter:
         if isinstance(callee, Module):
             builtin = BUILTINS.get(callee.qualified) or CALLING.get(python_name(callee.qualified))
             if builtin is not None:
-                return builtin(self, args, kwargs, node)
+                return self.distribute(
+                    args, lambda values: builtin(self, values, kwargs, node), node
+                )
             call = Call(callee.qualified, args, kwargs, self.location(node), self.sink)
             builder = CALLS.get(python_name(callee.qualified))
             if builder is not None:
+                call.args = [self.settled(arg) for arg in args]
+                call.kwargs = {name: self.settled(arg) for name, arg in kwargs.items()}
                 made = builder(call)
+                if isinstance(made, Entity) and made.tag == "arg":
+                    self.default_files.declare(
+                        args[0] if args else kwargs.get("name"), call.arg(1, "default_value", None)
+                    )
                 return self.guarded_action(made, node) if isinstance(made, Entity) else made
             reason = REASONS.get(python_name(callee.qualified))
             return self.not_followed(reason or f"call to {callee.qualified}()", node)
@@ -1182,6 +1659,8 @@ class Interpreter:
             self.call_function(init, [instance, *args], kwargs, node)
         elif cls.fields is not None:
             self._data_init(cls, cls.fields, instance, args, kwargs, node)
+        else:
+            instance.made = self._base_init(cls, args, kwargs, node)
         bases = _launch_bases(cls)
         call = Call(cls.name, [], {}, self.location(node), self.sink)
         found, perform = _class_lookup(cls, "perform")
@@ -1193,10 +1672,27 @@ class Interpreter:
             actions = self.call_function(execute, [instance, LaunchContext()], {}, node)
             if isinstance(actions, Unknown):
                 return actions
+            actions = self.settled(actions)
             return _group(
                 [] if actions is None else _actions(actions) or [], None, call.location, self.sink
             )
+        if instance.made is not None:  # an action or substitution of launch, as its base
+            return instance.made
         return instance
+
+    def _base_init(
+        self, cls: Class, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        """What the constructor of the launch class ``cls`` derives from makes of ``args``
+        (its ``super().__init__(...)``, or the class's own call without an ``__init__``):
+        a subclass of ``DeclareLaunchArgument`` declares the argument, of ``Node`` is that
+        node; ``None`` where the base is no launch action or substitution."""
+        for base in _launch_bases(cls):
+            builder = CALLS.get(python_name(base))
+            if builder is not None:
+                made = builder(Call(cls.name, args, kwargs, self.location(node), self.sink))
+                return self.guarded_action(made, node) if isinstance(made, Entity) else made
+        return None
 
     def call_method(
         self, method: Method, args: list[Value], kwargs: dict[str, Value], node: ast.AST
@@ -1208,28 +1704,37 @@ class Interpreter:
             return launch_time.evaluated(receiver.attribute, receiver.text)
         if isinstance(receiver, FileHandle) and name == "read" and not args:
             return reads.text(self, receiver, node)
+        if isinstance(receiver, FilePath) and name in paths.METHODS:
+            return paths.METHODS[name](self, receiver, args, node)
+        if isinstance(receiver, Pattern) and name in patterns.METHODS:
+            return patterns.METHODS[name](self, receiver, args, node)
+        if isinstance(receiver, Match):
+            return patterns.match_method(self, receiver, name, args, node)
+        if isinstance(receiver, XacroDocument) and name in ("toxml", "toprettyxml"):
+            return xacro_calls.document_text(receiver)
         if isinstance(receiver, Description) and name in ("add_action", "add_entity") and args:
             call = Call(f"LaunchDescription.{name}", args, kwargs, self.location(node), self.sink)
             add_actions(call, receiver.root, [self.guarded_item(args[0], node)])
             return None
-        if isinstance(receiver, list) and name in ("append", "extend", "insert") and args:
-            if name == "append":
-                receiver.append(self.guarded_item(args[0], node))
-            elif name == "insert" and len(args) == 2 and isinstance(args[0], int):
-                receiver.insert(args[0], self.guarded_item(args[1], node))
-            else:
-                items = self.iterate(args[0], node)
-                if items is not None and len(receiver) + len(items) > MAX_LENGTH:
-                    return self.not_followed(f"a list longer than {MAX_LENGTH}", node)
-                for item in items if items is not None else [Unknown("*unknown")]:
-                    receiver.append(self.guarded_item(item, node))
-            return None
+        if isinstance(receiver, Conditional) or (
+            isinstance(receiver, str | list | tuple | dict | Dynamic)
+            and any(isinstance(arg, Conditional) for arg in args)
+        ):
+            return self.distribute(
+                [receiver, *args],
+                lambda values: self.call_method(Method(values[0], name), values[1:], kwargs, node),
+                node,
+            )
+        if isinstance(receiver, list) and name in LIST_METHODS:
+            return LIST_METHODS[name](self, receiver, args, node)
         if isinstance(receiver, dict):
-            return self._dict_method(receiver, name, args, node)
-        if isinstance(receiver, list | tuple) and name == "copy":
-            return list(receiver)
+            return self._dict_method(receiver, name, args, kwargs, node)
         if isinstance(receiver, Text) and name == "perform":
             return performed(receiver)  # the value at launch time, which the text stands for
+        method_of = substitution_method(receiver, name) if isinstance(receiver, Text) else None
+        if method_of is not None:
+            call = Call(name, args, kwargs, self.location(node), self.sink)
+            return method_of(call)
         if isinstance(receiver, LaunchContext) and name == "perform_substitution" and args:
             return performed(Call(name, args, kwargs, self.location(node), self.sink).text(args[0]))
         if receiver == Method(LaunchContext(), "launch_configurations") and name == "get" and args:
@@ -1288,13 +1793,21 @@ class Interpreter:
         if isinstance(function, Function):
             return self.call_function(function, [*bound, *args], kwargs, node)
         if isinstance(receiver, Super) and name == "__init__":
-            return None  # a launch base class's constructor: nothing the reading needs
+            made = self._base_init(receiver.owner, args, kwargs, node)
+            if isinstance(receiver.instance, Instance) and made is not None:
+                receiver.instance.made = made
+            return None
         if found:
             return self.invoke(function, args, kwargs, node)
         return self.not_followed(f"method {name}() of {type(receiver).__name__.lower()}", node)
 
     def _dict_method(
-        self, receiver: dict[Key, Value], name: str, args: list[Value], node: ast.AST
+        self,
+        receiver: dict[Key, Value],
+        name: str,
+        args: list[Value],
+        kwargs: dict[str, Value],
+        node: ast.AST,
     ) -> Value:
         if name == "items":
             return [(name_, value) for name_, value in receiver.items()]
@@ -1306,10 +1819,54 @@ class Interpreter:
             return dict(receiver)
         if name == "get" and args and isinstance(args[0], Key):
             return receiver.get(args[0], args[1] if len(args) > 1 else None)
-        if name == "update" and len(args) == 1 and isinstance(args[0], dict):
-            receiver.update(args[0])
+        if name == "update" and len(args) <= 1 and all(isinstance(a, dict) for a in args):
+            self.touch(receiver)
+            for mapping in [*args, kwargs]:
+                receiver.update(mapping)  # type: ignore[arg-type]
+            return None
+        if name == "setdefault" and 1 <= len(args) <= 2 and isinstance(args[0], Key):
+            if args[0] not in receiver:
+                self.touch(receiver)
+            return receiver.setdefault(args[0], args[1] if len(args) > 1 else None)
+        if name == "pop" and 1 <= len(args) <= 2 and isinstance(args[0], Key):
+            if args[0] in receiver:
+                self.touch(receiver)
+                return receiver.pop(args[0])
+            if len(args) == 2:
+                return args[1]
+            return self.not_followed(f"dict.pop() of a missing key {args[0]!r}", node)
+        if name == "clear" and not args:
+            self.touch(receiver)
+            receiver.clear()
             return None
         return self.not_followed(f"method {name}() of a dict", node)
+
+    def remove(self, receiver: list[Value], item: Value, node: ast.AST) -> Value:
+        """``receiver.remove(item)``; for a launch-time ``item``, the list stands for the
+        choice, item by item, of the list without it (the first equal one), and a value
+        that says launch fails where none is equal."""
+        if not isinstance(item, Dynamic):
+            for index, present in enumerate(receiver):
+                if _same(present, item):
+                    self.touch(receiver)
+                    del receiver[index]
+                    return None
+            if _constant(item) and all(_constant(present) for present in receiver):
+                return self.not_followed("list.remove() of a value not in the list", node)
+            return self.not_followed("list.remove() of a value not known statically", node)
+        sources = [launch_time.source(present) for present in receiver]
+        known = [source for source in sources if source is not None]
+        if len(known) < len(sources):
+            return self.not_followed("list.remove() of a launch-time value", node)
+        self.step(len(receiver) ** 2)
+        # where no item is equal launch fails: a value that fails where its text is needed
+        chosen: Value = [Unknown("list.remove() of a value not in the list, where launch fails")]
+        for index in reversed(range(len(receiver))):
+            test = Text.of("(", item.source, ") == (", known[index], ")")
+            chosen = Conditional(test, [*receiver[:index], *receiver[index + 1 :]], chosen)
+        self.touch(receiver)
+        self.forwarding.forward(receiver, chosen)
+        return None
 
     def _format(
         self, template: str, args: list[Value], kwargs: dict[str, Value], node: ast.AST
@@ -1359,6 +1916,139 @@ class Interpreter:
                 return self.not_followed(f"str.{name}() that fails ({error})", node)
             return result
         return self.not_followed(f"str.{name}() of values not known statically", node)
+
+
+def _builtin_exception(kind: Value) -> bool:
+    """Whether ``kind`` is one of Python's exception classes (``KeyError``)."""
+    if not isinstance(kind, Module):
+        return False
+    found = getattr(builtins, kind.qualified, None)
+    return isinstance(found, type) and issubclass(found, BaseException)
+
+
+def _catches(kind: Value, exception: Value) -> bool | None:
+    """Whether ``except kind`` catches ``exception``; ``None`` where not known."""
+    if isinstance(exception, Instance):
+        if isinstance(kind, Class):
+            return kind is exception.cls or _derives(exception.cls, kind)
+        names = [Module(name) for name in _launch_bases(exception.cls)]
+        return any(_catches(kind, name) for name in names if _builtin_exception(name))
+    if _builtin_exception(exception) and isinstance(exception, Module):
+        if isinstance(kind, Class):
+            return False
+        if _builtin_exception(kind) and isinstance(kind, Module):
+            return issubclass(
+                getattr(builtins, exception.qualified), getattr(builtins, kind.qualified)
+            )
+    return None
+
+
+def _dict_key(value: Value) -> Value:
+    """A launch-time string as a dict's key is the text of its substitutions (moveit's
+    ``Xacro.perform`` keys its mappings by ``perform_substitutions(...)``)."""
+    if isinstance(value, Dynamic) and value.kind is str and value.text is not None:
+        return value.text
+    return value
+
+
+ListMethod = Callable[[Interpreter, list[Value], list[Value], ast.AST], Value]
+
+
+def _append(
+    interpreter: Interpreter, receiver: list[Value], args: list[Value], node: ast.AST
+) -> Value:
+    if len(args) != 1:
+        return interpreter.not_followed("list.append() of other than one value", node)
+    interpreter.touch(receiver)
+    receiver.append(interpreter.guarded_item(args[0], node))
+    return None
+
+
+def _insert(
+    interpreter: Interpreter, receiver: list[Value], args: list[Value], node: ast.AST
+) -> Value:
+    if len(args) != 2 or not isinstance(args[0], int):
+        return interpreter.not_followed("list.insert() at a place not known statically", node)
+    interpreter.touch(receiver)
+    receiver.insert(args[0], interpreter.guarded_item(args[1], node))
+    return None
+
+
+def _extend(
+    interpreter: Interpreter, receiver: list[Value], args: list[Value], node: ast.AST
+) -> Value:
+    items = interpreter.iterate(args[0], node) if len(args) == 1 else None
+    if items is not None and len(receiver) + len(items) > MAX_LENGTH:
+        return interpreter.not_followed(f"a list longer than {MAX_LENGTH}", node)
+    interpreter.touch(receiver)
+    for item in items if items is not None else [Unknown("*unknown")]:
+        receiver.append(interpreter.guarded_item(item, node))
+    return None
+
+
+def _remove(
+    interpreter: Interpreter, receiver: list[Value], args: list[Value], node: ast.AST
+) -> Value:
+    if len(args) != 1:
+        return interpreter.not_followed("list.remove() of other than one value", node)
+    return interpreter.remove(receiver, args[0], node)
+
+
+def _pop(
+    interpreter: Interpreter, receiver: list[Value], args: list[Value], node: ast.AST
+) -> Value:
+    index = args[0] if args else -1
+    if len(args) > 1 or not isinstance(index, int) or not -len(receiver) <= index < len(receiver):
+        return interpreter.not_followed("list.pop() at a place not known statically", node)
+    interpreter.touch(receiver)
+    return receiver.pop(index)
+
+
+def _clear(
+    interpreter: Interpreter, receiver: list[Value], args: list[Value], node: ast.AST
+) -> Value:
+    interpreter.touch(receiver)
+    receiver.clear()
+    return None
+
+
+def _copied(
+    interpreter: Interpreter, receiver: list[Value], args: list[Value], node: ast.AST
+) -> Value:
+    return list(receiver)
+
+
+def _index(
+    interpreter: Interpreter, receiver: list[Value], args: list[Value], node: ast.AST
+) -> Value:
+    if len(args) == 1:
+        for index, present in enumerate(receiver):
+            if _same(present, args[0]):
+                return index
+    return interpreter.not_followed("list.index() of a value not known in the list", node)
+
+
+def _count(
+    interpreter: Interpreter, receiver: list[Value], args: list[Value], node: ast.AST
+) -> Value:
+    if len(args) == 1 and _constant(args[0]) and all(_constant(item) for item in receiver):
+        return sum(1 for item in receiver if _same(item, args[0]))
+    return interpreter.not_followed("list.count() of values not known statically", node)
+
+
+LIST_METHODS: dict[str, ListMethod] = {
+    "append": _append,
+    "insert": _insert,
+    "extend": _extend,
+    "remove": _remove,
+    "pop": _pop,
+    "clear": _clear,
+    "copy": _copied,
+    "index": _index,
+    "count": _count,
+}
+"""Methods of a list the reading follows; those that change it touch it first (a
+launch-time branch keeps its own copy)."""
 
 
 def _called(decorator: ast.expr) -> ast.expr:
@@ -1420,6 +2110,29 @@ def _branch_source(value: Value) -> Text | None:
     if isinstance(value, Text):
         return launch_time.quoted(value)
     return launch_time.source(value)
+
+
+def _whole(items: list[Value] | dict[Key, Value] | dict[str, Value], to: Value) -> Value:
+    """A branch's value of a list or dict: the value it was forwarded to, else a new one
+    holding its items."""
+    if to is not None:
+        return to
+    if isinstance(items, list):
+        return list(items)
+    whole: dict[Key, Value] = {}
+    whole.update(items.items())
+    return whole
+
+
+def _within(items: list[Value], index: int) -> bool:
+    return -len(items) <= index < len(items)
+
+
+def _same(one: Value, other: Value) -> bool:
+    """Whether two values are the same for every launch: one object, or equal constants."""
+    if one is other:
+        return True
+    return _constant(one) and _constant(other) and type(one) is type(other) and one == other
 
 
 def _actions(value: Value) -> list[Entity] | None:
@@ -1545,6 +2258,21 @@ def _zip(
     return [tuple(row) for row in zip(*(column or [] for column in columns), strict=False)]
 
 
+def _chain(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
+    """``itertools.chain(a, b, ...)``: the items of each in turn (a list: read once)."""
+    items: list[Value] = []
+    for arg in args:
+        part = interpreter.iterate(arg, node)
+        if part is None:
+            return Unknown("itertools.chain() of unknown items")
+        if len(items) + len(part) > MAX_LENGTH:
+            return interpreter.not_followed(f"a list longer than {MAX_LENGTH}", node)
+        items += part
+    return items
+
+
 def _sys_path(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
@@ -1591,7 +2319,114 @@ def _copy(deep: bool) -> Builtin:
 def _print(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
+    """``print`` and ``logging``'s messages: nothing the launch is made of."""
     return None
+
+
+_TYPES: dict[str, type] = {
+    "str": str,
+    "int": int,
+    "float": float,
+    "bool": bool,
+    "dict": dict,
+    "list": list,
+    "tuple": tuple,
+}
+_PATH_TYPES = frozenset({"pathlib.Path", "pathlib.PurePath", "pathlib.PosixPath"})
+
+
+def _is_instance(value: Value, kind: Value) -> bool | None:
+    """``isinstance(value, kind)`` for one type; ``None`` where not known."""
+    if isinstance(kind, Class):
+        if not isinstance(value, Instance):
+            return False if isinstance(value, _SCALARS) else None
+        return kind is value.cls or _derives(value.cls, kind)
+    if not isinstance(kind, Module):
+        return None
+    if kind.qualified in _PATH_TYPES:
+        return isinstance(value, FilePath)
+    python_type = _TYPES.get(kind.qualified)
+    if python_type is None:
+        return None
+    if isinstance(value, (*_SCALARS, list, tuple, dict)):
+        return isinstance(value, python_type)
+    if isinstance(value, Dynamic):
+        return None if value.kind is None else issubclass(value.kind, python_type)
+    if isinstance(value, Text):  # a substitution object, or the string of a literal
+        return python_type is str if value.literal() is not None else False
+    if isinstance(value, Unknown | Module | Instance):
+        return None
+    return False  # a launch object or a path
+
+
+def _derives(cls: Class, base: Class) -> bool:
+    return any(b is base or (isinstance(b, Class) and _derives(b, base)) for b in cls.bases)
+
+
+def _isinstance(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
+    """``isinstance(value, T)`` (``T`` a builtin type, a path, a class of the file or its
+    modules, or a tuple of them); a text of substitutions is a substitution object."""
+    if len(args) != 2 or kwargs:
+        return interpreter.not_followed("isinstance() of other than two arguments", node)
+    kinds = args[1] if isinstance(args[1], tuple) else (args[1],)
+    answers = [_is_instance(args[0], kind) for kind in kinds]
+    if True in answers:
+        return True
+    if None in answers:
+        return interpreter.not_followed("isinstance() of a value or type not known", node)
+    return False
+
+
+def _quantifier(everything: bool) -> Builtin:
+    def quantify(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        """``all(items)``/``any(items)``, stopping where Python stops."""
+        items = interpreter.iterate(args[0], node) if len(args) == 1 else None
+        if items is None:
+            return Unknown("all() or any() of unknown items")
+        for item in items:
+            test = truth(item)
+            if test is None:
+                return interpreter.not_followed("all() or any() of values not known", node)
+            if test is not everything:
+                return test
+        return everything
+
+    return quantify
+
+
+def _ordering(name: str) -> Builtin:
+    def order(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        """``min``/``max`` (of arguments or one sequence) and ``sorted`` of constants."""
+        items = interpreter.iterate(args[0], node) if len(args) == 1 else list(args)
+        if items is None or kwargs or (not items and name != "sorted"):
+            return interpreter.not_followed(f"{name}() of values not known statically", node)
+        if not all(_constant(item) for item in items):
+            return interpreter.not_followed(f"{name}() of values not known statically", node)
+        interpreter.charge(items)
+        try:
+            result: Value = getattr(builtins, name)(items)
+        except TypeError as error:
+            return interpreter.not_followed(f"{name}() that fails ({error})", node)
+        return result
+
+    return order
+
+
+def _path_function(function: paths.PathMethod) -> Builtin:
+    def call(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        if len(args) != 1:
+            return interpreter.not_followed("os.path of other than one path", node)
+        return function(interpreter, args[0], [], node)
+
+    return call
 
 
 def _configuration(
@@ -1624,18 +2459,46 @@ def _opaque_function(
         return call.not_followed("OpaqueFunction arguments not known statically")
     if not all(isinstance(name, str) for name in named):
         return call.not_followed("OpaqueFunction keyword names not known statically")
-    actions = interpreter.call_function(
-        function, [LaunchContext(), *given], {str(k): v for k, v in named.items()}, node
+    arguments = [LaunchContext(), *given]
+    keywords = {str(k): v for k, v in named.items()}
+    files = interpreter.default_files
+    wanted, files.wanted = files.wanted, set()
+    actions = interpreter.call_function(function, arguments, keywords, node)
+    opened, files.wanted = files.wanted, wanted | files.wanted
+    test = None if files.assuming else files.assume(opened, interpreter.path_of)
+    if test is None:
+        return (
+            actions
+            if isinstance(actions, Unknown)
+            else _function_group(interpreter, call, actions, None)
+        )
+    try:  # again, each file its default names read (the first reading holds elsewhere)
+        assumed = interpreter.call_function(function, arguments, keywords, node)
+    finally:
+        files.assuming = {}
+    return _function_group(
+        interpreter,
+        call,
+        [
+            _function_group(interpreter, call, assumed, Condition("if", test)),
+            _function_group(interpreter, call, actions, Condition("unless", test)),
+        ],
+        None,
     )
-    if isinstance(actions, Unknown):
-        return actions
-    group = Call(
-        "GroupAction",
-        [],
-        {"actions": [] if actions is None else actions, "scoped": False},
-        call.location,
-        call.sink,
-    )
+
+
+def _function_group(
+    interpreter: Interpreter, call: Call, actions: Value, condition: Condition | None
+) -> Value:
+    """The unscoped group of the actions a function returns (none if unknown), under
+    ``condition`` if given."""
+    if isinstance(actions, Unknown) or actions is None:
+        actions = []
+    actions = interpreter.settled(actions)
+    kwargs: dict[str, Value] = {"actions": actions, "scoped": False}
+    if condition is not None:
+        kwargs["condition"] = condition
+    group = Call("GroupAction", [], kwargs, call.location, call.sink)
     return CALLS[("launch", "GroupAction")](group)
 
 
@@ -1660,16 +2523,45 @@ BUILTINS: dict[str, Builtin] = {
     "open": reads.open_file,
     "yaml.safe_load": reads.load_yaml,
     "yaml.load": reads.load_yaml,
+    "itertools.chain": _chain,
     "copy.copy": _copy(deep=False),
     "copy.deepcopy": _copy(deep=True),
     "sys.path.append": _sys_path,
     "sys.path.insert": _sys_path,
+    "isinstance": _isinstance,
+    "min": _ordering("min"),
+    "max": _ordering("max"),
+    "sorted": _ordering("sorted"),
+    "all": _quantifier(True),
+    "any": _quantifier(False),
+    "pathlib.Path": paths.construct,
+    "pathlib.PurePath": paths.construct,
+    "pathlib.PosixPath": paths.construct,
+    "pathlib.Path.home": paths.home,
+    "os.path.expanduser": paths.expanduser,
+    **{name: _path_function(function) for name, function in paths.FUNCTIONS.items()},
+    "re.compile": patterns.compile_pattern,
+    **{f"re.{name}": patterns.module_function(name) for name in patterns.METHODS},
+    "xacro.process_file": xacro_calls.process_file,
+    **{f"logging.{level}": _print for level in ("debug", "info", "warning", "error")},
 }
 """Python's builtins the reading follows (a call of any other is not followed)."""
 
 
 def entry_point(interpreter: Interpreter, tree: ast.Module) -> Entity | None:
     """The ``launch`` element ``generate_launch_description()`` returns, or ``None``."""
+    try:
+        return _entry_point(interpreter, tree)
+    except _Raise as raised:  # as launch, which fails to load the file
+        what = raised.value.cls.name if isinstance(raised.value, Instance) else None
+        if isinstance(raised.value, Module):
+            what = raised.value.qualified
+        message = f"the file raises {what or 'an exception'}, which nothing catches"
+        interpreter.sink.error("python-launch-raises", message, raised.location)
+        return None
+
+
+def _entry_point(interpreter: Interpreter, tree: ast.Module) -> Entity | None:
     scope = interpreter.run_module(tree)
     found, function = scope.lookup("generate_launch_description")
     where = Location(interpreter.filename, 1, 1)

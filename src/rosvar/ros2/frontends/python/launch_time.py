@@ -17,7 +17,7 @@ from __future__ import annotations
 import ast
 
 from rosvar.ros2.frontends.python.text import PYTHON_STRING, Sub, Text
-from rosvar.ros2.frontends.python.values import Dynamic, Value
+from rosvar.ros2.frontends.python.values import Conditional, Dynamic, Value
 
 Kind = type | None
 """The Python type of a launch-time value where it is known (``None``: not known)."""
@@ -93,12 +93,19 @@ def source(value: Value) -> Text | None:
             return None
         opening, closing = ("[", "]") if isinstance(value, list) else ("(", ",)")
         return Text.of(opening, *_arguments(known), closing)
+    if isinstance(value, Conditional):  # a list chosen by a launch-time ``if``
+        then, otherwise = source(value.then), source(value.otherwise)
+        if then is not None and otherwise is not None:
+            return chosen(value.test, then, otherwise, None).source
     return None
 
 
 def kind_of(value: Value) -> Kind:
     if isinstance(value, Dynamic):
         return value.kind
+    if isinstance(value, Conditional):
+        kinds = {kind_of(value.then), kind_of(value.otherwise)}
+        return kinds.pop() if len(kinds) == 1 else None
     if isinstance(value, bool | str | int | float):
         return type(value)
     return None

@@ -1,0 +1,58 @@
+"""``ros2 launch FILE name:=value`` read off the model (``rosvar.ros2.resolve``): what one
+configuration tells beyond its nodes."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ros2.tags.launches import launch
+
+ENTRY = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription
+from launch.conditions import IfCondition
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+import os
+import helpers_nowhere
+
+
+def generate_launch_description():
+    here = os.path.dirname(__file__)
+    helpers_nowhere.rewrite()
+    return LaunchDescription([
+        DeclareLaunchArgument('with_nav', default_value='true'),
+        Node(package='pkg', executable='n', name='own'),
+        IncludeLaunchDescription(
+            PythonLaunchDescriptionSource(os.path.join(here, 'nav.launch.py')),
+            condition=IfCondition(LaunchConfiguration('with_nav'))),
+    ])
+"""
+
+INCLUDED = """from launch import LaunchDescription
+from launch_ros.actions import Node
+import helpers_nowhere
+
+
+def generate_launch_description():
+    helpers_nowhere.nav()
+    return LaunchDescription([Node(package='pkg', executable='n', name='nav')])
+"""
+
+
+def test_what_was_not_followed_in_the_loaded_files_is_a_warning(tmp_path: Path) -> None:
+    """As ``analyze`` lists them, with their place: a node whose parameters a helper made
+    would otherwise seem to have none. An include this configuration leaves out says
+    nothing."""
+    it = launch(tmp_path, ENTRY, suffix=".launch.py", files={"nav.launch.py": INCLUDED})
+    included = str(it.main.parent / "nav.launch.py")
+
+    def warned(args: dict[str, str]) -> list[tuple[str, int, str]]:
+        result = it.analysis.resolve([str(it.main)], args)
+        assert result.ok, result.errors
+        return [(w.location.file, w.location.line, w.message) for w in result.warnings]
+
+    own = (str(it.main), 13, "call to helpers_nowhere.rewrite() is not followed")
+    nav = (included, 7, "call to helpers_nowhere.nav() is not followed")
+    assert warned({}) == [own, nav]
+    assert warned({"with_nav": "false"}) == [own]
