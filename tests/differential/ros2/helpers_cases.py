@@ -78,4 +78,144 @@ def generate_launch_description():
         },
         [{}, {"debug": "true"}, {"debug": "False", "extra": "false"}],
     ),
+    "python-builder-over-pathlib": (
+        {
+            "config/kinematics.yaml": "arm:\n  solver: kdl\n  timeout: 0.005\n",
+            "config/ompl_planning.yaml": "planner: rrt\n",
+            "config/notes.txt": "not a configuration\n",
+            "pkg_builder/__init__.py": "",
+            "pkg_builder/builder.py": """import logging
+import re
+from pathlib import Path
+
+import yaml
+from ament_index_python.packages import get_package_share_directory
+
+
+def load_yaml(file_path):
+    if not file_path.exists():
+        raise KeyError(str(file_path))
+    with open(file_path, 'r') as file:
+        return yaml.load(file, Loader=yaml.FullLoader)
+
+
+class Builder:
+    __config = Path('config')
+
+    def __init__(self, package):
+        self._path = Path(get_package_share_directory(package))
+        self.__parameters = {}
+
+    def kinematics(self, file_path=None):
+        self.__parameters['robot_description_kinematics'] = load_yaml(
+            self._path / (file_path or self.__config / 'kinematics.yaml'))
+        return self
+
+    def pipelines(self):
+        folder = self._path / self.__config
+        pattern = re.compile('^(.*)_planning.yaml$')
+        names = []
+        for child in folder.iterdir():
+            if not child.is_file():
+                continue
+            found = pattern.search(child.name)
+            if found:
+                names.append(found.groups()[0])
+        if not (folder / 'missing.yaml').exists():
+            logging.warning('no missing.yaml in %s', folder)
+        for name in names:
+            self.__parameters[name] = load_yaml(folder / (name + '_planning.yaml'))
+        self.__parameters['pipelines'] = names
+        return self
+
+    def to_dict(self):
+        return self.__parameters
+""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from pkg_builder.builder import Builder
+
+
+def generate_launch_description():
+    rate = LaunchConfiguration('rate')
+    parameters = Builder('pkg').kinematics().pipelines().to_dict()
+    mappings = {'rate': rate} if isinstance(rate, str) else {'given': 'yes'}
+    return LaunchDescription([
+        DeclareLaunchArgument('rate', default_value='10'),
+        Node(package='pkg', executable='talker', name='builder',
+             parameters=[parameters, mappings, {'rate': rate}]),
+    ])
+""",
+        },
+        [{}, {"rate": "2.5"}],
+    ),
+    "python-getenv-branches": (
+        {
+            "main.launch.py": """import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    nodes = [DeclareLaunchArgument('robot', default_value='r1')]
+    if os.getenv('ROSVAR_TEST_SIM', 'false') == 'true':
+        nodes.append(Node(package='pkg', executable='sim', name='sim'))
+    else:
+        robot = os.environ.get('ROSVAR_TEST_ROBOT', 'r0')
+        nodes.append(Node(package='pkg', executable='real', name=f'real_{robot}',
+                          parameters=[{'robot': LaunchConfiguration('robot')}]))
+    return LaunchDescription(nodes)
+""",
+        },
+        [{}, {"robot": "r2"}],
+    ),
+    "python-file-named-by-an-argument": (
+        {
+            "config/fusion.param.yaml": """/**:
+  ros__parameters:
+    topics: [/sensing/lidar/top/points, /sensing/lidar/left/points]
+    shared: {resolution: 0.5, length: [150.0, 120.0]}
+""",
+            "main.launch.py": """import yaml
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def load(context, name):
+    path = LaunchConfiguration(name).perform(context)
+    with open(path, 'r') as f:
+        return yaml.safe_load(f)['/**']['ros__parameters']
+
+
+def setup(context):
+    config = load(context, 'config_file')
+    nodes = []
+    for i in range(len(config['topics'])):
+        frame = config['topics'][i].split('/')[-2]
+        shared = dict(config['shared'])
+        shared['length'] = max(shared['length'])
+        nodes.append(Node(package='pkg', executable='grid', name='grid_' + frame,
+                          namespace=frame, parameters=[shared, {'index': i}],
+                          remappings=[('input', config['topics'][i])]))
+    return nodes
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('config_file', default_value=get_package_share_directory('pkg')
+                              + '/config/fusion.param.yaml'),
+        DeclareLaunchArgument('flag', default_value='false'),
+        OpaqueFunction(function=setup),
+    ])
+""",
+        },
+        [{}, {"flag": "true"}],
+    ),
 }

@@ -24,6 +24,9 @@ class Signature:
     optional: int = 0
     variadic: bool = False
     defaults: tuple[str, ...] = ()
+    function: bool = False
+    """A function returning the string the substitution gives (``ament_index_python``'s,
+    ``os.getenv``), not a substitution object."""
 
 
 @dataclass(frozen=True)
@@ -53,8 +56,8 @@ expose(
 expose(
     "env",
     Signature("launch.EnvironmentVariable", ("name", "default_value"), optional=1),
-    Signature("os.getenv", ("key", "default"), optional=1),
-    Signature("os.get", ("key", "default"), optional=1),  # os.environ.get
+    Signature("os.getenv", ("key", "default"), optional=1, function=True),
+    Signature("os.get", ("key", "default"), optional=1, function=True),  # os.environ.get
 )
 expose("find-exec", Signature("launch.FindExecutable", ("name",)))
 expose("anon", Signature("launch.AnonName", ("name",)))
@@ -81,12 +84,12 @@ expose("eval", Signature("launch.PythonExpression", ("expression",)))
 expose(
     "find-pkg-share",
     Signature("launch_ros.FindPackageShare", ("package",)),
-    Signature("ament_index_python.get_package_share_directory", ("package_name",)),
+    Signature("ament_index_python.get_package_share_directory", ("package_name",), function=True),
 )
 expose(
     "find-pkg-prefix",
     Signature("launch_ros.FindPackagePrefix", ("package",)),
-    Signature("ament_index_python.get_package_prefix", ("package_name",)),
+    Signature("ament_index_python.get_package_prefix", ("package_name",), function=True),
 )
 expose("exec-in-pkg", Signature("launch_ros.ExecutableInPackage", ("executable", "package")))
 expose("param", Signature("launch_ros.Parameter", ("name",)))

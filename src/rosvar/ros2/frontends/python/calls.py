@@ -37,6 +37,7 @@ from rosvar.ros2.frontends.python.values import (
     Condition,
     Conditional,
     Dynamic,
+    FilePath,
     Module,
     ParameterFile,
     ParameterValue,
@@ -96,17 +97,28 @@ class Call:
             return Text.of(unknown(value.what))
         if isinstance(value, Source):
             return value.path
+        if isinstance(value, FilePath):
+            return path_text(value)
         if isinstance(value, Conditional):  # the text of the branch taken
             then, otherwise = (self.text(value.then), self.text(value.otherwise))
             chosen = launch_time.chosen(
                 value.test, launch_time.quoted(then), launch_time.quoted(otherwise), str
             )
             return launch_time.as_text(chosen)
+        if isinstance(value, Entity) and value.tag == "group" and len(value.children) == 1:
+            return self.text(value.children[0])  # an action put under an 'if': itself
         if isinstance(value, Entity) and value.tag == "node_container":  # a target's name
             return Text.of(Sub(NODE_NAME, (Text.of(str(value.location)),)))
         if value is None or isinstance(value, bool | int | float):
             return Text.of(typed_text(value))
         return Text.of(unknown(self.not_followed(f"{type(value).__name__} used as text").what))
+
+
+def path_text(path: FilePath) -> Text:
+    """The text of a ``pathlib`` path."""
+    if path.head is None:
+        return Text.of(path.tail or ".")
+    return Text.of(path.head, "/", path.tail) if path.tail else path.head
 
 
 Builder = Callable[[Call], Value]
@@ -178,11 +190,28 @@ def _substitution(name: str, signature: Signature) -> Builder:
     return build
 
 
+def _performed(builder: Builder, signature: Signature) -> Builder:
+    """A function giving the string a substitution gives (``get_package_share_directory``):
+    a ``str`` at launch time, not a substitution object (``isinstance(p, str)`` holds).
+    Called without its optional arguments (``os.getenv(name)``, which gives ``None`` where
+    ``$(env name)`` fails), it stays the substitution."""
+
+    def build(call: Call) -> Value:
+        made = builder(call)
+        given = len(call.args) + len(call.kwargs)
+        if isinstance(made, Text) and given >= len(signature.arguments):
+            return launch_time.performed(made)
+        return made
+
+    return build
+
+
 for _substitution_entry in SUBSTITUTIONS:
     for _signature in _substitution_entry.signatures:
-        CALLS[python_name(_signature.qualified)] = _substitution(
-            _substitution_entry.names[0], _signature
-        )
+        _builder = _substitution(_substitution_entry.names[0], _signature)
+        if _signature.function:
+            _builder = _performed(_builder, _signature)
+        CALLS[python_name(_signature.qualified)] = _builder
 
 
 def _fold(operator: str, empty: str) -> Builder:
@@ -294,6 +323,18 @@ def substitution_method(receiver: Text, name: str) -> Builder | None:
         return None
     method = SUBSTITUTION_METHODS.get((substitution.name, name))
     return None if method is None else functools.partial(method, substitution)
+
+
+@_register("launch", "normalize_to_list_of_substitutions")
+def _normalized(call: Call) -> Value:
+    """launch's ``normalize_to_list_of_substitutions(subs)``: the text they give."""
+    return call.text(call.arg(0, "subs"))
+
+
+@_register("launch", "perform_substitutions")
+def _performed_substitutions(call: Call) -> Value:
+    """launch's ``perform_substitutions(context, subs)``: their string at launch time."""
+    return launch_time.performed(call.text(call.arg(1, "subs")))
 
 
 @_register("launch_ros", "ParameterValue")

@@ -18,6 +18,7 @@ from __future__ import annotations
 import ast
 import builtins
 import contextlib
+import functools
 import os
 import string
 from collections.abc import Callable, Iterator
@@ -28,7 +29,7 @@ from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.files import read_file
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.registry import python_name
-from rosvar.ros2.frontends.python import launch_time, reads
+from rosvar.ros2.frontends.python import launch_time, paths, patterns, reads, xacro_calls
 from rosvar.ros2.frontends.python.actions import add_actions
 from rosvar.ros2.frontends.python.branches import Forwarding, Journal, Mutable, put
 from rosvar.ros2.frontends.python.calls import (
@@ -37,8 +38,10 @@ from rosvar.ros2.frontends.python.calls import (
     REASONS,
     Call,
     join_path,
+    path_text,
     substitution_method,
 )
+from rosvar.ros2.frontends.python.default_files import DefaultFiles
 from rosvar.ros2.frontends.python.launch_time import OPERATORS, performed
 from rosvar.ros2.frontends.python.modules import MAX_MODULE_BYTES, MAX_MODULES, ModulePath
 from rosvar.ros2.frontends.python.text import Sub, Text, render
@@ -50,19 +53,23 @@ from rosvar.ros2.frontends.python.values import (
     Description,
     Dynamic,
     FileHandle,
+    FilePath,
     Function,
     Instance,
     Key,
     LaunchContext,
     LaunchYaml,
+    Match,
     Method,
     Module,
     ModuleScope,
+    Pattern,
     Scope,
     SourceFile,
     Super,
     Unknown,
     Value,
+    XacroDocument,
 )
 
 MAX_STEPS = 500_000
@@ -76,11 +83,17 @@ MAX_INT_BITS = 4096
 CHARS_PER_STEP = 64
 """Characters of a string built that cost one step (a string is copied a word at a time)."""
 
+MAX_UNROLLED = 8
+"""Items of a launch-time list (its length known at launch time only) a loop over it reads,
+each under its own test; an item beyond them is an unknown value."""
+
 MAX_IMPORT_DEPTH = 20
 """Modules being read at once (a module importing another...): deeper imports stay symbolic."""
 MODULE_NAME = "__launch__"
 """``__name__`` while the file is read: launch imports it as a module, not as ``__main__``."""
 DESCRIPTION = "composable_node"
+REGISTERING = frozenset({("launch", "expose_substitution"), ("launch", "expose_action")})
+"""Class decorators of launch that register the class with the frontends and return it."""
 """The tag of a composable node description, which carries its own condition."""
 
 
@@ -96,6 +109,16 @@ class _Break(Exception):
 
 class _Continue(Exception):
     pass
+
+
+class _Raise(Exception):
+    """An exception the file raises: ``value`` (an object of its class, or a builtin
+    exception's name as a :class:`Module`), raised at ``location``."""
+
+    def __init__(self, value: Value, location: Location) -> None:
+        super().__init__()
+        self.value = value
+        self.location = location
 
 
 class OutOfBudget(Exception):
@@ -271,6 +294,8 @@ class Interpreter:
         self.created: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
         """Actions made under guards, with the guards (so a branch does not guard twice)."""
         self.descriptions: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
+        self.default_files = DefaultFiles()
+        """Launch arguments' defaults, for the files a function opens by them."""
         """Composable node descriptions made conditional, by id: the description as written
         and the tests of its condition."""
         self.statements: dict[type[ast.stmt], Callable[[Any, Scope], None]] = {
@@ -287,6 +312,7 @@ class Interpreter:
             ast.ImportFrom: self._import_from,
             ast.Try: self._try,
             ast.With: self._with,
+            ast.Raise: self._raise,
             ast.Break: self._break,
             ast.Continue: self._continue,
             ast.Pass: lambda node, scope: None,
@@ -463,6 +489,8 @@ class Interpreter:
 
     def _set_item(self, container: Value, index: Value, value: Value, target: ast.AST) -> Value:
         """``container[index] = value``."""
+        if isinstance(container, dict):
+            index = _dict_key(index)
         if isinstance(container, dict) and isinstance(index, Key):
             self.touch(container)
             container[index] = value
@@ -699,13 +727,13 @@ class Interpreter:
                 then[-1 - end], otherwise[-1 - end]
             ):
                 end += 1
-            middles = [
-                _actions(then[start : len(then) - end]),
-                _actions(otherwise[start : len(otherwise) - end]),
-            ]
-            if middles[0] is None or middles[1] is None:
+            middles = (then[start : len(then) - end], otherwise[start : len(otherwise) - end])
+            if _actions(middles[0]) is None or _actions(middles[1]) is None:
                 return None
-            chosen = self.each_guarded(test, middles[0], middles[1], node)
+            chosen = [
+                *self._guarded_items(launch_time.truth(test), middles[0], node),
+                *self._guarded_items(launch_time.negated(test), middles[1], node),
+            ]
             return [*then[:start], *chosen, *then[len(then) - end :]]
         if isinstance(then, dict) and isinstance(otherwise, dict):
             if set(then) != set(otherwise) and not isinstance(value, Instance):
@@ -765,6 +793,22 @@ class Interpreter:
         finally:
             self.guards.pop()
 
+    def _guarded_items(self, test: Text, items: list[Value], node: ast.AST) -> list[Value]:
+        """``items`` (actions, lists of them) under ``test``, as they are nested."""
+        self.guards.append(test)
+        try:
+            return [self._guarded_item(item, node) for item in items]
+        finally:
+            self.guards.pop()
+
+    def _guarded_item(self, item: Value, node: ast.AST) -> Value:
+        if isinstance(item, Entity):
+            return self.guarded_action(item, node)
+        if isinstance(item, list | tuple):
+            inner = [self._guarded_item(part, node) for part in item]
+            return inner if isinstance(item, list) else tuple(inner)
+        return self.guarded_item(item, node)
+
     def guarded_action(self, action: Entity, node: ast.AST) -> Entity:
         """``action`` under the guards being read (unless it was made under them)."""
         if not self.guards:
@@ -823,6 +867,10 @@ class Interpreter:
                 None,
             )
             return
+        if isinstance(iterable, Dynamic):
+            self.unrolled(iterable, functools.partial(self._body, node, scope), node, scope)
+            self.block(node.orelse, scope)
+            return
         items = self.iterate(iterable, node.iter)
         if items is None:
             return
@@ -835,6 +883,31 @@ class Interpreter:
             except _Continue:
                 continue
         self.block(node.orelse, scope)
+
+    def _body(self, node: ast.For, scope: Scope, item: Value) -> None:
+        """The loop's body for one item of a launch-time list."""
+        self.assign(node.target, item, scope)
+        try:
+            self.block(node.body, scope)
+        except _Continue:
+            pass
+        except _Break:
+            self.not_followed("a 'break' in a loop over a launch-time list", node)
+
+    def unrolled(
+        self, iterable: Dynamic, run: Callable[[Value], None], node: ast.AST, scope: Scope
+    ) -> None:
+        """A loop over a launch-time list of unknown length (``yaml.load`` or ``split`` of
+        a launch configuration): ``run`` of each of its first :data:`MAX_UNROLLED` items,
+        each as an ``if len(x) > i`` would read it; an item beyond them is unknown, so that
+        what is made of it fails where it is needed, in the configurations that give it."""
+        kind = str if iterable.kind is list else None
+        for index in range(MAX_UNROLLED + 1):
+            test = Text.of("len(", iterable.source, f") > {index}")
+            item: Value = Dynamic(Text.of("(", iterable.source, f")[{index}]"), kind)
+            if index == MAX_UNROLLED:
+                item = Unknown(f"an item beyond the first {MAX_UNROLLED} of a launch-time list")
+            self._branches(test, functools.partial(run, item), lambda: None, node, scope, None)
 
     def _break(self, node: ast.Break, scope: Scope) -> None:
         raise _Break
@@ -862,6 +935,11 @@ class Interpreter:
 
     def _class_def(self, node: ast.ClassDef, scope: Scope) -> None:
         decorators = [self.expr(_called(d), scope) for d in node.decorator_list]
+        decorators = [
+            d
+            for d in decorators
+            if not (isinstance(d, Module) and python_name(d.qualified) in REGISTERING)
+        ]
         if node.keywords or any(d != Module("dataclasses.dataclass") for d in decorators):
             scope.names[node.name] = self.not_followed(f"decorated class {node.name}", node)
             return
@@ -929,6 +1007,10 @@ class Interpreter:
         directory, a package's share directory, each with a literal tail)."""
         if isinstance(value, Dynamic):
             value = value.text
+        if isinstance(value, FilePath):
+            value = path_text(value)
+        if isinstance(value, Text) and value.literal() is not None:
+            value = value.literal()
         if isinstance(value, str):
             return value if os.path.isabs(value) else None
         if not isinstance(value, Text) or not value.parts:
@@ -985,11 +1067,52 @@ class Interpreter:
             self.loading -= 1
         return module
 
+    def _raise(self, node: ast.Raise, scope: Scope) -> None:
+        """``raise E(...)``: the exception, caught by an ``except`` of its class or a base."""
+        if self.guards:
+            self.not_followed("a 'raise' under an 'if' on a launch-time value", node)
+            return
+        exception: Value = None
+        if node.exc is not None:
+            called = node.exc.func if isinstance(node.exc, ast.Call) else node.exc
+            kind = self.expr(called, scope)
+            exception = kind if _builtin_exception(kind) else self.expr(node.exc, scope)
+        raise _Raise(exception, self.location(node))
+
     def _try(self, node: ast.Try, scope: Scope) -> None:
-        """The body as if it raised nothing (nothing read here raises)."""
-        self.block(node.body, scope)
-        self.block(node.orelse, scope)
-        self.block(node.finalbody, scope)
+        """The body; where it raises, the first handler catching the exception, as Python."""
+        try:
+            try:
+                self.block(node.body, scope)
+            except _Raise as raised:
+                handler = self._handler(node.handlers, raised.value, scope)
+                if handler is None:
+                    raise
+                if handler.name is not None:
+                    scope.names[handler.name] = raised.value
+                self.block(handler.body, scope)
+            else:
+                self.block(node.orelse, scope)
+        finally:
+            self.block(node.finalbody, scope)
+
+    def _handler(
+        self, handlers: list[ast.ExceptHandler], exception: Value, scope: Scope
+    ) -> ast.ExceptHandler | None:
+        for handler in handlers:
+            if handler.type is None:
+                return handler
+            kinds = self.expr(handler.type, scope)
+            answers = [
+                _catches(kind, exception)
+                for kind in (kinds if isinstance(kinds, tuple) else (kinds,))
+            ]
+            if True in answers:
+                return handler
+            if None in answers:
+                self.not_followed("an 'except' of an exception not known statically", handler)
+                return None
+        return None
 
     def _with(self, node: ast.With, scope: Scope) -> None:
         for item in node.items:
@@ -1066,6 +1189,8 @@ class Interpreter:
             return launch_time.stringified(value)
         if isinstance(value, Text | Unknown):
             return value
+        if isinstance(value, FilePath):
+            return paths.as_string(value)
         if isinstance(value, Conditional):
             return self.distribute([value], lambda values: self.stringify(values[0], node), node)
         return self.not_followed(f"str() of a {type(value).__name__}", node)
@@ -1101,6 +1226,10 @@ class Interpreter:
             return self.launch_time_operation(OPERATORS.get(type(op)), left, right, node)
         if isinstance(op, ast.Add) and (isinstance(left, Text) or isinstance(right, Text)):
             return self.concatenate([left, right], node)
+        if isinstance(op, ast.Div) and (isinstance(left, FilePath) or isinstance(right, FilePath)):
+            parts = (paths.of_value(left), paths.of_value(right))
+            if parts[0] is not None and parts[1] is not None:
+                return paths.join(parts[0], parts[1])  # pathlib's '/'
         if isinstance(op, ast.Div) and isinstance(left, Text) and isinstance(right, str | Text):
             return join_path(left, Text.of(right))  # PathSubstitution(...) / 'config'
 
@@ -1274,7 +1403,7 @@ class Interpreter:
                 else:
                     self.not_followed("'**' of a value that is not a known dict", value_node)
                 continue
-            name = self.expr(key_node, scope)
+            name = _dict_key(self.expr(key_node, scope))
             if isinstance(name, Key):
                 result[name] = value
             else:
@@ -1292,6 +1421,8 @@ class Interpreter:
                 [container, *bounds], lambda values: self._slice(values[0], values[1:], node), node
             )
         index = self.expr(node.slice, scope)
+        if isinstance(container, Module) and container.qualified.startswith("typing."):
+            return container  # a type annotation (Union[str, int]): nothing launched
         return self.distribute(
             [container, index], lambda values: self._item(values[0], values[1], node), node
         )
@@ -1342,6 +1473,8 @@ class Interpreter:
             return Module(f"{owner.qualified}.{node.attr}")
         if isinstance(owner, Unknown):
             return owner
+        if isinstance(owner, FilePath) and node.attr not in paths.METHODS:
+            return paths.attribute(self, owner, node.attr, node)
         if isinstance(owner, ModuleScope):
             if node.attr in owner.scope.names:
                 return owner.scope.names[node.attr]
@@ -1371,10 +1504,20 @@ class Interpreter:
         """The comprehension; over a value chosen at launch time, that of each branch's
         value, chosen."""
         first = node.generators[0]
+        iterable = self.expr(first.iter, scope)
+        if isinstance(iterable, Dynamic) and not isinstance(node, ast.DictComp):
+            results: list[Value] = []
+
+            def add(item: Value) -> None:
+                items = self._comprehended(node, [item], scope)
+                if isinstance(items, list):
+                    self.touch(results)
+                    results.extend(items)
+
+            self.unrolled(iterable, add, node, scope)
+            return self.resolved(results)
         return self.distribute(
-            [self.expr(first.iter, scope)],
-            lambda values: self._comprehended(node, values[0], scope),
-            node,
+            [iterable], lambda values: self._comprehended(node, values[0], scope), node
         )
 
     def _comprehended(
@@ -1477,6 +1620,10 @@ class Interpreter:
                 call.args = [self.settled(arg) for arg in args]
                 call.kwargs = {name: self.settled(arg) for name, arg in kwargs.items()}
                 made = builder(call)
+                if isinstance(made, Entity) and made.tag == "arg":
+                    self.default_files.declare(
+                        args[0] if args else kwargs.get("name"), call.arg(1, "default_value", None)
+                    )
                 return self.guarded_action(made, node) if isinstance(made, Entity) else made
             reason = REASONS.get(python_name(callee.qualified))
             return self.not_followed(reason or f"call to {callee.qualified}()", node)
@@ -1582,6 +1729,14 @@ class Interpreter:
             return launch_time.evaluated(receiver.attribute, receiver.text)
         if isinstance(receiver, FileHandle) and name == "read" and not args:
             return reads.text(self, receiver, node)
+        if isinstance(receiver, FilePath) and name in paths.METHODS:
+            return paths.METHODS[name](self, receiver, args, node)
+        if isinstance(receiver, Pattern) and name in patterns.METHODS:
+            return patterns.METHODS[name](self, receiver, args, node)
+        if isinstance(receiver, Match):
+            return patterns.match_method(self, receiver, name, args, node)
+        if isinstance(receiver, XacroDocument) and name in ("toxml", "toprettyxml"):
+            return xacro_calls.document_text(receiver)
         if isinstance(receiver, Description) and name in ("add_action", "add_entity") and args:
             call = Call(f"LaunchDescription.{name}", args, kwargs, self.location(node), self.sink)
             add_actions(call, receiver.root, [self.guarded_item(args[0], node)])
@@ -1786,6 +1941,39 @@ class Interpreter:
                 return self.not_followed(f"str.{name}() that fails ({error})", node)
             return result
         return self.not_followed(f"str.{name}() of values not known statically", node)
+
+
+def _builtin_exception(kind: Value) -> bool:
+    """Whether ``kind`` is one of Python's exception classes (``KeyError``)."""
+    if not isinstance(kind, Module):
+        return False
+    found = getattr(builtins, kind.qualified, None)
+    return isinstance(found, type) and issubclass(found, BaseException)
+
+
+def _catches(kind: Value, exception: Value) -> bool | None:
+    """Whether ``except kind`` catches ``exception``; ``None`` where not known."""
+    if isinstance(exception, Instance):
+        if isinstance(kind, Class):
+            return kind is exception.cls or _derives(exception.cls, kind)
+        names = [Module(name) for name in _launch_bases(exception.cls)]
+        return any(_catches(kind, name) for name in names if _builtin_exception(name))
+    if _builtin_exception(exception) and isinstance(exception, Module):
+        if isinstance(kind, Class):
+            return False
+        if _builtin_exception(kind) and isinstance(kind, Module):
+            return issubclass(
+                getattr(builtins, exception.qualified), getattr(builtins, kind.qualified)
+            )
+    return None
+
+
+def _dict_key(value: Value) -> Value:
+    """A launch-time string as a dict's key is the text of its substitutions (moveit's
+    ``Xacro.perform`` keys its mappings by ``perform_substitutions(...)``)."""
+    if isinstance(value, Dynamic) and value.kind is str and value.text is not None:
+        return value.text
+    return value
 
 
 ListMethod = Callable[[Interpreter, list[Value], list[Value], ast.AST], Value]
@@ -2095,6 +2283,21 @@ def _zip(
     return [tuple(row) for row in zip(*(column or [] for column in columns), strict=False)]
 
 
+def _chain(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
+    """``itertools.chain(a, b, ...)``: the items of each in turn (a list: read once)."""
+    items: list[Value] = []
+    for arg in args:
+        part = interpreter.iterate(arg, node)
+        if part is None:
+            return Unknown("itertools.chain() of unknown items")
+        if len(items) + len(part) > MAX_LENGTH:
+            return interpreter.not_followed(f"a list longer than {MAX_LENGTH}", node)
+        items += part
+    return items
+
+
 def _sys_path(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
@@ -2141,7 +2344,114 @@ def _copy(deep: bool) -> Builtin:
 def _print(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
+    """``print`` and ``logging``'s messages: nothing the launch is made of."""
     return None
+
+
+_TYPES: dict[str, type] = {
+    "str": str,
+    "int": int,
+    "float": float,
+    "bool": bool,
+    "dict": dict,
+    "list": list,
+    "tuple": tuple,
+}
+_PATH_TYPES = frozenset({"pathlib.Path", "pathlib.PurePath", "pathlib.PosixPath"})
+
+
+def _is_instance(value: Value, kind: Value) -> bool | None:
+    """``isinstance(value, kind)`` for one type; ``None`` where not known."""
+    if isinstance(kind, Class):
+        if not isinstance(value, Instance):
+            return False if isinstance(value, _SCALARS) else None
+        return kind is value.cls or _derives(value.cls, kind)
+    if not isinstance(kind, Module):
+        return None
+    if kind.qualified in _PATH_TYPES:
+        return isinstance(value, FilePath)
+    python_type = _TYPES.get(kind.qualified)
+    if python_type is None:
+        return None
+    if isinstance(value, (*_SCALARS, list, tuple, dict)):
+        return isinstance(value, python_type)
+    if isinstance(value, Dynamic):
+        return None if value.kind is None else issubclass(value.kind, python_type)
+    if isinstance(value, Text):  # a substitution object, or the string of a literal
+        return python_type is str if value.literal() is not None else False
+    if isinstance(value, Unknown | Module | Instance):
+        return None
+    return False  # a launch object or a path
+
+
+def _derives(cls: Class, base: Class) -> bool:
+    return any(b is base or (isinstance(b, Class) and _derives(b, base)) for b in cls.bases)
+
+
+def _isinstance(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
+    """``isinstance(value, T)`` (``T`` a builtin type, a path, a class of the file or its
+    modules, or a tuple of them); a text of substitutions is a substitution object."""
+    if len(args) != 2 or kwargs:
+        return interpreter.not_followed("isinstance() of other than two arguments", node)
+    kinds = args[1] if isinstance(args[1], tuple) else (args[1],)
+    answers = [_is_instance(args[0], kind) for kind in kinds]
+    if True in answers:
+        return True
+    if None in answers:
+        return interpreter.not_followed("isinstance() of a value or type not known", node)
+    return False
+
+
+def _quantifier(everything: bool) -> Builtin:
+    def quantify(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        """``all(items)``/``any(items)``, stopping where Python stops."""
+        items = interpreter.iterate(args[0], node) if len(args) == 1 else None
+        if items is None:
+            return Unknown("all() or any() of unknown items")
+        for item in items:
+            test = truth(item)
+            if test is None:
+                return interpreter.not_followed("all() or any() of values not known", node)
+            if test is not everything:
+                return test
+        return everything
+
+    return quantify
+
+
+def _ordering(name: str) -> Builtin:
+    def order(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        """``min``/``max`` (of arguments or one sequence) and ``sorted`` of constants."""
+        items = interpreter.iterate(args[0], node) if len(args) == 1 else list(args)
+        if items is None or kwargs or (not items and name != "sorted"):
+            return interpreter.not_followed(f"{name}() of values not known statically", node)
+        if not all(_constant(item) for item in items):
+            return interpreter.not_followed(f"{name}() of values not known statically", node)
+        interpreter.charge(items)
+        try:
+            result: Value = getattr(builtins, name)(items)
+        except TypeError as error:
+            return interpreter.not_followed(f"{name}() that fails ({error})", node)
+        return result
+
+    return order
+
+
+def _path_function(function: paths.PathMethod) -> Builtin:
+    def call(
+        interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+    ) -> Value:
+        if len(args) != 1:
+            return interpreter.not_followed("os.path of other than one path", node)
+        return function(interpreter, args[0], [], node)
+
+    return call
 
 
 def _configuration(
@@ -2174,18 +2484,46 @@ def _opaque_function(
         return call.not_followed("OpaqueFunction arguments not known statically")
     if not all(isinstance(name, str) for name in named):
         return call.not_followed("OpaqueFunction keyword names not known statically")
-    actions = interpreter.call_function(
-        function, [LaunchContext(), *given], {str(k): v for k, v in named.items()}, node
+    arguments = [LaunchContext(), *given]
+    keywords = {str(k): v for k, v in named.items()}
+    files = interpreter.default_files
+    wanted, files.wanted = files.wanted, set()
+    actions = interpreter.call_function(function, arguments, keywords, node)
+    opened, files.wanted = files.wanted, wanted | files.wanted
+    test = None if files.assuming else files.assume(opened, interpreter.path_of)
+    if test is None:
+        return (
+            actions
+            if isinstance(actions, Unknown)
+            else _function_group(interpreter, call, actions, None)
+        )
+    try:  # again, each file its default names read (the first reading holds elsewhere)
+        assumed = interpreter.call_function(function, arguments, keywords, node)
+    finally:
+        files.assuming = {}
+    return _function_group(
+        interpreter,
+        call,
+        [
+            _function_group(interpreter, call, assumed, Condition("if", test)),
+            _function_group(interpreter, call, actions, Condition("unless", test)),
+        ],
+        None,
     )
-    if isinstance(actions, Unknown):
-        return actions
-    group = Call(
-        "GroupAction",
-        [],
-        {"actions": [] if actions is None else interpreter.settled(actions), "scoped": False},
-        call.location,
-        call.sink,
-    )
+
+
+def _function_group(
+    interpreter: Interpreter, call: Call, actions: Value, condition: Condition | None
+) -> Value:
+    """The unscoped group of the actions a function returns (none if unknown), under
+    ``condition`` if given."""
+    if isinstance(actions, Unknown) or actions is None:
+        actions = []
+    actions = interpreter.settled(actions)
+    kwargs: dict[str, Value] = {"actions": actions, "scoped": False}
+    if condition is not None:
+        kwargs["condition"] = condition
+    group = Call("GroupAction", [], kwargs, call.location, call.sink)
     return CALLS[("launch", "GroupAction")](group)
 
 
@@ -2210,16 +2548,45 @@ BUILTINS: dict[str, Builtin] = {
     "open": reads.open_file,
     "yaml.safe_load": reads.load_yaml,
     "yaml.load": reads.load_yaml,
+    "itertools.chain": _chain,
     "copy.copy": _copy(deep=False),
     "copy.deepcopy": _copy(deep=True),
     "sys.path.append": _sys_path,
     "sys.path.insert": _sys_path,
+    "isinstance": _isinstance,
+    "min": _ordering("min"),
+    "max": _ordering("max"),
+    "sorted": _ordering("sorted"),
+    "all": _quantifier(True),
+    "any": _quantifier(False),
+    "pathlib.Path": paths.construct,
+    "pathlib.PurePath": paths.construct,
+    "pathlib.PosixPath": paths.construct,
+    "pathlib.Path.home": paths.home,
+    "os.path.expanduser": paths.expanduser,
+    **{name: _path_function(function) for name, function in paths.FUNCTIONS.items()},
+    "re.compile": patterns.compile_pattern,
+    **{f"re.{name}": patterns.module_function(name) for name in patterns.METHODS},
+    "xacro.process_file": xacro_calls.process_file,
+    **{f"logging.{level}": _print for level in ("debug", "info", "warning", "error")},
 }
 """Python's builtins the reading follows (a call of any other is not followed)."""
 
 
 def entry_point(interpreter: Interpreter, tree: ast.Module) -> Entity | None:
     """The ``launch`` element ``generate_launch_description()`` returns, or ``None``."""
+    try:
+        return _entry_point(interpreter, tree)
+    except _Raise as raised:  # as launch, which fails to load the file
+        what = raised.value.cls.name if isinstance(raised.value, Instance) else None
+        if isinstance(raised.value, Module):
+            what = raised.value.qualified
+        message = f"the file raises {what or 'an exception'}, which nothing catches"
+        interpreter.sink.error("python-launch-raises", message, raised.location)
+        return None
+
+
+def _entry_point(interpreter: Interpreter, tree: ast.Module) -> Entity | None:
     scope = interpreter.run_module(tree)
     found, function = scope.lookup("generate_launch_description")
     where = Location(interpreter.filename, 1, 1)

@@ -28,14 +28,16 @@ RESERVED = frozenset(
         "rclpy",
         "ament_index_python",
         "yaml",
+        "xacro",
         "os",
         "sys",
         "test",
         "tests",
     }
 )
-"""Modules the reading models itself (the launch API, ``os``...): a package's folder of the
-same name (a ``launch/`` with an ``__init__.py``) never shadows them, as in an install."""
+"""Modules the reading models itself (the launch API, ``os``, ``xacro``...): a package's
+folder of the same name (a ``launch/`` with an ``__init__.py``, xacro's own sources) is never
+read for them."""
 SOURCE_FOLDERS = ("", "src", "python")
 """Folders of a package holding its Python packages (``package_dir`` layouts seen in ROS)."""
 MAX_MODULE_BYTES = 1024 * 1024

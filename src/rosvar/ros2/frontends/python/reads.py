@@ -18,8 +18,10 @@ import yaml
 from rosvar.bounded_yaml import check_limits
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.files import FileRefused, read_file
+from rosvar.ros2.frontends.python import launch_time
+from rosvar.ros2.frontends.python.default_files import DefaultFiles
 from rosvar.ros2.frontends.python.modules import ModulePath
-from rosvar.ros2.frontends.python.text import Text
+from rosvar.ros2.frontends.python.text import PYTHON_YAML, Sub, Text
 from rosvar.ros2.frontends.python.values import (
     Dynamic,
     FileHandle,
@@ -35,6 +37,7 @@ class Interpreter(Protocol):
 
     modules: ModulePath | None
     sink: DiagnosticSink
+    default_files: DefaultFiles
 
     def path_of(self, value: Value) -> str | None: ...
 
@@ -58,7 +61,8 @@ def open_file(
     if mode not in _READ_MODES:
         return interpreter.not_followed(f"open() in mode {mode!r}", node)
     if path is None and isinstance(given, Dynamic) and given.text is not None:
-        return FileHandle(given.text)  # named at launch time
+        path = interpreter.default_files.opened(given.text, interpreter.path_of)
+        return FileHandle(given.text if path is None else path)  # named at launch time
     if path is None:
         return interpreter.not_followed("open() of a path not known statically", node)
     return FileHandle(path)
@@ -97,6 +101,8 @@ def load_yaml(
         stream = text(interpreter, stream, node)
     if isinstance(stream, Unknown):
         return stream
+    if isinstance(stream, Dynamic) and stream.kind is str:  # a launch-time string
+        return Dynamic(Text.of(Sub(PYTHON_YAML, (launch_time.as_text(stream),))), None)
     if not isinstance(stream, str):
         return interpreter.not_followed("yaml.load() of a value not known statically", node)
     try:

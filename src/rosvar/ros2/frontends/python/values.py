@@ -53,6 +53,40 @@ class FileHandle:
 
 
 @dataclass(frozen=True, slots=True)
+class FilePath:
+    """A ``pathlib.Path``: ``head``, a text of substitutions giving a directory (a package's
+    share directory), then ``tail``, literal and normalized as pathlib does (``''``: none);
+    without a head, ``tail`` is the whole path."""
+
+    head: Text | None
+    tail: str
+
+
+@dataclass(frozen=True, slots=True)
+class Pattern:
+    """``re.compile(source)`` of a literal pattern."""
+
+    source: str
+
+
+@dataclass(frozen=True, slots=True)
+class Match:
+    """A match of a :class:`Pattern` in a literal string: the text matched and its groups."""
+
+    text: str
+    groups: tuple[str | None, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class XacroDocument:
+    """``xacro.process_file(path, mappings=...)``: the document xacro makes of the file, which
+    the command ``command`` (``xacro PATH name:=value ...``) prints; rosvar's own xacro reads
+    it where a robot description is analysed, never the xacro package."""
+
+    command: Text
+
+
+@dataclass(frozen=True, slots=True)
 class LaunchYaml:
     """``yaml.safe_load`` of a file named at launch time, indexed by ``keys``: its
     ``['/**']['ros__parameters']`` given as a node's parameters is that parameter file."""
@@ -211,6 +245,10 @@ Value = (
     | Dynamic
     | Conditional
     | FileHandle
+    | FilePath
+    | Pattern
+    | Match
+    | XacroDocument
     | LaunchYaml
     | Condition
     | Module
