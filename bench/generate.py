@@ -618,7 +618,7 @@ def _ros2_eval(rng: random.Random, plan: _Ros2Plan, joint: str, flag: str = "") 
         f"'$(var {third.name})' == '{third.values[-1]}'",
         f"'$(var {fourth.name})' != '{fourth.values[0]}'",
     ]
-    return f"$(eval {f' {joint} '.join(tests)})"
+    return f"$(eval &quot;{f' {joint} '.join(tests)}&quot;)"  # one argument, as launch takes
 
 
 def _ros2_launch(

@@ -15,6 +15,7 @@ import pytest
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import parse_xml_file
 from rosvar.ros.version import RosVersion
+from rosvar.ros2.substitutions import Call, parse
 from rosvar.workspace import discover
 from rosvar.workspace.executables import executables
 from rosvar.workspace.launch_files import LaunchFormat
@@ -114,6 +115,19 @@ def test_consistent_and_deep(ros2_workspace: Path) -> None:
         return 1 + max((depth(target) for target in includes[path]), default=0)
 
     assert max(depth(path) for path in includes) == generate.ROS2_MAX_LEVEL + 1
+
+
+def test_expressions_are_one_argument(ros2_workspace: Path) -> None:
+    """Launch's ``$(eval)`` takes the expression and optional modules: an expression not
+    quoted whole is split at its blanks into more arguments, and the file does not load."""
+    evals = 0
+    for path in ros2_workspace.glob("*/launch/*.launch.xml"):
+        for entity in _walk(_root(str(path))):
+            for text in entity.attributes.values():
+                calls = [part for part in parse(text) if isinstance(part, Call)]
+                evals += sum(call.name == "eval" for call in calls)
+                assert all(len(c.arguments) == 1 for c in calls if c.name == "eval"), text
+    assert (evals > 0) == (ros2_workspace.parent.name.startswith("ros2-dense"))
 
 
 @pytest.mark.parametrize("shape", ["ros2", "ros2-dense"])

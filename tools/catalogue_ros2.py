@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from catalogue_review import Review, Source, by_parameter, use
+from catalogue_review import Review, Source, by_parameter, read, use
 
 NAV2 = [
     "nav2_amcl",
@@ -390,23 +390,25 @@ JSB = "joint_state_broadcaster/src/joint_state_broadcaster.cpp"
 JTC = "joint_trajectory_controller/src/joint_trajectory_controller.cpp"
 JTC_STATE = "control_msgs/msg/JointTrajectoryControllerState"
 DIFF_DRIVE = "diff_drive_controller/src/diff_drive_controller.cpp"
+DIFF_DRIVE_PARAMETERS = "diff_drive_controller/src/diff_drive_controller_parameter.yaml"
 GRIPPER = "gripper_controllers/include/gripper_controllers/gripper_action_controller_impl.hpp"
 GRIPPER_REVIEW = _controller(
     "serves the action ~/gripper_cmd",
     action_servers=[use("~/gripper_cmd", "control_msgs/action/GripperCommand", GRIPPER, 300)],
 )
 STEERING = "steering_controllers_library/src/steering_controllers_library.cpp"
+STEERING_PARAMETERS = "steering_controllers_library/src/steering_controllers_library.yaml"
 STEERING_REVIEW = _controller(
     "steering_controllers_library's names: ~/reference (TwistStamped) where "
-    "use_stamped_vel (default true), else ~/reference_unstamped",
+    "use_stamped_vel (default false), else ~/reference_unstamped",
     subscribes=[
         _when(
             _boundary("~/reference", "geometry_msgs/msg/TwistStamped", STEERING, 121),
-            "param('~use_stamped_vel')",
+            "param('use_stamped_vel')",
         ),
         _when(
             _boundary("~/reference_unstamped", "geometry_msgs/msg/Twist", STEERING, 127),
-            "not param('~use_stamped_vel')",
+            "not param('use_stamped_vel')",
         ),
     ],
     publishes=[
@@ -414,6 +416,7 @@ STEERING_REVIEW = _controller(
         _boundary("~/tf_odometry", "tf2_msgs/msg/TFMessage", STEERING, 173),
         _boundary("~/controller_state", "control_msgs/msg/SteeringControllerStatus", STEERING, 197),
     ],
+    params=[read("use_stamped_vel", False, STEERING_PARAMETERS, 123)],
 )
 PID = "pid_controller/src/pid_controller.cpp"
 for _package, _type, _review in (
@@ -480,11 +483,11 @@ EXTRA.update(
             subscribes=[
                 _when(
                     _boundary("~/cmd_vel", "geometry_msgs/msg/TwistStamped", DIFF_DRIVE, 348),
-                    "param('~use_stamped_vel')",
+                    "param('use_stamped_vel')",
                 ),
                 _when(
                     _boundary("~/cmd_vel_unstamped", "geometry_msgs/msg/Twist", DIFF_DRIVE, 372),
-                    "not param('~use_stamped_vel')",
+                    "not param('use_stamped_vel')",
                 ),
             ],
             publishes=[
@@ -492,8 +495,12 @@ EXTRA.update(
                 _boundary("/tf", "tf2_msgs/msg/TFMessage", DIFF_DRIVE, 447),
                 _when(
                     _boundary("~/cmd_vel_out", "geometry_msgs/msg/TwistStamped", DIFF_DRIVE, 332),
-                    "param('~publish_limited_velocity')",
+                    "param('publish_limited_velocity')",
                 ),
+            ],
+            params=[
+                read("use_stamped_vel", True, DIFF_DRIVE_PARAMETERS, 114),
+                read("publish_limited_velocity", False, DIFF_DRIVE_PARAMETERS, 104),
             ],
         ),
         (
@@ -561,18 +568,19 @@ EXTRA.update(
                 _boundary("~/reference", "control_msgs/msg/MultiDOFCommand", PID, 171),
                 _when(
                     _boundary("~/measured_state", "control_msgs/msg/MultiDOFCommand", PID, 188),
-                    "param('~use_external_measured_states')",
+                    "param('use_external_measured_states')",
                 ),
             ],
             publishes=[
                 _boundary("~/controller_state", "control_msgs/msg/MultiDOFStateStamped", PID, 221)
             ],
-            services=[
-                use(
-                    "~/set_feedforward_control",
-                    "std_srvs/srv/SetBool",
-                    PID,
-                    215,
+            services=[use("~/set_feedforward_control", "std_srvs/srv/SetBool", PID, 215)],
+            params=[
+                read(
+                    "use_external_measured_states",
+                    False,
+                    "pid_controller/src/pid_controller.yaml",
+                    40,
                 )
             ],
         ),

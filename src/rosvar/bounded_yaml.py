@@ -74,5 +74,11 @@ def check_limits(text: str) -> None:
                 raise YamlLimitError(
                     f"YAML expands to more than {MAX_NODES} nodes once aliases are resolved"
                 )
+    except yaml.MarkedYAMLError as error:
+        # libyaml's scanner counts flow levels ahead of the events (1,000 at most): the same
+        # limit, told as this module tells it (one line, not the scanner's three)
+        if "maximum nesting depth" in str(error.problem):
+            raise YamlLimitError(f"YAML nested more than {MAX_DEPTH} levels deep") from None
+        raise
     finally:
         parser.dispose()

@@ -18,14 +18,10 @@ from rosvar.ros.version import RosVersion
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.catalogue import load_catalogue
 from rosvar.workspace.interfaces.model import Interfaces, Role
+from workspace.interfaces.ros2_packages import MANIFEST
 
 DATA = Path(__file__).parents[1] / "data" / "ros2"
 CATALOGUE = Interfaces(fallback=load_catalogue(RosVersion.ROS2))
-MANIFEST = """<package format="3"><name>bringup</name><version>0.0.0</version>
-<description>d</description><maintainer email="a@b.c">a</maintainer><license>MIT</license>
-<buildtool_depend>ament_cmake</buildtool_depend>
-<export><build_type>ament_cmake</build_type></export></package>
-"""
 CONTROL = """<launch>
   <arg name="sim" default="false"/>
   <arg name="drive" default="diff"/>
@@ -37,7 +33,7 @@ CONTROL = """<launch>
         args="joint_state_broadcaster --controller-manager-timeout 60"/>
   <node pkg="controller_manager" exec="spawner" namespace="robot" unless="$(var sim)"
         args="base_controller -p $(find-pkg-share bringup)/config/$(var drive).yaml
-              --controller-ros-args '-r ~/cmd_vel:=/cmd_vel'"/>
+              --controller-ros-args '-r ~/cmd_vel_unstamped:=/cmd_vel'"/>
   <node pkg="controller_manager" exec="spawner" args="arm_controller --load-only"/>
 </launch>
 """
@@ -49,7 +45,7 @@ FILES = {
     "      type: joint_trajectory_controller/JointTrajectoryController\n",
     # the controller's own entry, whose type the spawner sets
     "config/diff.yaml": "/**/base_controller:\n  ros__parameters:\n"
-    "    type: diff_drive_controller/DiffDriveController\n",
+    "    type: diff_drive_controller/DiffDriveController\n    use_stamped_vel: false\n",
     "config/steer.yaml": "/robot/base_controller:\n  ros__parameters:\n"
     "    type: bicycle_steering_controller/BicycleSteeringController\n",
     # a bare key in a namespaced spawner: the spawner refuses it
@@ -61,7 +57,7 @@ FILES = {
 def _workspace(root: Path, launch: str, name: str = "control.launch.xml") -> str:
     package = root / "bringup"
     (package / "launch").mkdir(parents=True, exist_ok=True)
-    (package / "package.xml").write_text(MANIFEST)
+    (package / "package.xml").write_text(MANIFEST.format(name="bringup", build="ament_cmake"))
     for relative, text in FILES.items():
         (package / relative).parent.mkdir(exist_ok=True)
         (package / relative).write_text(text)
@@ -82,8 +78,10 @@ def test_a_spawner_s_controllers_use_their_types_names_in_the_manager_s_namespac
 ) -> None:
     """The broadcaster's type comes from the manager's file, its joint_states takes the
     manager's remap; the base controller's type from the spawner's file, which an arg
-    chooses, its ~/cmd_vel the spawner's --controller-ros-args remap; --load-only loads a
-    controller without configuring it: it has no topics yet."""
+    chooses, and so does its use_stamped_vel (the diff drive's file says false, the
+    steering controller's default is false): their unstamped inputs, the diff drive's
+    renamed by the spawner's --controller-ros-args; --load-only loads a controller without
+    configuring it: it has no topics yet."""
     file = _workspace(tmp_path, CONTROL)
     analysis, edges = _edges(tmp_path, file, drive=["steer", "bare"])
     found = {
@@ -93,21 +91,19 @@ def test_a_spawner_s_controllers_use_their_types_names_in_the_manager_s_namespac
     }
     assert found == {
         (Role.PUBLISHES, "/robot/platform/joint_states", "true", False),
-        (Role.SUBSCRIBES, "/cmd_vel", "drive=diff ∧ ¬sim", True),
-        (Role.SUBSCRIBES, "/robot/base_controller/cmd_vel_unstamped", "drive=diff ∧ ¬sim", True),
+        (Role.SUBSCRIBES, "/cmd_vel", "drive=diff ∧ ¬sim", False),
         (Role.PUBLISHES, "/robot/base_controller/odom", "drive=diff ∧ ¬sim", False),
-        (Role.SUBSCRIBES, "/robot/base_controller/reference", "drive=steer ∧ ¬sim", True),
         (
             Role.SUBSCRIBES,
             "/robot/base_controller/reference_unstamped",
             "drive=steer ∧ ¬sim",
-            True,
+            False,
         ),
         (Role.PUBLISHES, "/robot/base_controller/odometry", "drive=steer ∧ ¬sim", False),
     }
     assert {e.node for e in edges} == {
-        "/robot/spawner_joint_state_broadcaster: controller joint_state_broadcaster",
-        "/robot/spawner_base_controller: controller base_controller",
+        "/robot/controller_manager: controller joint_state_broadcaster",
+        "/robot/controller_manager: controller base_controller",
     }
     [odom] = [e for e in edges if e.name == "/robot/base_controller/odom"]
     assert odom.source.file.endswith("diff_drive_controller/src/diff_drive_controller.cpp")
@@ -115,7 +111,8 @@ def test_a_spawner_s_controllers_use_their_types_names_in_the_manager_s_namespac
 
 MANAGER_ELSEWHERE = """<launch>
   <node pkg="controller_manager" exec="spawner"
-        args="joint_state_broadcaster imu_sensor_broadcaster lidar -c /arm/controller_manager"/>
+        args="joint_state_broadcaster imu_sensor_broadcaster diff_drive_controller lidar
+              -c /arm/controller_manager"/>
 </launch>
 """
 
@@ -125,12 +122,19 @@ def test_a_manager_the_entry_file_does_not_launch_has_its_controllers_named_by_t
 ) -> None:
     """Gazebo's manager, or one another launch starts: its parameters are not known, so a
     controller named after a type's package is taken for that type, in the namespace of the
-    manager the spawner names; another name has no known type."""
+    manager the spawner names, and a use its parameters switch on is uncertain; another
+    name has no known type."""
     file = _workspace(tmp_path, MANAGER_ELSEWHERE)
     _analysis, edges = _edges(tmp_path, file)
-    assert {(e.role, e.name) for e in edges if not e.boundary} == {
-        (Role.PUBLISHES, "/arm/joint_states"),
-        (Role.PUBLISHES, "/arm/imu_sensor_broadcaster/imu"),
+    assert {(e.role, e.name, e.uncertain) for e in edges if e.name != "/tf"} == {
+        (Role.PUBLISHES, "/arm/joint_states", False),
+        (Role.PUBLISHES, "/arm/dynamic_joint_states", False),
+        (Role.PUBLISHES, "/arm/imu_sensor_broadcaster/imu", False),
+        (Role.PUBLISHES, "/arm/diff_drive_controller/odom", False),
+        # its parameters are not known: each input is kept, uncertain
+        (Role.SUBSCRIBES, "/arm/diff_drive_controller/cmd_vel", True),
+        (Role.SUBSCRIBES, "/arm/diff_drive_controller/cmd_vel_unstamped", True),
+        (Role.PUBLISHES, "/arm/diff_drive_controller/cmd_vel_out", True),
     }
 
 
@@ -222,3 +226,52 @@ def test_controllers_topics_have_their_publishers_in_the_repositories(
     assert not {name for name in unfed if name.endswith("joint_states")}
     spawned = [f for f in findings if ": controller joint_state_broadcaster" in str(f["message"])]
     assert spawned  # the broadcasters are in the graph (their outputs' notes name them)
+
+
+OPTIONS = """<launch>
+  <node pkg="controller_manager" exec="spawner"
+        args="imu -t imu_sensor_broadcaster/IMUSensorBroadcaster -n arm --unload-on-kill"/>
+  <node pkg="controller_manager" exec="spawner" args="joint_state_broadcaster -c"/>
+  <node pkg="controller_manager" exec="spawner" args="joint_state_broadcaster --controller"/>
+</launch>
+"""
+
+
+def test_the_spawner_s_options_as_its_argparse_reads_them(tmp_path: Path) -> None:
+    """Humble's --controller-type gives the type, the deprecated --namespace the spawner's
+    namespace (the manager's, then); a command line the spawner's argparse refuses (an
+    option without its value, an ambiguous abbreviation) loads nothing."""
+    file = _workspace(tmp_path, OPTIONS)
+    _analysis, edges = _edges(tmp_path, file)
+    assert {(e.node, e.name) for e in edges} == {
+        ("/arm/controller_manager: controller imu", "/arm/imu/imu")
+    }
+
+
+TWICE = """<launch>
+  <arg name="arm" default="true"/>
+  <node pkg="controller_manager" exec="ros2_control_node">
+    <param from="$(find-pkg-share bringup)/config/manager.yaml"/>
+  </node>
+  <node pkg="controller_manager" exec="spawner" args="joint_state_broadcaster arm_controller"/>
+  <node pkg="controller_manager" exec="spawner" args="arm_controller --inactive"
+        if="$(var arm)"/>
+</launch>
+"""
+
+
+def test_a_controller_two_spawners_load_is_one_controller(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The manager loads a name once (the second spawner finds it loaded): the trajectory
+    controller's action server is one, not two servers of one name."""
+    file = _workspace(tmp_path, TWICE)
+    _analysis, edges = _edges(tmp_path, file)
+    servers = [e for e in edges if e.role is Role.ACTION_SERVERS]
+    assert [(e.node, e.name) for e in servers] == [
+        (
+            "/controller_manager: controller arm_controller",
+            "/arm_controller/follow_joint_trajectory",
+        )
+    ]
+    assert not [f for f in _check(tmp_path, capsys) if f["check"] == "multiple-providers"]

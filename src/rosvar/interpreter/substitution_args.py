@@ -491,17 +491,28 @@ class ValueBudget:
         count = 1
         for choice in choices:
             count *= len(choice.branches)
+        return self.affordable_count(text, count)
+
+    def affordable_count(self, text: str, count: int) -> bool:
+        """:meth:`affordable` for ``count`` combinations (work that computes a value without
+        crossing its operands charges what crossing them would have, so the budget and its
+        notes are the same whichever way a value is computed)."""
         if count <= 1:
             return True
         if count > MAX_COMBINATIONS:
             reason = f"it has {count} combinations of values, over {MAX_COMBINATIONS}"
-        elif self.combinations + count > MAX_FILE_COMBINATIONS:
+        elif not self.fits(count):
             reason = f"the file's values need over {MAX_FILE_COMBINATIONS} combinations"
         else:
             self.combinations += count
             return True
         self.note(f"{_short(text)} is not computed: {reason}")
         return False
+
+    def fits(self, count: int) -> bool:
+        """Whether ``count`` more combinations stay within the file's budget (charging
+        nothing)."""
+        return self.combinations + count <= MAX_FILE_COMBINATIONS
 
     def spares(self, combinations: int) -> bool:
         """Whether work that spent ``combinations`` from here on would meet no limit: each

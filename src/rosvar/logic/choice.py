@@ -199,7 +199,7 @@ def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> C
     if not choices:
         return Choice((), None)
     return Choice._of_possible(
-        [(c, function(leaves)) for c, leaves in _crossed(choices)], choices[0].false
+        [(c, function(leaves)) for c, leaves in crossed(choices)], choices[0].false
     )
 
 
@@ -213,7 +213,7 @@ def combine_bind(
         return Choice((), None)
     false = choices[0].false
     out: list[tuple[BDD, U]] = []
-    for condition, leaves in _crossed(choices):
+    for condition, leaves in crossed(choices):
         for inner, value in function(leaves):
             if inner.var is None:  # a constant's branch, true (a choice keeps no false one)
                 out.append((condition, value))
@@ -224,7 +224,7 @@ def combine_bind(
     return Choice._of_possible(out, false)
 
 
-def _crossed(choices: Sequence[Choice[V]]) -> list[tuple[BDD, list[V]]]:
+def crossed(choices: Sequence[Choice[V]]) -> list[tuple[BDD, list[V]]]:
     """The jointly possible combinations of the (non-empty) ``choices``' leaves, in the
     order of a nested loop over the operands, first outermost."""
     false = choices[0].false

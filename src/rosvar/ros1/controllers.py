@@ -53,7 +53,7 @@ def spawned_controllers(
                             launched.namespace,
                             (),
                             launched.full_name,
-                            node.location,
+                            node,
                             ros2=False,
                         )
 

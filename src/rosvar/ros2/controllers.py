@@ -6,11 +6,12 @@ the manager ``MANAGER`` (default ``controller_manager``, relative to the spawner
 namespace) to load, configure and activate each controller ``NAME``. The manager
 (``ros2_control_node``) gives each a node of its name in the manager's namespace, with the
 manager's remaps (but those of ``robot_description``) and then the spawner's
-``--controller-ros-args``. A controller's type is the manager's parameter ``NAME.type``:
-from the manager's parameters, or set by the spawner from the entry of a ``--param-file``
-for the controller (``NAME``, ``/NS/NAME``, ``/**/NAME``: its ``type``), which comes last.
-Where a parameter file rosvar cannot read may set it, or the manager is not one the entry
-file launches (Gazebo's, another launch's), the type is not known: the core then takes a
+``--controller-ros-args``. A controller's type is the manager's parameter ``NAME.type``,
+which the spawner sets from the ``type`` of the controller's entry in its parameter files
+(``/NS/NAME``, ``/**/NAME``, ``/**``; a bare ``NAME`` only in the root namespace). The
+controller's node reads its parameters from the manager's files, then the spawner's. Where
+a file rosvar cannot read may set one, or the manager is not one the entry file launches
+(Gazebo's, another launch's), the value is not known: for the type, the core then takes a
 controller named after a type's package (``joint_state_broadcaster``) for that type.
 """
 
@@ -21,19 +22,22 @@ import itertools
 import shlex
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, replace
+from typing import NoReturn
 
 from rosvar.analyses.communication import LaunchedNode, node_branches
-from rosvar.analyses.controllers import Controller, spawned
-from rosvar.analyses.param_values import Unknown
+from rosvar.analyses.controllers import Controller, Parameters, spawned
+from rosvar.analyses.param_values import Unknown, param_default
 from rosvar.files import Confinement
 from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.logic.bdd import BDD
+from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply
 from rosvar.ros import names
 from rosvar.ros.version import RosVersion
-from rosvar.ros2.conventions.parameters import matches
+from rosvar.ros2.conventions.parameters import matches, typed
 from rosvar.ros2.resolve import given_entries, parameter_file
+from rosvar.workspace.interfaces.model import Default
 
 PACKAGE = "controller_manager"
 SPAWNER = "spawner"
@@ -44,8 +48,6 @@ default."""
 UNKNOWN_PART = "\x00"
 """Stands for a part of a spawner's arguments known only per configuration."""
 UNKNOWN = Unknown("a parameter file rosvar cannot read may set it")
-Typed = str | Unknown | None
-"""A controller's type where it is known, may be anything, or is set by nobody."""
 
 
 @dataclass(frozen=True)
@@ -97,17 +99,15 @@ def spawned_controllers(
             if spawn is None or spawn.load_only or UNKNOWN_PART in spawn.manager:
                 continue
             loads = _Loads(space, confinement, spawn, node, spawn.namespace or launched.namespace)
-            if not launched.name and spawn.controllers:  # the name the spawner gives itself
-                launched = replace(launched, name=f"spawner_{spawn.controllers[0]}")
             remaining = condition
             for found in managers:
                 both = remaining & found.condition
                 if found.full_name != loads.manager or both == space.false:
                     continue
-                yield from loads.controllers(launched, node, found, both)
+                yield from loads.controllers(node, found, both)
                 remaining &= ~found.condition
             if remaining != space.false:  # a manager the entry file does not launch
-                yield from loads.controllers(launched, node, None, remaining)
+                yield from loads.controllers(node, None, remaining)
 
 
 class _Loads:
@@ -124,7 +124,7 @@ class _Loads:
         self.space = space
         self.confinement = confinement
         self.spawn = spawn
-        self.namespace = namespace or names.SEP
+        self.namespace = names.SEP + namespace.lstrip(names.SEP)  # as the spawner makes it
         self.manager = names.canonicalize_name(names.ns_join(self.namespace, spawn.manager))
         self.files = [(space.true, self._file(path)) for path in spawn.param_files]
         self.files += [  # the spawner's own parameter files count too (Jazzy)
@@ -134,7 +134,7 @@ class _Loads:
         ]
 
     def controllers(
-        self, spawner: LaunchedNode, node: NodeDecl, manager: _Manager | None, condition: BDD
+        self, node: NodeDecl, manager: _Manager | None, condition: BDD
     ) -> Iterator[Controller]:
         """Its controllers where ``manager`` (None: one the entry file does not launch) is
         the one it asks."""
@@ -153,57 +153,77 @@ class _Loads:
         for name in self.spawn.controllers:
             if UNKNOWN_PART in name:
                 continue
-            for typed, where in self._types(name, manager, condition):
+            controller = names.ns_join(namespace, name)  # its node's full name
+            for kind, where in self._types(name, manager, condition):
                 yield Controller(
                     where,
                     name,
-                    typed,
+                    kind,
                     namespace,
                     remaps,
-                    spawner.full_name,
-                    node.location,
+                    self.manager,
+                    node,
                     ros2=True,
+                    parameters=self._parameters(manager, controller),
                 )
 
     def _types(
         self, name: str, manager: _Manager | None, condition: BDD
     ) -> Iterator[tuple[str | None, BDD]]:
-        """The types of controller ``name``, each with its condition (None: not known);
-        where the manager's parameters and the files say none, the manager refuses it."""
+        """The types of controller ``name``, each with its condition (None: not known):
+        the manager's ``NAME.type``, which the spawner sets from the ``type`` of the
+        controller's entry in its files (looked up in the spawner's namespace) and its
+        ``--controller-type``; where nothing says one, the manager refuses it."""
         space = self.space
-        found: list[tuple[BDD, Typed]] = []  # in order: a later one wins
-        if manager is None:
-            found.append((space.true, UNKNOWN))
-        else:
-            found.extend(self._manager_types(manager, name))
-        own = names.ns_join(self.namespace, name)
-        for where, entries in self.files:
-            found.append((where, _entry_type(entries, own)))
-        if self.spawn.type is not None:
-            found.append((space.true, _typed(self.spawn.type)))
-        remaining = condition
-        for where, typed in reversed(found):
-            taken = remaining & where
-            if taken != space.false and typed is not None:
-                yield (typed if isinstance(typed, str) else None), taken
-            if typed is not None:
-                remaining &= ~where
-
-    def _manager_types(self, manager: _Manager, name: str) -> Iterator[tuple[BDD, Typed]]:
-        """What the manager's own parameters, in order, say of ``NAME.type``."""
         key = f"{name}.type"
-        for parameter in manager.node.parameters:
-            if parameter.file is None:
-                if parameter.name == key:
-                    yield parameter.condition, _typed(parameter.value)
-                continue
-            entries = given_entries(parameter, self.confinement)
-            if entries is None:
-                yield parameter.condition, UNKNOWN
-                continue
-            for pattern, params in entries:
-                if key in params and matches(pattern, manager.full_name):
-                    yield parameter.condition, _typed(params[key])
+        at = None if manager is None else manager.full_name
+        found = self._sources(manager, at, key, names.ns_join(self.namespace, name), "type")
+        if self.spawn.type is not None:
+            found.append((space.true, self.spawn.type))
+        for value, where in _latest(space, found, condition):
+            yield (value if isinstance(value, str) and UNKNOWN_PART not in value else None), where
+
+    def _parameters(self, manager: _Manager | None, controller: str) -> Parameters:
+        """The controller's parameter values, each with its condition: what the manager's
+        parameters (its files' entries for the controller, its inline ones, which launch_ros
+        gives every node of the process) and then the spawner's files set, else the
+        default; a file not read may set anything."""
+
+        def lookup(name: str, default: Default | None) -> Choice[object]:
+            key = name.removeprefix("~/")
+            found = self._sources(manager, controller, key, controller, key)
+            branches = _latest(self.space, found, self.space.true)
+            remaining = self.space.true
+            for _value, where in branches:
+                remaining &= ~where
+            if remaining != self.space.false:
+                branches.append((param_default(default), remaining))
+            return Choice.of([(where, value) for value, where in branches], self.space.false)
+
+        return lookup
+
+    def _sources(
+        self, manager: _Manager | None, at: str | None, key: str, own: str, own_key: str
+    ) -> list[tuple[BDD, object]]:
+        """What sets a parameter, in order (a later one wins), each where it does: the
+        manager's parameters (``key`` of its files' entries for ``at``, or inline), then
+        the spawner's files (``own_key`` of their entry for ``own``). A value is
+        :data:`UNKNOWN` where a file is not read (or the manager's parameters not known),
+        None where a source does not set it."""
+        found: list[tuple[BDD, object]] = []
+        if manager is None or at is None:
+            found.append((self.space.true, UNKNOWN))
+        else:
+            for parameter in manager.node.parameters:
+                if parameter.file is None:
+                    if parameter.name == key:
+                        found.append((parameter.condition, _inline(parameter.value)))
+                    continue
+                entries = given_entries(parameter, self.confinement)
+                found.append((parameter.condition, _entry_value(entries, at, key)))
+        for where, entries in self.files:
+            found.append((where, _entry_value(entries, own, own_key)))
+        return found
 
     def _file(self, path: str) -> list[tuple[str, dict[str, object]]] | None:
         if UNKNOWN_PART in path:
@@ -214,21 +234,43 @@ class _Loads:
             return None
 
 
-def _entry_type(entries: list[tuple[str, dict[str, object]]] | None, own: str) -> Typed:
-    """The ``type`` a spawner's parameter file gives the controller whose node is ``own``:
-    its entry ``/NS/NAME``, ``/**/NAME`` or ``/**`` (``NAME`` only in the root namespace:
-    elsewhere the spawner refuses it), as the spawner looks them up."""
+def _latest(
+    space: ConditionSpace, found: Sequence[tuple[BDD, object]], condition: BDD
+) -> list[tuple[object, BDD]]:
+    """The values of ``found`` (in order: a later one wins; None sets nothing) within
+    ``condition``, each with where it is the one that holds."""
+    values: list[tuple[object, BDD]] = []
+    remaining = condition
+    for where, value in reversed(found):
+        if value is None:
+            continue
+        taken = remaining & where
+        if taken != space.false:
+            values.append((value, taken))
+        remaining &= ~where
+    return values
+
+
+def _entry_value(entries: list[tuple[str, dict[str, object]]] | None, fqn: str, key: str) -> object:
+    """What the entries of a parameter file (None: not read) for the node ``fqn`` (rcl's
+    wildcards; a bare key only in the root namespace) set ``key`` to; the last wins."""
     if entries is None:
         return UNKNOWN
-    typed: Typed = None
+    value: object = None
     for pattern, params in entries:
-        if "type" in params and matches(pattern, own):
-            typed = _typed(params["type"])
-    return typed
+        if key in params and matches(pattern, fqn):
+            value = params[key]
+    return value
 
 
-def _typed(value: object) -> Typed:
-    return value if isinstance(value, str) and UNKNOWN_PART not in value else UNKNOWN
+def _inline(value: Raw | None) -> object:
+    """An inline parameter's value as launch_ros gives it (YAML rules)."""
+    if not isinstance(value, str) or UNKNOWN_PART in value:
+        return UNKNOWN
+    try:
+        return typed(value)
+    except ValueError:
+        return UNKNOWN
 
 
 def _named(launched: LaunchedNode) -> LaunchedNode:
@@ -291,10 +333,18 @@ def _remaps(ros_args: Sequence[str]) -> Iterator[tuple[str, str]]:
             yield source, target
 
 
+class _Parser(argparse.ArgumentParser):
+    """An ``argparse`` parser that raises where the spawner's would print and exit (it
+    does so for an ambiguous abbreviation even without ``exit_on_error``)."""
+
+    def error(self, message: str) -> NoReturn:
+        raise argparse.ArgumentError(None, message)
+
+
 def _parser() -> argparse.ArgumentParser:
     """The spawner's options (Jazzy's ``parse_native_args``, with Humble's
     ``--controller-type`` and ``--stopped``)."""
-    parser = argparse.ArgumentParser(add_help=False, exit_on_error=False)
+    parser = _Parser(add_help=False, exit_on_error=False)
     parser.add_argument("controller_names", nargs="*")
     parser.add_argument("-c", "--controller-manager", default=MANAGER_NAME)
     parser.add_argument("-p", "--param-file", action="append", default=[])

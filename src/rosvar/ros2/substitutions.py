@@ -17,18 +17,30 @@ import shlex
 import weakref
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import cast
 
+import yaml
+
+from rosvar.bounded_yaml import check_limits
 from rosvar.files import FileCode, FileRefused, read_file
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
-from rosvar.interpreter.substitution_args import ValueBudget, too_complex
-from rosvar.logic.choice import Choice, Fail, combine_bind, ite
+from rosvar.interpreter.substitution_args import (
+    MAX_COMBINATIONS,
+    MAX_TERM_DEPTH,
+    MAX_VALUE_SIZE,
+    ValueBudget,
+    too_complex,
+)
+from rosvar.logic.bdd import BDD
+from rosvar.logic.choice import Choice, Fail, combine_bind, crossed, ite
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, TermError, concat, register
 from rosvar.memo import Memo
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS
 from rosvar.ros2.api.unmodelled import UNMODELLED
+from rosvar.ros2.boolean_eval import boolean_expression
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.frontends.python.text import (
     CONFIGURATION_EQUALS,
@@ -36,6 +48,7 @@ from rosvar.ros2.frontends.python.text import (
     NODE_NAME,
     PATH_JOIN,
     PYTHON_STRING,
+    PYTHON_YAML,
     UNKNOWN,
 )
 from rosvar.ros2.nodes import ROS2_NODES
@@ -60,10 +73,15 @@ class Call:
 Template = tuple[str | Call, ...]
 
 
+class SubstitutionTooDeep(SubstitutionSyntaxError):
+    """Substitutions nested deeper than any value may be (the parser recurses)."""
+
+
 class _Parser:
     def __init__(self, text: str) -> None:
         self.text = text
         self.at = 0
+        self.depth = 0
 
     def template(self, stop: str = "") -> Template:
         parts: list[str | Call] = []
@@ -89,6 +107,17 @@ class _Parser:
         return tuple(parts)
 
     def call(self) -> Call:
+        if self.depth >= MAX_TERM_DEPTH:
+            raise SubstitutionTooDeep(
+                f"substitutions nested more than {MAX_TERM_DEPTH} levels deep are not read"
+            )
+        self.depth += 1
+        try:
+            return self._call()
+        finally:
+            self.depth -= 1
+
+    def _call(self) -> Call:
         self.at += 2
         start = self.at
         text = self.text
@@ -128,6 +157,13 @@ class _Parser:
 def parse(text: str) -> Template:
     """``text`` as a template; raises :class:`SubstitutionSyntaxError`."""
     return _Parser(text).template()
+
+
+def _invalid(error: SubstitutionSyntaxError) -> Fail:
+    """A text outside the grammar fails as launch's parser does; one over the nesting limit
+    is rosvar's limit on hostile input."""
+    code = "nesting-too-deep" if isinstance(error, SubstitutionTooDeep) else "substitution-invalid"
+    return Fail(str(error), code)
 
 
 def command_line(text: str) -> list[Template]:
@@ -170,7 +206,9 @@ def command_line(text: str) -> list[Template]:
 
 Handler = Callable[[Interpretation[Context], Context, list[Raw]], Choice[Value]]
 HANDLERS: dict[str, Handler] = {}
-OWN = frozenset({PATH_JOIN, PYTHON_STRING, UNKNOWN, CONFIGURATION_EQUALS, EMPTY, NODE_NAME})
+OWN = frozenset(
+    {PATH_JOIN, PYTHON_STRING, PYTHON_YAML, UNKNOWN, CONFIGURATION_EQUALS, EMPTY, NODE_NAME}
+)
 """rosvar's own substitutions, which the Python frontend writes (no launch API name)."""
 
 
@@ -277,7 +315,7 @@ class Ros2Substituter:
         try:
             template = parse(text)
         except SubstitutionSyntaxError as error:
-            return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+            return Choice.const(self.space, _invalid(error))
         reads = _reads(text)
         if reads is None:
             return self.template(template, context, text)
@@ -308,7 +346,12 @@ class Ros2Substituter:
 
     def template(self, template: Template, context: Context, text: str) -> Choice[Value]:
         """The value of ``template``, a part of ``text`` (which messages name)."""
-        parts = [self._part(part, context, text) for part in template]
+        return self._joined(self._parts(template, context, text), text)
+
+    def _parts(self, template: Template, context: Context, text: str) -> list[Choice[Value]]:
+        return [self._part(part, context, text) for part in template]
+
+    def _joined(self, parts: list[Choice[Value]], text: str) -> Choice[Value]:
         if not parts:
             return Choice.const(self.space, "")
         return self.budget.join(text, parts)
@@ -319,7 +362,7 @@ class Ros2Substituter:
         try:
             arguments = command_line(text)
         except SubstitutionSyntaxError as error:
-            return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+            return Choice.const(self.space, _invalid(error))
         if not arguments:
             return Choice.const(self.space, "")
         words = [self.template(a, context, text) for a in arguments]
@@ -339,15 +382,88 @@ class Ros2Substituter:
                 self.space, Fail(f"unknown substitution '{part.name}'", "substitution-unknown")
             )
         empty = EMPTY_ARGUMENT.get(part.name, "")
-        arguments = [
-            self.template(a, context, text) if a else Choice.const(self.space, empty)
-            for a in part.arguments
-        ]
+        arguments: list[Choice[Value]] = []
+        for argument in part.arguments:
+            if not argument:
+                arguments.append(Choice.const(self.space, empty))
+                continue
+            parts = self._parts(argument, context, text)
+            if part.name == "eval" and len(part.arguments) == 1:
+                condition = self._condition(argument, parts, text)
+                if condition is not None:
+                    return condition
+            arguments.append(self._joined(parts, text))
         if not arguments:
             return handler(self.host, context, [])
         if not self.budget.affordable(text, arguments):
             return Choice.const(self.space, too_complex(text))
         return combine_bind(arguments, lambda leaves: _call(handler, self.host, context, leaves))
+
+    def _condition(
+        self, template: Template, parts: list[Choice[Value]], text: str
+    ) -> Choice[Value] | None:
+        """``$(eval template)`` (``parts``: its parts' values) computed as the condition
+        where it is true (:mod:`rosvar.ros2.boolean_eval`), with the budget and notes that
+        crossing its values would have spent and made; None where it is to be crossed."""
+        expression = boolean_expression(template, EVAL_NAMESPACES)
+        if expression is None:
+            return None
+        values = [v for v, part in zip(parts, template, strict=True) if isinstance(part, Call)]
+        product = math.prod(len(value.branches) for value in values)
+        if product <= 1 or not expression.accepts(values) or not self.budget.fits(product):
+            return None  # nothing to cross, or crossing warns or fails somewhere
+        if product > MAX_COMBINATIONS or expression.longest(values) > MAX_VALUE_SIZE:
+            return None
+        strings = cast("list[Choice[str]]", values)
+        count, first = _combinations(self.space, strings, product)
+        if count == 0:
+            self.budget.affordable_count(text, product)
+            return Choice.empty(self.space)
+        leading = _evaluation(_text(template, first))  # a boolean by the expression's shape
+        if leading not in (TRUE, FALSE):
+            return None
+        self.budget.affordable_count(text, product)  # the text's combinations
+        if not self.budget.affordable_count(text, count):  # the evaluation of each text
+            return Choice.const(self.space, too_complex(text))
+        holds = expression.condition(self.space, strings)
+        covered = self.space.true
+        for value in strings:
+            covered &= value.covered()
+        where = {TRUE: covered & holds, FALSE: covered & ~holds}
+        other = FALSE if leading == TRUE else TRUE
+        branches: list[tuple[BDD, Value]] = [(where[leading], leading)]
+        if where[other] != self.space.false:
+            branches.append((where[other], other))
+        return Choice(tuple(branches), self.space.false)
+
+
+TRUE, FALSE = str(True), str(False)
+
+
+def _combinations(
+    space: ConditionSpace, values: Sequence[Choice[str]], product: int
+) -> tuple[int, list[str]]:
+    """How many combinations of one branch of each of ``values`` are possible, and the first
+    (that of a nested loop over them, first outermost), as :func:`crossed` gives them: all
+    of them and the first branches where no two values' conditions share a variable."""
+    seen: set[str] = set()
+    for value in values:
+        for condition, _leaf in value.branches:
+            if condition.var is None:
+                continue
+            support = space.support(condition)
+            if not seen.isdisjoint(support):
+                combinations = crossed(values)
+                return len(combinations), combinations[0][1] if combinations else []
+        for condition, _leaf in value.branches:
+            seen |= space.support(condition) if condition.var is not None else set()
+    return product, [value.branches[0][1] for value in values]
+
+
+def _text(template: Template, leaves: Sequence[str]) -> str:
+    """The text ``template`` makes with ``leaves`` for its substitutions, in order."""
+    substituted = iter(leaves)
+    return "".join(part if isinstance(part, str) else next(substituted) for part in template)
 
 
 def _call(
@@ -549,6 +665,50 @@ def _python_string(
 register(PYTHON_STRING, lambda _host, value: repr(value))
 
 
+@substitution(PYTHON_YAML)
+def _python_yaml(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+    """The Python frontend's ``yaml.load`` of a launch-time string inside an expression: the
+    loaded value as a Python literal; a text that is no YAML of plain values fails, as the
+    file's ``yaml.load`` raises (or gives what the expression cannot use)."""
+    if len(args) != 1:
+        return _fail(host, f"$({PYTHON_YAML}) takes one argument", "substitution-invalid")
+    if isinstance(args[0], str):
+        return Choice.const(host.space, _yaml_literal(args[0]))
+    return Choice.const(host.space, Apply(PYTHON_YAML, (args[0],), f"yaml({args[0]})"))
+
+
+def _yaml_literal(text: str) -> str | Fail:
+    try:
+        check_limits(text)
+        loaded = yaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+    except yaml.YAMLError as error:
+        return Fail(f"yaml.load() of {text!r}: {error}", "eval-failed")
+    if not _plain(loaded):
+        return Fail(f"yaml.load() of {text!r} gives other than plain values", "eval-failed")
+    return repr(loaded)
+
+
+def _plain(value: object) -> bool:
+    """Whether ``value`` is made of what a Python literal writes back (no dates, bytes)."""
+    if value is None or isinstance(value, str | bool | int | float):
+        return True
+    if isinstance(value, list):
+        return all(_plain(item) for item in value)
+    if isinstance(value, dict):
+        return all(_plain(key) and _plain(item) for key, item in value.items())
+    return False
+
+
+def _yaml_term(_host: object, text: object) -> str:
+    value = _yaml_literal(str(text))
+    if isinstance(value, Fail):
+        raise TermError(value.message)
+    return value
+
+
+register(PYTHON_YAML, _yaml_term)
+
+
 @substitution(NODE_NAME)
 def _node_name(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
     """The Python frontend's container object given as a target: the fully qualified name of
@@ -635,6 +795,7 @@ PYTHON_EXPRESSION = EvalEnvironment(
 """What ``PythonExpression`` evaluates in: ``eval(text, {}, locals)`` whose locals are the
 ``math`` module and its names (its default ``python_modules``), under Python's builtins; no
 roslaunch names (``true``, ``arg``, ``env``: a ``NameError`` in ROS 2)."""
+EVAL_NAMESPACES = frozenset(PYTHON_EXPRESSION.namespaces)
 
 
 @substitution("anon")

@@ -619,6 +619,49 @@ def generate_launch_description():
             {"chosen": "other", "activate": "false"},
         ],
     ),
+    "python-loops-over-launch-time-lists": (
+        {
+            "main.launch.py": """import yaml
+from itertools import chain
+
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node, PushRosNamespace
+
+
+def per_camera(namespace):
+    return [GroupAction([PushRosNamespace(namespace),
+                         Node(package='pkg', executable='detect', name='detector')]),
+            Node(package='pkg', executable='relay', name='relay_' + namespace)]
+
+
+def setup(context):
+    cameras = yaml.load(LaunchConfiguration('cameras').perform(context),
+                        Loader=yaml.FullLoader)
+    nodes = list(chain(*[per_camera(camera) for camera in cameras]))
+    for index, topic in enumerate(['a', 'b']):
+        nodes.append(Node(package='pkg', executable='t', name=f'fixed_{index}_{topic}'))
+    for word in LaunchConfiguration('words').perform(context).split(','):
+        nodes.append(Node(package='pkg', executable='w', name='word_' + word.strip()))
+    return nodes
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('cameras', default_value='[camera6, camera7]'),
+        DeclareLaunchArgument('words', default_value='x'),
+        OpaqueFunction(function=setup),
+    ])
+""",
+        },
+        [
+            {},
+            {"cameras": "[]"},
+            {"cameras": "['c1']", "words": "p, q,r"},
+            {"cameras": "[a, b, c, d, e, f, g, h]", "words": "only"},
+        ],
+    ),
     "python-workspace-modules": (
         {
             "pkg_helpers/__init__.py": "",

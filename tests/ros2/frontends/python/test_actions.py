@@ -147,3 +147,51 @@ def test_an_action_given_a_value_chosen_at_launch_time_is_made_in_each_branch(
     expected = it.matches_oracle(arguments)
     containers = {node["name"]: node.get("container") for node in expected["nodes"]}
     assert containers["a"] == ("/other_box" if arguments else "/inner/own_box")
+
+
+PARAMETERS = (
+    HEADER
+    + """from launch_ros.actions import Node
+
+
+def setup(context):
+    voxel = LaunchConfiguration('voxel').perform(context)
+    scaled = float(voxel) * 10.0
+    return [Node(package='pkg', executable='n', name='n', parameters=[{
+        'performed': voxel, 'converted': str(scaled), 'scaled': scaled, 'joined': 'v' + voxel,
+        'lowered': voxel.lower(), 'substituted': LaunchConfiguration('voxel')}])]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('voxel', default_value='0.5'),
+        OpaqueFunction(function=setup),
+    ])
+"""
+)
+
+
+@pytest.mark.oracle
+@pytest.mark.parametrize("arguments", [{}, {"voxel": "2"}, {"voxel": "1e3"}])
+def test_a_launch_time_string_in_a_parameter_stays_a_string(
+    tmp_path: Path, arguments: dict[str, str]
+) -> None:
+    """launch_ros reads by YAML rules only what it performs itself (the substitution); a
+    Python string the file computed (``.perform(context)``, ``str(x)``) stays a string."""
+    it = launch(tmp_path, PARAMETERS, ".launch.py")
+    expected = it.matches_oracle(arguments)
+    [node] = expected["nodes"]
+    assert isinstance(node["parameters"]["performed"], str)
+
+
+def test_a_launch_time_string_in_a_parameter_is_typed_str(tmp_path: Path) -> None:
+    it = launch(tmp_path, PARAMETERS, ".launch.py")
+    [node] = it.analysis.resolve([str(it.main)], {"voxel": "2"}).nodes
+    assert node.parameters == {
+        "performed": "2",
+        "converted": "20.0",
+        "scaled": 20.0,
+        "joined": "v2",
+        "lowered": "2",
+        "substituted": 2,
+    }

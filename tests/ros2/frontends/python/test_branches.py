@@ -11,8 +11,10 @@ import pytest
 
 from rosvar.diagnostics import Diagnostic, DiagnosticSink
 from rosvar.frontends.entity import Entity
+from rosvar.ros2 import substitutions
 from rosvar.ros2.frontends.python import interpreter as module
 from rosvar.ros2.frontends.python.interpreter import Interpreter, OutOfBudget, entry_point
+from rosvar.ros2.frontends.python.text import render
 from rosvar.ros2.frontends.python.values import Conditional, Dynamic, Unknown, Value
 
 FLAG = "import os\nflag = os.environ['FLAG'] == 'on'\n"
@@ -158,3 +160,38 @@ def test_the_copies_count_against_the_budget(monkeypatch: pytest.MonkeyPatch) ->
     text = FLAG + "a = list(range(1000))\nfor i in range(20):\n    if flag:\n        a.append(i)\n"
     with pytest.raises(OutOfBudget):
         run(text)
+
+
+def test_a_loop_over_a_launch_time_list_reads_each_item_under_its_length() -> None:
+    """``yaml.load`` of a launch configuration is a launch-time list: a loop over it reads
+    its first items, each as ``if len(x) > i``; one beyond them is unknown."""
+    text = (
+        "import os, yaml\ncams = yaml.load(os.environ['CAMS'], Loader=yaml.FullLoader)\n"
+        "seen = []\nfor cam in cams:\n    seen.append('/' + cam)\n"
+        "upper = [cam.upper() for cam in os.environ['W'].split(',')]\n"
+    )
+    names = followed(text)
+    assert isinstance(names["cams"], Dynamic)
+    assert "rosvar-python-yaml" in render(names["cams"].source)
+    lengths: list[int] = []
+
+    def walk(value: Value) -> None:
+        if isinstance(value, Conditional):
+            walk(value.then)
+            walk(value.otherwise)
+        else:
+            assert isinstance(value, list)
+            lengths.append(len(value))
+            assert all(isinstance(item, Dynamic | Unknown) for item in value)
+
+    walk(names["seen"])
+    assert sorted(set(lengths)) == list(range(module.MAX_UNROLLED + 2))
+    walk(names["upper"])
+
+
+def test_the_yaml_substitution_gives_the_loaded_value_as_python() -> None:
+    assert substitutions._yaml_literal("[camera6, camera7]") == "['camera6', 'camera7']"
+    assert substitutions._yaml_literal("{a: 1}") == "{'a': 1}"
+    failed = substitutions._yaml_literal("[unclosed")
+    assert not isinstance(failed, str) and failed.code == "eval-failed"
+    assert not isinstance(substitutions._yaml_literal("2001-01-01"), str)  # a date

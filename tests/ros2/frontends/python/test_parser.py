@@ -261,7 +261,8 @@ def generate_launch_description():
         """<launch>
   <group scoped="false">
     <node pkg="demo" exec="driver" name="$(var robot)_driver" namespace="$(var ns)">
-      <param name="gain" value="$(var gain)"/><param name="mode" value="$(var mode sim)"/>
+      <param name="gain" value="$(var gain)"/>
+          <param name="mode" value="$(var mode sim)" type="str"/>
     </node>
   </group>
 </launch>"""
@@ -503,7 +504,7 @@ def generate_launch_description():
     <param from="$(dirname)/p.yaml" allow_substs="true"/>
     <param name="robot_description" value="$(command '$(find-exec xacro) $(dirname)/robot.xacro')"
            type="str"/>
-    <param name="home" value="$(env HOME)"/>
+    <param name="home" value="$(env HOME)" type="str"/>
     <param name="names" value="[a, b]"/>
     <param name="x" value="1"/>
   </node>

@@ -134,6 +134,10 @@ def _named_parameters(call: Call, parent: Entity, tag: str, values: dict[Key, Va
             set_attribute(call, child, "value", value)
             if isinstance(value, str) and reads_as_other_value(value):
                 child.attributes["type"] = "str"  # a literal stays a string, unlike XML's
+            elif isinstance(value, Dynamic) and value.kind is str:
+                # a launch-time Python string (`.perform(context)`, `str(x)`) too: launch_ros
+                # reads by YAML rules only the substitutions it performs itself
+                child.attributes["type"] = "str"
 
 
 def _write_pairs(call: Call, entity: Entity, param: Param, value: Value) -> None:

@@ -105,6 +105,8 @@ class Call:
                 value.test, launch_time.quoted(then), launch_time.quoted(otherwise), str
             )
             return launch_time.as_text(chosen)
+        if isinstance(value, Entity) and value.tag == "group" and len(value.children) == 1:
+            return self.text(value.children[0])  # an action put under an 'if': itself
         if isinstance(value, Entity) and value.tag == "node_container":  # a target's name
             return Text.of(Sub(NODE_NAME, (Text.of(str(value.location)),)))
         if value is None or isinstance(value, bool | int | float):

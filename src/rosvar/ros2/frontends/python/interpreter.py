@@ -18,6 +18,7 @@ from __future__ import annotations
 import ast
 import builtins
 import contextlib
+import functools
 import os
 import string
 from collections.abc import Callable, Iterator
@@ -81,6 +82,10 @@ MAX_INT_BITS = 4096
 """Largest integer the reading computes: repeated squaring must not exhaust memory."""
 CHARS_PER_STEP = 64
 """Characters of a string built that cost one step (a string is copied a word at a time)."""
+
+MAX_UNROLLED = 8
+"""Items of a launch-time list (its length known at launch time only) a loop over it reads,
+each under its own test; an item beyond them is an unknown value."""
 
 MAX_IMPORT_DEPTH = 20
 """Modules being read at once (a module importing another...): deeper imports stay symbolic."""
@@ -697,13 +702,13 @@ class Interpreter:
                 then[-1 - end], otherwise[-1 - end]
             ):
                 end += 1
-            middles = [
-                _actions(then[start : len(then) - end]),
-                _actions(otherwise[start : len(otherwise) - end]),
-            ]
-            if middles[0] is None or middles[1] is None:
+            middles = (then[start : len(then) - end], otherwise[start : len(otherwise) - end])
+            if _actions(middles[0]) is None or _actions(middles[1]) is None:
                 return None
-            chosen = self.each_guarded(test, middles[0], middles[1], node)
+            chosen = [
+                *self._guarded_items(launch_time.truth(test), middles[0], node),
+                *self._guarded_items(launch_time.negated(test), middles[1], node),
+            ]
             return [*then[:start], *chosen, *then[len(then) - end :]]
         if isinstance(then, dict) and isinstance(otherwise, dict):
             if set(then) != set(otherwise) and not isinstance(value, Instance):
@@ -763,6 +768,22 @@ class Interpreter:
         finally:
             self.guards.pop()
 
+    def _guarded_items(self, test: Text, items: list[Value], node: ast.AST) -> list[Value]:
+        """``items`` (actions, lists of them) under ``test``, as they are nested."""
+        self.guards.append(test)
+        try:
+            return [self._guarded_item(item, node) for item in items]
+        finally:
+            self.guards.pop()
+
+    def _guarded_item(self, item: Value, node: ast.AST) -> Value:
+        if isinstance(item, Entity):
+            return self.guarded_action(item, node)
+        if isinstance(item, list | tuple):
+            inner = [self._guarded_item(part, node) for part in item]
+            return inner if isinstance(item, list) else tuple(inner)
+        return self.guarded_item(item, node)
+
     def guarded_action(self, action: Entity, node: ast.AST) -> Entity:
         """``action`` under the guards being read (unless it was made under them)."""
         if not self.guards:
@@ -821,6 +842,10 @@ class Interpreter:
                 None,
             )
             return
+        if isinstance(iterable, Dynamic):
+            self.unrolled(iterable, functools.partial(self._body, node, scope), node, scope)
+            self.block(node.orelse, scope)
+            return
         items = self.iterate(iterable, node.iter)
         if items is None:
             return
@@ -833,6 +858,31 @@ class Interpreter:
             except _Continue:
                 continue
         self.block(node.orelse, scope)
+
+    def _body(self, node: ast.For, scope: Scope, item: Value) -> None:
+        """The loop's body for one item of a launch-time list."""
+        self.assign(node.target, item, scope)
+        try:
+            self.block(node.body, scope)
+        except _Continue:
+            pass
+        except _Break:
+            self.not_followed("a 'break' in a loop over a launch-time list", node)
+
+    def unrolled(
+        self, iterable: Dynamic, run: Callable[[Value], None], node: ast.AST, scope: Scope
+    ) -> None:
+        """A loop over a launch-time list of unknown length (``yaml.load`` or ``split`` of
+        a launch configuration): ``run`` of each of its first :data:`MAX_UNROLLED` items,
+        each as an ``if len(x) > i`` would read it; an item beyond them is unknown, so that
+        what is made of it fails where it is needed, in the configurations that give it."""
+        kind = str if iterable.kind is list else None
+        for index in range(MAX_UNROLLED + 1):
+            test = Text.of("len(", iterable.source, f") > {index}")
+            item: Value = Dynamic(Text.of("(", iterable.source, f")[{index}]"), kind)
+            if index == MAX_UNROLLED:
+                item = Unknown(f"an item beyond the first {MAX_UNROLLED} of a launch-time list")
+            self._branches(test, functools.partial(run, item), lambda: None, node, scope, None)
 
     def _break(self, node: ast.Break, scope: Scope) -> None:
         raise _Break
@@ -1429,10 +1479,20 @@ class Interpreter:
         """The comprehension; over a value chosen at launch time, that of each branch's
         value, chosen."""
         first = node.generators[0]
+        iterable = self.expr(first.iter, scope)
+        if isinstance(iterable, Dynamic) and not isinstance(node, ast.DictComp):
+            results: list[Value] = []
+
+            def add(item: Value) -> None:
+                items = self._comprehended(node, [item], scope)
+                if isinstance(items, list):
+                    self.touch(results)
+                    results.extend(items)
+
+            self.unrolled(iterable, add, node, scope)
+            return self.resolved(results)
         return self.distribute(
-            [self.expr(first.iter, scope)],
-            lambda values: self._comprehended(node, values[0], scope),
-            node,
+            [iterable], lambda values: self._comprehended(node, values[0], scope), node
         )
 
     def _comprehended(
@@ -2198,6 +2258,21 @@ def _zip(
     return [tuple(row) for row in zip(*(column or [] for column in columns), strict=False)]
 
 
+def _chain(
+    interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
+) -> Value:
+    """``itertools.chain(a, b, ...)``: the items of each in turn (a list: read once)."""
+    items: list[Value] = []
+    for arg in args:
+        part = interpreter.iterate(arg, node)
+        if part is None:
+            return Unknown("itertools.chain() of unknown items")
+        if len(items) + len(part) > MAX_LENGTH:
+            return interpreter.not_followed(f"a list longer than {MAX_LENGTH}", node)
+        items += part
+    return items
+
+
 def _sys_path(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
@@ -2448,6 +2523,7 @@ BUILTINS: dict[str, Builtin] = {
     "open": reads.open_file,
     "yaml.safe_load": reads.load_yaml,
     "yaml.load": reads.load_yaml,
+    "itertools.chain": _chain,
     "copy.copy": _copy(deep=False),
     "copy.deepcopy": _copy(deep=True),
     "sys.path.append": _sys_path,

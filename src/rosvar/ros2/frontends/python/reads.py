@@ -18,9 +18,10 @@ import yaml
 from rosvar.bounded_yaml import check_limits
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.files import FileRefused, read_file
+from rosvar.ros2.frontends.python import launch_time
 from rosvar.ros2.frontends.python.default_files import DefaultFiles
 from rosvar.ros2.frontends.python.modules import ModulePath
-from rosvar.ros2.frontends.python.text import Text
+from rosvar.ros2.frontends.python.text import PYTHON_YAML, Sub, Text
 from rosvar.ros2.frontends.python.values import (
     Dynamic,
     FileHandle,
@@ -100,6 +101,8 @@ def load_yaml(
         stream = text(interpreter, stream, node)
     if isinstance(stream, Unknown):
         return stream
+    if isinstance(stream, Dynamic) and stream.kind is str:  # a launch-time string
+        return Dynamic(Text.of(Sub(PYTHON_YAML, (launch_time.as_text(stream),))), None)
     if not isinstance(stream, str):
         return interpreter.not_followed("yaml.load() of a value not known statically", node)
     try:

@@ -23,6 +23,11 @@ PYTHON_STRING = "rosvar-python-string"
 """The substitution giving its argument's value as a Python string literal (``repr``): a
 launch-time string inside a Python expression the interpreter evaluates, whatever quotes or
 backslashes the value holds; XML has none."""
+PYTHON_YAML = "rosvar-python-yaml"
+"""The substitution giving ``yaml.safe_load`` of its argument's value as a Python literal
+(``repr``): a launch-time string a Python file loads as YAML (autoware's
+``yaml.load(LaunchConfiguration('camera_namespaces').perform(context))``), inside an
+expression the interpreter evaluates; XML has none."""
 CONFIGURATION_EQUALS = "rosvar-configuration-equals"
 """``LaunchConfigurationEquals(name, value)``: whether the launch configuration ``name`` is
 the text ``value`` (plain text equality; an undefined one equals only no value), which no
