@@ -102,8 +102,8 @@ def test_a_spawner_s_controllers_use_their_types_names_in_the_manager_s_namespac
         (Role.PUBLISHES, "/robot/base_controller/odometry", "drive=steer ∧ ¬sim", False),
     }
     assert {e.node for e in edges} == {
-        "/robot/spawner_joint_state_broadcaster: controller joint_state_broadcaster",
-        "/robot/spawner_base_controller: controller base_controller",
+        "/robot/controller_manager: controller joint_state_broadcaster",
+        "/robot/controller_manager: controller base_controller",
     }
     [odom] = [e for e in edges if e.name == "/robot/base_controller/odom"]
     assert odom.source.file.endswith("diff_drive_controller/src/diff_drive_controller.cpp")
@@ -243,4 +243,35 @@ def test_the_spawner_s_options_as_its_argparse_reads_them(tmp_path: Path) -> Non
     option without its value, an ambiguous abbreviation) loads nothing."""
     file = _workspace(tmp_path, OPTIONS)
     _analysis, edges = _edges(tmp_path, file)
-    assert {(e.node, e.name) for e in edges} == {("/spawner_imu: controller imu", "/arm/imu/imu")}
+    assert {(e.node, e.name) for e in edges} == {
+        ("/arm/controller_manager: controller imu", "/arm/imu/imu")
+    }
+
+
+TWICE = """<launch>
+  <arg name="arm" default="true"/>
+  <node pkg="controller_manager" exec="ros2_control_node">
+    <param from="$(find-pkg-share bringup)/config/manager.yaml"/>
+  </node>
+  <node pkg="controller_manager" exec="spawner" args="joint_state_broadcaster arm_controller"/>
+  <node pkg="controller_manager" exec="spawner" args="arm_controller --inactive"
+        if="$(var arm)"/>
+</launch>
+"""
+
+
+def test_a_controller_two_spawners_load_is_one_controller(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The manager loads a name once (the second spawner finds it loaded): the trajectory
+    controller's action server is one, not two servers of one name."""
+    file = _workspace(tmp_path, TWICE)
+    _analysis, edges = _edges(tmp_path, file)
+    servers = [e for e in edges if e.role is Role.ACTION_SERVERS]
+    assert [(e.node, e.name) for e in servers] == [
+        (
+            "/controller_manager: controller arm_controller",
+            "/arm_controller/follow_joint_trajectory",
+        )
+    ]
+    assert not [f for f in _check(tmp_path, capsys) if f["check"] == "multiple-providers"]

@@ -366,3 +366,29 @@ def test_large_python_files_are_refused_before_parsing(
     unread = [f for f in json.loads(checked.stdout)["findings"] if f["check"] == "unread"]
     assert [f["name"] for f in unread] == [code, code], unread  # big.launch.py, big.py
     assert f"[{code}]" in run("metrics", str(ws)).stderr
+
+
+DEEP = "[" * 900 + "1" + "]" * 900
+"""A typed text within the length limits, nested deeper than PyYAML's constructor can
+recurse."""
+
+
+@pytest.mark.parametrize(
+    "node",
+    [
+        f'<node pkg="pkg" exec="n"><param name="p" value="{DEEP}" type="list_of_int"/></node>',
+        f'<node pkg="pkg" exec="n" name="$(not {DEEP})"/>',
+        '<node pkg="pkg" exec="n" name="' + "$(var " * 3000 + "x" + ")" * 3000 + '"/>',
+        '<executable cmd="' + "$(not " * 3000 + "true" + ")" * 3000 + '"/>',
+    ],
+)
+def test_deep_texts_are_read_within_the_limits(tmp_path: Path, node: str) -> None:
+    """Every YAML reading of a value goes through the bounded loader, typed texts too, and
+    substitutions nest 100 levels at most: a RecursionError traceback in every command
+    before."""
+    ws = workspace(tmp_path, {"launch/deep.launch.xml": f"<launch>{node}</launch>"})
+    _done, document = resolve(ws, "launch/deep.launch.xml")
+    assert not document["ok"]
+    for command in ("analyze", "features", "check"):
+        done = run(command, str(ws))
+        assert "Traceback" not in done.stderr, (command, done.stderr[-2000:])

@@ -10,11 +10,12 @@ import pytest
 from ros2.tags.launches import launch
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.safe_eval import EvalEnvironment, evaluate
+from rosvar.interpreter.substitution_args import MAX_TERM_DEPTH
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.memo import Memo
 from rosvar.outputs.describe import describe_model
 from rosvar.ros2 import substitutions
-from rosvar.ros2.substitutions import Call, SubstitutionSyntaxError, parse
+from rosvar.ros2.substitutions import Call, SubstitutionSyntaxError, SubstitutionTooDeep, parse
 from rosvar.workspace import discover
 
 MANIFEST = """<package format="3"><name>p</name>
@@ -33,6 +34,16 @@ def test_nested_and_quoted_arguments() -> None:
 def test_malformed_text_is_refused(text: str) -> None:
     with pytest.raises(SubstitutionSyntaxError):
         parse(text)
+
+
+def test_nesting_is_bounded_before_the_parser_recurses_too_deep() -> None:
+    """Each nested ``$(...)`` is a frame of the parser, and of every walk of its values: 100
+    levels (the limit of a value's terms), where 3,000 ended in a RecursionError."""
+    nested = "$(var " * MAX_TERM_DEPTH + "x" + ")" * MAX_TERM_DEPTH
+    assert parse(nested)[0] == Call("var", (parse(nested[6:-1]),))
+    for deeper in (MAX_TERM_DEPTH + 1, 3000):
+        with pytest.raises(SubstitutionTooDeep, match="nested more than 100 levels"):
+            parse("a $(not " * deeper + "true" + ")" * deeper)
 
 
 def test_anon_names_are_kept_per_id_and_scoped_by_groups(tmp_path: Path) -> None:

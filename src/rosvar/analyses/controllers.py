@@ -1,5 +1,5 @@
 """Controllers: the names the controllers a controller manager loads use, as edges of the
-spawner that has them loaded.
+spawner that has them loaded (ROS 1) or of the manager that runs them (ROS 2).
 
 Controllers are plugins of a controller manager (ROS 1: ``gazebo_ros_control`` or the
 robot's hardware node; ROS 2: ``ros2_control_node``), not nodes: the launch files name them
@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from collections import defaultdict
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from rosvar.analyses.communication import CHANNEL, Edge, LaunchedNode, entry_names
 from rosvar.analyses.when import when_condition
@@ -52,7 +52,10 @@ class Controller:
     type: str | None
     namespace: str
     remaps: tuple[tuple[BDD, Raw, Raw], ...]
-    spawner: str  # the spawner's resolved name
+    owner: str
+    """Whose edges they are: the process that runs the controller as the graph names it
+    (ROS 2: the manager's full name, so that two spawners of one controller give one
+    controller; ROS 1: the spawner's, its manager being implicit)."""
     declaration: NodeDecl  # the spawner's (its args are the scope of a use's when:)
     ros2: bool
     parameters: Parameters | None = None
@@ -78,16 +81,24 @@ def controller_edges(
     space: ConditionSpace, model: LaunchModel, interfaces: Interfaces, confinement: Confinement
 ) -> list[Edge]:
     """The edges of the controllers the spawners of ``model`` have loaded, where their type
-    is a known controller type (``confinement``: where parameter files may be read)."""
+    is a known controller type (``confinement``: where parameter files may be read). One
+    controller that several spawners load is one controller (the manager loads a name
+    once): its uses are kept once, where any of them holds, at the first spawner."""
     types = _Types(interfaces)
-    edges = []
+    edges: dict[tuple[object, ...], Edge] = {}
     for version in sorted({node.schema.version for node in model.nodes}):
         for reader in SPAWNED.get(version, ()):
             for controller in reader(space, model, confinement):
                 interface = types.of(controller)
-                if interface is not None:
-                    edges.extend(_edges(space, model.file, controller, interface))
-    return edges
+                if interface is None:
+                    continue
+                for edge in _edges(space, model.file, controller, interface):
+                    key = (edge.node, edge.role, edge.name, edge.source, edge.uncertain)
+                    known = edges.get(key)
+                    if known is not None:
+                        edge = replace(known, condition=known.condition | edge.condition)
+                    edges[key] = edge
+    return list(edges.values())
 
 
 def _edges(
@@ -103,7 +114,7 @@ def _edges(
         (),
         ros2=controller.ros2,
     )
-    label = f"{controller.spawner}: controller {controller.name}"
+    label = f"{controller.owner}: controller {controller.name}"
     edges = []
     defaults = {e.name.removeprefix("~/"): e.default for e in interface.of(Role.PARAMS) if e.static}
     for entry in interface.entries:

@@ -21,6 +21,7 @@ from collections.abc import Callable, Sequence
 
 import yaml
 
+from rosvar import bounded_yaml
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
 from rosvar.logic.choice import Choice, Fail
@@ -74,8 +75,8 @@ def typed_bool(text: str) -> bool:
     if not text or len(text) > MAX_BOOLEAN_TEXT:
         raise NotBoolean(f"Cannot convert value '{text[:80]}' to 'bool'")
     try:
-        value = yaml.safe_load(text)
-    except yaml.YAMLError:
+        value = bounded_yaml.safe_load(text)
+    except yaml.YAMLError:  # a limit too: no YAML that deep or large is a boolean
         raise NotBoolean(f"Failed to convert '{text}' to 'bool'") from None
     if not isinstance(value, bool):
         raise NotBoolean(f"Cannot convert value '{text}' to 'bool'")

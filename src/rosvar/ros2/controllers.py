@@ -99,17 +99,15 @@ def spawned_controllers(
             if spawn is None or spawn.load_only or UNKNOWN_PART in spawn.manager:
                 continue
             loads = _Loads(space, confinement, spawn, node, spawn.namespace or launched.namespace)
-            if not launched.name and spawn.controllers:  # the name the spawner gives itself
-                launched = replace(launched, name=f"spawner_{spawn.controllers[0]}")
             remaining = condition
             for found in managers:
                 both = remaining & found.condition
                 if found.full_name != loads.manager or both == space.false:
                     continue
-                yield from loads.controllers(launched, node, found, both)
+                yield from loads.controllers(node, found, both)
                 remaining &= ~found.condition
             if remaining != space.false:  # a manager the entry file does not launch
-                yield from loads.controllers(launched, node, None, remaining)
+                yield from loads.controllers(node, None, remaining)
 
 
 class _Loads:
@@ -136,7 +134,7 @@ class _Loads:
         ]
 
     def controllers(
-        self, spawner: LaunchedNode, node: NodeDecl, manager: _Manager | None, condition: BDD
+        self, node: NodeDecl, manager: _Manager | None, condition: BDD
     ) -> Iterator[Controller]:
         """Its controllers where ``manager`` (None: one the entry file does not launch) is
         the one it asks."""
@@ -163,7 +161,7 @@ class _Loads:
                     kind,
                     namespace,
                     remaps,
-                    spawner.full_name,
+                    self.manager,
                     node,
                     ros2=True,
                     parameters=self._parameters(manager, controller),

@@ -28,6 +28,7 @@ from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
 from rosvar.interpreter.substitution_args import (
     MAX_COMBINATIONS,
+    MAX_TERM_DEPTH,
     MAX_VALUE_SIZE,
     ValueBudget,
     too_complex,
@@ -72,10 +73,15 @@ class Call:
 Template = tuple[str | Call, ...]
 
 
+class SubstitutionTooDeep(SubstitutionSyntaxError):
+    """Substitutions nested deeper than any value may be (the parser recurses)."""
+
+
 class _Parser:
     def __init__(self, text: str) -> None:
         self.text = text
         self.at = 0
+        self.depth = 0
 
     def template(self, stop: str = "") -> Template:
         parts: list[str | Call] = []
@@ -101,6 +107,17 @@ class _Parser:
         return tuple(parts)
 
     def call(self) -> Call:
+        if self.depth >= MAX_TERM_DEPTH:
+            raise SubstitutionTooDeep(
+                f"substitutions nested more than {MAX_TERM_DEPTH} levels deep are not read"
+            )
+        self.depth += 1
+        try:
+            return self._call()
+        finally:
+            self.depth -= 1
+
+    def _call(self) -> Call:
         self.at += 2
         start = self.at
         text = self.text
@@ -140,6 +157,13 @@ class _Parser:
 def parse(text: str) -> Template:
     """``text`` as a template; raises :class:`SubstitutionSyntaxError`."""
     return _Parser(text).template()
+
+
+def _invalid(error: SubstitutionSyntaxError) -> Fail:
+    """A text outside the grammar fails as launch's parser does; one over the nesting limit
+    is rosvar's limit on hostile input."""
+    code = "nesting-too-deep" if isinstance(error, SubstitutionTooDeep) else "substitution-invalid"
+    return Fail(str(error), code)
 
 
 def command_line(text: str) -> list[Template]:
@@ -291,7 +315,7 @@ class Ros2Substituter:
         try:
             template = parse(text)
         except SubstitutionSyntaxError as error:
-            return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+            return Choice.const(self.space, _invalid(error))
         reads = _reads(text)
         if reads is None:
             return self.template(template, context, text)
@@ -338,7 +362,7 @@ class Ros2Substituter:
         try:
             arguments = command_line(text)
         except SubstitutionSyntaxError as error:
-            return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
+            return Choice.const(self.space, _invalid(error))
         if not arguments:
             return Choice.const(self.space, "")
         words = [self.template(a, context, text) for a in arguments]

@@ -111,21 +111,23 @@ def _is_launch_file(path: Path, dot_launch: bool) -> bool:
 
 MOVEIT_DEPS = ("launch_param_builder", "xacro")
 """What ``moveit_configs_utils`` imports (``launch_param_builder``, which imports ``xacro``)."""
+XACRO = ("xacro",)
+"""For repositories whose packages depend on ``xacro`` and whose launch files import it."""
 
 REPOSITORIES = {
     r.name: r
     for r in (
         Repository("Universal_Robots_ROS2_Driver", deps=("moveit2", *MOVEIT_DEPS)),
         Repository("autoware.universe"),
-        Repository("clearpath_common"),
+        Repository("clearpath_common", deps=XACRO),
         Repository("demos"),
-        Repository("husky"),
+        Repository("husky", deps=XACRO),
         Repository("image_pipeline"),
         Repository("moveit2", deps=MOVEIT_DEPS),
         Repository("moveit2_tutorials", deps=("moveit2", *MOVEIT_DEPS)),
-        Repository("realsense-ros"),
+        Repository("realsense-ros", deps=XACRO),
         Repository("ros2_control_demos"),
-        Repository("ros_gz", dot_launch=True),
+        Repository("ros_gz", dot_launch=True, deps=XACRO),
         Repository("slam_toolbox"),
     )
 }

@@ -4,7 +4,14 @@ from __future__ import annotations
 
 import pytest
 
-from rosvar.ros2.conventions.parameters import Source, effective, file_entries, matches, typed
+from rosvar.ros2.conventions.parameters import (
+    Source,
+    coerce,
+    effective,
+    file_entries,
+    matches,
+    typed,
+)
 
 
 def test_wildcards() -> None:
@@ -31,3 +38,17 @@ def test_typed_values() -> None:
 def test_values_no_parameter_holds(text: str) -> None:
     with pytest.raises(ValueError):
         typed(text)
+
+
+DEEP = "[" * 900 + "1" + "]" * 900
+"""Within the length of a typed value; PyYAML's constructor ran out of Python's recursion."""
+
+
+@pytest.mark.parametrize("type_name", ["list_of_int", "bool"])
+def test_a_value_nested_deeper_than_the_yaml_limit_is_refused(type_name: str) -> None:
+    with pytest.raises(ValueError, match="nested more than 100 levels"):
+        coerce(DEEP, type_name)
+
+
+def test_an_untyped_value_nested_deeper_than_the_yaml_limit_stays_text() -> None:
+    assert typed(DEEP) == coerce(DEEP, "yaml") == DEEP

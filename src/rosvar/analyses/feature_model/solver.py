@@ -227,7 +227,7 @@ class Solver:
         return total
 
 
-SOLVER_CACHE = 1 << 20
+SOLVER_CACHE = 1 << 18
 """Most entries of CUDD's computed table in the solver's manager (``dd`` lets it grow without
 bound). Components are built one after another and share no variable, so the table only
 helps within one component's conjunction; grown with the whole workspace it only costs

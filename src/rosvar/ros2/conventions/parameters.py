@@ -54,7 +54,9 @@ def _yaml(text: str) -> object:
     if len(text) > MAX_TYPED_TEXT:
         raise ValueError(f"a value over {MAX_TYPED_TEXT} characters is not converted")
     try:
-        return yaml.safe_load(text)
+        return bounded_yaml.safe_load(text)
+    except bounded_yaml.YamlLimitError as refused:
+        raise ValueError(f"a value is not converted: {refused}") from None
     except yaml.YAMLError:
         raise ValueError(f"Failed to convert '{text}' using yaml rules") from None
 

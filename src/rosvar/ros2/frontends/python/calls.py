@@ -190,13 +190,18 @@ def _substitution(name: str, signature: Signature) -> Builder:
     return build
 
 
-def _performed(builder: Builder) -> Builder:
+def _performed(builder: Builder, signature: Signature) -> Builder:
     """A function giving the string a substitution gives (``get_package_share_directory``):
-    a ``str`` at launch time, not a substitution object (``isinstance(p, str)`` holds)."""
+    a ``str`` at launch time, not a substitution object (``isinstance(p, str)`` holds).
+    Called without its optional arguments (``os.getenv(name)``, which gives ``None`` where
+    ``$(env name)`` fails), it stays the substitution."""
 
     def build(call: Call) -> Value:
         made = builder(call)
-        return launch_time.performed(made) if isinstance(made, Text) else made
+        given = len(call.args) + len(call.kwargs)
+        if isinstance(made, Text) and given >= len(signature.arguments):
+            return launch_time.performed(made)
+        return made
 
     return build
 
@@ -205,7 +210,7 @@ for _substitution_entry in SUBSTITUTIONS:
     for _signature in _substitution_entry.signatures:
         _builder = _substitution(_substitution_entry.names[0], _signature)
         if _signature.function:
-            _builder = _performed(_builder)
+            _builder = _performed(_builder, _signature)
         CALLS[python_name(_signature.qualified)] = _builder
 
 
