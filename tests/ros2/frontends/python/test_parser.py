@@ -611,3 +611,23 @@ def test_the_budget_counts_what_each_operation_builds(body: str) -> None:
     assert tree is None
     (budget,) = [d for d in diagnostics if d.code == "python-budget"]
     assert budget.location.line > 1
+
+
+@pytest.mark.parametrize(("levels", "read_whole"), [(8, True), (60, False)])
+def test_the_description_returned_is_charged_as_it_is_walked(levels: int, read_whole: bool) -> None:
+    """Each level holds the last one twice, once inside a timer built before: the charge of
+    each operation credits both, but the interpretation walks 2^levels elements. The
+    description returned is counted as walked, each shared element once per place."""
+    body = (
+        "g = Node(package='p', executable='e')\n"
+        f"    for i in range({levels}):\n"
+        "        g = GroupAction([g, TimerAction(period=1.0, actions=[g])])\n"
+        "    return LaunchDescription([g])\n"
+    )
+    source = IMPORTS + f"def generate_launch_description():\n    {body}"
+    result = parse_python_launch_bytes(source.encode(), "t.launch.py")  # not walked here
+    read_at_all = result.root is not None  # pytest would print the shared tree, whole
+    assert read_at_all == read_whole
+    if not read_whole:
+        (budget,) = [d for d in result.diagnostics if d.code == "python-budget"]
+        assert budget.location.line == len(IMPORTS.splitlines()) + 5  # the return

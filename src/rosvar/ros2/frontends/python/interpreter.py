@@ -211,6 +211,31 @@ class Expansion:
         return measure(value) - credit
 
 
+def walked(root: Entity, limit: int) -> int:
+    """The elements the interpretation walks from ``root``: a shared element once for each
+    place it occurs. Counted without recursion, each element once (its count remembered by
+    identity); past ``limit``, or for an element holding itself, ``limit + 1``. The charge of
+    each operation credits the elements built before, which two of them holding one
+    another's parts slip past (``GroupAction([g, TimerAction(period=1.0, actions=[g])])``
+    sixty deep: 2^60 elements for a few steps); this counts what is walked, once."""
+    counts: dict[int, int] = {}
+    open_: set[int] = set()  # opened and not done: ancestors of what is being counted
+    pending: list[tuple[Entity, bool]] = [(root, False)]
+    while pending:
+        element, done = pending.pop()
+        key = id(element)
+        if done:
+            open_.discard(key)
+            counts[key] = min(limit + 1, 1 + sum(counts[id(c)] for c in element.children))
+        elif key in open_:
+            return limit + 1
+        elif key not in counts:
+            open_.add(key)
+            pending.append((element, True))
+            pending.extend((child, False) for child in element.children)
+    return counts[id(root)]
+
+
 def _parts(item: object) -> Iterator[object]:
     if isinstance(item, dict):
         for key, value in item.items():
@@ -2572,6 +2597,7 @@ def _entry_point(interpreter: Interpreter, tree: ast.Module) -> Entity | None:
         return None
     result = interpreter.call_function(function, [], {}, function.node)
     if isinstance(result, Description):
+        interpreter.step(walked(result.root, MAX_STEPS - interpreter.steps))
         return result.root
     if not isinstance(result, Unknown):
         interpreter.sink.error(
