@@ -611,3 +611,25 @@ def test_the_budget_counts_what_each_operation_builds(body: str) -> None:
     assert tree is None
     (budget,) = [d for d in diagnostics if d.code == "python-budget"]
     assert budget.location.line > 1
+
+
+def test_environment_without_a_default_is_empty_where_unset() -> None:
+    """Python's ``None`` for an unset variable compares and tests as ``''`` does (RealSense's
+    ``os.getenv('ROS_DISTRO') == 'foxy'``); ``$(env X)`` would fail where launch does not."""
+    tree, diagnostics = read(
+        """
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='demo', name=os.getenv('ROBOT'), namespace=os.environ.get('NS')),
+        Node(package='demo', name=os.getenv('ROBOT', 'r1'), namespace=os.environ['NS']),
+    ])
+""",
+        IMPORTS,
+    )
+    assert diagnostics == []
+    assert tree == xml_shape(
+        """<launch>
+  <node pkg="demo" name="$(env ROBOT '')" namespace="$(env NS '')"/>
+  <node pkg="demo" name="$(env ROBOT r1)" namespace="$(env NS)"/>
+</launch>"""
+    )
