@@ -57,6 +57,7 @@ def workspace(tmp_path: Path, files: Mapping[str, str]) -> Path:
     (package / "launch").mkdir(parents=True)
     (package / "package.xml").write_text(PACKAGE_XML)
     for name, text in files.items():
+        (package / name).parent.mkdir(parents=True, exist_ok=True)
         (package / name).write_text(text)
     return tmp_path / "ws"
 
@@ -392,3 +393,52 @@ def test_deep_texts_are_read_within_the_limits(tmp_path: Path, node: str) -> Non
     for command in ("analyze", "features", "check"):
         done = run(command, str(ws))
         assert "Traceback" not in done.stderr, (command, done.stderr[-2000:])
+
+
+EVIL = """import os
+import pkg.evil
+from pkg.evil import later
+os.system('touch {marker}')
+SECRET = open('/etc/passwd').read()
+ENVIRONMENT = dict(os.environ)
+later = 1
+
+
+def name():
+    os.system('touch {marker}')
+    return open('/etc/passwd').read() + os.environ.get('ROSVAR_HOSTILE', '')
+"""
+
+
+def test_a_helper_module_is_never_run_and_leaks_nothing(tmp_path: Path) -> None:
+    """A workspace module the launch file imports: it imports itself, calls ``os.system``,
+    reads ``/etc/passwd`` and the environment. Read, never run: nothing it would do happens,
+    nothing it would read is printed, each step is told where it stands."""
+    marker = tmp_path / "ran"
+    ws = workspace(
+        tmp_path,
+        {
+            "pkg/__init__.py": "",
+            "pkg/evil.py": EVIL.format(marker=marker),
+            "launch/evil.launch.py": "import pkg.evil\n"
+            + PYTHON_HEAD
+            + "    return LaunchDescription([Node(package='pkg', executable='n', "
+            "name=pkg.evil.name(), parameters=[{'s': pkg.evil.SECRET, "
+            "'e': str(pkg.evil.ENVIRONMENT)}])])\n",
+        },
+    )
+    done = subprocess.run(
+        [sys.executable, "-m", "rosvar", "resolve", str(ws), "--launch",
+         str(ws / "pkg" / "launch" / "evil.launch.py"), "--json"],
+        capture_output=True, text=True, timeout=SECONDS, preexec_fn=_limit, check=False,
+        env={**os.environ, "PYTHONPATH": str(Path(rosvar.__file__).parent.parent),
+             "ROSVAR_HOSTILE": SECRET},
+    )  # fmt: skip
+    assert "Traceback" not in done.stderr, done.stderr[-2000:]
+    document = json.loads(done.stdout)
+    assert not marker.exists()
+    assert SECRET not in done.stdout + done.stderr and "root:" not in done.stdout
+    assert not document["ok"]
+    warned = {(w["code"], w["message"]) for w in document["warnings"]}
+    assert ("python-not-followed", "call to os.system() is not followed") in warned
+    assert any(code == "file-outside-workspace" and "/etc/passwd" in m for code, m in warned)
