@@ -218,4 +218,24 @@ def generate_launch_description():
         },
         [{}, {"flag": "true"}],
     ),
+    "python-getenv-unset": (
+        {
+            "main.launch.py": """import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    nodes = []
+    if os.getenv('ROSVAR_TEST_UNSET') == 'foxy':
+        nodes.append(Node(package='pkg', executable='old', name='old'))
+    else:
+        distro = os.environ.get('ROSVAR_TEST_UNSET') or 'jazzy'
+        nodes.append(Node(package='pkg', executable='new', name='new',
+                          parameters=[{'distro': distro}]))
+    return LaunchDescription(nodes)
+""",
+        },
+        [{}],
+    ),
 }

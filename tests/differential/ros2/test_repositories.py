@@ -42,14 +42,14 @@ FLOORS = {  # agreeing configurations of the default sample
     "ros_gz": 8,
     "slam_toolbox": 13,
 }
-FULL_FLOORS = {  # agreeing configurations of the whole sample (--ros2-full)
-    "Universal_Robots_ROS2_Driver": 28,
-    "autoware.universe": 336,
-    "clearpath_common": 13,
-    "demos": 19,
-    "husky": 8,
+FULL_FLOORS = {  # agreeing configurations of the whole sample (--ros2-full), session 18
+    "Universal_Robots_ROS2_Driver": 199,
+    "autoware.universe": 350,
+    "clearpath_common": 14,
+    "demos": 20,
+    "husky": 10,
     "image_pipeline": 16,
-    "moveit2": 0,
+    "moveit2": 2,
     "moveit2_tutorials": 1,
     "realsense-ros": 5,
     "ros2_control_demos": 16,

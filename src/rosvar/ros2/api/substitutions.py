@@ -56,8 +56,10 @@ expose(
 expose(
     "env",
     Signature("launch.EnvironmentVariable", ("name", "default_value"), optional=1),
-    Signature("os.getenv", ("key", "default"), optional=1, function=True),
-    Signature("os.get", ("key", "default"), optional=1, function=True),  # os.environ.get
+    # without a default Python gives None where the variable is unset: '' here, which
+    # compares, tests false and joins with `or` as None does (known-differences.md)
+    Signature("os.getenv", ("key", "default"), defaults=("",), function=True),
+    Signature("os.get", ("key", "default"), defaults=("",), function=True),  # os.environ.get
 )
 expose("find-exec", Signature("launch.FindExecutable", ("name",)))
 expose("anon", Signature("launch.AnonName", ("name",)))

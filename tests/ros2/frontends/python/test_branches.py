@@ -195,3 +195,15 @@ def test_the_yaml_substitution_gives_the_loaded_value_as_python() -> None:
     failed = substitutions._yaml_literal("[unclosed")
     assert not isinstance(failed, str) and failed.code == "eval-failed"
     assert not isinstance(substitutions._yaml_literal("2001-01-01"), str)  # a date
+
+
+def test_choices_of_choices_are_charged_as_large_as_they_grow(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Twenty ``if``s each adding to a list double the branches to follow: the budget, not
+    memory, runs out."""
+    monkeypatch.setattr(module, "MAX_STEPS", 20_000)
+    tests = "".join(f"t{i} = os.environ['T{i}'] == 'on'\n" for i in range(20))
+    ifs = "".join(f"if t{i}:\n    a.append({i})\nb = a + []\n" for i in range(20))
+    with pytest.raises(OutOfBudget):
+        run("import os\n" + tests + "a = []\n" + ifs)

@@ -631,3 +631,25 @@ def test_the_description_returned_is_charged_as_it_is_walked(levels: int, read_w
     if not read_whole:
         (budget,) = [d for d in result.diagnostics if d.code == "python-budget"]
         assert budget.location.line == len(IMPORTS.splitlines()) + 5  # the return
+
+
+def test_environment_without_a_default_is_empty_where_unset() -> None:
+    """Python's ``None`` for an unset variable compares and tests as ``''`` does (RealSense's
+    ``os.getenv('ROS_DISTRO') == 'foxy'``); ``$(env X)`` would fail where launch does not."""
+    tree, diagnostics = read(
+        """
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='demo', name=os.getenv('ROBOT'), namespace=os.environ.get('NS')),
+        Node(package='demo', name=os.getenv('ROBOT', 'r1'), namespace=os.environ['NS']),
+    ])
+""",
+        IMPORTS,
+    )
+    assert diagnostics == []
+    assert tree == xml_shape(
+        """<launch>
+  <node pkg="demo" name="$(env ROBOT '')" namespace="$(env NS '')"/>
+  <node pkg="demo" name="$(env ROBOT r1)" namespace="$(env NS)"/>
+</launch>"""
+    )

@@ -190,18 +190,13 @@ def _substitution(name: str, signature: Signature) -> Builder:
     return build
 
 
-def _performed(builder: Builder, signature: Signature) -> Builder:
+def _performed(builder: Builder) -> Builder:
     """A function giving the string a substitution gives (``get_package_share_directory``):
-    a ``str`` at launch time, not a substitution object (``isinstance(p, str)`` holds).
-    Called without its optional arguments (``os.getenv(name)``, which gives ``None`` where
-    ``$(env name)`` fails), it stays the substitution."""
+    a ``str`` at launch time, not a substitution object (``isinstance(p, str)`` holds)."""
 
     def build(call: Call) -> Value:
         made = builder(call)
-        given = len(call.args) + len(call.kwargs)
-        if isinstance(made, Text) and given >= len(signature.arguments):
-            return launch_time.performed(made)
-        return made
+        return launch_time.performed(made) if isinstance(made, Text) else made
 
     return build
 
@@ -210,7 +205,7 @@ for _substitution_entry in SUBSTITUTIONS:
     for _signature in _substitution_entry.signatures:
         _builder = _substitution(_substitution_entry.names[0], _signature)
         if _signature.function:
-            _builder = _performed(_builder, _signature)
+            _builder = _performed(_builder)
         CALLS[python_name(_signature.qualified)] = _builder
 
 

@@ -186,7 +186,9 @@ class Expansion:
             nonlocal credit
             if isinstance(item, str):
                 return 1 + len(item) // CHARS_PER_STEP
-            if not isinstance(item, list | tuple | dict | Entity | Text | Description):
+            if not isinstance(
+                item, list | tuple | dict | Entity | Text | Description | Conditional
+            ):
                 return 1
             element = (id(item), len(item.children)) if isinstance(item, Entity) else None
             known = sizes.get(id(item)) if element is None else self._elements.get(element)
@@ -248,6 +250,9 @@ def _parts(item: object) -> Iterator[object]:
         yield from item.parts
     elif isinstance(item, Description):
         yield item.root
+    elif isinstance(item, Conditional):  # both branches are built
+        yield item.then
+        yield item.otherwise
     elif isinstance(item, list | tuple):
         yield from item
 
@@ -770,11 +775,12 @@ class Interpreter:
                 if isinstance(then, list | tuple) or isinstance(otherwise, list | tuple)
                 else group
             )
-        sources = [_branch_source(then), _branch_source(otherwise)]
-        containers = isinstance(then, list | tuple | dict | Conditional) or isinstance(
+        if isinstance(then, list | tuple | dict | Conditional) or isinstance(
             otherwise, list | tuple | dict | Conditional
-        )
-        if sources[0] is not None and sources[1] is not None and not containers:
+        ):
+            return Conditional(test, then, otherwise)
+        sources = [_branch_source(then), _branch_source(otherwise)]
+        if sources[0] is not None and sources[1] is not None:
             kinds = {launch_time.kind_of(then), launch_time.kind_of(otherwise)}
             return launch_time.chosen(
                 test, sources[0], sources[1], kinds.pop() if len(kinds) == 1 else None
