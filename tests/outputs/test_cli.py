@@ -484,6 +484,23 @@ def test_a_product_that_does_not_launch_exits_1_and_says_so(
     assert out.splitlines()[-1].startswith("this product does not launch")
 
 
+def test_a_ros2_product_that_does_not_launch_names_ros2_launch(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    package = ament_package(tmp_path / "p")
+    (package / "a.launch.xml").write_text(
+        '<launch>\n  <arg name="f" default="x.yaml"/>\n  <node pkg="p" exec="e" name="n">\n'
+        '    <param from="$(var g)"/>\n  </node>\n</launch>\n'
+    )
+    monkeypatch.chdir(tmp_path)
+    code, out, _err = run(capsys, "configure", ".", "--select", "p/a.launch.xml", "--finish")
+    assert code == EXIT_FAILS
+    assert out.splitlines()[-2] == "ros2 launch p a.launch.xml"
+    assert out.splitlines()[-1] == (
+        "this product does not launch: ros2 launch stops at the errors or conflicts above"
+    )
+
+
 def test_what_rosvar_could_not_read_is_listed_at_every_step(
     ws: LaunchWorkspace, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
 ) -> None:

@@ -107,7 +107,8 @@ def _print_state(state: ConfigurationState, ros: RosVersion) -> None:
             or "nothing to launch (no file selected, or an <other> value lacks its text)"
         )
         if state.launches is False:
-            print("this product does not launch: roslaunch stops at the errors or conflicts above")
+            tool = "ros2 launch" if ros is RosVersion.ROS2 else "roslaunch"
+            print(f"this product does not launch: {tool} stops at the errors or conflicts above")
         return
     open_files = [k for k, f in files if f.state == Selection.UNSELECTED]
     open_args = [
