@@ -28,14 +28,14 @@ pytestmark = requires_ros2_oracle
 FILES = 5
 CONFIGS = 3
 
-FLOORS = {  # agreeing configurations of the default sample
-    "Universal_Robots_ROS2_Driver": 3,
-    "autoware.universe": 6,
+FLOORS = {  # agreeing configurations of the default sample, session 18
+    "Universal_Robots_ROS2_Driver": 12,
+    "autoware.universe": 7,
     "clearpath_common": 4,
-    "demos": 4,
-    "husky": 4,
+    "demos": 5,
+    "husky": 5,
     "image_pipeline": 3,
-    "moveit2": 0,
+    "moveit2": 1,
     "moveit2_tutorials": 0,
     "realsense-ros": 3,
     "ros2_control_demos": 3,
