@@ -36,15 +36,10 @@ from launch.substitutions import LaunchConfiguration
 from launch_ros.actions import Node
 
 
-class DeclareBooleanLaunchArg(DeclareLaunchArgument):
-    def __init__(self, name, *, default_value=False, description=None, **kwargs):
-        super().__init__(
-            name,
-            default_value=str(default_value),
-            description=description,
-            choices=['true', 'false', 'True', 'False'],
-            **kwargs,
-        )
+class DeclareSwitch(DeclareLaunchArgument):
+    def __init__(self, switch, on=False, **rest):
+        super().__init__(switch, default_value='true' if on else 'false',
+                         choices=['false', 'true'], **rest)
 
 
 class PlainNode(Node):
@@ -64,19 +59,19 @@ def add_debuggable(ld, executable):
                             name='debug_' + executable))
 """,
             "main.launch.py": """from launch import LaunchDescription
-from pkg_helpers.launch_utils import DeclareBooleanLaunchArg, PlainNode, add_debuggable
+from pkg_helpers.launch_utils import DeclareSwitch, PlainNode, add_debuggable
 
 
 def generate_launch_description():
     ld = LaunchDescription()
-    ld.add_action(DeclareBooleanLaunchArg('debug', default_value=False))
-    ld.add_action(DeclareBooleanLaunchArg('extra', default_value=True))
+    ld.add_action(DeclareSwitch('debug'))
+    ld.add_action(DeclareSwitch('extra', on=True))
     add_debuggable(ld, 'talker')
     ld.add_action(PlainNode(package='pkg', executable='listener', name='plain'))
     return ld
 """,
         },
-        [{}, {"debug": "true"}, {"debug": "False", "extra": "false"}],
+        [{}, {"debug": "true"}, {"debug": "false", "extra": "false"}],
     ),
     "python-builder-over-pathlib": (
         {
