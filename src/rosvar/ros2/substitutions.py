@@ -36,7 +36,7 @@ from rosvar.interpreter.substitution_args import (
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail, combine_bind, crossed, ite
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.terms import Apply, TermError, concat, register
+from rosvar.logic.terms import Apply, TermError, TermFunction, concat, register
 from rosvar.memo import Memo
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS
 from rosvar.ros2.api.unmodelled import UNMODELLED
@@ -699,14 +699,20 @@ def _plain(value: object) -> bool:
     return False
 
 
-def _yaml_term(_host: object, text: object) -> str:
-    value = _yaml_literal(str(text))
-    if isinstance(value, Fail):
-        raise TermError(value.message)
-    return value
+def _text_term(compute: Callable[[str], str | Fail]) -> TermFunction:
+    """The term function of a substitution computed from its one text operand, once a
+    configuration gives that text: its failure is the term's error."""
+
+    def term(_host: object, text: object) -> str:
+        value = compute(str(text))
+        if isinstance(value, Fail):
+            raise TermError(value.message)
+        return value
+
+    return term
 
 
-register(PYTHON_YAML, _yaml_term)
+register(PYTHON_YAML, _text_term(_yaml_literal))
 
 
 @substitution(NODE_NAME)
@@ -764,14 +770,7 @@ def _evaluation(text: str) -> str | Fail:
     return value
 
 
-def _eval_term(_host: object, text: object) -> str:
-    value = _evaluation(str(text))
-    if isinstance(value, Fail):
-        raise TermError(value.message)
-    return value
-
-
-register("ros2-eval", _eval_term)
+register("ros2-eval", _text_term(_evaluation))
 
 
 EVALUATED_CAPACITY = 65_536
