@@ -18,7 +18,6 @@ controller named after a type's package (``joint_state_broadcaster``) for that t
 from __future__ import annotations
 
 import argparse
-import itertools
 import shlex
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, replace
@@ -35,6 +34,7 @@ from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply
 from rosvar.ros import names
 from rosvar.ros.version import RosVersion
+from rosvar.ros2.conventions import command_line
 from rosvar.ros2.conventions.parameters import matches, typed
 from rosvar.ros2.resolve import given_entries, parameter_file
 from rosvar.workspace.interfaces.model import Default
@@ -325,11 +325,10 @@ def _known_text(value: Raw) -> str:
 
 def _remaps(ros_args: Sequence[str]) -> Iterator[tuple[str, str]]:
     """The remaps of ``--controller-ros-args`` values (each split at spaces, as the spawner
-    does): ``-r FROM:=TO`` and ``--remap FROM:=TO``."""
+    does), read as rcl reads the controller node's ``--ros-args``."""
     words = [word for value in ros_args for word in value.split()]
-    for flag, rule in itertools.pairwise(words):
-        if flag in ("-r", "--remap") and ":=" in rule and UNKNOWN_PART not in rule:
-            source, _, target = rule.partition(":=")
+    for source, target in command_line.parse(["--ros-args", *words]).remaps:
+        if target and UNKNOWN_PART not in source + target:
             yield source, target
 
 
