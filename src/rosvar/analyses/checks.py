@@ -166,6 +166,51 @@ def model_check(version: RosVersion) -> Callable[[ModelCheck], ModelCheck]:
     return register
 
 
+class Checks:
+    """The checks of a workspace's entry files, made in two passes so that a caller may take
+    them a file at a time (the web UI, under its engine's lock): :meth:`gather` each file's
+    edges and the parameter names it sets (a use missing in one entry file may be made by
+    another: a note there), then :meth:`check` each file against them all.
+    ``described``: the uses launch models make beyond their nodes' code (robot
+    descriptions, bridges, controllers)."""
+
+    def __init__(
+        self,
+        space: ConditionSpace,
+        interfaces: Interfaces,
+        confinement: Confinement,
+        described: Described | None = None,
+    ) -> None:
+        self.space = space
+        self.interfaces = interfaces
+        self.confinement = confinement
+        self.described = described
+        self.edges: dict[str, list[Edge]] = {}
+        self.partners: Partners = defaultdict(set)
+
+    def gather(self, model: LaunchModel) -> None:
+        edges = model_edges(self.space, model, self.interfaces, self.described)
+        self.edges[model.file] = edges
+        for edge in edges:
+            if edge.static:
+                self.partners[(edge.role, edge.name)].add(model.file)
+        for name, _condition in setters(model, self.confinement):
+            self.partners[(Role.PARAMS, name)].add(model.file)
+
+    def check(self, model: LaunchModel) -> list[Finding]:
+        """The findings of a gathered entry file."""
+        edges = self.edges[model.file]
+        return check_model(
+            self.space,
+            model,
+            self.interfaces,
+            self.confinement,
+            edges,
+            self.partners,
+            self.described,
+        )
+
+
 def check_models(
     space: ConditionSpace,
     models: Sequence[LaunchModel],
@@ -173,26 +218,17 @@ def check_models(
     confinement: Confinement,
     described: Described | None = None,
 ) -> list[Finding]:
-    """The findings of every entry file; one found again through a file including another
-    (same check, name and places) is reported once, for the file that is included.
-    ``described``: the uses launch models make beyond their nodes' code (robot
-    descriptions, bridges)."""
+    """The findings of every entry file (:class:`Checks`); one found again through a file
+    including another (same check, name and places) is reported once, for the file that is
+    included."""
     found: dict[tuple[object, ...], Finding] = {}
     included = _included(models)
     ordered = sorted(models, key=lambda m: real_path(m.file) not in included)
-    edges = {model.file: model_edges(space, model, interfaces, described) for model in ordered}
-    partners: Partners = defaultdict(set)
-    for file, found_edges in edges.items():
-        for edge in found_edges:
-            if edge.static:
-                partners[(edge.role, edge.name)].add(file)
+    checks = Checks(space, interfaces, confinement, described)
     for model in ordered:
-        for name, _condition in setters(model, confinement):
-            partners[(Role.PARAMS, name)].add(model.file)
+        checks.gather(model)
     for model in ordered:
-        for finding in check_model(
-            space, model, interfaces, confinement, edges[model.file], partners, described
-        ):
+        for finding in checks.check(model):
             key = (finding.check, finding.name, finding.locations)
             found.setdefault(key, finding)
     return sorted(found.values(), key=lambda f: (f.locations[0], f.check, f.name))
