@@ -283,3 +283,22 @@ def test_getenv_is_a_launch_time_string_empty_without_a_default() -> None:
     assert render(c.text) == "$(env ROS_DISTRO '')"
     assert isinstance(d, Dynamic) and d.kind is bool
     assert diagnostics == []
+
+
+def test_a_property_is_read_as_an_attribute_of_the_object() -> None:
+    names, diagnostics = run(
+        "class Base:\n"
+        "    def __init__(self, source):\n"
+        "        self.__source = source\n"
+        "    @property\n"
+        "    def name(self):\n"
+        "        return self.__source + '.yaml'\n"
+        "class Derived(Base):\n"
+        "    @property\n"
+        "    def name(self):\n"
+        "        return 'x/' + super().name\n"
+        "v = Derived('params').name\n"
+        "w = Base('p').name.upper()\n"
+    )
+    assert (names["v"], names["w"]) == ("x/params.yaml", "P.YAML")
+    assert diagnostics == []

@@ -922,7 +922,8 @@ class Interpreter:
         raise _Continue
 
     def _function_def(self, node: ast.FunctionDef, scope: Scope) -> None:
-        if node.decorator_list:
+        getter = [self.expr(d, scope) for d in node.decorator_list] == [Module("property")]
+        if node.decorator_list and not getter:
             scope.names[node.name] = self.not_followed(f"decorated function {node.name}()", node)
             return
         arguments = node.args
@@ -937,7 +938,7 @@ class Interpreter:
         for argument, kw_default in zip(arguments.kwonlyargs, arguments.kw_defaults, strict=True):
             if kw_default is not None:
                 defaults[argument.arg] = self.expr(kw_default, scope)
-        scope.names[node.name] = Function(node, scope, defaults, self.file)
+        scope.names[node.name] = Function(node, scope, defaults, self.file, getter=getter)
 
     def _class_def(self, node: ast.ClassDef, scope: Scope) -> None:
         decorators = [self.expr(_called(d), scope) for d in node.decorator_list]
@@ -1495,6 +1496,9 @@ class Interpreter:
                 found, value = _class_lookup(
                     owner.cls if isinstance(owner, Instance) else owner, node.attr
                 )
+            if isinstance(value, Function) and value.getter and not isinstance(owner, Class):
+                instance = owner.instance if isinstance(owner, Super) else owner
+                return self.call_function(value, [instance], {}, node)  # a @property
             if found and not isinstance(value, Function):
                 return value
         return Method(owner, node.attr)

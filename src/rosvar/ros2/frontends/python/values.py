@@ -164,6 +164,8 @@ class Function:
     defaults: dict[str, Value]
     file: SourceFile
     owner: Class | None = None
+    getter: bool = False
+    """A ``@property``: reading the attribute calls it."""
 
 
 @dataclass(eq=False, slots=True)
