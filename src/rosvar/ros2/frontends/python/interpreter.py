@@ -299,6 +299,8 @@ class Interpreter:
         self.created: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
         """Actions made under guards, with the guards (so a branch does not guard twice)."""
         self.descriptions: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
+        self.yielded: list[list[Value]] = []
+        """What each generator being called has yielded, innermost last."""
         self.default_files = DefaultFiles()
         """Launch arguments' defaults, for the files a function opens by them."""
         """Composable node descriptions made conditional, by id: the description as written
@@ -346,6 +348,8 @@ class Interpreter:
             ast.SetComp: self._comprehension,
             ast.DictComp: self._comprehension,
             ast.NamedExpr: self._named_expr,
+            ast.Yield: self._yield,
+            ast.YieldFrom: self._yield,
         }
 
     # ------------------------------------------------------------------ helpers
@@ -938,7 +942,10 @@ class Interpreter:
         for argument, kw_default in zip(arguments.kwonlyargs, arguments.kw_defaults, strict=True):
             if kw_default is not None:
                 defaults[argument.arg] = self.expr(kw_default, scope)
-        scope.names[node.name] = Function(node, scope, defaults, self.file, getter=getter)
+        function = Function(
+            node, scope, defaults, self.file, getter=getter, generator=_yields(node)
+        )
+        scope.names[node.name] = function
 
     def _class_def(self, node: ast.ClassDef, scope: Scope) -> None:
         decorators = [self.expr(_called(d), scope) for d in node.decorator_list]
@@ -1673,13 +1680,29 @@ class Interpreter:
             )
         self.depth += 1
         outer, self.file = self.file, function.file
+        if function.generator:
+            self.yielded.append([])
         try:
             self.block(function.node.body, scope, tail=True)
         except _Return as returned:
-            return returned.value
+            if not function.generator:
+                return returned.value
         finally:
             self.depth -= 1
             self.file = outer
+        return self.yielded.pop() if function.generator else None
+
+    def _yield(self, node: ast.Yield | ast.YieldFrom, scope: Scope) -> Value:
+        """What a generator yields, kept for its call (the value sent back is ``None``)."""
+        value = None if node.value is None else self.expr(node.value, scope)
+        if not self.yielded:
+            return self.not_followed("'yield' outside a function", node)
+        items = self.iterate(value, node) if isinstance(node, ast.YieldFrom) else [value]
+        if items is None:
+            return self.not_followed("'yield from' of unknown items", node)
+        if len(self.yielded[-1]) + len(items) > MAX_LENGTH:
+            return self.not_followed(f"a generator of more than {MAX_LENGTH} items", node)
+        self.yielded[-1].extend(items)
         return None
 
     def instantiate(
@@ -1781,7 +1804,16 @@ class Interpreter:
             given = [arg_source for arg_source in sources if arg_source is not None]
             if len(given) == len(sources):
                 return launch_time.method(receiver, name, given)
+        if type(receiver) in _PLAIN_TYPES and not hasattr(type(receiver), name):
+            return self.raises("AttributeError", node)  # as `try: d.keys() except ...` expects
         return self.not_followed(f"method {name}() of a {type(receiver).__name__}", node)
+
+    def raises(self, kind: str, node: ast.AST) -> Value:
+        """Python's exception ``kind`` raised by an operation of a builtin where ``node`` is;
+        under a launch-time ``if`` it is raised in some configurations only: not followed."""
+        if self.guards:
+            return self.not_followed(f"an operation raising {kind} under a launch-time 'if'", node)
+        raise _Raise(Module(kind), self.location(node))
 
     def _data_init(
         self,
@@ -1953,6 +1985,10 @@ class Interpreter:
         return self.not_followed(f"str.{name}() of values not known statically", node)
 
 
+_PLAIN_TYPES = (str, int, float, bool, type(None), list, tuple, dict)
+"""Python's types of the values the reading keeps as themselves."""
+
+
 def _builtin_exception(kind: Value) -> bool:
     """Whether ``kind`` is one of Python's exception classes (``KeyError``)."""
     if not isinstance(kind, Module):
@@ -2086,6 +2122,18 @@ LIST_METHODS: dict[str, ListMethod] = {
 launch-time branch keeps its own copy)."""
 
 
+def _yields(function: ast.FunctionDef) -> bool:
+    """Whether ``function`` is a generator: a ``yield`` in its body, not in a nested scope."""
+    pending: list[ast.AST] = list(function.body)
+    while pending:
+        node = pending.pop()
+        if isinstance(node, ast.Yield | ast.YieldFrom):
+            return True
+        if not isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef | ast.Lambda):
+            pending.extend(ast.iter_child_nodes(node))
+    return False
+
+
 def _called(decorator: ast.expr) -> ast.expr:
     """The decorator's callee (``@dataclass(slots=True)``: ``dataclass``)."""
     return decorator.func if isinstance(decorator, ast.Call) else decorator
@@ -2215,8 +2263,8 @@ def _convert(kind: type[int] | type[float] | type[bool]) -> Builtin:
         if len(args) == 1 and isinstance(args[0], str | int | float | bool):
             try:
                 return kind(args[0])
-            except ValueError as error:
-                return interpreter.not_followed(f"{kind.__name__}() that fails ({error})", node)
+            except ValueError:
+                return interpreter.raises("ValueError", node)
         if not args:
             return kind()
         if len(args) == 1 and isinstance(args[0], Dynamic):

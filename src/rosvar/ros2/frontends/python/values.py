@@ -166,6 +166,8 @@ class Function:
     owner: Class | None = None
     getter: bool = False
     """A ``@property``: reading the attribute calls it."""
+    generator: bool = False
+    """Its body yields: a call is the list of what it yields (read at once, in order)."""
 
 
 @dataclass(eq=False, slots=True)
