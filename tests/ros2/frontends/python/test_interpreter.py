@@ -342,3 +342,13 @@ def test_generators_and_the_exceptions_of_builtins_are_followed_as_python_runs_t
     exec(LEAVES, scope)  # the oracle: Python itself, on a file that launches nothing
     assert names["v"] == scope["v"]
     assert diagnostics == []
+
+
+def test_a_launch_object_is_never_none() -> None:
+    names, diagnostics = run(
+        "from launch.substitutions import LaunchConfiguration\n"
+        "ns = LaunchConfiguration('namespace')\n"
+        "v = (ns is not None, ns is None, None is not ns, 1 is None)\n"
+    )
+    assert names["v"] == (True, False, True, False)
+    assert diagnostics == []

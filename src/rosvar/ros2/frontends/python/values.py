@@ -95,6 +95,18 @@ class LaunchYaml:
     keys: tuple[Key, ...] = ()
 
 
+@dataclass(eq=False, slots=True)
+class WrittenFile:
+    """A file the reading's Python writes (``tempfile.NamedTemporaryFile``): the texts
+    written in order (``write``, ``yaml.dump``), never a real file; its name stands for it.
+    ``text``, where set, is the substitution giving its whole text at launch time (a
+    workspace's ``Substitution`` whose ``perform`` writes it, read again per configuration)."""
+
+    parts: list[Value] = field(default_factory=list)
+    text: Text | None = None
+    label: str = "a file written at launch time"
+
+
 @dataclass(frozen=True, slots=True)
 class Condition:
     """``IfCondition(x)`` and kin: the attribute (``if``/``unless``) and its text."""
@@ -254,6 +266,7 @@ Value = (
     | Match
     | XacroDocument
     | LaunchYaml
+    | WrittenFile
     | Condition
     | Module
     | Source
