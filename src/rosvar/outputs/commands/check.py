@@ -54,6 +54,7 @@ def checked(options: argparse.Namespace, paths: Sequence[str] | None = None) -> 
         interfaces,
         analysis.workspace.confinement(),
         Simulation(analysis, interfaces),
+        analysis.workspace.of_dependency,
     )
     workspace = analysis.workspace
     prints = Fingerprints(

@@ -249,7 +249,13 @@ class _Findings:
             for path in self._paths:
                 with self._lock, collector_paused():  # as the API's calls (api.py)
                     self._found.extend(
-                        check_model(analysis.space, analysis.model(path), interfaces, confinement)
+                        check_model(
+                            analysis.space,
+                            analysis.model(path),
+                            interfaces,
+                            confinement,
+                            dependency=analysis.workspace.of_dependency,
+                        )
                     )
                 self._done += 1
                 self._pause()
