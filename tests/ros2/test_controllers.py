@@ -12,6 +12,7 @@ import pytest
 
 from rosvar.analyses.communication import Edge
 from rosvar.analyses.controllers import controller_edges
+from rosvar.diagnostics import Severity
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.cli import main
 from rosvar.ros.version import RosVersion
@@ -304,7 +305,9 @@ def test_share_paths_are_read_from_what_the_install_copies_there(tmp_path: Path)
         '<launch><include file="$(find-pkg-share demo)/launch/control.launch.xml"/></launch>'
     )
     analysis, edges = _edges(tmp_path, str(entry))
-    assert not [d for d in analysis.model(str(entry)).diagnostics if d.severity != "note"]
+    assert not [
+        d for d in analysis.model(str(entry)).diagnostics if d.severity is not Severity.NOTE
+    ]
     found = {(e.role, e.name, e.uncertain) for e in edges if e.name != "/tf"}
     assert found == {  # the file says use_stamped_vel: false; known, not uncertain
         (Role.SUBSCRIBES, "/base_controller/cmd_vel_unstamped", False),

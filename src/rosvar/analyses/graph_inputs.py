@@ -30,12 +30,26 @@ class GraphInputs:
 
     def checks(self) -> Checks:
         """The checks, to be taken a file at a time."""
-        return Checks(self.analysis.space, self.interfaces, self.confinement, self.simulation)
+        workspace = self.analysis.workspace
+        return Checks(
+            self.analysis.space,
+            self.interfaces,
+            self.confinement,
+            self.simulation,
+            workspace.of_dependency,
+        )
 
     def findings(self, models: Sequence[LaunchModel]) -> list[Finding]:
         """The findings of ``models`` (:func:`~rosvar.analyses.checks.check_models`)."""
-        space = self.analysis.space
-        return check_models(space, models, self.interfaces, self.confinement, self.simulation)
+        analysis = self.analysis
+        return check_models(
+            analysis.space,
+            models,
+            self.interfaces,
+            self.confinement,
+            self.simulation,
+            analysis.workspace.of_dependency,
+        )
 
     def collections(self) -> dict[str, Collection]:
         """The query collections of the communication graph (topics, services, actions)."""

@@ -18,7 +18,14 @@ from rosvar.files import FileRefused
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.lifted import apply, lift
-from rosvar.interpreter.model import Decision, ErrorEvent, Guard, LaunchModel, Raw
+from rosvar.interpreter.model import (
+    INCLUDE_UNREAD,
+    Decision,
+    ErrorEvent,
+    Guard,
+    LaunchModel,
+    Raw,
+)
 from rosvar.logic.atoms import register_predicate
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
@@ -395,7 +402,9 @@ class Interpretation(Generic[S]):
         at ``path`` (:meth:`~rosvar.workspace.packages.Workspace.installed`). A refusal is an
         error naming the path, a parse problem one in the words of the file's format; both
         at the including tag, or for the entry file where its own diagnostic places the
-        problem."""
+        problem. A dependency's file that cannot be read is a warning at the including tag,
+        the include not followed (``include-unread``), as roslaunch's include of a file
+        rosvar may not read."""
         confinement = self.workspace.confinement()
         try:
             confinement.check(path)
@@ -408,11 +417,20 @@ class Interpretation(Generic[S]):
             )
             return None
         result = self.files.load(confinement.source(path))
+        messages = "; ".join(d.message for d in result.diagnostics) or "unreadable"
+        if result.root is None and self.location.line > 0 and self.workspace.of_dependency(path):
+            # the installed dependency has the file (a build may make it): for the user the
+            # include is not followed, as one rosvar may not read, and the launch goes on
+            self.warn(
+                INCLUDE_UNREAD,
+                f"included file {path} of a dependency is not read ({messages}): what it "
+                "launches is not known",
+            )
+            return None
         for diagnostic in result.diagnostics:
             self.sink.add(diagnostic)
         if result.root is None:
             self.unread_installs(path)
-            messages = "; ".join(d.message for d in result.diagnostics) or "unreadable"
             invalid = INVALID_FILE[self.workspace.ros_version, self.workspace.launch_format(path)]
             self.fail(
                 self.space.true,

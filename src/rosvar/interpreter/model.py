@@ -279,6 +279,10 @@ class MachineDecl:
     attributes: dict[str, Choice[Raw | None]]
 
 
+INCLUDE_UNREAD = "include-unread"
+"""The warning at an include of a dependency's file rosvar cannot read (not followed)."""
+
+
 @dataclass(slots=True)
 class IncludeDecl:
     """An ``<include>`` and what became of it (``resolved`` is False for unreadable targets)."""

@@ -133,6 +133,19 @@ class Workspace:
         package = self.packages.get(name)
         return None if package is None else _install_prefix(package)
 
+    def of_dependency(self, path: str) -> bool:
+        """Whether ``path`` is a dependency's file (below ``--deps``, ROS_PACKAGE_PATH or an
+        AMENT_PREFIX_PATH share), not one of the user's paths: a dependency is read from its
+        sources, where an installed file may be a build's product (``gz_sim.launch.py`` of
+        a ``.in`` template), so what rosvar cannot read of it is rosvar's gap, not the
+        user's mistake."""
+        absolute = os.path.abspath(path)
+
+        def below(roots: Sequence[str]) -> bool:
+            return any(absolute == r or absolute.startswith(r + os.sep) for r in roots)
+
+        return below(self.dependency_roots) and not below(self.roots)
+
     def launch_format(self, path: str) -> LaunchFormat:
         """The frontend that reads launch file ``path`` in this workspace's ROS."""
         return format_of(path, self.ros_version)
