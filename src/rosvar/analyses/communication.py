@@ -121,12 +121,15 @@ class LaunchedNode:
             node.ros2,
         )
 
-    def named(self, interface: NodeInterface) -> LaunchedNode:
+    def named(self, interface: NodeInterface | None) -> LaunchedNode:
         """ROS 2: without a launch ``name``, the node has the one its code gives it
-        (``{executable}`` when the code does not say statically)."""
+        (``⟨executable⟩``, as ``rosvar resolve`` shows an unnamed node, when the code does not
+        say statically or is not known)."""
         if not self.ros2 or self.name:
             return self
-        return replace(self, name=interface.node_name or "{" + interface.executable + "}")
+        if interface is not None:
+            return replace(self, name=interface.node_name or f"⟨{interface.executable}⟩")
+        return replace(self, name=f"⟨{self.plugin or self.type}⟩")
 
     @property
     def full_name(self) -> str:
