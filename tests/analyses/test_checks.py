@@ -276,6 +276,50 @@ def test_a_node_without_interface_beside_a_missing_partner_makes_a_note(
     assert [s for _n, s, _m in _findings(ws, body, Check.NO_PROVIDER)] == [Severity.WARNING]
 
 
+def test_a_node_publishing_a_name_rosvar_cannot_resolve_may_be_the_partner(
+    ws: LaunchWorkspace,
+) -> None:
+    """realsense's frame_latency beside the camera driver, whose topics its code composes:
+    a missing provider is a note naming the unresolved name; not where the known parts of
+    that name cannot fit, nor where the node itself is the only one with such a name."""
+    ws.write(
+        "scripts/relay.py", HEADER + 'import sys\nrospy.Publisher(sys.argv[1] + "/input", String)\n'
+    )
+    body = """<node pkg="pkg" type="reader.py" name="reader"/>
+      <node pkg="pkg" type="relay.py" name="relay"/>"""
+    [(name, severity, message)] = _findings(ws, body, Check.NO_PROVIDER)
+    assert (name, severity) == ("/reader/input", Severity.NOTE)
+    assert message.endswith(
+        "(unless /relay's '/{sys.argv[1]}/input', a name rosvar cannot resolve, is it)"
+    )
+    ws.write(
+        "scripts/relay.py",
+        HEADER + 'import sys\nrospy.Publisher(sys.argv[1] + "/output", String)\n',
+    )
+    assert [s for _n, s, _m in _findings(ws, body, Check.NO_PROVIDER)] == [Severity.WARNING]
+
+
+def test_one_problem_seen_through_two_uses_is_one_finding(ws: LaunchWorkspace) -> None:
+    """A node subscribing one topic at two lines of its source (two message types chosen by
+    a parameter): one finding showing both places, not two with one fingerprint."""
+    ws.write(
+        "scripts/twice.py",
+        HEADER
+        + 'rospy.Subscriber("input", String, None)\nrospy.Subscriber("input", Int32, None)\n',
+    )
+    for name, text in SOURCES.items():
+        ws.write(f"scripts/{name}", text)
+    file = ws.launch("system.launch", '<node pkg="pkg" type="twice.py" name="twice"/>')
+    analysis = ws.analysis()
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    found = check_models(
+        analysis.space, [analysis.model(file)], interfaces, analysis.workspace.confinement()
+    )
+    [finding] = [f for f in found if f.check is Check.NO_PROVIDER]
+    assert finding.name == "/input"
+    assert sorted(at.line for at in finding.locations[1:]) == [3, 4]
+
+
 def test_a_parameter_nobody_reads_needs_every_read_known(ws: LaunchWorkspace) -> None:
     """A node that reads a name only known at run time may read the one set: no finding;
     nor for a node whose interface rosvar does not have, nor in the namespace of a

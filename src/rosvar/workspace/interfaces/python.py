@@ -16,7 +16,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from rosvar.diagnostics import DiagnosticSink, Location
-from rosvar.workspace.interfaces import python2, python_modules
+from rosvar.workspace.interfaces import python2, python_modules, tf
 from rosvar.workspace.interfaces.lifecycle import with_lifecycle
 from rosvar.workspace.interfaces.model import (
     ANY_PARAMETER,
@@ -62,13 +62,6 @@ _RCLPY_ACTIONS = {  # constructor → role; (node, type, name, ...)
 }
 _RCLPY_WAIT = "rclpy.wait_for_message.wait_for_message"
 """``wait_for_message(msg_type, node, topic)``: a subscription while it waits."""
-_TF_CLASSES: dict[str, tuple[Role, tuple[str, ...]]] = {
-    "TransformBroadcaster": (Role.PUBLISHES, ("/tf",)),
-    "StaticTransformBroadcaster": (Role.PUBLISHES, ("/tf_static",)),
-    "TransformListener": (Role.SUBSCRIBES, ("/tf", "/tf_static")),
-}
-"""tf's and tf2_ros's classes (``tf2_ros.TransformBroadcaster``, also from its modules):
-the topics their construction uses; a broadcaster's is a boundary use, as in C++."""
 _RCLPY_LIFECYCLE_NODES = frozenset(
     {"rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode", "rclpy.lifecycle.node.LifecycleNode"}
 )
@@ -363,14 +356,15 @@ class _Reader:
         """The ``/tf`` (``/tf_static``) uses of a tf broadcaster's or listener's construction."""
         callee = self.qualified(call.func) or ""
         head, _, last = callee.rpartition(".")
-        if last not in _TF_CLASSES or head.split(".")[0] not in ("tf", "tf2_ros"):
+        if last not in tf.CLASSES or head.split(".")[0] not in ("tf", "tf2_ros"):
             return []
-        role, topics = _TF_CLASSES[last]
+        role, topics = tf.CLASSES[last]
         rclpy = any(module.startswith("rclpy") for module in self.scope.imports.values())
-        message = "tf2_msgs/msg/TFMessage" if rclpy else "tf2_msgs/TFMessage"
+        message = tf.ROS2_MESSAGE if rclpy else tf.MESSAGE
         location = Location(self.path, call.lineno, call.col_offset + 1)
-        boundary = role is Role.PUBLISHES
-        return [Entry(role, t, location, type=message, boundary=boundary) for t in topics]
+        return [
+            Entry(role, t, location, type=message, boundary=tf.is_boundary(role, t)) for t in topics
+        ]
 
     def rclpy_entry(
         self, call: ast.Call, callee: str | None, keywords: dict[str, ast.expr]

@@ -178,6 +178,9 @@ int main() { Node node; }
         ("subscribes", "points", "sensor_msgs/PointCloud2", 3),
     ]
     assert [e.boundary for e in entries if e.role is Role.PUBLISHES] == [True]
+    # a listener's /tf_static may stay empty (no static transform); its /tf may not
+    listened = {e.name: e.boundary for e in entries if e.role is Role.SUBSCRIBES}
+    assert (listened["/tf"], listened["/tf_static"]) == (False, True)
     ros2 = """\
 class Node : public rclcpp::Node {
  public:

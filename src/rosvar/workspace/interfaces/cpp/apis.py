@@ -85,14 +85,6 @@ CONTROLLER_MANAGER_SERVICES = tuple(
 )
 """What ros_control's ControllerManager serves (its constructor, controller_manager.cpp)."""
 
-TF_MESSAGE = "tf2_msgs/TFMessage"
-ROS2_TF_MESSAGE = "tf2_msgs/msg/TFMessage"
-TF_CLASSES: dict[str, tuple[Role, tuple[str, ...]]] = {
-    "TransformBroadcaster": (Role.PUBLISHES, ("/tf",)),
-    "StaticTransformBroadcaster": (Role.PUBLISHES, ("/tf_static",)),
-    "TransformListener": (Role.SUBSCRIBES, ("/tf", "/tf_static")),
-}
-"""tf's and tf2_ros's classes: the topics their construction uses."""
 WAIT_FOR_MESSAGE = frozenset({"ros::topic::waitForMessage", "rclcpp::wait_for_message"})
 """Waiting for one message subscribes to its topic while it waits."""
 API_NAMES = frozenset(

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from tree_sitter import Node
 
 from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.workspace.interfaces import tf
 from rosvar.workspace.interfaces.cpp import apis, param_defaults, syntax
 from rosvar.workspace.interfaces.cpp.evaluator import CallSite, Evaluator, Handle
 from rosvar.workspace.interfaces.cpp.unit import Function, Unit
@@ -199,7 +200,7 @@ class Collector:
         elif base == "ControllerManager" and arguments and not self.ros2:
             # ROS 2's (ros2_control_node) is a node whose services its own code makes
             self._controller_manager(arguments[1:], function, at)
-        elif base in apis.TF_CLASSES and re.search(r"\btf2?(_ros)?::", compact):
+        elif base in tf.CLASSES and re.search(r"\btf2?(_ros)?::", compact):
             self._tf(base, Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1))
         elif base == "Server" and "dynamic_reconfigure::" in compact:
             self._reconfigure(
@@ -213,12 +214,12 @@ class Collector:
         self._entry(Role.PARAMS, namespace, location, default=RECONFIGURED)
 
     def _tf(self, base: str, location: Location) -> None:
-        """tf's broadcasters publish ``/tf`` (the static one ``/tf_static``), for every tf
-        listener (a boundary use); a listener subscribes both."""
-        role, topics = apis.TF_CLASSES[base]
-        message = apis.ROS2_TF_MESSAGE if self.ros2 else apis.TF_MESSAGE
+        """tf's broadcasters publish ``/tf`` (the static one ``/tf_static``); a listener
+        subscribes both (:mod:`rosvar.workspace.interfaces.tf`)."""
+        role, topics = tf.CLASSES[base]
+        message = tf.ROS2_MESSAGE if self.ros2 else tf.MESSAGE
         for topic in topics:
-            self._entry(role, Text(topic), location, message, boundary=role is Role.PUBLISHES)
+            self._entry(role, Text(topic), location, message, boundary=tf.is_boundary(role, topic))
 
     def members(self, owner: str) -> None:
         """The members a class's construction builds without arguments that make a use
@@ -230,7 +231,7 @@ class Collector:
             compact = syntax.text(type_node).replace(" ", "")
             base = syntax.last(compact.split("<")[0])
             line, column = declaration.start_point
-            if base in apis.TF_CLASSES and re.search(r"\btf2?(_ros)?::", compact):
+            if base in tf.CLASSES and re.search(r"\btf2?(_ros)?::", compact):
                 self._tf(base, Location(file, line + 1, column + 1))
             elif base == "Server" and "dynamic_reconfigure::" in compact:
                 self._reconfigure(None, Location(file, line + 1, column + 1))
