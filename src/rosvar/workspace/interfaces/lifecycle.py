@@ -27,8 +27,12 @@ LIFECYCLE_USES: Final = (
 
 
 def lifecycle_entries(location: Location, origin: Origin = Origin.SOURCE) -> list[Entry]:
-    """The lifecycle interface, placed at what makes the node a lifecycle node."""
-    return [Entry(role, name, location, origin, type=kind) for role, name, kind in LIFECYCLE_USES]
+    """The lifecycle interface, placed at what makes the node a lifecycle node: boundary
+    uses (a lifecycle manager, ``ros2 lifecycle``, launch_ros's action use them, or nobody)."""
+    return [
+        Entry(role, name, location, origin, type=kind, boundary=True)
+        for role, name, kind in LIFECYCLE_USES
+    ]
 
 
 def with_lifecycle(entries: list[Entry], location: Location) -> list[Entry]:
