@@ -20,7 +20,7 @@ from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, Role
-from workspace.interfaces.ros2_packages import write_ros2_bringup
+from workspace.interfaces.ros2_packages import write_ros2_bringup, write_ros2_packages
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -462,3 +462,51 @@ def test_a_dependency_file_rosvar_cannot_read_is_a_warning_at_the_users_include(
     [error] = resolve(analysis, [str(main)], {"sim": "true"}).errors
     assert (error.code, error.location.line) == ("include-unknown", 2)
     assert not any(e.code == "launch-invalid" for e in model.errors if "generated" in e.message)
+
+
+LIFECYCLE_LAUNCH = """
+from launch import LaunchDescription
+from launch_ros.actions import LifecycleNode, Node
+
+def generate_launch_description():
+    return LaunchDescription([
+        LifecycleNode(package="demo_cpp", executable="unknown", name="lc", namespace=""),
+        Node(package="demo_py", executable="client"),
+    ])
+"""
+LIFECYCLE_CLIENT = """
+import rclpy
+from rclpy.node import Node
+from lifecycle_msgs.srv import ChangeState
+
+def main():
+    node = Node("client")
+    node.create_client(ChangeState, "lc/change_state")
+"""
+
+
+def test_a_node_launched_as_a_lifecycle_node_serves_the_lifecycle_services(
+    tmp_path: Path,
+) -> None:
+    """launch_ros's ``LifecycleNode`` drives its node through rcl_lifecycle's services: the
+    node serves them whatever rosvar knows of its code (here nothing); the same executable
+    started as a plain ``Node`` leaves the client without a provider."""
+    write_ros2_packages(tmp_path)
+    (tmp_path / "demo_py" / "setup.py").write_text(
+        "from setuptools import setup\nsetup(name='demo_py', entry_points={'console_scripts': "
+        "['client = demo_py.client:main']})\n"
+    )
+    (tmp_path / "demo_py" / "demo_py" / "client.py").write_text(LIFECYCLE_CLIENT)
+    launch = tmp_path / "demo_py" / "launch" / "lc.launch.py"
+    launch.parent.mkdir()
+    missing = {}
+    for action in ("LifecycleNode", "Node"):
+        launch.write_text(LIFECYCLE_LAUNCH.replace("LifecycleNode(", action + "("))
+        analysis = Analysis(discover([tmp_path]))
+        interfaces = extract_interfaces(analysis.workspace.packages.values())
+        model = analysis.model(str(launch))
+        findings = check_models(
+            analysis.space, [model], interfaces, analysis.workspace.confinement()
+        )
+        missing[action] = [f.name for f in findings if f.check is Check.NO_PROVIDER]
+    assert missing == {"LifecycleNode": [], "Node": ["/lc/change_state"]}

@@ -356,6 +356,8 @@ class _Checker:
                 by_name[(edge.channel, edge.name)].append(edge)
             else:
                 self.symbolic[edge.role].append(edge)
+                if edge.boundary:
+                    continue  # no partner to miss: nothing the checks skip
                 self.add(
                     Check.SYMBOLIC_NAME,
                     Severity.NOTE,
