@@ -5,7 +5,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from differential.ros2.test_fixtures import PACKAGE_XML
 from ros2.tags.launches import launch
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.workspace import discover
 
 ENTRY = """from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription
@@ -56,3 +59,48 @@ def test_what_was_not_followed_in_the_loaded_files_is_a_warning(tmp_path: Path) 
     nav = (included, 7, "call to helpers_nowhere.nav() is not followed")
     assert warned({}) == [own, nav]
     assert warned({"with_nav": "false"}) == [own]
+
+
+GZ_ENTRY = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, IncludeLaunchDescription
+from launch.conditions import IfCondition
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('gui', default_value='true'),
+        IncludeLaunchDescription(
+            PythonLaunchDescriptionSource(
+                PathJoinSubstitution(
+                    [FindPackageShare('ros_gz_sim'), 'launch', 'gz_sim.launch.py'])),
+            condition=IfCondition(LaunchConfiguration('gui'))),
+        Node(package='pkg', executable='n', name='own'),
+    ])
+"""
+
+
+def test_a_dependency_file_rosvar_cannot_read_is_an_include_not_followed(tmp_path: Path) -> None:
+    """ros_gz's ``gz_sim.launch.py`` is built from a template, so a dependency's sources
+    lack it: the include is not followed, a warning where this configuration makes it,
+    and the rest of the file launches (it is no failure of the user's launch)."""
+    user, deps = tmp_path / "ws" / "pkg", tmp_path / "deps" / "ros_gz_sim"
+    for folder, name in ((user, "pkg"), (deps, "ros_gz_sim")):
+        (folder / "launch").mkdir(parents=True)
+        (folder / "package.xml").write_text(PACKAGE_XML.replace("<name>pkg<", f"<name>{name}<"))
+    (deps / "launch" / "gz_sim.launch.py.in").write_text("# a CMake template\n")
+    entry = user / "launch" / "sim.launch.py"
+    entry.write_text(GZ_ENTRY)
+    analysis = Analysis(discover([user.parent], deps=[deps.parent], ament_prefix_path=""))
+    message = (
+        f"included file {deps / 'launch' / 'gz_sim.launch.py'} of a dependency is not read "
+        "(cannot read file: No such file or directory): what it launches is not known"
+    )
+    for gui, warned in (("true", [(str(entry), 13, message)]), ("false", [])):
+        result = analysis.resolve([str(entry)], {"gui": gui})
+        assert result.ok, result.errors
+        assert [n.name for n in result.nodes] == ["/own"]
+        assert [(w.location.file, w.location.line, w.message) for w in result.warnings] == warned

@@ -184,8 +184,9 @@ def _substituted_file(
     """``allow_substs``: the file's text with its substitutions performed in the context as
     it is here, as launch_ros' ``ParameterFile`` does before the node reads it."""
     try:
-        text = read_file(path).decode()
+        text = read_file(path, it.workspace.confinement()).decode()
     except (FileRefused, OSError, UnicodeDecodeError) as error:
+        it.unread_installs(path)
         it.fail(it.space.true, "param-invalid", f"parameter file {path} is not readable: {error}")
         return
     _substituted_text(it, text, path, context, out)
