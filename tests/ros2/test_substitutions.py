@@ -288,3 +288,22 @@ def test_python_expressions_see_what_ros2_launch_gives_them(
     it = launch(tmp_path / "ok", PYTHON_EXPRESSIONS.replace("'true'", "'True'"))
     expected = it.matches_oracle(arguments)
     assert expected["ok"] and len(expected["nodes"]) >= 4
+
+
+def test_what_the_restricted_evaluator_refuses_is_eval_refused(tmp_path: Path) -> None:
+    """An ``$(eval)`` over the evaluator's nesting limit, or calling what it does not allow,
+    is rosvar's refusal (Python may well run it: 150 brackets are within its parser's
+    200), not the expression failing as it does in Python (``1/0``)."""
+    deep = "(" * 150 + "1" + ")" * 150
+    texts = {"deep": deep, "call": "open(0)", "zero": "1/0"}
+    nodes = "".join(
+        f'<node pkg="p" exec="e" name="n" namespace="/$(eval \'{text}\')"/>'
+        for text in texts.values()
+    )
+    model = _models(tmp_path, {"main.launch.xml": nodes})["main.launch.xml"]
+    found = [(error.code, error.message.split(": ", 2)[-1][:32]) for error in model.errors]
+    assert found == [
+        ("eval-refused", "expression is nested more than 1"),
+        ("eval-refused", "calling 'open' is not allowed (o"),
+        ("eval-failed", "ZeroDivisionError: division by z"),
+    ]

@@ -764,7 +764,9 @@ def _evaluation(text: str) -> str | Fail:
     if value is None:
         try:
             value = evaluate(text, PYTHON_EXPRESSION)
-        except (EvalFailed, EvalRefused) as error:
+        except EvalRefused as refused:  # what the restricted evaluator does not run
+            value = Fail(f"$(eval {text}): {refused}", "eval-refused")
+        except EvalFailed as error:  # what Python raises too
             value = Fail(f"$(eval {text}): {error}", "eval-failed")
         _evaluated[text] = value
     return value
