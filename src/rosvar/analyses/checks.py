@@ -10,6 +10,7 @@ condition (``simplest_trigger``).
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import enum
 import os
@@ -172,6 +173,55 @@ def model_check(version: RosVersion) -> Callable[[ModelCheck], ModelCheck]:
     return register
 
 
+class Checks:
+    """The checks of a workspace's entry files, made in two passes so that a caller may take
+    them a file at a time (the web UI, under its engine's lock): :meth:`gather` each file's
+    edges and the parameter names it sets (a use missing in one entry file may be made by
+    another: a note there), then :meth:`check` each file against them all.
+    ``described``: the uses launch models make beyond their nodes' code (robot
+    descriptions, bridges, controllers); ``dependency``: whether a file is a dependency's,
+    not the user's (what rosvar cannot read of one is told at the user's include)."""
+
+    def __init__(
+        self,
+        space: ConditionSpace,
+        interfaces: Interfaces,
+        confinement: Confinement,
+        described: Described | None = None,
+        dependency: Callable[[str], bool] = lambda _file: False,
+    ) -> None:
+        self.space = space
+        self.interfaces = interfaces
+        self.confinement = confinement
+        self.described = described
+        self.dependency = dependency
+        self.edges: dict[str, list[Edge]] = {}
+        self.partners: Partners = defaultdict(set)
+
+    def gather(self, model: LaunchModel) -> None:
+        edges = model_edges(self.space, model, self.interfaces, self.described)
+        self.edges[model.file] = edges
+        for edge in edges:
+            if edge.static:
+                self.partners[(edge.role, edge.name)].add(model.file)
+        for name, _condition in setters(model, self.confinement):
+            self.partners[(Role.PARAMS, name)].add(model.file)
+
+    def check(self, model: LaunchModel) -> list[Finding]:
+        """The findings of a gathered entry file."""
+        edges = self.edges[model.file]
+        return check_model(
+            self.space,
+            model,
+            self.interfaces,
+            self.confinement,
+            edges,
+            self.partners,
+            self.described,
+            self.dependency,
+        )
+
+
 def check_models(
     space: ConditionSpace,
     models: Sequence[LaunchModel],
@@ -180,34 +230,17 @@ def check_models(
     described: Described | None = None,
     dependency: Callable[[str], bool] = lambda _file: False,
 ) -> list[Finding]:
-    """The findings of every entry file; one found again through a file including another
-    (same check, name and places) is reported once, for the file that is included.
-    ``described``: the uses launch models make beyond their nodes' code (robot
-    descriptions, bridges); ``dependency``: whether a file is a dependency's, not the
-    user's (what rosvar cannot read of one is told at the user's include)."""
+    """The findings of every entry file (:class:`Checks`); one found again through a file
+    including another (same check, name and places) is reported once, for the file that is
+    included."""
     found: dict[tuple[object, ...], Finding] = {}
     included = _included(models)
     ordered = sorted(models, key=lambda m: real_path(m.file) not in included)
-    edges = {model.file: model_edges(space, model, interfaces, described) for model in ordered}
-    partners: Partners = defaultdict(set)
-    for file, found_edges in edges.items():
-        for edge in found_edges:
-            if edge.static:
-                partners[(edge.role, edge.name)].add(file)
+    checks = Checks(space, interfaces, confinement, described, dependency)
     for model in ordered:
-        for name, _condition in setters(model, confinement):
-            partners[(Role.PARAMS, name)].add(model.file)
+        checks.gather(model)
     for model in ordered:
-        for finding in check_model(
-            space,
-            model,
-            interfaces,
-            confinement,
-            edges[model.file],
-            partners,
-            described,
-            dependency,
-        ):
+        for finding in checks.check(model):
             key = (finding.check, finding.name, finding.locations)
             found.setdefault(key, finding)
     return sorted(found.values(), key=lambda f: (f.locations[0], f.check, f.name))
@@ -277,6 +310,8 @@ class _Checker:
         self.model = model
         self.loads = loads
         self.findings: list[Finding] = []
+        self._said: dict[tuple[Check, Severity, str, str, Location], int] = {}
+        self.symbolic: dict[Role, list[Edge]] = defaultdict(list)  # uses of unresolved names
 
     def add(
         self,
@@ -289,12 +324,24 @@ class _Checker:
     ) -> None:
         # kept without the file's loading condition: that one spells out every env value
         # that makes some `if` invalid, which would drown the finding's own reason
-        if self.space.satisfiable(condition & self.loads):
+        if not self.space.satisfiable(condition & self.loads):
+            return
+        places = tuple(locations)
+        key = (check, severity, name, message, places[0])
+        said = self._said.get(key)
+        if said is None:
+            self._said[key] = len(self.findings)
             self.findings.append(
-                Finding(
-                    check, severity, name, message, self.model.file, condition, tuple(locations)
-                )
+                Finding(check, severity, name, message, self.model.file, condition, places)
             )
+            return
+        # one problem seen through several uses (a node subscribing one topic at two lines
+        # of its source): one finding, where any of them holds, showing every place
+        found = self.findings[said]
+        more = tuple(p for p in places if p not in found.locations)
+        self.findings[said] = dataclasses.replace(
+            found, condition=found.condition | condition, locations=found.locations + more
+        )
 
     def any(self, conditions: Iterable[BDD]) -> BDD:
         result = self.space.false
@@ -308,6 +355,9 @@ class _Checker:
             if edge.static:
                 by_name[(edge.channel, edge.name)].append(edge)
             else:
+                self.symbolic[edge.role].append(edge)
+                if edge.boundary:
+                    continue  # no partner to miss: nothing the checks skip
                 self.add(
                     Check.SYMBOLIC_NAME,
                     Severity.NOTE,
@@ -447,7 +497,12 @@ class _Checker:
         elsewhere = self._elsewhere(provide, name)
         for edge in users:  # from a person, a tool or another launch file: a note
             unsure = " (it uses it only if a parameter rosvar cannot know says so)"
-            reason = elsewhere or (unsure if edge.uncertain else self._unseen(name, edge))
+            reason = (
+                elsewhere
+                or (unsure if edge.uncertain else "")
+                or self._unseen(name, edge)
+                or self._maybe(provide, name, edge)
+            )
             self.add(
                 Check.NO_PROVIDER,
                 Severity.NOTE if edge.boundary or reason else Severity.WARNING,
@@ -488,6 +543,27 @@ class _Checker:
         if len(beside) == 1:
             return f" (unless {beside[0]}, whose interface rosvar does not know, does)"
         return f" (unless one of {', '.join(beside)}, whose interfaces rosvar does not know, does)"
+
+    def _maybe(self, role: Role, name: str, edge: Edge) -> str:
+        """A launched node using in ``role`` a name rosvar could not resolve whose known
+        parts fit ``name``, beside ``edge``'s node: it may be the partner (a camera driver
+        publishing ``{topic_name}``), which rosvar cannot tell."""
+        beside = sorted(
+            {
+                (other.node, other.name)
+                for other in self.symbolic[role]
+                if other.node != edge.node
+                and _may_be(other.name, name)
+                and self.space.satisfiable(other.condition & edge.condition)
+            }
+        )
+        if not beside:
+            return ""
+        node, pattern = beside[0]
+        more = f" or {len(beside) - 1} more" if len(beside) > 1 else ""
+        if pattern == name:  # the node's fields hold a value known per configuration only
+            return f" (unless {node} does: its names depend on a value rosvar cannot know)"
+        return f" (unless {node}'s '{pattern}'{more}, a name rosvar cannot resolve, is it)"
 
     def _elsewhere(self, role: Role, name: str) -> str:
         """Where other entry files of the workspace use ``name`` in ``role``: launch files
@@ -725,6 +801,18 @@ def _unknown_nodes(
                 namespace = names.make_global_ns(launched.namespace)
                 found.append((launched.full_name, namespace, condition))
     return found
+
+
+_UNRESOLVED = re.compile(r"\{[^{}]*\}")
+"""The parts of a symbolic name rosvar could not resolve (``/{topic_name}``)."""
+
+
+def _may_be(symbolic: str, name: str) -> bool:
+    """Whether a symbolic name can be ``name``: its known parts in place, each unresolved
+    part any non-empty text."""
+    known = _UNRESOLVED.split(symbolic)
+    pattern = ".+".join(re.escape(part) for part in known)
+    return re.fullmatch(pattern, name) is not None
 
 
 def _nodes(edges: Sequence[Edge]) -> str:

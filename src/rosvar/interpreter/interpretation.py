@@ -398,13 +398,16 @@ class Interpretation(Generic[S]):
 
     def load(self, path: str) -> Entity | None:
         """Parse a launch file (cached) if the workspace's read gate lets it through (after
-        symlinks: a link to a file outside is not read). A refusal is an error naming the
-        path, a parse problem one in the words of the file's format; both at the including
-        tag, or for the entry file where its own diagnostic places the problem. A dependency's
-        file that cannot be read is a warning at the including tag, the include not
-        followed (``include-unread``), as roslaunch's include of a file rosvar may not read."""
+        symlinks: a link to a file outside is not read), from the source an install puts
+        at ``path`` (:meth:`~rosvar.workspace.packages.Workspace.installed`). A refusal is an
+        error naming the path, a parse problem one in the words of the file's format; both
+        at the including tag, or for the entry file where its own diagnostic places the
+        problem. A dependency's file that cannot be read is a warning at the including tag,
+        the include not followed (``include-unread``), as roslaunch's include of a file
+        rosvar may not read."""
+        confinement = self.workspace.confinement()
         try:
-            self.workspace.confinement().check(path)
+            confinement.check(path)
         except FileRefused as refused:
             self.fail(
                 self.space.true,
@@ -413,7 +416,7 @@ class Interpretation(Generic[S]):
                 self._placed(path, []),
             )
             return None
-        result = self.files.load(path)
+        result = self.files.load(confinement.source(path))
         messages = "; ".join(d.message for d in result.diagnostics) or "unreadable"
         if result.root is None and self.location.line > 0 and self.workspace.of_dependency(path):
             # the installed dependency has the file (a build may make it): for the user the
@@ -427,6 +430,7 @@ class Interpretation(Generic[S]):
         for diagnostic in result.diagnostics:
             self.sink.add(diagnostic)
         if result.root is None:
+            self.unread_installs(path)
             invalid = INVALID_FILE[self.workspace.ros_version, self.workspace.launch_format(path)]
             self.fail(
                 self.space.true,
@@ -438,6 +442,13 @@ class Interpretation(Generic[S]):
         if path not in self.model.files:
             self.model.files.append(path)
         return result.root
+
+    def unread_installs(self, path: str) -> None:
+        """Tell the install rules rosvar could not read of the package whose share folder
+        ``path``, a file not found, may be in (one of them may put it there)."""
+        share = self.workspace.share_of(path)
+        if share is not None:
+            self.sink.extend(list(share[1].diagnostics))
 
     def _placed(self, path: str, found: list[Location]) -> Location:
         if self.location.line > 0:  # an include

@@ -150,12 +150,16 @@ class NodeSchema:
     args: NodeField
     plugin: NodeField
     """A ROS 2 composable node's class."""
+    lifecycle: NodeField
+    """ROS 2: ``"true"`` for a node launch_ros starts as a ``LifecycleNode`` (it has the
+    lifecycle interface whatever its code says), None for any other."""
     launched: tuple[str, ...]
     """The raw fields the accessors read, in the order a node's variants are formed."""
 
     def __post_init__(self) -> None:
         accessors = (self.package, self.executable, self.name, self.namespace)
-        for accessor in (*accessors, self.full_name, self.label, self.args, self.plugin):
+        others = (self.full_name, self.label, self.args, self.plugin, self.lifecycle)
+        for accessor in (*accessors, *others):
             missing = set(accessor.keys) - set(self.launched)
             if missing:
                 raise ValueError(f"{self.version.label} node fields {missing} are not launched")

@@ -239,11 +239,13 @@ def _sources(
             path = r.evaluate(param.file, decl.location, "parameter file")
             if param.globally:  # launch_ros asserts that a global parameter file exists
                 path = os.path.abspath(path)
-                if not os.path.isfile(path):
+                if not os.path.isfile(r.confinement.source(path)):
                     raise ValueError(
                         f"parameter file {path} of <set_parameters_from_file> is missing"
                     )
-            elif kind != ProcessKind.COMPOSABLE_NODE and not os.path.isfile(path):
+            elif kind != ProcessKind.COMPOSABLE_NODE and not os.path.isfile(
+                r.confinement.source(path)
+            ):
                 # launch_ros leaves a node's missing file out, with a warning
                 message = f"Parameter file path is not a file: {path}"
                 warnings.append(

@@ -50,6 +50,7 @@ from rosvar.ros2.frontends.python.text import (
     PYTHON_STRING,
     PYTHON_YAML,
     UNKNOWN,
+    WRITTEN_FILE,
 )
 from rosvar.ros2.nodes import ROS2_NODES
 
@@ -207,7 +208,16 @@ def command_line(text: str) -> list[Template]:
 Handler = Callable[[Interpretation[Context], Context, list[Raw]], Choice[Value]]
 HANDLERS: dict[str, Handler] = {}
 OWN = frozenset(
-    {PATH_JOIN, PYTHON_STRING, PYTHON_YAML, UNKNOWN, CONFIGURATION_EQUALS, EMPTY, NODE_NAME}
+    {
+        PATH_JOIN,
+        PYTHON_STRING,
+        PYTHON_YAML,
+        UNKNOWN,
+        CONFIGURATION_EQUALS,
+        EMPTY,
+        NODE_NAME,
+        WRITTEN_FILE,
+    }
 )
 """rosvar's own substitutions, which the Python frontend writes (no launch API name)."""
 

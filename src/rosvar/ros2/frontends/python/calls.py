@@ -329,7 +329,7 @@ def _normalized(call: Call) -> Value:
 @_register("launch", "perform_substitutions")
 def _performed_substitutions(call: Call) -> Value:
     """launch's ``perform_substitutions(context, subs)``: their string at launch time."""
-    return launch_time.performed(call.text(call.arg(1, "subs")))
+    return launch_time.performed_value(call.text(call.arg(1, "subs")))
 
 
 @_register("launch_ros", "ParameterValue")

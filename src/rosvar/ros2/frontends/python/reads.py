@@ -76,8 +76,7 @@ def text(interpreter: Interpreter, handle: FileHandle, node: ast.AST) -> Value:
     if modules is None or modules.confinement is None:
         return interpreter.not_followed(f"a read of {handle.path} (no workspace)", node)
     try:
-        modules.confinement.check(handle.path)
-        return read_file(handle.path, limit=MAX_READ_BYTES).decode("utf-8-sig")
+        return read_file(handle.path, modules.confinement, MAX_READ_BYTES).decode("utf-8-sig")
     except FileRefused as refused:
         interpreter.sink.warning(
             str(refused.code), f"{handle.path}: {refused.message}", interpreter.location(node)

@@ -36,6 +36,11 @@ NODE_NAME = "rosvar-node-name"
 """``$(rosvar-node-name FILE:LINE:COL)``: the fully qualified name of the node declared at that
 place, as launch_ros's ``node_name`` of a ``ComposableNodeContainer`` object given as a
 ``LoadComposableNodes`` target (XML names the target as text)."""
+WRITTEN_FILE = "rosvar-written-file"
+"""``$(rosvar-written-file MODULE QUALIFIED CLASS ARGUMENTS)``: the text of the file a
+workspace's ``Substitution`` subclass writes (``tempfile``, ``yaml.dump``, ``write``) and names
+in its ``perform``, computed by reading that ``perform`` again once a configuration gives the
+constructor's ``ARGUMENTS`` (a Python literal); no launch file has it."""
 EMPTY = "rosvar-empty"
 """The empty text as an operand of ``$(equals)``: launch's grammar reads ``''`` there as the
 text ``[]``, which the Python frontend's ``''`` is not."""

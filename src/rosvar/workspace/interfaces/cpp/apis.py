@@ -64,6 +64,12 @@ RCLCPP_READS = frozenset({"get_parameter", "get_parameter_or"})
 RCLCPP_NODE = re.compile(r"^rclcpp::Node(?:::make_shared)?$|make_shared<rclcpp::Node>$")
 """An rclcpp node built here (``rclcpp::Node::make_shared("name")``): its first argument
 is the node's name."""
+RCLCPP_LIFECYCLE_NODE = re.compile(
+    r"^rclcpp_lifecycle::LifecycleNode(?:::make_shared)?$"
+    r"|make_shared<rclcpp_lifecycle::LifecycleNode>$"
+)
+"""An rclcpp_lifecycle node built here: named as an rclcpp node is, with the lifecycle
+interface (``lifecycle.py``)."""
 ROS2_IMAGE = "sensor_msgs/msg/Image"
 ROS2_CAMERA_INFO = "sensor_msgs/msg/CameraInfo"
 CONTROLLER_MANAGER_SERVICES = tuple(

@@ -47,6 +47,9 @@ class Collector:
     ros2: bool = False
     """A ROS 2 package: a node has one namespace, so whatever a call names the node by is it
     (``message_filters::Subscriber<T> sub(this, "image")``)."""
+    lifecycle: Location | None = None
+    """Where a lifecycle node is built (a ``LifecycleNode`` base's initializer,
+    ``rclcpp_lifecycle::LifecycleNode::make_shared``): the node has the lifecycle interface."""
 
     def add(
         self,
@@ -162,6 +165,8 @@ class Collector:
                     "LifecycleNode",
                 ):  # the base class: the node's name
                     self._node_name(syntax.arguments(node), function)
+                    if syntax.last(name) == "LifecycleNode":
+                        self._lifecycle(function, node)
                 self._construction(
                     self.unit.fields.get(name, ""), syntax.arguments(node), function, node
                 )
@@ -178,6 +183,10 @@ class Collector:
         compact = self.unit.unaliased(type_text).replace(" ", "")
         if apis.RCLCPP_NODE.search(compact):
             self._node_name(arguments, function)
+            return
+        if apis.RCLCPP_LIFECYCLE_NODE.search(compact):
+            self._node_name(arguments, function)
+            self._lifecycle(function, at)
             return
         base = syntax.last(compact.split("<")[0])
         templates = syntax.template_arguments_text(compact)
@@ -230,6 +239,10 @@ class Collector:
     def _node_name(self, arguments: list[Node], function: Function) -> None:
         if arguments:
             self.node_names.append(self.evaluator.name(arguments[0], function))
+
+    def _lifecycle(self, function: Function, at: Node) -> None:
+        if self.lifecycle is None:
+            self.lifecycle = Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1)
 
     def _controller_manager(self, arguments: list[Node], function: Function, at: Node) -> None:
         """``controller_manager::ControllerManager cm(&hw, nh)`` serves its services below
@@ -294,6 +307,9 @@ class Collector:
                 pass  # a method of the rclcpp node the function belongs to
             elif apis.RCLCPP_NODE.search(name):
                 self._node_name(arguments, function)
+            elif apis.RCLCPP_LIFECYCLE_NODE.search(name):
+                self._node_name(arguments, function)
+                self._lifecycle(function, node)
             elif syntax.last(bare) in apis.MAKERS:
                 templates = syntax.template_arguments(callee)
                 if templates:
