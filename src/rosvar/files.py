@@ -48,7 +48,10 @@ class FileRefused(OSError):
 
 @dataclass(frozen=True)
 class Confinement:
-    """The directories a workspace may read below (symlinks resolved), unless told otherwise.
+    """The directories a workspace may read below (symlinks resolved), unless told otherwise,
+    and where a path's file is: ``installed`` maps a path of a package's share folder, which
+    a ROS 2 source package's own folder stands for, to the source file its build installs
+    there (:mod:`rosvar.workspace.share`), as symlinks map a path to their target.
 
     A workspace's confinement lives as long as its analysis, one moment (as its parsed
     files, :class:`rosvar.frontends.xml.Snapshot`): a path's resolution and verdict are kept
@@ -58,14 +61,23 @@ class Confinement:
 
     roots: tuple[str, ...]
     allow_outside: bool = False
+    installed: Callable[[str], str] | None = field(default=None, compare=False, repr=False)
     _resolved: dict[str, str] = field(default_factory=dict, compare=False, repr=False)
     _allowed: dict[str, str] = field(default_factory=dict, compare=False, repr=False)
 
     @staticmethod
-    def of(directories: Iterable[str], allow_outside: bool = False) -> Confinement:
+    def of(
+        directories: Iterable[str],
+        allow_outside: bool = False,
+        installed: Callable[[str], str] | None = None,
+    ) -> Confinement:
         confinement = Confinement((), allow_outside)
         real = {confinement.resolve(directory) for directory in directories}
-        return Confinement(tuple(sorted(real)), allow_outside, confinement._resolved)
+        return Confinement(tuple(sorted(real)), allow_outside, installed, confinement._resolved)
+
+    def source(self, path: str) -> str:
+        """The file ``path`` names: the source an install copies there, else ``path``."""
+        return path if self.installed is None else self.installed(path)
 
     def resolve(self, path: str) -> str:
         """``os.path.realpath(path)``, kept for the moment: the files of a directory share
@@ -76,11 +88,12 @@ class Confinement:
         return real
 
     def check(self, path: str) -> str:
-        """``path`` resolved (``..`` and symlinks), or :class:`FileRefused` if it is outside."""
+        """The file ``path`` names (:meth:`source`), resolved (``..`` and symlinks), or
+        :class:`FileRefused` if it is outside."""
         real = self._allowed.get(path)
         if real is not None:
             return real
-        real = self.resolve(path)
+        real = self.resolve(self.source(path))
         _check_system(real)
         if not self.allow_outside and not any(_below(real, root) for root in self.roots):
             raise FileRefused(
@@ -126,7 +139,7 @@ def read_file(
     outside ``confinement``. ``real``: its resolution, where the caller has it.
     """
     if confinement is not None:
-        real = confinement.check(path)
+        path = real = confinement.check(path)
     with open_regular(path, real) as handle:
         info = os.fstat(handle.fileno())
         if info.st_size > limit:
