@@ -32,7 +32,7 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.given_up import Bindings
 from rosvar.logic.inputs import EnvInput, Input
-from rosvar.logic.terms import Apply, Hole, PackageTable, TermError, evaluate
+from rosvar.logic.terms import Apply, Hole, TermError, evaluate
 from rosvar.ros.version import RosVersion
 from rosvar.workspace import Workspace
 
@@ -200,10 +200,11 @@ class Restriction:
         self.concrete: dict[Input, str] = {k: v for k, v in values.items() if v is not None}
         self.confinement = models.workspace.confinement()
         packages = {name: package.path for name, package in models.workspace.packages.items()}
-        self.assignment = self.space.assignment(values, PackageTable(packages))
+        self.assignment: dict[str, bool] = {}
         self.host = Bindings(packages, functools.partial(_holds, self.space, self.assignment))
-        """Terms evaluate with the packages; values over the work limits are computed again
-        with the conditions that hold (:mod:`~rosvar.logic.given_up`)."""
+        """Terms evaluate with the packages; values given up are computed again with the
+        conditions that hold (:mod:`~rosvar.logic.given_up`), predicates over them too."""
+        self.space.assignment(values, self.host, into=self.assignment)
         self._shift: Callable[[str], str] | None = None
 
     def shift_anon(self, offset: int) -> None:

@@ -329,11 +329,15 @@ class ConditionSpace:
         values: Mapping[Input, str | None],
         host: object = None,
         files: frozenset[str] = frozenset(),
+        into: dict[str, bool] | None = None,
     ) -> dict[str, bool]:
         """Truth of every atom under concrete inputs (``None`` = not given/unset).
 
         A value outside an input's domain selects its ``OTHER`` slot; predicates are
-        decided by evaluating their terms with the concrete strings.
+        decided by evaluating their terms with the concrete strings. The atoms are decided
+        in the order they were made, into ``into`` if given: a ``host`` that reads it
+        decides a predicate over a value given up (:mod:`~rosvar.logic.given_up`) with the
+        atoms of that value's conditions, all made before it.
         """
         concrete: dict[Input, str] = {}
         chosen: dict[Input, Slot] = {}
@@ -342,7 +346,7 @@ class ConditionSpace:
             if value is not None:
                 concrete[input_] = value
             chosen[input_] = self.held(input_, value)
-        result: dict[str, bool] = {}
+        result: dict[str, bool] = {} if into is None else into
         for atom, name in self._var_of.items():
             if isinstance(atom, SlotAtom):
                 result[name] = (
