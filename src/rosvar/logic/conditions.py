@@ -331,13 +331,14 @@ class ConditionSpace:
         files: frozenset[str] = frozenset(),
         into: dict[str, bool] | None = None,
     ) -> dict[str, bool]:
-        """Truth of every atom under concrete inputs (``None`` = not given/unset).
+        """Truth of every atom under concrete inputs (``None`` = not given/unset), filled
+        into ``into`` (a new dict by default).
 
         A value outside an input's domain selects its ``OTHER`` slot; predicates are
-        decided by evaluating their terms with the concrete strings. The atoms are decided
-        in the order they were made, into ``into`` if given: a ``host`` that reads it
-        decides a predicate over a value given up (:mod:`~rosvar.logic.given_up`) with the
-        atoms of that value's conditions, all made before it.
+        decided by evaluating their terms with the concrete strings, in the order the atoms
+        were made: a term over a value given up (:mod:`~rosvar.logic.given_up`) is made
+        after the atoms of its operands' conditions, so a ``host`` that reads ``into``
+        finds them decided.
         """
         concrete: dict[Input, str] = {}
         chosen: dict[Input, Slot] = {}
