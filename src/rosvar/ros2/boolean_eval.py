@@ -174,6 +174,16 @@ class BooleanExpression:
         display's)."""
         return self.fixed + sum(max(len(str(leaf)) for leaf in v.values()) for v in values)
 
+    def tested(self, values: Sequence[Choice[Value]]) -> int:
+        """How many terms the comparisons test (each a predicate or more): the terms of each
+        literal, and for a comparison of two literals, the pairs of their values with one."""
+        terms = [sum(isinstance(leaf, Hole | Apply) for leaf in v.values()) for v in values]
+        pairs = 0
+        for left, right in _literal_pairs(self.root):
+            pairs += terms[left] * len(values[right].branches)
+            pairs += terms[right] * len(values[left].branches)
+        return sum(terms) + pairs
+
     def escapes(self, space: ConditionSpace, values: Sequence[Choice[Value]]) -> BDD:
         """Where a term may leave its literal (its :data:`PLAIN_LITERAL` does not hold)."""
         result = space.false
@@ -188,6 +198,21 @@ class BooleanExpression:
         """Where the expression is true, wherever every substitution has a value (not a
         failure) and no term leaves its literal (:meth:`escapes`)."""
         return _condition(self.root, space, values)
+
+
+def _literal_pairs(node: Node) -> list[tuple[int, int]]:
+    """The substitutions compared with each other in ``node``."""
+    if isinstance(node, bool):
+        return []
+    if isinstance(node, Negation):
+        return _literal_pairs(node.operand)
+    if isinstance(node, Junction):
+        return [pair for operand in node.operands for pair in _literal_pairs(operand)]
+    return [
+        (left.hole, right.hole)
+        for left, right in pairwise(node.operands)
+        if isinstance(left, Literal) and isinstance(right, Literal)
+    ]
 
 
 def _condition(node: Node, space: ConditionSpace, values: Sequence[Choice[Value]]) -> BDD:

@@ -471,7 +471,11 @@ class Ros2Substituter:
         every term keeps its literal, the first failing substitution's failure where one
         fails (as crossing gives it), and one unknown value where a term may leave its
         literal, computed in a configuration. Nothing is crossed: the work grows with the
-        predicates made, which :meth:`ValueBudget.affords_predicates` bounds."""
+        terms tested and the size of the conditions, which :meth:`ValueBudget.affords_tests`
+        and :meth:`ValueBudget.affords_conditions` bound."""
+        computed = functools.partial(_evaluated_with, template)
+        if not self.budget.affords_tests(text, expression.tested(values)):
+            return Choice.const(self.space, too_complex(text, values, computed))
         false = self.space.false
         covered = self.space.true
         for value in values:
@@ -490,8 +494,10 @@ class Ros2Substituter:
         kept = covered & ~failed & ~escapes
         branches += [(kept & holds, TRUE), (kept & ~holds, FALSE)]
         if escapes != false:  # one unknown value, which a configuration computes
-            unknown = too_complex(text, values, functools.partial(_evaluated_with, template))
+            unknown = too_complex(text, values, computed)
             branches.append((covered & ~failed & escapes, unknown))
+        if not self.budget.affords_conditions(text, (branch[0] for branch in branches)):
+            return Choice.const(self.space, too_complex(text, values, computed))
         return Choice.of(branches, false)
 
 
