@@ -32,6 +32,12 @@ from rosvar.workspace.interfaces.model import NodeInterface, Role
 
 TRUTH = Path(__file__).with_name("interface_truth.json")
 USES = [role for role in Role if role is not Role.PARAMS]
+try:  # the lifecycle interface rcl adds, not counted on either side (docs/interfaces.md)
+    from rosvar.workspace.interfaces.lifecycle import LIFECYCLE_USES
+
+    NOT_COUNTED = {(str(role), name) for role, name, _type in LIFECYCLE_USES}
+except ImportError:  # an older rosvar measured: it adds none
+    NOT_COUNTED = set()
 
 
 def export(mirror: str, commit: str, target: str) -> None:
@@ -72,7 +78,7 @@ def uses(node: NodeInterface) -> set[tuple[str, str]]:
         else:
             name = entry.name
         found.add((str(entry.role), name))
-    return found
+    return found - NOT_COUNTED
 
 
 def main() -> int:

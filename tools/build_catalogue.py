@@ -26,7 +26,9 @@ from catalogue_review import ROLES, Edition, Item, Review, Source, by_parameter,
 from rosvar.files import Confinement
 from rosvar.outputs.documents.interfaces import node_document
 from rosvar.workspace import discover
+from rosvar.workspace.interfaces import tf
 from rosvar.workspace.interfaces.extraction import extract_interfaces
+from rosvar.workspace.interfaces.model import Role
 
 SOURCES: list[Source] = [
     # repository, ROS 1 branch (melodic's where there is one: the corpus's systems are
@@ -74,9 +76,10 @@ SKIPPED = [
 ]
 """Tests are no launched nodes; large files (recordings, images, maps, meshes) may be
 absent from a mirror."""
-BOUNDARY_TOPICS = frozenset({"/tf", "/tf_static"})
-"""Published for tf's listeners: nearly every node and rviz hold one, modelled only where
-reviewed; a publication of these is a boundary use in every node."""
+TF_TOPICS = frozenset({"/tf", "/tf_static"})
+"""tf's topics: nearly every node and rviz hold a listener, modelled only where reviewed; a
+publication of these, and a subscription of ``/tf_static``, is a boundary use in every node
+(:mod:`rosvar.workspace.interfaces.tf`)."""
 TEST_EXECUTABLE = re.compile(r"(^|[_-])(r?test|unittest)|^test|_test$|(^|_)test_")
 """Test programs built outside ``test/`` (``tf2_ros_test_listener``, ``gmapping-rtest``)."""
 
@@ -640,7 +643,8 @@ def _repository(mirrors: str, source: Source, edition: Edition) -> list[Item]:
                 for entry in entries:
                     entry["file"] = os.path.relpath(entry["file"], checkout)
                     entry.pop("origin", None)
-                    if role == "publishes" and entry["name"] in BOUNDARY_TOPICS:
+                    name = entry["name"]
+                    if name in TF_TOPICS and tf.is_boundary(Role(role), name):
                         entry["boundary"] = True
             nodes.append(document)
     return nodes

@@ -25,7 +25,7 @@ class Review:
     written to the catalogue), ``add`` holds entries the extractor cannot see, each with the
     file and line that make it, ``drop`` the names (per role) it took wrongly, ``boundary``
     the names (per role) meant for something outside the launched nodes (people and their
-    tools, diagnostics monitors; see BOUNDARY_TOPICS for tf)."""
+    tools, diagnostics monitors; see TF_TOPICS for tf)."""
 
     note: str
     add: dict[str, list[Item]] = field(default_factory=dict)

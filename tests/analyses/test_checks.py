@@ -8,9 +8,10 @@ from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from conftest import PACKAGE_XML
 from rosvar.analyses.checks import Check, check_model, check_models
 from rosvar.analyses.communication import Channel, resolved_graph
-from rosvar.diagnostics import Severity
+from rosvar.diagnostics import Location, Severity
 from rosvar.interpreter.resolution import Restriction
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.documents.findings import finding_document
@@ -19,7 +20,7 @@ from rosvar.ros1.resolve import resolve
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, Role
-from workspace.interfaces.ros2_packages import write_ros2_bringup
+from workspace.interfaces.ros2_packages import write_ros2_bringup, write_ros2_packages
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -276,6 +277,50 @@ def test_a_node_without_interface_beside_a_missing_partner_makes_a_note(
     assert [s for _n, s, _m in _findings(ws, body, Check.NO_PROVIDER)] == [Severity.WARNING]
 
 
+def test_a_node_publishing_a_name_rosvar_cannot_resolve_may_be_the_partner(
+    ws: LaunchWorkspace,
+) -> None:
+    """realsense's frame_latency beside the camera driver, whose topics its code composes:
+    a missing provider is a note naming the unresolved name; not where the known parts of
+    that name cannot fit, nor where the node itself is the only one with such a name."""
+    ws.write(
+        "scripts/relay.py", HEADER + 'import sys\nrospy.Publisher(sys.argv[1] + "/input", String)\n'
+    )
+    body = """<node pkg="pkg" type="reader.py" name="reader"/>
+      <node pkg="pkg" type="relay.py" name="relay"/>"""
+    [(name, severity, message)] = _findings(ws, body, Check.NO_PROVIDER)
+    assert (name, severity) == ("/reader/input", Severity.NOTE)
+    assert message.endswith(
+        "(unless /relay's '/{sys.argv[1]}/input', a name rosvar cannot resolve, is it)"
+    )
+    ws.write(
+        "scripts/relay.py",
+        HEADER + 'import sys\nrospy.Publisher(sys.argv[1] + "/output", String)\n',
+    )
+    assert [s for _n, s, _m in _findings(ws, body, Check.NO_PROVIDER)] == [Severity.WARNING]
+
+
+def test_one_problem_seen_through_two_uses_is_one_finding(ws: LaunchWorkspace) -> None:
+    """A node subscribing one topic at two lines of its source (two message types chosen by
+    a parameter): one finding showing both places, not two with one fingerprint."""
+    ws.write(
+        "scripts/twice.py",
+        HEADER
+        + 'rospy.Subscriber("input", String, None)\nrospy.Subscriber("input", Int32, None)\n',
+    )
+    for name, text in SOURCES.items():
+        ws.write(f"scripts/{name}", text)
+    file = ws.launch("system.launch", '<node pkg="pkg" type="twice.py" name="twice"/>')
+    analysis = ws.analysis()
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    found = check_models(
+        analysis.space, [analysis.model(file)], interfaces, analysis.workspace.confinement()
+    )
+    [finding] = [f for f in found if f.check is Check.NO_PROVIDER]
+    assert finding.name == "/input"
+    assert sorted(at.line for at in finding.locations[1:]) == [3, 4]
+
+
 def test_a_parameter_nobody_reads_needs_every_read_known(ws: LaunchWorkspace) -> None:
     """A node that reads a name only known at run time may read the one set: no finding;
     nor for a node whose interface rosvar does not have, nor in the namespace of a
@@ -363,3 +408,105 @@ def test_a_file_rosvar_cannot_read_is_an_unread_error_once(ws: LaunchWorkspace) 
     assert [(f.locations[0].file, f.locations[0].line) for f in unread] == [
         (str(ws.root / "pkg" / "launch" / "broken.launch"), 3)
     ]
+
+
+def test_a_dependency_file_rosvar_cannot_read_is_a_warning_at_the_users_include(
+    tmp_path: Path,
+) -> None:
+    """ros_gz's ``gz_sim.launch.py`` is made by its build from a template: a dependency's
+    sources lack it, yet the installed launch works. The include is not followed (what it
+    launches is not known), a warning at the user's include that reaches it (through a
+    dependency's file), under that include's condition; a dependency's file nobody
+    includes is no finding, and the user's own unreadable file stays an error."""
+    user, deps = tmp_path / "ws" / "app", tmp_path / "deps" / "dpkg"
+    for folder, name in ((user, "app"), (deps, "dpkg")):
+        (folder / "launch").mkdir(parents=True)
+        (folder / "package.xml").write_text(PACKAGE_XML.format(name=name))
+    (user / "launch" / "own.launch").write_text("<launch><node")
+    main = user / "launch" / "main.launch"
+    main.write_text(
+        '<launch>\n  <arg name="sim" default="true"/>\n'
+        '  <include file="$(find dpkg)/launch/wrapper.launch" if="$(arg sim)"/>\n'
+        '  <include file="$(find app)/launch/own.launch" unless="$(arg sim)"/>\n</launch>\n'
+    )
+    (deps / "launch" / "wrapper.launch").write_text(
+        '<launch>\n  <include file="$(find dpkg)/launch/generated.launch"/>\n</launch>\n'
+    )
+    (deps / "launch" / "broken.launch").write_text("<launch><node")
+    workspace = discover([user.parent], deps=[deps.parent], ros_package_path="")
+    analysis = Analysis(workspace)
+    model = analysis.model(str(main))
+    found = check_models(
+        analysis.space,
+        [model],
+        Interfaces(),
+        workspace.confinement(),
+        dependency=workspace.of_dependency,
+    )
+    unread = [(f.severity, f.locations, f.message) for f in found if f.check is Check.UNREAD]
+    generated = deps / "launch" / "generated.launch"
+    assert unread[0] == (
+        Severity.WARNING,
+        (Location(str(main), 3, 3), Location(str(deps / "launch" / "wrapper.launch"), 2, 3)),
+        f"included file {generated} of a dependency is not read (cannot read file: No such "
+        "file or directory): what it launches is not known",
+    )
+    assert [(severity, places[0].file) for severity, places, _ in unread[1:]] == [
+        (Severity.ERROR, str(user / "launch" / "own.launch"))
+    ]
+    [dependency] = [f for f in found if f.locations[0].line == 3]
+    for sim, holds in (("true", True), ("false", False)):
+        restriction = Restriction(analysis, model, {"sim": sim}, {})
+        assert restriction.holds(dependency.condition) is holds
+    assert resolve(analysis, [str(main)], {"sim": "false"}).errors  # the user's own file
+    [error] = resolve(analysis, [str(main)], {"sim": "true"}).errors
+    assert (error.code, error.location.line) == ("include-unknown", 2)
+    assert not any(e.code == "launch-invalid" for e in model.errors if "generated" in e.message)
+
+
+LIFECYCLE_LAUNCH = """
+from launch import LaunchDescription
+from launch_ros.actions import LifecycleNode, Node
+
+def generate_launch_description():
+    return LaunchDescription([
+        LifecycleNode(package="demo_cpp", executable="unknown", name="lc", namespace=""),
+        Node(package="demo_py", executable="client"),
+    ])
+"""
+LIFECYCLE_CLIENT = """
+import rclpy
+from rclpy.node import Node
+from lifecycle_msgs.srv import ChangeState
+
+def main():
+    node = Node("client")
+    node.create_client(ChangeState, "lc/change_state")
+"""
+
+
+def test_a_node_launched_as_a_lifecycle_node_serves_the_lifecycle_services(
+    tmp_path: Path,
+) -> None:
+    """launch_ros's ``LifecycleNode`` drives its node through rcl_lifecycle's services: the
+    node serves them whatever rosvar knows of its code (here nothing); the same executable
+    started as a plain ``Node`` leaves the client without a provider."""
+    write_ros2_packages(tmp_path)
+    (tmp_path / "demo_py" / "setup.py").write_text(
+        "from setuptools import setup\nsetup(name='demo_py', entry_points={'console_scripts': "
+        "['client = demo_py.client:main']})\n"
+    )
+    (tmp_path / "demo_py" / "demo_py" / "client.py").write_text(LIFECYCLE_CLIENT)
+    launch = tmp_path / "demo_py" / "launch" / "lc.launch.py"
+    launch.parent.mkdir()
+    missing = {}
+    for action in ("LifecycleNode", "Node"):
+        launch.write_text(LIFECYCLE_LAUNCH.replace("LifecycleNode(", action + "("))
+        analysis = Analysis(discover([tmp_path]))
+        interfaces = extract_interfaces(analysis.workspace.packages.values())
+        model = analysis.model(str(launch))
+        findings = check_models(
+            analysis.space, [model], interfaces, analysis.workspace.confinement()
+        )
+        missing[action] = [f.name for f in findings if f.check is Check.NO_PROVIDER]
+    assert missing == {"LifecycleNode": [], "Node": ["/lc/change_state"]}

@@ -79,5 +79,6 @@ def test_a_schema_reads_only_the_fields_it_launches() -> None:
             label=plain,
             args=plain,
             plugin=constant_field(None),
+            lifecycle=constant_field(None),
             launched=("name",),
         )

@@ -10,6 +10,7 @@ condition (``simplest_trigger``).
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import enum
 import os
@@ -37,7 +38,14 @@ from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.when import params_read
 from rosvar.diagnostics import Location, Severity
 from rosvar.files import Confinement
-from rosvar.interpreter.model import ErrorEvent, LaunchModel, NodeDecl, ParamDecl, YamlDecl
+from rosvar.interpreter.model import (
+    INCLUDE_UNREAD,
+    ErrorEvent,
+    LaunchModel,
+    NodeDecl,
+    ParamDecl,
+    YamlDecl,
+)
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
@@ -165,33 +173,74 @@ def model_check(version: RosVersion) -> Callable[[ModelCheck], ModelCheck]:
     return register
 
 
+class Checks:
+    """The checks of a workspace's entry files, made in two passes so that a caller may take
+    them a file at a time (the web UI, under its engine's lock): :meth:`gather` each file's
+    edges and the parameter names it sets (a use missing in one entry file may be made by
+    another: a note there), then :meth:`check` each file against them all.
+    ``described``: the uses launch models make beyond their nodes' code (robot
+    descriptions, bridges, controllers); ``dependency``: whether a file is a dependency's,
+    not the user's (what rosvar cannot read of one is told at the user's include)."""
+
+    def __init__(
+        self,
+        space: ConditionSpace,
+        interfaces: Interfaces,
+        confinement: Confinement,
+        described: Described | None = None,
+        dependency: Callable[[str], bool] = lambda _file: False,
+    ) -> None:
+        self.space = space
+        self.interfaces = interfaces
+        self.confinement = confinement
+        self.described = described
+        self.dependency = dependency
+        self.edges: dict[str, list[Edge]] = {}
+        self.partners: Partners = defaultdict(set)
+
+    def gather(self, model: LaunchModel) -> None:
+        edges = model_edges(self.space, model, self.interfaces, self.described)
+        self.edges[model.file] = edges
+        for edge in edges:
+            if edge.static:
+                self.partners[(edge.role, edge.name)].add(model.file)
+        for name, _condition in setters(model, self.confinement):
+            self.partners[(Role.PARAMS, name)].add(model.file)
+
+    def check(self, model: LaunchModel) -> list[Finding]:
+        """The findings of a gathered entry file."""
+        edges = self.edges[model.file]
+        return check_model(
+            self.space,
+            model,
+            self.interfaces,
+            self.confinement,
+            edges,
+            self.partners,
+            self.described,
+            self.dependency,
+        )
+
+
 def check_models(
     space: ConditionSpace,
     models: Sequence[LaunchModel],
     interfaces: Interfaces,
     confinement: Confinement,
     described: Described | None = None,
+    dependency: Callable[[str], bool] = lambda _file: False,
 ) -> list[Finding]:
-    """The findings of every entry file; one found again through a file including another
-    (same check, name and places) is reported once, for the file that is included.
-    ``described``: the uses launch models make beyond their nodes' code (robot
-    descriptions, bridges)."""
+    """The findings of every entry file (:class:`Checks`); one found again through a file
+    including another (same check, name and places) is reported once, for the file that is
+    included."""
     found: dict[tuple[object, ...], Finding] = {}
     included = _included(models)
     ordered = sorted(models, key=lambda m: real_path(m.file) not in included)
-    edges = {model.file: model_edges(space, model, interfaces, described) for model in ordered}
-    partners: Partners = defaultdict(set)
-    for file, found_edges in edges.items():
-        for edge in found_edges:
-            if edge.static:
-                partners[(edge.role, edge.name)].add(file)
+    checks = Checks(space, interfaces, confinement, described, dependency)
     for model in ordered:
-        for name, _condition in setters(model, confinement):
-            partners[(Role.PARAMS, name)].add(model.file)
+        checks.gather(model)
     for model in ordered:
-        for finding in check_model(
-            space, model, interfaces, confinement, edges[model.file], partners, described
-        ):
+        for finding in checks.check(model):
             key = (finding.check, finding.name, finding.locations)
             found.setdefault(key, finding)
     return sorted(found.values(), key=lambda f: (f.locations[0], f.check, f.name))
@@ -220,10 +269,12 @@ def check_model(
     edges: Sequence[Edge] | None = None,
     partners: Partners | None = None,
     described: Described | None = None,
+    dependency: Callable[[str], bool] = lambda _file: False,
 ) -> list[Finding]:
     """The findings of one entry file (where it loads: a failing launch has no graph);
     ``confinement``: where the files its ``<rosparam>`` loads may be read; ``partners``:
-    the uses of the workspace's other entry files (a missing partner there is a note)."""
+    the uses of the workspace's other entry files (a missing partner there is a note);
+    ``dependency``: as :func:`check_models`."""
     if edges is None:
         edges = model_edges(space, model, interfaces, described)
     loads = model.loads if described is None else model.loads & ~described.fails(model)
@@ -231,7 +282,7 @@ def check_model(
     checker.unknown = _unknown_nodes(space, model, interfaces)
     checker.graph(edges)
     checker.errors()
-    checker.unreadable()
+    checker.unreadable(dependency)
     if described is not None:
         checker.gaps(described.gaps(model))
     checker.node_names()
@@ -259,6 +310,8 @@ class _Checker:
         self.model = model
         self.loads = loads
         self.findings: list[Finding] = []
+        self._said: dict[tuple[Check, Severity, str, str, Location], int] = {}
+        self.symbolic: dict[Role, list[Edge]] = defaultdict(list)  # uses of unresolved names
 
     def add(
         self,
@@ -271,12 +324,24 @@ class _Checker:
     ) -> None:
         # kept without the file's loading condition: that one spells out every env value
         # that makes some `if` invalid, which would drown the finding's own reason
-        if self.space.satisfiable(condition & self.loads):
+        if not self.space.satisfiable(condition & self.loads):
+            return
+        places = tuple(locations)
+        key = (check, severity, name, message, places[0])
+        said = self._said.get(key)
+        if said is None:
+            self._said[key] = len(self.findings)
             self.findings.append(
-                Finding(
-                    check, severity, name, message, self.model.file, condition, tuple(locations)
-                )
+                Finding(check, severity, name, message, self.model.file, condition, places)
             )
+            return
+        # one problem seen through several uses (a node subscribing one topic at two lines
+        # of its source): one finding, where any of them holds, showing every place
+        found = self.findings[said]
+        more = tuple(p for p in places if p not in found.locations)
+        self.findings[said] = dataclasses.replace(
+            found, condition=found.condition | condition, locations=found.locations + more
+        )
 
     def any(self, conditions: Iterable[BDD]) -> BDD:
         result = self.space.false
@@ -290,6 +355,9 @@ class _Checker:
             if edge.static:
                 by_name[(edge.channel, edge.name)].append(edge)
             else:
+                self.symbolic[edge.role].append(edge)
+                if edge.boundary:
+                    continue  # no partner to miss: nothing the checks skip
                 self.add(
                     Check.SYMBOLIC_NAME,
                     Severity.NOTE,
@@ -326,14 +394,29 @@ class _Checker:
             )
         self.loads = loads
 
-    def unreadable(self) -> None:
+    def unreadable(self, dependency: Callable[[str], bool]) -> None:
         """What rosvar could not read of the entry file or the files it includes: malformed,
         or over a limit on hostile input (too large, too many steps, nested too deep). The
         checks see nothing of it: without this, such a workspace would pass with no
-        finding. As the diagnostic, wherever the file is included."""
+        finding. As the diagnostic, wherever the file is included; a dependency's file, as a
+        warning at the user's include that reaches it (the launch itself may well work:
+        the installed dependency has the file)."""
         loads, self.loads = self.loads, self.space.true
         for diagnostic in self.model.diagnostics:
-            if diagnostic.severity is Severity.ERROR:
+            if diagnostic.code == INCLUDE_UNREAD:
+                self.add(
+                    Check.UNREAD,
+                    Severity.WARNING,
+                    diagnostic.code,
+                    diagnostic.message,
+                    self.any(
+                        include.condition
+                        for include in self.model.includes
+                        if include.location == diagnostic.location and not include.resolved
+                    ),
+                    self._reached(diagnostic.location, dependency),
+                )
+            elif diagnostic.severity is Severity.ERROR:
                 self.add(
                     Check.UNREAD,
                     Severity.ERROR,
@@ -343,6 +426,30 @@ class _Checker:
                     (diagnostic.location,),
                 )
         self.loads = loads
+
+    def _reached(
+        self, location: Location, dependency: Callable[[str], bool]
+    ) -> tuple[Location, ...]:
+        """``location`` and the includes above it up to the first in the user's files:
+        the place the user can act on first."""
+        chain = [location]
+        while dependency(chain[0].file):
+            above = next(
+                (
+                    include.location
+                    for include in self.model.includes
+                    if include.resolved
+                    and any(
+                        isinstance(file, str) and real_path(file) == real_path(chain[0].file)
+                        for _, file in include.file
+                    )
+                ),
+                None,
+            )
+            if above is None or above in chain:
+                break
+            chain.insert(0, above)
+        return tuple(chain)
 
     def gaps(self, gaps: Sequence[Gap]) -> None:
         """What of the graph could not be read, where it matters (where the launch loads, and
@@ -390,7 +497,12 @@ class _Checker:
         elsewhere = self._elsewhere(provide, name)
         for edge in users:  # from a person, a tool or another launch file: a note
             unsure = " (it uses it only if a parameter rosvar cannot know says so)"
-            reason = elsewhere or (unsure if edge.uncertain else self._unseen(name, edge))
+            reason = (
+                elsewhere
+                or (unsure if edge.uncertain else "")
+                or self._unseen(name, edge)
+                or self._maybe(provide, name, edge)
+            )
             self.add(
                 Check.NO_PROVIDER,
                 Severity.NOTE if edge.boundary or reason else Severity.WARNING,
@@ -431,6 +543,27 @@ class _Checker:
         if len(beside) == 1:
             return f" (unless {beside[0]}, whose interface rosvar does not know, does)"
         return f" (unless one of {', '.join(beside)}, whose interfaces rosvar does not know, does)"
+
+    def _maybe(self, role: Role, name: str, edge: Edge) -> str:
+        """A launched node using in ``role`` a name rosvar could not resolve whose known
+        parts fit ``name``, beside ``edge``'s node: it may be the partner (a camera driver
+        publishing ``{topic_name}``), which rosvar cannot tell."""
+        beside = sorted(
+            {
+                (other.node, other.name)
+                for other in self.symbolic[role]
+                if other.node != edge.node
+                and _may_be(other.name, name)
+                and self.space.satisfiable(other.condition & edge.condition)
+            }
+        )
+        if not beside:
+            return ""
+        node, pattern = beside[0]
+        more = f" or {len(beside) - 1} more" if len(beside) > 1 else ""
+        if pattern == name:  # the node's fields hold a value known per configuration only
+            return f" (unless {node} does: its names depend on a value rosvar cannot know)"
+        return f" (unless {node}'s '{pattern}'{more}, a name rosvar cannot resolve, is it)"
 
     def _elsewhere(self, role: Role, name: str) -> str:
         """Where other entry files of the workspace use ``name`` in ``role``: launch files
@@ -668,6 +801,18 @@ def _unknown_nodes(
                 namespace = names.make_global_ns(launched.namespace)
                 found.append((launched.full_name, namespace, condition))
     return found
+
+
+_UNRESOLVED = re.compile(r"\{[^{}]*\}")
+"""The parts of a symbolic name rosvar could not resolve (``/{topic_name}``)."""
+
+
+def _may_be(symbolic: str, name: str) -> bool:
+    """Whether a symbolic name can be ``name``: its known parts in place, each unresolved
+    part any non-empty text."""
+    known = _UNRESOLVED.split(symbolic)
+    pattern = ".+".join(re.escape(part) for part in known)
+    return re.fullmatch(pattern, name) is not None
 
 
 def _nodes(edges: Sequence[Edge]) -> str:

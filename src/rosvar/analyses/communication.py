@@ -36,6 +36,7 @@ from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Term
 from rosvar.ros import names
 from rosvar.ros.version import RosVersion
+from rosvar.workspace.interfaces.lifecycle import with_lifecycle
 from rosvar.workspace.interfaces.model import (
     INDEX,
     Default,
@@ -43,6 +44,7 @@ from rosvar.workspace.interfaces.model import (
     Interfaces,
     NamedBy,
     NodeInterface,
+    NodeKind,
     Role,
 )
 from rosvar.workspace.interfaces.values import Text
@@ -90,6 +92,7 @@ class LaunchedNode:
     remaps: Sequence[tuple[str, str]]  # in order: a later remap of one name wins (ROS 2: first)
     plugin: str = ""  # a ROS 2 composable node's class
     ros2: bool = False
+    lifecycle: bool = False  # ROS 2: started as a LifecycleNode (NodeSchema.lifecycle)
 
     @staticmethod
     def of(schema: NodeSchema, fields: Mapping[str, Raw | None]) -> LaunchedNode:
@@ -105,6 +108,7 @@ class LaunchedNode:
             (),
             _text(schema.plugin.text(texts)),
             ros2=schema.version is RosVersion.ROS2,
+            lifecycle=schema.lifecycle.text(texts) is not None,
         )
 
     @staticmethod
@@ -121,12 +125,25 @@ class LaunchedNode:
             node.ros2,
         )
 
-    def named(self, interface: NodeInterface) -> LaunchedNode:
+    def named(self, interface: NodeInterface | None) -> LaunchedNode:
         """ROS 2: without a launch ``name``, the node has the one its code gives it
-        (``{executable}`` when the code does not say statically)."""
+        (``⟨executable⟩``, as ``rosvar resolve`` shows an unnamed node, when the code does not
+        say statically or is not known)."""
         if not self.ros2 or self.name:
             return self
-        return replace(self, name=interface.node_name or "{" + interface.executable + "}")
+        if interface is not None:
+            return replace(self, name=interface.node_name or f"⟨{interface.executable}⟩")
+        return replace(self, name=f"⟨{self.plugin or self.type}⟩")
+
+    def interface(self, found: NodeInterface | None, at: Location) -> NodeInterface | None:
+        """The interface the node runs: ``found`` (its code's), and the lifecycle interface
+        when launch_ros starts it as a ``LifecycleNode`` (the action drives it through those
+        services: the node has them whatever rosvar knows of its code, placed at ``at``)."""
+        if not self.lifecycle:
+            return found
+        if found is None:
+            found = NodeInterface(self.package, self.plugin or self.type, NodeKind.NODE)
+        return replace(found, entries=with_lifecycle(found.entries, at))
 
     @property
     def full_name(self) -> str:
@@ -242,6 +259,7 @@ def launched_units(
     for condition, launched, values in node_branches(space, node):
         unit = launched.unit()
         interface = None if unit is None else find_interface(interfaces, unit)
+        interface = launched.interface(interface, node.location)
         if interface is not None:
             static = all(value is None or isinstance(value, str) for value in values)
             yield condition, launched.named(interface), interface, static

@@ -632,7 +632,8 @@ class VariationalGraph:
             return
         launched = LaunchedNode.of(node.schema, fields)
         unit = launched.unit()
-        interface = None if unit is None else find_interface(self.interfaces, unit)
+        found = None if unit is None else find_interface(self.interfaces, unit)
+        interface = launched.interface(found, node.location)
         if interface is None:
             return
         launched = launched.named(interface)

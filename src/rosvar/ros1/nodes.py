@@ -32,6 +32,7 @@ ROS1_NODES = NodeSchema(
     label=_FULL_NAME,
     args=NodeField(("args",)),
     plugin=constant_field(None),
+    lifecycle=constant_field(None),
     launched=("pkg", "type", "namespace", "name", "args"),
 )
 """A ``<node>``'s typed fields."""

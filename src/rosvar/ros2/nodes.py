@@ -78,6 +78,9 @@ ROS2_NODES = NodeSchema(
     label=NodeField(("ros_namespace", "namespace", "name", "exec"), _label),
     args=NodeField(("args",)),
     plugin=NodeField(("plugin",)),
-    launched=("pkg", "exec", "namespace", "name", "args", "ros_namespace", "plugin"),
+    lifecycle=NodeField(
+        ("kind",), lambda values: "true" if values[0] == ProcessKind.LIFECYCLE_NODE else None
+    ),
+    launched=("pkg", "exec", "namespace", "name", "args", "ros_namespace", "plugin", "kind"),
 )
 """A node's (a process's, a composable node's) typed fields."""

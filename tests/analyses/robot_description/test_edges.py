@@ -19,9 +19,12 @@ from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.ros.version import RosVersion
 from rosvar.workspace import discover
+from rosvar.workspace.interfaces.catalogue import load_catalogue
 from rosvar.workspace.interfaces.extraction import extract_interfaces
 from rosvar.workspace.interfaces.model import Interfaces, Role
+from rosvar.workspace.interfaces.overrides import add_catalogue
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -319,3 +322,42 @@ def test_husky_plugins_restricted_are_the_real_xacros(tmp_path: Path) -> None:
         assert ours == theirs, (args, env)
         compared += bool(theirs)
     assert compared == len(HUSKY_CONFIGURATIONS)
+
+
+ROS2_EMPTY_FILE = """
+import os
+from launch import LaunchDescription
+from launch.substitutions import TextSubstitution
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    sdf = os.getenv("ROBOT_SDF")
+    return LaunchDescription([
+        Node(package="gazebo_ros", executable="spawn_entity.py",
+             arguments=["-entity", "bot", "-file", TextSubstitution(text=sdf)]),
+    ])
+"""
+
+
+def test_a_spawner_given_an_empty_file_says_so_in_words(tmp_path: Path) -> None:
+    """``-file`` from an unset environment variable: the spawner (named as its code names
+    it) is given an empty argument where the variable is unset, never a file named ''."""
+    package = tmp_path / "ws" / "bot"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text(ROS2_MANIFEST)
+    (package / "launch" / "sim.launch.py").write_text(ROS2_EMPTY_FILE)
+    analysis = Analysis(discover([tmp_path / "ws"], ros_package_path=""))
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    add_catalogue(interfaces, load_catalogue(RosVersion.ROS2))  # spawn_entity.py's name
+    simulation = Simulation(analysis, interfaces)
+    model = analysis.model(str(package / "launch" / "sim.launch.py"))
+    [gap] = [g for g in simulation.gaps(model) if g.severity is Severity.WARNING]
+    assert gap.message == (
+        "/spawn_entity (gazebo_ros spawn_entity.py) is given an empty -file argument where "
+        "$ROBOT_SDF=<unset>: it has no model to read and spawns nothing"
+    )
+    assert Restriction(analysis, model, {}, {}).holds(gap.condition)  # unset
+    assert not Restriction(analysis, model, {}, {"ROBOT_SDF": "/r.sdf"}).holds(gap.condition)
+    unknown = Simulation(analysis, Interfaces())  # its code not known: the executable, as
+    [gap] = [g for g in unknown.gaps(model) if g.severity is Severity.WARNING]  # resolve shows
+    assert gap.message.startswith("/⟨spawn_entity.py⟩ (gazebo_ros spawn_entity.py) is given")

@@ -149,3 +149,36 @@ def test_a_dynamic_reconfigure_server_reads_its_namespace(tmp_path: Path) -> Non
     )
     reads = [(e.name, e.default, e.location.line) for e in extract(str(path), DiagnosticSink())]
     assert reads == [("~", RECONFIGURED, 4), ("~pid", RECONFIGURED, 5)]
+
+
+def test_an_rclpy_lifecycle_node_has_the_lifecycle_interface(tmp_path: Path) -> None:
+    """A class deriving from ``rclpy.lifecycle.Node`` (as lifecycle_py's talker): its
+    lifecycle publisher, and rcl_lifecycle's transition publisher and services."""
+    path = tmp_path / "talker.py"
+    path.write_text(
+        "from rclpy.lifecycle import Node\nimport std_msgs.msg\n"
+        "class Talker(Node):\n"
+        "    def __init__(self):\n        super().__init__('lc_talker')\n"
+        "    def on_configure(self, state):\n"
+        "        self.create_lifecycle_publisher(std_msgs.msg.String, 'lifecycle_chatter', 10)\n"
+    )
+    extracted = extract_node(str(path), DiagnosticSink())
+    assert extracted.node_name == "lc_talker"
+    assert [(str(e.role), e.name, e.type, e.location.line) for e in extracted.entries] == [
+        ("publishes", "lifecycle_chatter", "std_msgs/msg/String", 7),
+        ("publishes", "~/transition_event", "lifecycle_msgs/msg/TransitionEvent", 3),
+        ("services", "~/change_state", "lifecycle_msgs/srv/ChangeState", 3),
+        ("services", "~/get_state", "lifecycle_msgs/srv/GetState", 3),
+        ("services", "~/get_available_states", "lifecycle_msgs/srv/GetAvailableStates", 3),
+        (
+            "services",
+            "~/get_available_transitions",
+            "lifecycle_msgs/srv/GetAvailableTransitions",
+            3,
+        ),
+        ("services", "~/get_transition_graph", "lifecycle_msgs/srv/GetAvailableTransitions", 3),
+    ]
+    path.write_text(path.read_text().replace("rclpy.lifecycle", "rclpy.node"))
+    assert [e.name for e in extract_node(str(path), DiagnosticSink()).entries] == [
+        "lifecycle_chatter"
+    ]

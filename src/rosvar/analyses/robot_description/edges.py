@@ -49,7 +49,7 @@ class Simulation:
         self.reader = XacroReader(
             analysis.space, workspace.find, analysis.domains.env_domain, workspace.confinement()
         )
-        self.spawns = Spawns(analysis.space, self.reader)
+        self.spawns = Spawns(analysis.space, self.reader, interfaces)
         self.bridges = Bridges(analysis.space, workspace.confinement())
         self._read: dict[str, tuple[list[Edge], list[Gap]]] = {}
         self._spawned: dict[str, list[Spawn]] = {}

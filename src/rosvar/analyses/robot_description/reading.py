@@ -40,6 +40,8 @@ class XacroReader:
         """The file's tree, or why it cannot be read (xacro's IOError)."""
         found = self._parsed.get(path)
         if found is None:
+            if not path.strip():
+                return "an empty file name"
             try:
                 data = read_file(path, self.confinement)
             except FileRefused as refused:

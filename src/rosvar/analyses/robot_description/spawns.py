@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Final
 
-from rosvar.analyses.communication import Gap, LaunchedNode
+from rosvar.analyses.communication import Gap, LaunchedNode, find_interface
 from rosvar.analyses.robot_description.commands import (
     CommandError,
     XacroCommand,
@@ -44,6 +44,7 @@ from rosvar.logic.choice import Choice, combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.terms import Apply, concat, is_term
 from rosvar.ros.version import RosVersion
+from rosvar.workspace.interfaces.model import Interfaces
 
 COMMAND_WRAPPERS: Final = (("__command__(", ")"), ("$(command ", ")"))
 """How a command's text is kept in a model: ROS 1's ``<param command>`` value, ROS 2's
@@ -111,9 +112,10 @@ class _Source:
 class Spawns:
     """The spawns of launch models, with the descriptions expanded once per spawner."""
 
-    def __init__(self, space: ConditionSpace, reader: XacroReader) -> None:
+    def __init__(self, space: ConditionSpace, reader: XacroReader, interfaces: Interfaces) -> None:
         self.space = space
         self.reader = reader
+        self.interfaces = interfaces
         self._gaps: list[Gap] = []
         self._expanded: dict[tuple[object, ...], Description] = {}
 
@@ -139,8 +141,10 @@ class Spawns:
             if kind is None:
                 continue
             if not launched.name:  # ROS 2, unnamed: its code names it
-                launched = replace(launched, name="{" + launched.type + "}")
-            grouped: dict[tuple[Raw | None, ...], tuple[BDD, dict[str, Raw | None]]] = {}
+                unit = launched.unit()
+                interface = None if unit is None else find_interface(self.interfaces, unit)
+                launched = launched.named(interface)
+            grouped: dict[tuple[Raw | None, ...], tuple[BDD, BDD, dict[str, Raw | None]]] = {}
             for branch, text in node.field("args"):
                 where = condition & branch
                 if not self.space.satisfiable(where):
@@ -153,9 +157,40 @@ class Spawns:
                 read = {option: given.get(option) for option in kind.options()}
                 key = tuple(read.values())
                 known = grouped.get(key)
-                grouped[key] = (where if known is None else known[0] | where, read)
-            for where, read in grouped.values():
+                if known is not None:
+                    where, branch = known[0] | where, known[1] | branch
+                grouped[key] = (where, branch, read)
+            for where, branch, read in grouped.values():
+                if self._empty_file(node, launched, kind, read, where, branch):
+                    continue
                 yield from self._spawned(model, node, launched, kind, read, where)
+
+    def _empty_file(
+        self,
+        node: NodeDecl,
+        launched: LaunchedNode,
+        kind: SpawnerKind,
+        given: Mapping[str, Raw | None],
+        condition: BDD,
+        branch: BDD,
+    ) -> bool:
+        """A spawner told to read its model from an empty file name (an unset environment
+        variable, an empty argument) has no model to read: it spawns nothing. Said in those
+        words, where its ``args`` are so (``branch``), never as a file named ``''``."""
+        file = given.get(kind.file)
+        named = (given.get(kind.param) if kind.param else None) or (
+            given.get(kind.topic) if kind.topic else None
+        )
+        if named is not None or not isinstance(file, str) or file.strip():
+            return False
+        where = "" if branch == self.space.true else f" where {self.space.describe(branch)}"
+        message = (
+            f"{launched.full_name} ({launched.package} {launched.type}) is given an empty "
+            f"{kind.file} argument{where}: it has no model to read and spawns nothing"
+        )
+        gap = Gap(launched.full_name, message, condition, (node.location,), Severity.WARNING)
+        self._gaps.append(gap)
+        return True
 
     def _spawned(
         self,
@@ -282,7 +317,7 @@ class Spawns:
                 if isinstance(file, str) and file.startswith("/"):
                     runs.setdefault(file, []).append(source)
                 else:
-                    message = f"xacro file {file} is not known: not read"
+                    message = f"xacro file {file or '(an empty name)'} is not known: not read"
                     self._note(source.condition, source.location or spawner, message)
             elif source.file is not None:
                 if isinstance(source.file, str):

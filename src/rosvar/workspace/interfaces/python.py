@@ -16,7 +16,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from rosvar.diagnostics import DiagnosticSink, Location
-from rosvar.workspace.interfaces import python2, python_modules
+from rosvar.workspace.interfaces import python2, python_modules, tf
+from rosvar.workspace.interfaces.lifecycle import with_lifecycle
 from rosvar.workspace.interfaces.model import (
     ANY_PARAMETER,
     RECONFIGURED,
@@ -47,6 +48,7 @@ _CALLS: dict[str, tuple[Role, str]] = {
 _RCLPY_METHODS: dict[str, tuple[Role, int]] = {
     # Node method → role, and the position of the name (the type comes first)
     "create_publisher": (Role.PUBLISHES, 1),
+    "create_lifecycle_publisher": (Role.PUBLISHES, 1),  # rclpy.lifecycle.Node's
     "create_subscription": (Role.SUBSCRIBES, 1),
     "create_service": (Role.SERVICES, 1),
     "create_client": (Role.CLIENTS, 1),
@@ -60,14 +62,11 @@ _RCLPY_ACTIONS = {  # constructor → role; (node, type, name, ...)
 }
 _RCLPY_WAIT = "rclpy.wait_for_message.wait_for_message"
 """``wait_for_message(msg_type, node, topic)``: a subscription while it waits."""
-_TF_CLASSES: dict[str, tuple[Role, tuple[str, ...]]] = {
-    "TransformBroadcaster": (Role.PUBLISHES, ("/tf",)),
-    "StaticTransformBroadcaster": (Role.PUBLISHES, ("/tf_static",)),
-    "TransformListener": (Role.SUBSCRIBES, ("/tf", "/tf_static")),
-}
-"""tf's and tf2_ros's classes (``tf2_ros.TransformBroadcaster``, also from its modules):
-the topics their construction uses; a broadcaster's is a boundary use, as in C++."""
-_RCLPY_NODES = frozenset({"rclpy.node.Node", "rclpy.create_node"})
+_RCLPY_LIFECYCLE_NODES = frozenset(
+    {"rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode", "rclpy.lifecycle.node.LifecycleNode"}
+)
+"""rclpy's lifecycle node class: built, or derived from, it has the lifecycle interface."""
+_RCLPY_NODES = frozenset({"rclpy.node.Node", "rclpy.create_node", *_RCLPY_LIFECYCLE_NODES})
 """Calls that build an rclpy node: the first argument is its name."""
 _VALUE_ATTRIBUTES = frozenset(
     {"value", "string_value", "get_parameter_value", "integer_value", "double_value"}
@@ -330,6 +329,17 @@ class _Reader:
                 return Entry(Role.PARAMS, ANY_PARAMETER, location, static=False)
         return None
 
+    def lifecycle_at(self, nodes: list[ast.AST]) -> Location | None:
+        """Where the code builds an rclpy lifecycle node, or a class deriving from one."""
+        for part in nodes:
+            for node in ast.walk(part):
+                classes = node.bases if isinstance(node, ast.ClassDef) else []
+                built = [node.func] if isinstance(node, ast.Call) else []
+                if any(self.qualified(c) in _RCLPY_LIFECYCLE_NODES for c in (*classes, *built)):
+                    assert isinstance(node, ast.ClassDef | ast.Call)
+                    return Location(self.path, node.lineno, node.col_offset + 1)
+        return None
+
     def reconfigure_entry(self, call: ast.Call) -> Entry | None:
         """``dynamic_reconfigure.server.Server(Config, callback, namespace="~")`` reads its
         config's parameters in that namespace."""
@@ -346,14 +356,15 @@ class _Reader:
         """The ``/tf`` (``/tf_static``) uses of a tf broadcaster's or listener's construction."""
         callee = self.qualified(call.func) or ""
         head, _, last = callee.rpartition(".")
-        if last not in _TF_CLASSES or head.split(".")[0] not in ("tf", "tf2_ros"):
+        if last not in tf.CLASSES or head.split(".")[0] not in ("tf", "tf2_ros"):
             return []
-        role, topics = _TF_CLASSES[last]
+        role, topics = tf.CLASSES[last]
         rclpy = any(module.startswith("rclpy") for module in self.scope.imports.values())
-        message = "tf2_msgs/msg/TFMessage" if rclpy else "tf2_msgs/TFMessage"
+        message = tf.ROS2_MESSAGE if rclpy else tf.MESSAGE
         location = Location(self.path, call.lineno, call.col_offset + 1)
-        boundary = role is Role.PUBLISHES
-        return [Entry(role, t, location, type=message, boundary=boundary) for t in topics]
+        return [
+            Entry(role, t, location, type=message, boundary=tf.is_boundary(role, t)) for t in topics
+        ]
 
     def rclpy_entry(
         self, call: ast.Call, callee: str | None, keywords: dict[str, ast.expr]
@@ -500,6 +511,10 @@ def extract_node(
                 entries.append(undeclared)
             if (entry := module_reader.entry(call)) is not None:
                 entries.append(entry)
+    for (_file, _tree, nodes), (module_reader, _calls) in zip(parts, read, strict=True):
+        if (lifecycle := module_reader.lifecycle_at(nodes)) is not None:
+            entries = with_lifecycle(entries, lifecycle)
+            break
     return Extracted(entries, names.pop() if len(names) == 1 else None)
 
 

@@ -11,6 +11,7 @@ from pathlib import Path
 from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.workspace.interfaces.cpp.extract import extract_node
 from rosvar.workspace.interfaces.cpp.unit import Unit
+from rosvar.workspace.interfaces.lifecycle import LIFECYCLE_USES
 from rosvar.workspace.interfaces.model import RECONFIGURED, Entry, Expression, NamedBy, Role
 
 
@@ -47,10 +48,13 @@ class Unused : public nav2_util::LifecycleNode {
 };
 int main() { auto node = std::make_shared<MapServer>(); node->on_configure(state); }
 """
-    assert _uses(_entries(tmp_path, source)) == [
+    uses = _uses(_entries(tmp_path, source))
+    assert uses[:2] == [
         ("publishes", "map", "nav_msgs/msg/OccupancyGrid", 5),
         ("services", "~/ready", "std_srvs/srv/Trigger", 9),
     ]
+    # the base's initializer (line 3) makes it a lifecycle node, with rcl_lifecycle's interface
+    assert uses[2:] == [(str(role), name, kind, 3) for role, name, kind in LIFECYCLE_USES]
 
 
 def test_the_projects_own_wrappers_give_one_use_per_call(tmp_path: Path) -> None:
@@ -174,6 +178,9 @@ int main() { Node node; }
         ("subscribes", "points", "sensor_msgs/PointCloud2", 3),
     ]
     assert [e.boundary for e in entries if e.role is Role.PUBLISHES] == [True]
+    # a listener's /tf_static may stay empty (no static transform); its /tf may not
+    listened = {e.name: e.boundary for e in entries if e.role is Role.SUBSCRIBES}
+    assert (listened["/tf"], listened["/tf_static"]) == (False, True)
     ros2 = """\
 class Node : public rclcpp::Node {
  public:
@@ -307,3 +314,43 @@ int main() { Node node; }
         if e.role is Role.PARAMS
     ]
     assert sorted(reads) == [("~", RECONFIGURED, 8), ("~pid", RECONFIGURED, 4)]
+
+
+LIFECYCLE_INTERFACE = [
+    ("publishes", "~/transition_event", "lifecycle_msgs/msg/TransitionEvent"),
+    ("services", "~/change_state", "lifecycle_msgs/srv/ChangeState"),
+    ("services", "~/get_state", "lifecycle_msgs/srv/GetState"),
+    ("services", "~/get_available_states", "lifecycle_msgs/srv/GetAvailableStates"),
+    ("services", "~/get_available_transitions", "lifecycle_msgs/srv/GetAvailableTransitions"),
+    ("services", "~/get_transition_graph", "lifecycle_msgs/srv/GetAvailableTransitions"),
+]
+"""rcl_lifecycle's com_interface.c names, rclcpp_lifecycle's types."""
+
+
+def test_a_lifecycle_node_built_or_derived_has_the_lifecycle_interface(tmp_path: Path) -> None:
+    """rclcpp_lifecycle's node, built by ``make_shared`` or as a base class, has rcl_lifecycle's
+    transition publisher and services; a plain rclcpp node has none."""
+    built = """\
+int main() {
+  auto node = rclcpp_lifecycle::LifecycleNode::make_shared("lc");
+  node->create_publisher<std_msgs::msg::String>("chatter", 10);
+}
+"""
+    derived = """\
+class Talker : public rclcpp_lifecycle::LifecycleNode {
+ public:
+  Talker() : rclcpp_lifecycle::LifecycleNode("lc_talker") {}
+};
+int main() { auto node = std::make_shared<Talker>(); }
+"""
+    plain = built.replace("rclcpp_lifecycle::LifecycleNode", "rclcpp::Node")
+    for source, line, own in (
+        (built, 2, [("publishes", "chatter", "std_msgs/msg/String")]),
+        (derived, 3, []),
+    ):
+        uses = _uses(_entries(tmp_path, source))
+        assert [use[:3] for use in uses] == own + LIFECYCLE_INTERFACE
+        assert {use[3] for use in uses[len(own) :]} == {line}
+    assert [use[:3] for use in _uses(_entries(tmp_path, plain))] == [
+        ("publishes", "chatter", "std_msgs/msg/String")
+    ]

@@ -64,6 +64,12 @@ RCLCPP_READS = frozenset({"get_parameter", "get_parameter_or"})
 RCLCPP_NODE = re.compile(r"^rclcpp::Node(?:::make_shared)?$|make_shared<rclcpp::Node>$")
 """An rclcpp node built here (``rclcpp::Node::make_shared("name")``): its first argument
 is the node's name."""
+RCLCPP_LIFECYCLE_NODE = re.compile(
+    r"^rclcpp_lifecycle::LifecycleNode(?:::make_shared)?$"
+    r"|make_shared<rclcpp_lifecycle::LifecycleNode>$"
+)
+"""An rclcpp_lifecycle node built here: named as an rclcpp node is, with the lifecycle
+interface (``lifecycle.py``)."""
 ROS2_IMAGE = "sensor_msgs/msg/Image"
 ROS2_CAMERA_INFO = "sensor_msgs/msg/CameraInfo"
 CONTROLLER_MANAGER_SERVICES = tuple(
@@ -79,14 +85,6 @@ CONTROLLER_MANAGER_SERVICES = tuple(
 )
 """What ros_control's ControllerManager serves (its constructor, controller_manager.cpp)."""
 
-TF_MESSAGE = "tf2_msgs/TFMessage"
-ROS2_TF_MESSAGE = "tf2_msgs/msg/TFMessage"
-TF_CLASSES: dict[str, tuple[Role, tuple[str, ...]]] = {
-    "TransformBroadcaster": (Role.PUBLISHES, ("/tf",)),
-    "StaticTransformBroadcaster": (Role.PUBLISHES, ("/tf_static",)),
-    "TransformListener": (Role.SUBSCRIBES, ("/tf", "/tf_static")),
-}
-"""tf's and tf2_ros's classes: the topics their construction uses."""
 WAIT_FOR_MESSAGE = frozenset({"ros::topic::waitForMessage", "rclcpp::wait_for_message"})
 """Waiting for one message subscribes to its topic while it waits."""
 API_NAMES = frozenset(

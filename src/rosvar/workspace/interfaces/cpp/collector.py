@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from tree_sitter import Node
 
 from rosvar.diagnostics import DiagnosticSink, Location
+from rosvar.workspace.interfaces import tf
 from rosvar.workspace.interfaces.cpp import apis, param_defaults, syntax
 from rosvar.workspace.interfaces.cpp.evaluator import CallSite, Evaluator, Handle
 from rosvar.workspace.interfaces.cpp.unit import Function, Unit
@@ -46,6 +47,9 @@ class Collector:
     ros2: bool = False
     """A ROS 2 package: a node has one namespace, so whatever a call names the node by is it
     (``message_filters::Subscriber<T> sub(this, "image")``)."""
+    lifecycle: Location | None = None
+    """Where a lifecycle node is built (a ``LifecycleNode`` base's initializer,
+    ``rclcpp_lifecycle::LifecycleNode::make_shared``): the node has the lifecycle interface."""
 
     def add(
         self,
@@ -161,6 +165,8 @@ class Collector:
                     "LifecycleNode",
                 ):  # the base class: the node's name
                     self._node_name(syntax.arguments(node), function)
+                    if syntax.last(name) == "LifecycleNode":
+                        self._lifecycle(function, node)
                 self._construction(
                     self.unit.fields.get(name, ""), syntax.arguments(node), function, node
                 )
@@ -178,6 +184,10 @@ class Collector:
         if apis.RCLCPP_NODE.search(compact):
             self._node_name(arguments, function)
             return
+        if apis.RCLCPP_LIFECYCLE_NODE.search(compact):
+            self._node_name(arguments, function)
+            self._lifecycle(function, at)
+            return
         base = syntax.last(compact.split("<")[0])
         templates = syntax.template_arguments_text(compact)
         message = self.unit.message_type(templates[0]) if templates else None
@@ -190,7 +200,7 @@ class Collector:
         elif base == "ControllerManager" and arguments and not self.ros2:
             # ROS 2's (ros2_control_node) is a node whose services its own code makes
             self._controller_manager(arguments[1:], function, at)
-        elif base in apis.TF_CLASSES and re.search(r"\btf2?(_ros)?::", compact):
+        elif base in tf.CLASSES and re.search(r"\btf2?(_ros)?::", compact):
             self._tf(base, Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1))
         elif base == "Server" and "dynamic_reconfigure::" in compact:
             self._reconfigure(
@@ -204,12 +214,12 @@ class Collector:
         self._entry(Role.PARAMS, namespace, location, default=RECONFIGURED)
 
     def _tf(self, base: str, location: Location) -> None:
-        """tf's broadcasters publish ``/tf`` (the static one ``/tf_static``), for every tf
-        listener (a boundary use); a listener subscribes both."""
-        role, topics = apis.TF_CLASSES[base]
-        message = apis.ROS2_TF_MESSAGE if self.ros2 else apis.TF_MESSAGE
+        """tf's broadcasters publish ``/tf`` (the static one ``/tf_static``); a listener
+        subscribes both (:mod:`rosvar.workspace.interfaces.tf`)."""
+        role, topics = tf.CLASSES[base]
+        message = tf.ROS2_MESSAGE if self.ros2 else tf.MESSAGE
         for topic in topics:
-            self._entry(role, Text(topic), location, message, boundary=role is Role.PUBLISHES)
+            self._entry(role, Text(topic), location, message, boundary=tf.is_boundary(role, topic))
 
     def members(self, owner: str) -> None:
         """The members a class's construction builds without arguments that make a use
@@ -221,7 +231,7 @@ class Collector:
             compact = syntax.text(type_node).replace(" ", "")
             base = syntax.last(compact.split("<")[0])
             line, column = declaration.start_point
-            if base in apis.TF_CLASSES and re.search(r"\btf2?(_ros)?::", compact):
+            if base in tf.CLASSES and re.search(r"\btf2?(_ros)?::", compact):
                 self._tf(base, Location(file, line + 1, column + 1))
             elif base == "Server" and "dynamic_reconfigure::" in compact:
                 self._reconfigure(None, Location(file, line + 1, column + 1))
@@ -229,6 +239,10 @@ class Collector:
     def _node_name(self, arguments: list[Node], function: Function) -> None:
         if arguments:
             self.node_names.append(self.evaluator.name(arguments[0], function))
+
+    def _lifecycle(self, function: Function, at: Node) -> None:
+        if self.lifecycle is None:
+            self.lifecycle = Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1)
 
     def _controller_manager(self, arguments: list[Node], function: Function, at: Node) -> None:
         """``controller_manager::ControllerManager cm(&hw, nh)`` serves its services below
@@ -293,6 +307,9 @@ class Collector:
                 pass  # a method of the rclcpp node the function belongs to
             elif apis.RCLCPP_NODE.search(name):
                 self._node_name(arguments, function)
+            elif apis.RCLCPP_LIFECYCLE_NODE.search(name):
+                self._node_name(arguments, function)
+                self._lifecycle(function, node)
             elif syntax.last(bare) in apis.MAKERS:
                 templates = syntax.template_arguments(callee)
                 if templates:

@@ -6,6 +6,7 @@ from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.workspace.interfaces.cpp.collector import Collector
 from rosvar.workspace.interfaces.cpp.evaluator import Evaluator
 from rosvar.workspace.interfaces.cpp.unit import Unit
+from rosvar.workspace.interfaces.lifecycle import with_lifecycle
 from rosvar.workspace.interfaces.model import Extracted, Role
 
 
@@ -45,4 +46,7 @@ def extract_node(
     reads = [read for read in collector.reads if read.name not in declared]
     names = {name.value for name in collector.node_names if name.static}
     node_name = names.pop() if len(names) == 1 else None
-    return Extracted(collector.entries + reads, node_name)
+    entries = collector.entries + reads
+    if collector.lifecycle is not None:
+        entries = with_lifecycle(entries, collector.lifecycle)
+    return Extracted(entries, node_name)
