@@ -189,6 +189,27 @@ def test_memory_estimate_grows_with_files_within_bounds() -> None:
 
 
 @pytest.mark.filterwarnings("ignore:Changed in `dd`")  # statistics()' note on its 'mem' key
+def test_dead_nodes_are_collected_before_they_outgrow_the_estimate() -> None:
+    """Husky with ``_external`` as a root (5,800 variables): the web server's graph build
+    left a million dead nodes that CUDD kept, as it collects garbage below 90 % of its
+    estimate only once there are four dead nodes per slot of its unique table (256 slots a
+    variable)."""
+    space = ConditionSpace(files=100)
+    names = [f"v{index}" for index in range(5_800)]
+    space.bdd.declare(*names)
+    pairs, made = 16, 0
+    for round_ in range(8):  # ⋁ x_i ∧ y_i, the xs above the ys: 2^pairs nodes, then dropped
+        xs, ys = names[40 * round_ :][:pairs], names[2_900 + 40 * round_ :][:pairs]
+        built = space.false
+        for x, y in zip(xs, ys, strict=True):
+            built |= space.bdd.var(x) & space.bdd.var(y)
+        made += len(space.bdd)
+        del built
+    assert made * 32 > conditions_module.memory_estimate(100)  # 32 bytes a node
+    assert space.bdd.statistics()["peak_nodes"] < made * 3 // 4
+
+
+@pytest.mark.filterwarnings("ignore:Changed in `dd`")  # statistics()' note on its 'mem' key
 def test_computed_table_stays_fixed_as_variables_grow() -> None:
     space = ConditionSpace(files=10_000)
     for index in range(3_000):  # CUDD grows the table with the unique table unless capped

@@ -32,8 +32,8 @@ MAX_CELL_GROUP = 24
 """Predicates over one input related by one fact over all of them (its size grows with
 their number times their cells); a later one is related to each earlier one by a fact of
 its own (pairs, enough for a clash between two nodes)."""
-MEMORY_PER_FILE = 512 << 10
-MIN_MEMORY = 64 << 20
+MEMORY_PER_FILE = 128 << 10
+MIN_MEMORY = 16 << 20
 MAX_MEMORY = 1 << 30
 """Bounds of the memory estimate given to CUDD (``memory_estimate``, see
 :func:`memory_estimate`); the upper one is ``dd``'s default."""
@@ -43,9 +43,11 @@ def memory_estimate(files: int) -> int:
     """What CUDD is told to expect for an analysis of ``files`` launch files.
 
     CUDD touches a 128th of its estimate when the manager is created (page faults, for
-    ``dd``'s default of 1 GiB) and collects garbage more eagerly once it uses 90 % of it.
-    Interpretation uses a small fraction of this share per file (docs/performance.md), so it
-    keeps a wide margin while small systems start small.
+    ``dd``'s default of 1 GiB), and collects garbage only once it uses 90 % of it: below,
+    dead nodes pile up until they outnumber four times the unique table's slots (256 per
+    variable), and CUDD never gives their memory back. Interpretation uses about half of
+    this share per file (docs/performance.md), so it keeps a margin, while the web server's
+    graph build, which leaves most of its nodes dead, collects them as it goes.
     """
     return min(MAX_MEMORY, max(MIN_MEMORY, files * MEMORY_PER_FILE))
 
