@@ -186,7 +186,11 @@ def _substitution(name: str, signature: Signature) -> Builder:
             )
             if value is None and not required:
                 break
-            args.append(call.text(value))
+            if keyword in signature.listed and isinstance(value, list | tuple):
+                items = [call.text(item) for item in value]
+                args.append(Text.of(*[part for item in items for part in (",", item)][1:]))
+            else:
+                args.append(call.text(value))
         if name in COMPARISONS:  # '' is the text [] there
             args = [arg if arg.parts else Text.of(Sub(EMPTY)) for arg in args]
         return Text.of(Sub(name, tuple(args)))
