@@ -104,3 +104,48 @@ def test_a_dependency_file_rosvar_cannot_read_is_an_include_not_followed(tmp_pat
         assert result.ok, result.errors
         assert [n.name for n in result.nodes] == ["/own"]
         assert [(w.location.file, w.location.line, w.message) for w in result.warnings] == warned
+
+
+DOUBLING = "".join(
+    f'<let name="v{i}" value="$(var v{i - 1})$(var v{i - 1})"/>' for i in range(1, 40)
+)
+
+
+def test_a_condition_no_configuration_computes_is_no_bool_error(tmp_path: Path) -> None:
+    """A value rosvar gave up on (2^39 characters even here) or did not follow (a helper's
+    call), tested as a condition, is reported as such at the tag, not as "not a 'bool'
+    type"; a value that is computed and is no boolean still is."""
+    text = f"""<launch><arg name="on" default="true"/><let name="v0" value="xy"/>{DOUBLING}
+      <group if="$(var v39)"><node pkg="pkg" exec="n" name="a"/></group>
+      <node pkg="pkg" exec="n" name="b" if="$(var on)"/>
+    </launch>"""
+    it = launch(tmp_path, text)
+
+    def errors(args: dict[str, str]) -> list[tuple[str, int, str]]:
+        result = it.analysis.resolve([str(it.main)], args)
+        return [(e.code, e.location.line, e.message) for e in result.errors]
+
+    [(code, line, message)] = errors({})
+    assert (code, line) == ("value-unknown", 2) and "work limits" in message, message
+    assert message.startswith("<group> attribute 'if': ")
+    assert ("bool-invalid", 3, "<node> attribute 'if': value is not a 'bool' type") in errors(
+        {"on": "maybe"}
+    )
+
+
+def test_an_unfollowed_condition_says_what_was_not_followed(tmp_path: Path) -> None:
+    text = """from launch import LaunchDescription
+from launch.conditions import IfCondition
+from launch_ros.actions import Node
+import helpers_nowhere
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='pkg', executable='n', name='a', condition=IfCondition(helpers_nowhere.on())),
+    ])
+"""
+    it = launch(tmp_path, text, suffix=".launch.py")
+    [error] = it.analysis.resolve([str(it.main)], {}).errors
+    assert error.code == "value-unknown" and error.location.line == 9, error.message
+    assert "helpers_nowhere.on() is not followed" in error.message

@@ -25,6 +25,7 @@ from rosvar.interpreter.model import (
     Guard,
     LaunchModel,
     Raw,
+    Tested,
 )
 from rosvar.logic.atoms import register_predicate
 from rosvar.logic.bdd import BDD
@@ -233,7 +234,12 @@ class Interpretation(Generic[S]):
         return _Under(self, condition)
 
     def fail(
-        self, condition: BDD, code: str, message: str, location: Location | None = None
+        self,
+        condition: BDD,
+        code: str,
+        message: str,
+        location: Location | None = None,
+        tested: Tested | None = None,
     ) -> None:
         """roslaunch raises here under ``condition`` (within the current path)."""
         if condition == self.space.false:  # most checks find nothing: no conjunction
@@ -241,7 +247,8 @@ class Interpretation(Generic[S]):
         where = self.pc & condition
         if where == self.space.false:
             return
-        self.model.errors.append(ErrorEvent(where, location or self.location, code, message))
+        place = location or self.location
+        self.model.errors.append(ErrorEvent(where, place, code, message, tested))
 
     def warn(self, code: str, message: str) -> None:
         self.sink.warning(code, message, self.location)
@@ -327,7 +334,8 @@ class Interpretation(Generic[S]):
                 true |= condition & is_true
                 invalid |= condition & ~is_true & ~is_false
         if invalid != self.space.false:
-            self.fail(invalid, "bool-invalid", f"{label}: value is not a 'bool' type")
+            message = f"{label}: value is not a 'bool' type"
+            self.fail(invalid, "bool-invalid", message, tested=Tested(label, value))
         return true
 
     def condition_of(self, entity: Entity, scope: S) -> BDD:

@@ -21,6 +21,7 @@ from rosvar.diagnostics import Diagnostic, Location
 from rosvar.files import Confinement
 from rosvar.interpreter.model import (
     DeferredValue,
+    ErrorEvent,
     LaunchModel,
     NodeDecl,
     Raw,
@@ -237,6 +238,16 @@ class Restriction:
                     return self._shift(leaf)
                 return leaf
         raise ResolutionError("value-undefined", f"{what} has no value here", location)
+
+    def error(self, event: ErrorEvent) -> ResolutionError:
+        """The launch tool's error of ``event`` in this configuration: the failure of the
+        value it tested, where that value cannot be computed here either."""
+        if event.tested is not None:
+            try:
+                self.pick(event.tested.value, event.location, event.tested.what)
+            except ResolutionError as failure:
+                return failure
+        return ResolutionError(event.code, event.message, event.location)
 
     def raw(self, choice: Choice[Raw | None], location: Location, what: str) -> str | None:
         value = self.pick(choice, location, what)

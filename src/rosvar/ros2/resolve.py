@@ -66,7 +66,7 @@ def resolve(
         result.warnings.extend(_unfollowed(model, restriction))
         for error in model.errors:
             if restriction.holds(error.condition):
-                result.errors.append(ResolutionError(error.code, error.message, error.location))
+                result.errors.append(restriction.error(error))
         for decl in model.nodes:
             if restriction.holds(decl.condition):
                 later = decl.trigger.partition("(")[0] in LATER

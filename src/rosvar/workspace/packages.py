@@ -103,9 +103,12 @@ class Workspace:
 
     def installed(self, path: str) -> str:
         """The file ``path`` names when a ROS 2 source package's folder stands for its share
-        folder: the source its install rules copy to that place in the share, else
-        ``path`` itself (as for an installed package, or a ROS 1 one, whose ``$(find)`` is
-        its source)."""
+        folder: ``path`` itself if it exists (the common ``install(DIRECTORY launch ...)``
+        keeps the source's layout; the rules are read only for a path not found), else the
+        source its install rules copy to that place of the share, else ``path`` (as for an
+        installed package, or a ROS 1 one, whose ``$(find)`` is its source)."""
+        if self.ros_version is not RosVersion.ROS2 or os.path.exists(path):
+            return path
         share = self.share_of(path)
         if share is None:
             return path
