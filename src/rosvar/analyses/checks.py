@@ -669,6 +669,36 @@ class _Checker:
                     condition & node_condition & ~read,
                     (location, node_location),
                 )
+            self._above(name, condition & ~read, location, readers)
+
+    def _above(
+        self,
+        name: str,
+        condition: BDD,
+        location: Location,
+        readers: Sequence[tuple[BDD, str, Location, list[str], bool]],
+    ) -> None:
+        """``name`` (``N/x``) set where no launched node reads it, beside a node ``N/d`` that
+        reads its private ``~x``, which no launch file sets: a setting one namespace too
+        high (jackal's joystick YAML), where the node stays on its default. Not where a node
+        of ``N`` whose interface is unknown may read ``x``."""
+        namespace, _, last = name.rpartition(names.SEP)
+        unseen = self.any(c for _n, ns, c in self.unknown if ns == namespace + names.SEP)
+        setters = self.setters()
+        for node_condition, node, node_location, reads, _every in readers:
+            private = node + names.SEP + last
+            if node.rpartition(names.SEP)[0] != namespace or private not in reads:
+                continue
+            unset = ~self.any(c for set_name, c in setters if _covers(set_name, private))
+            self.add(
+                Check.PARAM_UNREAD,
+                Severity.WARNING,
+                name,
+                f"{name} is set where no launched node reads it, beside {node}, which reads "
+                f"~{last} ({private}) and finds it unset",
+                condition & node_condition & unset & ~unseen,
+                (location, node_location),
+            )
 
     def remaps(self, interfaces: Interfaces) -> None:
         """A node's own ``<remap>`` of a name it never uses (nor a name below it: an action's
