@@ -16,7 +16,7 @@ from __future__ import annotations
 import enum
 import os
 import stat
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from typing import BinaryIO
 
@@ -48,7 +48,10 @@ class FileRefused(OSError):
 
 @dataclass(frozen=True)
 class Confinement:
-    """The directories a workspace may read below (symlinks resolved), unless told otherwise.
+    """The directories a workspace may read below (symlinks resolved), unless told otherwise,
+    and where a path's file is: ``installed`` maps a path of a package's share folder, which
+    a ROS 2 source package's own folder stands for, to the source file its build installs
+    there (:mod:`rosvar.workspace.share`), as symlinks map a path to their target.
 
     A workspace's confinement lives as long as its analysis, one moment (as its parsed
     files, :class:`rosvar.frontends.xml.Snapshot`): a path's resolution is kept for it, since
@@ -58,18 +61,28 @@ class Confinement:
 
     roots: tuple[str, ...]
     allow_outside: bool = False
+    installed: Callable[[str], str] | None = field(default=None, compare=False, repr=False)
     _resolved: dict[str, str] = field(default_factory=dict, compare=False, repr=False)
 
     @staticmethod
-    def of(directories: Iterable[str], allow_outside: bool = False) -> Confinement:
+    def of(
+        directories: Iterable[str],
+        allow_outside: bool = False,
+        installed: Callable[[str], str] | None = None,
+    ) -> Confinement:
         real = {os.path.realpath(directory) for directory in directories}
-        return Confinement(tuple(sorted(real)), allow_outside)
+        return Confinement(tuple(sorted(real)), allow_outside, installed)
+
+    def source(self, path: str) -> str:
+        """The file ``path`` names: the source an install copies there, else ``path``."""
+        return path if self.installed is None else self.installed(path)
 
     def check(self, path: str) -> str:
-        """``path`` resolved (``..`` and symlinks), or :class:`FileRefused` if it is outside."""
+        """The file ``path`` names (:meth:`source`), resolved (``..`` and symlinks), or
+        :class:`FileRefused` if it is outside."""
         real = self._resolved.get(path)
         if real is None:
-            real = self._resolved[path] = os.path.realpath(path)
+            real = self._resolved[path] = os.path.realpath(self.source(path))
         _check_system(real)
         if not self.allow_outside and not any(_below(real, root) for root in self.roots):
             raise FileRefused(
@@ -99,7 +112,7 @@ def read_file(
     outside ``confinement``.
     """
     if confinement is not None:
-        confinement.check(path)
+        path = confinement.check(path)
     with open_regular(path) as handle:
         info = os.fstat(handle.fileno())
         if info.st_size > limit:

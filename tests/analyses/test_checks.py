@@ -8,9 +8,10 @@ from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from conftest import PACKAGE_XML
 from rosvar.analyses.checks import Check, check_model, check_models
 from rosvar.analyses.communication import Channel, resolved_graph
-from rosvar.diagnostics import Severity
+from rosvar.diagnostics import Location, Severity
 from rosvar.interpreter.resolution import Restriction
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.documents.findings import finding_document
@@ -407,6 +408,60 @@ def test_a_file_rosvar_cannot_read_is_an_unread_error_once(ws: LaunchWorkspace) 
     assert [(f.locations[0].file, f.locations[0].line) for f in unread] == [
         (str(ws.root / "pkg" / "launch" / "broken.launch"), 3)
     ]
+
+
+def test_a_dependency_file_rosvar_cannot_read_is_a_warning_at_the_users_include(
+    tmp_path: Path,
+) -> None:
+    """ros_gz's ``gz_sim.launch.py`` is made by its build from a template: a dependency's
+    sources lack it, yet the installed launch works. The include is not followed (what it
+    launches is not known), a warning at the user's include that reaches it (through a
+    dependency's file), under that include's condition; a dependency's file nobody
+    includes is no finding, and the user's own unreadable file stays an error."""
+    user, deps = tmp_path / "ws" / "app", tmp_path / "deps" / "dpkg"
+    for folder, name in ((user, "app"), (deps, "dpkg")):
+        (folder / "launch").mkdir(parents=True)
+        (folder / "package.xml").write_text(PACKAGE_XML.format(name=name))
+    (user / "launch" / "own.launch").write_text("<launch><node")
+    main = user / "launch" / "main.launch"
+    main.write_text(
+        '<launch>\n  <arg name="sim" default="true"/>\n'
+        '  <include file="$(find dpkg)/launch/wrapper.launch" if="$(arg sim)"/>\n'
+        '  <include file="$(find app)/launch/own.launch" unless="$(arg sim)"/>\n</launch>\n'
+    )
+    (deps / "launch" / "wrapper.launch").write_text(
+        '<launch>\n  <include file="$(find dpkg)/launch/generated.launch"/>\n</launch>\n'
+    )
+    (deps / "launch" / "broken.launch").write_text("<launch><node")
+    workspace = discover([user.parent], deps=[deps.parent], ros_package_path="")
+    analysis = Analysis(workspace)
+    model = analysis.model(str(main))
+    found = check_models(
+        analysis.space,
+        [model],
+        Interfaces(),
+        workspace.confinement(),
+        dependency=workspace.of_dependency,
+    )
+    unread = [(f.severity, f.locations, f.message) for f in found if f.check is Check.UNREAD]
+    generated = deps / "launch" / "generated.launch"
+    assert unread[0] == (
+        Severity.WARNING,
+        (Location(str(main), 3, 3), Location(str(deps / "launch" / "wrapper.launch"), 2, 3)),
+        f"included file {generated} of a dependency is not read (cannot read file: No such "
+        "file or directory): what it launches is not known",
+    )
+    assert [(severity, places[0].file) for severity, places, _ in unread[1:]] == [
+        (Severity.ERROR, str(user / "launch" / "own.launch"))
+    ]
+    [dependency] = [f for f in found if f.locations[0].line == 3]
+    for sim, holds in (("true", True), ("false", False)):
+        restriction = Restriction(analysis, model, {"sim": sim}, {})
+        assert restriction.holds(dependency.condition) is holds
+    assert resolve(analysis, [str(main)], {"sim": "false"}).errors  # the user's own file
+    [error] = resolve(analysis, [str(main)], {"sim": "true"}).errors
+    assert (error.code, error.location.line) == ("include-unknown", 2)
+    assert not any(e.code == "launch-invalid" for e in model.errors if "generated" in e.message)
 
 
 LIFECYCLE_LAUNCH = """

@@ -12,6 +12,7 @@ import pytest
 
 from rosvar.analyses.communication import Edge
 from rosvar.analyses.controllers import controller_edges
+from rosvar.diagnostics import Severity
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.cli import main
 from rosvar.ros.version import RosVersion
@@ -275,3 +276,40 @@ def test_a_controller_two_spawners_load_is_one_controller(
         )
     ]
     assert not [f for f in _check(tmp_path, capsys) if f["check"] == "multiple-providers"]
+
+
+INSTALLED = """<launch>
+  <node pkg="controller_manager" exec="ros2_control_node"/>
+  <node pkg="controller_manager" exec="spawner"
+        args="base_controller -p $(find-pkg-share demo)/config/controllers.yaml"/>
+</launch>
+"""
+
+
+def test_share_paths_are_read_from_what_the_install_copies_there(tmp_path: Path) -> None:
+    """ros2_control_demos' layout: the launch and parameter files live in ``bringup/`` and
+    CMake installs them into the share folder, where the launch files name them: the
+    included file and the controller's type are read from those sources."""
+    package = tmp_path / "demo"
+    (package / "bringup" / "launch").mkdir(parents=True)
+    (package / "bringup" / "config").mkdir()
+    (package / "package.xml").write_text(MANIFEST.format(name="demo", build="ament_cmake"))
+    (package / "CMakeLists.txt").write_text(
+        "project(demo)\n"
+        "install(DIRECTORY bringup/launch bringup/config DESTINATION share/${PROJECT_NAME})\n"
+    )
+    (package / "bringup" / "config" / "controllers.yaml").write_text(FILES["config/diff.yaml"])
+    (package / "bringup" / "launch" / "control.launch.xml").write_text(INSTALLED)
+    entry = package / "bringup" / "launch" / "entry.launch.xml"
+    entry.write_text(
+        '<launch><include file="$(find-pkg-share demo)/launch/control.launch.xml"/></launch>'
+    )
+    analysis, edges = _edges(tmp_path, str(entry))
+    assert not [
+        d for d in analysis.model(str(entry)).diagnostics if d.severity is not Severity.NOTE
+    ]
+    found = {(e.role, e.name, e.uncertain) for e in edges if e.name != "/tf"}
+    assert found == {  # the file says use_stamped_vel: false; known, not uncertain
+        (Role.SUBSCRIBES, "/base_controller/cmd_vel_unstamped", False),
+        (Role.PUBLISHES, "/base_controller/odom", False),
+    }

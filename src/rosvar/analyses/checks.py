@@ -39,7 +39,14 @@ from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.when import params_read
 from rosvar.diagnostics import Location, Severity
 from rosvar.files import Confinement
-from rosvar.interpreter.model import ErrorEvent, LaunchModel, NodeDecl, ParamDecl, YamlDecl
+from rosvar.interpreter.model import (
+    INCLUDE_UNREAD,
+    ErrorEvent,
+    LaunchModel,
+    NodeDecl,
+    ParamDecl,
+    YamlDecl,
+)
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
@@ -167,33 +174,74 @@ def model_check(version: RosVersion) -> Callable[[ModelCheck], ModelCheck]:
     return register
 
 
+class Checks:
+    """The checks of a workspace's entry files, made in two passes so that a caller may take
+    them a file at a time (the web UI, under its engine's lock): :meth:`gather` each file's
+    edges and the parameter names it sets (a use missing in one entry file may be made by
+    another: a note there), then :meth:`check` each file against them all.
+    ``described``: the uses launch models make beyond their nodes' code (robot
+    descriptions, bridges, controllers); ``dependency``: whether a file is a dependency's,
+    not the user's (what rosvar cannot read of one is told at the user's include)."""
+
+    def __init__(
+        self,
+        space: ConditionSpace,
+        interfaces: Interfaces,
+        confinement: Confinement,
+        described: Described | None = None,
+        dependency: Callable[[str], bool] = lambda _file: False,
+    ) -> None:
+        self.space = space
+        self.interfaces = interfaces
+        self.confinement = confinement
+        self.described = described
+        self.dependency = dependency
+        self.edges: dict[str, list[Edge]] = {}
+        self.partners: Partners = defaultdict(set)
+
+    def gather(self, model: LaunchModel) -> None:
+        edges = model_edges(self.space, model, self.interfaces, self.described)
+        self.edges[model.file] = edges
+        for edge in edges:
+            if edge.static:
+                self.partners[(edge.role, edge.name)].add(model.file)
+        for name, _condition in setters(model, self.confinement):
+            self.partners[(Role.PARAMS, name)].add(model.file)
+
+    def check(self, model: LaunchModel) -> list[Finding]:
+        """The findings of a gathered entry file."""
+        edges = self.edges[model.file]
+        return check_model(
+            self.space,
+            model,
+            self.interfaces,
+            self.confinement,
+            edges,
+            self.partners,
+            self.described,
+            self.dependency,
+        )
+
+
 def check_models(
     space: ConditionSpace,
     models: Sequence[LaunchModel],
     interfaces: Interfaces,
     confinement: Confinement,
     described: Described | None = None,
+    dependency: Callable[[str], bool] = lambda _file: False,
 ) -> list[Finding]:
-    """The findings of every entry file; one found again through a file including another
-    (same check, name and places) is reported once, for the file that is included.
-    ``described``: the uses launch models make beyond their nodes' code (robot
-    descriptions, bridges)."""
+    """The findings of every entry file (:class:`Checks`); one found again through a file
+    including another (same check, name and places) is reported once, for the file that is
+    included."""
     found: dict[tuple[object, ...], Finding] = {}
     included = _included(models)
     ordered = sorted(models, key=lambda m: real_path(m.file) not in included)
-    edges = {model.file: model_edges(space, model, interfaces, described) for model in ordered}
-    partners: Partners = defaultdict(set)
-    for file, found_edges in edges.items():
-        for edge in found_edges:
-            if edge.static:
-                partners[(edge.role, edge.name)].add(file)
+    checks = Checks(space, interfaces, confinement, described, dependency)
     for model in ordered:
-        for name, _condition in setters(model, confinement):
-            partners[(Role.PARAMS, name)].add(model.file)
+        checks.gather(model)
     for model in ordered:
-        for finding in check_model(
-            space, model, interfaces, confinement, edges[model.file], partners, described
-        ):
+        for finding in checks.check(model):
             key = (finding.check, finding.name, finding.locations)
             found.setdefault(key, finding)
     return sorted(found.values(), key=lambda f: (f.locations[0], f.check, f.name))
@@ -222,10 +270,12 @@ def check_model(
     edges: Sequence[Edge] | None = None,
     partners: Partners | None = None,
     described: Described | None = None,
+    dependency: Callable[[str], bool] = lambda _file: False,
 ) -> list[Finding]:
     """The findings of one entry file (where it loads: a failing launch has no graph);
     ``confinement``: where the files its ``<rosparam>`` loads may be read; ``partners``:
-    the uses of the workspace's other entry files (a missing partner there is a note)."""
+    the uses of the workspace's other entry files (a missing partner there is a note);
+    ``dependency``: as :func:`check_models`."""
     if edges is None:
         edges = model_edges(space, model, interfaces, described)
     loads = model.loads if described is None else model.loads & ~described.fails(model)
@@ -233,7 +283,7 @@ def check_model(
     checker.unknown = _unknown_nodes(space, model, interfaces)
     checker.graph(edges)
     checker.errors()
-    checker.unreadable()
+    checker.unreadable(dependency)
     if described is not None:
         checker.gaps(described.gaps(model))
     checker.node_names()
@@ -360,14 +410,29 @@ class _Checker:
             )
         self.loads = loads
 
-    def unreadable(self) -> None:
+    def unreadable(self, dependency: Callable[[str], bool]) -> None:
         """What rosvar could not read of the entry file or the files it includes: malformed,
         or over a limit on hostile input (too large, too many steps, nested too deep). The
         checks see nothing of it: without this, such a workspace would pass with no
-        finding. As the diagnostic, wherever the file is included."""
+        finding. As the diagnostic, wherever the file is included; a dependency's file, as a
+        warning at the user's include that reaches it (the launch itself may well work:
+        the installed dependency has the file)."""
         loads, self.loads = self.loads, self.space.true
         for diagnostic in self.model.diagnostics:
-            if diagnostic.severity is Severity.ERROR:
+            if diagnostic.code == INCLUDE_UNREAD:
+                self.add(
+                    Check.UNREAD,
+                    Severity.WARNING,
+                    diagnostic.code,
+                    diagnostic.message,
+                    self.any(
+                        include.condition
+                        for include in self.model.includes
+                        if include.location == diagnostic.location and not include.resolved
+                    ),
+                    self._reached(diagnostic.location, dependency),
+                )
+            elif diagnostic.severity is Severity.ERROR:
                 self.add(
                     Check.UNREAD,
                     Severity.ERROR,
@@ -377,6 +442,30 @@ class _Checker:
                     (diagnostic.location,),
                 )
         self.loads = loads
+
+    def _reached(
+        self, location: Location, dependency: Callable[[str], bool]
+    ) -> tuple[Location, ...]:
+        """``location`` and the includes above it up to the first in the user's files:
+        the place the user can act on first."""
+        chain = [location]
+        while dependency(chain[0].file):
+            above = next(
+                (
+                    include.location
+                    for include in self.model.includes
+                    if include.resolved
+                    and any(
+                        isinstance(file, str) and real_path(file) == real_path(chain[0].file)
+                        for _, file in include.file
+                    )
+                ),
+                None,
+            )
+            if above is None or above in chain:
+                break
+            chain.insert(0, above)
+        return tuple(chain)
 
     def gaps(self, gaps: Sequence[Gap]) -> None:
         """What of the graph could not be read, where it matters (where the launch loads, and

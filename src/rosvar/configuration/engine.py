@@ -18,7 +18,7 @@ from rosvar.analyses.feature_model.features import FeatureKind
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.catalog import Catalog, Feature
 from rosvar.configuration.choices import Action, ChoiceError, Refusal, UserChoice
-from rosvar.configuration.command import Launch, command_line, group
+from rosvar.configuration.command import Launch, command_line, group, launch_tool
 from rosvar.configuration.conflicts import Certainty, Conflicts, ConflictState
 from rosvar.configuration.derivation import Decisions, Derivation
 from rosvar.configuration.graph import Fields, Render, VariationalGraph
@@ -327,7 +327,8 @@ class Configurator:
                 because = "; ".join(
                     f"{f.error.location}: {f.error.message} [{f.error.code}]" for f in stops
                 )
-                reason = f"{_show(choice)} is impossible: roslaunch would stop at {because}"
+                tool = launch_tool(self.analysis.workspace.ros_version)
+                reason = f"{_show(choice)} is impossible: {tool} would stop at {because}"
                 return replace(replay, refused=(*replay.refused, Refusal(choice, reason)))
         return _Replay(accepted, replay.refused, (*kept, entry), after)
 

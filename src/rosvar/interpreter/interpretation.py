@@ -18,7 +18,15 @@ from rosvar.files import FileRefused
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.lifted import apply, lift
-from rosvar.interpreter.model import Decision, ErrorEvent, Guard, LaunchModel, Raw
+from rosvar.interpreter.model import (
+    INCLUDE_UNREAD,
+    Decision,
+    ErrorEvent,
+    Guard,
+    LaunchModel,
+    Raw,
+    Tested,
+)
 from rosvar.logic.atoms import register_predicate
 from rosvar.logic.bdd import BDD
 from rosvar.logic.cells import register_predicate_texts, spellings
@@ -229,7 +237,12 @@ class Interpretation(Generic[S]):
         return _Under(self, condition)
 
     def fail(
-        self, condition: BDD, code: str, message: str, location: Location | None = None
+        self,
+        condition: BDD,
+        code: str,
+        message: str,
+        location: Location | None = None,
+        tested: Tested | None = None,
     ) -> None:
         """roslaunch raises here under ``condition`` (within the current path)."""
         if condition == self.space.false:  # most checks find nothing: no conjunction
@@ -237,7 +250,8 @@ class Interpretation(Generic[S]):
         where = self.pc & condition
         if where == self.space.false:
             return
-        self.model.errors.append(ErrorEvent(where, location or self.location, code, message))
+        place = location or self.location
+        self.model.errors.append(ErrorEvent(where, place, code, message, tested))
 
     def warn(self, code: str, message: str) -> None:
         self.sink.warning(code, message, self.location)
@@ -323,7 +337,8 @@ class Interpretation(Generic[S]):
                 true |= condition & is_true
                 invalid |= condition & ~is_true & ~is_false
         if invalid != self.space.false:
-            self.fail(invalid, "bool-invalid", f"{label}: value is not a 'bool' type")
+            message = f"{label}: value is not a 'bool' type"
+            self.fail(invalid, "bool-invalid", message, tested=Tested(label, value))
         return true
 
     def condition_of(self, entity: Entity, scope: S) -> BDD:
@@ -394,11 +409,16 @@ class Interpretation(Generic[S]):
 
     def load(self, path: str) -> Entity | None:
         """Parse a launch file (cached) if the workspace's read gate lets it through (after
-        symlinks: a link to a file outside is not read). A refusal is an error naming the
-        path, a parse problem one in the words of the file's format; both at the including
-        tag, or for the entry file where its own diagnostic places the problem."""
+        symlinks: a link to a file outside is not read), from the source an install puts
+        at ``path`` (:meth:`~rosvar.workspace.packages.Workspace.installed`). A refusal is an
+        error naming the path, a parse problem one in the words of the file's format; both
+        at the including tag, or for the entry file where its own diagnostic places the
+        problem. A dependency's file that cannot be read is a warning at the including tag,
+        the include not followed (``include-unread``), as roslaunch's include of a file
+        rosvar may not read."""
+        confinement = self.workspace.confinement()
         try:
-            self.workspace.confinement().check(path)
+            confinement.check(path)
         except FileRefused as refused:
             self.fail(
                 self.space.true,
@@ -407,11 +427,21 @@ class Interpretation(Generic[S]):
                 self._placed(path, []),
             )
             return None
-        result = self.files.load(path)
+        result = self.files.load(confinement.source(path))
+        messages = "; ".join(d.message for d in result.diagnostics) or "unreadable"
+        if result.root is None and self.location.line > 0 and self.workspace.of_dependency(path):
+            # the installed dependency has the file (a build may make it): for the user the
+            # include is not followed, as one rosvar may not read, and the launch goes on
+            self.warn(
+                INCLUDE_UNREAD,
+                f"included file {path} of a dependency is not read ({messages}): what it "
+                "launches is not known",
+            )
+            return None
         for diagnostic in result.diagnostics:
             self.sink.add(diagnostic)
         if result.root is None:
-            messages = "; ".join(d.message for d in result.diagnostics) or "unreadable"
+            self.unread_installs(path)
             invalid = INVALID_FILE[self.workspace.ros_version, self.workspace.launch_format(path)]
             self.fail(
                 self.space.true,
@@ -423,6 +453,13 @@ class Interpretation(Generic[S]):
         if path not in self.model.files:
             self.model.files.append(path)
         return result.root
+
+    def unread_installs(self, path: str) -> None:
+        """Tell the install rules rosvar could not read of the package whose share folder
+        ``path``, a file not found, may be in (one of them may put it there)."""
+        share = self.workspace.share_of(path)
+        if share is not None:
+            self.sink.extend(list(share[1].diagnostics))
 
     def _placed(self, path: str, found: list[Location]) -> Location:
         if self.location.line > 0:  # an include

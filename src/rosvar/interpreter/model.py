@@ -283,6 +283,10 @@ class MachineDecl:
     attributes: dict[str, Choice[Raw | None]]
 
 
+INCLUDE_UNREAD = "include-unread"
+"""The warning at an include of a dependency's file rosvar cannot read (not followed)."""
+
+
 @dataclass(slots=True)
 class IncludeDecl:
     """An ``<include>`` and what became of it (``resolved`` is False for unreadable targets)."""
@@ -311,14 +315,27 @@ class Decision:
     outcome: BDD
 
 
+@dataclass(frozen=True, slots=True)
+class Tested:
+    """A value whose test failed where it was not known yet (``what``: ``<group> attribute
+    'if'``): where one configuration cannot compute it either (over the work limits, a module
+    not followed), that failure is the error, not the test's (a value rosvar gave up on is
+    no "not a 'bool' type")."""
+
+    what: str
+    value: Choice[Raw]
+
+
 @dataclass(slots=True)
 class ErrorEvent:
-    """Under ``condition`` roslaunch stops here with ``message``."""
+    """Under ``condition`` roslaunch stops here with ``message`` (unless ``tested`` fails
+    first)."""
 
     condition: BDD
     location: Location
     code: str
     message: str
+    tested: Tested | None = None
 
 
 @dataclass(slots=True)

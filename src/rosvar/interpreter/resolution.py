@@ -21,6 +21,7 @@ from rosvar.diagnostics import Diagnostic, Location
 from rosvar.files import Confinement
 from rosvar.interpreter.model import (
     DeferredValue,
+    ErrorEvent,
     LaunchModel,
     NodeDecl,
     Raw,
@@ -32,7 +33,7 @@ from rosvar.logic.choice import Choice
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.given_up import Bindings
 from rosvar.logic.inputs import EnvInput, Input
-from rosvar.logic.terms import Apply, Hole, PackageTable, TermError, evaluate
+from rosvar.logic.terms import Apply, Hole, TermError, evaluate
 from rosvar.ros.version import RosVersion
 from rosvar.workspace import Workspace
 
@@ -200,10 +201,12 @@ class Restriction:
         self.concrete: dict[Input, str] = {k: v for k, v in values.items() if v is not None}
         self.confinement = models.workspace.confinement()
         packages = {name: package.path for name, package in models.workspace.packages.items()}
-        self.assignment = self.space.assignment(values, PackageTable(packages))
+        self.assignment: dict[str, bool] = {}
         self.host = Bindings(packages, functools.partial(_holds, self.space, self.assignment))
         """Terms evaluate with the packages; values over the work limits are computed again
-        with the conditions that hold (:mod:`~rosvar.logic.given_up`)."""
+        with the conditions that hold (:mod:`~rosvar.logic.given_up`), also while the
+        assignment is made: a predicate on such a value reads its operands' atoms."""
+        self.space.assignment(values, self.host, into=self.assignment)
         self._shift: Callable[[str], str] | None = None
 
     def shift_anon(self, offset: int) -> None:
@@ -235,6 +238,16 @@ class Restriction:
                     return self._shift(leaf)
                 return leaf
         raise ResolutionError("value-undefined", f"{what} has no value here", location)
+
+    def error(self, event: ErrorEvent) -> ResolutionError:
+        """The launch tool's error of ``event`` in this configuration: the failure of the
+        value it tested, where that value cannot be computed here either."""
+        if event.tested is not None:
+            try:
+                self.pick(event.tested.value, event.location, event.tested.what)
+            except ResolutionError as failure:
+                return failure
+        return ResolutionError(event.code, event.message, event.location)
 
     def raw(self, choice: Choice[Raw | None], location: Location, what: str) -> str | None:
         value = self.pick(choice, location, what)

@@ -413,11 +413,16 @@ class ConditionSpace:
         values: Mapping[Input, str | None],
         host: object = None,
         files: frozenset[str] = frozenset(),
+        into: dict[str, bool] | None = None,
     ) -> dict[str, bool]:
-        """Truth of every atom under concrete inputs (``None`` = not given/unset).
+        """Truth of every atom under concrete inputs (``None`` = not given/unset), filled
+        into ``into`` (a new dict by default).
 
         A value outside an input's domain selects its ``OTHER`` slot; predicates are
-        decided by evaluating their terms with the concrete strings.
+        decided by evaluating their terms with the concrete strings, in the order the atoms
+        were made: a term over a value given up (:mod:`~rosvar.logic.given_up`) is made
+        after the atoms of its operands' conditions, so a ``host`` that reads ``into``
+        finds them decided.
         """
         concrete: dict[Input, str] = {}
         chosen: dict[Input, Slot] = {}
@@ -426,7 +431,7 @@ class ConditionSpace:
             if value is not None:
                 concrete[input_] = value
             chosen[input_] = self.held(input_, value)
-        result: dict[str, bool] = {}
+        result: dict[str, bool] = {} if into is None else into
         for atom, name in self._var_of.items():
             if isinstance(atom, SlotAtom):
                 result[name] = (

@@ -83,7 +83,7 @@ def _restrict(
 ) -> None:
     for event in model.errors:
         if r.holds(event.condition):
-            raise ResolutionError(event.code, event.message, event.location)
+            raise r.error(event)
     for include in model.includes:
         if not include.resolved and r.holds(include.condition):
             file = r.pick(include.file, include.location, "<include> file")

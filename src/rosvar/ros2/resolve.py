@@ -19,7 +19,14 @@ from rosvar import bounded_yaml
 from rosvar.diagnostics import Diagnostic, Severity, leaves_unknown
 from rosvar.files import Confinement, read_file
 from rosvar.interpreter import resolution
-from rosvar.interpreter.model import LaunchModel, NodeDecl, NodeField, NodeParameter, Raw
+from rosvar.interpreter.model import (
+    INCLUDE_UNREAD,
+    LaunchModel,
+    NodeDecl,
+    NodeField,
+    NodeParameter,
+    Raw,
+)
 from rosvar.interpreter.resolution import Resolution, ResolutionError, ResolvedNode, Restriction
 from rosvar.ros2.api.event_handlers import EVENT_HANDLERS
 from rosvar.ros2.conventions import command_line
@@ -59,7 +66,7 @@ def resolve(
         result.warnings.extend(_unfollowed(model, restriction))
         for error in model.errors:
             if restriction.holds(error.condition):
-                result.errors.append(ResolutionError(error.code, error.message, error.location))
+                result.errors.append(restriction.error(error))
         for decl in model.nodes:
             if restriction.holds(decl.condition):
                 later = decl.trigger.partition("(")[0] in LATER
@@ -77,10 +84,13 @@ def _unfollowed(model: LaunchModel, r: Restriction) -> list[Diagnostic]:
     frontend's ``python-not-followed``, a module or a read refused...), as ``analyze`` lists
     it: a node whose parameters a helper rewrote would otherwise seem to have none. A
     launch file included only in other configurations says nothing; a module's diagnostics
-    are kept wherever it was imported."""
+    are kept wherever it was imported; an include rosvar did not read, where it is made."""
     loaded = {model.file}
+    unread = set()
     for include in model.includes:
         if r.holds(include.condition):
+            if not include.resolved:
+                unread.add(include.location)
             try:
                 loaded.add(r.raw(include.file, include.location, "<include> file") or "")
             except ResolutionError:
@@ -92,6 +102,7 @@ def _unfollowed(model: LaunchModel, r: Restriction) -> list[Diagnostic]:
         and leaves_unknown(diagnostic)
         and diagnostic.code not in SETTLED
         and (diagnostic.location.file in loaded or diagnostic.location.file not in model.files)
+        and (diagnostic.code != INCLUDE_UNREAD or diagnostic.location in unread)
     ]
 
 
@@ -228,11 +239,13 @@ def _sources(
             path = r.evaluate(param.file, decl.location, "parameter file")
             if param.globally:  # launch_ros asserts that a global parameter file exists
                 path = os.path.abspath(path)
-                if not os.path.isfile(path):
+                if not os.path.isfile(r.confinement.source(path)):
                     raise ValueError(
                         f"parameter file {path} of <set_parameters_from_file> is missing"
                     )
-            elif kind != ProcessKind.COMPOSABLE_NODE and not os.path.isfile(path):
+            elif kind != ProcessKind.COMPOSABLE_NODE and not os.path.isfile(
+                r.confinement.source(path)
+            ):
                 # launch_ros leaves a node's missing file out, with a warning
                 message = f"Parameter file path is not a file: {path}"
                 warnings.append(

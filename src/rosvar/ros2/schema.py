@@ -26,6 +26,9 @@ PYTHON_ATTRIBUTES = ATTRIBUTES | {
     name: action.attributes for action in ACTIONS for name in action.names if action.python_only
 }
 """What the Python frontend's elements may be (``LifecycleNode`` has no XML or YAML tag)."""
+PYTHON_CHILD_ATTRIBUTES = ATTRIBUTES | {"param": ATTRIBUTES["param"] | {"content"}}
+"""What the Python frontend's inner elements may hold: a parameter file its Python writes
+is a ``<param>`` with its text (``content``, :mod:`rosvar.ros2.frontends.python.written`)."""
 ALWAYS = frozenset({"if", "unless"})
 CONTAINERS = frozenset(name for action in ACTIONS if action.holds_actions for name in action.names)
 
@@ -41,20 +44,25 @@ def check(it: Interpretation[Context], root: Entity) -> None:
     problems = _problems.get(root)
     if problems is None:
         python = format_of(root.location.file, RosVersion.ROS2) is LaunchFormat.PYTHON
-        problems = tuple(_check(root, PYTHON_ATTRIBUTES if python else ATTRIBUTES))
+        if python:
+            problems = tuple(_check(root, PYTHON_ATTRIBUTES, PYTHON_CHILD_ATTRIBUTES))
+        else:
+            problems = tuple(_check(root, ATTRIBUTES, ATTRIBUTES))
         _problems[root] = problems
     for code, message, location in problems:
         it.fail(it.space.true, code, message, location)
 
 
-def _check(root: Entity, attributes: dict[str, frozenset[str]]) -> Iterator[Problem]:
+def _check(
+    root: Entity, attributes: dict[str, frozenset[str]], inner: dict[str, frozenset[str]]
+) -> Iterator[Problem]:
     """The problems of every element below ``root``, in document order; a loop rather than
     a recursion: a hostile file nests thousands of groups, and the walk itself stops at its
     nesting limit (``nesting-too-deep``), not here."""
     pending: list[tuple[Entity, bool]] = [(child, True) for child in reversed(root.children)]
     while pending:
         entity, action = pending.pop()
-        allowed = (attributes if action else ATTRIBUTES).get(entity.tag)
+        allowed = (attributes if action else inner).get(entity.tag)
         if allowed is None:
             if action:
                 yield (

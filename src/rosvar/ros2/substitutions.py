@@ -9,10 +9,12 @@ API's registry (:mod:`rosvar.ros2.api.substitutions`) rosvar computes, and rosva
 
 from __future__ import annotations
 
+import builtins
 import functools
 import math
 import os
 import posixpath
+import re
 import shlex
 import weakref
 from collections.abc import Callable, Sequence
@@ -25,7 +27,13 @@ from rosvar.bounded_yaml import check_limits
 from rosvar.files import FileCode, FileRefused, read_file
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
-from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
+from rosvar.interpreter.safe_eval import (
+    EvalEnvironment,
+    EvalFailed,
+    EvalRefused,
+    evaluate,
+    referenced_names,
+)
 from rosvar.interpreter.substitution_args import (
     MAX_COMBINATIONS,
     MAX_TERM_DEPTH,
@@ -50,6 +58,7 @@ from rosvar.ros2.frontends.python.text import (
     PYTHON_STRING,
     PYTHON_YAML,
     UNKNOWN,
+    WRITTEN_FILE,
 )
 from rosvar.ros2.nodes import ROS2_NODES
 
@@ -207,7 +216,16 @@ def command_line(text: str) -> list[Template]:
 Handler = Callable[[Interpretation[Context], Context, list[Raw]], Choice[Value]]
 HANDLERS: dict[str, Handler] = {}
 OWN = frozenset(
-    {PATH_JOIN, PYTHON_STRING, PYTHON_YAML, UNKNOWN, CONFIGURATION_EQUALS, EMPTY, NODE_NAME}
+    {
+        PATH_JOIN,
+        PYTHON_STRING,
+        PYTHON_YAML,
+        UNKNOWN,
+        CONFIGURATION_EQUALS,
+        EMPTY,
+        NODE_NAME,
+        WRITTEN_FILE,
+    }
 )
 """rosvar's own substitutions, which the Python frontend writes (no launch API name)."""
 
@@ -699,12 +717,12 @@ def _plain(value: object) -> bool:
     return False
 
 
-def _text_term(compute: Callable[[str], str | Fail]) -> TermFunction:
-    """The term function of a substitution computed from its one text operand, once a
-    configuration gives that text: its failure is the term's error."""
+def _text_term(compute: Callable[..., str | Fail]) -> TermFunction:
+    """The term function of a substitution computed from its text operands, once a
+    configuration gives those texts: its failure is the term's error."""
 
-    def term(_host: object, text: object) -> str:
-        value = compute(str(text))
+    def term(_host: object, *texts: object) -> str:
+        value = compute(*map(str, texts))
         if isinstance(value, Fail):
             raise TermError(value.message)
         return value
@@ -750,27 +768,74 @@ def _not_followed(_host: object, what: str) -> str:
 register(UNKNOWN, _not_followed)
 
 
+DEFAULT_MODULES = "math"
+"""``PythonExpression``'s ``python_modules`` when not given."""
+
+
 @substitution("eval")
 def _eval(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
-    if len(args) != 1:
-        return _fail(host, "$(eval) takes one argument", "substitution-invalid")
-    if not isinstance(args[0], str):  # a term: evaluated once the command line gives it
-        return Choice.const(host.space, Apply("ros2-eval", (args[0],), f"$(eval {args[0]})"))
-    return Choice.const(host.space, _evaluation(args[0]))
+    """``PythonExpression``: an expression, and optionally the modules it may use (launch's
+    comma-separated names; ``math`` when not given)."""
+    if not 1 <= len(args) <= 2:
+        return _fail(host, "eval substitution expects 1 or 2 arguments", "substitution-invalid")
+    if not all(isinstance(arg, str) for arg in args):  # evaluated once a configuration is given
+        shown = " ".join(map(str, args))
+        return Choice.const(host.space, Apply("ros2-eval", tuple(args), f"$(eval {shown})"))
+    return Choice.const(host.space, _evaluation(*cast("list[str]", args)))
 
 
-def _evaluation(text: str) -> str | Fail:
+def _evaluation(text: str, modules: str = DEFAULT_MODULES) -> str | Fail:
+    if modules != DEFAULT_MODULES:
+        refused = _module_failure(text, modules)
+        if refused is not None:
+            return refused
     value = _evaluated.get(text)
     if value is None:
         try:
             value = evaluate(text, PYTHON_EXPRESSION)
-        except (EvalFailed, EvalRefused) as error:
+        except EvalRefused as refused:  # what the restricted evaluator does not run
+            value = Fail(f"$(eval {text}): {refused}", "eval-refused")
+        except EvalFailed as error:  # what Python raises too
             value = Fail(f"$(eval {text}): {error}", "eval-failed")
         _evaluated[text] = value
     return value
 
 
 register("ros2-eval", _text_term(_evaluation))
+
+
+def _module_failure(text: str, modules: str) -> Fail | None:
+    """Where ``PythonExpression`` with ``modules`` fails or rosvar cannot tell, before the
+    expression is evaluated as with ``math`` (which then gives its value): launch imports
+    each module, so a module rosvar does not model is refused (its import may fail, its
+    members are not known); without ``math`` its names are not defined."""
+    names = [name.strip() for name in modules.split(",")] if modules else []
+    for name in names:
+        if not name:
+            return Fail(f"$(eval {text}): ValueError: Empty module name", "eval-failed")
+        if name not in EVAL_NAMESPACES:
+            modelled = ", ".join(sorted(EVAL_NAMESPACES))
+            return Fail(
+                f"$(eval {text}): module '{name}' is not modelled by rosvar (only {modelled})",
+                "eval-refused",
+            )
+    if DEFAULT_MODULES in names:
+        return None
+    try:
+        read = referenced_names(text, EVAL_NAMESPACES) & MATH_NAMES
+    except EvalRefused:
+        return None  # the evaluation says why
+    for name in sorted(read):
+        if name in BUILTIN_NAMES:  # Python's own pow, not math's: rosvar has math's only
+            return Fail(
+                f"$(eval {text}): '{name}' without the math module is Python's builtin, "
+                "which rosvar does not model",
+                "eval-refused",
+            )
+    first = next((m.group() for m in IDENTIFIER.finditer(text) if m.group() in read), None)
+    if first is None:
+        return None
+    return Fail(f"$(eval {text}): NameError: name '{first}' is not defined", "eval-failed")
 
 
 EVALUATED_CAPACITY = 65_536
@@ -795,6 +860,10 @@ PYTHON_EXPRESSION = EvalEnvironment(
 ``math`` module and its names (its default ``python_modules``), under Python's builtins; no
 roslaunch names (``true``, ``arg``, ``env``: a ``NameError`` in ROS 2)."""
 EVAL_NAMESPACES = frozenset(PYTHON_EXPRESSION.namespaces)
+MATH_NAMES = frozenset({DEFAULT_MODULES, *PYTHON_EXPRESSION.namespaces[DEFAULT_MODULES]})
+"""The names ``math`` as a module given puts in the expression's locals."""
+BUILTIN_NAMES = frozenset(dir(builtins))
+IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 
 
 @substitution("anon")

@@ -11,7 +11,9 @@ the source's, built at some time, and a stale ``install/share`` copy replaced th
 
 A workspace is ROS 1 or ROS 2 (:mod:`rosvar.workspace.ros_version`): its packages' build
 tools decide, and with them which files are launch files (:mod:`rosvar.workspace.launch_files`).
-ROS 2's installed packages are found through ``AMENT_PREFIX_PATH`` (``<prefix>/share/<pkg>``).
+ROS 2's installed packages are found through ``AMENT_PREFIX_PATH`` (``<prefix>/share/<pkg>``);
+a ROS 2 source package's folder stands for its share folder, read through its install
+rules (:mod:`rosvar.workspace.share`).
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ from rosvar.ros.version import RosVersion
 from rosvar.workspace.launch_files import PACKAGE_FILE, LaunchFormat, format_of, launch_format
 from rosvar.workspace.paths import real_path
 from rosvar.workspace.ros_version import majority, package_version
+from rosvar.workspace.share import ShareMap, share_map
 
 EXECUTABLES_FILE = ".executables"
 IGNORE_MARKERS = ("CATKIN_IGNORE", "rospack_nosubdirs", "COLCON_IGNORE", "AMENT_IGNORE")
@@ -72,6 +75,7 @@ class Workspace:
         self._indexed = -1
         self._confinement: Confinement | None = None
         self._confinement_key: tuple[int, int, int, bool] = (0, 0, 0, False)
+        self._shares: dict[str, ShareMap] = {}  # by package folder, read on first use
 
     def confinement(self) -> Confinement:
         """The directories the analysis may read files in (``file-outside-workspace``): the
@@ -81,7 +85,8 @@ class Workspace:
         if self._confinement is None or self._confinement_key != key:
             given = [r if os.path.isdir(r) else os.path.dirname(r) for r in self.roots]
             directories = [*given, *self.dependency_roots, *(p.path for p in packages)]
-            self._confinement = Confinement.of(directories, self.allow_outside)
+            installed = self.installed if self.ros_version is RosVersion.ROS2 else None
+            self._confinement = Confinement.of(directories, self.allow_outside, installed)
             self._confinement_key = key
         return self._confinement
 
@@ -96,16 +101,53 @@ class Workspace:
         holds what ``colcon build`` installs there (launch files, parameter files)."""
         return self.find(name)
 
+    def installed(self, path: str) -> str:
+        """The file ``path`` names when a ROS 2 source package's folder stands for its share
+        folder: ``path`` itself if it exists (the common ``install(DIRECTORY launch ...)``
+        keeps the source's layout; the rules are read only for a path not found), else the
+        source its install rules copy to that place of the share, else ``path`` (as for an
+        installed package, or a ROS 1 one, whose ``$(find)`` is its source)."""
+        if self.ros_version is not RosVersion.ROS2 or os.path.exists(path):
+            return path
+        share = self.share_of(path)
+        if share is None:
+            return path
+        package, shared = share
+        relative = os.path.relpath(os.path.abspath(path), package.path)
+        found = shared.source(relative) if relative != "." else None
+        return path if found is None else found
+
+    def share_of(self, path: str) -> tuple[Package, ShareMap] | None:
+        """The ROS 2 source package whose folder holds ``path`` and its share map (read on
+        first use); None for a path outside one."""
+        if self.ros_version is not RosVersion.ROS2:
+            return None
+        package = self.package_of(path)
+        if package is None or _install_prefix(package) is not None:
+            return None
+        shared = self._shares.get(package.path)
+        if shared is None:
+            shared = self._shares[package.path] = share_map(package.path, package.name)
+        return package, shared
+
     def find_prefix(self, name: str) -> str | None:
         """ROS 2's install prefix of package ``name`` (``$(find-pkg-prefix)``); None for an
         unknown package or a source package, which has no install space yet."""
-        directory = self.find(name)
-        if directory is None:
-            return None
-        share = os.path.dirname(directory)
-        if os.path.basename(share) != SHARE_FOLDER or os.path.basename(directory) != name:
-            return None
-        return os.path.dirname(share)
+        package = self.packages.get(name)
+        return None if package is None else _install_prefix(package)
+
+    def of_dependency(self, path: str) -> bool:
+        """Whether ``path`` is a dependency's file (below ``--deps``, ROS_PACKAGE_PATH or an
+        AMENT_PREFIX_PATH share), not one of the user's paths: a dependency is read from its
+        sources, where an installed file may be a build's product (``gz_sim.launch.py`` of
+        a ``.in`` template), so what rosvar cannot read of it is rosvar's gap, not the
+        user's mistake."""
+        absolute = os.path.abspath(path)
+
+        def below(roots: Sequence[str]) -> bool:
+            return any(absolute == r or absolute.startswith(r + os.sep) for r in roots)
+
+        return below(self.dependency_roots) and not below(self.roots)
 
     def launch_format(self, path: str) -> LaunchFormat:
         """The frontend that reads launch file ``path`` in this workspace's ROS."""
@@ -145,6 +187,14 @@ class Workspace:
             self._index.update((package.path, package) for package in self.packages.values())
             self._indexed = size
         return self._index
+
+
+def _install_prefix(package: Package) -> str | None:
+    """The install prefix of an installed package (``<prefix>/share/<pkg>``), else None."""
+    share = os.path.dirname(package.path)
+    if os.path.basename(share) != SHARE_FOLDER or os.path.basename(package.path) != package.name:
+        return None
+    return os.path.dirname(share)
 
 
 def _innermost(index: dict[str, Package], path: str) -> Package | None:

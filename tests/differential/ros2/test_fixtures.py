@@ -1147,6 +1147,41 @@ def generate_launch_description():
         },
         [{}, {"a1": "y", "a13": "z"}, {"a0": "7"}],
     ),
+    "conditions-over-the-work-limits-once-bound": (  # 2^13 combinations in one $(eval)
+        {
+            "main.launch.xml": "<launch>"
+            + "".join(
+                f'<arg name="a{i}" default="a"><choice value="a"/><choice value="b"/></arg>'
+                for i in range(13)
+            )
+            + "<group if=\"$(eval &quot;'{}' == '{}'&quot;)\">".format(
+                "".join(f"$(var a{i})" for i in range(13)), "a" * 13
+            )
+            + '<node pkg="pkg" exec="x" name="all_a"/></group>'
+            + '<node pkg="pkg" exec="x" name="some_b" unless="$(eval &quot;\'{}\' == \'{}\''
+            '&quot;)"/>'.format("".join(f"$(var a{i})" for i in range(13)), "a" * 13)
+            + "</launch>",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction
+from launch.conditions import IfCondition, UnlessCondition
+from launch.substitutions import LaunchConfiguration as V, PythonExpression
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    names = [f'a{i}' for i in range(13)]
+    test = PythonExpression(["'"] + [V(n) for n in names] + ["' == '" + 'a' * 13 + "'"])
+    return LaunchDescription([
+        DeclareLaunchArgument(n, default_value='a', choices=['a', 'b']) for n in names
+    ] + [
+        GroupAction([Node(package='pkg', executable='x', name='all_a')],
+                    condition=IfCondition(test)),
+        Node(package='pkg', executable='x', name='some_b', condition=UnlessCondition(test)),
+    ])
+""",
+        },
+        [{}, {"a3": "b"}, {"a0": "b", "a12": "b"}],
+    ),
 }
 
 

@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import argparse
+import json
 import threading
 import time
 from collections.abc import Iterator
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import pytest
@@ -344,3 +347,41 @@ def test_no_checks_are_asked_while_a_step_is_answered(
         answered = events.index(f"answered {live.url}api/choose")
         assert not [e for e in events[asked:answered] if e.endswith("/api/checks")]
         assert f"asked {live.url}api/checks" in events[answered:]
+
+
+def test_the_page_s_checks_and_queries_are_those_of_the_commands(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A spawner's controllers are uses of the simulation, which ``rosvar check`` and
+    ``rosvar query`` read: the page's checks and queries read the same inputs, so its
+    findings are those of ``rosvar check --json`` and its topics those of ``rosvar query``
+    (here the controllers' ``cmd_vel`` input nobody provides, and their ``joint_states``)."""
+    from ros2.test_controllers import CONTROL, _workspace
+    from rosvar.analyses.feature_model.extraction import extract
+    from rosvar.configuration.engine import Configurator
+    from rosvar.interpreter.workspace_models import Analysis
+    from rosvar.outputs.cli import main
+    from rosvar.outputs.commands.loading import interfaces_of
+    from rosvar.outputs.web.entries import render
+    from rosvar.workspace import discover
+
+    _workspace(tmp_path, CONTROL)
+    main(["check", str(tmp_path), "--format", "json", "--all"])
+    command = json.loads(capsys.readouterr().out)["findings"]
+    main(["query", str(tmp_path), "topics", "--json"])
+    topics = {r["name"] for r in json.loads(capsys.readouterr().out)["results"]}
+    analysis = Analysis(discover([str(tmp_path)], ament_prefix_path=""))
+    options = argparse.Namespace(catalogue=True, hints=None)
+    interfaces = interfaces_of(analysis.workspace, options)
+    engine = Configurator(
+        analysis, extract(analysis, products=True), interfaces=interfaces, render=render
+    )
+    with running(engine) as live:
+        session = live.open()["session"]
+        page = checks(live, session)["findings"]
+        shown = {r["name"] for r in ask(live, session, "topics")}
+    assert {(f["check"], f["severity"], f["name"], f["message"]) for f in page} == {
+        (f["check"], f["severity"], f["name"], f["message"]) for f in command
+    }
+    assert any("controller base_controller" in f["message"] for f in command)
+    assert shown == topics and "/robot/platform/joint_states" in topics

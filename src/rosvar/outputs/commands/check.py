@@ -38,23 +38,16 @@ class Checked:
 
 
 def checked(options: argparse.Namespace, paths: Sequence[str] | None = None) -> Checked | None:
-    from rosvar.analyses.checks import check_models
     from rosvar.analyses.communication import uninterfaced
     from rosvar.analyses.fingerprints import Fingerprints
-    from rosvar.analyses.robot_description.edges import Simulation
+    from rosvar.analyses.graph_inputs import graph_inputs
 
     analysis = analysis_of(options, paths=paths)
     if analysis is None:
         return None
     interfaces = interfaces_of(analysis.workspace, options)
     models = analysis.all_models(progress)
-    findings = check_models(
-        analysis.space,
-        models,
-        interfaces,
-        analysis.workspace.confinement(),
-        Simulation(analysis, interfaces),
-    )
+    findings = graph_inputs(analysis, interfaces).findings(models)
     workspace = analysis.workspace
     prints = Fingerprints(
         workspace.packages.values(), [*workspace.roots, *workspace.dependency_roots]

@@ -20,10 +20,9 @@ MAPPING = r"[A-Za-z_~/][\w/~]*:="
 
 def cmd_query(options: argparse.Namespace) -> int:
     from rosvar.analyses.communication import uninterfaced
-    from rosvar.analyses.query.channels import channel_collections
+    from rosvar.analyses.graph_inputs import graph_inputs
     from rosvar.analyses.query.evaluator import QueryEngine
     from rosvar.analyses.query.parser import QueryError, parse
-    from rosvar.analyses.robot_description.edges import Simulation
     from rosvar.outputs.documents.query import USERS, result_document
 
     words = [*options.words, *options.mappings]
@@ -37,8 +36,7 @@ def cmd_query(options: argparse.Namespace) -> int:
         return EXIT_INPUT
     analysis.all_models(progress)  # interpreted once, with the progress shown
     interfaces = interfaces_of(analysis.workspace, options)
-    simulation = Simulation(analysis, interfaces)
-    engine = QueryEngine(analysis, collections=channel_collections(interfaces, simulation))
+    engine = QueryEngine(analysis, collections=graph_inputs(analysis, interfaces).collections())
     warn_unknown_args(analysis, [m.file for m in engine.models], args)
     try:
         results = engine.run(expression, args)

@@ -24,9 +24,10 @@ import time
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 
-from rosvar.analyses.checks import Finding, check_model
+from rosvar.analyses.checks import Finding
 from rosvar.analyses.feature_model.operations import simplest_trigger
-from rosvar.analyses.query.channels import KINDS, channel_collections
+from rosvar.analyses.graph_inputs import GraphInputs, graph_inputs
+from rosvar.analyses.query.channels import KINDS
 from rosvar.analyses.query.collections import Kind
 from rosvar.analyses.query.evaluator import QueryEngine
 from rosvar.configuration.derivation import Decisions
@@ -84,7 +85,8 @@ class Inspector:
         self._entries = {entry.path: entry for entry in configurator.catalog.files}
         self._paths = {analysis.label(path): path for path in self._entries}
         self._engine: QueryEngine | None = None
-        self._findings = _Findings(configurator, list(self._entries), lock, asked)
+        self._inputs: GraphInputs | None = None
+        self._findings = _Findings(configurator, list(self._entries), lock, asked, self.inputs)
         self._lowered: dict[tuple[str, BDD], tuple[BDD, Bounds] | None] = {}
 
     def query(self, text: str, state: ConfigurationState, grouping: Grouping | None) -> Reply:
@@ -94,7 +96,7 @@ class Inspector:
         refuses."""
         if self._engine is None:
             interfaces = self._configurator.graph.interfaces
-            collections = None if interfaces is None else channel_collections(interfaces)
+            collections = None if interfaces is None else self.inputs().collections()
             self._engine = QueryEngine(
                 self._configurator.analysis, list(self._entries), collections
             )
@@ -126,6 +128,15 @@ class Inspector:
                 }
             )
         return {"query": text, "results": results[:LISTED], "total": len(results)}
+
+    def inputs(self) -> GraphInputs:
+        """What the checks and queries read beside the models, as ``rosvar check`` and
+        ``rosvar query`` have it (the simulation with them), built on the first question
+        (under the engine's lock, as both ask)."""
+        if self._inputs is None:
+            interfaces = self._configurator.graph.interfaces or Interfaces()
+            self._inputs = graph_inputs(self._configurator.analysis, interfaces)
+        return self._inputs
 
     def checks(self, state: ConfigurationState, grouping: Grouping | None) -> Reply:
         """The findings of ``rosvar check`` not absent from the configurations ``state``
@@ -210,7 +221,8 @@ class Inspector:
 class _Findings:
     """Every entry file's findings (each file on its own: a tab may launch a file without the
     one that includes it), listed once by a thread of their own, a file at a time under the
-    engine's lock."""
+    engine's lock: every file's edges gathered, then each file checked against them all, as
+    ``rosvar check`` does (:class:`~rosvar.analyses.checks.Checks`)."""
 
     def __init__(
         self,
@@ -218,8 +230,10 @@ class _Findings:
         paths: list[str],
         lock: threading.Lock,
         asked: Callable[[], bool],
+        inputs: Callable[[], GraphInputs],
     ) -> None:
         self._configurator = configurator
+        self._inputs = inputs
         self._paths = paths
         self._lock = lock
         self._asked = asked
@@ -235,24 +249,27 @@ class _Findings:
             self._thread.start()
         if self._failure is not None:
             raise self._failure
-        return self._found if self._done == len(self._paths) else None
+        return self._found if self._done == 2 * len(self._paths) else None
 
     def progress(self) -> tuple[int, int]:
-        """Entry files listed, of all."""
-        return self._done, len(self._paths)
+        """Entry files listed, of all (each is gathered, then checked: half a file a step)."""
+        return self._done // 2, len(self._paths)
 
     def _list(self) -> None:
         analysis = self._configurator.analysis
-        interfaces = self._configurator.graph.interfaces or Interfaces()
-        confinement = analysis.workspace.confinement()
         try:
-            for path in self._paths:
-                with self._lock, collector_paused():  # as the API's calls (api.py)
-                    self._found.extend(
-                        check_model(analysis.space, analysis.model(path), interfaces, confinement)
-                    )
-                self._done += 1
-                self._pause()
+            with self._lock:
+                checks = self._inputs().checks()
+            for gathering in (True, False):
+                for path in self._paths:
+                    with self._lock, collector_paused():  # as the API's calls (api.py)
+                        model = analysis.model(path)
+                        if gathering:
+                            checks.gather(model)
+                        else:
+                            self._found.extend(checks.check(model))
+                    self._done += 1
+                    self._pause()
         except Exception as error:  # told to the next question, as its own failure would be
             self._failure = error
 

@@ -184,15 +184,45 @@ def _substituted_file(
     """``allow_substs``: the file's text with its substitutions performed in the context as
     it is here, as launch_ros' ``ParameterFile`` does before the node reads it."""
     try:
-        text = read_file(path).decode()
+        text = read_file(path, it.workspace.confinement()).decode()
     except (FileRefused, OSError, UnicodeDecodeError) as error:
+        it.unread_installs(path)
         it.fail(it.space.true, "param-invalid", f"parameter file {path} is not readable: {error}")
         return
+    _substituted_text(it, text, path, context, out)
+
+
+def _substituted_text(
+    it: Interpretation[Context], text: str, path: str, context: Context, out: list[NodeParameter]
+) -> None:
     substituted = Ros2Substituter(it).resolve(text, context)
     assert substituted is not None
     value: Choice[Raw] = it.strip(substituted, f"parameter file {path}")
     for condition, leaf in split(it, value):
         out.append(NodeParameter(it.pc & condition, None, None, path, content=leaf))
+
+
+def _written_file(
+    it: Interpretation[Context],
+    entity: Entity,
+    allow: Choice[bool | Raw],
+    context: Context,
+    out: list[NodeParameter],
+) -> None:
+    """A parameter file the Python frontend's helper writes (``content``: its text in each
+    configuration, :mod:`rosvar.ros2.frontends.python.written`; ``from``: what wrote it);
+    ``allow_substs``: its substitutions performed, as of a file read."""
+    label = entity.get("from") or "a file written at launch time"
+    text = it.attr(entity, "content", context)
+    assert text is not None
+    for condition, leaf in split(it, text):
+        substs = allow.where(lambda value: value is True) & condition
+        if isinstance(leaf, str) and substs != it.space.false:
+            with it.under(substs):
+                _substituted_text(it, leaf, label, context, out)
+        plain = condition & ~substs if isinstance(leaf, str) else condition
+        if plain != it.space.false:
+            out.append(NodeParameter(it.pc & plain, None, None, label, content=leaf))
 
 
 def _param(
@@ -203,8 +233,12 @@ def _param(
     out: list[NodeParameter],
 ) -> None:
     source = it.attr(entity, "from", context)
+    label = "<param> attribute 'allow_substs'"
+    if "content" in entity.attributes:
+        allow = bool_value(it, it.attr(entity, "allow_substs", context), False, label)
+        _written_file(it, entity, allow, context, out)
+        return
     if source is not None:
-        label = "<param> attribute 'allow_substs'"
         allow = bool_value(it, it.attr(entity, "allow_substs", context), False, label)
         for condition, file in split(it, source):
             substs = allow.where(lambda leaf: leaf is True) & condition

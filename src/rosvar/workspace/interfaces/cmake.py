@@ -7,10 +7,13 @@ ament_cmake_auto's, catkin_simple's, rosbuild's, FindCUDA's), ``target_link_libr
 library of the same package brings its sources along), ``include_directories``, a target's
 ``OUTPUT_NAME`` (the name ``rosrun`` and launch files use), the ``PROGRAMS`` of
 ``catkin_install_python``/``install``, the scripts ``catkin_python_setup`` installs from
-``setup.py``, and the executable ``rclcpp_components_register_node(... EXECUTABLE name)``
-makes of a component. A function or macro another package of the workspace defines in its
-CMake extras (``cmake/*.cmake``) is known once ``find_package`` names that package, as
-CMake's package configuration would load it.
+``setup.py``, the executable ``rclcpp_components_register_node(... EXECUTABLE name)``
+makes of a component, and what ``install(DIRECTORY|FILES ...)`` and ament_cmake_auto's
+``ament_auto_package(INSTALL_TO_SHARE ...)`` copy into the package's share folder
+(:mod:`rosvar.workspace.share` maps ``$(find-pkg-share)`` paths back to those sources).
+A function or macro another package of the workspace defines in its CMake extras
+(``cmake/*.cmake``) is known once ``find_package`` names that package, as CMake's package
+configuration would load it.
 """
 
 from __future__ import annotations
@@ -20,12 +23,12 @@ import os
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
-from rosvar.diagnostics import DiagnosticSink
+from rosvar.diagnostics import Diagnostic, DiagnosticSink, Severity
 from rosvar.workspace.interfaces.cmake_script import CMAKE_FILE, Command, Script
 from rosvar.workspace.interfaces.reading import SourceReader
 from rosvar.workspace.python_setup import setup_scripts
 
-__all__ = ["CMAKE_FILE", "Build", "Target", "TargetKind", "read_build"]
+__all__ = ["CMAKE_FILE", "Build", "Shared", "Target", "TargetKind", "read_build"]
 
 _TARGET_OPTIONS = frozenset(
     {"WIN32", "MACOSX_BUNDLE", "EXCLUDE_FROM_ALL", "STATIC", "SHARED", "MODULE", "OBJECT"}
@@ -37,10 +40,36 @@ _LINK_KEYWORDS = frozenset({"PUBLIC", "PRIVATE", "INTERFACE", "debug", "optimize
 _INSTALL_KEYWORDS = frozenset(
     {"DESTINATION", "PERMISSIONS", "CONFIGURATIONS", "COMPONENT", "RENAME", "OPTIONAL"}
 )
+_INSTALL_KINDS = frozenset({"DIRECTORY", "FILES", "PROGRAMS"})
+"""The ``install`` signatures that copy files named by path (not targets)."""
+_DIRECTORY_OPTIONS = frozenset(
+    {
+        "FILE_PERMISSIONS",
+        "DIRECTORY_PERMISSIONS",
+        "USE_SOURCE_PERMISSIONS",
+        "FILES_MATCHING",
+        "PATTERN",
+        "REGEX",
+        "MESSAGE_NEVER",
+        "EXCLUDE_FROM_ALL",
+        "TYPE",
+        *_INSTALL_KEYWORDS,
+    }
+)
+"""Where the paths of ``install(DIRECTORY|FILES ...)`` end."""
+SHARE_FOLDER = "share"
+INSTALL_UNREAD = "install-unread"
 _SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".c", ".h", ".hpp", ".hh", ".hxx")
 """What CMake appends to a source named without its suffix (``add_executable(x src/x)``);
 also what ament_cmake_auto's ``DIRECTORY`` collects."""
 _EXTRAS_FOLDER = "cmake"
+_INSTALL_DIRS = {
+    "CMAKE_INSTALL_DATADIR": SHARE_FOLDER,
+    "CMAKE_INSTALL_BINDIR": "bin",
+    "CMAKE_INSTALL_LIBDIR": "lib",
+    "CMAKE_INSTALL_INCLUDEDIR": "include",
+}
+"""GNUInstallDirs' folders relative to the install prefix, as ament's builds have them."""
 COMPONENT_COMMAND = "rclcpp_components_register_node"
 
 
@@ -91,6 +120,20 @@ class Target:
         return self.output_name or self.name
 
 
+@dataclass(frozen=True)
+class Shared:
+    """A file or folder an install rule copies into the package's share folder: its source
+    (absolute; a folder named with a trailing ``/`` gives its contents), where it lands
+    relative to ``share/<package>`` ("" is the folder itself), and for a folder the
+    ``PATTERN`` globs its files must match (none: all) and those it leaves out."""
+
+    source: str
+    destination: str
+    contents: bool = False
+    patterns: tuple[str, ...] = ()
+    excluded: tuple[str, ...] = ()
+
+
 @dataclass
 class Build:
     """What a package's CMake files declare."""
@@ -101,6 +144,9 @@ class Build:
     # Targets named with a variable this reader does not know (set by a parent project, a
     # toolchain): their names here are guesses, not executables to offer.
     vague_names: set[str] = field(default_factory=set)
+    shared: list[Shared] = field(default_factory=list)
+    # Install rules that may copy into the share folder but name a variable not known here.
+    unread_installs: list[Diagnostic] = field(default_factory=list)
 
     def sources(self, name: str) -> list[str]:
         """The sources of target ``name`` and of the package's libraries it links."""
@@ -158,6 +204,48 @@ class _Reader:
         if self.script is not None and not self.script.known(command.arguments[0]):
             self.build.vague_names.add(words[0])
 
+    def share(self, command: Command, words: list[str], directory: str) -> None:
+        """What ``install(DIRECTORY|FILES|PROGRAMS paths... DESTINATION share/<package>[/sub]
+        ...)`` copies into the share folder; a rule whose paths or destination name a
+        variable not known here is told (it may be one)."""
+        at = words.index("DESTINATION") if "DESTINATION" in words else len(words)
+        destination = os.path.normpath(words[at + 1]).lstrip("/") if at + 1 < len(words) else ""
+        share = f"{SHARE_FOLDER}/{self.package}"
+        sub = _below(destination, share)
+        unknown = self.script is not None and not all(map(self.script.known, command.arguments))
+        if unknown and (sub is not None or destination in ("", ".")):
+            self.build.unread_installs.append(
+                Diagnostic(
+                    INSTALL_UNREAD,
+                    Severity.WARNING,
+                    f"{command.name}({' '.join(command.arguments)[:120]}) names a variable "
+                    "rosvar does not know: the files it puts in the share folder are looked "
+                    "for at the same path in the source package",
+                    command.location(),
+                )
+            )
+            return
+        if sub is None:
+            return
+        paths: list[str] = []
+        for word in words[1:]:
+            if word in _DIRECTORY_OPTIONS:
+                break
+            paths.append(word)
+        if words[0] == "DIRECTORY":
+            patterns, excluded = _patterns(words)
+            for path in paths:
+                source = os.path.normpath(os.path.join(directory, path))
+                contents = path.endswith("/")
+                landing = sub if contents else os.path.join(sub, os.path.basename(source))
+                self.build.shared.append(Shared(source, landing, contents, patterns, excluded))
+            return
+        rename = words.index("RENAME") + 1 if "RENAME" in words else len(words)
+        for path in paths:
+            source = os.path.normpath(os.path.join(directory, path))
+            name = words[rename] if rename < len(words) else os.path.basename(source)
+            self.build.shared.append(Shared(source, os.path.join(sub, name)))
+
     def find_package(self, _: Command, words: list[str], __: str) -> None:
         """``find_package(pkg)`` (or a catkin ``COMPONENTS`` list) loads the CMake extras of
         a workspace package: only their functions and macros are taken."""
@@ -201,6 +289,44 @@ def _include_directories(reader: _Reader, _: Command, words: list[str], director
             reader.build.include_dirs.append(os.path.normpath(os.path.join(directory, word)))
 
 
+def _install(reader: _Reader, command: Command, words: list[str], directory: str) -> None:
+    """``install``: the programs it installs, and what it copies into the share folder."""
+    _programs(reader, command, words, directory)
+    if words[:1] and words[0] in _INSTALL_KINDS:
+        reader.share(command, words, directory)
+
+
+def _auto_package(reader: _Reader, _: Command, words: list[str], directory: str) -> None:
+    """``ament_auto_package(INSTALL_TO_SHARE folder...)`` installs each folder into the
+    share folder (as ``install(DIRECTORY folder DESTINATION share/${PROJECT_NAME})``)."""
+    if "INSTALL_TO_SHARE" not in words:
+        return
+    for word in words[words.index("INSTALL_TO_SHARE") + 1 :]:
+        if word.isupper():  # the next keyword (INSTALL_TO_PATH, USE_SCOPED_HEADER_...)
+            break
+        source = os.path.normpath(os.path.join(directory, word))
+        reader.build.shared.append(Shared(source, os.path.basename(source)))
+
+
+def _below(path: str, folder: str) -> str | None:
+    """``path`` relative to ``folder`` ("" for the folder itself), None if not below it."""
+    if path == folder:
+        return ""
+    return path[len(folder) + 1 :] if path.startswith(folder + "/") else None
+
+
+def _patterns(words: list[str]) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """A folder rule's ``PATTERN glob`` options: those its files must match (with
+    ``FILES_MATCHING``), and those ``EXCLUDE`` leaves out."""
+    matching: list[str] = []
+    excluded: list[str] = []
+    for index, word in enumerate(words[:-1]):
+        if word == "PATTERN":
+            glob = words[index + 1]
+            (excluded if "EXCLUDE" in words[index + 2 : index + 3] else matching).append(glob)
+    return (tuple(matching) if "FILES_MATCHING" in words else ()), tuple(excluded)
+
+
 def _programs(reader: _Reader, _: Command, words: list[str], directory: str) -> None:
     if words[:1] != ["PROGRAMS"]:
         return
@@ -224,7 +350,8 @@ _HANDLERS: dict[str, Callable[[_Reader, Command, list[str], str], None]] = {
     "target_link_libraries": _link,
     "set_target_properties": _properties,
     "include_directories": _include_directories,
-    "install": _programs,
+    "install": _install,
+    "ament_auto_package": _auto_package,
     "catkin_install_python": _programs,
     "catkin_python_setup": _python_setup,
     "find_package": _Reader.find_package,
@@ -280,6 +407,7 @@ def read_build(
             "CMAKE_SOURCE_DIR": root,
             "CMAKE_CURRENT_SOURCE_DIR": root,
             "CMAKE_CURRENT_LIST_DIR": root,
+            **_INSTALL_DIRS,
         }
     )
     script.run_file(os.path.join(root, CMAKE_FILE), root)

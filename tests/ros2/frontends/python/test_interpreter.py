@@ -283,3 +283,72 @@ def test_getenv_is_a_launch_time_string_empty_without_a_default() -> None:
     assert render(c.text) == "$(env ROS_DISTRO '')"
     assert isinstance(d, Dynamic) and d.kind is bool
     assert diagnostics == []
+
+
+def test_a_property_is_read_as_an_attribute_of_the_object() -> None:
+    names, diagnostics = run(
+        "class Base:\n"
+        "    def __init__(self, source):\n"
+        "        self.__source = source\n"
+        "    @property\n"
+        "    def name(self):\n"
+        "        return self.__source + '.yaml'\n"
+        "class Derived(Base):\n"
+        "    @property\n"
+        "    def name(self):\n"
+        "        return 'x/' + super().name\n"
+        "v = Derived('params').name\n"
+        "w = Base('p').name.upper()\n"
+    )
+    assert (names["v"], names["w"]) == ("x/params.yaml", "P.YAML")
+    assert diagnostics == []
+
+
+LEAVES = """
+class Ref:
+    def __init__(self, d, k):
+        self.d, self.k = d, k
+    def set(self, v):
+        self.d[self.k] = v
+def leaves(data):
+    try:
+        for key in data.keys():
+            for inner in leaves(data[key]):
+                yield inner
+            yield Ref(data, key)
+    except AttributeError:
+        return
+def number(text):
+    try:
+        return float(text) if '.' in text else int(text)
+    except ValueError:
+        return text
+def gen():
+    yield from range(3)
+    yield 7
+data = {'a': {'rate': '2.5', 'name': 'x'}, 'b': {'count': '3'}}
+for ref in leaves(data):
+    if not isinstance(ref.d[ref.k], dict):
+        ref.set(number(ref.d[ref.k]))
+v = (data, list(gen()), [r.k for r in leaves(data)])
+"""
+
+
+def test_generators_and_the_exceptions_of_builtins_are_followed_as_python_runs_them() -> None:
+    """A helper walking a dict by a generator, which ends at a leaf's ``AttributeError``,
+    converting texts to numbers where ``ValueError`` says they are none."""
+    names, diagnostics = run(LEAVES)
+    scope: dict[str, object] = {}
+    exec(LEAVES, scope)  # the oracle: Python itself, on a file that launches nothing
+    assert names["v"] == scope["v"]
+    assert diagnostics == []
+
+
+def test_a_launch_object_is_never_none() -> None:
+    names, diagnostics = run(
+        "from launch.substitutions import LaunchConfiguration\n"
+        "ns = LaunchConfiguration('namespace')\n"
+        "v = (ns is not None, ns is None, None is not ns, 1 is None)\n"
+    )
+    assert names["v"] == (True, False, True, False)
+    assert diagnostics == []

@@ -18,9 +18,9 @@ from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.actions import ACTIONS, Action, Param, Slot
 from rosvar.ros2.api.event_handlers import EVENT_HANDLERS, EventHandler
-from rosvar.ros2.frontends.python import launch_time
+from rosvar.ros2.frontends.python import launch_time, written
 from rosvar.ros2.frontends.python.calls import CALLS, Call
-from rosvar.ros2.frontends.python.text import Text, render, unknown
+from rosvar.ros2.frontends.python.text import Text, Written, render, unknown
 from rosvar.ros2.frontends.python.values import (
     Condition,
     Conditional,
@@ -32,6 +32,7 @@ from rosvar.ros2.frontends.python.values import (
     ParameterValue,
     Unknown,
     Value,
+    WrittenFile,
 )
 from rosvar.ros2.frontends.typed_text import Scalar, reads_as_other_value, typed_text
 
@@ -86,6 +87,10 @@ def _write_parameters(call: Call, entity: Entity, param: Param, value: Value) ->
             call.not_followed("parameters of a YAML file named at launch time (not its '/**')")
         elif isinstance(item, dict):
             _named_parameters(call, entity, param.xml, item)
+        elif isinstance(item, WrittenFile) or (
+            isinstance(item, ParameterFile) and isinstance(item.path, WrittenFile)
+        ):
+            _written_parameters(call, _child(call, entity, param.xml), item)
         elif isinstance(item, ParameterFile):
             child = _child(call, entity, param.xml)
             set_attribute(call, child, "from", item.path)
@@ -93,6 +98,17 @@ def _write_parameters(call: Call, entity: Entity, param: Param, value: Value) ->
                 set_attribute(call, child, "allow_substs", item.allow_substs)
         else:
             set_attribute(call, _child(call, entity, param.xml), "from", item)
+
+
+def _written_parameters(call: Call, child: Entity, item: WrittenFile | ParameterFile) -> None:
+    """A parameter file the launch file's Python writes: ``content``, its text (a tag of
+    this frontend only), ``from``, what wrote it (:mod:`.written`)."""
+    file = item if isinstance(item, WrittenFile) else item.path
+    assert isinstance(file, WrittenFile)
+    child.attributes["from"] = render(Text.of(file.label))
+    child.attributes["content"] = render(written.text_of(file, Written.TEXT))
+    if isinstance(item, ParameterFile) and item.allow_substs is not None:
+        set_attribute(call, child, "allow_substs", item.allow_substs)
 
 
 def _conditional_parameters(call: Call, entity: Entity, param: Param, item: Conditional) -> None:

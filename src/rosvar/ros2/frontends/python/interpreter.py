@@ -29,7 +29,14 @@ from rosvar.diagnostics import DiagnosticSink, Location
 from rosvar.files import read_file
 from rosvar.frontends.entity import Entity
 from rosvar.ros2.api.registry import python_name
-from rosvar.ros2.frontends.python import launch_time, paths, patterns, reads, xacro_calls
+from rosvar.ros2.frontends.python import (
+    launch_time,
+    paths,
+    patterns,
+    reads,
+    written,
+    xacro_calls,
+)
 from rosvar.ros2.frontends.python.actions import add_actions
 from rosvar.ros2.frontends.python.branches import Forwarding, Journal, Mutable, put
 from rosvar.ros2.frontends.python.calls import (
@@ -69,6 +76,7 @@ from rosvar.ros2.frontends.python.values import (
     Super,
     Unknown,
     Value,
+    WrittenFile,
     XacroDocument,
 )
 
@@ -111,7 +119,7 @@ class _Continue(Exception):
     pass
 
 
-class _Raise(Exception):
+class PythonRaise(Exception):
     """An exception the file raises: ``value`` (an object of its class, or a builtin
     exception's name as a :class:`Module`), raised at ``location``."""
 
@@ -119,6 +127,14 @@ class _Raise(Exception):
         super().__init__()
         self.value = value
         self.location = location
+
+    def what(self) -> str:
+        """The exception's class name, where known."""
+        if isinstance(self.value, Instance):
+            return self.value.cls.name
+        if isinstance(self.value, Module):
+            return self.value.qualified
+        return "an exception"
 
 
 class OutOfBudget(Exception):
@@ -299,6 +315,12 @@ class Interpreter:
         self.created: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
         """Actions made under guards, with the guards (so a branch does not guard twice)."""
         self.descriptions: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
+        self.rereading: Callable[[str], str] | None = None
+        """Set where a ``perform`` is read again in one configuration (:mod:`.performs`):
+        a file it writes is that file, not its deferred text; it gives the text of a path
+        naming a file written so (``WRITTEN_PATH``)."""
+        self.yielded: list[list[Value]] = []
+        """What each generator being called has yielded, innermost last."""
         self.default_files = DefaultFiles()
         """Launch arguments' defaults, for the files a function opens by them."""
         """Composable node descriptions made conditional, by id: the description as written
@@ -346,6 +368,8 @@ class Interpreter:
             ast.SetComp: self._comprehension,
             ast.DictComp: self._comprehension,
             ast.NamedExpr: self._named_expr,
+            ast.Yield: self._yield,
+            ast.YieldFrom: self._yield,
         }
 
     # ------------------------------------------------------------------ helpers
@@ -922,7 +946,8 @@ class Interpreter:
         raise _Continue
 
     def _function_def(self, node: ast.FunctionDef, scope: Scope) -> None:
-        if node.decorator_list:
+        getter = [self.expr(d, scope) for d in node.decorator_list] == [Module("property")]
+        if node.decorator_list and not getter:
             scope.names[node.name] = self.not_followed(f"decorated function {node.name}()", node)
             return
         arguments = node.args
@@ -937,7 +962,10 @@ class Interpreter:
         for argument, kw_default in zip(arguments.kwonlyargs, arguments.kw_defaults, strict=True):
             if kw_default is not None:
                 defaults[argument.arg] = self.expr(kw_default, scope)
-        scope.names[node.name] = Function(node, scope, defaults, self.file)
+        function = Function(
+            node, scope, defaults, self.file, getter=getter, generator=_yields(node)
+        )
+        scope.names[node.name] = function
 
     def _class_def(self, node: ast.ClassDef, scope: Scope) -> None:
         decorators = [self.expr(_called(d), scope) for d in node.decorator_list]
@@ -1083,14 +1111,14 @@ class Interpreter:
             called = node.exc.func if isinstance(node.exc, ast.Call) else node.exc
             kind = self.expr(called, scope)
             exception = kind if _builtin_exception(kind) else self.expr(node.exc, scope)
-        raise _Raise(exception, self.location(node))
+        raise PythonRaise(exception, self.location(node))
 
     def _try(self, node: ast.Try, scope: Scope) -> None:
         """The body; where it raises, the first handler catching the exception, as Python."""
         try:
             try:
                 self.block(node.body, scope)
-            except _Raise as raised:
+            except PythonRaise as raised:
                 handler = self._handler(node.handlers, raised.value, scope)
                 if handler is None:
                     raise
@@ -1124,7 +1152,7 @@ class Interpreter:
         for item in node.items:
             value = self.expr(item.context_expr, scope)
             if item.optional_vars is not None:
-                if not isinstance(value, Unknown | FileHandle):
+                if not isinstance(value, Unknown | FileHandle | WrittenFile):
                     value = self.not_followed("a 'with' context manager", item.context_expr)
                 self.assign(item.optional_vars, value, scope)
         self.block(node.body, scope)
@@ -1357,6 +1385,11 @@ class Interpreter:
         left = operands[0]
         for op, right in zip(node.ops, operands[1:], strict=True):
             self.charge((left, right))  # a comparison walks both
+            if _none_identity(op, left, right):  # `x is not None` of a launch object
+                if isinstance(op, ast.Is):
+                    return False
+                left = right
+                continue
             if not (_constant(left) or isinstance(left, dict)) or not (
                 _constant(right) or isinstance(right, dict)
             ):
@@ -1481,6 +1514,8 @@ class Interpreter:
             return owner
         if isinstance(owner, FilePath) and node.attr not in paths.METHODS:
             return paths.attribute(self, owner, node.attr, node)
+        if isinstance(owner, WrittenFile) and node.attr == "name":
+            return owner  # the file's name stands for the file written
         if isinstance(owner, ModuleScope):
             if node.attr in owner.scope.names:
                 return owner.scope.names[node.attr]
@@ -1495,6 +1530,9 @@ class Interpreter:
                 found, value = _class_lookup(
                     owner.cls if isinstance(owner, Instance) else owner, node.attr
                 )
+            if isinstance(value, Function) and value.getter and not isinstance(owner, Class):
+                instance = owner.instance if isinstance(owner, Super) else owner
+                return self.call_function(value, [instance], {}, node)  # a @property
             if found and not isinstance(value, Function):
                 return value
         return Method(owner, node.attr)
@@ -1575,6 +1613,9 @@ class Interpreter:
             return list(value)
         if isinstance(value, dict):
             return list(value)
+        if isinstance(value, FileHandle):  # its lines, as Python iterates a text file
+            text = reads.text(self, value, node)
+            return list(text.splitlines(keepends=True)) if isinstance(text, str) else None
         if isinstance(value, Dynamic):
             self.not_followed("iteration over a launch-time value (its length is not known)", node)
         elif not isinstance(value, Unknown):
@@ -1669,13 +1710,29 @@ class Interpreter:
             )
         self.depth += 1
         outer, self.file = self.file, function.file
+        if function.generator:
+            self.yielded.append([])
         try:
             self.block(function.node.body, scope, tail=True)
         except _Return as returned:
-            return returned.value
+            if not function.generator:
+                return returned.value
         finally:
             self.depth -= 1
             self.file = outer
+        return self.yielded.pop() if function.generator else None
+
+    def _yield(self, node: ast.Yield | ast.YieldFrom, scope: Scope) -> Value:
+        """What a generator yields, kept for its call (the value sent back is ``None``)."""
+        value = None if node.value is None else self.expr(node.value, scope)
+        if not self.yielded:
+            return self.not_followed("'yield' outside a function", node)
+        items = self.iterate(value, node) if isinstance(node, ast.YieldFrom) else [value]
+        if items is None:
+            return self.not_followed("'yield from' of unknown items", node)
+        if len(self.yielded[-1]) + len(items) > MAX_LENGTH:
+            return self.not_followed(f"a generator of more than {MAX_LENGTH} items", node)
+        self.yielded[-1].extend(items)
         return None
 
     def instantiate(
@@ -1696,7 +1753,7 @@ class Interpreter:
         call = Call(cls.name, [], {}, self.location(node), self.sink)
         found, perform = _class_lookup(cls, "perform")
         if any(base.endswith("Substitution") for base in bases) and isinstance(perform, Function):
-            return call.text(self.call_function(perform, [instance, LaunchContext()], {}, node))
+            return self._performed(cls, perform, instance, args, kwargs, node)
         found, execute = _class_lookup(cls, "execute")
         entity = ("Action", "LaunchDescriptionEntity")
         if any(base.endswith(entity) for base in bases) and isinstance(execute, Function):
@@ -1710,6 +1767,33 @@ class Interpreter:
         if instance.made is not None:  # an action or substitution of launch, as its base
             return instance.made
         return instance
+
+    def _performed(
+        self,
+        cls: Class,
+        perform: Function,
+        instance: Instance,
+        args: list[Value],
+        kwargs: dict[str, Value],
+        node: ast.AST,
+    ) -> Value:
+        """The text ``perform`` gives; where it gives a file it writes, that file, its text
+        computed per configuration (:mod:`.written`): this reading's diagnostics of it,
+        made of values not known yet, are left out."""
+        if self.rereading is not None:
+            made = self.call_function(perform, [instance, LaunchContext()], {}, node)
+            if isinstance(made, WrittenFile):
+                return made
+            return Call(cls.name, [], {}, self.location(node), self.sink).text(made)
+        outer, self.sink = self.sink, DiagnosticSink()
+        try:
+            made = self.call_function(perform, [instance, LaunchContext()], {}, node)
+        finally:
+            scratch, self.sink = self.sink, outer
+        if written.written_in(made):
+            return written.deferred(self, cls, args, kwargs, node)
+        self.sink.items.extend(scratch.items)
+        return Call(cls.name, [], {}, self.location(node), self.sink).text(made)
 
     def _base_init(
         self, cls: Class, args: list[Value], kwargs: dict[str, Value], node: ast.AST
@@ -1732,9 +1816,16 @@ class Interpreter:
         if isinstance(receiver, Instance | Class | Super):
             return self._call_class_method(receiver, name, args, kwargs, node)
         if isinstance(receiver, Condition) and name == "evaluate":
+            literal = receiver.text.literal()
+            if literal is not None:  # launch's truth of a known text
+                return (literal.strip().lower() in ("true", "1")) == (receiver.attribute == "if")
             return launch_time.evaluated(receiver.attribute, receiver.text)
         if isinstance(receiver, FileHandle) and name == "read" and not args:
             return reads.text(self, receiver, node)
+        if isinstance(receiver, WrittenFile) and name == "write":
+            return written.write(self, receiver, args, node)
+        if isinstance(receiver, WrittenFile | FileHandle) and name in ("close", "flush"):
+            return None
         if isinstance(receiver, FilePath) and name in paths.METHODS:
             return paths.METHODS[name](self, receiver, args, node)
         if isinstance(receiver, Pattern) and name in patterns.METHODS:
@@ -1777,7 +1868,16 @@ class Interpreter:
             given = [arg_source for arg_source in sources if arg_source is not None]
             if len(given) == len(sources):
                 return launch_time.method(receiver, name, given)
+        if type(receiver) in _PLAIN_TYPES and not hasattr(type(receiver), name):
+            return self.raises("AttributeError", node)  # as `try: d.keys() except ...` expects
         return self.not_followed(f"method {name}() of a {type(receiver).__name__}", node)
+
+    def raises(self, kind: str, node: ast.AST) -> Value:
+        """Python's exception ``kind`` raised by an operation of a builtin where ``node`` is;
+        under a launch-time ``if`` it is raised in some configurations only: not followed."""
+        if self.guards:
+            return self.not_followed(f"an operation raising {kind} under a launch-time 'if'", node)
+        raise PythonRaise(Module(kind), self.location(node))
 
     def _data_init(
         self,
@@ -1949,6 +2049,10 @@ class Interpreter:
         return self.not_followed(f"str.{name}() of values not known statically", node)
 
 
+_PLAIN_TYPES = (str, int, float, bool, type(None), list, tuple, dict)
+"""Python's types of the values the reading keeps as themselves."""
+
+
 def _builtin_exception(kind: Value) -> bool:
     """Whether ``kind`` is one of Python's exception classes (``KeyError``)."""
     if not isinstance(kind, Module):
@@ -2082,6 +2186,27 @@ LIST_METHODS: dict[str, ListMethod] = {
 launch-time branch keeps its own copy)."""
 
 
+def _none_identity(op: ast.cmpop, left: Value, right: Value) -> bool:
+    """Whether ``left op right`` asks if a value known never to be ``None`` (a launch
+    object, a substitution's text, an object) is ``None``: never."""
+    if not isinstance(op, ast.Is | ast.IsNot) or (left is None) == (right is None):
+        return False
+    other = right if left is None else left
+    return not isinstance(other, Unknown | Dynamic | Conditional)
+
+
+def _yields(function: ast.FunctionDef) -> bool:
+    """Whether ``function`` is a generator: a ``yield`` in its body, not in a nested scope."""
+    pending: list[ast.AST] = list(function.body)
+    while pending:
+        node = pending.pop()
+        if isinstance(node, ast.Yield | ast.YieldFrom):
+            return True
+        if not isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef | ast.Lambda):
+            pending.extend(ast.iter_child_nodes(node))
+    return False
+
+
 def _called(decorator: ast.expr) -> ast.expr:
     """The decorator's callee (``@dataclass(slots=True)``: ``dataclass``)."""
     return decorator.func if isinstance(decorator, ast.Call) else decorator
@@ -2211,8 +2336,8 @@ def _convert(kind: type[int] | type[float] | type[bool]) -> Builtin:
         if len(args) == 1 and isinstance(args[0], str | int | float | bool):
             try:
                 return kind(args[0])
-            except ValueError as error:
-                return interpreter.not_followed(f"{kind.__name__}() that fails ({error})", node)
+            except ValueError:
+                return interpreter.raises("ValueError", node)
         if not args:
             return kind()
         if len(args) == 1 and isinstance(args[0], Dynamic):
@@ -2572,6 +2697,9 @@ BUILTINS: dict[str, Builtin] = {
     "os.path.expanduser": paths.expanduser,
     **{name: _path_function(function) for name, function in paths.FUNCTIONS.items()},
     "re.compile": patterns.compile_pattern,
+    "tempfile.NamedTemporaryFile": written.temporary_file,
+    "yaml.dump": written.dump_yaml,
+    "yaml.safe_dump": written.dump_yaml,
     **{f"re.{name}": patterns.module_function(name) for name in patterns.METHODS},
     "xacro.process_file": xacro_calls.process_file,
     **{f"logging.{level}": _print for level in ("debug", "info", "warning", "error")},
@@ -2583,11 +2711,8 @@ def entry_point(interpreter: Interpreter, tree: ast.Module) -> Entity | None:
     """The ``launch`` element ``generate_launch_description()`` returns, or ``None``."""
     try:
         return _entry_point(interpreter, tree)
-    except _Raise as raised:  # as launch, which fails to load the file
-        what = raised.value.cls.name if isinstance(raised.value, Instance) else None
-        if isinstance(raised.value, Module):
-            what = raised.value.qualified
-        message = f"the file raises {what or 'an exception'}, which nothing catches"
+    except PythonRaise as raised:  # as launch, which fails to load the file
+        message = f"the file raises {raised.what()}, which nothing catches"
         interpreter.sink.error("python-launch-raises", message, raised.location)
         return None
 

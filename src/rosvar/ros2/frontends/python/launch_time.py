@@ -71,6 +71,13 @@ def performed(text: Text) -> Dynamic:
     return Dynamic(quoted(text), str, text)
 
 
+def performed_value(text: Text) -> Value:
+    """:func:`performed`, but a literal text is the string it is (a helper's ``perform``
+    read again in one configuration computes with it)."""
+    literal = text.literal()
+    return performed(text) if literal is None else literal
+
+
 def quoted(text: Text) -> Text:
     """``text`` as a Python string literal of its launch-time value: its ``repr`` where it is
     literal, else ``$(rosvar-python-string text)``, the ``repr`` of the value it gives."""

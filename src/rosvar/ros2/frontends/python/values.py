@@ -95,6 +95,19 @@ class LaunchYaml:
     keys: tuple[Key, ...] = ()
 
 
+@dataclass(eq=False, slots=True)
+class WrittenFile:
+    """A file the reading's Python writes (``tempfile.NamedTemporaryFile``): the texts
+    written in order (``write``, ``yaml.dump``), never a real file; its name stands for it.
+    ``deferred``, where set, are the operands of the substitution giving its text or path
+    at launch time (a workspace's ``Substitution`` whose ``perform`` names it, read again per
+    configuration)."""
+
+    parts: list[Value] = field(default_factory=list)
+    deferred: tuple[Text, ...] | None = None
+    label: str = "a file written at launch time"
+
+
 @dataclass(frozen=True, slots=True)
 class Condition:
     """``IfCondition(x)`` and kin: the attribute (``if``/``unless``) and its text."""
@@ -164,6 +177,10 @@ class Function:
     defaults: dict[str, Value]
     file: SourceFile
     owner: Class | None = None
+    getter: bool = False
+    """A ``@property``: reading the attribute calls it."""
+    generator: bool = False
+    """Its body yields: a call is the list of what it yields (read at once, in order)."""
 
 
 @dataclass(eq=False, slots=True)
@@ -250,6 +267,7 @@ Value = (
     | Match
     | XacroDocument
     | LaunchYaml
+    | WrittenFile
     | Condition
     | Module
     | Source
