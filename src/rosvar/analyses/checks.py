@@ -34,6 +34,7 @@ from rosvar.analyses.communication import (
     node_branches,
 )
 from rosvar.analyses.conflicts import Occurrence, clashes, node_occurrences
+from rosvar.analyses.feature_model.operations import trigger
 from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.when import params_read
 from rosvar.diagnostics import Location, Severity
@@ -291,7 +292,24 @@ def check_model(
     checker.remaps(interfaces)
     checker.dialects(interfaces)
     checker.whens(interfaces)
-    return checker.findings
+    return [_told(space, finding) for finding in checker.findings]
+
+
+UNTOLD = (
+    " (rosvar could not tell: only a value nobody foresaw gives it, and no text rosvar tried does)"
+)
+
+
+def _told(space: ConditionSpace, finding: Finding) -> Finding:
+    """A warning or error whose example needs an unforeseen value that no witness gives
+    (no text rosvar tried makes the example's predicates hold as it asks) is a note: rosvar
+    cannot tell that such a value exists."""
+    if finding.severity is Severity.NOTE:
+        return finding
+    found = trigger(space, finding.condition)
+    if found is None or not found.unwitnessed:
+        return finding
+    return dataclasses.replace(finding, severity=Severity.NOTE, message=finding.message + UNTOLD)
 
 
 class _Checker:
@@ -356,8 +374,6 @@ class _Checker:
                 by_name[(edge.channel, edge.name)].append(edge)
             else:
                 self.symbolic[edge.role].append(edge)
-                if edge.boundary:
-                    continue  # no partner to miss: nothing the checks skip
                 self.add(
                     Check.SYMBOLIC_NAME,
                     Severity.NOTE,
