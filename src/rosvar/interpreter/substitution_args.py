@@ -19,6 +19,7 @@ from typing import Final, Protocol
 
 from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.model import Raw
+from rosvar.logic.bdd import BDD
 from rosvar.logic.cells import Cells, register_cells
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.conditions import ConditionSpace
@@ -48,6 +49,13 @@ MAX_VALUE_SIZE = 1_000_000
 concatenate the previous one twice would otherwise double it at every line."""
 MAX_TERM_DEPTH = 100
 """Nesting of a symbolic value; deeper ones would exhaust recursion when evaluated."""
+MAX_CONDITION_NODES = 4096
+"""BDD nodes of one condition computed for a value instead of crossing (a chain of
+``$(eval)``s, each reading the one before twice, would double them at every line)."""
+MAX_TESTED_TERMS = 64
+"""Values not known yet (terms) one ``if``/``unless`` or one ``$(eval)`` of comparisons may
+test: each is predicates of its own in the conditions, and a value crossed from many args'
+``<other>`` values would make thousands."""
 
 
 class Missing:
@@ -547,6 +555,30 @@ class ValueBudget:
             self.combinations += count
             return True
         self.note(f"{_short(text)} is not computed: {reason}")
+        return False
+
+    def affords_tests(self, text: str, count: int) -> bool:
+        """Whether testing ``count`` terms for ``text`` stays within :data:`MAX_TESTED_TERMS`;
+        otherwise a note, and the caller keeps the value unknown."""
+        if count <= MAX_TESTED_TERMS:
+            return True
+        self.note(
+            f"{_short(text)} is not computed: it tests {count} values not known yet, "
+            f"over {MAX_TESTED_TERMS}"
+        )
+        return False
+
+    def affords_conditions(self, text: str, conditions: Iterable[BDD]) -> bool:
+        """Whether ``conditions`` computed for ``text`` stay within
+        :data:`MAX_CONDITION_NODES` each; otherwise a note, and the caller keeps the value
+        unknown."""
+        largest = max((condition.dag_size for condition in conditions), default=0)
+        if largest <= MAX_CONDITION_NODES:
+            return True
+        self.note(
+            f"{_short(text)} is not computed: its conditions need {largest} BDD nodes, "
+            f"over {MAX_CONDITION_NODES}"
+        )
         return False
 
     def fits(self, count: int) -> bool:
