@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 from rosvar.analyses.feature_model.extraction import extract
 from rosvar.configuration.lowering import Bounds, Lowering
 from rosvar.logic.bdd import BDD, transfer
-from rosvar.logic.inputs import ArgInput
+from rosvar.logic.inputs import UNSET, ArgInput, EnvInput
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -87,3 +87,16 @@ def test_a_conjunction_of_factors_lowers_as_the_whole_conjunction(ws: LaunchWork
         assert lowering.bounds(conjoined) == Bounds(must, may)
         opened += must != may
     assert opened  # some pairs are open: both bounds are checked
+
+
+def test_an_input_declared_after_the_lowering_is_fixed_by_its_value(ws: LaunchWorkspace) -> None:
+    """The checks' simulation may read an environment variable first (a robot description's
+    ``$(optenv)``) once the engine's lowering exists: its slots are fixed by the variable as
+    given, as those of the inputs known at the start are."""
+    for env, present in (({"LATE": "yes"}, True), ({}, False)):
+        lowering, _cam, _s = _lowering(ws, env)
+        space = lowering.space
+        late = EnvInput("LATE")
+        space.declare_input(late, ["yes", UNSET])
+        assert lowering.fix(space.slot(late, "yes")) == (space.true if present else space.false)
+        assert lowering.fix(space.slot(late, UNSET)) == (space.false if present else space.true)

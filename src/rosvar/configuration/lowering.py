@@ -53,15 +53,11 @@ class Lowering:
         self.host = analysis.package_table()
         solver_variables = set(model.solver.variables)
         self.feature_inputs: set[Input] = {arg.input for file in model.files for arg in file.args}
+        self._analysis = analysis
+        self._env = env
         self.concrete: dict[Input, str] = {}
         for input_ in space.inputs():
-            if isinstance(input_, EnvInput):
-                if input_.name in env:
-                    self.concrete[input_] = env[input_.name]
-            elif input_ not in self.feature_inputs:
-                default = analysis.model(input_.file).unset_defaults.get(input_.name)
-                if default is not None:
-                    self.concrete[input_] = default
+            self._take(input_)
         truth = space.assignment({i: self.concrete.get(i) for i in space.inputs()}, self.host)
         self.fixed: dict[str, bool] = {}
         self.open: set[str] = set()
@@ -78,6 +74,27 @@ class Lowering:
         self._satisfiable: dict[BDD, bool] = {}
         self._copies: dict[frozenset[str], dict[BDD, BDD]] = {}  # the last open atoms hidden
 
+    def _take(self, input_: Input) -> None:
+        """Record ``input_``'s concrete value: its environment variable's, or an arg's
+        default where no feature chooses it."""
+        if isinstance(input_, EnvInput):
+            if input_.name in self._env:
+                self.concrete[input_] = self._env[input_.name]
+        elif input_ not in self.feature_inputs:
+            default = self._analysis.model(input_.file).unset_defaults.get(input_.name)
+            if default is not None:
+                self.concrete[input_] = default
+
+    def _truth_of(self, atom: Atom) -> bool:
+        """The truth of an atom made after this lowering, under the concrete inputs."""
+        if isinstance(atom, PredicateAtom):
+            return decide_predicate(atom, self.concrete, self.host)
+        if isinstance(atom, SlotAtom):
+            if atom.input not in self.concrete:
+                self._take(atom.input)
+            return self.space.held(atom.input, self.concrete.get(atom.input)) == atom.slot
+        return False  # a launch file: none is part of the product the lowering fixes
+
     def _classify(self, name: str, atom: Atom, truth: Callable[[], bool]) -> None:
         """Fix ``atom`` (to ``truth()``), or keep it open: a predicate on a feature arg."""
         if isinstance(atom, SlotAtom) and atom.input in self.feature_inputs:
@@ -90,16 +107,15 @@ class Lowering:
     def fix(self, condition: BDD) -> BDD:
         """``condition`` with the fixed atoms substituted (still in the analysis' manager).
 
-        A predicate made after this lowering (a hint's ``when:`` on a typed text, built
-        with the graph) is classified when first met."""
+        An atom made after this lowering (a hint's ``when:`` on a typed text, built with
+        the graph; an input the checks' simulation reads first) is classified when first
+        met."""
         found = self._fixed.get(condition)
         if found is None:
             support = self.space.support(condition)
             for name in support - self.fixed.keys() - self.open - self._solver_variables:
                 atom = self.space.atom_of(name)
-                assert isinstance(atom, PredicateAtom)
-                decided = functools.partial(decide_predicate, atom, self.concrete, self.host)
-                self._classify(name, atom, decided)
+                self._classify(name, atom, functools.partial(self._truth_of, atom))
             values = {n: self.fixed[n] for n in support if n in self.fixed}
             fixed = self.space.cofactor(condition, values)
             kept = support  # the support of ``fixed`` when nothing was fixed
