@@ -30,6 +30,7 @@ from rosvar.interpreter.model import (
 from rosvar.interpreter.substitution_args import MAX_TESTED_TERMS, too_complex
 from rosvar.logic.atoms import register_predicate
 from rosvar.logic.bdd import BDD
+from rosvar.logic.cells import register_predicate_texts, spellings
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
@@ -99,6 +100,8 @@ def _falsy(text: str) -> bool:
 
 register_predicate("true", _truthy, "{} is true")
 register_predicate("false", _falsy, "{} is false")
+for _test in ("true", "false"):
+    register_predicate_texts(_test, spellings((*TRUE_WORDS, *FALSE_WORDS)))
 
 
 class Interpretation(Generic[S]):

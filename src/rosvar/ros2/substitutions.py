@@ -824,16 +824,16 @@ def _eval(host: Interpretation[Context], context: Context, args: list[Raw]) -> C
     comma-separated names; ``math`` when not given)."""
     if not 1 <= len(args) <= 2:
         return _fail(host, "eval substitution expects 1 or 2 arguments", "substitution-invalid")
-    if not all(isinstance(arg, str) for arg in args):  # evaluated once a configuration is given
+    return Choice.const(host.space, _eval_value(args))
+
+
+def _eval_value(args: Sequence[Raw]) -> Value:
+    """``$(eval)`` of its arguments; a term where one is, evaluated once a configuration
+    gives it."""
+    if not all(isinstance(arg, str) for arg in args):
         shown = " ".join(map(str, args))
-        return Choice.const(host.space, Apply("ros2-eval", tuple(args), f"$(eval {shown})"))
-    return Choice.const(host.space, _evaluation(*cast("list[str]", args)))
-
-
-def _evaluated_text(text: Raw) -> Value:
-    if not isinstance(text, str):  # a term: evaluated once the command line gives it
-        return Apply("ros2-eval", (text,), f"$(eval {text})")
-    return _evaluation(text)
+        return Apply("ros2-eval", tuple(args), f"$(eval {shown})")
+    return _evaluation(*cast("list[str]", args))
 
 
 def _evaluated_with(template: Template, leaves: Sequence[Value]) -> Value:
@@ -843,7 +843,7 @@ def _evaluated_with(template: Template, leaves: Sequence[Value]) -> Value:
             return leaf
     substituted = iter(cast("Sequence[Raw]", leaves))
     parts = [part if isinstance(part, str) else next(substituted) for part in template]
-    return _evaluated_text(concat(parts))
+    return _eval_value([concat(parts)])
 
 
 def _evaluation(text: str, modules: str = DEFAULT_MODULES) -> str | Fail:

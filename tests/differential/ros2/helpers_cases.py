@@ -315,12 +315,15 @@ class Rewritten(launch.Substitution):
 
 
 class Replaced(launch.Substitution):
-    def __init__(self, source, replacements):
+    def __init__(self, source, replacements, condition=None):
         super().__init__()
         self.__source = normalize_to_list_of_substitutions(source)
         self.__replacements = replacements
+        self.__condition = condition
 
     def perform(self, context):
+        if self.__condition is not None and not self.__condition.evaluate(context):
+            return perform_substitutions(context, self.__source)
         pairs = {k: perform_substitutions(context, normalize_to_list_of_substitutions(v))
                  for k, v in self.__replacements.items()}
         written = tempfile.NamedTemporaryFile(mode='w', delete=False)
@@ -335,6 +338,7 @@ class Replaced(launch.Substitution):
 from ament_index_python.packages import get_package_share_directory
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition
 from launch.substitutions import LaunchConfiguration
 from launch_ros.actions import Node
 from launch_ros.descriptions import ParameterFile
@@ -350,19 +354,25 @@ def generate_launch_description():
                           'frame': LaunchConfiguration('frame')}),
         allow_substs=True)
     replaced = Replaced(os.path.join(share, 'config', 'template.yaml'), {'<ns>': ('/', ns)})
+    renamed = Replaced(LaunchConfiguration('params'), {'map': 'world'},
+                       condition=IfCondition(LaunchConfiguration('rename')))
+    chained = Rewritten(renamed, values={'rate': '9'})
     return LaunchDescription([
         DeclareLaunchArgument('ns', default_value=''),
         DeclareLaunchArgument('rate', default_value='2'),
         DeclareLaunchArgument('frame', default_value='True'),
+        DeclareLaunchArgument('rename', default_value='false'),
         DeclareLaunchArgument('params',
                               default_value=os.path.join(share, 'config', 'robot.yaml')),
         Node(package='pkg', executable='planner', name='planner', namespace=ns,
              parameters=[rewritten]),
         Node(package='pkg', executable='tracker', name='tracker', namespace=ns,
              parameters=[rewritten, replaced]),
+        Node(package='pkg', executable='planner', name='planner', namespace='chained',
+             parameters=[chained]),
     ])
 """,
         },
-        [{}, {"ns": "r1", "rate": "2.5", "frame": "base"}, {"rate": "fast"}],
+        [{}, {"ns": "r1", "rate": "2.5", "frame": "base"}, {"rate": "fast", "rename": "true"}],
     ),
 }
