@@ -31,7 +31,6 @@ from rosvar.interpreter.substitution_args import (
     MAX_TERM_DEPTH,
     MAX_VALUE_SIZE,
     ValueBudget,
-    too_complex,
 )
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail, combine_bind, crossed, ite
@@ -242,6 +241,24 @@ def substitution(name: str) -> Callable[[Handler], Handler]:
     return register
 
 
+Computation = Callable[[list[Raw]], Value]
+COMPUTED: dict[str, Computation] = {}
+"""The substitutions whose value follows from their arguments' values alone (no launch
+configuration, no file, no workspace): a value given up over the work limits is computed
+again from one leaf of each argument in a configuration (:mod:`rosvar.logic.given_up`)."""
+
+
+def computed(name: str) -> Callable[[Computation], Computation]:
+    """Register ``$(name ...)`` as a :data:`COMPUTED` substitution: its handler too."""
+
+    def register(computation: Computation) -> Computation:
+        COMPUTED[name] = computation
+        substitution(name)(lambda host, _context, args: Choice.const(host.space, computation(args)))
+        return computation
+
+    return register
+
+
 PURE = frozenset(
     {
         "var",
@@ -405,8 +422,10 @@ class Ros2Substituter:
             arguments.append(self._joined(parts, text))
         if not arguments:
             return handler(self.host, context, [])
+        computation = COMPUTED.get(part.name)
+        again = None if computation is None else functools.partial(_computed, computation)
         if not self.budget.affordable(text, arguments):
-            return Choice.const(self.space, too_complex(text))
+            return self.budget.given_up(text, arguments, again)
         return combine_bind(arguments, lambda leaves: _call(handler, self.host, context, leaves))
 
     def _condition(
@@ -434,7 +453,8 @@ class Ros2Substituter:
             return None
         self.budget.affordable_count(text, product)  # the text's combinations
         if not self.budget.affordable_count(text, count):  # the evaluation of each text
-            return Choice.const(self.space, too_complex(text))
+            again = functools.partial(_evaluated_text, template)
+            return self.budget.given_up(text, strings, again)
         holds = expression.condition(self.space, strings)
         covered = self.space.true
         for value in strings:
@@ -468,6 +488,21 @@ def _combinations(
         for condition, _leaf in value.branches:
             seen |= space.support(condition) if condition.var is not None else set()
     return product, [value.branches[0][1] for value in values]
+
+
+def _evaluated_text(template: Template, leaves: Sequence[str]) -> Value:
+    """``$(eval template)`` with one leaf of each of its substitutions (a give-up of
+    :meth:`Ros2Substituter._condition` computed again)."""
+    return _evaluation(_text(template, leaves))
+
+
+def _computed(computation: Computation, leaves: Sequence[Value]) -> Value:
+    """A :data:`COMPUTED` substitution of one leaf of each argument (the first failing one
+    fails it, as :func:`_call`)."""
+    for leaf in leaves:
+        if isinstance(leaf, Fail):
+            return leaf
+    return computation(list(leaves))  # type: ignore[arg-type]  # Fails returned
 
 
 def _text(template: Template, leaves: Sequence[str]) -> str:
@@ -648,43 +683,41 @@ def _find_exec(host: Interpretation[Context], context: Context, args: list[Raw])
     return Choice.const(host.space, concat(["$(find-exec ", args[0], ")"]))
 
 
-@substitution(PATH_JOIN)
-def _path_join(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+@computed(PATH_JOIN)
+def _path_join(args: list[Raw]) -> Value:
     """``PathJoinSubstitution`` (the Python frontend's): ``os.path.join`` of the values."""
     if all(isinstance(arg, str) for arg in args):
-        return Choice.const(host.space, posixpath.join(*args))  # type: ignore[arg-type]
+        return posixpath.join(*args)  # type: ignore[arg-type]
     parts: list[Raw] = []
     for arg in args:  # an unknown value: joined as if relative, with no trailing '/'
         parts += ["/", arg]
-    return Choice.const(host.space, concat(parts[1:]))
+    return concat(parts[1:])
 
 
-@substitution(PYTHON_STRING)
-def _python_string(
-    host: Interpretation[Context], context: Context, args: list[Raw]
-) -> Choice[Value]:
+@computed(PYTHON_STRING)
+def _python_string(args: list[Raw]) -> Value:
     """The Python frontend's launch-time string inside an expression: its ``repr``; a value
     known only once the command line gives it (a term) is a term too."""
     if len(args) != 1:
-        return _fail(host, f"$({PYTHON_STRING}) takes one argument", "substitution-invalid")
+        return Fail(f"$({PYTHON_STRING}) takes one argument", "substitution-invalid")
     if isinstance(args[0], str):
-        return Choice.const(host.space, repr(args[0]))
-    return Choice.const(host.space, Apply(PYTHON_STRING, (args[0],), f"repr({args[0]})"))
+        return repr(args[0])
+    return Apply(PYTHON_STRING, (args[0],), f"repr({args[0]})")
 
 
 register(PYTHON_STRING, lambda _host, value: repr(value))
 
 
-@substitution(PYTHON_YAML)
-def _python_yaml(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+@computed(PYTHON_YAML)
+def _python_yaml(args: list[Raw]) -> Value:
     """The Python frontend's ``yaml.load`` of a launch-time string inside an expression: the
     loaded value as a Python literal; a text that is no YAML of plain values fails, as the
     file's ``yaml.load`` raises (or gives what the expression cannot use)."""
     if len(args) != 1:
-        return _fail(host, f"$({PYTHON_YAML}) takes one argument", "substitution-invalid")
+        return Fail(f"$({PYTHON_YAML}) takes one argument", "substitution-invalid")
     if isinstance(args[0], str):
-        return Choice.const(host.space, _yaml_literal(args[0]))
-    return Choice.const(host.space, Apply(PYTHON_YAML, (args[0],), f"yaml({args[0]})"))
+        return _yaml_literal(args[0])
+    return Apply(PYTHON_YAML, (args[0],), f"yaml({args[0]})")
 
 
 def _yaml_literal(text: str) -> str | Fail:
@@ -760,13 +793,13 @@ def _not_followed(_host: object, what: str) -> str:
 register(UNKNOWN, _not_followed)
 
 
-@substitution("eval")
-def _eval(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+@computed("eval")
+def _eval(args: list[Raw]) -> Value:
     if len(args) != 1:
-        return _fail(host, "$(eval) takes one argument", "substitution-invalid")
+        return Fail("$(eval) takes one argument", "substitution-invalid")
     if not isinstance(args[0], str):  # a term: evaluated once the command line gives it
-        return Choice.const(host.space, Apply("ros2-eval", (args[0],), f"$(eval {args[0]})"))
-    return Choice.const(host.space, _evaluation(args[0]))
+        return Apply("ros2-eval", (args[0],), f"$(eval {args[0]})")
+    return _evaluation(args[0])
 
 
 def _evaluation(text: str) -> str | Fail:
