@@ -71,3 +71,24 @@ def test_the_graph_marks_the_nodes_event_handlers_start(
         "/after_late": "on_process_start",
         "/on_exit": "on_process_exit",
     }
+
+
+def test_a_product_that_does_not_launch_names_ros2_launch(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The issue 28 audit: what ``ros2 launch`` refuses was said of roslaunch."""
+    package = tmp_path / "pkg"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text(ROS2_MANIFEST)
+    file = package / "launch" / "main.launch.xml"
+    file.write_text(
+        '<launch><arg name="on" default="true"/>\n'
+        '<node pkg="pkg" exec="a" name="a" if="$(var on)"/></launch>'
+    )
+    feature = "pkg/launch/main.launch.xml"
+    words = ["configure", str(tmp_path), "--select", feature, "--set", f"{feature}:on=abc"]
+    assert main(words) == 1
+    out = capsys.readouterr().out
+    assert "ros2 launch pkg main.launch.xml on:=abc\n" in out
+    assert "this product does not launch: ros2 launch stops at the errors" in out
+    assert not run_oracle(file, {"on": "abc"}, [tmp_path])["ok"]

@@ -7,7 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from ros2.tags.launches import launch
+from oracle.ros2_client import ORACLE, run_oracle
+from ros2.tags.launches import Launch, launch
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.safe_eval import EvalEnvironment, evaluate
 from rosvar.interpreter.substitution_args import MAX_TERM_DEPTH
@@ -288,3 +289,83 @@ def test_python_expressions_see_what_ros2_launch_gives_them(
     it = launch(tmp_path / "ok", PYTHON_EXPRESSIONS.replace("'true'", "'True'"))
     expected = it.matches_oracle(arguments)
     assert expected["ok"] and len(expected["nodes"]) >= 4
+
+
+def test_what_the_restricted_evaluator_refuses_is_eval_refused(tmp_path: Path) -> None:
+    """An ``$(eval)`` over the evaluator's nesting limit, or calling what it does not allow,
+    is rosvar's refusal (Python may well run it: 150 brackets are within its parser's
+    200), not the expression failing as it does in Python (``1/0``)."""
+    deep = "(" * 150 + "1" + ")" * 150
+    texts = {"deep": deep, "call": "open(0)", "zero": "1/0"}
+    nodes = "".join(
+        f'<node pkg="p" exec="e" name="n" namespace="/$(eval \'{text}\')"/>'
+        for text in texts.values()
+    )
+    model = _models(tmp_path, {"main.launch.xml": nodes})["main.launch.xml"]
+    found = [(error.code, error.message.split(": ", 2)[-1][:32]) for error in model.errors]
+    assert found == [
+        ("eval-refused", "expression is nested more than 1"),
+        ("eval-refused", "calling 'open' is not allowed (o"),
+        ("eval-failed", "ZeroDivisionError: division by z"),
+    ]
+
+
+EVAL_MODULES_XML = """<launch><arg name="x" default="4"/>
+  <node pkg="pkg" exec="e" name="n" namespace="/a$(eval {})"/></launch>"""
+EVAL_MODULES_PY = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration, PythonExpression
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    x = LaunchConfiguration('x')
+    return LaunchDescription([
+        DeclareLaunchArgument('x', default_value='4'),
+        Node(package='pkg', executable='e', name='n', namespace=['/a', PythonExpression({})]),
+    ])
+"""
+EVAL_MODULES = {  # the expression's arguments, and whether launch fails
+    "math given": (".launch.xml", "'int(sqrt($(var x)))' 'math'", True),
+    "math and a blank": (".launch.xml", "'int(sqrt($(var x)))' ' math '", True),
+    "no module": (".launch.xml", "'$(var x) * 3' ''", True),
+    "no math": (".launch.xml", "'int(sqrt($(var x)))' ''", False),
+    "no math by its name": (".launch.xml", "'int(math.pi) + $(var x)' ''", False),
+    "an empty name": (".launch.xml", "'$(var x)' 'math, '", False),
+    "python list": (".launch.py", "['int(sqrt(', x, '))'], python_modules=['math']", True),
+    "python text": (".launch.py", "['2 * ', x], 'math'", True),
+    "python none": (".launch.py", "['int(sqrt(', x, '))'], []", False),
+}
+
+
+@pytest.mark.parametrize("case", sorted(EVAL_MODULES))
+def test_eval_takes_the_modules_it_may_use(tmp_path: Path, case: str) -> None:
+    """``$(eval EXPR MODULES)``, ``PythonExpression(expr, python_modules)``: ``math`` given
+    (or not) decides whether its names are defined, as the oracle evaluates them, which
+    fails with the same error."""
+    suffix, arguments, runs = EVAL_MODULES[case]
+    main = (EVAL_MODULES_XML if suffix == ".launch.xml" else EVAL_MODULES_PY).format(arguments)
+    it = launch(tmp_path, main, suffix=suffix)
+    for given in ({}, {"x": "9"}):
+        expected = it.matches_oracle(given)
+        assert expected["ok"] is runs
+        errors = it.analysis.resolve([str(it.main)], given).errors
+        messages = [error.message.rsplit("): ", 1)[-1] for error in errors]
+        assert messages == ([] if runs else [f"{expected['error_type']}: {expected['error']}"])
+
+
+def test_a_module_rosvar_does_not_model_is_refused_naming_it(tmp_path: Path) -> None:
+    """Launch imports ``os`` and runs; rosvar knows ``math`` only, so it says it cannot tell
+    (``eval-refused``), not that the launch fails."""
+    it = launch(tmp_path, EVAL_MODULES_XML.format("'int(pi) + $(var x)' 'math, os'"))
+    [error] = it.analysis.resolve([str(it.main)], {}).errors
+    assert error.code == "eval-refused"
+    assert error.message.endswith("module 'os' is not modelled by rosvar (only math)")
+    assert launch_oracle_ok(it)
+
+
+def launch_oracle_ok(it: Launch) -> bool:
+    """Whether the real launch runs ``it`` with its defaults."""
+    if not ORACLE.is_dir():
+        pytest.skip(f"the ROS 2 oracle {ORACLE} is absent")
+    return bool(run_oracle(it.main, {}, [it.main.parent.parent])["ok"])

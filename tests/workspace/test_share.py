@@ -15,7 +15,7 @@ set(CONFIG_DIRS bringup/config)
 install(DIRECTORY bringup/launch ${CONFIG_DIRS} DESTINATION share/${PROJECT_NAME})
 install(DIRECTORY description/ DESTINATION share/demo/robot
   FILES_MATCHING PATTERN "*.xacro" PATTERN "private" EXCLUDE)
-install(FILES extra/a.yaml extra/old.yaml DESTINATION share/${PROJECT_NAME}/params)
+install(FILES extra/a.yaml extra/old.yaml extra/b.yaml DESTINATION share/${PROJECT_NAME}/params)
 install(FILES extra/new.yaml DESTINATION share/${PROJECT_NAME}/params RENAME old.yaml)
 install(DIRECTORY hardware/include/ DESTINATION include/${PROJECT_NAME})
 install(DIRECTORY ${UNSET_FOLDER}/maps DESTINATION share/${PROJECT_NAME})
@@ -29,6 +29,8 @@ FILES = [
     "extra/a.yaml",
     "extra/old.yaml",
     "extra/new.yaml",
+    "extra/b.yaml",
+    "params/b.yaml",
     "config/as_is.yaml",
     "hardware/include/x.hpp",
 ]
@@ -65,8 +67,10 @@ def test_cmake_install_rules_map_share_paths_to_their_sources(tmp_path: Path) ->
     # FILES, and a later RENAME overwrites the earlier file of that name
     assert installed("params/a.yaml") == f"{share}/extra/a.yaml"
     assert installed("params/old.yaml") == f"{share}/extra/new.yaml"
-    # no rule puts it there, or not into the share folder: the path as it is
+    # no rule puts it there, or not into the share folder: the path as it is; a file that
+    # exists where the path names it is read there (the rules are not read for it)
     assert installed("config/as_is.yaml") == f"{share}/config/as_is.yaml"
+    assert installed("params/b.yaml") == f"{share}/params/b.yaml"
     assert installed("x.hpp") == f"{share}/x.hpp"
     # the workspace's read gate reads the source
     assert read_file(f"{share}/params/old.yaml", workspace.confinement()) == b"extra/new.yaml"
@@ -90,12 +94,8 @@ def test_a_rule_with_a_variable_not_known_is_told_and_its_paths_read_as_they_are
 
 def test_ament_cmake_auto_install_to_share(tmp_path: Path) -> None:
     cmake = "project(auto)\nament_auto_package(INSTALL_TO_SHARE launch param USE_SCOPED_X)\n"
-    package = _package(
-        tmp_path,
-        "auto",
-        "ament_cmake",
-        {"CMakeLists.txt": cmake, "param/p.yaml": "", "USE_SCOPED_X/f": ""},
-    )
+    files = {"CMakeLists.txt": cmake, "param/p.yaml": "", "USE_SCOPED_X/f": ""}
+    package = _package(tmp_path, "auto", "ament_cmake", files)
     workspace = discover([str(tmp_path)], ament_prefix_path="")
     assert workspace.installed(f"{package}/param/p.yaml") == f"{package}/param/p.yaml"
     share = workspace.share_of(str(package))
@@ -162,15 +162,8 @@ def test_a_launch_file_not_found_below_an_unread_rule_tells_the_rule(tmp_path: P
     from rosvar.interpreter.workspace_models import Analysis
 
     entry = "launch/entry.launch.xml"
-    package = _package(
-        tmp_path,
-        "demo",
-        "ament_cmake",
-        {
-            "CMakeLists.txt": CMAKE,
-            entry: '<launch><include file="$(find-pkg-share demo)/maps/m.launch.xml"/></launch>',
-        },
-    )
+    include = '<launch><include file="$(find-pkg-share demo)/maps/m.launch.xml"/></launch>'
+    package = _package(tmp_path, "demo", "ament_cmake", {"CMakeLists.txt": CMAKE, entry: include})
     workspace = discover([str(tmp_path)], ament_prefix_path="")
     model = Analysis(workspace).model(str(package / entry))
     assert {d.code for d in model.diagnostics} >= {"install-unread", "file-unreadable"}

@@ -34,6 +34,11 @@ COMMANDS: dict[RosVersion, Command] = {
 }
 
 
+def launch_tool(version: RosVersion) -> str:
+    """The launch command of ``version`` by name, for what is said of it (it stops, refuses)."""
+    return " ".join(COMMANDS[version].program)
+
+
 @dataclass(frozen=True)
 class Launch:
     """A launched file: the args it is given, and what it reads for each of its inputs."""

@@ -209,8 +209,10 @@ class DomainTable:
         self._env = env_values or {}
 
     def facts(self, file: str) -> dict[str, ArgFacts]:
+        """What ``file`` says of its args (an included share path's file is read from the
+        source its package installs there)."""
         if file not in self._facts:
-            root = self._files.load(file).root
+            root = self._files.load(self.workspace.installed(file)).root
             version = self.workspace.ros_version
             self._facts[file] = file_facts(root, version) if root is not None else {}
         return self._facts[file]

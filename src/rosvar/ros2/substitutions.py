@@ -9,10 +9,12 @@ API's registry (:mod:`rosvar.ros2.api.substitutions`) rosvar computes, and rosva
 
 from __future__ import annotations
 
+import builtins
 import functools
 import math
 import os
 import posixpath
+import re
 import shlex
 import weakref
 from collections.abc import Callable, Sequence
@@ -25,21 +27,28 @@ from rosvar.bounded_yaml import check_limits
 from rosvar.files import FileCode, FileRefused, read_file
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
-from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
+from rosvar.interpreter.safe_eval import (
+    EvalEnvironment,
+    EvalFailed,
+    EvalRefused,
+    evaluate,
+    referenced_names,
+)
 from rosvar.interpreter.substitution_args import (
     MAX_COMBINATIONS,
     MAX_TERM_DEPTH,
     MAX_VALUE_SIZE,
     ValueBudget,
+    too_complex,
 )
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail, combine_bind, crossed, ite
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.terms import Apply, TermError, TermFunction, concat, register
+from rosvar.logic.terms import Apply, Hole, TermError, TermFunction, concat, register
 from rosvar.memo import Memo
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS
 from rosvar.ros2.api.unmodelled import UNMODELLED
-from rosvar.ros2.boolean_eval import boolean_expression
+from rosvar.ros2.boolean_eval import BooleanExpression, boolean_expression
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.frontends.python.text import (
     CONFIGURATION_EQUALS,
@@ -432,32 +441,38 @@ class Ros2Substituter:
         self, template: Template, parts: list[Choice[Value]], text: str
     ) -> Choice[Value] | None:
         """``$(eval template)`` (``parts``: its parts' values) computed as the condition
-        where it is true (:mod:`rosvar.ros2.boolean_eval`), with the budget and notes that
-        crossing its values would have spent and made; None where it is to be crossed."""
+        where it is true (:mod:`rosvar.ros2.boolean_eval`); None where it is to be crossed.
+        Of strings alone, with the budget and notes that crossing them would have spent and
+        made, in crossing's order; with terms, as :meth:`_over_terms`."""
         expression = boolean_expression(template, EVAL_NAMESPACES)
         if expression is None:
             return None
         values = [v for v, part in zip(parts, template, strict=True) if isinstance(part, Call)]
+        if not expression.accepts(values):
+            return None
+        if any(isinstance(leaf, Hole | Apply) for value in values for leaf in value.values()):
+            return self._over_terms(expression, template, values, text)
+        if any(isinstance(leaf, Fail) for value in values for leaf in value.values()):
+            return None  # crossed: the failures in crossing's order
         product = math.prod(len(value.branches) for value in values)
-        if product <= 1 or not expression.accepts(values) or not self.budget.fits(product):
+        if product <= 1 or not self.budget.fits(product):
             return None  # nothing to cross, or crossing warns or fails somewhere
         if product > MAX_COMBINATIONS or expression.longest(values) > MAX_VALUE_SIZE:
             return None
-        strings = cast("list[Choice[str]]", values)
-        count, first = _combinations(self.space, strings, product)
+        count, first = _combinations(self.space, values, product)
         if count == 0:
             self.budget.affordable_count(text, product)
             return Choice.empty(self.space)
-        leading = _evaluation(_text(template, first))  # a boolean by the expression's shape
+        leading = _evaluation(_text(template, cast("list[str]", first)))
         if leading not in (TRUE, FALSE):
             return None
         self.budget.affordable_count(text, product)  # the text's combinations
         if not self.budget.affordable_count(text, count):  # the evaluation of each text
-            again = functools.partial(_evaluated_text, template)
-            return self.budget.given_up(text, strings, again)
-        holds = expression.condition(self.space, strings)
+            again = functools.partial(_evaluated_with, template)
+            return self.budget.given_up(text, values, again)
+        holds = expression.condition(self.space, cast("list[Choice[Raw]]", values))
         covered = self.space.true
-        for value in strings:
+        for value in values:
             covered &= value.covered()
         where = {TRUE: covered & holds, FALSE: covered & ~holds}
         other = FALSE if leading == TRUE else TRUE
@@ -466,13 +481,53 @@ class Ros2Substituter:
             branches.append((where[other], other))
         return Choice(tuple(branches), self.space.false)
 
+    def _over_terms(
+        self,
+        expression: BooleanExpression,
+        template: Template,
+        values: list[Choice[Value]],
+        text: str,
+    ) -> Choice[Value]:
+        """The expression over values some of which are terms: ``True`` and ``False`` where
+        every term keeps its literal, the first failing substitution's failure where one
+        fails (as crossing gives it), and one unknown value where a term may leave its
+        literal, computed in a configuration. Nothing is crossed: the work grows with the
+        terms tested and the size of the conditions, which :meth:`ValueBudget.affords_tests`
+        and :meth:`ValueBudget.affords_conditions` bound."""
+        computed = functools.partial(_evaluated_with, template)
+        if not self.budget.affords_tests(text, expression.tested(values)):
+            return Choice.const(self.space, too_complex(text, values, computed))
+        false = self.space.false
+        covered = self.space.true
+        for value in values:
+            covered &= value.covered()
+        branches: list[tuple[BDD, Value]] = []
+        failed = false
+        for value in values:  # crossing fails with the first failing substitution
+            failing = false
+            for condition, leaf in value.branches:
+                if isinstance(leaf, Fail):
+                    branches.append((covered & ~failed & condition, leaf))
+                    failing |= condition
+            failed |= failing
+        escapes = expression.escapes(self.space, values)
+        holds = expression.condition(self.space, values)
+        kept = covered & ~failed & ~escapes
+        branches += [(kept & holds, TRUE), (kept & ~holds, FALSE)]
+        if escapes != false:  # one unknown value, which a configuration computes
+            unknown = too_complex(text, values, computed)
+            branches.append((covered & ~failed & escapes, unknown))
+        if not self.budget.affords_conditions(text, (branch[0] for branch in branches)):
+            return Choice.const(self.space, too_complex(text, values, computed))
+        return Choice.of(branches, false)
+
 
 TRUE, FALSE = str(True), str(False)
 
 
 def _combinations(
-    space: ConditionSpace, values: Sequence[Choice[str]], product: int
-) -> tuple[int, list[str]]:
+    space: ConditionSpace, values: Sequence[Choice[Value]], product: int
+) -> tuple[int, list[Value]]:
     """How many combinations of one branch of each of ``values`` are possible, and the first
     (that of a nested loop over them, first outermost), as :func:`crossed` gives them: all
     of them and the first branches where no two values' conditions share a variable."""
@@ -488,12 +543,6 @@ def _combinations(
         for condition, _leaf in value.branches:
             seen |= space.support(condition) if condition.var is not None else set()
     return product, [value.branches[0][1] for value in values]
-
-
-def _evaluated_text(template: Template, leaves: Sequence[str]) -> Value:
-    """``$(eval template)`` with one leaf of each of its substitutions (a give-up of
-    :meth:`Ros2Substituter._condition` computed again)."""
-    return _evaluation(_text(template, leaves))
 
 
 def _computed(computation: Computation, leaves: Sequence[Value]) -> Value:
@@ -742,12 +791,12 @@ def _plain(value: object) -> bool:
     return False
 
 
-def _text_term(compute: Callable[[str], str | Fail]) -> TermFunction:
-    """The term function of a substitution computed from its one text operand, once a
-    configuration gives that text: its failure is the term's error."""
+def _text_term(compute: Callable[..., str | Fail]) -> TermFunction:
+    """The term function of a substitution computed from its text operands, once a
+    configuration gives those texts: its failure is the term's error."""
 
-    def term(_host: object, text: object) -> str:
-        value = compute(str(text))
+    def term(_host: object, *texts: object) -> str:
+        value = compute(*map(str, texts))
         if isinstance(value, Fail):
             raise TermError(value.message)
         return value
@@ -793,27 +842,90 @@ def _not_followed(_host: object, what: str) -> str:
 register(UNKNOWN, _not_followed)
 
 
+DEFAULT_MODULES = "math"
+"""``PythonExpression``'s ``python_modules`` when not given."""
+
+
 @computed("eval")
 def _eval(args: list[Raw]) -> Value:
-    if len(args) != 1:
-        return Fail("$(eval) takes one argument", "substitution-invalid")
-    if not isinstance(args[0], str):  # a term: evaluated once the command line gives it
-        return Apply("ros2-eval", (args[0],), f"$(eval {args[0]})")
-    return _evaluation(args[0])
+    """``PythonExpression``: an expression, and optionally the modules it may use (launch's
+    comma-separated names; ``math`` when not given)."""
+    if not 1 <= len(args) <= 2:
+        return Fail("eval substitution expects 1 or 2 arguments", "substitution-invalid")
+    return _eval_value(args)
 
 
-def _evaluation(text: str) -> str | Fail:
+def _eval_value(args: Sequence[Raw]) -> Value:
+    """``$(eval)`` of its arguments; a term where one is, evaluated once a configuration
+    gives it."""
+    if not all(isinstance(arg, str) for arg in args):
+        shown = " ".join(map(str, args))
+        return Apply("ros2-eval", tuple(args), f"$(eval {shown})")
+    return _evaluation(*cast("list[str]", args))
+
+
+def _evaluated_with(template: Template, leaves: Sequence[Value]) -> Value:
+    """``$(eval template)`` with ``leaves`` for its substitutions, in order."""
+    for leaf in leaves:
+        if isinstance(leaf, Fail):
+            return leaf
+    substituted = iter(cast("Sequence[Raw]", leaves))
+    parts = [part if isinstance(part, str) else next(substituted) for part in template]
+    return _eval_value([concat(parts)])
+
+
+def _evaluation(text: str, modules: str = DEFAULT_MODULES) -> str | Fail:
+    if modules != DEFAULT_MODULES:
+        refused = _module_failure(text, modules)
+        if refused is not None:
+            return refused
     value = _evaluated.get(text)
     if value is None:
         try:
             value = evaluate(text, PYTHON_EXPRESSION)
-        except (EvalFailed, EvalRefused) as error:
+        except EvalRefused as refused:  # what the restricted evaluator does not run
+            value = Fail(f"$(eval {text}): {refused}", "eval-refused")
+        except EvalFailed as error:  # what Python raises too
             value = Fail(f"$(eval {text}): {error}", "eval-failed")
         _evaluated[text] = value
     return value
 
 
 register("ros2-eval", _text_term(_evaluation))
+
+
+def _module_failure(text: str, modules: str) -> Fail | None:
+    """Where ``PythonExpression`` with ``modules`` fails or rosvar cannot tell, before the
+    expression is evaluated as with ``math`` (which then gives its value): launch imports
+    each module, so a module rosvar does not model is refused (its import may fail, its
+    members are not known); without ``math`` its names are not defined."""
+    names = [name.strip() for name in modules.split(",")] if modules else []
+    for name in names:
+        if not name:
+            return Fail(f"$(eval {text}): ValueError: Empty module name", "eval-failed")
+        if name not in EVAL_NAMESPACES:
+            modelled = ", ".join(sorted(EVAL_NAMESPACES))
+            return Fail(
+                f"$(eval {text}): module '{name}' is not modelled by rosvar (only {modelled})",
+                "eval-refused",
+            )
+    if DEFAULT_MODULES in names:
+        return None
+    try:
+        read = referenced_names(text, EVAL_NAMESPACES) & MATH_NAMES
+    except EvalRefused:
+        return None  # the evaluation says why
+    for name in sorted(read):
+        if name in BUILTIN_NAMES:  # Python's own pow, not math's: rosvar has math's only
+            return Fail(
+                f"$(eval {text}): '{name}' without the math module is Python's builtin, "
+                "which rosvar does not model",
+                "eval-refused",
+            )
+    first = next((m.group() for m in IDENTIFIER.finditer(text) if m.group() in read), None)
+    if first is None:
+        return None
+    return Fail(f"$(eval {text}): NameError: name '{first}' is not defined", "eval-failed")
 
 
 EVALUATED_CAPACITY = 65_536
@@ -838,6 +950,10 @@ PYTHON_EXPRESSION = EvalEnvironment(
 ``math`` module and its names (its default ``python_modules``), under Python's builtins; no
 roslaunch names (``true``, ``arg``, ``env``: a ``NameError`` in ROS 2)."""
 EVAL_NAMESPACES = frozenset(PYTHON_EXPRESSION.namespaces)
+MATH_NAMES = frozenset({DEFAULT_MODULES, *PYTHON_EXPRESSION.namespaces[DEFAULT_MODULES]})
+"""The names ``math`` as a module given puts in the expression's locals."""
+BUILTIN_NAMES = frozenset(dir(builtins))
+IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 
 
 @substitution("anon")

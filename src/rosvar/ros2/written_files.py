@@ -20,8 +20,8 @@ from rosvar.interpreter.model import Raw
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.terms import Apply, PackageTable, TermError, register
 from rosvar.ros2.context import Context
-from rosvar.ros2.frontends.python.performs import written_text
-from rosvar.ros2.frontends.python.text import WRITTEN_FILE
+from rosvar.ros2.frontends.python.performs import written
+from rosvar.ros2.frontends.python.text import WRITTEN_FILE, Written
 from rosvar.ros2.substitutions import Value, substitution
 
 
@@ -29,30 +29,29 @@ from rosvar.ros2.substitutions import Value, substitution
 def _written_file(
     host: Interpretation[Context], context: Context, args: list[Raw]
 ) -> Choice[Value]:
-    if len(args) != 4:
-        return Choice.const(
-            host.space, Fail(f"$({WRITTEN_FILE}) takes four arguments", "substitution-invalid")
-        )
+    if len(args) != 5 or args[0] not in tuple(Written):
+        message = f"$({WRITTEN_FILE}) takes an aspect and four operands"
+        return Choice.const(host.space, Fail(message, "substitution-invalid"))
     if not all(isinstance(arg, str) for arg in args):
         return Choice.const(host.space, Apply(WRITTEN_FILE, tuple(args), "⟨a file written⟩"))
     workspace = host.workspace
     packages = {name: package.path for name, package in workspace.packages.items()}
-    path, qualified, name, arguments = (str(arg) for arg in args)
+    aspect, *operands = (str(arg) for arg in args)
     try:
-        text = written_text(packages, workspace.confinement(), path, qualified, name, arguments)
+        text = written(packages, workspace.confinement(), operands, Written(aspect))
     except ValueError as error:
         return Choice.const(host.space, Fail(str(error), "value-unknown"))
     return Choice.const(host.space, text)
 
 
-def _term(host: object, path: object, qualified: object, name: object, arguments: object) -> str:
-    """The same text once a configuration gives the arguments (``resolve``): the packages
-    are the host's, and so is the confinement (their folders)."""
+def _term(host: object, aspect: object, *operands: object) -> str:
+    """The same once a configuration gives the operands (``resolve``): the packages are the
+    host's, and so is the confinement (their folders)."""
     packages: Mapping[str, str] = host.paths if isinstance(host, PackageTable) else {}
     confinement = Confinement.of(packages.values())
     try:
-        return written_text(
-            dict(packages), confinement, str(path), str(qualified), str(name), str(arguments)
+        return written(
+            dict(packages), confinement, [str(o) for o in operands], Written(str(aspect))
         )
     except ValueError as error:
         raise TermError(str(error)) from None

@@ -74,15 +74,22 @@ class Workspace:
         self._index: dict[str, Package] = {}
         self._indexed = -1
         self._confinement: Confinement | None = None
-        self._confinement_key: tuple[int, int, int, bool] = (0, 0, 0, False)
+        self._confinement_key: tuple[int, int, int, int, bool] = (0, 0, 0, 0, False)
         self._shares: dict[str, ShareMap] = {}  # by package folder, read on first use
 
     def confinement(self) -> Confinement:
         """The directories the analysis may read files in (``file-outside-workspace``): the
         given ones (a given file's own), the packages, ROS_PACKAGE_PATH's."""
-        packages = [*self.packages.values(), *self.shadowed]
-        key = (len(self.roots), len(packages), len(self.dependency_roots), self.allow_outside)
+        # asked at every include and load: the key is counted, the packages listed on change
+        key = (
+            len(self.roots),
+            len(self.packages),
+            len(self.shadowed),
+            len(self.dependency_roots),
+            self.allow_outside,
+        )
         if self._confinement is None or self._confinement_key != key:
+            packages = [*self.packages.values(), *self.shadowed]
             given = [r if os.path.isdir(r) else os.path.dirname(r) for r in self.roots]
             directories = [*given, *self.dependency_roots, *(p.path for p in packages)]
             installed = self.installed if self.ros_version is RosVersion.ROS2 else None
@@ -103,9 +110,12 @@ class Workspace:
 
     def installed(self, path: str) -> str:
         """The file ``path`` names when a ROS 2 source package's folder stands for its share
-        folder: the source its install rules copy to that place in the share, else
-        ``path`` itself (as for an installed package, or a ROS 1 one, whose ``$(find)`` is
-        its source)."""
+        folder: ``path`` itself if it exists (the common ``install(DIRECTORY launch ...)``
+        keeps the source's layout; the rules are read only for a path not found), else the
+        source its install rules copy to that place of the share, else ``path`` (as for an
+        installed package, or a ROS 1 one, whose ``$(find)`` is its source)."""
+        if self.ros_version is not RosVersion.ROS2 or os.path.exists(path):
+            return path
         share = self.share_of(path)
         if share is None:
             return path

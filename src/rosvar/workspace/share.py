@@ -4,12 +4,14 @@
 build installs there, not the source tree: ros2_control_demos' ``install(DIRECTORY
 bringup/config DESTINATION share/${PROJECT_NAME})`` makes ``bringup/config/x.yaml`` the
 share's ``config/x.yaml``. rosvar lets a source package's own folder stand for its share
-folder (the paths it shows are those), and reads a path below it from the source file the
-install copies there: CMake's ``install(DIRECTORY|FILES|PROGRAMS ... DESTINATION
-share/<package>[/sub])`` and ``ament_auto_package(INSTALL_TO_SHARE ...)``, read by
+folder (the paths it shows are those), and reads a path below it that is not found from the
+source file the install copies there (a path that exists is read where it is: the common
+``install(DIRECTORY launch config ...)`` keeps the source's layout): CMake's
+``install(DIRECTORY|FILES|PROGRAMS ... DESTINATION share/<package>[/sub])`` and
+``ament_auto_package(INSTALL_TO_SHARE ...)``, read by
 :mod:`rosvar.workspace.interfaces.cmake`, and an ament_python ``setup.py``'s ``data_files``
-(:mod:`rosvar.workspace.python_setup`). A path no rule covers is read where it is, as is a
-path below a rule rosvar cannot read (told once per rule, ``install-unread``).
+(:mod:`rosvar.workspace.python_setup`). A path no rule covers stays as it is, as does a path
+below a rule rosvar cannot read (told once per rule, ``install-unread``).
 """
 
 from __future__ import annotations

@@ -233,4 +233,146 @@ def generate_launch_description():
         },
         [{}],
     ),
+    "python-helper-writes-a-parameter-file": (
+        {
+            "config/robot.yaml": """planner:
+  ros__parameters:
+    rate: 1.0
+    frame: map
+    limits: {speed: 0.5, turn: 1}
+tracker:
+  ros__parameters:
+    rate: 4
+    frame: odom
+""",
+            "config/template.yaml": """tracker:
+  ros__parameters:
+    topic: <ns>/scan
+""",
+            "pkg_helpers/__init__.py": "from .files import Rewritten, Replaced\n",
+            "pkg_helpers/files.py": """import tempfile
+
+import launch
+import yaml
+from launch.utilities import normalize_to_list_of_substitutions, perform_substitutions
+
+
+class Slot:
+    def __init__(self, mapping, key):
+        self.mapping = mapping
+        self.key = key
+
+    def put(self, value):
+        self.mapping[self.key] = value
+
+
+def slots(data):
+    try:
+        for key in data.keys():
+            yield from slots(data[key])
+            yield Slot(data, key)
+    except AttributeError:
+        return
+
+
+class Rewritten(launch.Substitution):
+    def __init__(self, source, values, under=None, typed=False):
+        super().__init__()
+        self.__source = normalize_to_list_of_substitutions(source)
+        self.__values = {k: normalize_to_list_of_substitutions(v) for k, v in values.items()}
+        self.__under = None if under is None else normalize_to_list_of_substitutions(under)
+        self.__typed = typed
+
+    @property
+    def source(self):
+        return self.__source
+
+    def typed(self, text):
+        if self.__typed:
+            try:
+                return float(text) if '.' in text else int(text)
+            except ValueError:
+                pass
+        if text.lower() in ('true', 'false'):
+            return text.lower() == 'true'
+        return text
+
+    def perform(self, context):
+        with open(perform_substitutions(context, self.source)) as stream:
+            data = yaml.safe_load(stream)
+        values = {k: perform_substitutions(context, v) for k, v in self.__values.items()}
+        for slot in slots(data):
+            if slot.key in values:
+                slot.put(self.typed(values[slot.key]))
+        if self.__under is not None:
+            under = perform_substitutions(context, self.__under)
+            if under:
+                data = {under: data}
+        written = tempfile.NamedTemporaryFile(mode='w', delete=False)
+        yaml.dump(data, written)
+        written.close()
+        return written.name
+
+
+class Replaced(launch.Substitution):
+    def __init__(self, source, replacements, condition=None):
+        super().__init__()
+        self.__source = normalize_to_list_of_substitutions(source)
+        self.__replacements = replacements
+        self.__condition = condition
+
+    def perform(self, context):
+        if self.__condition is not None and not self.__condition.evaluate(context):
+            return perform_substitutions(context, self.__source)
+        pairs = {k: perform_substitutions(context, normalize_to_list_of_substitutions(v))
+                 for k, v in self.__replacements.items()}
+        written = tempfile.NamedTemporaryFile(mode='w', delete=False)
+        for line in open(perform_substitutions(context, self.__source)):
+            for key, value in pairs.items():
+                line = line.replace(key, value)
+            written.write(line)
+        written.close()
+        return written.name
+""",
+            "main.launch.py": """import os
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from launch_ros.descriptions import ParameterFile
+from pkg_helpers import Replaced, Rewritten
+
+
+def generate_launch_description():
+    share = get_package_share_directory('pkg')
+    ns = LaunchConfiguration('ns')
+    rewritten = ParameterFile(
+        Rewritten(LaunchConfiguration('params'), under=ns, typed=True,
+                  values={'rate': LaunchConfiguration('rate'), 'speed': '0.75',
+                          'frame': LaunchConfiguration('frame')}),
+        allow_substs=True)
+    replaced = Replaced(os.path.join(share, 'config', 'template.yaml'), {'<ns>': ('/', ns)})
+    renamed = Replaced(LaunchConfiguration('params'), {'map': 'world'},
+                       condition=IfCondition(LaunchConfiguration('rename')))
+    chained = Rewritten(renamed, values={'rate': '9'})
+    return LaunchDescription([
+        DeclareLaunchArgument('ns', default_value=''),
+        DeclareLaunchArgument('rate', default_value='2'),
+        DeclareLaunchArgument('frame', default_value='True'),
+        DeclareLaunchArgument('rename', default_value='false'),
+        DeclareLaunchArgument('params',
+                              default_value=os.path.join(share, 'config', 'robot.yaml')),
+        Node(package='pkg', executable='planner', name='planner', namespace=ns,
+             parameters=[rewritten]),
+        Node(package='pkg', executable='tracker', name='tracker', namespace=ns,
+             parameters=[rewritten, replaced]),
+        Node(package='pkg', executable='planner', name='planner', namespace='chained',
+             parameters=[chained]),
+    ])
+""",
+        },
+        [{}, {"ns": "r1", "rate": "2.5", "frame": "base"}, {"rate": "fast", "rename": "true"}],
+    ),
 }

@@ -16,6 +16,7 @@ from urllib.parse import urlsplit
 import pytest
 
 from configuration.helpers import configurator
+from conftest import PACKAGE_XML
 from outputs.web.live import Live, running
 from outputs.web.test_overview import expected_links, wired_configurator, wired_workspace
 from rosvar.configuration.choices import UserChoice
@@ -619,6 +620,7 @@ def test_what_stops_the_product_stays_in_view_until_it_is_gone(
 
 
 SLOW_S = 4.0
+ROS2_EXPORT = "<export><build_type>ament_cmake</build_type></export>\n  "
 
 
 def test_a_slow_choice_of_one_client_keeps_no_other_waiting(
@@ -1008,3 +1010,25 @@ def test_linked_boxes_are_all_in_view(page: Any, ws: LaunchWorkspace) -> None:
                }"""
         )
         assert len(app.units("group")) == 12 and outside == []
+
+
+def test_a_ros2_product_that_does_not_launch_names_ros2_launch(
+    page: Any, ws: LaunchWorkspace
+) -> None:
+    """The issue 28 audit: a ROS 2 product said roslaunch would stop."""
+    ros2 = PACKAGE_XML.format(name="pkg").replace("<license>", ROS2_EXPORT + "<license>")
+    ws.write("package.xml", ros2)
+    ws.write(
+        "launch/t.launch.xml",
+        '<launch><arg name="fast" default="false"/>\n'
+        '  <node pkg="pkg" exec="e" name="n" namespace="/$(eval \'1/0\')" if="$(var fast)"/>\n'
+        "</launch>\n",
+    )
+    with running(configurator(ws)) as live:
+        app = App(page, live)
+        app.choose("t.launch.xml:fast=true", "select")  # the one file's one arg: complete
+        assert app.state["complete"] and app.state["launches"] is False
+        status = page.locator("#command-status").inner_text()
+        assert "This product does not launch: ros2 launch would stop at" in status
+        assert "ZeroDivisionError" in status
+        assert page.locator("#command.fails").inner_text().startswith("ros2 launch pkg ")

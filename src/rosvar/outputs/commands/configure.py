@@ -63,6 +63,7 @@ def _print_state(state: ConfigurationState, ros: RosVersion) -> None:
     """The summary of a configuration step, for people (a ROS 2 node holds its own
     parameters: they are counted on the nodes, not as the parameter server's)."""
     from rosvar.analyses.feature_model.features import FeatureKind
+    from rosvar.configuration.command import launch_tool
     from rosvar.configuration.engine import Selection
     from rosvar.configuration.graph import ElementKind
     from rosvar.configuration.presence import Presence
@@ -107,8 +108,10 @@ def _print_state(state: ConfigurationState, ros: RosVersion) -> None:
             or "nothing to launch (no file selected, or an <other> value lacks its text)"
         )
         if state.launches is False:
-            tool = "ros2 launch" if ros is RosVersion.ROS2 else "roslaunch"
-            print(f"this product does not launch: {tool} stops at the errors or conflicts above")
+            print(
+                f"this product does not launch: {launch_tool(ros)} stops at the errors or "
+                "conflicts above"
+            )
         return
     open_files = [k for k, f in files if f.state == Selection.UNSELECTED]
     open_args = [

@@ -27,6 +27,9 @@ class Signature:
     function: bool = False
     """A function returning the string the substitution gives (``ament_index_python``'s,
     ``os.getenv``), not a substitution object."""
+    listed: tuple[str, ...] = ()
+    """Arguments launch takes as a list of texts, one item each (``python_modules``), which
+    the ``$(...)`` form writes as one comma-separated text."""
 
 
 @dataclass(frozen=True)
@@ -80,7 +83,15 @@ expose(
     ),
 )
 expose("command", Signature("launch.Command", ("command", "on_stderr"), optional=1))
-expose("eval", Signature("launch.PythonExpression", ("expression",)))
+expose(
+    "eval",
+    Signature(
+        "launch.PythonExpression",
+        ("expression", "python_modules"),
+        optional=1,
+        listed=("python_modules",),
+    ),
+)
 
 # -- launch_ros, and ament_index_python's functions giving the same paths -------------------
 expose(

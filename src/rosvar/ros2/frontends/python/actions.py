@@ -20,7 +20,7 @@ from rosvar.ros2.api.actions import ACTIONS, Action, Param, Slot
 from rosvar.ros2.api.event_handlers import EVENT_HANDLERS, EventHandler
 from rosvar.ros2.frontends.python import launch_time, written
 from rosvar.ros2.frontends.python.calls import CALLS, Call
-from rosvar.ros2.frontends.python.text import Text, render, unknown
+from rosvar.ros2.frontends.python.text import Text, Written, render, unknown
 from rosvar.ros2.frontends.python.values import (
     Condition,
     Conditional,
@@ -105,12 +105,8 @@ def _written_parameters(call: Call, child: Entity, item: WrittenFile | Parameter
     this frontend only), ``from``, what wrote it (:mod:`.written`)."""
     file = item if isinstance(item, WrittenFile) else item.path
     assert isinstance(file, WrittenFile)
-    text = file.text
-    if text is None:
-        known = written.content(file)
-        text = Text.of(known) if isinstance(known, str) else Text.of(unknown(known.what))
     child.attributes["from"] = render(Text.of(file.label))
-    child.attributes["content"] = render(text)
+    child.attributes["content"] = render(written.text_of(file, Written.TEXT))
     if isinstance(item, ParameterFile) and item.allow_substs is not None:
         set_attribute(call, child, "allow_substs", item.allow_substs)
 
@@ -249,6 +245,7 @@ def _action(spec: Action) -> Callable[[Call], Value]:
         entity = Entity(spec.tag, {}, call.location)
         given: list[tuple[Param, Value]] = []
         by_name = {param.python: param for param in spec.params}
+        renamed = {param.before: param for param in spec.params if param.before}
         for param, value in zip(spec.params, call.args, strict=False):
             given.append((param, value))
         for name, value in call.kwargs.items():
@@ -256,6 +253,15 @@ def _action(spec: Action) -> Callable[[Call], Value]:
                 _set_condition(call, entity, value)
             elif name in by_name:
                 given.append((by_name[name], value))
+            elif name in renamed:
+                param = renamed[name]
+                call.sink.warning(
+                    "python-launch-renamed",
+                    f"{call.name}() argument '{name}' is launch_ros' name before Galactic, "
+                    f"which later releases refuse: read as '{param.python}'",
+                    call.location,
+                )
+                given.append((param, value))
             else:
                 call.sink.note(
                     "python-launch-argument",

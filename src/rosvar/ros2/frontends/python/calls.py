@@ -23,7 +23,7 @@ from rosvar.ros2.api.registry import python_name
 from rosvar.ros2.api.sources import SOURCES
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS, Signature
 from rosvar.ros2.api.unmodelled import UNMODELLED
-from rosvar.ros2.frontends.python import launch_time
+from rosvar.ros2.frontends.python import launch_time, written
 from rosvar.ros2.frontends.python.text import (
     CONFIGURATION_EQUALS,
     EMPTY,
@@ -31,6 +31,7 @@ from rosvar.ros2.frontends.python.text import (
     PATH_JOIN,
     Sub,
     Text,
+    Written,
     unknown,
 )
 from rosvar.ros2.frontends.python.values import (
@@ -44,6 +45,7 @@ from rosvar.ros2.frontends.python.values import (
     Source,
     Unknown,
     Value,
+    WrittenFile,
 )
 from rosvar.ros2.frontends.typed_text import typed_text
 
@@ -99,6 +101,8 @@ class Call:
             return value.path
         if isinstance(value, FilePath):
             return path_text(value)
+        if isinstance(value, WrittenFile):  # its name
+            return written.text_of(value, Written.PATH)
         if isinstance(value, Conditional):  # the text of the branch taken
             then, otherwise = (self.text(value.then), self.text(value.otherwise))
             chosen = launch_time.chosen(
@@ -182,7 +186,11 @@ def _substitution(name: str, signature: Signature) -> Builder:
             )
             if value is None and not required:
                 break
-            args.append(call.text(value))
+            if keyword in signature.listed and isinstance(value, list | tuple):
+                items = [call.text(item) for item in value]
+                args.append(Text.of(*[part for item in items for part in (",", item)][1:]))
+            else:
+                args.append(call.text(value))
         if name in COMPARISONS:  # '' is the text [] there
             args = [arg if arg.parts else Text.of(Sub(EMPTY)) for arg in args]
         return Text.of(Sub(name, tuple(args)))

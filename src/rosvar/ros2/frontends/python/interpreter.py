@@ -315,9 +315,10 @@ class Interpreter:
         self.created: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
         """Actions made under guards, with the guards (so a branch does not guard twice)."""
         self.descriptions: dict[int, tuple[Entity, tuple[Text, ...]]] = {}
-        self.rereading = False
+        self.rereading: Callable[[str], str] | None = None
         """Set where a ``perform`` is read again in one configuration (:mod:`.performs`):
-        a file it writes is that file, not its deferred text."""
+        a file it writes is that file, not its deferred text; it gives the text of a path
+        naming a file written so (``WRITTEN_PATH``)."""
         self.yielded: list[list[Value]] = []
         """What each generator being called has yielded, innermost last."""
         self.default_files = DefaultFiles()
@@ -1779,7 +1780,7 @@ class Interpreter:
         """The text ``perform`` gives; where it gives a file it writes, that file, its text
         computed per configuration (:mod:`.written`): this reading's diagnostics of it,
         made of values not known yet, are left out."""
-        if self.rereading:
+        if self.rereading is not None:
             made = self.call_function(perform, [instance, LaunchContext()], {}, node)
             if isinstance(made, WrittenFile):
                 return made
@@ -1789,7 +1790,7 @@ class Interpreter:
             made = self.call_function(perform, [instance, LaunchContext()], {}, node)
         finally:
             scratch, self.sink = self.sink, outer
-        if isinstance(made, WrittenFile):
+        if written.written_in(made):
             return written.deferred(self, cls, args, kwargs, node)
         self.sink.items.extend(scratch.items)
         return Call(cls.name, [], {}, self.location(node), self.sink).text(made)
@@ -1815,6 +1816,9 @@ class Interpreter:
         if isinstance(receiver, Instance | Class | Super):
             return self._call_class_method(receiver, name, args, kwargs, node)
         if isinstance(receiver, Condition) and name == "evaluate":
+            literal = receiver.text.literal()
+            if literal is not None:  # launch's truth of a known text
+                return (literal.strip().lower() in ("true", "1")) == (receiver.attribute == "if")
             return launch_time.evaluated(receiver.attribute, receiver.text)
         if isinstance(receiver, FileHandle) and name == "read" and not args:
             return reads.text(self, receiver, node)

@@ -11,10 +11,11 @@ reads its ``perform``: the text of the file it writes, or ``ValueError`` saying 
 from __future__ import annotations
 
 import ast
+import json
 
 from rosvar.diagnostics import DiagnosticSink
 from rosvar.files import Confinement, FileRefused, read_file
-from rosvar.ros2.frontends.python import written
+from rosvar.ros2.frontends.python import written as written_files
 from rosvar.ros2.frontends.python.interpreter import (
     MODULE_NAME,
     Interpreter,
@@ -22,46 +23,128 @@ from rosvar.ros2.frontends.python.interpreter import (
     PythonRaise,
 )
 from rosvar.ros2.frontends.python.modules import MAX_MODULE_BYTES, ModulePath
-from rosvar.ros2.frontends.python.values import Class, Scope, Unknown, WrittenFile
+from rosvar.ros2.frontends.python.reads import MAX_READ_BYTES
+from rosvar.ros2.frontends.python.text import WRITTEN_PATH, Text, Written
+from rosvar.ros2.frontends.python.values import (
+    Class,
+    Condition,
+    Scope,
+    Unknown,
+    Value,
+    WrittenFile,
+)
+
+MAX_NESTED = 8
+"""Files written from files written, read one in the other (nav2's ``RewrittenYaml`` of a
+``ReplaceString``); deeper, the text is not computed."""
 
 
-def written_text(
-    packages: dict[str, str],
-    confinement: Confinement,
-    path: str,
-    qualified: str,
-    name: str,
-    arguments: str,
+def written(
+    packages: dict[str, str], confinement: Confinement, operands: list[str], aspect: Written
 ) -> str:
-    """The text an object of class ``name`` of module ``qualified`` (file ``path``) made of
-    ``arguments`` (the Python literal of its positional and keyword arguments) writes."""
+    """The text or path (``aspect``) of the file an object names in its ``perform``:
+    ``operands`` are the file and qualified name of the class's module, the class's name and
+    the Python literal of the constructor's arguments (``$(rosvar-written-file)``'s). A file
+    it writes has the path :data:`WRITTEN_PATH` then the operands, whose text this function
+    computes again where the path is read; a path it gives is that file, read through the
+    gate. ``ValueError`` says why there is none."""
+    return _Reading(packages, confinement).written(operands, aspect, 0)
+
+
+class _Reading:
+    def __init__(self, packages: dict[str, str], confinement: Confinement) -> None:
+        self.packages = packages
+        self.confinement = confinement
+
+    def written(self, operands: list[str], aspect: Written, depth: int) -> str:
+        if len(operands) != 4:
+            raise ValueError("a file written is named by four operands")
+        if depth > MAX_NESTED:
+            raise ValueError(f"files written from files written, over {MAX_NESTED} deep")
+        path, qualified, name, arguments = operands
+        made = self.performed(path, qualified, name, arguments, depth)
+        if isinstance(made, WrittenFile):
+            if aspect is Written.PATH:
+                return WRITTEN_PATH + json.dumps(operands)
+            text = written_files.content(made)
+            if isinstance(text, str):
+                return text
+            raise ValueError(f"the file {name}() writes is not known ({text.what})")
+        if aspect is Written.PATH:
+            return made
+        return self.read(made, depth)
+
+    def read(self, path: str, depth: int) -> str:
+        """The text of ``path``: a file written, computed again, or a file of the workspace."""
+        if path.startswith(WRITTEN_PATH):
+            try:
+                operands = json.loads(path[len(WRITTEN_PATH) :])
+            except ValueError:
+                raise ValueError(f"{path[:200]} names no file written") from None
+            if not (isinstance(operands, list) and all(isinstance(o, str) for o in operands)):
+                raise ValueError(f"{path[:200]} names no file written")
+            return self.written(operands, Written.TEXT, depth + 1)
+        try:
+            return read_file(path, self.confinement, MAX_READ_BYTES).decode("utf-8-sig")
+        except (FileRefused, OSError, UnicodeDecodeError) as error:
+            raise ValueError(f"{path} is not read: {error}") from None
+
+    def performed(
+        self, path: str, qualified: str, name: str, arguments: str, depth: int
+    ) -> WrittenFile | str:
+        """What ``perform`` of an object of class ``name`` made of ``arguments`` gives: the
+        file it writes, or a path."""
+        given = _arguments(name, arguments)
+        sink = DiagnosticSink()
+        reader = Interpreter(path, "", sink, ModulePath(self.packages, self.confinement))
+        reader.rereading = lambda named: self.read(named, depth)
+        site = ast.Pass()
+        try:
+            scope = _module_scope(reader, path, qualified, site)
+            cls = None if scope is None else scope.names.get(name)
+            if not isinstance(cls, Class):
+                raise ValueError(f"{qualified}.{name} is not read")
+            made = reader.instantiate(cls, list(given[0]), dict(given[1]), site)
+        except OutOfBudget:
+            raise ValueError(f"{name}().perform() takes more than the step budget") from None
+        except PythonRaise as raised:
+            raise ValueError(f"{name}().perform() raises {raised.what()}") from None
+        except RecursionError:
+            raise ValueError(f"{name}().perform() nests too deeply") from None
+        if isinstance(made, WrittenFile):
+            return made
+        if isinstance(made, Text) and made.literal() is not None:
+            return str(made.literal())
+        reasons = [f"{d.location}: {d.message}" for d in sink.items] or ["not known"]
+        raise ValueError(f"what {name}().perform() gives is not known ({reasons[0]})")
+
+
+def _arguments(name: str, arguments: str) -> tuple[tuple[Value, ...], dict[str, Value]]:
+    """The constructor's arguments from their literal, conditions made again."""
     try:
         given = ast.literal_eval(arguments)
     except (ValueError, SyntaxError, RecursionError, MemoryError):
         raise ValueError(f"the arguments of {name}() are not known: {arguments[:200]}") from None
     if not (isinstance(given, tuple) and len(given) == 2 and isinstance(given[1], dict)):
         raise ValueError(f"the arguments of {name}() are not known: {arguments[:200]}")
-    sink = DiagnosticSink()
-    reader = Interpreter(path, "", sink, ModulePath(packages, confinement))
-    reader.rereading = True
-    site = ast.Pass()
-    try:
-        scope = _module_scope(reader, path, qualified, site)
-        cls = None if scope is None else scope.names.get(name)
-        if not isinstance(cls, Class):
-            raise ValueError(f"{qualified}.{name} is not read")
-        made = reader.instantiate(cls, list(given[0]), dict(given[1]), site)
-    except OutOfBudget:
-        raise ValueError(f"{name}().perform() takes more than the step budget") from None
-    except PythonRaise as raised:
-        raise ValueError(f"{name}().perform() raises {raised.what()}") from None
-    except RecursionError:
-        raise ValueError(f"{name}().perform() nests too deeply") from None
-    text = written.content(made) if isinstance(made, WrittenFile) else Unknown("no file")
-    if isinstance(text, str):
-        return text
-    reasons = [f"{d.location}: {d.message}" for d in sink.items] or [text.what]
-    raise ValueError(f"the file {name}() writes is not known ({reasons[0]})")
+    positional = _made(given[0])
+    keywords = _made(given[1])
+    assert isinstance(positional, tuple) and isinstance(keywords, dict)
+    return positional, {str(key): value for key, value in keywords.items()}
+
+
+def _made(value: object) -> Value:
+    """A literal argument as the reading's value (``(CONDITION, 'if', text)``: a condition)."""
+    if isinstance(value, tuple) and len(value) == 3 and value[0] == written_files.CONDITION:
+        return Condition(str(value[1]), Text.of(str(value[2])))
+    if isinstance(value, tuple | list):
+        items = [_made(item) for item in value]
+        return tuple(items) if isinstance(value, tuple) else items
+    if isinstance(value, dict):
+        return {key: _made(item) for key, item in value.items()}
+    if value is None or isinstance(value, str | int | float | bool):
+        return value
+    return Unknown(f"an argument of type {type(value).__name__}")
 
 
 def _module_scope(reader: Interpreter, path: str, qualified: str, site: ast.AST) -> Scope | None:

@@ -11,6 +11,7 @@ launch time only, a refused read, or YAML that fails stays unknown, reported.
 from __future__ import annotations
 
 import ast
+from collections.abc import Callable
 from typing import Protocol
 
 import yaml
@@ -21,7 +22,7 @@ from rosvar.files import FileRefused, read_file
 from rosvar.ros2.frontends.python import launch_time
 from rosvar.ros2.frontends.python.default_files import DefaultFiles
 from rosvar.ros2.frontends.python.modules import ModulePath
-from rosvar.ros2.frontends.python.text import PYTHON_YAML, Sub, Text
+from rosvar.ros2.frontends.python.text import PYTHON_YAML, WRITTEN_PATH, Sub, Text
 from rosvar.ros2.frontends.python.values import (
     Dynamic,
     FileHandle,
@@ -38,6 +39,8 @@ class Interpreter(Protocol):
     modules: ModulePath | None
     sink: DiagnosticSink
     default_files: DefaultFiles
+
+    rereading: Callable[[str], str] | None
 
     def path_of(self, value: Value) -> str | None: ...
 
@@ -73,6 +76,11 @@ def text(interpreter: Interpreter, handle: FileHandle, node: ast.AST) -> Value:
     if isinstance(handle.path, Text):
         return interpreter.not_followed("the text of a file named at launch time", node)
     modules = interpreter.modules
+    if handle.path.startswith(WRITTEN_PATH) and interpreter.rereading is not None:
+        try:  # a file a helper wrote, named in this configuration
+            return interpreter.rereading(handle.path)
+        except ValueError as error:
+            return interpreter.not_followed(f"a read of a file written: {error}", node)
     if modules is None or modules.confinement is None:
         return interpreter.not_followed(f"a read of {handle.path} (no workspace)", node)
     try:

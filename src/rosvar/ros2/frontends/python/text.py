@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from enum import StrEnum
 
 UNKNOWN = "rosvar-unknown"
 """The substitution standing for a value the static reading cannot follow; its argument
@@ -37,10 +38,23 @@ NODE_NAME = "rosvar-node-name"
 place, as launch_ros's ``node_name`` of a ``ComposableNodeContainer`` object given as a
 ``LoadComposableNodes`` target (XML names the target as text)."""
 WRITTEN_FILE = "rosvar-written-file"
-"""``$(rosvar-written-file MODULE QUALIFIED CLASS ARGUMENTS)``: the text of the file a
-workspace's ``Substitution`` subclass writes (``tempfile``, ``yaml.dump``, ``write``) and names
-in its ``perform``, computed by reading that ``perform`` again once a configuration gives the
-constructor's ``ARGUMENTS`` (a Python literal); no launch file has it."""
+"""``$(rosvar-written-file ASPECT MODULE QUALIFIED CLASS ARGUMENTS)``: the file a workspace's
+``Substitution`` subclass names in its ``perform`` (one it writes: ``tempfile``,
+``yaml.dump``, ``write``), its text or its path (:class:`Written`), computed by reading that
+``perform`` again once a configuration gives the constructor's ``ARGUMENTS`` (a Python
+literal); no launch file has it."""
+WRITTEN_PATH = "/rosvar-written-file/"
+"""How the path of a file written so begins: then the JSON list of the substitution's
+operands, from which a read of the path computes the text (no such file exists)."""
+
+
+class Written(StrEnum):
+    """What ``$(rosvar-written-file)`` gives of the file."""
+
+    TEXT = "text"
+    PATH = "path"
+
+
 EMPTY = "rosvar-empty"
 """The empty text as an operand of ``$(equals)``: launch's grammar reads ``''`` there as the
 text ``[]``, which the Python frontend's ``''`` is not."""

@@ -99,11 +99,12 @@ class LaunchYaml:
 class WrittenFile:
     """A file the reading's Python writes (``tempfile.NamedTemporaryFile``): the texts
     written in order (``write``, ``yaml.dump``), never a real file; its name stands for it.
-    ``text``, where set, is the substitution giving its whole text at launch time (a
-    workspace's ``Substitution`` whose ``perform`` writes it, read again per configuration)."""
+    ``deferred``, where set, are the operands of the substitution giving its text or path
+    at launch time (a workspace's ``Substitution`` whose ``perform`` names it, read again per
+    configuration)."""
 
     parts: list[Value] = field(default_factory=list)
-    text: Text | None = None
+    deferred: tuple[Text, ...] | None = None
     label: str = "a file written at launch time"
 
 

@@ -20,9 +20,10 @@ from typing import Protocol
 import yaml
 
 from rosvar.ros2.frontends.python import launch_time
-from rosvar.ros2.frontends.python.text import WRITTEN_FILE, Sub, Text
+from rosvar.ros2.frontends.python.text import WRITTEN_FILE, Sub, Text, Written, unknown
 from rosvar.ros2.frontends.python.values import (
     Class,
+    Condition,
     Conditional,
     Dynamic,
     Key,
@@ -31,6 +32,8 @@ from rosvar.ros2.frontends.python.values import (
     WrittenFile,
 )
 
+CONDITION = "rosvar-condition"
+"""The tag of a condition among a constructor's arguments: ``(CONDITION, 'if', text)``."""
 MAX_WRITTEN = 1024 * 1024
 """Largest text a launch file's Python writes to one file (as the largest it reads)."""
 
@@ -91,6 +94,25 @@ def content(file: WrittenFile) -> str | Unknown:
     return "".join(part for part in file.parts if isinstance(part, str))
 
 
+def text_of(file: WrittenFile, aspect: Written) -> Text:
+    """The substitution giving ``file``'s text or path at launch time; a file written by the
+    launch file's own code has its text known (no path: nothing names it)."""
+    if file.deferred is not None:
+        return Text.of(Sub(WRITTEN_FILE, (Text.of(aspect), *file.deferred)))
+    known = content(file)
+    if aspect is Written.TEXT and isinstance(known, str):
+        return Text.of(known)
+    what = known.what if isinstance(known, Unknown) else "the path of a file written"
+    return Text.of(unknown(what))
+
+
+def written_in(value: Value) -> bool:
+    """Whether ``value`` is a file written, or one in a branch of a launch-time ``if``."""
+    if isinstance(value, Conditional):
+        return written_in(value.then) or written_in(value.otherwise)
+    return isinstance(value, WrittenFile)
+
+
 def deferred(
     interpreter: Interpreter, cls: Class, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
@@ -105,8 +127,7 @@ def deferred(
     literal = arguments.literal()
     given = Text.of(literal) if literal is not None else Text.of(Sub("eval", (arguments,)))
     operands = (Text.of(path or interpreter.filename), Text.of(qualified), Text.of(cls.name))
-    text = Text.of(Sub(WRITTEN_FILE, (*operands, given)))
-    return WrittenFile(text=text, label=f"{cls.name}() of {qualified}")
+    return WrittenFile(deferred=(*operands, given), label=f"{cls.name}() of {qualified}")
 
 
 def _module(cls: Class) -> tuple[str | None, str] | None:
@@ -126,6 +147,11 @@ def _source(value: Value) -> Text | None:
     give (``LaunchConfiguration('ns')``: ``$(rosvar-python-string $(var ns))``)."""
     if isinstance(value, Text):
         return launch_time.quoted(value)
+    if isinstance(value, Condition):  # made again by the reading (`performs.py`)
+        tag = f"({CONDITION!r}, {value.attribute!r}, "
+        return Text.of(tag, launch_time.quoted(value.text), ")")
+    if isinstance(value, WrittenFile):
+        return launch_time.quoted(text_of(value, Written.PATH))
     if isinstance(value, dict):
         parts: list[str | Text] = ["{"]
         for index, (key, item) in enumerate(value.items()):

@@ -111,16 +111,17 @@ export class Bar {
   }
 }
 
-// Why the finished product does not launch (the first error roslaunch stops at, or the first
-// certain clash), and what rosvar could not read of the selected files: null when neither.
+// Why the finished product does not launch (the first error its launch tool stops at, or the
+// first certain clash), and what rosvar could not read of the selected files: null when neither.
 function statusText(state, fails) {
   const lines = [];
   if (fails) {
+    const tool = state.command.startsWith("ros2 launch ") ? "ros2 launch" : "roslaunch";
     const stops = (state.graph.errors ?? []).filter((error) => error.presence === "present");
     const clashes = (state.conflicts ?? []).filter((conflict) => conflict.status === "certain");
     const first = stops.length
-      ? `roslaunch would stop at ${shortPath(stops[0].file)}:${stops[0].line}: ${stops[0].message}`
-      : `roslaunch refuses ${clashes[0].names.slice(0, 3).join(", ")} twice (${clashes[0].files.map(shortPath).join(" and ")})`;
+      ? `${tool} would stop at ${shortPath(stops[0].file)}:${stops[0].line}: ${stops[0].message}`
+      : `${tool} refuses ${clashes[0].names.slice(0, 3).join(", ")} twice (${clashes[0].files.map(shortPath).join(" and ")})`;
     const more = stops.length + clashes.length - 1;
     lines.push(`This product does not launch: ${first}${more > 0 ? ` (and ${more} more)` : ""}.`);
   }
