@@ -592,6 +592,16 @@ class ValueBudget:
         :data:`MAX_FILE_COMBINATIONS` (memos replay such work, and spend as much)."""
         return self.combinations + combinations + MAX_COMBINATIONS <= MAX_FILE_COMBINATIONS
 
+    def given_up(
+        self, text: str, choices: Sequence[Choice[object]], combination: Combination | None
+    ) -> Choice[Value]:
+        """:func:`too_complex` where every one of ``choices`` has a value (as combining them
+        would have it)."""
+        covered = self.space.true
+        for choice in choices:
+            covered &= choice.covered()
+        return Choice.of([(covered, too_complex(text, choices, combination))], self.space.false)
+
     def join(
         self,
         text: str,
@@ -602,7 +612,7 @@ class ValueBudget:
         ``choices`` (a failing leaf fails it), or :func:`too_complex` beyond the bounds."""
         concatenate = functools.partial(_concatenated, text, parts)
         if not self.affordable(text, choices):
-            return Choice.const(self.space, too_complex(text, choices, concatenate))
+            return self.given_up(text, choices, concatenate)
         result = combine(choices, concatenate)
         if any(_oversized(leaf, text) for leaf in result.values()):
             self.note(

@@ -250,6 +250,24 @@ def substitution(name: str) -> Callable[[Handler], Handler]:
     return register
 
 
+Computation = Callable[[list[Raw]], Value]
+COMPUTED: dict[str, Computation] = {}
+"""The substitutions whose value follows from their arguments' values alone (no launch
+configuration, no file, no workspace): a value given up over the work limits is computed
+again from one leaf of each argument in a configuration (:mod:`rosvar.logic.given_up`)."""
+
+
+def computed(name: str) -> Callable[[Computation], Computation]:
+    """Register ``$(name ...)`` as a :data:`COMPUTED` substitution: its handler too."""
+
+    def register(computation: Computation) -> Computation:
+        COMPUTED[name] = computation
+        substitution(name)(lambda host, _context, args: Choice.const(host.space, computation(args)))
+        return computation
+
+    return register
+
+
 PURE = frozenset(
     {
         "var",
@@ -413,8 +431,10 @@ class Ros2Substituter:
             arguments.append(self._joined(parts, text))
         if not arguments:
             return handler(self.host, context, [])
+        computation = COMPUTED.get(part.name)
+        again = None if computation is None else functools.partial(_computed, computation)
         if not self.budget.affordable(text, arguments):
-            return Choice.const(self.space, too_complex(text))
+            return self.budget.given_up(text, arguments, again)
         return combine_bind(arguments, lambda leaves: _call(handler, self.host, context, leaves))
 
     def _condition(
@@ -448,7 +468,8 @@ class Ros2Substituter:
             return None
         self.budget.affordable_count(text, product)  # the text's combinations
         if not self.budget.affordable_count(text, count):  # the evaluation of each text
-            return Choice.const(self.space, too_complex(text))
+            again = functools.partial(_evaluated_with, template)
+            return self.budget.given_up(text, values, again)
         holds = expression.condition(self.space, cast("list[Choice[Raw]]", values))
         covered = self.space.true
         for value in values:
@@ -522,6 +543,15 @@ def _combinations(
         for condition, _leaf in value.branches:
             seen |= space.support(condition) if condition.var is not None else set()
     return product, [value.branches[0][1] for value in values]
+
+
+def _computed(computation: Computation, leaves: Sequence[Value]) -> Value:
+    """A :data:`COMPUTED` substitution of one leaf of each argument (the first failing one
+    fails it, as :func:`_call`)."""
+    for leaf in leaves:
+        if isinstance(leaf, Fail):
+            return leaf
+    return computation(list(leaves))  # type: ignore[arg-type]  # Fails returned
 
 
 def _text(template: Template, leaves: Sequence[str]) -> str:
@@ -702,43 +732,41 @@ def _find_exec(host: Interpretation[Context], context: Context, args: list[Raw])
     return Choice.const(host.space, concat(["$(find-exec ", args[0], ")"]))
 
 
-@substitution(PATH_JOIN)
-def _path_join(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+@computed(PATH_JOIN)
+def _path_join(args: list[Raw]) -> Value:
     """``PathJoinSubstitution`` (the Python frontend's): ``os.path.join`` of the values."""
     if all(isinstance(arg, str) for arg in args):
-        return Choice.const(host.space, posixpath.join(*args))  # type: ignore[arg-type]
+        return posixpath.join(*args)  # type: ignore[arg-type]
     parts: list[Raw] = []
     for arg in args:  # an unknown value: joined as if relative, with no trailing '/'
         parts += ["/", arg]
-    return Choice.const(host.space, concat(parts[1:]))
+    return concat(parts[1:])
 
 
-@substitution(PYTHON_STRING)
-def _python_string(
-    host: Interpretation[Context], context: Context, args: list[Raw]
-) -> Choice[Value]:
+@computed(PYTHON_STRING)
+def _python_string(args: list[Raw]) -> Value:
     """The Python frontend's launch-time string inside an expression: its ``repr``; a value
     known only once the command line gives it (a term) is a term too."""
     if len(args) != 1:
-        return _fail(host, f"$({PYTHON_STRING}) takes one argument", "substitution-invalid")
+        return Fail(f"$({PYTHON_STRING}) takes one argument", "substitution-invalid")
     if isinstance(args[0], str):
-        return Choice.const(host.space, repr(args[0]))
-    return Choice.const(host.space, Apply(PYTHON_STRING, (args[0],), f"repr({args[0]})"))
+        return repr(args[0])
+    return Apply(PYTHON_STRING, (args[0],), f"repr({args[0]})")
 
 
 register(PYTHON_STRING, lambda _host, value: repr(value))
 
 
-@substitution(PYTHON_YAML)
-def _python_yaml(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+@computed(PYTHON_YAML)
+def _python_yaml(args: list[Raw]) -> Value:
     """The Python frontend's ``yaml.load`` of a launch-time string inside an expression: the
     loaded value as a Python literal; a text that is no YAML of plain values fails, as the
     file's ``yaml.load`` raises (or gives what the expression cannot use)."""
     if len(args) != 1:
-        return _fail(host, f"$({PYTHON_YAML}) takes one argument", "substitution-invalid")
+        return Fail(f"$({PYTHON_YAML}) takes one argument", "substitution-invalid")
     if isinstance(args[0], str):
-        return Choice.const(host.space, _yaml_literal(args[0]))
-    return Choice.const(host.space, Apply(PYTHON_YAML, (args[0],), f"yaml({args[0]})"))
+        return _yaml_literal(args[0])
+    return Apply(PYTHON_YAML, (args[0],), f"yaml({args[0]})")
 
 
 def _yaml_literal(text: str) -> str | Fail:
@@ -818,13 +846,13 @@ DEFAULT_MODULES = "math"
 """``PythonExpression``'s ``python_modules`` when not given."""
 
 
-@substitution("eval")
-def _eval(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+@computed("eval")
+def _eval(args: list[Raw]) -> Value:
     """``PythonExpression``: an expression, and optionally the modules it may use (launch's
     comma-separated names; ``math`` when not given)."""
     if not 1 <= len(args) <= 2:
-        return _fail(host, "eval substitution expects 1 or 2 arguments", "substitution-invalid")
-    return Choice.const(host.space, _eval_value(args))
+        return Fail("eval substitution expects 1 or 2 arguments", "substitution-invalid")
+    return _eval_value(args)
 
 
 def _eval_value(args: Sequence[Raw]) -> Value:

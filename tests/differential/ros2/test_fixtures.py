@@ -1182,6 +1182,25 @@ def generate_launch_description():
         },
         [{}, {"a3": "b"}, {"a0": "b", "a12": "b"}],
     ),
+    "python-path-join-of-choices": (
+        {
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration as V, PathJoinSubstitution
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('a', default_value='x', choices=['x', '/y', 'z/']),
+        DeclareLaunchArgument('b', default_value='p', choices=['p', '/q', 'r']),
+        Node(package='pkg', executable='n', name='n',
+             parameters=[{'path': PathJoinSubstitution([V('a'), V('b'), 'f.yaml'])}]),
+    ])
+""",
+        },
+        [{}, {"a": "/y", "b": "r"}, {"a": "z/", "b": "/q"}],
+    ),
 }
 
 

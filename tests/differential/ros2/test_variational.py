@@ -18,6 +18,7 @@ from oracle.ros2_client import (
     resolution_nodes,
     run_oracle,
 )
+from rosvar.interpreter import substitution_args
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.inputs import OTHER
 from rosvar.workspace import discover
@@ -71,6 +72,19 @@ def test_fixture_restricted_matches_the_oracle(case: str, tmp_path: Path) -> Non
     for main in entries(package):
         for arguments in configurations(analysis, str(main), given):
             check(analysis, main, arguments, package.parent, strict=case not in LENIENT)
+
+
+@pytest.mark.parametrize(
+    "case", ["conditions-over-the-work-limits-once-bound", "python-path-join-of-choices"]
+)
+def test_values_given_up_are_computed_in_each_configuration(
+    case: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """With one text's combinations bounded to 4, the model gives up these fixtures' joined
+    texts, ``$(eval)``s and path joins (each of several arguments of three values); one
+    configuration computes each again from the values that hold there, as the oracle."""
+    monkeypatch.setattr(substitution_args, "MAX_COMBINATIONS", 4)
+    test_fixture_restricted_matches_the_oracle(case, tmp_path)
 
 
 @pytest.mark.parametrize("suffix", [".launch.xml", ".launch.yaml", ".launch.py"])
