@@ -89,9 +89,8 @@ class _Reading:
             if aspect is Written.PATH:
                 return WRITTEN_PATH + json.dumps(operands)
             text = written_files.content(made)
-            if isinstance(text, str):
-                return text
-            raise ValueError(f"the file {operands[2]}() writes is not known ({text.what})")
+            assert isinstance(text, str)  # else not made
+            return text
         if aspect is Written.PATH:
             return made
         return self.read(made, depth)
@@ -143,7 +142,7 @@ class _Reading:
                 for module in reader.loaded.values()
                 if module is not None
             )
-        if isinstance(made, WrittenFile):
+        if isinstance(made, WrittenFile) and isinstance(written_files.content(made), str):
             return made
         if isinstance(made, Text) and made.literal() is not None:
             return str(made.literal())
