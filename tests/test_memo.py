@@ -6,7 +6,7 @@ import gc
 
 import pytest
 
-from rosvar.memo import Memo, memos
+from rosvar.memo import EVICTED, Memo, memos
 
 
 def test_keeps_the_newest_entries_up_to_its_capacity() -> None:
@@ -16,6 +16,17 @@ def test_keeps_the_newest_entries_up_to_its_capacity() -> None:
         assert len(memo) == min(key + 1, 3)
     assert dict(memo) == {7: "7", 8: "8", 9: "9"}
     assert memo.get(2) is None
+
+
+def test_a_full_memo_forgets_an_eighth_of_its_oldest_at_once() -> None:
+    capacity = 4 * EVICTED
+    memo: Memo[int, int] = Memo(capacity)
+    for key in range(capacity + 1):
+        memo[key] = key
+    assert list(memo) == list(range(capacity // EVICTED, capacity + 1))
+    for key in range(capacity + 1, capacity + 4):  # room again until the next overflow
+        memo[key] = key
+        assert len(memo) == capacity - capacity // EVICTED + 1 + key - capacity
 
 
 def test_a_hit_does_not_reorder() -> None:

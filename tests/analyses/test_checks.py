@@ -510,3 +510,42 @@ def test_a_node_launched_as_a_lifecycle_node_serves_the_lifecycle_services(
         )
         missing[action] = [f.name for f in findings if f.check is Check.NO_PROVIDER]
     assert missing == {"LifecycleNode": [], "Node": ["/lc/change_state"]}
+
+
+def test_a_parameter_set_one_namespace_above_the_node_reading_it_is_unread(
+    ws: LaunchWorkspace,
+) -> None:
+    """jackal's joystick YAML set ``/bluetooth_teleop/enable_button`` where
+    ``/bluetooth_teleop/teleop_twist_joy`` reads ``~enable_button``: no node reads the name
+    set, the node stays on its default. Not where the node's own name is set too, another
+    node reads the name, or a node of that namespace whose interface is unknown may."""
+    ws.write("scripts/other.py", HEADER + 'rospy.get_param("rate")\n')
+    body = """<arg name="own" default="false"/><arg name="other" default="false"/>
+      <arg name="unknown" default="false"/>
+      <group ns="robot">
+        <param name="rate" value="1"/>
+        <param name="reader/rate" value="2" if="$(arg own)"/>
+        <node pkg="pkg" type="reader.py" name="reader"/>
+        <node pkg="pkg" type="other.py" name="other" if="$(arg other)"/>
+        <node pkg="pkg" type="nowhere" name="nowhere" if="$(arg unknown)"/>
+      </group>"""
+    file = str(ws.root / "pkg" / "launch" / "system.launch")
+    [(name, severity, message)] = _findings(ws, body, Check.PARAM_UNREAD)
+    assert (name, severity) == ("/robot/rate", Severity.WARNING)
+    assert message == (
+        "/robot/rate is set where no launched node reads it, beside /robot/reader, which "
+        "reads ~rate (/robot/reader/rate) and finds it unset"
+    )
+    analysis = ws.analysis()
+    model = analysis.model(file)
+    confinement = analysis.workspace.confinement()
+    interfaces = extract_interfaces(analysis.workspace.packages.values())
+    [finding] = [
+        f
+        for f in check_models(analysis.space, [model], interfaces, confinement)
+        if f.check is Check.PARAM_UNREAD
+    ]
+    for own, other, unknown in itertools.product(("true", "false"), repeat=3):
+        args = {"own": own, "other": other, "unknown": unknown}
+        holds = Restriction(analysis, model, args, {}).holds(finding.condition)
+        assert holds == (own == other == unknown == "false"), args

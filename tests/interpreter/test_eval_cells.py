@@ -10,9 +10,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from oracle.client import requires_oracle
 from rosvar.analyses.checks import Check, check_models
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate
 from rosvar.interpreter.safe_eval.cells import compared_constants, witnesses
+from rosvar.outputs.documents.findings import finding_document
 from rosvar.workspace.interfaces.model import Interfaces
 
 if TYPE_CHECKING:
@@ -81,3 +83,42 @@ def test_ifs_over_one_arg_exclude_each_other(ws: LaunchWorkspace) -> None:
 def test_values_between_the_literals_still_clash(ws: LaunchWorkspace) -> None:
     (condition,) = _clashes(ws, "dof > 6", "dof &lt; 7")  # 6.5 is neither literal
     assert "other" in condition
+
+
+def _if_and_eval(ws: LaunchWorkspace, expression: str) -> tuple[str, list[dict[str, object]]]:
+    """A node under ``if="$(arg c)"`` (a predicate on the arg's own text) and one of the same
+    name under an ``$(eval)`` of it: the file and its clashes as ``check`` writes them."""
+    file = ws.launch(
+        "spawn.launch",
+        f"""<arg name="c" default="false"/>
+        <node if="$(arg c)" name="spawner" pkg="gazebo_ros" type="spawn_model"/>
+        <node if="$(eval {expression})" name="spawner" pkg="gazebo_ros" type="spawn_model"/>""",
+    )
+    analysis = ws.analysis()
+    findings = check_models(
+        analysis.space, analysis.all_models(), Interfaces(), analysis.workspace.confinement()
+    )
+    clashes = [f for f in findings if f.check is Check.NODE_NAME_CLASH]
+    return file, [finding_document(f, analysis.space) for f in clashes]
+
+
+def test_an_if_over_the_arg_and_an_eval_of_it_are_related(ws: LaunchWorkspace) -> None:
+    """``yes`` is no boolean to roslaunch's ``if``: no text of ``c`` makes both true (they
+    were two unrelated predicates of an unforeseen value)."""
+    assert _if_and_eval(ws, "arg('c') == 'yes'")[1] == []
+
+
+@requires_oracle[0]
+@requires_oracle[1]
+def test_a_clash_of_an_unforeseen_value_shows_a_text_roslaunch_refuses(
+    ws: LaunchWorkspace,
+) -> None:
+    """``c`` compared with 1: ``1``, ``True``... make both true; the example gives such a
+    text and roslaunch, given it, refuses the two nodes of one name."""
+    file, [clash] = _if_and_eval(ws, "arg('c') == 1")
+    example = clash["example"]
+    assert isinstance(example, dict)
+    [text] = [value for key, value in example.items() if key.endswith(":c")]
+    assert text not in ("<other>", "false")
+    [result] = ws.oracle(file, [({"c": text}, {})])
+    assert "multiple nodes named" in str(result.get("error")), (text, result)

@@ -10,6 +10,7 @@ import pytest
 from rosvar.interpreter import substitution_args as substitutions
 from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl
 from rosvar.logic.terms import is_term
+from rosvar.ros1 import dialect
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -224,3 +225,41 @@ def test_eval_over_many_varying_args_is_bounded(ws: LaunchWorkspace) -> None:
         ws.launch("eval.launch", f'{args}<param name="p" value="$(eval {expression})"/>')
     )
     assert _codes(model) == ["value-too-complex"]
+
+
+COMMON = """
+  <arg name="robot"/>
+  <param name="p" value="$(arg robot)-$(find pkg)"/>
+  <param name="q" value="$(find nowhere)/$(arg robot)"/>
+"""
+INCLUDER = (
+    '<include file="$(find pkg)/launch/common.launch"><arg name="robot" value="husky"/></include>'
+)
+
+
+def test_walks_of_one_analysis_share_the_texts_they_resolve_alike(
+    ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    ws.launch("common.launch", COMMON)
+    files = [ws.launch(f"{name}.launch", INCLUDER) for name in ("first", "second")]
+    computed: list[str] = []
+    resolved = substitutions.Substituter._resolved
+
+    def spied(self: substitutions.Substituter, text: str, *rest: object) -> object:
+        computed.append(text)
+        return resolved(self, text, *rest)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(substitutions.Substituter, "_resolved", spied)
+    with monkeypatch.context() as unshared:
+        unshared.setattr(dialect, "shared_texts", lambda _files: None)
+        alone = {file: ws.resolve(file).params for file in files}
+    assert computed.count("$(arg robot)-$(find pkg)") == 2  # once per walk
+    computed.clear()
+    ws.launch("common.launch", COMMON)  # written again: a new analysis
+    models = [ws.model(file) for file in files]
+    # computed once for both entry files' walks; the unknown package's value, whose
+    # warning belongs to each place, in each walk
+    assert computed.count("$(arg robot)-$(find pkg)") == 1
+    assert computed.count("$(find nowhere)/$(arg robot)") == 2
+    assert all("package-unknown" in _codes(model) for model in models)
+    assert {file: ws.resolve(file).params for file in files} == alone

@@ -127,6 +127,20 @@ def test_conjoin_restrict_and_exists(seed: int) -> None:
     assert bdd.and_exists(u, care, hidden) == manager.exist(hidden, u & care)
 
 
+def test_a_manager_keeps_the_cubes_of_the_variable_sets_it_quantifies() -> None:
+    manager = bdd.new_manager(64 << 20, 1 << 12)
+    manager.declare(*NAMES)
+    hidden = set(NAMES[:3])
+    cube = manager.cube(hidden)
+    assert manager.cube(frozenset(hidden)) is cube  # kept: and_exists asks for it each call
+    assert cube == manager.var(NAMES[0]) & manager.var(NAMES[1]) & manager.var(NAMES[2])
+    literals = {NAMES[0]: True, NAMES[1]: False}  # a cube of literals is made each time
+    assert manager.cube(literals) == manager.var(NAMES[0]) & ~manager.var(NAMES[1])
+    u, v = manager.var(NAMES[0]) | manager.var(NAMES[3]), ~manager.var(NAMES[0])
+    assert bdd.and_exists(u, v, hidden) == manager.exist(hidden, u & v)
+    assert bdd.and_exists(u, v, hidden) == manager.var(NAMES[3])
+
+
 def test_the_memory_bound_refuses_growth_and_is_lifted() -> None:
     manager = fresh([f"x{number}" for number in range(3000)])
 

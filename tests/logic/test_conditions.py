@@ -21,6 +21,9 @@ from logic.spaces import (
     random_condition,
 )
 from rosvar.logic import conditions as conditions_module
+from rosvar.logic.atoms import PredicateAtom, register_predicate
+from rosvar.logic.bdd import BDD
+from rosvar.logic.cells import register_predicate_texts, spellings
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Input, Slot
 from rosvar.logic.terms import Apply, Hole
@@ -189,8 +192,83 @@ def test_memory_estimate_grows_with_files_within_bounds() -> None:
 
 
 @pytest.mark.filterwarnings("ignore:Changed in `dd`")  # statistics()' note on its 'mem' key
+def test_dead_nodes_are_collected_before_they_outgrow_the_estimate() -> None:
+    """Husky with ``_external`` as a root (5,800 variables): the web server's graph build
+    left a million dead nodes that CUDD kept, as it collects garbage below 90 % of its
+    estimate only once there are four dead nodes per slot of its unique table (256 slots a
+    variable)."""
+    space = ConditionSpace(files=100)
+    names = [f"v{index}" for index in range(5_800)]
+    space.bdd.declare(*names)
+    pairs, made = 16, 0
+    for round_ in range(8):  # ⋁ x_i ∧ y_i, the xs above the ys: 2^pairs nodes, then dropped
+        xs, ys = names[40 * round_ :][:pairs], names[2_900 + 40 * round_ :][:pairs]
+        built = space.false
+        for x, y in zip(xs, ys, strict=True):
+            built |= space.bdd.var(x) & space.bdd.var(y)
+        made += len(space.bdd)
+        del built
+    assert made * 32 > conditions_module.memory_estimate(100)  # 32 bytes a node
+    assert space.bdd.statistics()["peak_nodes"] < made * 3 // 4
+
+
+@pytest.mark.filterwarnings("ignore:Changed in `dd`")  # statistics()' note on its 'mem' key
 def test_computed_table_stays_fixed_as_variables_grow() -> None:
     space = ConditionSpace(files=10_000)
     for index in range(3_000):  # CUDD grows the table with the unique table unless capped
         space.declare_input(ArgInput(F, f"a{index}"), ("x", OTHER))
     assert space.bdd.statistics()["cache_size"] == conditions_module.CACHE_ENTRIES
+
+
+register_predicate("test_yes", lambda text: text.strip().lower() == "yes", "{} is yes")
+register_predicate_texts("test_yes", spellings(("yes", "no")))
+register_predicate("test_no", lambda text: text.strip().lower() == "no", "{} is no")
+register_predicate_texts("test_no", spellings(("yes", "no")))
+register_predicate("test_upper", lambda text: text.isupper(), "{} is in capitals")
+register_predicate_texts("test_upper", ("A", "a"))
+
+
+def test_predicates_of_one_inputs_text_are_related_by_their_witnesses() -> None:
+    """Predicates over an input's own text (its hole) hold together for an unforeseen value
+    only as some witness makes them: 'yes' in capitals is ``YES``, nothing is both yes and
+    no. The nonempty test registers no texts: it joins no group (it could tell apart texts
+    nobody tried), so yes and empty stay possible together."""
+    space = make_space()
+    other = space.slot(WORLD, OTHER)
+    yes = space.predicate("test_yes", Hole(WORLD))
+    upper = space.predicate("test_upper", Hole(WORLD))
+    assert space.satisfiable(other & yes & upper)
+    assert space.satisfiable(other & yes & ~upper)
+    assert space.satisfiable(other & ~yes & upper)
+    assert space.witnesses(
+        {WORLD: OTHER}, {_atom(space, yes): True, _atom(space, upper): True}
+    ) == {WORLD: "YES"}
+    assert space.witnesses(
+        {WORLD: OTHER}, {_atom(space, yes): False, _atom(space, upper): True}
+    ) == {WORLD: "NO"}
+    nonempty = space.predicate("test_nonempty", Hole(WORLD))
+    assert space.satisfiable(other & yes & ~nonempty)  # unrelated: no texts registered
+    shouted = space.predicate("test_upper", Apply("concat", (Hole(WORLD), "!")))
+    assert shouted not in (yes, upper)  # concat has no cells: no fact with the group
+    assert space.satisfiable(other & upper & ~shouted)
+
+
+def test_an_unforeseen_value_no_witness_gives_has_none() -> None:
+    space = make_space()
+    yes = _atom(space, space.predicate("test_yes", Hole(WORLD)))
+    upper = _atom(space, space.predicate("test_upper", Hole(WORLD)))
+    assert space.witnesses({WORLD: OTHER}, {yes: True, upper: True}) == {WORLD: "YES"}
+    assert space.witnesses({WORLD: OTHER}, {yes: False, upper: True}) == {WORLD: "NO"}
+    lower = {yes: True, upper: False}
+    assert space.witnesses({WORLD: OTHER}, lower) == {WORLD: "yes"}
+    domain = {**DOMAINS, WORLD: ("yes", "Yes", " yes ", "empty", OTHER)}
+    space = make_space(domain)  # every lower-case yes the witnesses know is foreseen
+    yes = _atom(space, space.predicate("test_yes", Hole(WORLD)))
+    upper = _atom(space, space.predicate("test_upper", Hole(WORLD)))
+    assert space.witnesses({WORLD: OTHER}, {yes: True, upper: False}) is None
+
+
+def _atom(space: ConditionSpace, variable: BDD) -> PredicateAtom:
+    atom = space.atom_of(str(variable.var))
+    assert isinstance(atom, PredicateAtom)
+    return atom

@@ -8,7 +8,9 @@ from pathlib import Path
 
 import pytest
 
+from rosvar.diagnostics import Location
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.logic.atoms import PredicateAtom
 from rosvar.outputs.describe import describe_model
 from rosvar.ros2 import substitutions
 from rosvar.ros2.boolean_eval import boolean_expression
@@ -166,3 +168,118 @@ def test_a_value_that_leaves_its_literal_is_crossed() -> None:
         "'__$(var a)' == 'x'",  # refused by the evaluator whatever the value
     ):
         assert boolean_expression(parse(text), frozenset()) is None, text
+
+
+_LISTED = ("a", "true", "b a", "")
+"""Defaults of the args whose ``<other>`` values (terms) the expressions compare."""
+_GIVEN = ("a", "true", "b a", "", "q", "True", "p_", "_", "a'b", "x\\y", "' or '")
+"""Values given on the command line: listed ones, others, and others that leave their
+literal (a quote, a backslash) or make ``__`` with the text beside them."""
+
+
+def _term_file(rng: random.Random) -> tuple[str, int]:
+    """Args compared in ``$(eval)``s, sometimes with text around them or set under a
+    condition, and ``<let>``s of ``$(eval)``s read by later ones; how many args."""
+    names = rng.randint(1, 3)
+    lines = ['<arg name="b0" default="true"/>']
+    lines += [f'<arg name="x{i}" default="{rng.choice(_LISTED)}"/>' for i in range(names)]
+    for index in range(names):
+        if rng.random() < 0.3:
+            lines.append(f'<let name="x{index}" value="p$(var x{index})"/>')
+        if rng.random() < 0.2:
+            let = f'<let name="x{index}" value="{rng.choice(_LISTED)}"/>'
+            lines.append(f'<group if="$(var b0)" scoped="false">{let}</group>')
+    for index in range(6):
+        evaluated = f"$(eval &quot;{_expression(rng, names)}&quot;)"
+        if index % 3 == 0:
+            lines.append(f'<let name="r{index}" value="{evaluated}"/>')
+            lines.append(f'<node pkg="p" exec="e" name="n{index}_$(var r{index})"/>')
+            if rng.random() < 0.5:  # read by the next ones
+                lines.append(f'<let name="x{rng.randrange(names)}" value="$(var r{index})"/>')
+        elif index % 3 == 1:
+            lines.append(f'<node pkg="p" exec="e" name="m{index}" if="{evaluated}"/>')
+        else:
+            lines.append(f'<node pkg="p" exec="e" name="k{index}_{evaluated}"/>')
+    return "<launch>" + "\n".join(lines) + "</launch>", names
+
+
+def _analysis(tmp_path: Path, text: str) -> tuple[Analysis, str]:
+    package = tmp_path / "pkg"
+    package.mkdir(exist_ok=True)
+    (package / "package.xml").write_text(MANIFEST)
+    main = package / "main.launch.xml"
+    main.write_text(text)
+    return Analysis(discover([str(package)])), str(main)
+
+
+def _started(
+    analysis: Analysis, main: str, args: dict[str, str]
+) -> tuple[list[str], list[tuple[str, Location]]]:
+    """The nodes started and the errors."""
+    result = analysis.resolve([main], args)
+    return (
+        [node.name for node in result.sorted_nodes()],
+        [(error.code, error.location) for error in result.errors],
+    )
+
+
+def _launched(analysis: Analysis, main: str, args: dict[str, str]) -> list[str] | None:
+    """The nodes started, None where the launch fails (where a value fails, a model that
+    knows it fails at the ``<let>`` that computes it, as launch does; one that holds it as
+    a term, where it is used)."""
+    nodes, errors = _started(analysis, main, args)
+    return None if errors else nodes
+
+
+@pytest.mark.parametrize("seed", [f"boolean-eval-terms-{n}" for n in range(30)])
+def test_an_expression_over_terms_resolves_as_the_crossed_one(
+    tmp_path: Path, seed: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Comparisons of args' ``<other>`` values computed as conditions (predicates of the
+    terms, one unknown value where a term may leave its literal) start, in every sampled
+    configuration, what crossing the values starts; the crossed model is analysed apart."""
+    rng = random.Random(seed)
+    for attempt in range(8):  # a file whose crossing stays within the work limits
+        text, names = _term_file(rng)
+        directory = tmp_path / str(attempt)
+        directory.mkdir()
+        computed, main = _analysis(directory, text)
+        with monkeypatch.context() as patched:
+            patched.setattr(substitutions, "boolean_expression", lambda *_args: None)
+            crossed, _ = _analysis(directory, text)
+            notes = [d.code for d in crossed.model(main).diagnostics]
+        if "value-too-complex" not in notes:
+            break
+    else:
+        pytest.fail("every file's crossing is over the work limits")
+    assert "value-too-complex" not in [d.code for d in computed.model(main).diagnostics]
+    for _ in range(8):
+        args = {f"x{i}": rng.choice(_GIVEN) for i in range(names) if rng.random() < 0.8}
+        args["b0"] = rng.choice(("true", "false"))
+        assert _launched(computed, main, args) == _launched(crossed, main, args), args
+
+
+def test_an_other_value_compared_with_a_listed_one_makes_no_predicate(tmp_path: Path) -> None:
+    """``'⟨x⟩' == 'a'`` for a value ``a`` that x lists is false outright; ``'⟨x⟩' == 'q'``
+    is a predicate of x's value, and "⟨x⟩ stays in its literal" another: where it does not,
+    the value is unknown until a configuration gives x."""
+    test = "$(eval &quot;'$(var x)' == 'a' or '_$(var x)' == '_q'&quot;)"
+    text = f'<launch><arg name="x" default="a"/><node pkg="p" exec="e" name="n_{test}"/></launch>'
+    analysis, main = _analysis(tmp_path, text)
+    model = analysis.model(main)
+    predicates = sorted(
+        model.space.describe(model.space.bdd.var(model.space.variable_name(atom)))
+        for atom in model.space.atoms()
+        if isinstance(atom, PredicateAtom)
+    )
+    assert predicates == [
+        "'_⟨x⟩' stays one string literal",
+        "'⟨x⟩' == 'q' is true",  # the same predicate for '_⟨x⟩' == '_q'
+        "'⟨x⟩' stays one string literal",
+    ]
+    assert _started(analysis, main, {"x": "a"}) == (["/n_True"], [])
+    assert _started(analysis, main, {"x": "q"}) == (["/n_True"], [])
+    assert _started(analysis, main, {"x": "b"}) == (["/n_False"], [])
+    assert _started(analysis, main, {"x": "' or '"}) == (["/n__"], [])  # '' or ... or '_'
+    nodes, errors = _started(analysis, main, {"x": "a'b"})
+    assert nodes == [] and [code for code, _where in errors] == ["node-invalid"]

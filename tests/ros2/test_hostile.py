@@ -442,3 +442,43 @@ def test_a_helper_module_is_never_run_and_leaks_nothing(tmp_path: Path) -> None:
     warned = {(w["code"], w["message"]) for w in document["warnings"]}
     assert ("python-not-followed", "call to os.system() is not followed") in warned
     assert any(code == "file-outside-workspace" and "/etc/passwd" in m for code, m in warned)
+
+
+def _eval_chain(links: int) -> str:
+    """Five args with choices concatenated (1,024 values, most not known), tested in an
+    ``if``; then a chain of ``<let>``s of ``$(eval)``s, each reading the one before twice and
+    an arg's ``<other>`` value, each tested in an ``if``."""
+    lines = ["<launch>"]
+    for i in range(5):
+        choices = "".join(f'<choice value="{w}{i}"/>' for w in "vwu")
+        lines.append(f'<arg name="a{i}" default="v{i}">{choices}</arg>')
+    lines.append('<let name="v" value="$(var a0)$(var a1)$(var a2)$(var a3)$(var a4)"/>')
+    lines.append('<node pkg="pkg" exec="n" name="joined" if="$(var v)"/>')
+    for i in range(links):
+        test = f"'$(var v)' == 'x{i}' or '$(var a0)' != '$(var v)'"
+        lines.append(f'<let name="v" value="$(eval &quot;{test}&quot;)"/>')
+        lines.append(f'<node pkg="pkg" exec="n" name="n{i}" if="$(var v)"/>')
+    return "\n".join([*lines, "</launch>"])
+
+
+def test_a_chain_of_evals_over_unknown_values_is_bounded(tmp_path: Path) -> None:
+    """Every value tested stays within the terms a test may make predicates of and the size
+    of the conditions computed instead of crossing: past them a ``value-too-complex`` note
+    at the tag, and the value unknown until a configuration computes it."""
+    launch = "launch/chain.launch.xml"
+    ws = workspace(tmp_path, {launch: _eval_chain(40)})
+    notes = [
+        (d["line"], d["message"])
+        for file in analyze(ws)["files"]
+        for d in file["diagnostics"]
+        if d["code"] == "value-too-complex"
+    ]
+    assert notes[0] == (
+        8,
+        "<node> attribute 'if' is not computed: it tests 781 values not known yet, over 64",
+    )
+    assert "tests 5711 values not known yet" in notes[1][1] and notes[1][0] == 9
+    assert any("BDD nodes, over 4096" in message for _line, message in notes[2:])
+    _done, document = resolve(ws, launch)
+    assert not document["ok"]  # 'v0v1v2v3v4' is no bool, yet every value is computed
+    assert [e["code"] for e in document["errors"]] == ["bool-invalid"]

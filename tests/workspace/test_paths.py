@@ -1,4 +1,5 @@
-"""``real_path``: the same answers as ``os.path.realpath``, with a cache per directory."""
+"""``real_path`` and ``Confinement.resolve``: the same answers as ``os.path.realpath``, with a
+cache per directory."""
 
 from __future__ import annotations
 
@@ -7,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from rosvar.files import Confinement
 from rosvar.workspace.paths import real_path
 
 
@@ -41,6 +43,9 @@ def test_same_as_os_realpath(tree: Path, relative: str) -> None:
     first = real_path(path)
     assert first == os.path.realpath(path)
     assert real_path(path) == first  # from the cache
+    confinement = Confinement.of([str(tree)])  # the same resolution, kept for one analysis
+    assert confinement.resolve(path) == first
+    assert confinement.resolve(path) == first
 
 
 def test_relative_paths_are_resolved_from_the_working_directory(

@@ -34,6 +34,7 @@ from rosvar.analyses.communication import (
     node_branches,
 )
 from rosvar.analyses.conflicts import Occurrence, clashes, node_occurrences
+from rosvar.analyses.feature_model.operations import trigger
 from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.when import params_read
 from rosvar.diagnostics import Location, Severity
@@ -291,7 +292,24 @@ def check_model(
     checker.remaps(interfaces)
     checker.dialects(interfaces)
     checker.whens(interfaces)
-    return checker.findings
+    return [_told(space, finding) for finding in checker.findings]
+
+
+UNTOLD = (
+    " (rosvar could not tell: only a value nobody foresaw gives it, and no text rosvar tried does)"
+)
+
+
+def _told(space: ConditionSpace, finding: Finding) -> Finding:
+    """A warning or error whose example needs an unforeseen value that no witness gives
+    (no text rosvar tried makes the example's predicates hold as it asks) is a note: rosvar
+    cannot tell that such a value exists."""
+    if finding.severity is Severity.NOTE:
+        return finding
+    found = trigger(space, finding.condition)
+    if found is None or not found.unwitnessed:
+        return finding
+    return dataclasses.replace(finding, severity=Severity.NOTE, message=finding.message + UNTOLD)
 
 
 class _Checker:
@@ -356,8 +374,6 @@ class _Checker:
                 by_name[(edge.channel, edge.name)].append(edge)
             else:
                 self.symbolic[edge.role].append(edge)
-                if edge.boundary:
-                    continue  # no partner to miss: nothing the checks skip
                 self.add(
                     Check.SYMBOLIC_NAME,
                     Severity.NOTE,
@@ -669,6 +685,36 @@ class _Checker:
                     condition & node_condition & ~read,
                     (location, node_location),
                 )
+            self._above(name, condition & ~read, location, readers)
+
+    def _above(
+        self,
+        name: str,
+        condition: BDD,
+        location: Location,
+        readers: Sequence[tuple[BDD, str, Location, list[str], bool]],
+    ) -> None:
+        """``name`` (``N/x``) set where no launched node reads it, beside a node ``N/d`` that
+        reads its private ``~x``, which no launch file sets: a setting one namespace too
+        high (jackal's joystick YAML), where the node stays on its default. Not where a node
+        of ``N`` whose interface is unknown may read ``x``."""
+        namespace, _, last = name.rpartition(names.SEP)
+        unseen = self.any(c for _n, ns, c in self.unknown if ns == namespace + names.SEP)
+        setters = self.setters()
+        for node_condition, node, node_location, reads, _every in readers:
+            private = node + names.SEP + last
+            if node.rpartition(names.SEP)[0] != namespace or private not in reads:
+                continue
+            unset = ~self.any(c for set_name, c in setters if _covers(set_name, private))
+            self.add(
+                Check.PARAM_UNREAD,
+                Severity.WARNING,
+                name,
+                f"{name} is set where no launched node reads it, beside {node}, which reads "
+                f"~{last} ({private}) and finds it unset",
+                condition & node_condition & unset & ~unseen,
+                (location, node_location),
+            )
 
     def remaps(self, interfaces: Interfaces) -> None:
         """A node's own ``<remap>`` of a name it never uses (nor a name below it: an action's

@@ -52,7 +52,7 @@ class Selection(StrEnum):
     UNSELECTED = "unselected"
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, slots=True, weakref_slot=True)  # documents kept by it
 class FeatureState:
     """One feature's state; the engine hands out one object per feature and state, so
     states share them and an unchanged feature is the same object (compared, and its
@@ -69,8 +69,10 @@ class FeatureState:
     derived: bool
 
 
-_Row = tuple[str, str, dict[tuple[bool | None, bool], FeatureState]]
-"""A feature's id, its variable and its states by (decided value, chosen by the user)."""
+_Row = tuple[str, str, Feature, dict[tuple[bool | None, bool], FeatureState]]
+"""A feature's id, its variable, the feature, and its states handed out so far by (decided
+value, chosen by the user): each made on first use (``Configurator._state``), as a feature
+shows few of its six."""
 
 
 @dataclass
@@ -236,31 +238,7 @@ class Configurator:
             else package.name
             for entry in self.catalog.files
         }
-        self._feature_states = {  # by feature: by (decided value, chosen by the user)
-            feature.id: {
-                (decided, chosen): FeatureState(
-                    feature.kind,
-                    feature.file,
-                    self.packages[feature.file],
-                    self.catalog.args[feature.id][0].doc
-                    if feature.kind == FeatureKind.ARG
-                    else None,
-                    feature.arg,
-                    feature.value,
-                    feature.parent,
-                    Selection.UNSELECTED
-                    if decided is None
-                    else Selection.SELECTED
-                    if decided
-                    else Selection.DESELECTED,
-                    decided is not None and not chosen,
-                )
-                for decided in (None, True, False)
-                for chosen in (True, False)
-            }
-            for feature in self.catalog
-        }
-        self._rows = {f.id: (f.id, f.variable, self._feature_states[f.id]) for f in self.catalog}
+        self._rows: dict[str, _Row] = {f.id: (f.id, f.variable, f, {}) for f in self.catalog}
         self._explaining: dict[int, tuple[Sat, list[int]]] = {}  # by component, made on need
         self._unread = {  # launch file id → what of its model rosvar could not read
             entry.id: [d for d in analysis.model(entry.path).diagnostics if leaves_unknown(d)]
@@ -491,14 +469,37 @@ class Configurator:
                     *(self._rows[i] for i in chosen ^ before_chosen if i in self._rows),
                 ]
             }.values()
-        for id_, variable, states in rows:
+        for row in rows:
+            id_ = row[0]
             earlier = features.get(id_)
-            state = features[id_] = states[decided.get(variable), id_ in chosen]
+            state = features[id_] = self._state(row, decided.get(row[1]), id_ in chosen)
             unselected += (state.state == Selection.UNSELECTED) - (
                 earlier is not None and earlier.state == Selection.UNSELECTED
             )
         self._last = (decided, chosen, features, unselected)
         return features, unselected
+
+    def _state(self, row: _Row, decided: bool | None, chosen: bool) -> FeatureState:
+        """The one state object of a feature decided so (None: not), chosen or derived."""
+        _id, _variable, feature, states = row
+        found = states.get((decided, chosen))
+        if found is None:
+            found = states[decided, chosen] = FeatureState(
+                feature.kind,
+                feature.file,
+                self.packages[feature.file],
+                self.catalog.args[feature.id][0].doc if feature.kind == FeatureKind.ARG else None,
+                feature.arg,
+                feature.value,
+                feature.parent,
+                Selection.UNSELECTED
+                if decided is None
+                else Selection.SELECTED
+                if decided
+                else Selection.DESELECTED,
+                decided is not None and not chosen,
+            )
+        return found
 
     def _launches(self, decisions: Decisions, texts: Mapping[str, str]) -> list[Launch] | None:
         """The launched files and their args; None while an <other> value has no text."""

@@ -317,7 +317,7 @@ class Render(Protocol):
     ) -> list[Fields]: ...
 
 
-@dataclass
+@dataclass(slots=True)
 class Element:
     """One variant of a node, param, topic or error, with its presence condition."""
 

@@ -15,12 +15,13 @@ import os
 import re
 from collections import OrderedDict
 from collections.abc import Callable
-from typing import NoReturn
+from typing import Any, NoReturn
 from xml.parsers import expat
 
 from rosvar.diagnostics import Diagnostic, Location, Severity
 from rosvar.files import MAX_FILE_BYTES, FileCode, FileRefused, open_regular, read_file
 from rosvar.frontends.entity import Entity, ParseResult
+from rosvar.memo import Memo
 
 MAX_DEPTH: int = 1000
 """Deeper element nesting is refused (``xml-too-deep``). roslaunch itself fails at about
@@ -229,13 +230,18 @@ def parse_launch_bytes(data: bytes, filename: str) -> ParseResult:
     return ParseResult(launch, [*result.diagnostics, warning])
 
 
-def read_bytes(path: str | os.PathLike[str], limit: int | None = None) -> bytes | ParseResult:
+def read_bytes(
+    path: str | os.PathLike[str],
+    limit: int | None = None,
+    resolve: Callable[[str], str] | None = None,
+) -> bytes | ParseResult:
     """A whole regular file within the size limit (:func:`rosvar.files.read_file`; a
     frontend may ask for less), or the refusal as a :class:`ParseResult`; shared by every
-    frontend."""
+    frontend. ``resolve``: how the caller resolves paths (``os.path.realpath``, kept)."""
     name = os.fspath(path)
     try:
-        return read_file(name, limit=MAX_FILE_BYTES if limit is None else limit)
+        real = None if resolve is None else resolve(name)
+        return read_file(name, limit=MAX_FILE_BYTES if limit is None else limit, real=real)
     except FileRefused as refused:
         message = refused.message
         if refused.code == FileCode.UNREADABLE:
@@ -256,9 +262,11 @@ def parse_xml_file(path: str | os.PathLike[str]) -> ParseResult:
     return parse_xml_bytes(data, os.fspath(path))
 
 
-def parse_launch_file(path: str | os.PathLike[str]) -> ParseResult:
+def parse_launch_file(
+    path: str | os.PathLike[str], resolve: Callable[[str], str] | None = None
+) -> ParseResult:
     """Read and parse a roslaunch file; Locations use ``path`` as given. Never raises."""
-    data = read_bytes(path)
+    data = read_bytes(path, resolve=resolve)
     if isinstance(data, ParseResult):
         return data
     return parse_launch_bytes(data, os.fspath(path))
@@ -268,7 +276,9 @@ _CacheKey = tuple[str, int, int, int, int]
 _cache: OrderedDict[_CacheKey, ParseResult] = OrderedDict()
 
 
-def load_launch_file(path: str | os.PathLike[str]) -> ParseResult:
+def load_launch_file(
+    path: str | os.PathLike[str], resolve: Callable[[str], str] | None = None
+) -> ParseResult:
     """Like :func:`parse_launch_file`, but cached while the file is unchanged.
 
     The key is (name as given, device, inode, mtime_ns, size): the name is part of
@@ -281,10 +291,10 @@ def load_launch_file(path: str | os.PathLike[str]) -> ParseResult:
         info = os.stat(name)
         key: _CacheKey = (name, info.st_dev, info.st_ino, info.st_mtime_ns, info.st_size)
     except (OSError, ValueError):
-        return parse_launch_file(name)
+        return parse_launch_file(name, resolve)
     cached = _cache.get(key)
     if cached is None:
-        cached = parse_launch_file(name)
+        cached = parse_launch_file(name, resolve)
         if any(d.code == "file-unreadable" for d in cached.diagnostics):
             return cached  # permissions may change without touching mtime
         _cache[key] = cached
@@ -315,6 +325,14 @@ class Snapshot:
         self.tables: dict[str, object] = {}
         """What the walks over these files keep of them (the ROS 2 include memo, keyed by
         the parsed files): it lives as long as they do, and no longer."""
+
+    def kept(self, owner: str) -> Memo[Any, Any]:
+        """The memo ``owner`` (a module's name) keeps of these files' walks, made on first
+        use: it lives as long as they do, and no longer."""
+        table = self.tables.get(owner)
+        if not isinstance(table, Memo):
+            table = self.tables[owner] = Memo()
+        return table
 
     def load(self, path: str) -> ParseResult:
         result = self._loaded.get(path)

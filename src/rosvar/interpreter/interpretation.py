@@ -27,8 +27,10 @@ from rosvar.interpreter.model import (
     Raw,
     Tested,
 )
+from rosvar.interpreter.substitution_args import MAX_TESTED_TERMS, too_complex
 from rosvar.logic.atoms import register_predicate
 from rosvar.logic.bdd import BDD
+from rosvar.logic.cells import register_predicate_texts, spellings
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
@@ -98,6 +100,8 @@ def _falsy(text: str) -> bool:
 
 register_predicate("true", _truthy, "{} is true")
 register_predicate("false", _falsy, "{} is false")
+for _test in ("true", "false"):
+    register_predicate_texts(_test, spellings((*TRUE_WORDS, *FALSE_WORDS)))
 
 
 class Interpretation(Generic[S]):
@@ -353,13 +357,27 @@ class Interpretation(Generic[S]):
             return self.space.false
         text = if_text if if_text is not None else unless_text
         label = Guard.IF if if_text is not None else Guard.UNLESS
-        value = self.resolve(text, scope, f"<{entity.tag}> attribute '{label}'")
+        what = f"<{entity.tag}> attribute '{label}'"
+        value = self.resolve(text, scope, what)
         assert value is not None
-        true = self.truth(value, f"<{entity.tag}> attribute '{label}'")
+        value = self._bounded(value, what)
+        true = self.truth(value, what)
         if if_text is None:  # unless: processed where the value is false (valid and not true)
             true = value.covered() & ~true & ~self._invalid(value)
         self.model.decisions.append(Decision(self.pc, entity.location, label, true))
         return true
+
+    def _bounded(self, value: Choice[Raw], what: str) -> Choice[Raw]:
+        """``value``, or where it holds more terms than a test may make predicates of
+        (:data:`MAX_TESTED_TERMS`), one unknown value that a configuration computes."""
+        terms = sum(not isinstance(leaf, str) for _condition, leaf in value.branches)
+        if terms <= MAX_TESTED_TERMS:
+            return value
+        self.note_too_complex(
+            f"{what} is not computed: it tests {terms} values not known yet, "
+            f"over {MAX_TESTED_TERMS}"
+        )
+        return Choice.const(self.space, too_complex(what, [value], _first))
 
     def _invalid(self, value: Choice[Raw]) -> BDD:
         invalid = self.space.false
@@ -462,6 +480,10 @@ class Interpretation(Generic[S]):
         if self.location.line > 0:  # an include
             return self.location
         return next((where for where in found if where.line > 0), Location(path, 1, 1))
+
+
+def _first(leaves: list[Any]) -> Any:
+    return leaves[0]
 
 
 class _At(Generic[S]):

@@ -17,7 +17,9 @@ import os
 from collections.abc import Callable, Hashable, Iterable, Sequence
 from typing import Final, Protocol
 
+from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.model import Raw
+from rosvar.logic.bdd import BDD
 from rosvar.logic.cells import Cells, register_cells
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.conditions import ConditionSpace
@@ -33,6 +35,7 @@ from rosvar.logic.terms import (
     register,
     term_inputs,
 )
+from rosvar.memo import Memo
 
 Value = Raw | Fail
 
@@ -46,6 +49,13 @@ MAX_VALUE_SIZE = 1_000_000
 concatenate the previous one twice would otherwise double it at every line."""
 MAX_TERM_DEPTH = 100
 """Nesting of a symbolic value; deeper ones would exhaust recursion when evaluated."""
+MAX_CONDITION_NODES = 4096
+"""BDD nodes of one condition computed for a value instead of crossing (a chain of
+``$(eval)``s, each reading the one before twice, would double them at every line)."""
+MAX_TESTED_TERMS = 64
+"""Values not known yet (terms) one ``if``/``unless`` or one ``$(eval)`` of comparisons may
+test: each is predicates of its own in the conditions, and a value crossed from many args'
+``<other>`` values would make thousands."""
 
 
 class Missing:
@@ -305,15 +315,30 @@ def _arg(
 COMMANDS = ("find", *FIRST_PASS)
 
 
+Resolved = Memo[tuple[object, ...], tuple[Choice[Value], int]]
+"""Values of texts that read args only, by text and the choices of the args read, each with
+the combinations it spent of the file's budget."""
+
+
+def shared_texts(files: Snapshot) -> Resolved:
+    """The resolved texts one analysis's walks share, kept with the files they read (as
+    :func:`rosvar.ros2.include_memo._table`: not on the condition space, where a cycle's
+    collection freed BDD nodes after their manager)."""
+    return files.kept(__name__)
+
+
 class Substituter:
     """Resolves attribute text in a scope, for all configurations at once."""
 
-    def __init__(self, host: Host) -> None:
+    def __init__(self, host: Host, shared: Resolved | None = None) -> None:
+        """``shared``: the values of texts other walks of the same analysis (condition
+        space and packages) resolved, to reuse and add to."""
         self.host = host
         self.space = host.space
         # Values of texts that read args only (and packages), by text and the immutable
         # choices of the args read: a file's texts recur in its elements and its includes'.
         self._known: dict[tuple[object, ...], Choice[Value]] = {}
+        self._shared = shared
         self.budget = ValueBudget(host.space, host.note_too_complex)
 
     def resolve(self, text: str | None, scope: Scope) -> Choice[Value] | None:
@@ -332,11 +357,34 @@ class Substituter:
             key = (text, *[args.get(name) for name in reads])
             known = self._known.get(key)
             if known is None:
-                known = self._resolved(text, distinct, segments, find, scope)
-                if not any(map(_names_unknown_package, known.values())):
-                    self._known[key] = known  # (else its warning belongs to each place)
+                known = self._shared_resolved(key, (text, distinct, segments, find), scope)
             return known
         return self._resolved(text, distinct, segments, find, scope)
+
+    def _shared_resolved(
+        self,
+        key: tuple[object, ...],
+        planned: tuple[str, tuple[str, ...], tuple[str | int, ...], bool],
+        scope: Scope,
+    ) -> Choice[Value]:
+        """A text's value this walk has not met (``planned``: the text and its
+        :func:`_plan`): another walk's where it read the same choices (the entry files'
+        walks share the constants and their includes' args), and where spending what it
+        spent keeps this file within its budget, as computing it again would; otherwise
+        computed. (Husky's walks meet 2,222 texts anew, 1,260 of them another walk's.)"""
+        shared = self._shared
+        found = None if shared is None else shared.get(key)
+        if found is not None and self.budget.fits(found[1]):
+            self.budget.combinations += found[1]
+            self._known[key] = found[0]
+            return found[0]
+        notes, spent = self.budget.notes, self.budget.combinations
+        value = self._resolved(*planned, scope)
+        if not any(map(_names_unknown_package, value.values())):
+            self._known[key] = value  # (else its warning belongs to each place)
+            if shared is not None and self.budget.notes == notes:  # (no limit met)
+                shared[key] = (value, self.budget.combinations - spent)
+        return value
 
     def _resolved(
         self,
@@ -507,6 +555,30 @@ class ValueBudget:
             self.combinations += count
             return True
         self.note(f"{_short(text)} is not computed: {reason}")
+        return False
+
+    def affords_tests(self, text: str, count: int) -> bool:
+        """Whether testing ``count`` terms for ``text`` stays within :data:`MAX_TESTED_TERMS`;
+        otherwise a note, and the caller keeps the value unknown."""
+        if count <= MAX_TESTED_TERMS:
+            return True
+        self.note(
+            f"{_short(text)} is not computed: it tests {count} values not known yet, "
+            f"over {MAX_TESTED_TERMS}"
+        )
+        return False
+
+    def affords_conditions(self, text: str, conditions: Iterable[BDD]) -> bool:
+        """Whether ``conditions`` computed for ``text`` stay within
+        :data:`MAX_CONDITION_NODES` each; otherwise a note, and the caller keeps the value
+        unknown."""
+        largest = max((condition.dag_size for condition in conditions), default=0)
+        if largest <= MAX_CONDITION_NODES:
+            return True
+        self.note(
+            f"{_short(text)} is not computed: its conditions need {largest} BDD nodes, "
+            f"over {MAX_CONDITION_NODES}"
+        )
         return False
 
     def fits(self, count: int) -> bool:

@@ -24,6 +24,8 @@ from typing import Any, NamedTuple, Protocol, cast
 
 import dd.cudd as _cudd
 
+from rosvar.memo import Memo
+
 
 class BDD(Protocol):
     """A diagram of ``dd.cudd`` (``dd.cudd.Function``) as rosvar uses it: ``dd`` ships no
@@ -97,7 +99,8 @@ class Manager(Protocol):
 
     def ite(self, g: BDD, u: BDD, v: BDD, /) -> BDD: ...
 
-    def cube(self, values: Mapping[str, bool], /) -> BDD: ...
+    def cube(self, values: Mapping[str, bool] | Collection[str], /) -> BDD:
+        """The conjunction of literals (a mapping), or of variables (a set)."""
 
     def support(self, u: BDD, /) -> set[str]: ...
 
@@ -129,9 +132,38 @@ def new_manager(memory: int, cache_limit: int, initial_cache: int | None = None)
     its formulas, and reordering would cost more than it saves, quadratically in the
     variables.
     """
-    manager: Manager = _cudd.BDD(memory, initial_cache)
+    manager: Manager = _Manager(memory, initial_cache)
     manager.configure(reordering=False, max_cache_hard=cache_limit)
     return manager
+
+
+CUBES = 4096
+"""Cubes of variable sets a manager keeps (:class:`_Manager`), the oldest forgotten first."""
+
+
+class _Manager(_cudd.BDD):  # type: ignore[misc]  # dd ships no types
+    """``dd``'s manager, keeping the cubes of the variable sets it quantifies away.
+
+    ``dd``'s and-abstract (:func:`and_exists`) builds its cube from the variables' names at
+    each call, over an array of every variable of the manager: 0.1-0.6 ms in the feature
+    model's solver on Husky, which judges each conflict of a click that way. It asks the
+    manager for the cube (``cube`` is ``dd``'s overridable method), so a set met before is
+    answered from here. Cubes of literals (a dict) are not kept.
+    """
+
+    def cube(self, dvars: Mapping[str, bool] | Collection[str]) -> BDD:
+        if not isinstance(dvars, set | frozenset):
+            made: BDD = super().cube(dvars)
+            return made
+        cubes: Memo[frozenset[str], BDD] | None = getattr(self, "_cubes", None)
+        if cubes is None:
+            cubes = Memo(CUBES)
+            self._cubes = cubes
+        key = frozenset(dvars)
+        found = cubes.get(key)
+        if found is None:
+            found = cubes[key] = super().cube(dvars)
+        return found
 
 
 def _names(manager: Manager) -> dict[int, str]:

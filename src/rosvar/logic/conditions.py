@@ -9,31 +9,39 @@ t" (decided only when a configuration makes t concrete). Everything that asks
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
 from rosvar.logic.atoms import PREDICATES, Atom, FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.bdd import BDD, Manager, cofactor, evaluate, new_manager, walked_support
-from rosvar.logic.cells import CELLS
+from rosvar.logic.cells import CELLS, FRESH, PREDICATE_TEXTS
 from rosvar.logic.inputs import OTHER, UNSET, Input, Slot
 from rosvar.logic.printer import Printer
 from rosvar.logic.terms import Apply, Term, term_inputs
 from rosvar.logic.terms import evaluate as evaluate_term
 from rosvar.memo import Memo
 
+_Member = tuple[Input, PredicateAtom, str | None, frozenset[Any]]
+"""A predicate of a cell group: its input, the atom, its term's function (None: the bare
+hole) and the constants the term compares the input with."""
 CACHE_ENTRIES = 1 << 16
 """Size of CUDD's computed table, fixed. CUDD's larger default start is slow to set up, and
 CUDD grows the table with the unique table, i.e. with the number of variables, whether or not
 it is used: interpretation fills a small part of this size, and a larger table only costs
 page faults; the feature model's quantification in this manager does as many steps with it
 as with a larger one (docs/performance.md)."""
+_QUOTED = re.compile(r"'([^']*)'|\"([^\"]*)\"")
+MAX_WITNESS_TRIALS = 20_000
+"""Predicate evaluations one example's search for unforeseen texts may make (bounded work
+for a condition over many inputs)."""
 SUPPORT_WALK_FACTOR = 16  # a node visited in Python costs about as much as 16 variables in dd
 MAX_CELL_GROUP = 24
 """Predicates over one input related by one fact over all of them (its size grows with
 their number times their cells); a later one is related to each earlier one by a fact of
 its own (pairs, enough for a clash between two nodes)."""
-MEMORY_PER_FILE = 512 << 10
-MIN_MEMORY = 64 << 20
+MEMORY_PER_FILE = 128 << 10
+MIN_MEMORY = 16 << 20
 MAX_MEMORY = 1 << 30
 """Bounds of the memory estimate given to CUDD (``memory_estimate``, see
 :func:`memory_estimate`); the upper one is ``dd``'s default."""
@@ -43,9 +51,11 @@ def memory_estimate(files: int) -> int:
     """What CUDD is told to expect for an analysis of ``files`` launch files.
 
     CUDD touches a 128th of its estimate when the manager is created (page faults, for
-    ``dd``'s default of 1 GiB) and collects garbage more eagerly once it uses 90 % of it.
-    Interpretation uses a small fraction of this share per file (docs/performance.md), so it
-    keeps a wide margin while small systems start small.
+    ``dd``'s default of 1 GiB), and collects garbage only once it uses 90 % of it: below,
+    dead nodes pile up until they outnumber four times the unique table's slots (256 per
+    variable), and CUDD never gives their memory back. Interpretation uses about half of
+    this share per file (docs/performance.md), so it keeps a margin, while the web server's
+    graph build, which leaves most of its nodes dead, collects them as it goes.
     """
     return min(MAX_MEMORY, max(MIN_MEMORY, files * MEMORY_PER_FILE))
 
@@ -90,8 +100,9 @@ class ConditionSpace:
         self._described: Memo[tuple[BDD, bool, bool, int], str] = Memo()
         self._satisfiable: Memo[tuple[BDD, int], bool] = Memo()  # by condition and facts
         self._printer: Printer | None = None
-        # predicates over terms of one input whose cells are known, by input and function
-        self._cell_groups: dict[tuple[Input, str], list[tuple[PredicateAtom, frozenset[Any]]]] = {}
+        # predicates over one input's hole or terms whose cells are known, by input
+        self._cell_groups: dict[Input, list[_Member]] = {}
+        self._decisions: Memo[tuple[PredicateAtom, str], bool] = Memo()  # by atom and text
         # Choice.const's constants of this space, by text: choices are immutable, and the
         # same literal is met again in every file that includes the one it is written in.
         self.constants: dict[object, Any] = {}
@@ -178,31 +189,24 @@ class ConditionSpace:
 
     def _relate(self, atom: PredicateAtom) -> None:
         """Add as a fact which predicates over the input of ``atom``'s term can hold
-        together, when its function's cells say so (:mod:`rosvar.logic.cells`)."""
-        term = atom.term
-        cells = CELLS.get(term.function) if isinstance(term, Apply) else None
-        inputs = term_inputs(term)
-        if cells is None or len(inputs) != 1:
+        together for an unforeseen value: those over its bare hole and over terms of
+        registered functions of it (:mod:`rosvar.logic.cells`) are one group, evaluated at
+        the group's witnesses."""
+        member = self._cell_member(atom)
+        if member is None:
             return
-        assert isinstance(term, Apply)
-        (input_,) = inputs
-        constants = cells.constants(term, input_)
-        if constants is None:
-            return
-        group = self._cell_groups.setdefault((input_, term.function), [])
-        group.append((atom, constants))
+        input_ = member[0]
+        group = self._cell_groups.setdefault(input_, [])
+        group.append(member)
         related = [group] if len(group) <= MAX_CELL_GROUP else [[g, group[-1]] for g in group[:-1]]
         for members in related:
             if len(members) < 2:
                 continue
-            values = cells.witnesses(frozenset().union(*(c for _a, c in members)))
-            seen = {
-                tuple(decide_predicate(a, {input_: value}, None) for a, _c in members)
-                for value in values
-            }
+            values = _witnesses(members)
+            seen = {tuple(self._decided(m[1], input_, v) for m in members) for v in values}
             if len(seen) == 1 << len(members):
                 continue
-            variables = [self.bdd.var(self._var_of[a]) for a, _c in members]
+            variables = [self.bdd.var(self._var_of[m[1]]) for m in members]
             possible = self.false
             for combination in seen:
                 cube = self.true
@@ -210,6 +214,88 @@ class ConditionSpace:
                     cube &= variable if holds else ~variable
                 possible |= cube
             self.constrain(~self.slot(input_, OTHER) | possible)
+
+    def _cell_member(self, atom: PredicateAtom) -> _Member | None:
+        """``atom`` as a member of its input's group: a predicate whose texts are registered,
+        over the bare hole or over a term of one input whose function's cells know what it
+        compares the input with."""
+        term = atom.term
+        inputs = term_inputs(term)
+        if len(inputs) != 1 or atom.test not in PREDICATE_TEXTS:
+            return None  # a predicate whose texts are not known could tell others apart
+        (input_,) = inputs
+        if not isinstance(term, Apply):
+            return input_, atom, None, frozenset()
+        cells = CELLS.get(term.function)
+        constants = None if cells is None else cells.constants(term, input_)
+        return None if constants is None else (input_, atom, term.function, constants)
+
+    def _decided(self, atom: PredicateAtom, input_: Input, value: str) -> bool:
+        """``atom`` at ``value`` of its one input, remembered: a group is evaluated again
+        at each predicate it gains."""
+        key = (atom, value)
+        found = self._decisions.get(key)
+        if found is None:
+            found = self._decisions[key] = decide_predicate(atom, {input_: value}, None)
+        return found
+
+    def witnesses(
+        self, chosen: Mapping[Input, Slot], required: Mapping[PredicateAtom, bool]
+    ) -> dict[Input, str] | None:
+        """A text outside its domain for each input ``chosen`` gives ``OTHER``, under which
+        every atom of ``required`` over those inputs holds as given (a hole stands for an
+        unforeseen value only: an atom over another input's hole does not matter where that
+        input holds a slot). Each input's candidates are the witnesses of its group and of
+        the atoms over it alone, and the literal texts of the atoms it is in; searched in
+        order, within :data:`MAX_WITNESS_TRIALS` evaluations. None when none is found."""
+        others = sorted((i for i, slot in chosen.items() if slot is OTHER), key=str)
+        alone: dict[Input, list[PredicateAtom]] = {input_: [] for input_ in others}
+        joint: list[tuple[PredicateAtom, set[Input]]] = []
+        for atom in required:
+            inputs = term_inputs(atom.term)
+            if not inputs or not inputs <= alone.keys():
+                continue
+            if len(inputs) == 1:
+                alone[next(iter(inputs))].append(atom)
+            else:
+                joint.append((atom, inputs))
+        literals = [text for atom, _inputs in joint for text in _literals(atom.term)]
+        candidates: list[list[str]] = []
+        for input_ in others:
+            members = list(self._cell_groups.get(input_, ()))
+            members += [m for a in alone[input_] if (m := self._cell_member(a)) is not None]
+            domain = self._domains.get(input_, ())
+            own = [text for atom in alone[input_] for text in _literals(atom.term)]
+            texts = dict.fromkeys([*_witnesses(members), *own, *literals])
+            candidates.append(
+                [
+                    text
+                    for text in texts
+                    if text not in domain
+                    and all(self._decided(a, input_, text) is required[a] for a in alone[input_])
+                ]
+            )
+        trials = [MAX_WITNESS_TRIALS]
+
+        def search(index: int, given: dict[Input, str]) -> dict[Input, str] | None:
+            if index == len(others):
+                return dict(given)
+            for text in candidates[index]:
+                given[others[index]] = text
+                checked = [a for a, inputs in joint if others[index] in inputs <= given.keys()]
+                trials[0] -= len(checked)
+                if trials[0] < 0:
+                    return None
+                if all(decide_predicate(a, given, None) is required[a] for a in checked):
+                    found = search(index + 1, given)
+                    if found is not None:
+                        return found
+                del given[others[index]]
+                if trials[0] < 0:
+                    return None
+            return None
+
+        return search(0, {})
 
     def support(self, u: BDD) -> set[str]:
         """The variables ``u`` depends on, in time linear in the size of ``u``.
@@ -380,6 +466,37 @@ class ConditionSpace:
 
     def atoms(self) -> Iterable[Atom]:
         return iter(self._atoms)
+
+
+def _witnesses(members: Iterable[_Member]) -> tuple[str, ...]:
+    """The texts that tell the members' predicates apart: per function, the witnesses of
+    its members' constants together (cells of two literals meet between them), each
+    predicate's texts, and a text equal to none."""
+    constants: dict[str, set[Any]] = {}
+    texts: list[str] = []
+    for _input, atom, function, compared in members:
+        if function is not None:
+            constants.setdefault(function, set()).update(compared)
+        texts.extend(PREDICATE_TEXTS.get(atom.test, ()))
+    for function, together in sorted(constants.items()):
+        texts.extend(CELLS[function].witnesses(together))
+    return tuple(dict.fromkeys([*texts, FRESH]))
+
+
+def _literals(term: Term) -> list[str]:
+    """The literal texts of a term's operands, and the quoted texts inside them (what an
+    expression over several inputs compares them with)."""
+    found: list[str] = []
+    pending: list[object] = [term]
+    while pending:
+        operand = pending.pop()
+        if isinstance(operand, str):
+            found += [operand, *(a or b for a, b in _QUOTED.findall(operand))]
+        elif isinstance(operand, Apply):
+            pending.extend(operand.operands)
+        elif isinstance(operand, tuple):
+            pending.extend(operand)
+    return found
 
 
 def decide_predicate(atom: PredicateAtom, concrete: Mapping[Input, str], host: object) -> bool:

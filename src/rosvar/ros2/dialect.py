@@ -12,6 +12,7 @@ from rosvar.ros2 import (
     boolean_substitutions,  # noqa: F401 - registers their handlers
     controllers,  # noqa: F401 - registers its spawners' controllers
     parameter_checks,  # noqa: F401 - registers ROS 2's own checks
+    term_cells,  # noqa: F401 - registers its term functions' cells
     written_files,  # noqa: F401 - registers $(rosvar-written-file)
 )
 from rosvar.ros2.api.actions import ACTIONS

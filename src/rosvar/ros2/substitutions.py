@@ -44,11 +44,11 @@ from rosvar.interpreter.substitution_args import (
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail, combine_bind, crossed, ite
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.terms import Apply, TermError, TermFunction, concat, register
+from rosvar.logic.terms import Apply, Hole, TermError, TermFunction, concat, register
 from rosvar.memo import Memo
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS
 from rosvar.ros2.api.unmodelled import UNMODELLED
-from rosvar.ros2.boolean_eval import boolean_expression
+from rosvar.ros2.boolean_eval import BooleanExpression, boolean_expression
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.frontends.python.text import (
     CONFIGURATION_EQUALS,
@@ -421,31 +421,37 @@ class Ros2Substituter:
         self, template: Template, parts: list[Choice[Value]], text: str
     ) -> Choice[Value] | None:
         """``$(eval template)`` (``parts``: its parts' values) computed as the condition
-        where it is true (:mod:`rosvar.ros2.boolean_eval`), with the budget and notes that
-        crossing its values would have spent and made; None where it is to be crossed."""
+        where it is true (:mod:`rosvar.ros2.boolean_eval`); None where it is to be crossed.
+        Of strings alone, with the budget and notes that crossing them would have spent and
+        made, in crossing's order; with terms, as :meth:`_over_terms`."""
         expression = boolean_expression(template, EVAL_NAMESPACES)
         if expression is None:
             return None
         values = [v for v, part in zip(parts, template, strict=True) if isinstance(part, Call)]
+        if not expression.accepts(values):
+            return None
+        if any(isinstance(leaf, Hole | Apply) for value in values for leaf in value.values()):
+            return self._over_terms(expression, template, values, text)
+        if any(isinstance(leaf, Fail) for value in values for leaf in value.values()):
+            return None  # crossed: the failures in crossing's order
         product = math.prod(len(value.branches) for value in values)
-        if product <= 1 or not expression.accepts(values) or not self.budget.fits(product):
+        if product <= 1 or not self.budget.fits(product):
             return None  # nothing to cross, or crossing warns or fails somewhere
         if product > MAX_COMBINATIONS or expression.longest(values) > MAX_VALUE_SIZE:
             return None
-        strings = cast("list[Choice[str]]", values)
-        count, first = _combinations(self.space, strings, product)
+        count, first = _combinations(self.space, values, product)
         if count == 0:
             self.budget.affordable_count(text, product)
             return Choice.empty(self.space)
-        leading = _evaluation(_text(template, first))  # a boolean by the expression's shape
+        leading = _evaluation(_text(template, cast("list[str]", first)))
         if leading not in (TRUE, FALSE):
             return None
         self.budget.affordable_count(text, product)  # the text's combinations
         if not self.budget.affordable_count(text, count):  # the evaluation of each text
             return Choice.const(self.space, too_complex(text))
-        holds = expression.condition(self.space, strings)
+        holds = expression.condition(self.space, cast("list[Choice[Raw]]", values))
         covered = self.space.true
-        for value in strings:
+        for value in values:
             covered &= value.covered()
         where = {TRUE: covered & holds, FALSE: covered & ~holds}
         other = FALSE if leading == TRUE else TRUE
@@ -454,13 +460,53 @@ class Ros2Substituter:
             branches.append((where[other], other))
         return Choice(tuple(branches), self.space.false)
 
+    def _over_terms(
+        self,
+        expression: BooleanExpression,
+        template: Template,
+        values: list[Choice[Value]],
+        text: str,
+    ) -> Choice[Value]:
+        """The expression over values some of which are terms: ``True`` and ``False`` where
+        every term keeps its literal, the first failing substitution's failure where one
+        fails (as crossing gives it), and one unknown value where a term may leave its
+        literal, computed in a configuration. Nothing is crossed: the work grows with the
+        terms tested and the size of the conditions, which :meth:`ValueBudget.affords_tests`
+        and :meth:`ValueBudget.affords_conditions` bound."""
+        computed = functools.partial(_evaluated_with, template)
+        if not self.budget.affords_tests(text, expression.tested(values)):
+            return Choice.const(self.space, too_complex(text, values, computed))
+        false = self.space.false
+        covered = self.space.true
+        for value in values:
+            covered &= value.covered()
+        branches: list[tuple[BDD, Value]] = []
+        failed = false
+        for value in values:  # crossing fails with the first failing substitution
+            failing = false
+            for condition, leaf in value.branches:
+                if isinstance(leaf, Fail):
+                    branches.append((covered & ~failed & condition, leaf))
+                    failing |= condition
+            failed |= failing
+        escapes = expression.escapes(self.space, values)
+        holds = expression.condition(self.space, values)
+        kept = covered & ~failed & ~escapes
+        branches += [(kept & holds, TRUE), (kept & ~holds, FALSE)]
+        if escapes != false:  # one unknown value, which a configuration computes
+            unknown = too_complex(text, values, computed)
+            branches.append((covered & ~failed & escapes, unknown))
+        if not self.budget.affords_conditions(text, (branch[0] for branch in branches)):
+            return Choice.const(self.space, too_complex(text, values, computed))
+        return Choice.of(branches, false)
+
 
 TRUE, FALSE = str(True), str(False)
 
 
 def _combinations(
-    space: ConditionSpace, values: Sequence[Choice[str]], product: int
-) -> tuple[int, list[str]]:
+    space: ConditionSpace, values: Sequence[Choice[Value]], product: int
+) -> tuple[int, list[Value]]:
     """How many combinations of one branch of each of ``values`` are possible, and the first
     (that of a nested loop over them, first outermost), as :func:`crossed` gives them: all
     of them and the first branches where no two values' conditions share a variable."""
@@ -778,10 +824,26 @@ def _eval(host: Interpretation[Context], context: Context, args: list[Raw]) -> C
     comma-separated names; ``math`` when not given)."""
     if not 1 <= len(args) <= 2:
         return _fail(host, "eval substitution expects 1 or 2 arguments", "substitution-invalid")
-    if not all(isinstance(arg, str) for arg in args):  # evaluated once a configuration is given
+    return Choice.const(host.space, _eval_value(args))
+
+
+def _eval_value(args: Sequence[Raw]) -> Value:
+    """``$(eval)`` of its arguments; a term where one is, evaluated once a configuration
+    gives it."""
+    if not all(isinstance(arg, str) for arg in args):
         shown = " ".join(map(str, args))
-        return Choice.const(host.space, Apply("ros2-eval", tuple(args), f"$(eval {shown})"))
-    return Choice.const(host.space, _evaluation(*cast("list[str]", args)))
+        return Apply("ros2-eval", tuple(args), f"$(eval {shown})")
+    return _evaluation(*cast("list[str]", args))
+
+
+def _evaluated_with(template: Template, leaves: Sequence[Value]) -> Value:
+    """``$(eval template)`` with ``leaves`` for its substitutions, in order."""
+    for leaf in leaves:
+        if isinstance(leaf, Fail):
+            return leaf
+    substituted = iter(cast("Sequence[Raw]", leaves))
+    parts = [part if isinstance(part, str) else next(substituted) for part in template]
+    return _eval_value([concat(parts)])
 
 
 def _evaluation(text: str, modules: str = DEFAULT_MODULES) -> str | Fail:

@@ -74,15 +74,22 @@ class Workspace:
         self._index: dict[str, Package] = {}
         self._indexed = -1
         self._confinement: Confinement | None = None
-        self._confinement_key: tuple[int, int, int, bool] = (0, 0, 0, False)
+        self._confinement_key: tuple[int, int, int, int, bool] = (0, 0, 0, 0, False)
         self._shares: dict[str, ShareMap] = {}  # by package folder, read on first use
 
     def confinement(self) -> Confinement:
         """The directories the analysis may read files in (``file-outside-workspace``): the
         given ones (a given file's own), the packages, ROS_PACKAGE_PATH's."""
-        packages = [*self.packages.values(), *self.shadowed]
-        key = (len(self.roots), len(packages), len(self.dependency_roots), self.allow_outside)
+        # asked at every include and load: the key is counted, the packages listed on change
+        key = (
+            len(self.roots),
+            len(self.packages),
+            len(self.shadowed),
+            len(self.dependency_roots),
+            self.allow_outside,
+        )
         if self._confinement is None or self._confinement_key != key:
+            packages = [*self.packages.values(), *self.shadowed]
             given = [r if os.path.isdir(r) else os.path.dirname(r) for r in self.roots]
             directories = [*given, *self.dependency_roots, *(p.path for p in packages)]
             installed = self.installed if self.ros_version is RosVersion.ROS2 else None

@@ -5,6 +5,8 @@ from __future__ import annotations
 import functools
 import os
 
+from rosvar.files import real_path_from
+
 
 def real_path(path: str) -> str:
     """``os.path.realpath``, with one ``lstat`` per new absolute path instead of one per
@@ -17,8 +19,4 @@ def _real_absolute(path: str) -> str:
     """A path's directory is resolved once (and cached) for all the files in it, so only
     the last component is checked; ``.`` and ``..``, whose meaning depends on the
     symlinks before them, go to ``os.path.realpath`` whole."""
-    head, tail = os.path.split(path)
-    if tail in ("", ".", "..") or head == path:
-        return os.path.realpath(path)
-    joined = os.path.join(_real_absolute(head), tail)
-    return os.path.realpath(joined) if os.path.islink(joined) else joined
+    return real_path_from(path, _real_absolute)

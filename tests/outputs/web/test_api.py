@@ -304,7 +304,8 @@ def test_memory_stays_bounded_over_many_distinct_clicks(monkeypatch: pytest.Monk
     assert api.sessions == 2
     ours = [found for found in memo.memos() if found.capacity == 40]  # other engines' too
     assert all(len(found) <= 40 for found in ours)
-    assert sum(len(found) == 40 for found in ours) >= 3  # the bound was reached
+    full = 40 - 40 // memo.EVICTED  # a full memo forgets an eighth of it at once
+    assert sum(len(found) >= full for found in ours) >= 3  # the bound was reached
     for cache in (engine._steps, engine._replays, engine.views._views):
         assert len(cache._items) <= steps
     assert all(len(manager) <= count for manager, count in zip(managers, nodes, strict=True)), (

@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+import os
+from typing import TYPE_CHECKING, Any
 
 import pytest
 
 from rosvar.interpreter.model import ParamDecl, YamlDecl
+from rosvar.ros1.tags import rosparam
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -169,3 +171,36 @@ def test_alias_bomb_in_a_parameter_file_is_refused(ws: LaunchWorkspace) -> None:
     model = ws.model(file)
     assert [e.code for e in model.errors] == ["rosparam-invalid"]
     assert "expands to more than" in model.errors[0].message
+
+
+def test_a_parameter_file_is_loaded_once_for_all_its_includers(
+    ws: LaunchWorkspace, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    ws.write("config/gains.yaml", "kp: 1.5\nki: [1, 2]\n")
+    ws.launch(
+        "common.launch",
+        '<rosparam file="$(find pkg)/config/gains.yaml" ns="ctrl"/>'
+        '<rosparam file="$(find pkg)/config/missing.yaml"/>',
+    )
+    include = '<include file="$(find pkg)/launch/common.launch"/>'
+    files = [ws.launch(f"{name}.launch", include) for name in ("first", "second")]
+    loaded: list[str | None] = []
+    load = rosparam.load_rosparam
+
+    def spied(command: str, ns: str | None, file: str | None, *rest: Any) -> object:
+        loaded.append(file)
+        return load(command, ns, file, *rest)
+
+    monkeypatch.setattr(rosparam, "load_rosparam", spied)
+    for file in files:
+        model = ws.model(file)
+        params = {
+            str(p.name.single()): p.value.single() for p in model.params if isinstance(p, ParamDecl)
+        }
+        assert params == {"/ctrl/kp": 1.5, "/ctrl/ki": [1, 2]}
+        assert [e.code for e in model.errors] == ["file-missing"]  # at each place
+    assert [os.path.basename(str(f)) for f in loaded] == [
+        "gains.yaml",
+        "missing.yaml",
+        "missing.yaml",
+    ]

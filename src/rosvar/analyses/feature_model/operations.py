@@ -10,10 +10,10 @@ from enum import StrEnum
 from rosvar.analyses.feature_model.features import name_of, value_text
 from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.analyses.feature_model.solver import Solver
-from rosvar.logic.atoms import FileAtom, SlotAtom
+from rosvar.logic.atoms import FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.bdd import BDD, cofactors, conjoin, walked_support
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Slot
+from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Input, Slot
 
 
 def count_configurations(model: FeatureModel) -> int | None:
@@ -154,24 +154,49 @@ def explain(model: FeatureModel, goal: BDD) -> list[str]:
     return [model.constraints[n].text for n in kept] or ["the feature tree itself"]
 
 
-def simplest_trigger(space: ConditionSpace, condition: BDD) -> dict[str, str]:
+def simplest_trigger(
+    space: ConditionSpace, condition: BDD, witnesses: bool = False
+) -> dict[str, str]:
     """An arg assignment making ``condition`` true with the fewest non-default choices.
 
     A cheapest path through the BDD, where choosing a non-default value costs 1
     and an ``<other>`` value costs 3; the inputs the path leaves open keep their
-    defaults.
+    defaults. With ``witnesses``, the path respects the space's facts and an ``<other>``
+    value is a text that gives it (:func:`trigger`).
     """
-    involved = {
-        atom.input
-        for atom in (space.atom_of(n) for n in space.support(condition))
-        if isinstance(atom, SlotAtom)
-    }
-    target = condition
-    for input_ in involved:
-        target &= space.input_constraint(input_)
+    found = trigger(space, condition, witnesses)
+    return {} if found is None else found.shown
+
+
+@dataclass(frozen=True)
+class Trigger:
+    """An example configuration of a condition: what it shows, and whether an unforeseen
+    value of it has no witness (no text rosvar tried gives what the path asks)."""
+
+    shown: dict[str, str]
+    unwitnessed: bool
+
+
+def trigger(space: ConditionSpace, condition: BDD, witnesses: bool = True) -> Trigger | None:
+    """:func:`simplest_trigger`'s path and what it shows; None where nothing satisfies
+    ``condition``. With ``witnesses`` the facts over its variables hold on the path (the
+    combinations the witnesses showed), and each ``<other>`` input is given the first
+    witness under which the path's predicates over that input alone hold as it says."""
+    if witnesses:
+        target = condition & space.care(condition)
+    else:
+        involved = {
+            atom.input
+            for atom in (space.atom_of(n) for n in space.support(condition))
+            if isinstance(atom, SlotAtom)
+        }
+        target = condition
+        for input_ in involved:
+            target &= space.input_constraint(input_)
     if target == space.false:
-        return {}
+        return None
     _cost_total, path = _cheapest(space, target, {})
+    texts = _witness_texts(space, path) if witnesses else {}
     chosen: dict[str, str] = {}
     for name, value in path.items():
         atom = space.atom_of(name)
@@ -182,10 +207,30 @@ def simplest_trigger(space: ConditionSpace, condition: BDD) -> dict[str, str]:
                 if isinstance(input_, ArgInput)
                 else str(input_)
             )
-            chosen[key] = value_text(atom.slot, None)
+            text = texts.get(input_)
+            chosen[key] = value_text(atom.slot, None) if text is None else text
         elif value and isinstance(atom, FileAtom):
             chosen[atom.label] = "selected"
-    return chosen
+    return Trigger(chosen, any(text is None for text in texts.values()))
+
+
+def _witness_texts(space: ConditionSpace, path: dict[str, bool]) -> dict[Input, str | None]:
+    """A text for each input the path gives an unforeseen value, under which the path's
+    predicates hold as it says (:meth:`ConditionSpace.witnesses`); None each when no such
+    texts were found."""
+    chosen: dict[Input, Slot] = {}
+    required: dict[PredicateAtom, bool] = {}
+    for name, value in path.items():
+        atom = space.atom_of(name)
+        if isinstance(atom, SlotAtom) and value:
+            chosen[atom.input] = atom.slot
+        elif isinstance(atom, PredicateAtom):
+            required[atom] = value
+    others = [input_ for input_, slot in chosen.items() if slot is OTHER]
+    if not others:
+        return {}
+    found = space.witnesses(chosen, required)
+    return {input_: None if found is None else found[input_] for input_ in others}
 
 
 Path = tuple[float, dict[str, bool]]

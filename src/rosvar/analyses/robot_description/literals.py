@@ -19,6 +19,7 @@ from typing import Final
 
 from rosvar.interpreter.safe_eval import EvalEnvironment, EvalFailed, EvalRefused, evaluate_value
 from rosvar.logic.atoms import register_predicate
+from rosvar.logic.cells import register_predicate_texts, spellings
 from rosvar.logic.terms import Apply, Hole, Operand, Term, TermError, register
 
 TRUE_WORDS: Final = ("true", "True")
@@ -84,6 +85,8 @@ def is_false(text: str) -> bool:
 
 register_predicate("xacro-true", is_true, "{} is true for xacro")
 register_predicate("xacro-false", is_false, "{} is false for xacro")
+for _test in ("xacro-true", "xacro-false"):  # and any integer: 0 is false, others true
+    register_predicate_texts(_test, (*spellings((*TRUE_WORDS, *FALSE_WORDS)), "0", "1", "2"))
 
 
 def text_of(value: object) -> str | Term:

@@ -19,7 +19,7 @@ def finding_document(finding: Finding, space: ConditionSpace) -> dict[str, objec
         "message": finding.message,
         "file": finding.file,
         "condition": space.describe(finding.condition),
-        "example": simplest_trigger(space, finding.condition),
+        "example": simplest_trigger(space, finding.condition, witnesses=True),
         "locations": [location.to_json() for location in finding.locations],
     }
 

@@ -8,6 +8,7 @@ from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import ClearParamDecl, Raw
 from rosvar.logic.atoms import PREDICATES, register_predicate
 from rosvar.logic.bdd import BDD
+from rosvar.logic.cells import register_predicate_texts, spellings
 from rosvar.logic.choice import Choice
 from rosvar.logic.terms import Apply, Hole
 from rosvar.ros1.scope import Scope
@@ -16,6 +17,9 @@ from rosvar.ros1.scope import Scope
 register_predicate("empty", lambda text: text == "", "{} is empty")
 register_predicate("bool-true", lambda text: text.lower() == "true", "{} is 'true'")
 register_predicate("bool-false", lambda text: text.lower() == "false", "{} is 'false'")
+register_predicate_texts("empty", ("",))
+for _test in ("bool-true", "bool-false"):
+    register_predicate_texts(_test, spellings(("true", "false")))
 
 
 def where_text(it: Interpretation[Scope], value: Choice[object], test: str) -> BDD:

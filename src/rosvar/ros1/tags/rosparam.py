@@ -228,32 +228,33 @@ def _emit(
             )
         )
         return
-    try:
-        pairs = load_rosparam(
-            str(command),
-            ns if isinstance(ns, str) else None,
-            file if isinstance(file, str) else None,
-            param if isinstance(param, str) else None,
-            str(body),
-            str(scope_ns),
-            it.workspace.confinement(),
-        )
-    except FileNotRead as refused:
-        _not_read(it, str(file), refused.code, str(refused))
-        return
-    except ValueError as error:
-        code = "file-missing" if isinstance(error, MissingFile) else "rosparam-invalid"
-        it.fail(it.space.true, code, f"error loading <rosparam> tag: {error}")
-        return
-    for key, value in pairs:
-        it.model.params.append(
-            ParamDecl(
-                it.pc,
-                entity.location,
-                Choice.const(it.space, key),
-                Choice.const(it.space, value),
+    loaded = it.files.kept(__name__)
+    values = loaded.get(parts)
+    if values is None:
+        try:
+            pairs = load_rosparam(
+                str(command),
+                ns if isinstance(ns, str) else None,
+                file if isinstance(file, str) else None,
+                param if isinstance(param, str) else None,
+                str(body),
+                str(scope_ns),
+                it.workspace.confinement(),
             )
-        )
+        except FileNotRead as refused:
+            _not_read(it, str(file), refused.code, str(refused))
+            return
+        except ValueError as error:
+            code = "file-missing" if isinstance(error, MissingFile) else "rosparam-invalid"
+            it.fail(it.space.true, code, f"error loading <rosparam> tag: {error}")
+            return
+        # loaded once per analysis (an included file loads its parameters for each includer)
+        space = it.space
+        values = loaded[parts] = [
+            (Choice.const(space, k), Choice.const(space, v)) for k, v in pairs
+        ]
+    pc, location = it.pc, entity.location
+    it.model.params.extend(ParamDecl(pc, location, name, value) for name, value in values)
 
 
 def _not_read(it: Interpretation[Scope], file: str, code: FileCode, message: str) -> None:

@@ -41,6 +41,9 @@ class Param:
     python: str
     xml: str
     slot: Slot = Slot.ATTRIBUTE
+    before: str | None = None
+    """Its Python name in launch_ros before Galactic (``node_executable``), which later
+    releases refuse: read as this one, with a warning."""
 
 
 @dataclass(frozen=True)
@@ -180,8 +183,16 @@ _ROS_NODE = (
     Param("parameters", "param", Slot.PARAMETERS),
     Param("remappings", "remap", Slot.PAIRS),
 )
+_NODE_NAMES = (
+    Param("name", "name", before="node_name"),
+    Param("namespace", "namespace", before="node_namespace"),
+)
+"""A node's name and namespace, as launch_ros names them since Foxy."""
 _NODE = (
-    *attributes("package:pkg", "executable:exec", "name", "namespace", "exec_name"),
+    *attributes("package:pkg"),
+    Param("executable", "exec", before="node_executable"),
+    *_NODE_NAMES,
+    *attributes("exec_name"),
     *_PROCESS,
     *_ROS_NODE,
     Param("arguments", "args", Slot.COMMAND_LINE),
@@ -213,7 +224,8 @@ expose(
         ("composable_node",),
         ("launch_ros.ComposableNode",),
         (
-            *attributes("package:pkg", "plugin", "name", "namespace"),
+            *attributes("package:pkg", "plugin"),
+            *_NODE_NAMES,
             *_ROS_NODE,
             Param("extra_arguments", "extra_arg", Slot.PARAMETERS),
         ),

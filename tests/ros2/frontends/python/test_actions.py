@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from oracle.ros2_client import canonical_nodes, resolution_nodes, run_oracle
 from ros2.tags.launches import launch
 
 HEADER = """from launch import LaunchDescription
@@ -195,3 +196,45 @@ def test_a_launch_time_string_in_a_parameter_is_typed_str(tmp_path: Path) -> Non
         "lowered": "2",
         "substituted": 2,
     }
+
+
+RENAMED = """from launch import LaunchDescription
+from launch_ros.actions import ComposableNodeContainer, Node
+from launch_ros.descriptions import ComposableNode
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='pkg', {node}='talker', {name}='t', {namespace}='robot'),
+        ComposableNodeContainer(
+            {name}='box', {namespace}='', package='pkg',
+            executable='component_container',
+            composable_node_descriptions=[
+                ComposableNode(package='pkg', plugin='pkg::C', {name}='c', {namespace}='x'),
+            ]),
+    ])
+"""
+
+
+def test_launch_ros_names_before_galactic_are_read_as_their_successors(tmp_path: Path) -> None:
+    """``node_executable``, ``node_name``, ``node_namespace`` (Dashing, Eloquent): the file
+    starts what it did there, which is what the oracle starts with today's names; each old
+    name is a warning, as jazzy refuses it."""
+    new = {"node": "executable", "name": "name", "namespace": "namespace"}
+    it = launch(tmp_path, RENAMED.format(**new), suffix=".launch.py")
+    expected = it.matches_oracle({})
+    old = launch(
+        tmp_path / "old",
+        RENAMED.format(node="node_executable", name="node_name", namespace="node_namespace"),
+        suffix=".launch.py",
+    )
+    result = old.analysis.resolve([str(old.main)], {})
+    assert result.ok, result.errors
+    assert canonical_nodes(resolution_nodes(result)) == canonical_nodes(expected)
+    warned = [d for d in old.model.diagnostics if d.code == "python-launch-renamed"]
+    assert len(warned) == 7
+    assert warned[0].message == (
+        "launch_ros.actions.Node() argument 'node_executable' is launch_ros' name before "
+        "Galactic, which later releases refuse: read as 'executable'"
+    )
+    assert not run_oracle(old.main, {}, [old.main.parent.parent])["ok"]  # jazzy refuses them

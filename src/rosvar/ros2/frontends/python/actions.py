@@ -245,6 +245,7 @@ def _action(spec: Action) -> Callable[[Call], Value]:
         entity = Entity(spec.tag, {}, call.location)
         given: list[tuple[Param, Value]] = []
         by_name = {param.python: param for param in spec.params}
+        renamed = {param.before: param for param in spec.params if param.before}
         for param, value in zip(spec.params, call.args, strict=False):
             given.append((param, value))
         for name, value in call.kwargs.items():
@@ -252,6 +253,15 @@ def _action(spec: Action) -> Callable[[Call], Value]:
                 _set_condition(call, entity, value)
             elif name in by_name:
                 given.append((by_name[name], value))
+            elif name in renamed:
+                param = renamed[name]
+                call.sink.warning(
+                    "python-launch-renamed",
+                    f"{call.name}() argument '{name}' is launch_ros' name before Galactic, "
+                    f"which later releases refuse: read as '{param.python}'",
+                    call.location,
+                )
+                given.append((param, value))
             else:
                 call.sink.note(
                     "python-launch-argument",
