@@ -25,6 +25,7 @@ def run(text: str) -> tuple[dict[str, Value], list[Diagnostic]]:
 
 FOLLOWED = [
     "1 + 2 * 3",
+    "2.5 * 2.0 * True",
     "max(1, 2.5) + min([3, 1, 2])",
     "sorted(['b', 'a'])",
     "7 // 2 - 7 % 3",

@@ -1310,6 +1310,10 @@ class Interpreter:
         if isinstance(op, ast.Mult):
             if isinstance(left, int) and isinstance(right, int):
                 return left.bit_length() + right.bit_length() > MAX_INT_BITS
+            if not isinstance(left, str | list | tuple) and not isinstance(
+                right, str | list | tuple
+            ):
+                return False  # numbers: a float's size is bounded
             count = right if isinstance(right, int) else left
             sequence = left if count is right else right
             return not isinstance(count, int) or size(sequence) * max(count, 0) > MAX_LENGTH

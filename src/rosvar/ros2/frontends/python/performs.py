@@ -12,9 +12,11 @@ from __future__ import annotations
 
 import ast
 import json
+import os
 
 from rosvar.diagnostics import DiagnosticSink
 from rosvar.files import Confinement, FileRefused, read_file
+from rosvar.memo import Memo
 from rosvar.ros2.frontends.python import written as written_files
 from rosvar.ros2.frontends.python.interpreter import (
     MODULE_NAME,
@@ -39,6 +41,19 @@ MAX_NESTED = 8
 ``ReplaceString``); deeper, the text is not computed."""
 
 
+READINGS_CAPACITY = 256
+"""Readings of ``perform`` kept (:data:`_readings`)."""
+_readings: Memo[tuple[object, ...], tuple[WrittenFile | str, tuple[Signature, ...]]] = Memo(
+    READINGS_CAPACITY
+)
+"""What ``perform`` gave, by the workspace and the operands, with the files its reading read:
+every node an object is given to, in every configuration giving the same values, asks again
+(nav2's bringup: 7 servers, each configuration, each includer); kept while those files are
+unchanged."""
+Signature = tuple[str, int, int]
+"""A file read: its path, modification time and size (``os.stat``)."""
+
+
 def written(
     packages: dict[str, str], confinement: Confinement, operands: list[str], aspect: Written
 ) -> str:
@@ -61,21 +76,28 @@ class _Reading:
             raise ValueError("a file written is named by four operands")
         if depth > MAX_NESTED:
             raise ValueError(f"files written from files written, over {MAX_NESTED} deep")
-        path, qualified, name, arguments = operands
-        made = self.performed(path, qualified, name, arguments, depth)
+        key = (tuple(sorted(self.packages.items())), self.confinement.roots, *operands)
+        known = _readings.get(key)
+        if known is not None and all(_signature(f[0]) == f for f in known[1]):
+            made = known[0]
+        else:
+            path, qualified, name, arguments = operands
+            read: list[str] = []
+            made = self.performed(path, qualified, name, arguments, depth, read)
+            _readings[key] = (made, tuple(_signature(file) for file in dict.fromkeys(read)))
         if isinstance(made, WrittenFile):
             if aspect is Written.PATH:
                 return WRITTEN_PATH + json.dumps(operands)
             text = written_files.content(made)
-            if isinstance(text, str):
-                return text
-            raise ValueError(f"the file {name}() writes is not known ({text.what})")
+            assert isinstance(text, str)  # else not made
+            return text
         if aspect is Written.PATH:
             return made
         return self.read(made, depth)
 
-    def read(self, path: str, depth: int) -> str:
-        """The text of ``path``: a file written, computed again, or a file of the workspace."""
+    def read(self, path: str, depth: int, read: list[str] | None = None) -> str:
+        """The text of ``path``: a file written, computed again, or a file of the workspace
+        (its path added to ``read``)."""
         if path.startswith(WRITTEN_PATH):
             try:
                 operands = json.loads(path[len(WRITTEN_PATH) :])
@@ -84,20 +106,22 @@ class _Reading:
             if not (isinstance(operands, list) and all(isinstance(o, str) for o in operands)):
                 raise ValueError(f"{path[:200]} names no file written")
             return self.written(operands, Written.TEXT, depth + 1)
+        if read is not None:
+            read.append(path)
         try:
             return read_file(path, self.confinement, MAX_READ_BYTES).decode("utf-8-sig")
         except (FileRefused, OSError, UnicodeDecodeError) as error:
             raise ValueError(f"{path} is not read: {error}") from None
 
     def performed(
-        self, path: str, qualified: str, name: str, arguments: str, depth: int
+        self, path: str, qualified: str, name: str, arguments: str, depth: int, read: list[str]
     ) -> WrittenFile | str:
         """What ``perform`` of an object of class ``name`` made of ``arguments`` gives: the
-        file it writes, or a path."""
+        file it writes, or a path; the files read (modules, data) are added to ``read``."""
         given = _arguments(name, arguments)
         sink = DiagnosticSink()
         reader = Interpreter(path, "", sink, ModulePath(self.packages, self.confinement))
-        reader.rereading = lambda named: self.read(named, depth)
+        reader.rereading = lambda named: self.read(named, depth, read)
         site = ast.Pass()
         try:
             scope = _module_scope(reader, path, qualified, site)
@@ -111,12 +135,27 @@ class _Reading:
             raise ValueError(f"{name}().perform() raises {raised.what()}") from None
         except RecursionError:
             raise ValueError(f"{name}().perform() nests too deeply") from None
-        if isinstance(made, WrittenFile):
+        finally:
+            read.append(path)
+            read.extend(
+                str(module.scope.names.get("__file__"))
+                for module in reader.loaded.values()
+                if module is not None
+            )
+        if isinstance(made, WrittenFile) and isinstance(written_files.content(made), str):
             return made
         if isinstance(made, Text) and made.literal() is not None:
             return str(made.literal())
         reasons = [f"{d.location}: {d.message}" for d in sink.items] or ["not known"]
         raise ValueError(f"what {name}().perform() gives is not known ({reasons[0]})")
+
+
+def _signature(path: str) -> Signature:
+    try:
+        status = os.stat(path)
+    except OSError:
+        return (path, -1, -1)  # missing: kept missing
+    return (path, status.st_mtime_ns, status.st_size)
 
 
 def _arguments(name: str, arguments: str) -> tuple[tuple[Value, ...], dict[str, Value]]:

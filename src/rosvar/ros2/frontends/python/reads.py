@@ -22,7 +22,7 @@ from rosvar.files import FileRefused, read_file
 from rosvar.ros2.frontends.python import launch_time
 from rosvar.ros2.frontends.python.default_files import DefaultFiles
 from rosvar.ros2.frontends.python.modules import ModulePath
-from rosvar.ros2.frontends.python.text import PYTHON_YAML, WRITTEN_PATH, Sub, Text
+from rosvar.ros2.frontends.python.text import PYTHON_YAML, Sub, Text
 from rosvar.ros2.frontends.python.values import (
     Dynamic,
     FileHandle,
@@ -76,11 +76,11 @@ def text(interpreter: Interpreter, handle: FileHandle, node: ast.AST) -> Value:
     if isinstance(handle.path, Text):
         return interpreter.not_followed("the text of a file named at launch time", node)
     modules = interpreter.modules
-    if handle.path.startswith(WRITTEN_PATH) and interpreter.rereading is not None:
-        try:  # a file a helper wrote, named in this configuration
+    if interpreter.rereading is not None:
+        try:  # in one configuration: a file of the workspace, or one a helper wrote
             return interpreter.rereading(handle.path)
         except ValueError as error:
-            return interpreter.not_followed(f"a read of a file written: {error}", node)
+            return interpreter.not_followed(f"a read ({error})", node)
     if modules is None or modules.confinement is None:
         return interpreter.not_followed(f"a read of {handle.path} (no workspace)", node)
     try:
