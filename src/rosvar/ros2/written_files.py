@@ -12,6 +12,7 @@ by ``resolve``.
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Mapping
 
 from rosvar.files import Confinement
@@ -23,6 +24,7 @@ from rosvar.ros2.context import Context
 from rosvar.ros2.frontends.python.performs import written
 from rosvar.ros2.frontends.python.text import WRITTEN_FILE, Written
 from rosvar.ros2.substitutions import Value, substitution
+from rosvar.workspace import Workspace
 
 
 @substitution(WRITTEN_FILE)
@@ -35,13 +37,43 @@ def _written_file(
     if not all(isinstance(arg, str) for arg in args):
         return Choice.const(host.space, Apply(WRITTEN_FILE, tuple(args), "⟨a file written⟩"))
     workspace = host.workspace
-    packages = {name: package.path for name, package in workspace.packages.items()}
     aspect, *operands = (str(arg) for arg in args)
+    if not _affordable(workspace, tuple(operands)):
+        host.note_too_complex(
+            f"{MAX_READINGS} argument sets of helpers' perform read already: the file a "
+            f"helper writes ({operands[1]}.{operands[2]}) is computed per configuration"
+        )
+        return Choice.const(host.space, Apply(WRITTEN_FILE, tuple(args), "⟨a file written⟩"))
+    packages = {name: package.path for name, package in workspace.packages.items()}
     try:
         text = written(packages, workspace.confinement(), operands, Written(aspect))
     except ValueError as error:
         return Choice.const(host.space, Fail(str(error), "value-unknown"))
     return Choice.const(host.space, text)
+
+
+MAX_READINGS = 4
+"""Distinct argument sets whose helper's ``perform`` one analysis reads again: a reading
+walks the whole source file (nav2's 500-leaf parameter file, rewritten), and the crossing of
+launch arguments gives one set per combination. Past them the file is a term, which
+``resolve`` computes for its one configuration (docs/performance.md has the cost)."""
+_readings: dict[int, set[tuple[str, ...]]] = {}
+
+
+def _affordable(workspace: Workspace, operands: tuple[str, ...]) -> bool:
+    """Whether the analysis of ``workspace`` may read ``operands``' file: read already, or
+    one of its first :data:`MAX_READINGS`."""
+    key = id(workspace)
+    read = _readings.get(key)
+    if read is None:
+        read = _readings[key] = set()
+        weakref.finalize(workspace, _readings.pop, key, None)
+    if operands in read:
+        return True
+    if len(read) >= MAX_READINGS:
+        return False
+    read.add(operands)
+    return True
 
 
 def _term(host: object, aspect: object, *operands: object) -> str:

@@ -1789,6 +1789,8 @@ class Interpreter:
             if isinstance(made, WrittenFile):
                 return made
             return Call(cls.name, [], {}, self.location(node), self.sink).text(made)
+        if written.writes_file(perform.node):
+            return written.deferred(self, cls, args, kwargs, node)
         outer, self.sink = self.sink, DiagnosticSink()
         try:
             made = self.call_function(perform, [instance, LaunchContext()], {}, node)

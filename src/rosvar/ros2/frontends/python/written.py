@@ -106,6 +106,21 @@ def text_of(file: WrittenFile, aspect: Written) -> Text:
     return Text.of(unknown(what))
 
 
+TEMPORARY_FILES = frozenset({"NamedTemporaryFile"})
+"""The ``tempfile`` makers the reading models (:func:`temporary_file`)."""
+
+
+def writes_file(method: ast.FunctionDef) -> bool:
+    """Whether ``method``'s own body makes a temporary file: its object is then the file it
+    writes, computed per configuration, without reading it first over values not known yet
+    (nav2's ``RewrittenYaml`` walks its whole parameter file, every value a choice)."""
+    return any(
+        (isinstance(node, ast.Attribute) and node.attr in TEMPORARY_FILES)
+        or (isinstance(node, ast.Name) and node.id in TEMPORARY_FILES)
+        for node in ast.walk(method)
+    )
+
+
 def written_in(value: Value) -> bool:
     """Whether ``value`` is a file written, or one in a branch of a launch-time ``if``."""
     if isinstance(value, Conditional):
