@@ -25,12 +25,17 @@ ROS2_LAUNCH = """<launch>
 
 
 def ros2_workspace(root: Path) -> Path:
-    package = root / "pkg"
-    (package / "launch").mkdir(parents=True)
-    (package / "package.xml").write_text(ROS2_MANIFEST)
-    file = package / "launch" / "main.launch.xml"
+    file = _launch_folder(root) / "main.launch.xml"
     file.write_text(ROS2_LAUNCH)
     return file
+
+
+def _launch_folder(root: Path) -> Path:
+    """The launch folder of a ROS 2 package ``pkg`` in ``root``."""
+    launch = root / "pkg" / "launch"
+    launch.mkdir(parents=True)
+    (launch.parent / "package.xml").write_text(ROS2_MANIFEST)
+    return launch
 
 
 @pytest.mark.parametrize("on", ["true", "false"])
@@ -56,10 +61,9 @@ def test_the_graph_marks_the_nodes_event_handlers_start(
 ) -> None:
     from differential.ros2.names_cases import CASES
 
-    package = tmp_path / "pkg"
-    (package / "launch").mkdir(parents=True)
-    (package / "package.xml").write_text(ROS2_MANIFEST)
-    (package / "launch" / "main.launch.py").write_text(CASES["event-handlers"][0]["main.launch.py"])
+    _launch_folder(tmp_path).joinpath("main.launch.py").write_text(
+        CASES["event-handlers"][0]["main.launch.py"]
+    )
     feature = "pkg/launch/main.launch.py"
     assert main(["configure", str(tmp_path), "--select", feature, "--json"]) == 0
     state = json.loads(capsys.readouterr().out)
@@ -77,10 +81,7 @@ def test_a_product_that_does_not_launch_names_ros2_launch(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     """The issue 28 audit: what ``ros2 launch`` refuses was said of roslaunch."""
-    package = tmp_path / "pkg"
-    (package / "launch").mkdir(parents=True)
-    (package / "package.xml").write_text(ROS2_MANIFEST)
-    file = package / "launch" / "main.launch.xml"
+    file = _launch_folder(tmp_path) / "main.launch.xml"
     file.write_text(
         '<launch><arg name="on" default="true"/>\n'
         '<node pkg="pkg" exec="a" name="a" if="$(var on)"/></launch>'

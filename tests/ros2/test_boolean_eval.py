@@ -72,16 +72,26 @@ def _random_file(rng: random.Random) -> str:
         if rng.random() < 0.15:  # set only under a condition
             let = f'<let name="x{index}" value="c"/>'
             lines.append(f'<group if="$(var b0)" scoped="false">{let}</group>')
-    for index in range(8):
+    lines += _evaluations(rng, names, 8)
+    return "<launch>" + "\n".join(lines) + "</launch>"
+
+
+def _evaluations(rng: random.Random, names: int, count: int, read_back: bool = False) -> list[str]:
+    """``count`` ``$(eval)``s over the args ``x0``..: in a ``<let>`` a node's name reads (and,
+    with ``read_back``, sometimes a later arg), in an ``if``, in a name."""
+    lines = []
+    for index in range(count):
         evaluated = f"$(eval &quot;{_expression(rng, names)}&quot;)"
         if index % 3 == 0:
             lines.append(f'<let name="r{index}" value="{evaluated}"/>')
             lines.append(f'<node pkg="p" exec="e" name="n{index}_$(var r{index})"/>')
+            if read_back and rng.random() < 0.5:  # read by the next ones
+                lines.append(f'<let name="x{rng.randrange(names)}" value="$(var r{index})"/>')
         elif index % 3 == 1:
             lines.append(f'<node pkg="p" exec="e" name="m{index}" if="{evaluated}"/>')
         else:
             lines.append(f'<node pkg="p" exec="e" name="k{index}_{evaluated}"/>')
-    return "<launch>" + "\n".join(lines) + "</launch>"
+    return lines
 
 
 def _compared(tmp_path: Path, text: str, monkeypatch: pytest.MonkeyPatch) -> list[object]:
@@ -189,17 +199,7 @@ def _term_file(rng: random.Random) -> tuple[str, int]:
         if rng.random() < 0.2:
             let = f'<let name="x{index}" value="{rng.choice(_LISTED)}"/>'
             lines.append(f'<group if="$(var b0)" scoped="false">{let}</group>')
-    for index in range(6):
-        evaluated = f"$(eval &quot;{_expression(rng, names)}&quot;)"
-        if index % 3 == 0:
-            lines.append(f'<let name="r{index}" value="{evaluated}"/>')
-            lines.append(f'<node pkg="p" exec="e" name="n{index}_$(var r{index})"/>')
-            if rng.random() < 0.5:  # read by the next ones
-                lines.append(f'<let name="x{rng.randrange(names)}" value="$(var r{index})"/>')
-        elif index % 3 == 1:
-            lines.append(f'<node pkg="p" exec="e" name="m{index}" if="{evaluated}"/>')
-        else:
-            lines.append(f'<node pkg="p" exec="e" name="k{index}_{evaluated}"/>')
+    lines += _evaluations(rng, names, 6, read_back=True)
     return "<launch>" + "\n".join(lines) + "</launch>", names
 
 

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from itertools import pairwise
 from typing import Any, cast
 
-from rosvar.arithmetic import COMPARISONS
+from rosvar.arithmetic import COMPARISON_SYMBOLS, COMPARISONS
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import EvalRefused, referenced_names
 from rosvar.logic.atoms import register_predicate
@@ -51,16 +51,7 @@ MAX_HOLES = 0x1000
 _LEAVE = frozenset("\\\n\r\0")
 """Characters that end or change a string literal besides its quote (the parser rejects a
 NUL); a value holding one, or a surrogate, is crossed."""
-_SYMBOLS = {
-    ast.Eq: "==",
-    ast.NotEq: "!=",
-    ast.Lt: "<",
-    ast.LtE: "<=",
-    ast.Gt: ">",
-    ast.GtE: ">=",
-    ast.In: "in",
-    ast.NotIn: "not in",
-}
+_SYMBOLS = {op: COMPARISON_SYMBOLS[op] for op in COMPARISONS if op not in (ast.Is, ast.IsNot)}
 """The comparisons of two strings whose result follows from their texts (not ``is``), by
 their symbol: the name a comparison of a term has in its predicate."""
 _COMPARED: dict[str, Callable[[Any, Any], Any]] = {

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import ast
 
+from rosvar.arithmetic import COMPARISON_SYMBOLS
 from rosvar.ros2.frontends.python.text import PYTHON_STRING, Sub, Text
 from rosvar.ros2.frontends.python.values import Conditional, Dynamic, Value
 
@@ -29,16 +30,7 @@ OPERATORS: dict[type[ast.AST], str] = {
     ast.Div: "/",
     ast.FloorDiv: "//",
     ast.Mod: "%",
-    ast.Eq: "==",
-    ast.NotEq: "!=",
-    ast.Lt: "<",
-    ast.LtE: "<=",
-    ast.Gt: ">",
-    ast.GtE: ">=",
-    ast.In: "in",
-    ast.NotIn: "not in",
-    ast.Is: "is",
-    ast.IsNot: "is not",
+    **COMPARISON_SYMBOLS,
 }
 """Python operators a launch-time value enters, with their source."""
 
