@@ -12,6 +12,7 @@ from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import Raw
 from rosvar.logic.choice import Choice, Fail, combine
+from rosvar.logic.terms import Apply, register
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.ros2.dialect import tag
@@ -77,9 +78,24 @@ def push_ros_namespace(it: Interpretation[Context], entity: Entity, context: Con
 
 
 def _push(leaves: list[Raw | None]) -> Raw | Fail:
+    """The namespace ``pushed`` under ``base``; with a value known only in a configuration
+    (an argument's, a loop's item over one, one given up: a term) a term that the
+    configuration computes (:data:`PUSHED`)."""
     base, pushed = leaves
-    if (base is not None and not isinstance(base, str)) or not isinstance(pushed, str):
+    if pushed is None:
         return Fail("the namespace depends on an unknown value", "value-unknown")
+    if isinstance(base, str | None) and isinstance(pushed, str):
+        return _pushed(base, pushed)
+    return Apply(PUSHED, (base or "", pushed))
+
+
+def _pushed(base: str | None, pushed: str) -> str:
     result = make_absolute(prefix_namespace(base, pushed))
     assert result is not None
     return result
+
+
+PUSHED = "rosvar-pushed-namespace"
+"""The term of a namespace pushed under another, either known only in a configuration."""
+
+register(PUSHED, lambda _host, base, pushed: _pushed(base, pushed))
