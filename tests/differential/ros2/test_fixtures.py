@@ -1315,6 +1315,41 @@ def generate_launch_description():
         },
         [{}, {"ns": "x", "names": "x"}, {"ns": "/abs/", "names": "p,/q,r/s"}],
     ),
+    "names-launch-ros-refuses": (  # rmw's rules, checked before a node starts or a push
+        {
+            "main.launch.xml": """<launch>
+<arg name="n" default="talker"><choice value="talker"/><choice value="a/b"/></arg>
+<arg name="ns" default="x"><choice value="x"/><choice value="9x"/><choice value="a/"/></arg>
+<arg name="p" default="p"><choice value="p"/><choice value="p q"/></arg>
+<arg name="free" default="ok"/>
+<group><push-ros-namespace namespace="$(var p)"/>
+  <node pkg="pkg" exec="n" name="$(var n)" namespace="$(var ns)"/>
+  <node pkg="pkg" exec="n" name="$(var free)"/>
+</group>
+<executable cmd="echo" name="$(var n)"/>
+</launch>""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction
+from launch.substitutions import LaunchConfiguration as V
+from launch_ros.actions import Node, PushROSNamespace
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('n', default_value='talker', choices=['talker', 'a/b']),
+        DeclareLaunchArgument('ns', default_value='x', choices=['x', '9x', 'a/']),
+        DeclareLaunchArgument('p', default_value='p', choices=['p', 'p q']),
+        DeclareLaunchArgument('free', default_value='ok'),
+        GroupAction([
+            PushROSNamespace(V('p')),
+            Node(package='pkg', executable='n', name=V('n'), namespace=V('ns')),
+            Node(package='pkg', executable='n', name=V('free')),
+        ]),
+    ])
+""",
+        },
+        [{}, {"n": "a/b"}, {"ns": "9x"}, {"ns": "a/"}, {"p": "p q"}, {"free": "o k"}],
+    ),
 }
 
 
