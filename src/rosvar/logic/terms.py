@@ -9,9 +9,13 @@ when a concrete configuration supplies the missing strings (HAROS-style
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from rosvar.logic.inputs import Input
+
+if TYPE_CHECKING:
+    from rosvar.workspace import Workspace
 
 
 class TermError(Exception):
@@ -123,9 +127,11 @@ FUNCTIONS: dict[str, TermFunction] = {"concat": lambda _host, *parts: "".join(pa
 @dataclass(frozen=True)
 class PackageTable:
     """Package name → path: the host a term's functions get outside an interpretation (a
-    dialect's ``$(find)`` terms read it)."""
+    dialect's ``$(find)`` terms read it); ``workspace``, where the host has it, for what
+    else a term reads (an install prefix, a file through the workspace's gate)."""
 
     paths: dict[str, str]
+    workspace: Workspace | None = field(default=None, kw_only=True)
 
 
 def register(name: str, function: TermFunction) -> None:
