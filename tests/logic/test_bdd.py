@@ -137,6 +137,8 @@ def test_conjoin_restrict_and_meets(seed: int) -> None:
     assert (bdd.restrict(u, care) & care) == (u & care)
     for v in (care, ~u, u & ~care, manager.false, manager.true):
         assert bdd.meets(u, v) == ((u & v) != manager.false)
+    with pytest.raises(ValueError):
+        bdd.meets(u, fresh().true)
 
 
 def test_the_memory_bound_refuses_growth_and_is_lifted() -> None:

@@ -180,8 +180,10 @@ def meets(u: BDD, v: BDD) -> bool:
     quantified variables first through every variable of the manager (most of the time a
     clash judgement took on a workspace of a thousand variables); the conjunction itself
     is as large as the larger diagram."""
-    leq = _library().Cudd_bddLeq
-    return not leq(_pointer(u.bdd), int(u) - 2, (int(v) - 2) ^ 1)
+    manager = u.bdd
+    if v.bdd is not manager:
+        raise ValueError("the diagrams of two managers never meet")
+    return not _library().Cudd_bddLeq(_pointer(manager), int(u) - 2, (int(v) - 2) ^ 1)
 
 
 @cache
