@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from ros2.test_parameter_checks import MANIFEST
 from rosvar.frontends.entity import Entity
 from rosvar.outputs.cli import main
 from rosvar.ros2.frontends.python.parser import parse_python_launch_bytes
@@ -72,45 +73,21 @@ def test_the_same_pair_written_for_every_node_of_the_file_is_shared() -> None:
     assert _remaps(one) == {"a": [], "b": [("/tf", False), ("odom", False)]}
 
 
-MANIFEST = """<package format="3"><name>demo</name><version>0.0.0</version>
-<description>d</description><maintainer email="a@b.c">a</maintainer><license>MIT</license>
-<buildtool_depend>ament_cmake</buildtool_depend>
-<export><build_type>ament_cmake</build_type></export></package>
-"""
-CMAKE = """cmake_minimum_required(VERSION 3.8)
-project(demo)
-find_package(ament_cmake REQUIRED)
-add_executable(mover src/mover.cpp)
-add_executable(mapper src/mapper.cpp)
-ament_package()
-"""
-MOVER = """#include <rclcpp/rclcpp.hpp>
-#include <geometry_msgs/msg/twist.hpp>
-#include <nav_msgs/msg/odometry.hpp>
-class Mover : public rclcpp::Node {
+NODE = """#include <rclcpp/rclcpp.hpp>
+class Node{name} : public rclcpp::Node {{
  public:
-  Mover() : Node("mover") {
-    sub_ = create_subscription<geometry_msgs::msg::Twist>(
-        "cmd_vel", 10, [](geometry_msgs::msg::Twist::SharedPtr) {});
-    pub_ = create_publisher<nav_msgs::msg::Odometry>("odom", 10);
-  }
-  rclcpp::Subscription<geometry_msgs::msg::Twist>::SharedPtr sub_;
-  rclcpp::Publisher<nav_msgs::msg::Odometry>::SharedPtr pub_;
-};
-int main(int argc, char** argv) { rclcpp::spin(std::make_shared<Mover>()); }
+  Node{name}() : Node("{name}") {{ {uses} }}
+  rclcpp::SubscriptionBase::SharedPtr sub_;
+  rclcpp::PublisherBase::SharedPtr pub_;
+}};
+int main(int argc, char** argv) {{ rclcpp::spin(std::make_shared<Node{name}>()); }}
 """
-MAPPER = """#include <rclcpp/rclcpp.hpp>
-#include <sensor_msgs/msg/laser_scan.hpp>
-class Mapper : public rclcpp::Node {
- public:
-  Mapper() : Node("mapper") {
-    sub_ = create_subscription<sensor_msgs::msg::LaserScan>(
-        "scan", 10, [](sensor_msgs::msg::LaserScan::SharedPtr) {});
-  }
-  rclcpp::Subscription<sensor_msgs::msg::LaserScan>::SharedPtr sub_;
-};
-int main(int argc, char** argv) { rclcpp::spin(std::make_shared<Mapper>()); }
-"""
+USES = {
+    "mover": 'sub_ = create_subscription<geometry_msgs::msg::Twist>("cmd_vel", 10, on_twist); '
+    'pub_ = create_publisher<nav_msgs::msg::Odometry>("odom", 10);',
+    "mapper": 'sub_ = create_subscription<sensor_msgs::msg::LaserScan>("scan", 10, on_scan);',
+}
+"""What each executable of package ``demo`` uses."""
 
 
 def test_remap_unused_speaks_of_a_nodes_own_remaps_only(
@@ -122,10 +99,12 @@ def test_remap_unused_speaks_of_a_nodes_own_remaps_only(
     package = tmp_path / "demo"
     for folder in ("src", "launch"):
         (package / folder).mkdir(parents=True)
-    (package / "package.xml").write_text(MANIFEST)
-    (package / "CMakeLists.txt").write_text(CMAKE)
-    (package / "src" / "mover.cpp").write_text(MOVER)
-    (package / "src" / "mapper.cpp").write_text(MAPPER)
+    (package / "package.xml").write_text(MANIFEST.replace("bringup", "demo"))
+    executables = [f"add_executable({name} src/{name}.cpp)" for name in USES]
+    lines = ["project(demo)", "find_package(ament_cmake REQUIRED)", *executables]
+    (package / "CMakeLists.txt").write_text("\n".join([*lines, "ament_package()", ""]))
+    for name, uses in USES.items():
+        (package / "src" / f"{name}.cpp").write_text(NODE.format(name=name, uses=uses))
     (package / "launch" / "main.launch.py").write_text(SHARED_LIST)
     main(["check", str(tmp_path), "--format", "json"])
     found = json.loads(capsys.readouterr().out)["findings"]

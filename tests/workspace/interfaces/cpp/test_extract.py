@@ -8,7 +8,7 @@ from rosvar.diagnostics import Diagnostic, DiagnosticSink, Location
 from rosvar.workspace.interfaces.cpp.extract import extract_node
 from rosvar.workspace.interfaces.cpp.ros_types import ros_type
 from rosvar.workspace.interfaces.cpp.unit import Unit
-from rosvar.workspace.interfaces.model import Entry, Expression, NamedBy, Role
+from rosvar.workspace.interfaces.model import ANY_PARAMETER, Entry, Expression, NamedBy, Role
 
 NODE = """\
 #include "talker.h"
@@ -468,3 +468,24 @@ int main() {
     found = extract_node(Unit.load([str(tmp_path / "m.cpp")], []), "main", None, sink, Location(""))
     assert found.node_name is None
     assert [(e.name, e.type) for e in found.entries] == [("~/x", "std_msgs/msg/Empty")]
+
+
+def test_parameters_handed_to_other_code_are_not_all_known(tmp_path: Path) -> None:
+    """laser_filters gives its node's parameters interface to a filter chain, which declares
+    ``filter1.name`` and the rest: the node takes parameters its sources never declare."""
+    source = """\
+class Chain : public rclcpp::Node {
+ public:
+  Chain() : Node("chain") {
+    declare_parameter("tf_message_filter_target_frame", "");
+    chain_.configure("", get_node_logging_interface(), get_node_parameters_interface());
+  }
+};
+int main(int argc, char** argv) { rclcpp::spin(std::make_shared<Chain>()); }
+"""
+    sink = DiagnosticSink()
+    (tmp_path / "m.cpp").write_text(source)
+    unit = Unit.load([str(tmp_path / "m.cpp")], [])
+    found = extract_node(unit, "main", None, sink, Location(""), ros2=True)
+    params = [(e.name, e.static, e.location.line) for e in found.entries if e.role is Role.PARAMS]
+    assert params == [("tf_message_filter_target_frame", True, 4), (ANY_PARAMETER, False, 5)]

@@ -61,6 +61,10 @@ RCLCPP_FREE_CALLS = {
 }
 RCLCPP_DECLARE = "declare_parameter"
 RCLCPP_READS = frozenset({"get_parameter", "get_parameter_or"})
+RCLCPP_PARAMETERS_HANDED = frozenset({"get_node_parameters_interface"})
+"""What gives the node's parameters to other code, which declares what it will: filters'
+``FilterChain::configure("", logging, parameters)`` declares ``filter1.name`` and the rest,
+pluginlib plugins their own; the node's declarations are not all in its sources."""
 RCLCPP_NODE = re.compile(r"^rclcpp::Node(?:::make_shared)?$|make_shared<rclcpp::Node>$")
 """An rclcpp node built here (``rclcpp::Node::make_shared("name")``): its first argument
 is the node's name."""

@@ -273,12 +273,14 @@ class Collector:
     ) -> None:
         """``NodeOptions().allow_undeclared_parameters(true)`` (or
         ``automatically_declare_parameters_from_overrides(true)``): the node takes parameters
-        it never declares."""
+        it never declares; ``get_node_parameters_interface()``: other code may declare them
+        (:data:`~.apis.RCLCPP_PARAMETERS_HANDED`)."""
         field_ = callee.child_by_field_name("field")
         called = field_ if callee.type == "field_expression" else callee
-        if called is None or syntax.last(syntax.text(called)) not in UNDECLARED_PARAMETERS:
-            return
-        if arguments and syntax.text(arguments[0]) == "true":
+        name = None if called is None else syntax.last(syntax.text(called))
+        handed = name in apis.RCLCPP_PARAMETERS_HANDED and self.ros2
+        allowed = name in UNDECLARED_PARAMETERS and bool(arguments)
+        if handed or (allowed and syntax.text(arguments[0]) == "true"):
             location = Location(function.file, at.start_point[0] + 1, at.start_point[1] + 1)
             self.entries.append(Entry(Role.PARAMS, ANY_PARAMETER, location, static=False))
 
