@@ -1350,6 +1350,40 @@ def generate_launch_description():
         },
         [{}, {"n": "a/b"}, {"ns": "9x"}, {"ns": "a/"}, {"p": "p q"}, {"free": "o k"}],
     ),
+    "loops-over-launch-time-lists": (  # enumerate(), pushes inside and around the loops
+        {
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction, OpaqueFunction
+from launch.substitutions import LaunchConfiguration as V
+from launch_ros.actions import Node, PushROSNamespace
+
+
+def setup(context):
+    robots = V('robots').perform(context).split(',')
+    groups = []
+    for i, ns in enumerate(robots):
+        nodes = [Node(package='pkg', executable='n', name=f'n{i}')]
+        groups.append(GroupAction([PushROSNamespace(ns)] + nodes))
+    counted = [
+        GroupAction([PushROSNamespace(r), Node(package='pkg', executable='c', name=f'c{i}')])
+        for i, r in enumerate(robots, 1)
+    ]
+    first = [PushROSNamespace(r) for r in robots[:1]]
+    return [
+        GroupAction([PushROSNamespace('top')] + groups + counted),
+        GroupAction(first + [Node(package='pkg', executable='m', name='m')]),
+    ]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robots', default_value='r1,r2'),
+        OpaqueFunction(function=setup),
+    ])
+""",
+        },
+        [{}, {"robots": "s"}, {"robots": "u,/v,w"}],
+    ),
 }
 
 

@@ -97,7 +97,12 @@ def test_values_given_up_are_computed_in_each_configuration(
 
 @pytest.mark.parametrize(
     "case",
-    ["namespaces-pushed-from-values", "command-line-words-with-spaces", "names-launch-ros-refuses"],
+    [
+        "namespaces-pushed-from-values",
+        "command-line-words-with-spaces",
+        "names-launch-ros-refuses",
+        "loops-over-launch-time-lists",
+    ],
 )
 def test_values_no_file_names_are_computed_in_each_configuration(case: str, tmp_path: Path) -> None:
     """Values outside every domain (the ``<other>`` value a text typed in ``rosvar

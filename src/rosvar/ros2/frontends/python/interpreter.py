@@ -60,6 +60,7 @@ from rosvar.ros2.frontends.python.values import (
     DataField,
     Description,
     Dynamic,
+    Enumerated,
     FileHandle,
     FilePath,
     Function,
@@ -900,7 +901,7 @@ class Interpreter:
                 None,
             )
             return
-        if isinstance(iterable, Dynamic):
+        if isinstance(iterable, Dynamic | Enumerated):
             self.unrolled(iterable, functools.partial(self._body, node, scope), node, scope)
             self.block(node.orelse, scope)
             return
@@ -928,18 +929,26 @@ class Interpreter:
             self.not_followed("a 'break' in a loop over a launch-time list", node)
 
     def unrolled(
-        self, iterable: Dynamic, run: Callable[[Value], None], node: ast.AST, scope: Scope
+        self,
+        iterable: Dynamic | Enumerated,
+        run: Callable[[Value], None],
+        node: ast.AST,
+        scope: Scope,
     ) -> None:
         """A loop over a launch-time list of unknown length (``yaml.load`` or ``split`` of
-        a launch configuration): ``run`` of each of its first :data:`MAX_UNROLLED` items,
-        each as an ``if len(x) > i`` would read it; an item beyond them is unknown, so that
-        what is made of it fails where it is needed, in the configurations that give it."""
-        kind = str if iterable.kind is list else None
+        a launch configuration, or its ``enumerate``): ``run`` of each of its first
+        :data:`MAX_UNROLLED` items (with its index), each as an ``if len(x) > i`` would read
+        it; an item beyond them is unknown, so that what is made of it fails where it is
+        needed, in the configurations that give it."""
+        items = iterable.items if isinstance(iterable, Enumerated) else iterable
+        kind = str if items.kind is list else None
         for index in range(MAX_UNROLLED + 1):
-            test = Text.of("len(", iterable.source, f") > {index}")
-            item: Value = Dynamic(Text.of("(", iterable.source, f")[{index}]"), kind)
+            test = Text.of("len(", items.source, f") > {index}")
+            item: Value = Dynamic(Text.of("(", items.source, f")[{index}]"), kind)
             if index == MAX_UNROLLED:
                 item = Unknown(f"an item beyond the first {MAX_UNROLLED} of a launch-time list")
+            if isinstance(iterable, Enumerated):
+                item = (iterable.start + index, item)
             self._branches(test, functools.partial(run, item), lambda: None, node, scope, None)
 
     def _break(self, node: ast.Break, scope: Scope) -> None:
@@ -1556,7 +1565,7 @@ class Interpreter:
         value, chosen."""
         first = node.generators[0]
         iterable = self.expr(first.iter, scope)
-        if isinstance(iterable, Dynamic) and not isinstance(node, ast.DictComp):
+        if isinstance(iterable, Dynamic | Enumerated) and not isinstance(node, ast.DictComp):
             results: list[Value] = []
 
             def add(item: Value) -> None:
@@ -1623,7 +1632,7 @@ class Interpreter:
         if isinstance(value, FileHandle):  # its lines, as Python iterates a text file
             text = reads.text(self, value, node)
             return list(text.splitlines(keepends=True)) if isinstance(text, str) else None
-        if isinstance(value, Dynamic):
+        if isinstance(value, Dynamic | Enumerated):
             self.not_followed("iteration over a launch-time value (its length is not known)", node)
         elif not isinstance(value, Unknown):
             self.not_followed(f"iteration over a {type(value).__name__}", node)
@@ -2411,8 +2420,17 @@ def _dict_builtin(
 def _enumerate(
     interpreter: Interpreter, args: list[Value], kwargs: dict[str, Value], node: ast.AST
 ) -> Value:
-    items = interpreter.iterate(args[0], node) if args else None
-    return Unknown("enumerate()") if items is None else [(i, v) for i, v in enumerate(items)]
+    """``enumerate(items, start=0)``; of a launch-time list, its items as a loop reads
+    them (:class:`Enumerated`)."""
+    start = args[1] if len(args) > 1 else kwargs.get("start", 0)
+    if not args or not isinstance(start, int) or isinstance(start, bool):
+        return interpreter.not_followed("enumerate() of these arguments", node)
+    if isinstance(args[0], Dynamic):
+        return Enumerated(args[0], start)
+    items = interpreter.iterate(args[0], node)
+    if items is None:
+        return Unknown("enumerate()")
+    return [(i, v) for i, v in enumerate(items, start)]
 
 
 def _zip(

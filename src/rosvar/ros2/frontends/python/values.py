@@ -34,6 +34,15 @@ class Dynamic:
 
 
 @dataclass(frozen=True, slots=True)
+class Enumerated:
+    """``enumerate(items, start)`` of a launch-time list (:class:`Dynamic`, its length known
+    at launch time only): a loop over it reads each item with its index, as over the list."""
+
+    items: Dynamic
+    start: int = 0
+
+
+@dataclass(frozen=True, slots=True)
 class Conditional:
     """``then`` where the Python ``test`` holds at launch time, else ``otherwise``: values of
     the branches of an ``if`` on a launch-time value that are no Python expression (dicts of
@@ -260,6 +269,7 @@ Value = (
     Key
     | Unknown
     | Dynamic
+    | Enumerated
     | Conditional
     | FileHandle
     | FilePath
