@@ -77,7 +77,8 @@ def test_unknown_parts_compose_into_a_term(tmp_path: Path) -> None:
     assert any(str(term) == "/r1/⟨own⟩/driver" for term in terms)
     unnamed = _named(model.nodes, None)
     labels = {str(label) for _c, label in unnamed.value(ROS2_NODES.label)}
-    assert labels == {"/r1/⟨unnamed⟩", "/r2/⟨unnamed⟩", "/⟨unnamed⟩"}  # pushed r1, r2 or /
+    # pushed r1, r2, /, or a value no file names (composed once it is known)
+    assert labels == {"/r1/⟨unnamed⟩", "/r2/⟨unnamed⟩", "/⟨unnamed⟩", "/⟨ns⟩/⟨unnamed⟩"}
     for own, expected in (("/abs", "/abs/driver"), ("x/", "/r2/x/driver")):
         restriction = Restriction(analysis, model, {"ns": "r2", "own": own}, {})
         name = restriction.pick(node.value(ROS2_NODES.full_name), node.location, "name")

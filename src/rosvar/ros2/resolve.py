@@ -30,7 +30,7 @@ from rosvar.interpreter.model import (
 from rosvar.interpreter.resolution import Resolution, ResolutionError, ResolvedNode, Restriction
 from rosvar.ros2.api.event_handlers import EVENT_HANDLERS
 from rosvar.ros2.conventions import command_line
-from rosvar.ros2.conventions.namespaces import unnamed
+from rosvar.ros2.conventions.namespaces import namespace_error, node_name_error, unnamed
 from rosvar.ros2.conventions.parameters import (
     ALL_NODES,
     Source,
@@ -149,8 +149,11 @@ def _node(decl: NodeDecl, r: Restriction, warnings: list[Diagnostic]) -> Resolve
     if ros_args is not None:
         argv += ["--ros-args", *shlex.split(ros_args)]
     given = command_line.parse(argv)  # before launch_ros's own --ros-args section
-    name = given.name or read(schema.name)
-    namespace = given.namespace if given.namespace is not None else read(schema.namespace)
+    own_name, own_namespace = read(schema.name), read(schema.namespace)
+    if kind != ProcessKind.COMPOSABLE_NODE:
+        _validate(own_name, own_namespace)
+    name = given.name or own_name
+    namespace = given.namespace if given.namespace is not None else own_namespace
     fqn = None if name is None else (namespace or "").rstrip("/") + "/" + name
     parameters = effective(fqn, _sources(decl, r, given, kind, warnings))
     remaps = list(given.remaps)
@@ -177,6 +180,16 @@ def _node(decl: NodeDecl, r: Restriction, warnings: list[Diagnostic]) -> Resolve
         attributes=_attributes(kind, fqn, plugin, text("container"), arguments, None, decl.trigger),
         parameters=parameters,
     )
+
+
+def _validate(name: str | None, namespace: str | None) -> None:
+    """launch_ros's checks of a node's name and composed namespace (a container's too; not
+    a composable node's), which fail the launch."""
+    error = (name is not None and node_name_error(name)) or (
+        namespace is not None and namespace_error(namespace)
+    )
+    if error:
+        raise ValueError(f"invalid node: {error}")
 
 
 def _attributes(

@@ -34,3 +34,48 @@ def unnamed(namespace: str | None, executable: str | None) -> str:
     """How a node with no name is shown: ``⟨EXEC⟩`` in its namespace (the executable names
     it at run time; no launch file says how)."""
     return (namespace or "").rstrip("/") + f"/⟨{executable or ''}⟩"
+
+
+NODE_NAME_MAX = 255
+"""rmw's longest node name."""
+NAMESPACE_MAX = 255 - 8 - 2
+"""rmw's longest namespace: a topic name's (255 less the DDS prefix's 8) less 2."""
+
+
+def _plain(text: str, slash: bool) -> bool:
+    """Only ASCII letters, digits, ``_`` (and ``/`` where ``slash``)."""
+    allowed = "_/" if slash else "_"
+    return all(c.isascii() and (c.isalnum() or c in allowed) for c in text)
+
+
+def namespace_error(namespace: str) -> str | None:
+    """Why rmw refuses ``namespace`` (launch_ros validates each it composes), or None."""
+    if namespace == "/":
+        return None
+    tokens = namespace.split("/")
+    if not namespace.startswith("/"):
+        return "namespace must be absolute"
+    if namespace.endswith("/"):
+        return "namespace must not end with a '/'"
+    if not _plain(namespace, slash=True):
+        return "namespace must not contain characters other than alphanumerics, '_', or '/'"
+    if "" in tokens[1:]:
+        return "namespace must not contain repeated '/'"
+    if any(token[:1].isdigit() for token in tokens):
+        return "namespace must not have a token that starts with a number"
+    if len(namespace) > NAMESPACE_MAX:
+        return f"namespace should not exceed {NAMESPACE_MAX} characters"
+    return None
+
+
+def node_name_error(name: str) -> str | None:
+    """Why rmw refuses ``name`` as a node's name (launch_ros validates the given one)."""
+    if not name:
+        return "node name must not be empty"
+    if not _plain(name, slash=False):
+        return "node name must not contain characters other than alphanumerics or '_'"
+    if name[0].isdigit():
+        return "node name must not start with a number"
+    if len(name) > NODE_NAME_MAX:
+        return f"node name should not exceed {NODE_NAME_MAX} characters"
+    return None

@@ -12,8 +12,9 @@ from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import Raw
 from rosvar.logic.choice import Choice, Fail, combine
+from rosvar.logic.terms import Apply, TermError, register
 from rosvar.ros2.context import Context, optional
-from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
+from rosvar.ros2.conventions.namespaces import make_absolute, namespace_error, prefix_namespace
 from rosvar.ros2.dialect import tag
 from rosvar.ros2.tags.common import assign, set_configuration
 
@@ -77,9 +78,31 @@ def push_ros_namespace(it: Interpretation[Context], entity: Entity, context: Con
 
 
 def _push(leaves: list[Raw | None]) -> Raw | Fail:
+    """The pushed namespace under the current one, as launch_ros composes and validates it;
+    a term where either is known only in a configuration (an argument's value outside its
+    domain), composed and validated once it is given."""
     base, pushed = leaves
-    if (base is not None and not isinstance(base, str)) or not isinstance(pushed, str):
-        return Fail("the namespace depends on an unknown value", "value-unknown")
-    result = make_absolute(prefix_namespace(base, pushed))
-    assert result is not None
-    return result
+    if (base is None or isinstance(base, str)) and isinstance(pushed, str):
+        try:
+            return _pushed(None, base or "", pushed)
+        except TermError as error:
+            return Fail(str(error), error.code)
+    assert pushed is not None  # a required attribute's value
+    shown = make_absolute(prefix_namespace(str(base or ""), str(pushed)))
+    return Apply(PUSHED, (base or "", pushed), shown or "")
+
+
+PUSHED = "ros2_pushed_namespace"
+
+
+def _pushed(_host: object, base: str, pushed: str) -> str:
+    namespace = make_absolute(prefix_namespace(base, pushed))
+    assert namespace is not None
+    error = namespace_error(namespace)
+    if error is not None:
+        shown = f"previous namespace {base or None!r}, pushed {pushed!r}"
+        raise TermError(f"the resulting namespace is invalid ({shown}): {error}", "name-invalid")
+    return namespace
+
+
+register(PUSHED, _pushed)
