@@ -113,7 +113,7 @@ def test_children_first_gives_each_node_after_its_children(seed: int) -> None:
 
 
 @pytest.mark.parametrize("seed", range(10))
-def test_conjoin_restrict_and_exists(seed: int) -> None:
+def test_conjoin_restrict_meets_and_cube(seed: int) -> None:
     rng = random.Random(seed)
     manager = fresh()
     parts = [random_formula(manager, rng) for _ in range(4)] + [manager.true]
@@ -123,8 +123,10 @@ def test_conjoin_restrict_and_exists(seed: int) -> None:
     assert bdd.conjoin(manager, parts) == expected
     u, care = parts[0], parts[1]
     assert (bdd.restrict(u, care) & care) == (u & care)
-    hidden = set(rng.sample(NAMES, 3))
-    assert bdd.and_exists(u, care, hidden) == manager.exist(hidden, u & care)
+    for v in (care, ~u, u & ~care, manager.false, manager.true):
+        assert bdd.meets(u, v) == ((u & v) != manager.false)
+    values = {name: rng.random() < 0.5 for name in rng.sample(NAMES, rng.randint(0, 5))}
+    assert bdd.cube(manager, values) == manager.cube(values)
 
 
 def test_the_memory_bound_refuses_growth_and_is_lifted() -> None:

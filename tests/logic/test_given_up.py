@@ -86,3 +86,9 @@ def test_each_give_up_is_equal_only_to_itself(space: ConditionSpace) -> None:
     two = GivenUp("t", "⟨t⟩", _choices(space), _joined)  # type: ignore[arg-type]
     assert one == one and one != two and one != Apply("too_complex", ("t",), display="⟨t⟩")
     assert len(Choice.of([(space.slot(X, "a"), one), (space.slot(X, "b"), two)])) == 2
+
+
+def test_give_ups_of_one_text_are_hashed_apart(space: ConditionSpace) -> None:
+    made = [GivenUp("t", "⟨t⟩", _choices(space), _joined) for _ in range(64)]  # type: ignore[arg-type]
+    assert len({hash(g) for g in made}) == len(made)
+    assert len(set(made)) == len(made) and all(g in set(made) for g in made)

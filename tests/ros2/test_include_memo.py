@@ -369,3 +369,24 @@ def test_a_walk_past_the_value_budget_is_not_replayed(
     _replays, models = _compared(_files(tmp_path, texts))
     assert "value-too-complex" in _codes(models[1])
     assert "value-too-complex" not in _codes(models[2])
+
+
+def test_a_walk_that_makes_inputs_is_replayed_in_its_entry_file_only(tmp_path: Path) -> None:
+    """``leaf`` makes ``q`` an input of the entry model: ``main``'s second pass (``late`` is
+    read before ``decl`` declares it) replays that walk, declaration and listed arg
+    included; ``other``, whose inputs are its own, walks it again."""
+    leaf = '<arg name="q" default="z"/><node pkg="p" exec="e" name="n_$(var q)"/>'
+    texts = {
+        "leaf": leaf,
+        "decl": '<arg name="late" default="w"/>',
+        "main": '<node pkg="p" exec="e" name="m_$(var late d)"/>'
+        + _include("leaf")
+        + _include("decl"),
+        "other": _include("leaf"),
+    }
+    paths = _files(tmp_path, texts)
+    replays, models = _compared([paths[2], paths[3]])
+    assert replays == 1
+    for model in models:
+        assert "q" in model.inputs
+        assert [arg.name for arg in model.args if arg.name == "q"] == ["q"]

@@ -5,8 +5,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import pytest
-
 from differential.ros2.test_fixtures import PACKAGE_XML
 from ros2.tags.launches import launch
 from rosvar.interpreter.workspace_models import Analysis
@@ -151,34 +149,3 @@ def generate_launch_description():
     [error] = it.analysis.resolve([str(it.main)], {}).errors
     assert error.code == "value-unknown" and error.location.line == 9, error.message
     assert "helpers_nowhere.on() is not followed" in error.message
-
-
-@pytest.mark.oracle
-@pytest.mark.parametrize(
-    ("given", "loads"),
-    [
-        ({"name": "free text"}, False),
-        ({"name": "1a"}, False),
-        ({"ns": "free text"}, False),
-        ({"ns": "1a"}, False),
-        ({"ns": "/a//b"}, False),
-        ({"ns": "a/"}, True),
-        ({"pushed": "free text"}, False),
-        ({"pushed": "/"}, True),
-        ({}, True),
-    ],
-)
-def test_names_and_namespaces_are_validated_as_launch_ros_validates_them(
-    tmp_path: Path, given: dict[str, str], loads: bool
-) -> None:
-    """A node's name and its composed namespace (and a pushed namespace) that rmw refuses fail
-    the launch, known in the model or given on the command line only."""
-    it = launch(
-        tmp_path,
-        """<launch><arg name="name" default="n"/><arg name="ns" default="x"/>
-          <arg name="pushed" default="p"/>
-          <group><push-ros-namespace namespace="$(var pushed)"/>
-            <node pkg="pkg" exec="x" name="$(var name)" namespace="$(var ns)"/></group>
-        </launch>""",
-    )
-    assert it.matches_oracle(given)["ok"] == loads

@@ -597,11 +597,50 @@ class Derivation:
         """A valid configuration under the user literals where ``goal`` (over ``component``;
         None: over several) holds, kept to judge its component's other conditions too;
         None: there is none."""
+        if component is None:
+            found = self._combined(decisions, goal)
+            if found is not None:
+                return found
         sat = self._whole() if component is None else self.sats[component]
         found = sat.model(self._assumptions(decisions, component), goal)
         if found is not None and component is not None:
             self._examples.setdefault(component, deque(maxlen=EXAMPLES)).append(found)
         return found
+
+    def _combined(self, decisions: Decisions, goal: BDD) -> int | None:
+        """A valid configuration where ``goal``, over several components, holds, found
+        without the solver of the whole workspace; None: not found so (that solver answers).
+
+        Components share no variable and no constraint, so witnesses of all but the largest
+        with a model of the largest one's solver are a valid configuration: its question is
+        ``goal`` restricted by their values. On Husky + ``_external`` such a question to
+        the whole solver (4,228 variables) took 5 ms, its goal translated for it alone; to
+        the largest component's (3,274) under 1 ms."""
+        support = self._support(goal)
+        components = {self.component_of[v] for v in support}
+        if not components:  # TRUE (the literals have a valid configuration) or FALSE
+            return 0 if goal == self.manager.true else None
+        largest = max(components, key=lambda c: len(self.members[c]))
+        others = [decisions.witnesses[c] for c in sorted(components - {largest})]
+        if not all(others):
+            return None
+        position, false = self.position, self.manager.false
+        fixed = [v for v in support if self.component_of[v] != largest]
+        tried = set()
+        for turn in range(MUTATED):
+            bits = 0
+            for witnesses in others:
+                bits |= witnesses[turn % len(witnesses)]
+            if bits in tried:
+                break
+            tried.add(bits)
+            rest = cofactor(goal, {v: bool(bits >> position[v] & 1) for v in fixed})
+            if rest == false:
+                continue
+            found = self.sats[largest].model(self._assumptions(decisions, largest), rest)
+            if found is not None:
+                return bits | found
+        return None
 
     def _holds(self, u: BDD, witness: int) -> bool:
         """The truth of ``u`` in a witness: one path from the root down."""

@@ -202,7 +202,8 @@ class Restriction:
         self.confinement = models.workspace.confinement()
         packages = {name: package.path for name, package in models.workspace.packages.items()}
         self.assignment: dict[str, bool] = {}
-        self.host = Bindings(packages, functools.partial(_holds, self.space, self.assignment))
+        holds = functools.partial(_holds, self.space, self.assignment)
+        self.host = Bindings(packages, holds, workspace=models.workspace)
         """Terms evaluate with the packages; values over the work limits are computed again
         with the conditions that hold (:mod:`~rosvar.logic.given_up`), also while the
         assignment is made: a predicate on such a value reads its operands' atoms."""

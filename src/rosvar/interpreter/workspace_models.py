@@ -49,7 +49,8 @@ class Analysis:
 
     def package_table(self) -> PackageTable:
         """The workspace's packages, as terms' ``$(find)`` reads them when evaluated."""
-        return PackageTable({name: p.path for name, p in self.workspace.packages.items()})
+        packages = {name: p.path for name, p in self.workspace.packages.items()}
+        return PackageTable(packages, workspace=self.workspace)
 
     def model(self, file: str) -> LaunchModel:
         """The model of ``file`` as an entry point (interpreted once, then cached)."""

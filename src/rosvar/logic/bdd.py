@@ -9,7 +9,9 @@ nodes for an exact weighted count (``read``) and for the values each variable ca
 
 ``read`` takes the nodes out of CUDD's memory, in the layout of the CUDD build that ``dd``
 0.6.0 ships (CUDD 3.0.0), which ``dd`` does not promise to keep: ``pyproject.toml`` pins that
-version of ``dd`` for it, and ``_indices`` checks the layout before every read.
+version of ``dd`` for it, and ``_indices`` checks the layout before every read. ``meets``
+calls a CUDD function ``dd`` does not wrap, on the manager's pointer read out of ``dd``'s
+object (``_pointer`` checks that layout on every call).
 """
 
 from __future__ import annotations
@@ -170,11 +172,42 @@ def restrict(u: BDD, care: BDD) -> BDD:
     return restricted
 
 
-def and_exists(u: BDD, v: BDD, variables: Collection[str]) -> BDD:
-    """``∃ variables. u ∧ v`` without building the conjunction (CUDD's and-abstract): it
-    stops at the first path to TRUE, so asking whether it is FALSE is cheap."""
-    found: BDD = _cudd.and_exists(u, v, variables)
-    return found
+def meets(u: BDD, v: BDD) -> bool:
+    """Some assignment satisfies both ``u`` and ``v``: ``u ≤ ¬v`` refuted by CUDD's
+    ``Cudd_bddLeq``, which builds no node and stops at the first path the two share.
+
+    ``dd`` wraps no such test. Its and-abstract answers it too, but builds the cube of the
+    quantified variables first through every variable of the manager (most of the time a
+    clash judgement took on a workspace of a thousand variables); the conjunction itself
+    is as large as the larger diagram."""
+    leq = _library().Cudd_bddLeq
+    return not leq(_pointer(u.bdd), int(u) - 2, (int(v) - 2) ^ 1)
+
+
+@cache
+def _library() -> ctypes.PyDLL:
+    """``dd``'s build of CUDD, whose functions are called with the GIL held (a ``PyDLL``):
+    nothing else may run in the manager meanwhile."""
+    library = ctypes.PyDLL(_cudd.__file__)
+    library.Cudd_bddLeq.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
+    library.Cudd_bddLeq.restype = ctypes.c_int
+    return library
+
+
+def _pointer(manager: Manager) -> int:
+    """The ``DdManager *`` of a ``dd`` manager, read out of the object ``dd`` 0.6.0's Cython
+    lays out as: the object's header (two words), its method table, the manager, then
+    ``vars``, ``_index_of_var`` and ``_var_with_index`` (checked against their ids)."""
+    words = _memory()
+    at = id(manager) >> 3
+    fields = cast(Any, manager)
+    if (words[at + 4], words[at + 5], words[at + 6]) != (
+        id(fields.vars),
+        id(fields._index_of_var),
+        id(fields._var_with_index),
+    ):
+        raise RuntimeError("dd lays its manager out otherwise than rosvar reads it")
+    return words[at + 3]
 
 
 def cofactors(u: BDD) -> tuple[BDD, BDD]:
@@ -203,13 +236,18 @@ def cofactor(u: BDD, values: Mapping[str, bool]) -> BDD:
     """
     if not values:
         return u
-    manager = u.bdd
-    cube = manager.true
+    cofactored: BDD = _cudd.restrict(u, cube(u.bdd, values))
+    return cofactored
+
+
+def cube(manager: Manager, values: Mapping[str, bool]) -> BDD:
+    """The conjunction of the literals ``values``, in time linear in their number: ``dd``'s
+    ``cube`` walks every variable of the manager."""
+    found = manager.true
     for name, value in values.items():
         atom = manager.var(name)
-        cube &= atom if value else ~atom
-    cofactored: BDD = _cudd.restrict(u, cube)
-    return cofactored
+        found &= atom if value else ~atom
+    return found
 
 
 def evaluate(u: BDD, value: Callable[[str], bool]) -> bool:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
@@ -35,23 +35,29 @@ class GivenUp(Apply):
     """``too_complex(text)``: a value over the work limits, with what computes it in one
     configuration (``choices``, one leaf of each given to ``combination``).
 
-    Equal only to itself: two give-ups of one text may combine different operands.
+    Equal only to itself (two give-ups of one text may combine different operands), and
+    hashed as itself: hashed by their text, the give-ups of one text piled up in one probe
+    chain of each dict they were keys of, every lookup comparing them all.
     """
 
     __slots__ = ("choices", "combination")
 
-    def __init__(
-        self, text: str, display: str, choices: Sequence[Choice[object]], combination: Combination
-    ) -> None:
-        super().__init__("too_complex", (text,), display=display)
+    choices: tuple[Choice[object], ...]
+    combination: Combination
+
+    def __new__(
+        cls, text: str, display: str, choices: Sequence[Choice[object]], combination: Combination
+    ) -> GivenUp:
+        self = cast("GivenUp", cls._made("too_complex", (text,), display))
         self.choices = tuple(choices)
         self.combination = combination
+        return self
 
-    def __eq__(self, other: object) -> bool:
-        return other is self
+    def __reduce__(self) -> Any:
+        raise TypeError("a value given up is not pickled: it holds conditions")
 
-    def __hash__(self) -> int:
-        return self._hash
+    __eq__ = object.__eq__
+    __hash__ = object.__hash__
 
     def evaluated(self, inputs: Mapping[Input, str], host: object) -> str:
         if not isinstance(host, Bindings):

@@ -97,6 +97,10 @@ class Recording:
     """The real path of each file an include named, as the cycle check saw it."""
     loaded: list[str] = field(default_factory=list)
     """Each launch file an include loaded, as the model lists it."""
+    entered: list[tuple[int, str, str | None]] = field(default_factory=list)
+    """Each name a walk made an input of the entry model (with the file declaring it) or
+    listed among its args (None), after how many reads: its later reads of that name's
+    standing follow from the walk itself."""
     deepest_check: int = -1
     """The longest include stack an include's depth limit was checked at (-1: none)."""
 

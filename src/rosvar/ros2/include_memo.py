@@ -14,12 +14,17 @@ unset reads and started processes — is replayed where a later walk of the file
 same. A read is of the state before the walk where it saw the value that state held: a value
 the walk wrote, or a group emptied, follows from earlier reads.
 
-A walk whose effect a replay would not reproduce is not kept: one that declared inputs or
-listed args of the entry model (they name the entry file), set timers, event handlers,
-shutdowns, environment variables or anonymous names, forgot configurations or replaced a
-global list, or met a limit (an include cycle, the include count and depth, the nesting,
-the file's value budget). A replay is refused where one of those limits would be met from
-where it stands.
+A walk that made inputs of the entry model (an included file's arg the entry file does not
+declare) or listed args in it keeps those declarations, replayed as the walk made them (the
+same names, declaring files and domains); their values name the entry file's inputs, so such
+a walk is replayed in that entry file only (another pass of it, another include). Its later
+reads of a name it declared follow from the walk itself and are not keys.
+
+A walk whose effect a replay would not reproduce is not kept: one that set timers, event
+handlers, shutdowns, environment variables or anonymous names, forgot configurations or
+replaced a global list, or met a limit (an include cycle, the include count and depth, the
+nesting, the file's value budget). A replay is refused where one of those limits would be
+met from where it stands.
 """
 
 from __future__ import annotations
@@ -39,6 +44,7 @@ from rosvar.interpreter.interpretation import (
     Interpretation,
 )
 from rosvar.interpreter.model import (
+    ArgDecl,
     Decision,
     ErrorEvent,
     IncludeDecl,
@@ -110,6 +116,32 @@ def is_listed(it: Interpretation[Context], context: Context, name: str) -> bool:
     return bool(observe(it, context, Probe.LISTED, name))
 
 
+def declare(it: Interpretation[Context], context: Context, name: str) -> Configuration:
+    """Make ``name``, an included file's arg the entry file does not declare, an input of the
+    entry model (settable on the command line): its value per input slot, unset where not
+    given."""
+    _entered(context, name, context.filename)
+    return _declared(it, name, context.filename)
+
+
+def _declared(it: Interpretation[Context], name: str, file: str) -> Configuration:
+    it.model.settable[name] = file
+    value: Configuration = it.entry_args(it.model.file, [name], None, {name: file})[name]
+    return value
+
+
+def list_arg(it: Interpretation[Context], context: Context, declaration: ArgDecl) -> None:
+    """List an included file's declaration among the entry model's args."""
+    _entered(context, declaration.name, None)
+    it.model.args.append(declaration)
+
+
+def _entered(context: Context, name: str, file: str | None) -> None:
+    recording = context.recording
+    if recording.walks:
+        recording.entered.append((len(recording.reads), name, file))
+
+
 def configuration_names(it: Interpretation[Context], context: Context) -> frozenset[str]:
     """The names of every launch configuration set."""
     names = observe(it, context, Probe.NAMES, "")
@@ -141,6 +173,9 @@ class Effect:
     namespace: Choice[Raw | None] | None
     remaps: _Appended[GlobalRemap]
     params: _Appended[GlobalParam]
+    declared: tuple[tuple[str, str], ...]  # inputs made, with the file declaring each
+    args: tuple[ArgDecl, ...]  # included declarations listed in the model
+    entry: str | None  # the entry file whose inputs it made or listed; None: none
     nodes: tuple[NodeDecl, ...]
     includes: tuple[IncludeDecl, ...]
     errors: tuple[ErrorEvent, ...]
@@ -260,7 +295,8 @@ def _budget(it: Interpretation[Context]) -> Ros2Substituter | None:
 
 
 def _fits(effect: Effect, it: Interpretation[Context], substituter: Ros2Substituter) -> bool:
-    """Whether a walk from here would meet no limit the recorded one did not."""
+    """Whether a walk from here would meet no limit the recorded one did not, in the entry
+    file whose inputs it made, if any."""
     return (
         it.included + effect.followed <= MAX_INCLUDES
         and (
@@ -270,6 +306,7 @@ def _fits(effect: Effect, it: Interpretation[Context], substituter: Ros2Substitu
         and it.depth + effect.depth <= MAX_NESTING
         and substituter.budget.spares(effect.combinations)
         and not any(path in effect.included for path in it.stack)
+        and effect.entry in (None, it.model.file)
     )
 
 
@@ -318,6 +355,13 @@ def _replay(
         recording.reads.extend(seen)
         recording.included.extend(effect.included)
         recording.loaded.extend(effect.loaded)
+    for name, declared_in in effect.declared:
+        _entered(context, name, declared_in)
+        _declared(it, name, declared_in)
+    for declaration in effect.args:
+        _entered(context, declaration.name, None)
+    model = it.model
+    model.args.extend(copy.copy(declaration) for declaration in effect.args)
     if effect.include_depth is not None:
         deepest = len(it.stack) + 1 + effect.include_depth
         recording.deepest_check = max(recording.deepest_check, deepest)
@@ -331,7 +375,6 @@ def _replay(
         context.namespace = effect.namespace
     context.remaps = _appended(context.remaps, effect.remaps)
     context.params = _appended(context.params, effect.params)
-    model = it.model
     model.nodes.extend(copy.copy(node) for node in effect.nodes)
     model.includes.extend(copy.copy(include) for include in effect.includes)
     model.errors.extend(copy.copy(error) for error in effect.errors)
@@ -370,7 +413,7 @@ class _Before:
     anon: object
     combinations: int
     included: int
-    marks: tuple[int, int, int]
+    marks: tuple[int, int, int, int]
 
 
 def _counts(model: LaunchModel, context: Context) -> tuple[int, ...]:
@@ -381,7 +424,6 @@ def _counts(model: LaunchModel, context: Context) -> tuple[int, ...]:
         len(model.errors),
         len(model.decisions),
         len(model.args),
-        len(model.inputs),
         len(context.timers),
         len(context.shutdowns),
         len(context.events.handlers),
@@ -411,7 +453,12 @@ def _record(
         it.anon_count,
         substituter.budget.combinations,
         it.included,
-        (len(recording.reads), len(recording.included), len(recording.loaded)),
+        (
+            len(recording.reads),
+            len(recording.included),
+            len(recording.loaded),
+            len(recording.entered),
+        ),
     )
     deepest, it.deepest = it.deepest, it.depth
     deepest_check, recording.deepest_check = recording.deepest_check, -1
@@ -438,10 +485,19 @@ def _record(
         checked = recording.deepest_check
         include_depth = None if checked < 0 else checked - len(it.stack) - 1
         recording.deepest_check = max(deepest_check, checked)
-        read = _read_before(recording.reads[before.marks[0] :], before.configurations)
+        reads, _included, _loaded, entered = before.marks
+        read = _read_before(
+            recording.reads[reads:],
+            before.configurations,
+            [(at - reads, name) for at, name, _file in recording.entered[entered:]],
+        )
         if recording.walks:  # the enclosing walks need no more of this one's reads
-            del recording.reads[before.marks[0] :]
+            del recording.reads[reads:]
             recording.reads.extend(read)
+            end = len(recording.reads)  # after the reads this walk's declarations follow
+            recording.entered[entered:] = [
+                (end, name, file) for _at, name, file in recording.entered[entered:]
+            ]
         if walked and walks is not None:
             effect = _effect(
                 it,
@@ -460,17 +516,26 @@ def _record(
             recording.reads.clear()
             recording.included.clear()
             recording.loaded.clear()
+            recording.entered.clear()
 
 
-def _read_before(reads: list[Read], initial: dict[str, Configuration]) -> list[Read]:
+def _read_before(
+    reads: list[Read], initial: dict[str, Configuration], entered: list[tuple[int, str]]
+) -> list[Read]:
     """What a walk read of the state before it (``initial``'s configurations), each once,
     in order: a configuration that held another value then was written by the walk (or a
-    group it emptied), which follows from earlier reads."""
+    group it emptied), and the standing of a name after the walk ``entered`` it in the
+    entry model (after that many reads), follow from earlier reads."""
     kept: list[Read] = []
     names: set[str] = set()
     met: set[Read] = set()
-    for read in reads:
+    since: dict[str, int] = {}
+    for at, name in entered:
+        since.setdefault(name, at)
+    for index, read in enumerate(reads):
         probe, name, answer = read
+        if probe is not Probe.CONFIGURATION and since.get(name, index + 1) <= index:
+            continue
         if probe is Probe.CONFIGURATION:
             if name in names or answer is not initial.get(name):
                 continue
@@ -496,10 +561,10 @@ def _effect(
 ) -> Effect | None:
     """The recorded walk's effect, or None where a replay would not reproduce it."""
     model = it.model
-    nodes, includes, errors, decisions, *fixed = before.counts
+    nodes, includes, errors, decisions, args, *fixed = before.counts
     now = _counts(model, context)
-    if now[4:] != tuple(fixed) or it.anon_count is not before.anon:
-        return None  # args or inputs of the entry model, timers, handlers, anonymous names
+    if now[5:] != tuple(fixed) or it.anon_count is not before.anon:
+        return None  # timers, handlers, shutdowns, anonymous names
     if context.env.keys() != before.env.keys() or any(
         value is not before.env[name] for name, value in context.env.items()
     ):
@@ -521,13 +586,20 @@ def _effect(
     if any(name not in final for name in initial):
         return None  # a <reset> forgot them
     recording = context.recording
-    _reads, included, loaded = before.marks
+    _reads, included, loaded, entered = before.marks
+    declared = tuple(
+        (name, file) for _at, name, file in recording.entered[entered:] if file is not None
+    )
+    listed = tuple(model.args[args:])
     return Effect(
         tuple((name, value) for name, value in final.items() if initial.get(name) is not value),
         context.namespace is not before.namespace,
         context.namespace,
         remaps,
         params,
+        declared,
+        listed,
+        model.file if declared or listed else None,
         tuple(model.nodes[nodes:]),
         tuple(model.includes[includes:]),
         new_errors,

@@ -167,3 +167,36 @@ def test_patching_a_diff_gives_the_new_lists() -> None:
         new = {"graph": {"nodes": after}}
         delta = wire(diff(old, new))
         assert patch(old, {**delta, "base": 5})["graph"]["nodes"] == after
+
+
+def conflict(n: int, status: str = "possible") -> dict[str, Any]:
+    return {"files": [f"f{n}", "g"], "names": [f"node /n{n}"], "status": status, "condition": None}
+
+
+def test_conflicts_are_sent_by_place() -> None:
+    before = [conflict(n) for n in range(5)]
+    judged_again = conflict(2, "certain")
+    after = [before[0], judged_again, dict(before[3]), conflict(9)]  # equal, not the same
+    old = {**DOCUMENT, "conflicts": before}
+    delta = wire(diff(old, {**old, "conflicts": after}))
+    assert delta["conflicts"] == {
+        "removed": [1, 2, 4],
+        "added": [[1, judged_again], [3, conflict(9)]],
+    }
+    assert patch(old, {**delta, "base": 1})["conflicts"] == after
+    assert "conflicts" not in diff(old, {**old, "conflicts": [dict(c) for c in before]})
+
+
+def test_patching_a_conflicts_diff_gives_the_new_list() -> None:
+    rng = random.Random(4)
+    for _ in range(2000):
+        before = [conflict(rng.randrange(6)) for _ in range(rng.randrange(8))]  # repeats too
+        after = [c if rng.random() < 0.8 else conflict(c["names"][0][-1], "certain")
+                 for c in before if rng.random() < 0.7]  # fmt: skip
+        for _ in range(rng.randrange(3)):
+            after.insert(rng.randrange(len(after) + 1), conflict(rng.randrange(9)))
+        if rng.random() < 0.2:
+            rng.shuffle(after)
+        old = {"conflicts": before, "version": 5}
+        delta = wire(diff(old, {"conflicts": after}))
+        assert patch(old, {**delta, "base": 5})["conflicts"] == after

@@ -15,7 +15,7 @@ from rosvar.logic.choice import Choice, ite
 from rosvar.logic.terms import Apply, Hole, register
 from rosvar.ros2.context import Configuration, Context, optional
 from rosvar.ros2.dialect import tag
-from rosvar.ros2.include_memo import is_input, is_listed
+from rosvar.ros2.include_memo import declare, is_input, is_listed, list_arg
 from rosvar.ros2.tags.common import assign, set_configuration
 
 
@@ -52,17 +52,16 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
         )
     if included and not is_listed(it, context, name):  # listed once, if an input (_given)
         return
-    it.model.args.append(
-        ArgDecl(
-            name,
-            entity.location,
-            it.pc,
-            entity.get("default"),
-            None,
-            entity.get("description"),
-            it.model.inputs.get(name),
-        )
+    declaration = ArgDecl(
+        name,
+        entity.location,
+        it.pc,
+        entity.get("default"),
+        None,
+        entity.get("description"),
+        it.model.inputs.get(name),
     )
+    list_arg(it, context, declaration)
 
 
 def _outside(it: Interpretation[Context], value: Configuration, allowed: list[str]) -> BDD:
@@ -103,8 +102,7 @@ def _given(
     declaration sees the command line's value. It becomes an input here; a read of it before
     (or outside the scope it is set in) makes the next interpretation know it from the
     start."""
-    it.model.settable[name] = context.filename
-    given = it.entry_args(it.model.file, [name], None, {name: context.filename})[name]
+    given = declare(it, context, name)
     before = old if old is not None else Choice.const(it.space, None)
     context.configurations[name] = ite(it.space, unset, given, before)  # on every path
     return context.configurations[name]

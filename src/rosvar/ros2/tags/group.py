@@ -14,7 +14,8 @@ from rosvar.interpreter.model import Raw
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.logic.terms import Apply, TermError, register
 from rosvar.ros2.context import Context, optional
-from rosvar.ros2.conventions.namespaces import make_absolute, namespace_error, prefix_namespace
+from rosvar.ros2.conventions.names import namespace_problem
+from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.ros2.dialect import tag
 from rosvar.ros2.tags.common import assign, set_configuration
 
@@ -78,31 +79,39 @@ def push_ros_namespace(it: Interpretation[Context], entity: Entity, context: Con
 
 
 def _push(leaves: list[Raw | None]) -> Raw | Fail:
-    """The pushed namespace under the current one, as launch_ros composes and validates it;
-    a term where either is known only in a configuration (an argument's value outside its
-    domain), composed and validated once it is given."""
+    """The namespace ``pushed`` under ``base``; with a value known only in a configuration
+    (an argument's, a loop's item over one, one given up: a term) a term that the
+    configuration computes (:data:`PUSHED`)."""
     base, pushed = leaves
-    if (base is None or isinstance(base, str)) and isinstance(pushed, str):
-        try:
-            return _pushed(None, base or "", pushed)
-        except TermError as error:
-            return Fail(str(error), error.code)
-    assert pushed is not None  # a required attribute's value
+    if pushed is None:
+        return Fail("the namespace depends on an unknown value", "value-unknown")
+    if isinstance(base, str | None) and isinstance(pushed, str):
+        return _pushed(base, pushed)
     shown = make_absolute(prefix_namespace(str(base or ""), str(pushed)))
-    return Apply(PUSHED, (base or "", pushed), shown or "")
+    return Apply(PUSHED, (base or "", pushed), shown or "/")
 
 
-PUSHED = "ros2_pushed_namespace"
+def _pushed(base: str | None, pushed: str) -> str | Fail:
+    """The namespace, or launch_ros's failure where it is no valid namespace."""
+    result = make_absolute(prefix_namespace(base, pushed))
+    assert result is not None
+    if namespace_problem(result) is None:
+        return result
+    return Fail(
+        "The resulting namespace is invalid: "
+        f"[previous_namespace='{base}', pushed_namespace='{pushed}']",
+        "name-invalid",
+    )
 
 
-def _pushed(_host: object, base: str, pushed: str) -> str:
-    namespace = make_absolute(prefix_namespace(base, pushed))
-    assert namespace is not None
-    error = namespace_error(namespace)
-    if error is not None:
-        shown = f"previous namespace {base or None!r}, pushed {pushed!r}"
-        raise TermError(f"the resulting namespace is invalid ({shown}): {error}", "name-invalid")
-    return namespace
+def _pushed_term(_host: object, base: str, pushed: str) -> str:
+    value = _pushed(base or None, pushed)
+    if isinstance(value, Fail):
+        raise TermError(value.message, value.code)
+    return value
 
 
-register(PUSHED, _pushed)
+PUSHED = "rosvar-pushed-namespace"
+"""The term of a namespace pushed under another, either known only in a configuration."""
+
+register(PUSHED, _pushed_term)

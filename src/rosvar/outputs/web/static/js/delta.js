@@ -4,10 +4,13 @@
 //
 // An answer with a "base" is a delta against the state of that version: "graph" holds per
 // changed list {removed: [ids], added: [[index, entry]], changed: [[index, fields]]} (drop,
-// insert in order of place, merge), and any other field (the features' string too) is
-// present only when its value changed. An answer without "base" is the whole state.
+// insert in order of place, merge), "conflicts" {removed: [places], added: [[index, entry]]}
+// (drop the entries at those places of the old list, insert), and any other field (the
+// features' string too) is present only when its value changed. An answer without "base"
+// is the whole state.
 
 export const LISTS = "graph";
+const SEQUENCES = new Set(["conflicts"]);
 
 // The new state, or null when the delta was made against another version than state's.
 export function patch(state, answer) {
@@ -20,8 +23,17 @@ export function patch(state, answer) {
       for (const [kind, change] of Object.entries(value)) {
         result[key][kind] = patchList(state[key][kind] ?? [], change);
       }
+    } else if (SEQUENCES.has(key) && !Array.isArray(value)) {
+      result[key] = patchSequence(state[key] ?? [], value);
     } else if (key !== "base") result[key] = value;
   }
+  return result;
+}
+
+function patchSequence(entries, change) {
+  const gone = new Set(change.removed);
+  const result = entries.filter((_entry, place) => !gone.has(place));
+  for (const [index, entry] of change.added) result.splice(index, 0, entry); // in order of place
   return result;
 }
 
