@@ -58,9 +58,11 @@ def run_oracle(
     package_paths: Sequence[str | os.PathLike[str]],
     env: Mapping[str, str] | None = None,
     strict: bool = True,
+    timeout_s: float = 120,
 ) -> dict[str, Any]:
     """The oracle's canonical JSON for ``ros2 launch file name:=value ...``; not ``strict``,
-    packages outside ``package_paths`` are placeholders (for nodes of uninstalled packages)."""
+    packages outside ``package_paths`` are placeholders (for nodes of uninstalled packages);
+    ``timeout_s``: wall time (a deep include tree takes the real launch code tens of seconds)."""
     command = [str(oracle_python()), str(ORACLE / "oracle.py"), os.fspath(file)]
     command += ["--strict"] if strict else []
     command += [f"{name}:={value}" for name, value in arguments.items()]
@@ -68,7 +70,9 @@ def run_oracle(
         command += ["--package-path", os.fspath(path)]
     for name, value in (env or {}).items():
         command += ["--env", f"{name}={value}"]
-    done = subprocess.run(command, capture_output=True, text=True, env=ENVIRONMENT, timeout=120)
+    done = subprocess.run(
+        command, capture_output=True, text=True, env=ENVIRONMENT, timeout=timeout_s
+    )
     if not done.stdout.strip():
         raise RuntimeError(f"the ROS 2 oracle failed: {done.stderr[-2000:]}")
     return restored_lists(loads_repaired(done.stdout))

@@ -86,3 +86,21 @@ def generate_launch_description():
     assert it.model.diagnostics == []
     nodes = it.matches_oracle({})["nodes"]
     assert sorted(node["namespace"] for node in nodes) == ["/one", "/two"]
+
+
+@pytest.mark.oracle
+def test_a_namespace_no_file_names_is_pushed_in_the_model_over_every_command_line(
+    tmp_path: Path,
+) -> None:
+    """The generated workspace's namespace argument (issue 28): given a value no file names,
+    the model over every command line pushes it as a term, composed once it is known."""
+    it = launch(
+        tmp_path,
+        """<launch><arg name="ns" default="robot"/>
+          <group><push-ros-namespace namespace="$(var ns)"/>
+            <push-ros-namespace namespace="arm"/><node pkg="pkg" exec="a" name="a"/></group>
+        </launch>""",
+    )
+    assert it.model.diagnostics == []
+    (node,) = it.matches_oracle({"ns": "robot_b"})["nodes"]
+    assert node["namespace"] == "/robot_b/arm"
