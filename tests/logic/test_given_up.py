@@ -88,6 +88,12 @@ def test_each_give_up_is_equal_only_to_itself(space: ConditionSpace) -> None:
     assert len(Choice.of([(space.slot(X, "a"), one), (space.slot(X, "b"), two)])) == 2
 
 
+def test_give_ups_of_one_text_are_hashed_apart(space: ConditionSpace) -> None:
+    made = [GivenUp("t", "⟨t⟩", _choices(space), _joined) for _ in range(64)]  # type: ignore[arg-type]
+    assert len({hash(g) for g in made}) == len(made)
+    assert len(set(made)) == len(made) and all(g in set(made) for g in made)
+
+
 def test_terms_merged_are_one_branch_that_a_configuration_evaluates(space: ConditionSpace) -> None:
     """Strings and failures stay as they are; the terms become one value whose condition
     covers theirs, and which a configuration evaluates as the term that holds there."""
@@ -114,9 +120,3 @@ def test_terms_merged_are_one_branch_that_a_configuration_evaluates(space: Condi
     one = Choice.of([(space.true, concat([Hole(X), "!"]))])
     assert terms_merged(one, "t", "⟨t⟩") is one  # a single term is merged with nothing
     assert terms_merged(x, "t", "⟨t⟩") is x and terms_merged(y, "t", "⟨t⟩") is y
-
-
-def test_give_ups_of_one_text_are_hashed_apart(space: ConditionSpace) -> None:
-    made = [GivenUp("t", "⟨t⟩", _choices(space), _joined) for _ in range(64)]  # type: ignore[arg-type]
-    assert len({hash(g) for g in made}) == len(made)
-    assert len(set(made)) == len(made) and all(g in set(made) for g in made)
