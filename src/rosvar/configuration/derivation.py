@@ -39,11 +39,11 @@ from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.presence import Presence, PresenceVerdict
 from rosvar.configuration.sat import Sat
-from rosvar.logic.bdd import BDD, children_first, cofactor, cofactors, evaluate, walked_support
+from rosvar.logic.bdd import BDD, Evaluation, children_first, cofactor, cofactors, walked_support
 from rosvar.memo import Memo
 
 SOURCES = 4  # witnesses tried as the source of a repair
-REPAIRED_FILES = 8  # files a repair may copy: beyond, the solver is the cheaper way
+REPAIRED_FILES = 32  # files a repair may copy: beyond, the solver is the cheaper way
 CACHED_REPAIRS = 4096  # repaired witnesses by witness and literals, dropped all at once
 MUTATED = 4  # the latest candidates a missing example is first sought from (``_mutated``)
 EXAMPLES = 64
@@ -87,6 +87,7 @@ class Derivation:
         self._whole_sat: Sat | None = None
         self.variables = list(solver.variables)
         self.position = {v: i for i, v in enumerate(self.variables)}
+        self._evaluation = Evaluation(manager, self.position)
         self.components = solver.components
         self.members = [list(c.variables) for c in solver.components]
         self._masks = [sum(1 << self.position[v] for v in c.variables) for c in solver.components]
@@ -128,6 +129,8 @@ class Derivation:
         self._counts: Memo[tuple[int, BDD], int] = Memo()
         components = range(len(self.members))
         self._examples: dict[int, deque[int]] = {}  # per component: its solver's models
+        self._combinations: deque[tuple[frozenset[int], int]] = deque(maxlen=EXAMPLES)
+        """Examples over several components (``_combined``) and their components."""
         firsts = [sat.model([]) for sat in self.sats]
         valid = None not in firsts  # else the model has no valid configuration at all
         empty = Decisions(
@@ -620,6 +623,13 @@ class Derivation:
         components = {self.component_of[v] for v in support}
         if not components:  # TRUE (the literals have a valid configuration) or FALSE
             return 0 if goal == self.manager.true else None
+        for made, example in reversed(self._combinations):  # the variants of one element
+            if (
+                components <= made
+                and all(decisions.valid(c, example) for c in components)
+                and self._holds(goal, example)
+            ):
+                return example
         largest = max(components, key=lambda c: len(self.members[c]))
         others = [decisions.witnesses[c] for c in sorted(components - {largest})]
         if not all(others):
@@ -639,13 +649,13 @@ class Derivation:
                 continue
             found = self.sats[largest].model(self._assumptions(decisions, largest), rest)
             if found is not None:
+                self._combinations.append((frozenset(components), bits | found))
                 return bits | found
         return None
 
     def _holds(self, u: BDD, witness: int) -> bool:
         """The truth of ``u`` in a witness: one path from the root down."""
-        position = self.position
-        return evaluate(u, lambda name: bool(witness >> position[name] & 1))
+        return self._evaluation.holds(u, witness)
 
     def _mask(self, u: BDD) -> int:
         """The positions of ``u``'s support, as bits."""

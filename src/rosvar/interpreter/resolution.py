@@ -247,6 +247,12 @@ class Restriction:
             try:
                 self.pick(event.tested.value, event.location, event.tested.what)
             except ResolutionError as failure:
+                # the finding, not the frames: its traceback (and that of the error it was
+                # raised over) holds this frame's callers, and through them the result it
+                # goes into, a reference cycle with the analysis's diagrams that the
+                # collector frees in any order, the BDD manager before them
+                failure.__traceback__ = None
+                failure.__context__ = None
                 return failure
         return ResolutionError(event.code, event.message, event.location)
 

@@ -133,8 +133,9 @@ class Analysis:
                 break
             # ROS 2: args included files declare are inputs from their declaration; one read
             # before it needs them from the start, as the command line sets them
-            undeclared |= {name: model.settable[name] for name in late}
-            undeclared |= dict.fromkeys(unknown, file)
+            # sorted: a set's order follows the hash seed, and this order is the inputs'
+            undeclared |= {name: model.settable[name] for name in sorted(late)}
+            undeclared |= dict.fromkeys(sorted(unknown), file)
         return model
 
     def _interpret_with(

@@ -180,8 +180,10 @@ def meets(u: BDD, v: BDD) -> bool:
     quantified variables first through every variable of the manager (most of the time a
     clash judgement took on a workspace of a thousand variables); the conjunction itself
     is as large as the larger diagram."""
-    leq = _library().Cudd_bddLeq
-    return not leq(_pointer(u.bdd), int(u) - 2, (int(v) - 2) ^ 1)
+    manager = u.bdd
+    if v.bdd is not manager:
+        raise ValueError("the diagrams of two managers never meet")
+    return not _library().Cudd_bddLeq(_pointer(manager), int(u) - 2, (int(v) - 2) ^ 1)
 
 
 @cache
@@ -236,18 +238,13 @@ def cofactor(u: BDD, values: Mapping[str, bool]) -> BDD:
     """
     if not values:
         return u
-    cofactored: BDD = _cudd.restrict(u, cube(u.bdd, values))
-    return cofactored
-
-
-def cube(manager: Manager, values: Mapping[str, bool]) -> BDD:
-    """The conjunction of the literals ``values``, in time linear in their number: ``dd``'s
-    ``cube`` walks every variable of the manager."""
-    found = manager.true
+    manager = u.bdd
+    cube = manager.true
     for name, value in values.items():
         atom = manager.var(name)
-        found &= atom if value else ~atom
-    return found
+        cube &= atom if value else ~atom
+    cofactored: BDD = _cudd.restrict(u, cube)
+    return cofactored
 
 
 def evaluate(u: BDD, value: Callable[[str], bool]) -> bool:
@@ -258,6 +255,40 @@ def evaluate(u: BDD, value: Callable[[str], bool]) -> bool:
         flipped ^= bool(u.negated)
         u = u.high if value(name) else u.low
     return (not u.negated) != flipped  # the constant node is TRUE
+
+
+class Evaluation:
+    """The truth of a manager's diagrams under assignments given as integers, whose bit
+    ``position[x]`` is the value of variable ``x``: ``evaluate`` read in CUDD's memory (as
+    ``read`` reads it), where each step of ``evaluate`` asks ``dd`` for a node's variable and
+    child, a new Python object each (the configuration engine evaluates its conditions on
+    hundreds of configurations per click)."""
+
+    def __init__(self, manager: Manager, position: Mapping[str, int]) -> None:
+        self._manager = manager
+        self._true = int(manager.true) - 2
+        names = _names(manager)
+        self._positions = [-1] * (max(names, default=-1) + 1)  # a CUDD index → its bit
+        for index, name in names.items():
+            self._positions[index] = position.get(name, -1)  # -1: no bit (a shift refuses it)
+
+    def holds(self, u: BDD, bits: int) -> bool:
+        """The truth of ``u`` under ``bits``: one path from the root down."""
+        words, positions, true = _memory(), self._positions, self._true
+        node = int(u) - 2
+        flipped = node & 1
+        node ^= flipped
+        if node != true and not _LAYOUT_CHECKED:
+            _check_layout(self._manager, node >> 3, words)
+        while node != true:
+            at = node >> 3
+            if bits >> positions[words[at] & 0xFFFFFFFF] & 1:
+                node = words[at + 2]  # then: never complemented
+            else:
+                node = words[at + 3]
+                flipped ^= node & 1
+                node ^= node & 1
+        return not flipped
 
 
 def children_first(

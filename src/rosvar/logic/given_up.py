@@ -18,7 +18,7 @@ from typing import Any, cast
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.inputs import Input
-from rosvar.logic.terms import Apply, Operand, PackageTable, TermError, evaluate
+from rosvar.logic.terms import Apply, Operand, PackageTable, TermError, evaluate, is_term
 
 Combination = Callable[[list[Any]], Operand | Fail]
 """The value of one leaf of each operand (a failing one: the launch tool's failure)."""
@@ -75,3 +75,26 @@ class GivenUp(Apply):
 
 
 _NONE = object()
+
+
+def first(leaves: list[Any]) -> Any:
+    """The combination of one operand: its leaf (a given-up value that picks, in a
+    configuration, the branch of one choice that holds there)."""
+    return leaves[0]
+
+
+def terms_merged(value: Choice[Any], text: str, display: str) -> Choice[Any]:
+    """``value`` with its branches of terms as one branch: a :class:`GivenUp` that picks the
+    term that holds in a configuration and evaluates it. For values that nothing reads
+    before a configuration makes them concrete (a file a helper writes): crossing each term
+    with the operands of the texts made of it would multiply branches that all mean "known
+    per configuration" (nav2's bringup: 3,792 per server)."""
+    terms = [branch for branch in value.branches if is_term(branch[1])]
+    if len(terms) < 2:
+        return value
+    where = terms[0][0]
+    for condition, _term in terms[1:]:
+        where |= condition
+    merged = GivenUp(text, display, [Choice(tuple(terms), value.false)], first)
+    kept = tuple(branch for branch in value.branches if not is_term(branch[1]))
+    return Choice((*kept, (where, merged)), value.false)

@@ -44,6 +44,7 @@ from rosvar.interpreter.substitution_args import (
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail, combine_bind, crossed, ite
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.given_up import terms_merged
 from rosvar.logic.terms import (
     Apply,
     Hole,
@@ -244,9 +245,16 @@ EMPTY_ARGUMENT: dict[str, str] = {}
 grammar gives it as an empty list, which some substitutions turn into text (``[]``)."""
 
 
-def substitution(name: str) -> Callable[[Handler], Handler]:
+MERGED_TERMS: dict[str, str] = {}
+"""Substitutions whose values not known yet are one value (the display given), which a
+configuration computes (:func:`~rosvar.logic.given_up.terms_merged`): values nothing reads
+before they are concrete, such as a whole file."""
+
+
+def substitution(name: str, merged_terms: str | None = None) -> Callable[[Handler], Handler]:
     """Register the handler of ``$(name ...)``; it gets the arguments' texts. A name the
-    launch API's registry does not know, or a second handler, is refused."""
+    launch API's registry does not know, or a second handler, is refused. ``merged_terms``:
+    the display of the one value its terms make (:data:`MERGED_TERMS`)."""
     if name not in SUBSTITUTIONS.by_name and name not in OWN:
         raise ValueError(f"$({name}) is no substitution of the launch API's registry")
     if name in HANDLERS:
@@ -254,6 +262,8 @@ def substitution(name: str) -> Callable[[Handler], Handler]:
 
     def register(handler: Handler) -> Handler:
         HANDLERS[name] = handler
+        if merged_terms is not None:
+            MERGED_TERMS[name] = merged_terms
         return handler
 
     return register
@@ -444,7 +454,9 @@ class Ros2Substituter:
         again = None if computation is None else functools.partial(_computed, computation)
         if not self.budget.affordable(text, arguments):
             return self.budget.given_up(text, arguments, again)
-        return combine_bind(arguments, lambda leaves: _call(handler, self.host, context, leaves))
+        value = combine_bind(arguments, lambda leaves: _call(handler, self.host, context, leaves))
+        merged = MERGED_TERMS.get(part.name)
+        return value if merged is None else terms_merged(value, text, f"⟨{merged}⟩")
 
     def _condition(
         self, template: Template, parts: list[Choice[Value]], text: str

@@ -22,6 +22,7 @@ from rosvar.ros2.conventions.names import node_problem
 from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.ros2.conventions.parameters import PARAMETER_TYPES, coerce
 from rosvar.ros2.dialect import ROS2, tag
+from rosvar.ros2.frontends.python.shared_remaps import SHARED
 from rosvar.ros2.nodes import NAMES_CHECKED, ProcessKind
 from rosvar.ros2.substitutions import Ros2Substituter
 
@@ -178,8 +179,9 @@ def _remap(it: Interpretation[Context], entity: Entity, context: Context, out: l
     source, target = it.required(entity, "from", context), it.required(entity, "to", context)
     if source is None or target is None:
         return
+    own = None if entity.has(SHARED) else it.location  # a rule for several nodes: a group's
     for condition, (s, t) in split(it, combine([source, target], tuple)):
-        out.append(Remap(it.pc & condition, s, t, it.location))
+        out.append(Remap(it.pc & condition, s, t, own))
 
 
 def _env(

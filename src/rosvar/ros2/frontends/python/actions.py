@@ -165,6 +165,8 @@ def _write_pairs(call: Call, entity: Entity, param: Param, value: Value) -> None
             child = _child(call, entity, param.xml)
             set_attribute(call, child, "from", item[0])
             set_attribute(call, child, "to", item[1])
+            if call.remaps is not None:
+                call.remaps.give(item, entity, child)
         else:
             call.not_followed(f"an item of {param.python} that is not a pair")
 
