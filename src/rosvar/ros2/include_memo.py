@@ -489,7 +489,7 @@ def _record(
         read = _read_before(
             recording.reads[reads:],
             before.configurations,
-            [(at - reads, name) for at, name, _file in recording.entered[entered:]],
+            [(at - reads, name, file) for at, name, file in recording.entered[entered:]],
         )
         if recording.walks:  # the enclosing walks need no more of this one's reads
             del recording.reads[reads:]
@@ -520,21 +520,26 @@ def _record(
 
 
 def _read_before(
-    reads: list[Read], initial: dict[str, Configuration], entered: list[tuple[int, str]]
+    reads: list[Read],
+    initial: dict[str, Configuration],
+    entered: list[tuple[int, str, str | None]],
 ) -> list[Read]:
     """What a walk read of the state before it (``initial``'s configurations), each once,
     in order: a configuration that held another value then was written by the walk (or a
-    group it emptied), and the standing of a name after the walk ``entered`` it in the
-    entry model (after that many reads), follow from earlier reads."""
+    group it emptied), and whether a name is an input after the walk made it one, or is
+    listed after the walk made it an input or listed it (``entered``, after that many reads),
+    follow from earlier reads."""
     kept: list[Read] = []
     names: set[str] = set()
     met: set[Read] = set()
-    since: dict[str, int] = {}
-    for at, name in entered:
-        since.setdefault(name, at)
+    since: dict[tuple[Probe, str], int] = {}
+    for at, name, file in entered:
+        since.setdefault((Probe.LISTED, name), at)
+        if file is not None:
+            since.setdefault((Probe.INPUT, name), at)
     for index, read in enumerate(reads):
         probe, name, answer = read
-        if probe is not Probe.CONFIGURATION and since.get(name, index + 1) <= index:
+        if since.get((probe, name), index + 1) <= index:
             continue
         if probe is Probe.CONFIGURATION:
             if name in names or answer is not initial.get(name):
