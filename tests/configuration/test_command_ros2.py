@@ -93,3 +93,56 @@ def test_a_product_that_does_not_launch_names_ros2_launch(
     assert "ros2 launch pkg main.launch.xml on:=abc\n" in out
     assert "this product does not launch: ros2 launch stops at the errors" in out
     assert not run_oracle(file, {"on": "abc"}, [tmp_path])["ok"]
+
+
+TYPED_NAMES = """<launch>
+  <arg name="n" default="talker"/>
+  <arg name="ns" default="a"/>
+  <arg name="p" default="a"/>
+  <group>
+    <push-ros-namespace namespace="$(var p)"/>
+    <node pkg="pkg" exec="n" name="$(var n)" namespace="$(var ns)"/>
+  </group>
+</launch>"""
+
+
+@pytest.mark.parametrize(
+    ("arg", "typed"),
+    [
+        *(("n", typed) for typed in ("a/b", "9lives", "", "ok")),
+        *(("ns", typed) for typed in ("x y", "x//y", "/abs/", "x/y")),
+        *(("p", typed) for typed in ("p q", "/", "x/y/")),
+    ],
+)
+def test_a_typed_name_launch_ros_refuses_is_refused_or_the_products_failure(
+    arg: str, typed: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A text typed for a node's name or namespace or a pushed namespace is checked as
+    launch_ros checks them: where the oracle fails with it, the text is refused with
+    launch_ros's reason once the node is in every product left (the other args chosen), and
+    is the failure of the finished product otherwise; where it loads, the product is its
+    nodes."""
+    file = _launch_folder(tmp_path) / "main.launch.xml"
+    file.write_text(TYPED_NAMES)
+    feature = "pkg/launch/main.launch.xml"
+    typing = ["--set", f"{feature}:{arg}={typed}"]
+    defaults = {"n": "talker", "ns": "a", "p": "a"}
+    others = [
+        w for a, v in defaults.items() if a != arg for w in ("--select", f"{feature}:{a}={v}")
+    ]
+    expected = run_oracle(file, {arg: typed}, [tmp_path])
+    problem = str(expected.get("error", "")).split(":\n")[0]  # rmw's words, then where
+    for words in ([*others, *typing], typing):
+        main(["configure", str(tmp_path), "--select", feature, *words, "--finish", "--json"])
+        state = json.loads(capsys.readouterr().out)
+        errors = [e["message"] for e in state["graph"]["errors"] if e["presence"] == "present"]
+        if expected["ok"]:
+            assert state["refused"] == [] and errors == [] and state["launches"]
+            present = {n["name"] for n in state["graph"]["nodes"] if n["presence"] == "present"}
+            assert present == {n["fqn"] for n in expected["nodes"]}
+        elif words == typing:
+            assert not state["launches"] and any(problem in error for error in errors), errors
+        else:
+            [refusal] = state["refused"]
+            assert "ros2 launch would stop at " in refusal["reason"]
+            assert problem in refusal["reason"], (refusal["reason"], expected["error"])

@@ -122,3 +122,39 @@ def test_witnesses_of_conjunctions_are_valid_configurations(ws: LaunchWorkspace)
             without, within = verdict.witnesses
             assert holds(formula, without) and holds(formula, within)
             assert not holds(condition, without) and holds(condition, within)
+
+
+def test_examples_over_several_components_are_valid_configurations(ws: LaunchWorkspace) -> None:
+    """A goal over several components is sought with the largest one's solver under
+    witnesses of the others (``_combined``), not with the whole workspace's: each example
+    must be a valid configuration under the literals where the goal holds."""
+    model, derivation = derived(ws)
+    solver = model.solver
+    manager, formula = solver.manager, solver.formula
+    position, components = derivation.position, solver.components
+    assert len(components) > 1
+
+    def holds(u: BDD, bits: int) -> bool:
+        values = {v: bool(bits >> position[v] & 1) for v in solver.variables}
+        return bool(manager.let(values, u) == manager.true)
+
+    rng = random.Random(6)
+    found = 0
+    for _ in range(60):
+        decisions = derivation.initial
+        for _ in range(rng.randint(0, 2)):
+            variable = rng.choice(solver.variables)
+            decisions = derivation.add(decisions, variable, rng.random() < 0.5) or decisions
+        one, other = rng.sample(range(len(components)), 2)
+        atoms = [manager.var(rng.choice(list(components[c].variables))) for c in (one, other)]
+        atoms = [atom if rng.random() < 0.6 else ~atom for atom in atoms]
+        goal = atoms[0] | atoms[1] if rng.random() < 0.5 else atoms[0] & atoms[1]
+        example = derivation._combined(decisions, goal)
+        if example is None:  # the whole workspace's solver is asked
+            continue
+        found += 1
+        involved = {solver.component_of[v] for v in manager.support(goal)}
+        for n in set(range(len(components))) - involved:  # the others: any witness
+            example |= decisions.witnesses[n][0]
+        assert holds(formula & decisions.cube & goal, example)
+    assert found > 20

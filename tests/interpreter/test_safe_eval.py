@@ -34,6 +34,7 @@ from rosvar.interpreter.safe_eval import (
     referenced_args,
     referenced_names,
 )
+from rosvar.interpreter.safe_eval.names import ROSLAUNCH_CALLS
 
 ORACLE_PYTHON = "/usr/bin/python3"
 PACKAGE = "my_pkg"
@@ -301,6 +302,18 @@ def refused(expr: str, env: EvalEnvironment = ENV) -> EvalRefused:
     with pytest.raises(EvalRefused) as info:
         evaluate(expr, env)
     return info.value
+
+
+def test_a_refused_call_names_what_its_environment_allows() -> None:
+    """roslaunch's ``$(eval)`` has its host functions; a symbols environment (ROS 2's
+    ``$(eval)``, xacro's ``${}``) has none, and its refusal names none of them."""
+    roslaunch = refused("open('x')").message
+    assert roslaunch.endswith("(only " + ROSLAUNCH_CALLS + ")") and "arg/env" in roslaunch
+    symbols = EvalEnvironment(ENV.lookup_arg, symbols=ENV.lookup_arg, namespaces={"math": {}})
+    message = refused("open('x')", symbols).message
+    assert message.startswith("calling 'open' is not allowed (only the builtins abs, all,")
+    assert "math.NAME" in message and "arg" not in message.split("(only")[1]
+    assert refused("open('x')").col == refused("open('x')", symbols).col == 0
 
 
 def failed(expr: str, env: EvalEnvironment = ENV) -> EvalFailed:

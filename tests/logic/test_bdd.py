@@ -93,6 +93,18 @@ def test_evaluate_is_let_under_a_full_assignment(seed: int) -> None:
         assert bdd.evaluate(u, values.__getitem__) == (manager.let(values, u) == manager.true)
 
 
+@pytest.mark.parametrize("seed", range(10))
+def test_an_evaluation_holds_where_evaluate_does(seed: int) -> None:
+    manager = fresh(NAMES[:6])
+    position = {name: 5 - number for number, name in enumerate(NAMES[:6])}
+    evaluation = bdd.Evaluation(manager, position)
+    u = random_formula(manager, random.Random(seed), NAMES[:6])
+    for values in assignments(NAMES[:6]):
+        bits = sum(1 << position[name] for name, value in values.items() if value)
+        assert evaluation.holds(u, bits) == bdd.evaluate(u, values.__getitem__)
+        assert evaluation.holds(~u, bits) != bdd.evaluate(u, values.__getitem__)
+
+
 @pytest.mark.parametrize("seed", range(20))
 def test_walked_support_is_dd_support(seed: int) -> None:
     manager = fresh()
@@ -113,7 +125,7 @@ def test_children_first_gives_each_node_after_its_children(seed: int) -> None:
 
 
 @pytest.mark.parametrize("seed", range(10))
-def test_conjoin_restrict_and_exists(seed: int) -> None:
+def test_conjoin_restrict_and_meets(seed: int) -> None:
     rng = random.Random(seed)
     manager = fresh()
     parts = [random_formula(manager, rng) for _ in range(4)] + [manager.true]
@@ -123,8 +135,10 @@ def test_conjoin_restrict_and_exists(seed: int) -> None:
     assert bdd.conjoin(manager, parts) == expected
     u, care = parts[0], parts[1]
     assert (bdd.restrict(u, care) & care) == (u & care)
-    hidden = set(rng.sample(NAMES, 3))
-    assert bdd.and_exists(u, care, hidden) == manager.exist(hidden, u & care)
+    for v in (care, ~u, u & ~care, manager.false, manager.true):
+        assert bdd.meets(u, v) == ((u & v) != manager.false)
+    with pytest.raises(ValueError):
+        bdd.meets(u, fresh().true)
 
 
 def test_the_memory_bound_refuses_growth_and_is_lifted() -> None:

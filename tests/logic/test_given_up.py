@@ -9,7 +9,7 @@ import pytest
 
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.given_up import Bindings, GivenUp
+from rosvar.logic.given_up import Bindings, GivenUp, terms_merged
 from rosvar.logic.inputs import OTHER, ArgInput, Input, Slot
 from rosvar.logic.terms import Apply, Hole, TermError, concat, evaluate
 
@@ -86,3 +86,37 @@ def test_each_give_up_is_equal_only_to_itself(space: ConditionSpace) -> None:
     two = GivenUp("t", "⟨t⟩", _choices(space), _joined)  # type: ignore[arg-type]
     assert one == one and one != two and one != Apply("too_complex", ("t",), display="⟨t⟩")
     assert len(Choice.of([(space.slot(X, "a"), one), (space.slot(X, "b"), two)])) == 2
+
+
+def test_give_ups_of_one_text_are_hashed_apart(space: ConditionSpace) -> None:
+    made = [GivenUp("t", "⟨t⟩", _choices(space), _joined) for _ in range(64)]  # type: ignore[arg-type]
+    assert len({hash(g) for g in made}) == len(made)
+    assert len(set(made)) == len(made) and all(g in set(made) for g in made)
+
+
+def test_terms_merged_are_one_branch_that_a_configuration_evaluates(space: ConditionSpace) -> None:
+    """Strings and failures stay as they are; the terms become one value whose condition
+    covers theirs, and which a configuration evaluates as the term that holds there."""
+    x, y = _choices(space)
+    crossed = Choice.of(
+        [
+            (space.slot(X, "a") & space.slot(Y, "true"), "a!"),
+            (space.slot(X, "b") & space.slot(Y, "true"), concat(["b", Hole(Y)])),
+            (space.slot(X, OTHER) & space.slot(Y, "true"), concat([Hole(X), "!"])),
+            (space.slot(Y, "false"), Fail("no", "y-no")),
+        ]
+    )
+    merged = terms_merged(crossed, "$(arg x)$(arg y)", "⟨x and y⟩")
+    assert merged.values()[:2] == ["a!", Fail("no", "y-no")]
+    assert str(merged.values()[2]) == "⟨x and y⟩" and len(merged) == 3
+    (where, term), *_ = [(c, v) for c, v in merged if isinstance(v, GivenUp)]
+    assert where == space.slot(Y, "true") & (space.slot(X, "b") | space.slot(X, OTHER))
+    configurations: list[tuple[dict[Input, str], str]] = [
+        ({X: "b", Y: "true"}, "btrue"),
+        ({X: "zz", Y: "true"}, "zz!"),
+    ]
+    for values, text in configurations:
+        assert evaluate(term, values, _bindings(space, dict(values))) == text
+    one = Choice.of([(space.true, concat([Hole(X), "!"]))])
+    assert terms_merged(one, "t", "⟨t⟩") is one  # a single term is merged with nothing
+    assert terms_merged(x, "t", "⟨t⟩") is x and terms_merged(y, "t", "⟨t⟩") is y

@@ -31,9 +31,8 @@ PUSHED = """<launch>
 
 
 def model_of(tmp_path: Path) -> tuple[Analysis, Path]:
-    """The model of :data:`PUSHED`; pushed namespaces ``r2`` and ``/`` are known values (a
-    pushed namespace must be known: the model fails it where it is not), the node's own
-    namespace is a term outside its default."""
+    """The model of :data:`PUSHED`; pushed namespaces ``r2`` and ``/`` are known values,
+    another one and the node's own namespace outside its default are terms."""
     package = tmp_path / "ws" / "pkg"
     (package / "launch").mkdir(parents=True)
     (package / "package.xml").write_text(PACKAGE_XML)
@@ -77,9 +76,15 @@ def test_unknown_parts_compose_into_a_term(tmp_path: Path) -> None:
     assert any(str(term) == "/r1/⟨own⟩/driver" for term in terms)
     unnamed = _named(model.nodes, None)
     labels = {str(label) for _c, label in unnamed.value(ROS2_NODES.label)}
-    assert labels == {"/r1/⟨unnamed⟩", "/r2/⟨unnamed⟩", "/⟨unnamed⟩"}  # pushed r1, r2 or /
-    for own, expected in (("/abs", "/abs/driver"), ("x/", "/r2/x/driver")):
-        restriction = Restriction(analysis, model, {"ns": "r2", "own": own}, {})
+    pushed = {"/r1/⟨unnamed⟩", "/r2/⟨unnamed⟩", "/⟨unnamed⟩", "/⟨ns⟩/⟨unnamed⟩"}
+    assert labels == pushed  # pushed r1, r2, / or another text
+    cases = (
+        ("r2", "/abs", "/abs/driver"),
+        ("r2", "x/", "/r2/x/driver"),
+        ("a/b/", "", "/a/b/driver"),
+    )
+    for ns, own, expected in cases:
+        restriction = Restriction(analysis, model, {"ns": ns, "own": own}, {})
         name = restriction.pick(node.value(ROS2_NODES.full_name), node.location, "name")
         assert name == expected
 

@@ -364,6 +364,17 @@ def test_a_module_rosvar_does_not_model_is_refused_naming_it(tmp_path: Path) -> 
     assert launch_oracle_ok(it)
 
 
+def test_a_refused_call_names_what_ros2_evaluates(tmp_path: Path) -> None:
+    """ROS 2's ``$(eval)`` has none of roslaunch's functions (``arg``, ``env``...): its
+    refusal names the builtins and math's functions, which it has."""
+    it = launch(tmp_path, EVAL_MODULES_XML.format("'hex($(var x))'"))
+    [error] = it.analysis.resolve([str(it.main)], {}).errors
+    assert error.code == "eval-refused"
+    allowed = error.message.split("calling 'hex' is not allowed (only ")[1]
+    assert allowed.startswith("the builtins abs, all, any, bool") and "math.NAME" in allowed
+    assert not {"arg", "env", "optenv", "find", "anon", "dirname"} & set(allowed.split("/"))
+
+
 def launch_oracle_ok(it: Launch) -> bool:
     """Whether the real launch runs ``it`` with its defaults."""
     if not ORACLE.is_dir():

@@ -25,7 +25,7 @@ from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.judgement import Typed
 from rosvar.configuration.lowering import Lowering
-from rosvar.logic.bdd import BDD, and_exists, conjoin, walked_support
+from rosvar.logic.bdd import BDD, conjoin, meets, walked_support
 
 REQUIRES_LIMIT = 100_000
 """Nodes of a component's formula above which its requires are left out of clash judgements."""
@@ -219,13 +219,11 @@ class Conflicts:
         """Some configuration of the pair's blocks and ``u`` (its ``possible`` or
         ``escapes``) has the literals of ``cube`` (``_decided``).
 
-        Asked as ``∃ pair.variables. within ∧ (u ∧ cube)`` (CUDD's and-abstract), which
-        stops at the first path to TRUE and builds none of the conjunction's nodes: the
-        blocks' diagram may reach ``BLOCK_LIMIT`` nodes, and conjoining it with the clash at
-        build and with the choices at each step made as many new nodes each time, which
-        dominated the engine's construction and its steps on large workspaces."""
-        found = and_exists(pair.within, u & cube, pair.variables)
-        return bool(found != self.manager.false)
+        Asked without building ``within ∧ (u ∧ cube)`` (``bdd.meets``): the blocks' diagram
+        may reach ``BLOCK_LIMIT`` nodes, and conjoining it with the clash at build and with
+        the choices at each step made as many new nodes each time, which dominated the
+        engine's construction and its steps on large workspaces."""
+        return meets(pair.within, u & cube)
 
     def _status(
         self,

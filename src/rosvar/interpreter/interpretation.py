@@ -33,6 +33,7 @@ from rosvar.logic.bdd import BDD
 from rosvar.logic.cells import register_predicate_texts, spellings
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.given_up import first
 from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Slot
 from rosvar.logic.terms import Hole
 from rosvar.workspace import Workspace
@@ -377,7 +378,7 @@ class Interpretation(Generic[S]):
             f"{what} is not computed: it tests {terms} values not known yet, "
             f"over {MAX_TESTED_TERMS}"
         )
-        return Choice.const(self.space, too_complex(what, [value], _first))
+        return Choice.const(self.space, too_complex(what, [value], first))
 
     def _invalid(self, value: Choice[Raw]) -> BDD:
         invalid = self.space.false
@@ -480,10 +481,6 @@ class Interpretation(Generic[S]):
         if self.location.line > 0:  # an include
             return self.location
         return next((where for where in found if where.line > 0), Location(path, 1, 1))
-
-
-def _first(leaves: list[Any]) -> Any:
-    return leaves[0]
 
 
 class _At(Generic[S]):

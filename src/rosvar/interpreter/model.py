@@ -75,8 +75,8 @@ class Remap:
     target: Raw
     location: Location | None = None
     """Where a node's own ``<remap>`` is written; None for one it inherits (a group's, a
-    global one), which renames for every node under it: a node that never uses its name is
-    then no mistake."""
+    global one) or shares with other nodes (ROS 2 Python: one list given to several), which
+    renames for every node it reaches: a node that never uses its name is then no mistake."""
 
 
 @dataclass(slots=True)

@@ -202,7 +202,8 @@ class Restriction:
         self.confinement = models.workspace.confinement()
         packages = {name: package.path for name, package in models.workspace.packages.items()}
         self.assignment: dict[str, bool] = {}
-        self.host = Bindings(packages, functools.partial(_holds, self.space, self.assignment))
+        holds = functools.partial(_holds, self.space, self.assignment)
+        self.host = Bindings(packages, holds, workspace=models.workspace)
         """Terms evaluate with the packages; values over the work limits are computed again
         with the conditions that hold (:mod:`~rosvar.logic.given_up`), also while the
         assignment is made: a predicate on such a value reads its operands' atoms."""
@@ -246,6 +247,12 @@ class Restriction:
             try:
                 self.pick(event.tested.value, event.location, event.tested.what)
             except ResolutionError as failure:
+                # the finding, not the frames: its traceback (and that of the error it was
+                # raised over) holds this frame's callers, and through them the result it
+                # goes into, a reference cycle with the analysis's diagrams that the
+                # collector frees in any order, the BDD manager before them
+                failure.__traceback__ = None
+                failure.__context__ = None
                 return failure
         return ResolutionError(event.code, event.message, event.location)
 

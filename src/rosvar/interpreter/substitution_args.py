@@ -32,6 +32,7 @@ from rosvar.logic.terms import (
     TermError,
     concat,
     is_term,
+    measure_parts,
     register,
     term_inputs,
 )
@@ -632,7 +633,7 @@ def _concatenated(
         if isinstance(leaf, Fail):
             return leaf
     joined = parts(leaves)  # type: ignore[arg-type]  # no Fail left
-    size, depth = _measure(joined)
+    size, depth = measure_parts(joined)
     if size > MAX_VALUE_SIZE or depth > MAX_TERM_DEPTH:
         return too_complex(text)
     return concat(list(joined))
@@ -668,29 +669,6 @@ def _short(text: str) -> str:
 
 
 register("too_complex", _too_complex_term)
-
-
-def _measure(parts: Sequence[object]) -> tuple[int, int]:
-    """Characters and nesting of a concatenation of ``parts`` (shared operands of terms
-    counted each time, as showing or evaluating the value would)."""
-    size, depth = 0, 0
-    for part in parts:
-        if isinstance(part, str):
-            size += len(part)
-        elif isinstance(part, Hole | Apply):
-            part_size, part_depth = _term_measure(part)
-            size += part_size
-            depth = max(depth, part_depth + 1)
-    return size, depth
-
-
-@functools.lru_cache(maxsize=65536)
-def _term_measure(term: Hole | Apply) -> tuple[int, int]:
-    """A term's :func:`_measure` (recursing at most :data:`MAX_TERM_DEPTH` levels: deeper
-    terms are never built)."""
-    if isinstance(term, Hole):
-        return len(str(term)), 0
-    return _measure([o for o in term.operands if not isinstance(o, tuple)])
 
 
 class _Undecidable(Exception):

@@ -49,7 +49,8 @@ class Analysis:
 
     def package_table(self) -> PackageTable:
         """The workspace's packages, as terms' ``$(find)`` reads them when evaluated."""
-        return PackageTable({name: p.path for name, p in self.workspace.packages.items()})
+        packages = {name: p.path for name, p in self.workspace.packages.items()}
+        return PackageTable(packages, workspace=self.workspace)
 
     def model(self, file: str) -> LaunchModel:
         """The model of ``file`` as an entry point (interpreted once, then cached)."""
@@ -132,8 +133,9 @@ class Analysis:
                 break
             # ROS 2: args included files declare are inputs from their declaration; one read
             # before it needs them from the start, as the command line sets them
-            undeclared |= {name: model.settable[name] for name in late}
-            undeclared |= dict.fromkeys(unknown, file)
+            # sorted: a set's order follows the hash seed, and this order is the inputs'
+            undeclared |= {name: model.settable[name] for name in sorted(late)}
+            undeclared |= dict.fromkeys(sorted(unknown), file)
         return model
 
     def _interpret_with(

@@ -9,7 +9,9 @@ nodes for an exact weighted count (``read``) and for the values each variable ca
 
 ``read`` takes the nodes out of CUDD's memory, in the layout of the CUDD build that ``dd``
 0.6.0 ships (CUDD 3.0.0), which ``dd`` does not promise to keep: ``pyproject.toml`` pins that
-version of ``dd`` for it, and ``_indices`` checks the layout before every read.
+version of ``dd`` for it, and ``_indices`` checks the layout before every read. ``meets``
+calls a CUDD function ``dd`` does not wrap, on the manager's pointer read out of ``dd``'s
+object (``_pointer`` checks that layout on every call).
 """
 
 from __future__ import annotations
@@ -170,11 +172,44 @@ def restrict(u: BDD, care: BDD) -> BDD:
     return restricted
 
 
-def and_exists(u: BDD, v: BDD, variables: Collection[str]) -> BDD:
-    """``∃ variables. u ∧ v`` without building the conjunction (CUDD's and-abstract): it
-    stops at the first path to TRUE, so asking whether it is FALSE is cheap."""
-    found: BDD = _cudd.and_exists(u, v, variables)
-    return found
+def meets(u: BDD, v: BDD) -> bool:
+    """Some assignment satisfies both ``u`` and ``v``: ``u ≤ ¬v`` refuted by CUDD's
+    ``Cudd_bddLeq``, which builds no node and stops at the first path the two share.
+
+    ``dd`` wraps no such test. Its and-abstract answers it too, but builds the cube of the
+    quantified variables first through every variable of the manager (most of the time a
+    clash judgement took on a workspace of a thousand variables); the conjunction itself
+    is as large as the larger diagram."""
+    manager = u.bdd
+    if v.bdd is not manager:
+        raise ValueError("the diagrams of two managers never meet")
+    return not _library().Cudd_bddLeq(_pointer(manager), int(u) - 2, (int(v) - 2) ^ 1)
+
+
+@cache
+def _library() -> ctypes.PyDLL:
+    """``dd``'s build of CUDD, whose functions are called with the GIL held (a ``PyDLL``):
+    nothing else may run in the manager meanwhile."""
+    library = ctypes.PyDLL(_cudd.__file__)
+    library.Cudd_bddLeq.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
+    library.Cudd_bddLeq.restype = ctypes.c_int
+    return library
+
+
+def _pointer(manager: Manager) -> int:
+    """The ``DdManager *`` of a ``dd`` manager, read out of the object ``dd`` 0.6.0's Cython
+    lays out as: the object's header (two words), its method table, the manager, then
+    ``vars``, ``_index_of_var`` and ``_var_with_index`` (checked against their ids)."""
+    words = _memory()
+    at = id(manager) >> 3
+    fields = cast(Any, manager)
+    if (words[at + 4], words[at + 5], words[at + 6]) != (
+        id(fields.vars),
+        id(fields._index_of_var),
+        id(fields._var_with_index),
+    ):
+        raise RuntimeError("dd lays its manager out otherwise than rosvar reads it")
+    return words[at + 3]
 
 
 def cofactors(u: BDD) -> tuple[BDD, BDD]:
@@ -220,6 +255,40 @@ def evaluate(u: BDD, value: Callable[[str], bool]) -> bool:
         flipped ^= bool(u.negated)
         u = u.high if value(name) else u.low
     return (not u.negated) != flipped  # the constant node is TRUE
+
+
+class Evaluation:
+    """The truth of a manager's diagrams under assignments given as integers, whose bit
+    ``position[x]`` is the value of variable ``x``: ``evaluate`` read in CUDD's memory (as
+    ``read`` reads it), where each step of ``evaluate`` asks ``dd`` for a node's variable and
+    child, a new Python object each (the configuration engine evaluates its conditions on
+    hundreds of configurations per click)."""
+
+    def __init__(self, manager: Manager, position: Mapping[str, int]) -> None:
+        self._manager = manager
+        self._true = int(manager.true) - 2
+        names = _names(manager)
+        self._positions = [-1] * (max(names, default=-1) + 1)  # a CUDD index → its bit
+        for index, name in names.items():
+            self._positions[index] = position.get(name, -1)  # -1: no bit (a shift refuses it)
+
+    def holds(self, u: BDD, bits: int) -> bool:
+        """The truth of ``u`` under ``bits``: one path from the root down."""
+        words, positions, true = _memory(), self._positions, self._true
+        node = int(u) - 2
+        flipped = node & 1
+        node ^= flipped
+        if node != true and not _LAYOUT_CHECKED:
+            _check_layout(self._manager, node >> 3, words)
+        while node != true:
+            at = node >> 3
+            if bits >> positions[words[at] & 0xFFFFFFFF] & 1:
+                node = words[at + 2]  # then: never complemented
+            else:
+                node = words[at + 3]
+                flipped ^= node & 1
+                node ^= node & 1
+        return not flipped
 
 
 def children_first(

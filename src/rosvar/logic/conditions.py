@@ -91,6 +91,9 @@ class ConditionSpace:
         self._atoms: list[Atom] = []
         self._var_of: dict[Atom, str] = {}
         self._atom_of: dict[str, Atom] = {}
+        # each predicate's variable by its test and term: found by a plain tuple (a term
+        # found by identity, terms being hash-consed), with no atom made to look it up
+        self._predicates: dict[tuple[str, Term], BDD] = {}
         self._domains: dict[Input, tuple[Slot, ...]] = {}
         self._slot_names: dict[Input, dict[Slot, str]] = {}  # `slot` without a SlotAtom
         self._slot_atoms: dict[Input, tuple[tuple[Slot, BDD], ...]] = {}
@@ -171,10 +174,10 @@ class ConditionSpace:
 
     def predicate(self, test: str, term: Term) -> BDD:
         """The atom "``test`` holds for ``term``", created on first use."""
+        known = self._predicates.get((test, term))
+        if known is not None:
+            return known
         atom = PredicateAtom(test, term)
-        name = self._var_of.get(atom)
-        if name is not None:
-            return self.bdd.var(name)
         # Next to the slots of the inputs it reads: a disjunction of (slot ∧ predicate)
         # pairs is linear when each pair is adjacent, exponential when all predicates sit
         # below all slots (a file testing many predicates blows up).
@@ -184,6 +187,7 @@ class ConditionSpace:
             for name in self._slot_names.get(input_, {}).values()
         ]
         variable = self._new_var(atom, max(levels) + 1 if levels else None)
+        self._predicates[test, term] = variable
         self._relate(atom)
         return variable
 

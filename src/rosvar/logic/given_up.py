@@ -13,12 +13,12 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.inputs import Input
-from rosvar.logic.terms import Apply, Operand, PackageTable, TermError, evaluate
+from rosvar.logic.terms import Apply, Operand, PackageTable, TermError, evaluate, is_term
 
 Combination = Callable[[list[Any]], Operand | Fail]
 """The value of one leaf of each operand (a failing one: the launch tool's failure)."""
@@ -35,23 +35,29 @@ class GivenUp(Apply):
     """``too_complex(text)``: a value over the work limits, with what computes it in one
     configuration (``choices``, one leaf of each given to ``combination``).
 
-    Equal only to itself: two give-ups of one text may combine different operands.
+    Equal only to itself (two give-ups of one text may combine different operands), and
+    hashed as itself: hashed by their text, the give-ups of one text piled up in one probe
+    chain of each dict they were keys of, every lookup comparing them all.
     """
 
     __slots__ = ("choices", "combination")
 
-    def __init__(
-        self, text: str, display: str, choices: Sequence[Choice[object]], combination: Combination
-    ) -> None:
-        super().__init__("too_complex", (text,), display=display)
+    choices: tuple[Choice[object], ...]
+    combination: Combination
+
+    def __new__(
+        cls, text: str, display: str, choices: Sequence[Choice[object]], combination: Combination
+    ) -> GivenUp:
+        self = cast("GivenUp", cls._made("too_complex", (text,), display))
         self.choices = tuple(choices)
         self.combination = combination
+        return self
 
-    def __eq__(self, other: object) -> bool:
-        return other is self
+    def __reduce__(self) -> Any:
+        raise TypeError("a value given up is not pickled: it holds conditions")
 
-    def __hash__(self) -> int:
-        return self._hash
+    __eq__ = object.__eq__
+    __hash__ = object.__hash__
 
     def evaluated(self, inputs: Mapping[Input, str], host: object) -> str:
         if not isinstance(host, Bindings):
@@ -69,3 +75,26 @@ class GivenUp(Apply):
 
 
 _NONE = object()
+
+
+def first(leaves: list[Any]) -> Any:
+    """The combination of one operand: its leaf (a given-up value that picks, in a
+    configuration, the branch of one choice that holds there)."""
+    return leaves[0]
+
+
+def terms_merged(value: Choice[Any], text: str, display: str) -> Choice[Any]:
+    """``value`` with its branches of terms as one branch: a :class:`GivenUp` that picks the
+    term that holds in a configuration and evaluates it. For values that nothing reads
+    before a configuration makes them concrete (a file a helper writes): crossing each term
+    with the operands of the texts made of it would multiply branches that all mean "known
+    per configuration" (nav2's bringup: 3,792 per server)."""
+    terms = [branch for branch in value.branches if is_term(branch[1])]
+    if len(terms) < 2:
+        return value
+    where = terms[0][0]
+    for condition, _term in terms[1:]:
+        where |= condition
+    merged = GivenUp(text, display, [Choice(tuple(terms), value.false)], first)
+    kept = tuple(branch for branch in value.branches if not is_term(branch[1]))
+    return Choice((*kept, (where, merged)), value.false)

@@ -8,10 +8,15 @@ when a concrete configuration supplies the missing strings (HAROS-style
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+import weakref
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, cast
 
 from rosvar.logic.inputs import Input
+
+if TYPE_CHECKING:
+    from rosvar.workspace import Workspace
 
 
 class TermError(Exception):
@@ -26,21 +31,30 @@ class TermError(Exception):
 class Hole:
     """The concrete string of an input (known only once a configuration is given).
 
-    Immutable (never assign to a term's attributes). A plain class with slots rather
-    than a frozen dataclass, whose construction sets each field through
-    ``object.__setattr__``: terms are built in every includer's walk. The hash is
-    computed once, as :class:`Apply`'s: holes are operands of cached function
-    applications and keys of predicate atoms.
+    Immutable (never assign to a term's attributes) and hash-consed as :class:`Apply`:
+    ``Hole(input)`` of an input that has a hole alive is that hole.
     """
 
-    __slots__ = ("_hash", "input")
+    __slots__ = ("__weakref__", "_hash", "input")
 
-    def __init__(self, input: Input) -> None:
+    input: Input
+    _hash: int
+
+    def __new__(cls, input: Input) -> Hole:
+        known = _known(input)
+        if known is not None:
+            return cast("Hole", known)
+        self = object.__new__(cls)
         self.input = input
         self._hash = hash(input)
+        _intern(input, self)
+        return self
+
+    def __reduce__(self) -> tuple[type[Hole], tuple[Input]]:
+        return Hole, (self.input,)  # unpickled through the table
 
     def __eq__(self, other: object) -> bool:
-        return other.__class__ is Hole and self.input == other.input
+        return other is self or (other.__class__ is Hole and self.input == other.input)
 
     def __hash__(self) -> int:
         return self._hash
@@ -56,22 +70,50 @@ class Apply:
     """``function(*operands)`` where some operand is a term.
 
     ``function`` names an entry of :data:`FUNCTIONS`; ``display`` is how people see it.
-    Immutable, with slots, as :class:`Hole`. The hash is computed once: terms are
-    dictionary keys on hot paths and nest deeply; so is the text, on first use: the
-    ``analyze`` JSON shows the same terms in every file that includes theirs.
+    Immutable, with slots, and hash-consed: ``Apply(...)`` of a function, operands and
+    display that a term alive already has is that term (:func:`_intern`), so that terms
+    built again in every includer's walk are one object, a dictionary finds them by
+    identity instead of comparing them level by level, and what a term caches (its hash,
+    its text, its :func:`measure`) is computed once. Equality stays structural where two
+    equal terms are apart (a term unpickled, a subclass). The text is made on first use:
+    the ``analyze`` JSON shows the same terms in every file that includes theirs.
     """
 
-    __slots__ = ("_hash", "_text", "display", "function", "operands")
+    __slots__ = ("__weakref__", "_hash", "_measure", "_text", "display", "function", "operands")
 
-    def __init__(self, function: str, operands: tuple[Operand, ...], display: str = "") -> None:
+    function: str
+    operands: tuple[Operand, ...]
+    display: str
+    _hash: int
+    _text: str | None
+    _measure: tuple[int, int] | None
+
+    def __new__(cls, function: str, operands: tuple[Operand, ...], display: str = "") -> Apply:
+        key = (function, operands, display)
+        known = _known(key)
+        if known is not None:
+            return cast("Apply", known)
+        self = cls._made(function, operands, display)
+        _intern(key, self)
+        return self
+
+    @classmethod
+    def _made(cls, function: str, operands: tuple[Operand, ...], display: str) -> Apply:
+        """A new term, not looked up (a subclass whose terms are equal only to themselves)."""
+        self = object.__new__(cls)
         self.function = function
         self.operands = operands
         self.display = display
         self._hash = hash((function, operands, display))
-        self._text: str | None = None
+        self._text = None
+        self._measure = None
+        return self
+
+    def __reduce__(self) -> tuple[type[Apply], tuple[str, tuple[Operand, ...], str]]:
+        return Apply, (self.function, self.operands, self.display)  # through the table
 
     def __eq__(self, other: object) -> bool:
-        return (
+        return other is self or (
             other.__class__ is Apply
             and self._hash == other._hash
             and self.function == other.function
@@ -116,6 +158,49 @@ class Apply:
 Term = Hole | Apply
 Operand = str | Term | tuple[str, ...]
 
+_INTERNED: dict[object, weakref.KeyedRef[object, Hole | Apply]] = {}
+"""Every term alive, by what makes it (an input; a function, operands and display): weak,
+so a term no value holds any more is freed as before and leaves the table."""
+
+
+def _known(key: object) -> Hole | Apply | None:
+    ref = _INTERNED.get(key)
+    return None if ref is None else ref()
+
+
+def _intern(key: object, term: Hole | Apply) -> None:
+    _INTERNED[key] = weakref.KeyedRef(term, _forget, key)
+
+
+def _forget(ref: weakref.KeyedRef[object, Hole | Apply]) -> None:
+    """A term was freed: its entry goes, unless the key was made again since."""
+    if _INTERNED.get(ref.key) is ref:
+        del _INTERNED[ref.key]
+
+
+def measure(term: Term) -> tuple[int, int]:
+    """The characters and nesting of ``term``'s text (shared operands counted each time, as
+    showing or evaluating it would), computed once per term."""
+    if isinstance(term, Hole):
+        return len(str(term)), 0
+    if term._measure is None:
+        term._measure = measure_parts(term.operands)
+    return term._measure
+
+
+def measure_parts(parts: Iterable[object]) -> tuple[int, int]:
+    """Characters and nesting of a concatenation of ``parts`` (tuples are not text)."""
+    size, depth = 0, 0
+    for part in parts:
+        if isinstance(part, str):
+            size += len(part)
+        elif isinstance(part, Hole | Apply):
+            part_size, part_depth = measure(part)
+            size += part_size
+            depth = max(depth, part_depth + 1)
+    return size, depth
+
+
 TermFunction = Callable[..., str]
 FUNCTIONS: dict[str, TermFunction] = {"concat": lambda _host, *parts: "".join(parts)}
 
@@ -123,9 +208,11 @@ FUNCTIONS: dict[str, TermFunction] = {"concat": lambda _host, *parts: "".join(pa
 @dataclass(frozen=True)
 class PackageTable:
     """Package name → path: the host a term's functions get outside an interpretation (a
-    dialect's ``$(find)`` terms read it)."""
+    dialect's ``$(find)`` terms read it); ``workspace``, where the host has it, for what
+    else a term reads (an install prefix, a file through the workspace's gate)."""
 
     paths: dict[str, str]
+    workspace: Workspace | None = field(default=None, kw_only=True)
 
 
 def register(name: str, function: TermFunction) -> None:

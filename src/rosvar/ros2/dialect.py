@@ -20,7 +20,7 @@ from rosvar.ros2.context import Context
 from rosvar.ros2.entry import walk_entry
 from rosvar.ros2.frontends import registry
 from rosvar.ros2.nodes import ROS2_NODES
-from rosvar.ros2.resolve import node_fields, resolve
+from rosvar.ros2.resolve import ROS2_CHECKS, node_fields, resolve
 from rosvar.ros2.substitutions import Ros2Substituter
 
 ROS2: Semantics[Context] = Semantics(
@@ -31,6 +31,7 @@ ROS2: Semantics[Context] = Semantics(
     ROS2_NODES,
     resolve,
     node_fields,
+    ROS2_CHECKS,
     bind=registry.workspace_loader,
 )
 

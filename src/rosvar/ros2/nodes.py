@@ -24,6 +24,11 @@ class ProcessKind(StrEnum):
     COMPOSABLE_NODE = "composable_node"
 
 
+NAMES_CHECKED = frozenset({ProcessKind.NODE, ProcessKind.LIFECYCLE_NODE, ProcessKind.CONTAINER})
+"""What launch_ros's ``Node`` starts, which checks its name and namespace before it does (a
+composable node's are its container's to check, a process has none)."""
+
+
 def _texts(values: Sequence[Raw | None]) -> list[str | None] | None:
     """The values when all are known (strings or absent)."""
     texts = [value for value in values if value is None or isinstance(value, str)]

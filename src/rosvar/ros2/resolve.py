@@ -16,7 +16,7 @@ from collections.abc import Mapping, Sequence
 import yaml
 
 from rosvar import bounded_yaml
-from rosvar.diagnostics import Diagnostic, Severity, leaves_unknown
+from rosvar.diagnostics import Diagnostic, Location, Severity, leaves_unknown
 from rosvar.files import Confinement, read_file
 from rosvar.interpreter import resolution
 from rosvar.interpreter.model import (
@@ -27,9 +27,16 @@ from rosvar.interpreter.model import (
     NodeParameter,
     Raw,
 )
-from rosvar.interpreter.resolution import Resolution, ResolutionError, ResolvedNode, Restriction
+from rosvar.interpreter.resolution import (
+    Checks,
+    Resolution,
+    ResolutionError,
+    ResolvedNode,
+    Restriction,
+)
 from rosvar.ros2.api.event_handlers import EVENT_HANDLERS
 from rosvar.ros2.conventions import command_line
+from rosvar.ros2.conventions.names import node_problem
 from rosvar.ros2.conventions.namespaces import unnamed
 from rosvar.ros2.conventions.parameters import (
     ALL_NODES,
@@ -39,7 +46,7 @@ from rosvar.ros2.conventions.parameters import (
     file_entries,
     typed,
 )
-from rosvar.ros2.nodes import ProcessKind
+from rosvar.ros2.nodes import NAMES_CHECKED, ROS2_NODES, ProcessKind
 
 UNINTERPRETED = frozenset({"nesting-too-deep"})
 """Diagnostics of parts the walk left out (a limit): no configuration can be told without them."""
@@ -148,6 +155,7 @@ def _node(decl: NodeDecl, r: Restriction, warnings: list[Diagnostic]) -> Resolve
     ros_args = text("ros_args")
     if ros_args is not None:
         argv += ["--ros-args", *shlex.split(ros_args)]
+    check_node({key: text(key) for key in CHECKED}, decl.location)
     given = command_line.parse(argv)  # before launch_ros's own --ros-args section
     name = given.name or read(schema.name)
     namespace = given.namespace if given.namespace is not None else read(schema.namespace)
@@ -331,3 +339,31 @@ def node_fields(
         "parameters": effective(fqn, sources),
         "trigger": node.trigger,
     }
+
+
+CHECKED = ("kind", *ROS2_NODES.name.keys, *ROS2_NODES.namespace.keys)
+"""The fields :func:`check_node` reads."""
+
+
+def check_node(text: Mapping[str, str | None], location: Location) -> dict[str, object]:
+    """launch_ros's checks of a node's strings: its name and its namespace (the pushed one
+    prefixed) valid names, or the launch stops (``node-invalid``)."""
+    if text.get("kind") in NAMES_CHECKED:
+        name, namespace = ROS2_NODES.name.text(text), ROS2_NODES.namespace.text(text)
+        problem = node_problem(name, namespace)
+        if problem is not None:
+            raise ResolutionError("node-invalid", problem, location)
+    return {}
+
+
+def _no_test(_text: Mapping[str, str | None], _location: Location) -> dict[str, object]:
+    """ROS 2 has no ``<test>`` (launch_testing's tests are processes)."""
+    return {}
+
+
+def _remap_unchecked(_source: str | None, _target: str | None, _location: Location) -> None:
+    """launch_ros hands a remap's names to the node unchecked."""
+
+
+ROS2_CHECKS = Checks(node=check_node, test=_no_test, remap=_remap_unchecked)
+"""launch_ros's checks of a node's strings, for the typed texts of the configuration graph."""

@@ -16,6 +16,7 @@ from rosvar.memo import Memo
 from rosvar.ros.version import RosVersion
 from rosvar.ros2.api.actions import ACTIONS
 from rosvar.ros2.context import Context
+from rosvar.ros2.frontends.python.shared_remaps import SHARED
 from rosvar.workspace.launch_files import LaunchFormat, format_of
 
 ATTRIBUTES: dict[str, frozenset[str]] = {
@@ -26,9 +27,13 @@ PYTHON_ATTRIBUTES = ATTRIBUTES | {
     name: action.attributes for action in ACTIONS for name in action.names if action.python_only
 }
 """What the Python frontend's elements may be (``LifecycleNode`` has no XML or YAML tag)."""
-PYTHON_CHILD_ATTRIBUTES = ATTRIBUTES | {"param": ATTRIBUTES["param"] | {"content"}}
+PYTHON_CHILD_ATTRIBUTES = ATTRIBUTES | {
+    "param": ATTRIBUTES["param"] | {"content"},
+    "remap": ATTRIBUTES["remap"] | {SHARED},
+}
 """What the Python frontend's inner elements may hold: a parameter file its Python writes
-is a ``<param>`` with its text (``content``, :mod:`rosvar.ros2.frontends.python.written`)."""
+is a ``<param>`` with its text (``content``, :mod:`rosvar.ros2.frontends.python.written`);
+a remap the file gives to several nodes is marked so (:mod:`.frontends.python.shared_remaps`)."""
 ALWAYS = frozenset({"if", "unless"})
 CONTAINERS = frozenset(name for action in ACTIONS if action.holds_actions for name in action.names)
 

@@ -44,7 +44,16 @@ from rosvar.interpreter.substitution_args import (
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail, combine_bind, crossed, ite
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.terms import Apply, Hole, TermError, TermFunction, concat, register
+from rosvar.logic.given_up import terms_merged
+from rosvar.logic.terms import (
+    Apply,
+    Hole,
+    PackageTable,
+    TermError,
+    TermFunction,
+    concat,
+    register,
+)
 from rosvar.memo import Memo
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS
 from rosvar.ros2.api.unmodelled import UNMODELLED
@@ -61,6 +70,7 @@ from rosvar.ros2.frontends.python.text import (
     WRITTEN_FILE,
 )
 from rosvar.ros2.nodes import ROS2_NODES
+from rosvar.workspace import Workspace
 
 Value = Raw | Fail
 UNSUPPORTED = "substitution-unsupported"
@@ -235,9 +245,16 @@ EMPTY_ARGUMENT: dict[str, str] = {}
 grammar gives it as an empty list, which some substitutions turn into text (``[]``)."""
 
 
-def substitution(name: str) -> Callable[[Handler], Handler]:
+MERGED_TERMS: dict[str, str] = {}
+"""Substitutions whose values not known yet are one value (the display given), which a
+configuration computes (:func:`~rosvar.logic.given_up.terms_merged`): values nothing reads
+before they are concrete, such as a whole file."""
+
+
+def substitution(name: str, merged_terms: str | None = None) -> Callable[[Handler], Handler]:
     """Register the handler of ``$(name ...)``; it gets the arguments' texts. A name the
-    launch API's registry does not know, or a second handler, is refused."""
+    launch API's registry does not know, or a second handler, is refused. ``merged_terms``:
+    the display of the one value its terms make (:data:`MERGED_TERMS`)."""
     if name not in SUBSTITUTIONS.by_name and name not in OWN:
         raise ValueError(f"$({name}) is no substitution of the launch API's registry")
     if name in HANDLERS:
@@ -245,6 +262,8 @@ def substitution(name: str) -> Callable[[Handler], Handler]:
 
     def register(handler: Handler) -> Handler:
         HANDLERS[name] = handler
+        if merged_terms is not None:
+            MERGED_TERMS[name] = merged_terms
         return handler
 
     return register
@@ -435,7 +454,9 @@ class Ros2Substituter:
         again = None if computation is None else functools.partial(_computed, computation)
         if not self.budget.affordable(text, arguments):
             return self.budget.given_up(text, arguments, again)
-        return combine_bind(arguments, lambda leaves: _call(handler, self.host, context, leaves))
+        value = combine_bind(arguments, lambda leaves: _call(handler, self.host, context, leaves))
+        merged = MERGED_TERMS.get(part.name)
+        return value if merged is None else terms_merged(value, text, f"⟨{merged}⟩")
 
     def _condition(
         self, template: Template, parts: list[Choice[Value]], text: str
@@ -570,11 +591,22 @@ def _call(
 
 
 def _quoted(leaves: Sequence[Raw]) -> list[Raw]:
-    """Command-line words joined by spaces, each quoted (a term, an unknown value, not)."""
+    """Command-line words joined by spaces, each quoted: a word known only in a
+    configuration (a term) is quoted there, when its text is (:data:`SHELL_WORD`), and
+    shown as it is."""
     words: list[Raw] = []
     for leaf in leaves:
-        words += [" ", shlex.quote(leaf) if isinstance(leaf, str) else leaf]
+        word = shlex.quote(leaf) if isinstance(leaf, str) else Apply(SHELL_WORD, (leaf,), str(leaf))
+        words += [" ", word]
     return words[1:]
+
+
+SHELL_WORD = "rosvar-shell-word"
+"""The term of a command-line word known only in a configuration: its text quoted as
+:func:`shlex.quote` quotes a known word, so that a value with spaces, even one given up
+(:mod:`rosvar.logic.given_up`), stays one word when the command line is split."""
+
+register(SHELL_WORD, lambda _host, word: shlex.quote(word))
 
 
 def _fail(host: Interpretation[Context], message: str, code: str) -> Choice[Value]:
@@ -625,47 +657,75 @@ def _env(host: Interpretation[Context], context: Context, args: list[Raw]) -> Ch
     return value.map(pick)
 
 
-def _package(
-    host: Interpretation[Context], args: list[Raw], what: str, prefix: bool = False
-) -> Choice[Value]:
-    if len(args) != 1 or not isinstance(args[0], str):
-        return _fail(host, f"$({what}) takes one argument", "substitution-invalid")
-    path = _prefix(host, args[0]) if prefix else host.find_package(args[0])
-    if path is None:
-        return _fail(host, f"package '{args[0]}' not found", "package-not-found")
-    return Choice.const(host.space, path)
+WorkspaceComputation = Callable[["Workspace", list[str]], str | Fail]
+"""A substitution's value from its arguments' texts and the workspace (a package's folder,
+a file's text)."""
 
 
-def _prefix(host: Interpretation[Context], package: str) -> str | None:
+def _of_workspace(name: str, arity: int, usage: str) -> Callable[[WorkspaceComputation], None]:
+    """Register ``$(name ...)``, of ``arity`` arguments, computed from the workspace: with
+    an argument known only in a configuration (an argument's value, one given up: a term)
+    it is a term that the configuration's resolution computes the same way."""
+    term = f"rosvar-{name}"
+
+    def register_computation(compute: WorkspaceComputation) -> None:
+        def handler(
+            host: Interpretation[Context], context: Context, args: list[Raw]
+        ) -> Choice[Value]:
+            if len(args) != arity:
+                return _fail(host, f"$({name}) takes {usage}", "substitution-invalid")
+            known = [arg for arg in args if isinstance(arg, str)]
+            if len(known) < arity:
+                shown = " ".join(str(arg) for arg in args)
+                return Choice.const(host.space, Apply(term, tuple(args), f"$({name} {shown})"))
+            return Choice.const(host.space, compute(host.workspace, known))
+
+        def evaluated(host: object, *args: str) -> str:
+            workspace = host.workspace if isinstance(host, PackageTable) else None
+            if workspace is None:
+                raise TermError(f"$({name}) is not known without the workspace")
+            value = compute(workspace, list(args))
+            if isinstance(value, Fail):
+                raise TermError(value.message, value.code)
+            return value
+
+        substitution(name)(handler)
+        register(term, evaluated)
+
+    return register_computation
+
+
+def _not_found(package: str) -> Fail:
+    return Fail(f"package '{package}' not found", "package-not-found")
+
+
+@_of_workspace("find-pkg-share", 1, "one argument")
+def _find_share(workspace: Workspace, args: list[str]) -> str | Fail:
+    """The package's share folder: a source package's own folder stands for it."""
+    return workspace.find(args[0]) or _not_found(args[0])
+
+
+@_of_workspace("find-pkg-prefix", 1, "one argument")
+def _find_prefix(workspace: Workspace, args: list[str]) -> str | Fail:
+    return _prefix(workspace, args[0]) or _not_found(args[0])
+
+
+def _prefix(workspace: Workspace, package: str) -> str | None:
     """An installed package's install prefix; a source package's folder stands for it, as for
     its share folder (its ``lib/`` is what ``colcon build`` would install)."""
-    return host.workspace.find_prefix(package) or host.find_package(package)
+    return workspace.find_prefix(package) or workspace.find(package)
 
 
-@substitution("find-pkg-share")
-def _find_share(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
-    return _package(host, args, "find-pkg-share")  # the source folder stands for the share
-
-
-@substitution("find-pkg-prefix")
-def _find_prefix(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
-    return _package(host, args, "find-pkg-prefix", prefix=True)
-
-
-@substitution("exec-in-pkg")
-def _exec_in_pkg(host: Interpretation[Context], context: Context, args: list[Raw]) -> Choice[Value]:
+@_of_workspace("exec-in-pkg", 2, "an executable and a package")
+def _exec_in_pkg(workspace: Workspace, args: list[str]) -> str | Fail:
     """``lib/PACKAGE/EXECUTABLE`` below the package's prefix: launch also checks that the
     built executable is there, which a source workspace cannot show, so that is left to
     the install."""
-    if len(args) != 2 or not all(isinstance(arg, str) for arg in args):
-        return _fail(
-            host, "$(exec-in-pkg) takes an executable and a package", "substitution-invalid"
-        )
-    executable, package = str(args[0]), str(args[1])
-    prefix = _prefix(host, package)
+    executable, package = args
+    prefix = _prefix(workspace, package)
     if prefix is None:
-        return _fail(host, f"package '{package}' not found", "package-not-found")
-    return Choice.const(host.space, posixpath.join(prefix, "lib", package, executable))
+        return _not_found(package)
+    return posixpath.join(prefix, "lib", package, executable)
 
 
 @substitution("dirname")
@@ -678,32 +738,22 @@ def _filename(host: Interpretation[Context], context: Context, args: list[Raw]) 
     return Choice.const(host.space, os.path.abspath(context.filename))
 
 
-@substitution("file-content")
-def _file_content(
-    host: Interpretation[Context], context: Context, args: list[Raw]
-) -> Choice[Value]:
+@_of_workspace("file-content", 1, "a path")
+def _file_content(workspace: Workspace, args: list[str]) -> str | Fail:
     """The text of the file, read through the workspace's gate (launch reads it when the
     substitution is performed; a file outside the workspace is refused, never opened)."""
-    if len(args) != 1:
-        return _fail(host, "$(file-content) takes a path", "substitution-invalid")
     path = args[0]
-    if not isinstance(path, str):
-        return _fail(host, "$(file-content) of a path that is not known", "value-unknown")
     if not os.path.isabs(path):
-        return _fail(
-            host,
+        return Fail(
             f"$(file-content {path}): a relative path reads the launching directory, not known",
             UNSUPPORTED,
         )
     try:
-        text = read_file(path, host.workspace.confinement()).decode()
+        return read_file(path, workspace.confinement()).decode()
     except FileRefused as error:
-        return _fail(host, f"$(file-content {path}): {error}", error.code)
+        return Fail(f"$(file-content {path}): {error}", error.code)
     except (OSError, UnicodeDecodeError) as error:
-        return _fail(
-            host, f"$(file-content {path}): file not readable: {error}", FileCode.UNREADABLE
-        )
-    return Choice.const(host.space, text)
+        return Fail(f"$(file-content {path}): file not readable: {error}", FileCode.UNREADABLE)
 
 
 @substitution("command")
@@ -734,13 +784,26 @@ def _find_exec(host: Interpretation[Context], context: Context, args: list[Raw])
 
 @computed(PATH_JOIN)
 def _path_join(args: list[Raw]) -> Value:
-    """``PathJoinSubstitution`` (the Python frontend's): ``os.path.join`` of the values."""
-    if all(isinstance(arg, str) for arg in args):
-        return posixpath.join(*args)  # type: ignore[arg-type]
-    parts: list[Raw] = []
-    for arg in args:  # an unknown value: joined as if relative, with no trailing '/'
-        parts += ["/", arg]
-    return concat(parts[1:])
+    """``PathJoinSubstitution`` (the Python frontend's): ``os.path.join`` of the values.
+    With a value known only in a configuration (an argument's, one given up: a term), the
+    join is a term that a configuration computes: the term may be absolute (replacing
+    what is before it), end in ``/`` or be empty. The values before the last absolute
+    known one never count, and adjacent known ones are joined now."""
+    last = max(
+        (i for i, arg in enumerate(args) if isinstance(arg, str) and arg[:1] == "/"), default=0
+    )
+    operands: list[Raw] = []
+    for arg in args[last:]:
+        if isinstance(arg, str) and operands and isinstance(operands[-1], str):
+            operands[-1] = posixpath.join(operands[-1], arg)
+        else:
+            operands.append(arg)
+    if len(operands) == 1:
+        return operands[0]
+    return Apply(PATH_JOIN, tuple(operands)) if operands else ""
+
+
+register(PATH_JOIN, lambda _host, *paths: posixpath.join(*paths))
 
 
 @computed(PYTHON_STRING)

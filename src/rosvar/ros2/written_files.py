@@ -27,7 +27,7 @@ from rosvar.ros2.substitutions import Value, substitution
 from rosvar.workspace import Workspace
 
 
-@substitution(WRITTEN_FILE)
+@substitution(WRITTEN_FILE, merged_terms="a file written")
 def _written_file(
     host: Interpretation[Context], context: Context, args: list[Raw]
 ) -> Choice[Value]:

@@ -1201,6 +1201,155 @@ def generate_launch_description():
         },
         [{}, {"a": "/y", "b": "r"}, {"a": "z/", "b": "/q"}],
     ),
+    "command-line-words-with-spaces": (  # each word one argument, even given up
+        {
+            "main.launch.xml": """<launch>
+<arg name="a" default="x y"><choice value="x y"/><choice value="p"/><choice value="q"/></arg>
+<arg name="b" default="1"><choice value="1"/><choice value="2 3"/><choice value="4"/></arg>
+<node pkg="pkg" exec="n" name="n" args="--f $(var a)$(var b) tail"/>
+<executable cmd="echo $(var a)$(var b) z" name="e"/>
+</launch>""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, ExecuteProcess
+from launch.substitutions import LaunchConfiguration as V
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('a', default_value='x y', choices=['x y', 'p', 'q']),
+        DeclareLaunchArgument('b', default_value='1', choices=['1', '2 3', '4']),
+        Node(package='pkg', executable='n', name='n',
+             arguments=['--f', [V('a'), V('b')], 'tail', [V('b'), ' end']]),
+        ExecuteProcess(cmd=['echo', [V('a'), V('b')], 'z'], name='e'),
+    ])
+""",
+        },
+        [{}, {"a": "p", "b": "2 3"}, {"a": "q", "b": "4"}],
+    ),
+    "path-joins-of-joined-values": (  # a value given up may be absolute, end in '/'
+        {
+            "main.launch.py": """import os
+
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration as V, PathJoinSubstitution, PythonExpression
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def setup(context):
+    ab = context.launch_configurations['a'] + context.launch_configurations['b']
+    return [Node(package='pkg', executable='m', name='m',
+                 parameters=[{'o': os.path.join(get_package_share_directory('pkg'), 'c', ab)}])]
+
+
+def generate_launch_description():
+    ab = PythonExpression(["'", V('a'), "' + '", V('b'), "'"])
+    return LaunchDescription([
+        DeclareLaunchArgument('a', default_value='/y', choices=['/y', 'x', 'z/']),
+        DeclareLaunchArgument('b', default_value='p', choices=['p', 'q/', 'r']),
+        Node(package='pkg', executable='n', name='n',
+             parameters=[{'j': PathJoinSubstitution(['base', ab, 'f.yaml']),
+                          'k': PathJoinSubstitution([FindPackageShare('pkg'), ab]),
+                          'l': PathJoinSubstitution([ab, '/abs', 'g'])}]),
+        OpaqueFunction(function=setup),
+    ])
+""",
+        },
+        [{}, {"a": "x", "b": "q/"}, {"a": "z/", "b": "r"}],
+    ),
+    "workspace-substitutions-of-joined-values": (  # packages and files named by a value
+        {
+            "main.launch.xml": """<launch>
+<arg name="a" default="f"><choice value="f"/><choice value="g"/><choice value="h"/></arg>
+<arg name="b" default="1"><choice value="1"/><choice value="2"/><choice value="3"/></arg>
+<node pkg="pkg" exec="n" name="n" args="$(exec-in-pkg $(var a)$(var b) pkg)">
+  <param name="c" value="$(file-content $(dirname)/$(var a)$(var b).txt)"/>
+  <param name="s" value="$(find-pkg-share $(var a)$(var b))"/>
+  <param name="p" value="$(find-pkg-prefix $(var a)$(var b))"/>
+</node>
+</launch>""",
+            **{f"{name}.txt": f"content of {name}" for name in ("f1", "g3")},
+            **{
+                f"../{name}/package.xml": PACKAGE_XML.replace("<name>pkg", f"<name>{name}")
+                for name in ("f1", "g3")
+            },
+        },
+        [{}, {"a": "g", "b": "3"}, {"a": "h", "b": "2"}],
+    ),
+    "namespaces-pushed-from-values": (  # also values no file names (configure's typed ones)
+        {
+            "main.launch.xml": """<launch>
+<arg name="ns" default="a"/>
+<group><push-ros-namespace namespace="outer"/>
+  <group><push-ros-namespace namespace="$(var ns)"/><node pkg="pkg" exec="n" name="n"/></group>
+</group>
+</launch>""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node, PushROSNamespace
+
+
+def setup(context):
+    actions = []
+    for ns in LaunchConfiguration('names').perform(context).split(','):
+        actions.append(GroupAction([
+            PushROSNamespace(ns),
+            Node(package='pkg', executable='n', name='n'),
+        ]))
+    return actions
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('ns', default_value='a'),
+        DeclareLaunchArgument('names', default_value='a,b'),
+        GroupAction([PushROSNamespace('outer'), OpaqueFunction(function=setup)]),
+        GroupAction([PushROSNamespace(LaunchConfiguration('ns')),
+                     Node(package='pkg', executable='m', name='m')]),
+    ])
+""",
+        },
+        [{}, {"ns": "x", "names": "x"}, {"ns": "/abs/", "names": "p,/q,r/s"}],
+    ),
+    "names-launch-ros-refuses": (  # rmw's rules, checked before a node starts or a push
+        {
+            "main.launch.xml": """<launch>
+<arg name="n" default="talker"><choice value="talker"/><choice value="a/b"/></arg>
+<arg name="ns" default="x"><choice value="x"/><choice value="9x"/><choice value="a/"/></arg>
+<arg name="p" default="p"><choice value="p"/><choice value="p q"/></arg>
+<arg name="free" default="ok"/>
+<group><push-ros-namespace namespace="$(var p)"/>
+  <node pkg="pkg" exec="n" name="$(var n)" namespace="$(var ns)"/>
+  <node pkg="pkg" exec="n" name="$(var free)"/>
+</group>
+<executable cmd="echo" name="$(var n)"/>
+</launch>""",
+            "main.launch.py": """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction
+from launch.substitutions import LaunchConfiguration as V
+from launch_ros.actions import Node, PushROSNamespace
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('n', default_value='talker', choices=['talker', 'a/b']),
+        DeclareLaunchArgument('ns', default_value='x', choices=['x', '9x', 'a/']),
+        DeclareLaunchArgument('p', default_value='p', choices=['p', 'p q']),
+        DeclareLaunchArgument('free', default_value='ok'),
+        GroupAction([
+            PushROSNamespace(V('p')),
+            Node(package='pkg', executable='n', name=V('n'), namespace=V('ns')),
+            Node(package='pkg', executable='n', name=V('free')),
+        ]),
+    ])
+""",
+        },
+        [{}, {"n": "a/b"}, {"ns": "9x"}, {"ns": "a/"}, {"p": "p q"}, {"free": "o k"}],
+    ),
 }
 
 

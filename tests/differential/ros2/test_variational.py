@@ -75,16 +75,40 @@ def test_fixture_restricted_matches_the_oracle(case: str, tmp_path: Path) -> Non
 
 
 @pytest.mark.parametrize(
-    "case", ["conditions-over-the-work-limits-once-bound", "python-path-join-of-choices"]
+    "case",
+    [
+        "conditions-over-the-work-limits-once-bound",
+        "python-path-join-of-choices",
+        "command-line-words-with-spaces",
+        "path-joins-of-joined-values",
+        "workspace-substitutions-of-joined-values",
+    ],
 )
 def test_values_given_up_are_computed_in_each_configuration(
     case: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """With one text's combinations bounded to 4, the model gives up these fixtures' joined
-    texts, ``$(eval)``s and path joins (each of several arguments of three values); one
-    configuration computes each again from the values that hold there, as the oracle."""
+    texts, ``$(eval)``s, path joins and command-line words (each of several arguments of three
+    values); one configuration computes each again from the values that hold there, as the
+    oracle."""
     monkeypatch.setattr(substitution_args, "MAX_COMBINATIONS", 4)
     test_fixture_restricted_matches_the_oracle(case, tmp_path)
+
+
+@pytest.mark.parametrize(
+    "case",
+    ["namespaces-pushed-from-values", "command-line-words-with-spaces", "names-launch-ros-refuses"],
+)
+def test_values_no_file_names_are_computed_in_each_configuration(case: str, tmp_path: Path) -> None:
+    """Values outside every domain (the ``<other>`` value a text typed in ``rosvar
+    configure`` takes) are terms of the model, pushed namespaces and command-line words
+    included; one configuration computes them, as the oracle."""
+    files, given = CASES[case]
+    package = _workspace(tmp_path, files)
+    analysis = Analysis(discover([str(package.parent)]))
+    for main in entries(package):
+        for arguments in given:
+            check(analysis, main, arguments, package.parent, strict=True)
 
 
 @pytest.mark.parametrize("suffix", [".launch.xml", ".launch.yaml", ".launch.py"])

@@ -47,9 +47,10 @@ _TERMS = (Hole, Apply)  # a union type written inline is built anew at every cal
 
 GRAPH_FIELDS = (
     *("name", "namespace", "pkg", "type", "args", "machine"),
-    *("exec", "plugin", "container"),
+    *("exec", "plugin", "container", "ros_namespace"),
 )
-"""A node's fields that shape the graph: ROS 1's, then those only a ROS 2 node has."""
+"""A node's fields that shape the graph: ROS 1's, then those only a ROS 2 node has (its
+pushed namespace is a field of its own: ROS 1's ``namespace`` holds its group's)."""
 
 
 def graph_inputs(model: LaunchModel) -> set[ArgInput]:

@@ -44,7 +44,7 @@ from collections.abc import Callable
 from typing import TypeVar
 
 from rosvar.interpreter.safe_eval.checking import _checked
-from rosvar.interpreter.safe_eval.errors import EvalFailed, EvalRefused
+from rosvar.interpreter.safe_eval.errors import CallRefused, EvalFailed, EvalRefused
 from rosvar.interpreter.safe_eval.interpreter import _Interpreter, convert_auto
 from rosvar.interpreter.safe_eval.limits import (
     MAX_COMBINATORIC_ARGUMENT,
@@ -57,7 +57,7 @@ from rosvar.interpreter.safe_eval.limits import (
     MAX_SEQUENCE,
     MAX_WORK,
 )
-from rosvar.interpreter.safe_eval.names import EvalEnvironment
+from rosvar.interpreter.safe_eval.names import EvalEnvironment, allowed_calls
 
 _T = TypeVar("_T")
 
@@ -134,7 +134,11 @@ def evaluate_value(expr: str, env: EvalEnvironment) -> object:
 def _evaluated(
     expr: str, env: EvalEnvironment, run: Callable[[_Interpreter, ast.Expression], _T]
 ) -> _T:
-    tree, source, _analysis = _checked(expr, frozenset(env.namespaces))
+    try:
+        tree, source, _analysis = _checked(expr, frozenset(env.namespaces))
+    except CallRefused as refused:  # told in the words of what this environment allows
+        message = f"calling '{refused.name}' is not allowed (only {allowed_calls(env)})"
+        raise EvalRefused(message, refused.col) from None
     interpreter = _Interpreter(env, source)
     try:
         return run(interpreter, tree)

@@ -10,7 +10,7 @@ import warnings
 from typing import Final, NoReturn, cast
 
 from rosvar.arithmetic import BINARY
-from rosvar.interpreter.safe_eval.errors import EvalRefused
+from rosvar.interpreter.safe_eval.errors import CallRefused, EvalRefused
 from rosvar.interpreter.safe_eval.limits import MAX_NESTING, nesting
 from rosvar.interpreter.safe_eval.names import (
     _BOOL_NAMES,
@@ -21,6 +21,7 @@ from rosvar.interpreter.safe_eval.names import (
     _NOT_ARG_NAMES,
     _STR_METHODS,
     REFUSED_NODES,
+    ROSLAUNCH_CALLS,
 )
 
 _DUNDER_MESSAGE: Final = "$(eval ...) may not contain double underscore expressions"
@@ -195,10 +196,10 @@ class _Analyser:
             if bound is None:
                 self.names.add(func.id)
             if func.id not in _CALLABLE_NAMES:
-                self._refuse(
-                    f"calling '{func.id}' is not allowed (only whitelisted builtins, math"
-                    " functions and arg/env/optenv/find/anon/dirname)",
-                    func,
+                raise CallRefused(
+                    func.id,
+                    f"calling '{func.id}' is not allowed (only {ROSLAUNCH_CALLS})",
+                    self._source.col(func),
                 )
             if bound is None and func.id == "arg":
                 name = _literal_arg_name(node)

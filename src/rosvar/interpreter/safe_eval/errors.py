@@ -20,6 +20,15 @@ class EvalRefused(Exception):
         self.col = col
 
 
+class CallRefused(EvalRefused):
+    """A call of ``name``, which the whitelist does not hold: an evaluation says what its
+    environment allows instead (:func:`~rosvar.interpreter.safe_eval.names.allowed_calls`)."""
+
+    def __init__(self, name: str, message: str, col: int = _UNPLACED) -> None:
+        super().__init__(message, col)
+        self.name = name
+
+
 class EvalFailed(Exception):
     """The expression is allowed but fails at run time where Python/roslaunch would raise.
 

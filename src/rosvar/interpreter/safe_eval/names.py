@@ -70,6 +70,22 @@ _NOT_ARG_NAMES: Final = _HOST_FUNCTION_NAMES.union(_BOOL_NAMES, _MATH_NAMES, _BU
 _CALLABLE_NAMES: Final = _HOST_FUNCTION_NAMES.union(
     (name for name, value in _MATH_NAMES.items() if callable(value)), _BUILTIN_FUNCTIONS
 )
+ROSLAUNCH_CALLS: Final = "whitelisted builtins, math functions and arg/env/optenv/find/anon/dirname"
+"""What roslaunch's ``$(eval)`` may call, as a refusal names it."""
+
+
+def allowed_calls(env: EvalEnvironment) -> str:
+    """What an expression evaluated in ``env`` may call, as a refusal names it: roslaunch's
+    names where it has them; in a symbols environment (ROS 2's ``$(eval)`` and
+    ``PythonExpression``, xacro's ``${}``), which has none of them, the builtins rosvar
+    evaluates and math's functions."""
+    if env.symbols is None:
+        return ROSLAUNCH_CALLS
+    builtins_ = ", ".join(sorted(_BUILTIN_FUNCTIONS))
+    math_ = "as NAME or math.NAME" if "math" in env.namespaces else "as NAME"
+    return f"the builtins {builtins_} and math's functions, {math_}"
+
+
 _LITERAL_TYPES: Final = (str, int, float, bool, type(None))
 _CONVERSION_FUNCTIONS: Final = frozenset({"str", "int", "float"})
 _CASE_METHODS: Final = frozenset({"lower", "upper", "strip", "lstrip", "rstrip"})

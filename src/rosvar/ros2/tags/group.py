@@ -12,7 +12,9 @@ from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import Raw
 from rosvar.logic.choice import Choice, Fail, combine
+from rosvar.logic.terms import Apply, TermError, register
 from rosvar.ros2.context import Context, optional
+from rosvar.ros2.conventions.names import namespace_problem
 from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.ros2.dialect import tag
 from rosvar.ros2.tags.common import assign, set_configuration
@@ -77,9 +79,39 @@ def push_ros_namespace(it: Interpretation[Context], entity: Entity, context: Con
 
 
 def _push(leaves: list[Raw | None]) -> Raw | Fail:
+    """The namespace ``pushed`` under ``base``; with a value known only in a configuration
+    (an argument's, a loop's item over one, one given up: a term) a term that the
+    configuration computes (:data:`PUSHED`)."""
     base, pushed = leaves
-    if (base is not None and not isinstance(base, str)) or not isinstance(pushed, str):
+    if pushed is None:
         return Fail("the namespace depends on an unknown value", "value-unknown")
+    if isinstance(base, str | None) and isinstance(pushed, str):
+        return _pushed(base, pushed)
+    shown = make_absolute(prefix_namespace(str(base or ""), str(pushed)))
+    return Apply(PUSHED, (base or "", pushed), shown or "/")
+
+
+def _pushed(base: str | None, pushed: str) -> str | Fail:
+    """The namespace, or launch_ros's failure where it is no valid namespace."""
     result = make_absolute(prefix_namespace(base, pushed))
     assert result is not None
-    return result
+    if namespace_problem(result) is None:
+        return result
+    return Fail(
+        "The resulting namespace is invalid: "
+        f"[previous_namespace='{base}', pushed_namespace='{pushed}']",
+        "name-invalid",
+    )
+
+
+def _pushed_term(_host: object, base: str, pushed: str) -> str:
+    value = _pushed(base or None, pushed)
+    if isinstance(value, Fail):
+        raise TermError(value.message, value.code)
+    return value
+
+
+PUSHED = "rosvar-pushed-namespace"
+"""The term of a namespace pushed under another, either known only in a configuration."""
+
+register(PUSHED, _pushed_term)

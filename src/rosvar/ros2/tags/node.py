@@ -9,6 +9,8 @@ Name composition and parameter files are left to resolution, which sees one conf
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from rosvar.files import FileRefused, read_file
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.booleans import bool_value
@@ -16,9 +18,12 @@ from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import EnvSetting, NodeDecl, NodeParameter, Raw, Remap
 from rosvar.logic.choice import Choice, Fail, combine
 from rosvar.ros2.context import Context, optional
+from rosvar.ros2.conventions.names import node_problem
+from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.ros2.conventions.parameters import PARAMETER_TYPES, coerce
 from rosvar.ros2.dialect import ROS2, tag
-from rosvar.ros2.nodes import ProcessKind
+from rosvar.ros2.frontends.python.shared_remaps import SHARED
+from rosvar.ros2.nodes import NAMES_CHECKED, ProcessKind
 from rosvar.ros2.substitutions import Ros2Substituter
 
 FIELDS = (
@@ -88,6 +93,11 @@ def _declare(
             else it.attr(entity, key, context)
         )
         fields[key] = none if value is None else optional(value)
+    if kind in NAMES_CHECKED:  # what launch_ros refuses fails here, where it is known
+        fields["name"] = _checked(it, fields["name"], _name_failure, "<node> name")
+        fields["namespace"] = _checked(
+            it, fields["namespace"], _namespace_failure, "<node> namespace"
+        )
     fields["ros_namespace"] = context.namespace or none
     fields["kind"] = Choice.const(it.space, kind)
     fields["container"] = container or none
@@ -129,6 +139,32 @@ def _declare(
     return fields
 
 
+def _checked(
+    it: Interpretation[Context],
+    value: Choice[Raw | None],
+    failure: Callable[[str], Fail | None],
+    what: str,
+) -> Choice[Raw | None]:
+    """``value`` without the known texts launch_ros refuses, each an error (the same
+    choice where none is: declarations of one scope share it)."""
+    if not any(isinstance(leaf, str) and failure(leaf) for leaf in value.values()):
+        return value
+    checked = value.map(lambda leaf: (failure(leaf) or leaf) if isinstance(leaf, str) else leaf)
+    return it.strip(checked, what)
+
+
+def _name_failure(name: str) -> Fail | None:
+    problem = node_problem(name, None)
+    return None if problem is None else Fail(problem, "node-invalid")
+
+
+def _namespace_failure(own: str) -> Fail | None:
+    """An own namespace as launch_ros makes it absolute (a pushed one is checked when it is
+    pushed; an absolute own one replaces it)."""
+    problem = node_problem(None, make_absolute(prefix_namespace(None, own)))
+    return None if problem is None else Fail(problem, "node-invalid")
+
+
 def _command_line(
     it: Interpretation[Context], entity: Entity, key: str, context: Context
 ) -> Choice[Raw] | None:
@@ -143,8 +179,9 @@ def _remap(it: Interpretation[Context], entity: Entity, context: Context, out: l
     source, target = it.required(entity, "from", context), it.required(entity, "to", context)
     if source is None or target is None:
         return
+    own = None if entity.has(SHARED) else it.location  # a rule for several nodes: a group's
     for condition, (s, t) in split(it, combine([source, target], tuple)):
-        out.append(Remap(it.pc & condition, s, t, it.location))
+        out.append(Remap(it.pc & condition, s, t, own))
 
 
 def _env(

@@ -69,11 +69,14 @@ def _write_attribute(call: Call, entity: Entity, param: Param, value: Value) -> 
 
 
 def _write_command_line(call: Call, entity: Entity, param: Param, value: Value) -> None:
+    """Each item one word, as launch keeps it whatever its value: literal text quoted for
+    the shell, also between substitutions (``[V('a'), ' tail']`` is one word)."""
     words = []
     for item in _items(call, value, param.python):
         text = call.text(item)
         literal = text.literal()
-        words.append(shlex.quote(literal) if literal is not None else render(text))
+        quoted = (shlex.quote(p) if isinstance(p, str) else p for p in text.parts)
+        words.append(shlex.quote(literal) if literal is not None else render(Text(tuple(quoted))))
     entity.attributes[param.xml] = " ".join(words)
 
 
@@ -162,6 +165,8 @@ def _write_pairs(call: Call, entity: Entity, param: Param, value: Value) -> None
             child = _child(call, entity, param.xml)
             set_attribute(call, child, "from", item[0])
             set_attribute(call, child, "to", item[1])
+            if call.remaps is not None:
+                call.remaps.give(item, entity, child)
         else:
             call.not_followed(f"an item of {param.python} that is not a pair")
 

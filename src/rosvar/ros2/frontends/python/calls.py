@@ -24,6 +24,7 @@ from rosvar.ros2.api.sources import SOURCES
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS, Signature
 from rosvar.ros2.api.unmodelled import UNMODELLED
 from rosvar.ros2.frontends.python import launch_time, written
+from rosvar.ros2.frontends.python.shared_remaps import SharedRemaps
 from rosvar.ros2.frontends.python.text import (
     CONFIGURATION_EQUALS,
     EMPTY,
@@ -68,6 +69,8 @@ class Call:
     kwargs: dict[str, Value]
     location: Location
     sink: DiagnosticSink
+    remaps: SharedRemaps | None = None
+    """The file's remaps by the pair objects they are made of (actions' calls only)."""
 
     def arg(self, index: int, keyword: str, default: Value = _MISSING) -> Value:
         """The argument given by position ``index`` or by ``keyword``."""

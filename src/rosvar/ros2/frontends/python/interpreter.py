@@ -51,6 +51,7 @@ from rosvar.ros2.frontends.python.calls import (
 from rosvar.ros2.frontends.python.default_files import DefaultFiles
 from rosvar.ros2.frontends.python.launch_time import OPERATORS, performed
 from rosvar.ros2.frontends.python.modules import MAX_MODULE_BYTES, MAX_MODULES, ModulePath
+from rosvar.ros2.frontends.python.shared_remaps import SharedRemaps
 from rosvar.ros2.frontends.python.text import Sub, Text, render
 from rosvar.ros2.frontends.python.values import (
     Class,
@@ -323,6 +324,8 @@ class Interpreter:
         """What each generator being called has yielded, innermost last."""
         self.default_files = DefaultFiles()
         """Launch arguments' defaults, for the files a function opens by them."""
+        self.remaps = SharedRemaps()
+        """The remaps made of each pair object, for those the file gives several nodes."""
         """Composable node descriptions made conditional, by id: the description as written
         and the tests of its condition."""
         self.statements: dict[type[ast.stmt], Callable[[Any, Scope], None]] = {
@@ -1665,7 +1668,7 @@ class Interpreter:
                 return self.distribute(
                     args, lambda values: builtin(self, values, kwargs, node), node
                 )
-            call = Call(callee.qualified, args, kwargs, self.location(node), self.sink)
+            call = Call(callee.qualified, args, kwargs, self.location(node), self.sink, self.remaps)
             builder = CALLS.get(python_name(callee.qualified))
             if builder is not None:
                 call.args = [self.settled(arg) for arg in args]
@@ -1811,7 +1814,8 @@ class Interpreter:
         for base in _launch_bases(cls):
             builder = CALLS.get(python_name(base))
             if builder is not None:
-                made = builder(Call(cls.name, args, kwargs, self.location(node), self.sink))
+                call = Call(cls.name, args, kwargs, self.location(node), self.sink, self.remaps)
+                made = builder(call)
                 return self.guarded_action(made, node) if isinstance(made, Entity) else made
         return None
 
@@ -2735,6 +2739,7 @@ def _entry_point(interpreter: Interpreter, tree: ast.Module) -> Entity | None:
     result = interpreter.call_function(function, [], {}, function.node)
     if isinstance(result, Description):
         interpreter.step(walked(result.root, MAX_STEPS - interpreter.steps))
+        interpreter.remaps.mark(result.root)
         return result.root
     if not isinstance(result, Unknown):
         interpreter.sink.error(
