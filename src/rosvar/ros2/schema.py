@@ -14,9 +14,8 @@ from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.memo import Memo
 from rosvar.ros.version import RosVersion
-from rosvar.ros2.api.actions import ACTIONS
+from rosvar.ros2.api.actions import ACTIONS, SHARED
 from rosvar.ros2.context import Context
-from rosvar.ros2.frontends.python.shared_remaps import SHARED
 from rosvar.workspace.launch_files import LaunchFormat, format_of
 
 ATTRIBUTES: dict[str, frozenset[str]] = {

@@ -19,6 +19,10 @@ from dataclasses import dataclass
 from rosvar.ros2.api.event_handlers import EVENT_HANDLERS
 from rosvar.ros2.api.registry import Registry
 
+SHARED = "shared"
+"""The attribute of a ``<remap>`` whose pair a Python file gives to several nodes, as a group's
+remap (:mod:`rosvar.ros2.frontends.python.shared_remaps` writes it; no XML or YAML tag has it)."""
+
 
 class Slot(enum.StrEnum):
     """How one constructor argument is written into the element."""

@@ -17,12 +17,12 @@ from rosvar.interpreter.booleans import bool_value
 from rosvar.interpreter.interpretation import Interpretation, processed, split
 from rosvar.interpreter.model import EnvSetting, NodeDecl, NodeParameter, Raw, Remap
 from rosvar.logic.choice import Choice, Fail, combine
+from rosvar.ros2.api.actions import SHARED
 from rosvar.ros2.context import Context, optional
 from rosvar.ros2.conventions.names import node_problem
 from rosvar.ros2.conventions.namespaces import make_absolute, prefix_namespace
 from rosvar.ros2.conventions.parameters import PARAMETER_TYPES, coerce
 from rosvar.ros2.dialect import ROS2, tag
-from rosvar.ros2.frontends.python.shared_remaps import SHARED
 from rosvar.ros2.nodes import NAMES_CHECKED, ProcessKind
 from rosvar.ros2.substitutions import Ros2Substituter
 
@@ -147,9 +147,10 @@ def _checked(
 ) -> Choice[Raw | None]:
     """``value`` without the known texts launch_ros refuses, each an error (the same
     choice where none is: declarations of one scope share it)."""
-    if not any(isinstance(leaf, str) and failure(leaf) for leaf in value.values()):
+    failures = {leaf: failure(leaf) for leaf in value.values() if isinstance(leaf, str)}
+    if not any(failures.values()):
         return value
-    checked = value.map(lambda leaf: (failure(leaf) or leaf) if isinstance(leaf, str) else leaf)
+    checked = value.map(lambda leaf: (failures[leaf] or leaf) if isinstance(leaf, str) else leaf)
     return it.strip(checked, what)
 
 

@@ -10,8 +10,8 @@ import pytest
 from ros2.test_parameter_checks import MANIFEST
 from rosvar.frontends.entity import Entity
 from rosvar.outputs.cli import main
+from rosvar.ros2.api.actions import SHARED
 from rosvar.ros2.frontends.python.parser import parse_python_launch_bytes
-from rosvar.ros2.frontends.python.shared_remaps import SHARED
 
 SHARED_LIST = """from launch import LaunchDescription
 from launch_ros.actions import Node

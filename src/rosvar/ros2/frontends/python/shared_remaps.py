@@ -17,10 +17,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 
 from rosvar.frontends.entity import Entity
-from rosvar.ros2.api.actions import ACTIONS, Slot
+from rosvar.ros2.api.actions import ACTIONS, SHARED, Slot
 
-SHARED = "shared"
-"""The attribute of a ``<remap>`` whose pair the file gives to several nodes."""
 REMAP = "remap"
 REMAPPED = frozenset(
     name
