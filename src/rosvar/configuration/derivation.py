@@ -50,6 +50,11 @@ EXAMPLES = 64
 """Configurations found for presence judgements, kept to judge other conditions too."""
 
 
+Crossing = tuple[BDD, int, frozenset[int]]
+"""A constraint that links files, the positions of the variables it reads (as bits), and
+those files."""
+
+
 @dataclass(frozen=True)
 class Decisions:
     """The solver's view after some user literals."""
@@ -96,7 +101,7 @@ class Derivation:
             self.position[v]: n for n, f in enumerate(model.files) for v in f.variable_names()
         }
         # the constraints that leave each file, with the files they link
-        self._crossing: list[list[tuple[BDD, int, frozenset[int]]]] = [[] for _ in model.files]
+        self._crossing: list[list[Crossing]] = [[] for _ in model.files]
         # every part of the component formulas that reads a file, and its args' values
         self._parts_of: list[list[BDD]] = [solver.arg_trees(f) for f in model.files]
         self._groups = [_groups(f, self.position) for f in model.files]
@@ -117,7 +122,8 @@ class Derivation:
         self._implications: Memo[tuple[int, int], tuple[int, int]] = Memo()
         """Each distinct value of ``_necessary`` once: its integers are as wide as the
         positions (Husky + ``_external``: 15,566 values, 5,462 distinct, 600 bytes each)."""
-        self._reads: dict[frozenset[int], int] = {}  # files → what their constraints read
+        self._leaving: dict[frozenset[int], tuple[int, tuple[Crossing, ...]]] = {}
+        """Files → the constraints that link them to other files, and what those read."""
         self._broke: dict[tuple[frozenset[int], int], frozenset[int]] = {}
         self._repairs: dict[tuple[int, BDD], int | None] = {}
         self._block_of: dict[frozenset[int], int] = {}  # files → their variables' positions
@@ -425,24 +431,36 @@ class Derivation:
             if block is None:
                 block = self._block_of[files] = sum(self._blocks[file] for file in files)
             patched = witness & ~block | source & block
-            fresh = self._broken(files, patched) - files
+            fresh = self._broken(files, patched, witness ^ patched, source ^ patched)
             if not fresh:
                 return patched
             files |= fresh
             if len(files) > REPAIRED_FILES:
                 return None
 
-    def _broken(self, files: frozenset[int], patched: int) -> frozenset[int]:
-        """The files linked by the constraints leaving ``files`` that ``patched`` breaks,
-        remembered for the values of the variables they read: a step repairs many
-        witnesses the same way, which differ elsewhere."""
-        reads = self._reads.get(files)
-        if reads is None:
+    def _broken(
+        self, files: frozenset[int], patched: int, from_witness: int, from_source: int
+    ) -> frozenset[int]:
+        """The files outside ``files`` linked to them by a constraint that ``patched`` breaks,
+        remembered for the values of the variables those constraints read: a step repairs
+        many witnesses the same way, which differ elsewhere.
+
+        ``from_witness`` and ``from_source`` are the bits where ``patched`` differs from the
+        repaired witness and from its source, two valid configurations: a constraint whose
+        variables agree with either holds, unevaluated (most do, far from the copy)."""
+        leaving = self._leaving.get(files)
+        if leaving is None:
+            crossing = {
+                part[0]: part
+                for file in files
+                for part in self._crossing[file]
+                if not part[2] <= files  # within the copied blocks, it holds as in the source
+            }
             reads = 0
-            for file in files:
-                for _constraint, read, _others in self._crossing[file]:
-                    reads |= read
-            self._reads[files] = reads
+            for _constraint, read, _others in crossing.values():
+                reads |= read
+            leaving = self._leaving[files] = (reads, tuple(crossing.values()))
+        reads, constraints = leaving
         key = (files, patched & reads)
         found = self._broke.get(key)
         if found is None:
@@ -450,10 +468,12 @@ class Derivation:
                 self._broke.clear()
             found = self._broke[key] = frozenset(
                 linked
-                for file in files
-                for constraint, _read, others in self._crossing[file]
-                if not self._holds(constraint, patched)
+                for constraint, read, others in constraints
+                if from_witness & read
+                and from_source & read
+                and not self._holds(constraint, patched)
                 for linked in others
+                if linked not in files
             )
         return found
 
