@@ -553,8 +553,8 @@ class Derivation:
         """A valid configuration where ``goal`` holds, made from one of ``candidates``
         (valid ones) without the solver: the path of ``goal`` to TRUE closest to it taken
         (``_closest``), the values of the args of the files it changed made one per arg
-        again, and only the parts of the formula that read those files checked (the others
-        hold as in the candidate).
+        again, and only the parts of the formula that read the variables it changed checked
+        (the others hold as in the candidate).
 
         Variants of one element differ in the values of a few args, so a configuration
         found for one usually becomes one for the next by setting those values."""
@@ -569,11 +569,14 @@ class Derivation:
                 rest &= ~self._blocks[file]
             for file in files:
                 mutated = self._one_value_each(file, mutated, mask)
+            changed = mutated ^ witness  # a part that reads none of these holds as in it
             parts = (part for file in files for part in self._parts_of[file])
             if (
                 decisions.valid(component, mutated)
                 and self._holds(goal, mutated)
-                and all(self._holds(part, mutated) for part in parts)
+                and all(
+                    not changed & self._mask(part) or self._holds(part, mutated) for part in parts
+                )
             ):
                 return mutated
         return None
