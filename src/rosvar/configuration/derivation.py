@@ -39,7 +39,7 @@ from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.presence import Presence, PresenceVerdict
 from rosvar.configuration.sat import Sat
-from rosvar.logic.bdd import BDD, Evaluation, children_first, cofactor, cofactors, walked_support
+from rosvar.logic.bdd import BDD, children_first, cofactor, cofactors, evaluate, walked_support
 from rosvar.memo import Memo
 
 SOURCES = 4  # witnesses tried as the source of a repair
@@ -92,7 +92,6 @@ class Derivation:
         self._whole_sat: Sat | None = None
         self.variables = list(solver.variables)
         self.position = {v: i for i, v in enumerate(self.variables)}
-        self._evaluation = Evaluation(manager, self.position)
         self.components = solver.components
         self.members = [list(c.variables) for c in solver.components]
         self._masks = [sum(1 << self.position[v] for v in c.variables) for c in solver.components]
@@ -678,7 +677,8 @@ class Derivation:
 
     def _holds(self, u: BDD, witness: int) -> bool:
         """The truth of ``u`` in a witness: one path from the root down."""
-        return self._evaluation.holds(u, witness)
+        position = self.position
+        return evaluate(u, lambda name: witness >> position[name] & 1)
 
     def _mask(self, u: BDD) -> int:
         """The positions of ``u``'s support, as bits."""
