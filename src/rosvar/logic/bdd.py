@@ -234,15 +234,17 @@ def cofactor(u: BDD, values: Mapping[str, bool]) -> BDD:
 
     CUDD's restrict to the cube of ``values``, which is the cofactor when the care set is a
     cube: ``dd``'s ``let`` spends several times longer making a cube of its own, over every
-    variable of the manager.
+    variable of the manager. The cube is conjoined from its deepest literal up, each one
+    a node above the others: in any order, each conjunction rebuilt the part of the cube
+    above its literal (a decided file's hundred literals took twice as long).
     """
     if not values:
         return u
     manager = u.bdd
     cube = manager.true
-    for name, value in values.items():
+    for name in sorted(values, key=manager.level_of_var, reverse=True):
         atom = manager.var(name)
-        cube &= atom if value else ~atom
+        cube &= atom if values[name] else ~atom
     cofactored: BDD = _cudd.restrict(u, cube)
     return cofactored
 
