@@ -86,6 +86,14 @@ def test_cofactor_fixes_values_as_let_does(seed: int) -> None:
 
 
 @pytest.mark.parametrize("seed", range(10))
+def test_cube_is_dd_cube(seed: int) -> None:
+    rng = random.Random(seed)
+    manager = fresh()
+    values = {name: rng.random() < 0.5 for name in rng.sample(NAMES, rng.randint(0, 8))}
+    assert bdd.cube(manager, values) == manager.cube(values)
+
+
+@pytest.mark.parametrize("seed", range(10))
 def test_evaluate_is_let_under_a_full_assignment(seed: int) -> None:
     manager = fresh(NAMES[:6])
     u = random_formula(manager, random.Random(seed), NAMES[:6])
