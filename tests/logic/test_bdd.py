@@ -93,6 +93,18 @@ def test_cube_is_dd_cube(seed: int) -> None:
     assert bdd.cube(manager, values) == manager.cube(values)
 
 
+def test_cubes_remember_each_set_of_literals_and_cofactor_by_it() -> None:
+    rng = random.Random(4)
+    manager = fresh()
+    cubes = bdd.Cubes(manager, capacity=4)
+    for _ in range(40):
+        u = random_formula(manager, rng)
+        values = {name: rng.random() < 0.5 for name in rng.sample(NAMES[:3], rng.randint(0, 3))}
+        literals = frozenset(values.items())
+        assert cubes.cofactor(u, literals) == bdd.cofactor(u, values)
+        assert cubes.of(literals) is cubes.of(literals)  # built once while remembered
+
+
 @pytest.mark.parametrize("seed", range(10))
 def test_evaluate_is_let_under_a_full_assignment(seed: int) -> None:
     manager = fresh(NAMES[:6])

@@ -39,7 +39,16 @@ from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.presence import Presence, PresenceVerdict
 from rosvar.configuration.sat import Sat
-from rosvar.logic.bdd import BDD, children_first, cofactor, cofactors, evaluate, walked_support
+from rosvar.logic.bdd import (
+    BDD,
+    Cubes,
+    Literals,
+    children_first,
+    cofactor,
+    cofactors,
+    evaluate,
+    walked_support,
+)
 from rosvar.memo import Memo
 
 SOURCES = 4  # witnesses tried as the source of a repair
@@ -87,6 +96,7 @@ class Derivation:
     def __init__(self, model: FeatureModel) -> None:
         solver = model.solver
         self.manager = manager = solver.manager
+        self._cubes = Cubes(manager)  # of the decided literals conditions are restricted by
         self.sats = Sat.per_component(model)
         self._model = model
         self._whole_sat: Sat | None = None
@@ -291,10 +301,11 @@ class Derivation:
             if bounds.must != bounds.may:
                 support = (*support, *(v for v in self._support(bounds.must) if v not in support))
             values = {v: decisions.decided[v] for v in support if v in decisions.decided}
-            key = (bounds.must, bounds.may, frozenset(values.items()))
+            literals = frozenset(values.items())
+            key = (bounds.must, bounds.may, literals)
             restricted = self._restricted.get(key)
             if restricted is None:
-                restricted = self._restrict(bounds, values, frozenset(support).difference(values))
+                restricted = self._restrict(bounds, literals, frozenset(support).difference(values))
                 self._restricted[key] = restricted
             verdict, must, may, components = restricted
             if verdict is not None:
@@ -314,12 +325,13 @@ class Derivation:
         return verdicts
 
     def _restrict(
-        self, bounds: Bounds, values: Mapping[str, bool], open_: frozenset[str]
+        self, bounds: Bounds, literals: Literals, open_: frozenset[str]
     ) -> tuple[Presence | None, BDD, BDD, frozenset[int]]:
-        """The verdict restriction alone gives, else what the solver must judge: the
-        restricted bounds and the components of their open variables."""
-        must = cofactor(bounds.must, values)
-        may = must if bounds.may == bounds.must else cofactor(bounds.may, values)
+        """The verdict restriction by the decided ``literals`` alone gives, else what the
+        solver must judge: the restricted bounds and the components of their open
+        variables."""
+        must = self._cubes.cofactor(bounds.must, literals)
+        may = must if bounds.may == bounds.must else self._cubes.cofactor(bounds.may, literals)
         if must == self.manager.true:
             return Presence.PRESENT, must, may, frozenset()
         if may == self.manager.false:

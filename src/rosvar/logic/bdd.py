@@ -26,6 +26,8 @@ from typing import Any, NamedTuple, Protocol, cast
 
 import dd.cudd as _cudd
 
+from rosvar.memo import Memo
+
 
 class BDD(Protocol):
     """A diagram of ``dd.cudd`` (``dd.cudd.Function``) as rosvar uses it: ``dd`` ships no
@@ -240,6 +242,34 @@ def cofactor(u: BDD, values: Mapping[str, bool]) -> BDD:
         return u
     cofactored: BDD = _cudd.restrict(u, cube(u.bdd, values))
     return cofactored
+
+
+Literals = frozenset[tuple[str, bool]]
+
+
+class Cubes:
+    """The cubes of sets of literals in one manager, remembered (a bounded memo), and the
+    cofactors by them: the conditions a step of the configuration engine restricts by their
+    decided variables share a few sets of them (on Husky, 2,000 cofactors by 7 sets in one
+    click), and building the cube was most of a cofactor."""
+
+    def __init__(self, manager: Manager, capacity: int = 1024) -> None:
+        self.manager = manager
+        self._cubes: Memo[Literals, BDD] = Memo(capacity)
+
+    def of(self, literals: Literals) -> BDD:
+        """The conjunction of ``literals`` (``cube``)."""
+        found = self._cubes.get(literals)
+        if found is None:
+            found = self._cubes[literals] = cube(self.manager, dict(literals))
+        return found
+
+    def cofactor(self, u: BDD, literals: Literals) -> BDD:
+        """``u`` with the variables of ``literals`` fixed (``cofactor``)."""
+        if not literals:
+            return u
+        cofactored: BDD = _cudd.restrict(u, self.of(literals))
+        return cofactored
 
 
 def cube(manager: Manager, values: Mapping[str, bool]) -> BDD:
