@@ -217,8 +217,9 @@ def _innermost(index: dict[str, Package], path: str) -> Package | None:
 
 
 def _read_executables(directory: str) -> frozenset[str] | None:
+    path = os.path.join(directory, EXECUTABLES_FILE)
     try:
-        data = read_file(os.path.join(directory, EXECUTABLES_FILE))
+        data = read_file(path, real=real_path(path))  # its folder resolved already
     except OSError:
         return None
     lines = data.decode("utf-8", errors="replace").splitlines()
