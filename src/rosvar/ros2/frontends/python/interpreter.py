@@ -450,7 +450,8 @@ class Interpreter:
     # ------------------------------------------------------------------ statements
 
     def run_module(self, tree: ast.Module) -> Scope:
-        scope = Scope({"__name__": MODULE_NAME, "__file__": Text.of(Sub("filename"))})
+        # the file's path is a Python string, not a substitution object
+        scope = Scope({"__name__": MODULE_NAME, "__file__": performed(Text.of(Sub("filename")))})
         try:
             self.block(tree.body, scope)
         except _Return:
