@@ -357,6 +357,8 @@ def _content(value: Choice[Raw | None] | None) -> object:
 class Ros2Substituter:
     """Resolves attribute text in a :class:`Context`, for all configurations at once."""
 
+    escapes = True
+
     def __init__(self, host: Interpretation[Context]) -> None:
         self.host = host
         self.space = host.space
