@@ -24,7 +24,7 @@ from typing import cast
 import yaml
 
 from rosvar.bounded_yaml import check_limits
-from rosvar.files import FileCode, FileRefused, read_file
+from rosvar.files import FileCode, FileRefused, python_text, read_file
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import (
@@ -751,7 +751,7 @@ def _file_content(workspace: Workspace, args: list[str]) -> str | Fail:
             UNSUPPORTED,
         )
     try:
-        return read_file(path, workspace.confinement()).decode()
+        return python_text(read_file(path, workspace.confinement()))
     except FileRefused as error:
         return Fail(f"$(file-content {path}): {error}", error.code)
     except (OSError, UnicodeDecodeError) as error:

@@ -326,3 +326,44 @@ def test_a_file_read_as_a_parameter_keeps_its_lines(tmp_path: Path) -> None:
     }
     assert {name: node.parameters[name] for name in expected} == expected
     assert str(node.parameters["joined_path"]).endswith("/pkg/a: b")
+
+
+NAMED_BY_ENVIRONMENT = """import os
+
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    model = os.environ['MODEL']
+    path = os.path.join(get_package_share_directory('pkg'), 'robot_' + model + '.urdf')
+    with open(path, 'r') as infp:
+        description = infp.read()
+    return LaunchDescription([
+        Node(package='pkg', executable='n', name='n',
+             parameters=[{'robot_description': description}]),
+    ])
+"""
+
+
+@pytest.mark.oracle
+@pytest.mark.parametrize("model", ["burger", "waffle"])
+def test_a_file_named_by_the_environment_is_read_as_python_reads_it(
+    tmp_path: Path, model: str
+) -> None:
+    """turtlebot3's ``robot_state_publisher.launch.py``: the file a launch-time value names
+    is read once a configuration names it (launch's ``FileContent``), its line ends as
+    Python's text mode gives them (``\\r\\n`` is ``\\n``), and stays a string."""
+    files = {
+        "robot_burger.urdf": '<robot name="b">\r\n  <!-- $(find x) -->\r\n</robot>\r\n',
+        "robot_waffle.urdf": '<robot name="w">\n  <link name="a"/>\r</robot>\n',
+    }
+    it = launch(tmp_path, NAMED_BY_ENVIRONMENT, ".launch.py", files=files)
+    expected = run_oracle(it.main, {}, [it.main.parent.parent], env={"MODEL": model})
+    [node] = expected["nodes"]
+    result = it.analysis.resolve([str(it.main)], {}, env={"MODEL": model})
+    assert result.ok, result.errors
+    assert canonical_nodes(resolution_nodes(result)) == canonical_nodes(expected)
+    text = files[f"robot_{model}.urdf"].replace("\r\n", "\n").replace("\r", "\n")
+    assert node["parameters"]["robot_description"] == text
