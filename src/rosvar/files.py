@@ -170,6 +170,13 @@ def read_file(
     return data
 
 
+def python_text(data: bytes, encoding: str = "utf-8") -> str:
+    """``data`` as Python's ``open(path).read()`` gives it: decoded, its ``\r\n`` and ``\r``
+    read as ``\n`` (universal newlines), as launch's ``FileContent`` and a launch file's
+    own reads see a file. Raises ``UnicodeDecodeError``."""
+    return data.decode(encoding).replace("\r\n", "\n").replace("\r", "\n")
+
+
 def open_regular(path: str, real: str | None = None) -> BinaryIO:
     """``path`` opened for reading if it is a regular file outside the system trees, else
     :class:`FileRefused` (checked on the open descriptor: nothing can swap the file).
