@@ -3,16 +3,11 @@ keys of its walks, however loosely keyed."""
 
 from __future__ import annotations
 
-import importlib.util
-import sys
 from pathlib import Path
 
-BENCH = Path(__file__).resolve().parent.parent / "bench"
-_spec = importlib.util.spec_from_file_location("rosvar_bench_walks", BENCH / "include_walks.py")
-assert _spec is not None and _spec.loader is not None
-walks = importlib.util.module_from_spec(_spec)
-sys.modules[_spec.name] = walks
-_spec.loader.exec_module(walks)
+import bench_scripts
+
+walks = bench_scripts.load("include_walks")
 
 MANIFEST = """<package format="3"><name>p</name>
 <export><build_type>ament_cmake</build_type></export></package>"""
