@@ -158,3 +158,36 @@ def test_examples_over_several_components_are_valid_configurations(ws: LaunchWor
             example |= decisions.witnesses[n][0]
         assert holds(formula & decisions.cube & goal, example)
     assert found > 20
+
+
+def test_repaired_witnesses_are_valid_configurations(ws: LaunchWorkspace) -> None:
+    """A repair copies the files that disagree with new literals from a current witness and
+    checks only the constraints leaving the copied files whose variables the copy changed
+    (``_broken``): every repaired witness must still satisfy the whole formula and
+    the literals of its component."""
+    model, derivation = derived(ws)
+    solver = model.solver
+    manager, formula = solver.manager, solver.formula
+    position = derivation.position
+
+    def holds(u: BDD, bits: int) -> bool:
+        values = {v: bool(bits >> position[v] & 1) for v in solver.variables}
+        return bool(manager.let(values, u) == manager.true)
+
+    rng = random.Random(8)
+    repaired = 0
+    for _ in range(40):
+        decisions = derivation.initial
+        earlier = {c: list(w) for c, w in decisions.witnesses.items()}
+        for _ in range(rng.randint(1, 4)):
+            variable, value = rng.choice(solver.variables), rng.random() < 0.5
+            decisions = derivation.add(decisions, variable, value) or decisions
+            for component, witnesses in earlier.items():
+                found = derivation.repaired(component, witnesses, decisions)
+                for witness, repair in found.items():
+                    assert holds(formula, witness)
+                    if repair is not None:
+                        assert holds(formula & decisions.cubes[component], repair)
+                        repaired += repair != witness
+                earlier[component] += decisions.witnesses[component]
+    assert repaired > 10

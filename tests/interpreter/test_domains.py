@@ -275,3 +275,62 @@ def test_domains_do_not_depend_on_the_order_files_are_analysed(ws: LaunchWorkspa
     b = str(ws.root / "pkg" / "launch" / "b.launch")
     early = first.model(b).domains["mode"]  # b before its includer was analysed
     assert early == ("eco", "turbo", OTHER)
+
+
+def _fresh(ws: LaunchWorkspace) -> Analysis:
+    return Analysis(discover([ws.root], ros_package_path=""))
+
+
+def test_forwarded_args_range_over_the_values_of_the_args_they_reach(ws: LaunchWorkspace) -> None:
+    """``<arg name="y" value="$(arg x)"/>`` in an include: ``x`` takes the included file's
+    values of ``y``, along chains of includes; asked in either order, the same domains."""
+    ws.launch(
+        "c.launch",
+        '  <arg name="z" default="slow"/>\n'
+        '  <node pkg="pkg" type="t" name="n" if="$(eval z == \'fast\')"/>',
+    )
+    ws.launch(
+        "b.launch",
+        '  <arg name="y"/>\n'
+        '  <include file="$(dirname)/c.launch"><arg name="z" value="$(arg y)"/></include>',
+    )
+    ws.launch(
+        "a.launch",
+        '  <arg name="x" default="medium"/>\n'
+        '  <include file="$(dirname)/b.launch"><arg name="y" value="$(arg x)"/></include>',
+    )
+    expected = {
+        "a.launch": ("x", ("medium", "fast", "slow", OTHER)),
+        "b.launch": ("y", ("fast", "slow", UNSET, OTHER)),
+        "c.launch": ("z", ("slow", "fast", OTHER)),
+    }
+    for order in (["a.launch", "b.launch", "c.launch"], ["c.launch", "b.launch", "a.launch"]):
+        analysis = _fresh(ws)
+        for file in order:
+            name, slots = expected[file]
+            assert domain(ws, file, name, analysis) == slots
+
+
+def test_forwarded_args_in_a_loop_end(ws: LaunchWorkspace) -> None:
+    """Files forwarding args to each other in a loop: each chain stops where it comes back,
+    so the domain of ``y`` met on the chain from ``x`` misses what only ``x`` reaches (``z``'s
+    values): it is not the domain of ``y`` asked for itself, which has them."""
+    ws.launch("c.launch", '  <arg name="z" default="cz"/>')
+    ws.launch(
+        "a.launch",
+        '  <arg name="x" default="ax"/>\n'
+        '  <include file="$(dirname)/b.launch" if="false"><arg name="y" value="$(arg x)"/>'
+        "</include>\n"
+        '  <include file="$(dirname)/c.launch"><arg name="z" value="$(arg x)"/></include>',
+    )
+    ws.launch(
+        "b.launch",
+        '  <arg name="y" default="by"/>\n'
+        '  <include file="$(dirname)/a.launch" if="false"><arg name="x" value="$(arg y)"/>'
+        "</include>",
+    )
+    for order in (["a.launch", "b.launch"], ["b.launch", "a.launch"]):
+        analysis = _fresh(ws)
+        for file in order:
+            name = "x" if file == "a.launch" else "y"
+            assert literals(domain(ws, file, name, analysis)) == {"ax", "by", "cz"}

@@ -86,23 +86,41 @@ def test_cofactor_fixes_values_as_let_does(seed: int) -> None:
 
 
 @pytest.mark.parametrize("seed", range(10))
-def test_evaluate_is_let_under_a_full_assignment(seed: int) -> None:
-    manager = fresh(NAMES[:6])
-    u = random_formula(manager, random.Random(seed), NAMES[:6])
-    for values in assignments(NAMES[:6]):
-        assert bdd.evaluate(u, values.__getitem__) == (manager.let(values, u) == manager.true)
+def test_cube_is_dd_cube(seed: int) -> None:
+    rng = random.Random(seed)
+    manager = fresh()
+    values = {name: rng.random() < 0.5 for name in rng.sample(NAMES, rng.randint(0, 8))}
+    assert bdd.cube(manager, values) == manager.cube(values)
+
+
+def test_cubes_remember_each_set_of_literals_and_cofactor_by_it() -> None:
+    rng = random.Random(4)
+    manager = fresh()
+    cubes = bdd.Cubes(manager, capacity=4)
+    for _ in range(40):
+        u = random_formula(manager, rng)
+        values = {name: rng.random() < 0.5 for name in rng.sample(NAMES[:3], rng.randint(0, 3))}
+        literals = frozenset(values.items())
+        assert cubes.cofactor(u, literals) == bdd.cofactor(u, values)
+        assert cubes.of(literals) is cubes.of(literals)  # built once while remembered
 
 
 @pytest.mark.parametrize("seed", range(10))
-def test_an_evaluation_holds_where_evaluate_does(seed: int) -> None:
+def test_evaluate_is_let_under_a_full_assignment(seed: int) -> None:
     manager = fresh(NAMES[:6])
-    position = {name: 5 - number for number, name in enumerate(NAMES[:6])}
-    evaluation = bdd.Evaluation(manager, position)
     u = random_formula(manager, random.Random(seed), NAMES[:6])
+    position = {name: 5 - number for number, name in enumerate(NAMES[:6])}
     for values in assignments(NAMES[:6]):
+        expected = manager.let(values, u) == manager.true
+        assert bdd.evaluate(u, values.__getitem__) == expected
+        assert bdd.evaluate(~u, values.__getitem__) != expected
+        # as the configuration engine gives it: a bit mask, read as truthy integers
         bits = sum(1 << position[name] for name, value in values.items() if value)
-        assert evaluation.holds(u, bits) == bdd.evaluate(u, values.__getitem__)
-        assert evaluation.holds(~u, bits) != bdd.evaluate(u, values.__getitem__)
+
+        def bit(name: str, bits: int = bits) -> int:
+            return bits >> position[name] & 1
+
+        assert bdd.evaluate(u, bit) == expected
 
 
 @pytest.mark.parametrize("seed", range(20))

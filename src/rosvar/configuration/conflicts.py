@@ -26,6 +26,7 @@ from rosvar.configuration.derivation import Decisions
 from rosvar.configuration.judgement import Typed
 from rosvar.configuration.lowering import Lowering
 from rosvar.logic.bdd import BDD, conjoin, meets, walked_support
+from rosvar.logic.bdd import cube as cube_of
 
 REQUIRES_LIMIT = 100_000
 """Nodes of a component's formula above which its requires are left out of clash judgements."""
@@ -213,7 +214,7 @@ class Conflicts:
         (those outside the blocks change nothing), conjoined."""
         decided = decisions.decided
         values = {v: decided[v] for v in pair.variables if v in decided}
-        return decisions.cubes[pair.component] & self.manager.cube(values)
+        return decisions.cubes[pair.component] & cube_of(self.manager, values)
 
     def _meets(self, u: BDD, pair: Clashing, cube: BDD) -> bool:
         """Some configuration of the pair's blocks and ``u`` (its ``possible`` or

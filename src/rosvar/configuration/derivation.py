@@ -39,7 +39,16 @@ from rosvar.analyses.feature_model.model import FeatureModel
 from rosvar.configuration.lowering import Bounds
 from rosvar.configuration.presence import Presence, PresenceVerdict
 from rosvar.configuration.sat import Sat
-from rosvar.logic.bdd import BDD, Evaluation, children_first, cofactor, cofactors, walked_support
+from rosvar.logic.bdd import (
+    BDD,
+    Cubes,
+    Literals,
+    children_first,
+    cofactor,
+    cofactors,
+    evaluate,
+    walked_support,
+)
 from rosvar.memo import Memo
 
 SOURCES = 4  # witnesses tried as the source of a repair
@@ -48,6 +57,11 @@ CACHED_REPAIRS = 4096  # repaired witnesses by witness and literals, dropped all
 MUTATED = 4  # the latest candidates a missing example is first sought from (``_mutated``)
 EXAMPLES = 64
 """Configurations found for presence judgements, kept to judge other conditions too."""
+
+
+Crossing = tuple[BDD, int, frozenset[int]]
+"""A constraint that links files, the positions of the variables it reads (as bits), and
+those files."""
 
 
 @dataclass(frozen=True)
@@ -82,12 +96,12 @@ class Derivation:
     def __init__(self, model: FeatureModel) -> None:
         solver = model.solver
         self.manager = manager = solver.manager
+        self._cubes = Cubes(manager)  # of the decided literals conditions are restricted by
         self.sats = Sat.per_component(model)
         self._model = model
         self._whole_sat: Sat | None = None
         self.variables = list(solver.variables)
         self.position = {v: i for i, v in enumerate(self.variables)}
-        self._evaluation = Evaluation(manager, self.position)
         self.components = solver.components
         self.members = [list(c.variables) for c in solver.components]
         self._masks = [sum(1 << self.position[v] for v in c.variables) for c in solver.components]
@@ -96,7 +110,7 @@ class Derivation:
             self.position[v]: n for n, f in enumerate(model.files) for v in f.variable_names()
         }
         # the constraints that leave each file, with the files they link
-        self._crossing: list[list[tuple[BDD, int, frozenset[int]]]] = [[] for _ in model.files]
+        self._crossing: list[list[Crossing]] = [[] for _ in model.files]
         # every part of the component formulas that reads a file, and its args' values
         self._parts_of: list[list[BDD]] = [solver.arg_trees(f) for f in model.files]
         self._groups = [_groups(f, self.position) for f in model.files]
@@ -117,7 +131,8 @@ class Derivation:
         self._implications: Memo[tuple[int, int], tuple[int, int]] = Memo()
         """Each distinct value of ``_necessary`` once: its integers are as wide as the
         positions (Husky + ``_external``: 15,566 values, 5,462 distinct, 600 bytes each)."""
-        self._reads: dict[frozenset[int], int] = {}  # files → what their constraints read
+        self._leaving: dict[frozenset[int], tuple[int, tuple[Crossing, ...]]] = {}
+        """Files → the constraints that link them to other files, and what those read."""
         self._broke: dict[tuple[frozenset[int], int], frozenset[int]] = {}
         self._repairs: dict[tuple[int, BDD], int | None] = {}
         self._block_of: dict[frozenset[int], int] = {}  # files → their variables' positions
@@ -286,10 +301,11 @@ class Derivation:
             if bounds.must != bounds.may:
                 support = (*support, *(v for v in self._support(bounds.must) if v not in support))
             values = {v: decisions.decided[v] for v in support if v in decisions.decided}
-            key = (bounds.must, bounds.may, frozenset(values.items()))
+            literals = frozenset(values.items())
+            key = (bounds.must, bounds.may, literals)
             restricted = self._restricted.get(key)
             if restricted is None:
-                restricted = self._restrict(bounds, values, frozenset(support).difference(values))
+                restricted = self._restrict(bounds, literals, frozenset(support).difference(values))
                 self._restricted[key] = restricted
             verdict, must, may, components = restricted
             if verdict is not None:
@@ -309,12 +325,13 @@ class Derivation:
         return verdicts
 
     def _restrict(
-        self, bounds: Bounds, values: Mapping[str, bool], open_: frozenset[str]
+        self, bounds: Bounds, literals: Literals, open_: frozenset[str]
     ) -> tuple[Presence | None, BDD, BDD, frozenset[int]]:
-        """The verdict restriction alone gives, else what the solver must judge: the
-        restricted bounds and the components of their open variables."""
-        must = cofactor(bounds.must, values)
-        may = must if bounds.may == bounds.must else cofactor(bounds.may, values)
+        """The verdict restriction by the decided ``literals`` alone gives, else what the
+        solver must judge: the restricted bounds and the components of their open
+        variables."""
+        must = self._cubes.cofactor(bounds.must, literals)
+        may = must if bounds.may == bounds.must else self._cubes.cofactor(bounds.may, literals)
         if must == self.manager.true:
             return Presence.PRESENT, must, may, frozenset()
         if may == self.manager.false:
@@ -425,24 +442,36 @@ class Derivation:
             if block is None:
                 block = self._block_of[files] = sum(self._blocks[file] for file in files)
             patched = witness & ~block | source & block
-            fresh = self._broken(files, patched) - files
+            fresh = self._broken(files, patched, witness ^ patched, source ^ patched)
             if not fresh:
                 return patched
             files |= fresh
             if len(files) > REPAIRED_FILES:
                 return None
 
-    def _broken(self, files: frozenset[int], patched: int) -> frozenset[int]:
-        """The files linked by the constraints leaving ``files`` that ``patched`` breaks,
-        remembered for the values of the variables they read: a step repairs many
-        witnesses the same way, which differ elsewhere."""
-        reads = self._reads.get(files)
-        if reads is None:
+    def _broken(
+        self, files: frozenset[int], patched: int, from_witness: int, from_source: int
+    ) -> frozenset[int]:
+        """The files outside ``files`` linked to them by a constraint that ``patched`` breaks,
+        remembered for the values of the variables those constraints read: a step repairs
+        many witnesses the same way, which differ elsewhere.
+
+        ``from_witness`` and ``from_source`` are the bits where ``patched`` differs from the
+        repaired witness and from its source, two valid configurations: a constraint whose
+        variables agree with either holds, unevaluated (most do, far from the copy)."""
+        leaving = self._leaving.get(files)
+        if leaving is None:
+            crossing = {
+                part[0]: part
+                for file in files
+                for part in self._crossing[file]
+                if not part[2] <= files  # within the copied blocks, it holds as in the source
+            }
             reads = 0
-            for file in files:
-                for _constraint, read, _others in self._crossing[file]:
-                    reads |= read
-            self._reads[files] = reads
+            for _constraint, read, _others in crossing.values():
+                reads |= read
+            leaving = self._leaving[files] = (reads, tuple(crossing.values()))
+        reads, constraints = leaving
         key = (files, patched & reads)
         found = self._broke.get(key)
         if found is None:
@@ -450,10 +479,12 @@ class Derivation:
                 self._broke.clear()
             found = self._broke[key] = frozenset(
                 linked
-                for file in files
-                for constraint, _read, others in self._crossing[file]
-                if not self._holds(constraint, patched)
+                for constraint, read, others in constraints
+                if from_witness & read
+                and from_source & read
+                and not self._holds(constraint, patched)
                 for linked in others
+                if linked not in files
             )
         return found
 
@@ -533,8 +564,8 @@ class Derivation:
         """A valid configuration where ``goal`` holds, made from one of ``candidates``
         (valid ones) without the solver: the path of ``goal`` to TRUE closest to it taken
         (``_closest``), the values of the args of the files it changed made one per arg
-        again, and only the parts of the formula that read those files checked (the others
-        hold as in the candidate).
+        again, and only the parts of the formula that read the variables it changed checked
+        (the others hold as in the candidate).
 
         Variants of one element differ in the values of a few args, so a configuration
         found for one usually becomes one for the next by setting those values."""
@@ -549,11 +580,14 @@ class Derivation:
                 rest &= ~self._blocks[file]
             for file in files:
                 mutated = self._one_value_each(file, mutated, mask)
+            changed = mutated ^ witness  # a part that reads none of these holds as in it
             parts = (part for file in files for part in self._parts_of[file])
             if (
                 decisions.valid(component, mutated)
                 and self._holds(goal, mutated)
-                and all(self._holds(part, mutated) for part in parts)
+                and all(
+                    not changed & self._mask(part) or self._holds(part, mutated) for part in parts
+                )
             ):
                 return mutated
         return None
@@ -655,7 +689,8 @@ class Derivation:
 
     def _holds(self, u: BDD, witness: int) -> bool:
         """The truth of ``u`` in a witness: one path from the root down."""
-        return self._evaluation.holds(u, witness)
+        position = self.position
+        return evaluate(u, lambda name: witness >> position[name] & 1)
 
     def _mask(self, u: BDD) -> int:
         """The positions of ``u``'s support, as bits."""

@@ -33,7 +33,7 @@ from rosvar.configuration.lowering import Lowering
 from rosvar.configuration.prefix_cache import PrefixCache
 from rosvar.configuration.presence import Presence
 from rosvar.interpreter.workspace_models import Analysis
-from rosvar.logic.bdd import BDD
+from rosvar.logic.bdd import BDD, Cubes
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.logic.inputs import OTHER, UNSET, Input
 from rosvar.memo import Memo
@@ -138,13 +138,15 @@ class Descriptions:
         self.space = space
         self._described: Memo[tuple[BDD, frozenset[tuple[str, bool]]], str] = Memo()
         self._simplified: Memo[BDD, str] = Memo()  # a condition cofactored → its description
+        self._cubes = Cubes(space.bdd)  # of the decided literals conditions are simplified by
 
     def describe(self, condition: BDD, values: Mapping[str, bool]) -> str:
         """``condition`` simplified under ``values`` (decided variables)."""
-        key = (condition, frozenset(values.items()))
+        literals = frozenset(values.items())
+        key = (condition, literals)
         text = self._described.get(key)
         if text is None:
-            restricted = self.space.cofactor(condition, values)
+            restricted = self._cubes.cofactor(condition, literals)
             text = self._simplified.get(restricted)  # other values often leave the same
             if text is None:
                 text = self._simplified[restricted] = self.space.describe(restricted)

@@ -254,9 +254,12 @@ def read_bytes(
         return _error("file-unreadable", f"cannot read file: {reason}", Location(name, 1, 1))
 
 
-def parse_xml_file(path: str | os.PathLike[str]) -> ParseResult:
-    """Read and safely parse any XML file (e.g. ``package.xml``); never raises."""
-    data = read_bytes(path)
+def parse_xml_file(
+    path: str | os.PathLike[str], resolve: Callable[[str], str] | None = None
+) -> ParseResult:
+    """Read and safely parse any XML file (e.g. ``package.xml``); never raises. ``resolve``
+    as :func:`read_bytes`'s."""
+    data = read_bytes(path, resolve=resolve)
     if isinstance(data, ParseResult):
         return data
     return parse_xml_bytes(data, os.fspath(path))

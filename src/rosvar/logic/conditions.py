@@ -68,10 +68,11 @@ def exactly_one(manager: Manager, variables: Sequence[BDD]) -> BDD:
     same canonical BDD.
     """
     none = manager.true
-    one = manager.false
+    one = false = manager.false
+    ite = manager.ite  # one operation in CUDD where the connectives took five
     for variable in reversed(variables):  # in level order, each step only adds nodes above
-        one = (variable & none) | (~variable & one)
-        none = ~variable & none
+        one = ite(variable, none, one)
+        none = ite(variable, false, none)
     return one
 
 
@@ -106,21 +107,28 @@ class ConditionSpace:
         # predicates over one input's hole or terms whose cells are known, by input
         self._cell_groups: dict[Input, list[_Member]] = {}
         self._decisions: Memo[tuple[PredicateAtom, str], bool] = Memo()  # by atom and text
+        # the truths a group's members take together, by the members (a bare hole's by test)
+        self._relations: dict[tuple[object, ...], frozenset[tuple[bool, ...]]] = {}
         # Choice.const's constants of this space, by text: choices are immutable, and the
         # same literal is met again in every file that includes the one it is written in.
         self.constants: dict[object, Any] = {}
 
     # -- declaring atoms -------------------------------------------------------------
+    def _named(self, atom: Atom) -> str:
+        """The name of ``atom``'s variable, which the caller then declares."""
+        name = f"a{len(self._atoms)}"
+        self._atoms.append(atom)
+        self._var_of[atom] = name
+        self._atom_of[name] = atom
+        return name
+
     def _new_var(self, atom: Atom, level: int | None = None) -> BDD:
         """A variable for ``atom``, last in the order or inserted at ``level``."""
-        name = f"a{len(self._atoms)}"
+        name = self._named(atom)
         if level is None:
             self.bdd.declare(name)
         else:
             self.bdd.insert_var(name, level)
-        self._atoms.append(atom)
-        self._var_of[atom] = name
-        self._atom_of[name] = atom
         return self.bdd.var(name)
 
     def declare_input(self, input_: Input, domain: Sequence[Slot]) -> None:
@@ -129,10 +137,10 @@ class ConditionSpace:
             return
         slots = tuple(dict.fromkeys(domain))
         self._domains[input_] = slots
-        variables = [self._new_var(SlotAtom(input_, slot)) for slot in slots]
-        self._slot_names[input_] = {
-            slot: str(v.var) for slot, v in zip(slots, variables, strict=True)
-        }
+        names = [self._named(SlotAtom(input_, slot)) for slot in slots]
+        self.bdd.declare(*names)
+        variables = list(map(self.bdd.var, names))
+        self._slot_names[input_] = dict(zip(slots, names, strict=True))
         self._slot_atoms[input_] = tuple(zip(slots, variables, strict=True))
         exactly_one = self.exactly_one(variables)
         self._input_constraints[input_] = exactly_one
@@ -206,8 +214,7 @@ class ConditionSpace:
         for members in related:
             if len(members) < 2:
                 continue
-            values = _witnesses(members)
-            seen = {tuple(self._decided(m[1], input_, v) for m in members) for v in values}
+            seen = self._combinations(members, input_)
             if len(seen) == 1 << len(members):
                 continue
             variables = [self.bdd.var(self._var_of[m[1]]) for m in members]
@@ -218,6 +225,23 @@ class ConditionSpace:
                     cube &= variable if holds else ~variable
                 possible |= cube
             self.constrain(~self.slot(input_, OTHER) | possible)
+
+    def _combinations(
+        self, members: Sequence[_Member], input_: Input
+    ) -> frozenset[tuple[bool, ...]]:
+        """Which truths of ``members`` hold together at some of their witnesses. A predicate
+        over the bare hole is its test of the text, whatever the input: a group of those is
+        evaluated once per analysis for all the inputs whose groups have the same tests
+        (Husky: 109 groups of ``true`` and ``false``, 2,836 evaluations before)."""
+        key = tuple(m[1].test if m[2] is None else m[1] for m in members)
+        found = self._relations.get(key)
+        if found is None:
+            values = _witnesses(members)
+            found = frozenset(
+                tuple(self._decided(m[1], input_, v) for m in members) for v in values
+            )
+            self._relations[key] = found
+        return found
 
     def _cell_member(self, atom: PredicateAtom) -> _Member | None:
         """``atom`` as a member of its input's group: a predicate whose texts are registered,

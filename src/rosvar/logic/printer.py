@@ -15,7 +15,7 @@ from typing import NamedTuple, Protocol, cast
 
 from rosvar.logic.atoms import PREDICATES, Atom, FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.bdd import BDD, cofactors, layout, restrict
-from rosvar.logic.inputs import OTHER, ArgInput, EnvInput, Input, Slot
+from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Input, Slot
 from rosvar.memo import Memo
 
 BOOLEAN_WORDS = ("true", "false")
@@ -23,6 +23,8 @@ MAX_FULL = 200  # longer formulas over <other> values help nobody
 MAX_CUBES = 256  # beyond this many disjuncts a formula is no longer readable
 FULL_CUBES = MAX_FULL // 4  # a disjunct takes at least 4 characters (" ∨ " and a name)
 TRUE_FOR_KNOWN = "true for every known value"
+ENV_SET = "set"
+"""An environment variable given any value (``$X set``): every slot but ``<unset>``."""
 AND = "∧"
 OR = " ∨ "
 
@@ -115,19 +117,31 @@ class Printer:
 
         Conditions of the same shape read the same, and are described once: every file
         that includes another conjoins the other's conditions with its own, over its own
-        inputs, so a workspace holds many copies of a few shapes.
+        inputs, so a workspace holds many copies of a few shapes. What two conjunctions
+        answer is answered before the shape is computed: most conditions a click of the
+        configurator restricts are false or hold for other values only, each of a shape
+        met once (docs/performance.md).
         """
-        facts = self.space.facts()
+        space = self.space
+        facts = space.facts()
         if facts != self._facts:  # what was read of the facts is stale
             self._contexts.clear()
             self._variables.clear()
             self._facts = facts
+        if condition == space.false:
+            return "false"
+        context = self._context(frozenset(space.support(condition)))
+        if (condition & context.care) == space.false:  # unsatisfiable
+            return "false"
+        known = restrict(condition, context.known) if known_only else None
+        if known is not None and (known & context.known_care) == space.false:
+            return "only for other values"
         shape = self._shape(condition, qualify, known_only)
         if shape is None:
-            return self._describe(condition, qualify, known_only)
+            return self._describe(condition, qualify, context, known)
         text = self._by_shape.get(shape)
         if text is None:
-            text = self._by_shape[shape] = self._describe(condition, qualify, known_only)
+            text = self._by_shape[shape] = self._describe(condition, qualify, context, known)
         return text
 
     def _shape(self, condition: BDD, qualify: bool, known_only: bool) -> Shape | None:
@@ -239,20 +253,15 @@ class Printer:
         file = input_.file if qualify and isinstance(input_, ArgInput) else ""
         return (str(input_), type(input_).__name__, file, self.space.domain(input_))
 
-    def _describe(self, condition: BDD, qualify: bool, known_only: bool) -> str:
+    def _describe(self, condition: BDD, qualify: bool, context: _Context, known: BDD | None) -> str:
+        """The formula of a satisfiable ``condition`` over the variables of ``context``;
+        ``known``: the condition with the args' values the analysis knows (``known_only``),
+        which some of them take."""
         space = self.space
-        if condition == space.false:
-            return "false"
-        context = self._context(frozenset(space.support(condition)))
         care = context.care
-        if (condition & care) == space.false:  # unsatisfiable
-            return "false"
-        if not known_only:
+        if known is None:
             return self._formula(condition, care, qualify, context.domains)
-        known = restrict(condition, context.known)
         known_care = context.known_care
-        if (known & known_care) == space.false:
-            return "only for other values"
         if (known_care & ~known) == space.false and (care & ~condition) != space.false:
             try:  # the full formula, if it is short: a long one is not worth computing
                 return self._formula(
@@ -526,6 +535,8 @@ def _render_slots(
     name = str(input_)
     if qualify and isinstance(input_, ArgInput):
         name = f"{input_.file}:{input_.name}"
+    if isinstance(input_, EnvInput) and UNSET in domain and slots == set(domain) - {UNSET}:
+        return f"{name} {ENV_SET}"  # not `$X=<other>` where no value is listed: any value
     if len(slots) == 1:
         (slot,) = slots
         if isinstance(slot, str) and slot.lower() in BOOLEAN_WORDS and _is_boolean(domain):

@@ -18,6 +18,7 @@ from rosvar.analyses.communication import launched_units, node_branches
 from rosvar.diagnostics import Severity
 from rosvar.files import Confinement
 from rosvar.interpreter.model import LaunchModel, NodeParameter
+from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros.version import RosVersion
 from rosvar.ros2.conventions.parameters import matches
@@ -38,13 +39,35 @@ def unmatched_parameter_files(
         for condition, launched, values in node_branches(space, node)
         if launched.name and all(v is None or isinstance(v, str) for v in values)
     ]  # a node its code names, or named only per configuration, is left out
+    # where each full name is launched, and where each key's entry is some launched node's:
+    # a key is matched against each distinct name once, not against every branch of every
+    # node for every parameter of every node
+    launched_as: dict[str, BDD] = {}
+    for _node, condition, fqn in named:
+        launched_as[fqn] = launched_as.get(fqn, space.false) | condition
+    reaches: dict[str, BDD] = {}
+
+    def reached_by(key: str) -> BDD:
+        found = reaches.get(key)
+        if found is None:
+            found = space.false
+            for fqn, condition in launched_as.items():
+                if matches(key, fqn):
+                    found |= condition
+            reaches[key] = found
+        return found
+
+    keys_of: dict[int, list[list[str]]] = {}  # a node's parameters' keys, read once per node
     for node, condition, fqn in named:
-        for parameter in node.parameters:
-            keys = [key for key, _params in _entries(parameter, confinement)]
+        if id(node) not in keys_of:
+            keys_of[id(node)] = [
+                [key for key, _params in _entries(parameter, confinement)]
+                for parameter in node.parameters
+            ]
+        for parameter, keys in zip(node.parameters, keys_of[id(node)], strict=True):
             reached = space.false  # where an entry is some launched node's
-            for _other, launched, name in named:
-                if any(matches(key, name) for key in keys):
-                    reached |= launched
+            for key in keys:
+                reached |= reached_by(key)
             if not keys or (condition & parameter.condition & ~reached) == space.false:
                 continue
             shown = ", ".join(sorted({"/" + key.lstrip("/") for key in keys}))

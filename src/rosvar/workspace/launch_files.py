@@ -57,9 +57,9 @@ class _Rule:
     in_launch_folder: bool = False
     confirm: Callable[[str], bool] | None = None
 
-    def names(self, directory: str, name: str) -> bool:
-        """Whether the rule is about this file (its confirmation aside)."""
-        in_folder = os.path.basename(directory) == LAUNCH_FOLDER
+    def names(self, in_folder: bool, name: str) -> bool:
+        """Whether the rule is about file ``name`` (its confirmation aside), in a ``launch/``
+        folder or not."""
         return name.endswith(self.suffixes) and (in_folder or not self.in_launch_folder)
 
 
@@ -99,12 +99,17 @@ RULES: dict[RosVersion, tuple[_Rule, ...]] = {
 }
 
 
+_SUFFIXES = tuple(dict.fromkeys(s for rules in RULES.values() for r in rules for s in r.suffixes))
+"""Every rule's suffixes: a file ending otherwise (meshes, configs...) is no launch file."""
+
+
 def launch_format(directory: str, name: str, version: RosVersion) -> LaunchFormat | None:
     """The format of ``directory/name`` if it is a launch file of ``version``, else None."""
-    if name.startswith(".") or name == PACKAGE_FILE:
-        return None  # editor backups, lock files, manifests
+    if name.startswith(".") or name == PACKAGE_FILE or not name.endswith(_SUFFIXES):
+        return None  # editor backups, lock files, manifests, files of no launch format
+    in_folder = os.path.basename(directory) == LAUNCH_FOLDER
     for rule in RULES[version]:
-        if rule.names(directory, name):
+        if rule.names(in_folder, name):
             if rule.confirm is None or rule.confirm(os.path.join(directory, name)):
                 return rule.format
             return None

@@ -19,7 +19,7 @@ rules (:mod:`rosvar.workspace.share`).
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
 
 from rosvar.diagnostics import Diagnostic, DiagnosticSink, Location
@@ -217,8 +217,9 @@ def _innermost(index: dict[str, Package], path: str) -> Package | None:
 
 
 def _read_executables(directory: str) -> frozenset[str] | None:
+    path = os.path.join(directory, EXECUTABLES_FILE)
     try:
-        data = read_file(os.path.join(directory, EXECUTABLES_FILE))
+        data = read_file(path, real=real_path(path))  # its folder resolved already
     except OSError:
         return None
     lines = data.decode("utf-8", errors="replace").splitlines()
@@ -237,14 +238,19 @@ class _Discovery:
         self.launch_files: dict[RosVersion, set[str]] = {version: set() for version in RosVersion}
         self.given: set[str] = set()  # files given as paths: launch files of either ROS
 
-    def add_package(self, directory: str) -> None:
+    def add_package(self, directory: str, files: Collection[str] | None = None) -> None:
+        """Register the package in ``directory``; ``files``: the directory's files, where
+        the crawl listed them (a package without an executables file, most of them, is
+        not asked for one)."""
         real = real_path(directory)
         if real in self.package_dirs:
             return  # reached twice (overlapping roots, or a root also on ROS_PACKAGE_PATH)
         self.package_dirs.add(real)
         manifest = os.path.join(directory, PACKAGE_FILE)
         name, version = self._read_manifest(manifest, directory)
-        package = Package(name, directory, _read_executables(directory), version)
+        listed = files is None or EXECUTABLES_FILE in files
+        executables = _read_executables(directory) if listed else None
+        package = Package(name, directory, executables, version)
         first = self.packages.get(name)
         if first is None:
             self.packages[name] = package
@@ -259,7 +265,7 @@ class _Discovery:
     def _read_manifest(self, manifest: str, directory: str) -> tuple[str, RosVersion | None]:
         """The package's name and ROS; a broken manifest gives the folder's name."""
         fallback = os.path.basename(directory)
-        result = parse_xml_file(manifest)
+        result = parse_xml_file(manifest, real_path)  # its folder resolved already
         root = result.root
         problem: str
         location = Location(manifest)
@@ -314,7 +320,7 @@ class _Discovery:
                 continue
             inside = dirpath in in_package
             if not inside and PACKAGE_FILE in filenames:
-                self.add_package(dirpath)
+                self.add_package(dirpath, filenames)
                 inside = True
             if not inside and _workspace_root(dirnames, filenames):
                 outputs = sorted(set(BUILD_OUTPUTS) & set(dirnames))

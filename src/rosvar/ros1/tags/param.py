@@ -16,6 +16,7 @@ from rosvar.ros1.tags.rosparam import read_text
 from rosvar.ros1.typed_values import convert_scalar
 
 ATTRIBUTES = ("name", "value", "type", "textfile", "binfile", "command")
+SOURCES = tuple(ParamSource)  # iterating the enum itself costs a generator per <param>
 
 
 def convert_value(value: str, type_: str) -> object:
@@ -92,7 +93,7 @@ def handle_param(
     it.check_attributes(entity, ATTRIBUTES)
     ptype = (entity.get("type") or "auto").lower().strip()
     attributes = entity.attributes
-    present = [(k, it.attr(entity, k, scope)) for k in ParamSource if k in attributes]
+    present = [(k, it.attr(entity, k, scope)) for k in SOURCES if k in attributes]
     if len(present) != 1:
         it.fail(
             it.space.true,
