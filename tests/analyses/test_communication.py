@@ -12,7 +12,9 @@ from rosvar.analyses.communication import (
     Channel,
     Edge,
     LaunchedNode,
+    branches_remembered,
     model_edges,
+    node_branches,
     resolved_graph,
     restrict,
     uses_graph,
@@ -83,6 +85,25 @@ def test_edges_carry_conditions(ws: LaunchWorkspace) -> None:
     private = {e.name for e in edges if e.role is Role.SUBSCRIBES and e.node == "/r0/talker"}
     assert private == {"/r0/talker/control"}
     assert all(e.type == "std_msgs/String" for e in edges if e.role is not Role.SERVICES)
+
+
+def test_remembered_branches_are_the_branches(ws: LaunchWorkspace) -> None:
+    """Within ``branches_remembered`` a node's branches are crossed once and given again as
+    they are (the same objects, the same order); outside it, crossed on each call."""
+    analysis, file, _interfaces, _edges = _setup(ws)
+    space = analysis.space
+    nodes = analysis.model(file).nodes
+    fresh = [list(node_branches(space, node)) for node in nodes]
+    with branches_remembered():
+        first = [list(node_branches(space, node)) for node in nodes]
+        with branches_remembered():  # nested: the same memo
+            again = [list(node_branches(space, node)) for node in nodes]
+    later = [list(node_branches(space, node)) for node in nodes]
+    assert first == fresh == later
+    flat = itertools.chain.from_iterable
+    assert all(a is b for a, b in zip(flat(first), flat(again), strict=True))
+    assert not any(a is b for a, b in zip(flat(first), flat(later), strict=True))
+    assert sum(len(branches) for branches in fresh) > len(nodes)  # some node has several
 
 
 def test_restricted_graph_equals_resolved_graph(ws: LaunchWorkspace) -> None:

@@ -69,6 +69,45 @@ def test_a_parameter_file_for_no_launched_node(
     )
 
 
+WILDCARDS = """<launch>
+  <arg name="moved" default="false"/>
+  <node pkg="demo" exec="talker" name="talker" namespace="ns" unless="$(var moved)"/>
+  <node pkg="demo" exec="talker" name="talker" namespace="other" if="$(var moved)"/>
+  <node pkg="demo" exec="listener" name="one">
+    <param from="$(find-pkg-share bringup)/config/one.yaml"/>
+  </node>
+  <node pkg="demo" exec="listener" name="any">
+    <param from="$(find-pkg-share bringup)/config/any.yaml"/>
+  </node>
+  <node pkg="demo" exec="listener" name="all">
+    <param from="$(find-pkg-share bringup)/config/all.yaml"/>
+  </node>
+</launch>
+"""
+WILDCARD_FILES = {
+    "config/one.yaml": "/ns/*:\n  ros__parameters:\n    rate: 2\n",
+    "config/any.yaml": "/other/**:\n  ros__parameters:\n    rate: 2\n",
+    "config/all.yaml": "/**:\n  ros__parameters:\n    rate: 2\n",
+}
+
+
+def test_wildcard_keys_reach_the_nodes_they_match(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """rcl's wildcards: ``/ns/*`` is one name below ``/ns`` (the talker, where it runs
+    there), ``/other/**`` any below ``/other``, ``/**`` every node: a file reaches no node
+    where no launched node's name matches one of its keys."""
+    package = tmp_path / "bringup"
+    (package / "launch").mkdir(parents=True)
+    (package / "config").mkdir()
+    (package / "package.xml").write_text(MANIFEST)
+    (package / "launch" / "bringup.launch.xml").write_text(WILDCARDS)
+    for name, text in WILDCARD_FILES.items():
+        (package / name).write_text(text)
+    found = {(f["name"], f["condition"]) for f in _findings(tmp_path, capsys)}
+    assert found == {("/one", "moved"), ("/any", "¬moved")}
+
+
 CMAKE = """cmake_minimum_required(VERSION 3.8)
 project(demo)
 find_package(ament_cmake REQUIRED)

@@ -26,6 +26,7 @@ from rosvar.analyses.communication import (
     Described,
     Edge,
     Gap,
+    branches_remembered,
     camera_info_beside,
     entry_when,
     find_interface,
@@ -47,6 +48,7 @@ from rosvar.interpreter.model import (
     ParamDecl,
     YamlDecl,
 )
+from rosvar.interpreter.workspace_models import collector_paused
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.ros import names
@@ -200,7 +202,8 @@ class Checks:
         self.partners: Partners = defaultdict(set)
 
     def gather(self, model: LaunchModel) -> None:
-        edges = model_edges(self.space, model, self.interfaces, self.described)
+        with branches_remembered():
+            edges = model_edges(self.space, model, self.interfaces, self.described)
         self.edges[model.file] = edges
         for edge in edges:
             if edge.static:
@@ -211,18 +214,20 @@ class Checks:
     def check(self, model: LaunchModel) -> list[Finding]:
         """The findings of a gathered entry file."""
         edges = self.edges[model.file]
-        return check_model(
-            self.space,
-            model,
-            self.interfaces,
-            self.confinement,
-            edges,
-            self.partners,
-            self.described,
-            self.dependency,
-        )
+        with branches_remembered():
+            return check_model(
+                self.space,
+                model,
+                self.interfaces,
+                self.confinement,
+                edges,
+                self.partners,
+                self.described,
+                self.dependency,
+            )
 
 
+@collector_paused()  # the edges of every file are kept: the collector rescanned the models' heap
 def check_models(
     space: ConditionSpace,
     models: Sequence[LaunchModel],

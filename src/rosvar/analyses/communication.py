@@ -22,6 +22,8 @@ from __future__ import annotations
 import enum
 import re
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass, replace
 from typing import Protocol, TypeVar
 
@@ -265,11 +267,42 @@ def launched_units(
             yield condition, launched.named(interface), interface, static
 
 
-def node_branches(
-    space: ConditionSpace, node: NodeDecl
-) -> Iterator[tuple[BDD, LaunchedNode, list[Raw | None]]]:
+Branch = tuple[BDD, LaunchedNode, list[Raw | None]]
+"""One branch of a ``<node>``'s fields: its condition, the node and the fields' values."""
+_REMEMBERED: ContextVar[dict[int, tuple[NodeDecl, list[Branch]]] | None] = ContextVar(
+    "branches", default=None
+)
+
+
+@contextmanager
+def branches_remembered() -> Iterator[None]:
+    """Within it, each ``<node>``'s branches (:func:`node_branches`) are crossed once: the
+    checks of one entry file ask for them about ten times (the graph, the simulation, each
+    check), which was most of ``rosvar check``'s own work on a large system. Scoped (one
+    entry file at a time) so that the branches of every model are not kept at once."""
+    if _REMEMBERED.get() is not None:
+        yield
+        return
+    token = _REMEMBERED.set({})
+    try:
+        yield
+    finally:
+        _REMEMBERED.reset(token)
+
+
+def node_branches(space: ConditionSpace, node: NodeDecl) -> Iterator[Branch]:
     """Per branch of a ``<node>``'s fields that can hold: its condition, the node and the
     fields' values."""
+    remembered = _REMEMBERED.get()
+    if remembered is None:
+        return _branches(space, node)
+    found = remembered.get(id(node))
+    if found is None:  # the node is kept with its branches: its id stays its own
+        found = remembered[id(node)] = (node, list(_branches(space, node)))
+    return iter(found[1])
+
+
+def _branches(space: ConditionSpace, node: NodeDecl) -> Iterator[Branch]:
     keys = node.schema.launched
     for condition, values in combine([node.field(key) for key in keys], list):
         condition &= node.condition

@@ -342,7 +342,7 @@ class Interpretation(Generic[S]):
                 is_false = self.space.predicate("false", leaf)
                 self.space.constrain(~(is_true & is_false))
                 true |= condition & is_true
-                invalid |= condition & ~is_true & ~is_false
+                invalid |= condition & ~(is_true | is_false)  # the condition conjoined once
         if invalid != self.space.false:
             message = f"{label}: value is not a 'bool' type"
             self.fail(invalid, "bool-invalid", message, tested=Tested(label, value))
@@ -392,11 +392,8 @@ class Interpretation(Generic[S]):
                 if not (_truthy(leaf) or _falsy(leaf)):
                     invalid |= condition
             else:
-                invalid |= (
-                    condition
-                    & ~self.space.predicate("true", leaf)
-                    & ~self.space.predicate("false", leaf)
-                )
+                neither = self.space.predicate("true", leaf) | self.space.predicate("false", leaf)
+                invalid |= condition & ~neither
         return invalid
 
     # -- walking ------------------------------------------------------------------------

@@ -21,14 +21,13 @@ from typing import Final
 
 import yaml
 
-from rosvar.analyses.communication import Edge, Gap, LaunchedNode, entry_names
+from rosvar.analyses.communication import Edge, Gap, entry_names, node_branches
 from rosvar.analyses.robot_description.commands import CommandError, split
 from rosvar.bounded_yaml import YamlLimitError, check_limits
 from rosvar.diagnostics import Location, Severity
 from rosvar.files import Confinement, read_file
 from rosvar.interpreter.model import LaunchModel, NodeDecl, Raw
 from rosvar.logic.bdd import BDD
-from rosvar.logic.choice import combine
 from rosvar.logic.conditions import ConditionSpace
 from rosvar.workspace.interfaces.model import Entry, Origin, Role
 
@@ -153,14 +152,12 @@ class Bridges:
     def _node(self, model: LaunchModel, node: NodeDecl, edges: list[Edge], gaps: list[Gap]) -> None:
         keys = node.schema.launched
         remaps = [(remap.condition, remap.source, remap.target) for remap in node.remaps]
-        for condition, values in combine([node.field(key) for key in keys], list):
-            condition &= node.condition
+        for condition, launched, values in node_branches(self.space, node):
+            if (launched.package, launched.type) not in BRIDGES:
+                continue
             if not self.space.satisfiable(condition):
                 continue
             fields = dict(zip(keys, values, strict=True))
-            launched = LaunchedNode.of(node.schema, fields)
-            if (launched.package, launched.type) not in BRIDGES:
-                continue
             if not launched.name:
                 launched = replace(launched, name=NODE_NAME)
             for where, bridged, location in self._bridged(node, fields, condition, gaps):

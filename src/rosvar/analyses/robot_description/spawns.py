@@ -17,7 +17,7 @@ from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from typing import Final
 
-from rosvar.analyses.communication import Gap, LaunchedNode, find_interface
+from rosvar.analyses.communication import Gap, LaunchedNode, find_interface, node_branches
 from rosvar.analyses.robot_description.commands import (
     CommandError,
     XacroCommand,
@@ -131,6 +131,11 @@ class Spawns:
     def _node(self, model: LaunchModel, node: NodeDecl) -> Iterator[Spawn]:
         """A spawner's spawns: per branch of its fields, and of its ``args`` grouped by the
         options that say what it spawns (``-x $(arg x)`` makes branches that do not)."""
+        if not any(
+            (launched.package, launched.type) in SPAWNERS
+            for _condition, launched, _values in node_branches(self.space, node)
+        ):
+            return  # no spawner in any configuration: its fields are not crossed again
         keys = [key for key in node.schema.launched if key != "args"]
         for condition, values in combine([node.field(key) for key in keys], list):
             condition &= node.condition
