@@ -310,6 +310,34 @@ def test_what_the_restricted_evaluator_refuses_is_eval_refused(tmp_path: Path) -
     ]
 
 
+DUNDERS = """<launch>
+  <arg name="root" default="/ws__old/share"/>
+  <node pkg="pkg" exec="e" name="n">
+    <param name="joined" value="$(eval &quot;'$(var root)' + '/m__n'&quot;)"/>
+    <param name="counted" value="$(eval &quot;len('a__b')&quot;)"/>
+    <param name="compared" value="$(eval &quot;'$(var root)' == '/ws__old/share'&quot;)"/>
+  </node>
+</launch>"""
+
+
+@pytest.mark.oracle
+@pytest.mark.parametrize("arguments", [{}, {"root": "/w__"}, {"root": "__x"}])
+def test_a_double_underscore_in_a_string_is_evaluated_as_ros2_does(
+    tmp_path: Path, arguments: dict[str, str]
+) -> None:
+    """``PythonExpression`` has no text check of its own (roslaunch's ``$(eval)`` refuses a
+    ``__`` anywhere): a path holding one, literal or given, is evaluated, as it is under a
+    workspace or temporary folder named so; a name holding one stays refused."""
+    it = launch(tmp_path, DUNDERS)
+    expected = it.matches_oracle(arguments)
+    [node] = expected["nodes"]
+    assert "__" in node["parameters"]["joined"]
+    bad = '<node pkg="p" exec="e" name="n" namespace="/$(eval \'__import__(&quot;os&quot;)\')"/>'
+    (tmp_path / "bad").mkdir()
+    model = _models(tmp_path / "bad", {"main.launch.xml": bad})["main.launch.xml"]
+    assert [error.code for error in model.errors] == ["eval-refused"]
+
+
 EVAL_MODULES_XML = """<launch><arg name="x" default="4"/>
   <node pkg="pkg" exec="e" name="n" namespace="/a$(eval {})"/></launch>"""
 EVAL_MODULES_PY = """from launch import LaunchDescription

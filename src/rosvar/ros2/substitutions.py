@@ -977,7 +977,7 @@ def _module_failure(text: str, modules: str) -> Fail | None:
     if DEFAULT_MODULES in names:
         return None
     try:
-        read = referenced_names(text, EVAL_NAMESPACES) & MATH_NAMES
+        read = referenced_names(text, EVAL_NAMESPACES, dunder_text=False) & MATH_NAMES
     except EvalRefused:
         return None  # the evaluation says why
     for name in sorted(read):
@@ -1010,6 +1010,7 @@ PYTHON_EXPRESSION = EvalEnvironment(
     _no_arg,
     symbols=_no_arg,
     namespaces={"math": {name: name for name in dir(math) if "__" not in name}},
+    dunder_text=False,
 )
 """What ``PythonExpression`` evaluates in: ``eval(text, {}, locals)`` whose locals are the
 ``math`` module and its names (its default ``python_modules``), under Python's builtins; no

@@ -186,7 +186,9 @@ class Evaluator:
         # the names are those of the text with a number in its place
         probe = "".join(p if isinstance(p, str) else "0" for p in parts(expression))
         try:
-            names = sorted(referenced_names(probe.strip(), frozenset(NAMESPACES)))
+            names = sorted(
+                referenced_names(probe.strip(), frozenset(NAMESPACES), dunder_text=False)
+            )
         except EvalRefused as refused:
             if refused.message.startswith(_SYNTAX_ERRORS):
                 return self._fail(f"{refused.message} when evaluating expression '{inner}'")

@@ -209,7 +209,9 @@ def environment(values: Mapping[str, object]) -> EvalEnvironment:
             raise KeyError(name)
         raise EvalRefused(f"xacro's '{name}' is not evaluated by rosvar")
 
-    return EvalEnvironment(lookup_arg=_no_arg, symbols=symbols, namespaces=NAMESPACES)
+    return EvalEnvironment(
+        lookup_arg=_no_arg, symbols=symbols, namespaces=NAMESPACES, dunder_text=False
+    )
 
 
 _EVALUATED_GLOBALS: Final = XACRO_GLOBALS - {

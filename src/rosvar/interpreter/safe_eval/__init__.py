@@ -95,10 +95,13 @@ def referenced_args(expr: str) -> frozenset[str]:
     return frozenset(analysis.args)
 
 
-def referenced_names(expr: str, namespaces: frozenset[str] = frozenset()) -> frozenset[str]:
+def referenced_names(
+    expr: str, namespaces: frozenset[str] = frozenset(), dunder_text: bool = True
+) -> frozenset[str]:
     """Every free name the expression reads or calls (xacro's properties may shadow any of
-    them); raises :class:`EvalRefused` like :func:`referenced_args`."""
-    _tree, _source, analysis = _checked(expr, namespaces)
+    them); raises :class:`EvalRefused` like :func:`referenced_args`; ``dunder_text`` as
+    :attr:`EvalEnvironment.dunder_text`."""
+    _tree, _source, analysis = _checked(expr, namespaces, dunder_text)
     return frozenset(analysis.names)
 
 
@@ -135,7 +138,7 @@ def _evaluated(
     expr: str, env: EvalEnvironment, run: Callable[[_Interpreter, ast.Expression], _T]
 ) -> _T:
     try:
-        tree, source, _analysis = _checked(expr, frozenset(env.namespaces))
+        tree, source, _analysis = _checked(expr, frozenset(env.namespaces), env.dunder_text)
     except CallRefused as refused:  # told in the words of what this environment allows
         message = f"calling '{refused.name}' is not allowed (only {allowed_calls(env)})"
         raise EvalRefused(message, refused.col) from None

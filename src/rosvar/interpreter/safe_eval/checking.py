@@ -61,18 +61,20 @@ class _Source:
 
 @functools.lru_cache(maxsize=4096)
 def _checked(
-    expr: str, namespaces: frozenset[str] = frozenset()
+    expr: str, namespaces: frozenset[str] = frozenset(), dunder_text: bool = True
 ) -> tuple[ast.Expression, _Source, _Analyser]:
     """Parsed and checked once per text (read-only afterwards): an expression is evaluated
     for every combination of the values of the args it reads, in every includer.
-    ``namespaces``: names whose members may be read (``math.pi``, xacro's)."""
-    tree, source = _parse(expr)
+    ``namespaces``: names whose members may be read (``math.pi``, xacro's);
+    ``dunder_text``: whether a ``__`` anywhere in the text is refused (see
+    :attr:`EvalEnvironment.dunder_text`); identifiers with one always are."""
+    tree, source = _parse(expr, dunder_text)
     return tree, source, _analyse(tree, source, namespaces)
 
 
-def _parse(expr: str) -> tuple[ast.Expression, _Source]:
+def _parse(expr: str, dunder_text: bool = True) -> tuple[ast.Expression, _Source]:
     """Parse like ``eval`` would (leading blanks stripped); never compiles to code."""
-    dunder = expr.find("__")
+    dunder = expr.find("__") if dunder_text else -1
     if dunder >= 0:
         raise EvalRefused(_DUNDER_MESSAGE, dunder)
     text = expr.lstrip(" \t")

@@ -33,6 +33,10 @@ class EvalEnvironment:
     namespaces: Mapping[str, Mapping[str, str]] = field(default_factory=dict)
     """Namespaces whose members an expression reads as ``ns.member`` (xacro's ``math.pi``,
     ``python.len``): each member stands for the global name it maps to."""
+    dunder_text: bool = True
+    """Whether a ``__`` anywhere in the text is refused, as roslaunch's ``$(eval)`` refuses it
+    (a path holding ``__`` too); ROS 2's ``PythonExpression`` and xacro refuse only names
+    (identifiers, attributes) that hold one, which the whitelist refuses in every case."""
 
 
 _HOST_FUNCTION_NAMES: Final = frozenset({"arg", "env", "optenv", "find", "anon", "dirname"})
