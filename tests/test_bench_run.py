@@ -4,18 +4,14 @@ within twice ``analyze``)."""
 
 from __future__ import annotations
 
-import importlib.util
 import sys
 from pathlib import Path
 
 import pytest
 
-BENCH = Path(__file__).resolve().parent.parent / "bench"
-_spec = importlib.util.spec_from_file_location("rosvar_bench_run", BENCH / "run.py")
-assert _spec is not None and _spec.loader is not None
-run = importlib.util.module_from_spec(_spec)
-sys.modules[_spec.name] = run
-_spec.loader.exec_module(run)
+import bench_scripts
+
+run = bench_scripts.load("run")
 
 
 def _outcome(name: str, seconds: float | None, **limits: object) -> object:

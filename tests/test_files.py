@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from rosvar.files import Confinement, FileCode, FileRefused, read_file
+from rosvar.files import Confinement, FileCode, FileRefused, python_text, read_file
 
 
 def _refused(code: FileCode, path: str, confinement: Confinement | None = None) -> str:
@@ -103,3 +103,11 @@ def test_file_grown_past_the_limit_after_stat_is_refused(
 def test_missing_file_is_the_systems_error(tmp_path: Path) -> None:
     with pytest.raises(FileNotFoundError):
         read_file(str(tmp_path / "nope"))
+
+
+def test_a_text_read_has_the_line_ends_python_text_mode_gives(tmp_path: Path) -> None:
+    path = tmp_path / "f.txt"
+    path.write_bytes(b"a\r\nb\rc\n\xc3\xa9")
+    with open(path) as handle:  # what a launch file's open().read() gets
+        expected = handle.read()
+    assert python_text(read_file(str(path))) == expected == "a\nb\nc\né"

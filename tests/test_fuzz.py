@@ -7,19 +7,14 @@ diagnostics, never a crash. The long campaign (100 000 mutants) is run off CI.
 
 from __future__ import annotations
 
-import importlib.util
 import resource
-import sys
 from pathlib import Path
 
 import pytest
 
-BENCH = Path(__file__).resolve().parent.parent / "bench" / "fuzz.py"
-_spec = importlib.util.spec_from_file_location("rosvar_bench_fuzz", BENCH)
-assert _spec is not None and _spec.loader is not None
-fuzz = importlib.util.module_from_spec(_spec)
-sys.modules[_spec.name] = fuzz
-_spec.loader.exec_module(fuzz)
+import bench_scripts
+
+fuzz = bench_scripts.load("fuzz")
 
 MUTANTS = 2000
 MEMORY_GROWTH_MB = 500

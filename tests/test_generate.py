@@ -4,14 +4,13 @@ rosvar measures must be loadable)."""
 
 from __future__ import annotations
 
-import importlib.util
 import re
-import sys
 from functools import cache
 from pathlib import Path
 
 import pytest
 
+import bench_scripts
 from rosvar.frontends.entity import Entity
 from rosvar.frontends.xml import parse_xml_file
 from rosvar.ros.version import RosVersion
@@ -20,12 +19,7 @@ from rosvar.workspace import discover
 from rosvar.workspace.executables import executables
 from rosvar.workspace.launch_files import LaunchFormat
 
-BENCH = Path(__file__).resolve().parent.parent / "bench" / "generate.py"
-_spec = importlib.util.spec_from_file_location("rosvar_bench_generate", BENCH)
-assert _spec is not None and _spec.loader is not None
-generate = importlib.util.module_from_spec(_spec)
-sys.modules[_spec.name] = generate
-_spec.loader.exec_module(generate)
+generate = bench_scripts.load("generate")
 
 _VAR = re.compile(r"\$\(var (\w+)\)")
 _SHARE = re.compile(r"\$\(find-pkg-share (\w+)\)")

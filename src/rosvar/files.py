@@ -64,6 +64,10 @@ class Confinement:
     installed: Callable[[str], str] | None = field(default=None, compare=False, repr=False)
     _resolved: dict[str, str] = field(default_factory=dict, compare=False, repr=False)
     _allowed: dict[str, str] = field(default_factory=dict, compare=False, repr=False)
+    _trees: _Trees = field(init=False, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "_trees", _Trees(self.roots))
 
     @staticmethod
     def of(
@@ -95,7 +99,7 @@ class Confinement:
             return real
         real = self.resolve(self.source(path))
         _check_system(real)
-        if not self.allow_outside and not any(_below(real, root) for root in self.roots):
+        if not self.allow_outside and not self._trees.hold(real):
             raise FileRefused(
                 FileCode.OUTSIDE,
                 "outside the workspace (--allow-outside-workspace allows it)",
@@ -116,14 +120,27 @@ def real_path_from(path: str, real_directory: Callable[[str], str]) -> str:
     return os.path.realpath(joined) if os.path.islink(joined) else joined
 
 
-def _below(path: str, root: str) -> bool:
-    return path == root or path.startswith(root.rstrip(os.sep) + os.sep)
+class _Trees:
+    """Directories, to tell whether a path is one of them or below one in a single test
+    (a workspace has dozens of roots: Husky's confinement has 48)."""
+
+    __slots__ = ("_prefixes", "_roots")
+
+    def __init__(self, roots: Iterable[str]) -> None:
+        self._roots = frozenset(roots)
+        self._prefixes = tuple(root.rstrip(os.sep) + os.sep for root in self._roots)
+
+    def hold(self, path: str) -> bool:
+        return path in self._roots or path.startswith(self._prefixes)
+
+
+_SYSTEM = _Trees(SYSTEM_TREES)
 
 
 def _check_system(real: str) -> None:
-    for tree in SYSTEM_TREES:
-        if _below(real, tree):
-            raise FileRefused(FileCode.OUTSIDE, f"below {tree}, which rosvar never reads")
+    if _SYSTEM.hold(real):
+        tree = next(t for t in SYSTEM_TREES if _Trees((t,)).hold(real))
+        raise FileRefused(FileCode.OUTSIDE, f"below {tree}, which rosvar never reads")
 
 
 def read_file(
@@ -151,6 +168,13 @@ def read_file(
     if len(data) > limit:
         raise _too_large(len(data), limit)
     return data
+
+
+def python_text(data: bytes, encoding: str = "utf-8") -> str:
+    """``data`` as Python's ``open(path).read()`` gives it: decoded, its ``\r\n`` and ``\r``
+    read as ``\n`` (universal newlines), as launch's ``FileContent`` and a launch file's
+    own reads see a file. Raises ``UnicodeDecodeError``."""
+    return data.decode(encoding).replace("\r\n", "\n").replace("\r", "\n")
 
 
 def open_regular(path: str, real: str | None = None) -> BinaryIO:

@@ -33,7 +33,7 @@ from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.atoms import PREDICATES, FileAtom, PredicateAtom
 from rosvar.logic.bdd import BDD
 from rosvar.logic.conditions import ConditionSpace
-from rosvar.logic.inputs import OTHER, UNSET, ArgInput, Input
+from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Input
 from rosvar.logic.printer import Printer
 from rosvar.logic.terms import Hole
 from rosvar.outputs.describe import describe_model
@@ -86,6 +86,18 @@ def test_describe_true_false_and_other_values() -> None:
     assert space.describe(~space.slot(WORLD, "empty")) == "only for other values"
 
 
+def test_an_environment_variable_given_any_value_reads_as_set() -> None:
+    """``$X=<other>`` would say "some other value" where no value is listed: it is any."""
+    free = EnvInput("TURTLEBOT3_MODEL")
+    space = make_space({**DOMAINS, free: (UNSET, OTHER)})
+    assert space.describe(space.slot(free, OTHER)) == "$TURTLEBOT3_MODEL set"
+    assert space.describe(space.slot(free, UNSET)) == "$TURTLEBOT3_MODEL=<unset>"
+    assert space.describe(~space.slot(HOME, UNSET)) == "$ROBOT_HOME set"
+    assert space.describe(space.slot(HOME, OTHER)) == "$ROBOT_HOME=<other>"  # not /home/r
+    teleop = space.slot(TELEOP, "true")
+    assert space.describe(teleop & space.slot(free, OTHER)) == "$TURTLEBOT3_MODEL set ∧ use_teleop"
+
+
 def test_describe_predicates() -> None:
     space = make_space()
     p = space.predicate("test_nonempty", Hole(MODEL))
@@ -101,7 +113,7 @@ def test_describe_disjunction_parenthesises_conjunctions() -> None:
 
 
 # -- round trip: parse a description back ------------------------------------------------------
-_PART = re.compile(r"^(?P<neg>¬?)(?P<name>[$\w]+)(?:(?P<op>=|≠|∈)(?P<rest>.*))?$")
+_PART = re.compile(r"^(?P<neg>¬?)(?P<name>[$\w]+)(?:(?P<op>=|≠|∈| set$)(?P<rest>.*))?$")
 
 
 def _slot_named(space: ConditionSpace, input_: Input, text: str) -> BDD:
@@ -132,6 +144,8 @@ def parse(space: ConditionSpace, text: str) -> BDD:
             if op is None:
                 word = "false" if match["neg"] else "true"
                 cube &= _slot_named(space, input_, word)
+            elif op == " set":
+                cube &= ~space.slot(input_, UNSET)
             elif op == "=":
                 cube &= _slot_named(space, input_, rest)
             elif op == "≠":
@@ -337,6 +351,8 @@ class _Reader:
         atom = self._atom(part[1:], chosen) if part.startswith("¬") else None
         if atom is not None:
             return ~atom
+        if part.endswith(" set") and part.removesuffix(" set") in named:
+            return ~space.slot(named[part.removesuffix(" set")], UNSET)
         for op in ("∈", "≠", "="):
             name, found, rest = part.partition(op)
             if found and name in named:

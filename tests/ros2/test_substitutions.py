@@ -380,3 +380,28 @@ def launch_oracle_ok(it: Launch) -> bool:
     if not ORACLE.is_dir():
         pytest.skip(f"the ROS 2 oracle {ORACLE} is absent")
     return bool(run_oracle(it.main, {}, [it.main.parent.parent])["ok"])
+
+
+BACKSLASHES = r"""<launch>
+  <arg name="ext" default="png"/>
+  <node pkg="pkg" exec="e" name="n" namespace="a\b">
+    <param name="plain" value="a\\b"/>
+    <param name="typed" value="C:\\ros\\x" type="str"/>
+    <param name="lone" value="a\b"/>
+    <param name="pattern" value=".*\\.$(var ext)"/>
+  </node>
+</launch>"""
+
+
+@pytest.mark.oracle
+def test_a_backslash_escapes_the_next_character_in_every_text(tmp_path: Path) -> None:
+    """launch's grammar reads ``\\x`` as ``x`` in a text with no substitution too
+    (``value="a\\\\b"`` is ``a\\b``), as in one with substitutions."""
+    it = launch(tmp_path, BACKSLASHES)
+    expected = it.matches_oracle({})
+    [node] = expected["nodes"]
+    assert node["parameters"]["plain"] == "a\\b"
+    result = it.analysis.resolve([str(it.main)], {})
+    [resolved] = result.nodes
+    assert resolved.parameters is not None
+    assert resolved.parameters["typed"] == "C:\\ros\\x"

@@ -59,6 +59,10 @@ FALSE_WORDS = ("false", "0")
 class Substituter(Protocol[S_contra]):
     """A dialect's substitution language: attribute text to its values in a scope."""
 
+    escapes: bool
+    """Whether a backslash escapes the next character (ROS 2's grammar): then a text holding
+    one is not literal, even without a substitution."""
+
     def resolve(self, text: str | None, scope: S_contra) -> Choice[Raw | Fail] | None: ...
 
 
@@ -130,6 +134,7 @@ class Interpretation(Generic[S]):
         # A cycle (broken by ``close``): left to the garbage collector, it could free BDD
         # nodes after their manager, which CUDD reports as an error.
         self.substituter = substituter(self)
+        self._escapes = self.substituter.escapes
         inputs: dict[str, ArgInput] = {}
         self.model = LaunchModel(
             file=file, space=space, inputs=inputs, domains={}, loads=space.true
@@ -294,8 +299,8 @@ class Interpretation(Generic[S]):
         return Choice.const(self.space, value)
 
     def resolve(self, text: str | None, scope: S, context: str = "") -> Choice[Raw] | None:
-        if text is not None and "$" not in text:  # most texts are literal: nothing can fail
-            return Choice.const(self.space, text)
+        if text is not None and "$" not in text and not (self._escapes and "\\" in text):
+            return Choice.const(self.space, text)  # most texts are literal: nothing can fail
         value = self.substituter.resolve(text, scope)
         return None if value is None else self.strip(value, context)
 
@@ -303,7 +308,7 @@ class Interpretation(Generic[S]):
         text = entity.attributes.get(name)
         if text is None:  # most optional attributes are absent: no message to format
             return None
-        if "$" not in text:  # nor does a literal need one
+        if "$" not in text and not (self._escapes and "\\" in text):  # nor does a literal
             return Choice.const(self.space, text)
         return self.resolve(text, scope, f"<{entity.tag}> attribute '{name}'")
 
@@ -337,7 +342,7 @@ class Interpretation(Generic[S]):
                 is_false = self.space.predicate("false", leaf)
                 self.space.constrain(~(is_true & is_false))
                 true |= condition & is_true
-                invalid |= condition & ~is_true & ~is_false
+                invalid |= condition & ~(is_true | is_false)  # the condition conjoined once
         if invalid != self.space.false:
             message = f"{label}: value is not a 'bool' type"
             self.fail(invalid, "bool-invalid", message, tested=Tested(label, value))
@@ -387,11 +392,8 @@ class Interpretation(Generic[S]):
                 if not (_truthy(leaf) or _falsy(leaf)):
                     invalid |= condition
             else:
-                invalid |= (
-                    condition
-                    & ~self.space.predicate("true", leaf)
-                    & ~self.space.predicate("false", leaf)
-                )
+                neither = self.space.predicate("true", leaf) | self.space.predicate("false", leaf)
+                invalid |= condition & ~neither
         return invalid
 
     # -- walking ------------------------------------------------------------------------

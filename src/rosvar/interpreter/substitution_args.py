@@ -331,6 +331,8 @@ def shared_texts(files: Snapshot) -> Resolved:
 class Substituter:
     """Resolves attribute text in a scope, for all configurations at once."""
 
+    escapes = False  # roslaunch keeps a backslash as it is
+
     def __init__(self, host: Host, shared: Resolved | None = None) -> None:
         """``shared``: the values of texts other walks of the same analysis (condition
         space and packages) resolved, to reuse and add to."""

@@ -87,7 +87,6 @@ class Analysis:
         builds all its models before ``work`` runs on one (the readable form of conditions
         is computed once the facts stop growing)."""
         files = self.workspace.launch_files
-        self.domains.read_all()
 
         def worked(file: str) -> Result:
             return work(self.model(file))
@@ -96,7 +95,8 @@ class Analysis:
             if progress is not None:
                 progress(index, len(files), files[index])
 
-        with collector_paused():
+        with collector_paused():  # the parsed trees are long-lived too
+            self.domains.read_all()
             return forked_map(files, worked, jobs, shown, prepare=self.model)
 
     def label(self, file: str) -> str:

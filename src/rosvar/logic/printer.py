@@ -15,7 +15,7 @@ from typing import NamedTuple, Protocol, cast
 
 from rosvar.logic.atoms import PREDICATES, Atom, FileAtom, PredicateAtom, SlotAtom
 from rosvar.logic.bdd import BDD, cofactors, layout, restrict
-from rosvar.logic.inputs import OTHER, ArgInput, EnvInput, Input, Slot
+from rosvar.logic.inputs import OTHER, UNSET, ArgInput, EnvInput, Input, Slot
 from rosvar.memo import Memo
 
 BOOLEAN_WORDS = ("true", "false")
@@ -23,6 +23,8 @@ MAX_FULL = 200  # longer formulas over <other> values help nobody
 MAX_CUBES = 256  # beyond this many disjuncts a formula is no longer readable
 FULL_CUBES = MAX_FULL // 4  # a disjunct takes at least 4 characters (" ∨ " and a name)
 TRUE_FOR_KNOWN = "true for every known value"
+ENV_SET = "set"
+"""An environment variable given any value (``$X set``): every slot but ``<unset>``."""
 AND = "∧"
 OR = " ∨ "
 
@@ -533,6 +535,8 @@ def _render_slots(
     name = str(input_)
     if qualify and isinstance(input_, ArgInput):
         name = f"{input_.file}:{input_.name}"
+    if isinstance(input_, EnvInput) and UNSET in domain and slots == set(domain) - {UNSET}:
+        return f"{name} {ENV_SET}"  # not `$X=<other>` where no value is listed: any value
     if len(slots) == 1:
         (slot,) = slots
         if isinstance(slot, str) and slot.lower() in BOOLEAN_WORDS and _is_boolean(domain):

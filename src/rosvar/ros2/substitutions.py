@@ -24,7 +24,7 @@ from typing import cast
 import yaml
 
 from rosvar.bounded_yaml import check_limits
-from rosvar.files import FileCode, FileRefused, read_file
+from rosvar.files import FileCode, FileRefused, python_text, read_file
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import (
@@ -356,6 +356,8 @@ def _content(value: Choice[Raw | None] | None) -> object:
 
 class Ros2Substituter:
     """Resolves attribute text in a :class:`Context`, for all configurations at once."""
+
+    escapes = True
 
     def __init__(self, host: Interpretation[Context]) -> None:
         self.host = host
@@ -749,7 +751,7 @@ def _file_content(workspace: Workspace, args: list[str]) -> str | Fail:
             UNSUPPORTED,
         )
     try:
-        return read_file(path, workspace.confinement()).decode()
+        return python_text(read_file(path, workspace.confinement()))
     except FileRefused as error:
         return Fail(f"$(file-content {path}): {error}", error.code)
     except (OSError, UnicodeDecodeError) as error:

@@ -58,14 +58,17 @@ def declare(
     default: Choice[Raw] | None,
 ) -> None:
     """``add_arg`` on the current path."""
-    declared = scope.declared.get(name, it.space.false)
-    if not scope.pass_all_args:
-        it.fail(declared, "arg-duplicate", f"arg '{name}' has already been declared")
-    scope.declared[name] = it.pc if declared == it.space.false else declared | it.pc
+    false = it.space.false
+    declared = scope.declared.get(name, false)
+    if declared == false:  # most args: declared once (no message to format)
+        scope.declared[name] = it.pc
+    else:
+        if not scope.pass_all_args:
+            it.fail(declared, "arg-duplicate", f"arg '{name}' has already been declared")
+        scope.declared[name] = declared | it.pc
     target = scope.include_args if scope.include_args is not None else scope.args
     existing = target.get(name)
-    missing: ArgValue = Choice.const(it.space, MISSING)
-    old = existing if existing is not None else missing
+    old: ArgValue = existing if existing is not None else Choice.const(it.space, MISSING)
     if value is not None:
         if existing is not None and not scope.pass_all_args:
             it.fail(
@@ -83,4 +86,4 @@ def declare(
             new = existing.bind(lambda v: default if v is MISSING else Choice.const(it.space, v))
         target[name] = ite(it.space, it.pc, new, old)
     elif existing is None:
-        target[name] = missing
+        target[name] = old  # declared, no value: MISSING

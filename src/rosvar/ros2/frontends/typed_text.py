@@ -34,7 +34,11 @@ def typed_text(value: TypedValue | str) -> str:
     return text.removesuffix("\n...\n").rstrip("\n")
 
 
-def reads_as_other_value(literal: str) -> bool:
+def reads_as_other_value(literal: str, substitutions: bool = True) -> bool:
     """Whether ROS 2's YAML coercion would turn the literal string ``literal`` into another
-    value (``"10"``, ``"true"``, ``" x"``); the empty string is kept as it is."""
-    return literal != "" and "$(" not in literal and typed_text(literal) != literal
+    value (``"10"``, ``"true"``, ``" x"``, a text over lines); the empty string is kept as it
+    is. ``substitutions``: whether ``$(`` starts a substitution there (a YAML file's string)
+    or is text like any other (a Python string: a robot description's comment)."""
+    if literal == "" or (substitutions and "$(" in literal):
+        return False
+    return typed_text(literal) != literal

@@ -238,3 +238,132 @@ def test_launch_ros_names_before_galactic_are_read_as_their_successors(tmp_path:
         "Galactic, which later releases refuse: read as 'executable'"
     )
     assert not run_oracle(old.main, {}, [old.main.parent.parent])["ok"]  # jazzy refuses them
+
+
+PYTHON_VALUES = """import os
+from pathlib import Path
+
+import yaml
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from launch_ros.parameter_descriptions import ParameterValue
+
+
+def generate_launch_description():
+    share = get_package_share_directory('pkg')
+    with open(os.path.join(share, 'robot.urdf'), 'r') as infp:
+        robot_description = infp.read()
+    loaded = yaml.safe_load(open(os.path.join(share, 'values.yaml')))
+    digit = '1'
+    return LaunchDescription([
+        DeclareLaunchArgument('x', default_value='2'),
+        Node(package='pkg', executable='n', name='n', parameters=[{
+            'robot_description': robot_description,
+            'one': open(os.path.join(share, 'one.txt')).read(),
+            'digit': '1', 'word': 'true', 'blank': ' x', 'empty': '', 'null': 'null',
+            'tilde': '~', 'flow': '[1, 2]', 'map': '{a: 1}', 'colon': 'a: b', 'hash': '#x',
+            'backslash': 'a\\\\b',
+            'quoted': "'q'", 'lines': 'a\\n  b\\n\\nc', 'dollar': '$(var x)', 'tab': '\\tx',
+            'formatted': f'{digit}.5', 'joined': '\\n'.join(['1', '2']), 'converted': str(1.5),
+            'nested': {'a': '1', 'b': {'c': 'x\\ny', 'd': 'false'}},
+            'strings': ['1', 'true', 'a b', ''], 'numbers': [1, 2.5], 'loaded': loaded,
+            'with_substitution': ['1', LaunchConfiguration('x')],
+            'joined_path': os.path.join(share, 'a: b'), 'path': str(Path(share) / 'x #c'),
+            'beside': os.path.dirname(__file__) + '/x #c', 'share': share + ' #c',
+            'value': ParameterValue('1'), 'value_lines': ParameterValue('a\\n  b: $(c)\\n'),
+            'value_list': ParameterValue(['1', '2']),
+            'value_str': ParameterValue('1', value_type=str),
+            'value_substitution': ParameterValue(LaunchConfiguration('x')),
+        }]),
+    ])
+"""
+PYTHON_VALUE_FILES = {
+    "robot.urdf": '<robot name="r">\n  <!-- $(find x) -->\n  <link name="a"/>\n</robot>\n',
+    "values.yaml": "a: '1'\nb: 'true'\nc:\n  d: 'x y'\n  e: ['1', '2']\nf: '#x'\n",
+    "one.txt": "1\n",
+}
+
+
+@pytest.mark.oracle
+@pytest.mark.parametrize("arguments", [{}, {"x": "'a'"}])
+def test_python_values_in_parameters_are_kept_as_launch_ros_keeps_them(
+    tmp_path: Path, arguments: dict[str, str]
+) -> None:
+    """launch_ros dumps a Python string given as a parameter (a literal, a file's text, a
+    path ``os.path.join`` made, a value of a loaded YAML file) as YAML and reads it back:
+    it stays that string, newlines and ``$(`` included; only substitutions' text is read
+    by YAML rules. A list of ints and floats becomes floats."""
+    it = launch(tmp_path, PYTHON_VALUES, ".launch.py", files=PYTHON_VALUE_FILES)
+    expected = it.matches_oracle(arguments)
+    [node] = expected["nodes"]
+    assert node["parameters"]["robot_description"] == PYTHON_VALUE_FILES["robot.urdf"]
+
+
+def test_a_file_read_as_a_parameter_keeps_its_lines(tmp_path: Path) -> None:
+    it = launch(tmp_path, PYTHON_VALUES, ".launch.py", files=PYTHON_VALUE_FILES)
+    result = it.analysis.resolve([str(it.main)], {})
+    assert result.ok, result.errors
+    [node] = result.nodes
+    assert node.parameters is not None
+    expected = {
+        "robot_description": PYTHON_VALUE_FILES["robot.urdf"],
+        "one": "1\n",
+        "digit": "1",
+        "lines": "a\n  b\n\nc",
+        "dollar": "$(var x)",
+        "backslash": "a\\b",
+        "nested.b.c": "x\ny",
+        "numbers": [1.0, 2.5],
+        "loaded.c.e": ["1", "2"],
+        "with_substitution": 12,
+        "value": "1",
+        "value_list": ["1", "2"],
+        "value_lines": "a\n  b: $(c)\n",
+        "value_substitution": 2,
+    }
+    assert {name: node.parameters[name] for name in expected} == expected
+    assert str(node.parameters["joined_path"]).endswith("/pkg/a: b")
+
+
+NAMED_BY_ENVIRONMENT = """import os
+
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    model = os.environ['MODEL']
+    path = os.path.join(get_package_share_directory('pkg'), 'robot_' + model + '.urdf')
+    with open(path, 'r') as infp:
+        description = infp.read()
+    return LaunchDescription([
+        Node(package='pkg', executable='n', name='n',
+             parameters=[{'robot_description': description}]),
+    ])
+"""
+
+
+@pytest.mark.oracle
+@pytest.mark.parametrize("model", ["burger", "waffle"])
+def test_a_file_named_by_the_environment_is_read_as_python_reads_it(
+    tmp_path: Path, model: str
+) -> None:
+    """turtlebot3's ``robot_state_publisher.launch.py``: the file a launch-time value names
+    is read once a configuration names it (launch's ``FileContent``), its line ends as
+    Python's text mode gives them (``\\r\\n`` is ``\\n``), and stays a string."""
+    files = {
+        "robot_burger.urdf": '<robot name="b">\r\n  <!-- $(find x) -->\r\n</robot>\r\n',
+        "robot_waffle.urdf": '<robot name="w">\n  <link name="a"/>\r</robot>\n',
+    }
+    it = launch(tmp_path, NAMED_BY_ENVIRONMENT, ".launch.py", files=files)
+    expected = run_oracle(it.main, {}, [it.main.parent.parent], env={"MODEL": model})
+    [node] = expected["nodes"]
+    result = it.analysis.resolve([str(it.main)], {}, env={"MODEL": model})
+    assert result.ok, result.errors
+    assert canonical_nodes(resolution_nodes(result)) == canonical_nodes(expected)
+    text = files[f"robot_{model}.urdf"].replace("\r\n", "\n").replace("\r", "\n")
+    assert node["parameters"]["robot_description"] == text

@@ -136,27 +136,40 @@ def _named_parameters(call: Call, parent: Entity, tag: str, values: dict[Key, Va
         set_attribute(call, child, "name", name)
         if isinstance(value, dict):
             _named_parameters(call, child, tag, value)
-        elif isinstance(value, ParameterValue):
+        elif isinstance(value, ParameterValue) and value.type_name is not None:
             set_attribute(call, child, "value", value.value)
-            if value.type_name is not None:
-                child.attributes["type"] = value.type_name
-        elif isinstance(value, list | tuple) and all(
-            isinstance(item, bool | int | float | str) for item in value
-        ):
-            items: list[Scalar] = [item for item in value if isinstance(item, Scalar)]
-            child.attributes["value"] = typed_text(items)
-            child.typed = child.typed | {"value"}
-        else:
-            if isinstance(value, Conditional):  # a list chosen at launch time: its Python
-                chosen = launch_time.source(value)  # expression, as a parameter's value
-                value = value if chosen is None else Dynamic(chosen, None)
-            set_attribute(call, child, "value", value)
-            if isinstance(value, str) and reads_as_other_value(value):
-                child.attributes["type"] = "str"  # a literal stays a string, unlike XML's
-            elif isinstance(value, Dynamic) and value.kind is str:
-                # a launch-time Python string (`.perform(context)`, `str(x)`) too: launch_ros
-                # reads by YAML rules only the substitutions it performs itself
-                child.attributes["type"] = "str"
+            child.attributes["type"] = value.type_name
+        else:  # launch keeps a ParameterValue's Python value as launch_ros keeps a dict's
+            _parameter_value(
+                call, child, value.value if isinstance(value, ParameterValue) else value
+            )
+
+
+def _parameter_value(call: Call, child: Entity, value: Value) -> None:
+    """A parameter's value as launch_ros normalizes a dict's: a Python string, whatever it
+    holds (a file's text over lines), stays that string (launch_ros dumps it as YAML and
+    reads it back); only the text of substitutions is read by YAML rules. A list of ints
+    and floats is a list of floats."""
+    if isinstance(value, list | tuple) and all(
+        isinstance(item, bool | int | float | str) for item in value
+    ):
+        items: list[Scalar] = [item for item in value if isinstance(item, Scalar)]
+        numbers = [n for n in items if isinstance(n, int | float) and not isinstance(n, bool)]
+        if len(numbers) == len(items) and any(isinstance(n, float) for n in numbers):
+            items = [float(n) for n in numbers]
+        child.attributes["value"] = typed_text(items)
+        child.typed = child.typed | {"value"}
+        return
+    if isinstance(value, Conditional):  # a list chosen at launch time: its Python
+        chosen = launch_time.source(value)  # expression, as a parameter's value
+        value = value if chosen is None else Dynamic(chosen, None)
+    set_attribute(call, child, "value", value)
+    if isinstance(value, str) and reads_as_other_value(value, substitutions=False):
+        child.attributes["type"] = "str"  # a literal stays a string, unlike XML's
+    elif isinstance(value, Dynamic) and value.kind is str:
+        # a launch-time Python string (`.perform(context)`, `str(x)`) too: launch_ros
+        # reads by YAML rules only the substitutions it performs itself
+        child.attributes["type"] = "str"
 
 
 def _write_pairs(call: Call, entity: Entity, param: Param, value: Value) -> None:

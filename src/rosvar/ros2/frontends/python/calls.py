@@ -262,12 +262,14 @@ def _path_join(call: Call) -> Value:
 
 @_register("os", "join")
 def _os_path_join(call: Call) -> Value:
+    """A Python string, whose text substitutions give where its parts are known at launch
+    time only (a package's share directory)."""
     if all(isinstance(arg, str) for arg in call.args):
         return posixpath.join(*(str(arg) for arg in call.args))
     result = Text.of()
     for part in call.args:
         result = join_path(result, call.text(part))
-    return result
+    return launch_time.performed(result)
 
 
 @_register("os", "dirname")
@@ -275,8 +277,8 @@ def _dirname(call: Call) -> Value:
     path = call.arg(0, "p")
     if isinstance(path, str):
         return posixpath.dirname(path)
-    if path == Text.of(Sub("filename")):
-        return Text.of(Sub("dirname"))
+    if isinstance(path, Dynamic) and path.text == Text.of(Sub("filename")):
+        return launch_time.performed(Text.of(Sub("dirname")))
     return call.not_followed("os.path.dirname() of a computed path")
 
 

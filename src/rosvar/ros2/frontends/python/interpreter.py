@@ -450,7 +450,8 @@ class Interpreter:
     # ------------------------------------------------------------------ statements
 
     def run_module(self, tree: ast.Module) -> Scope:
-        scope = Scope({"__name__": MODULE_NAME, "__file__": Text.of(Sub("filename"))})
+        # the file's path is a Python string, not a substitution object
+        scope = Scope({"__name__": MODULE_NAME, "__file__": performed(Text.of(Sub("filename")))})
         try:
             self.block(tree.body, scope)
         except _Return:
@@ -1062,9 +1063,9 @@ class Interpreter:
         if not isinstance(value, Text) or not value.parts:
             return None
         first, rest = value.parts[0], value.parts[1:]
-        tail = "".join(part for part in rest if isinstance(part, str))
-        if len(tail) < len(rest) or not isinstance(first, Sub):
-            return None
+        if not isinstance(first, Sub) or not all(isinstance(part, str) for part in rest):
+            return None  # a substitution after the head: named at launch time
+        tail = "".join(str(part) for part in rest)
         if first.name == "dirname" and not first.args:
             return os.path.dirname(self.file.filename) + tail
         package = first.args[0].literal() if len(first.args) == 1 else None

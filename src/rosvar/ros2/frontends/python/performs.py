@@ -15,7 +15,7 @@ import json
 import os
 
 from rosvar.diagnostics import DiagnosticSink
-from rosvar.files import Confinement, FileRefused, read_file
+from rosvar.files import Confinement, FileRefused, python_text, read_file
 from rosvar.memo import Memo
 from rosvar.ros2.frontends.python import written as written_files
 from rosvar.ros2.frontends.python.interpreter import (
@@ -109,7 +109,7 @@ class _Reading:
         if read is not None:
             read.append(path)
         try:
-            return read_file(path, self.confinement, MAX_READ_BYTES).decode("utf-8-sig")
+            return python_text(read_file(path, self.confinement, MAX_READ_BYTES), "utf-8-sig")
         except (FileRefused, OSError, UnicodeDecodeError) as error:
             raise ValueError(f"{path} is not read: {error}") from None
 

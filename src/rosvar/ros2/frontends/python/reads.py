@@ -18,7 +18,7 @@ import yaml
 
 from rosvar.bounded_yaml import check_limits
 from rosvar.diagnostics import DiagnosticSink, Location
-from rosvar.files import FileRefused, read_file
+from rosvar.files import FileRefused, python_text, read_file
 from rosvar.ros2.frontends.python import launch_time
 from rosvar.ros2.frontends.python.default_files import DefaultFiles
 from rosvar.ros2.frontends.python.modules import ModulePath
@@ -49,6 +49,8 @@ class Interpreter(Protocol):
     def location(self, node: ast.AST) -> Location: ...
 
 
+FILE_CONTENT = "file-content"
+"""launch's ``FileContent``: the text of a file a configuration names, read when performed."""
 MAX_READ_BYTES = 1024 * 1024
 """Largest file a launch file's Python reads (a parameter file, a text)."""
 _READ_MODES = ("r", "rt", "tr")
@@ -72,9 +74,11 @@ def open_file(
 
 
 def text(interpreter: Interpreter, handle: FileHandle, node: ast.AST) -> Value:
-    """The text of ``handle``'s file, read through the one gate."""
+    """The text of ``handle``'s file, read through the one gate; of a file named at launch
+    time, the string launch's ``FileContent`` gives (``$(file-content)``, read through the
+    same gate once a configuration names it)."""
     if isinstance(handle.path, Text):
-        return interpreter.not_followed("the text of a file named at launch time", node)
+        return launch_time.performed(Text.of(Sub(FILE_CONTENT, (handle.path,))))
     modules = interpreter.modules
     if interpreter.rereading is not None:
         try:  # in one configuration: a file of the workspace, or one a helper wrote
@@ -84,7 +88,8 @@ def text(interpreter: Interpreter, handle: FileHandle, node: ast.AST) -> Value:
     if modules is None or modules.confinement is None:
         return interpreter.not_followed(f"a read of {handle.path} (no workspace)", node)
     try:
-        return read_file(handle.path, modules.confinement, MAX_READ_BYTES).decode("utf-8-sig")
+        data = read_file(handle.path, modules.confinement, MAX_READ_BYTES)
+        return python_text(data, "utf-8-sig")
     except FileRefused as refused:
         interpreter.sink.warning(
             str(refused.code), f"{handle.path}: {refused.message}", interpreter.location(node)
