@@ -32,11 +32,11 @@ def test_an_error_of_a_value_failing_here_keeps_no_frames(tmp_path: Path) -> Non
     gc.disable()
     try:
         analysis = Analysis(discover([str(package)]))
-        errors = analysis.resolve([str(main)], {"x": "_"}).errors
-        assert [error.message for error in errors] == [
-            "<node> attribute 'if': $(eval '__' == '_q'): $(eval ...) may not contain double "
-            "underscore expressions"
-        ]
+        errors = analysis.resolve([str(main)], {"x": "'"}).errors
+        [message] = [error.message for error in errors]
+        assert message.startswith(
+            "<node> attribute 'if': $(eval '_'' == '_q'): invalid Python expression"
+        )
         del analysis, errors
         gc.set_debug(gc.DEBUG_SAVEALL)
         gc.collect()
