@@ -463,7 +463,8 @@ class _Residues:
                 )
         p = np.asarray(taken, dtype=np.int64)
         everything = np.asarray([total % m for m in taken], dtype=np.int64)
-        values = np.empty((self.size, len(taken)), dtype=np.int64)
+        # residues below 2^31 are kept in half the memory, widened level by level to compute
+        values = np.empty((self.size, len(taken)), dtype=np.int32)
         values[0] = everything
         for level in self.levels:
             off, on = weight_at[level.level]
@@ -480,12 +481,12 @@ class _Residues:
                 continue
             weight_off, weight_on, inverse = factors[off, on]
             if off == on:  # (d_low + d_high) / 2: below 2p · 2^31
-                np.add(d_low, d_high, out=out)
+                mixed = np.add(d_low, d_high, dtype=np.int64)
             else:  # each product below 2^62, their sum's remainder times the inverse too
-                np.add(weight_off * d_low, weight_on * d_high, out=out)
-                np.remainder(out, p, out=out)
-            np.multiply(out, inverse, out=out)
-            np.remainder(out, p, out=out)
+                mixed = weight_off * d_low + weight_on * d_high
+                mixed %= p
+            mixed *= inverse
+            np.remainder(mixed, p, out=out)
         root = self.root
         residues = values[~root if root < 0 else root]
         if root < 0:
