@@ -513,16 +513,18 @@ class Views:
         parts = tuple(
             _shown(presences.verdicts[c], described) for c in self.presences.of_parts[index]
         )
-        users = tuple(
-            self.graph.elements[n].id
-            for n in self._users.get(index, ())
-            if entries[n] and entries[n][0]["presence"] != Presence.ABSENT
+        users = (
+            tuple(
+                self.graph.elements[n].id
+                for n in self._users.get(index, ())
+                if entries[n] and entries[n][0]["presence"] != Presence.ABSENT
+            )
+            if element.kind in _USED  # a node's users are its topics: not listed
+            else ()
         )
         presence = judged.verdict.presence
         given = self._given(element, presence, values, view.decisions, view.texts)
-        return self._element_entries(
-            element, _shown(judged, described), parts, given, users if element.kind in _USED else ()
-        )
+        return self._element_entries(element, _shown(judged, described), parts, given, users)
 
     def _lists(
         self,
