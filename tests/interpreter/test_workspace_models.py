@@ -14,6 +14,7 @@ import pytest
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.workspace import discover
+from workspace.interfaces.ros2_packages import MANIFEST
 
 NAMES = [f"arg_{letter}{index}" for index in range(4) for letter in "qzam"]
 
@@ -58,10 +59,7 @@ def test_an_entry_file_is_interpreted_again_only_for_late_names(
     it an input from the start. A change that saves a pass lowers these counts."""
     package = tmp_path / "p"
     package.mkdir()
-    (package / "package.xml").write_text(
-        "<package format='3'><name>p</name>"
-        "<export><build_type>ament_cmake</build_type></export></package>"
-    )
+    (package / "package.xml").write_text(MANIFEST.format(name="p", build="ament_cmake"))
     (package / "inc.launch.xml").write_text(
         '<launch><arg name="late" default="x"/><arg name="other" default="y"/>'
         '<node pkg="p" exec="e" name="n_$(var late)_$(var other)"/></launch>'
