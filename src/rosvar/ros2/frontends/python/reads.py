@@ -50,6 +50,7 @@ class Interpreter(Protocol):
 
 
 FILE_CONTENT = "file-content"
+"""launch's ``FileContent``: the text of a file a configuration names, read when performed."""
 MAX_READ_BYTES = 1024 * 1024
 """Largest file a launch file's Python reads (a parameter file, a text)."""
 _READ_MODES = ("r", "rt", "tr")
