@@ -5,7 +5,16 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+from collections import Counter
+from collections.abc import Mapping
 from pathlib import Path
+
+import pytest
+
+from rosvar.interpreter.model import LaunchModel
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.workspace import discover
+from workspace.interfaces.ros2_packages import MANIFEST
 
 NAMES = [f"arg_{letter}{index}" for index in range(4) for letter in "qzam"]
 
@@ -39,3 +48,38 @@ def test_args_read_before_an_include_declares_them_keep_one_order(tmp_path: Path
     assert len(outputs) == 1
     (uvl,) = outputs
     assert all(f"entry%2Elaunch%2Exml:{name}=true" in uvl for name in NAMES)
+
+
+def test_an_entry_file_is_interpreted_again_only_for_late_names(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Each pass of ``Analysis._interpret`` walks the whole include tree again (on
+    ros2dense-120 the passes thrown away were half the CPU): an entry file is interpreted
+    once unless an included file's arg is read before its declaration, then once more with
+    it an input from the start. A change that saves a pass lowers these counts."""
+    package = tmp_path / "p"
+    package.mkdir()
+    (package / "package.xml").write_text(MANIFEST.format(name="p", build="ament_cmake"))
+    (package / "inc.launch.xml").write_text(
+        '<launch><arg name="late" default="x"/><arg name="other" default="y"/>'
+        '<node pkg="p" exec="e" name="n_$(var late)_$(var other)"/></launch>'
+    )
+    include = '<include file="$(dirname)/inc.launch.xml"/>'
+    (package / "once.launch.xml").write_text(f"<launch>{include}{include}</launch>")
+    (package / "twice.launch.xml").write_text(
+        f'<launch><let name="seen" value="$(var late d)"/>{include}</launch>'
+    )
+    passes: Counter[str] = Counter()
+    interpret_with = Analysis._interpret_with
+
+    def counted(
+        self: Analysis, file: str, undeclared: Mapping[str, str]
+    ) -> tuple[LaunchModel, set[str]]:
+        passes[Path(file).name] += 1
+        return interpret_with(self, file, undeclared)
+
+    monkeypatch.setattr(Analysis, "_interpret_with", counted)
+    analysis = Analysis(discover([tmp_path], ros_package_path=""))
+    models = {Path(model.file).name: model for model in analysis.all_models()}
+    assert passes == {"inc.launch.xml": 1, "once.launch.xml": 1, "twice.launch.xml": 2}
+    assert {"late", "other"} <= models["twice.launch.xml"].inputs.keys()
