@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import random
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import pytest
@@ -35,6 +36,18 @@ def derived(ws: LaunchWorkspace) -> tuple[FeatureModel, Derivation]:
         ws.launch(name, body)
     model = extract(ws.analysis())
     return model, Derivation(model)
+
+
+def holding(model: FeatureModel, derivation: Derivation) -> Callable[[BDD, int], bool]:
+    """Whether a condition holds in a configuration given as the derivation's bit mask
+    (evaluated by dd, not by the code under test)."""
+    solver, position = model.solver, derivation.position
+
+    def holds(u: BDD, bits: int) -> bool:
+        values = {v: bool(bits >> position[v] & 1) for v in solver.variables}
+        return bool(solver.manager.let(values, u) == solver.manager.true)
+
+    return holds
 
 
 def test_decisions_agree_with_the_built_formula(ws: LaunchWorkspace) -> None:
@@ -97,11 +110,7 @@ def test_witnesses_of_conjunctions_are_valid_configurations(ws: LaunchWorkspace)
     model, derivation = derived(ws)
     solver = model.solver
     manager, formula = solver.manager, solver.formula
-    position = derivation.position
-
-    def holds(u: BDD, bits: int) -> bool:
-        values = {v: bool(bits >> position[v] & 1) for v in solver.variables}
-        return bool(manager.let(values, u) == manager.true)
+    holds = holding(model, derivation)
 
     rng = random.Random(5)
     decisions = derivation.initial
@@ -131,12 +140,9 @@ def test_examples_over_several_components_are_valid_configurations(ws: LaunchWor
     model, derivation = derived(ws)
     solver = model.solver
     manager, formula = solver.manager, solver.formula
-    position, components = derivation.position, solver.components
+    components = solver.components
     assert len(components) > 1
-
-    def holds(u: BDD, bits: int) -> bool:
-        values = {v: bool(bits >> position[v] & 1) for v in solver.variables}
-        return bool(manager.let(values, u) == manager.true)
+    holds = holding(model, derivation)
 
     rng = random.Random(6)
     found = 0
@@ -167,12 +173,8 @@ def test_repaired_witnesses_are_valid_configurations(ws: LaunchWorkspace) -> Non
     the literals of its component."""
     model, derivation = derived(ws)
     solver = model.solver
-    manager, formula = solver.manager, solver.formula
-    position = derivation.position
-
-    def holds(u: BDD, bits: int) -> bool:
-        values = {v: bool(bits >> position[v] & 1) for v in solver.variables}
-        return bool(manager.let(values, u) == manager.true)
+    formula = solver.formula
+    holds = holding(model, derivation)
 
     rng = random.Random(8)
     repaired = 0
