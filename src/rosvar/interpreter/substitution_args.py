@@ -635,6 +635,12 @@ def _concatenated(
         if isinstance(leaf, Fail):
             return leaf
     joined = parts(leaves)  # type: ignore[arg-type]  # no Fail left
+    for part in joined:
+        if type(part) is not str:
+            break
+    else:  # strings only (most combinations): their text, one level
+        whole = "".join(joined)  # type: ignore[arg-type]  # strings
+        return whole if len(whole) <= MAX_VALUE_SIZE else too_complex(text)
     size, depth = measure_parts(joined)
     if size > MAX_VALUE_SIZE or depth > MAX_TERM_DEPTH:
         return too_complex(text)
