@@ -357,7 +357,7 @@ class Substituter:
             return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
         if reads is not None:
             args = scope.args
-            key = (text, *[args.get(name) for name in reads])
+            key = (text, *map(args.get, reads))
             known = self._known.get(key)
             if known is None:
                 known = self._shared_resolved(key, (text, distinct, segments, find), scope)
