@@ -238,22 +238,18 @@ def check_models(
 ) -> list[Finding]:
     """The findings of every entry file (:class:`Checks`); one found again through a file
     including another (same check, name and places) is reported once, for the file that is
-    included. Its message may differ there (the partners an includer has), so it is not
-    part of what is the same; but the findings of the first file to report those are all
-    kept: two problems at one place (two parameter files that reach one node not) are two."""
-    found: list[Finding] = []
-    reported_by: dict[tuple[object, ...], int] = {}  # the first model's index
+    included."""
+    found: dict[tuple[object, ...], Finding] = {}
     included = _included(models)
     ordered = sorted(models, key=lambda m: real_path(m.file) not in included)
     checks = Checks(space, interfaces, confinement, described, dependency)
     for model in ordered:
         checks.gather(model)
-    for index, model in enumerate(ordered):
+    for model in ordered:
         for finding in checks.check(model):
             key = (finding.check, finding.name, finding.locations)
-            if reported_by.setdefault(key, index) == index:
-                found.append(finding)
-    return sorted(found, key=lambda f: (f.locations[0], f.check, f.name))
+            found.setdefault(key, finding)
+    return sorted(found.values(), key=lambda f: (f.locations[0], f.check, f.name))
 
 
 def _included(models: Iterable[LaunchModel]) -> set[str]:
