@@ -395,33 +395,3 @@ def test_the_page_s_checks_and_queries_are_those_of_the_commands(
     }
     assert any("controller base_controller" in f["message"] for f in command)
     assert shown == topics and "/robot/platform/joint_states" in topics
-
-
-def test_two_findings_at_one_place_are_both_listed(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
-) -> None:
-    """A node given two parameter files, neither with an entry for it: two findings at the
-    node's place, told apart by their messages, on the page as in ``rosvar check`` (a
-    finding reached from two entry files is listed once, but one file's are all kept)."""
-    from ros2.test_parameter_checks import MANIFEST, TWO_FILES
-
-    package = tmp_path / "bringup"
-    (package / "launch").mkdir(parents=True)
-    (package / "config").mkdir()
-    (package / "package.xml").write_text(MANIFEST)
-    (package / "launch" / "bringup.launch.xml").write_text(TWO_FILES)
-    for name, key in (("first", "/one"), ("second", "/two")):
-        (package / "config" / f"{name}.yaml").write_text(f"{key}:\n  ros__parameters:\n    a: 1\n")
-    command = checked(tmp_path, capsys)
-    with running(served(tmp_path)) as live:
-        page = checks(live, live.open()["session"])["findings"]
-    unmatched = sorted(
-        f["message"].split(":")[0] for f in page if f["check"] == "param-file-unmatched"
-    )
-    assert unmatched == [
-        "/talker gets none of the parameters of first.yaml",
-        "/talker gets none of the parameters of second.yaml",
-    ]
-    assert sorted((f["check"], f["message"]) for f in page) == sorted(
-        (f["check"], f["message"]) for f in command
-    )

@@ -151,28 +151,22 @@ class Inspector:
             return {"pending": list(self._findings.progress()), "choices": choices}
         decisions = self._configurator.decisions(state.choices)
         verdicts: dict[tuple[str, BDD], PresenceVerdict | None] = {}
-        # (check, name, places) → the findings of the one entry file they are shown from: a
-        # file's own findings at one place are all kept (their messages tell them apart)
-        shown: dict[tuple[object, ...], list[tuple[Finding, PresenceVerdict]]] = {}
+        shown: dict[tuple[object, ...], tuple[Finding, PresenceVerdict]] = {}
         for finding in found:
             key = (finding.check, finding.name, finding.locations)
-            earlier = shown.get(key, [])
-            another = bool(earlier) and earlier[0][0].file != finding.file
-            if another and earlier[0][1].presence == Presence.PRESENT:
+            earlier = shown.get(key)
+            if earlier is not None and earlier[1].presence == Presence.PRESENT:
                 continue
             judging = (finding.file, finding.condition)
             if judging not in verdicts:  # findings of one place share their condition
                 verdicts[judging] = self.verdict(finding.file, finding.condition, decisions)
             verdict = verdicts[judging]
-            if verdict is None:
+            if verdict is None or (earlier is not None and verdict.presence != Presence.PRESENT):
                 continue
-            if not another:
-                shown[key] = [*earlier, (finding, verdict)]
-            elif verdict.presence == Presence.PRESENT:  # from the file that launches it
-                shown[key] = [(finding, verdict)]
+            shown[key] = (finding, verdict)
         order = {severity: rank for rank, severity in enumerate(Severity)}
         ranked = sorted(  # the worst, and those present, first
-            [each for listed in shown.values() for each in listed],
+            shown.values(),
             key=lambda f: (order[f[0].severity], f[1].presence != Presence.PRESENT),
         )
         counts = {s.value: sum(f.severity == s for f, _ in ranked) for s in Severity}
