@@ -54,7 +54,8 @@ from rosvar.interpreter.model import (
 )
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, leaf_key
-from rosvar.memo import Memo
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.memo import EntryMemo
 from rosvar.ros2.context import Configuration, Context, GlobalParam, GlobalRemap, Probe
 from rosvar.ros2.substitutions import Ros2Substituter
 
@@ -210,16 +211,30 @@ class _Walks:
     entity: Entity
     root: _Node = field(default_factory=_Node)
     kept: int = 0
+    own: bool = False  # a walk kept read values some input steers, or made inputs
 
 
-def _table(files: Snapshot) -> Memo[object, _Walks]:
+def _table(files: Snapshot) -> EntryMemo[object, _Walks]:
     """The analysis's table of recorded walks, kept with the files it read: keyed by the
     parsed files, it must not outlive them, and a table on the condition space made a
     cycle with it, whose collection freed BDD nodes after their manager."""
     table = files.tables.get(__name__)
-    if not isinstance(table, Memo):
-        table = files.tables[__name__] = Memo(CAPACITY)
+    if not isinstance(table, EntryMemo):
+        table = files.tables[__name__] = EntryMemo(CAPACITY)
     return table
+
+
+def forget_walks(_space: ConditionSpace, files: Snapshot) -> None:
+    """Drop the walks recorded for the entry file done (a ``Release`` of
+    :mod:`~rosvar.interpreter.semantics`): those whose fixed context some input steers (a
+    path condition, a namespace over its inputs), and the files' whose kept walks read
+    such values or made inputs (replayed in their entry file only). Walks of constant
+    contexts and reads stay for every entry file."""
+    table = files.tables.get(__name__)
+    if isinstance(table, EntryMemo):
+        table.release()
+        for key in [key for key, walks in table.items() if walks.own]:
+            del table[key]
 
 
 def _fixed(root: Entity, file: str, it: Interpretation[Context], context: Context) -> object:
@@ -324,7 +339,8 @@ def walk_included(
     key = _fixed(root, file, it, context)
     walks = table.get(key)
     if walks is None or walks.entity is not root:
-        walks = table[key] = _Walks(root)
+        walks = _Walks(root)
+        table.keep(key, walks, it.space.varies(key))
     found = _find(walks, it, context)
     if found is not None and _fits(found[0], it, substituter):
         _replay(it, context, substituter, *found)
@@ -514,7 +530,9 @@ def _record(
                 include_depth,
             )
             if effect is not None:
-                _keep(walks, [(p, n, _answer_key(p, answer)) for p, n, answer in read], effect)
+                keys = [(p, n, _answer_key(p, answer)) for p, n, answer in read]
+                walks.own = walks.own or effect.entry is not None or it.space.varies(tuple(keys))
+                _keep(walks, keys, effect)
         if not recording.walks:
             recording.reads.clear()
             recording.included.clear()

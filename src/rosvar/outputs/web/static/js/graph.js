@@ -246,6 +246,9 @@ export class GraphView {
     this.moved = false; // the user panned or zoomed since the view was last fitted to everything
     this.settle = null; // what ends the running layout once the view is where it goes
     this.cy.on("dragpan scrollzoom pinchzoom", () => { this.moved = true; });
+    this.refit = false; // the canvas changed size while a layout ran: fit when it ends
+    this.size = null; // the canvas's size as last reported
+    new ResizeObserver((entries) => this.resized(entries[entries.length - 1].contentRect)).observe(container);
     this.cy.on("select unselect", () => { this.markNear(); this.onSelect(this.selectedElement(), true); });
     this.cy.on("mouseover", "node", (event) => event.target.connectedEdges('[kind = "link"]').addClass("pointed"));
     this.cy.on("mouseout", "node", (event) => event.target.connectedEdges('[kind = "link"]').removeClass("pointed"));
@@ -741,6 +744,10 @@ export class GraphView {
     const finish = () => {
       this.settle = null;
       this.layoutsDone = runs;
+      if (runs === this.layoutRuns && this.refit) {
+        this.refit = false;
+        if (!this.moved) this.fitNow();
+      }
       if (runs === this.layoutRuns && !this.pending) this.container.dataset.layout = "done";
     };
     this.settle = finish; // called by a view that stops this one's motion of the view
@@ -883,6 +890,25 @@ export class GraphView {
   search(text) {
     this.needle = text.trim().toLowerCase();
     this.applyVisibility();
+  }
+
+  // The canvas changed size (the notice above it came or went, the window was resized):
+  // cytoscape learns it only from the window, so it is told here, and the view is fitted to
+  // the new size unless the user moved it (a layout running fits when it ends). At once, not
+  // animated: the page settling as it loads must not move what a click is aimed at.
+  resized({ width, height }) {
+    const before = this.size;
+    this.size = { width, height };
+    if (!before || (before.width === width && before.height === height)) return; // the first report
+    this.cy.resize();
+    if (this.moved) return;
+    if (this.layoutsDone === this.layoutRuns) this.fitNow();
+    else this.refit = true;
+  }
+
+  fitNow() {
+    this.cy.stop(true);
+    this.cy.viewport(this.viewportFor(this.cy.elements(":visible").boundingBox()));
   }
 
   // Fits the view to everything drawn (the Fit button); layouts fit it again from now on.
