@@ -15,6 +15,8 @@ import pytest
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.outputs.describe import describe_model
+from rosvar.ros2 import substitutions
+from rosvar.ros2.tags import arg
 from rosvar.workspace import discover
 from workspace.interfaces.ros2_packages import MANIFEST
 
@@ -57,8 +59,11 @@ def test_an_entry_file_is_interpreted_again_only_for_late_names(
 ) -> None:
     """Each pass of ``Analysis._interpret`` walks the whole include tree again (on
     ros2dense-120 the passes thrown away were half the CPU): an entry file is interpreted
-    once unless an included file's arg is read before its declaration, then once more with
-    it an input from the start. A change that saves a pass lowers these counts."""
+    once unless an included file's arg is read where the command line's value would have
+    been seen (before its declaration, after a scope popped it), or declared where a reset
+    may have forgotten it; then once more with it an input from the start. Reads and
+    declarations that find it unset only where the command line does not give it need no
+    other pass. A change that saves a pass lowers these counts."""
     package = tmp_path / "p"
     package.mkdir()
     (package / "package.xml").write_text(MANIFEST.format(name="p", build="ament_cmake"))
@@ -66,25 +71,43 @@ def test_an_entry_file_is_interpreted_again_only_for_late_names(
         '<launch><arg name="late" default="x"/><arg name="other" default="y"/>'
         '<node pkg="p" exec="e" name="n_$(var late)_$(var other)"/></launch>'
     )
-    include = '<include file="$(dirname)/inc.launch.xml"/>'
-    (package / "once.launch.xml").write_text(f"<launch>{include}{include}</launch>")
-    (package / "twice.launch.xml").write_text(
-        f'<launch><let name="seen" value="$(var late d)"/>{include}</launch>'
+    (package / "required.launch.xml").write_text(
+        '<launch><arg name="needed"/><node pkg="p" exec="e" name="n_$(var needed)"/></launch>'
     )
+    include = '<include file="$(dirname)/inc.launch.xml"/>'
+    required = '<include file="$(dirname)/required.launch.xml"/>'
+    entries = {
+        "once": f"{include}{include}",
+        "twice": f'<let name="seen" value="$(var late d)"/>{include}',
+        "redeclared": f'{required}{required}<let name="seen" value="$(var needed d)"/>',
+        "popped": f'<group>{include}</group><let name="seen" value="$(var late d)"/>',
+        "forgotten": f"<reset/>{required}",
+    }
+    for name, body in entries.items():
+        (package / f"{name}.launch.xml").write_text(f"<launch>{body}</launch>")
     passes: Counter[str] = Counter()
     interpret_with = Analysis._interpret_with
 
     def counted(
         self: Analysis, file: str, undeclared: Mapping[str, str]
     ) -> tuple[LaunchModel, set[str]]:
-        passes[Path(file).name] += 1
+        passes[Path(file).name.removesuffix(".launch.xml")] += 1
         return interpret_with(self, file, undeclared)
 
     monkeypatch.setattr(Analysis, "_interpret_with", counted)
     analysis = Analysis(discover([tmp_path], ros_package_path=""))
     models = {Path(model.file).name: model for model in analysis.all_models()}
-    assert passes == {"inc.launch.xml": 1, "once.launch.xml": 1, "twice.launch.xml": 2}
+    assert passes == {
+        "inc": 1,
+        "required": 1,
+        "redeclared": 1,  # declared again, read, where only the command line leaves it unset
+        "once": 1,
+        "twice": 2,  # read before its declaration
+        "popped": 2,  # read after the group that declared it
+        "forgotten": 2,  # declared after a reset
+    }
     assert {"late", "other"} <= models["twice.launch.xml"].inputs.keys()
+    assert "needed" in models["redeclared.launch.xml"].inputs
 
 
 def test_a_late_name_set_on_a_path_has_one_branch_order_in_both_passes(
@@ -111,6 +134,8 @@ def test_a_late_name_set_on_a_path_has_one_branch_order_in_both_passes(
     )
     described: list[str] = []
     interpret_with = Analysis._interpret_with
+    for module in (substitutions, arg):  # every name read where unset late, as before
+        monkeypatch.setattr(module, "unset_as_given", lambda *_args: False)
 
     def kept(
         self: Analysis, file: str, undeclared: Mapping[str, str]

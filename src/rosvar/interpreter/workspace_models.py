@@ -20,6 +20,7 @@ from rosvar.workspace import Workspace
 
 Progress = Callable[[int, int, str], None]
 Result = TypeVar("Result")
+Value = TypeVar("Value")
 MAX_PASSES = 4
 """ROS 2: interpretations of one entry file at most, each knowing more undeclared args from
 the start (one, unless an included file's arg is read before it is declared)."""
@@ -124,8 +125,14 @@ class Analysis:
         # the BDD variable order (the feature model pairs them).
         self.space.file_atom(file, self.label(file))
         undeclared: dict[str, str] = {}
+        first: list[str] | None = None  # the first interpretation's names, in order
+        declared: dict[str, str] = {}  # the file declaring each included file's arg first
         for _ in range(MAX_PASSES):
             model, late = self._interpret_with(file, undeclared)
+            if first is None:
+                first = [*model.inputs, *model.settable]
+            for name, declaring in model.settable.items():
+                declared.setdefault(name, declaring)
             # ROS 2: a given name:=value that no file declares is set all the same
             # (ros2 launch sets every one before loading): the entry file's, from the start
             unknown = self._given - model.inputs.keys() - model.settable.keys() - undeclared.keys()
@@ -133,10 +140,10 @@ class Analysis:
                 break
             # ROS 2: args included files declare are inputs from their declaration; one read
             # before it needs them from the start, as the command line sets them
-            # sorted: a set's order follows the hash seed, and this order is the inputs'
-            undeclared |= {name: model.settable[name] for name in sorted(late)}
+            # sorted: a set's order follows the hash seed
+            undeclared |= {name: declared[name] for name in sorted(late)}
             undeclared |= dict.fromkeys(sorted(unknown), file)
-        return model
+        return _settled(model, first, declared, self.space) if undeclared and first else model
 
     def _interpret_with(
         self, file: str, undeclared: Mapping[str, str]
@@ -156,6 +163,29 @@ class Analysis:
             if default is not None:
                 model.unset_defaults[name] = default
         return model, late
+
+
+def _settled(
+    model: LaunchModel, names: list[str], declared: Mapping[str, str], space: ConditionSpace
+) -> LaunchModel:
+    """``model`` as if interpreted once: which interpretation found a name late, or which
+    include declared an arg first in it, must not show. Its inputs, domains and settable
+    names in the order of ``names`` (the first interpretation's: the order of declaration;
+    one knowing late names from the start enters them first), those it did not have after;
+    each included file's arg declared by the file that declared it first (``declared``),
+    whose values are its input's slots in the condition space."""
+
+    def ordered(table: dict[str, Value]) -> dict[str, Value]:
+        return {name: table[name] for name in names if name in table} | table
+
+    model.settable = {name: declared.get(name, file) for name, file in model.settable.items()}
+    for name in model.settable:
+        model.domains[name] = space.domain(model.inputs[name])
+    model.inputs = ordered(model.inputs)
+    model.domains = ordered(model.domains)
+    model.settable = ordered(model.settable)
+    model.unset_defaults = ordered(model.unset_defaults)
+    return model
 
 
 def _itself(model: LaunchModel) -> LaunchModel:

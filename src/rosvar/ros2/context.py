@@ -16,6 +16,8 @@ from rosvar.frontends.entity import Entity
 from rosvar.interpreter.model import Raw
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.logic.inputs import UNSET, ArgInput
 
 Configuration = Choice[Raw | None]
 """A launch configuration's value per configuration; None where it is not set."""
@@ -106,6 +108,16 @@ class Recording:
 
 
 @dataclass(slots=True)
+class Forgetting:
+    """Whether a ``<reset>`` or a group that does not forward them forgot the launch
+    configurations, on some path: shared by every copy of a context. From then on an
+    included file's arg unset at its declaration may be one the command line gave and a
+    later interpretation, knowing it from the start, sees forgotten."""
+
+    happened: bool = False
+
+
+@dataclass(slots=True)
 class Context:
     """Launch configurations and the ROS-specific state kept beside them."""
 
@@ -128,6 +140,7 @@ class Context:
     """What runs the actions being visited: the launch, a timer, an event (as the oracle's
     ``trigger``)."""
     recording: Recording = field(default_factory=Recording)  # shared by every copy
+    forgetting: Forgetting = field(default_factory=Forgetting)  # shared by every copy
 
     def get(self, name: str) -> Configuration | None:
         """The launch configuration ``name`` (None where never set): the one door through
@@ -160,6 +173,7 @@ class Context:
             self.events,
             self.trigger,
             self.recording,
+            self.forgetting,
         )
 
     def reset(self) -> None:
@@ -182,3 +196,16 @@ def optional(value: Choice[Raw]) -> Choice[Raw | None]:
     """A value as a possibly-unset one (a configuration's or the namespace's type): the
     same choice, whose type only widens (no copy: every ``<arg>`` and ``<let>`` takes one)."""
     return value
+
+
+def unset_as_given(space: ConditionSpace, entry: str, name: str, unset: BDD) -> bool:
+    """Whether launch configuration ``name`` is unset (``unset``) only where the command line
+    does not give it: where ``entry``'s input ``name`` (declared) is ``<unset>``.
+
+    An included file's arg that no interpretation of ``entry`` knew from the start has the
+    unset value under the writes before its declaration where a later one knowing it has the
+    command line's (``Analysis._interpret``). Both build their values by the same writes,
+    the command line's innermost, so where nothing but the command line's ``<unset>`` is
+    left unset the two values are the same choice: reading it needs no other
+    interpretation."""
+    return unset & ~space.slot(ArgInput(entry, name), UNSET) == space.false

@@ -21,10 +21,10 @@ a walk is replayed in that entry file only (another pass of it, another include)
 reads of a name it declared follow from the walk itself and are not keys.
 
 A walk whose effect a replay would not reproduce is not kept: one that set timers, event
-handlers, shutdowns, environment variables or anonymous names, forgot configurations or
-replaced a global list, or met a limit (an include cycle, the include count and depth, the
-nesting, the file's value budget). A replay is refused where one of those limits would be
-met from where it stands.
+handlers, shutdowns, environment variables or anonymous names, forgot configurations (a
+reset, a group not forwarding them) or replaced a global list, or met a limit (an include
+cycle, the include count and depth, the nesting, the file's value budget). A replay is
+refused where one of those limits would be met from where it stands.
 """
 
 from __future__ import annotations
@@ -239,7 +239,7 @@ def forget_walks(_space: ConditionSpace, files: Snapshot) -> None:
 
 def _fixed(root: Entity, file: str, it: Interpretation[Context], context: Context) -> object:
     """The key of what a walk reads without probing: the file, the path condition and the
-    context's parts other than launch configurations."""
+    context's parts other than launch configurations (whether any were forgotten too)."""
     namespace = context.namespace
     remaps = context.remaps
     params = context.params
@@ -260,6 +260,7 @@ def _fixed(root: Entity, file: str, it: Interpretation[Context], context: Contex
         context.trigger,
         context.now,
         context.open_command_line,
+        context.forgetting.happened,
     )
 
 
@@ -430,6 +431,7 @@ class _Before:
     combinations: int
     included: int
     marks: tuple[int, int, int, int]
+    forgot: bool
 
 
 def _counts(model: LaunchModel, context: Context) -> tuple[int, ...]:
@@ -475,6 +477,7 @@ def _record(
             len(recording.loaded),
             len(recording.entered),
         ),
+        context.forgetting.happened,
     )
     deepest, it.deepest = it.deepest, it.depth
     deepest_check, recording.deepest_check = recording.deepest_check, -1
@@ -588,6 +591,8 @@ def _effect(
     now = _counts(model, context)
     if now[5:] != tuple(fixed) or it.anon_count is not before.anon:
         return None  # timers, handlers, shutdowns, anonymous names
+    if context.forgetting.happened is not before.forgot:
+        return None  # a reset or a group forgot the configurations: later declarations see it
     if context.env.keys() != before.env.keys() or any(
         value is not before.env[name] for name, value in context.env.items()
     ):

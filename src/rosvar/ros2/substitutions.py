@@ -59,7 +59,7 @@ from rosvar.memo import EntryMemo, Memo
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS
 from rosvar.ros2.api.unmodelled import UNMODELLED
 from rosvar.ros2.boolean_eval import BooleanExpression, boolean_expression
-from rosvar.ros2.context import Context, optional
+from rosvar.ros2.context import Context, optional, unset_as_given
 from rosvar.ros2.frontends.python.text import (
     CONFIGURATION_EQUALS,
     EMPTY,
@@ -643,14 +643,20 @@ def _var(host: Interpretation[Context], context: Context, args: list[Raw]) -> Ch
 
 def configuration(host: Interpretation[Context], context: Context, name: str) -> Choice[Raw | None]:
     """The launch configuration ``name`` (None where it is undefined, which is recorded:
-    :attr:`Context.unset_reads`)."""
+    :attr:`Context.unset_reads`, unless only the command line leaves it so)."""
     value = context.get(name)
     if value is None:
         context.unset_reads.add(name)
         return Choice.const(host.space, None)
-    if any(leaf is None for _condition, leaf in value.branches):
+    if any(leaf is None for _condition, leaf in value.branches) and not unset_as_given(
+        host.space, host.model.file, name, value.where(_unset)
+    ):
         context.unset_reads.add(name)
     return value
+
+
+def _unset(leaf: Raw | None) -> bool:
+    return leaf is None
 
 
 @substitution("env")

@@ -13,7 +13,7 @@ from rosvar.interpreter.model import ArgDecl, Raw
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, ite
 from rosvar.logic.terms import Apply, Hole, register
-from rosvar.ros2.context import Configuration, Context, optional
+from rosvar.ros2.context import Configuration, Context, optional, unset_as_given
 from rosvar.ros2.dialect import tag
 from rosvar.ros2.include_memo import declare, is_input, is_listed, list_arg
 from rosvar.ros2.tags.common import assign, set_configuration
@@ -29,12 +29,15 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
     old = context.get(name)
     unset = _unset(it, old)
     included = len(it.stack) > 1
-    if unset != it.space.false and context.open_command_line and included and "$" not in name:
+    unset_somewhere = unset != it.space.false
+    if unset_somewhere and context.open_command_line and included and "$" not in name:
         if not is_input(it, context, name):
             old = _given(it, context, name, old, unset)
             unset = _unset(it, old)
-        else:  # declared before, where it was set: the next interpretation sets it first
-            context.unset_reads.add(name)
+            if context.forgetting.happened:  # given, it may have been forgotten since
+                context.unset_reads.add(name)
+        elif not unset_as_given(it.space, it.model.file, name, unset):
+            context.unset_reads.add(name)  # declared before, where it was set: set it first
         ordered = canonical(old)
         if ordered is not old and ordered is not None:  # as every pass orders it
             old = context.configurations[name] = ordered
@@ -53,7 +56,9 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
             "arg-choice",
             f"argument '{name}' must be one of {allowed}",
         )
-    if included and not is_listed(it, context, name):  # listed once, if an input (_given)
+    # listed once, if an input (_given), where the command line's value can reach it: the
+    # same declaration whether the input was made here or known from the start
+    if included and (not unset_somewhere or not is_listed(it, context, name)):
         return
     declaration = ArgDecl(
         name,

@@ -43,6 +43,7 @@ def group(it: Interpretation[Context], entity: Entity, context: Context) -> None
                 continue
             saved = context.scoped()
             if is_forwarding is not True:
+                context.forgetting.happened = True
                 context.configurations = {}
                 context.namespace = None
                 context.remaps = None

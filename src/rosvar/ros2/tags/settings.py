@@ -68,6 +68,7 @@ def reset(it: Interpretation[Context], entity: Entity, context: Context) -> None
         if name is not None and value is not None:
             kept.append((name, value))
     configuration_names(it, context)  # what it forgets depends on what is set
+    context.forgetting.happened = True
     if it.pc == it.space.true:
         context.reset()
     else:  # only where this path runs: each value and each global remap or parameter
