@@ -257,18 +257,27 @@ class _Placed:
 
 
 def _over(space: ConditionSpace, value: Choice[Value], holds: Callable[[Raw], BDD | bool]) -> BDD:
-    """Where ``holds`` of ``value``'s leaf is true, a predicate for a term's leaf (a failing
-    leaf holds nothing)."""
-    result = space.false
+    """Where ``holds`` of ``value``'s leaf is true, a predicate for a term's leaf, wherever
+    ``value`` has a leaf that is not a failure: elsewhere it is either (every caller reads it
+    there only). It is built from the side with fewer branches, the branches where it holds
+    or, negated, those where it does not: the other side's disjunction is never made."""
+    sides: tuple[list[BDD], list[BDD]] = ([], [])  # where it holds, where it does not
+    terms: list[tuple[BDD, BDD]] = []
     for condition, leaf in value.branches:
         if isinstance(leaf, Fail):
             continue
         where = holds(leaf)
-        if where is True:
-            result |= condition
-        elif where is not False:
-            result |= condition & where
-    return result
+        if isinstance(where, bool):
+            sides[not where].append(condition)
+        else:
+            terms.append((condition, where))
+    negated = len(sides[1]) < len(sides[0])
+    result = space.false
+    for condition in sides[negated]:
+        result |= condition
+    for condition, where in terms:
+        result |= condition & (~where if negated else where)
+    return ~result if negated else result
 
 
 def _with(op: str, left: Literal, right: str, space: ConditionSpace, leaf: Raw) -> BDD | bool:
