@@ -33,8 +33,8 @@ before being declared (to know from the start in another interpretation)."""
 
 Release = Callable[[ConditionSpace, Snapshot], None]
 """Drops what a memo of an analysis (its condition space, its files) keeps for one entry
-file: the values over its inputs, the walks its inputs steered, which no other entry file
-meets again, and which held most of the analysis's BDD nodes (docs/performance.md)."""
+file alone: values over its inputs and walks they steered, which no other entry file meets
+again (on large workspaces, a third of the BDD nodes: docs/performance.md)."""
 
 
 @dataclass

@@ -319,10 +319,10 @@ before; a value that met a limit is not kept)."""
 
 def forget_resolved(space: ConditionSpace, _files: Snapshot) -> None:
     """Drop the texts resolved for the entry file done (a ``Release`` of
-    :mod:`~rosvar.interpreter.semantics`): their keys are values over its inputs, which no
-    other entry file reads. A text resolved again in another entry file makes the same
-    values, give-ups included (:class:`~rosvar.logic.given_up.GivenUp`), hence the same
-    predicates."""
+    :mod:`~rosvar.interpreter.semantics`) over values some input steers, which no other
+    entry file reads; those over constants stay. A text resolved again over the same
+    values makes the same value, give-ups included
+    (:class:`~rosvar.logic.given_up.GivenUp`), hence the same predicates."""
     memo = _resolved.get(space)
     if memo is not None:
         memo.release()
