@@ -213,6 +213,28 @@ def generate_launch_description():
         },
         [{}, {"flag": "true"}],
     ),
+    "python-getenv-returns-a-description-in-each-branch": (
+        {
+            "main.launch.py": """import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    declared = [DeclareLaunchArgument('camera', default_value='cam')]
+    distro = os.getenv('ROSVAR_TEST_DISTRO')
+    if (distro == 'dashing') or (distro == 'eloquent'):
+        return LaunchDescription(declared + [
+            Node(package='pkg', node_executable='old', node_name=LaunchConfiguration('camera'))])
+    else:
+        return LaunchDescription(declared + [
+            Node(package='pkg', executable='new', name=LaunchConfiguration('camera'))])
+""",
+        },
+        [{}, {"camera": "front"}],
+    ),
     "python-getenv-unset": (
         {
             "main.launch.py": """import os
