@@ -100,6 +100,23 @@ def test_file_grown_past_the_limit_after_stat_is_refused(
         read_file(str(path), limit=50)
 
 
+def test_short_reads_are_continued(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """``read`` may return less than asked (a signal, a file system's own sizes): the rest
+    is read, as a buffered file's ``read`` does."""
+    path = tmp_path / "f"
+    path.write_bytes(b"0123456789" * 5)
+    real_read = os.read
+    sizes: list[int] = []
+
+    def read(descriptor: int, count: int) -> bytes:
+        sizes.append(count)
+        return real_read(descriptor, min(count, 7))
+
+    monkeypatch.setattr(os, "read", read)
+    assert read_file(str(path)) == b"0123456789" * 5
+    assert len(sizes) > 2
+
+
 def test_missing_file_is_the_systems_error(tmp_path: Path) -> None:
     with pytest.raises(FileNotFoundError):
         read_file(str(tmp_path / "nope"))

@@ -6,7 +6,7 @@ import gc
 
 import pytest
 
-from rosvar.memo import EVICTED, Memo, memos
+from rosvar.memo import EVICTED, EntryMemo, Memo, memos
 
 
 def test_keeps_the_newest_entries_up_to_its_capacity() -> None:
@@ -55,3 +55,18 @@ def test_every_live_memo_is_listed_and_a_dropped_one_goes() -> None:
 def test_capacity_is_at_least_one() -> None:
     with pytest.raises(ValueError):
         Memo(0)
+
+
+def test_an_entry_memo_releases_the_entries_of_the_entry_file_done() -> None:
+    memo: EntryMemo[str, int] = EntryMemo(4)
+    memo.keep("evicted", 0, own=True)
+    memo.keep("shared", 1, own=False)
+    memo.keep("own", 2, own=True)
+    for key in ("a", "b"):  # the oldest goes first, whoever it served
+        memo.keep(key, 0, own=False)
+    assert list(memo) == ["shared", "own", "a", "b"]
+    memo.release()
+    assert list(memo) == ["shared", "a", "b"]
+    memo.keep("own", 4, own=False)  # entered again, for every entry file: released no more
+    memo.release()
+    assert memo["own"] == 4 and len(memo) == 4

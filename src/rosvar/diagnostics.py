@@ -18,13 +18,21 @@ class Severity(enum.Enum):
     NOTE = "note"
 
 
-@dataclass(frozen=True, order=True)
+@dataclass(frozen=True, order=True, init=False)
 class Location:
     """A position in a file (1-based line and column, as editors count)."""
 
     file: str
     line: int = 0
     col: int = 0
+
+    def __init__(self, file: str, line: int = 0, col: int = 0) -> None:
+        # Written out: a frozen dataclass's own sets each field through
+        # ``object.__setattr__``, twice as slow, and a parse makes one per element.
+        fields = self.__dict__
+        fields["file"] = file
+        fields["line"] = line
+        fields["col"] = col
 
     def __str__(self) -> str:
         if self.line <= 0:

@@ -157,17 +157,35 @@ def read_file(
     """
     if confinement is not None:
         path = real = confinement.check(path)
-    with open_regular(path, real) as handle:
-        info = os.fstat(handle.fileno())
-        if info.st_size > limit:
-            raise _too_large(info.st_size, limit)
+    descriptor, size = _open_regular(path, real)  # a descriptor: no file object to build
+    try:
+        if size > limit:
+            raise _too_large(size, limit)
         # The size found, plus one byte to see the end: ``read(n)`` allocates n bytes first.
-        data = handle.read(info.st_size + 1)
-        if len(data) > info.st_size:  # grew since: the rest, up to the limit
-            data += handle.read(limit + 1 - len(data))
+        data = _read_up_to(descriptor, size + 1)
+        if len(data) > size:  # grew since: the rest, up to the limit
+            data += _read_up_to(descriptor, limit + 1 - len(data))
+    finally:
+        os.close(descriptor)
     if len(data) > limit:
         raise _too_large(len(data), limit)
     return data
+
+
+def _read_up_to(descriptor: int, count: int) -> bytes:
+    """``count`` bytes, or fewer at the end of the file (a buffered file's ``read``), in
+    reads of at most :data:`_CHUNK` beyond the first (each allocates what it asks)."""
+    parts: list[bytes] = []
+    while count > 0:
+        chunk = os.read(descriptor, count if not parts else min(count, _CHUNK))
+        if not chunk:
+            break
+        parts.append(chunk)
+        count -= len(chunk)
+    return parts[0] if len(parts) == 1 else b"".join(parts)
+
+
+_CHUNK = 1 << 20
 
 
 def python_text(data: bytes, encoding: str = "utf-8") -> str:
@@ -181,14 +199,20 @@ def open_regular(path: str, real: str | None = None) -> BinaryIO:
     """``path`` opened for reading if it is a regular file outside the system trees, else
     :class:`FileRefused` (checked on the open descriptor: nothing can swap the file).
     ``real`` is its resolution, where the caller has it."""
+    descriptor, _size = _open_regular(path, real)
+    return os.fdopen(descriptor, "rb")
+
+
+def _open_regular(path: str, real: str | None) -> tuple[int, int]:
+    """:func:`open_regular`'s descriptor, and the file's size when opened."""
     _check_system(os.path.realpath(path) if real is None else real)
     flags = os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0)
     descriptor = os.open(path, flags)  # O_NONBLOCK: opening a FIFO must not wait
-    handle = os.fdopen(descriptor, "rb")
-    if not stat.S_ISREG(os.fstat(descriptor).st_mode):
-        handle.close()
+    info = os.fstat(descriptor)
+    if not stat.S_ISREG(info.st_mode):
+        os.close(descriptor)
         raise FileRefused(FileCode.UNREADABLE, "not a regular file")
-    return handle
+    return descriptor, info.st_size
 
 
 def _too_large(size: int, limit: int) -> FileRefused:

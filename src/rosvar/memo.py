@@ -54,3 +54,25 @@ class Memo(dict[Key, Value]):
 def memos() -> list[Memo[object, object]]:
     """Every memo alive, for tests and diagnostics of memory."""
     return list(_ALL.values())
+
+
+class EntryMemo(Memo[Key, Value]):
+    """A memo of an analysis some of whose entries serve one entry file only (their keys
+    are values over its inputs): those are dropped at once when the analysis goes on to
+    another entry file (:meth:`release`), the others kept for every entry file."""
+
+    def __init__(self, capacity: int | None = None) -> None:
+        super().__init__(capacity)
+        self._own: list[Key] = []
+
+    def keep(self, key: Key, value: Value, own: bool) -> None:
+        """Enter ``value`` under ``key``; ``own``: for the entry file under way only."""
+        self[key] = value
+        if own:
+            self._own.append(key)
+
+    def release(self) -> None:
+        """Drop the entries of the entry file done."""
+        for key in self._own:
+            self.pop(key, None)
+        self._own.clear()

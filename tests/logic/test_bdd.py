@@ -176,6 +176,20 @@ def test_the_memory_bound_refuses_growth_and_is_lifted() -> None:
     gc.collect()  # the failed build's nodes, held by the error's frames, go before their manager
 
 
+def test_collected_garbage_is_the_nodes_nothing_holds() -> None:
+    manager = fresh([f"x{number}" for number in range(64)])
+    kept = manager.var("x0") & manager.var("x1")
+    before = bdd.held_nodes(manager)
+    dropped = manager.false
+    for number in range(2, 64):  # a chain, no part of which ``kept`` holds
+        dropped = manager.apply("xor", dropped, manager.var(f"x{number}") & manager.var("x0"))
+    del dropped
+    assert bdd.held_nodes(manager) > before  # CUDD keeps dead nodes until it collects them
+    bdd.collect_garbage(manager)
+    assert bdd.held_nodes(manager) == before
+    assert kept == manager.var("x1") & manager.var("x0") and len(kept) == 3
+
+
 @pytest.mark.parametrize("seed", range(100))
 def test_copies_and_quantifies_as_dd_does(seed: int) -> None:
     rng = random.Random(seed)

@@ -191,6 +191,16 @@ def test_memory_estimate_grows_with_files_within_bounds() -> None:
     assert sizes == sorted(sizes) and len(set(sizes)) == len(sizes)
 
 
+def test_a_key_varies_where_it_holds_a_condition_of_some_input() -> None:
+    space = ConditionSpace()
+    x = ArgInput(F, "x")
+    space.declare_input(x, ("a", OTHER))
+    constant = ("text", None, ((space.true, "v"),), ((space.false, Hole(x)),))
+    assert not space.varies(constant) and not space.varies("text")
+    assert space.varies(("text", ((space.true, "v"),), (((space.slot(x, "a"), "a"),),)))
+    assert space.varies(space.slot(x, OTHER))
+
+
 @pytest.mark.filterwarnings("ignore:Changed in `dd`")  # statistics()' note on its 'mem' key
 def test_dead_nodes_are_collected_before_they_outgrow_the_estimate() -> None:
     """Husky with ``_external`` as a root (5,800 variables): the web server's graph build

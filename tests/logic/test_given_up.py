@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import gc
 from collections.abc import Iterator
 
@@ -81,17 +82,61 @@ def test_an_operand_undefined_in_the_configuration_is_reported(space: ConditionS
         evaluate(term, {X: "b"}, _bindings(space, {X: "b", Y: None}))
 
 
-def test_each_give_up_is_equal_only_to_itself(space: ConditionSpace) -> None:
+def test_one_computation_given_up_twice_is_one_term(space: ConditionSpace) -> None:
+    """The same text, display, choices (conditions and leaves) and combination: one term,
+    hence one set of predicates in the space, however often the computation is given up."""
     one = GivenUp("t", "⟨t⟩", _choices(space), _joined)  # type: ignore[arg-type]
-    two = GivenUp("t", "⟨t⟩", _choices(space), _joined)  # type: ignore[arg-type]
-    assert one == one and one != two and one != Apply("too_complex", ("t",), display="⟨t⟩")
-    assert len(Choice.of([(space.slot(X, "a"), one), (space.slot(X, "b"), two)])) == 2
+    again = GivenUp("t", "⟨t⟩", _choices(space), _joined)  # type: ignore[arg-type]
+    assert again is one
+    assert space.predicate("true", again) is space.predicate("true", one)
+    # a combination that is the same function of the same arguments is the same one
+    bound = GivenUp("t", "⟨t⟩", _choices(space), functools.partial(_wrapped, left="["))  # type: ignore[arg-type]
+    assert GivenUp("t", "⟨t⟩", _choices(space), functools.partial(_wrapped, left="[")) is bound  # type: ignore[arg-type]
+    assert GivenUp("t", "⟨t⟩", _choices(space), functools.partial(_wrapped, left="(")) is not bound  # type: ignore[arg-type]
+
+
+def test_give_ups_of_other_computations_are_equal_only_to_themselves(
+    space: ConditionSpace,
+) -> None:
+    x, y = _choices(space)
+    one = GivenUp("t", "⟨t⟩", [x, y], _joined)  # type: ignore[arg-type]
+    others = [
+        GivenUp("t", "⟨t⟩", [x], _joined),  # type: ignore[arg-type]
+        GivenUp("t", "⟨t⟩", [y, x], _joined),  # type: ignore[arg-type]
+        GivenUp("t", "⟨t⟩", [x, y], _wrapped),  # type: ignore[arg-type]
+        GivenUp("u", "⟨t⟩", [x, y], _joined),  # type: ignore[arg-type]
+        GivenUp("t", "⟨u⟩", [x, y], _joined),  # type: ignore[arg-type]
+        GivenUp("t", "⟨t⟩", [x.map(lambda leaf: f"{leaf}!"), y], _joined),  # type: ignore[arg-type]
+        GivenUp("t", "⟨t⟩", [Choice.of([(space.slot(X, "a"), "a")]), y], _joined),  # type: ignore[arg-type]
+    ]
+    assert all(other != one for other in others)
+    assert len(set(others)) == len(others)
+    assert one != Apply("too_complex", ("t",), display="⟨t⟩")
+    assert len(Choice.of([(space.slot(X, "a"), one), (space.slot(X, "b"), others[0])])) == 2
+
+
+def test_give_ups_of_two_spaces_are_apart() -> None:
+    """Conditions of two managers cannot be compared: their give-ups are not looked up
+    against each other's."""
+    spaces = [ConditionSpace(), ConditionSpace()]
+    for each in spaces:
+        for input_, domain in DOMAINS.items():
+            each.declare_input(input_, domain)
+    one, two = (GivenUp("t", "⟨t⟩", _choices(s), _joined) for s in spaces)  # type: ignore[arg-type]
+    assert one is not two and one.choices[0].false == spaces[0].false
 
 
 def test_give_ups_of_one_text_are_hashed_apart(space: ConditionSpace) -> None:
-    made = [GivenUp("t", "⟨t⟩", _choices(space), _joined) for _ in range(64)]  # type: ignore[arg-type]
+    made = [
+        GivenUp("t", "⟨t⟩", [Choice.const(space, str(i))], _joined)  # type: ignore[arg-type]
+        for i in range(64)
+    ]
     assert len({hash(g) for g in made}) == len(made)
     assert len(set(made)) == len(made) and all(g in set(made) for g in made)
+
+
+def _wrapped(leaves: list[object], left: str = "<") -> object:
+    return concat([left, *leaves])  # type: ignore[list-item]
 
 
 def test_terms_merged_are_one_branch_that_a_configuration_evaluates(space: ConditionSpace) -> None:

@@ -47,6 +47,7 @@ out = {
     "child": [call(child, a, b) for a, b in data["children"]],
     "parent_ns": [call(lambda p: LoaderContext(p, "f.launch").ns, a) for a, _ in data["children"]],
     "load_mappings": [call(n.load_mappings, argv) for argv in data["argvs"]],
+    "settable": [call(lambda s: s in n.load_mappings([s + ":=x"]), s) for s in data["names"]],
 }
 json.dump(out, sys.stdout)
 """
@@ -240,6 +241,15 @@ def test_command_line_mappings_with_newlines_is_load_mappings(
     ours = [_ours(names.command_line_mappings, ARGVS[i]) for i in chosen]
     theirs = [reference["load_mappings"][i] for i in chosen]
     assert _mismatches([ARGVS[i] for i in chosen], ours, theirs) == []
+
+
+def test_settable_is_what_load_mappings_sets(
+    reference: dict[str, list[dict[str, Any]]],
+) -> None:
+    ours = [_ours(names.settable, name) for name in NAMES]
+    assert _mismatches(NAMES, ours, reference["settable"]) == []
+    assert {"a", "__ns", "/a", "~a"} <= {n for n in NAMES if names.settable(n)}
+    assert not {"", "_a", "1a", "a b", "a\n"} & {n for n in NAMES if names.settable(n)}
 
 
 def test_namespaces_of() -> None:

@@ -16,7 +16,7 @@ from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.choice import Choice
 from rosvar.logic.given_up import GivenUp
-from rosvar.ros2 import include_memo
+from rosvar.ros2 import include_memo, substitutions
 from rosvar.ros2.tags import include
 from rosvar.workspace import discover
 
@@ -390,3 +390,37 @@ def test_a_walk_that_makes_inputs_is_replayed_in_its_entry_file_only(tmp_path: P
     for model in models:
         assert "q" in model.inputs
         assert [arg.name for arg in model.args if arg.name == "q"] == ["q"]
+
+
+def test_an_entry_files_own_walks_and_texts_go_when_the_next_starts(tmp_path: Path) -> None:
+    """Walks and resolved texts keyed on an entry file's inputs (here a path condition and
+    a value over ``x``) serve it only: they are dropped when the analysis starts on the next
+    entry file; those keyed on constants stay for every entry file (and are replayed
+    there)."""
+    leaf = '<arg name="a"/><node pkg="p" exec="e" name="n_$(var a)"/>'
+    texts = {
+        "leaf": leaf,
+        "one": '<arg name="x" default="true"/><group if="$(var x)">'
+        + _include("leaf", '<arg name="a" value="$(var x)"/>')
+        + "</group>",
+        "two": _include("leaf", '<arg name="a" value="k"/>'),
+        "three": _include("leaf", '<arg name="a" value="k"/>'),
+    }
+    paths = _files(tmp_path, texts)
+    analysis = Analysis(discover([str(tmp_path)]))
+    space = analysis.space
+
+    def varying() -> tuple[int, int]:
+        walks = include_memo._table(analysis.files)
+        resolved = substitutions._resolved[space]
+        return sum(map(space.varies, walks)), sum(map(space.varies, resolved))
+
+    analysis.model(paths[1])
+    assert all(varying())  # one's own: over its input x
+    analysis.model(paths[2])
+    assert varying() == (0, 0)
+    kept = len(include_memo._table(analysis.files))
+    replays = [0]
+    with _counted(replays):
+        names = [n.field("name").single() for n in analysis.model(paths[3]).nodes]
+    assert names == ["n_k"] and replays[0] == 1 and kept > 0

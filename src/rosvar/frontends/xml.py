@@ -120,13 +120,14 @@ def _parse(data: bytes, filename: str, watch: str | None) -> tuple[ParseResult, 
     # texts[0] likewise swallows the whitespace around the root element.
     document = Entity("#document", {}, Location(filename))
     stack: list[Entity] = [document]
-    texts: list[list[str]] = [[]]
+    texts: list[list[str] | None] = [None]  # a list once an element has text (few do)
 
     def start(tag: str, attributes: dict[str, str]) -> None:
         entity = Entity(
             tag,
             attributes,
             Location(filename, parser.CurrentLineNumber, parser.CurrentColumnNumber + 1),
+            [],  # (the default's factory is a call more per element)
         )
         stack[-1].children.append(entity)
         if tag == watch:
@@ -141,7 +142,7 @@ def _parse(data: bytes, filename: str, watch: str | None) -> tuple[ParseResult, 
                 )
             )
         stack.append(entity)
-        texts.append([])
+        texts.append(None)
 
     def end(tag: str) -> None:
         parts = texts.pop()
@@ -150,7 +151,11 @@ def _parse(data: bytes, filename: str, watch: str | None) -> tuple[ParseResult, 
         stack.pop()
 
     def characters(text: str) -> None:
-        texts[-1].append(text)
+        parts = texts[-1]
+        if parts is None:
+            texts[-1] = [text]
+        else:
+            parts.append(text)
 
     def refuse_dtd(*_: object) -> NoReturn:
         # expat reports the end of the DOCTYPE's opening; point at "<!DOCTYPE" when visible.

@@ -125,21 +125,22 @@ def file_facts(root: Entity, version: RosVersion = RosVersion.ROS1) -> dict[str,
         # a ROS 2 argument's <choice value=...>: the values it accepts
         entry.literals.update(c.get("value") or "" for c in decl.children if c.tag == "choice")
     whole_arg = _WHOLE_ARG[version]
-    for element in _walk(root):
+    ros2 = version is RosVersion.ROS2
+    stack = [root]  # as _walk, inlined: this visits every element of every file read
+    while stack:
+        element = stack.pop()
+        if element.children:
+            stack.extend(reversed(element.children))
         if element.tag in _PATTERN_TAGS:
             _patterns(element, facts)
-        attributes = element.attributes
-        for attribute in ("if", "unless"):
-            text = attributes.get(attribute)
-            if text is None:
+        for attribute, text in element.attributes.items():
+            if "$(" not in text:  # most texts are literals (and a test of one arg has "$(")
                 continue
-            match = whole_arg.fullmatch(text)
-            if match and match.group(1) in facts:
-                facts[match.group(1)].tested = True
-        for text in attributes.values():
-            if "$(" not in text:  # most texts are literals
-                continue
-            if version is RosVersion.ROS2:
+            if attribute in _GUARDS:
+                match = whole_arg.fullmatch(text)
+                if match and match.group(1) in facts:
+                    facts[match.group(1)].tested = True
+            if ros2:
                 _ros2_tests(text, facts)
             if text.startswith("$(eval ") and text.endswith(")"):
                 try:
@@ -150,6 +151,9 @@ def file_facts(root: Entity, version: RosVersion = RosVersion.ROS1) -> dict[str,
                     if name in facts:
                         facts[name].literals.update(values)
     return dict(facts)
+
+
+_GUARDS = frozenset({"if", "unless"})
 
 
 def _ros2_tests(text: str, facts: dict[str, ArgFacts]) -> None:
@@ -267,11 +271,14 @@ class DomainTable:
         literals.extend(sorted(entry.literals))
         if entry.tested:
             literals.extend(["true", "false"])
-        literals.extend(sorted(self.passed_literals(file).get(name, ())))
-        literals.extend(sorted(self.forwarded_literals(file, name, seen)))
-        literals.extend(sorted(self._inferred(entry)))
-        literals.extend(self._extra.get(name, ()))
-        literals.extend(self._extra.get(f"{os.path.basename(file)}:{name}", ()))
+        real = real_path(file)
+        literals.extend(sorted(self._indexed().get(real, {}).get(name, ())))
+        literals.extend(sorted(self._forwarded(real, name, seen)))
+        if entry.executables or entry.paths or entry.param_type:
+            literals.extend(sorted(self._inferred(entry)))
+        if self._extra:
+            literals.extend(self._extra.get(name, ()))
+            literals.extend(self._extra.get(f"{os.path.basename(file)}:{name}", ()))
         slots: list[Slot] = list(dict.fromkeys(literals))
         if default is None:
             slots.append(UNSET)
@@ -319,21 +326,15 @@ class DomainTable:
                 self._forwards_loop = True
         return self._passed
 
-    def passed_literals(self, file: str) -> dict[str, set[str]]:
-        """Literal values that including files pass to ``file``'s args."""
-        return self._indexed().get(real_path(file), {})
-
-    def forwarded_literals(
-        self, file: str, name: str, seen: frozenset[str] = frozenset()
-    ) -> set[str]:
-        """Values the files ``file`` passes ``$(arg name)`` on to know for their arg.
+    def _forwarded(self, real: str, name: str, seen: frozenset[str]) -> set[str]:
+        """Values the files the file resolved to ``real`` passes ``$(arg name)`` on to know
+        for their arg.
 
         ``<include><arg name="y" value="$(arg x)"/></include>`` makes ``x`` range over
         the included file's values of ``y`` (e.g. its ``true``/``false`` when ``y``
         decides an ``if``), followed through chains of includes.
         """
-        self._indexed()
-        key = f"{real_path(file)}\x00{name}"
+        key = f"{real}\x00{name}"
         if key in seen:
             return set()
         values: set[str] = set()

@@ -31,6 +31,11 @@ EntryWalk = Callable[[Interpretation[S], str, Entity, Mapping[str, str]], set[st
 factory: the file's args as inputs), the walk of the root's children in it, and the args read
 before being declared (to know from the start in another interpretation)."""
 
+Release = Callable[[ConditionSpace, Snapshot], None]
+"""Drops what a memo of an analysis (its condition space, its files) keeps for one entry
+file: the values over its inputs, the walks its inputs steered, which no other entry file
+meets again, and which held most of the analysis's BDD nodes (docs/performance.md)."""
+
 
 @dataclass
 class Semantics(Generic[S]):
@@ -50,6 +55,9 @@ class Semantics(Generic[S]):
     bind: Callable[[Workspace], Loader] | None = None
     """The loader for one workspace's files, where a frontend reads more than the file (a
     Python launch file's imports of the workspace's modules); ``loader`` otherwise."""
+    released: list[Release] = field(default_factory=list)
+    """What drops the memos' entries that served one entry file's interpretations, called
+    when an analysis starts on another entry file (:meth:`interpret`)."""
 
     def loader_for(self, workspace: Workspace) -> Loader:
         return self.loader if self.bind is None else self.bind(workspace)
@@ -89,6 +97,12 @@ class Semantics(Generic[S]):
         files: Snapshot,
         undeclared: Mapping[str, str],
     ) -> tuple[LaunchModel, set[str]]:
+        if files.tables.get(__name__) != file:  # the entry file before is done
+            files.tables[__name__] = file
+            for release in self.released:
+                release(space, files)
+            if self.released:
+                space.collect_garbage()
         it = self.interpretation(workspace, space, domains, env_domains, file, files)
         try:
             it.stack.append(real_path(file))

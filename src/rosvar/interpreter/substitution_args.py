@@ -357,7 +357,7 @@ class Substituter:
             return Choice.const(self.space, Fail(str(error), "substitution-invalid"))
         if reads is not None:
             args = scope.args
-            key = (text, *[args.get(name) for name in reads])
+            key = (text, *map(args.get, reads))
             known = self._known.get(key)
             if known is None:
                 known = self._shared_resolved(key, (text, distinct, segments, find), scope)
@@ -635,6 +635,12 @@ def _concatenated(
         if isinstance(leaf, Fail):
             return leaf
     joined = parts(leaves)  # type: ignore[arg-type]  # no Fail left
+    for part in joined:
+        if type(part) is not str:
+            break
+    else:  # strings only (most combinations): their text, one level
+        whole = "".join(joined)  # type: ignore[arg-type]  # strings
+        return whole if len(whole) <= MAX_VALUE_SIZE else too_complex(text)
     size, depth = measure_parts(joined)
     if size > MAX_VALUE_SIZE or depth > MAX_TERM_DEPTH:
         return too_complex(text)

@@ -9,9 +9,10 @@ nodes for an exact weighted count (``read``) and for the values each variable ca
 
 ``read`` takes the nodes out of CUDD's memory, in the layout of the CUDD build that ``dd``
 0.6.0 ships (CUDD 3.0.0), which ``dd`` does not promise to keep: ``pyproject.toml`` pins that
-version of ``dd`` for it, and ``_indices`` checks the layout before every read. ``meets``
-calls a CUDD function ``dd`` does not wrap, on the manager's pointer read out of ``dd``'s
-object (``_pointer`` checks that layout on every call).
+version of ``dd`` for it, and ``_indices`` checks the layout before every read. ``meets``,
+``collect_garbage`` and ``held_nodes`` call CUDD functions ``dd`` does not wrap, on the
+manager's pointer read out of ``dd``'s object (``_pointer`` checks that layout on every
+call).
 """
 
 from __future__ import annotations
@@ -188,6 +189,21 @@ def meets(u: BDD, v: BDD) -> bool:
     return not _library().Cudd_bddLeq(_pointer(manager), int(u) - 2, (int(v) - 2) ^ 1)
 
 
+def collect_garbage(manager: Manager) -> None:
+    """Free the nodes nothing references any more (CUDD's ``cuddGarbageCollect``, its
+    computed table cleared), which ``dd`` does not wrap: CUDD collects them itself only
+    once they outnumber a share of its unique table, and meanwhile new nodes take new
+    memory, which CUDD never gives back."""
+    _library().cuddGarbageCollect(_pointer(manager), 1)
+
+
+def held_nodes(manager: Manager) -> int:
+    """The nodes CUDD holds, the dead ones not collected yet included (``len`` counts the
+    live ones only): what its memory grows with."""
+    held: int = _library().Cudd_ReadKeys(_pointer(manager))
+    return held
+
+
 @cache
 def _library() -> ctypes.PyDLL:
     """``dd``'s build of CUDD, whose functions are called with the GIL held (a ``PyDLL``):
@@ -195,6 +211,10 @@ def _library() -> ctypes.PyDLL:
     library = ctypes.PyDLL(_cudd.__file__)
     library.Cudd_bddLeq.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
     library.Cudd_bddLeq.restype = ctypes.c_int
+    library.cuddGarbageCollect.argtypes = [ctypes.c_void_p, ctypes.c_int]
+    library.cuddGarbageCollect.restype = ctypes.c_int
+    library.Cudd_ReadKeys.argtypes = [ctypes.c_void_p]
+    library.Cudd_ReadKeys.restype = ctypes.c_uint
     return library
 
 

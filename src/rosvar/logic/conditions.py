@@ -14,7 +14,15 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
 from rosvar.logic.atoms import PREDICATES, Atom, FileAtom, PredicateAtom, SlotAtom
-from rosvar.logic.bdd import BDD, Manager, cofactor, evaluate, new_manager, walked_support
+from rosvar.logic.bdd import (
+    BDD,
+    Manager,
+    cofactor,
+    collect_garbage,
+    evaluate,
+    new_manager,
+    walked_support,
+)
 from rosvar.logic.cells import CELLS, FRESH, PREDICATE_TEXTS
 from rosvar.logic.inputs import OTHER, UNSET, Input, Slot
 from rosvar.logic.printer import Printer
@@ -148,6 +156,25 @@ class ConditionSpace:
 
     def exactly_one(self, variables: Sequence[BDD]) -> BDD:
         return exactly_one(self.bdd, variables)
+
+    def varies(self, key: object) -> bool:
+        """Whether ``key`` (tuples of conditions and leaves, as ``Choice.key`` makes them)
+        holds a condition other than true and false: a key some input steers, met again
+        only where those inputs are."""
+        pending = [key]
+        constants = (self.true, self.false)
+        condition = type(self.true)
+        while pending:
+            item = pending.pop()
+            if isinstance(item, tuple):
+                pending.extend(item)
+            elif type(item) is condition and item not in constants:
+                return True
+        return False
+
+    def collect_garbage(self) -> None:
+        """Free the BDD nodes no condition holds any more (memos released)."""
+        collect_garbage(self.bdd)
 
     def input_constraint(self, input_: Input) -> BDD:
         """The exactly-one constraint of one input."""

@@ -11,6 +11,7 @@ graph whose inputs are only partly known), it stays unknown as before.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, cast
@@ -18,7 +19,15 @@ from typing import Any, cast
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, Fail
 from rosvar.logic.inputs import Input
-from rosvar.logic.terms import Apply, Operand, PackageTable, TermError, evaluate, is_term
+from rosvar.logic.terms import (
+    Apply,
+    Operand,
+    PackageTable,
+    TermError,
+    evaluate,
+    is_term,
+    shared,
+)
 
 Combination = Callable[[list[Any]], Operand | Fail]
 """The value of one leaf of each operand (a failing one: the launch tool's failure)."""
@@ -35,9 +44,15 @@ class GivenUp(Apply):
     """``too_complex(text)``: a value over the work limits, with what computes it in one
     configuration (``choices``, one leaf of each given to ``combination``).
 
-    Equal only to itself (two give-ups of one text may combine different operands), and
-    hashed as itself: hashed by their text, the give-ups of one text piled up in one probe
-    chain of each dict they were keys of, every lookup comparing them all.
+    Hash-consed by its computation: ``GivenUp(...)`` of a text, display, choices (the same
+    conditions and leaves, in order) and combination (the same function of the same
+    arguments) that a give-up alive already has is that give-up, so that the same value
+    given up in every includer's walk, or in both passes of an entry file, is one term with
+    one set of predicates (each a BDD variable the condition space keeps for good, with
+    its term and the conditions the term holds). Otherwise equal only to itself (two
+    give-ups of one text may combine different operands), and hashed as itself: hashed by
+    their text, the give-ups of one text piled up in one probe chain of each dict they
+    were keys of, every lookup comparing them all.
     """
 
     __slots__ = ("choices", "combination")
@@ -48,10 +63,16 @@ class GivenUp(Apply):
     def __new__(
         cls, text: str, display: str, choices: Sequence[Choice[object]], combination: Combination
     ) -> GivenUp:
-        self = cast("GivenUp", cls._made("too_complex", (text,), display))
-        self.choices = tuple(choices)
-        self.combination = combination
-        return self
+        choices = tuple(choices)
+
+        def made() -> GivenUp:
+            self = cast("GivenUp", cls._made("too_complex", (text,), display))
+            self.choices = choices
+            self.combination = combination
+            return self
+
+        key = _key(text, display, choices, combination)
+        return made() if key is None else shared(key, made)
 
     def __reduce__(self) -> Any:
         raise TypeError("a value given up is not pickled: it holds conditions")
@@ -75,6 +96,32 @@ class GivenUp(Apply):
 
 
 _NONE = object()
+
+
+def _key(
+    text: str, display: str, choices: tuple[Choice[object], ...], combination: Combination
+) -> tuple[object, ...] | None:
+    """What makes a give-up the same computation, or None where a part cannot be compared
+    (a leaf or an argument of the combination not hashable). The manager's identity comes
+    before the conditions: conditions of two managers cannot be compared."""
+    managers = [choice.false.bdd for choice in choices if choice.false is not None]
+    if isinstance(combination, functools.partial):
+        function: object = (combination.func, combination.args, tuple(combination.keywords.items()))
+    else:
+        function = combination
+    key = (
+        GivenUp,
+        id(managers[0]) if managers else None,
+        text,
+        display,
+        function,
+        tuple(choice.key() for choice in choices),
+    )
+    try:
+        hash(key)
+    except TypeError:
+        return None
+    return key
 
 
 def first(leaves: list[Any]) -> Any:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import weakref
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, cast
+from typing import TYPE_CHECKING, TypeVar, cast
 
 from rosvar.logic.inputs import Input
 
@@ -157,6 +157,7 @@ class Apply:
 
 Term = Hole | Apply
 Operand = str | Term | tuple[str, ...]
+Made = TypeVar("Made", bound=Hole | Apply)
 
 _INTERNED: dict[object, weakref.KeyedRef[object, Hole | Apply]] = {}
 """Every term alive, by what makes it (an input; a function, operands and display): weak,
@@ -170,6 +171,18 @@ def _known(key: object) -> Hole | Apply | None:
 
 def _intern(key: object, term: Hole | Apply) -> None:
     _INTERNED[key] = weakref.KeyedRef(term, _forget, key)
+
+
+def shared(key: tuple[object, ...], make: Callable[[], Made]) -> Made:
+    """The term alive that ``key`` made, else ``make()``'s, entered under ``key``: for a
+    kind of term hash-consed by a key of its own (whose first item is its class, so that
+    it meets no other kind's key)."""
+    known = _known(key)
+    if known is not None:
+        return cast("Made", known)
+    term = make()
+    _intern(key, term)
+    return term
 
 
 def _forget(ref: weakref.KeyedRef[object, Hole | Apply]) -> None:

@@ -13,6 +13,8 @@ import re
 SEP = "/"
 PRIVATE = "~"
 _LEGAL = re.compile(r"[~/A-Za-z][\w/]*")
+_MAPPED = re.compile(r"([~/A-Za-z]|_|__)[\w/]*")
+"""The source of a command line's ``name:=value`` word (:func:`command_line_mappings`)."""
 
 
 def is_global(name: str) -> bool:
@@ -89,7 +91,11 @@ def settable(name: str) -> bool:
     roslaunch reads its command line as ROS remappings: ``3d_sensor:=x`` (a digit
     first) or ``_private:=x`` never reach an arg.
     """
-    return name in command_line_mappings([f"{name}:=x"])
+    # command_line_mappings([f"{name}:=x"]) holds ``name`` exactly when this holds: the
+    # word's pattern stops at its first ':', and a name it matches has no space to strip
+    return _MAPPED.fullmatch(name) is not None and not (
+        len(name) > 1 and name[0] == "_" and name[1] != "_"
+    )
 
 
 def command_line_mappings(argv: list[str]) -> dict[str, str]:

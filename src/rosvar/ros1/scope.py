@@ -45,16 +45,18 @@ class Scope:
 
     def child(self, ns: Choice[Raw]) -> Scope:
         """``LoaderContext.child``: shares private params, copies the rest."""
-        return Scope(
-            ns=ns,
-            filename=self.filename,
-            parent=self,
-            params=self.params,
-            env=list(self.env),
-            args=dict(self.args),
-            anon=dict(self.anon),
-            declared=dict(self.declared),
-            include_args=self.include_args,
+        return Scope(  # every field given, in order: no default to make (one per tag)
+            ns,
+            self.filename,
+            self,
+            [],
+            self.params,
+            list(self.env),
+            dict(self.args),
+            dict(self.anon),
+            dict(self.declared),
+            self.include_args,
+            False,
         )
 
     def include_child(self, ns: Choice[Raw], filename: str) -> Scope:

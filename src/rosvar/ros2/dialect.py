@@ -19,9 +19,10 @@ from rosvar.ros2.api.actions import ACTIONS
 from rosvar.ros2.context import Context
 from rosvar.ros2.entry import walk_entry
 from rosvar.ros2.frontends import registry
+from rosvar.ros2.include_memo import forget_walks
 from rosvar.ros2.nodes import ROS2_NODES
 from rosvar.ros2.resolve import ROS2_CHECKS, node_fields, resolve
-from rosvar.ros2.substitutions import Ros2Substituter
+from rosvar.ros2.substitutions import Ros2Substituter, forget_resolved
 
 ROS2: Semantics[Context] = Semantics(
     RosVersion.ROS2,
@@ -33,6 +34,7 @@ ROS2: Semantics[Context] = Semantics(
     node_fields,
     ROS2_CHECKS,
     bind=registry.workspace_loader,
+    released=[forget_resolved, forget_walks],
 )
 
 

@@ -54,7 +54,8 @@ from rosvar.interpreter.model import (
 )
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, leaf_key
-from rosvar.memo import Memo
+from rosvar.logic.conditions import ConditionSpace
+from rosvar.memo import EntryMemo
 from rosvar.ros2.context import Configuration, Context, GlobalParam, GlobalRemap, Probe
 from rosvar.ros2.substitutions import Ros2Substituter
 
@@ -212,14 +213,23 @@ class _Walks:
     kept: int = 0
 
 
-def _table(files: Snapshot) -> Memo[object, _Walks]:
+def _table(files: Snapshot) -> EntryMemo[object, _Walks]:
     """The analysis's table of recorded walks, kept with the files it read: keyed by the
     parsed files, it must not outlive them, and a table on the condition space made a
     cycle with it, whose collection freed BDD nodes after their manager."""
     table = files.tables.get(__name__)
-    if not isinstance(table, Memo):
-        table = files.tables[__name__] = Memo(CAPACITY)
+    if not isinstance(table, EntryMemo):
+        table = files.tables[__name__] = EntryMemo(CAPACITY)
     return table
+
+
+def forget_walks(_space: ConditionSpace, files: Snapshot) -> None:
+    """Drop the walks recorded for the entry file done (a ``Release`` of
+    :mod:`~rosvar.interpreter.semantics`): their keys are path conditions and values over
+    its inputs, and a walk that made inputs is replayed in its entry file only."""
+    table = files.tables.get(__name__)
+    if isinstance(table, EntryMemo):
+        table.release()
 
 
 def _fixed(root: Entity, file: str, it: Interpretation[Context], context: Context) -> object:
@@ -323,7 +333,8 @@ def walk_included(
     key = _fixed(root, file, it, context)
     walks = table.get(key)
     if walks is None or walks.entity is not root:
-        walks = table[key] = _Walks(root)
+        walks = _Walks(root)
+        table.keep(key, walks, it.space.varies(key))
     found = _find(walks, it, context)
     if found is not None and _fits(found[0], it, substituter):
         _replay(it, context, substituter, *found)

@@ -25,6 +25,7 @@ import yaml
 
 from rosvar.bounded_yaml import check_limits
 from rosvar.files import FileCode, FileRefused, python_text, read_file
+from rosvar.frontends.xml import Snapshot
 from rosvar.interpreter.interpretation import Interpretation
 from rosvar.interpreter.model import Raw
 from rosvar.interpreter.safe_eval import (
@@ -54,7 +55,7 @@ from rosvar.logic.terms import (
     concat,
     register,
 )
-from rosvar.memo import Memo
+from rosvar.memo import EntryMemo, Memo
 from rosvar.ros2.api.substitutions import SUBSTITUTIONS
 from rosvar.ros2.api.unmodelled import UNMODELLED
 from rosvar.ros2.boolean_eval import BooleanExpression, boolean_expression
@@ -309,11 +310,22 @@ RESOLVED_BRANCHES = 16
 """Only values of at most this many branches are kept: larger ones are cross products of
 values that vary a lot, which no other read met again (docs/performance.md)."""
 _resolved: weakref.WeakKeyDictionary[
-    ConditionSpace, Memo[object, tuple[Choice[Value], frozenset[str], int]]
+    ConditionSpace, EntryMemo[object, tuple[Choice[Value], frozenset[str], int]]
 ] = weakref.WeakKeyDictionary()
 """Each value with the unset names it read and the combinations it spent of the file's
 budget (a reuse spends them too, so that the budget is the same whatever was resolved
 before; a value that met a limit is not kept)."""
+
+
+def forget_resolved(space: ConditionSpace, _files: Snapshot) -> None:
+    """Drop the texts resolved for the entry file done (a ``Release`` of
+    :mod:`~rosvar.interpreter.semantics`): their keys are values over its inputs, which no
+    other entry file reads. A text resolved again in another entry file makes the same
+    values, give-ups included (:class:`~rosvar.logic.given_up.GivenUp`), hence the same
+    predicates."""
+    memo = _resolved.get(space)
+    if memo is not None:
+        memo.release()
 
 
 @dataclass(frozen=True)
@@ -383,7 +395,7 @@ class Ros2Substituter:
         )
         memo = _resolved.get(self.space)
         if memo is None:
-            memo = _resolved[self.space] = Memo(RESOLVED_CAPACITY)
+            memo = _resolved[self.space] = EntryMemo(RESOLVED_CAPACITY)
         known = memo.get(key)
         if known is not None and self.budget.spares(known[2]):
             self.budget.combinations += known[2]
@@ -395,7 +407,8 @@ class Ros2Substituter:
             value = self.template(template, context, text)
             if len(value.branches) <= RESOLVED_BRANCHES and self.budget.notes == notes:
                 spent = self.budget.combinations - spent
-                memo[key] = (value, frozenset(context.unset_reads), spent)
+                entry = (value, frozenset(context.unset_reads), spent)
+                memo.keep(key, entry, self.space.varies(key))
         finally:
             unset_reads |= context.unset_reads
             context.unset_reads = unset_reads

@@ -1012,6 +1012,29 @@ def test_linked_boxes_are_all_in_view(page: Any, ws: LaunchWorkspace) -> None:
         assert len(app.units("group")) == 12 and outside == []
 
 
+def test_a_notice_above_the_canvas_keeps_the_drawing_in_view(
+    page: Any, ws: LaunchWorkspace
+) -> None:
+    """The notice of what rosvar could not read takes room above the canvas: the view is
+    fitted to the smaller canvas, and to the larger one when the notice goes (the ROS 2
+    Husky's accessories.launch.py ran 19 px past the bottom, the legend over it)."""
+    wired_workspace(ws, topics=30)  # a column of topics: the fit is bound by the height
+    ws.launch("unread.launch", '  <param name="p" value="$(find nopkg)/p.yaml"/>')
+    with running(wired_configurator(ws)) as live:
+        page.set_viewport_size({"width": 1600, "height": 1000})
+        app = App(page, live)
+        assert beyond_the_canvas(app) == {}
+        height = page.evaluate("window.rosvar.graph.cy.height()")
+        app.choose(file_named(app.state, "unread.launch"), "select")
+        assert page.locator("#command-status").is_visible()
+        page.wait_for_function(f"() => window.rosvar.graph.cy.height() < {height}")
+        assert beyond_the_canvas(app) == {}
+        app.wait_for_update(lambda: page.click("#reset"))
+        assert page.locator("#command-status").is_hidden()
+        page.wait_for_function(f"() => window.rosvar.graph.cy.height() === {height}")
+        assert beyond_the_canvas(app) == {}
+
+
 def test_a_ros2_product_that_does_not_launch_names_ros2_launch(
     page: Any, ws: LaunchWorkspace
 ) -> None:

@@ -59,6 +59,8 @@ def _value_choice(
                 )
             )
         try:
+            if kind is ParamSource.VALUE:  # reads no file: no confinement to ask for
+                return convert_value(leaf.strip(), ptype)
             return param_value(kind, leaf, ptype, it.workspace.confinement())
         except FileRefused as refused:
             if refused.code != FileCode.OUTSIDE:
@@ -75,6 +77,12 @@ def add_private(
     it: Interpretation[Scope], params: list[PrivateParam], key: str, value: Choice[object]
 ) -> None:
     """``LoaderContext.add_param``: a later ``~key`` hides an earlier one."""
+    for param in params:
+        if param.key == key:
+            break
+    else:  # (most keys are new: nothing to hide)
+        params.append(PrivateParam(it.pc, key, value, it.location))
+        return
     kept = []
     for param in params:
         if param.key == key:

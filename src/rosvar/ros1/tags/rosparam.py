@@ -254,7 +254,7 @@ def _emit(
             (Choice.const(space, k), Choice.const(space, v)) for k, v in pairs
         ]
     pc, location = it.pc, entity.location
-    it.model.params.extend(ParamDecl(pc, location, name, value) for name, value in values)
+    it.model.params.extend([ParamDecl(pc, location, name, value) for name, value in values])
 
 
 def _not_read(it: Interpretation[Scope], file: str, code: FileCode, message: str) -> None:

@@ -246,6 +246,8 @@ export class GraphView {
     this.moved = false; // the user panned or zoomed since the view was last fitted to everything
     this.settle = null; // what ends the running layout once the view is where it goes
     this.cy.on("dragpan scrollzoom pinchzoom", () => { this.moved = true; });
+    this.refit = false; // the canvas changed size while a layout ran: fit when it ends
+    new ResizeObserver(() => this.resized()).observe(container);
     this.cy.on("select unselect", () => { this.markNear(); this.onSelect(this.selectedElement(), true); });
     this.cy.on("mouseover", "node", (event) => event.target.connectedEdges('[kind = "link"]').addClass("pointed"));
     this.cy.on("mouseout", "node", (event) => event.target.connectedEdges('[kind = "link"]').removeClass("pointed"));
@@ -741,6 +743,10 @@ export class GraphView {
     const finish = () => {
       this.settle = null;
       this.layoutsDone = runs;
+      if (runs === this.layoutRuns && this.refit) {
+        this.refit = false;
+        if (!this.moved) this.fit();
+      }
       if (runs === this.layoutRuns && !this.pending) this.container.dataset.layout = "done";
     };
     this.settle = finish; // called by a view that stops this one's motion of the view
@@ -883,6 +889,16 @@ export class GraphView {
   search(text) {
     this.needle = text.trim().toLowerCase();
     this.applyVisibility();
+  }
+
+  // The canvas changed size (the notice above it came or went, the window was resized):
+  // cytoscape learns it only from the window, so it is told here, and the view is fitted to
+  // the new size unless the user moved it (a layout running fits when it ends).
+  resized() {
+    this.cy.resize();
+    if (this.moved) return;
+    if (this.layoutsDone === this.layoutRuns) this.fit();
+    else this.refit = true;
   }
 
   // Fits the view to everything drawn (the Fit button); layouts fit it again from now on.
