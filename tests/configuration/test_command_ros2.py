@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import shlex
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -146,3 +147,44 @@ def test_a_typed_name_launch_ros_refuses_is_refused_or_the_products_failure(
             [refusal] = state["refused"]
             assert "ros2 launch would stop at " in refusal["reason"]
             assert problem in refusal["reason"], (refusal["reason"], expected["error"])
+
+
+TYPED_PARAM = """<launch>
+  <arg name="rate" default="5"/>
+  <arg name="fast" default="false"/>
+  <node pkg="pkg" exec="a" name="a" if="$(var fast)">
+    <param name="rate" type="int" value="$(var rate)"/>
+  </node>
+</launch>"""
+
+
+def test_a_typed_text_a_typed_parameter_refuses_fails_as_in_ros2_launch(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """issue 30's "no finished command that does not launch", for ROS 2: ``<param
+    type="int">`` of a typed ``abc`` stops ``ros2 launch`` (the oracle), so the text is refused
+    where every product left has the node, and the product's failure where some have it; the
+    configuration called it complete and loadable."""
+    file = _launch_folder(tmp_path) / "typed.launch.xml"
+    file.write_text(TYPED_PARAM)
+    feature = "pkg/launch/typed.launch.xml"
+    start = ["configure", str(tmp_path), "--select", feature]
+
+    def configured(*words: str) -> dict[str, Any]:
+        main([*start, *words, "--finish", "--json"])
+        state: dict[str, Any] = json.loads(capsys.readouterr().out)
+        return state
+
+    refused = configured("--set", f"{feature}:fast=true", "--set", f"{feature}:rate=abc")
+    [refusal] = refused["refused"]
+    assert "ros2 launch would stop at " in refusal["reason"]
+    assert "invalid literal for int() with base 10: 'abc' [param-invalid]" in refusal["reason"]
+    assert run_oracle(file, {"fast": "true", "rate": "abc"}, [tmp_path])["ok"] is False
+    failing = configured("--set", f"{feature}:rate=abc", "--set", f"{feature}:fast=true")
+    assert failing["refused"] == [] and failing["launches"] is False  # its failure, struck
+    loads = configured("--set", f"{feature}:rate=abc")  # fast stays false: no node, no param
+    assert loads["refused"] == [] and loads["launches"] is True
+    assert run_oracle(file, {"rate": "abc"}, [tmp_path])["ok"] is True
+    typed = configured("--set", f"{feature}:fast=true", "--set", f"{feature}:rate=7")
+    assert typed["refused"] == [] and typed["launches"] is True
+    assert run_oracle(file, {"fast": "true", "rate": "7"}, [tmp_path])["ok"] is True

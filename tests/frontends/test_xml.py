@@ -197,6 +197,34 @@ def test_nesting_up_to_the_limit_is_fine() -> None:
     assert parse_launch_bytes(data, "f").root is not None
 
 
+def test_kept_tags_are_built_and_the_rest_only_checked() -> None:
+    data = (
+        b"<package><name> p </name><depend>a<x>b</x></depend>"
+        b"<export><build_type>ament_cmake</build_type><other/></export></package>"
+    )
+    keep = frozenset({"name", "export", "build_type"})
+    root = parse_xml_bytes(data, "package.xml", keep).root
+    assert root is not None and root.tag == "package"
+    assert [c.tag for c in root.children] == ["name", "export"]
+    assert root.children[0].text == " p " and root.text == ""  # no text of a skipped element
+    assert [c.tag for c in root.children[1].children] == ["build_type"]
+    whole = parse_xml_bytes(data, "package.xml").root
+    assert whole is not None and len(whole.children) == 3
+    kept = root.children[1].children[0].location
+    assert kept == whole.children[2].children[0].location == Location("package.xml", 1, 60)
+    # a root is built whatever its tag; what is skipped is still parsed and limited
+    assert parse_xml_bytes(b"<launch/>", "f", keep).root is not None
+    broken = parse_xml_bytes(b"<package><name>p</name><depend><x></depend></package>", "f", keep)
+    assert codes(broken) == ["xml-malformed"]
+    depth = xml.MAX_DEPTH
+    deep = b"<package>" + b"<g>" * depth + b"</g>" * depth + b"</package>"
+    refused = only_error(parse_xml_bytes(deep, "f", keep), "xml-too-deep")
+    assert refused == only_error(parse_xml_bytes(deep, "f"), "xml-too-deep")  # the same <g>
+    assert refused == f"f:1:{len(b'<package>') + 3 * (depth - 1) + 1}"
+    fine = b"<package>" + b"<g>" * (depth - 1) + b"</g>" * (depth - 1) + b"</package>"
+    assert parse_xml_bytes(fine, "f", keep).root is not None
+
+
 def test_garbage_never_raises() -> None:
     rng = random.Random(1234)
     seed = b'<?xml version="1.0"?><launch><arg name="a"/><![CDATA[x]]><!--c--></launch>'

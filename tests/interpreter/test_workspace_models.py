@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import os
 import subprocess
 import sys
@@ -13,6 +14,7 @@ import pytest
 
 from rosvar.interpreter.model import LaunchModel
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.describe import describe_model
 from rosvar.workspace import discover
 from workspace.interfaces.ros2_packages import MANIFEST
 
@@ -83,3 +85,44 @@ def test_an_entry_file_is_interpreted_again_only_for_late_names(
     models = {Path(model.file).name: model for model in analysis.all_models()}
     assert passes == {"inc.launch.xml": 1, "once.launch.xml": 1, "twice.launch.xml": 2}
     assert {"late", "other"} <= models["twice.launch.xml"].inputs.keys()
+
+
+def test_a_late_name_set_on_a_path_has_one_branch_order_in_both_passes(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """An includer sets ``late`` on a path before the included file declares it, and a second
+    declaration finds it unset (no default where the command line does not give it): the
+    first pass builds its value over the unset one at the declaration, the second over the
+    command line's from the start. Both must order the branches alike, so that a pass
+    that gives the same model gives it in the same order."""
+    package = tmp_path / "p"
+    package.mkdir()
+    (package / "package.xml").write_text(MANIFEST.format(name="p", build="ament_cmake"))
+    (package / "inc.launch.xml").write_text(
+        '<launch><arg name="late"/><node pkg="p" exec="e" name="n_$(var late)"/></launch>'
+    )
+    (package / "again.launch.xml").write_text('<launch><arg name="late"/></launch>')
+    inc = '<include file="$(dirname)/inc.launch.xml"'
+    (package / "entry.launch.xml").write_text(
+        '<launch><arg name="on" default="true"/>'
+        f'{inc} if="$(var on)"><arg name="late" value="zzz"/></include>'
+        '<include file="$(dirname)/again.launch.xml"/>'
+        f'{inc} unless="$(var on)"><arg name="late" value="aaa"/></include></launch>'
+    )
+    described: list[str] = []
+    interpret_with = Analysis._interpret_with
+
+    def kept(
+        self: Analysis, file: str, undeclared: Mapping[str, str]
+    ) -> tuple[LaunchModel, set[str]]:
+        model, late = interpret_with(self, file, undeclared)
+        if Path(file).name == "entry.launch.xml":
+            described.append(json.dumps(describe_model(model), default=str))
+        return model, late
+
+    monkeypatch.setattr(Analysis, "_interpret_with", kept)
+    Analysis(discover([tmp_path], ros_package_path="")).model(str(package / "entry.launch.xml"))
+    assert len(described) == 2  # the second declaration makes "late" late
+    first, second = described
+    assert "n_zzz" in first and "n_aaa" in first
+    assert first == second

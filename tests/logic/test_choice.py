@@ -191,6 +191,25 @@ def test_ite_agrees_with_per_configuration_choice(space: ConditionSpace) -> None
             assert got == expected
 
 
+def test_ite_is_the_merge_of_both_sides_conjoined(space: ConditionSpace) -> None:
+    """Leaves on both sides (one if-then-else each) come out as merging the two sides'
+    conjunctions gives them: the same conditions, in the same order."""
+    rng = random.Random(11)
+    shared = 0
+    for _ in range(40):
+        then = _random_choice(space, rng, "v")
+        otherwise = _random_choice(space, rng, rng.choice(("v", "o")))
+        cond = _random_condition(space, rng)
+        expected = Choice.of(
+            [(c & cond, v) for c, v in then.branches]
+            + [(c & ~cond, v) for c, v in otherwise.branches],
+            space.false,
+        )
+        assert ite(space, cond, then, otherwise).branches == expected.branches
+        shared += bool(set(then.values()) & set(otherwise.values()))
+    assert shared > 10  # the case the if-then-else is for was met
+
+
 # -- combine --------------------------------------------------------------------------------------
 def test_combine_prunes_impossible_combinations(space: ConditionSpace) -> None:
     a = x_is(space, "a")

@@ -139,6 +139,7 @@ class NodeContent:
     parameters: list[Setting]
     node: NodeDecl
     confinement: Confinement  # where its parameter files may be read
+    typed: list[Setting]  # (value, type) of the parameters coerced once their text is known
 
     def failures(self, values: Values) -> list[Failure]:
         """Where a node variant's strings make its launch tool stop, as ``rosvar resolve``
@@ -165,6 +166,14 @@ class NodeContent:
                 pair = (values.strict(first, where, label), values.strict(second, where, label))
                 if label == "remap":
                     checks.remap(*pair, where)
+            except ResolutionError as error:
+                found.append(Failure.of(part, error))
+        for value, kind, part in self.typed:
+            if not values.knows((value,)):
+                continue
+            try:
+                given = values.strict(value, where, "parameter value")
+                checks.parameter(str(given), str(kind), where)
             except ResolutionError as error:
                 found.append(Failure.of(part, error))
         return found
@@ -518,12 +527,13 @@ class VariationalGraph:
             )
             env = self._parted(condition, [(e.condition, e.name, e.value) for e in node.env], parts)
             parameters = self._parted(condition, _parameter_settings(node), parts)
+            typed = self._parted(condition, _typed_parameters(node), parts)
             element = self._add(
                 ElementKind.TEST if node.is_test else ElementKind.NODE,
                 new_id,
                 model.file,
                 condition,
-                NodeContent(raw, remaps, env, parameters, node, self.confinement),
+                NodeContent(raw, remaps, env, parameters, node, self.confinement, typed),
                 _needs(
                     *raw.values(),
                     *(p for pair in remaps + env + parameters for p in pair[:2]),
@@ -699,6 +709,16 @@ def _needs(*raws: object) -> set[Input]:
 Setting = tuple[Raw, Raw, int | None]
 """A remap (from, to) or environment setting (name, value) of a node variant, with the
 index of its part (None: the variant always has it)."""
+
+
+def _typed_parameters(node: NodeDecl) -> list[tuple[BDD, Raw, Raw]]:
+    """A ROS 2 node's ``<param type>`` values known per configuration only, with their type:
+    launch coerces them as it loads (a literal one is checked as the file is read)."""
+    return [
+        (parameter.condition, parameter.value, parameter.kind)
+        for parameter in node.parameters
+        if parameter.kind and parameter.value is not None and not isinstance(parameter.value, str)
+    ]
 
 
 def _parameter_settings(node: NodeDecl) -> list[tuple[BDD, Raw, Raw]]:

@@ -93,15 +93,19 @@ def _prepare(data: bytes, filename: str) -> bytes | ParseResult:
     return data
 
 
-def parse_xml_bytes(data: bytes, filename: str) -> ParseResult:
+def parse_xml_bytes(data: bytes, filename: str, keep: frozenset[str] | None = None) -> ParseResult:
     """Parse any XML document safely into an :class:`Entity` tree (no root-tag check).
 
-    Shared by launch files and ``package.xml`` so both get the same safety rules.
+    Shared by launch files and ``package.xml`` so both get the same safety rules. ``keep``:
+    the tags of the elements below the root that the caller reads; the others (and what
+    they hold) are parsed and checked as well, but not built.
     """
-    return _parse(data, filename, None)[0]
+    return _parse(data, filename, None, keep)[0]
 
 
-def _parse(data: bytes, filename: str, watch: str | None) -> tuple[ParseResult, list[Entity]]:
+def _parse(
+    data: bytes, filename: str, watch: str | None, keep: frozenset[str] | None = None
+) -> tuple[ParseResult, list[Entity]]:
     """Parse, also collecting the elements tagged ``watch`` (spares a second tree walk)."""
     watched: list[Entity] = []
     if not data.removeprefix(_UTF8_BOM).strip():
@@ -133,14 +137,7 @@ def _parse(data: bytes, filename: str, watch: str | None) -> tuple[ParseResult, 
         if tag == watch:
             watched.append(entity)
         if len(stack) > MAX_DEPTH:
-            raise _Refused(
-                Diagnostic(
-                    "xml-too-deep",
-                    Severity.ERROR,
-                    f"elements nested more than {MAX_DEPTH} levels deep",
-                    entity.location,
-                )
-            )
+            raise _Refused(_too_deep(entity.location))
         stack.append(entity)
         texts.append(None)
 
@@ -174,9 +171,37 @@ def _parse(data: bytes, filename: str, watch: str | None) -> tuple[ParseResult, 
             )
         )
 
-    parser.StartElementHandler = start
-    parser.EndElementHandler = end
-    parser.CharacterDataHandler = characters
+    skipped = 0  # elements open inside one that is not kept
+
+    def start_kept(tag: str, attributes: dict[str, str]) -> None:
+        nonlocal skipped
+        if not skipped and (len(stack) == 1 or tag in keep):  # type: ignore[operator]
+            start(tag, attributes)
+            return
+        skipped += 1
+        if len(stack) + skipped > MAX_DEPTH + 1:
+            where = Location(filename, parser.CurrentLineNumber, parser.CurrentColumnNumber + 1)
+            raise _Refused(_too_deep(where))
+
+    def end_kept(tag: str) -> None:
+        nonlocal skipped
+        if skipped:
+            skipped -= 1
+        else:
+            end(tag)
+
+    def characters_kept(text: str) -> None:
+        if not skipped:
+            characters(text)
+
+    if keep is None:
+        parser.StartElementHandler = start
+        parser.EndElementHandler = end
+        parser.CharacterDataHandler = characters
+    else:
+        parser.StartElementHandler = start_kept
+        parser.EndElementHandler = end_kept
+        parser.CharacterDataHandler = characters_kept
     parser.StartDoctypeDeclHandler = refuse_dtd
     parser.EntityDeclHandler = refuse_dtd
     parser.ExternalEntityRefHandler = refuse_dtd
@@ -205,6 +230,15 @@ def _parse(data: bytes, filename: str, watch: str | None) -> tuple[ParseResult, 
         parser.CharacterDataHandler = parser.StartDoctypeDeclHandler = None
         parser.EntityDeclHandler = parser.ExternalEntityRefHandler = None
     return ParseResult(document.children[0] if document.children else None), watched
+
+
+def _too_deep(location: Location) -> Diagnostic:
+    return Diagnostic(
+        "xml-too-deep",
+        Severity.ERROR,
+        f"elements nested more than {MAX_DEPTH} levels deep",
+        location,
+    )
 
 
 def parse_launch_bytes(data: bytes, filename: str) -> ParseResult:
@@ -260,14 +294,16 @@ def read_bytes(
 
 
 def parse_xml_file(
-    path: str | os.PathLike[str], resolve: Callable[[str], str] | None = None
+    path: str | os.PathLike[str],
+    resolve: Callable[[str], str] | None = None,
+    keep: frozenset[str] | None = None,
 ) -> ParseResult:
     """Read and safely parse any XML file (e.g. ``package.xml``); never raises. ``resolve``
-    as :func:`read_bytes`'s."""
+    as :func:`read_bytes`'s, ``keep`` as :func:`parse_xml_bytes`'s."""
     data = read_bytes(path, resolve=resolve)
     if isinstance(data, ParseResult):
         return data
-    return parse_xml_bytes(data, os.fspath(path))
+    return parse_xml_bytes(data, os.fspath(path), keep)
 
 
 def parse_launch_file(

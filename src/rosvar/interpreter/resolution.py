@@ -92,6 +92,9 @@ class Checks:
     """A test's own attributes."""
     remap: Callable[[str | None, str | None, Location], None]
     """A remap's two names."""
+    parameter: Callable[[str, str, Location], None] = lambda _text, _kind, _where: None
+    """A node's own parameter value of a declared type (ROS 2's ``<param type>``): its text
+    and the type's name (a ROS 1 node has no parameters of its own)."""
 
 
 NodeFields = Callable[

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import ast
 import functools
+import itertools
 import os
 from collections.abc import Callable, Hashable, Iterable, Sequence
 from typing import Final, Protocol
@@ -436,8 +437,13 @@ class Substituter:
         if segments == ("", 0, ""):  # the whole text is one substitution: its value as is
             return values[0]
 
+        places = [(place, s) for place, s in enumerate(segments) if not isinstance(s, str)]
+
         def parts(leaves: Sequence[Raw]) -> list[Raw]:
-            return [s if isinstance(s, str) else leaves[s] for s in segments]
+            joined: list[Raw] = list(segments)  # type: ignore[arg-type]  # ints replaced below
+            for place, leaf in places:
+                joined[place] = leaves[leaf]
+            return joined
 
         return self.budget.join(text, values, parts)
 
@@ -634,17 +640,20 @@ def _concatenated(
     for leaf in leaves:
         if isinstance(leaf, Fail):
             return leaf
-    joined = parts(leaves)  # type: ignore[arg-type]  # no Fail left
-    for part in joined:
-        if type(part) is not str:
-            break
-    else:  # strings only (most combinations): their text, one level
-        whole = "".join(joined)  # type: ignore[arg-type]  # strings
-        return whole if len(whole) <= MAX_VALUE_SIZE else too_complex(text)
-    size, depth = measure_parts(joined)
+    # Runs of strings joined first (a text's literal parts and the strings around its
+    # terms): measuring and concatenating then see a few parts, and strings only are done.
+    merged: list[Raw] = []
+    for kind, run in itertools.groupby(parts(leaves), type):  # type: ignore[arg-type]
+        if kind is str:
+            merged.append("".join(run))  # type: ignore[arg-type]  # strings
+        else:
+            merged.extend(run)
+    if len(merged) == 1 and type(merged[0]) is str:
+        return merged[0] if len(merged[0]) <= MAX_VALUE_SIZE else too_complex(text)
+    size, depth = measure_parts(merged)
     if size > MAX_VALUE_SIZE or depth > MAX_TERM_DEPTH:
         return too_complex(text)
-    return concat(list(joined))
+    return concat(merged)
 
 
 def _oversized(leaf: Value, text: str) -> bool:

@@ -182,11 +182,34 @@ def ite(space: ConditionSpace, condition: BDD, then: Choice[V], otherwise: Choic
         return then
     if condition == space.false:
         return otherwise
-    return Choice.of(
-        [(c & condition, v) for c, v in then.branches]
-        + [(c & ~condition, v) for c, v in otherwise.branches],
-        space.false,
-    )
+    # each leaf's conditions on both sides, in the order ``Choice.of`` would merge them: a
+    # leaf on both sides (a value kept where it is set again) is one if-then-else, not two
+    # conjunctions and their disjunction (the nodes of both halves built for nothing)
+    placed: dict[object, list[Any]] = {}
+    for c, v in then.branches:
+        key = v if type(v) in _SELF_KEYED else leaf_key(v)
+        known = placed.get(key)
+        placed[key] = [c, None, v] if known is None else [known[0] | c, None, v]
+    for c, v in otherwise.branches:
+        key = v if type(v) in _SELF_KEYED else leaf_key(v)
+        known = placed.get(key)
+        if known is None:
+            placed[key] = [None, c, v]
+        else:
+            known[1] = c if known[1] is None else known[1] | c
+            known[2] = v
+    false = space.false
+    branches: list[tuple[BDD, V]] = []
+    for where_then, where_else, v in placed.values():
+        if where_else is None:
+            joint = where_then & condition
+        elif where_then is None:
+            joint = where_else & ~condition
+        else:
+            joint = space.bdd.ite(condition, where_then, where_else)
+        if joint != false:
+            branches.append((joint, v))
+    return Choice(tuple(branches), false)
 
 
 def combine(choices: Sequence[Choice[V]], function: Callable[[list[V]], U]) -> Choice[U]:

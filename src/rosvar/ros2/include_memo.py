@@ -211,6 +211,7 @@ class _Walks:
     entity: Entity
     root: _Node = field(default_factory=_Node)
     kept: int = 0
+    own: bool = False  # a walk kept read values some input steers, or made inputs
 
 
 def _table(files: Snapshot) -> EntryMemo[object, _Walks]:
@@ -225,11 +226,15 @@ def _table(files: Snapshot) -> EntryMemo[object, _Walks]:
 
 def forget_walks(_space: ConditionSpace, files: Snapshot) -> None:
     """Drop the walks recorded for the entry file done (a ``Release`` of
-    :mod:`~rosvar.interpreter.semantics`): their keys are path conditions and values over
-    its inputs, and a walk that made inputs is replayed in its entry file only."""
+    :mod:`~rosvar.interpreter.semantics`): those whose fixed context some input steers (a
+    path condition, a namespace over its inputs), and the files' whose kept walks read
+    such values or made inputs (replayed in their entry file only). Walks of constant
+    contexts and reads stay for every entry file."""
     table = files.tables.get(__name__)
     if isinstance(table, EntryMemo):
         table.release()
+        for key in [key for key, walks in table.items() if walks.own]:
+            del table[key]
 
 
 def _fixed(root: Entity, file: str, it: Interpretation[Context], context: Context) -> object:
@@ -522,7 +527,9 @@ def _record(
                 include_depth,
             )
             if effect is not None:
-                _keep(walks, [(p, n, _answer_key(p, answer)) for p, n, answer in read], effect)
+                keys = [(p, n, _answer_key(p, answer)) for p, n, answer in read]
+                walks.own = walks.own or effect.entry is not None or it.space.varies(tuple(keys))
+                _keep(walks, keys, effect)
         if not recording.walks:
             recording.reads.clear()
             recording.included.clear()

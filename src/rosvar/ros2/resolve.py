@@ -375,5 +375,14 @@ def _remap_unchecked(_source: str | None, _target: str | None, _location: Locati
     """launch_ros hands a remap's names to the node unchecked."""
 
 
-ROS2_CHECKS = Checks(node=check_node, test=_no_test, remap=_remap_unchecked)
+def _coerced(text: str, kind: str, location: Location) -> None:
+    """launch_ros coerces a ``<param type>``'s text as the launch loads (``param-invalid``
+    where it cannot: ``type="int"`` of a text typed ``abc``)."""
+    try:
+        coerce(text, kind)
+    except ValueError as error:
+        raise ResolutionError("param-invalid", str(error), location) from None
+
+
+ROS2_CHECKS = Checks(node=check_node, test=_no_test, remap=_remap_unchecked, parameter=_coerced)
 """launch_ros's checks of a node's strings, for the typed texts of the configuration graph."""

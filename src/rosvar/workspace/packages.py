@@ -28,12 +28,14 @@ from rosvar.frontends.xml import parse_xml_file
 from rosvar.ros.version import RosVersion
 from rosvar.workspace.launch_files import PACKAGE_FILE, LaunchFormat, format_of, launch_format
 from rosvar.workspace.paths import real_path
-from rosvar.workspace.ros_version import majority, package_version
+from rosvar.workspace.ros_version import VERSION_TAGS, majority, package_version
 from rosvar.workspace.share import ShareMap, share_map
 
 EXECUTABLES_FILE = ".executables"
 IGNORE_MARKERS = ("CATKIN_IGNORE", "rospack_nosubdirs", "COLCON_IGNORE", "AMENT_IGNORE")
 SHARE_FOLDER = "share"
+_MANIFEST_TAGS = frozenset({"name", *VERSION_TAGS})
+"""The elements of a ``package.xml`` discovery reads: the name and the ROS it is for."""
 SOURCE_FOLDER = "src"
 BUILD_OUTPUTS = ("build", "devel", "install", "log")
 """What catkin_make, catkin build and colcon write beside a workspace's ``src``."""
@@ -265,7 +267,8 @@ class _Discovery:
     def _read_manifest(self, manifest: str, directory: str) -> tuple[str, RosVersion | None]:
         """The package's name and ROS; a broken manifest gives the folder's name."""
         fallback = os.path.basename(directory)
-        result = parse_xml_file(manifest, real_path)  # its folder resolved already
+        # its folder resolved already; only what is read here built (Husky: 1 in 4 elements)
+        result = parse_xml_file(manifest, real_path, _MANIFEST_TAGS)
         root = result.root
         problem: str
         location = Location(manifest)

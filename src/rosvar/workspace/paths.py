@@ -11,7 +11,8 @@ from rosvar.files import real_path_from
 def real_path(path: str) -> str:
     """``os.path.realpath``, with one ``lstat`` per new absolute path instead of one per
     component (relative paths depend on the working directory: never cached)."""
-    return _real_absolute(path) if os.path.isabs(path) else os.path.realpath(path)
+    # ``os.path.isabs``, without its calls (every include and domain question asks)
+    return _real_absolute(path) if path.startswith(os.sep) else os.path.realpath(path)
 
 
 @functools.lru_cache(maxsize=65536)

@@ -21,6 +21,8 @@ BUILD_TOOLS: dict[str, RosVersion] = {
     "ament_": RosVersion.ROS2,
 }
 _BUILD_TOOL_TAGS = ("buildtool_depend", "buildtool_export_depend")
+VERSION_TAGS = frozenset({"export", "build_type", *_BUILD_TOOL_TAGS})
+"""The manifest elements :func:`package_version` reads."""
 
 
 def build_tool_version(name: str) -> RosVersion | None:

@@ -15,9 +15,16 @@ import pytest
 from configuration.helpers import configurator
 from outputs.web.live import Live, running
 from outputs.web.test_app import App
+from rosvar.analyses.feature_model.extraction import extract
+from rosvar.configuration.engine import Configurator
 from rosvar.configuration.session import Session
+from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.cli import main
+from rosvar.outputs.commands.loading import interfaces_of
 from rosvar.outputs.web import inspection
+from rosvar.outputs.web.entries import render
 from rosvar.outputs.web.overview import key_of
+from rosvar.workspace import discover
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -349,6 +356,23 @@ def test_no_checks_are_asked_while_a_step_is_answered(
         assert f"asked {live.url}api/checks" in events[answered:]
 
 
+def checked(root: Path, capsys: pytest.CaptureFixture[str]) -> list[dict[str, Any]]:
+    """The findings of ``rosvar check --all`` of ``root``."""
+    main(["check", str(root), "--format", "json", "--all"])
+    findings: list[dict[str, Any]] = json.loads(capsys.readouterr().out)["findings"]
+    return findings
+
+
+def served(root: Path) -> Configurator:
+    """The engine ``rosvar serve root`` runs (interfaces and the catalogue read)."""
+    analysis = Analysis(discover([str(root)], ament_prefix_path=""))
+    options = argparse.Namespace(catalogue=True, hints=None)
+    interfaces = interfaces_of(analysis.workspace, options)
+    return Configurator(
+        analysis, extract(analysis, products=True), interfaces=interfaces, render=render
+    )
+
+
 def test_the_page_s_checks_and_queries_are_those_of_the_commands(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -357,26 +381,12 @@ def test_the_page_s_checks_and_queries_are_those_of_the_commands(
     findings are those of ``rosvar check --json`` and its topics those of ``rosvar query``
     (here the controllers' ``cmd_vel`` input nobody provides, and their ``joint_states``)."""
     from ros2.test_controllers import CONTROL, _workspace
-    from rosvar.analyses.feature_model.extraction import extract
-    from rosvar.configuration.engine import Configurator
-    from rosvar.interpreter.workspace_models import Analysis
-    from rosvar.outputs.cli import main
-    from rosvar.outputs.commands.loading import interfaces_of
-    from rosvar.outputs.web.entries import render
-    from rosvar.workspace import discover
 
     _workspace(tmp_path, CONTROL)
-    main(["check", str(tmp_path), "--format", "json", "--all"])
-    command = json.loads(capsys.readouterr().out)["findings"]
+    command = checked(tmp_path, capsys)
     main(["query", str(tmp_path), "topics", "--json"])
     topics = {r["name"] for r in json.loads(capsys.readouterr().out)["results"]}
-    analysis = Analysis(discover([str(tmp_path)], ament_prefix_path=""))
-    options = argparse.Namespace(catalogue=True, hints=None)
-    interfaces = interfaces_of(analysis.workspace, options)
-    engine = Configurator(
-        analysis, extract(analysis, products=True), interfaces=interfaces, render=render
-    )
-    with running(engine) as live:
+    with running(served(tmp_path)) as live:
         session = live.open()["session"]
         page = checks(live, session)["findings"]
         shown = {r["name"] for r in ask(live, session, "topics")}

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from rosvar.frontends.entity import Entity
 from rosvar.interpreter.interpretation import Interpretation, processed
-from rosvar.interpreter.model import ArgDecl
+from rosvar.interpreter.model import ArgDecl, Raw
 from rosvar.logic.bdd import BDD
 from rosvar.logic.choice import Choice, ite
 from rosvar.logic.terms import Apply, Hole, register
@@ -35,6 +35,9 @@ def arg(it: Interpretation[Context], entity: Entity, context: Context) -> None:
             unset = _unset(it, old)
         else:  # declared before, where it was set: the next interpretation sets it first
             context.unset_reads.add(name)
+        ordered = canonical(old)
+        if ordered is not old and ordered is not None:  # as every pass orders it
+            old = context.configurations[name] = ordered
     if entity.get("default") is None:
         it.fail(unset, "arg-required", f"Required launch argument '{name}' was not provided")
     else:
@@ -88,6 +91,31 @@ register(ONE_OF, lambda _host, text, allowed: "true" if text in allowed else "fa
 def _unset(it: Interpretation[Context], value: Configuration | None) -> BDD:
     """Where ``value`` is not set."""
     return value.where(lambda leaf: leaf is None) if value is not None else it.space.true
+
+
+def canonical(value: Configuration | None) -> Configuration | None:
+    """``value``'s branches in one order, whatever order the writes that made it came in:
+    an included file's arg set on a path before its declaration is built over the unset
+    value in one interpretation and over the command line's from the start in the next
+    (``Analysis._interpret``), whose writes order the same branches differently. Ordered by
+    leaf (unset, strings, input holes, other terms; then by text), equal values are equal
+    choices; only leaves of one text fall back to their ``repr``."""
+    if value is None or len(value.branches) < 2:
+        return value
+    keys = [_leaf_order(leaf) for _condition, leaf in value.branches]
+    if len(set(keys)) < len(keys):
+        keys = [(_leaf_order(leaf)[0], repr(leaf)) for _condition, leaf in value.branches]
+    order = sorted(range(len(keys)), key=keys.__getitem__)
+    if order == list(range(len(keys))):
+        return value
+    return Choice(tuple(value.branches[index] for index in order), value.false)
+
+
+_RANKS = {type(None): 0, str: 1, Hole: 2, Apply: 3}
+
+
+def _leaf_order(leaf: Raw | None) -> tuple[int, str]:
+    return _RANKS.get(type(leaf), 4), "" if leaf is None else str(leaf)
 
 
 def _given(

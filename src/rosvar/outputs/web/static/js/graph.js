@@ -247,7 +247,8 @@ export class GraphView {
     this.settle = null; // what ends the running layout once the view is where it goes
     this.cy.on("dragpan scrollzoom pinchzoom", () => { this.moved = true; });
     this.refit = false; // the canvas changed size while a layout ran: fit when it ends
-    new ResizeObserver(() => this.resized()).observe(container);
+    this.size = null; // the canvas's size as last reported
+    new ResizeObserver((entries) => this.resized(entries[entries.length - 1].contentRect)).observe(container);
     this.cy.on("select unselect", () => { this.markNear(); this.onSelect(this.selectedElement(), true); });
     this.cy.on("mouseover", "node", (event) => event.target.connectedEdges('[kind = "link"]').addClass("pointed"));
     this.cy.on("mouseout", "node", (event) => event.target.connectedEdges('[kind = "link"]').removeClass("pointed"));
@@ -745,7 +746,7 @@ export class GraphView {
       this.layoutsDone = runs;
       if (runs === this.layoutRuns && this.refit) {
         this.refit = false;
-        if (!this.moved) this.fit();
+        if (!this.moved) this.fitNow();
       }
       if (runs === this.layoutRuns && !this.pending) this.container.dataset.layout = "done";
     };
@@ -893,12 +894,21 @@ export class GraphView {
 
   // The canvas changed size (the notice above it came or went, the window was resized):
   // cytoscape learns it only from the window, so it is told here, and the view is fitted to
-  // the new size unless the user moved it (a layout running fits when it ends).
-  resized() {
+  // the new size unless the user moved it (a layout running fits when it ends). At once, not
+  // animated: the page settling as it loads must not move what a click is aimed at.
+  resized({ width, height }) {
+    const before = this.size;
+    this.size = { width, height };
+    if (!before || (before.width === width && before.height === height)) return; // the first report
     this.cy.resize();
     if (this.moved) return;
-    if (this.layoutsDone === this.layoutRuns) this.fit();
+    if (this.layoutsDone === this.layoutRuns) this.fitNow();
     else this.refit = true;
+  }
+
+  fitNow() {
+    this.cy.stop(true);
+    this.cy.viewport(this.viewportFor(this.cy.elements(":visible").boundingBox()));
   }
 
   // Fits the view to everything drawn (the Fit button); layouts fit it again from now on.
