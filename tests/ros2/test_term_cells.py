@@ -12,6 +12,7 @@ from oracle.ros2_client import requires_ros2_oracle, run_oracle
 from rosvar.analyses.checks import UNTOLD, Check, Finding, check_models
 from rosvar.diagnostics import Severity
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.describe import possible_errors
 from rosvar.outputs.documents.findings import finding_document
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.model import Interfaces
@@ -131,4 +132,4 @@ def test_a_python_comparison_of_a_launch_time_string_is_true_or_false(tmp_path: 
     analysis = Analysis(discover([tmp_path], ros_package_path=""))
     model = analysis.model(str(file))
     assert len(model.nodes) == 2
-    assert [(e.code, analysis.space.describe(e.condition)) for e in model.errors] == []
+    assert [(e.code, analysis.space.describe(e.condition)) for e in possible_errors(model)] == []

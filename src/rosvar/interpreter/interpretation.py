@@ -343,9 +343,7 @@ class Interpretation(Generic[S]):
                 self.space.constrain(~(is_true & is_false))
                 true |= condition & is_true
                 invalid |= condition & ~(is_true | is_false)  # the condition conjoined once
-        # the facts relating a term's predicates (its cells) may rule the rest out: a
-        # Python comparison is always True or False
-        if invalid != self.space.false and self.space.satisfiable(invalid):
+        if invalid != self.space.false:
             message = f"{label}: value is not a 'bool' type"
             self.fail(invalid, "bool-invalid", message, tested=Tested(label, value))
         return true
