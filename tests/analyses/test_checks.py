@@ -9,6 +9,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from conftest import PACKAGE_XML
+from oracle.client import requires_oracle
 from rosvar.analyses.checks import Check, check_model, check_models
 from rosvar.analyses.communication import Channel, resolved_graph
 from rosvar.diagnostics import Location, Severity
@@ -381,6 +382,39 @@ def test_a_mistake_of_the_files_text_is_a_load_error_where_roslaunch_refuses(
         args = {"keepout": keepout}
         holds = Restriction(analysis, model, args, {}).holds(error.condition)
         assert holds == bool(resolve(analysis, [file], args).errors), keepout
+
+
+@requires_oracle[0]
+@requires_oracle[1]
+def test_a_node_of_a_file_included_twice_clashes_where_roslaunch_refuses(
+    ws: LaunchWorkspace,
+) -> None:
+    """realsense's rs_multi_camera_launch.py, husky's spawn: one node declaration loaded
+    twice, through two includes of its file. One finding for the name, holding exactly where
+    roslaunch refuses "multiple nodes named"."""
+    ws.launch("camera.launch", '<node pkg="pkg" type="talker.py" name="camera"/>')
+    body = """<arg name="second" default="false"/>
+      <include file="$(find pkg)/launch/camera.launch"/>
+      <include file="$(find pkg)/launch/camera.launch" if="$(arg second)"/>"""
+    [(name, severity, message)] = _findings(ws, body, Check.NODE_NAME_CLASH)
+    assert (name, severity) == ("/camera", Severity.ERROR)
+    assert "camera.launch included twice" in message
+    analysis = ws.analysis()
+    file = str(ws.root / "pkg" / "launch" / "system.launch")
+    model = analysis.model(file)
+    [clash] = [
+        f
+        for f in check_models(
+            analysis.space, [model], Interfaces(), analysis.workspace.confinement()
+        )
+        if f.check is Check.NODE_NAME_CLASH
+    ]
+    results = ws.oracle(file, [({"second": v}, {}) for v in ("true", "false")])
+    for second, result in zip(("true", "false"), results, strict=True):
+        refused = "multiple nodes named" in str(result.get("error"))
+        assert Restriction(analysis, model, {"second": second}, {}).holds(clash.condition) == (
+            refused
+        ), (second, result)
 
 
 def test_a_file_rosvar_cannot_read_is_an_unread_error_once(ws: LaunchWorkspace) -> None:

@@ -16,6 +16,7 @@ from rosvar.interpreter.workspace_models import Analysis
 from rosvar.logic.inputs import OTHER, UNSET, EnvInput, Slot
 from rosvar.workspace import discover
 from rosvar.workspace.hints import load_hints
+from workspace.interfaces.ros2_packages import MANIFEST
 
 if TYPE_CHECKING:
     from conftest import LaunchWorkspace
@@ -334,3 +335,39 @@ def test_forwarded_args_in_a_loop_end(ws: LaunchWorkspace) -> None:
         for file in order:
             name = "x" if file == "a.launch" else "y"
             assert literals(domain(ws, file, name, analysis)) == {"ax", "by", "cz"}
+
+
+def test_literals_a_ros2_eval_compares_with(tmp_path: Path) -> None:
+    """ROS 2's ``$(eval)`` substitutes the arg's text into its Python: XML quotes it
+    (``'$(var mode)'``), the Python frontend writes its ``repr`` (a comparison of a
+    ``perform``'s string); either way the literals compared with are values, as roslaunch's
+    ``$(eval)``'s are."""
+    package = tmp_path / "pkg"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text(MANIFEST.format(name="pkg", build="ament_python"))
+    (package / "launch" / "a.launch.xml").write_text(
+        '<launch><arg name="mode" default="auto"/><arg name="n" default="1"/>\n'
+        '<node pkg="pkg" exec="x" name="x" if="$(eval &quot;\'$(var mode)\' == \'fast\''
+        " or '$(var mode)' in ['slow'] or $(var n) == 3&quot;)\"/></launch>\n"
+    )
+    (package / "launch" / "b.launch.py").write_text(
+        "from launch import LaunchDescription\n"
+        "from launch.actions import DeclareLaunchArgument, OpaqueFunction\n"
+        "from launch.substitutions import LaunchConfiguration\n"
+        "from launch_ros.actions import Node\n\n"
+        "def setup(context):\n"
+        "    if LaunchConfiguration('use_a').perform(context) == 'true':\n"
+        "        return [Node(package='pkg', executable='x', name='with_a')]\n"
+        "    return []\n\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([DeclareLaunchArgument('use_a', default_value='false'),\n"
+        "                              OpaqueFunction(function=setup)])\n"
+    )
+    analysis = Analysis(discover([tmp_path], ros_package_path=""))
+    xml = analysis.model(str(package / "launch" / "a.launch.xml"))
+    python = analysis.model(str(package / "launch" / "b.launch.py"))
+    assert xml.domains["mode"] == ("auto", "fast", "slow", OTHER)
+    assert literals(xml.domains["n"]) == {"1", "3"}
+    assert python.domains["use_a"] == ("false", "true", OTHER)
+    [node] = python.nodes
+    assert analysis.space.describe(node.condition) == "use_a"

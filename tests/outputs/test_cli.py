@@ -110,6 +110,42 @@ def test_analyze_json(workspace: LaunchWorkspace, capsys: pytest.CaptureFixture[
     schema_check(document, "analyze.schema.json")
 
 
+LOOP = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def setup(context):
+    return [Node(package='pkg', executable='each', name=name)
+            for name in LaunchConfiguration('names').perform(context).split(',')]
+
+
+def generate_launch_description():
+    return LaunchDescription([DeclareLaunchArgument('names', default_value='x,y'),
+                              OpaqueFunction(function=setup)])
+"""
+
+
+def test_analyze_shows_no_error_no_configuration_raises(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A loop over a launch-time ``split``: the errors of its items past the list's end are
+    recorded before the facts that rule them out are known; ``analyze`` neither lists nor
+    counts them."""
+    package = tmp_path / "pkg"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text(MANIFEST.format(name="pkg", build="ament_python"))
+    (package / "launch" / "loop.launch.py").write_text(LOOP)
+    code, out, _err = run(capsys, "analyze", "--json", str(tmp_path))
+    assert code == EXIT_OK
+    [file] = json.loads(out)["files"]
+    assert [e["condition"] for e in file["errors"]] == []
+    code, out, _err = run(capsys, "analyze", str(tmp_path))
+    row = out.splitlines()[2].split()
+    assert (row[1], row[-1]) == ("1", "0"), out
+
+
 def test_analyze_without_launch_files(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     (tmp_path / "empty").mkdir()
     code, _out, err = run(capsys, "analyze", str(tmp_path / "empty"))

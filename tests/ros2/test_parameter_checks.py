@@ -69,6 +69,34 @@ def test_a_parameter_file_for_no_launched_node(
     )
 
 
+TWO_FILES = """<launch>
+  <node pkg="demo" exec="talker" name="talker">
+    <param from="$(find-pkg-share bringup)/config/first.yaml"/>
+    <param from="$(find-pkg-share bringup)/config/second.yaml"/>
+  </node>
+</launch>
+"""
+
+
+def test_each_unmatched_file_of_one_node_is_its_own_finding(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Two files given to one node, neither with an entry for it: two problems at the same
+    node, told apart by their messages (the workspace's findings are not merged by place)."""
+    package = tmp_path / "bringup"
+    (package / "launch").mkdir(parents=True)
+    (package / "config").mkdir()
+    (package / "package.xml").write_text(MANIFEST)
+    (package / "launch" / "bringup.launch.xml").write_text(TWO_FILES)
+    (package / "config" / "first.yaml").write_text("/one:\n  ros__parameters:\n    a: 1\n")
+    (package / "config" / "second.yaml").write_text("/two:\n  ros__parameters:\n    b: 2\n")
+    found = sorted(str(f["message"]).split(":")[0] for f in _findings(tmp_path, capsys))
+    assert found == [
+        "/talker gets none of the parameters of first.yaml",
+        "/talker gets none of the parameters of second.yaml",
+    ]
+
+
 WILDCARDS = """<launch>
   <arg name="moved" default="false"/>
   <node pkg="demo" exec="talker" name="talker" namespace="ns" unless="$(var moved)"/>

@@ -12,6 +12,7 @@ from oracle.ros2_client import requires_ros2_oracle, run_oracle
 from rosvar.analyses.checks import UNTOLD, Check, Finding, check_models
 from rosvar.diagnostics import Severity
 from rosvar.interpreter.workspace_models import Analysis
+from rosvar.outputs.describe import possible_errors
 from rosvar.outputs.documents.findings import finding_document
 from rosvar.workspace import discover
 from rosvar.workspace.interfaces.model import Interfaces
@@ -106,3 +107,29 @@ def test_a_clash_no_witness_gives_is_a_note_rosvar_could_not_tell(tmp_path: Path
     assert clash.message.endswith(UNTOLD)
     example = finding_document(clash, analysis.space)["example"]
     assert isinstance(example, dict) and "<other>" in example.values()
+
+
+def test_a_python_comparison_of_a_launch_time_string_is_true_or_false(tmp_path: Path) -> None:
+    """realsense's rs_launch.py: ``if os.getenv('ROS_DISTRO') == 'dashing'``. The Python
+    frontend quotes the launch-time text (``repr``) into the expression, so no text makes it
+    anything but ``True`` or ``False``: no 'not a bool' error for an unforeseen value."""
+    package = tmp_path / "pkg"
+    (package / "launch").mkdir(parents=True)
+    (package / "package.xml").write_text(MANIFEST.format(name="pkg", build="ament_python"))
+    file = package / "launch" / "a.launch.py"
+    file.write_text(
+        "import os\n"
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n\n"
+        "def generate_launch_description():\n"
+        "    nodes = []\n"
+        "    if os.getenv('ROS_DISTRO') == 'dashing' or os.getenv('ROS_DISTRO') == 'foxy':\n"
+        "        nodes.append(Node(package='pkg', executable='x', name='old'))\n"
+        "    else:\n"
+        "        nodes.append(Node(package='pkg', executable='x', name='new'))\n"
+        "    return LaunchDescription(nodes)\n"
+    )
+    analysis = Analysis(discover([tmp_path], ros_package_path=""))
+    model = analysis.model(str(file))
+    assert len(model.nodes) == 2
+    assert [(e.code, analysis.space.describe(e.condition)) for e in possible_errors(model)] == []

@@ -34,7 +34,13 @@ from rosvar.analyses.communication import (
     model_edges,
     node_branches,
 )
-from rosvar.analyses.conflicts import Occurrence, clashes, node_occurrences
+from rosvar.analyses.conflicts import (
+    Clash,
+    Occurrence,
+    clashes,
+    node_occurrences,
+    repeated_inclusions,
+)
 from rosvar.analyses.feature_model.operations import trigger
 from rosvar.analyses.param_values import ParamValues
 from rosvar.analyses.when import params_read
@@ -632,14 +638,28 @@ class _Checker:
             if not node.is_test:
                 for occurrence in node_occurrences(self.model, node):
                     buckets[("node", occurrence.name)].append(occurrence)
+        # one finding per name, every pair of nodes under it: two includes of a file whose
+        # nodes each have two names are one problem, not four
+        by_name: dict[str, list[Clash]] = defaultdict(list)
         for clash in clashes(buckets):
+            by_name[clash.name].append(clash)
+        twice: dict[str, list[Clash]] = defaultdict(list)
+        for clash in repeated_inclusions(self.model, started=True):  # one node, two includes
+            by_name[clash.name].append(clash)
+            twice[clash.name].append(clash)
+        for name, found in by_name.items():
+            places = dict.fromkeys(
+                place for c in found for place in (c.second.location, c.first.location)
+            )
+            included = sorted({os.path.basename(c.first.location.file) for c in twice[name]})
+            reason = f" ({', '.join(included)} included twice)" if included else ""
             self.add(
                 Check.NODE_NAME_CLASH,
                 Severity.WARNING if ros2 else Severity.ERROR,
-                clash.name,
-                f"two nodes are named {clash.name}" + (ROS2_BOTH_START if ros2 else ""),
-                clash.condition,
-                (clash.second.location, clash.first.location),
+                name,
+                f"two nodes are named {name}{reason}" + (ROS2_BOTH_START if ros2 else ""),
+                self.any(c.condition for c in found),
+                tuple(places),
             )
 
     def params(self, interfaces: Interfaces) -> None:

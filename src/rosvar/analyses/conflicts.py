@@ -128,18 +128,19 @@ def node_occurrences(model: LaunchModel, node: NodeDecl) -> Iterator[Occurrence]
             )
 
 
-def repeated_inclusions(model: LaunchModel) -> list[Clash]:
+def repeated_inclusions(model: LaunchModel, started: bool = False) -> list[Clash]:
     """One node declaration loaded twice by ``model.file`` (a file included twice).
 
     Clashes between different declarations are found between the files that write
     them; only a declaration meeting itself, through two includes, is the entry
-    file's own clash.
+    file's own clash. With ``started``, ROS 2 nodes too (``ros2 launch`` starts both:
+    not a conflict, a finding of ``rosvar check``).
     """
     own = _WrittenIn(model.file)
     seen: dict[tuple[str, Location], list[Occurrence]] = defaultdict(list)
     found: list[Clash] = []
     for node in model.nodes:
-        if not _clashes(node) or own(node.location.file):
+        if node.is_test or not (started or _clashes(node)) or own(node.location.file):
             continue
         for occurrence in node_occurrences(model, node):
             earlier = seen[(occurrence.name, occurrence.location)]

@@ -143,8 +143,9 @@ def file_facts(root: Entity, version: RosVersion = RosVersion.ROS1) -> dict[str,
             if ros2:
                 _ros2_tests(text, facts)
             if text.startswith("$(eval ") and text.endswith(")"):
+                expression = _ros2_expression(text[7:-1]) if ros2 else text[7:-1]
                 try:
-                    compared = compared_literals(text[7:-1])
+                    compared = compared_literals(expression) if expression else {}
                 except EvalRefused:
                     continue
                 for name, values in compared.items():
@@ -154,6 +155,28 @@ def file_facts(root: Entity, version: RosVersion = RosVersion.ROS1) -> dict[str,
 
 
 _GUARDS = frozenset({"if", "unless"})
+_ROS2_ARG_TEXT = (
+    re.compile(rf"'{_VAR}'"),
+    re.compile(rf'"{_VAR}"'),
+    re.compile(rf"\$\(rosvar-python-string\s+{_VAR}\s*\)"),
+    re.compile(_VAR),
+)
+"""An arg's text in a ROS 2 ``$(eval)``'s Python: a string literal of it alone (XML's
+``'$(var x)'``, the Python frontend's ``repr``), or the bare text (a number, a name)."""
+
+
+def _ros2_expression(argument: str) -> str | None:
+    """A ROS 2 ``$(eval)``'s argument as roslaunch's ``$(eval)`` would write it (each arg's
+    text ``arg('x')``), for :func:`compared_literals`; None where it holds other
+    substitutions or is not one quoted argument."""
+    argument = argument.strip()
+    if len(argument) < 2 or argument[0] not in "'\"" or argument[-1] != argument[0]:
+        return None
+    quote = argument[0]
+    expression = argument[1:-1].replace("\\" + quote, quote)
+    for pattern in _ROS2_ARG_TEXT:
+        expression = pattern.sub(lambda match: f"arg('{match.group(1)}')", expression)
+    return None if "$(" in expression else expression
 
 
 def _ros2_tests(text: str, facts: dict[str, ArgFacts]) -> None:

@@ -22,7 +22,7 @@ The same witnesses give an ``<other>`` value of an example a concrete text
 
 from __future__ import annotations
 
-from collections.abc import Callable, Hashable, Iterable
+from collections.abc import Callable, Collection, Hashable, Iterable
 from dataclasses import dataclass
 from typing import Final
 
@@ -60,11 +60,15 @@ def register_predicate_texts(predicate: str, texts: Iterable[str]) -> None:
     PREDICATE_TEXTS[predicate] = tuple(dict.fromkeys(texts))
 
 
-def literal_operands(term: Apply, input_: Input) -> frozenset[Hashable] | None:
+def literal_operands(
+    term: Apply, input_: Input, quoting: Collection[str] = ()
+) -> frozenset[Hashable] | None:
     """The literal texts among a term's operands (through concatenations), when its only
-    other operand is ``input_``'s hole: what a function of texts (an equality, a boolean) can
-    compare the input's text with; None for any other operand (a nested function's cells
-    would be its own)."""
+    other operand is ``input_``'s hole (or, for a function of ``quoting``, the hole as that
+    function quotes it whole: every text of the input stays one literal there): what a
+    function of texts (an equality, a boolean) can compare the input's text with; None for
+    any other operand (a nested function's cells would be its own)."""
+    hole = Hole(input_)
     found: set[Hashable] = set()
     pending: list[object] = list(term.operands)
     while pending:
@@ -75,7 +79,10 @@ def literal_operands(term: Apply, input_: Input) -> frozenset[Hashable] | None:
             pending.extend(operand)
         elif isinstance(operand, Apply) and operand.function == "concat":
             pending.extend(operand.operands)
-        elif operand != Hole(input_):
+        elif isinstance(operand, Apply) and operand.function in quoting:
+            if operand.operands != (hole,):
+                return None
+        elif operand != hole:
             return None
     return frozenset(found)
 

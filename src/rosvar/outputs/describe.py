@@ -3,7 +3,13 @@
 from __future__ import annotations
 
 from rosvar.analyses.json_values import json_value
-from rosvar.interpreter.model import DeferredValue, LaunchModel, ParamDecl, ParamSource
+from rosvar.interpreter.model import (
+    DeferredValue,
+    ErrorEvent,
+    LaunchModel,
+    ParamDecl,
+    ParamSource,
+)
 from rosvar.logic.choice import Choice
 from rosvar.logic.inputs import OTHER, UNSET, Slot
 from rosvar.logic.terms import Apply, Hole
@@ -95,10 +101,17 @@ def describe_model(model: LaunchModel) -> dict[str, object]:
                 "condition": describe(e.condition),
                 **e.location.to_json(),
             }
-            for e in model.errors
+            for e in possible_errors(model)
         ],
         "diagnostics": [diagnostic_document(d) for d in model.diagnostics],
     }
+
+
+def possible_errors(model: LaunchModel) -> list[ErrorEvent]:
+    """The model's errors that some configuration raises: one the space's facts rule out
+    (its condition met only by predicates no value makes hold together, learnt after it was
+    recorded) is no error to show."""
+    return [e for e in model.errors if model.space.satisfiable(e.condition)]
 
 
 EXACT_BELOW = 10**7

@@ -15,7 +15,7 @@ from collections.abc import Iterator
 
 from rosvar.analyses.checks import Check, Found, model_check, nearest, read_off_sources
 from rosvar.analyses.communication import launched_units, node_branches
-from rosvar.diagnostics import Severity
+from rosvar.diagnostics import Location, Severity
 from rosvar.files import Confinement
 from rosvar.interpreter.model import LaunchModel, NodeParameter
 from rosvar.logic.bdd import BDD
@@ -79,8 +79,14 @@ def unmatched_parameter_files(
                 f"its entries are for {shown}, which no launched node is (rcl applies an entry "
                 "to the node its key names, /** to every node)",
                 condition & parameter.condition & ~reached,
-                (node.location,),
+                # the file too: two files of one node reaching it not are two findings
+                (node.location, *_start_of(parameter.file)),
             )
+
+
+def _start_of(file: object) -> tuple[Location, ...]:
+    """The start of a parameter file known by its path, as a place of a finding."""
+    return (Location(file, 1, 1),) if isinstance(file, str) else ()
 
 
 @model_check(RosVersion.ROS2)

@@ -65,6 +65,8 @@ from rosvar.ros2.frontends.python.text import (
     EMPTY,
     NODE_NAME,
     PATH_JOIN,
+    PATH_PART,
+    PATH_PARTS,
     PYTHON_STRING,
     PYTHON_YAML,
     UNKNOWN,
@@ -229,6 +231,7 @@ HANDLERS: dict[str, Handler] = {}
 OWN = frozenset(
     {
         PATH_JOIN,
+        PATH_PART,
         PYTHON_STRING,
         PYTHON_YAML,
         UNKNOWN,
@@ -298,6 +301,7 @@ PURE = frozenset(
         "dirname",
         "filename",
         PATH_JOIN,
+        PATH_PART,
         UNKNOWN,
     }
 )
@@ -825,6 +829,21 @@ def _path_join(args: list[Raw]) -> Value:
 
 
 register(PATH_JOIN, lambda _host, *paths: posixpath.join(*paths))
+
+
+@computed(PATH_PART)
+def _path_part(args: list[Raw]) -> Value:
+    """``os.path.dirname`` or ``basename`` (the first argument) of a path (the Python
+    frontend's); of a path known only in a configuration, a term it computes."""
+    if len(args) != 2 or args[0] not in PATH_PARTS:
+        return Fail(f"$({PATH_PART}) takes dirname or basename and a path", "substitution-invalid")
+    part, path = args
+    if isinstance(path, str):
+        return PATH_PARTS[str(part)](path)
+    return Apply(PATH_PART, (part, path), f"os.path.{part}({path})")
+
+
+register(PATH_PART, lambda _host, part, path: PATH_PARTS[part](path))
 
 
 @computed(PYTHON_STRING)

@@ -20,9 +20,13 @@ from rosvar.logic.cells import LITERAL_CELLS, Cells, literal_operands, register_
 from rosvar.logic.inputs import Input
 from rosvar.logic.terms import Apply
 from rosvar.ros2.boolean_substitutions import FUNCTIONS
+from rosvar.ros2.frontends.python.text import PYTHON_STRING
 
 PYTHON_TEXTS: Final = ("True", "False", "None", "0", "1", "2", "-1", "0.5", "''", "[]", "x")
 """Python a text may spell: literals true and false, a number of each sign, a name."""
+QUOTE_BREAKING: Final = ("' or '", '" or "', "'", '"')
+"""Texts that leave a quoted literal they are spliced into (``'p$(var x)s' == 'a'`` is
+``'p'`` for the first, not a boolean; a lone quote fails the expression)."""
 YAML_BOOLEANS: Final = spellings(("true", "false", "yes", "no", "on", "off", "1", "0"))
 """What launch's typed ``bool`` reads (YAML 1.1's words, ``1`` and ``0``), as people write
 them."""
@@ -31,8 +35,9 @@ _TOKENS: Final = re.compile(r"'([^']*)'|\"([^\"]*)\"|([-+]?\d+(?:\.\d+)?|\w+)")
 
 def _spliced_constants(term: Apply, input_: Input) -> frozenset[Hashable] | None:
     """The words, numbers and quoted texts of the Python written beside the input's text
-    (``'not '``, ``' == 7'``): what the expression may compare it with."""
-    literals = literal_operands(term, input_)
+    (``'not '``, ``' == 7'``), or beside its ``repr`` (the Python frontend's launch-time
+    strings): what the expression may compare it with."""
+    literals = literal_operands(term, input_, quoting=(PYTHON_STRING,))
     if literals is None:
         return None
     found: set[Hashable] = set()
@@ -44,7 +49,7 @@ def _spliced_constants(term: Apply, input_: Input) -> frozenset[Hashable] | None
 
 
 def _python_witnesses(constants: Iterable[Hashable]) -> tuple[str, ...]:
-    return (*PYTHON_TEXTS, *(c for c in constants if isinstance(c, str)))
+    return (*PYTHON_TEXTS, *QUOTE_BREAKING, *(c for c in constants if isinstance(c, str)))
 
 
 def _boolean_witnesses(constants: Iterable[Hashable]) -> tuple[str, ...]:

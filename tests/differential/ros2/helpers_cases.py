@@ -213,6 +213,54 @@ def generate_launch_description():
         },
         [{}, {"flag": "true"}],
     ),
+    "python-getenv-returns-a-description-in-each-branch": (
+        {
+            "main.launch.py": """import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    declared = [DeclareLaunchArgument('camera', default_value='cam')]
+    distro = os.getenv('ROSVAR_TEST_DISTRO')
+    if (distro == 'dashing') or (distro == 'eloquent'):
+        return LaunchDescription(declared + [
+            Node(package='pkg', node_executable='old', node_name=LaunchConfiguration('camera'))])
+    else:
+        return LaunchDescription(declared + [
+            Node(package='pkg', executable='new', name=LaunchConfiguration('camera'))])
+""",
+        },
+        [{}, {"camera": "front"}],
+    ),
+    "python-path-parts-of-launch-time-paths": (
+        {
+            "main.launch.py": """import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def nodes(context):
+    path = LaunchConfiguration('map').perform(context)
+    home = os.getenv('ROSVAR_TEST_UNSET', '/q/r/x/y')
+    return [Node(package='pkg', executable='map_server', name='maps',
+                 parameters=[{'dir': os.path.dirname(path), 'file': os.path.basename(path),
+                              'home': f"{os.path.dirname(home)}/z"}])]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('map', default_value='/maps/lab/map.yaml'),
+        OpaqueFunction(function=nodes),
+    ])
+""",
+        },
+        [{}, {"map": "office.yaml"}, {"map": "/srv/maps/"}],
+    ),
     "python-getenv-unset": (
         {
             "main.launch.py": """import os

@@ -78,5 +78,8 @@ def _model_json(model: LaunchModel) -> str:
 
 def _analyzed_row(model: LaunchModel) -> tuple[tuple[str, int, int, int, int], list[Diagnostic]]:
     """What ``analyze``'s table shows of ``model``, and its diagnostics."""
-    counts = (len(model.inputs), len(model.nodes), len(model.params), len(model.errors))
+    from rosvar.outputs.describe import possible_errors
+
+    errors = len(possible_errors(model))
+    counts = (len(model.inputs), len(model.nodes), len(model.params), errors)
     return (model.file, *counts), model.diagnostics

@@ -30,6 +30,8 @@ from rosvar.ros2.frontends.python.text import (
     EMPTY,
     NODE_NAME,
     PATH_JOIN,
+    PATH_PART,
+    PATH_PARTS,
     Sub,
     Text,
     Written,
@@ -275,11 +277,25 @@ def _os_path_join(call: Call) -> Value:
 @_register("os", "dirname")
 def _dirname(call: Call) -> Value:
     path = call.arg(0, "p")
-    if isinstance(path, str):
-        return posixpath.dirname(path)
     if isinstance(path, Dynamic) and path.text == Text.of(Sub("filename")):
         return launch_time.performed(Text.of(Sub("dirname")))
-    return call.not_followed("os.path.dirname() of a computed path")
+    return _path_part(call, path, "dirname")
+
+
+@_register("os", "basename")
+def _basename(call: Call) -> Value:
+    return _path_part(call, call.arg(0, "p"), "basename")
+
+
+def _path_part(call: Call, path: Value, part: str) -> Value:
+    """``os.path.dirname`` (``basename``) of a path: computed where it is a Python string,
+    else the part of the string it is at launch time (``$(rosvar-path-part)``)."""
+    if isinstance(path, str):
+        return str(PATH_PARTS[part](path))
+    if isinstance(path, Dynamic) and path.kind is str:
+        operands = (Text.of(part), launch_time.as_text(path))
+        return launch_time.performed(Text.of(Sub(PATH_PART, operands)))
+    return call.not_followed(f"os.path.{part}() of a {type(path).__name__}")
 
 
 def _condition(condition: ConditionEntry) -> Builder:

@@ -789,7 +789,8 @@ class Interpreter:
     def choose(self, test: Text, then: Value, otherwise: Value, node: ast.AST) -> Value:
         """``then`` where the Python ``test`` holds at launch time, else ``otherwise``: a
         Python expression where both have one (scalars), the actions of both each under
-        its test, else a :class:`Conditional` (lists, dicts: each branch's value whole)."""
+        its test (a launch description of them where both are one), else a
+        :class:`Conditional` (lists, dicts: each branch's value whole)."""
         if then is otherwise:  # one object, maybe changed by the branches: itself
             return then
         then, otherwise = self.resolved(then), self.resolved(otherwise)
@@ -799,6 +800,9 @@ class Interpreter:
         if actions[0] is not None and actions[1] is not None:
             children = self.each_guarded(test, actions[0], actions[1], node)
             group = _group(children, None, self.location(node), self.sink)
+            if isinstance(then, Description) and isinstance(otherwise, Description):
+                # each branch returns its own LaunchDescription (realsense's rs_launch.py)
+                return Description(Entity("launch", {}, self.location(node), [group]))
             return (
                 [group]
                 if isinstance(then, list | tuple) or isinstance(otherwise, list | tuple)

@@ -9,7 +9,9 @@ single-quoted with ``'`` and ``\\`` escaped (``$(eval '\\'$(var r)\\' == \\'r2\\
 
 from __future__ import annotations
 
+import posixpath
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from enum import StrEnum
 
@@ -19,6 +21,14 @@ says what it was (``$(rosvar-unknown 'call read_config()')``). No launch file ha
 PATH_JOIN = "rosvar-path-join"
 """The substitution standing for ``PathJoinSubstitution`` (``os.path.join`` of its
 arguments' values) where the join is not known from the text; XML has none."""
+PATH_PART = "rosvar-path-part"
+"""``$(rosvar-path-part dirname|basename PATH)``: ``os.path.dirname`` or ``basename`` of a
+path known at launch time only (``os.path.dirname(os.getenv('MAP'))``); XML has none."""
+PATH_PARTS: dict[str, Callable[[str], str]] = {
+    "dirname": posixpath.dirname,
+    "basename": posixpath.basename,
+}
+"""The functions of :data:`PATH_PART`, by the name its first argument gives."""
 
 PYTHON_STRING = "rosvar-python-string"
 """The substitution giving its argument's value as a Python string literal (``repr``): a
