@@ -643,15 +643,15 @@ class _Checker:
         by_name: dict[str, list[Clash]] = defaultdict(list)
         for clash in clashes(buckets):
             by_name[clash.name].append(clash)
-        twice: dict[str, list[Clash]] = defaultdict(list)
+        twice: dict[str, set[str]] = defaultdict(set)  # name -> the files included twice
         for clash in repeated_inclusions(self.model, started=True):  # one node, two includes
             by_name[clash.name].append(clash)
-            twice[clash.name].append(clash)
+            twice[clash.name].add(os.path.basename(clash.first.location.file))
         for name, found in by_name.items():
             places = dict.fromkeys(
                 place for c in found for place in (c.second.location, c.first.location)
             )
-            included = sorted({os.path.basename(c.first.location.file) for c in twice[name]})
+            included = sorted(twice[name])
             reason = f" ({', '.join(included)} included twice)" if included else ""
             self.add(
                 Check.NODE_NAME_CLASH,

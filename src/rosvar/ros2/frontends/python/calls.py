@@ -291,7 +291,7 @@ def _path_part(call: Call, path: Value, part: str) -> Value:
     """``os.path.dirname`` (``basename``) of a path: computed where it is a Python string,
     else the part of the string it is at launch time (``$(rosvar-path-part)``)."""
     if isinstance(path, str):
-        return str(PATH_PARTS[part](path))
+        return PATH_PARTS[part](path)
     if isinstance(path, Dynamic) and path.kind is str:
         operands = (Text.of(part), launch_time.as_text(path))
         return launch_time.performed(Text.of(Sub(PATH_PART, operands)))
